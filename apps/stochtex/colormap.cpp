@@ -1,0 +1,46 @@
+// stochtex colormap: writes a colormap H as an image (x right, y up).
+#include <cstdio>
+
+#include "common.h"
+#include "stochtex/core/error.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/presets.h"
+
+namespace stochtex::cli {
+
+void registerColormap(CLI::App& app) {
+    struct Args {
+        std::string spec;
+        std::string preset;
+        std::string output;
+        std::optional<int> resolution;
+    };
+    auto args = std::make_shared<Args>();
+    auto* cmd = app.add_subcommand("colormap", "Write a colormap defined by a JSON colormap spec or a preset");
+    auto* spec = cmd->add_option("spec", args->spec, "Colormap spec: a JSON file or inline JSON ({\"type\":...})");
+    auto* preset = cmd->add_option("--preset,-p", args->preset, "Take the colormap of this preset pattern");
+    spec->excludes(preset);
+    cmd->add_option("-o,--output", args->output, "Output image (.png or .exr)")->required();
+    cmd->add_option("--resolution", args->resolution, "Table resolution (analytic and painted colormaps)")
+        ->check(CLI::Range(2, kMaxColormapResolution));
+    cmd->callback([args] {
+        checkImageOutput(args->output);
+        ColormapSpec cm;
+        if (!args->preset.empty()) {
+            cm = loadPreset(args->preset).colormap;
+        } else if (!args->spec.empty()) {
+            const JsonArgument json = readJsonArgument(args->spec);
+            cm = parseColormapSpec(JsonReader(json.json, json.source), json.baseDir);
+        } else {
+            throw InputError("give a colormap spec or --preset NAME");
+        }
+        if (args->resolution) cm.resolution = *args->resolution;
+        const ColormapTable table = buildColormap(cm);
+        writeImage(args->output, table.toImage());
+        std::printf("wrote %s (%dx%d colormap, x right, y up)\n", args->output.c_str(), table.resolutionX(),
+                    table.resolutionY());
+    });
+}
+
+}  // namespace stochtex::cli

@@ -1,0 +1,88 @@
+#include "common.h"
+
+#include <filesystem>
+
+#include "stochtex/core/error.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/presets.h"
+
+namespace stochtex::cli {
+namespace fs = std::filesystem;
+
+void addPatternSource(CLI::App& cmd, PatternSource& src) {
+    auto* file = cmd.add_option("pattern", src.file, "Pattern JSON file (see docs/PATTERNS.md)");
+    auto* preset = cmd.add_option("--preset,-p", src.preset, "Embedded preset name (stochtex presets lists them)");
+    file->excludes(preset);
+    cmd.add_option("--seed", src.seed, "Override the pattern seed");
+}
+
+PatternSpec loadPatternSource(const PatternSource& src) {
+    if (src.file.empty() && src.preset.empty()) throw InputError("give a pattern file or --preset NAME");
+    PatternSpec spec = src.file.empty() ? loadPreset(src.preset) : loadPatternFile(src.file);
+    if (src.seed) {
+        if (*src.seed < 0 || *src.seed > 2147483647) throw InputError("--seed must be in [0, 2147483647]");
+        spec.seed = uint32_t(*src.seed);
+    }
+    return spec;
+}
+
+void addViewFlags(CLI::App& cmd, ViewFlags& flags) {
+    cmd.add_option("--size", flags.size, "Output size in pixels: N or W,H (default: the pattern's)")
+        ->delimiter(',')
+        ->expected(1, 2);
+    cmd.add_option("--scale", flags.scale, "Example texels per output pixel (>1 zooms out; default: the pattern's)");
+    cmd.add_option("--offset", flags.offset, "Texture-space offset X,Y in example texels")->delimiter(',')->expected(2);
+}
+
+View makeView(const PatternSpec& spec, const ViewFlags& flags) {
+    View v;
+    v.width = spec.width;
+    v.height = spec.height;
+    v.scale = spec.scale;
+    if (!flags.size.empty()) {
+        v.width = flags.size[0];
+        v.height = flags.size.size() > 1 ? flags.size[1] : flags.size[0];
+        if (v.width < 1 || v.height < 1 || v.width > kMaxOutputSide || v.height > kMaxOutputSide)
+            throw InputError("--size: " + std::to_string(v.width) + "x" + std::to_string(v.height) +
+                             " out of range (1.." + std::to_string(kMaxOutputSide) + " per side)");
+    }
+    if (flags.scale) v.scale = *flags.scale;
+    if (!flags.offset.empty()) {
+        v.offsetU = flags.offset[0];
+        v.offsetV = flags.offset[1];
+    }
+    validateView(v, "--size/--scale/--offset");
+    return v;
+}
+
+JsonArgument readJsonArgument(const std::string& arg) {
+    JsonArgument a;
+    const size_t first = arg.find_first_not_of(" \t\n");
+    if (first != std::string::npos && arg[first] == '{') {
+        a.source = "<inline JSON>";
+        a.json = JsonReader::parse(arg, a.source);
+        a.baseDir = ".";
+    } else {
+        a.source = arg;
+        a.json = readJsonFile(arg);
+        a.baseDir = fs::path(arg).has_parent_path() ? fs::path(arg).parent_path() : fs::path(".");
+    }
+    return a;
+}
+
+void checkImageOutput(const std::string& path) {
+    if (!isSupportedImagePath(path))
+        throw InputError(path + ": unsupported output format (use .png or .exr)");
+    const fs::path p(path);
+    std::error_code ec;
+    if (p.has_parent_path() && !fs::is_directory(p.parent_path(), ec))
+        throw InputError(path + ": directory " + p.parent_path().string() + " does not exist");
+}
+
+void addThreadsFlag(CLI::App& cmd, int& threads) {
+    cmd.add_option("--threads,-j", threads, "Worker threads (0 = all cores; output is identical for any value)")
+        ->check(CLI::Range(0, 1024));
+}
+
+}  // namespace stochtex::cli

@@ -1,0 +1,50 @@
+#pragma once
+// Pieces shared by the CLI commands: the pattern source (file or preset),
+// the view flags, inline-or-file JSON arguments, output checks.
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/pattern_spec.h"
+
+namespace stochtex::cli {
+
+struct PatternSource {
+    std::string file;
+    std::string preset;
+    std::optional<int64_t> seed;
+};
+void addPatternSource(CLI::App& cmd, PatternSource& src);
+PatternSpec loadPatternSource(const PatternSource& src);
+
+struct ViewFlags {
+    std::vector<int> size;          // N or W,H
+    std::optional<double> scale;
+    std::vector<double> offset;     // X,Y in texels
+};
+void addViewFlags(CLI::App& cmd, ViewFlags& flags);
+View makeView(const PatternSpec& spec, const ViewFlags& flags);
+
+// A JSON argument: inline if it starts with '{' (or '"'), else a file path.
+struct JsonArgument {
+    nlohmann::json json;
+    std::string source;
+    std::filesystem::path baseDir;
+};
+JsonArgument readJsonArgument(const std::string& arg);
+
+// Fails early (before any work) if path is not a .png/.exr in an existing folder.
+void checkImageOutput(const std::string& path);
+
+void addThreadsFlag(CLI::App& cmd, int& threads);
+
+// Registration of each command (one file each).
+void registerRender(CLI::App& app);
+void registerGallery(CLI::App& app);
+void registerNoise(CLI::App& app);
+void registerColormap(CLI::App& app);
+void registerPresets(CLI::App& app);
+
+}  // namespace stochtex::cli

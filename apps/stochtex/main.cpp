@@ -1,0 +1,38 @@
+// stochtex: command-line entry point. Each command lives in its own file and
+// registers itself here; exit code 0 = success, 2 = bad input, 1 = bug.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "common.h"
+#include "stochtex/core/error.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"stochtex: colour-mapped noise vector fields and procedural texture analysis"};
+    app.require_subcommand(1);
+    app.fallthrough(false);
+    stochtex::cli::registerRender(app);
+    stochtex::cli::registerGallery(app);
+    stochtex::cli::registerNoise(app);
+    stochtex::cli::registerColormap(app);
+    stochtex::cli::registerPresets(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "stochtex: error: %s\nRun with --help for usage.\n", e.what());
+        return 2;
+    } catch (const stochtex::InputError& e) {
+        std::fprintf(stderr, "stochtex: error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "stochtex: internal error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

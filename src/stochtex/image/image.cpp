@@ -1,0 +1,103 @@
+#include "stochtex/image/image.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+namespace stochtex {
+
+Image::Image(int width, int height, int channels, float fill)
+    : width_(width), height_(height), channels_(channels) {
+    if (width < 0 || height < 0 || channels <= 0 || channels > 4)
+        throw std::invalid_argument("Image: invalid dimensions");
+    data_.assign(size_t(width) * size_t(height) * size_t(channels), fill);
+}
+
+Image toRgb(const Image& image) {
+    if (image.channels() == 3) return image;
+    Image out(image.width(), image.height(), 3);
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            for (int c = 0; c < 3; ++c)
+                out.at(x, y, c) = image.at(x, y, image.channels() == 1 ? 0 : std::min(c, image.channels() - 1));
+    return out;
+}
+
+Image toGray(const Image& image) {
+    if (image.channels() == 1) return image;
+    const int used = std::min(image.channels(), 3);  // alpha is not a colour
+    Image out(image.width(), image.height(), 1);
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            float sum = 0.0f;
+            for (int c = 0; c < used; ++c) sum += image.at(x, y, c);
+            out.at(x, y) = sum / float(used);
+        }
+    return out;
+}
+
+namespace {
+cv::Mat wrap(const Image& image) {
+    return cv::Mat(image.height(), image.width(), CV_32FC(image.channels()),
+                   const_cast<float*>(image.data().data()));
+}
+}  // namespace
+
+Image resizeNearest(const Image& image, int width, int height) {
+    Image out(width, height, image.channels());
+    cv::Mat dst = wrap(out);
+    cv::resize(wrap(image), dst, cv::Size(width, height), 0, 0, cv::INTER_NEAREST);
+    return out;
+}
+
+Image resizeSmooth(const Image& image, int width, int height) {
+    Image out(width, height, image.channels());
+    cv::Mat dst = wrap(out);
+    const bool shrink = width < image.width() || height < image.height();
+    cv::resize(wrap(image), dst, cv::Size(width, height), 0, 0, shrink ? cv::INTER_AREA : cv::INTER_LINEAR);
+    return out;
+}
+
+void paste(Image& dst, const Image& src, int x, int y) {
+    if (src.channels() != dst.channels()) throw std::invalid_argument("paste: channel mismatch");
+    for (int j = 0; j < src.height(); ++j) {
+        const int ty = y + j;
+        if (ty < 0 || ty >= dst.height()) continue;
+        for (int i = 0; i < src.width(); ++i) {
+            const int tx = x + i;
+            if (tx < 0 || tx >= dst.width()) continue;
+            for (int c = 0; c < src.channels(); ++c) dst.at(tx, ty, c) = src.at(i, j, c);
+        }
+    }
+}
+
+void drawLabel(Image& image, int x, int y, int width, const char* text) {
+    cv::Mat m = wrap(image);
+    const int strip = 18;
+    const cv::Rect rect(x, std::max(0, y - strip), width, strip);
+    cv::Mat region = m(rect & cv::Rect(0, 0, image.width(), image.height()));
+    region *= 0.35;
+    cv::putText(m, text, cv::Point(x + 4, y - 5), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar::all(1.0), 1,
+                cv::LINE_AA);
+}
+
+ChannelStats channelStats(const Image& image, int channel) {
+    double sum = 0.0, sum2 = 0.0;
+    const size_t n = image.pixelCount();
+    const int stride = image.channels();
+    const float* p = image.data().data() + channel;
+    for (size_t i = 0; i < n; ++i) {
+        const double v = p[i * size_t(stride)];
+        sum += v;
+        sum2 += v * v;
+    }
+    ChannelStats s;
+    if (n == 0) return s;
+    s.mean = sum / double(n);
+    s.stddev = std::sqrt(std::max(0.0, sum2 / double(n) - s.mean * s.mean));
+    return s;
+}
+
+}  // namespace stochtex

@@ -1,0 +1,55 @@
+#pragma once
+// The one image type of stochtex: W×H pixels of C float32 channels,
+// interleaved, row-major, row 0 at the top. Values are nominally in [0,1].
+#include <cstddef>
+#include <vector>
+
+namespace stochtex {
+
+class Image {
+public:
+    Image() = default;
+    Image(int width, int height, int channels, float fill = 0.0f);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int channels() const { return channels_; }
+    bool empty() const { return data_.empty(); }
+    size_t pixelCount() const { return size_t(width_) * size_t(height_); }
+
+    float& at(int x, int y, int c = 0) { return data_[index(x, y, c)]; }
+    float at(int x, int y, int c = 0) const { return data_[index(x, y, c)]; }
+    float* row(int y) { return data_.data() + size_t(y) * size_t(width_) * size_t(channels_); }
+    const float* row(int y) const { return data_.data() + size_t(y) * size_t(width_) * size_t(channels_); }
+    std::vector<float>& data() { return data_; }
+    const std::vector<float>& data() const { return data_; }
+
+private:
+    size_t index(int x, int y, int c) const {
+        return (size_t(y) * size_t(width_) + size_t(x)) * size_t(channels_) + size_t(c);
+    }
+    int width_ = 0, height_ = 0, channels_ = 0;
+    std::vector<float> data_;
+};
+
+// Same pixels with 3 channels (gray is replicated; extra channels are dropped).
+Image toRgb(const Image& image);
+// Luminance-free average of the channels into one channel.
+Image toGray(const Image& image);
+// Nearest-neighbour resize, used for showing small tables large in sheets.
+Image resizeNearest(const Image& image, int width, int height);
+// Bilinear (area for shrinking) resize through OpenCV.
+Image resizeSmooth(const Image& image, int width, int height);
+// Copies src into dst with its top-left corner at (x, y); channels must match.
+void paste(Image& dst, const Image& src, int x, int y);
+// Writes a text label (white on a dark strip) at the bottom-left of a region.
+void drawLabel(Image& image, int x, int y, int width, const char* text);
+
+// Per-channel mean and (population) standard deviation.
+struct ChannelStats {
+    double mean = 0.0;
+    double stddev = 0.0;
+};
+ChannelStats channelStats(const Image& image, int channel = 0);
+
+}  // namespace stochtex

@@ -1,0 +1,131 @@
+#include "stochtex/pattern/colormap.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "stochtex/core/parallel.h"
+
+namespace stochtex {
+
+ColormapTable::ColormapTable(Image table) : table_(std::move(table)) {
+    if (table_.channels() != 3 || table_.width() < 2 || table_.height() < 2)
+        throw std::invalid_argument("ColormapTable: needs an RGB table of at least 2×2");
+}
+
+// Flips rows: tables keep y = 0 in row 0, images on disk show y up.
+static Image flipRows(const Image& image) {
+    Image out(image.width(), image.height(), image.channels());
+    const size_t rowSize = size_t(image.width()) * size_t(image.channels());
+    for (int j = 0; j < image.height(); ++j)
+        std::copy(image.row(j), image.row(j) + rowSize, out.row(image.height() - 1 - j));
+    return out;
+}
+
+Image ColormapTable::toImage() const { return flipRows(table_); }
+
+ColormapTable ColormapTable::fromImage(const Image& image) { return ColormapTable(flipRows(toRgb(image))); }
+
+namespace {
+
+template <class F>
+ColormapTable tabulate(int resolution, F&& h) {
+    if (resolution < 2 || resolution > kMaxColormapResolution)
+        throw std::invalid_argument("colormap resolution out of range");
+    Image table(resolution, resolution, 3);
+    const double step = 1.0 / double(resolution - 1);
+    parallelRows(resolution, [&](int y0, int y1) {
+        for (int j = y0; j < y1; ++j)
+            for (int i = 0; i < resolution; ++i) {
+                const Rgb c = h(double(i) * step, double(j) * step);
+                for (int k = 0; k < 3; ++k) table.at(i, j, k) = c[size_t(k)];
+            }
+    });
+    return ColormapTable(std::move(table));
+}
+
+Rgb gray(double v) { return {float(v), float(v), float(v)}; }
+
+}  // namespace
+
+ColormapTable makeAnalyticColormap(AnalyticColormap kind, int resolution) {
+    switch (kind) {
+        case AnalyticColormap::Gaussian: return tabulate(resolution, [](double x, double) { return gray(x); });
+        case AnalyticColormap::Ridged:
+            return tabulate(resolution, [](double x, double) { return gray(std::abs(2.0 * x - 1.0)); });
+    }
+    throw std::invalid_argument("unknown analytic colormap");
+}
+
+float phasorProfile(PhasorProfile profile, double phase, double duty) {
+    const double t = (phase + std::numbers::pi) / (2.0 * std::numbers::pi);  // [0,1]
+    switch (profile) {
+        case PhasorProfile::Sine: return float(0.5 + 0.5 * std::sin(phase));
+        case PhasorProfile::Sawtooth: return float(t - std::floor(t));
+        case PhasorProfile::Square: return (t - std::floor(t)) < duty ? 1.0f : 0.0f;
+    }
+    return 0.0f;
+}
+
+ColormapTable makePhasorColormap(PhasorProfile profile, double duty, int resolution) {
+    return tabulate(resolution, [&](double x, double y) {
+        return gray(phasorProfile(profile, std::atan2(y - 0.5, x - 0.5), duty));
+    });
+}
+
+bool PaintedShape::contains(double x, double y) const {
+    switch (kind) {
+        case Kind::Rectangle: return x >= a[0] && x <= b[0] && y >= a[1] && y <= b[1];
+        case Kind::Disc: return std::hypot(x - a[0], y - a[1]) <= radius;
+        case Kind::Ring: {
+            const double r = std::hypot(x - a[0], y - a[1]);
+            return r >= innerRadius && r <= radius;
+        }
+        case Kind::HalfPlane:
+        case Kind::Band: {
+            const double t = angle * std::numbers::pi / 180.0;
+            // Signed distance to the boundary line, positive on its left.
+            const double d = -(x - a[0]) * std::sin(t) + (y - a[1]) * std::cos(t);
+            return kind == Kind::HalfPlane ? d >= 0.0 : std::abs(d) <= 0.5 * width;
+        }
+        case Kind::Polygon: {
+            bool inside = false;
+            const size_t n = points.size();
+            for (size_t i = 0, j = n - 1; i < n; j = i++) {
+                const auto& p = points[i];
+                const auto& q = points[j];
+                if ((p[1] > y) != (q[1] > y) && x < (q[0] - p[0]) * (y - p[1]) / (q[1] - p[1]) + p[0])
+                    inside = !inside;
+            }
+            return inside;
+        }
+    }
+    return false;
+}
+
+Rgb PaintedColormap::evaluate(double x, double y) const {
+    Rgb c = background;
+    for (const auto& s : shapes)
+        if (s.contains(x, y)) c = s.color;
+    return c;
+}
+
+ColormapTable PaintedColormap::rasterize(int resolution, int supersampling) const {
+    if (supersampling < 1) throw std::invalid_argument("supersampling must be >= 1");
+    const double cell = 1.0 / double(resolution - 1);
+    return tabulate(resolution, [&](double x, double y) {
+        // Average over the cell centred on the table sample.
+        Rgb sum{0, 0, 0};
+        for (int sj = 0; sj < supersampling; ++sj)
+            for (int si = 0; si < supersampling; ++si) {
+                const double ox = ((si + 0.5) / supersampling - 0.5) * cell;
+                const double oy = ((sj + 0.5) / supersampling - 0.5) * cell;
+                const Rgb c = evaluate(x + ox, y + oy);
+                for (int k = 0; k < 3; ++k) sum[size_t(k)] += c[size_t(k)];
+            }
+        const float inv = 1.0f / float(supersampling * supersampling);
+        return Rgb{sum[0] * inv, sum[1] * inv, sum[2] * inv};
+    });
+}
+
+}  // namespace stochtex

@@ -1,0 +1,100 @@
+#pragma once
+// 2D transfer functions H: [0,1]² → RGB, the colour maps of S = H ∘ N.
+//
+// Every H is evaluated through a ColormapTable: an Rx×Ry grid of RGB samples
+// at x = i/(Rx−1), y = j/(Ry−1), read bilinearly with clamp-to-edge (the
+// paper encodes H as a lookup table too, and the prefiltered table H̄ of the
+// filtering stage is built from this one). Sources of tables:
+//   * an image (any size; column 0 is x = 0, the bottom row is y = 0, so the
+//     file looks like a plot of H with y up),
+//   * analytic presets: Gaussian H = x, ridged H = |2x − 1|, and the phasor
+//     profile H = P(atan2(y − ½, x − ½)) with P = sine, sawtooth or square,
+//   * a painted layout: an ordered list of shapes, later ones on top.
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "stochtex/image/image.h"
+
+namespace stochtex {
+
+using Rgb = std::array<float, 3>;
+
+class ColormapTable {
+public:
+    ColormapTable() = default;
+    // table: Rx×Ry×3 with row j holding y = j/(Ry−1) (row 0 is y = 0).
+    explicit ColormapTable(Image table);
+
+    int resolutionX() const { return table_.width(); }
+    int resolutionY() const { return table_.height(); }
+    const Image& table() const { return table_; }
+
+    // Bilinear, clamp-to-edge.
+    Rgb sample(float x, float y) const {
+        const float fx = std::min(std::max(x, 0.0f), 1.0f) * float(table_.width() - 1);
+        const float fy = std::min(std::max(y, 0.0f), 1.0f) * float(table_.height() - 1);
+        const int x0 = std::min(int(fx), table_.width() - 2);
+        const int y0 = std::min(int(fy), table_.height() - 2);
+        const float tx = fx - float(x0), ty = fy - float(y0);
+        const float* a = table_.row(y0) + size_t(x0) * 3;
+        const float* b = table_.row(y0 + 1) + size_t(x0) * 3;
+        Rgb out;
+        for (int c = 0; c < 3; ++c) {
+            const float top = a[c] + tx * (a[c + 3] - a[c]);
+            const float bottom = b[c] + tx * (b[c + 3] - b[c]);
+            out[size_t(c)] = top + ty * (bottom - top);
+        }
+        return out;
+    }
+
+    // The table as an image with y up (row 0 = y = 1), for writing to disk.
+    Image toImage() const;
+    // Inverse of toImage: an image file's pixels as a table.
+    static ColormapTable fromImage(const Image& image);
+
+private:
+    Image table_;
+};
+
+// Analytic presets.
+enum class PhasorProfile { Sine, Sawtooth, Square };
+enum class AnalyticColormap { Gaussian, Ridged };
+
+ColormapTable makeAnalyticColormap(AnalyticColormap kind, int resolution = 256);
+// duty: fraction of the period that is bright (square profile only).
+ColormapTable makePhasorColormap(PhasorProfile profile, double duty = 0.5, int resolution = 256);
+// P(φ) for φ ∈ (−π, π].
+float phasorProfile(PhasorProfile profile, double phase, double duty);
+
+// A painted layout. Shapes are tested in order; the last one containing a
+// point gives its colour. Angles are in degrees, counter-clockwise, y up.
+struct PaintedShape {
+    enum class Kind { Rectangle, Disc, Ring, HalfPlane, Band, Polygon };
+    Kind kind = Kind::Rectangle;
+    Rgb color{0, 0, 0};
+    std::array<double, 2> a{0, 0};  // rectangle min; disc/ring centre; half-plane/band point
+    std::array<double, 2> b{0, 0};  // rectangle max
+    double radius = 0;              // disc radius; ring outer radius
+    double innerRadius = 0;         // ring inner radius
+    double angle = 0;               // half-plane/band boundary direction (painted side: its left)
+    double width = 0;               // band width
+    std::vector<std::array<double, 2>> points;  // polygon vertices (even-odd rule)
+
+    bool contains(double x, double y) const;
+};
+
+struct PaintedColormap {
+    Rgb background{0, 0, 0};
+    std::vector<PaintedShape> shapes;
+
+    // Exact colour at (x, y).
+    Rgb evaluate(double x, double y) const;
+    // Table with `supersampling`² samples averaged per entry so edges are anti-aliased.
+    ColormapTable rasterize(int resolution = 256, int supersampling = 4) const;
+};
+
+constexpr int kMaxColormapResolution = 4096;
+
+}  // namespace stochtex

@@ -1,0 +1,54 @@
+#pragma once
+// Reads a JSON document while remembering where it is, so every validation
+// error names the source and the JSON pointer of the offending value, e.g.
+//   camouflage.json: /noise_x/components/0/frequency: must be > 0 (got -3)
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace stochtex {
+
+class JsonReader {
+public:
+    JsonReader(const nlohmann::json& value, std::string source, std::string pointer = "");
+
+    // Parses text; a syntax error becomes an InputError naming source, line, column.
+    static nlohmann::json parse(const std::string& text, const std::string& source);
+
+    const nlohmann::json& value() const { return *value_; }
+    const std::string& pointer() const { return pointer_; }
+    const std::string& source() const { return source_; }
+
+    [[noreturn]] void fail(const std::string& problem) const;
+
+    bool has(const std::string& key) const;
+    JsonReader at(const std::string& key) const;  // required member
+    JsonReader at(size_t index) const;            // array element
+    std::optional<JsonReader> find(const std::string& key) const;
+
+    // Checks this value is an object whose keys are all in `known` (typos fail).
+    void expectObject(std::initializer_list<const char*> known) const;
+    size_t arraySize() const;  // fails unless an array
+
+    double number(double min, double max) const;
+    double number(const std::string& key, double fallback, double min, double max) const;
+    int integer(const std::string& key, int fallback, int min, int max) const;
+    int integer(int min, int max) const;
+    bool boolean(const std::string& key, bool fallback) const;
+    std::string string() const;
+    std::string string(const std::string& key, const std::string& fallback) const;
+    // A string that must be one of `choices`.
+    std::string choice(const std::string& key, const std::string& fallback,
+                       std::initializer_list<const char*> choices) const;
+    std::string choice(std::initializer_list<const char*> choices) const;
+
+private:
+    const nlohmann::json* value_;
+    std::string source_;
+    std::string pointer_;
+};
+
+}  // namespace stochtex

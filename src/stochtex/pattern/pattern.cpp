@@ -1,0 +1,108 @@
+#include "stochtex/pattern/pattern.h"
+
+#include <cmath>
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/hash.h"
+#include "stochtex/core/parallel.h"
+
+namespace stochtex {
+
+Pattern Pattern::build(const PatternSpec& spec) {
+    std::array<NoiseExample, 2> examples;
+    for (int axis = 0; axis < 2; ++axis) {
+        NoiseSpec ns = spec.noise[axis];
+        ns.spectrum.seed = noiseSeed(spec, axis);
+        examples[size_t(axis)] = buildNoiseExample(ns, axis == 0 ? spec.name + ": noise_x" : spec.name + ": noise_y");
+    }
+    if (examples[0].size() != examples[1].size())
+        throw InputError(spec.name + ": noise_x is " + std::to_string(examples[0].size()) + " texels wide but noise_y is " +
+                         std::to_string(examples[1].size()) + "; both examples must have the same size");
+    const uint32_t sx = deriveSeed(spec.seed, 1);
+    const uint32_t sy = spec.offsets == OffsetMode::Shared ? sx : deriveSeed(spec.seed, 2);
+    return Pattern(std::move(examples), {sx, sy}, buildColormap(spec.colormap), spec.gridDensity);
+}
+
+Pattern::Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> offsetSeeds, ColormapTable colormap,
+                 double gridDensity)
+    : colormap_(std::move(colormap)), density_(gridDensity) {
+    for (size_t a = 0; a < 2; ++a) {
+        examples_[a] = std::make_shared<const NoiseExample>(std::move(examples[a]));
+        noises_[a] = TilingBlendingNoise(examples_[a], offsetSeeds[a]);
+    }
+}
+
+View Pattern::defaultView(const PatternSpec& spec) const {
+    View v;
+    v.width = spec.width;
+    v.height = spec.height;
+    v.scale = spec.scale;
+    return v;
+}
+
+std::array<float, 2> Pattern::field(double u, double v) const {
+    const BlendStencil s = triangleGrid(u, v, density_);
+    const float fu = periodFraction(u), fv = periodFraction(v);
+    return {examples_[0]->toOutput(noises_[0].blend(s, fu, fv)), examples_[1]->toOutput(noises_[1].blend(s, fu, fv))};
+}
+
+Rgb Pattern::evaluate(double u, double v) const {
+    const auto n = field(u, v);
+    return colormap_.sample(n[0], n[1]);
+}
+
+void validateView(const View& view, const std::string& what) {
+    if (view.width < 1 || view.height < 1 || view.width > kMaxOutputSide || view.height > kMaxOutputSide)
+        throw InputError(what + ": output size " + std::to_string(view.width) + "x" + std::to_string(view.height) +
+                         " out of range (1.." + std::to_string(kMaxOutputSide) + " per side)");
+    if ((long long)view.width * view.height > kMaxOutputPixels)
+        throw InputError(what + ": output has more than " + std::to_string(kMaxOutputPixels) + " pixels");
+    if (!(view.scale > 0) || !std::isfinite(view.scale) || view.scale > 1e6)
+        throw InputError(what + ": scale must be a finite number in (0, 1e6]");
+    if (!std::isfinite(view.offsetU) || !std::isfinite(view.offsetV) || std::abs(view.offsetU) > 1e9 ||
+        std::abs(view.offsetV) > 1e9)
+        throw InputError(what + ": offset must be finite and at most 1e9 texels");
+}
+
+template <class PixelFn>
+void Pattern::forEachPixel(const View& view, PixelFn&& fn) const {
+    const double invW = 1.0 / double(exampleSize());
+    parallelRows(view.height, [&](int y0, int y1) {
+        for (int py = y0; py < y1; ++py) {
+            const double v = (view.offsetV + (py + 0.5) * view.scale) * invW;
+            const float fv = periodFraction(v);
+            for (int px = 0; px < view.width; ++px) {
+                const double u = (view.offsetU + (px + 0.5) * view.scale) * invW;
+                fn(px, py, triangleGrid(u, v, density_), periodFraction(u), fv);
+            }
+        }
+    });
+}
+
+Image Pattern::render(const View& view) const {
+    validateView(view, "render");
+    Image out(view.width, view.height, 3);
+    forEachPixel(view, [&](int px, int py, const BlendStencil& s, float fu, float fv) {
+        const float nx = examples_[0]->toOutput(noises_[0].blend(s, fu, fv));
+        const float ny = examples_[1]->toOutput(noises_[1].blend(s, fu, fv));
+        const Rgb c = colormap_.sample(nx, ny);
+        float* p = out.row(py) + size_t(px) * 3;
+        p[0] = c[0];
+        p[1] = c[1];
+        p[2] = c[2];
+    });
+    return out;
+}
+
+Image Pattern::renderNoise(int axis, const View& view) const {
+    validateView(view, "render");
+    Image out(view.width, view.height, 1);
+    const auto& noise = noises_[size_t(axis)];
+    const auto& example = *examples_[size_t(axis)];
+    forEachPixel(view, [&](int px, int py, const BlendStencil& s, float fu, float fv) {
+        out.at(px, py) = std::min(std::max(example.toOutput(noise.blend(s, fu, fv)), 0.0f), 1.0f);
+    });
+    return out;
+}
+
+}  // namespace stochtex

@@ -1,0 +1,59 @@
+#pragma once
+// A colour-mapped noise vector field S = H ∘ N (paper eq. 1–2), ready to
+// evaluate: two tiled-and-blended noises N = (N_x, N_y) over a shared
+// triangle grid, and a colormap table H.
+#include <array>
+#include <memory>
+
+#include "stochtex/image/image.h"
+#include "stochtex/noise/example.h"
+#include "stochtex/noise/tiling_blending.h"
+#include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/pattern_spec.h"
+
+namespace stochtex {
+
+// Maps output pixels to texture space: pixel (px, py) covers example texels
+// offset + (p + ½)·scale, i.e. uv = (offset + (p + ½)·scale) / W.
+struct View {
+    int width = 512, height = 512;
+    double scale = 1.0;              // example texels per output pixel
+    double offsetU = 0, offsetV = 0;  // in example texels
+};
+
+class Pattern {
+public:
+    static Pattern build(const PatternSpec& spec);
+    Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> offsetSeeds, ColormapTable colormap,
+            double gridDensity);
+
+    // N(uv) in output space (after T⁻¹ for Gaussianized exemplars).
+    std::array<float, 2> field(double u, double v) const;
+    // S(uv) = H(N(uv)).
+    Rgb evaluate(double u, double v) const;
+
+    // Unfiltered rendering, one sample per pixel centre, multi-threaded.
+    Image render(const View& view) const;
+    // N_axis as a gray image (axis 0 = x, 1 = y), same view mapping.
+    Image renderNoise(int axis, const View& view) const;
+
+    const NoiseExample& example(int axis) const { return *examples_[size_t(axis)]; }
+    const ColormapTable& colormap() const { return colormap_; }
+    int exampleSize() const { return examples_[0]->size(); }
+    double gridDensity() const { return density_; }
+    View defaultView(const PatternSpec& spec) const;
+
+private:
+    template <class PixelFn>
+    void forEachPixel(const View& view, PixelFn&& fn) const;
+
+    std::array<std::shared_ptr<const NoiseExample>, 2> examples_;
+    std::array<TilingBlendingNoise, 2> noises_;
+    ColormapTable colormap_;
+    double density_;
+};
+
+// Checks a view against the output caps; InputError naming `what` otherwise.
+void validateView(const View& view, const std::string& what);
+
+}  // namespace stochtex

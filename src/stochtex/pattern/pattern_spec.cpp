@@ -1,0 +1,289 @@
+#include "stochtex/pattern/pattern_spec.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/hash.h"
+#include "stochtex/image/image_io.h"
+
+namespace stochtex {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kMaxFrequency = 1e4;
+
+SpectrumComponent parseComponent(const JsonReader& r) {
+    r.expectObject({"shape", "frequency", "cutoff", "bandwidth", "orientation", "weight"});
+    SpectrumComponent c;
+    const std::string shape = r.at("shape").choice({"lowpass", "ring", "bilobe"});
+    if (shape == "lowpass") {
+        c.shape = SpectrumShape::LowPass;
+        c.frequency = r.at("cutoff").number(1e-3, kMaxFrequency);
+        if (r.has("frequency") || r.has("bandwidth") || r.has("orientation"))
+            r.fail("a lowpass component takes only \"cutoff\" and \"weight\"");
+    } else {
+        c.shape = shape == "ring" ? SpectrumShape::Ring : SpectrumShape::BiLobe;
+        c.frequency = r.at("frequency").number(0.0, kMaxFrequency);
+        c.bandwidth = r.at("bandwidth").number(1e-3, kMaxFrequency);
+        if (c.shape == SpectrumShape::BiLobe)
+            c.orientation = r.number("orientation", 0.0, -360.0, 360.0);
+        else if (r.has("orientation"))
+            r.fail("a ring is isotropic: \"orientation\" applies to bilobe components only");
+        if (r.has("cutoff")) r.fail("\"cutoff\" applies to lowpass components only");
+    }
+    c.weight = r.number("weight", 1.0, 0.0, 1e6);
+    return c;
+}
+
+Rgb parseColor(const JsonReader& r) {
+    if (r.value().is_string()) {
+        const std::string s = r.string();
+        auto hex = [](char ch) -> int {
+            if (ch >= '0' && ch <= '9') return ch - '0';
+            if (ch >= 'a' && ch <= 'f') return ch - 'a' + 10;
+            if (ch >= 'A' && ch <= 'F') return ch - 'A' + 10;
+            return -1;
+        };
+        if (s.size() == 7 && s[0] == '#') {
+            Rgb c;
+            for (int k = 0; k < 3; ++k) {
+                const int hi = hex(s[size_t(1 + 2 * k)]), lo = hex(s[size_t(2 + 2 * k)]);
+                if (hi < 0 || lo < 0) r.fail("invalid colour \"" + s + "\" (expected #rrggbb)");
+                c[size_t(k)] = float(hi * 16 + lo) / 255.0f;
+            }
+            return c;
+        }
+        r.fail("invalid colour \"" + s + "\" (expected #rrggbb or [r, g, b] in [0,1])");
+    }
+    if (r.arraySize() != 3) r.fail("a colour array needs 3 components");
+    return {float(r.at(0).number(0, 1)), float(r.at(1).number(0, 1)), float(r.at(2).number(0, 1))};
+}
+
+std::array<double, 2> parsePoint(const JsonReader& r) {
+    if (r.arraySize() != 2) r.fail("a point needs 2 coordinates [x, y]");
+    return {r.at(0).number(-10, 10), r.at(1).number(-10, 10)};
+}
+
+PaintedShape parseShape(const JsonReader& r) {
+    const std::string kind = r.at("shape").choice({"rectangle", "disc", "ring", "halfplane", "band", "polygon"});
+    PaintedShape s;
+    if (kind == "rectangle") {
+        r.expectObject({"shape", "color", "min", "max"});
+        s.kind = PaintedShape::Kind::Rectangle;
+        s.a = parsePoint(r.at("min"));
+        s.b = parsePoint(r.at("max"));
+        if (s.b[0] < s.a[0] || s.b[1] < s.a[1]) r.at("max").fail("max must not be below min");
+    } else if (kind == "disc") {
+        r.expectObject({"shape", "color", "center", "radius"});
+        s.kind = PaintedShape::Kind::Disc;
+        s.a = parsePoint(r.at("center"));
+        s.radius = r.at("radius").number(0, 10);
+    } else if (kind == "ring") {
+        r.expectObject({"shape", "color", "center", "inner", "outer"});
+        s.kind = PaintedShape::Kind::Ring;
+        s.a = parsePoint(r.at("center"));
+        s.innerRadius = r.at("inner").number(0, 10);
+        s.radius = r.at("outer").number(0, 10);
+        if (s.radius < s.innerRadius) r.at("outer").fail("outer radius must be >= inner radius");
+    } else if (kind == "halfplane" || kind == "band") {
+        if (kind == "halfplane")
+            r.expectObject({"shape", "color", "point", "angle"});
+        else
+            r.expectObject({"shape", "color", "point", "angle", "width"});
+        s.kind = kind == "halfplane" ? PaintedShape::Kind::HalfPlane : PaintedShape::Kind::Band;
+        s.a = parsePoint(r.at("point"));
+        s.angle = r.number("angle", 0.0, -360, 360);
+        if (kind == "band") s.width = r.at("width").number(0, 10);
+    } else {
+        r.expectObject({"shape", "color", "points"});
+        s.kind = PaintedShape::Kind::Polygon;
+        const JsonReader pts = r.at("points");
+        const size_t n = pts.arraySize();
+        if (n < 3) pts.fail("a polygon needs at least 3 points");
+        for (size_t i = 0; i < n; ++i) s.points.push_back(parsePoint(pts.at(i)));
+    }
+    s.color = parseColor(r.at("color"));
+    return s;
+}
+
+fs::path resolve(const JsonReader& r, const fs::path& baseDir) {
+    const fs::path p = r.string();
+    if (p.empty()) r.fail("empty path");
+    return p.is_absolute() ? p : baseDir / p;
+}
+
+}  // namespace
+
+NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
+    NoiseSpec spec;
+    const std::string type = r.at("type").choice({"spectrum", "image"});
+    if (type == "spectrum") {
+        r.expectObject({"type", "size", "seed", "mean", "stddev", "components", "quadrature"});
+        SpectrumSpec& s = spec.spectrum;
+        s.size = r.integer("size", 256, 8, kMaxExampleSize);
+        if (auto seed = r.find("seed")) {
+            s.seed = uint32_t(seed->integer(0, 2147483647));
+            spec.explicitSeed = true;
+        }
+        s.mean = r.number("mean", 0.5, 0.0, 1.0);
+        s.stddev = r.number("stddev", 1.0 / 6.0, 1e-4, 0.5);
+        s.quadrature = r.boolean("quadrature", false);
+        const JsonReader comps = r.at("components");
+        const size_t n = comps.arraySize();
+        if (n == 0) comps.fail("needs at least one spectrum component");
+        for (size_t i = 0; i < n; ++i) s.components.push_back(parseComponent(comps.at(i)));
+        double total = 0;
+        for (const auto& c : s.components) total += c.weight;
+        if (total <= 0) comps.fail("component weights sum to zero");
+    } else {
+        r.expectObject({"type", "path", "gaussianize"});
+        spec.source = NoiseSpec::Source::Image;
+        spec.image = resolve(r.at("path"), baseDir);
+        spec.gaussianize = r.boolean("gaussianize", true);
+    }
+    return spec;
+}
+
+ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
+    ColormapSpec spec;
+    const std::string type = r.at("type").choice({"gaussian", "ridged", "phasor", "image", "painted"});
+    if (type == "gaussian" || type == "ridged") {
+        r.expectObject({"type", "resolution"});
+        spec.source = ColormapSpec::Source::Analytic;
+        spec.analytic = type == "gaussian" ? AnalyticColormap::Gaussian : AnalyticColormap::Ridged;
+    } else if (type == "phasor") {
+        r.expectObject({"type", "resolution", "profile", "duty"});
+        spec.source = ColormapSpec::Source::Phasor;
+        const std::string p = r.choice("profile", "sine", {"sine", "sawtooth", "square"});
+        spec.profile = p == "sine" ? PhasorProfile::Sine : p == "sawtooth" ? PhasorProfile::Sawtooth : PhasorProfile::Square;
+        spec.duty = r.number("duty", 0.5, 0.0, 1.0);
+    } else if (type == "image") {
+        r.expectObject({"type", "path"});
+        spec.source = ColormapSpec::Source::Image;
+        spec.image = resolve(r.at("path"), baseDir);
+    } else {
+        r.expectObject({"type", "resolution", "background", "shapes"});
+        spec.source = ColormapSpec::Source::Painted;
+        spec.painted.background = r.has("background") ? parseColor(r.at("background")) : Rgb{0, 0, 0};
+        if (auto shapes = r.find("shapes")) {
+            const size_t n = shapes->arraySize();
+            for (size_t i = 0; i < n; ++i) spec.painted.shapes.push_back(parseShape(shapes->at(i)));
+        }
+    }
+    spec.resolution = r.integer("resolution", 256, 2, kMaxColormapResolution);
+    return spec;
+}
+
+PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
+    r.expectObject({"name", "description", "seed", "size", "scale", "offsets", "grid_density", "noise_x", "noise_y",
+                    "colormap"});
+    PatternSpec spec;
+    spec.name = r.string("name", "pattern");
+    if (r.has("description")) (void)r.at("description").string();
+    spec.seed = uint32_t(r.integer("seed", 1, 0, 2147483647));
+    if (auto size = r.find("size")) {
+        if (size->value().is_array()) {
+            if (size->arraySize() != 2) size->fail("size is N or [width, height]");
+            spec.width = size->at(0).integer(1, kMaxOutputSide);
+            spec.height = size->at(1).integer(1, kMaxOutputSide);
+        } else {
+            spec.width = spec.height = size->integer(1, kMaxOutputSide);
+        }
+        if ((long long)spec.width * spec.height > kMaxOutputPixels)
+            size->fail("more than " + std::to_string(kMaxOutputPixels) + " pixels");
+    }
+    spec.scale = r.number("scale", 1.0, 1e-6, 1e6);
+    if (spec.scale <= 0) r.at("scale").fail("must be > 0");
+    spec.gridDensity = r.number("grid_density", spec.gridDensity, 1e-3, 1e3);
+
+    spec.noise[0] = parseNoiseSpec(r.at("noise_x"), baseDir);
+    const JsonReader ny = r.at("noise_y");
+    bool quadrature = false;
+    if (ny.value().is_string()) {
+        if (ny.string() != "quadrature")
+            ny.fail("expected a noise object or \"quadrature\" (the Hilbert pair of noise_x)");
+        if (spec.noise[0].source != NoiseSpec::Source::Spectrum)
+            ny.fail("\"quadrature\" needs a spectrum noise_x");
+        spec.noise[1] = spec.noise[0];
+        spec.noise[1].spectrum.quadrature = !spec.noise[0].spectrum.quadrature;
+        quadrature = true;
+        spec.quadraturePair = true;
+    } else {
+        spec.noise[1] = parseNoiseSpec(ny, baseDir);
+    }
+    // A quadrature pair only stays in quadrature if both share the tiling offsets.
+    const std::string offsets =
+        r.choice("offsets", quadrature ? "shared" : "independent", {"independent", "shared"});
+    spec.offsets = offsets == "shared" ? OffsetMode::Shared : OffsetMode::Independent;
+    spec.colormap = parseColormapSpec(r.at("colormap"), baseDir);
+    return spec;
+}
+
+nlohmann::json readJsonFile(const std::string& path) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot open file");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return JsonReader::parse(ss.str(), path);
+}
+
+PatternSpec loadPatternFile(const std::string& path) {
+    const nlohmann::json j = readJsonFile(path);
+    const fs::path base = fs::path(path).has_parent_path() ? fs::path(path).parent_path() : fs::path(".");
+    return parsePatternSpec(JsonReader(j, path), base);
+}
+
+uint32_t noiseSeed(const PatternSpec& spec, int axis) {
+    const NoiseSpec& n = spec.noise[axis];
+    if (n.explicitSeed) return n.spectrum.seed;
+    // A quadrature partner shares its partner's white noise.
+    if (axis == 1 && spec.quadraturePair) return noiseSeed(spec, 0);
+    return deriveSeed(spec.seed, 100u + uint32_t(axis));
+}
+
+Image buildExampleImage(const NoiseSpec& spec, const std::string& context) {
+    if (spec.source == NoiseSpec::Source::Spectrum) return synthesizeExample(spec.spectrum);
+    const Image img = toGray(readImage(spec.image.string()));
+    if (img.width() != img.height())
+        throw InputError(context + ": exemplar " + spec.image.string() + " is " + std::to_string(img.width()) + "x" +
+                         std::to_string(img.height()) + "; examples must be square (they tile with period 1)");
+    if (img.width() < 8 || img.width() > kMaxExampleSize)
+        throw InputError(context + ": exemplar " + spec.image.string() + " must be between 8 and " +
+                         std::to_string(kMaxExampleSize) + " pixels wide");
+    return img;
+}
+
+NoiseExample buildNoiseExample(const NoiseSpec& spec, const std::string& context) {
+    Image img = buildExampleImage(spec, context);
+    if (spec.source == NoiseSpec::Source::Image && spec.gaussianize) {
+        HistogramTransform t = HistogramTransform::fit(img);
+        Image g = t.forward(img);
+        return NoiseExample(std::move(g), std::move(t));
+    }
+    return NoiseExample(std::move(img));
+}
+
+ColormapTable buildColormap(const ColormapSpec& spec) {
+    switch (spec.source) {
+        case ColormapSpec::Source::Analytic: return makeAnalyticColormap(spec.analytic, spec.resolution);
+        case ColormapSpec::Source::Phasor: return makePhasorColormap(spec.profile, spec.duty, spec.resolution);
+        case ColormapSpec::Source::Image: {
+            const Image img = readImage(spec.image.string());
+            if (img.width() < 2 || img.height() < 2)
+                throw InputError(spec.image.string() + ": a colormap image needs at least 2x2 pixels");
+            if (img.width() > kMaxColormapResolution || img.height() > kMaxColormapResolution)
+                throw InputError(spec.image.string() + ": colormap image larger than " +
+                                 std::to_string(kMaxColormapResolution) + " pixels per side");
+            return ColormapTable::fromImage(img);
+        }
+        case ColormapSpec::Source::Painted: return spec.painted.rasterize(spec.resolution);
+    }
+    throw InputError("unknown colormap source");
+}
+
+}  // namespace stochtex

@@ -1,0 +1,76 @@
+#pragma once
+// The pattern file format (JSON) and its validation. A pattern is
+//   { "name", "seed", "size", "scale", "offsets", "grid_density",
+//     "noise_x": NOISE, "noise_y": NOISE | "quadrature", "colormap": COLORMAP }
+// documented in full in docs/PATTERNS.md. Every error names the source and
+// the JSON pointer of the value at fault.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "stochtex/noise/example.h"
+#include "stochtex/noise/spectrum.h"
+#include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/json_reader.h"
+
+namespace stochtex {
+
+constexpr int kMaxOutputSide = 16384;
+constexpr long long kMaxOutputPixels = 8192LL * 8192LL;
+
+struct NoiseSpec {
+    enum class Source { Spectrum, Image };
+    Source source = Source::Spectrum;
+    SpectrumSpec spectrum;          // Source::Spectrum
+    bool explicitSeed = false;      // spectrum.seed came from the file
+    std::filesystem::path image;    // Source::Image (resolved against the file's folder)
+    bool gaussianize = true;        // Source::Image: blend T(E), apply T⁻¹ after
+};
+
+struct ColormapSpec {
+    enum class Source { Analytic, Phasor, Image, Painted };
+    Source source = Source::Analytic;
+    AnalyticColormap analytic = AnalyticColormap::Gaussian;
+    PhasorProfile profile = PhasorProfile::Sine;
+    double duty = 0.5;
+    std::filesystem::path image;
+    PaintedColormap painted;
+    int resolution = 256;
+};
+
+enum class OffsetMode { Independent, Shared };
+
+struct PatternSpec {
+    std::string name = "pattern";
+    uint32_t seed = 1;
+    int width = 512, height = 512;
+    double scale = 1.0;  // example texels per output pixel
+    OffsetMode offsets = OffsetMode::Independent;
+    double gridDensity = 3.4641016151377544;  // 2√3 triangle-grid cells per uv unit
+    NoiseSpec noise[2];
+    bool quadraturePair = false;  // noise_y is "quadrature": the Hilbert pair of noise_x
+    ColormapSpec colormap;
+};
+
+NoiseSpec parseNoiseSpec(const JsonReader& r, const std::filesystem::path& baseDir);
+ColormapSpec parseColormapSpec(const JsonReader& r, const std::filesystem::path& baseDir);
+PatternSpec parsePatternSpec(const JsonReader& r, const std::filesystem::path& baseDir);
+
+// Reads a file (InputError if missing) and parses it as JSON.
+nlohmann::json readJsonFile(const std::string& path);
+PatternSpec loadPatternFile(const std::string& path);
+
+// Gives noise without an explicit seed a seed derived from the pattern seed
+// (axis 0 or 1), so one pattern seed controls everything.
+uint32_t noiseSeed(const PatternSpec& spec, int axis);
+
+// The example image (1 channel, W×W, values in [0,1]) as specified,
+// before any Gaussianization.
+Image buildExampleImage(const NoiseSpec& spec, const std::string& context);
+// The example prepared for tiling and blending (Gaussianized if asked).
+NoiseExample buildNoiseExample(const NoiseSpec& spec, const std::string& context);
+ColormapTable buildColormap(const ColormapSpec& spec);
+
+}  // namespace stochtex
