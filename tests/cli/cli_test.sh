@@ -1,1 +1,97 @@
-exit 0
+#!/usr/bin/env bash
+# End-to-end checks of the stochtex CLI: success paths write what they say,
+# bad input exits with code 2, prints one clear message naming the input,
+# and leaves no output (or temporary) file behind.
+# Usage: cli_test.sh STOCHTEX_BINARY SOURCE_DIR
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect_ok DESCRIPTION FILE-THAT-MUST-EXIST -- command...
+expect_ok() {
+  local what=$1 file=$2; shift 3
+  if ! "$@" >"$work/out.txt" 2>"$work/err.txt"; then
+    fail "$what: exit $? ($(cat "$work/err.txt"))"; return
+  fi
+  [ -z "$file" ] || [ -s "$file" ] || fail "$what: $file not written"
+}
+
+# expect_bad DESCRIPTION FILE-THAT-MUST-NOT-EXIST MESSAGE-FRAGMENT -- command...
+expect_bad() {
+  local what=$1 file=$2 fragment=$3; shift 4
+  "$@" >"$work/out.txt" 2>"$work/err.txt"
+  local rc=$?
+  [ $rc -eq 2 ] || fail "$what: exit code $rc, expected 2"
+  grep -qF -- "$fragment" "$work/err.txt" || fail "$what: message lacks '$fragment': $(cat "$work/err.txt")"
+  [ "$(wc -l <"$work/err.txt")" -le 2 ] || fail "$what: more than one message: $(cat "$work/err.txt")"
+  [ ! -e "$file" ] || fail "$what: $file was left behind"
+  if ls -a "$(dirname "$file")" 2>/dev/null | grep -q '\.tmp$'; then fail "$what: temporary file left behind"; fi
+}
+
+out=$work/out
+mkdir -p "$out"
+
+# --- help on every command ---
+for c in render gallery noise colormap presets; do
+  "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
+done
+
+# --- success paths ---
+expect_ok "render preset" "$out/camo.png" -- "$bin" render --preset camouflage -o "$out/camo.png" --size 64
+expect_ok "render exr" "$out/camo.exr" -- "$bin" render --preset camouflage -o "$out/camo.exr" --size 32,24
+expect_ok "render file" "$out/file.png" -- "$bin" render "$src/data/presets/woven.json" -o "$out/file.png" --size 48 --scale 2 --offset 10,-3.5
+expect_ok "render 1 thread" "$out/t1.png" -- "$bin" render --preset marble -o "$out/t1.png" --size 128 -j 1
+expect_ok "render 2 threads" "$out/t2.png" -- "$bin" render --preset marble -o "$out/t2.png" --size 128 -j 2
+cmp -s "$out/t1.png" "$out/t2.png" || fail "render differs between 1 and 2 threads"
+expect_ok "render other seed" "$out/s2.png" -- "$bin" render --preset marble -o "$out/s2.png" --size 128 --seed 99
+cmp -s "$out/t1.png" "$out/s2.png" && fail "different seeds gave identical images"
+expect_ok "noise inline" "$out/noise.png" -- "$bin" noise '{"type":"spectrum","size":64,"seed":3,"components":[{"shape":"ring","frequency":8,"bandwidth":2}]}' -o "$out/noise.png" --spectrum "$out/spec.png"
+[ -s "$out/spec.png" ] || fail "noise --spectrum not written"
+expect_ok "colormap preset" "$out/cm.png" -- "$bin" colormap --preset marble -o "$out/cm.png" --resolution 64
+expect_ok "colormap inline" "$out/cm2.png" -- "$bin" colormap '{"type":"phasor","profile":"square","duty":0.3}' -o "$out/cm2.png"
+expect_ok "presets" "" -- "$bin" presets
+grep -q "camouflage" "$work/out.txt" || fail "presets does not list camouflage"
+expect_ok "gallery" "$out/gal/index.html" -- "$bin" gallery -o "$out/gal" --size 64 --preset gaussian --preset woven
+[ -s "$out/gal/woven-sheet.png" ] || fail "gallery sheet missing"
+
+# An exemplar image as noise (Gaussianized), and an image colormap.
+cat >"$work/exemplar.json" <<JSON
+{"noise_x": {"type": "image", "path": "out/noise.png"},
+ "noise_y": {"type": "image", "path": "out/noise.png", "gaussianize": false},
+ "colormap": {"type": "image", "path": "out/cm.png"}, "size": 64}
+JSON
+expect_ok "exemplar pattern" "$out/ex.png" -- "$bin" render "$work/exemplar.json" -o "$out/ex.png"
+
+# --- bad input ---
+echo '{"noise_x": {"type": "spectrum", ' >"$work/malformed.json"
+expect_bad "malformed JSON" "$out/bad1.png" "malformed.json: malformed JSON" -- "$bin" render "$work/malformed.json" -o "$out/bad1.png"
+expect_bad "unknown preset" "$out/bad2.png" 'unknown preset "nope"' -- "$bin" render --preset nope -o "$out/bad2.png"
+expect_bad "missing pattern file" "$out/bad3.png" "missing.json: no such file" -- "$bin" render "$work/missing.json" -o "$out/bad3.png"
+sed 's#out/noise.png#out/absent.png#' "$work/exemplar.json" >"$work/missing-image.json"
+expect_bad "missing image" "$out/bad4.png" "absent.png: no such image file" -- "$bin" render "$work/missing-image.json" -o "$out/bad4.png"
+echo "not an image" >"$work/out/corrupt.png"
+sed 's#out/noise.png#out/corrupt.png#' "$work/exemplar.json" >"$work/corrupt-image.json"
+expect_bad "corrupt image" "$out/bad5.png" "corrupt.png: not a readable image" -- "$bin" render "$work/corrupt-image.json" -o "$out/bad5.png"
+expect_bad "NaN scale" "$out/bad6.png" "scale must be a finite number" -- "$bin" render --preset gaussian -o "$out/bad6.png" --scale nan
+expect_bad "negative scale" "$out/bad7.png" "scale must be a finite number" -- "$bin" render --preset gaussian -o "$out/bad7.png" --scale -2
+expect_bad "negative size" "$out/bad8.png" "--size" -- "$bin" render --preset gaussian -o "$out/bad8.png" --size=-5
+expect_bad "size over cap" "$out/bad9.png" "out of range (1..16384 per side)" -- "$bin" render --preset gaussian -o "$out/bad9.png" --size 100000
+expect_bad "NaN offset" "$out/bad10.png" "offset must be finite" -- "$bin" render --preset gaussian -o "$out/bad10.png" --offset nan,0
+expect_bad "bad extension" "$out/bad11.jpg" "unsupported output format" -- "$bin" render --preset gaussian -o "$out/bad11.jpg"
+expect_bad "missing output dir" "$out/nodir/bad12.png" "does not exist" -- "$bin" render --preset gaussian -o "$out/nodir/bad12.png"
+expect_bad "bad noise spec" "$out/bad13.png" "<inline JSON>: /components/0/frequency: must be in" -- "$bin" noise '{"type":"spectrum","components":[{"shape":"ring","frequency":-1,"bandwidth":2}]}' -o "$out/bad13.png"
+expect_bad "noise size over cap" "$out/bad14.png" "/size: must be in [8, 4096]" -- "$bin" noise '{"type":"spectrum","size":100000,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/bad14.png"
+expect_bad "bad colormap" "$out/bad15.png" "/type: unknown value" -- "$bin" colormap '{"type":"rainbow"}' -o "$out/bad15.png"
+expect_bad "unknown flag" "$out/bad16.png" "--bogus" -- "$bin" render --preset gaussian -o "$out/bad16.png" --bogus
+expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"
+
+if [ $failures -ne 0 ]; then
+  echo "$failures CLI check(s) failed"
+  exit 1
+fi
+echo "all CLI checks passed"

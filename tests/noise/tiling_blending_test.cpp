@@ -1,1 +1,161 @@
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "stochtex/core/hash.h"
+#include "stochtex/noise/spectrum.h"
+#include "stochtex/noise/tiling_blending.h"
+
+using namespace stochtex;
+
+namespace {
+
+Image lowpassExample(double cutoff, uint32_t seed, int size = 256) {
+    SpectrumSpec s;
+    s.size = size;
+    s.seed = seed;
+    SpectrumComponent c;
+    c.shape = SpectrumShape::LowPass;
+    c.frequency = cutoff;
+    s.components.push_back(c);
+    return synthesizeExample(s);
+}
+
+Image bilobeExample(double f, double theta, uint32_t seed) {
+    SpectrumSpec s;
+    s.seed = seed;
+    SpectrumComponent c;
+    c.shape = SpectrumShape::BiLobe;
+    c.frequency = f;
+    c.bandwidth = 2;
+    c.orientation = theta;
+    s.components.push_back(c);
+    return synthesizeExample(s);
+}
+
+// Mean and std of the tiled noise over a large area: 1024² samples at two
+// texels apart cover 8×8 example periods (~750 tiles).
+ChannelStats tiledStats(const TilingBlendingNoise& noise, int w) {
+    double s = 0, s2 = 0;
+    const int n = 1024;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const double v = noise.evaluate((x + 0.5) * 2.0 / w + 3.7, (y + 0.5) * 2.0 / w - 11.2);
+            s += v;
+            s2 += v * v;
+        }
+    ChannelStats st;
+    st.mean = s / (double(n) * n);
+    st.stddev = std::sqrt(s2 / (double(n) * n) - st.mean * st.mean);
+    return st;
+}
+
+}  // namespace
+
+TEST(Hash, Pcg3dMatchesReferenceValues) {
+    // Reference values computed independently (Python, uint32 arithmetic);
+    // the GLSL port must reproduce these bit for bit.
+    const UInt3 a = pcg3d({1, 2, 3});
+    EXPECT_EQ(a.x, 0xfa9f79a6u);
+    EXPECT_EQ(a.y, 0x48f2f44cu);
+    EXPECT_EQ(a.z, 0x596f5ab1u);
+    const UInt3 b = pcg3d({0xffffffffu, 7, 42});
+    EXPECT_EQ(b.x, 0xe387d2d4u);
+    EXPECT_EQ(b.y, 0x47aa5f4au);
+    EXPECT_EQ(b.z, 0xd51ae662u);
+}
+
+TEST(TriangleGrid, WeightsAreVariancePreservingAndVerticesAdjacent) {
+    for (int i = 0; i < 2000; ++i) {
+        const UInt3 h = pcg3d({uint32_t(i), 17, 5});
+        const double u = (unitFloat(h.x) - 0.5) * 40.0, v = (unitFloat(h.y) - 0.5) * 40.0;
+        const BlendStencil s = triangleGrid(u, v);
+        const float sum2 = s.w[0] * s.w[0] + s.w[1] * s.w[1] + s.w[2] * s.w[2];
+        ASSERT_NEAR(sum2, 1.0f, 1e-5f);
+        for (int k = 0; k < 3; ++k) ASSERT_GE(s.w[size_t(k)], 0.0f);
+        // The three vertices form one lattice triangle.
+        for (int a = 0; a < 3; ++a)
+            for (int b = a + 1; b < 3; ++b) {
+                const int dx = int32_t(s.vx(size_t(a)) - s.vx(size_t(b))), dy = int32_t(s.vy(size_t(a)) - s.vy(size_t(b)));
+                ASSERT_LE(std::abs(dx) + std::abs(dy), 2);
+                ASSERT_TRUE(std::abs(dx) <= 1 && std::abs(dy) <= 1);
+            }
+    }
+    // At a lattice vertex, that vertex's tile alone is seen.
+    const BlendStencil at = triangleGrid(0.0, 0.0);
+    EXPECT_NEAR(at.w[0], 1.0f, 1e-6f);
+}
+
+TEST(TilingBlending, MatchesEquationSevenAtAPoint) {
+    auto ex = std::make_shared<const NoiseExample>(lowpassExample(8, 3, 64));
+    const TilingBlendingNoise noise(ex, 77);
+    const double u = 2.31, v = -0.77;
+    const BlendStencil s = triangleGrid(u, v);
+    double expected = ex->mean();
+    for (int i = 0; i < 3; ++i) {
+        const TileOffset o = tileOffset(s.vx(size_t(i)), s.vy(size_t(i)), 77);
+        const double su = u + o.u - std::floor(u + o.u), sv = v + o.v - std::floor(v + o.v);
+        expected += s.w[size_t(i)] * (ex->sampleBilinear(float(su), float(sv)) - ex->mean());
+    }
+    EXPECT_NEAR(noise.evaluate(u, v), expected, 1e-5);
+}
+
+TEST(TilingBlending, IsContinuousAcrossTileBoundaries) {
+    auto ex = std::make_shared<const NoiseExample>(lowpassExample(8, 4));
+    const TilingBlendingNoise noise(ex, 9);
+    // Walk ~8 example periods in steps of ~0.01 texel. The noise's own slope
+    // moves it by < 0.002 per step; a seam would jump by a fraction of σ ≈ 0.17.
+    const double step = 0.001 / 256.0;
+    double prev = noise.evaluate(0.1, 0.3), maxJump = 0;
+    for (int i = 1; i < 200000; ++i) {
+        const double t = i * step;
+        const double cur = noise.evaluate(0.1 + t * 10.0, 0.3 + t * 3.0);  // ~10.4 texels per period step
+        maxJump = std::max(maxJump, std::abs(cur - prev));
+        prev = cur;
+    }
+    EXPECT_LT(maxJump, 0.005);
+}
+
+TEST(TilingBlending, KeepsMeanAndStdOfGaussianExamples) {
+    for (const Image& e : {lowpassExample(8, 11), bilobeExample(20, 30, 12), lowpassExample(16, 13)}) {
+        auto ex = std::make_shared<const NoiseExample>(e);
+        const ChannelStats want = channelStats(e);
+        const ChannelStats got = tiledStats(TilingBlendingNoise(ex, 1234), e.width());
+        EXPECT_NEAR(got.mean, want.mean, 0.03 * want.mean);
+        EXPECT_NEAR(got.stddev, want.stddev, 0.03 * want.stddev);
+    }
+}
+
+TEST(TilingBlending, GaussianizedExemplarKeepsItsHistogram) {
+    // A thresholded noise: two plateaus, far from Gaussian.
+    const Image base = lowpassExample(6, 21);
+    Image e(base.width(), base.height(), 1);
+    for (size_t i = 0; i < e.data().size(); ++i) {
+        const float b = base.data()[i];
+        e.data()[i] = b > 0.55f ? 0.75f + 0.5f * (b - 0.55f) : 0.2f + 0.3f * b;
+    }
+    const ChannelStats want = channelStats(e);
+    HistogramTransform t = HistogramTransform::fit(e);
+    auto ex = std::make_shared<const NoiseExample>(t.forward(e), t);
+    const TilingBlendingNoise noise(ex, 99);
+    const ChannelStats got = tiledStats(noise, e.width());
+    EXPECT_NEAR(got.mean, want.mean, 0.03 * want.mean);
+    EXPECT_NEAR(got.stddev, want.stddev, 0.03 * want.stddev);
+    // The two plateaus survive: almost nothing falls in the gap between them.
+    int gap = 0, total = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const float v = noise.evaluate(i * 0.0137, i * 0.0071);
+        gap += (v > 0.45f && v < 0.74f) ? 1 : 0;
+        ++total;
+    }
+    EXPECT_LT(double(gap) / total, 0.03);
+}
+
+TEST(TilingBlending, DifferentOffsetSeedsGiveDifferentNoise) {
+    auto ex = std::make_shared<const NoiseExample>(lowpassExample(8, 5, 64));
+    const TilingBlendingNoise a(ex, 1), b(ex, 2);
+    int differ = 0;
+    for (int i = 0; i < 100; ++i) differ += a.evaluate(i * 0.37, i * 0.11) != b.evaluate(i * 0.37, i * 0.11);
+    EXPECT_GT(differ, 90);
+}

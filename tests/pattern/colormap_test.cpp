@@ -1,1 +1,125 @@
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/presets.h"
+
+using namespace stochtex;
+
+TEST(Colormap, GaussianIsIdentityInXEverywhere) {
+    const ColormapTable t = makeAnalyticColormap(AnalyticColormap::Gaussian, 256);
+    for (float x : {0.0f, 0.013f, 0.25f, 0.5f, 0.777f, 1.0f})
+        for (float y : {0.0f, 0.4f, 1.0f}) {
+            const Rgb c = t.sample(x, y);
+            EXPECT_NEAR(c[0], x, 1e-6f);
+            EXPECT_EQ(c[0], c[1]);
+            EXPECT_EQ(c[1], c[2]);
+        }
+    // Clamp to edge outside [0,1].
+    EXPECT_NEAR(t.sample(-0.3f, 2.0f)[0], 0.0f, 1e-7f);
+    EXPECT_NEAR(t.sample(1.7f, -1.0f)[0], 1.0f, 1e-7f);
+}
+
+TEST(Colormap, RidgedIsAbsoluteValue) {
+    const ColormapTable t = makeAnalyticColormap(AnalyticColormap::Ridged, 256);
+    for (float x : {0.0f, 0.1f, 0.3f, 0.7f, 0.95f, 1.0f}) EXPECT_NEAR(t.sample(x, 0.3f)[0], std::abs(2 * x - 1), 1e-5f);
+    // Near the kink the table is within one cell of the exact value.
+    EXPECT_NEAR(t.sample(0.5f, 0.5f)[0], 0.0f, 2.0f / 255.0f);
+}
+
+TEST(Colormap, PhasorProfiles) {
+    EXPECT_NEAR(phasorProfile(PhasorProfile::Sine, std::numbers::pi / 2, 0.5), 1.0f, 1e-6f);
+    EXPECT_NEAR(phasorProfile(PhasorProfile::Sine, 0.0, 0.5), 0.5f, 1e-6f);
+    EXPECT_NEAR(phasorProfile(PhasorProfile::Sawtooth, 0.0, 0.5), 0.5f, 1e-6f);
+    EXPECT_EQ(phasorProfile(PhasorProfile::Square, -3.0, 0.3), 1.0f);  // t ≈ 0.023 < duty
+    EXPECT_EQ(phasorProfile(PhasorProfile::Square, 0.0, 0.3), 0.0f);   // t = 0.5 ≥ duty
+    const ColormapTable t = makePhasorColormap(PhasorProfile::Sine, 0.5, 256);
+    // Point straight above the centre: phase π/2 → 1; straight below → 0.
+    EXPECT_NEAR(t.sample(0.5f, 0.9f)[0], 1.0f, 1e-3f);
+    EXPECT_NEAR(t.sample(0.5f, 0.1f)[0], 0.0f, 1e-3f);
+}
+
+TEST(Colormap, PaintedShapesPutTheRightColourAtKnownPoints) {
+    PaintedColormap p;
+    p.background = {0.1f, 0.1f, 0.1f};
+    auto add = [&](PaintedShape s, Rgb c) {
+        s.color = c;
+        p.shapes.push_back(s);
+    };
+    PaintedShape half;
+    half.kind = PaintedShape::Kind::HalfPlane;
+    half.a = {0.5, 0.5};
+    half.angle = 90;  // boundary pointing up: its left side is x < 0.5
+    add(half, {1, 0, 0});
+    PaintedShape band;
+    band.kind = PaintedShape::Kind::Band;
+    band.a = {0.5, 0.2};
+    band.angle = 0;
+    band.width = 0.1;
+    add(band, {0, 1, 0});
+    PaintedShape ring;
+    ring.kind = PaintedShape::Kind::Ring;
+    ring.a = {0.75, 0.75};
+    ring.innerRadius = 0.1;
+    ring.radius = 0.2;
+    add(ring, {0, 0, 1});
+    PaintedShape disc;
+    disc.kind = PaintedShape::Kind::Disc;
+    disc.a = {0.25, 0.8};
+    disc.radius = 0.05;
+    add(disc, {1, 1, 0});
+    PaintedShape rect;
+    rect.kind = PaintedShape::Kind::Rectangle;
+    rect.a = {0.9, 0.0};
+    rect.b = {1.0, 0.1};
+    add(rect, {1, 0, 1});
+    PaintedShape tri;
+    tri.kind = PaintedShape::Kind::Polygon;
+    tri.points = {{0.6, 0.4}, {0.8, 0.4}, {0.7, 0.5}};
+    add(tri, {0, 1, 1});
+
+    const std::vector<std::pair<std::array<double, 2>, Rgb>> probes = {
+        {{0.2, 0.5}, {1, 0, 0}},        // half-plane
+        {{0.8, 0.5}, {0.1f, 0.1f, 0.1f}},  // background
+        {{0.3, 0.22}, {0, 1, 0}},       // band over the half-plane
+        {{0.8, 0.17}, {0, 1, 0}},       // band on the background side
+        {{0.75, 0.9}, {0, 0, 1}},       // ring
+        {{0.75, 0.75}, {0.1f, 0.1f, 0.1f}},  // ring hole
+        {{0.25, 0.8}, {1, 1, 0}},       // disc
+        {{0.95, 0.05}, {1, 0, 1}},      // rectangle over band? (y=0.05 is outside band)
+        {{0.7, 0.43}, {0, 1, 1}},       // polygon
+        {{0.62, 0.48}, {0.1f, 0.1f, 0.1f}},  // beside the polygon
+    };
+    const ColormapTable table = p.rasterize(256, 4);
+    for (const auto& [pt, want] : probes) {
+        const Rgb exact = p.evaluate(pt[0], pt[1]);
+        const Rgb tabled = table.sample(float(pt[0]), float(pt[1]));
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_EQ(exact[size_t(c)], want[size_t(c)]) << pt[0] << "," << pt[1];
+            EXPECT_NEAR(tabled[size_t(c)], want[size_t(c)], 1e-5f) << pt[0] << "," << pt[1];
+        }
+    }
+}
+
+TEST(Colormap, ImagesAreYUp) {
+    // An image whose top row is white: y = 1 must be white, y = 0 black.
+    Image img(4, 4, 3, 0.0f);
+    for (int x = 0; x < 4; ++x)
+        for (int c = 0; c < 3; ++c) img.at(x, 0, c) = 1.0f;
+    const ColormapTable t = ColormapTable::fromImage(img);
+    EXPECT_EQ(t.sample(0.5f, 1.0f)[0], 1.0f);
+    EXPECT_EQ(t.sample(0.5f, 0.0f)[0], 0.0f);
+    EXPECT_EQ(t.toImage().data(), img.data());
+}
+
+TEST(Colormap, PresetLayoutsHaveThreeTouchingRegions) {
+    // camouflage: three sectors meet at the centre (Fig. 3d / 8b).
+    const PatternSpec spec = loadPreset("camouflage");
+    const PaintedColormap& p = spec.colormap.painted;
+    const Rgb left = p.evaluate(0.3, 0.6), right = p.evaluate(0.7, 0.6), bottom = p.evaluate(0.5, 0.3);
+    EXPECT_NE(left, right);
+    EXPECT_NE(right, bottom);
+    EXPECT_NE(left, bottom);
+}

@@ -1,1 +1,127 @@
 #include <gtest/gtest.h>
+
+#include "stochtex/core/error.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/pattern/presets.h"
+
+using namespace stochtex;
+
+namespace {
+
+PatternSpec parse(const std::string& text) {
+    const auto j = JsonReader::parse(text, "test.json");
+    return parsePatternSpec(JsonReader(j, "test.json"), ".");
+}
+
+std::string errorOf(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+const char* kValid = R"({
+  "noise_x": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 8}]},
+  "noise_y": {"type": "spectrum", "components": [{"shape": "ring", "frequency": 8, "bandwidth": 2}]},
+  "colormap": {"type": "gaussian"}
+})";
+
+std::string withNoiseX(const std::string& noise) {
+    return R"({"noise_x": )" + noise +
+           R"(, "noise_y": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 8}]},
+               "colormap": {"type": "gaussian"}})";
+}
+
+}  // namespace
+
+TEST(PatternSpec, ValidSpecParsesWithDefaults) {
+    const PatternSpec s = parse(kValid);
+    EXPECT_EQ(s.width, 512);
+    EXPECT_EQ(s.scale, 1.0);
+    EXPECT_EQ(s.offsets, OffsetMode::Independent);
+    EXPECT_EQ(s.noise[1].spectrum.components[0].shape, SpectrumShape::Ring);
+}
+
+TEST(PatternSpec, ErrorsNameSourceAndJsonPointer) {
+    EXPECT_NE(errorOf("{\"noise_x\": ").find("test.json: malformed JSON"), std::string::npos);
+    EXPECT_NE(errorOf("{\"noise_x\": ").find("line 1"), std::string::npos);
+    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "components": [{"shape": "ring", "frequency": -3, "bandwidth": 2}]})"))
+                  .find("test.json: /noise_x/components/0/frequency: must be in"),
+              std::string::npos);
+    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "components": [{"shape": "ringg", "frequency": 3}]})"))
+                  .find("/noise_x/components/0/shape: unknown value \"ringg\""),
+              std::string::npos);
+    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "componets": []})")).find("/noise_x/componets: unknown member"),
+              std::string::npos);
+    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "components": []})")).find("/noise_x/components: needs at least one"),
+              std::string::npos);
+    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "size": "big", "components": [{"shape": "lowpass", "cutoff": 8}]})"))
+                  .find("/noise_x/size: expected an integer"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"noise_x": {}})").find("/noise_x: missing required member \"type\""), std::string::npos);
+    EXPECT_NE(errorOf("[1, 2]").find("test.json: /: expected an object"), std::string::npos);
+}
+
+TEST(PatternSpec, SizesAreCapped) {
+    std::string big = kValid;
+    big.insert(1, "\"size\": 20000, ");
+    EXPECT_NE(errorOf(big).find("/size: must be in [1, 16384]"), std::string::npos);
+    std::string tooMany = kValid;
+    tooMany.insert(1, "\"size\": [16384, 16384], ");
+    EXPECT_NE(errorOf(tooMany).find("/size: more than"), std::string::npos);
+    std::string negative = kValid;
+    negative.insert(1, "\"scale\": -2, ");
+    EXPECT_NE(errorOf(negative).find("/scale: must be in"), std::string::npos);
+}
+
+TEST(PatternSpec, PaintedColormapValidation) {
+    const std::string base = R"({"noise_x": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 8}]},
+        "noise_y": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 8}]},
+        "colormap": {"type": "painted", "shapes": [)";
+    EXPECT_NE(errorOf(base + R"({"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "color": "#12345"}]}})")
+                  .find("/colormap/shapes/0/color: invalid colour"),
+              std::string::npos);
+    EXPECT_NE(errorOf(base + R"({"shape": "polygon", "points": [[0, 0], [1, 1]], "color": "#123456"}]}})")
+                  .find("/colormap/shapes/0/points: a polygon needs at least 3 points"),
+              std::string::npos);
+    const PatternSpec ok = parse(base + R"({"shape": "band", "point": [0.5, 0.5], "angle": 10, "width": 0.1, "color": [1, 0.5, 0]}]}})");
+    ASSERT_EQ(ok.colormap.painted.shapes.size(), 1u);
+    EXPECT_FLOAT_EQ(ok.colormap.painted.shapes[0].color[1], 0.5f);
+}
+
+TEST(PatternSpec, QuadratureShorthandSharesSeedAndOffsets) {
+    const PatternSpec s = loadPreset("phasor-stripes");
+    EXPECT_TRUE(s.quadraturePair);
+    EXPECT_EQ(s.offsets, OffsetMode::Shared);
+    EXPECT_TRUE(s.noise[1].spectrum.quadrature);
+    EXPECT_EQ(noiseSeed(s, 0), noiseSeed(s, 1));
+    const PatternSpec camo = loadPreset("camouflage");
+    EXPECT_NE(noiseSeed(camo, 0), noiseSeed(camo, 1));
+}
+
+TEST(Presets, RequiredPresetsExistAndBuild) {
+    const auto names = presetNames();
+    for (const char* required :
+         {"gaussian", "ridged", "phasor-stripes", "camouflage", "marble", "concentric", "oblique-blots", "woven"})
+        EXPECT_NE(std::find(names.begin(), names.end(), required), names.end()) << required;
+    for (const auto& n : names) {
+        const PatternSpec s = loadPreset(n);
+        EXPECT_EQ(s.name, n);
+        const Pattern p = Pattern::build(s);
+        EXPECT_EQ(p.exampleSize(), 256) << n;
+    }
+}
+
+TEST(Presets, UnknownPresetListsTheKnownOnes) {
+    try {
+        loadPreset("nope");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown preset \"nope\""), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("camouflage"), std::string::npos);
+    }
+}

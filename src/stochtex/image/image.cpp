@@ -8,11 +8,15 @@
 
 namespace stochtex {
 
-Image::Image(int width, int height, int channels, float fill)
+Image::Image(int width, int height, int channels, Uninitialized)
     : width_(width), height_(height), channels_(channels) {
     if (width < 0 || height < 0 || channels <= 0 || channels > 4)
         throw std::invalid_argument("Image: invalid dimensions");
-    data_.assign(size_t(width) * size_t(height) * size_t(channels), fill);
+    data_.resize(size_t(width) * size_t(height) * size_t(channels));
+}
+
+Image::Image(int width, int height, int channels, float fill) : Image(width, height, channels, Uninitialized{}) {
+    std::fill(data_.begin(), data_.end(), fill);
 }
 
 Image toRgb(const Image& image) {

@@ -2,14 +2,45 @@
 // The one image type of stochtex: W×H pixels of C float32 channels,
 // interleaved, row-major, row 0 at the top. Values are nominally in [0,1].
 #include <cstddef>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace stochtex {
 
+// std::allocator that default-initialises: vector<float>(n) leaves the floats
+// unset instead of zeroing them, so a renderer that writes every pixel does
+// not pay a serial memset (and its page faults) before the parallel loop.
+template <class T>
+struct DefaultInitAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = DefaultInitAllocator<U>;
+    };
+    DefaultInitAllocator() = default;
+    template <class U>
+    DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+
 class Image {
 public:
+    using Buffer = std::vector<float, DefaultInitAllocator<float>>;
+    struct Uninitialized {};
+
     Image() = default;
     Image(int width, int height, int channels, float fill = 0.0f);
+    // Pixels left unset: for producers that overwrite every value.
+    Image(int width, int height, int channels, Uninitialized);
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -21,15 +52,15 @@ public:
     float at(int x, int y, int c = 0) const { return data_[index(x, y, c)]; }
     float* row(int y) { return data_.data() + size_t(y) * size_t(width_) * size_t(channels_); }
     const float* row(int y) const { return data_.data() + size_t(y) * size_t(width_) * size_t(channels_); }
-    std::vector<float>& data() { return data_; }
-    const std::vector<float>& data() const { return data_; }
+    Buffer& data() { return data_; }
+    const Buffer& data() const { return data_; }
 
 private:
     size_t index(int x, int y, int c) const {
         return (size_t(y) * size_t(width_) + size_t(x)) * size_t(channels_) + size_t(c);
     }
     int width_ = 0, height_ = 0, channels_ = 0;
-    std::vector<float> data_;
+    Buffer data_;
 };
 
 // Same pixels with 3 channels (gray is replicated; extra channels are dropped).

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "stochtex/image/image.h"
 #include "stochtex/noise/gaussianize.h"
@@ -23,34 +24,50 @@ public:
     bool gaussianized() const { return inverse_.has_value(); }
     const std::optional<HistogramTransform>& transform() const { return inverse_; }
 
-    // Bilinear sample at (u, v), u and v in [0,1) (one period), wrapping at
-    // the edges. Texel centres sit at ((i + ½)/W, (j + ½)/W).
-    float sampleBilinear(float u, float v) const {
-        const float fx = u * float(size_) - 0.5f;
-        const float fy = v * float(size_) - 0.5f;
-        const float x0f = std::floor(fx), y0f = std::floor(fy);
-        const float tx = fx - x0f, ty = fy - y0f;
-        int x0 = int(x0f), y0 = int(y0f);
-        // u, v ∈ [0,1) so x0, y0 ∈ [−1, W−1]: one compare wraps each side.
-        int x1 = x0 + 1, y1 = y0 + 1;
-        if (x0 < 0) x0 += size_;
-        if (y0 < 0) y0 += size_;
-        if (x1 >= size_) x1 -= size_;
-        if (y1 >= size_) y1 -= size_;
-        const float* data = values_.data().data();
-        const float* r0 = data + size_t(y0) * size_t(size_);
-        const float* r1 = data + size_t(y1) * size_t(size_);
-        const float a = r0[x0] + tx * (r0[x1] - r0[x0]);
-        const float b = r1[x0] + tx * (r1[x1] - r1[x0]);
-        return a + ty * (b - a);
+    // The two padded rows a bilinear lookup at v reads, and the weight
+    // between them. Along a scanline v is fixed per tile, so this is
+    // computed once per tile rather than once per pixel.
+    struct RowPair {
+        const float* row0;  // start of the padded row above (index 0 = texel −1)
+        const float* row1;
+        float ty;
+    };
+    RowPair rows(float v) const {
+        // fy ∈ [−½, W−½]: truncating fy + 1 > 0 is a floor without a libm
+        // call, and y0 ∈ [−1, W−1] indexes the padded copy directly.
+        const float fy = v * sizeF_ - 0.5f;
+        const int y0 = int(fy + 1.0f) - 1;
+        const size_t stride = size_t(size_) + 2;
+        const float* r0 = padded_.data() + size_t(y0 + 1) * stride;
+        return {r0, r0 + stride, fy - float(y0)};
     }
+
+    // Bilinear sample between the rows of a RowPair at t = u·W + ½ ∈ [½, W + ½]
+    // (texel units, shifted so that int(t) is the padded index of the left texel).
+    float sampleTexel(const RowPair& r, float t) const {
+        const int i = int(t);
+        const float tx = t - float(i);
+        const float a = r.row0[i] + tx * (r.row0[i + 1] - r.row0[i]);
+        const float b = r.row1[i] + tx * (r.row1[i + 1] - r.row1[i]);
+        return a + r.ty * (b - a);
+    }
+
+    // Bilinear sample at (u, v) ∈ [0,1]² (one period), wrapping at the
+    // edges. Texel centres sit at ((i + ½)/W, (j + ½)/W).
+    float sampleBilinear(float u, float v) const { return sampleTexel(rows(v), u * sizeF_ + 0.5f); }
+
+    float sizeF() const { return sizeF_; }
 
     // Maps a blended value to the output space (T⁻¹ or identity).
     float toOutput(float n) const { return inverse_ ? inverse_->inverse(n) : n; }
 
 private:
     Image values_;
+    // values_ with a one-texel periodic border on every side, (W+2)², so
+    // bilinear lookups never branch to wrap.
+    std::vector<float> padded_;
     int size_ = 0;
+    float sizeF_ = 0.0f;
     float mean_ = 0.5f;
     std::optional<HistogramTransform> inverse_;
 };

@@ -16,7 +16,7 @@ HistogramTransform HistogramTransform::fit(const Image& exemplar, double mean, d
     HistogramTransform t;
     t.mean_ = mean;
     t.stddev_ = stddev;
-    t.sorted_ = exemplar.data();
+    t.sorted_.assign(exemplar.data().begin(), exemplar.data().end());
     std::sort(t.sorted_.begin(), t.sorted_.end());
     const double n = double(t.sorted_.size());
     // T⁻¹(g) = empirical quantile of E at probability Φ((g − mean)/σ).

@@ -10,29 +10,89 @@
 // with the barycentric weights normalised so Σ w_i² = 1, which keeps the
 // variance of a Gaussian E (the mean is kept by centring on μ_E).
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
+#include "stochtex/core/hash.h"
 #include "stochtex/noise/example.h"
 
 namespace stochtex {
 
 constexpr double kDefaultGridDensity = 3.4641016151377544;  // 2√3
 
-// The three tiles seen at a point: grid vertex ids and normalised weights.
+// The three tiles seen at a point: the lattice cell, which of its two
+// triangles holds the point, and the normalised weights of its vertices.
+// Vertex ids wrap modulo 2³² (as GLSL uints do) before hashing.
 struct BlendStencil {
-    std::array<int32_t, 3> vx{}, vy{};
+    uint32_t cellX = 0, cellY = 0;
+    bool upper = false;  // triangle (1,1),(1,0),(0,1) of the cell, else (0,0),(0,1),(1,0)
     std::array<float, 3> w{};
+
+    uint32_t vx(size_t i) const { return cellX + uint32_t(upper ? i < 2 : i == 2); }
+    uint32_t vy(size_t i) const { return cellY + uint32_t(upper ? i != 1 : i == 1); }
+    bool sameTiles(const BlendStencil& o) const { return cellX == o.cellX && cellY == o.cellY && upper == o.upper; }
+};
+
+// floor() for |t| < 2⁶³ without a libm call (baseline x86-64 has no
+// rounding instruction, and this runs several times per pixel).
+inline int64_t floorToInt(double t) {
+    const int64_t i = int64_t(t);
+    return i - (t < double(i) ? 1 : 0);
+}
+
+// The triangle grid along one row of constant v: the skewed y coordinate
+// (1.15470054 v) and its floor do not change along u, so a scanline pays
+// only for x = u − 0.57735027 v.
+class TriangleGridRow {
+public:
+    TriangleGridRow(double v, double density = kDefaultGridDensity) : density_(density) {
+        const double sv = v * density;
+        xShift_ = 0.57735026918962573 * sv;
+        const double y = 1.1547005383792515 * sv;
+        const int64_t by = floorToInt(y);
+        fy_ = float(y - double(by));
+        iy_ = uint32_t(uint64_t(by));  // ids wrap to 32 bits for hashing, as in GLSL
+    }
+
+    BlendStencil stencil(double u) const {
+        const double x = u * density_ - xShift_;
+        const int64_t bx = floorToInt(x);
+        const float fx = float(x - double(bx));
+        BlendStencil s;
+        s.cellX = uint32_t(uint64_t(bx));
+        s.cellY = iy_;
+        const float fz = 1.0f - fx - fy_;
+        s.upper = !(fz > 0.0f);
+        if (!s.upper)
+            s.w = {fz, fy_, fx};
+        else
+            s.w = {-fz, 1.0f - fy_, 1.0f - fx};
+        // Variance-preserving normalisation: Σ w² = 1.
+        const float norm = 1.0f / std::sqrt(s.w[0] * s.w[0] + s.w[1] * s.w[1] + s.w[2] * s.w[2]);
+        for (float& w : s.w) w *= norm;
+        return s;
+    }
+
+private:
+    double density_, xShift_;
+    float fy_;
+    uint32_t iy_;
 };
 
 // Triangle-grid stencil at uv (any real uv; the grid does not wrap).
-BlendStencil triangleGrid(double u, double v, double density = kDefaultGridDensity);
+inline BlendStencil triangleGrid(double u, double v, double density = kDefaultGridDensity) {
+    return TriangleGridRow(v, density).stencil(u);
+}
 
 // Random tile offset of a grid vertex, in [0,1)² (one example period).
 struct TileOffset {
     float u, v;
 };
-TileOffset tileOffset(int32_t vx, int32_t vy, uint32_t seed);
+inline TileOffset tileOffset(uint32_t vx, uint32_t vy, uint32_t seed) {
+    const UInt3 h = pcg3d({vx, vy, seed});
+    return {unitFloat(h.x), unitFloat(h.y)};
+}
 
 // One scalar noise made by tiling and blending an example.
 class TilingBlendingNoise {
@@ -44,20 +104,40 @@ public:
     const NoiseExample& example() const { return *example_; }
     uint32_t offsetSeed() const { return seed_; }
 
-    // Blended value (in the example's blending space, before T⁻¹) at uv,
-    // given the stencil of uv. fu, fv are uv reduced to one period [0,1).
-    float blend(const BlendStencil& s, float fu, float fv) const {
+    // What a pixel needs from its three tiles that stays fixed along a
+    // scanline while the tiles do not change: the tiles' u offsets (in
+    // texels) and the rows their lookups read (v + o_v is constant).
+    struct TileRows {
+        std::array<float, 3> offsetTexels;
+        std::array<NoiseExample::RowPair, 3> rows;
+    };
+    TileRows tileRows(const BlendStencil& s, float fv) const {
+        TileRows t;
+        for (size_t i = 0; i < 3; ++i) {
+            const TileOffset o = tileOffset(s.vx(i), s.vy(i), seed_);
+            float sv = fv + o.v;
+            if (sv >= 1.0f) sv -= 1.0f;
+            t.offsetTexels[i] = o.u * example_->sizeF();
+            t.rows[i] = example_->rows(sv);
+        }
+        return t;
+    }
+
+    // N(u) = μ + Σ w_i (E(u + o_i) − μ), in the example's blending space
+    // (before T⁻¹), with the tiles of the stencil s; fu is u reduced to one period.
+    float blend(const BlendStencil& s, const TileRows& t, float fu) const {
+        const float size = example_->sizeF();
+        const float tu = fu * size + 0.5f;  // texel units, as sampleTexel wants
         const float mean = example_->mean();
         float n = mean;
-        for (int i = 0; i < 3; ++i) {
-            const TileOffset o = tileOffset(s.vx[size_t(i)], s.vy[size_t(i)], seed_);
-            float su = fu + o.u, sv = fv + o.v;
-            if (su >= 1.0f) su -= 1.0f;
-            if (sv >= 1.0f) sv -= 1.0f;
-            n += s.w[size_t(i)] * (example_->sampleBilinear(su, sv) - mean);
+        for (size_t i = 0; i < 3; ++i) {
+            float su = tu + t.offsetTexels[i];
+            su -= su >= size + 0.5f ? size : 0.0f;  // wrap into one period (branch-free)
+            n += s.w[i] * (example_->sampleTexel(t.rows[i], su) - mean);
         }
         return n;
     }
+    float blend(const BlendStencil& s, float fu, float fv) const { return blend(s, tileRows(s, fv), fu); }
 
     // Output value at uv (T⁻¹ applied for a Gaussianized exemplar).
     float evaluate(double u, double v, double density = kDefaultGridDensity) const;
@@ -69,7 +149,7 @@ private:
 
 // uv reduced to one period, in float, without losing precision for large uv.
 inline float periodFraction(double t) {
-    float f = float(t - std::floor(t));
+    float f = float(t - double(floorToInt(t)));
     return f >= 1.0f ? 0.0f : f;  // rounding of values just below an integer
 }
 

@@ -11,6 +11,11 @@ namespace stochtex {
 ColormapTable::ColormapTable(Image table) : table_(std::move(table)) {
     if (table_.channels() != 3 || table_.width() < 2 || table_.height() < 2)
         throw std::invalid_argument("ColormapTable: needs an RGB table of at least 2×2");
+    lastX_ = float(table_.width() - 1);
+    lastY_ = float(table_.height() - 1);
+    rgba_.resize(table_.pixelCount());
+    const float* src = table_.data().data();
+    for (size_t i = 0; i < rgba_.size(); ++i) rgba_[i] = Texel{src[3 * i], src[3 * i + 1], src[3 * i + 2], 0.0f};
 }
 
 // Flips rows: tables keep y = 0 in row 0, images on disk show y up.

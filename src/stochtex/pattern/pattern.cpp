@@ -64,16 +64,29 @@ void validateView(const View& view, const std::string& what) {
         throw InputError(what + ": offset must be finite and at most 1e9 texels");
 }
 
+// Walks the view's pixels row-parallel. Neighbouring pixels on a scanline
+// mostly see the same three tiles, so the per-tile work (hashing the offsets,
+// locating the rows to read) is redone only when the tiles change.
 template <class PixelFn>
 void Pattern::forEachPixel(const View& view, PixelFn&& fn) const {
     const double invW = 1.0 / double(exampleSize());
     parallelRows(view.height, [&](int y0, int y1) {
+        PixelTiles tiles;
         for (int py = y0; py < y1; ++py) {
+            bool valid = false;
             const double v = (view.offsetV + (py + 0.5) * view.scale) * invW;
             const float fv = periodFraction(v);
+            const TriangleGridRow grid(v, density_);
             for (int px = 0; px < view.width; ++px) {
                 const double u = (view.offsetU + (px + 0.5) * view.scale) * invW;
-                fn(px, py, triangleGrid(u, v, density_), periodFraction(u), fv);
+                const BlendStencil s = grid.stencil(u);
+                if (!valid || !s.sameTiles(tiles.stencil)) {
+                    tiles.tiles[0] = noises_[0].tileRows(s, fv);
+                    tiles.tiles[1] = noises_[1].tileRows(s, fv);
+                    valid = true;
+                }
+                tiles.stencil = s;
+                fn(px, py, tiles, periodFraction(u));
             }
         }
     });
@@ -81,12 +94,12 @@ void Pattern::forEachPixel(const View& view, PixelFn&& fn) const {
 
 Image Pattern::render(const View& view) const {
     validateView(view, "render");
-    Image out(view.width, view.height, 3);
-    forEachPixel(view, [&](int px, int py, const BlendStencil& s, float fu, float fv) {
-        const float nx = examples_[0]->toOutput(noises_[0].blend(s, fu, fv));
-        const float ny = examples_[1]->toOutput(noises_[1].blend(s, fu, fv));
+    Image out(view.width, view.height, 3, Image::Uninitialized{});
+    forEachPixel(view, [&](int px, int py, const PixelTiles& t, float fu) {
+        const float nx = examples_[0]->toOutput(noises_[0].blend(t.stencil, t.tiles[0], fu));
+        const float ny = examples_[1]->toOutput(noises_[1].blend(t.stencil, t.tiles[1], fu));
         const Rgb c = colormap_.sample(nx, ny);
-        float* p = out.row(py) + size_t(px) * 3;
+        float* __restrict p = out.row(py) + size_t(px) * 3;
         p[0] = c[0];
         p[1] = c[1];
         p[2] = c[2];
@@ -96,11 +109,12 @@ Image Pattern::render(const View& view) const {
 
 Image Pattern::renderNoise(int axis, const View& view) const {
     validateView(view, "render");
-    Image out(view.width, view.height, 1);
+    Image out(view.width, view.height, 1, Image::Uninitialized{});
     const auto& noise = noises_[size_t(axis)];
     const auto& example = *examples_[size_t(axis)];
-    forEachPixel(view, [&](int px, int py, const BlendStencil& s, float fu, float fv) {
-        out.at(px, py) = std::min(std::max(example.toOutput(noise.blend(s, fu, fv)), 0.0f), 1.0f);
+    forEachPixel(view, [&](int px, int py, const PixelTiles& t, float fu) {
+        const float n = example.toOutput(noise.blend(t.stencil, t.tiles[size_t(axis)], fu));
+        out.at(px, py) = std::min(std::max(n, 0.0f), 1.0f);
     });
     return out;
 }

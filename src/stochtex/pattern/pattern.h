@@ -44,6 +44,10 @@ public:
     View defaultView(const PatternSpec& spec) const;
 
 private:
+    struct PixelTiles {
+        BlendStencil stencil;
+        std::array<TilingBlendingNoise::TileRows, 2> tiles;
+    };
     template <class PixelFn>
     void forEachPixel(const View& view, PixelFn&& fn) const;
 
