@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "common.h"
@@ -22,15 +23,17 @@ namespace {
 Image colormapUsage(const Pattern& pattern, const View& view, int size) {
     std::vector<double> hist(size_t(size) * size_t(size), 0.0);
     const double invW = 1.0 / pattern.exampleSize();
-    const int step = std::max(1, view.width / 256);
-    for (int py = 0; py < view.height; py += step)
-        for (int px = 0; px < view.width; px += step) {
+    for (int py = 0; py < view.height; ++py)
+        for (int px = 0; px < view.width; ++px) {
             const auto n = pattern.field((view.offsetU + (px + 0.5) * view.scale) * invW,
                                          (view.offsetV + (py + 0.5) * view.scale) * invW);
             const int i = std::clamp(int(n[0] * size), 0, size - 1);
             const int j = std::clamp(int((1.0f - n[1]) * size), 0, size - 1);
             hist[size_t(j) * size_t(size) + size_t(i)] += 1.0;
         }
+    // Smooth the counts so the density reads as a shape, not as dots.
+    cv::Mat h(size, size, CV_64F, hist.data());
+    cv::GaussianBlur(h, h, cv::Size(0, 0), 1.5);
     const double peak = *std::max_element(hist.begin(), hist.end());
     Image base = resizeSmooth(pattern.colormap().toImage(), size, size);
     for (int j = 0; j < size; ++j)
