@@ -88,7 +88,13 @@ void writeFileAtomic(const std::string& path, const std::string& bytes) {
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) throw InputError(path + ": directory " + dir.string() + " does not exist");
     std::random_device rd;
-    const fs::path tmp = dir / ("." + target.filename().string() + "." + std::to_string(rd()) + ".tmp");
+    // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + string.
+    std::string name = ".";
+    name += target.filename().string();
+    name += '.';
+    name += std::to_string(rd());
+    name += ".tmp";
+    const fs::path tmp = dir / name;
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         if (!out) throw InputError(path + ": cannot create file in " + dir.string());
