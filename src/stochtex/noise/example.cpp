@@ -4,18 +4,11 @@
 
 namespace stochtex {
 
-NoiseExample::NoiseExample(Image values, std::optional<HistogramTransform> inverse)
-    : values_(std::move(values)), inverse_(std::move(inverse)) {
-    if (values_.channels() != 1 || values_.width() != values_.height() || values_.width() < 2)
+NoiseExample::NoiseExample(Image values, std::optional<HistogramTransform> inverse) : inverse_(std::move(inverse)) {
+    if (values.channels() != 1 || values.width() != values.height() || values.width() < 2)
         throw std::invalid_argument("NoiseExample: needs a square 1-channel image of size >= 2");
-    size_ = values_.width();
-    sizeF_ = float(size_);
-    mean_ = float(channelStats(values_).mean);
-    const int n = size_, stride = n + 2;
-    padded_.resize(size_t(stride) * size_t(stride));
-    for (int y = -1; y <= n; ++y)
-        for (int x = -1; x <= n; ++x)
-            padded_[size_t(y + 1) * size_t(stride) + size_t(x + 1)] = values_.at((x + n) % n, (y + n) % n);
+    mean_ = float(channelStats(values).mean);
+    grid_ = PeriodicGrid(std::move(values));
 }
 
 }  // namespace stochtex

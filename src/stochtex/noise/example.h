@@ -2,72 +2,39 @@
 // A noise example E ready for tiling and blending: a periodic W×W grid of
 // values (period 1 in uv), its mean μ_E, and, for a Gaussianized exemplar,
 // the inverse histogram transform T⁻¹ that maps blended values back.
-#include <cmath>
-#include <memory>
 #include <optional>
-#include <vector>
 
 #include "stochtex/image/image.h"
 #include "stochtex/noise/gaussianize.h"
+#include "stochtex/noise/periodic_grid.h"
 
 namespace stochtex {
 
 class NoiseExample {
 public:
+    using RowPair = PeriodicGrid::RowPair;
+
     NoiseExample() = default;
     // values: 1-channel square image. inverse: T⁻¹ when values = T(exemplar).
     explicit NoiseExample(Image values, std::optional<HistogramTransform> inverse = std::nullopt);
 
-    int size() const { return size_; }
+    int size() const { return grid_.size(); }
+    float sizeF() const { return grid_.sizeF(); }
     float mean() const { return mean_; }
-    const Image& values() const { return values_; }
+    const Image& values() const { return grid_.values(); }
+    const PeriodicGrid& grid() const { return grid_; }
     bool gaussianized() const { return inverse_.has_value(); }
     const std::optional<HistogramTransform>& transform() const { return inverse_; }
 
-    // The two padded rows a bilinear lookup at v reads, and the weight
-    // between them. Along a scanline v is fixed per tile, so this is
-    // computed once per tile rather than once per pixel.
-    struct RowPair {
-        const float* row0;  // start of the padded row above (index 0 = texel −1)
-        const float* row1;
-        float ty;
-    };
-    RowPair rows(float v) const {
-        // fy ∈ [−½, W−½]: truncating fy + 1 > 0 is a floor without a libm
-        // call, and y0 ∈ [−1, W−1] indexes the padded copy directly.
-        const float fy = v * sizeF_ - 0.5f;
-        const int y0 = int(fy + 1.0f) - 1;
-        const size_t stride = size_t(size_) + 2;
-        const float* r0 = padded_.data() + size_t(y0 + 1) * stride;
-        return {r0, r0 + stride, fy - float(y0)};
-    }
-
-    // Bilinear sample between the rows of a RowPair at t = u·W + ½ ∈ [½, W + ½]
-    // (texel units, shifted so that int(t) is the padded index of the left texel).
-    float sampleTexel(const RowPair& r, float t) const {
-        const int i = int(t);
-        const float tx = t - float(i);
-        const float a = r.row0[i] + tx * (r.row0[i + 1] - r.row0[i]);
-        const float b = r.row1[i] + tx * (r.row1[i + 1] - r.row1[i]);
-        return a + r.ty * (b - a);
-    }
-
-    // Bilinear sample at (u, v) ∈ [0,1]² (one period), wrapping at the
-    // edges. Texel centres sit at ((i + ½)/W, (j + ½)/W).
-    float sampleBilinear(float u, float v) const { return sampleTexel(rows(v), u * sizeF_ + 0.5f); }
-
-    float sizeF() const { return sizeF_; }
+    RowPair rows(float v) const { return grid_.rows(v); }
+    float sampleTexel(const RowPair& r, float t) const { return grid_.sampleTexel(r, t); }
+    float sampleBilinear(float u, float v) const { return grid_.sampleBilinear(u, v); }
 
     // Maps a blended value to the output space (T⁻¹ or identity).
     float toOutput(float n) const { return inverse_ ? inverse_->inverse(n) : n; }
 
 private:
-    Image values_;
-    // values_ with a one-texel periodic border on every side, (W+2)², so
-    // bilinear lookups never branch to wrap.
-    std::vector<float> padded_;
-    int size_ = 0;
-    float sizeF_ = 0.0f;
+    PeriodicGrid grid_;
     float mean_ = 0.5f;
     std::optional<HistogramTransform> inverse_;
 };
