@@ -106,36 +106,49 @@ public:
 
     // What a pixel needs from its three tiles that stays fixed along a
     // scanline while the tiles do not change: the tiles' u offsets (in
-    // texels) and the rows their lookups read (v + o_v is constant).
+    // texels of grid g) and the rows of g their lookups read (v + o_v is
+    // constant). g is the example itself or any level of its pyramids.
     struct TileRows {
         std::array<float, 3> offsetTexels;
-        std::array<NoiseExample::RowPair, 3> rows;
+        std::array<PeriodicGrid::RowPair, 3> rows;
     };
-    TileRows tileRows(const BlendStencil& s, float fv) const {
+    TileRows tileRows(const BlendStencil& s, float fv, const PeriodicGrid& g) const {
         TileRows t;
         for (size_t i = 0; i < 3; ++i) {
             const TileOffset o = tileOffset(s.vx(i), s.vy(i), seed_);
             float sv = fv + o.v;
             if (sv >= 1.0f) sv -= 1.0f;
-            t.offsetTexels[i] = o.u * example_->sizeF();
-            t.rows[i] = example_->rows(sv);
+            t.offsetTexels[i] = o.u * g.sizeF();
+            t.rows[i] = g.rows(sv);
         }
         return t;
     }
+    TileRows tileRows(const BlendStencil& s, float fv) const { return tileRows(s, fv, example_->grid()); }
 
-    // N(u) = μ + Σ w_i (E(u + o_i) − μ), in the example's blending space
-    // (before T⁻¹), with the tiles of the stencil s; fu is u reduced to one period.
-    float blend(const BlendStencil& s, const TileRows& t, float fu) const {
-        const float size = example_->sizeF();
+    // The three tiles' values of grid g at u (fu = u reduced to one period).
+    std::array<float, 3> tileValues(const TileRows& t, float fu, const PeriodicGrid& g) const {
+        const float size = g.sizeF();
         const float tu = fu * size + 0.5f;  // texel units, as sampleTexel wants
-        const float mean = example_->mean();
-        float n = mean;
+        std::array<float, 3> out;
         for (size_t i = 0; i < 3; ++i) {
             float su = tu + t.offsetTexels[i];
             su -= su >= size + 0.5f ? size : 0.0f;  // wrap into one period (branch-free)
-            n += s.w[i] * (example_->sampleTexel(t.rows[i], su) - mean);
+            out[i] = g.sampleTexel(t.rows[i], su);
         }
+        return out;
+    }
+
+    // Eq. 7 (and eq. 8 on a MIP level): μ + Σ w_i (e_i − μ).
+    static float mix(const BlendStencil& s, const std::array<float, 3>& e, float mean) {
+        float n = mean;
+        for (size_t i = 0; i < 3; ++i) n += s.w[i] * (e[i] - mean);
         return n;
+    }
+
+    // N(u) in the example's blending space (before T⁻¹), with the tiles of
+    // the stencil s; fu is u reduced to one period.
+    float blend(const BlendStencil& s, const TileRows& t, float fu) const {
+        return mix(s, tileValues(t, fu, example_->grid()), example_->mean());
     }
     float blend(const BlendStencil& s, float fu, float fv) const { return blend(s, tileRows(s, fv), fu); }
 

@@ -1,0 +1,40 @@
+#pragma once
+// Pixel footprints in texture space and their discretisation into probes.
+//
+// A pixel's footprint is given by its centre uv and Jacobian J = [∂uv/∂x,
+// ∂uv/∂y] (uv per pixel). Following the OpenGL anisotropic filtering
+// description (EXT_texture_filter_anisotropic), with P_x = W‖∂uv/∂x‖ and
+// P_y = W‖∂uv/∂y‖ in texels:
+//   isotropic (K = 1): one probe at the centre, λ = log2 max(P_x, P_y);
+//   anisotropic (K > 1): N = min(⌈P_max/P_min⌉, K) probes spread along the
+//   major axis at ((j + ½)/N − ½)·axis, each with λ = log2(P_max / N) and
+//   weight 1/N.
+// λ is clamped to [0, L] (magnification reads level 0). Each probe is later
+// split between levels ⌊λ⌋ and ⌊λ⌋ + 1 (trilinear), so a footprint is a
+// weighted union of texel footprints, as in paper eq. 9 and 15.
+#include <array>
+
+namespace stochtex {
+
+struct Jacobian {
+    double dudx = 0, dvdx = 0;  // ∂uv/∂x
+    double dudy = 0, dvdy = 0;  // ∂uv/∂y
+};
+
+struct Probe {
+    double u = 0, v = 0;
+    float lod = 0;     // λ, clamped to [0, maxLod]
+    float weight = 1;  // Σ weights = 1
+};
+
+constexpr int kMaxAnisotropy = 16;
+
+struct Footprint {
+    std::array<Probe, kMaxAnisotropy> probes{};
+    int count = 0;
+};
+
+// maxAniso in [1, 16]; exampleSize = W; maxLod = log2 W.
+Footprint makeFootprint(double u, double v, const Jacobian& j, int exampleSize, int maxLod, int maxAniso);
+
+}  // namespace stochtex

@@ -1,0 +1,120 @@
+#include "stochtex/filter/footprint_stats.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace stochtex {
+
+FootprintEstimator::FootprintEstimator(const std::array<TilingBlendingNoise, 2>& noises, bool sharedOffsets,
+                                       double gridDensity)
+    : noises_(noises), density_(gridDensity), size_(noises[0].example().size()) {
+    for (size_t a = 0; a < 2; ++a) pyramids_[a] = StatsPyramid(noises_[a].example().values());
+    if (sharedOffsets)
+        covariance_ = std::make_unique<StatsPyramid>(
+            StatsPyramid::covariance(noises_[0].example().values(), noises_[1].example().values()));
+}
+
+FootprintEstimator::TexelStats FootprintEstimator::texel(double u, double v, int level, VarianceEstimator mode) const {
+    const BlendStencil s = triangleGrid(u, v, density_);
+    const float fu = periodFraction(u), fv = periodFraction(v);
+    TexelStats t{};
+    std::array<float, 3> w2{};
+    for (size_t i = 0; i < 3; ++i) w2[i] = s.w[i] * s.w[i];
+    for (size_t a = 0; a < 2; ++a) {
+        const TilingBlendingNoise& noise = noises_[a];
+        const StatsPyramid& pyr = pyramids_[a];
+        const PeriodicGrid& means = pyr.mean(level);
+        // Eq. 8: the same blend as the unfiltered noise, on level l.
+        t.mean[a] = TilingBlendingNoise::mix(s, noise.tileValues(noise.tileRows(s, fv, means), fu, means),
+                                            noise.example().mean());
+        if (mode == VarianceEstimator::DeliotHeitz) {
+            t.var[a] = pyr.averageMoment(level);
+        } else {
+            // Eq. 12: tiles assumed uncorrelated, weights constant over P.
+            const PeriodicGrid& vars = pyr.moment(level);
+            const auto vi = noise.tileValues(noise.tileRows(s, fv, vars), fu, vars);
+            t.var[a] = w2[0] * vi[0] + w2[1] * vi[1] + w2[2] * vi[2];
+        }
+    }
+    t.cov = 0.0f;
+    if (covariance_) {
+        if (mode == VarianceEstimator::DeliotHeitz) {
+            t.cov = covariance_->averageMoment(level);
+        } else {
+            const PeriodicGrid& covs = covariance_->moment(level);
+            const auto ci = noises_[0].tileValues(noises_[0].tileRows(s, fv, covs), fu, covs);
+            t.cov = w2[0] * ci[0] + w2[1] * ci[1] + w2[2] * ci[2];  // eq. 17
+        }
+    }
+    return t;
+}
+
+FootprintStats FootprintEstimator::estimate(const Footprint& f, VarianceEstimator mode) const {
+    // Accumulate Σ w_P N̂, Σ w_P (N̂² + σ̂²), Σ w_P (N̂ N̂' + ĉov) in double:
+    // the final subtraction m2 − μ² cancels heavily for small footprints.
+    double m[2] = {0, 0}, m2[2] = {0, 0}, mxy = 0;
+    const int top = maxLod();
+    for (int k = 0; k < f.count; ++k) {
+        const Probe& p = f.probes[size_t(k)];
+        const int l0 = std::min(int(p.lod), top);
+        const float frac = p.lod - float(l0);
+        for (int side = 0; side < 2; ++side) {
+            const double wp = double(p.weight) * (side == 0 ? 1.0 - frac : frac);
+            if (wp <= 0.0) continue;
+            const TexelStats t = texel(p.u, p.v, std::min(l0 + side, top), mode);
+            for (int a = 0; a < 2; ++a) {
+                m[a] += wp * t.mean[size_t(a)];
+                m2[a] += wp * (double(t.mean[size_t(a)]) * t.mean[size_t(a)] + t.var[size_t(a)]);
+            }
+            mxy += wp * (double(t.mean[0]) * t.mean[1] + t.cov);
+        }
+    }
+    FootprintStats out;
+    out.mean = {float(m[0]), float(m[1])};
+    out.varX = float(std::max(0.0, m2[0] - m[0] * m[0]));
+    out.varY = float(std::max(0.0, m2[1] - m[1] * m[1]));
+    out.cov = float(mxy - m[0] * m[1]);
+    return out;
+}
+
+size_t FootprintEstimator::bytes() const {
+    return pyramids_[0].bytes() + pyramids_[1].bytes() + (covariance_ ? covariance_->bytes() : 0);
+}
+
+}  // namespace stochtex
+
+namespace stochtex {
+
+int bruteForceSamples(const Jacobian& j, int exampleSize, int maxPerAxis) {
+    const double side = exampleSize * std::max(std::hypot(j.dudx, j.dvdx), std::hypot(j.dudy, j.dvdy));
+    return std::clamp(int(std::ceil(2.0 * side)), 8, std::max(8, maxPerAxis));
+}
+
+FootprintStats bruteForceStats(const std::array<TilingBlendingNoise, 2>& noises, double gridDensity, double u,
+                               double v, const Jacobian& j, int maxPerAxis) {
+    const int n = bruteForceSamples(j, noises[0].example().size(), maxPerAxis);
+    double m[2] = {0, 0}, m2[2] = {0, 0}, mxy = 0;
+    for (int b = 0; b < n; ++b)
+        for (int a = 0; a < n; ++a) {
+            const double s = (a + 0.5) / n - 0.5, t = (b + 0.5) / n - 0.5;
+            const double su = u + s * j.dudx + t * j.dudy, sv = v + s * j.dvdx + t * j.dvdy;
+            const BlendStencil st = triangleGrid(su, sv, gridDensity);
+            const float fu = periodFraction(su), fv = periodFraction(sv);
+            const double x = noises[0].blend(st, fu, fv), y = noises[1].blend(st, fu, fv);
+            m[0] += x;
+            m[1] += y;
+            m2[0] += x * x;
+            m2[1] += y * y;
+            mxy += x * y;
+        }
+    const double inv = 1.0 / (double(n) * n);
+    FootprintStats out;
+    out.mean = {float(m[0] * inv), float(m[1] * inv)};
+    out.varX = float(std::max(0.0, m2[0] * inv - m[0] * inv * m[0] * inv));
+    out.varY = float(std::max(0.0, m2[1] * inv - m[1] * inv * m[1] * inv));
+    out.cov = float(mxy * inv - m[0] * inv * m[1] * inv);
+    return out;
+}
+
+}  // namespace stochtex

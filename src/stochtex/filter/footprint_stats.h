@@ -1,0 +1,77 @@
+#pragma once
+// Estimators of the mean and covariance of a tiled-and-blended noise vector
+// field N = (N_x, N_y) over a pixel footprint, in constant time (paper §4).
+//
+// For one texel footprint P at level l (weights w_i taken at its centre):
+//   N̂_l    = μ + Σ w_i (E_{l,i} − μ)          (eq. 8, mean-centred as eq. 7)
+//   σ̂²_l   = Σ w_i² V_{l,i}                    (eq. 12)
+//   ĉov_l  = Σ w_i² C_{l,i}   (shared offsets; 0 for independent tiles, eq. 17)
+// and for a footprint made of weighted texel footprints (probes × trilinear):
+//   μ̂ = Σ w_P N̂,  σ̂² = Σ w_P (N̂² + σ̂²_l) − μ̂²,  ĉov = Σ w_P (N̂ N̂' + ĉov_l) − μ̂ μ̂'
+// (eq. 9, 14–15, 18–19). The Deliot–Heitz baseline replaces σ̂²_l by the
+// level's average within-texel variance (one constant per LOD).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include "stochtex/filter/footprint.h"
+#include "stochtex/filter/pyramid.h"
+#include "stochtex/noise/tiling_blending.h"
+
+namespace stochtex {
+
+// Mean and covariance of N over a footprint.
+struct FootprintStats {
+    std::array<float, 2> mean{};
+    float varX = 0, varY = 0, cov = 0;
+    float sigmaX() const { return std::sqrt(std::max(varX, 0.0f)); }
+    float sigmaY() const { return std::sqrt(std::max(varY, 0.0f)); }
+};
+
+enum class VarianceEstimator {
+    Paper,        // eq. 12/14/15: per-texel variances from the V_l pyramid
+    DeliotHeitz,  // one constant within-texel variance per LOD [DH19]
+};
+
+class FootprintEstimator {
+public:
+    // noises: the two tiled noises (their examples must be power-of-two
+    // sized); sharedOffsets: both use the same tiles, so covariances are
+    // estimated from the C_l pyramid (otherwise they are 0).
+    FootprintEstimator(const std::array<TilingBlendingNoise, 2>& noises, bool sharedOffsets, double gridDensity);
+
+    int exampleSize() const { return size_; }
+    int maxLod() const { return pyramids_[0].levels() - 1; }
+
+    FootprintStats estimate(const Footprint& f, VarianceEstimator mode = VarianceEstimator::Paper) const;
+
+    // Statistics of one texel footprint at an integer level (eq. 8, 12, 17).
+    struct TexelStats {
+        std::array<float, 2> mean, var;
+        float cov;
+    };
+    TexelStats texel(double u, double v, int level, VarianceEstimator mode) const;
+
+    size_t bytes() const;
+
+private:
+    std::array<TilingBlendingNoise, 2> noises_;
+    std::array<StatsPyramid, 2> pyramids_;
+    std::unique_ptr<StatsPyramid> covariance_;
+    double density_;
+    int size_;
+};
+
+}  // namespace stochtex
+
+namespace stochtex {
+// Exact statistics of N over the parallelogram footprint uv + J·(s, t),
+// s, t ∈ [−½, ½], by dense sampling: an n×n grid of cell centres with
+// n = clamp(⌈2·(largest side in texels)⌉, 8, maxPerAxis) — two samples per
+// texel of the bilinearly interpolated noise. Values are in blending space.
+FootprintStats bruteForceStats(const std::array<TilingBlendingNoise, 2>& noises, double gridDensity, double u,
+                               double v, const Jacobian& j, int maxPerAxis = 512);
+// Samples per axis bruteForceStats uses for this Jacobian.
+int bruteForceSamples(const Jacobian& j, int exampleSize, int maxPerAxis);
+}  // namespace stochtex

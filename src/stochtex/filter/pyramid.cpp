@@ -1,0 +1,81 @@
+#include "stochtex/filter/pyramid.h"
+
+#include <stdexcept>
+
+namespace stochtex {
+
+namespace {
+
+// Box-halves a double grid (2×2 averages).
+std::vector<double> halve(const std::vector<double>& src, int n) {
+    const int h = n / 2;
+    std::vector<double> dst(size_t(h) * size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < h; ++x) {
+            const size_t a = size_t(2 * y) * size_t(n) + size_t(2 * x);
+            dst[size_t(y) * size_t(h) + size_t(x)] = 0.25 * (src[a] + src[a + 1] + src[a + size_t(n)] + src[a + size_t(n) + 1]);
+        }
+    return dst;
+}
+
+Image toImage(const std::vector<double>& v, int n) {
+    Image img(n, n, 1, Image::Uninitialized{});
+    for (size_t i = 0; i < v.size(); ++i) img.data()[i] = float(v[i]);
+    return img;
+}
+
+std::vector<double> toDouble(const Image& img) { return std::vector<double>(img.data().begin(), img.data().end()); }
+
+}  // namespace
+
+static void checkExample(const Image& e) {
+    if (e.channels() != 1 || e.width() != e.height() || !isPowerOfTwo(e.width()))
+        throw std::invalid_argument("StatsPyramid: needs a square power-of-two 1-channel example");
+}
+
+// Builds levels from level-0 first moments a, b and their product ab.
+static void build(std::vector<double> a, std::vector<double> b, std::vector<double> ab, int n,
+                  std::vector<PeriodicGrid>& means, std::vector<PeriodicGrid>& moments, std::vector<float>& avg) {
+    while (true) {
+        std::vector<double> m(a.size());
+        double sum = 0;
+        for (size_t i = 0; i < m.size(); ++i) {
+            m[i] = ab[i] - a[i] * b[i];  // V_l or C_l
+            sum += m[i];
+        }
+        means.emplace_back(toImage(a, n));
+        moments.emplace_back(toImage(m, n));
+        avg.push_back(float(sum / double(m.size())));
+        if (n == 1) break;
+        a = halve(a, n);
+        b = halve(b, n);
+        ab = halve(ab, n);
+        n /= 2;
+    }
+}
+
+StatsPyramid::StatsPyramid(const Image& example) {
+    checkExample(example);
+    std::vector<double> e = toDouble(example), e2(e.size());
+    for (size_t i = 0; i < e.size(); ++i) e2[i] = e[i] * e[i];
+    build(e, e, std::move(e2), example.width(), mean_, moment_, averageMoment_);
+}
+
+StatsPyramid StatsPyramid::covariance(const Image& e, const Image& eprime) {
+    checkExample(e);
+    checkExample(eprime);
+    if (e.width() != eprime.width()) throw std::invalid_argument("StatsPyramid::covariance: size mismatch");
+    std::vector<double> a = toDouble(e), b = toDouble(eprime), ab(a.size());
+    for (size_t i = 0; i < a.size(); ++i) ab[i] = a[i] * b[i];
+    StatsPyramid p;
+    build(std::move(a), std::move(b), std::move(ab), e.width(), p.mean_, p.moment_, p.averageMoment_);
+    return p;
+}
+
+size_t StatsPyramid::bytes() const {
+    size_t total = 0;
+    for (const auto& g : mean_) total += size_t(g.size()) * size_t(g.size()) * 4 + size_t(g.size() + 2) * size_t(g.size() + 2) * 4;
+    return 2 * total;
+}
+
+}  // namespace stochtex

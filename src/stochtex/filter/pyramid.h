@@ -1,0 +1,46 @@
+#pragma once
+// MIP pyramids of footprint statistics of a noise example (paper eq. 10, 16).
+//
+// For a power-of-two example E (W = 2^L) and level l (texels of 2^l × 2^l):
+//   E_l  = box average of E over the texel                      (means)
+//   V_l  = mip_l(E²) − E_l²   = mean of (E − E_l)² over the texel (eq. 10)
+//   C_l  = mip_l(E E') − E_l E'_l                               (eq. 16)
+// mip_l(E²) and mip_l(E E') are box averages of level 0 products accumulated
+// in double, so V_l and C_l are exact footprint statistics of level 0 (not a
+// recursion on V_{l−1} alone). Level L is 1×1: the global mean / variance.
+#include <vector>
+
+#include "stochtex/noise/example.h"
+#include "stochtex/noise/periodic_grid.h"
+
+namespace stochtex {
+
+class StatsPyramid {
+public:
+    StatsPyramid() = default;
+    // Means and variances of one example.
+    explicit StatsPyramid(const Image& example);
+    // Covariances of a pair of examples of the same size (means of both kept
+    // in meanLevel(k) / partnerMeanLevel(k) are not needed: only C_l).
+    static StatsPyramid covariance(const Image& e, const Image& eprime);
+
+    int levels() const { return int(moment_.size()); }  // L + 1
+    const PeriodicGrid& mean(int level) const { return mean_[size_t(level)]; }
+    // Variance (or, for a covariance pyramid, covariance) of level l.
+    const PeriodicGrid& moment(int level) const { return moment_[size_t(level)]; }
+    // Average of moment(l) over the whole example: the Deliot–Heitz constant
+    // within-texel variance of level l.
+    float averageMoment(int level) const { return averageMoment_[size_t(level)]; }
+
+    // Bytes held by all levels (values and padded copies).
+    size_t bytes() const;
+
+private:
+    std::vector<PeriodicGrid> mean_, moment_;
+    std::vector<float> averageMoment_;
+};
+
+// True for 1, 2, 4, 8, ...
+inline bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
+
+}  // namespace stochtex
