@@ -8,13 +8,13 @@
 
 namespace stochtex {
 
-ColormapTable::ColormapTable(Image table) : table_(std::move(table)) {
-    if (table_.channels() != 3 || table_.width() < 2 || table_.height() < 2)
+ColormapTable::ColormapTable(const Image& table) : width_(table.width()), height_(table.height()) {
+    if (table.channels() != 3 || table.width() < 2 || table.height() < 2)
         throw std::invalid_argument("ColormapTable: needs an RGB table of at least 2×2");
-    lastX_ = float(table_.width() - 1);
-    lastY_ = float(table_.height() - 1);
-    rgba_.resize(table_.pixelCount());
-    const float* src = table_.data().data();
+    lastX_ = float(width_ - 1);
+    lastY_ = float(height_ - 1);
+    rgba_.resize(table.pixelCount());
+    const float* src = table.data().data();
     for (size_t i = 0; i < rgba_.size(); ++i) rgba_[i] = Texel{src[3 * i], src[3 * i + 1], src[3 * i + 2], 0.0f};
 }
 
@@ -27,7 +27,14 @@ static Image flipRows(const Image& image) {
     return out;
 }
 
-Image ColormapTable::toImage() const { return flipRows(table_); }
+Image ColormapTable::table() const {
+    Image out(width_, height_, 3, Image::Uninitialized{});
+    for (size_t i = 0; i < rgba_.size(); ++i)
+        for (size_t c = 0; c < 3; ++c) out.data()[3 * i + c] = rgba_[i][c];
+    return out;
+}
+
+Image ColormapTable::toImage() const { return flipRows(table()); }
 
 ColormapTable ColormapTable::fromImage(const Image& image) { return ColormapTable(flipRows(toRgb(image))); }
 
@@ -46,7 +53,7 @@ ColormapTable tabulate(int resolution, F&& h) {
                 for (int k = 0; k < 3; ++k) table.at(i, j, k) = c[size_t(k)];
             }
     });
-    return ColormapTable(std::move(table));
+    return ColormapTable(table);
 }
 
 Rgb gray(double v) { return {float(v), float(v), float(v)}; }

@@ -25,27 +25,35 @@ class ColormapTable {
 public:
     ColormapTable() = default;
     // table: Rx×Ry×3 with row j holding y = j/(Ry−1) (row 0 is y = 0).
-    explicit ColormapTable(Image table);
+    explicit ColormapTable(const Image& table);
 
-    int resolutionX() const { return table_.width(); }
-    int resolutionY() const { return table_.height(); }
-    const Image& table() const { return table_; }
+    int resolutionX() const { return width_; }
+    int resolutionY() const { return height_; }
+    // The entries as an Rx×Ry RGB image, row 0 = y = 0.
+    Image table() const;
+    // Entry (i, j) (no interpolation).
+    Rgb entry(int i, int j) const {
+        const Texel t = rgba_[size_t(j) * size_t(width_) + size_t(i)];
+        return {t[0], t[1], t[2]};
+    }
 
     // Bilinear, clamp-to-edge.
     Rgb sample(float x, float y) const {
         const float fx = std::min(std::max(x, 0.0f), 1.0f) * lastX_;
         const float fy = std::min(std::max(y, 0.0f), 1.0f) * lastY_;
-        const int x0 = std::min(int(fx), table_.width() - 2);
-        const int y0 = std::min(int(fy), table_.height() - 2);
+        const int x0 = std::min(int(fx), width_ - 2);
+        const int y0 = std::min(int(fy), height_ - 2);
         const float tx = fx - float(x0), ty = fy - float(y0);
         // Four RGBA texels, interpolated four channels at a time.
-        const Texel* a = rgba_.data() + size_t(y0) * size_t(table_.width()) + size_t(x0);
-        const Texel* b = a + table_.width();
+        const Texel* a = rgba_.data() + size_t(y0) * size_t(width_) + size_t(x0);
+        const Texel* b = a + width_;
         const Texel top = a[0] + tx * (a[1] - a[0]);
         const Texel bottom = b[0] + tx * (b[1] - b[0]);
         const Texel c = top + ty * (bottom - top);
         return {c[0], c[1], c[2]};
     }
+
+    size_t bytes() const { return rgba_.size() * sizeof(Texel); }
 
     // The table as an image with y up (row 0 = y = 1), for writing to disk.
     Image toImage() const;
@@ -53,10 +61,10 @@ public:
     static ColormapTable fromImage(const Image& image);
 
 private:
-    // The table again as RGBA texels (alpha unused) so a lookup is four
-    // 16-byte loads and vector arithmetic (a GCC/Clang vector extension).
+    // Entries as RGBA texels (alpha unused) so a lookup is four 16-byte
+    // loads and vector arithmetic (a GCC/Clang vector extension).
     typedef float Texel __attribute__((vector_size(16)));
-    Image table_;
+    int width_ = 0, height_ = 0;
     std::vector<Texel> rgba_;
     float lastX_ = 1.0f, lastY_ = 1.0f;  // Rx − 1, Ry − 1
 };
