@@ -1,9 +1,13 @@
-// stochtex render: the unfiltered pattern S = H ∘ N, one sample per pixel.
+// stochtex render: a pattern seen through a camera, unfiltered (S = H∘N at
+// pixel centres), filtered (Ŝ = H̄(μ̂, σ̂)) or as the reference S̄.
+#include <chrono>
 #include <cstdio>
 
 #include "common.h"
+#include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/filtered_pattern.h"
 
 namespace stochtex::cli {
 
@@ -12,26 +16,65 @@ void registerRender(CLI::App& app) {
         PatternSource source;
         ViewFlags view;
         std::string output;
+        std::string filter = "none";
+        std::string camera = "zoom";
+        std::string estimator = "paper";
+        double tilt = 60, fov = 60;
+        int aniso = 1;
+        int referenceSamples = 64;
         int bits = 8;
         int threads = 0;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("render", "Render a pattern to PNG or EXR");
+    auto* cmd = app.add_subcommand("render", "Render a pattern to PNG or EXR, unfiltered, filtered or as the reference");
     addPatternSource(*cmd, args->source);
     addViewFlags(*cmd, args->view);
     cmd->add_option("-o,--output", args->output, "Output image (.png or .exr)")->required();
+    cmd->add_option("--filter", args->filter,
+                    "none (S at pixel centres) | paper (estimators + section-5 table) | smooth (estimators + "
+                    "interpolated table) | exact (brute-force statistics + table) | reference (supersampled S̄)");
+    cmd->add_option("--aniso", args->aniso, "Anisotropic probes K (1 = isotropic trilinear, up to 16)");
+    cmd->add_option("--estimator", args->estimator, "Variance estimator: paper | deliot-heitz (one variance per LOD)");
+    cmd->add_option("--view", args->camera, "zoom (flat, --scale texels per pixel) | plane (perspective ground plane)");
+    cmd->add_option("--tilt", args->tilt, "Plane view: tilt from looking straight down, degrees [0, 89]");
+    cmd->add_option("--fov", args->fov, "Plane view: vertical field of view, degrees");
+    cmd->add_option("--reference-samples", args->referenceSamples,
+                    "Max samples per axis and pixel for --filter reference/exact (n = clamp(2·extent, 8, this))");
     cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         checkImageOutput(args->output);
+        FilterOptions options;
+        options.mode = parseFilterMode(args->filter);
+        options.aniso = args->aniso;
+        options.referenceMaxSamples = args->referenceSamples;
+        if (args->estimator == "paper")
+            options.estimator = VarianceEstimator::Paper;
+        else if (args->estimator == "deliot-heitz")
+            options.estimator = VarianceEstimator::DeliotHeitz;
+        else
+            throw InputError("--estimator: unknown \"" + args->estimator + "\" (expected paper or deliot-heitz)");
+        Camera camera;
+        if (args->camera == "plane")
+            camera.kind = Camera::Kind::Plane;
+        else if (args->camera != "zoom")
+            throw InputError("--view: unknown \"" + args->camera + "\" (expected zoom or plane)");
+        camera.tiltDeg = args->tilt;
+        camera.fovDeg = args->fov;
         const PatternSpec spec = loadPatternSource(args->source);
-        const View view = makeView(spec, args->view);
+        camera.view = makeView(spec, args->view);
+        validateCamera(camera);
+        if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
+            throw InputError("--aniso must be in [1, 16] (got " + std::to_string(options.aniso) + ")");
         ThreadLimit limit(args->threads);
+        const auto start = std::chrono::steady_clock::now();
         const Pattern pattern = Pattern::build(spec);
-        const Image image = pattern.render(view);
+        const FilteredPattern filtered(pattern, options);
+        const Image image = filtered.render(camera);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image, WriteOptions{args->bits});
-        std::printf("wrote %s (%dx%d, %s, scale %g texels/pixel)\n", args->output.c_str(), view.width, view.height,
-                    spec.name.c_str(), view.scale);
+        std::printf("wrote %s (%dx%d, %s, %s view, filter %s, %.2f s)\n", args->output.c_str(), camera.view.width,
+                    camera.view.height, spec.name.c_str(), args->camera.c_str(), args->filter.c_str(), seconds);
     });
 }
 

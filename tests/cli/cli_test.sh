@@ -59,6 +59,13 @@ grep -q "camouflage" "$work/out.txt" || fail "presets does not list camouflage"
 expect_ok "gallery" "$out/gal/index.html" -- "$bin" gallery -o "$out/gal" --size 64 --preset gaussian --preset woven
 [ -s "$out/gal/woven-sheet.png" ] || fail "gallery sheet missing"
 
+# Filtered rendering: every mode, both views.
+for f in none paper smooth exact reference; do
+  expect_ok "filter $f" "$out/f-$f.png" -- "$bin" render --preset marble -o "$out/f-$f.png" --size 32 --scale 8 --filter $f --reference-samples 16
+done
+expect_ok "plane view" "$out/plane.png" -- "$bin" render --preset camouflage -o "$out/plane.png" --size 48 --view plane --tilt 70 --filter smooth --aniso 8
+expect_ok "deliot-heitz" "$out/dh.png" -- "$bin" render --preset camouflage -o "$out/dh.png" --size 32 --scale 16 --filter paper --estimator deliot-heitz
+
 # An exemplar image as noise (Gaussianized), and an image colormap.
 cat >"$work/exemplar.json" <<JSON
 {"noise_x": {"type": "image", "path": "out/noise.png"},
@@ -88,6 +95,12 @@ expect_bad "bad noise spec" "$out/bad13.png" "<inline JSON>: /components/0/frequ
 expect_bad "noise size over cap" "$out/bad14.png" "/size: must be in [8, 4096]" -- "$bin" noise '{"type":"spectrum","size":100000,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/bad14.png"
 expect_bad "bad colormap" "$out/bad15.png" "/type: unknown value" -- "$bin" colormap '{"type":"rainbow"}' -o "$out/bad15.png"
 expect_bad "unknown flag" "$out/bad16.png" "--bogus" -- "$bin" render --preset gaussian -o "$out/bad16.png" --bogus
+expect_bad "bad filter" "$out/bad18.png" 'unknown mode "blurry"' -- "$bin" render --preset gaussian -o "$out/bad18.png" --filter blurry
+expect_bad "aniso zero" "$out/bad19.png" "--aniso must be in [1, 16]" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
+expect_bad "aniso absurd" "$out/bad20.png" "--aniso must be in [1, 16]" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
+expect_bad "tilt" "$out/bad21.png" "--tilt must be in [0, 89]" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95
+expect_bad "zero scale" "$out/bad22.png" "scale must be a finite number" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
+expect_bad "bad view" "$out/bad23.png" 'unknown "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
 expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"
 
 if [ $failures -ne 0 ]; then

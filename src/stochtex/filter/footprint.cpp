@@ -2,12 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+#include <string>
+
+#include "stochtex/core/error.h"
 
 namespace stochtex {
 
 Footprint makeFootprint(double u, double v, const Jacobian& j, int exampleSize, int maxLod, int maxAniso) {
-    if (maxAniso < 1 || maxAniso > kMaxAnisotropy) throw std::invalid_argument("makeFootprint: bad anisotropy");
+    if (maxAniso < 1 || maxAniso > kMaxAnisotropy)
+        throw InputError("anisotropy K must be in [1, 16] (got " + std::to_string(maxAniso) + ")");
+    if (!std::isfinite(u) || !std::isfinite(v) || !std::isfinite(j.dudx) || !std::isfinite(j.dvdx) ||
+        !std::isfinite(j.dudy) || !std::isfinite(j.dvdy))
+        throw InputError("footprint: non-finite position or Jacobian");
     const double w = exampleSize;
     const double px = w * std::hypot(j.dudx, j.dvdx);
     const double py = w * std::hypot(j.dudy, j.dvdy);

@@ -20,20 +20,22 @@ FootprintEstimator::TexelStats FootprintEstimator::texel(double u, double v, int
     const float fu = periodFraction(u), fv = periodFraction(v);
     TexelStats t{};
     std::array<float, 3> w2{};
+    std::array<TilingBlendingNoise::Offsets, 2> offs;
     for (size_t i = 0; i < 3; ++i) w2[i] = s.w[i] * s.w[i];
     for (size_t a = 0; a < 2; ++a) {
         const TilingBlendingNoise& noise = noises_[a];
         const StatsPyramid& pyr = pyramids_[a];
         const PeriodicGrid& means = pyr.mean(level);
+        offs[a] = noise.offsets(s);
         // Eq. 8: the same blend as the unfiltered noise, on level l.
-        t.mean[a] = TilingBlendingNoise::mix(s, noise.tileValues(noise.tileRows(s, fv, means), fu, means),
+        t.mean[a] = TilingBlendingNoise::mix(s, noise.tileValues(noise.tileRows(offs[a], fv, means), fu, means),
                                             noise.example().mean());
         if (mode == VarianceEstimator::DeliotHeitz) {
             t.var[a] = pyr.averageMoment(level);
         } else {
             // Eq. 12: tiles assumed uncorrelated, weights constant over P.
             const PeriodicGrid& vars = pyr.moment(level);
-            const auto vi = noise.tileValues(noise.tileRows(s, fv, vars), fu, vars);
+            const auto vi = noise.tileValues(noise.tileRows(offs[a], fv, vars), fu, vars);
             t.var[a] = w2[0] * vi[0] + w2[1] * vi[1] + w2[2] * vi[2];
         }
     }
@@ -43,7 +45,7 @@ FootprintEstimator::TexelStats FootprintEstimator::texel(double u, double v, int
             t.cov = covariance_->averageMoment(level);
         } else {
             const PeriodicGrid& covs = covariance_->moment(level);
-            const auto ci = noises_[0].tileValues(noises_[0].tileRows(s, fv, covs), fu, covs);
+            const auto ci = noises_[0].tileValues(noises_[0].tileRows(offs[0], fv, covs), fu, covs);
             t.cov = w2[0] * ci[0] + w2[1] * ci[1] + w2[2] * ci[2];  // eq. 17
         }
     }

@@ -112,10 +112,18 @@ public:
         std::array<float, 3> offsetTexels;
         std::array<PeriodicGrid::RowPair, 3> rows;
     };
+    using Offsets = std::array<TileOffset, 3>;
+    Offsets offsets(const BlendStencil& s) const {
+        return {tileOffset(s.vx(0), s.vy(0), seed_), tileOffset(s.vx(1), s.vy(1), seed_),
+                tileOffset(s.vx(2), s.vy(2), seed_)};
+    }
     TileRows tileRows(const BlendStencil& s, float fv, const PeriodicGrid& g) const {
+        return tileRows(offsets(s), fv, g);
+    }
+    TileRows tileRows(const Offsets& offs, float fv, const PeriodicGrid& g) const {
         TileRows t;
         for (size_t i = 0; i < 3; ++i) {
-            const TileOffset o = tileOffset(s.vx(i), s.vy(i), seed_);
+            const TileOffset o = offs[i];
             float sv = fv + o.v;
             if (sv >= 1.0f) sv -= 1.0f;
             t.offsetTexels[i] = o.u * g.sizeF();

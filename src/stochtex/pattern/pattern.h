@@ -40,6 +40,8 @@ public:
     const NoiseExample& example(int axis) const { return *examples_[size_t(axis)]; }
     const ColormapTable& colormap() const { return colormap_; }
     int exampleSize() const { return examples_[0]->size(); }
+    const std::array<TilingBlendingNoise, 2>& noises() const { return noises_; }
+    bool sharedOffsets() const { return noises_[0].offsetSeed() == noises_[1].offsetSeed(); }
     double gridDensity() const { return density_; }
     View defaultView(const PatternSpec& spec) const;
 

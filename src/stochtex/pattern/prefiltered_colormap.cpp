@@ -15,7 +15,7 @@ namespace {
 // (already clamped to the table) and their normalised weights.
 struct Tap {
     int index;
-    float weight;
+    double weight;
 };
 
 // ∫_L^U (α + βx) N(x; c, s²) dx.
@@ -43,8 +43,8 @@ std::vector<std::vector<Tap>> blurTaps(int n, double sigma, int out) {
         if (s <= 0.0) {
             const int j = std::min(int(c), n - 2);
             const double f = c - j;
-            t.push_back({j, float(1.0 - f)});
-            t.push_back({j + 1, float(f)});
+            t.push_back({j, 1.0 - f});
+            t.push_back({j + 1, f});
             continue;
         }
         const int lo = std::max(0, int(std::floor(c - 6.0 * s)) - 1);
@@ -59,7 +59,7 @@ std::vector<std::vector<Tap>> blurTaps(int n, double sigma, int out) {
             w.push_back(left + right);
             sum += w.back();
         }
-        for (int j = lo; j <= hi; ++j) t.push_back({j, float(w[size_t(j - lo)] / sum)});
+        for (int j = lo; j <= hi; ++j) t.push_back({j, w[size_t(j - lo)] / sum});
     }
     return taps;
 }
@@ -72,7 +72,8 @@ Image blurAxis(const Image& in, bool alongX, double sigma, int out) {
     parallelRows(res.height(), [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < res.width(); ++x) {
-                float acc[3] = {0, 0, 0};
+                // Double accumulation: wide blurs sum hundreds of taps.
+                double acc[3] = {0, 0, 0};
                 for (const Tap& t : taps[size_t(alongX ? x : y)]) {
                     const float* p = alongX ? in.row(y) + size_t(t.index) * 3 : in.row(t.index) + size_t(x) * 3;
                     acc[0] += t.weight * p[0];
@@ -80,9 +81,9 @@ Image blurAxis(const Image& in, bool alongX, double sigma, int out) {
                     acc[2] += t.weight * p[2];
                 }
                 float* q = &res.at(x, y, 0);
-                q[0] = acc[0];
-                q[1] = acc[1];
-                q[2] = acc[2];
+                q[0] = float(acc[0]);
+                q[1] = float(acc[1]);
+                q[2] = float(acc[2]);
             }
     });
     return res;

@@ -1,0 +1,33 @@
+#pragma once
+// How output pixels see texture space: a centre uv and a Jacobian per pixel.
+//
+//   zoom  — the View mapping of the unfiltered renderer: uv = (offset +
+//           (p + ½)·scale)/W, J = diag(scale/W); footprints are scale×scale
+//           texel squares.
+//   plane — a pinhole camera (vertical field of view `fovDeg`) above an
+//           infinite ground plane carrying the texture, tilted by `tiltDeg`
+//           from looking straight down (0° = the zoom view) towards −v, so the
+//           horizon rises from the top as the tilt grows. The height is chosen
+//           so that at tilt 0 the centre pixel covers `scale` texels. J comes
+//           from central differences of the ray–plane intersection (±½ pixel).
+//           Pixels whose ray (or a neighbour's) misses the plane are "sky".
+#include "stochtex/filter/footprint.h"
+#include "stochtex/pattern/pattern.h"
+
+namespace stochtex {
+
+struct Camera {
+    enum class Kind { Zoom, Plane };
+    Kind kind = Kind::Zoom;
+    View view;             // size, scale (texels per pixel), offset (texels)
+    double tiltDeg = 60;   // plane only, in [0, 89]
+    double fovDeg = 60;    // plane only
+
+    // Returns false for a sky pixel. exampleSize = W of the pattern.
+    bool footprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const;
+};
+
+// InputError naming the flag if the camera is unusable.
+void validateCamera(const Camera& c);
+
+}  // namespace stochtex

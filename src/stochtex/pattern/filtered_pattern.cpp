@@ -1,0 +1,108 @@
+#include "stochtex/pattern/filtered_pattern.h"
+
+#include <cmath>
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/parallel.h"
+
+namespace stochtex {
+
+namespace {
+
+// H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)) on H's own grid.
+ColormapTable foldInverseTransforms(const Pattern& p) {
+    const ColormapTable& h = p.colormap();
+    if (!p.example(0).gaussianized() && !p.example(1).gaussianized()) return h;
+    Image t(h.resolutionX(), h.resolutionY(), 3, Image::Uninitialized{});
+    for (int j = 0; j < t.height(); ++j)
+        for (int i = 0; i < t.width(); ++i) {
+            const float x = p.example(0).toOutput(float(i) / float(t.width() - 1));
+            const float y = p.example(1).toOutput(float(j) / float(t.height() - 1));
+            const Rgb c = h.sample(x, y);
+            for (int k = 0; k < 3; ++k) t.at(i, j, k) = c[size_t(k)];
+        }
+    return ColormapTable(t);
+}
+
+}  // namespace
+
+FilterMode parseFilterMode(const std::string& name) {
+    if (name == "none") return FilterMode::None;
+    if (name == "paper") return FilterMode::Paper;
+    if (name == "smooth") return FilterMode::Smooth;
+    if (name == "exact") return FilterMode::Exact;
+    if (name == "reference") return FilterMode::Reference;
+    throw InputError("--filter: unknown mode \"" + name + "\" (expected none, paper, smooth, exact or reference)");
+}
+
+FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& options)
+    : pattern_(pattern), options_(options), colormap_(foldInverseTransforms(pattern)) {
+    if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
+        throw InputError("--aniso must be in [1, " + std::to_string(kMaxAnisotropy) + "] (got " +
+                         std::to_string(options.aniso) + ")");
+    if (options.referenceMaxSamples < 1 || options.referenceMaxSamples > 4096)
+        throw InputError("--reference-samples must be in [1, 4096]");
+    if (!isPowerOfTwo(pattern.exampleSize()))
+        throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
+                         std::to_string(pattern.exampleSize()));
+    estimator_ = std::make_unique<FootprintEstimator>(pattern.noises(), pattern.sharedOffsets(), pattern.gridDensity());
+    table_ = std::make_unique<PrefilteredColormap>(
+        colormap_, options.mode == FilterMode::Paper ? PrefilterMode::Paper : PrefilterMode::Smooth);
+    // Sky: the whole example in one footprint (top MIP level).
+    const auto top = estimator_->texel(0.0, 0.0, estimator_->maxLod(), options_.estimator);
+    sky_ = table_->sample(top.mean[0], top.mean[1], std::sqrt(top.var[0]), std::sqrt(top.var[1]));
+}
+
+Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j) const {
+    if (!onPlane) return sky_;
+    switch (options_.mode) {
+        case FilterMode::None: return pattern_.evaluate(u, v);
+        case FilterMode::Paper:
+        case FilterMode::Smooth: {
+            const Footprint f = makeFootprint(u, v, j, estimator_->exampleSize(), estimator_->maxLod(), options_.aniso);
+            const FootprintStats s = estimator_->estimate(f, options_.estimator);
+            return table_->sample(s.mean[0], s.mean[1], s.sigmaX(), s.sigmaY());
+        }
+        case FilterMode::Exact: {
+            const FootprintStats s =
+                bruteForceStats(pattern_.noises(), pattern_.gridDensity(), u, v, j, options_.referenceMaxSamples);
+            return table_->sample(s.mean[0], s.mean[1], s.sigmaX(), s.sigmaY());
+        }
+        case FilterMode::Reference: {
+            const int n = bruteForceSamples(j, pattern_.exampleSize(), options_.referenceMaxSamples);
+            double acc[3] = {0, 0, 0};
+            for (int b = 0; b < n; ++b)
+                for (int a = 0; a < n; ++a) {
+                    const double s = (a + 0.5) / n - 0.5, t = (b + 0.5) / n - 0.5;
+                    const Rgb c = pattern_.evaluate(u + s * j.dudx + t * j.dudy, v + s * j.dvdx + t * j.dvdy);
+                    for (int k = 0; k < 3; ++k) acc[k] += c[size_t(k)];
+                }
+            const double inv = 1.0 / (double(n) * n);
+            return {float(acc[0] * inv), float(acc[1] * inv), float(acc[2] * inv)};
+        }
+    }
+    return sky_;
+}
+
+Image FilteredPattern::render(const Camera& camera) const {
+    validateCamera(camera);
+    if (options_.mode == FilterMode::None && camera.kind == Camera::Kind::Zoom) return pattern_.render(camera.view);
+    Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
+    const int w = pattern_.exampleSize();
+    parallelRows(camera.view.height, [&](int y0, int y1) {
+        for (int py = y0; py < y1; ++py)
+            for (int px = 0; px < camera.view.width; ++px) {
+                double u = 0, v = 0;
+                Jacobian j;
+                const bool onPlane = camera.footprint(px, py, w, u, v, j);
+                const Rgb c = shade(onPlane, u, v, j);
+                float* p = out.row(py) + size_t(px) * 3;
+                p[0] = c[0];
+                p[1] = c[1];
+                p[2] = c[2];
+            }
+    });
+    return out;
+}
+
+}  // namespace stochtex

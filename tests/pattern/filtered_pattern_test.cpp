@@ -1,0 +1,155 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "stochtex/core/error.h"
+#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/presets.h"
+
+using namespace stochtex;
+
+namespace {
+
+Camera zoom(int size, double scale) {
+    Camera c;
+    c.view.width = c.view.height = size;
+    c.view.scale = scale;
+    c.view.offsetU = 17;
+    c.view.offsetV = -5;
+    return c;
+}
+
+FilterOptions options(FilterMode mode, int aniso = 1) {
+    FilterOptions o;
+    o.mode = mode;
+    o.aniso = aniso;
+    return o;
+}
+
+}  // namespace
+
+TEST(PrefilteredColormap, EntriesEqualDirectNumericalConvolution) {
+    const ColormapTable h = buildColormap(loadPreset("marble").colormap);
+    for (PrefilterMode mode : {PrefilterMode::Paper, PrefilterMode::Smooth}) {
+        const PrefilteredColormap p(h, mode);
+        const auto& s = p.sigmas();
+        for (size_t kx = 0; kx < s.size(); ++kx)
+            for (size_t ky = 0; ky < s.size(); ky += 2) {
+                if (s[kx] > 0.25 || s[ky] > 0.25) continue;  // keep the Riemann reference fine enough
+                const ColormapTable& layer = p.layer(int(kx), int(ky));
+                for (int k = 0; k < 3; ++k) {
+                    const int i = (k * 37 + 5) % layer.resolutionX(), j = (k * 91 + 3) % layer.resolutionY();
+                    const double mx = double(i) / (layer.resolutionX() - 1), my = double(j) / (layer.resolutionY() - 1);
+                    const Rgb want = convolveColormapNumerically(h, mx, my, s[kx], s[ky], 1500);
+                    const Rgb got = layer.entry(i, j);
+                    for (int c = 0; c < 3; ++c)
+                        ASSERT_NEAR(got[size_t(c)], want[size_t(c)], 2e-4) << "σ " << s[kx] << "," << s[ky];
+                }
+            }
+    }
+}
+
+TEST(PrefilteredColormap, SmoothModeInterpolatesBetweenLevelsAndPaperSnaps) {
+    const ColormapTable h = buildColormap(loadPreset("weld").colormap);
+    const PrefilteredColormap smooth(h, PrefilterMode::Smooth), paper(h, PrefilterMode::Paper);
+    // Smooth: continuous in σ (no jump across a level boundary).
+    const float a = smooth.sample(0.45f, 0.52f, 0.0156f * 0.999f, 0.02f)[0];
+    const float b = smooth.sample(0.45f, 0.52f, 0.0156f * 1.001f, 0.02f)[0];
+    EXPECT_NEAR(a, b, 1e-3f);
+    // Paper: nearest level in log2: σ = 0.0125 and 0.015 both read 2^2/256.
+    EXPECT_EQ(paper.sample(0.45f, 0.52f, 0.0125f, 0.02f), paper.sample(0.45f, 0.52f, 0.015f, 0.02f));
+    EXPECT_EQ(paper.sigmas().size(), 6u);
+    EXPECT_EQ(smooth.sigmas().front(), 0.0);
+}
+
+TEST(FilteredPattern, LinearColormapReturnsTheEstimatedMean) {
+    const Pattern p = Pattern::build(loadPreset("gaussian"));  // H(x, y) = x
+    for (FilterMode mode : {FilterMode::Smooth, FilterMode::Paper}) {
+        const FilteredPattern f(p, options(mode, 4));
+        int checked = 0;
+        for (int i = 0; i < 1000; ++i) {
+            const double u = 0.013 * i, v = 0.0071 * i;
+            Jacobian j;
+            j.dudx = (1 + i % 8) / 256.0;
+            j.dvdy = (1 + (i * 7) % 4) / 256.0;
+            const Footprint fp = makeFootprint(u, v, j, 256, f.estimator().maxLod(), 4);
+            const FootprintStats s = f.estimator().estimate(fp);
+            const float sigma = std::max(s.sigmaX(), 1.0f / 256);  // paper mode blurs by ≥ 1/256
+            // The lookup may read the σ level above σ̂ (at most 2σ̂): stay 4 of
+            // those σ away from the borders, where the clamp-to-edge bias of
+            // the blur is below 1e-5.
+            if (s.mean[0] < 8 * sigma || s.mean[0] > 1 - 8 * sigma) continue;
+            ++checked;
+            // Away from the borders the blur of a linear H is H itself; only
+            // the clamp and float rounding remain.
+            EXPECT_NEAR(f.shade(true, u, v, j)[0], s.mean[0], 1e-5);
+        }
+        EXPECT_GT(checked, 300);
+    }
+}
+
+TEST(FilteredPattern, ConstantColormapStaysConstant) {
+    PatternSpec spec = loadPreset("weld");
+    spec.colormap.painted.shapes.clear();
+    spec.colormap.painted.background = {0.2f, 0.6f, 0.9f};
+    const Pattern p = Pattern::build(spec);
+    Camera cam = zoom(48, 7.0);
+    cam.kind = Camera::Kind::Plane;
+    cam.tiltDeg = 70;
+    for (FilterMode mode : {FilterMode::Paper, FilterMode::Smooth}) {
+        const Image img = FilteredPattern(p, options(mode, 8)).render(cam);
+        for (size_t i = 0; i < img.data().size(); i += 3) {
+            ASSERT_NEAR(img.data()[i], 0.2f, 1e-6f);
+            ASSERT_NEAR(img.data()[i + 2], 0.9f, 1e-6f);
+        }
+    }
+}
+
+TEST(FilteredPattern, OneTexelFootprintReproducesTheUnfilteredPattern) {
+    const Pattern p = Pattern::build(loadPreset("camouflage"));
+    const Camera cam = zoom(64, 1.0);
+    const Image unfiltered = p.render(cam.view);
+    const Image smooth = FilteredPattern(p, options(FilterMode::Smooth)).render(cam);
+    EXPECT_EQ(smooth.data(), unfiltered.data());  // σ̂ = 0 reads the σ = 0 level: bit-identical
+    // Paper mode: the finest level blurs by σ = 1/256, i.e. one colormap entry.
+    const Image paper = FilteredPattern(p, options(FilterMode::Paper)).render(cam);
+    double diff = 0;
+    for (size_t i = 0; i < paper.data().size(); ++i) diff += std::abs(paper.data()[i] - unfiltered.data()[i]);
+    diff /= double(paper.data().size());
+    EXPECT_GT(diff, 0.0);
+    EXPECT_LT(diff, 0.01);
+}
+
+TEST(FilteredPattern, FilteredIsCloserToTheReferenceThanUnfilteredWhenZoomedOut) {
+    const Pattern p = Pattern::build(loadPreset("marble"));
+    FilterOptions ref = options(FilterMode::Reference);
+    ref.referenceMaxSamples = 32;
+    const Camera cam = zoom(24, 16.0);
+    const Image r = FilteredPattern(p, ref).render(cam);
+    auto error = [&](FilterMode m) {
+        const Image img = FilteredPattern(p, options(m)).render(cam);
+        double e = 0;
+        for (size_t i = 0; i < img.data().size(); ++i) e += std::abs(img.data()[i] - r.data()[i]);
+        return e / double(img.data().size());
+    };
+    const double none = error(FilterMode::None), smooth = error(FilterMode::Smooth), exact = error(FilterMode::Exact);
+    EXPECT_LT(smooth, 0.5 * none);
+    EXPECT_LT(exact, smooth * 1.5);  // exact statistics are at least about as good
+    EXPECT_LT(smooth, 0.05);
+}
+
+TEST(FilteredPattern, BadInputIsRejected) {
+    const Pattern p = Pattern::build(loadPreset("gaussian"));
+    EXPECT_THROW(FilteredPattern(p, options(FilterMode::Smooth, 0)), InputError);
+    EXPECT_THROW(FilteredPattern(p, options(FilterMode::Smooth, 17)), InputError);
+    Jacobian nan;
+    nan.dudx = std::nan("");
+    EXPECT_THROW(makeFootprint(0, 0, nan, 256, 8, 1), InputError);
+    const FilteredPattern f(p, options(FilterMode::Smooth));
+    Camera c = zoom(8, 0.0);
+    EXPECT_THROW(f.render(c), InputError);
+    c = zoom(8, 1.0);
+    c.kind = Camera::Kind::Plane;
+    c.tiltDeg = 95;
+    EXPECT_THROW(f.render(c), InputError);
+}
