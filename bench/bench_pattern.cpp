@@ -2,7 +2,13 @@
 // counters report Mtexel/s (benchmark's rate counter, in texels/s).
 #include <benchmark/benchmark.h>
 
+#include <functional>
+
+#include <chrono>
+
 #include "stochtex/core/parallel.h"
+#include "stochtex/noise/spectrum.h"
+#include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/presets.h"
 
@@ -54,6 +60,96 @@ void BM_BuildPattern(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_BuildPattern)->Unit(benchmark::kMillisecond);
+
+double seconds(const std::function<void()>& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Filtered vs unfiltered on the same 512² zoom view, timed alternately in
+// one run so machine drift cancels in the ratio. Args: scale (footprint
+// side in texels), filter mode (1 paper, 2 smooth), anisotropy K.
+void BM_FilteredVsUnfiltered(benchmark::State& state) {
+    const Pattern& p = camouflage();
+    FilterOptions o;
+    o.mode = state.range(1) == 1 ? FilterMode::Paper : FilterMode::Smooth;
+    o.aniso = int(state.range(2));
+    const FilteredPattern f(p, o);
+    Camera cam;
+    cam.view.width = cam.view.height = 512;
+    cam.view.scale = double(state.range(0));
+    double tf = 0, tu = 0;
+    for (auto _ : state) {
+        tu += seconds([&] { benchmark::DoNotOptimize(p.render(cam.view).data().data()); });
+        tf += seconds([&] { benchmark::DoNotOptimize(f.render(cam).data().data()); });
+    }
+    const double texels = 512.0 * 512.0 * double(state.iterations());
+    state.counters["filtered_Mtexel/s"] = texels / tf * 1e-6;
+    state.counters["unfiltered_Mtexel/s"] = texels / tu * 1e-6;
+    state.counters["ratio"] = tu / tf;
+}
+BENCHMARK(BM_FilteredVsUnfiltered)
+    ->ArgNames({"scale", "mode", "K"})
+    ->Args({1, 1, 1})
+    ->Args({128, 1, 1})
+    ->Args({1, 2, 1})
+    ->Args({128, 2, 1})
+    ->Args({16, 1, 8})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// A perspective plane (tilt 75°): footprints from 1 to thousands of texels,
+// strongly anisotropic near the horizon.
+void BM_PlaneFiltered(benchmark::State& state) {
+    const Pattern& p = camouflage();
+    FilterOptions o;
+    o.mode = FilterMode::Smooth;
+    o.aniso = int(state.range(0));
+    const FilteredPattern f(p, o);
+    Camera cam;
+    cam.kind = Camera::Kind::Plane;
+    cam.tiltDeg = 75;
+    cam.view.width = cam.view.height = 512;
+    for (auto _ : state) benchmark::DoNotOptimize(f.render(cam).data().data());
+    state.counters["Mtexel/s"] =
+        benchmark::Counter(512.0 * 512.0 * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_PlaneFiltered)->ArgName("K")->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Precomputation: mean/variance pyramids of two 512² examples (+ covariance).
+void BM_BuildPyramids512(benchmark::State& state) {
+    std::array<TilingBlendingNoise, 2> noises;
+    for (uint32_t a = 0; a < 2; ++a) {
+        SpectrumSpec s;
+        s.size = 512;
+        s.seed = a;
+        s.components.push_back({SpectrumShape::LowPass, 8, 2, 0, 1});
+        noises[a] = TilingBlendingNoise(std::make_shared<const NoiseExample>(synthesizeExample(s)), a);
+    }
+    size_t bytes = 0;
+    for (auto _ : state) {
+        FootprintEstimator e(noises, false, kDefaultGridDensity);
+        bytes = e.bytes();
+        benchmark::DoNotOptimize(&e);
+    }
+    state.counters["MB"] = double(bytes) * 1e-6;
+}
+BENCHMARK(BM_BuildPyramids512)->Unit(benchmark::kMillisecond);
+
+// Precomputation of the prefiltered table H̄ from a 256² colormap.
+void BM_BuildPrefilteredTable(benchmark::State& state) {
+    const ColormapTable h = camouflage().colormap();
+    const PrefilterMode mode = state.range(0) == 1 ? PrefilterMode::Paper : PrefilterMode::Smooth;
+    size_t bytes = 0;
+    for (auto _ : state) {
+        PrefilteredColormap t(h, mode);
+        bytes = t.bytes();
+        benchmark::DoNotOptimize(&t);
+    }
+    state.counters["MB"] = double(bytes) * 1e-6;
+}
+BENCHMARK(BM_BuildPrefilteredTable)->ArgName("mode")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

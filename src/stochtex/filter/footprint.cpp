@@ -15,8 +15,10 @@ Footprint makeFootprint(double u, double v, const Jacobian& j, int exampleSize, 
         !std::isfinite(j.dudy) || !std::isfinite(j.dvdy))
         throw InputError("footprint: non-finite position or Jacobian");
     const double w = exampleSize;
-    const double px = w * std::hypot(j.dudx, j.dvdx);
-    const double py = w * std::hypot(j.dudy, j.dvdy);
+    // sqrt rather than hypot: no overflow is possible here and hypot is a
+    // slow libm call on the per-pixel path.
+    const double px = w * std::sqrt(j.dudx * j.dudx + j.dvdx * j.dvdx);
+    const double py = w * std::sqrt(j.dudy * j.dudy + j.dvdy * j.dvdy);
     const bool xMajor = px >= py;
     const double pmax = std::max(px, py), pmin = std::min(px, py);
     int n = 1;

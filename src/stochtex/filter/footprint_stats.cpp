@@ -16,40 +16,48 @@ FootprintEstimator::FootprintEstimator(const std::array<TilingBlendingNoise, 2>&
 }
 
 FootprintEstimator::TexelStats FootprintEstimator::texel(double u, double v, int level, VarianceEstimator mode) const {
+    TexelStats t;
+    texels(u, v, &level, 1, mode, &t);
+    return t;
+}
+
+void FootprintEstimator::texels(double u, double v, const int* levels, int count, VarianceEstimator mode,
+                                TexelStats* out) const {
     const BlendStencil s = triangleGrid(u, v, density_);
     const float fu = periodFraction(u), fv = periodFraction(v);
-    TexelStats t{};
     std::array<float, 3> w2{};
-    std::array<TilingBlendingNoise::Offsets, 2> offs;
     for (size_t i = 0; i < 3; ++i) w2[i] = s.w[i] * s.w[i];
-    for (size_t a = 0; a < 2; ++a) {
-        const TilingBlendingNoise& noise = noises_[a];
-        const StatsPyramid& pyr = pyramids_[a];
-        const PeriodicGrid& means = pyr.mean(level);
-        offs[a] = noise.offsets(s);
-        // Eq. 8: the same blend as the unfiltered noise, on level l.
-        t.mean[a] = TilingBlendingNoise::mix(s, noise.tileValues(noise.tileRows(offs[a], fv, means), fu, means),
-                                            noise.example().mean());
-        if (mode == VarianceEstimator::DeliotHeitz) {
-            t.var[a] = pyr.averageMoment(level);
-        } else {
-            // Eq. 12: tiles assumed uncorrelated, weights constant over P.
-            const PeriodicGrid& vars = pyr.moment(level);
-            const auto vi = noise.tileValues(noise.tileRows(offs[a], fv, vars), fu, vars);
-            t.var[a] = w2[0] * vi[0] + w2[1] * vi[1] + w2[2] * vi[2];
+    const std::array<TilingBlendingNoise::Offsets, 2> offs = {noises_[0].offsets(s), noises_[1].offsets(s)};
+    for (int k = 0; k < count; ++k) {
+        const int level = levels[k];
+        TexelStats& t = out[k];
+        for (size_t a = 0; a < 2; ++a) {
+            const TilingBlendingNoise& noise = noises_[a];
+            const StatsPyramid& pyr = pyramids_[a];
+            const PeriodicGrid& means = pyr.mean(level);
+            // Eq. 8: the same blend as the unfiltered noise, on level l.
+            t.mean[a] = TilingBlendingNoise::mix(s, noise.tileValues(noise.tileRows(offs[a], fv, means), fu, means),
+                                                noise.example().mean());
+            if (mode == VarianceEstimator::DeliotHeitz) {
+                t.var[a] = pyr.averageMoment(level);
+            } else {
+                // Eq. 12: tiles assumed uncorrelated, weights constant over P.
+                const PeriodicGrid& vars = pyr.moment(level);
+                const auto vi = noise.tileValues(noise.tileRows(offs[a], fv, vars), fu, vars);
+                t.var[a] = w2[0] * vi[0] + w2[1] * vi[1] + w2[2] * vi[2];
+            }
+        }
+        t.cov = 0.0f;
+        if (covariance_) {
+            if (mode == VarianceEstimator::DeliotHeitz) {
+                t.cov = covariance_->averageMoment(level);
+            } else {
+                const PeriodicGrid& covs = covariance_->moment(level);
+                const auto ci = noises_[0].tileValues(noises_[0].tileRows(offs[0], fv, covs), fu, covs);
+                t.cov = w2[0] * ci[0] + w2[1] * ci[1] + w2[2] * ci[2];  // eq. 17
+            }
         }
     }
-    t.cov = 0.0f;
-    if (covariance_) {
-        if (mode == VarianceEstimator::DeliotHeitz) {
-            t.cov = covariance_->averageMoment(level);
-        } else {
-            const PeriodicGrid& covs = covariance_->moment(level);
-            const auto ci = noises_[0].tileValues(noises_[0].tileRows(offs[0], fv, covs), fu, covs);
-            t.cov = w2[0] * ci[0] + w2[1] * ci[1] + w2[2] * ci[2];  // eq. 17
-        }
-    }
-    return t;
 }
 
 FootprintStats FootprintEstimator::estimate(const Footprint& f, VarianceEstimator mode) const {
@@ -59,17 +67,21 @@ FootprintStats FootprintEstimator::estimate(const Footprint& f, VarianceEstimato
     const int top = maxLod();
     for (int k = 0; k < f.count; ++k) {
         const Probe& p = f.probes[size_t(k)];
+        // Trilinear: the probe is split between levels ⌊λ⌋ and ⌊λ⌋ + 1.
         const int l0 = std::min(int(p.lod), top);
         const float frac = p.lod - float(l0);
-        for (int side = 0; side < 2; ++side) {
-            const double wp = double(p.weight) * (side == 0 ? 1.0 - frac : frac);
-            if (wp <= 0.0) continue;
-            const TexelStats t = texel(p.u, p.v, std::min(l0 + side, top), mode);
+        const int levels[2] = {l0, std::min(l0 + 1, top)};
+        const double weights[2] = {double(p.weight) * (1.0 - frac), double(p.weight) * frac};
+        TexelStats t[2];
+        const int used = weights[1] > 0.0 ? 2 : 1;
+        texels(p.u, p.v, levels, used, mode, t);
+        for (int side = 0; side < used; ++side) {
+            const double wp = weights[side];
             for (int a = 0; a < 2; ++a) {
-                m[a] += wp * t.mean[size_t(a)];
-                m2[a] += wp * (double(t.mean[size_t(a)]) * t.mean[size_t(a)] + t.var[size_t(a)]);
+                m[a] += wp * t[side].mean[size_t(a)];
+                m2[a] += wp * (double(t[side].mean[size_t(a)]) * t[side].mean[size_t(a)] + t[side].var[size_t(a)]);
             }
-            mxy += wp * (double(t.mean[0]) * t.mean[1] + t.cov);
+            mxy += wp * (double(t[side].mean[0]) * t[side].mean[1] + t[side].cov);
         }
     }
     FootprintStats out;

@@ -52,6 +52,9 @@ public:
         float cov;
     };
     TexelStats texel(double u, double v, int level, VarianceEstimator mode) const;
+    // The same at `count` levels of one probe position (stencil and tile
+    // offsets are shared: w_i is taken at the probe centre on every level).
+    void texels(double u, double v, const int* levels, int count, VarianceEstimator mode, TexelStats* out) const;
 
     size_t bytes() const;
 

@@ -47,8 +47,9 @@ std::vector<std::vector<Tap>> blurTaps(int n, double sigma, int out) {
             t.push_back({j + 1, f});
             continue;
         }
-        const int lo = std::max(0, int(std::floor(c - 6.0 * s)) - 1);
-        const int hi = std::min(n - 1, int(std::ceil(c + 6.0 * s)) + 1);
+        // ±5σ: the Gaussian mass left out (< 6e-7) is below float precision.
+        const int lo = std::max(0, int(std::floor(c - 5.0 * s)) - 1);
+        const int hi = std::min(n - 1, int(std::ceil(c + 5.0 * s)) + 1);
         std::vector<double> w;
         double sum = 0;
         for (int j = lo; j <= hi; ++j) {
@@ -64,27 +65,49 @@ std::vector<std::vector<Tap>> blurTaps(int n, double sigma, int out) {
     return taps;
 }
 
-// Blurs an RGB grid (w × h) along x or y, returning (outW × outH).
-Image blurAxis(const Image& in, bool alongX, double sigma, int out) {
-    const int n = alongX ? in.width() : in.height();
-    const auto taps = blurTaps(n, sigma, out);
-    Image res(alongX ? out : in.width(), alongX ? in.height() : out, 3, Image::Uninitialized{});
+using TapTable = std::vector<std::vector<Tap>>;
+
+// Blurs an RGB grid along x with precomputed taps (one list per output column).
+Image blurRows(const Image& in, const TapTable& taps) {
+    Image res(int(taps.size()), in.height(), 3, Image::Uninitialized{});
     parallelRows(res.height(), [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < res.width(); ++x) {
+        for (int y = y0; y < y1; ++y) {
+            const float* row = in.row(y);
+            float* q = res.row(y);
+            for (size_t x = 0; x < taps.size(); ++x) {
                 // Double accumulation: wide blurs sum hundreds of taps.
                 double acc[3] = {0, 0, 0};
-                for (const Tap& t : taps[size_t(alongX ? x : y)]) {
-                    const float* p = alongX ? in.row(y) + size_t(t.index) * 3 : in.row(t.index) + size_t(x) * 3;
+                for (const Tap& t : taps[x]) {
+                    const float* p = row + size_t(t.index) * 3;
                     acc[0] += t.weight * p[0];
                     acc[1] += t.weight * p[1];
                     acc[2] += t.weight * p[2];
                 }
-                float* q = &res.at(x, y, 0);
-                q[0] = float(acc[0]);
-                q[1] = float(acc[1]);
-                q[2] = float(acc[2]);
+                q[3 * x] = float(acc[0]);
+                q[3 * x + 1] = float(acc[1]);
+                q[3 * x + 2] = float(acc[2]);
             }
+        }
+    });
+    return res;
+}
+
+// Blurs along y (one tap list per output row): whole input rows are scaled
+// and added, which streams through memory and vectorises.
+Image blurColumns(const Image& in, const TapTable& taps) {
+    Image res(in.width(), int(taps.size()), 3, Image::Uninitialized{});
+    const size_t n = size_t(in.width()) * 3;
+    parallelRows(res.height(), [&](int y0, int y1) {
+        std::vector<double> acc(n);
+        for (int y = y0; y < y1; ++y) {
+            std::fill(acc.begin(), acc.end(), 0.0);
+            for (const Tap& t : taps[size_t(y)]) {
+                const float* row = in.row(t.index);
+                for (size_t i = 0; i < n; ++i) acc[i] += t.weight * row[i];
+            }
+            float* q = res.row(y);
+            for (size_t i = 0; i < n; ++i) q[i] = float(acc[i]);
+        }
     });
     return res;
 }
@@ -111,10 +134,13 @@ std::vector<double> PrefilteredColormap::sigmaLevels(PrefilterMode mode) {
 PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode mode)
     : mode_(mode), sigmas_(sigmaLevels(mode)) {
     const Image base = h.table();
+    // Tap tables depend only on (axis, σ level): build each once.
+    std::vector<TapTable> tapsY;
+    for (double sy : sigmas_) tapsY.push_back(blurTaps(base.height(), sy, storedResolution(base.height(), sy)));
     layers_.reserve(sigmas_.size() * sigmas_.size());
     for (double sx : sigmas_) {
-        const Image bx = blurAxis(base, true, sx, storedResolution(base.width(), sx));
-        for (double sy : sigmas_) layers_.emplace_back(blurAxis(bx, false, sy, storedResolution(base.height(), sy)));
+        const Image bx = blurRows(base, blurTaps(base.width(), sx, storedResolution(base.width(), sx)));
+        for (const TapTable& ty : tapsY) layers_.emplace_back(blurColumns(bx, ty));
     }
 }
 
