@@ -46,5 +46,6 @@ void registerGallery(CLI::App& app);
 void registerNoise(CLI::App& app);
 void registerColormap(CLI::App& app);
 void registerPresets(CLI::App& app);
+void registerStability(CLI::App& app);
 
 }  // namespace stochtex::cli

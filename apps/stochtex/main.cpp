@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerNoise(app);
     stochtex::cli::registerColormap(app);
     stochtex::cli::registerPresets(app);
+    stochtex::cli::registerStability(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,53 @@
+#include "stochtex/analysis/zoom_stability.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace stochtex {
+
+double compensatedZoomDifference(const Image& a, double sa, const Image& b, double sb) {
+    if (a.width() != b.width() || a.height() != b.height() || a.channels() != b.channels())
+        throw std::invalid_argument("compensatedZoomDifference: frames differ in size");
+    const double cx = 0.5 * a.width(), cy = 0.5 * a.height(), k = sa / sb;
+    double sum = 0;
+    size_t count = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            // Position of a's pixel centre in b's pixel coordinates.
+            const double bx = cx + (x + 0.5 - cx) * k - 0.5, by = cy + (y + 0.5 - cy) * k - 0.5;
+            if (bx < 0 || by < 0 || bx > b.width() - 1 || by > b.height() - 1) continue;
+            const int x0 = std::min(int(bx), b.width() - 2), y0 = std::min(int(by), b.height() - 2);
+            const double tx = bx - x0, ty = by - y0;
+            for (int c = 0; c < a.channels(); ++c) {
+                const double top = b.at(x0, y0, c) + tx * (b.at(x0 + 1, y0, c) - b.at(x0, y0, c));
+                const double bottom = b.at(x0, y0 + 1, c) + tx * (b.at(x0 + 1, y0 + 1, c) - b.at(x0, y0 + 1, c));
+                sum += std::abs(a.at(x, y, c) - (top + ty * (bottom - top)));
+            }
+            ++count;
+        }
+    return count ? sum / double(count * size_t(a.channels())) : 0.0;
+}
+
+ZoomStability measureZoomStability(const std::function<Image(double)>& render, int frames, double from, double to,
+                                   const std::function<void(int)>& progress) {
+    if (frames < 2) throw std::invalid_argument("measureZoomStability: need at least 2 frames");
+    ZoomStability r;
+    Image previous;
+    for (int k = 0; k < frames; ++k) {
+        const double s = from * std::pow(to / from, double(k) / double(frames - 1));
+        Image frame = render(s);
+        if (k > 0) r.differences.push_back(compensatedZoomDifference(previous, r.scales.back(), frame, s));
+        r.scales.push_back(s);
+        previous = std::move(frame);
+        if (progress) progress(k);
+    }
+    for (double d : r.differences) {
+        r.mean += d;
+        r.max = std::max(r.max, d);
+    }
+    r.mean /= double(r.differences.size());
+    return r;
+}
+
+}  // namespace stochtex
