@@ -24,6 +24,7 @@ void registerRender(CLI::App& app) {
         int referenceSamples = 64;
         int bits = 8;
         int threads = 0;
+        bool pack8 = false;
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("render", "Render a pattern to PNG or EXR, unfiltered, filtered or as the reference");
@@ -40,6 +41,7 @@ void registerRender(CLI::App& app) {
     cmd->add_option("--fov", args->fov, "Plane view: vertical field of view, degrees");
     cmd->add_option("--reference-samples", args->referenceSamples,
                     "Max samples per axis and pixel for --filter reference/exact (n = clamp(2·extent, 8, this))");
+    cmd->add_flag("--pack8", args->pack8, "Store the mean/variance pyramids in 8 bits (paper §5: RGBA8 = E_x, E_y, 16V_x, 16V_y)");
     cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
@@ -48,6 +50,7 @@ void registerRender(CLI::App& app) {
         options.mode = parseFilterMode(args->filter);
         options.aniso = args->aniso;
         options.referenceMaxSamples = args->referenceSamples;
+        options.pack8 = args->pack8;
         if (args->estimator == "paper")
             options.estimator = VarianceEstimator::Paper;
         else if (args->estimator == "deliot-heitz")

@@ -195,3 +195,27 @@ TEST(FootprintEstimator, HighFrequencyAnisotropicNoiseErrorsAreBounded) {
     }
     EXPECT_LT(paperSigma, dhSigma);
 }
+
+// The 8-bit packing (paper §5) changes the estimates by about its
+// quantisation step: means by ≤ 1/510, σ̂ by a few thousandths.
+TEST(FootprintEstimator, EightBitPackingLossIsSmall) {
+    const auto n = noisePair(example(SpectrumShape::LowPass, 8, 0, 0, 31, 256),
+                             example(SpectrumShape::Ring, 20, 3, 0, 32, 256), 3, 4);
+    const FootprintEstimator full(n, false, kDensity), packed(n, false, kDensity, true);
+    double dmu = 0, dsigma = 0, maxMu = 0;
+    const int count = 2000;
+    for (int i = 0; i < count; ++i) {
+        const UInt3 h = pcg3d({uint32_t(i), 5, 6});
+        Jacobian j;
+        j.dudx = j.dvdy = std::exp2(7.0 * unitFloat(h.z)) / 256.0;  // 1 to 128 texels
+        const Footprint f = makeFootprint(unitFloat(h.x) * 4, unitFloat(h.y) * 4, j, 256, full.maxLod(), 1);
+        const FootprintStats a = full.estimate(f), b = packed.estimate(f);
+        dmu += std::abs(a.mean[0] - b.mean[0]);
+        maxMu = std::max(maxMu, double(std::abs(a.mean[0] - b.mean[0])));
+        dsigma += std::abs(a.sigmaX() - b.sigmaX());
+    }
+    EXPECT_LT(maxMu, 1.5 / 255.0);  // rounding of three tiles, weights Σw ≤ √3
+    EXPECT_LT(dmu / count, 1.0 / 510.0);
+    EXPECT_LT(dsigma / count, 0.004);
+    EXPECT_GT(dmu, 0.0);  // the packing is really applied
+}

@@ -7,9 +7,12 @@
 namespace stochtex {
 
 FootprintEstimator::FootprintEstimator(const std::array<TilingBlendingNoise, 2>& noises, bool sharedOffsets,
-                                       double gridDensity)
+                                       double gridDensity, bool pack8)
     : noises_(noises), density_(gridDensity), size_(noises[0].example().size()) {
-    for (size_t a = 0; a < 2; ++a) pyramids_[a] = StatsPyramid(noises_[a].example().values());
+    for (size_t a = 0; a < 2; ++a) {
+        pyramids_[a] = StatsPyramid(noises_[a].example().values());
+        if (pack8) pyramids_[a] = pyramids_[a].quantized8();
+    }
     if (sharedOffsets)
         covariance_ = std::make_unique<StatsPyramid>(
             StatsPyramid::covariance(noises_[0].example().values(), noises_[1].example().values()));

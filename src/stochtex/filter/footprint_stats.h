@@ -39,7 +39,9 @@ public:
     // noises: the two tiled noises (their examples must be power-of-two
     // sized); sharedOffsets: both use the same tiles, so covariances are
     // estimated from the C_l pyramid (otherwise they are 0).
-    FootprintEstimator(const std::array<TilingBlendingNoise, 2>& noises, bool sharedOffsets, double gridDensity);
+    // pack8: store the mean/variance pyramids with the paper's 8-bit packing.
+    FootprintEstimator(const std::array<TilingBlendingNoise, 2>& noises, bool sharedOffsets, double gridDensity,
+                       bool pack8 = false);
 
     int exampleSize() const { return size_; }
     int maxLod() const { return pyramids_[0].levels() - 1; }

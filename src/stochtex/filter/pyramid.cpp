@@ -1,5 +1,7 @@
 #include "stochtex/filter/pyramid.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace stochtex {
@@ -69,6 +71,21 @@ StatsPyramid StatsPyramid::covariance(const Image& e, const Image& eprime) {
     for (size_t i = 0; i < a.size(); ++i) ab[i] = a[i] * b[i];
     StatsPyramid p;
     build(std::move(a), std::move(b), std::move(ab), e.width(), p.mean_, p.moment_, p.averageMoment_);
+    return p;
+}
+
+StatsPyramid StatsPyramid::quantized8() const {
+    auto q = [](const PeriodicGrid& g, float scale) {
+        Image img = g.values();
+        for (float& v : img.data()) v = std::round(std::clamp(v * scale, 0.0f, 1.0f) * 255.0f) / 255.0f / scale;
+        return PeriodicGrid(std::move(img));
+    };
+    StatsPyramid p;
+    for (size_t l = 0; l < mean_.size(); ++l) {
+        p.mean_.push_back(q(mean_[l], 1.0f));
+        p.moment_.push_back(q(moment_[l], 16.0f));
+    }
+    p.averageMoment_ = averageMoment_;
     return p;
 }
 

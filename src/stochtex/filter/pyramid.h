@@ -20,8 +20,8 @@ public:
     StatsPyramid() = default;
     // Means and variances of one example.
     explicit StatsPyramid(const Image& example);
-    // Covariances of a pair of examples of the same size (means of both kept
-    // in meanLevel(k) / partnerMeanLevel(k) are not needed: only C_l).
+    // Covariances C_l of a pair of examples of the same size (mean(l) then
+    // holds the first example's E_l).
     static StatsPyramid covariance(const Image& e, const Image& eprime);
 
     int levels() const { return int(moment_.size()); }  // L + 1
@@ -32,7 +32,13 @@ public:
     // within-texel variance of level l.
     float averageMoment(int level) const { return averageMoment_[size_t(level)]; }
 
-    // Bytes held by all levels (values and padded copies).
+    // The paper's 8-bit storage (§5): means rounded to 1/255, moments stored
+    // ×16 (variances stay below 0.05) and rounded to 1/255, i.e. steps of
+    // 1/4080. Negative moments (covariances) are clamped to 0 by 8-bit unorm,
+    // so only variance pyramids should be packed.
+    StatsPyramid quantized8() const;
+
+    // Bytes held by all levels as floats (values and padded copies).
     size_t bytes() const;
 
 private:

@@ -45,7 +45,8 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
     if (!isPowerOfTwo(pattern.exampleSize()))
         throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
                          std::to_string(pattern.exampleSize()));
-    estimator_ = std::make_unique<FootprintEstimator>(pattern.noises(), pattern.sharedOffsets(), pattern.gridDensity());
+    estimator_ = std::make_unique<FootprintEstimator>(pattern.noises(), pattern.sharedOffsets(), pattern.gridDensity(),
+                                                      options.pack8);
     table_ = std::make_unique<PrefilteredColormap>(
         colormap_, options.mode == FilterMode::Paper ? PrefilterMode::Paper : PrefilterMode::Smooth);
     // Sky: the whole example in one footprint (top MIP level).

@@ -32,6 +32,7 @@ struct FilterOptions {
     int aniso = 1;                                   // K, 1..16
     VarianceEstimator estimator = VarianceEstimator::Paper;
     int referenceMaxSamples = 64;                    // per axis
+    bool pack8 = false;                              // 8-bit pyramids (paper §5)
 };
 
 class FilteredPattern {
