@@ -8,23 +8,13 @@
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/noise/spectrum.h"
+#include "test_util.h"
 
 using namespace stochtex;
 
 namespace {
 
-Image example(SpectrumShape shape, double f, double b, double theta, uint32_t seed, int size) {
-    SpectrumSpec s;
-    s.size = size;
-    s.seed = seed;
-    SpectrumComponent c;
-    c.shape = shape;
-    c.frequency = f;
-    c.bandwidth = b;
-    c.orientation = theta;
-    s.components.push_back(c);
-    return synthesizeExample(s);
-}
+using test::example;
 
 std::array<TilingBlendingNoise, 2> noisePair(const Image& ex, const Image& ey, uint32_t sx, uint32_t sy) {
     return {TilingBlendingNoise(std::make_shared<const NoiseExample>(ex), sx),
@@ -158,42 +148,37 @@ static Errors measure(const std::array<TilingBlendingNoise, 2>& n, int size, boo
 // magnitude (μ̂ up to 0.085 / 0.11, σ̂ up to 0.036 / 0.048). At one texel σ̂
 // is 0 by construction (V_0 = 0) while the bilinear noise still varies a
 // little inside the texel, hence the σ̂ bound there.
-TEST(FootprintEstimator, LowFrequencyIsotropicNoiseErrorsAreBounded) {
-    const auto n = noisePair(example(SpectrumShape::LowPass, 4, 0, 0, 10, 256),
-                             example(SpectrumShape::LowPass, 4, 0, 0, 11, 256), 77, 78);
-    struct Bound {
-        int size;
-        double mu, sigma;
-    };
-    double paperSigma = 0, dhSigma = 0;
-    for (const Bound& b : {Bound{1, 0.001, 0.014}, Bound{4, 0.01, 0.012}, Bound{16, 0.08, 0.045}, Bound{64, 0.06, 0.045}}) {
-        const Errors e = measure(n, b.size, false, 60);
-        EXPECT_LT(e.mu, b.mu) << "footprint " << b.size;
-        EXPECT_LT(e.sigma, b.sigma) << "footprint " << b.size;
-        paperSigma += e.sigma;
-        dhSigma += e.sigmaDh;
-    }
-    EXPECT_LT(paperSigma, dhSigma);  // per-texel variances beat one constant per LOD
-}
+struct Bound {
+    int size;
+    double mu, sigma;
+};
 
-TEST(FootprintEstimator, HighFrequencyAnisotropicNoiseErrorsAreBounded) {
-    const auto n = noisePair(example(SpectrumShape::BiLobe, 32, 2, 30, 12, 256),
-                             example(SpectrumShape::BiLobe, 32, 2, 120, 13, 256), 79, 80);
-    struct Bound {
-        int size;
-        double mu, sigma;
-    };
+// Asserts the bounds for every footprint size and footprint shape, and that
+// per-texel variances (paper) beat one constant per LOD (Deliot–Heitz).
+static void checkBounds(const std::array<TilingBlendingNoise, 2>& n, std::initializer_list<Bound> bounds,
+                        std::initializer_list<bool> shapes, int count) {
     double paperSigma = 0, dhSigma = 0;
-    for (const Bound& b : {Bound{2, 0.035, 0.035}, Bound{8, 0.035, 0.065}, Bound{32, 0.02, 0.06}, Bound{128, 0.003, 0.04}}) {
-        for (bool aniso : {false, true}) {
-            const Errors e = measure(n, b.size, aniso, 40);
+    for (const Bound& b : bounds)
+        for (bool aniso : shapes) {
+            const Errors e = measure(n, b.size, aniso, count);
             EXPECT_LT(e.mu, b.mu) << "footprint " << b.size << (aniso ? " aniso" : "");
             EXPECT_LT(e.sigma, b.sigma) << "footprint " << b.size << (aniso ? " aniso" : "");
             paperSigma += e.sigma;
             dhSigma += e.sigmaDh;
         }
-    }
     EXPECT_LT(paperSigma, dhSigma);
+}
+
+TEST(FootprintEstimator, LowFrequencyIsotropicNoiseErrorsAreBounded) {
+    const auto n = noisePair(example(SpectrumShape::LowPass, 4, 0, 0, 10, 256),
+                             example(SpectrumShape::LowPass, 4, 0, 0, 11, 256), 77, 78);
+    checkBounds(n, {{1, 0.001, 0.014}, {4, 0.01, 0.012}, {16, 0.08, 0.045}, {64, 0.06, 0.045}}, {false}, 60);
+}
+
+TEST(FootprintEstimator, HighFrequencyAnisotropicNoiseErrorsAreBounded) {
+    const auto n = noisePair(example(SpectrumShape::BiLobe, 32, 2, 30, 12, 256),
+                             example(SpectrumShape::BiLobe, 32, 2, 120, 13, 256), 79, 80);
+    checkBounds(n, {{2, 0.035, 0.035}, {8, 0.035, 0.065}, {32, 0.02, 0.06}, {128, 0.003, 0.04}}, {false, true}, 40);
 }
 
 // The 8-bit packing (paper §5) changes the estimates by about its

@@ -5,22 +5,14 @@
 
 #include "stochtex/noise/normal.h"
 #include "stochtex/noise/spectrum.h"
+#include "test_util.h"
 
 using namespace stochtex;
 
 namespace {
 
 SpectrumSpec spec(SpectrumShape shape, double f, double b, double theta, uint32_t seed = 7, int size = 256) {
-    SpectrumSpec s;
-    s.size = size;
-    s.seed = seed;
-    SpectrumComponent c;
-    c.shape = shape;
-    c.frequency = f;
-    c.bandwidth = b;
-    c.orientation = theta;
-    s.components.push_back(c);
-    return s;
+    return test::spectrumSpec(shape, f, b, theta, seed, size);
 }
 
 // Power-weighted mean radius of the spectrum (over all frequencies).

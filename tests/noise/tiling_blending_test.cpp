@@ -6,32 +6,18 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/noise/tiling_blending.h"
+#include "test_util.h"
 
 using namespace stochtex;
 
 namespace {
 
 Image lowpassExample(double cutoff, uint32_t seed, int size = 256) {
-    SpectrumSpec s;
-    s.size = size;
-    s.seed = seed;
-    SpectrumComponent c;
-    c.shape = SpectrumShape::LowPass;
-    c.frequency = cutoff;
-    s.components.push_back(c);
-    return synthesizeExample(s);
+    return test::example(SpectrumShape::LowPass, cutoff, 0, 0, seed, size);
 }
 
 Image bilobeExample(double f, double theta, uint32_t seed) {
-    SpectrumSpec s;
-    s.seed = seed;
-    SpectrumComponent c;
-    c.shape = SpectrumShape::BiLobe;
-    c.frequency = f;
-    c.bandwidth = 2;
-    c.orientation = theta;
-    s.components.push_back(c);
-    return synthesizeExample(s);
+    return test::example(SpectrumShape::BiLobe, f, 2, theta, seed, 256);
 }
 
 // Mean and std of the tiled noise over a large area: 1024² samples at two
