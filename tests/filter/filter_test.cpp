@@ -30,9 +30,9 @@ TEST(StatsPyramid, LevelsAreExactBlockStatistics) {
     const StatsPyramid p(e);
     ASSERT_EQ(p.levels(), 7);  // 64, 32, ..., 1
     const ChannelStats global = channelStats(e);
-    EXPECT_NEAR(p.mean(6).values().at(0, 0), global.mean, 1e-6);
-    EXPECT_NEAR(p.moment(6).values().at(0, 0), global.stddev * global.stddev, 1e-6);
-    EXPECT_EQ(p.moment(0).values().at(5, 9), 0.0f);
+    EXPECT_NEAR(p.meanImage(6).at(0, 0), global.mean, 1e-6);
+    EXPECT_NEAR(p.momentImage(6).at(0, 0), global.stddev * global.stddev, 1e-6);
+    EXPECT_EQ(p.momentImage(0).at(5, 9), 0.0f);
     // Level 3 texel (2, 5) covers level-0 texels [16,24) × [40,48).
     double s = 0, s2 = 0;
     for (int y = 40; y < 48; ++y)
@@ -41,8 +41,8 @@ TEST(StatsPyramid, LevelsAreExactBlockStatistics) {
             s2 += double(e.at(x, y)) * e.at(x, y);
         }
     const double mean = s / 64, var = s2 / 64 - mean * mean;
-    EXPECT_NEAR(p.mean(3).values().at(2, 5), mean, 1e-6);
-    EXPECT_NEAR(p.moment(3).values().at(2, 5), var, 1e-6);
+    EXPECT_NEAR(p.meanImage(3).at(2, 5), mean, 1e-6);
+    EXPECT_NEAR(p.momentImage(3).at(2, 5), var, 1e-6);
     // Within-texel variance grows with the level and ends at the global variance.
     for (int l = 1; l < p.levels(); ++l) EXPECT_GT(p.averageMoment(l), p.averageMoment(l - 1));
 }

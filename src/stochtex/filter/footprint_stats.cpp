@@ -37,27 +37,23 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
         for (size_t a = 0; a < 2; ++a) {
             const TilingBlendingNoise& noise = noises_[a];
             const StatsPyramid& pyr = pyramids_[a];
-            const PeriodicGrid& means = pyr.mean(level);
+            const BasicPeriodicGrid<2>& grid = pyr.level(level);
+            // One lookup per tile reads E_l and V_l together.
+            const auto e = noise.tileValues<2>(noise.tileRows(offs[a], fv, grid), fu, grid);
             // Eq. 8: the same blend as the unfiltered noise, on level l.
-            t.mean[a] = TilingBlendingNoise::mix(s, noise.tileValues(noise.tileRows(offs[a], fv, means), fu, means),
-                                                noise.example().mean());
-            if (mode == VarianceEstimator::DeliotHeitz) {
-                t.var[a] = pyr.averageMoment(level);
-            } else {
-                // Eq. 12: tiles assumed uncorrelated, weights constant over P.
-                const PeriodicGrid& vars = pyr.moment(level);
-                const auto vi = noise.tileValues(noise.tileRows(offs[a], fv, vars), fu, vars);
-                t.var[a] = w2[0] * vi[0] + w2[1] * vi[1] + w2[2] * vi[2];
-            }
+            t.mean[a] = TilingBlendingNoise::mix<2>(s, e, noise.example().mean(), 0);
+            // Eq. 12: tiles assumed uncorrelated, weights constant over P.
+            t.var[a] = mode == VarianceEstimator::DeliotHeitz ? pyr.averageMoment(level)
+                                                              : w2[0] * e[0][1] + w2[1] * e[1][1] + w2[2] * e[2][1];
         }
         t.cov = 0.0f;
         if (covariance_) {
             if (mode == VarianceEstimator::DeliotHeitz) {
                 t.cov = covariance_->averageMoment(level);
             } else {
-                const PeriodicGrid& covs = covariance_->moment(level);
-                const auto ci = noises_[0].tileValues(noises_[0].tileRows(offs[0], fv, covs), fu, covs);
-                t.cov = w2[0] * ci[0] + w2[1] * ci[1] + w2[2] * ci[2];  // eq. 17
+                const BasicPeriodicGrid<2>& grid = covariance_->level(level);
+                const auto c = noises_[0].tileValues<2>(noises_[0].tileRows(offs[0], fv, grid), fu, grid);
+                t.cov = w2[0] * c[0][1] + w2[1] * c[1][1] + w2[2] * c[2][1];  // eq. 17
             }
         }
     }

@@ -35,19 +35,23 @@ static void checkExample(const Image& e) {
         throw std::invalid_argument("StatsPyramid: needs a square power-of-two 1-channel example");
 }
 
-// Builds levels from level-0 first moments a, b and their product ab.
-static void build(std::vector<double> a, std::vector<double> b, std::vector<double> ab, int n,
-                  std::vector<PeriodicGrid>& means, std::vector<PeriodicGrid>& moments, std::vector<float>& avg) {
+void StatsPyramid::addLevel(Image mean, Image moment) {
+    double sum = 0;
+    for (float v : moment.data()) sum += v;
+    averageMoment_.push_back(float(sum / double(moment.data().size())));
+    means_.push_back(std::move(mean));
+    moments_.push_back(std::move(moment));
+    grids_.emplace_back(std::array<const Image*, 2>{&means_.back(), &moments_.back()});
+}
+
+// Builds all levels from level-0 first moments a, b and their product ab:
+// mean a_l and moment ab_l − a_l b_l (V_l or C_l).
+static void build(StatsPyramid& p, std::vector<double> a, std::vector<double> b, std::vector<double> ab, int n,
+                  void (StatsPyramid::*add)(Image, Image)) {
     while (true) {
         std::vector<double> m(a.size());
-        double sum = 0;
-        for (size_t i = 0; i < m.size(); ++i) {
-            m[i] = ab[i] - a[i] * b[i];  // V_l or C_l
-            sum += m[i];
-        }
-        means.emplace_back(toImage(a, n));
-        moments.emplace_back(toImage(m, n));
-        avg.push_back(float(sum / double(m.size())));
+        for (size_t i = 0; i < m.size(); ++i) m[i] = ab[i] - a[i] * b[i];
+        (p.*add)(toImage(a, n), toImage(m, n));
         if (n == 1) break;
         a = halve(a, n);
         b = halve(b, n);
@@ -60,7 +64,9 @@ StatsPyramid::StatsPyramid(const Image& example) {
     checkExample(example);
     std::vector<double> e = toDouble(example), e2(e.size());
     for (size_t i = 0; i < e.size(); ++i) e2[i] = e[i] * e[i];
-    build(e, e, std::move(e2), example.width(), mean_, moment_, averageMoment_);
+    means_.reserve(32);
+    moments_.reserve(32);
+    build(*this, e, e, std::move(e2), example.width(), &StatsPyramid::addLevel);
 }
 
 StatsPyramid StatsPyramid::covariance(const Image& e, const Image& eprime) {
@@ -70,29 +76,29 @@ StatsPyramid StatsPyramid::covariance(const Image& e, const Image& eprime) {
     std::vector<double> a = toDouble(e), b = toDouble(eprime), ab(a.size());
     for (size_t i = 0; i < a.size(); ++i) ab[i] = a[i] * b[i];
     StatsPyramid p;
-    build(std::move(a), std::move(b), std::move(ab), e.width(), p.mean_, p.moment_, p.averageMoment_);
+    p.means_.reserve(32);
+    p.moments_.reserve(32);
+    build(p, std::move(a), std::move(b), std::move(ab), e.width(), &StatsPyramid::addLevel);
     return p;
 }
 
 StatsPyramid StatsPyramid::quantized8() const {
-    auto q = [](const PeriodicGrid& g, float scale) {
-        Image img = g.values();
+    auto q = [](Image img, float scale) {
         for (float& v : img.data()) v = std::round(std::clamp(v * scale, 0.0f, 1.0f) * 255.0f) / 255.0f / scale;
-        return PeriodicGrid(std::move(img));
+        return img;
     };
     StatsPyramid p;
-    for (size_t l = 0; l < mean_.size(); ++l) {
-        p.mean_.push_back(q(mean_[l], 1.0f));
-        p.moment_.push_back(q(moment_[l], 16.0f));
-    }
-    p.averageMoment_ = averageMoment_;
+    p.means_.reserve(32);
+    p.moments_.reserve(32);
+    for (size_t l = 0; l < grids_.size(); ++l) p.addLevel(q(means_[l], 1.0f), q(moments_[l], 16.0f));
+    p.averageMoment_ = averageMoment_;  // the Deliot–Heitz constants stay as computed
     return p;
 }
 
 size_t StatsPyramid::bytes() const {
     size_t total = 0;
-    for (const auto& g : mean_) total += size_t(g.size()) * size_t(g.size()) * 4 + size_t(g.size() + 2) * size_t(g.size() + 2) * 4;
-    return 2 * total;
+    for (const auto& g : grids_) total += g.bytes();
+    return total;
 }
 
 }  // namespace stochtex

@@ -20,17 +20,19 @@ public:
     StatsPyramid() = default;
     // Means and variances of one example.
     explicit StatsPyramid(const Image& example);
-    // Covariances C_l of a pair of examples of the same size (mean(l) then
-    // holds the first example's E_l).
+    // Covariances C_l of a pair of examples of the same size (the mean
+    // channel then holds the first example's E_l).
     static StatsPyramid covariance(const Image& e, const Image& eprime);
 
-    int levels() const { return int(moment_.size()); }  // L + 1
-    const PeriodicGrid& mean(int level) const { return mean_[size_t(level)]; }
-    // Variance (or, for a covariance pyramid, covariance) of level l.
-    const PeriodicGrid& moment(int level) const { return moment_[size_t(level)]; }
-    // Average of moment(l) over the whole example: the Deliot–Heitz constant
-    // within-texel variance of level l.
-    float averageMoment(int level) const { return averageMoment_[size_t(level)]; }
+    int levels() const { return int(grids_.size()); }  // L + 1
+    // Level l as one grid of (mean, moment) pairs: moment = variance V_l, or
+    // covariance C_l for a covariance pyramid. One lookup reads both.
+    const BasicPeriodicGrid<2>& level(int l) const { return grids_[size_t(l)]; }
+    const Image& meanImage(int l) const { return means_[size_t(l)]; }
+    const Image& momentImage(int l) const { return moments_[size_t(l)]; }
+    // Average of the moment over the whole example: the Deliot–Heitz
+    // constant within-texel variance of level l.
+    float averageMoment(int l) const { return averageMoment_[size_t(l)]; }
 
     // The paper's 8-bit storage (§5): means rounded to 1/255, moments stored
     // ×16 (variances stay below 0.05) and rounded to 1/255, i.e. steps of
@@ -38,11 +40,13 @@ public:
     // so only variance pyramids should be packed.
     StatsPyramid quantized8() const;
 
-    // Bytes held by all levels as floats (values and padded copies).
+    // Bytes held by the lookup grids (floats, padded).
     size_t bytes() const;
 
 private:
-    std::vector<PeriodicGrid> mean_, moment_;
+    void addLevel(Image mean, Image moment);
+    std::vector<Image> means_, moments_;
+    std::vector<BasicPeriodicGrid<2>> grids_;
     std::vector<float> averageMoment_;
 };
 

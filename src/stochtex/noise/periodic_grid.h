@@ -1,7 +1,9 @@
 #pragma once
-// A periodic W×W grid of values (period 1 in uv) with branch-free bilinear
-// lookups. Noise examples and every level of their MIP pyramids are
-// PeriodicGrids, so all of them are read by the same code.
+// Periodic W×W grids of C interleaved channels (period 1 in uv) with
+// branch-free bilinear lookups. Noise examples (C = 1) and the levels of
+// their statistics pyramids (C = 2: mean and variance side by side, as the
+// paper packs them into one texture) are all read by this one piece of code.
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -9,54 +11,88 @@
 
 namespace stochtex {
 
-class PeriodicGrid {
+// The two padded rows a bilinear lookup at v reads, and the weight between
+// them. Along a scanline v is fixed per tile, so this is computed once per
+// tile rather than once per pixel.
+struct GridRows {
+    const float* row0;  // start of the padded row above (texel −1)
+    const float* row1;
+    float ty;
+};
+
+template <int C>
+class BasicPeriodicGrid {
 public:
-    PeriodicGrid() = default;
-    explicit PeriodicGrid(Image values);  // 1-channel, square, W ≥ 1
+    BasicPeriodicGrid() = default;
+    // channels: C square 1-channel images of the same size W ≥ 1.
+    explicit BasicPeriodicGrid(const std::array<const Image*, C>& channels) {
+        size_ = channels[0]->width();
+        sizeF_ = float(size_);
+        const int n = size_, stride = n + 2;
+        padded_.resize(size_t(stride) * size_t(stride) * C);
+        for (int y = -1; y <= n; ++y)
+            for (int x = -1; x <= n; ++x)
+                for (int c = 0; c < C; ++c)
+                    padded_[(size_t(y + 1) * size_t(stride) + size_t(x + 1)) * C + size_t(c)] =
+                        channels[size_t(c)]->at((x + n) % n, (y + n) % n);
+    }
 
     int size() const { return size_; }
     float sizeF() const { return sizeF_; }
-    const Image& values() const { return values_; }
+    size_t bytes() const { return padded_.size() * sizeof(float); }
 
-    // The two padded rows a bilinear lookup at v reads, and the weight
-    // between them. Along a scanline v is fixed per tile, so this is
-    // computed once per tile rather than once per pixel.
-    struct RowPair {
-        const float* row0;  // start of the padded row above (index 0 = texel −1)
-        const float* row1;
-        float ty;
-    };
-    RowPair rows(float v) const {
+    GridRows rows(float v) const {
         // fy ∈ [−½, W−½]: truncating fy + 1 > 0 is a floor without a libm
         // call, and y0 ∈ [−1, W−1] indexes the padded copy directly.
         const float fy = v * sizeF_ - 0.5f;
         const int y0 = int(fy + 1.0f) - 1;
-        const size_t stride = size_t(size_) + 2;
+        const size_t stride = (size_t(size_) + 2) * C;
         const float* r0 = padded_.data() + size_t(y0 + 1) * stride;
         return {r0, r0 + stride, fy - float(y0)};
     }
 
-    // Bilinear sample between the rows of a RowPair at t = u·W + ½ ∈ [½, W + ½]
-    // (texel units, shifted so that int(t) is the padded index of the left texel).
-    float sampleTexel(const RowPair& r, float t) const {
+    // Bilinear sample of every channel between the rows r at
+    // t = u·W + ½ ∈ [½, W + ½] (texel units, shifted so that int(t) is the
+    // padded index of the left texel).
+    std::array<float, C> sampleTexels(const GridRows& r, float t) const {
         const int i = int(t);
         const float tx = t - float(i);
-        const float a = r.row0[i] + tx * (r.row0[i + 1] - r.row0[i]);
-        const float b = r.row1[i] + tx * (r.row1[i + 1] - r.row1[i]);
-        return a + r.ty * (b - a);
+        const float* a = r.row0 + size_t(i) * C;
+        const float* b = r.row1 + size_t(i) * C;
+        std::array<float, C> out;
+        for (int c = 0; c < C; ++c) {
+            const float top = a[c] + tx * (a[c + C] - a[c]);
+            const float bottom = b[c] + tx * (b[c + C] - b[c]);
+            out[size_t(c)] = top + r.ty * (bottom - top);
+        }
+        return out;
     }
 
     // Bilinear sample at (u, v) ∈ [0,1]² (one period), wrapping at the
     // edges. Texel centres sit at ((i + ½)/W, (j + ½)/W).
-    float sampleBilinear(float u, float v) const { return sampleTexel(rows(v), u * sizeF_ + 0.5f); }
+    std::array<float, C> sample(float u, float v) const { return sampleTexels(rows(v), u * sizeF_ + 0.5f); }
 
 private:
-    Image values_;
-    // values_ with a one-texel periodic border on every side, (W+2)², so
-    // bilinear lookups never branch to wrap.
+    // The channels interleaved, with a one-texel periodic border on every
+    // side, (W+2)²·C, so bilinear lookups never branch to wrap.
     std::vector<float> padded_;
     int size_ = 0;
     float sizeF_ = 0.0f;
+};
+
+// The one-channel grid, which also keeps its values as an image.
+class PeriodicGrid : public BasicPeriodicGrid<1> {
+public:
+    using RowPair = GridRows;
+    PeriodicGrid() = default;
+    explicit PeriodicGrid(Image values);  // 1-channel, square, W ≥ 1
+
+    const Image& values() const { return values_; }
+    float sampleTexel(const GridRows& r, float t) const { return sampleTexels(r, t)[0]; }
+    float sampleBilinear(float u, float v) const { return sample(u, v)[0]; }
+
+private:
+    Image values_;
 };
 
 }  // namespace stochtex

@@ -110,17 +110,15 @@ public:
     // constant). g is the example itself or any level of its pyramids.
     struct TileRows {
         std::array<float, 3> offsetTexels;
-        std::array<PeriodicGrid::RowPair, 3> rows;
+        std::array<GridRows, 3> rows;
     };
     using Offsets = std::array<TileOffset, 3>;
     Offsets offsets(const BlendStencil& s) const {
         return {tileOffset(s.vx(0), s.vy(0), seed_), tileOffset(s.vx(1), s.vy(1), seed_),
                 tileOffset(s.vx(2), s.vy(2), seed_)};
     }
-    TileRows tileRows(const BlendStencil& s, float fv, const PeriodicGrid& g) const {
-        return tileRows(offsets(s), fv, g);
-    }
-    TileRows tileRows(const Offsets& offs, float fv, const PeriodicGrid& g) const {
+    template <class Grid>
+    TileRows tileRows(const Offsets& offs, float fv, const Grid& g) const {
         TileRows t;
         for (size_t i = 0; i < 3; ++i) {
             const TileOffset o = offs[i];
@@ -131,32 +129,36 @@ public:
         }
         return t;
     }
-    TileRows tileRows(const BlendStencil& s, float fv) const { return tileRows(s, fv, example_->grid()); }
+    TileRows tileRows(const BlendStencil& s, float fv) const { return tileRows(offsets(s), fv, example_->grid()); }
 
-    // The three tiles' values of grid g at u (fu = u reduced to one period).
-    std::array<float, 3> tileValues(const TileRows& t, float fu, const PeriodicGrid& g) const {
+    // The three tiles' values (every channel) of grid g at u (fu = u reduced
+    // to one period).
+    template <int C>
+    std::array<std::array<float, C>, 3> tileValues(const TileRows& t, float fu, const BasicPeriodicGrid<C>& g) const {
         const float size = g.sizeF();
-        const float tu = fu * size + 0.5f;  // texel units, as sampleTexel wants
-        std::array<float, 3> out;
+        const float tu = fu * size + 0.5f;  // texel units, as sampleTexels wants
+        std::array<std::array<float, C>, 3> out;
         for (size_t i = 0; i < 3; ++i) {
             float su = tu + t.offsetTexels[i];
             su -= su >= size + 0.5f ? size : 0.0f;  // wrap into one period (branch-free)
-            out[i] = g.sampleTexel(t.rows[i], su);
+            out[i] = g.sampleTexels(t.rows[i], su);
         }
         return out;
     }
 
-    // Eq. 7 (and eq. 8 on a MIP level): μ + Σ w_i (e_i − μ).
-    static float mix(const BlendStencil& s, const std::array<float, 3>& e, float mean) {
+    // Eq. 7 (and eq. 8 on a MIP level): μ + Σ w_i (e_i − μ), e_i = channel c
+    // of the tiles' values.
+    template <int C>
+    static float mix(const BlendStencil& s, const std::array<std::array<float, C>, 3>& e, float mean, int c = 0) {
         float n = mean;
-        for (size_t i = 0; i < 3; ++i) n += s.w[i] * (e[i] - mean);
+        for (size_t i = 0; i < 3; ++i) n += s.w[i] * (e[i][size_t(c)] - mean);
         return n;
     }
 
     // N(u) in the example's blending space (before T⁻¹), with the tiles of
     // the stencil s; fu is u reduced to one period.
     float blend(const BlendStencil& s, const TileRows& t, float fu) const {
-        return mix(s, tileValues(t, fu, example_->grid()), example_->mean());
+        return mix<1>(s, tileValues<1>(t, fu, example_->grid()), example_->mean());
     }
     float blend(const BlendStencil& s, float fu, float fv) const { return blend(s, tileRows(s, fv), fu); }
 
