@@ -65,7 +65,7 @@ private:
     // loads and vector arithmetic (a GCC/Clang vector extension).
     typedef float Texel __attribute__((vector_size(16)));
     int width_ = 0, height_ = 0;
-    std::vector<Texel> rgba_;
+    std::vector<Texel, DefaultInitAllocator<Texel>> rgba_;  // filled by the constructor
     float lastX_ = 1.0f, lastY_ = 1.0f;  // Rx − 1, Ry − 1
 };
 
