@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "stochtex/core/error.h"
+#include "stochtex/core/parallel.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/presets.h"
 
@@ -152,4 +153,23 @@ TEST(FilteredPattern, BadInputIsRejected) {
     c.kind = Camera::Kind::Plane;
     c.tiltDeg = 95;
     EXPECT_THROW(f.render(c), InputError);
+}
+
+TEST(FilteredPattern, IdenticalForAnyThreadCountAndEstimatorInstance) {
+    const Pattern p = Pattern::build(loadPreset("woven"));
+    Camera cam = zoom(64, 3.0);
+    cam.kind = Camera::Kind::Plane;
+    cam.tiltDeg = 65;
+    Image one, all;
+    {
+        ThreadLimit limit(1);
+        one = FilteredPattern(p, options(FilterMode::Smooth, 4)).render(cam);
+    }
+    // A second estimator (possibly at the same address) must not reuse the
+    // first one's cached tiles.
+    all = FilteredPattern(p, options(FilterMode::Smooth, 4)).render(cam);
+    EXPECT_EQ(one.data(), all.data());
+    const Pattern other = Pattern::build(loadPreset("marble"));
+    const Image m1 = FilteredPattern(other, options(FilterMode::Smooth, 4)).render(cam);
+    EXPECT_NE(m1.data(), all.data());
 }

@@ -22,15 +22,15 @@ struct Jacobian {
 };
 
 struct Probe {
-    double u = 0, v = 0;
-    float lod = 0;     // λ, clamped to [0, maxLod]
-    float weight = 1;  // Σ weights = 1
+    double u, v;
+    float lod;     // λ, clamped to [0, maxLod]
+    float weight;  // Σ weights = 1
 };
 
 constexpr int kMaxAnisotropy = 16;
 
 struct Footprint {
-    std::array<Probe, kMaxAnisotropy> probes{};
+    std::array<Probe, kMaxAnisotropy> probes;  // only the first `count` are set
     int count = 0;
 };
 

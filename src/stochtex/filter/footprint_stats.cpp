@@ -1,14 +1,17 @@
 #include "stochtex/filter/footprint_stats.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
 namespace stochtex {
 
+static std::atomic<uint64_t> nextEstimatorId{1};
+
 FootprintEstimator::FootprintEstimator(const std::array<TilingBlendingNoise, 2>& noises, bool sharedOffsets,
                                        double gridDensity, bool pack8)
-    : noises_(noises), density_(gridDensity), size_(noises[0].example().size()) {
+    : noises_(noises), density_(gridDensity), size_(noises[0].example().size()), id_(nextEstimatorId++) {
     for (size_t a = 0; a < 2; ++a) {
         pyramids_[a] = StatsPyramid(noises_[a].example().values());
         if (pack8) pyramids_[a] = pyramids_[a].quantized8();
@@ -30,16 +33,41 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
     const float fu = periodFraction(u), fv = periodFraction(v);
     std::array<float, 3> w2{};
     for (size_t i = 0; i < 3; ++i) w2[i] = s.w[i] * s.w[i];
-    const std::array<TilingBlendingNoise::Offsets, 2> offs = {noises_[0].offsets(s), noises_[1].offsets(s)};
+    // Neighbouring pixels mostly see the same tiles on the same scanline:
+    // each thread remembers, per trilinear slot, the last tiles' rows (their
+    // offsets hashed, their rows located) and reuses them when nothing they
+    // depend on changed. Pure memoisation: results are identical.
+    struct Slot {
+        uint64_t owner = 0;  // FootprintEstimator::id_ (addresses can be reused)
+        uint32_t cellX = 0, cellY = 0;
+        bool upper = false;
+        int level = -1;
+        float fv = -1.0f;
+        std::array<TilingBlendingNoise::TileRows, 3> rows;  // noise x, noise y, covariance
+    };
+    thread_local std::array<Slot, 2> cache;
     for (int k = 0; k < count; ++k) {
         const int level = levels[k];
         TexelStats& t = out[k];
+        Slot& slot = cache[size_t(std::min(k, 1))];
+        if (slot.owner != id_ || slot.level != level || slot.fv != fv || slot.cellX != s.cellX ||
+            slot.cellY != s.cellY || slot.upper != s.upper) {
+            for (size_t a = 0; a < 2; ++a)
+                slot.rows[a] = noises_[a].tileRows(noises_[a].offsets(s), fv, pyramids_[a].level(level));
+            if (covariance_) slot.rows[2] = noises_[0].tileRows(noises_[0].offsets(s), fv, covariance_->level(level));
+            slot.owner = id_;
+            slot.cellX = s.cellX;
+            slot.cellY = s.cellY;
+            slot.upper = s.upper;
+            slot.level = level;
+            slot.fv = fv;
+        }
         for (size_t a = 0; a < 2; ++a) {
             const TilingBlendingNoise& noise = noises_[a];
             const StatsPyramid& pyr = pyramids_[a];
             const BasicPeriodicGrid<2>& grid = pyr.level(level);
             // One lookup per tile reads E_l and V_l together.
-            const auto e = noise.tileValues<2>(noise.tileRows(offs[a], fv, grid), fu, grid);
+            const auto e = noise.tileValues<2>(slot.rows[a], fu, grid);
             // Eq. 8: the same blend as the unfiltered noise, on level l.
             t.mean[a] = TilingBlendingNoise::mix<2>(s, e, noise.example().mean(), 0);
             // Eq. 12: tiles assumed uncorrelated, weights constant over P.
@@ -52,7 +80,7 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
                 t.cov = covariance_->averageMoment(level);
             } else {
                 const BasicPeriodicGrid<2>& grid = covariance_->level(level);
-                const auto c = noises_[0].tileValues<2>(noises_[0].tileRows(offs[0], fv, grid), fu, grid);
+                const auto c = noises_[0].tileValues<2>(slot.rows[2], fu, grid);
                 t.cov = w2[0] * c[0][1] + w2[1] * c[1][1] + w2[2] * c[2][1];  // eq. 17
             }
         }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 
 #include "stochtex/filter/footprint.h"
@@ -66,6 +67,7 @@ private:
     std::unique_ptr<StatsPyramid> covariance_;
     double density_;
     int size_;
+    uint64_t id_;  // identifies this estimator's entries in the per-thread tile cache
 };
 
 }  // namespace stochtex

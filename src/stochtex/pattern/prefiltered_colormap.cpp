@@ -152,9 +152,11 @@ float PrefilteredColormap::levelCoordinate(float sigma) const {
     const float top = float(sigmas_.size() - 1);
     const float s256 = std::max(sigma, 0.0f) * 256.0f;
     if (mode_ == PrefilterMode::Paper) {
-        // Nearest level in log2 σ; below 1/256 the finest level.
-        if (s256 <= 1.0f) return 0.0f;
-        return std::min(std::round(std::log2(s256)), top);
+        // Nearest level in log2 σ (round(log2 x) = k ⇔ x < 2^(k+½)); below
+        // 1/256 the finest level. Comparisons instead of a log per lookup.
+        float k = 0.0f;
+        for (float edge = 1.41421356f; k < top && s256 >= edge; edge *= 2.0f) k += 1.0f;
+        return k;
     }
     // Level 0 is σ = 0, level k ≥ 1 is 2^(k−1)/256.
     const float c = s256 <= 1.0f ? s256 : 1.0f + std::log2(s256);
