@@ -51,12 +51,12 @@ TEST(Colormap, PaintedShapesPutTheRightColourAtKnownPoints) {
     PaintedShape half;
     half.kind = PaintedShape::Kind::HalfPlane;
     half.a = {0.5, 0.5};
-    half.angle = 90;  // boundary pointing up: its left side is x < 0.5
+    half.setAngle(90);  // boundary pointing up: its left side is x < 0.5
     add(half, {1, 0, 0});
     PaintedShape band;
     band.kind = PaintedShape::Kind::Band;
     band.a = {0.5, 0.2};
-    band.angle = 0;
+    band.setAngle(0);
     band.width = 0.1;
     add(band, {0, 1, 0});
     PaintedShape ring;

@@ -85,19 +85,27 @@ ColormapTable makePhasorColormap(PhasorProfile profile, double duty, int resolut
     });
 }
 
+void PaintedShape::setAngle(double degrees) {
+    const double t = degrees * std::numbers::pi / 180.0;
+    sinAngle = std::sin(t);
+    cosAngle = std::cos(t);
+}
+
 bool PaintedShape::contains(double x, double y) const {
     switch (kind) {
         case Kind::Rectangle: return x >= a[0] && x <= b[0] && y >= a[1] && y <= b[1];
-        case Kind::Disc: return std::hypot(x - a[0], y - a[1]) <= radius;
+        case Kind::Disc: {
+            const double dx = x - a[0], dy = y - a[1];
+            return dx * dx + dy * dy <= radius * radius;
+        }
         case Kind::Ring: {
-            const double r = std::hypot(x - a[0], y - a[1]);
-            return r >= innerRadius && r <= radius;
+            const double dx = x - a[0], dy = y - a[1], r2 = dx * dx + dy * dy;
+            return r2 >= innerRadius * innerRadius && r2 <= radius * radius;
         }
         case Kind::HalfPlane:
         case Kind::Band: {
-            const double t = angle * std::numbers::pi / 180.0;
             // Signed distance to the boundary line, positive on its left.
-            const double d = -(x - a[0]) * std::sin(t) + (y - a[1]) * std::cos(t);
+            const double d = -(x - a[0]) * sinAngle + (y - a[1]) * cosAngle;
             return kind == Kind::HalfPlane ? d >= 0.0 : std::abs(d) <= 0.5 * width;
         }
         case Kind::Polygon: {

@@ -89,7 +89,10 @@ struct PaintedShape {
     std::array<double, 2> b{0, 0};  // rectangle max
     double radius = 0;              // disc radius; ring outer radius
     double innerRadius = 0;         // ring inner radius
-    double angle = 0;               // half-plane/band boundary direction (painted side: its left)
+    // Half-plane/band boundary direction, degrees (painted side: its left),
+    // kept as its sine and cosine: set it with setAngle.
+    double sinAngle = 0, cosAngle = 1;
+    void setAngle(double degrees);
     double width = 0;               // band width
     std::vector<std::array<double, 2>> points;  // polygon vertices (even-odd rule)
 

@@ -95,7 +95,7 @@ PaintedShape parseShape(const JsonReader& r) {
             r.expectObject({"shape", "color", "point", "angle", "width"});
         s.kind = kind == "halfplane" ? PaintedShape::Kind::HalfPlane : PaintedShape::Kind::Band;
         s.a = parsePoint(r.at("point"));
-        s.angle = r.number("angle", 0.0, -360, 360);
+        s.setAngle(r.number("angle", 0.0, -360, 360));
         if (kind == "band") s.width = r.at("width").number(0, 10);
     } else {
         r.expectObject({"shape", "color", "points"});
