@@ -66,9 +66,7 @@ void registerRender(CLI::App& app) {
         camera.fovDeg = args->fov;
         const PatternSpec spec = loadPatternSource(args->source);
         camera.view = makeView(spec, args->view);
-        validateCamera(camera);
-        if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
-            throw InputError("--aniso must be in [1, 16] (got " + std::to_string(options.aniso) + ")");
+        validateCamera(camera);  // before building anything; FilteredPattern checks the options
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
         const Pattern pattern = Pattern::build(spec);

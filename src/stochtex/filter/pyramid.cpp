@@ -46,12 +46,11 @@ void StatsPyramid::addLevel(Image mean, Image moment) {
 
 // Builds all levels from level-0 first moments a, b and their product ab:
 // mean a_l and moment ab_l − a_l b_l (V_l or C_l).
-static void build(StatsPyramid& p, std::vector<double> a, std::vector<double> b, std::vector<double> ab, int n,
-                  void (StatsPyramid::*add)(Image, Image)) {
+void StatsPyramid::buildLevels(std::vector<double> a, std::vector<double> b, std::vector<double> ab, int n) {
     while (true) {
         std::vector<double> m(a.size());
         for (size_t i = 0; i < m.size(); ++i) m[i] = ab[i] - a[i] * b[i];
-        (p.*add)(toImage(a, n), toImage(m, n));
+        addLevel(toImage(a, n), toImage(m, n));
         if (n == 1) break;
         a = halve(a, n);
         b = halve(b, n);
@@ -64,9 +63,7 @@ StatsPyramid::StatsPyramid(const Image& example) {
     checkExample(example);
     std::vector<double> e = toDouble(example), e2(e.size());
     for (size_t i = 0; i < e.size(); ++i) e2[i] = e[i] * e[i];
-    means_.reserve(32);
-    moments_.reserve(32);
-    build(*this, e, e, std::move(e2), example.width(), &StatsPyramid::addLevel);
+    buildLevels(e, e, std::move(e2), example.width());
 }
 
 StatsPyramid StatsPyramid::covariance(const Image& e, const Image& eprime) {
@@ -76,9 +73,7 @@ StatsPyramid StatsPyramid::covariance(const Image& e, const Image& eprime) {
     std::vector<double> a = toDouble(e), b = toDouble(eprime), ab(a.size());
     for (size_t i = 0; i < a.size(); ++i) ab[i] = a[i] * b[i];
     StatsPyramid p;
-    p.means_.reserve(32);
-    p.moments_.reserve(32);
-    build(p, std::move(a), std::move(b), std::move(ab), e.width(), &StatsPyramid::addLevel);
+    p.buildLevels(std::move(a), std::move(b), std::move(ab), e.width());
     return p;
 }
 
@@ -88,8 +83,6 @@ StatsPyramid StatsPyramid::quantized8() const {
         return img;
     };
     StatsPyramid p;
-    p.means_.reserve(32);
-    p.moments_.reserve(32);
     for (size_t l = 0; l < grids_.size(); ++l) p.addLevel(q(means_[l], 1.0f), q(moments_[l], 16.0f));
     p.averageMoment_ = averageMoment_;  // the Deliot–Heitz constants stay as computed
     return p;

@@ -45,6 +45,7 @@ public:
 
 private:
     void addLevel(Image mean, Image moment);
+    void buildLevels(std::vector<double> a, std::vector<double> b, std::vector<double> ab, int n);
     std::vector<Image> means_, moments_;
     std::vector<BasicPeriodicGrid<2>> grids_;
     std::vector<float> averageMoment_;

@@ -12,8 +12,6 @@ namespace stochtex {
 
 class NoiseExample {
 public:
-    using RowPair = PeriodicGrid::RowPair;
-
     NoiseExample() = default;
     // values: 1-channel square image. inverse: T⁻¹ when values = T(exemplar).
     explicit NoiseExample(Image values, std::optional<HistogramTransform> inverse = std::nullopt);
@@ -26,8 +24,6 @@ public:
     bool gaussianized() const { return inverse_.has_value(); }
     const std::optional<HistogramTransform>& transform() const { return inverse_; }
 
-    RowPair rows(float v) const { return grid_.rows(v); }
-    float sampleTexel(const RowPair& r, float t) const { return grid_.sampleTexel(r, t); }
     float sampleBilinear(float u, float v) const { return grid_.sampleBilinear(u, v); }
 
     // Maps a blended value to the output space (T⁻¹ or identity).

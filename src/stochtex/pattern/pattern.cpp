@@ -32,14 +32,6 @@ Pattern::Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> o
     }
 }
 
-View Pattern::defaultView(const PatternSpec& spec) const {
-    View v;
-    v.width = spec.width;
-    v.height = spec.height;
-    v.scale = spec.scale;
-    return v;
-}
-
 std::array<float, 2> Pattern::field(double u, double v) const {
     const BlendStencil s = triangleGrid(u, v, density_);
     const float fu = periodFraction(u), fv = periodFraction(v);

@@ -43,7 +43,6 @@ public:
     const std::array<TilingBlendingNoise, 2>& noises() const { return noises_; }
     bool sharedOffsets() const { return noises_[0].offsetSeed() == noises_[1].offsetSeed(); }
     double gridDensity() const { return density_; }
-    View defaultView(const PatternSpec& spec) const;
 
 private:
     struct PixelTiles {
