@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
@@ -61,6 +62,23 @@ TEST(PrefilteredColormap, SmoothModeInterpolatesBetweenLevelsAndPaperSnaps) {
     EXPECT_EQ(paper.sample(0.45f, 0.52f, 0.0125f, 0.02f), paper.sample(0.45f, 0.52f, 0.015f, 0.02f));
     EXPECT_EQ(paper.sigmas().size(), 6u);
     EXPECT_EQ(smooth.sigmas().front(), 0.0);
+    // Paper level = round(log2(256σ)) clamped to 0..5: check either side of
+    // every boundary 2^(k+½)/256, and far outside the range.
+    auto level = [&](float sigma) {
+        const Rgb got = paper.sample(0.3f, 0.7f, sigma, 0.0f);
+        for (int k = 0; k < 6; ++k)
+            if (got == paper.layer(k, 0).sample(0.3f, 0.7f)) return k;
+        return -1;
+    };
+    EXPECT_EQ(level(0.0f), 0);
+    EXPECT_EQ(level(1e-30f), 0);
+    for (int k = 0; k < 5; ++k) {
+        const float edge = std::exp2(float(k) + 0.5f) / 256.0f;
+        EXPECT_EQ(level(edge * 0.99f), k) << "just below the edge above level " << k;
+        EXPECT_EQ(level(edge * 1.01f), k + 1) << "just above the edge above level " << k;
+    }
+    EXPECT_EQ(level(10.0f), 5);
+    EXPECT_EQ(level(std::numeric_limits<float>::infinity()), 5);
 }
 
 TEST(FilteredPattern, LinearColormapReturnsTheEstimatedMean) {

@@ -13,6 +13,7 @@
 // split between levels ⌊λ⌋ and ⌊λ⌋ + 1 (trilinear), so a footprint is a
 // weighted union of texel footprints, as in paper eq. 9 and 15.
 #include <array>
+#include <cstddef>
 
 namespace stochtex {
 
@@ -32,6 +33,19 @@ constexpr int kMaxAnisotropy = 16;
 struct Footprint {
     std::array<Probe, kMaxAnisotropy> probes;  // only the first `count` are set
     int count = 0;
+
+    // The same footprint centred elsewhere. Probes depend on the centre only
+    // through a translation, so where J is constant (a zoom) the footprint is
+    // built once and moved to every pixel.
+    Footprint translated(double du, double dv) const {
+        Footprint f;  // probes past `count` stay unset: copying all 16 would dominate
+        f.count = count;
+        for (int k = 0; k < count; ++k) {
+            const Probe& p = probes[std::size_t(k)];
+            f.probes[std::size_t(k)] = Probe{p.u + du, p.v + dv, p.lod, p.weight};
+        }
+        return f;
+    }
 };
 
 // maxAniso in [1, 16]; exampleSize = W; maxLod = log2 W.

@@ -88,10 +88,22 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
 }
 
 FootprintStats FootprintEstimator::estimate(const Footprint& f, VarianceEstimator mode) const {
+    const int top = maxLod();
+    if (f.count == 1 && (f.probes[0].lod == float(int(f.probes[0].lod)) || f.probes[0].lod >= float(top))) {
+        // One texel footprint at one level (isotropic, integral λ — e.g. any
+        // magnified pixel): eq. 14–15 reduce to the texel's own statistics.
+        const Probe& p = f.probes[0];
+        const TexelStats t = texel(p.u, p.v, std::min(int(p.lod), top), mode);
+        FootprintStats out;
+        out.mean = t.mean;
+        out.varX = std::max(t.var[0], 0.0f);
+        out.varY = std::max(t.var[1], 0.0f);
+        out.cov = t.cov;
+        return out;
+    }
     // Accumulate Σ w_P N̂, Σ w_P (N̂² + σ̂²), Σ w_P (N̂ N̂' + ĉov) in double:
     // the final subtraction m2 − μ² cancels heavily for small footprints.
     double m[2] = {0, 0}, m2[2] = {0, 0}, mxy = 0;
-    const int top = maxLod();
     for (int k = 0; k < f.count; ++k) {
         const Probe& p = f.probes[size_t(k)];
         // Trilinear: the probe is split between levels ⌊λ⌋ and ⌊λ⌋ + 1.

@@ -5,6 +5,8 @@
 // paper packs them into one texture) are all read by this one piece of code.
 #include <array>
 #include <cstddef>
+#include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include "stochtex/image/image.h"
@@ -19,6 +21,10 @@ struct GridRows {
     const float* row1;
     float ty;
 };
+
+// GCC/Clang vector extensions: SSE on x86-64, NEON on ARM, scalar elsewhere.
+typedef float Float2 __attribute__((vector_size(8)));
+typedef float Float4 __attribute__((vector_size(16)));
 
 template <int C>
 class BasicPeriodicGrid {
@@ -54,17 +60,23 @@ public:
     // Bilinear sample of every channel between the rows r at
     // t = u·W + ½ ∈ [½, W + ½] (texel units, shifted so that int(t) is the
     // padded index of the left texel).
+    //
+    // The left and right texels of a row are adjacent in memory (2·C
+    // floats), so each row is one vector load: interpolate the two rows
+    // vertically as whole vectors, then the left and right halves
+    // horizontally. Every grid (examples, pyramid levels) shares this exact
+    // order of operations, so a level-0 mean lookup equals the example's.
     std::array<float, C> sampleTexels(const GridRows& r, float t) const {
+        static_assert(C == 1 || C == 2, "texel pairs are loaded as one 8- or 16-byte vector");
+        using Pair = std::conditional_t<C == 1, Float2, Float4>;
         const int i = int(t);
         const float tx = t - float(i);
-        const float* a = r.row0 + size_t(i) * C;
-        const float* b = r.row1 + size_t(i) * C;
+        Pair a, b;
+        std::memcpy(&a, r.row0 + size_t(i) * C, sizeof(Pair));
+        std::memcpy(&b, r.row1 + size_t(i) * C, sizeof(Pair));
+        const Pair col = a + r.ty * (b - a);  // [left channels…, right channels…]
         std::array<float, C> out;
-        for (int c = 0; c < C; ++c) {
-            const float top = a[c] + tx * (a[c + C] - a[c]);
-            const float bottom = b[c] + tx * (b[c + C] - b[c]);
-            out[size_t(c)] = top + r.ty * (bottom - top);
-        }
+        for (int c = 0; c < C; ++c) out[size_t(c)] = col[c] + tx * (col[c + C] - col[c]);
         return out;
     }
 

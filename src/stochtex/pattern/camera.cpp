@@ -29,14 +29,8 @@ bool planePoint(const Camera& c, double x, double y, double& tu, double& tv) {
 
 }  // namespace
 
-bool Camera::footprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const {
+bool Camera::planeFootprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const {
     const double invW = 1.0 / exampleSize;
-    if (kind == Kind::Zoom) {
-        u = (view.offsetU + (px + 0.5) * view.scale) * invW;
-        v = (view.offsetV + (py + 0.5) * view.scale) * invW;
-        j = Jacobian{view.scale * invW, 0.0, 0.0, view.scale * invW};
-        return true;
-    }
     double cu, cv, xu0, xv0, xu1, xv1, yu0, yv0, yu1, yv1;
     const double x = px + 0.5, y = py + 0.5;
     if (!planePoint(*this, x, y, cu, cv) || !planePoint(*this, x - 0.5, y, xu0, xv0) ||

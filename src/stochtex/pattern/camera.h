@@ -24,7 +24,17 @@ struct Camera {
     double fovDeg = 60;    // plane only
 
     // Returns false for a sky pixel. exampleSize = W of the pattern.
-    bool footprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const;
+    bool footprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const {
+        if (kind == Kind::Plane) return planeFootprint(px, py, exampleSize, u, v, j);
+        const double invW = 1.0 / exampleSize;  // inline: the zoom runs once per pixel of every render
+        u = (view.offsetU + (px + 0.5) * view.scale) * invW;
+        v = (view.offsetV + (py + 0.5) * view.scale) * invW;
+        j = Jacobian{view.scale * invW, 0.0, 0.0, view.scale * invW};
+        return true;
+    }
+
+private:
+    bool planeFootprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const;
 };
 
 // InputError naming the flag if the camera is unusable.

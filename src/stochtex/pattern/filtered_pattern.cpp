@@ -54,16 +54,21 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
     sky_ = table_->sample(top.mean[0], top.mean[1], std::sqrt(top.var[0]), std::sqrt(top.var[1]));
 }
 
+Footprint FilteredPattern::footprint(double u, double v, const Jacobian& j) const {
+    return makeFootprint(u, v, j, estimator_->exampleSize(), estimator_->maxLod(), options_.aniso);
+}
+
+Rgb FilteredPattern::shade(const Footprint& f) const {
+    const FootprintStats s = estimator_->estimate(f, options_.estimator);
+    return table_->sample(s.mean[0], s.mean[1], s.sigmaX(), s.sigmaY());
+}
+
 Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j) const {
     if (!onPlane) return sky_;
     switch (options_.mode) {
         case FilterMode::None: return pattern_.evaluate(u, v);
         case FilterMode::Paper:
-        case FilterMode::Smooth: {
-            const Footprint f = makeFootprint(u, v, j, estimator_->exampleSize(), estimator_->maxLod(), options_.aniso);
-            const FootprintStats s = estimator_->estimate(f, options_.estimator);
-            return table_->sample(s.mean[0], s.mean[1], s.sigmaX(), s.sigmaY());
-        }
+        case FilterMode::Smooth: return shade(footprint(u, v, j));
         case FilterMode::Exact: {
             const FootprintStats s =
                 bruteForceStats(pattern_.noises(), pattern_.gridDensity(), u, v, j, options_.referenceMaxSamples);
@@ -90,13 +95,23 @@ Image FilteredPattern::render(const Camera& camera) const {
     if (options_.mode == FilterMode::None && camera.kind == Camera::Kind::Zoom) return pattern_.render(camera.view);
     Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
     const int w = pattern_.exampleSize();
+    // A zoom has one Jacobian for the whole image: build its footprint once.
+    const bool oneFootprint = camera.kind == Camera::Kind::Zoom &&
+                              (options_.mode == FilterMode::Paper || options_.mode == FilterMode::Smooth);
+    Footprint shape;
+    if (oneFootprint) {
+        double u = 0, v = 0;
+        Jacobian j;
+        camera.footprint(0, 0, w, u, v, j);
+        shape = footprint(0.0, 0.0, j);
+    }
     parallelRows(camera.view.height, [&](int y0, int y1) {
         for (int py = y0; py < y1; ++py)
             for (int px = 0; px < camera.view.width; ++px) {
                 double u = 0, v = 0;
                 Jacobian j;
                 const bool onPlane = camera.footprint(px, py, w, u, v, j);
-                const Rgb c = shade(onPlane, u, v, j);
+                const Rgb c = oneFootprint ? shade(shape.translated(u, v)) : shade(onPlane, u, v, j);
                 float* p = out.row(py) + size_t(px) * 3;
                 p[0] = c[0];
                 p[1] = c[1];

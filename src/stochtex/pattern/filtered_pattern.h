@@ -50,6 +50,8 @@ public:
     Image render(const Camera& camera) const;
 
 private:
+    Footprint footprint(double u, double v, const Jacobian& j) const;
+    Rgb shade(const Footprint& f) const;  // paper / smooth
     const Pattern& pattern_;
     FilterOptions options_;
     std::unique_ptr<FootprintEstimator> estimator_;
