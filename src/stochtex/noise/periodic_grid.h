@@ -76,7 +76,14 @@ public:
         std::memcpy(&b, r.row1 + size_t(i) * C, sizeof(Pair));
         const Pair col = a + r.ty * (b - a);  // [left channels…, right channels…]
         std::array<float, C> out;
-        for (int c = 0; c < C; ++c) out[size_t(c)] = col[c] + tx * (col[c + C] - col[c]);
+        if constexpr (C == 1) {
+            out[0] = col[0] + tx * (col[1] - col[0]);
+        } else {
+            const Float2 left = __builtin_shufflevector(col, col, 0, 1);
+            const Float2 right = __builtin_shufflevector(col, col, 2, 3);
+            const Float2 r = left + tx * (right - left);
+            std::memcpy(out.data(), &r, sizeof r);
+        }
         return out;
     }
 
