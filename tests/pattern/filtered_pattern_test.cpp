@@ -51,6 +51,32 @@ TEST(PrefilteredColormap, EntriesEqualDirectNumericalConvolution) {
     }
 }
 
+TEST(PrefilteredColormap, NonSquareTablesBlurEachAxisByItsOwnSigma) {
+    // A 64×40 random table: x and y have different tap tables, and layers
+    // blur x first or y first depending on which is cheaper — both orders
+    // must give the exact separable convolution.
+    Image t(64, 40, 3);
+    uint32_t state = 12345;
+    for (float& v : t.data()) {
+        state = state * 1664525u + 1013904223u;
+        v = float(state >> 8) / 16777216.0f;
+    }
+    const ColormapTable h(t);
+    const PrefilteredColormap p(h, PrefilterMode::Smooth);
+    const auto& s = p.sigmas();
+    for (auto [kx, ky] : {std::pair{1, 5}, {5, 1}, {0, 4}, {4, 0}, {3, 3}}) {
+        const ColormapTable& layer = p.layer(kx, ky);
+        for (int k = 0; k < 3; ++k) {
+            const int i = (k * 29 + 3) % layer.resolutionX(), j = (k * 17 + 5) % layer.resolutionY();
+            const double mx = double(i) / (layer.resolutionX() - 1), my = double(j) / (layer.resolutionY() - 1);
+            const Rgb want = convolveColormapNumerically(h, mx, my, s[size_t(kx)], s[size_t(ky)], 800);
+            const Rgb got = layer.entry(i, j);
+            for (int c = 0; c < 3; ++c)
+                ASSERT_NEAR(got[size_t(c)], want[size_t(c)], 5e-4) << "levels " << kx << "," << ky;
+        }
+    }
+}
+
 TEST(PrefilteredColormap, SmoothModeInterpolatesBetweenLevelsAndPaperSnaps) {
     const ColormapTable h = buildColormap(loadPreset("weld").colormap);
     const PrefilteredColormap smooth(h, PrefilterMode::Smooth), paper(h, PrefilterMode::Paper);

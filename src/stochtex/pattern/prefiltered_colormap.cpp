@@ -184,14 +184,37 @@ PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode m
     const Image base = h.table();
     // The x blur runs as a y blur of the transposed table (streams rows).
     const Image baseT = transposed(base);
+    const size_t levels = sigmas_.size();
     // Tap tables depend only on (axis, σ level): build each once.
-    std::vector<TapTable> tapsY;
-    for (double sy : sigmas_) tapsY.push_back(blurTaps(base.height(), sy, storedResolution(base.height(), sy)));
-    layers_.reserve(sigmas_.size() * sigmas_.size());
-    for (double sx : sigmas_) {
-        const Image bx = transposed(blurColumns(baseT, blurTaps(base.width(), sx, storedResolution(base.width(), sx))));
-        for (const TapTable& ty : tapsY) layers_.emplace_back(blurColumns(bx, ty));
+    std::vector<TapTable> tapsX, tapsY;
+    auto taps = [](const TapTable& t) {
+        size_t n = 0;
+        for (const auto& row : t) n += row.size();
+        return n;
+    };
+    for (double s : sigmas_) {
+        tapsX.push_back(blurTaps(base.width(), s, storedResolution(base.width(), s)));
+        // Square tables (the usual case) share the x taps.
+        tapsY.push_back(base.height() == base.width() ? tapsX.back()
+                                                      : blurTaps(base.height(), s, storedResolution(base.height(), s)));
     }
+    // The blurs along x and y commute, so each layer takes the order whose
+    // second pass is cheaper: the wide blur runs first, on one shared
+    // intermediate per σ level, and the narrow one per layer. The second
+    // pass reads taps(second axis) × entries kept along the first axis.
+    std::vector<Image> blurredX(levels), blurredYT(levels);  // xT: stored transposed
+    for (size_t k = 0; k < levels; ++k) {
+        blurredX[k] = transposed(blurColumns(baseT, tapsX[k]));
+        blurredYT[k] = transposed(blurColumns(base, tapsY[k]));
+    }
+    layers_.reserve(levels * levels);
+    for (size_t kx = 0; kx < levels; ++kx)
+        for (size_t ky = 0; ky < levels; ++ky) {
+            const size_t xThenY = tapsX[kx].size() * taps(tapsY[ky]);
+            const size_t yThenX = tapsY[ky].size() * taps(tapsX[kx]);
+            layers_.emplace_back(xThenY <= yThenX ? blurColumns(blurredX[kx], tapsY[ky])
+                                                  : transposed(blurColumns(blurredYT[ky], tapsX[kx])));
+        }
 }
 
 float PrefilteredColormap::levelCoordinate(float sigma) const {
