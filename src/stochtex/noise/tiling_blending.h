@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "stochtex/core/floor.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/noise/example.h"
 
@@ -33,13 +34,6 @@ struct BlendStencil {
     uint32_t vy(size_t i) const { return cellY + uint32_t(upper ? i != 1 : i == 1); }
     bool sameTiles(const BlendStencil& o) const { return cellX == o.cellX && cellY == o.cellY && upper == o.upper; }
 };
-
-// floor() for |t| < 2⁶³ without a libm call (baseline x86-64 has no
-// rounding instruction, and this runs several times per pixel).
-inline int64_t floorToInt(double t) {
-    const int64_t i = int64_t(t);
-    return i - (t < double(i) ? 1 : 0);
-}
 
 // The triangle grid along one row of constant v: the skewed y coordinate
 // (1.15470054 v) and its floor do not change along u, so a scanline pays
