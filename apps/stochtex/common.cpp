@@ -85,4 +85,15 @@ void addThreadsFlag(CLI::App& cmd, int& threads) {
         ->check(CLI::Range(0, 1024));
 }
 
+std::string htmlEscape(const std::string& s) {
+    std::string o;
+    for (char c : s) {
+        if (c == '<') o += "&lt;";
+        else if (c == '>') o += "&gt;";
+        else if (c == '&') o += "&amp;";
+        else o += c;
+    }
+    return o;
+}
+
 }  // namespace stochtex::cli

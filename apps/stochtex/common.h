@@ -40,6 +40,9 @@ void checkImageOutput(const std::string& path);
 
 void addThreadsFlag(CLI::App& cmd, int& threads);
 
+// <, > and & as HTML entities.
+std::string htmlEscape(const std::string& s);
+
 // Registration of each command (one file each).
 void registerRender(CLI::App& app);
 void registerGallery(CLI::App& app);
@@ -47,5 +50,9 @@ void registerNoise(CLI::App& app);
 void registerColormap(CLI::App& app);
 void registerPresets(CLI::App& app);
 void registerStability(CLI::App& app);
+void registerZoom(CLI::App& app);
+void registerCorrelation(CLI::App& app);
+void registerContrast(CLI::App& app);
+void registerAnalyze(CLI::App& app);
 
 }  // namespace stochtex::cli

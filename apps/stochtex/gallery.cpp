@@ -45,17 +45,6 @@ Image colormapUsage(const Pattern& pattern, const View& view, int size) {
     return base;
 }
 
-std::string htmlEscape(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        if (c == '<') o += "&lt;";
-        else if (c == '>') o += "&gt;";
-        else if (c == '&') o += "&amp;";
-        else o += c;
-    }
-    return o;
-}
-
 }  // namespace
 
 void registerGallery(CLI::App& app) {

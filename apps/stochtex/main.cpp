@@ -17,6 +17,10 @@ int main(int argc, char** argv) {
     stochtex::cli::registerColormap(app);
     stochtex::cli::registerPresets(app);
     stochtex::cli::registerStability(app);
+    stochtex::cli::registerZoom(app);
+    stochtex::cli::registerCorrelation(app);
+    stochtex::cli::registerContrast(app);
+    stochtex::cli::registerAnalyze(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -37,7 +37,7 @@ out=$work/out
 mkdir -p "$out"
 
 # --- help on every command ---
-for c in render gallery noise colormap presets; do
+for c in render gallery noise colormap presets zoom correlation contrast analyze; do
   "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
 done
 
@@ -74,6 +74,15 @@ cat >"$work/exemplar.json" <<JSON
 JSON
 expect_ok "exemplar pattern" "$out/ex.png" -- "$bin" render "$work/exemplar.json" -o "$out/ex.png"
 
+# --- thesis studies (small) ---
+expect_ok "zoom frames" "$out/zoom/frame_0002.png" -- "$bin" zoom -o "$out/zoom" --frames 3 --size 64 --layers 4 --offsets hashed --no-video
+expect_ok "correlation" "$out/corr/figure2_10.png" -- "$bin" correlation -o "$out/corr" --variant fixed,random --layers-list 4 --instances 16 --size 16
+grep -q "^random,4,16," "$out/corr/correlation.csv" || fail "correlation.csv lacks the random,n=4 row"
+expect_ok "contrast" "$out/contrast/figure2_6.png" -- "$bin" contrast -o "$out/contrast" --size 64 --layers 8
+grep -q "^sigmoid,0," "$out/contrast/contrast.csv" || fail "contrast.csv: the sigmoid should clamp 0% of pixels"
+expect_ok "analyze" "$out/an/index.html" -- "$bin" analyze -o "$out/an" --instances 8 --plot-size 16 --layers-list 4 --size 64
+grep -q "figure2_10.png" "$out/an/index.html" || fail "analyze: index.html lacks the correlation sheet"
+
 # --- bad input ---
 echo '{"noise_x": {"type": "spectrum", ' >"$work/malformed.json"
 expect_bad "malformed JSON" "$out/bad1.png" "malformed.json: malformed JSON" -- "$bin" render "$work/malformed.json" -o "$out/bad1.png"
@@ -102,6 +111,11 @@ expect_bad "tilt" "$out/bad21.png" "--tilt must be in [0, 89]" -- "$bin" render 
 expect_bad "zero scale" "$out/bad22.png" "scale must be a finite number" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
 expect_bad "bad view" "$out/bad23.png" 'unknown "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
 expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"
+expect_bad "zoom n = 0" "$out/zbad1" "--layers: the number of layers n must be in [1, 1024]" -- "$bin" zoom -o "$out/zbad1" --layers 0
+expect_bad "zoom H <= 0" "$out/zbad2" "--max-scale: H must be a finite number" -- "$bin" zoom -o "$out/zbad2" --max-scale 0
+expect_bad "correlation N = 0" "$out/zbad3" "--instances must be in [2, 1e6]" -- "$bin" correlation -o "$out/zbad3" --instances 0
+expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image file" -- "$bin" contrast -o "$out/zbad4" --base "$work/nothere.png"
+expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: every n must be in [1, 1024]" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
 
 if [ $failures -ne 0 ]; then
   echo "$failures CLI check(s) failed"

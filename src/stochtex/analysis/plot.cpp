@@ -154,6 +154,20 @@ Image heatmapPlot(const Image& values, const HeatmapOptions& o) {
     return fromBgr(m);
 }
 
+Image colourise(const Image& values, double vmin, double vmax, HeatPalette palette) {
+    Image out(values.width(), values.height(), 3, Image::Uninitialized{});
+    std::vector<std::array<uchar, 3>> lut(256);
+    for (int i = 0; i < 256; ++i) lut[size_t(i)] = paletteBgr(palette, i / 255.0);
+    const double span = vmax - vmin;
+    for (int y = 0; y < values.height(); ++y)
+        for (int x = 0; x < values.width(); ++x) {
+            const double t = span > 0 ? (values.at(x, y) - vmin) / span : 0.5;
+            const auto c = lut[size_t(std::clamp(int(std::lround(255 * t)), 0, 255))];
+            for (int k = 0; k < 3; ++k) out.at(x, y, k) = float(c[size_t(2 - k)]) / 255.0f;
+        }
+    return out;
+}
+
 Image linePlot(const std::vector<PlotSeries>& series, const LinePlotOptions& o) {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
     for (const auto& s : series)

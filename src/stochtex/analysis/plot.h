@@ -27,6 +27,9 @@ struct HeatmapOptions {
 };
 // values: 1-channel.
 Image heatmapPlot(const Image& values, const HeatmapOptions& o);
+// The values through the palette alone (no axes), one pixel per value, row 0
+// at the top as stored.
+Image colourise(const Image& values, double vmin, double vmax, HeatPalette palette);
 
 struct PlotSeries {
     std::string name;
