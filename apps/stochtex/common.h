@@ -54,5 +54,6 @@ void registerZoom(CLI::App& app);
 void registerCorrelation(CLI::App& app);
 void registerContrast(CLI::App& app);
 void registerAnalyze(CLI::App& app);
+void registerReproduce(CLI::App& app);
 
 }  // namespace stochtex::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerCorrelation(app);
     stochtex::cli::registerContrast(app);
     stochtex::cli::registerAnalyze(app);
+    stochtex::cli::registerReproduce(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

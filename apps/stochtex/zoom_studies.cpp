@@ -49,12 +49,6 @@ LatticeTexture makeBase(const ZoomFlags& f, int instance) {
     return LatticeTexture::fromImage(toGray(readImage(f.base)));
 }
 
-void ensureFolder(const std::string& dir) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir)) throw InputError(dir + ": cannot create output folder");
-}
-
 namespace {
 
 std::string path(const std::string& dir, const std::string& file) { return (fs::path(dir) / file).string(); }

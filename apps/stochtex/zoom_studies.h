@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "report.h"
 #include "stochtex/textures/zoom_texture.h"
 
 namespace stochtex::cli {
@@ -25,16 +26,10 @@ ZoomParams makeZoomParams(const ZoomFlags& f);
 // an image: the image itself, every instance alike).
 LatticeTexture makeBase(const ZoomFlags& f, int instance = 0);
 
-// One output of a study: a file in the folder and what it shows.
-struct Figure {
-    std::string file, caption;
-};
 struct StudyOutput {
     std::vector<Figure> figures;
     std::string table;  // Markdown/plain summary of the numbers
 };
-
-void ensureFolder(const std::string& dir);
 
 struct CorrelationStudy {
     std::vector<std::string> variants{"sliding", "fixed", "simple", "random"};

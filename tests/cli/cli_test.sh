@@ -37,7 +37,7 @@ out=$work/out
 mkdir -p "$out"
 
 # --- help on every command ---
-for c in render gallery noise colormap presets zoom correlation contrast analyze; do
+for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce; do
   "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
 done
 
@@ -83,6 +83,13 @@ grep -q "^sigmoid,0," "$out/contrast/contrast.csv" || fail "contrast.csv: the si
 expect_ok "analyze" "$out/an/index.html" -- "$bin" analyze -o "$out/an" --instances 8 --plot-size 16 --layers-list 4 --size 64
 grep -q "figure2_10.png" "$out/an/index.html" || fail "analyze: index.html lacks the correlation sheet"
 
+# --- paper reproduction (reduced) ---
+expect_ok "reproduce table1" "$out/rep/table1.md" -- "$bin" reproduce table1 -o "$out/rep" --count 20 --footprints 2,16
+grep -q "^high,16,global," "$out/rep/table1.csv" || fail "table1.csv lacks the high/16/global row"
+expect_ok "reproduce figures7-9" "$out/rep/figure9.png" -- "$bin" reproduce figures7-9 -o "$out/rep" --size 64
+expect_ok "reproduce all" "$out/all/index.html" -- "$bin" reproduce all -o "$out/all" --count 10 --footprints 2,4 --size 32 --reference-samples 8
+grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 4"
+
 # --- bad input ---
 echo '{"noise_x": {"type": "spectrum", ' >"$work/malformed.json"
 expect_bad "malformed JSON" "$out/bad1.png" "malformed.json: malformed JSON" -- "$bin" render "$work/malformed.json" -o "$out/bad1.png"
@@ -116,6 +123,8 @@ expect_bad "zoom H <= 0" "$out/zbad2" "--max-scale: H must be a finite number" -
 expect_bad "correlation N = 0" "$out/zbad3" "--instances must be in [2, 1e6]" -- "$bin" correlation -o "$out/zbad3" --instances 0
 expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image file" -- "$bin" contrast -o "$out/zbad4" --base "$work/nothere.png"
 expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: every n must be in [1, 1024]" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
+expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
+expect_bad "reproduce zero count" "$out/rbad2" "--count must be in [1, 1e6]" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
 
 if [ $failures -ne 0 ]; then
   echo "$failures CLI check(s) failed"

@@ -168,6 +168,23 @@ Image colourise(const Image& values, double vmin, double vmax, HeatPalette palet
     return out;
 }
 
+Image colourLegend(double vmin, double vmax, HeatPalette palette, const std::string& title, int width) {
+    const int left = 20, barW = width - 2 * left, top = 24, barH = 14;
+    cv::Mat m(top + barH + 24, width, CV_8UC3, kWhite);
+    for (int x = 0; x < barW; ++x) {
+        const auto c = paletteBgr(palette, double(x) / std::max(1, barW - 1));
+        cv::line(m, {left + x, top}, {left + x, top + barH}, cv::Scalar(c[0], c[1], c[2]));
+    }
+    cv::rectangle(m, cv::Rect(left, top, barW, barH), kInk, 1);
+    for (double t : ticks(vmin, vmax)) {
+        const int x = left + int(std::lround((t - vmin) / (vmax - vmin) * (barW - 1)));
+        cv::line(m, {x, top + barH}, {x, top + barH + 4}, kInk);
+        text(m, number(t), x, top + barH + 16, 0.35, true);
+    }
+    text(m, title, width / 2, 16, 0.42, true);
+    return fromBgr(m);
+}
+
 Image linePlot(const std::vector<PlotSeries>& series, const LinePlotOptions& o) {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
     for (const auto& s : series)

@@ -15,6 +15,7 @@ enum class HeatPalette {
     Viridis,    // perceptually uniform, for magnitudes
 };
 
+// Text in plots is drawn with OpenCV's Hershey fonts: ASCII only.
 struct HeatmapOptions {
     std::string title;
     std::string xLabel, yLabel;
@@ -30,6 +31,10 @@ Image heatmapPlot(const Image& values, const HeatmapOptions& o);
 // The values through the palette alone (no axes), one pixel per value, row 0
 // at the top as stored.
 Image colourise(const Image& values, double vmin, double vmax, HeatPalette palette);
+
+// A horizontal colour bar from vmin to vmax with ticks and a title (ASCII:
+// the plot fonts have no other glyphs), for sheets of colourised maps.
+Image colourLegend(double vmin, double vmax, HeatPalette palette, const std::string& title, int width = 420);
 
 struct PlotSeries {
     std::string name;

@@ -1,0 +1,66 @@
+#include "pattern_sheet.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace stochtex::cli {
+
+namespace {
+
+// The colormap (y up) darkened where N rarely falls: shows which part of H
+// the pattern actually uses.
+Image colormapUsage(const Pattern& pattern, const View& view, int size) {
+    std::vector<double> hist(size_t(size) * size_t(size), 0.0);
+    const double invW = 1.0 / pattern.exampleSize();
+    for (int py = 0; py < view.height; ++py)
+        for (int px = 0; px < view.width; ++px) {
+            const auto n = pattern.field((view.offsetU + (px + 0.5) * view.scale) * invW,
+                                         (view.offsetV + (py + 0.5) * view.scale) * invW);
+            const int i = std::clamp(int(n[0] * size), 0, size - 1);
+            const int j = std::clamp(int((1.0f - n[1]) * size), 0, size - 1);
+            hist[size_t(j) * size_t(size) + size_t(i)] += 1.0;
+        }
+    // Smooth the counts so the density reads as a shape, not as dots.
+    cv::Mat h(size, size, CV_64F, hist.data());
+    cv::GaussianBlur(h, h, cv::Size(0, 0), 1.5);
+    const double peak = *std::max_element(hist.begin(), hist.end());
+    Image base = resizeSmooth(pattern.colormap().toImage(), size, size);
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
+            const double d = peak > 0 ? std::sqrt(hist[size_t(j) * size_t(size) + size_t(i)] / peak) : 0.0;
+            const float shade = float(0.15 + 0.85 * std::min(1.0, 4.0 * d));
+            for (int c = 0; c < 3; ++c) base.at(i, j, c) *= shade;
+        }
+    return base;
+}
+
+}  // namespace
+
+PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const std::string& label) {
+    const int big = size, small = size / 2;
+    View view;
+    view.width = view.height = big;
+    view.scale = scale;
+    PatternSheet out;
+    out.pattern = pattern.render(view);
+    View half = view;
+    half.width = half.height = small;
+    half.scale = view.scale * 2.0;
+    Image sheet(big + 2 * small, big, 3);
+    paste(sheet, out.pattern, 0, 0);
+    paste(sheet, resizeSmooth(pattern.colormap().toImage(), small, small), big, 0);
+    paste(sheet, colormapUsage(pattern, view, small), big + small, 0);
+    paste(sheet, toRgb(pattern.renderNoise(0, half)), big, small);
+    paste(sheet, toRgb(pattern.renderNoise(1, half)), big + small, small);
+    drawLabel(sheet, 0, big, big, label.c_str());
+    drawLabel(sheet, big, small, small, "colormap H");
+    drawLabel(sheet, big + small, small, small, "H where N falls");
+    drawLabel(sheet, big, big, small, "noise N_x");
+    drawLabel(sheet, big + small, big, small, "noise N_y");
+    out.sheet = std::move(sheet);
+    return out;
+}
+
+}  // namespace stochtex::cli

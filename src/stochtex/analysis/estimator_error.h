@@ -1,0 +1,49 @@
+#pragma once
+// Accuracy of the footprint estimators (paper §6.1, Table 1): over random
+// square footprints of s×s texels, the mean absolute and mean relative error
+// of μ̂ and σ̂ against the exact footprint statistics of the tiled-and-blended
+// noise (bruteForceStats: 2 samples per texel and axis).
+//
+// Estimators compared:
+//   paper        — eq. 8 and eq. 12 on the E_l / V_l pyramids;
+//   deliot-heitz — the same mean, one constant variance per level [DH19];
+//   global       — no footprint information: μ_E and σ_E of the whole
+//                  example (what a pixel falls back to without filtering
+//                  data; every estimator should beat it).
+// Both components of N are measured and pooled (2 values per footprint).
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stochtex/noise/tiling_blending.h"
+
+namespace stochtex {
+
+struct EstimatorErrorOptions {
+    std::vector<int> footprints{2, 4, 8, 16, 32, 64, 128};  // s, texels per side
+    int count = 1000;                                     // footprints per size
+    uint32_t seed = 1;                                    // footprint centres
+    int maxSamplesPerAxis = 512;                          // exact statistics
+};
+
+struct EstimatorError {
+    int footprint = 0;
+    std::string estimator;
+    double muAbs = 0, muRel = 0;        // mean |μ̂ − μ|, mean |μ̂ − μ|/|μ|
+    double sigmaAbs = 0, sigmaRel = 0;  // mean |σ̂ − σ|, mean |σ̂ − σ|/σ
+    double meanMu = 0, meanSigma = 0;   // mean reference μ and σ
+    int values = 0;                     // footprints × 2 components
+};
+
+// InputError for a count outside [1, 1e6] or footprints outside
+// [1, 4·exampleSize].
+void validateEstimatorErrorOptions(const EstimatorErrorOptions& options, int exampleSize);
+
+// Rows ordered by footprint, then estimator (paper, deliot-heitz, global).
+// Multi-threaded over footprints; the result does not depend on threads.
+std::vector<EstimatorError> measureEstimatorErrors(const std::array<TilingBlendingNoise, 2>& noises,
+                                                   double gridDensity, const EstimatorErrorOptions& options,
+                                                   const std::function<void(int)>& progress = {});
+
+}  // namespace stochtex
