@@ -6,6 +6,8 @@
 
 #include "common.h"
 #include "stochtex/core/error.h"
+#include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/shader.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"stochtex: colour-mapped noise vector fields and procedural texture analysis"};
@@ -36,6 +38,12 @@ int main(int argc, char** argv) {
     } catch (const stochtex::InputError& e) {
         std::fprintf(stderr, "stochtex: error: %s\n", e.what());
         return 2;
+    } catch (const stochtex::GpuUnavailable& e) {
+        std::fprintf(stderr, "stochtex: error: %s\n", e.what());
+        return 1;
+    } catch (const stochtex::ShaderError& e) {
+        std::fprintf(stderr, "stochtex: error: %s\n", e.what());
+        return 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "stochtex: internal error: %s\n", e.what());
         return 1;

@@ -7,6 +7,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/pattern/filtered_pattern.h"
 
 namespace stochtex::cli {
@@ -25,6 +26,7 @@ void registerRender(CLI::App& app) {
         int bits = 8;
         int threads = 0;
         bool pack8 = false;
+        bool gpu = false;
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("render", "Render a pattern to PNG or EXR, unfiltered, filtered or as the reference");
@@ -43,6 +45,8 @@ void registerRender(CLI::App& app) {
                     "Max samples per axis and pixel for --filter reference/exact (n = clamp(2·extent, 8, this))");
     cmd->add_flag("--pack8", args->pack8, "Store the mean/variance pyramids in 8 bits (paper §5: RGBA8 = E_x, E_y, 16V_x, 16V_y)");
     cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
+    cmd->add_flag("--gpu", args->gpu,
+                  "Render with the GLSL implementation on a headless OpenGL context (so far: --filter none, zoom view)");
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         checkImageOutput(args->output);
@@ -69,13 +73,23 @@ void registerRender(CLI::App& app) {
         validateCamera(camera);  // before building anything; FilteredPattern checks the options
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
+        if (args->gpu && (options.mode != FilterMode::None || camera.kind != Camera::Kind::Zoom))
+            throw InputError("--gpu: only --filter none with the zoom view is implemented on the GPU so far");
         const Pattern pattern = Pattern::build(spec);
-        const FilteredPattern filtered(pattern, options);
-        const Image image = filtered.render(camera);
+        Image image;
+        std::string device = "CPU";
+        if (args->gpu) {
+            auto context = GlContext::headless();
+            device = context->describe();
+            image = GpuPattern(pattern, *context).render(camera.view);
+        } else {
+            image = FilteredPattern(pattern, options).render(camera);
+        }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image, WriteOptions{args->bits});
-        std::printf("wrote %s (%dx%d, %s, %s view, filter %s, %.2f s)\n", args->output.c_str(), camera.view.width,
-                    camera.view.height, spec.name.c_str(), args->camera.c_str(), args->filter.c_str(), seconds);
+        std::printf("wrote %s (%dx%d, %s, %s view, filter %s, %s, %.2f s)\n", args->output.c_str(), camera.view.width,
+                    camera.view.height, spec.name.c_str(), args->camera.c_str(), args->filter.c_str(), device.c_str(),
+                    seconds);
     });
 }
 

@@ -90,6 +90,9 @@ expect_ok "reproduce figures7-9" "$out/rep/figure9.png" -- "$bin" reproduce figu
 expect_ok "reproduce all" "$out/all/index.html" -- "$bin" reproduce all -o "$out/all" --count 10 --footprints 2,4 --size 32 --reference-samples 8
 grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 4"
 
+# --- GPU (headless OpenGL: Mesa llvmpipe without a GPU) ---
+expect_ok "render --gpu" "$out/gpu.png" -- "$bin" render --preset camouflage --gpu --size 96 -o "$out/gpu.png"
+
 # --- bad input ---
 echo '{"noise_x": {"type": "spectrum", ' >"$work/malformed.json"
 expect_bad "malformed JSON" "$out/bad1.png" "malformed.json: malformed JSON" -- "$bin" render "$work/malformed.json" -o "$out/bad1.png"
@@ -125,6 +128,7 @@ expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image f
 expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: every n must be in [1, 1024]" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
 expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
 expect_bad "reproduce zero count" "$out/rbad2" "--count must be in [1, 1e6]" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
+expect_bad "gpu with a filter" "$out/gbad.png" "--gpu: only --filter none" -- "$bin" render --preset camouflage --gpu --filter smooth -o "$out/gbad.png"
 
 if [ $failures -ne 0 ]; then
   echo "$failures CLI check(s) failed"

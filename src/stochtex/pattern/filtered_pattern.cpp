@@ -45,6 +45,12 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
     if (!isPowerOfTwo(pattern.exampleSize()))
         throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
                          std::to_string(pattern.exampleSize()));
+    if (options.mode == FilterMode::None) {
+        // Nothing to prefilter: the sky shows H at the examples' means.
+        sky_ = pattern.colormap().sample(pattern.example(0).toOutput(pattern.example(0).mean()),
+                                         pattern.example(1).toOutput(pattern.example(1).mean()));
+        return;
+    }
     estimator_ = std::make_unique<FootprintEstimator>(pattern.noises(), pattern.sharedOffsets(), pattern.gridDensity(),
                                                       options.pack8);
     table_ = std::make_unique<PrefilteredColormap>(

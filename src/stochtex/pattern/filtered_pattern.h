@@ -15,7 +15,8 @@
 // Filtering runs in the blending space: for a Gaussianized exemplar the
 // inverse histogram transform is folded into the colormap,
 // H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)), before prefiltering.
-// Sky pixels (plane camera) show the pattern's average, H̄(μ_E, σ_E).
+// Sky pixels (plane camera) show the pattern's average, H̄(μ_E, σ_E) (for
+// `none`, which builds no table, H at the examples' means).
 #include <memory>
 
 #include "stochtex/filter/footprint_stats.h"
@@ -40,6 +41,7 @@ public:
     FilteredPattern(const Pattern& pattern, const FilterOptions& options);
 
     const FilterOptions& options() const { return options_; }
+    // Not built for FilterMode::None.
     const FootprintEstimator& estimator() const { return *estimator_; }
     const PrefilteredColormap& table() const { return *table_; }
     // H' (T⁻¹ folded in) that the prefiltered table was built from.

@@ -1,0 +1,87 @@
+#include "stochtex/gpu/gl_context.h"
+
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <vector>
+
+namespace stochtex {
+
+struct GlContext::Impl {
+    EGLDisplay display = EGL_NO_DISPLAY;
+    EGLContext context = EGL_NO_CONTEXT;
+};
+
+namespace {
+
+// Displays to try, best first: a real device, then Mesa's surfaceless
+// platform (software rendering), then the default display.
+std::vector<EGLDisplay> candidateDisplays() {
+    std::vector<EGLDisplay> out;
+    const char* clientExt = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    const std::string ext = clientExt ? clientExt : "";
+    if (ext.find("EGL_EXT_platform_device") != std::string::npos) {
+        EGLDeviceEXT devices[8];
+        EGLint count = 0;
+        if (eglQueryDevicesEXT(8, devices, &count))
+            for (EGLint i = 0; i < count; ++i) {
+                const EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+                if (d != EGL_NO_DISPLAY) out.push_back(d);
+            }
+    }
+    if (ext.find("EGL_MESA_platform_surfaceless") != std::string::npos) {
+        const EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (d != EGL_NO_DISPLAY) out.push_back(d);
+    }
+    const EGLDisplay d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+    if (d != EGL_NO_DISPLAY) out.push_back(d);
+    return out;
+}
+
+}  // namespace
+
+std::unique_ptr<GlContext> GlContext::headless() {
+    std::unique_ptr<GlContext> ctx(new GlContext);
+    ctx->impl_ = std::make_unique<Impl>();
+    std::string tried;
+    for (EGLDisplay d : candidateDisplays()) {
+        EGLint major = 0, minor = 0;
+        if (!eglInitialize(d, &major, &minor)) continue;
+        const char* vendor = eglQueryString(d, EGL_VENDOR);
+        tried += std::string(tried.empty() ? "" : ", ") + (vendor ? vendor : "?");
+        if (!eglBindAPI(EGL_OPENGL_API)) continue;
+        // Configless and surfaceless (EGL_KHR_no_config_context,
+        // EGL_KHR_surfaceless_context): rendering is to FBOs only.
+        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+        const EGLContext c = eglCreateContext(d, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+        if (c == EGL_NO_CONTEXT) continue;
+        if (!eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, c)) {
+            eglDestroyContext(d, c);
+            continue;
+        }
+        ctx->impl_->display = d;
+        ctx->impl_->context = c;
+        return ctx;
+    }
+    throw GpuUnavailable("--gpu: no headless OpenGL 3.3 core context could be created (EGL displays tried: " +
+                         (tried.empty() ? std::string("none") : tried) +
+                         "); install Mesa (libegl-mesa0, libgl1-mesa-dri) or a GPU driver");
+}
+
+GlContext::~GlContext() {
+    if (impl_ && impl_->context != EGL_NO_CONTEXT) {
+        eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        eglDestroyContext(impl_->display, impl_->context);
+    }
+}
+
+void GlContext::makeCurrent() { eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context); }
+
+std::string GlContext::describe() const {
+    const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return std::string("OpenGL ") + (version ? version : "?") + ", " + (renderer ? renderer : "?");
+}
+
+}  // namespace stochtex

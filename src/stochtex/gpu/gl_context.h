@@ -1,0 +1,35 @@
+#pragma once
+// An OpenGL 3.3+ core context without a window: EGL on the device platform
+// (a vendor GPU driver) or Mesa's surfaceless platform (llvmpipe on machines
+// without a GPU), through libepoxy. Rendering goes to framebuffer objects.
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace stochtex {
+
+// The machine has no usable OpenGL (no EGL display, no 3.3 core context).
+class GpuUnavailable : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class GlContext {
+public:
+    // Creates and makes current a headless context; GpuUnavailable if none.
+    static std::unique_ptr<GlContext> headless();
+    ~GlContext();
+    GlContext(const GlContext&) = delete;
+    GlContext& operator=(const GlContext&) = delete;
+
+    void makeCurrent();
+    // "OpenGL 4.5 (Core Profile) Mesa 22.3.6, llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string describe() const;
+
+private:
+    GlContext() = default;
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace stochtex

@@ -1,0 +1,134 @@
+#include "stochtex/gpu/shader.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <map>
+#include <regex>
+
+#include "stochtex/core/embedded_file.h"
+
+namespace stochtex {
+
+extern const EmbeddedFile kEmbeddedShaders[];
+extern const std::size_t kEmbeddedShadersCount;
+
+const std::string& shaderSource(const std::string& stem) {
+    static const std::map<std::string, std::string> sources = [] {
+        std::map<std::string, std::string> m;
+        for (std::size_t i = 0; i < kEmbeddedShadersCount; ++i) m[kEmbeddedShaders[i].name] = kEmbeddedShaders[i].contents;
+        return m;
+    }();
+    const auto it = sources.find(stem);
+    if (it == sources.end()) throw std::invalid_argument("no embedded shader \"" + stem + "\"");
+    return it->second;
+}
+
+std::vector<std::string> shaderNames() {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < kEmbeddedShadersCount; ++i) names.emplace_back(kEmbeddedShaders[i].name);
+    return names;
+}
+
+namespace {
+
+std::string header(GlslTarget target) {
+    return target == GlslTarget::Core330 ? "#version 330 core\n"
+                                         : "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+                                           "precision highp sampler2D;\n";
+}
+
+// The header, then the files one after the other. `starts[k]` is the line
+// (1-based, in the whole text) where file k begins.
+std::string assemble(GlslTarget target, const std::vector<std::string>& files,
+                     const std::vector<std::pair<std::string, std::string>>& overrides,
+                     std::vector<int>* starts = nullptr) {
+    std::string out = header(target);
+    for (const auto& f : files) {
+        const std::string* text = &shaderSource(f);
+        for (const auto& [stem, replacement] : overrides)
+            if (stem == f) text = &replacement;
+        if (starts) starts->push_back(int(std::count(out.begin(), out.end(), '\n')) + 1);
+        out += *text;
+        if (out.back() != '\n') out += '\n';
+    }
+    return out;
+}
+
+// Driver logs locate errors as "0:12(3)" (Mesa) or "0(12)" (NVIDIA): the
+// line is in the assembled text. Rewrite each as "file:line".
+std::string mapLocations(const std::string& log, const std::vector<std::string>& files, const std::vector<int>& starts) {
+    std::string out;
+    const std::regex loc(R"(\b0[:(](\d+))");
+    std::sregex_iterator it(log.begin(), log.end(), loc), end;
+    std::size_t last = 0;
+    for (; it != end; ++it) {
+        const int line = std::stoi((*it)[1]);
+        out += log.substr(last, std::size_t(it->position()) - last);
+        std::size_t k = 0;
+        while (k + 1 < starts.size() && starts[k + 1] <= line) ++k;
+        out += line >= starts.front() ? files[k] + ":" + std::to_string(line - starts[k] + 1) : "header:" + std::to_string(line);
+        last = std::size_t(it->position() + it->length());
+    }
+    return out + log.substr(last);
+}
+
+unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
+                      const std::vector<std::pair<std::string, std::string>>& overrides) {
+    std::vector<int> starts;
+    const std::string src = assemble(GlslTarget::Core330, files, overrides, &starts);
+    const GLuint s = glCreateShader(stage);
+    const char* p = src.c_str();
+    glShaderSource(s, 1, &p, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        GLint n = 0;
+        glGetShaderiv(s, GL_INFO_LOG_LENGTH, &n);
+        std::string log(std::size_t(std::max(n, 1)), '\0');
+        glGetShaderInfoLog(s, n, nullptr, log.data());
+        glDeleteShader(s);
+        std::string names;
+        for (const auto& f : files) names += (names.empty() ? "" : " + ") + f;
+        throw ShaderError("shader " + names + " does not compile:\n" + mapLocations(log.c_str(), files, starts));
+    }
+    return s;
+}
+
+}  // namespace
+
+std::string assembleShader(GlslTarget target, const std::vector<std::string>& files) {
+    return assemble(target, files, {});
+}
+
+unsigned compileProgram(const std::vector<std::string>& vertexFiles, const std::vector<std::string>& fragmentFiles,
+                        const std::vector<std::pair<std::string, std::string>>& overrides) {
+    const GLuint vs = compileStage(GL_VERTEX_SHADER, vertexFiles, overrides);
+    GLuint fs = 0;
+    try {
+        fs = compileStage(GL_FRAGMENT_SHADER, fragmentFiles, overrides);
+    } catch (...) {
+        glDeleteShader(vs);
+        throw;
+    }
+    const GLuint prog = glCreateProgram();
+    glAttachShader(prog, vs);
+    glAttachShader(prog, fs);
+    glLinkProgram(prog);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint n = 0;
+        glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &n);
+        std::string log(std::size_t(std::max(n, 1)), '\0');
+        glGetProgramInfoLog(prog, n, nullptr, log.data());
+        glDeleteProgram(prog);
+        throw ShaderError("shader program does not link:\n" + std::string(log.c_str()));
+    }
+    return prog;
+}
+
+}  // namespace stochtex

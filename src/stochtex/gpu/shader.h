@@ -1,0 +1,33 @@
+#pragma once
+// GLSL programs assembled from the embedded shader files (gpu/shaders/*.glsl,
+// *.vert, *.frag). The same sources compile as GLSL 3.30 core (desktop) and
+// GLSL ES 3.00 (WebGL 2): only the header differs.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace stochtex {
+
+enum class GlslTarget { Core330, Es300 };
+
+// A shader failed to compile or link; what() holds the compiler log with
+// every location rewritten as the shader file's stem and line ("pattern:12").
+class ShaderError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// The embedded shader file with this stem ("common", "pattern", ...).
+const std::string& shaderSource(const std::string& stem);
+std::vector<std::string> shaderNames();
+
+// The version header, then the files in order (what the driver compiles).
+std::string assembleShader(GlslTarget target, const std::vector<std::string>& files);
+
+// Compiles and links a program (needs a current context); returns its id.
+// Sources are given by stems; `overrides` maps stems to replacement text
+// (tests use it to feed a broken shader).
+unsigned compileProgram(const std::vector<std::string>& vertexFiles, const std::vector<std::string>& fragmentFiles,
+                        const std::vector<std::pair<std::string, std::string>>& overrides = {});
+
+}  // namespace stochtex

@@ -1,0 +1,108 @@
+// Shared by every stochtex shader: the integer hash, the tiling-and-blending
+// grid and periodic bilinear lookups. Each function mirrors its CPU
+// counterpart (core/hash.h, noise/tiling_blending.h, noise/periodic_grid.h)
+// operation for operation, so CPU and GPU agree to float rounding.
+
+// pcg3d (Jarzynski & Olano 2020).
+uvec3 pcg3d(uvec3 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v ^= v >> 16u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    return v;
+}
+
+// The top 24 bits as a float in [0, 1), exactly as unitFloat().
+float unitFloat(uint bits) { return float(bits >> 8u) * (1.0 / 16777216.0); }
+
+// The three tiles at uv: the lattice cell of the skewed grid on uv·density,
+// which of its two triangles holds uv, and the weights normalised to Σw² = 1.
+struct Stencil {
+    uvec2 cell;
+    bool upper;
+    vec3 w;
+};
+
+Stencil triangleGrid(vec2 uv, float density) {
+    float sv = uv.y * density;
+    float xShift = 0.57735026918962573 * sv;
+    float y = 1.1547005383792515 * sv;
+    float by = floor(y);
+    float fy = y - by;
+    float x = uv.x * density - xShift;
+    float bx = floor(x);
+    float fx = x - bx;
+    Stencil s;
+    s.cell = uvec2(ivec2(int(bx), int(by)));
+    float fz = 1.0 - fx - fy;
+    s.upper = !(fz > 0.0);
+    s.w = s.upper ? vec3(-fz, 1.0 - fy, 1.0 - fx) : vec3(fz, fy, fx);
+    s.w *= 1.0 / sqrt(dot(s.w, s.w));
+    return s;
+}
+
+// Vertex i of the stencil's triangle (as BlendStencil::vx, vy).
+uvec2 stencilVertex(Stencil s, int i) {
+    uint dx = s.upper ? uint(i < 2) : uint(i == 2);
+    uint dy = s.upper ? uint(i != 1) : uint(i == 1);
+    return s.cell + uvec2(dx, dy);
+}
+
+// Random offset of a tile in [0, 1)².
+vec2 tileOffset(uvec2 vertex, uint seed) {
+    uvec3 h = pcg3d(uvec3(vertex, seed));
+    return vec2(unitFloat(h.x), unitFloat(h.y));
+}
+
+// Bilinear lookup of a periodic W×W grid (texel centres at (i + ½)/W) at
+// p ∈ [0, 1)², vertical interpolation first as on the CPU. Any channel count:
+// the caller picks the channels.
+vec4 periodicBilinear(sampler2D grid, vec2 p) {
+    int w = textureSize(grid, 0).x;
+    vec2 t = p * float(w) - 0.5;
+    vec2 i0 = floor(t);
+    vec2 f = t - i0;
+    ivec2 a = (ivec2(i0) + w) % w;
+    ivec2 b = (a + 1) % w;
+    vec4 t00 = texelFetch(grid, ivec2(a.x, a.y), 0), t10 = texelFetch(grid, ivec2(b.x, a.y), 0);
+    vec4 t01 = texelFetch(grid, ivec2(a.x, b.y), 0), t11 = texelFetch(grid, ivec2(b.x, b.y), 0);
+    vec4 left = t00 + f.y * (t01 - t00), right = t10 + f.y * (t11 - t10);
+    return left + f.x * (right - left);
+}
+
+// Eq. 7: N(u) = μ + Σ w_i (E(u + o_i) − μ), fu = uv reduced to one period.
+float tilingBlending(sampler2D example, float mean, uint seed, Stencil s, vec2 fu) {
+    float n = mean;
+    for (int i = 0; i < 3; ++i) {
+        vec2 p = fract(fu + tileOffset(stencilVertex(s, i), seed));
+        n += s.w[i] * (periodicBilinear(example, p).r - mean);
+    }
+    return n;
+}
+
+// T⁻¹ through its LUT (n × 1 texture), clamped to [0, 1] as on the CPU.
+float inverseTransform(sampler2D lut, float g) {
+    int n = textureSize(lut, 0).x;
+    float t = clamp(g, 0.0, 1.0) * float(n - 1);
+    int i = min(int(t), n - 2);
+    float f = t - float(i);
+    float a = texelFetch(lut, ivec2(i, 0), 0).r, b = texelFetch(lut, ivec2(i + 1, 0), 0).r;
+    return a + f * (b - a);
+}
+
+// The colormap table H: entry (i, j) at (i/(Rx − 1), j/(Ry − 1)), bilinear,
+// clamp-to-edge.
+vec3 colormapLookup(sampler2D table, vec2 xy) {
+    ivec2 r = textureSize(table, 0);
+    vec2 fxy = clamp(xy, 0.0, 1.0) * vec2(r - 1);
+    ivec2 i0 = min(ivec2(fxy), r - 2);
+    vec2 t = fxy - vec2(i0);
+    vec3 a0 = texelFetch(table, i0, 0).rgb, a1 = texelFetch(table, i0 + ivec2(1, 0), 0).rgb;
+    vec3 b0 = texelFetch(table, i0 + ivec2(0, 1), 0).rgb, b1 = texelFetch(table, i0 + ivec2(1, 1), 0).rgb;
+    vec3 top = a0 + t.x * (a1 - a0), bottom = b0 + t.x * (b1 - b0);
+    return top + t.y * (bottom - top);
+}

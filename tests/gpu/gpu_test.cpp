@@ -1,0 +1,137 @@
+// The GLSL implementation against the CPU reference, on whatever OpenGL the
+// machine has (Mesa llvmpipe in CI), and the shaders' portability.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/gpu_pattern.h"
+#include "stochtex/gpu/shader.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/presets.h"
+
+namespace stochtex {
+namespace {
+
+namespace fs = std::filesystem;
+
+GlContext& context() {
+    static std::unique_ptr<GlContext> ctx = GlContext::headless();
+    return *ctx;
+}
+
+struct Difference {
+    double mean = 0, outlierFraction = 0, max = 0;
+};
+Difference compare(const Image& a, const Image& b) {
+    Difference d;
+    size_t outliers = 0;
+    for (size_t i = 0; i < a.pixelCount(); ++i) {
+        double m = 0;
+        for (size_t c = 0; c < 3; ++c) {
+            const double e = std::abs(double(a.data()[3 * i + c]) - b.data()[3 * i + c]);
+            d.mean += e;
+            m = std::max(m, e);
+        }
+        d.max = std::max(d.max, m);
+        if (m > 2.0 / 255.0) ++outliers;
+    }
+    d.mean /= 3.0 * double(a.pixelCount());
+    d.outlierFraction = double(outliers) / double(a.pixelCount());
+    return d;
+}
+
+// Issue target: max |Δ| ≤ 2/255 outside a small fraction of pixels (we allow
+// 0.5%: pixels whose float uv lands on the other side of a triangle edge
+// than the CPU's double uv), mean |Δ| ≤ 0.5/255.
+void expectParity(const Pattern& pattern, const View& view, const std::string& what) {
+    GpuPattern gpu(pattern, context());
+    const Difference d = compare(gpu.render(view), pattern.render(view));
+    std::printf("[ info ] %s: mean |GPU - CPU| %.2e, max %.2e, %.3f%% of pixels over 2/255\n", what.c_str(), d.mean,
+                d.max, 100.0 * d.outlierFraction);
+    EXPECT_LE(d.mean, 0.5 / 255.0) << what;
+    EXPECT_LE(d.outlierFraction, 0.005) << what << " (max |Δ| " << d.max << ")";
+}
+
+TEST(Gpu, HeadlessContextIsCore33OrNewer) {
+    const std::string d = context().describe();
+    EXPECT_NE(d.find("OpenGL"), std::string::npos);
+    std::printf("[ info ] %s\n", d.c_str());
+}
+
+TEST(Gpu, UnfilteredRenderMatchesTheCpuForPresets) {
+    for (const char* name : {"camouflage", "phasor-stripes", "woven", "marble"}) {
+        const Pattern p = Pattern::build(loadPreset(name));
+        View v;
+        v.width = 192;
+        v.height = 160;
+        expectParity(p, v, std::string(name) + " at scale 1");
+        v.scale = 3.7;
+        v.offsetU = 1234.5;
+        v.offsetV = -77.25;
+        expectParity(p, v, std::string(name) + " at scale 3.7, offset");
+    }
+}
+
+TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
+    // A bimodal exemplar: T⁻¹ must bring its plateaus back on the GPU too.
+    const fs::path dir = fs::temp_directory_path() / "stochtex_gpu_test";
+    fs::create_directories(dir);
+    Image ex(64, 64, 1);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            ex.at(x, y) = (std::sin(x * 0.3) * std::cos(y * 0.2) > 0 ? 0.8f : 0.2f) + 0.05f * float((x * 7 + y * 13) % 10) / 10.0f;
+    writeImage((dir / "bimodal.png").string(), ex, {});
+    const std::string text = R"({"name": "exemplar", "seed": 3,
+        "noise_x": {"type": "image", "path": "bimodal.png", "gaussianize": true},
+        "noise_y": {"type": "image", "path": "bimodal.png", "gaussianize": true},
+        "colormap": {"type": "gaussian"}})";
+    const Pattern p = Pattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "test"), "test"), dir));
+    ASSERT_TRUE(p.example(0).gaussianized());
+    View v;
+    v.width = v.height = 128;
+    // H = x shows T⁻¹(N_x) itself: the plateaus must be there (not a flat image).
+    const ChannelStats st = channelStats(p.render(v));
+    ASSERT_GT(st.stddev, 0.15);
+    expectParity(p, v, "gaussianized exemplar");
+    fs::remove_all(dir);
+}
+
+TEST(Gpu, BrokenShaderReportsFileAndLine) {
+    context();
+    try {
+        compileProgram({"fullscreen"}, {"common", "pattern"},
+                       {{"pattern", "void main() {\n  float x = 1.0;\n  undefined_call(x);\n}\n"}});
+        FAIL() << "a broken shader compiled";
+    } catch (const ShaderError& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("pattern:3"), std::string::npos) << msg;
+    }
+}
+
+// Every program's sources compile as GLSL 3.30 core and GLSL ES 3.00
+// (WebGL 2), checked by the reference compiler.
+TEST(Gpu, ShadersValidateAsCore330AndEs300) {
+    const fs::path dir = fs::temp_directory_path() / "stochtex_glslang";
+    fs::create_directories(dir);
+    const std::vector<std::pair<std::string, std::vector<std::string>>> stages = {
+        {"vert", {"fullscreen"}}, {"frag", {"common", "pattern"}}};
+    for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300})
+        for (const auto& [ext, files] : stages) {
+            const fs::path file = dir / ((t == GlslTarget::Core330 ? "core_" : "es_") + files.back() + "." + ext);
+            std::ofstream(file) << assembleShader(t, files);
+            const std::string cmd = "glslangValidator " + file.string() + " > " + (dir / "log.txt").string() + " 2>&1";
+            const int rc = std::system(cmd.c_str());
+            std::ifstream log(dir / "log.txt");
+            const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+            EXPECT_EQ(rc, 0) << file << ":\n" << text;
+        }
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace stochtex
