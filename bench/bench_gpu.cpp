@@ -43,5 +43,40 @@ void BM_GpuVsCpuUnfiltered(benchmark::State& state) {
 }
 BENCHMARK(BM_GpuVsCpuUnfiltered)->ArgName("size")->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
 
+// The shader filtered (isotropic paper mode, footprint `scale` texels) vs
+// unfiltered, both on the GPU, alternately in one run, 1024².
+void BM_GpuFilteredVsUnfiltered(benchmark::State& state) {
+    const Pattern p = Pattern::build(loadPreset("camouflage"));
+    std::unique_ptr<GlContext> ctx;
+    try {
+        ctx = GlContext::headless();
+    } catch (const GpuUnavailable& e) {
+        state.SkipWithError(e.what());
+        return;
+    }
+    FilterOptions o;
+    o.mode = FilterMode::Paper;
+    GpuPattern filtered(p, *ctx, o), unfiltered(p, *ctx);
+    View v;
+    v.width = v.height = 1024;
+    v.scale = double(state.range(0));
+    double tf = 0, tu = 0;
+    auto seconds = [](auto&& f) {
+        const auto a = std::chrono::steady_clock::now();
+        f();
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+    };
+    for (auto _ : state) {
+        tf += seconds([&] { benchmark::DoNotOptimize(filtered.render(v).data().data()); });
+        tu += seconds([&] { benchmark::DoNotOptimize(unfiltered.render(v).data().data()); });
+    }
+    const double texels = double(v.width) * v.height * double(state.iterations());
+    state.counters["filtered_Mtexel/s"] = texels / tf * 1e-6;
+    state.counters["unfiltered_Mtexel/s"] = texels / tu * 1e-6;
+    state.counters["ratio"] = tu / tf;
+    state.SetLabel(ctx->describe());
+}
+BENCHMARK(BM_GpuFilteredVsUnfiltered)->ArgName("scale")->Arg(1)->Arg(128)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace stochtex

@@ -48,9 +48,13 @@ Difference compare(const Image& a, const Image& b) {
 // Issue target: max |Δ| ≤ 2/255 outside a small fraction of pixels (we allow
 // 0.5%: pixels whose float uv lands on the other side of a triangle edge
 // than the CPU's double uv), mean |Δ| ≤ 0.5/255.
-void expectParity(const Pattern& pattern, const View& view, const std::string& what) {
-    GpuPattern gpu(pattern, context());
-    const Difference d = compare(gpu.render(view), pattern.render(view));
+void expectParity(const Pattern& pattern, const View& view, const std::string& what,
+                  const FilterOptions& options = GpuPattern::unfiltered()) {
+    GpuPattern gpu(pattern, context(), options);
+    Camera camera;
+    camera.view = view;
+    const Image cpu = options.mode == FilterMode::None ? pattern.render(view) : FilteredPattern(pattern, options).render(camera);
+    const Difference d = compare(gpu.render(view), cpu);
     std::printf("[ info ] %s: mean |GPU - CPU| %.2e, max %.2e, %.3f%% of pixels over 2/255\n", what.c_str(), d.mean,
                 d.max, 100.0 * d.outlierFraction);
     EXPECT_LE(d.mean, 0.5 / 255.0) << what;
@@ -77,6 +81,36 @@ TEST(Gpu, UnfilteredRenderMatchesTheCpuForPresets) {
     }
 }
 
+// Filtered: footprints from dFdx/dFdy, the estimators in GLSL and the table
+// as a texture array, against the CPU at footprints 1 to 64 texels, both
+// table modes, isotropic and anisotropic, both variance estimators.
+TEST(Gpu, FilteredRenderMatchesTheCpu) {
+    for (const char* name : {"camouflage", "phasor-stripes"}) {
+        const Pattern p = Pattern::build(loadPreset(name));
+        for (FilterMode mode : {FilterMode::Paper, FilterMode::Smooth})
+            for (double scale : {1.0, 3.0, 16.0, 64.0}) {
+                FilterOptions o;
+                o.mode = mode;
+                View v;
+                v.width = 128;
+                v.height = 96;
+                v.scale = scale;
+                v.offsetU = 321.0;
+                expectParity(p, v, std::string(name) + (mode == FilterMode::Paper ? " paper" : " smooth") + " scale " +
+                                       std::to_string(int(scale)), o);
+            }
+    }
+    const Pattern p = Pattern::build(loadPreset("woven"));
+    FilterOptions o;
+    o.mode = FilterMode::Smooth;
+    o.aniso = 8;
+    o.estimator = VarianceEstimator::DeliotHeitz;
+    View v;
+    v.width = v.height = 96;
+    v.scale = 5.0;
+    expectParity(p, v, "woven smooth K=8 deliot-heitz", o);
+}
+
 TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     // A bimodal exemplar: T⁻¹ must bring its plateaus back on the GPU too.
     const fs::path dir = fs::temp_directory_path() / "stochtex_gpu_test";
@@ -98,6 +132,10 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     const ChannelStats st = channelStats(p.render(v));
     ASSERT_GT(st.stddev, 0.15);
     expectParity(p, v, "gaussianized exemplar");
+    FilterOptions o;
+    o.mode = FilterMode::Smooth;
+    v.scale = 4.0;
+    expectParity(p, v, "gaussianized exemplar, smooth, scale 4", o);
     fs::remove_all(dir);
 }
 
@@ -119,7 +157,7 @@ TEST(Gpu, ShadersValidateAsCore330AndEs300) {
     const fs::path dir = fs::temp_directory_path() / "stochtex_glslang";
     fs::create_directories(dir);
     const std::vector<std::pair<std::string, std::vector<std::string>>> stages = {
-        {"vert", {"fullscreen"}}, {"frag", {"common", "pattern"}}};
+        {"vert", {"fullscreen"}}, {"frag", {"common", "pattern"}}, {"frag", {"common", "filtered"}}};
     for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300})
         for (const auto& [ext, files] : stages) {
             const fs::path file = dir / ((t == GlslTarget::Core330 ? "core_" : "es_") + files.back() + "." + ext);

@@ -61,6 +61,11 @@ public:
 
     size_t bytes() const;
 
+    // The statistics pyramids (for uploading to the GPU): means and
+    // variances of each noise, and the covariances when offsets are shared.
+    const StatsPyramid& pyramid(int axis) const { return pyramids_[size_t(axis)]; }
+    const StatsPyramid* covariancePyramid() const { return covariance_.get(); }
+
 private:
     std::array<TilingBlendingNoise, 2> noises_;
     std::array<StatsPyramid, 2> pyramids_;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "stochtex/core/error.h"
 #include "stochtex/gpu/shader.h"
 
 namespace stochtex {
@@ -25,6 +26,60 @@ GLuint floatTexture(int width, int height, int channels, const float* data) {
     return t;
 }
 
+// A pyramid's levels as the mip chain of one RG32F texture (mean, moment).
+GLuint pyramidTexture(const StatsPyramid& p) {
+    GLuint t = 0;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int l = 0; l < p.levels(); ++l) {
+        const Image& mean = p.meanImage(l);
+        const Image& moment = p.momentImage(l);
+        std::vector<float> rg(mean.pixelCount() * 2);
+        for (size_t i = 0; i < mean.pixelCount(); ++i) {
+            rg[2 * i] = mean.data()[i];
+            rg[2 * i + 1] = moment.data()[i];
+        }
+        glTexImage2D(GL_TEXTURE_2D, l, GL_RG32F, mean.width(), mean.height(), 0, GL_RG, GL_FLOAT, rg.data());
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, p.levels() - 1);
+    return t;
+}
+
+// Every (σ_x, σ_y) layer of the prefiltered table resampled to the
+// colormap's resolution (layers stored coarser are smooth: their bilinear
+// resampling differs from the CPU lookup by far less than a colour step).
+GLuint tableTexture(const PrefilteredColormap& table, int rx, int ry) {
+    const int n = int(table.sigmas().size());
+    std::vector<float> rgba(size_t(rx) * size_t(ry) * 4 * size_t(n) * size_t(n));
+    for (int kx = 0; kx < n; ++kx)
+        for (int ky = 0; ky < n; ++ky) {
+            const ColormapTable& layer = table.layer(kx, ky);
+            float* dst = rgba.data() + size_t(kx * n + ky) * size_t(rx) * size_t(ry) * 4;
+            const bool full = layer.resolutionX() == rx && layer.resolutionY() == ry;
+            for (int j = 0; j < ry; ++j)
+                for (int i = 0; i < rx; ++i) {
+                    const Rgb c = full ? layer.entry(i, j) : layer.sample(float(i) / float(rx - 1), float(j) / float(ry - 1));
+                    float* o = dst + (size_t(j) * size_t(rx) + size_t(i)) * 4;
+                    o[0] = c[0];
+                    o[1] = c[1];
+                    o[2] = c[2];
+                    o[3] = 1.0f;
+                }
+        }
+    GLuint t = 0;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, t);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, rx, ry, n * n, 0, GL_RGBA, GL_FLOAT, rgba.data());
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+    return t;
+}
+
 }  // namespace
 
 struct GpuPattern::Impl {
@@ -35,12 +90,40 @@ struct GpuPattern::Impl {
     bool gaussianized[2] = {false, false};
     int exampleSize = 0;
     double density = 0;
+    // Filtered rendering.
+    FilterOptions options;
+    GLuint stats[2] = {0, 0}, covariance = 0, table = 0;
+    bool shared = false;
+    int maxLod = 0, tableLevels = 0;
+    std::vector<float> average[3];  // Deliot–Heitz per-level moments: x, y, covariance
 };
 
-GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context) : impl_(std::make_unique<Impl>()) {
+GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+    if (options.mode != FilterMode::None && options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
+        throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
     context.makeCurrent();
     Impl& m = *impl_;
-    m.program = compileProgram({"fullscreen"}, {"common", "pattern"});
+    m.options = options;
+    const bool filtered = options.mode != FilterMode::None;
+    m.program = compileProgram({"fullscreen"}, {"common", filtered ? "filtered" : "pattern"});
+    if (filtered) {
+        const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table
+        const FootprintEstimator& est = f.estimator();
+        for (int a = 0; a < 2; ++a) m.stats[a] = pyramidTexture(est.pyramid(a));
+        m.shared = est.covariancePyramid() != nullptr;
+        if (m.shared) m.covariance = pyramidTexture(*est.covariancePyramid());
+        m.maxLod = est.maxLod();
+        for (int l = 0; l <= m.maxLod; ++l) {
+            m.average[0].push_back(est.pyramid(0).averageMoment(l));
+            m.average[1].push_back(est.pyramid(1).averageMoment(l));
+            m.average[2].push_back(m.shared ? est.covariancePyramid()->averageMoment(l) : 0.0f);
+        }
+        if (m.maxLod >= 16) throw InputError("--gpu: examples larger than 32768² are not supported");
+        const ColormapTable& h = f.blendingSpaceColormap();
+        m.table = tableTexture(f.table(), h.resolutionX(), h.resolutionY());
+        m.tableLevels = int(f.table().sigmas().size());
+    }
     glGenVertexArrays(1, &m.vao);
     m.exampleSize = pattern.exampleSize();
     m.density = pattern.gridDensity();
@@ -61,8 +144,9 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context) : impl_(std::
 
 GpuPattern::~GpuPattern() {
     Impl& m = *impl_;
-    GLuint textures[] = {m.examples[0], m.examples[1], m.inverses[0], m.inverses[1], m.colormap};
-    glDeleteTextures(5, textures);
+    GLuint textures[] = {m.examples[0], m.examples[1], m.inverses[0], m.inverses[1], m.colormap,
+                         m.stats[0],    m.stats[1],    m.covariance,  m.table};
+    glDeleteTextures(9, textures);  // zeros are ignored
     glDeleteVertexArrays(1, &m.vao);
     glDeleteProgram(m.program);
 }
@@ -79,19 +163,36 @@ Image GpuPattern::render(const View& view) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
     glViewport(0, 0, view.width, view.height);
     glUseProgram(m.program);
-    const char* samplers[] = {"uExampleX", "uExampleY", "uInverseX", "uInverseY", "uColormap"};
-    const GLuint textures[] = {m.examples[0], m.examples[1], m.inverses[0], m.inverses[1], m.colormap};
-    for (int k = 0; k < 5; ++k) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + k));
-        glBindTexture(GL_TEXTURE_2D, textures[k]);
-        glUniform1i(glGetUniformLocation(m.program, samplers[k]), k);
+    auto bind = [&](int unit, GLenum target, GLuint texture, const char* name) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        glBindTexture(target, texture);
+        glUniform1i(glGetUniformLocation(m.program, name), unit);
+    };
+    if (m.options.mode == FilterMode::None) {
+        const char* samplers[] = {"uExampleX", "uExampleY", "uInverseX", "uInverseY", "uColormap"};
+        const GLuint textures[] = {m.examples[0], m.examples[1], m.inverses[0], m.inverses[1], m.colormap};
+        for (int k = 0; k < 5; ++k) bind(k, GL_TEXTURE_2D, textures[k], samplers[k]);
+        glUniform1i(glGetUniformLocation(m.program, "uGaussianizedX"), m.gaussianized[0]);
+        glUniform1i(glGetUniformLocation(m.program, "uGaussianizedY"), m.gaussianized[1]);
+    } else {
+        bind(0, GL_TEXTURE_2D, m.stats[0], "uStatsX");
+        bind(1, GL_TEXTURE_2D, m.stats[1], "uStatsY");
+        bind(2, GL_TEXTURE_2D, m.shared ? m.covariance : m.stats[0], "uCovariance");
+        bind(3, GL_TEXTURE_2D_ARRAY, m.table, "uTable");
+        glUniform1i(glGetUniformLocation(m.program, "uShared"), m.shared);
+        glUniform1i(glGetUniformLocation(m.program, "uDeliotHeitz"), m.options.estimator == VarianceEstimator::DeliotHeitz);
+        glUniform1fv(glGetUniformLocation(m.program, "uAverageX"), GLsizei(m.average[0].size()), m.average[0].data());
+        glUniform1fv(glGetUniformLocation(m.program, "uAverageY"), GLsizei(m.average[1].size()), m.average[1].data());
+        glUniform1fv(glGetUniformLocation(m.program, "uAverageCov"), GLsizei(m.average[2].size()), m.average[2].data());
+        glUniform1i(glGetUniformLocation(m.program, "uMaxLod"), m.maxLod);
+        glUniform1i(glGetUniformLocation(m.program, "uAniso"), m.options.aniso);
+        glUniform1i(glGetUniformLocation(m.program, "uSmooth"), m.options.mode == FilterMode::Smooth);
+        glUniform1i(glGetUniformLocation(m.program, "uTableLevels"), m.tableLevels);
     }
     glUniform1f(glGetUniformLocation(m.program, "uMeanX"), m.means[0]);
     glUniform1f(glGetUniformLocation(m.program, "uMeanY"), m.means[1]);
     glUniform1ui(glGetUniformLocation(m.program, "uSeedX"), m.seeds[0]);
     glUniform1ui(glGetUniformLocation(m.program, "uSeedY"), m.seeds[1]);
-    glUniform1i(glGetUniformLocation(m.program, "uGaussianizedX"), m.gaussianized[0]);
-    glUniform1i(glGetUniformLocation(m.program, "uGaussianizedY"), m.gaussianized[1]);
     glUniform2f(glGetUniformLocation(m.program, "uOffset"), float(view.offsetU), float(view.offsetV));
     glUniform1f(glGetUniformLocation(m.program, "uScale"), float(view.scale));
     glUniform1f(glGetUniformLocation(m.program, "uInvW"), float(1.0 / m.exampleSize));

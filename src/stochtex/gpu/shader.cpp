@@ -35,7 +35,7 @@ namespace {
 std::string header(GlslTarget target) {
     return target == GlslTarget::Core330 ? "#version 330 core\n"
                                          : "#version 300 es\nprecision highp float;\nprecision highp int;\n"
-                                           "precision highp sampler2D;\n";
+                                           "precision highp sampler2D;\nprecision highp sampler2DArray;\n";
 }
 
 // The header, then the files one after the other. `starts[k]` is the line

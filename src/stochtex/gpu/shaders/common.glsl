@@ -61,18 +61,20 @@ vec2 tileOffset(uvec2 vertex, uint seed) {
 // Bilinear lookup of a periodic W×W grid (texel centres at (i + ½)/W) at
 // p ∈ [0, 1)², vertical interpolation first as on the CPU. Any channel count:
 // the caller picks the channels.
-vec4 periodicBilinear(sampler2D grid, vec2 p) {
-    int w = textureSize(grid, 0).x;
+vec4 periodicBilinearLod(sampler2D grid, vec2 p, int lod) {
+    int w = textureSize(grid, lod).x;
     vec2 t = p * float(w) - 0.5;
     vec2 i0 = floor(t);
     vec2 f = t - i0;
     ivec2 a = (ivec2(i0) + w) % w;
     ivec2 b = (a + 1) % w;
-    vec4 t00 = texelFetch(grid, ivec2(a.x, a.y), 0), t10 = texelFetch(grid, ivec2(b.x, a.y), 0);
-    vec4 t01 = texelFetch(grid, ivec2(a.x, b.y), 0), t11 = texelFetch(grid, ivec2(b.x, b.y), 0);
+    vec4 t00 = texelFetch(grid, ivec2(a.x, a.y), lod), t10 = texelFetch(grid, ivec2(b.x, a.y), lod);
+    vec4 t01 = texelFetch(grid, ivec2(a.x, b.y), lod), t11 = texelFetch(grid, ivec2(b.x, b.y), lod);
     vec4 left = t00 + f.y * (t01 - t00), right = t10 + f.y * (t11 - t10);
     return left + f.x * (right - left);
 }
+
+vec4 periodicBilinear(sampler2D grid, vec2 p) { return periodicBilinearLod(grid, p, 0); }
 
 // Eq. 7: N(u) = μ + Σ w_i (E(u + o_i) − μ), fu = uv reduced to one period.
 float tilingBlending(sampler2D example, float mean, uint seed, Stencil s, vec2 fu) {
