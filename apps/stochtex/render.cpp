@@ -46,7 +46,7 @@ void registerRender(CLI::App& app) {
     cmd->add_flag("--pack8", args->pack8, "Store the mean/variance pyramids in 8 bits (paper §5: RGBA8 = E_x, E_y, 16V_x, 16V_y)");
     cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
     cmd->add_flag("--gpu", args->gpu,
-                  "Render with the GLSL implementation on a headless OpenGL context (zoom view; --filter none, paper or smooth)");
+                  "Render with the GLSL implementation on a headless OpenGL context (--filter none, paper or smooth)");
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         checkImageOutput(args->output);
@@ -73,8 +73,6 @@ void registerRender(CLI::App& app) {
         validateCamera(camera);  // before building anything; FilteredPattern checks the options
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
-        if (args->gpu && camera.kind != Camera::Kind::Zoom)
-            throw InputError("--gpu: only the zoom view is implemented on the GPU so far");
         if (args->gpu && options.mode != FilterMode::None && options.mode != FilterMode::Paper &&
             options.mode != FilterMode::Smooth)
             throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
@@ -84,7 +82,7 @@ void registerRender(CLI::App& app) {
         if (args->gpu) {
             auto context = GlContext::headless();
             device = context->describe();
-            image = GpuPattern(pattern, *context, options).render(camera.view);
+            image = GpuPattern(pattern, *context, options).render(camera);
         } else {
             image = FilteredPattern(pattern, options).render(camera);
         }

@@ -11,6 +11,7 @@
 #include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
 
@@ -48,17 +49,22 @@ Difference compare(const Image& a, const Image& b) {
 // Issue target: max |Δ| ≤ 2/255 outside a small fraction of pixels (we allow
 // 0.5%: pixels whose float uv lands on the other side of a triangle edge
 // than the CPU's double uv), mean |Δ| ≤ 0.5/255.
-void expectParity(const Pattern& pattern, const View& view, const std::string& what,
-                  const FilterOptions& options = GpuPattern::unfiltered()) {
+void expectParity(const Pattern& pattern, const Camera& camera, const std::string& what,
+                  const FilterOptions& options = GpuPattern::unfiltered(), double allowedOutliers = 0.005) {
     GpuPattern gpu(pattern, context(), options);
-    Camera camera;
-    camera.view = view;
-    const Image cpu = options.mode == FilterMode::None ? pattern.render(view) : FilteredPattern(pattern, options).render(camera);
-    const Difference d = compare(gpu.render(view), cpu);
+    const Image cpu = FilteredPattern(pattern, options).render(camera);
+    const Difference d = compare(gpu.render(camera), cpu);
     std::printf("[ info ] %s: mean |GPU - CPU| %.2e, max %.2e, %.3f%% of pixels over 2/255\n", what.c_str(), d.mean,
                 d.max, 100.0 * d.outlierFraction);
     EXPECT_LE(d.mean, 0.5 / 255.0) << what;
-    EXPECT_LE(d.outlierFraction, 0.005) << what << " (max |Δ| " << d.max << ")";
+    EXPECT_LE(d.outlierFraction, allowedOutliers) << what << " (max |Δ| " << d.max << ")";
+}
+
+void expectParity(const Pattern& pattern, const View& view, const std::string& what,
+                  const FilterOptions& options = GpuPattern::unfiltered()) {
+    Camera camera;
+    camera.view = view;
+    expectParity(pattern, camera, what, options);
 }
 
 TEST(Gpu, HeadlessContextIsCore33OrNewer) {
@@ -109,6 +115,41 @@ TEST(Gpu, FilteredRenderMatchesTheCpu) {
     v.width = v.height = 96;
     v.scale = 5.0;
     expectParity(p, v, "woven smooth K=8 deliot-heitz", o);
+}
+
+// The perspective plane: footprints grow and turn anisotropic towards the
+// horizon; J comes from the rasterizer's derivatives (one-sided, per 2×2
+// quad) on the GPU and from central differences on the CPU. Isotropic
+// filtering meets the issue's tolerance. With K = 8 the probe count
+// N = ⌈P_max/P_min⌉ jumps by one where the two J differ slightly (the OpenGL
+// rule is discontinuous there), so a few percent of pixels take a different
+// probe layout: held to a looser, documented bound (mean ≤ 1/255, ≤ 5% of
+// pixels over 2/255).
+TEST(Gpu, PlaneViewMatchesTheCpu) {
+    const Pattern p = Pattern::build(loadPreset("marble"));
+    for (double tilt : {55.0, 70.0}) {
+        Camera c;
+        c.kind = Camera::Kind::Plane;
+        c.tiltDeg = tilt;
+        c.view.width = 160;
+        c.view.height = 120;
+        c.view.scale = 2.0;
+        FilterOptions o;
+        o.mode = FilterMode::Smooth;
+        expectParity(p, c, "plane " + std::to_string(int(tilt)) + "°, smooth, K = 1", o);
+        o.aniso = 8;
+        GpuPattern gpu(p, context(), o);
+        const Difference d = compare(gpu.render(c), FilteredPattern(p, o).render(c));
+        std::printf("[ info ] plane %d°, smooth, K = 8: mean %.2e, %.3f%% over 2/255\n", int(tilt), d.mean,
+                    100.0 * d.outlierFraction);
+        EXPECT_LE(d.mean, 1.0 / 255.0);
+        EXPECT_LE(d.outlierFraction, 0.05);
+    }
+    Camera c;
+    c.kind = Camera::Kind::Plane;
+    c.tiltDeg = 50;
+    c.view.width = c.view.height = 96;
+    expectParity(p, c, "plane 50°, unfiltered", GpuPattern::unfiltered());
 }
 
 TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {

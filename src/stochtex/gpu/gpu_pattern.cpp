@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/shader.h"
@@ -90,6 +91,7 @@ struct GpuPattern::Impl {
     bool gaussianized[2] = {false, false};
     int exampleSize = 0;
     double density = 0;
+    Rgb sky{};
     // Filtered rendering.
     FilterOptions options;
     GLuint stats[2] = {0, 0}, covariance = 0, table = 0;
@@ -107,8 +109,9 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     m.options = options;
     const bool filtered = options.mode != FilterMode::None;
     m.program = compileProgram({"fullscreen"}, {"common", filtered ? "filtered" : "pattern"});
+    const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
+    m.sky = f.skyColour();
     if (filtered) {
-        const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table
         const FootprintEstimator& est = f.estimator();
         for (int a = 0; a < 2; ++a) m.stats[a] = pyramidTexture(est.pyramid(a));
         m.shared = est.covariancePyramid() != nullptr;
@@ -152,7 +155,14 @@ GpuPattern::~GpuPattern() {
 }
 
 Image GpuPattern::render(const View& view) {
-    validateView(view, "render --gpu");
+    Camera camera;
+    camera.view = view;
+    return render(camera);
+}
+
+Image GpuPattern::render(const Camera& camera) {
+    validateCamera(camera);
+    const View& view = camera.view;
     Impl& m = *impl_;
     GLuint target = 0, fbo = 0;
     glGenTextures(1, &target);
@@ -193,6 +203,13 @@ Image GpuPattern::render(const View& view) {
     glUniform1f(glGetUniformLocation(m.program, "uMeanY"), m.means[1]);
     glUniform1ui(glGetUniformLocation(m.program, "uSeedX"), m.seeds[0]);
     glUniform1ui(glGetUniformLocation(m.program, "uSeedY"), m.seeds[1]);
+    const double pi = 3.14159265358979323846;
+    glUniform1i(glGetUniformLocation(m.program, "uPlane"), camera.kind == Camera::Kind::Plane);
+    glUniform1f(glGetUniformLocation(m.program, "uTanHalfFov"), float(std::tan(0.5 * camera.fovDeg * pi / 180.0)));
+    glUniform1f(glGetUniformLocation(m.program, "uSinTilt"), float(std::sin(camera.tiltDeg * pi / 180.0)));
+    glUniform1f(glGetUniformLocation(m.program, "uCosTilt"), float(std::cos(camera.tiltDeg * pi / 180.0)));
+    glUniform2f(glGetUniformLocation(m.program, "uViewSize"), float(view.width), float(view.height));
+    glUniform3f(glGetUniformLocation(m.program, "uSky"), m.sky[0], m.sky[1], m.sky[2]);
     glUniform2f(glGetUniformLocation(m.program, "uOffset"), float(view.offsetU), float(view.offsetV));
     glUniform1f(glGetUniformLocation(m.program, "uScale"), float(view.scale));
     glUniform1f(glGetUniformLocation(m.program, "uInvW"), float(1.0 / m.exampleSize));

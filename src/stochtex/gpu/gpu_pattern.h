@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/pattern.h"
 
@@ -28,8 +29,10 @@ public:
     GpuPattern(const GpuPattern&) = delete;
     GpuPattern& operator=(const GpuPattern&) = delete;
 
-    // The zoom view mapping of Pattern::render / FilteredPattern::render; RGB float.
-    Image render(const View& view);
+    // The camera mapping of FilteredPattern::render (zoom or plane); RGB float.
+    // Footprints come from the rasterizer's derivatives of uv.
+    Image render(const Camera& camera);
+    Image render(const View& view);  // zoom
 
 private:
     struct Impl;

@@ -1,4 +1,4 @@
-// The filtered pattern Ŝ = H̄(μ̂, σ̂) (paper §4–5) for the zoom view: the
+// The filtered pattern Ŝ = H̄(μ̂, σ̂) (paper §4–5): the
 // footprint comes from the rasterizer's derivatives of uv, is split into
 // OpenGL-style anisotropic probes, each probe into two pyramid levels
 // (trilinear), and the texel statistics of eq. 8, 12, 17 are combined by
@@ -15,9 +15,6 @@ uniform int uMaxLod;
 uniform int uAniso;            // K
 uniform bool uSmooth;          // smooth table (else paper)
 uniform int uTableLevels;      // σ levels per axis
-uniform vec2 uOffset;
-uniform float uScale;
-uniform float uInvW;
 uniform float uDensity;
 
 layout(location = 0) out vec4 fragColor;
@@ -83,8 +80,13 @@ vec3 prefiltered(vec2 mu, vec2 sigma) {
 }
 
 void main() {
-    vec2 uv = (uOffset + gl_FragCoord.xy * uScale) * uInvW;
-    vec2 jx = dFdx(uv), jy = dFdy(uv);
+    bool sky;
+    vec2 uv = viewUv(gl_FragCoord.xy, sky);
+    vec2 jx = dFdx(uv), jy = dFdy(uv);  // before any branch: derivatives need the whole quad
+    if (sky) {
+        fragColor = vec4(uSky, 1.0);
+        return;
+    }
     float w = 1.0 / uInvW;
     // OpenGL anisotropic filtering (EXT_texture_filter_anisotropic).
     float px = w * length(jx), py = w * length(jy);

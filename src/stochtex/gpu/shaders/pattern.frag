@@ -1,20 +1,21 @@
-// The unfiltered pattern S = H(N_x, N_y) at each pixel centre (the zoom
-// view of the CPU renderer: uv = (offset + (p + ½)·scale) / W).
+// The unfiltered pattern S = H(N_x, N_y) at each pixel centre.
 uniform sampler2D uExampleX, uExampleY;   // R32F, W×W
 uniform sampler2D uInverseX, uInverseY;   // T⁻¹ LUTs (n × 1)
 uniform sampler2D uColormap;              // RGB32F table
 uniform float uMeanX, uMeanY;
 uniform uint uSeedX, uSeedY;
 uniform bool uGaussianizedX, uGaussianizedY;
-uniform vec2 uOffset;                     // texels
-uniform float uScale;                     // texels per pixel
-uniform float uInvW;                      // 1 / W
 uniform float uDensity;                   // grid density (2√3)
 
 layout(location = 0) out vec4 fragColor;
 
 void main() {
-    vec2 uv = (uOffset + gl_FragCoord.xy * uScale) * uInvW;
+    bool sky;
+    vec2 uv = viewUv(gl_FragCoord.xy, sky);
+    if (sky) {
+        fragColor = vec4(uSky, 1.0);
+        return;
+    }
     Stencil s = triangleGrid(uv, uDensity);
     vec2 fu = fract(uv);
     float nx = tilingBlending(uExampleX, uMeanX, uSeedX, s, fu);
