@@ -83,6 +83,9 @@ void main() {
     bool sky;
     vec2 uv = viewUv(gl_FragCoord.xy, sky);
     vec2 jx = dFdx(uv), jy = dFdy(uv);  // before any branch: derivatives need the whole quad
+    // A neighbour in the quad past the horizon gives non-finite derivatives:
+    // sky, as the CPU's rule (any of the ±½-pixel points misses the plane).
+    sky = sky || any(isinf(jx)) || any(isnan(jx)) || any(isinf(jy)) || any(isnan(jy));
     if (sky) {
         fragColor = vec4(uSky, 1.0);
         return;
@@ -95,7 +98,7 @@ void main() {
     int n = 1;
     if (uAniso > 1 && pmin > 0.0) n = int(min(ceil(pmax / pmin - 1e-6), float(uAniso)));
     else if (uAniso > 1 && pmax > 0.0) n = uAniso;
-    n = max(n, 1);
+    n = clamp(n, 1, max(uAniso, 1));
     float rho = pmax / float(n);
     float lod = rho > 0.0 ? clamp(log2(rho), 0.0, float(uMaxLod)) : 0.0;
     vec2 axis = xMajor ? jx : jy;
