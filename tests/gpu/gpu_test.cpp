@@ -183,7 +183,7 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
 TEST(Gpu, BrokenShaderReportsFileAndLine) {
     context();
     try {
-        compileProgram({"fullscreen"}, {"common", "pattern"},
+        compileProgram({"fullscreen"}, {"common", "unfiltered", "pattern"},
                        {{"pattern", "void main() {\n  float x = 1.0;\n  undefined_call(x);\n}\n"}});
         FAIL() << "a broken shader compiled";
     } catch (const ShaderError& e) {
@@ -198,7 +198,7 @@ TEST(Gpu, ShadersValidateAsCore330AndEs300) {
     const fs::path dir = fs::temp_directory_path() / "stochtex_glslang";
     fs::create_directories(dir);
     const std::vector<std::pair<std::string, std::vector<std::string>>> stages = {
-        {"vert", {"fullscreen"}}, {"frag", {"common", "pattern"}}, {"frag", {"common", "filtered"}}};
+        {"vert", {"fullscreen"}}, {"frag", {"common", "unfiltered", "pattern"}}, {"frag", {"common", "filtering", "filtered"}}};
     for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300})
         for (const auto& [ext, files] : stages) {
             const fs::path file = dir / ((t == GlslTarget::Core330 ? "core_" : "es_") + files.back() + "." + ext);

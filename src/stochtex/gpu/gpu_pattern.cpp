@@ -108,7 +108,8 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     Impl& m = *impl_;
     m.options = options;
     const bool filtered = options.mode != FilterMode::None;
-    m.program = compileProgram({"fullscreen"}, {"common", filtered ? "filtered" : "pattern"});
+    m.program = compileProgram({"fullscreen"}, filtered ? std::vector<std::string>{"common", "filtering", "filtered"}
+                                                       : std::vector<std::string>{"common", "unfiltered", "pattern"});
     const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
     m.sky = f.skyColour();
     if (filtered) {

@@ -109,6 +109,11 @@ vec3 colormapLookup(sampler2D table, vec2 xy) {
     return top + t.y * (bottom - top);
 }
 
+// The pattern's noises: means, offset seeds, the tiling grid's density.
+uniform float uMeanX, uMeanY;
+uniform uint uSeedX, uSeedY;
+uniform float uDensity;
+
 // The camera (pattern/camera.cpp): pixel centre → uv in example periods.
 // Zoom: uv = (offset + p·scale)/W. Plane: the ground point seen through p by
 // a pinhole camera tilted by uTilt from looking straight down; `sky` when
