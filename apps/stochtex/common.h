@@ -55,5 +55,6 @@ void registerCorrelation(CLI::App& app);
 void registerContrast(CLI::App& app);
 void registerAnalyze(CLI::App& app);
 void registerReproduce(CLI::App& app);
+void registerScene(CLI::App& app);
 
 }  // namespace stochtex::cli

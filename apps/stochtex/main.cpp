@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerContrast(app);
     stochtex::cli::registerAnalyze(app);
     stochtex::cli::registerReproduce(app);
+    stochtex::cli::registerScene(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -37,7 +37,7 @@ out=$work/out
 mkdir -p "$out"
 
 # --- help on every command ---
-for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce; do
+for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene; do
   "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
 done
 
@@ -93,6 +93,7 @@ grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: inde
 # --- GPU (headless OpenGL: Mesa llvmpipe without a GPU) ---
 expect_ok "render --gpu" "$out/gpu.png" -- "$bin" render --preset camouflage --gpu --size 96 -o "$out/gpu.png"
 expect_ok "render --gpu --filter smooth" "$out/gpu2.png" -- "$bin" render --preset marble --gpu --filter smooth --scale 8 --size 96 -o "$out/gpu2.png"
+expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
 expect_ok "render --gpu plane" "$out/gpu3.png" -- "$bin" render --preset marble --gpu --filter paper --view plane --tilt 70 --aniso 8 --size 96 -o "$out/gpu3.png"
 
 # --- bad input ---
@@ -131,6 +132,7 @@ expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: every n must be 
 expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
 expect_bad "reproduce zero count" "$out/rbad2" "--count must be in [1, 1e6]" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
 expect_bad "gpu with the reference" "$out/gbad.png" "--gpu: the GPU renders --filter none, paper or smooth" -- "$bin" render --preset camouflage --gpu --filter reference -o "$out/gbad.png"
+expect_bad "scene unknown object" "$out/sbad.png" '--object: unknown "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
 
 if [ $failures -ne 0 ]; then
   echo "$failures CLI check(s) failed"

@@ -2,6 +2,7 @@
 // machine has (Mesa llvmpipe in CI), and the shaders' portability.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -9,6 +10,7 @@
 
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_pattern.h"
+#include "stochtex/core/error.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/filtered_pattern.h"
@@ -180,6 +182,38 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     fs::remove_all(dir);
 }
 
+// Paper Fig. 15: the pattern on lit objects. The object covers the expected
+// part of the image, carries the pattern's colours, and renders the same
+// every time.
+TEST(Gpu, SceneRendersObjects) {
+    const Pattern p = Pattern::build(loadPreset("weld"));
+    FilterOptions o;
+    o.mode = FilterMode::Smooth;
+    GpuPattern gpu(p, context(), o);
+    for (const char* name : {"sphere", "torus", "plane"}) {
+        const Image img = gpu.renderScene(makeObject(name), SceneCamera{}, 160, 120, 4.0f);
+        ASSERT_EQ(img.width(), 160);
+        ASSERT_EQ(img.height(), 120);
+        int covered = 0;
+        double saturation = 0;
+        for (int y = 0; y < 120; ++y)
+            for (int x = 0; x < 160; ++x) {
+                const float r = img.at(x, y, 0), g = img.at(x, y, 1), b = img.at(x, y, 2);
+                if (std::abs(r - 0.08f) + std::abs(g - 0.09f) + std::abs(b - 0.11f) > 0.02f) {
+                    ++covered;
+                    saturation += std::max({r, g, b}) - std::min({r, g, b});
+                }
+            }
+        const double fraction = covered / (160.0 * 120.0);
+        EXPECT_GT(fraction, 0.1) << name;
+        EXPECT_LT(fraction, 0.95) << name;
+        EXPECT_GT(saturation / std::max(covered, 1), 0.1) << name << ": the weld colours should show";
+        EXPECT_EQ(gpu.renderScene(makeObject(name), SceneCamera{}, 160, 120, 4.0f).data(), img.data()) << name;
+    }
+    EXPECT_THROW(makeObject("cube"), InputError);
+    EXPECT_THROW(gpu.renderScene(makeObject("sphere"), SceneCamera{}, 16, 16, -1.0f), InputError);
+}
+
 TEST(Gpu, BrokenShaderReportsFileAndLine) {
     context();
     try {
@@ -198,7 +232,8 @@ TEST(Gpu, ShadersValidateAsCore330AndEs300) {
     const fs::path dir = fs::temp_directory_path() / "stochtex_glslang";
     fs::create_directories(dir);
     const std::vector<std::pair<std::string, std::vector<std::string>>> stages = {
-        {"vert", {"fullscreen"}}, {"frag", {"common", "unfiltered", "pattern"}}, {"frag", {"common", "filtering", "filtered"}}};
+        {"vert", {"fullscreen"}}, {"frag", {"common", "unfiltered", "pattern"}}, {"frag", {"common", "filtering", "filtered"}},
+        {"vert", {"mesh"}},       {"frag", {"common", "unfiltered", "filtering", "scene"}}};
     for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300})
         for (const auto& [ext, files] : stages) {
             const fs::path file = dir / ((t == GlslTarget::Core330 ? "core_" : "es_") + files.back() + "." + ext);

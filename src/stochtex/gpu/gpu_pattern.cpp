@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <numbers>
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/shader.h"
@@ -84,7 +86,7 @@ GLuint tableTexture(const PrefilteredColormap& table, int rx, int ry) {
 }  // namespace
 
 struct GpuPattern::Impl {
-    GLuint program = 0, vao = 0;
+    GLuint program = 0, vao = 0, sceneProgram = 0;
     GLuint examples[2] = {0, 0}, inverses[2] = {0, 0}, colormap = 0;
     float means[2] = {0, 0};
     uint32_t seeds[2] = {0, 0};
@@ -153,6 +155,7 @@ GpuPattern::~GpuPattern() {
     glDeleteTextures(9, textures);  // zeros are ignored
     glDeleteVertexArrays(1, &m.vao);
     glDeleteProgram(m.program);
+    if (m.sceneProgram) glDeleteProgram(m.sceneProgram);
 }
 
 Image GpuPattern::render(const View& view) {
@@ -161,74 +164,143 @@ Image GpuPattern::render(const View& view) {
     return render(camera);
 }
 
-Image GpuPattern::render(const Camera& camera) {
-    validateCamera(camera);
-    const View& view = camera.view;
-    Impl& m = *impl_;
-    GLuint target = 0, fbo = 0;
+void GpuPattern::bind(unsigned program) const {
+    const Impl& m = *impl_;
+    glUseProgram(program);
+    auto bindTexture = [&](int unit, GLenum target, GLuint texture, const char* name) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        glBindTexture(target, texture);
+        glUniform1i(glGetUniformLocation(program, name), unit);
+    };
+    auto uniform = [&](const char* name) { return glGetUniformLocation(program, name); };
+    const char* samplers[] = {"uExampleX", "uExampleY", "uInverseX", "uInverseY", "uColormap"};
+    const GLuint textures[] = {m.examples[0], m.examples[1], m.inverses[0], m.inverses[1], m.colormap};
+    for (int k = 0; k < 5; ++k) bindTexture(k, GL_TEXTURE_2D, textures[k], samplers[k]);
+    glUniform1i(uniform("uGaussianizedX"), m.gaussianized[0]);
+    glUniform1i(uniform("uGaussianizedY"), m.gaussianized[1]);
+    if (m.options.mode != FilterMode::None) {
+        bindTexture(5, GL_TEXTURE_2D, m.stats[0], "uStatsX");
+        bindTexture(6, GL_TEXTURE_2D, m.stats[1], "uStatsY");
+        bindTexture(7, GL_TEXTURE_2D, m.shared ? m.covariance : m.stats[0], "uCovariance");
+        bindTexture(8, GL_TEXTURE_2D_ARRAY, m.table, "uTable");
+        glUniform1i(uniform("uShared"), m.shared);
+        glUniform1i(uniform("uDeliotHeitz"), m.options.estimator == VarianceEstimator::DeliotHeitz);
+        glUniform1fv(uniform("uAverageX"), GLsizei(m.average[0].size()), m.average[0].data());
+        glUniform1fv(uniform("uAverageY"), GLsizei(m.average[1].size()), m.average[1].data());
+        glUniform1fv(uniform("uAverageCov"), GLsizei(m.average[2].size()), m.average[2].data());
+        glUniform1i(uniform("uMaxLod"), m.maxLod);
+        glUniform1i(uniform("uAniso"), m.options.aniso);
+        glUniform1i(uniform("uSmooth"), m.options.mode == FilterMode::Smooth);
+        glUniform1i(uniform("uTableLevels"), m.tableLevels);
+    }
+    glUniform1f(uniform("uMeanX"), m.means[0]);
+    glUniform1f(uniform("uMeanY"), m.means[1]);
+    glUniform1ui(uniform("uSeedX"), m.seeds[0]);
+    glUniform1ui(uniform("uSeedY"), m.seeds[1]);
+    glUniform1f(uniform("uInvW"), float(1.0 / m.exampleSize));
+    glUniform1f(uniform("uDensity"), float(m.density));
+    glUniform3f(uniform("uSky"), m.sky[0], m.sky[1], m.sky[2]);
+}
+
+Image GpuPattern::draw(int width, int height, bool depth, const std::function<void()>& drawCalls) const {
+    GLuint target = 0, fbo = 0, depthBuffer = 0;
     glGenTextures(1, &target);
     glBindTexture(GL_TEXTURE_2D, target);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, view.width, view.height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
-    glViewport(0, 0, view.width, view.height);
-    glUseProgram(m.program);
-    auto bind = [&](int unit, GLenum target, GLuint texture, const char* name) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        glBindTexture(target, texture);
-        glUniform1i(glGetUniformLocation(m.program, name), unit);
-    };
-    if (m.options.mode == FilterMode::None) {
-        const char* samplers[] = {"uExampleX", "uExampleY", "uInverseX", "uInverseY", "uColormap"};
-        const GLuint textures[] = {m.examples[0], m.examples[1], m.inverses[0], m.inverses[1], m.colormap};
-        for (int k = 0; k < 5; ++k) bind(k, GL_TEXTURE_2D, textures[k], samplers[k]);
-        glUniform1i(glGetUniformLocation(m.program, "uGaussianizedX"), m.gaussianized[0]);
-        glUniform1i(glGetUniformLocation(m.program, "uGaussianizedY"), m.gaussianized[1]);
-    } else {
-        bind(0, GL_TEXTURE_2D, m.stats[0], "uStatsX");
-        bind(1, GL_TEXTURE_2D, m.stats[1], "uStatsY");
-        bind(2, GL_TEXTURE_2D, m.shared ? m.covariance : m.stats[0], "uCovariance");
-        bind(3, GL_TEXTURE_2D_ARRAY, m.table, "uTable");
-        glUniform1i(glGetUniformLocation(m.program, "uShared"), m.shared);
-        glUniform1i(glGetUniformLocation(m.program, "uDeliotHeitz"), m.options.estimator == VarianceEstimator::DeliotHeitz);
-        glUniform1fv(glGetUniformLocation(m.program, "uAverageX"), GLsizei(m.average[0].size()), m.average[0].data());
-        glUniform1fv(glGetUniformLocation(m.program, "uAverageY"), GLsizei(m.average[1].size()), m.average[1].data());
-        glUniform1fv(glGetUniformLocation(m.program, "uAverageCov"), GLsizei(m.average[2].size()), m.average[2].data());
-        glUniform1i(glGetUniformLocation(m.program, "uMaxLod"), m.maxLod);
-        glUniform1i(glGetUniformLocation(m.program, "uAniso"), m.options.aniso);
-        glUniform1i(glGetUniformLocation(m.program, "uSmooth"), m.options.mode == FilterMode::Smooth);
-        glUniform1i(glGetUniformLocation(m.program, "uTableLevels"), m.tableLevels);
+    if (depth) {
+        glGenRenderbuffers(1, &depthBuffer);
+        glBindRenderbuffer(GL_RENDERBUFFER, depthBuffer);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer);
     }
-    glUniform1f(glGetUniformLocation(m.program, "uMeanX"), m.means[0]);
-    glUniform1f(glGetUniformLocation(m.program, "uMeanY"), m.means[1]);
-    glUniform1ui(glGetUniformLocation(m.program, "uSeedX"), m.seeds[0]);
-    glUniform1ui(glGetUniformLocation(m.program, "uSeedY"), m.seeds[1]);
-    const double pi = 3.14159265358979323846;
-    glUniform1i(glGetUniformLocation(m.program, "uPlane"), camera.kind == Camera::Kind::Plane);
-    glUniform1f(glGetUniformLocation(m.program, "uTanHalfFov"), float(std::tan(0.5 * camera.fovDeg * pi / 180.0)));
-    glUniform1f(glGetUniformLocation(m.program, "uSinTilt"), float(std::sin(camera.tiltDeg * pi / 180.0)));
-    glUniform1f(glGetUniformLocation(m.program, "uCosTilt"), float(std::cos(camera.tiltDeg * pi / 180.0)));
-    glUniform2f(glGetUniformLocation(m.program, "uViewSize"), float(view.width), float(view.height));
-    glUniform3f(glGetUniformLocation(m.program, "uSky"), m.sky[0], m.sky[1], m.sky[2]);
-    glUniform2f(glGetUniformLocation(m.program, "uOffset"), float(view.offsetU), float(view.offsetV));
-    glUniform1f(glGetUniformLocation(m.program, "uScale"), float(view.scale));
-    glUniform1f(glGetUniformLocation(m.program, "uInvW"), float(1.0 / m.exampleSize));
-    glUniform1f(glGetUniformLocation(m.program, "uDensity"), float(m.density));
-    glBindVertexArray(m.vao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<float> rgba(size_t(view.width) * size_t(view.height) * 4);
+    glViewport(0, 0, width, height);
+    drawCalls();
+    std::vector<float> rgba(size_t(width) * size_t(height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, view.width, view.height, GL_RGBA, GL_FLOAT, rgba.data());
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &fbo);
     glDeleteTextures(1, &target);
-    // Framebuffer row y is image row y: the shader maps fragment y to v the
-    // way the CPU maps image rows.
-    Image out(view.width, view.height, 3, Image::Uninitialized{});
+    if (depthBuffer) glDeleteRenderbuffers(1, &depthBuffer);
+    Image out(width, height, 3, Image::Uninitialized{});
     for (size_t i = 0; i < out.pixelCount(); ++i)
         for (size_t c = 0; c < 3; ++c) out.data()[3 * i + c] = rgba[4 * i + c];
     return out;
+}
+
+Image GpuPattern::render(const Camera& camera) {
+    validateCamera(camera);
+    const View& view = camera.view;
+    const Impl& m = *impl_;
+    // Framebuffer row y is image row y: the shader maps fragment y to v the
+    // way the CPU maps image rows.
+    return draw(view.width, view.height, false, [&] {
+        bind(m.program);
+        auto uniform = [&](const char* name) { return glGetUniformLocation(m.program, name); };
+        const double pi = std::numbers::pi;
+        glUniform1i(uniform("uPlane"), camera.kind == Camera::Kind::Plane);
+        glUniform1f(uniform("uTanHalfFov"), float(std::tan(0.5 * camera.fovDeg * pi / 180.0)));
+        glUniform1f(uniform("uSinTilt"), float(std::sin(camera.tiltDeg * pi / 180.0)));
+        glUniform1f(uniform("uCosTilt"), float(std::cos(camera.tiltDeg * pi / 180.0)));
+        glUniform2f(uniform("uViewSize"), float(view.width), float(view.height));
+        glUniform2f(uniform("uOffset"), float(view.offsetU), float(view.offsetV));
+        glUniform1f(uniform("uScale"), float(view.scale));
+        glBindVertexArray(m.vao);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    });
+}
+
+Image GpuPattern::renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling) {
+    if (width < 1 || height < 1 || width > 8192 || height > 8192)
+        throw InputError("scene: image size must be in [1, 8192] per side");
+    if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
+        throw InputError("--tiling must be a finite number in (0, 1e4]");
+    Impl& m = *impl_;
+    if (!m.sceneProgram)
+        m.sceneProgram = compileProgram({"mesh"}, {"common", "unfiltered", "filtering", "scene"});
+    GLuint vao = 0, buffers[2] = {0, 0};
+    glGenVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    glGenBuffers(2, buffers);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(float)), mesh.vertices.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[1]);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
+                 GL_STATIC_DRAW);
+    const GLsizei stride = Mesh::kStride * sizeof(float);
+    const int sizes[3] = {3, 3, 2}, offsets[3] = {0, 3, 6};
+    for (GLuint a = 0; a < 3; ++a) {
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(size_t(offsets[a]) * sizeof(float)));
+    }
+    Image img = draw(width, height, true, [&] {
+        glClearColor(0.08f, 0.09f, 0.11f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        bind(m.sceneProgram);
+        auto uniform = [&](const char* name) { return glGetUniformLocation(m.sceneProgram, name); };
+        const Mat4 vp = camera.viewProjection(float(width) / float(height));
+        glUniformMatrix4fv(uniform("uViewProjection"), 1, GL_FALSE, vp.data());
+        glUniform1f(uniform("uTiling"), tiling);
+        glUniform1i(uniform("uFiltered"), m.options.mode != FilterMode::None);
+        const float l[3] = {0.45f, 0.8f, 0.4f};
+        const float n = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+        glUniform3f(uniform("uLight"), l[0] / n, l[1] / n, l[2] / n);
+        glUniform3f(uniform("uEye"), camera.eye[0], camera.eye[1], camera.eye[2]);
+        glBindVertexArray(vao);
+        glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, nullptr);
+        glDisable(GL_DEPTH_TEST);
+    });
+    glDeleteBuffers(2, buffers);
+    glDeleteVertexArrays(1, &vao);
+    // GL's row 0 is the bottom of the picture: flip for an image file.
+    Image flipped(width, height, 3, Image::Uninitialized{});
+    for (int y = 0; y < height; ++y) std::copy_n(img.row(height - 1 - y), size_t(width) * 3, flipped.row(y));
+    return flipped;
 }
 
 }  // namespace stochtex

@@ -6,9 +6,11 @@
 // full resolution), footprints from the rasterizer's derivatives. Each
 // render draws one fragment per pixel into a float framebuffer and reads it
 // back.
+#include <functional>
 #include <memory>
 
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/scene.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/pattern.h"
@@ -33,8 +35,17 @@ public:
     // Footprints come from the rasterizer's derivatives of uv.
     Image render(const Camera& camera);
     Image render(const View& view);  // zoom
+    // The pattern on a lit mesh (uv × tiling example periods), seen by a
+    // perspective camera; 3 channels, row 0 at the top.
+    Image renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling);
 
 private:
+    // Binds every texture and uniform of the pattern to `program` (both the
+    // unfiltered and the filtered sets: a program ignores what it lacks).
+    void bind(unsigned program) const;
+    // Renders into a float framebuffer (with a depth buffer if asked) and
+    // reads it back.
+    Image draw(int width, int height, bool depth, const std::function<void()>& drawCalls) const;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
