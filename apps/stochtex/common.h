@@ -56,5 +56,6 @@ void registerContrast(CLI::App& app);
 void registerAnalyze(CLI::App& app);
 void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
+void registerView(CLI::App& app);
 
 }  // namespace stochtex::cli

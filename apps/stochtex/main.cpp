@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerAnalyze(app);
     stochtex::cli::registerReproduce(app);
     stochtex::cli::registerScene(app);
+    stochtex::cli::registerView(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

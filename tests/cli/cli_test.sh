@@ -37,7 +37,7 @@ out=$work/out
 mkdir -p "$out"
 
 # --- help on every command ---
-for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene; do
+for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene view; do
   "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
 done
 
@@ -93,6 +93,8 @@ grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: inde
 # --- GPU (headless OpenGL: Mesa llvmpipe without a GPU) ---
 expect_ok "render --gpu" "$out/gpu.png" -- "$bin" render --preset camouflage --gpu --size 96 -o "$out/gpu.png"
 expect_ok "render --gpu --filter smooth" "$out/gpu2.png" -- "$bin" render --preset marble --gpu --filter smooth --scale 8 --size 96 -o "$out/gpu2.png"
+# The window, under a virtual X server.
+expect_ok "view under Xvfb" "$out/view.png" -- xvfb-run -a -s "-screen 0 640x480x24" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
 expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
 expect_ok "render --gpu plane" "$out/gpu3.png" -- "$bin" render --preset marble --gpu --filter paper --view plane --tilt 70 --aniso 8 --size 96 -o "$out/gpu3.png"
 

@@ -2,6 +2,9 @@
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
+// GLFW after epoxy: epoxy provides the GL declarations.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 #include <vector>
 
@@ -10,6 +13,7 @@ namespace stochtex {
 struct GlContext::Impl {
     EGLDisplay display = EGL_NO_DISPLAY;
     EGLContext context = EGL_NO_CONTEXT;
+    GLFWwindow* window = nullptr;
 };
 
 namespace {
@@ -69,14 +73,60 @@ std::unique_ptr<GlContext> GlContext::headless() {
                          "); install Mesa (libegl-mesa0, libgl1-mesa-dri) or a GPU driver");
 }
 
+std::unique_ptr<GlContext> GlContext::window(int width, int height, const std::string& title) {
+    if (!glfwInit()) throw GpuUnavailable("view: GLFW could not start (no display? run under a desktop or xvfb-run)");
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow* w = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!w) {
+        glfwTerminate();
+        throw GpuUnavailable("view: no OpenGL 3.3 core window could be created");
+    }
+    glfwMakeContextCurrent(w);
+    glfwSwapInterval(1);
+    std::unique_ptr<GlContext> ctx(new GlContext);
+    ctx->impl_ = std::make_unique<Impl>();
+    ctx->impl_->window = w;
+    return ctx;
+}
+
+bool GlContext::shouldClose() const { return impl_->window && glfwWindowShouldClose(impl_->window); }
+
+void GlContext::swapAndPoll() {
+    if (!impl_->window) return;
+    glfwSwapBuffers(impl_->window);
+    glfwPollEvents();
+}
+
+void GlContext::setTitle(const std::string& title) {
+    if (impl_->window) glfwSetWindowTitle(impl_->window, title.c_str());
+}
+
+void GlContext::framebufferSize(int& width, int& height) const {
+    width = height = 0;
+    if (impl_->window) glfwGetFramebufferSize(impl_->window, &width, &height);
+}
+
+void* GlContext::nativeWindow() const { return impl_->window; }
+
 GlContext::~GlContext() {
+    if (impl_ && impl_->window) {
+        glfwDestroyWindow(impl_->window);
+        glfwTerminate();
+        return;
+    }
     if (impl_ && impl_->context != EGL_NO_CONTEXT) {
         eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(impl_->display, impl_->context);
     }
 }
 
-void GlContext::makeCurrent() { eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context); }
+void GlContext::makeCurrent() {
+    if (impl_->window) glfwMakeContextCurrent(impl_->window);
+    else eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context);
+}
 
 std::string GlContext::describe() const {
     const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));

@@ -234,10 +234,15 @@ Image GpuPattern::draw(int width, int height, bool depth, const std::function<vo
 Image GpuPattern::render(const Camera& camera) {
     validateCamera(camera);
     const View& view = camera.view;
-    const Impl& m = *impl_;
     // Framebuffer row y is image row y: the shader maps fragment y to v the
     // way the CPU maps image rows.
-    return draw(view.width, view.height, false, [&] {
+    return draw(view.width, view.height, false, [&] { drawView(camera); });
+}
+
+void GpuPattern::drawView(const Camera& camera) {
+    const View& view = camera.view;
+    const Impl& m = *impl_;
+    {
         bind(m.program);
         auto uniform = [&](const char* name) { return glGetUniformLocation(m.program, name); };
         const double pi = std::numbers::pi;
@@ -250,7 +255,7 @@ Image GpuPattern::render(const Camera& camera) {
         glUniform1f(uniform("uScale"), float(view.scale));
         glBindVertexArray(m.vao);
         glDrawArrays(GL_TRIANGLES, 0, 3);
-    });
+    }
 }
 
 Image GpuPattern::renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling) {

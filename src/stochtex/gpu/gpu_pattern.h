@@ -35,6 +35,9 @@ public:
     // Footprints come from the rasterizer's derivatives of uv.
     Image render(const Camera& camera);
     Image render(const View& view);  // zoom
+    // Draws the camera's view into the framebuffer bound now (a window's),
+    // over the current viewport; no read-back.
+    void drawView(const Camera& camera);
     // The pattern on a lit mesh (uv × tiling example periods), seen by a
     // perspective camera; 3 channels, row 0 at the top.
     Image renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling);
