@@ -57,5 +57,6 @@ void registerAnalyze(CLI::App& app);
 void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
 void registerView(CLI::App& app);
+void registerBake(CLI::App& app);
 
 }  // namespace stochtex::cli

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerReproduce(app);
     stochtex::cli::registerScene(app);
     stochtex::cli::registerView(app);
+    stochtex::cli::registerBake(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

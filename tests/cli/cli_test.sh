@@ -37,7 +37,7 @@ out=$work/out
 mkdir -p "$out"
 
 # --- help on every command ---
-for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene view; do
+for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene view bake; do
   "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
 done
 
@@ -95,6 +95,7 @@ expect_ok "render --gpu" "$out/gpu.png" -- "$bin" render --preset camouflage --g
 expect_ok "render --gpu --filter smooth" "$out/gpu2.png" -- "$bin" render --preset marble --gpu --filter smooth --scale 8 --size 96 -o "$out/gpu2.png"
 # The window, under a virtual X server.
 expect_ok "view under Xvfb" "$out/view.png" -- xvfb-run -a -s "-screen 0 640x480x24" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
+expect_ok "bake" "$out/bake/stochtex.glsl" -- "$bin" bake --preset weld --filter paper -o "$out/bake"
 expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
 expect_ok "render --gpu plane" "$out/gpu3.png" -- "$bin" render --preset marble --gpu --filter paper --view plane --tilt 70 --aniso 8 --size 96 -o "$out/gpu3.png"
 
@@ -135,6 +136,7 @@ expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$
 expect_bad "reproduce zero count" "$out/rbad2" "--count must be in [1, 1e6]" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
 expect_bad "gpu with the reference" "$out/gbad.png" "--gpu: the GPU renders --filter none, paper or smooth" -- "$bin" render --preset camouflage --gpu --filter reference -o "$out/gbad.png"
 expect_bad "scene unknown object" "$out/sbad.png" '--object: unknown "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
+expect_bad "bake unfiltered" "$out/bbad" "bake: --filter must be paper or smooth" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
 
 if [ $failures -ne 0 ]; then
   echo "$failures CLI check(s) failed"

@@ -217,7 +217,7 @@ TEST(Gpu, SceneRendersObjects) {
 TEST(Gpu, BrokenShaderReportsFileAndLine) {
     context();
     try {
-        compileProgram({"fullscreen"}, {"common", "unfiltered", "pattern"},
+        compileProgram({"fullscreen"}, {"common", "unfiltered", "view", "pattern"},
                        {{"pattern", "void main() {\n  float x = 1.0;\n  undefined_call(x);\n}\n"}});
         FAIL() << "a broken shader compiled";
     } catch (const ShaderError& e) {
@@ -232,7 +232,8 @@ TEST(Gpu, ShadersValidateAsCore330AndEs300) {
     const fs::path dir = fs::temp_directory_path() / "stochtex_glslang";
     fs::create_directories(dir);
     const std::vector<std::pair<std::string, std::vector<std::string>>> stages = {
-        {"vert", {"fullscreen"}}, {"frag", {"common", "unfiltered", "pattern"}}, {"frag", {"common", "filtering", "filtered"}},
+        {"vert", {"fullscreen"}}, {"frag", {"common", "unfiltered", "view", "pattern"}},
+        {"frag", {"common", "filtering", "view", "filtered"}},
         {"vert", {"mesh"}},       {"frag", {"common", "unfiltered", "filtering", "scene"}}};
     for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300})
         for (const auto& [ext, files] : stages) {

@@ -51,32 +51,15 @@ GLuint pyramidTexture(const StatsPyramid& p) {
     return t;
 }
 
-// Every (σ_x, σ_y) layer of the prefiltered table resampled to the
-// colormap's resolution (layers stored coarser are smooth: their bilinear
-// resampling differs from the CPU lookup by far less than a colour step).
+// The prefiltered table's layers as one texture array (see atlas()).
 GLuint tableTexture(const PrefilteredColormap& table, int rx, int ry) {
     const int n = int(table.sigmas().size());
-    std::vector<float> rgba(size_t(rx) * size_t(ry) * 4 * size_t(n) * size_t(n));
-    for (int kx = 0; kx < n; ++kx)
-        for (int ky = 0; ky < n; ++ky) {
-            const ColormapTable& layer = table.layer(kx, ky);
-            float* dst = rgba.data() + size_t(kx * n + ky) * size_t(rx) * size_t(ry) * 4;
-            const bool full = layer.resolutionX() == rx && layer.resolutionY() == ry;
-            for (int j = 0; j < ry; ++j)
-                for (int i = 0; i < rx; ++i) {
-                    const Rgb c = full ? layer.entry(i, j) : layer.sample(float(i) / float(rx - 1), float(j) / float(ry - 1));
-                    float* o = dst + (size_t(j) * size_t(rx) + size_t(i)) * 4;
-                    o[0] = c[0];
-                    o[1] = c[1];
-                    o[2] = c[2];
-                    o[3] = 1.0f;
-                }
-        }
+    const Image atlas = table.atlas(rx, ry);
     GLuint t = 0;
     glGenTextures(1, &t);
     glBindTexture(GL_TEXTURE_2D_ARRAY, t);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, rx, ry, n * n, 0, GL_RGBA, GL_FLOAT, rgba.data());
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGB32F, rx, ry, n * n, 0, GL_RGB, GL_FLOAT, atlas.data().data());
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
@@ -110,8 +93,8 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     Impl& m = *impl_;
     m.options = options;
     const bool filtered = options.mode != FilterMode::None;
-    m.program = compileProgram({"fullscreen"}, filtered ? std::vector<std::string>{"common", "filtering", "filtered"}
-                                                       : std::vector<std::string>{"common", "unfiltered", "pattern"});
+    m.program = compileProgram({"fullscreen"}, filtered ? std::vector<std::string>{"common", "filtering", "view", "filtered"}
+                                                       : std::vector<std::string>{"common", "unfiltered", "view", "pattern"});
     const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
     m.sky = f.skyColour();
     if (filtered) {

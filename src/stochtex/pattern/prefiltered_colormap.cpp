@@ -252,6 +252,22 @@ Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const {
     return out;
 }
 
+Image PrefilteredColormap::atlas(int rx, int ry) const {
+    const int n = int(sigmas_.size());
+    Image out(rx, ry * n * n, 3, Image::Uninitialized{});
+    for (int kx = 0; kx < n; ++kx)
+        for (int ky = 0; ky < n; ++ky) {
+            const ColormapTable& l = layer(kx, ky);
+            const bool full = l.resolutionX() == rx && l.resolutionY() == ry;
+            for (int j = 0; j < ry; ++j)
+                for (int i = 0; i < rx; ++i) {
+                    const Rgb c = full ? l.entry(i, j) : l.sample(float(i) / float(rx - 1), float(j) / float(ry - 1));
+                    for (int k = 0; k < 3; ++k) out.at(i, (kx * n + ky) * ry + j, k) = c[size_t(k)];
+                }
+        }
+    return out;
+}
+
 size_t PrefilteredColormap::bytes() const {
     size_t b = 0;
     for (const auto& l : layers_) b += l.bytes();

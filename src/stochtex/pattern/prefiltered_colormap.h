@@ -31,6 +31,12 @@ public:
 
     Rgb sample(float mx, float my, float sx, float sy) const;
 
+    // Every layer resampled to rx × ry entries (layers stored coarser are
+    // smooth, so their bilinear resampling is far below a colour step),
+    // stacked: layer kx·n + ky in rows [k·ry, (k+1)·ry), row j = y of j/(ry−1).
+    // The GPU texture array and the engine export are made from it.
+    Image atlas(int rx, int ry) const;
+
     size_t bytes() const;
 
     // σ levels of a mode, in colormap-domain units.

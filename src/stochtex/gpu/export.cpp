@@ -1,0 +1,118 @@
+#include "stochtex/gpu/export.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "stochtex/core/error.h"
+#include "stochtex/gpu/shader.h"
+#include "stochtex/image/image_io.h"
+
+namespace stochtex {
+
+namespace fs = std::filesystem;
+
+std::string exportedShaderInclude() {
+    return "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
+           "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
+           "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
+           "// footprint comes from this fragment's derivatives of uv. Uniforms and\n"
+           "// textures to set are listed in README.md.\n\n" +
+           shaderSource("common") + "\n" + shaderSource("filtering") +
+           "\nvec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";
+}
+
+namespace {
+
+void writeStats(const StatsPyramid& p, const std::string& dir, const std::string& stem, nlohmann::json& list) {
+    for (int l = 0; l < p.levels(); ++l) {
+        const Image& mean = p.meanImage(l);
+        const Image& moment = p.momentImage(l);
+        Image rgb(mean.width(), mean.height(), 3, 0.0f);
+        for (size_t i = 0; i < mean.pixelCount(); ++i) {
+            rgb.data()[3 * i] = mean.data()[i];
+            rgb.data()[3 * i + 1] = moment.data()[i];
+        }
+        const std::string file = stem + "_" + std::to_string(l) + ".exr";
+        writeImage((fs::path(dir) / file).string(), rgb);
+        list.push_back(file);
+    }
+}
+
+const char* kReadme = R"(# stochtex export
+
+Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
+(3.3 core) or WebGL 2 / GLES 3.0 program. `manifest.json` lists the data.
+
+## Textures
+
+| uniform | type | content |
+| --- | --- | --- |
+| `uStatsX`, `uStatsY` | `sampler2D`, RG32F, mip levels 0…L | level l = `stats_x_l.exr` (R = mean, G = variance) |
+| `uCovariance` | `sampler2D`, RG32F, mip levels | `covariance_l.exr` if `shared_offsets`, else bind `uStatsX` |
+| `uTable` | `sampler2DArray`, RGBA32F, `levels²` layers of `width × height` | layer k = rows `[k·height, (k+1)·height)` of `table.exr`; texture row j = that layer's row j |
+
+All are read with `texelFetch` (no filtering needed); set `GL_TEXTURE_MAX_LEVEL`
+to L so the pyramids are mipmap-complete.
+
+## Uniforms (from `manifest.json`)
+
+`uMeanX`, `uMeanY` (`means`), `uSeedX`, `uSeedY` (`seeds`, unsigned),
+`uDensity` (`grid_density`), `uInvW` (1 / `example_size`), `uShared`
+(`shared_offsets`), `uDeliotHeitz` (false), `uAverageX/Y/Cov[16]`
+(`average_moments`), `uMaxLod` (`levels` − 1), `uAniso` (`aniso`),
+`uSmooth` (`filter` == "smooth"), `uTableLevels` (`table.levels`).
+
+## Use
+
+```glsl
+#version 330 core
+#include "stochtex.glsl"   // or paste it
+in vec2 vUv;               // your texture coordinates, in example periods
+out vec4 colour;
+void main() { colour = stochtex_sample(vUv * 8.0); }
+```
+)";
+
+}  // namespace
+
+void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir) {
+    if (options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
+        throw InputError("bake: --filter must be paper or smooth");
+    const FilteredPattern f(pattern, options);  // validates the options
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir)) throw InputError(dir + ": cannot create output folder");
+    const FootprintEstimator& est = f.estimator();
+    nlohmann::json m;
+    m["version"] = 1;
+    m["filter"] = options.mode == FilterMode::Paper ? "paper" : "smooth";
+    m["example_size"] = pattern.exampleSize();
+    m["levels"] = est.maxLod() + 1;
+    m["means"] = {pattern.example(0).mean(), pattern.example(1).mean()};
+    m["seeds"] = {pattern.noises()[0].offsetSeed(), pattern.noises()[1].offsetSeed()};
+    m["grid_density"] = pattern.gridDensity();
+    m["shared_offsets"] = est.covariancePyramid() != nullptr;
+    m["aniso"] = options.aniso;
+    nlohmann::json averages = {{"x", nlohmann::json::array()}, {"y", nlohmann::json::array()}, {"cov", nlohmann::json::array()}};
+    for (int l = 0; l <= est.maxLod(); ++l) {
+        averages["x"].push_back(est.pyramid(0).averageMoment(l));
+        averages["y"].push_back(est.pyramid(1).averageMoment(l));
+        averages["cov"].push_back(est.covariancePyramid() ? est.covariancePyramid()->averageMoment(l) : 0.0f);
+    }
+    m["average_moments"] = averages;
+    m["stats"] = {{"x", nlohmann::json::array()}, {"y", nlohmann::json::array()}, {"covariance", nlohmann::json::array()}};
+    writeStats(est.pyramid(0), dir, "stats_x", m["stats"]["x"]);
+    writeStats(est.pyramid(1), dir, "stats_y", m["stats"]["y"]);
+    if (est.covariancePyramid()) writeStats(*est.covariancePyramid(), dir, "covariance", m["stats"]["covariance"]);
+    const PrefilteredColormap& table = f.table();
+    const int n = int(table.sigmas().size());
+    const int rx = f.blendingSpaceColormap().resolutionX(), ry = f.blendingSpaceColormap().resolutionY();
+    const Image atlas = table.atlas(rx, ry);
+    writeImage((fs::path(dir) / "table.exr").string(), atlas);
+    m["table"] = {{"file", "table.exr"}, {"levels", n}, {"width", rx}, {"height", ry}, {"sigmas", table.sigmas()}};
+    writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
+    writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude());
+    writeFileAtomic((fs::path(dir) / "README.md").string(), kReadme);
+}
+
+}  // namespace stochtex

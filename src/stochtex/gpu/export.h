@@ -1,0 +1,28 @@
+#pragma once
+// Export of a filtered pattern for engines: the runtime data as files and
+// one self-contained GLSL include, so a program that knows nothing of
+// stochtex renders Ŝ = H̄(μ̂, σ̂) with `vec4 stochtex_sample(vec2 uv)`.
+//
+// Files written to the folder:
+//   manifest.json        parameters and the list of data files (below)
+//   stats_x_L.exr        level L of noise x's pyramid: R = E_L, G = V_L (float32)
+//   stats_y_L.exr        the same for noise y
+//   covariance_L.exr     R = E_L (of x), G = C_L — only with shared offsets
+//   table.exr            the prefiltered table: n² layers of Rx × Ry RGB,
+//                        layer kx·n + ky in rows [k·Ry, (k+1)·Ry), row j of
+//                        a layer holding y = j/(Ry − 1) (T⁻¹ already folded in)
+//   stochtex.glsl        the include (no #version line: the host adds it)
+//   README.md            how to integrate it
+#include <string>
+
+#include "stochtex/pattern/filtered_pattern.h"
+
+namespace stochtex {
+
+// options.mode: Paper or Smooth. The folder is created if missing.
+void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir);
+
+// The include's text (what stochtex.glsl holds).
+std::string exportedShaderInclude();
+
+}  // namespace stochtex
