@@ -9,7 +9,7 @@ packages=(
   libtbb-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri glslang-tools
-  libglfw3-dev xvfb xauth
+  libglfw3-dev xvfb xauth libpng-dev
 )
 
 missing=()

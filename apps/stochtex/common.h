@@ -58,5 +58,6 @@ void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
 void registerView(CLI::App& app);
 void registerBake(CLI::App& app);
+void registerBakeImage(CLI::App& app);
 
 }  // namespace stochtex::cli

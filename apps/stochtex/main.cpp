@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerScene(app);
     stochtex::cli::registerView(app);
     stochtex::cli::registerBake(app);
+    stochtex::cli::registerBakeImage(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -37,7 +37,7 @@ out=$work/out
 mkdir -p "$out"
 
 # --- help on every command ---
-for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene view bake; do
+for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene view bake bake-image; do
   "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
 done
 
@@ -96,6 +96,11 @@ expect_ok "render --gpu --filter smooth" "$out/gpu2.png" -- "$bin" render --pres
 # The window, under a virtual X server.
 expect_ok "view under Xvfb" "$out/view.png" -- xvfb-run -a -s "-screen 0 640x480x24" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
 expect_ok "bake" "$out/bake/stochtex.glsl" -- "$bin" bake --preset weld --filter paper -o "$out/bake"
+# Bands streamed into the PNG give the same file as one render of the whole.
+expect_ok "bake-image" "$out/big.png" -- "$bin" bake-image --preset marble --size 200,150 --band 40 --filter smooth --scale 3 -o "$out/big.png"
+expect_ok "render for bake-image" "$out/big_ref.png" -- "$bin" render --preset marble --size 200,150 --filter smooth --scale 3 -o "$out/big_ref.png"
+cmp -s "$out/big.png" "$out/big_ref.png" || fail "bake-image differs from render"
+expect_ok "bake-image --gpu" "$out/bigg.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu -o "$out/bigg.png"
 expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
 expect_ok "render --gpu plane" "$out/gpu3.png" -- "$bin" render --preset marble --gpu --filter paper --view plane --tilt 70 --aniso 8 --size 96 -o "$out/gpu3.png"
 
@@ -137,6 +142,7 @@ expect_bad "reproduce zero count" "$out/rbad2" "--count must be in [1, 1e6]" -- 
 expect_bad "gpu with the reference" "$out/gbad.png" "--gpu: the GPU renders --filter none, paper or smooth" -- "$bin" render --preset camouflage --gpu --filter reference -o "$out/gbad.png"
 expect_bad "scene unknown object" "$out/sbad.png" '--object: unknown "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
 expect_bad "bake unfiltered" "$out/bbad" "bake: --filter must be paper or smooth" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
+expect_bad "bake-image exr" "$out/x.exr" "bake-image writes PNG" -- "$bin" bake-image --preset marble -o "$out/x.exr"
 
 if [ $failures -ne 0 ]; then
   echo "$failures CLI check(s) failed"

@@ -1,0 +1,116 @@
+#include "stochtex/image/png_stream.h"
+
+#include <png.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csetjmp>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "stochtex/core/error.h"
+
+namespace stochtex {
+
+struct PngStreamWriter::Impl {
+    std::string path, temp;
+    FILE* file = nullptr;
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    int width = 0, height = 0, channels = 0, bits = 8, written = 0;
+    bool finished = false;
+    std::string error;
+};
+
+namespace {
+
+void onError(png_structp png, png_const_charp message) {
+    *static_cast<std::string*>(png_get_error_ptr(png)) = message;
+    png_longjmp(png, 1);
+}
+
+void onWarning(png_structp, png_const_charp) {}
+
+}  // namespace
+
+PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height, int channels, int bits)
+    : impl_(std::make_unique<Impl>()) {
+    if (width < 1 || height < 1) throw InputError(path + ": image size must be positive");
+    if (channels != 1 && channels != 3) throw std::invalid_argument("PngStreamWriter: 1 or 3 channels");
+    if (bits != 8 && bits != 16) throw InputError(path + ": PNG bit depth must be 8 or 16");
+    Impl& m = *impl_;
+    m.path = path;
+    m.temp = path + ".tmp";
+    m.width = width;
+    m.height = height;
+    m.channels = channels;
+    m.bits = bits;
+    m.file = std::fopen(m.temp.c_str(), "wb");
+    if (!m.file) throw InputError(path + ": cannot write (folder missing or not writable)");
+    m.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &m.error, onError, onWarning);
+    m.info = m.png ? png_create_info_struct(m.png) : nullptr;
+    if (!m.png || !m.info) throw std::runtime_error(path + ": libpng could not start");
+    if (setjmp(png_jmpbuf(m.png))) throw InputError(path + ": PNG error: " + m.error);
+    png_init_io(m.png, m.file);
+    png_set_compression_level(m.png, 3);
+    png_set_IHDR(m.png, m.info, png_uint_32(width), png_uint_32(height), bits,
+                 channels == 3 ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(m.png, m.info);
+    if (bits == 16) png_set_swap(m.png);  // our rows are little-endian uint16
+}
+
+PngStreamWriter::~PngStreamWriter() {
+    Impl& m = *impl_;
+    if (m.png) png_destroy_write_struct(&m.png, &m.info);
+    if (m.file) std::fclose(m.file);
+    if (!m.finished) {
+        std::error_code ec;
+        std::filesystem::remove(m.temp, ec);
+    }
+}
+
+void PngStreamWriter::writeRows(const Image& band) {
+    Impl& m = *impl_;
+    if (band.width() != m.width || band.channels() != m.channels || m.written + band.height() > m.height)
+        throw std::invalid_argument("PngStreamWriter: band does not fit the image");
+    const size_t values = size_t(m.width) * size_t(m.channels);
+    std::vector<unsigned char> row(values * size_t(m.bits / 8));
+    if (setjmp(png_jmpbuf(m.png))) throw InputError(m.path + ": PNG error: " + m.error);
+    for (int y = 0; y < band.height(); ++y) {
+        const float* src = band.row(y);
+        if (m.bits == 8) {
+            for (size_t i = 0; i < values; ++i)
+                row[i] = static_cast<unsigned char>(std::lround(255.0f * std::clamp(src[i], 0.0f, 1.0f)));
+        } else {
+            for (size_t i = 0; i < values; ++i) {
+                const auto v = static_cast<uint16_t>(std::lround(65535.0f * std::clamp(src[i], 0.0f, 1.0f)));
+                row[2 * i] = static_cast<unsigned char>(v & 0xff);
+                row[2 * i + 1] = static_cast<unsigned char>(v >> 8);
+            }
+        }
+        png_write_row(m.png, row.data());
+    }
+    m.written += band.height();
+}
+
+void PngStreamWriter::finish() {
+    Impl& m = *impl_;
+    if (m.written != m.height) throw std::logic_error("PngStreamWriter: not every row was written");
+    if (setjmp(png_jmpbuf(m.png))) throw InputError(m.path + ": PNG error: " + m.error);
+    png_write_end(m.png, nullptr);
+    png_destroy_write_struct(&m.png, &m.info);
+    if (std::fclose(m.file) != 0) {
+        m.file = nullptr;
+        throw InputError(m.path + ": write failed (disk full?)");
+    }
+    m.file = nullptr;
+    std::error_code ec;
+    std::filesystem::rename(m.temp, m.path, ec);
+    if (ec) throw InputError(m.path + ": cannot move the finished file into place: " + ec.message());
+    m.finished = true;
+}
+
+}  // namespace stochtex

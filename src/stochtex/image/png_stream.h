@@ -1,0 +1,29 @@
+#pragma once
+// A PNG written a band of rows at a time (libpng), so images larger than
+// memory can be produced: memory is one band, whatever the image size. The
+// file appears under its name only when finish() succeeds (temp + rename).
+#include <memory>
+#include <string>
+
+#include "stochtex/image/image.h"
+
+namespace stochtex {
+
+class PngStreamWriter {
+public:
+    // bits: 8 or 16; the bands written must have `channels` channels (3 or 1).
+    PngStreamWriter(const std::string& path, int width, int height, int channels, int bits = 8);
+    ~PngStreamWriter();  // removes the temporary file if finish() was not reached
+    PngStreamWriter(const PngStreamWriter&) = delete;
+    PngStreamWriter& operator=(const PngStreamWriter&) = delete;
+
+    // The next band of rows, top to bottom (values clamped to [0, 1]).
+    void writeRows(const Image& band);
+    void finish();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace stochtex
