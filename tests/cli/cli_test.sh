@@ -93,8 +93,11 @@ grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: inde
 # --- GPU (headless OpenGL: Mesa llvmpipe without a GPU) ---
 expect_ok "render --gpu" "$out/gpu.png" -- "$bin" render --preset camouflage --gpu --size 96 -o "$out/gpu.png"
 expect_ok "render --gpu --filter smooth" "$out/gpu2.png" -- "$bin" render --preset marble --gpu --filter smooth --scale 8 --size 96 -o "$out/gpu2.png"
-# The window, under a virtual X server.
-expect_ok "view under Xvfb" "$out/view.png" -- xvfb-run -a -s "-screen 0 640x480x24" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
+# The window, under a virtual X server. Mesa's GLX driver leaks a few
+# hundred bytes from a module it has unloaded by exit time, which
+# LeakSanitizer cannot suppress by name: leak checks are off for this run
+# only (sanitizer builds; no effect otherwise).
+expect_ok "view under Xvfb" "$out/view.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
 expect_ok "bake" "$out/bake/stochtex.glsl" -- "$bin" bake --preset weld --filter paper -o "$out/bake"
 # Bands streamed into the PNG give the same file as one render of the whole.
 expect_ok "bake-image" "$out/big.png" -- "$bin" bake-image --preset marble --size 200,150 --band 40 --filter smooth --scale 3 -o "$out/big.png"
