@@ -11,26 +11,33 @@
 namespace stochtex {
 namespace {
 
+// A headless context, or the benchmark skipped with the reason.
+std::unique_ptr<GlContext> contextOrSkip(benchmark::State& state) {
+    try {
+        return GlContext::headless();
+    } catch (const GpuUnavailable& e) {
+        state.SkipWithError(e.what());
+        return nullptr;
+    }
+}
+
+template <class F>
+double seconds(F&& f) {
+    const auto a = std::chrono::steady_clock::now();
+    f();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+}
+
 // Unfiltered camouflage, 1024², GPU and CPU alternately in one run; each GPU
 // frame includes the draw, the wait and the read-back of the float image.
 void BM_GpuVsCpuUnfiltered(benchmark::State& state) {
     const Pattern p = Pattern::build(loadPreset("camouflage"));
-    std::unique_ptr<GlContext> ctx;
-    try {
-        ctx = GlContext::headless();
-    } catch (const GpuUnavailable& e) {
-        state.SkipWithError(e.what());
-        return;
-    }
+    const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
+    if (!ctx) return;
     GpuPattern gpu(p, *ctx);
     View v;
     v.width = v.height = int(state.range(0));
     double tg = 0, tc = 0;
-    auto seconds = [](auto&& f) {
-        const auto a = std::chrono::steady_clock::now();
-        f();
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
-    };
     for (auto _ : state) {
         tg += seconds([&] { benchmark::DoNotOptimize(gpu.render(v).data().data()); });
         tc += seconds([&] { benchmark::DoNotOptimize(p.render(v).data().data()); });
@@ -47,13 +54,8 @@ BENCHMARK(BM_GpuVsCpuUnfiltered)->ArgName("size")->Arg(1024)->Arg(4096)->Unit(be
 // unfiltered, both on the GPU, alternately in one run, 1024².
 void BM_GpuFilteredVsUnfiltered(benchmark::State& state) {
     const Pattern p = Pattern::build(loadPreset("camouflage"));
-    std::unique_ptr<GlContext> ctx;
-    try {
-        ctx = GlContext::headless();
-    } catch (const GpuUnavailable& e) {
-        state.SkipWithError(e.what());
-        return;
-    }
+    const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
+    if (!ctx) return;
     FilterOptions o;
     o.mode = FilterMode::Paper;
     GpuPattern filtered(p, *ctx, o), unfiltered(p, *ctx);
@@ -61,11 +63,6 @@ void BM_GpuFilteredVsUnfiltered(benchmark::State& state) {
     v.width = v.height = 1024;
     v.scale = double(state.range(0));
     double tf = 0, tu = 0;
-    auto seconds = [](auto&& f) {
-        const auto a = std::chrono::steady_clock::now();
-        f();
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
-    };
     for (auto _ : state) {
         tf += seconds([&] { benchmark::DoNotOptimize(filtered.render(v).data().data()); });
         tu += seconds([&] { benchmark::DoNotOptimize(unfiltered.render(v).data().data()); });

@@ -281,10 +281,10 @@ StudyOutput runContrastStudy(const ZoomFlags& flags, const ContrastStudy& study,
         return linePlot({s}, o);
     };
     histograms.push_back(histogramPlot(texture, "uncorrected"));
-    {
-        PlotSeries id{"identity", {0, 1}, {0, 1}, {0.3f, 0.3f, 0.3f}};
+    // Axes of every correction-curve plot: I ∈ [0, 1] → h(I), room for clamping.
+    auto curveAxes = [](const std::string& title) {
         LinePlotOptions o;
-        o.title = "no correction";
+        o.title = title;
         o.xLabel = "I";
         o.yLabel = "h(I)";
         o.width = 360;
@@ -293,8 +293,9 @@ StudyOutput runContrastStudy(const ZoomFlags& flags, const ContrastStudy& study,
         o.xMax = 1;
         o.yMin = -0.5;
         o.yMax = 1.5;
-        curves.push_back(linePlot({id}, o));
-    }
+        return o;
+    };
+    curves.push_back(linePlot({PlotSeries{"identity", {0, 1}, {0, 1}, {0.3f, 0.3f, 0.3f}}}, curveAxes("no correction")));
     for (ContrastMethod m : {ContrastMethod::Linear, ContrastMethod::Polynomial, ContrastMethod::Sigmoid}) {
         const std::string name = contrastMethodName(m);
         const ContrastResult r = correctContrast(m, texture, varR, mu, vf);
@@ -311,7 +312,7 @@ StudyOutput runContrastStudy(const ZoomFlags& flags, const ContrastStudy& study,
         // The correction curve at the median pixel variance, with its
         // clamping intervals shaded.
         PlotSeries s{name, {}, {}, {0.8f, 0.2f, 0.1f}};
-        LinePlotOptions o;
+        LinePlotOptions o = curveAxes(name + " at the median pixel variance");
         for (int i = 0; i <= 200; ++i) {
             const double x = i / 200.0;
             s.x.push_back(x);
@@ -326,15 +327,6 @@ StudyOutput runContrastStudy(const ZoomFlags& flags, const ContrastStudy& study,
                 start = -1;
             }
         }
-        o.title = name + " at the median pixel variance";
-        o.xLabel = "I";
-        o.yLabel = "h(I)";
-        o.width = 360;
-        o.height = 240;
-        o.xMin = 0;
-        o.xMax = 1;
-        o.yMin = -0.5;
-        o.yMax = 1.5;
         curves.push_back(linePlot({s}, o));
     }
     writeImage(path(dir, "texture.png"), texture);
