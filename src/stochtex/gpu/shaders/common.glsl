@@ -62,7 +62,10 @@ vec2 tileOffset(uvec2 vertex, uint seed) {
 // p ∈ [0, 1)², vertical interpolation first as on the CPU. Any channel count:
 // the caller picks the channels.
 vec4 periodicBilinearLod(sampler2D grid, vec2 p, int lod) {
-    int w = textureSize(grid, lod).x;
+    // Mip l of a W-texel level 0 is max(W >> l, 1) wide. Not textureSize(grid,
+    // lod): llvmpipe answers that size query with one lane's lod for the
+    // whole SIMD vector, wrong where neighbouring pixels read other levels.
+    int w = max(textureSize(grid, 0).x >> lod, 1);
     vec2 t = p * float(w) - 0.5;
     vec2 i0 = floor(t);
     vec2 f = t - i0;
