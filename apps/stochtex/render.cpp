@@ -27,6 +27,7 @@ void registerRender(CLI::App& app) {
         int threads = 0;
         bool pack8 = false;
         bool gpu = false;
+        std::string derivatives = "camera";
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("render", "Render a pattern to PNG or EXR, unfiltered, filtered or as the reference");
@@ -47,9 +48,13 @@ void registerRender(CLI::App& app) {
     cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
     cmd->add_flag("--gpu", args->gpu,
                   "Render with the GLSL implementation on a headless OpenGL context (--filter none, paper or smooth)");
+    cmd->add_option("--derivatives", args->derivatives,
+                    "--gpu footprints: camera (the view's exact Jacobian, as the CPU) | rasterizer (dFdx/dFdy)");
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         checkImageOutput(args->output);
+        if (args->derivatives != "camera" && args->derivatives != "rasterizer")
+            throw InputError("--derivatives: unknown \"" + args->derivatives + "\" (expected camera or rasterizer)");
         FilterOptions options;
         options.mode = parseFilterMode(args->filter);
         options.aniso = args->aniso;
@@ -82,7 +87,9 @@ void registerRender(CLI::App& app) {
         if (args->gpu) {
             auto context = GlContext::headless();
             device = context->describe();
-            image = GpuPattern(pattern, *context, options).render(camera);
+            GpuPattern gpu(pattern, *context, options);
+            if (args->derivatives == "rasterizer") gpu.setDerivatives(GpuPattern::Derivatives::Rasterizer);
+            image = gpu.render(camera);
         } else {
             image = FilteredPattern(pattern, options).render(camera);
         }

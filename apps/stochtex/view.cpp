@@ -1,6 +1,7 @@
 // stochtex view: an interactive window on a pattern, rendered by the GLSL
 // implementation. Wheel: zoom about the cursor; drag: pan; 1/2/3: filter
-// none/paper/smooth; V: zoom or plane view; Up/Down: tilt; Esc: quit.
+// none/paper/smooth; V: zoom or plane view; Up/Down: tilt; D: footprints
+// from the camera's Jacobian or the rasterizer's derivatives; Esc: quit.
 // --frames N --screenshot FILE renders N frames, saves the last, and exits
 // (how the tests try the window under Xvfb).
 #include <epoxy/gl.h>
@@ -25,6 +26,7 @@ namespace {
 struct ViewerState {
     Camera camera;
     FilterMode mode = FilterMode::Smooth;
+    GpuPattern::Derivatives derivatives = GpuPattern::Derivatives::Camera;
     double cursorX = 0, cursorY = 0;
     bool dragging = false;
 };
@@ -70,6 +72,10 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
         case GLFW_KEY_V:
             s->camera.kind = s->camera.kind == Camera::Kind::Zoom ? Camera::Kind::Plane : Camera::Kind::Zoom;
             break;
+        case GLFW_KEY_D:
+            s->derivatives = s->derivatives == GpuPattern::Derivatives::Camera ? GpuPattern::Derivatives::Rasterizer
+                                                                               : GpuPattern::Derivatives::Camera;
+            break;
         case GLFW_KEY_UP: s->camera.tiltDeg = std::min(89.0, s->camera.tiltDeg + 2.0); break;
         case GLFW_KEY_DOWN: s->camera.tiltDeg = std::max(0.0, s->camera.tiltDeg - 2.0); break;
         default: break;
@@ -92,7 +98,8 @@ void registerView(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("view", "Interactive window (GLSL): wheel zooms, drag pans, 1/2/3 filter "
-                                           "none/paper/smooth, V zoom/plane, Up/Down tilt, Esc quits");
+                                           "none/paper/smooth, V zoom/plane, Up/Down tilt, D camera/rasterizer "
+                                           "derivatives, Esc quits");
     addPatternSource(*cmd, args->source);
     cmd->add_option("--filter", args->filter, "Starting mode: none | paper | smooth");
     cmd->add_option("--view", args->camera, "Starting view: zoom | plane");
@@ -146,6 +153,7 @@ void registerView(CLI::App& app) {
             }
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, state.camera.view.width, state.camera.view.height);
+            r->setDerivatives(state.derivatives);
             r->drawView(state.camera);
             ++frame;
             if (!args->screenshot.empty() && (args->frames == 0 || frame == args->frames)) {
@@ -165,9 +173,11 @@ void registerView(CLI::App& app) {
             last = now;
             fps = fps == 0 ? 1.0 / std::max(dt, 1e-6) : 0.9 * fps + 0.1 / std::max(dt, 1e-6);
             char title[200];
-            std::snprintf(title, sizeof title, "stochtex view - %s - %s - %s view - scale %.3g - %.0f fps",
+            std::snprintf(title, sizeof title, "stochtex view - %s - %s - %s view - %s derivatives - scale %.3g - %.0f fps",
                           spec.name.c_str(), modeName(state.mode),
-                          state.camera.kind == Camera::Kind::Zoom ? "zoom" : "plane", state.camera.view.scale, fps);
+                          state.camera.kind == Camera::Kind::Zoom ? "zoom" : "plane",
+                          state.derivatives == GpuPattern::Derivatives::Camera ? "camera" : "rasterizer",
+                          state.camera.view.scale, fps);
             context->setTitle(title);
             context->swapAndPoll();
         }

@@ -45,6 +45,13 @@ TEST(StatsPyramid, LevelsAreExactBlockStatistics) {
     EXPECT_NEAR(p.momentImage(3).at(2, 5), var, 1e-6);
     // Within-texel variance grows with the level and ends at the global variance.
     for (int l = 1; l < p.levels(); ++l) EXPECT_GT(p.averageMoment(l), p.averageMoment(l - 1));
+    // The layout uploaded to GL (RG) and exported (RGB): mean, moment, zeros.
+    const Image rgb = p.interleavedLevel(3, 3);
+    ASSERT_EQ(rgb.width(), 8);
+    ASSERT_EQ(rgb.channels(), 3);
+    EXPECT_EQ(rgb.at(2, 5, 0), p.meanImage(3).at(2, 5));
+    EXPECT_EQ(rgb.at(2, 5, 1), p.momentImage(3).at(2, 5));
+    EXPECT_EQ(rgb.at(2, 5, 2), 0.0f);
 }
 
 TEST(Footprint, IsotropicAndAnisotropicProbesFollowTheOpenGlRule) {

@@ -120,13 +120,13 @@ TEST(Gpu, FilteredRenderMatchesTheCpu) {
 }
 
 // The perspective plane: footprints grow and turn anisotropic towards the
-// horizon; J comes from the rasterizer's derivatives (one-sided, per 2×2
-// quad) on the GPU and from central differences on the CPU. Isotropic
-// filtering meets the tolerance. With K = 8 the probe count
-// N = ⌈P_max/P_min⌉ jumps by one where the two J differ slightly (the OpenGL
-// rule is discontinuous there), so a few percent of pixels take a different
-// probe layout: held to a looser, documented bound (mean ≤ 1/255, ≤ 5% of
-// pixels over 2/255).
+// horizon, and neighbouring pixels read different pyramid levels. With the
+// camera's exact Jacobian on both sides the tolerance holds,
+// isotropic and with K = 8. With the rasterizer's derivatives (one-sided
+// within each 2×2 quad) the GPU's J differs from the exact one by O(J'), so
+// the K = 8 probe count N = ⌈P_max/P_min⌉ (the OpenGL rule is discontinuous)
+// flips for a few pixels: the mean target still holds; up to 3% of pixels
+// may exceed 2/255 (measured 1.6–1.8% on llvmpipe).
 TEST(Gpu, PlaneViewMatchesTheCpu) {
     const Pattern p = Pattern::build(loadPreset("marble"));
     for (double tilt : {55.0, 70.0}) {
@@ -136,16 +136,20 @@ TEST(Gpu, PlaneViewMatchesTheCpu) {
         c.view.width = 160;
         c.view.height = 120;
         c.view.scale = 2.0;
-        FilterOptions o;
-        o.mode = FilterMode::Smooth;
-        expectParity(p, c, "plane " + std::to_string(int(tilt)) + "°, smooth, K = 1", o);
-        o.aniso = 8;
-        GpuPattern gpu(p, context(), o);
-        const Difference d = compare(gpu.render(c), FilteredPattern(p, o).render(c));
-        std::printf("[ info ] plane %d°, smooth, K = 8: mean %.2e, %.3f%% over 2/255\n", int(tilt), d.mean,
-                    100.0 * d.outlierFraction);
-        EXPECT_LE(d.mean, 1.0 / 255.0);
-        EXPECT_LE(d.outlierFraction, 0.05);
+        for (int aniso : {1, 8}) {
+            FilterOptions o;
+            o.mode = FilterMode::Smooth;
+            o.aniso = aniso;
+            const std::string what = "plane " + std::to_string(int(tilt)) + "°, smooth, K = " + std::to_string(aniso);
+            expectParity(p, c, what, o);
+            GpuPattern gpu(p, context(), o);
+            gpu.setDerivatives(GpuPattern::Derivatives::Rasterizer);
+            const Difference d = compare(gpu.render(c), FilteredPattern(p, o).render(c));
+            std::printf("[ info ] %s, rasterizer derivatives: mean %.2e, %.3f%% over 2/255\n", what.c_str(), d.mean,
+                        100.0 * d.outlierFraction);
+            EXPECT_LE(d.mean, 0.5 / 255.0) << what;
+            EXPECT_LE(d.outlierFraction, aniso == 1 ? 0.005 : 0.03) << what;
+        }
     }
     Camera c;
     c.kind = Camera::Kind::Plane;

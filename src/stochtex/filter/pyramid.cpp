@@ -88,6 +88,17 @@ StatsPyramid StatsPyramid::quantized8() const {
     return p;
 }
 
+Image StatsPyramid::interleavedLevel(int l, int channels) const {
+    const Image& mean = means_[size_t(l)];
+    const Image& moment = moments_[size_t(l)];
+    Image out(mean.width(), mean.height(), channels, 0.0f);
+    for (size_t i = 0; i < mean.pixelCount(); ++i) {
+        out.data()[size_t(channels) * i] = mean.data()[i];
+        out.data()[size_t(channels) * i + 1] = moment.data()[i];
+    }
+    return out;
+}
+
 size_t StatsPyramid::bytes() const {
     size_t total = 0;
     for (const auto& g : grids_) total += g.bytes();

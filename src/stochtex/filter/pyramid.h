@@ -30,6 +30,9 @@ public:
     const BasicPeriodicGrid<2>& level(int l) const { return grids_[size_t(l)]; }
     const Image& meanImage(int l) const { return means_[size_t(l)]; }
     const Image& momentImage(int l) const { return moments_[size_t(l)]; }
+    // Level l as one image for upload or export: channel 0 = mean, channel 1
+    // = moment, any further channel 0 (channels in [2, 4]).
+    Image interleavedLevel(int l, int channels) const;
     // Average of the moment over the whole example: the Deliot–Heitz
     // constant within-texel variance of level l.
     float averageMoment(int l) const { return averageMoment_[size_t(l)]; }

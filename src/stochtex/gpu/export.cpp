@@ -25,15 +25,8 @@ namespace {
 
 void writeStats(const StatsPyramid& p, const std::string& dir, const std::string& stem, nlohmann::json& list) {
     for (int l = 0; l < p.levels(); ++l) {
-        const Image& mean = p.meanImage(l);
-        const Image& moment = p.momentImage(l);
-        Image rgb(mean.width(), mean.height(), 3, 0.0f);
-        for (size_t i = 0; i < mean.pixelCount(); ++i) {
-            rgb.data()[3 * i] = mean.data()[i];
-            rgb.data()[3 * i + 1] = moment.data()[i];
-        }
         const std::string file = stem + "_" + std::to_string(l) + ".exr";
-        writeImage((fs::path(dir) / file).string(), rgb);
+        writeImage((fs::path(dir) / file).string(), p.interleavedLevel(l, 3));  // EXR has no 2-channel layout
         list.push_back(file);
     }
 }

@@ -36,14 +36,8 @@ GLuint pyramidTexture(const StatsPyramid& p) {
     glBindTexture(GL_TEXTURE_2D, t);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (int l = 0; l < p.levels(); ++l) {
-        const Image& mean = p.meanImage(l);
-        const Image& moment = p.momentImage(l);
-        std::vector<float> rg(mean.pixelCount() * 2);
-        for (size_t i = 0; i < mean.pixelCount(); ++i) {
-            rg[2 * i] = mean.data()[i];
-            rg[2 * i + 1] = moment.data()[i];
-        }
-        glTexImage2D(GL_TEXTURE_2D, l, GL_RG32F, mean.width(), mean.height(), 0, GL_RG, GL_FLOAT, rg.data());
+        const Image rg = p.interleavedLevel(l, 2);
+        glTexImage2D(GL_TEXTURE_2D, l, GL_RG32F, rg.width(), rg.height(), 0, GL_RG, GL_FLOAT, rg.data().data());
     }
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -79,6 +73,7 @@ struct GpuPattern::Impl {
     Rgb sky{};
     // Filtered rendering.
     FilterOptions options;
+    Derivatives derivatives = Derivatives::Camera;
     GLuint stats[2] = {0, 0}, covariance = 0, table = 0;
     bool shared = false;
     int maxLod = 0, tableLevels = 0;
@@ -185,6 +180,8 @@ void GpuPattern::bind(unsigned program) const {
     glUniform3f(uniform("uSky"), m.sky[0], m.sky[1], m.sky[2]);
 }
 
+void GpuPattern::setDerivatives(Derivatives d) { impl_->derivatives = d; }
+
 Image GpuPattern::draw(int width, int height, bool depth, const std::function<void()>& drawCalls) const {
     GLuint target = 0, fbo = 0, depthBuffer = 0;
     glGenTextures(1, &target);
@@ -236,9 +233,37 @@ void GpuPattern::drawView(const Camera& camera) {
         glUniform2f(uniform("uViewSize"), float(view.width), float(view.height));
         glUniform2f(uniform("uOffset"), float(view.offsetU), float(view.offsetV));
         glUniform1f(uniform("uScale"), float(view.scale));
+        glUniform1i(uniform("uRasterizerDerivatives"), m.derivatives == Derivatives::Rasterizer);
         glBindVertexArray(m.vao);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
+}
+
+double GpuPattern::secondsPerFrame(const Camera& camera, int frames) {
+    validateCamera(camera);
+    if (frames < 1) throw InputError("secondsPerFrame: frames must be >= 1");
+    const View& view = camera.view;
+    GLuint target = 0, fbo = 0, query = 0;
+    glGenTextures(1, &target);
+    glBindTexture(GL_TEXTURE_2D, target);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, view.width, view.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+    glViewport(0, 0, view.width, view.height);
+    drawView(camera);  // drivers finish compiling and uploading at the first draw
+    glFinish();
+    glGenQueries(1, &query);
+    glBeginQuery(GL_TIME_ELAPSED, query);
+    for (int f = 0; f < frames; ++f) drawView(camera);
+    glEndQuery(GL_TIME_ELAPSED);
+    GLuint64 nanoseconds = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &nanoseconds);  // waits for the draws
+    glDeleteQueries(1, &query);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &target);
+    return double(nanoseconds) * 1e-9 / frames;
 }
 
 Image GpuPattern::renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling) {

@@ -31,6 +31,12 @@ public:
     GpuPattern(const GpuPattern&) = delete;
     GpuPattern& operator=(const GpuPattern&) = delete;
 
+    // Where the built-in cameras' footprints come from: their exact Jacobian
+    // (the default; what the CPU uses, so the two agree) or the rasterizer's
+    // dFdx/dFdy of uv, as an engine gets them on arbitrary geometry.
+    enum class Derivatives { Camera, Rasterizer };
+    void setDerivatives(Derivatives d);
+
     // The camera mapping of FilteredPattern::render (zoom or plane); RGB float.
     // Footprints come from the rasterizer's derivatives of uv.
     Image render(const Camera& camera);
@@ -38,6 +44,11 @@ public:
     // Draws the camera's view into the framebuffer bound now (a window's),
     // over the current viewport; no read-back.
     void drawView(const Camera& camera);
+    // GPU seconds per frame of the camera's view drawn into an offscreen
+    // RGBA8 target (what a display gets), over `frames` draws after one
+    // warm-up draw, from a GL_TIME_ELAPSED query: the shader's own time, no
+    // read-back. For throughput benchmarks.
+    double secondsPerFrame(const Camera& camera, int frames);
     // The pattern on a lit mesh (uv × tiling example periods), seen by a
     // perspective camera; 3 channels, row 0 at the top.
     Image renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling);

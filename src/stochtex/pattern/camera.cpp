@@ -7,39 +7,37 @@
 
 namespace stochtex {
 
-namespace {
-
-// Ground point (in texels) seen through image position (x, y) in pixels
-// (continuous, pixel centres at +½). False if the ray misses the plane.
-bool planePoint(const Camera& c, double x, double y, double& tu, double& tv) {
-    const double half = std::tan(0.5 * c.fovDeg * std::numbers::pi / 180.0);
-    const double h2 = 0.5 * c.view.height;
-    const double nx = (x - 0.5 * c.view.width) / h2 * half;
-    const double ny = -(y - h2) / h2 * half;  // up on screen is positive
-    const double t = c.tiltDeg * std::numbers::pi / 180.0;
-    // forward (0, −sin t, −cos t), up (0, −cos t, sin t), right (1, 0, 0)
-    const double dx = nx, dy = -std::sin(t) - ny * std::cos(t), dz = -std::cos(t) + ny * std::sin(t);
-    if (dz >= -1e-9) return false;
-    const double height = c.view.scale * h2 / half;  // centre pixel covers `scale` texels at tilt 0
-    const double k = height / -dz;
-    tu = c.view.offsetU + 0.5 * c.view.width * c.view.scale + k * dx;
-    tv = c.view.offsetV + 0.5 * c.view.height * c.view.scale + k * dy;
-    return std::isfinite(tu) && std::isfinite(tv) && std::abs(tu) < 1e12 && std::abs(tv) < 1e12;
-}
-
-}  // namespace
-
+// The plane camera. A pixel position p (pixel centres at +½) gives the view
+// ray's normalised image coordinates
+//     n_x = (p_x − w/2)·T/h₂,  n_y = −(p_y − h₂)·T/h₂   (h₂ = h/2, T = tan(fov/2)),
+// and with forward (0, −sin t, −cos t), up (0, −cos t, sin t), right (1, 0, 0)
+// the ray direction d = (n_x, −s − n_y c, −c + n_y s), s = sin t, c = cos t.
+// It meets the ground, a height H = scale·h₂/T below the eye (so that at
+// t = 0 a pixel covers `scale` texels), at k = H/q with q = −d_z = c − n_y s:
+//     texel = offset + (w, h)·scale/2 + k·(d_x, d_y).
+// Differentiating (∂n_x/∂p_x = T/h₂, ∂n_y/∂p_y = −T/h₂, s·d_y − c·q = −1):
+//     ∂texel/∂p_x = scale·(1/q, 0),  ∂texel/∂p_y = scale·(−n_x s/q², 1/q²).
+// The exact Jacobian: no finite-difference step, and the GLSL camera
+// (view.glsl) evaluates the same expressions, so CPU and GPU choose the same
+// footprints up to float rounding.
 bool Camera::planeFootprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const {
+    const double half = std::tan(0.5 * fovDeg * std::numbers::pi / 180.0);
+    const double h2 = 0.5 * view.height;
+    const double nx = (px + 0.5 - 0.5 * view.width) / h2 * half;
+    const double ny = -(py + 0.5 - h2) / h2 * half;
+    const double t = tiltDeg * std::numbers::pi / 180.0;
+    const double s = std::sin(t), c = std::cos(t);
+    const double q = c - ny * s;
+    if (q <= 1e-9) return false;  // the ray misses the ground: sky
+    const double k = view.scale * h2 / half / q;
+    const double tu = view.offsetU + 0.5 * view.width * view.scale + k * nx;
+    const double tv = view.offsetV + 0.5 * view.height * view.scale + k * (-s - ny * c);
+    if (!std::isfinite(tu) || !std::isfinite(tv) || std::abs(tu) > 1e12 || std::abs(tv) > 1e12) return false;
     const double invW = 1.0 / exampleSize;
-    double cu, cv, xu0, xv0, xu1, xv1, yu0, yv0, yu1, yv1;
-    const double x = px + 0.5, y = py + 0.5;
-    if (!planePoint(*this, x, y, cu, cv) || !planePoint(*this, x - 0.5, y, xu0, xv0) ||
-        !planePoint(*this, x + 0.5, y, xu1, xv1) || !planePoint(*this, x, y - 0.5, yu0, yv0) ||
-        !planePoint(*this, x, y + 0.5, yu1, yv1))
-        return false;
-    u = cu * invW;
-    v = cv * invW;
-    j = Jacobian{(xu1 - xu0) * invW, (xv1 - xv0) * invW, (yu1 - yu0) * invW, (yv1 - yv0) * invW};
+    u = tu * invW;
+    v = tv * invW;
+    const double a = view.scale * invW / q;
+    j = Jacobian{a, 0.0, -a * nx * s / q, a / q};
     return true;
 }
 

@@ -8,9 +8,9 @@
 //           infinite ground plane carrying the texture, tilted by `tiltDeg`
 //           from looking straight down (0° = the zoom view) towards −v, so the
 //           horizon rises from the top as the tilt grows. The height is chosen
-//           so that at tilt 0 the centre pixel covers `scale` texels. J comes
-//           from central differences of the ray–plane intersection (±½ pixel).
-//           Pixels whose ray (or a neighbour's) misses the plane are "sky".
+//           so that at tilt 0 the centre pixel covers `scale` texels. J is the
+//           exact derivative of the ray–plane intersection (camera.cpp).
+//           Pixels whose ray misses the plane are "sky".
 #include "stochtex/filter/footprint.h"
 #include "stochtex/pattern/pattern.h"
 

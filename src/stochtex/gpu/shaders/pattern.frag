@@ -3,6 +3,7 @@ layout(location = 0) out vec4 fragColor;
 
 void main() {
     bool sky;
-    vec2 uv = viewUv(gl_FragCoord.xy, sky);
+    vec2 jx, jy;
+    vec2 uv = viewUv(gl_FragCoord.xy, jx, jy, sky);
     fragColor = vec4(sky ? uSky : unfilteredColour(uv), 1.0);
 }

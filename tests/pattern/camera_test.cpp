@@ -1,0 +1,89 @@
+// The cameras' uv and Jacobians: the plane's analytic J must be the
+// derivative of its own uv mapping, and tilt 0 must be the zoom view.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "stochtex/pattern/camera.h"
+
+namespace stochtex {
+namespace {
+
+Camera plane(double tilt, double fov, double scale) {
+    Camera c;
+    c.kind = Camera::Kind::Plane;
+    c.tiltDeg = tilt;
+    c.fovDeg = fov;
+    c.view.width = 200;
+    c.view.height = 150;
+    c.view.scale = scale;
+    c.view.offsetU = 37.5;
+    c.view.offsetV = -12.0;
+    return c;
+}
+
+// The trapezoid rule: uv(p + e) − uv(p) = ½(J(p) + J(p + e))·e + O(J''),
+// below 1e-3 of |J| wherever J changes by less than 5% from one pixel to the
+// next (near the horizon it changes faster than any step resolves).
+TEST(Camera, PlaneJacobianIsTheDerivativeOfItsUv) {
+    const int w = 256;
+    int checked = 0;
+    for (double tilt : {0.0, 35.0, 70.0})
+        for (double fov : {40.0, 90.0}) {
+            const Camera c = plane(tilt, fov, 2.5);
+            for (int py = 0; py < c.view.height - 1; py += 7)
+                for (int px = 0; px < c.view.width - 1; px += 11) {
+                    double u0, v0, ux, vx, uy, vy;
+                    Jacobian j0, jx, jy;
+                    if (!c.footprint(px, py, w, u0, v0, j0) || !c.footprint(px + 1, py, w, ux, vx, jx) ||
+                        !c.footprint(px, py + 1, w, uy, vy, jy))
+                        continue;
+                    if (std::abs(jy.dvdy - j0.dvdy) > 0.05 * j0.dvdy) continue;
+                    const double norm = std::sqrt(j0.dudx * j0.dudx + j0.dvdx * j0.dvdx + j0.dudy * j0.dudy + j0.dvdy * j0.dvdy);
+                    EXPECT_NEAR(ux - u0, 0.5 * (j0.dudx + jx.dudx), 1e-3 * norm);
+                    EXPECT_NEAR(vx - v0, 0.5 * (j0.dvdx + jx.dvdx), 1e-3 * norm);
+                    EXPECT_NEAR(uy - u0, 0.5 * (j0.dudy + jy.dudy), 1e-3 * norm);
+                    EXPECT_NEAR(vy - v0, 0.5 * (j0.dvdy + jy.dvdy), 1e-3 * norm);
+                    ++checked;
+                }
+        }
+    EXPECT_GT(checked, 1500);
+}
+
+TEST(Camera, PlaneAtTiltZeroIsTheZoomView) {
+    Camera z = plane(0, 60, 3.0);
+    z.kind = Camera::Kind::Zoom;
+    const Camera p = plane(0, 60, 3.0);
+    for (int py = 0; py < 150; py += 13)
+        for (int px = 0; px < 200; px += 17) {
+            double zu, zv, pu, pv;
+            Jacobian zj, pj;
+            ASSERT_TRUE(z.footprint(px, py, 128, zu, zv, zj));
+            ASSERT_TRUE(p.footprint(px, py, 128, pu, pv, pj));
+            EXPECT_NEAR(pu, zu, 1e-12);
+            EXPECT_NEAR(pv, zv, 1e-12);
+            EXPECT_NEAR(pj.dudx, zj.dudx, 1e-15);
+            EXPECT_NEAR(pj.dvdy, zj.dvdy, 1e-15);
+            EXPECT_EQ(pj.dvdx, 0.0);
+            EXPECT_NEAR(pj.dudy, 0.0, 1e-15);
+        }
+}
+
+// Tilt 80° with a 60° field of view: the horizon is in the image, rows above
+// it are sky, and footprints grow and stretch along v towards it.
+TEST(Camera, PlaneSkyAboveTheHorizonAndStretchedFootprintsBelow) {
+    const Camera c = plane(80, 60, 1.0);
+    double u, v;
+    Jacobian j;
+    EXPECT_FALSE(c.footprint(100, 0, 256, u, v, j));
+    ASSERT_TRUE(c.footprint(100, 149, 256, u, v, j));
+    const double nearStretch = j.dvdy / j.dudx;
+    int lastGround = 149;
+    while (lastGround > 0 && c.footprint(100, lastGround - 1, 256, u, v, j)) --lastGround;
+    EXPECT_GT(lastGround, 10);  // the horizon is well inside the image
+    ASSERT_TRUE(c.footprint(100, lastGround + 5, 256, u, v, j));
+    EXPECT_GT(j.dvdy / j.dudx, 10 * nearStretch);
+}
+
+}  // namespace
+}  // namespace stochtex
