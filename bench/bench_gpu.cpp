@@ -80,8 +80,9 @@ BENCHMARK(BM_GpuFilteredVsUnfiltered)->ArgName("scale")->Arg(1)->Arg(128)->Unit(
 // read-back): the paper's Figure 6 measure. Plane view (tilt 55°, every
 // pixel on the ground, footprints from 1 texel to strongly anisotropic);
 // mode 1 = paper, 2 = smooth, 3 = paper ×8 anisotropic, each beside the
-// unfiltered shader in the same run. Frames per measurement are chosen so one
-// measurement takes ~50 ms of GPU time (1 on llvmpipe, hundreds on a GPU).
+// unfiltered shader in the same run; pipeline 0 = fragment shader, 1 =
+// compute kernel (OpenGL 4.3). Frames per measurement are chosen so one
+// measurement takes ~0.2 s (1 on llvmpipe, hundreds on a GPU).
 void BM_GpuShaderThroughput(benchmark::State& state) {
     const Pattern p = Pattern::build(loadPreset("camouflage"));
     const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
@@ -90,11 +91,16 @@ void BM_GpuShaderThroughput(benchmark::State& state) {
     o.mode = state.range(0) == 2 ? FilterMode::Smooth : FilterMode::Paper;
     o.aniso = state.range(0) == 3 ? 8 : 1;
     GpuPattern filtered(p, *ctx, o), unfiltered(p, *ctx);
+    if (state.range(2) == 1) {
+        if (!ctx->hasCompute()) return state.SkipWithError("no OpenGL 4.3 compute shaders");
+        filtered.setPipeline(GpuPattern::Pipeline::Compute);
+        unfiltered.setPipeline(GpuPattern::Pipeline::Compute);
+    }
     Camera c;
     c.kind = Camera::Kind::Plane;
     c.tiltDeg = 55;
     c.view.width = c.view.height = int(state.range(1));
-    auto frames = [&](GpuPattern& g) { return std::clamp(int(0.05 / g.secondsPerFrame(c, 1)), 1, 1000); };
+    auto frames = [&](GpuPattern& g) { return std::clamp(int(0.2 / g.secondsPerFrame(c, 1)), 1, 2000); };
     const int ff = frames(filtered), fu = frames(unfiltered);
     double tf = 0, tu = 0;
     for (auto _ : state) {
@@ -108,8 +114,8 @@ void BM_GpuShaderThroughput(benchmark::State& state) {
     state.SetLabel(ctx->describe());
 }
 BENCHMARK(BM_GpuShaderThroughput)
-    ->ArgNames({"mode", "size"})
-    ->ArgsProduct({{1, 2, 3}, {1024, 4096}})
+    ->ArgNames({"mode", "size", "pipeline"})
+    ->ArgsProduct({{1, 2, 3}, {1024, 2048, 4096}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

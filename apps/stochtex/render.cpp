@@ -28,6 +28,7 @@ void registerRender(CLI::App& app) {
         bool pack8 = false;
         bool gpu = false;
         std::string derivatives = "camera";
+        std::string pipeline = "fragment";
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("render", "Render a pattern to PNG or EXR, unfiltered, filtered or as the reference");
@@ -50,9 +51,13 @@ void registerRender(CLI::App& app) {
                   "Render with the GLSL implementation on a headless OpenGL context (--filter none, paper or smooth)");
     cmd->add_option("--derivatives", args->derivatives,
                     "--gpu footprints: camera (the view's exact Jacobian, as the CPU) | rasterizer (dFdx/dFdy)");
+    cmd->add_option("--pipeline", args->pipeline,
+                    "--gpu: fragment (full-screen triangle) | compute (GLSL 4.30 kernel; uses every unit of compute GPUs)");
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         checkImageOutput(args->output);
+        if (args->pipeline != "fragment" && args->pipeline != "compute")
+            throw InputError("--pipeline: unknown \"" + args->pipeline + "\" (expected fragment or compute)");
         if (args->derivatives != "camera" && args->derivatives != "rasterizer")
             throw InputError("--derivatives: unknown \"" + args->derivatives + "\" (expected camera or rasterizer)");
         FilterOptions options;
@@ -89,6 +94,7 @@ void registerRender(CLI::App& app) {
             device = context->describe();
             GpuPattern gpu(pattern, *context, options);
             if (args->derivatives == "rasterizer") gpu.setDerivatives(GpuPattern::Derivatives::Rasterizer);
+            if (args->pipeline == "compute") gpu.setPipeline(GpuPattern::Pipeline::Compute);
             image = gpu.render(camera);
         } else {
             image = FilteredPattern(pattern, options).render(camera);

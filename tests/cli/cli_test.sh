@@ -106,6 +106,8 @@ cmp -s "$out/big.png" "$out/big_ref.png" || fail "bake-image differs from render
 expect_ok "bake-image --gpu" "$out/bigg.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu -o "$out/bigg.png"
 expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
 expect_ok "render --gpu plane" "$out/gpu3.png" -- "$bin" render --preset marble --gpu --filter paper --view plane --tilt 70 --aniso 8 --size 96 -o "$out/gpu3.png"
+expect_ok "render --gpu compute" "$out/gpu4.png" -- "$bin" render --preset marble --gpu --pipeline compute --filter smooth --view plane --tilt 70 --aniso 8 --size 96,72 -o "$out/gpu4.png"
+expect_ok "render --gpu rasterizer derivatives" "$out/gpu5.png" -- "$bin" render --preset marble --gpu --derivatives rasterizer --filter smooth --view plane --size 96 -o "$out/gpu5.png"
 
 # --- bad input ---
 echo '{"noise_x": {"type": "spectrum", ' >"$work/malformed.json"
@@ -143,6 +145,9 @@ expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: every n must be 
 expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
 expect_bad "reproduce zero count" "$out/rbad2" "--count must be in [1, 1e6]" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
 expect_bad "gpu with the reference" "$out/gbad.png" "--gpu: the GPU renders --filter none, paper or smooth" -- "$bin" render --preset camouflage --gpu --filter reference -o "$out/gbad.png"
+expect_bad "unknown pipeline" "$out/gbad2.png" '--pipeline: unknown "vulkan"' -- "$bin" render --preset camouflage --gpu --pipeline vulkan -o "$out/gbad2.png"
+expect_bad "unknown derivatives" "$out/gbad3.png" '--derivatives: unknown "dfdx"' -- "$bin" render --preset camouflage --gpu --derivatives dfdx -o "$out/gbad3.png"
+expect_bad "compute with rasterizer derivatives" "$out/gbad4.png" "--derivatives rasterizer needs the fragment pipeline" -- "$bin" render --preset camouflage --gpu --filter paper --pipeline compute --derivatives rasterizer -o "$out/gbad4.png"
 expect_bad "scene unknown object" "$out/sbad.png" '--object: unknown "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
 expect_bad "bake unfiltered" "$out/bbad" "bake: --filter must be paper or smooth" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
 expect_bad "bake-image exr" "$out/x.exr" "bake-image writes PNG" -- "$bin" bake-image --preset marble -o "$out/x.exr"

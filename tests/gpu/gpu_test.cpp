@@ -52,8 +52,10 @@ Difference compare(const Image& a, const Image& b) {
 // 0.5%: pixels whose float uv lands on the other side of a triangle edge
 // than the CPU's double uv), mean |Δ| ≤ 0.5/255.
 void expectParity(const Pattern& pattern, const Camera& camera, const std::string& what,
-                  const FilterOptions& options = GpuPattern::unfiltered(), double allowedOutliers = 0.005) {
+                  const FilterOptions& options = GpuPattern::unfiltered(), double allowedOutliers = 0.005,
+                  GpuPattern::Pipeline pipeline = GpuPattern::Pipeline::Fragment) {
     GpuPattern gpu(pattern, context(), options);
+    gpu.setPipeline(pipeline);
     const Image cpu = FilteredPattern(pattern, options).render(camera);
     const Difference d = compare(gpu.render(camera), cpu);
     std::printf("[ info ] %s: mean |GPU - CPU| %.2e, max %.2e, %.3f%% of pixels over 2/255\n", what.c_str(), d.mean,
@@ -158,6 +160,31 @@ TEST(Gpu, PlaneViewMatchesTheCpu) {
     expectParity(p, c, "plane 50°, unfiltered", GpuPattern::unfiltered());
 }
 
+// The compute kernel runs the same GLSL functions: same tolerance, zoom and
+// plane, filtered (K = 1 and 8) and unfiltered. Skipped below OpenGL 4.3.
+TEST(Gpu, ComputeKernelMatchesTheCpu) {
+    if (!context().hasCompute()) GTEST_SKIP() << "no OpenGL 4.3: " << context().describe();
+    const auto compute = GpuPattern::Pipeline::Compute;
+    const Pattern p = Pattern::build(loadPreset("camouflage"));
+    Camera c;
+    c.view.width = 100;  // not a multiple of the 8 × 8 work groups
+    c.view.height = 75;
+    c.view.scale = 3.7;
+    c.view.offsetU = 1234.5;
+    expectParity(p, c, "compute, zoom, unfiltered", GpuPattern::unfiltered(), 0.005, compute);
+    FilterOptions o;
+    o.mode = FilterMode::Paper;
+    expectParity(p, c, "compute, zoom, paper", o, 0.005, compute);
+    c.kind = Camera::Kind::Plane;
+    c.tiltDeg = 70;
+    o.mode = FilterMode::Smooth;
+    o.aniso = 8;
+    expectParity(p, c, "compute, plane 70°, smooth, K = 8", o, 0.005, compute);
+    GpuPattern gpu(p, context(), o);
+    gpu.setPipeline(compute);
+    EXPECT_THROW(gpu.setDerivatives(GpuPattern::Derivatives::Rasterizer), InputError);
+}
+
 TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     // A bimodal exemplar: T⁻¹ must bring its plateaus back on the GPU too.
     const fs::path dir = fs::temp_directory_path() / "stochtex_gpu_test";
@@ -232,7 +259,7 @@ TEST(Gpu, BrokenShaderReportsFileAndLine) {
 
 // Every program's sources compile as GLSL 3.30 core and GLSL ES 3.00
 // (WebGL 2), checked by the reference compiler.
-TEST(Gpu, ShadersValidateAsCore330AndEs300) {
+TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {
     const fs::path dir = fs::temp_directory_path() / "stochtex_glslang";
     fs::create_directories(dir);
     const std::vector<std::pair<std::string, std::vector<std::string>>> stages = {
@@ -249,6 +276,14 @@ TEST(Gpu, ShadersValidateAsCore330AndEs300) {
             const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
             EXPECT_EQ(rc, 0) << file << ":\n" << text;
         }
+    for (const char* colour : {"kernel_filtered", "kernel_unfiltered"}) {
+        const bool filtered = std::string(colour) == "kernel_filtered";
+        const fs::path file = dir / (std::string(colour) + ".comp");
+        std::ofstream(file) << assembleShader(GlslTarget::Core430, {"common", filtered ? "filtering" : "unfiltered", "view",
+                                                                    colour, "view_kernel"});
+        const int rc = std::system(("glslangValidator " + file.string() + " > /dev/null 2>&1").c_str());
+        EXPECT_EQ(rc, 0) << file;
+    }
     fs::remove_all(dir);
 }
 

@@ -55,10 +55,17 @@ std::unique_ptr<GlContext> GlContext::headless() {
         tried += std::string(tried.empty() ? "" : ", ") + (vendor ? vendor : "?");
         if (!eglBindAPI(EGL_OPENGL_API)) continue;
         // Configless and surfaceless (EGL_KHR_no_config_context,
-        // EGL_KHR_surfaceless_context): rendering is to FBOs only.
-        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-        const EGLContext c = eglCreateContext(d, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+        // EGL_KHR_surfaceless_context): rendering is to FBOs only. 4.3 core
+        // first (compute shaders; some drivers give exactly the version
+        // asked for), else 3.3 core.
+        EGLContext c = EGL_NO_CONTEXT;
+        for (EGLint minorOf4 : {3, -1}) {
+            const EGLint major = minorOf4 < 0 ? 3 : 4, minor = minorOf4 < 0 ? 3 : minorOf4;
+            const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, major, EGL_CONTEXT_MINOR_VERSION, minor,
+                                         EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+            c = eglCreateContext(d, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+            if (c != EGL_NO_CONTEXT) break;
+        }
         if (c == EGL_NO_CONTEXT) continue;
         if (!eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, c)) {
             eglDestroyContext(d, c);
@@ -127,6 +134,8 @@ void GlContext::makeCurrent() {
     if (impl_->window) glfwMakeContextCurrent(impl_->window);
     else eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context);
 }
+
+bool GlContext::hasCompute() const { return epoxy_gl_version() >= 43; }
 
 std::string GlContext::describe() const {
     const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -63,7 +64,9 @@ GLuint tableTexture(const PrefilteredColormap& table, int rx, int ry) {
 }  // namespace
 
 struct GpuPattern::Impl {
-    GLuint program = 0, vao = 0, sceneProgram = 0;
+    GLuint program = 0, vao = 0, sceneProgram = 0, kernelProgram = 0;
+    bool hasCompute = false;
+    Pipeline pipeline = Pipeline::Fragment;
     GLuint examples[2] = {0, 0}, inverses[2] = {0, 0}, colormap = 0;
     float means[2] = {0, 0};
     uint32_t seeds[2] = {0, 0};
@@ -87,6 +90,7 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     context.makeCurrent();
     Impl& m = *impl_;
     m.options = options;
+    m.hasCompute = context.hasCompute();
     const bool filtered = options.mode != FilterMode::None;
     m.program = compileProgram({"fullscreen"}, filtered ? std::vector<std::string>{"common", "filtering", "view", "filtered"}
                                                        : std::vector<std::string>{"common", "unfiltered", "view", "pattern"});
@@ -134,6 +138,7 @@ GpuPattern::~GpuPattern() {
     glDeleteVertexArrays(1, &m.vao);
     glDeleteProgram(m.program);
     if (m.sceneProgram) glDeleteProgram(m.sceneProgram);
+    if (m.kernelProgram) glDeleteProgram(m.kernelProgram);
 }
 
 Image GpuPattern::render(const View& view) {
@@ -180,13 +185,50 @@ void GpuPattern::bind(unsigned program) const {
     glUniform3f(uniform("uSky"), m.sky[0], m.sky[1], m.sky[2]);
 }
 
-void GpuPattern::setDerivatives(Derivatives d) { impl_->derivatives = d; }
+void GpuPattern::setDerivatives(Derivatives d) {
+    if (d == Derivatives::Rasterizer && impl_->pipeline == Pipeline::Compute)
+        throw InputError("--derivatives rasterizer needs the fragment pipeline (compute shaders have no dFdx)");
+    impl_->derivatives = d;
+}
+
+void GpuPattern::setPipeline(Pipeline p) {
+    Impl& m = *impl_;
+    if (p == Pipeline::Compute) {
+        if (!m.hasCompute) throw GpuUnavailable("--pipeline compute needs OpenGL 4.3 (compute shaders)");
+        if (m.derivatives == Derivatives::Rasterizer)
+            throw InputError("--derivatives rasterizer needs the fragment pipeline (compute shaders have no dFdx)");
+        if (!m.kernelProgram) {
+            const bool filtered = m.options.mode != FilterMode::None;
+            m.kernelProgram = compileComputeProgram(
+                filtered ? std::vector<std::string>{"common", "filtering", "view", "kernel_filtered", "view_kernel"}
+                         : std::vector<std::string>{"common", "unfiltered", "view", "kernel_unfiltered", "view_kernel"});
+        }
+    }
+    m.pipeline = p;
+}
 
 Image GpuPattern::draw(int width, int height, bool depth, const std::function<void()>& drawCalls) const {
+    Image out(width, height, 3, Image::Uninitialized{});
+    offscreen(width, height, depth, [&] {
+        drawCalls();
+        std::vector<float> rgba(size_t(width) * size_t(height) * 4);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+        for (size_t i = 0; i < out.pixelCount(); ++i)
+            for (size_t c = 0; c < 3; ++c) out.data()[3 * i + c] = rgba[4 * i + c];
+    });
+    return out;
+}
+
+void GpuPattern::offscreen(int width, int height, bool depth, const std::function<void()>& work) const {
     GLuint target = 0, fbo = 0, depthBuffer = 0;
     glGenTextures(1, &target);
     glBindTexture(GL_TEXTURE_2D, target);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    // Complete without mipmaps: an incomplete texture bound as a compute
+    // image takes no stores (NVIDIA enforces this; llvmpipe does not).
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
@@ -197,18 +239,11 @@ Image GpuPattern::draw(int width, int height, bool depth, const std::function<vo
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer);
     }
     glViewport(0, 0, width, height);
-    drawCalls();
-    std::vector<float> rgba(size_t(width) * size_t(height) * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+    work();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &fbo);
     glDeleteTextures(1, &target);
     if (depthBuffer) glDeleteRenderbuffers(1, &depthBuffer);
-    Image out(width, height, 3, Image::Uninitialized{});
-    for (size_t i = 0; i < out.pixelCount(); ++i)
-        for (size_t c = 0; c < 3; ++c) out.data()[3 * i + c] = rgba[4 * i + c];
-    return out;
 }
 
 Image GpuPattern::render(const Camera& camera) {
@@ -216,54 +251,66 @@ Image GpuPattern::render(const Camera& camera) {
     const View& view = camera.view;
     // Framebuffer row y is image row y: the shader maps fragment y to v the
     // way the CPU maps image rows.
-    return draw(view.width, view.height, false, [&] { drawView(camera); });
+    return draw(view.width, view.height, false, [&] { drawOrDispatch(camera); });
+}
+
+void GpuPattern::setViewUniforms(unsigned program, const Camera& camera) const {
+    const View& view = camera.view;
+    const Impl& m = *impl_;
+    bind(program);
+    auto uniform = [&](const char* name) { return glGetUniformLocation(program, name); };
+    const double pi = std::numbers::pi;
+    glUniform1i(uniform("uPlane"), camera.kind == Camera::Kind::Plane);
+    glUniform1f(uniform("uTanHalfFov"), float(std::tan(0.5 * camera.fovDeg * pi / 180.0)));
+    glUniform1f(uniform("uSinTilt"), float(std::sin(camera.tiltDeg * pi / 180.0)));
+    glUniform1f(uniform("uCosTilt"), float(std::cos(camera.tiltDeg * pi / 180.0)));
+    glUniform2f(uniform("uViewSize"), float(view.width), float(view.height));
+    glUniform2f(uniform("uOffset"), float(view.offsetU), float(view.offsetV));
+    glUniform1f(uniform("uScale"), float(view.scale));
+    glUniform1i(uniform("uRasterizerDerivatives"), m.derivatives == Derivatives::Rasterizer);
 }
 
 void GpuPattern::drawView(const Camera& camera) {
-    const View& view = camera.view;
     const Impl& m = *impl_;
-    {
-        bind(m.program);
-        auto uniform = [&](const char* name) { return glGetUniformLocation(m.program, name); };
-        const double pi = std::numbers::pi;
-        glUniform1i(uniform("uPlane"), camera.kind == Camera::Kind::Plane);
-        glUniform1f(uniform("uTanHalfFov"), float(std::tan(0.5 * camera.fovDeg * pi / 180.0)));
-        glUniform1f(uniform("uSinTilt"), float(std::sin(camera.tiltDeg * pi / 180.0)));
-        glUniform1f(uniform("uCosTilt"), float(std::cos(camera.tiltDeg * pi / 180.0)));
-        glUniform2f(uniform("uViewSize"), float(view.width), float(view.height));
-        glUniform2f(uniform("uOffset"), float(view.offsetU), float(view.offsetV));
-        glUniform1f(uniform("uScale"), float(view.scale));
-        glUniform1i(uniform("uRasterizerDerivatives"), m.derivatives == Derivatives::Rasterizer);
-        glBindVertexArray(m.vao);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-    }
+    setViewUniforms(m.program, camera);
+    glBindVertexArray(m.vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void GpuPattern::drawOrDispatch(const Camera& camera) {
+    const Impl& m = *impl_;
+    if (m.pipeline == Pipeline::Fragment) return drawView(camera);
+    // The kernel writes the texture attached to the bound framebuffer.
+    GLint target = 0;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
+                                          &target);
+    setViewUniforms(m.kernelProgram, camera);
+    glBindImageTexture(0, GLuint(target), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(GLuint((camera.view.width + 7) / 8), GLuint((camera.view.height + 7) / 8), 1);
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 double GpuPattern::secondsPerFrame(const Camera& camera, int frames) {
     validateCamera(camera);
     if (frames < 1) throw InputError("secondsPerFrame: frames must be >= 1");
-    const View& view = camera.view;
-    GLuint target = 0, fbo = 0, query = 0;
-    glGenTextures(1, &target);
-    glBindTexture(GL_TEXTURE_2D, target);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, view.width, view.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
-    glViewport(0, 0, view.width, view.height);
-    drawView(camera);  // drivers finish compiling and uploading at the first draw
-    glFinish();
-    glGenQueries(1, &query);
-    glBeginQuery(GL_TIME_ELAPSED, query);
-    for (int f = 0; f < frames; ++f) drawView(camera);
-    glEndQuery(GL_TIME_ELAPSED);
-    GLuint64 nanoseconds = 0;
-    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &nanoseconds);  // waits for the draws
-    glDeleteQueries(1, &query);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteTextures(1, &target);
-    return double(nanoseconds) * 1e-9 / frames;
+    double seconds = 0;
+    offscreen(camera.view.width, camera.view.height, false, [&] {
+        // Warm-up, at least 0.3 s: drivers finish compiling and uploading at
+        // the first draw, and a GPU that idled (during a read-back, say)
+        // needs a while at full load to raise its clocks again (an H100
+        // measured right after idling ran at 345 of 1980 MHz).
+        using clock = std::chrono::steady_clock;
+        const auto warm = clock::now();
+        do {
+            drawOrDispatch(camera);
+            glFinish();
+        } while (std::chrono::duration<double>(clock::now() - warm).count() < 0.3);
+        const auto start = clock::now();
+        for (int f = 0; f < frames; ++f) drawOrDispatch(camera);
+        glFinish();
+        seconds = std::chrono::duration<double>(clock::now() - start).count();
+    });
+    return seconds / frames;
 }
 
 Image GpuPattern::renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling) {

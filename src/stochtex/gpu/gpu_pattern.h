@@ -36,6 +36,13 @@ public:
     // dFdx/dFdy of uv, as an engine gets them on arbitrary geometry.
     enum class Derivatives { Camera, Rasterizer };
     void setDerivatives(Derivatives d);
+    // How render() and secondsPerFrame() run the shader: as a fragment shader
+    // over a full-screen triangle (the default; what a display or an engine
+    // does) or as a compute kernel (GLSL 4.30; GpuUnavailable without 4.3),
+    // which reaches every shader unit of GPUs with few graphics units.
+    // Compute footprints are always the camera's Jacobian.
+    enum class Pipeline { Fragment, Compute };
+    void setPipeline(Pipeline p);
 
     // The camera mapping of FilteredPattern::render (zoom or plane); RGB float.
     // Footprints come from the rasterizer's derivatives of uv.
@@ -44,10 +51,11 @@ public:
     // Draws the camera's view into the framebuffer bound now (a window's),
     // over the current viewport; no read-back.
     void drawView(const Camera& camera);
-    // GPU seconds per frame of the camera's view drawn into an offscreen
-    // RGBA8 target (what a display gets), over `frames` draws after one
-    // warm-up draw, from a GL_TIME_ELAPSED query: the shader's own time, no
-    // read-back. For throughput benchmarks.
+    // Seconds per frame of render()'s work without the read-back: `frames`
+    // draws (or dispatches) into render()'s float target after a warm-up of
+    // at least 0.3 s, timed from submission to glFinish. Wall clock, not a GL_TIME_ELAPSED
+    // query: llvmpipe's queries end before its rasterizer threads do. For
+    // throughput benchmarks.
     double secondsPerFrame(const Camera& camera, int frames);
     // The pattern on a lit mesh (uv × tiling example periods), seen by a
     // perspective camera; 3 channels, row 0 at the top.
@@ -57,9 +65,15 @@ private:
     // Binds every texture and uniform of the pattern to `program` (both the
     // unfiltered and the filtered sets: a program ignores what it lacks).
     void bind(unsigned program) const;
+    void setViewUniforms(unsigned program, const Camera& camera) const;
+    // drawView, or the compute kernel into the bound framebuffer's texture.
+    void drawOrDispatch(const Camera& camera);
     // Renders into a float framebuffer (with a depth buffer if asked) and
     // reads it back.
     Image draw(int width, int height, bool depth, const std::function<void()>& drawCalls) const;
+    // A width × height RGBA32F texture (complete, so also a compute image)
+    // as the bound framebuffer, with a depth buffer if asked, during `work`.
+    void offscreen(int width, int height, bool depth, const std::function<void()>& work) const;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <map>
 #include <regex>
 
@@ -33,9 +34,13 @@ std::vector<std::string> shaderNames() {
 namespace {
 
 std::string header(GlslTarget target) {
-    return target == GlslTarget::Core330 ? "#version 330 core\n"
-                                         : "#version 300 es\nprecision highp float;\nprecision highp int;\n"
-                                           "precision highp sampler2D;\nprecision highp sampler2DArray;\n";
+    switch (target) {
+        case GlslTarget::Core330: return "#version 330 core\n";
+        case GlslTarget::Core430: return "#version 430 core\n";
+        case GlslTarget::Es300: break;
+    }
+    return "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+           "precision highp sampler2D;\nprecision highp sampler2DArray;\n";
 }
 
 // The header, then the files one after the other. `starts[k]` is the line
@@ -74,9 +79,10 @@ std::string mapLocations(const std::string& log, const std::vector<std::string>&
 }
 
 unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
-                      const std::vector<std::pair<std::string, std::string>>& overrides) {
+                      const std::vector<std::pair<std::string, std::string>>& overrides,
+                      GlslTarget target = GlslTarget::Core330) {
     std::vector<int> starts;
-    const std::string src = assemble(GlslTarget::Core330, files, overrides, &starts);
+    const std::string src = assemble(target, files, overrides, &starts);
     const GLuint s = glCreateShader(stage);
     const char* p = src.c_str();
     glShaderSource(s, 1, &p, nullptr);
@@ -96,6 +102,25 @@ unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
     return s;
 }
 
+// Links the stages (deleting them); ShaderError with the log on failure.
+unsigned link(std::initializer_list<unsigned> shaders) {
+    const GLuint prog = glCreateProgram();
+    for (unsigned s : shaders) glAttachShader(prog, s);
+    glLinkProgram(prog);
+    for (unsigned s : shaders) glDeleteShader(s);
+    GLint ok = 0;
+    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint n = 0;
+        glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &n);
+        std::string log(std::size_t(std::max(n, 1)), '\0');
+        glGetProgramInfoLog(prog, n, nullptr, log.data());
+        glDeleteProgram(prog);
+        throw ShaderError("shader program does not link:\n" + std::string(log.c_str()));
+    }
+    return prog;
+}
+
 }  // namespace
 
 std::string assembleShader(GlslTarget target, const std::vector<std::string>& files) {
@@ -112,23 +137,11 @@ unsigned compileProgram(const std::vector<std::string>& vertexFiles, const std::
         glDeleteShader(vs);
         throw;
     }
-    const GLuint prog = glCreateProgram();
-    glAttachShader(prog, vs);
-    glAttachShader(prog, fs);
-    glLinkProgram(prog);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        GLint n = 0;
-        glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &n);
-        std::string log(std::size_t(std::max(n, 1)), '\0');
-        glGetProgramInfoLog(prog, n, nullptr, log.data());
-        glDeleteProgram(prog);
-        throw ShaderError("shader program does not link:\n" + std::string(log.c_str()));
-    }
-    return prog;
+    return link({vs, fs});
+}
+
+unsigned compileComputeProgram(const std::vector<std::string>& files) {
+    return link({compileStage(GL_COMPUTE_SHADER, files, {}, GlslTarget::Core430)});
 }
 
 }  // namespace stochtex

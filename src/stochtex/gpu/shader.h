@@ -8,7 +8,7 @@
 
 namespace stochtex {
 
-enum class GlslTarget { Core330, Es300 };
+enum class GlslTarget { Core330, Es300, Core430 };
 
 // A shader failed to compile or link; what() holds the compiler log with
 // every location rewritten as the shader file's stem and line ("pattern:12").
@@ -29,5 +29,7 @@ std::string assembleShader(GlslTarget target, const std::vector<std::string>& fi
 // (tests use it to feed a broken shader).
 unsigned compileProgram(const std::vector<std::string>& vertexFiles, const std::vector<std::string>& fragmentFiles,
                         const std::vector<std::pair<std::string, std::string>>& overrides = {});
+// A compute program (GLSL 4.30 core; needs a 4.3 context).
+unsigned compileComputeProgram(const std::vector<std::string>& files);
 
 }  // namespace stochtex
