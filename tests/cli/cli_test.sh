@@ -150,6 +150,7 @@ expect_bad "unknown derivatives" "$out/gbad3.png" '--derivatives: unknown "dfdx"
 expect_bad "compute with rasterizer derivatives" "$out/gbad4.png" "--derivatives rasterizer needs the fragment pipeline" -- "$bin" render --preset camouflage --gpu --filter paper --pipeline compute --derivatives rasterizer -o "$out/gbad4.png"
 expect_bad "scene unknown object" "$out/sbad.png" '--object: unknown "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
 expect_bad "bake unfiltered" "$out/bbad" "bake: --filter must be paper or smooth" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
+expect_bad "bake bad precision" "$out/bbad2" '--table-precision: unknown "double"' -- "$bin" bake --preset weld --table-precision double -o "$out/bbad2"
 expect_bad "bake-image exr" "$out/x.exr" "bake-image writes PNG" -- "$bin" bake-image --preset marble -o "$out/x.exr"
 
 if [ $failures -ne 0 ]; then

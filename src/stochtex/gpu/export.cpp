@@ -42,7 +42,7 @@ Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
 | --- | --- | --- |
 | `uStatsX`, `uStatsY` | `sampler2D`, RG32F, mip levels 0…L | level l = `stats_x_l.exr` (R = mean, G = variance) |
 | `uCovariance` | `sampler2D`, RG32F, mip levels | `covariance_l.exr` if `shared_offsets`, else bind `uStatsX` |
-| `uTable` | `sampler2DArray`, RGBA32F, `levels²` layers of `width × height` | layer k = rows `[k·height, (k+1)·height)` of `table.exr`; texture row j = that layer's row j |
+| `uTable` | `sampler2DArray`, RGBA16F or RGBA32F (`table.precision`), `levels²` layers of `width × height` | layer k = rows `[k·height, (k+1)·height)` of `table.exr`; texture row j = that layer's row j |
 
 All are read with `texelFetch` (no filtering needed); set `GL_TEXTURE_MAX_LEVEL`
 to L so the pyramids are mipmap-complete.
@@ -68,7 +68,8 @@ void main() { colour = stochtex_sample(vUv * 8.0); }
 
 }  // namespace
 
-void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir) {
+void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
+                   const ExportOptions& exportOptions) {
     if (options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
         throw InputError("bake: --filter must be paper or smooth");
     const FilteredPattern f(pattern, options);  // validates the options
@@ -101,8 +102,12 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     const int n = int(table.sigmas().size());
     const int rx = f.blendingSpaceColormap().resolutionX(), ry = f.blendingSpaceColormap().resolutionY();
     const Image atlas = table.atlas(rx, ry);
-    writeImage((fs::path(dir) / "table.exr").string(), atlas);
-    m["table"] = {{"file", "table.exr"}, {"levels", n}, {"width", rx}, {"height", ry}, {"sigmas", table.sigmas()}};
+    WriteOptions w;
+    w.exrHalf = exportOptions.halfTable;
+    writeImage((fs::path(dir) / "table.exr").string(), atlas, w);
+    m["table"] = {{"file", "table.exr"}, {"levels", n},
+                  {"width", rx},          {"height", ry},
+                  {"sigmas", table.sigmas()}, {"precision", exportOptions.halfTable ? "half" : "float"}};
     writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
     writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude());
     writeFileAtomic((fs::path(dir) / "README.md").string(), kReadme);

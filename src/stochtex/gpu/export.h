@@ -8,7 +8,8 @@
 //   stats_x_L.exr        level L of noise x's pyramid: R = E_L, G = V_L (float32)
 //   stats_y_L.exr        the same for noise y
 //   covariance_L.exr     R = E_L (of x), G = C_L — only with shared offsets
-//   table.exr            the prefiltered table: n² layers of Rx × Ry RGB,
+//   table.exr            the prefiltered table: n² layers of Rx × Ry RGB
+//                        (half floats by default, manifest "precision"),
 //                        layer kx·n + ky in rows [k·Ry, (k+1)·Ry), row j of
 //                        a layer holding y = j/(Ry − 1) (T⁻¹ already folded in)
 //   stochtex.glsl        the include (no #version line: the host adds it)
@@ -19,8 +20,16 @@
 
 namespace stochtex {
 
+struct ExportOptions {
+    // The table as half floats: colours in [0, 1] lose at most 2⁻¹² (0.06/255)
+    // and the file halves (the smooth table's 100 layers: 78 → 39 MB raw).
+    // The pyramids stay float32: variances go down to ~1e-6.
+    bool halfTable = true;
+};
+
 // options.mode: Paper or Smooth. The folder is created if missing.
-void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir);
+void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
+                   const ExportOptions& exportOptions = {});
 
 // The include's text (what stochtex.glsl holds).
 std::string exportedShaderInclude();

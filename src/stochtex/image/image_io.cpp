@@ -140,7 +140,7 @@ void writeImage(const std::string& path, const Image& image, const WriteOptions&
         params = {cv::IMWRITE_PNG_COMPRESSION, 3};
     } else {
         encoded = bgr;
-        params = {cv::IMWRITE_EXR_TYPE, cv::IMWRITE_EXR_TYPE_FLOAT};
+        params = {cv::IMWRITE_EXR_TYPE, options.exrHalf ? cv::IMWRITE_EXR_TYPE_HALF : cv::IMWRITE_EXR_TYPE_FLOAT};
     }
     std::vector<uchar> buffer;
     bool ok = false;

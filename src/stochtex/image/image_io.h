@@ -15,6 +15,7 @@ namespace stochtex {
 
 struct WriteOptions {
     int pngBitDepth = 8;  // 8 or 16
+    bool exrHalf = false;  // EXR channels as 16-bit half floats (else 32-bit float)
 };
 
 // Throws InputError naming the path if the file is missing or not an image.
