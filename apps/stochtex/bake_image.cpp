@@ -20,6 +20,7 @@ void registerBakeImage(CLI::App& app) {
         std::string output, filter = "smooth";
         int aniso = 1, bits = 8, band = 256, threads = 0;
         bool gpu = false;
+        std::string pipeline = "fragment";
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("bake-image", "Render a large PNG in bands of rows with bounded memory "
@@ -32,11 +33,13 @@ void registerBakeImage(CLI::App& app) {
     cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
     cmd->add_option("--band", args->band, "Rows rendered at a time")->check(CLI::Range(1, 4096));
     cmd->add_flag("--gpu", args->gpu, "Render the bands with the GLSL implementation");
+    addPipelineFlag(*cmd, args->pipeline);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         if (args->output.size() < 4 || args->output.substr(args->output.size() - 4) != ".png")
             throw InputError(args->output + ": bake-image writes PNG (.png)");
         checkImageOutput(args->output);
+        const GpuPattern::Pipeline pipeline = parsePipeline(args->pipeline);
         FilterOptions options;
         options.mode = parseFilterMode(args->filter);
         options.aniso = args->aniso;
@@ -55,6 +58,7 @@ void registerBakeImage(CLI::App& app) {
         if (args->gpu) {
             context = GlContext::headless();
             gpu = std::make_unique<GpuPattern>(pattern, *context, options);
+            gpu->setPipeline(pipeline);
         } else {
             cpu = std::make_unique<FilteredPattern>(pattern, options);
         }

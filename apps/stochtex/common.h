@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 
@@ -39,6 +40,11 @@ JsonArgument readJsonArgument(const std::string& arg);
 void checkImageOutput(const std::string& path);
 
 void addThreadsFlag(CLI::App& cmd, int& threads);
+
+// --pipeline fragment|compute of the --gpu commands; parsePipeline throws
+// InputError naming the flag for any other value.
+void addPipelineFlag(CLI::App& cmd, std::string& pipeline);
+GpuPattern::Pipeline parsePipeline(const std::string& pipeline);
 
 // <, > and & as HTML entities.
 std::string htmlEscape(const std::string& s);

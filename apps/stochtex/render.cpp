@@ -51,13 +51,11 @@ void registerRender(CLI::App& app) {
                   "Render with the GLSL implementation on a headless OpenGL context (--filter none, paper or smooth)");
     cmd->add_option("--derivatives", args->derivatives,
                     "--gpu footprints: camera (the view's exact Jacobian, as the CPU) | rasterizer (dFdx/dFdy)");
-    cmd->add_option("--pipeline", args->pipeline,
-                    "--gpu: fragment (full-screen triangle) | compute (GLSL 4.30 kernel; uses every unit of compute GPUs)");
+    addPipelineFlag(*cmd, args->pipeline);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         checkImageOutput(args->output);
-        if (args->pipeline != "fragment" && args->pipeline != "compute")
-            throw InputError("--pipeline: unknown \"" + args->pipeline + "\" (expected fragment or compute)");
+        const GpuPattern::Pipeline pipeline = parsePipeline(args->pipeline);
         if (args->derivatives != "camera" && args->derivatives != "rasterizer")
             throw InputError("--derivatives: unknown \"" + args->derivatives + "\" (expected camera or rasterizer)");
         FilterOptions options;
@@ -94,7 +92,7 @@ void registerRender(CLI::App& app) {
             device = context->describe();
             GpuPattern gpu(pattern, *context, options);
             if (args->derivatives == "rasterizer") gpu.setDerivatives(GpuPattern::Derivatives::Rasterizer);
-            if (args->pipeline == "compute") gpu.setPipeline(GpuPattern::Pipeline::Compute);
+            gpu.setPipeline(pipeline);
             image = gpu.render(camera);
         } else {
             image = FilteredPattern(pattern, options).render(camera);

@@ -104,6 +104,7 @@ expect_ok "bake-image" "$out/big.png" -- "$bin" bake-image --preset marble --siz
 expect_ok "render for bake-image" "$out/big_ref.png" -- "$bin" render --preset marble --size 200,150 --filter smooth --scale 3 -o "$out/big_ref.png"
 cmp -s "$out/big.png" "$out/big_ref.png" || fail "bake-image differs from render"
 expect_ok "bake-image --gpu" "$out/bigg.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu -o "$out/bigg.png"
+expect_ok "bake-image --gpu compute" "$out/biggc.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu --pipeline compute -o "$out/biggc.png"
 expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
 expect_ok "render --gpu plane" "$out/gpu3.png" -- "$bin" render --preset marble --gpu --filter paper --view plane --tilt 70 --aniso 8 --size 96 -o "$out/gpu3.png"
 expect_ok "render --gpu compute" "$out/gpu4.png" -- "$bin" render --preset marble --gpu --pipeline compute --filter smooth --view plane --tilt 70 --aniso 8 --size 96,72 -o "$out/gpu4.png"
