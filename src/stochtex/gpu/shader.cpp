@@ -78,6 +78,17 @@ std::string mapLocations(const std::string& log, const std::vector<std::string>&
     return out + log.substr(last);
 }
 
+// A shader's or program's info log: `query` is glGetShaderiv/glGetProgramiv,
+// `read` glGetShaderInfoLog/glGetProgramInfoLog.
+template <class Query, class Read>
+std::string infoLog(GLuint object, Query query, Read read) {
+    GLint n = 0;
+    query(object, GL_INFO_LOG_LENGTH, &n);
+    std::string log(std::size_t(std::max(n, 1)), '\0');
+    read(object, n, nullptr, log.data());
+    return log.c_str();
+}
+
 unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
                       const std::vector<std::pair<std::string, std::string>>& overrides,
                       GlslTarget target = GlslTarget::Core330) {
@@ -90,14 +101,11 @@ unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        GLint n = 0;
-        glGetShaderiv(s, GL_INFO_LOG_LENGTH, &n);
-        std::string log(std::size_t(std::max(n, 1)), '\0');
-        glGetShaderInfoLog(s, n, nullptr, log.data());
+        const std::string log = infoLog(s, glGetShaderiv, glGetShaderInfoLog);
         glDeleteShader(s);
         std::string names;
         for (const auto& f : files) names += (names.empty() ? "" : " + ") + f;
-        throw ShaderError("shader " + names + " does not compile:\n" + mapLocations(log.c_str(), files, starts));
+        throw ShaderError("shader " + names + " does not compile:\n" + mapLocations(log, files, starts));
     }
     return s;
 }
@@ -111,12 +119,9 @@ unsigned link(std::initializer_list<unsigned> shaders) {
     GLint ok = 0;
     glGetProgramiv(prog, GL_LINK_STATUS, &ok);
     if (!ok) {
-        GLint n = 0;
-        glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &n);
-        std::string log(std::size_t(std::max(n, 1)), '\0');
-        glGetProgramInfoLog(prog, n, nullptr, log.data());
+        const std::string log = infoLog(prog, glGetProgramiv, glGetProgramInfoLog);
         glDeleteProgram(prog);
-        throw ShaderError("shader program does not link:\n" + std::string(log.c_str()));
+        throw ShaderError("shader program does not link:\n" + log);
     }
     return prog;
 }
