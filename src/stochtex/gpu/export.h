@@ -22,7 +22,7 @@ namespace stochtex {
 
 struct ExportOptions {
     // The table as half floats: colours in [0, 1] lose at most 2⁻¹² (0.06/255)
-    // and the file halves (the smooth table's 100 layers: 78 → 39 MB raw).
+    // and the file halves (the smooth table's 100 layers of 256²: 79 → 39 MB raw).
     // The pyramids stay float32: variances go down to ~1e-6.
     bool halfTable = true;
 };

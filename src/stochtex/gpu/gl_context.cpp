@@ -59,8 +59,8 @@ std::unique_ptr<GlContext> GlContext::headless() {
         // first (compute shaders; some drivers give exactly the version
         // asked for), else 3.3 core.
         EGLContext c = EGL_NO_CONTEXT;
-        for (EGLint minorOf4 : {3, -1}) {
-            const EGLint major = minorOf4 < 0 ? 3 : 4, minor = minorOf4 < 0 ? 3 : minorOf4;
+        const EGLint versions[][2] = {{4, 3}, {3, 3}};
+        for (const auto& [major, minor] : versions) {
             const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, major, EGL_CONTEXT_MINOR_VERSION, minor,
                                          EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
             c = eglCreateContext(d, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
