@@ -63,7 +63,8 @@ TEST(TriangleGrid, WeightsAreVariancePreservingAndVerticesAdjacent) {
         // The three vertices form one lattice triangle.
         for (int a = 0; a < 3; ++a)
             for (int b = a + 1; b < 3; ++b) {
-                const int dx = int32_t(s.vx(size_t(a)) - s.vx(size_t(b))), dy = int32_t(s.vy(size_t(a)) - s.vy(size_t(b)));
+                const kernel::uvec2 va = kernel::stencilVertex(s, a), vb = kernel::stencilVertex(s, b);
+                const int dx = int32_t(va.x - vb.x), dy = int32_t(va.y - vb.y);
                 ASSERT_LE(std::abs(dx) + std::abs(dy), 2);
                 ASSERT_TRUE(std::abs(dx) <= 1 && std::abs(dy) <= 1);
             }
@@ -80,8 +81,9 @@ TEST(TilingBlending, MatchesEquationSevenAtAPoint) {
     const BlendStencil s = triangleGrid(u, v);
     double expected = ex->mean();
     for (int i = 0; i < 3; ++i) {
-        const TileOffset o = tileOffset(s.vx(size_t(i)), s.vy(size_t(i)), 77);
-        const double su = u + o.u - std::floor(u + o.u), sv = v + o.v - std::floor(v + o.v);
+        const kernel::uvec2 vertex = kernel::stencilVertex(s, i);
+        const TileOffset o = tileOffset(vertex.x, vertex.y, 77);
+        const double su = u + o.x - std::floor(u + o.x), sv = v + o.y - std::floor(v + o.y);
         expected += s.w[size_t(i)] * (ex->sampleBilinear(float(su), float(sv)) - ex->mean());
     }
     EXPECT_NEAR(noise.evaluate(u, v), expected, 1e-5);

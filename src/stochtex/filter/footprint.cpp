@@ -5,6 +5,7 @@
 #include <string>
 
 #include "stochtex/core/error.h"
+#include "stochtex/kernel/footprint.h"
 
 namespace stochtex {
 
@@ -14,25 +15,17 @@ Footprint makeFootprint(double u, double v, const Jacobian& j, int exampleSize, 
     if (!std::isfinite(u) || !std::isfinite(v) || !std::isfinite(j.dudx) || !std::isfinite(j.dvdx) ||
         !std::isfinite(j.dudy) || !std::isfinite(j.dvdy))
         throw InputError("footprint: non-finite position or Jacobian");
-    const double w = exampleSize;
-    // sqrt rather than hypot: no overflow is possible here and hypot is a
-    // slow libm call on the per-pixel path.
-    const double px = w * std::sqrt(j.dudx * j.dudx + j.dvdx * j.dvdx);
-    const double py = w * std::sqrt(j.dudy * j.dudy + j.dvdy * j.dvdy);
-    const bool xMajor = px >= py;
-    const double pmax = std::max(px, py), pmin = std::min(px, py);
-    int n = 1;
-    if (maxAniso > 1 && pmin > 0) n = int(std::min<double>(std::ceil(pmax / pmin - 1e-9), maxAniso));
-    else if (maxAniso > 1 && pmax > 0) n = maxAniso;  // degenerate (a line): as anisotropic as allowed
-    n = std::max(n, 1);
-    const double rho = pmax / n;
-    const float lod = rho > 0 ? float(std::clamp(std::log2(rho), 0.0, double(maxLod))) : 0.0f;
+    // The probe layout is the kernel's (kernel/footprint.glsl), as in the
+    // shaders; positions stay in double (uv may be far from the origin).
+    const kernel::ProbeLayout layout =
+        kernel::probeLayout(kernel::vec2(float(j.dudx), float(j.dvdx)), kernel::vec2(float(j.dudy), float(j.dvdy)),
+                            float(exampleSize), maxAniso, maxLod);
     Footprint f;
-    f.count = n;
-    const double au = xMajor ? j.dudx : j.dudy, av = xMajor ? j.dvdx : j.dvdy;
-    for (int k = 0; k < n; ++k) {
-        const double t = n == 1 ? 0.0 : (k + 0.5) / n - 0.5;
-        f.probes[size_t(k)] = Probe{u + t * au, v + t * av, lod, 1.0f / float(n)};
+    f.count = layout.count;
+    for (int k = 0; k < layout.count; ++k) {
+        const double t = kernel::probePosition(k, layout.count);
+        f.probes[size_t(k)] = Probe{u + t * double(layout.axis.x), v + t * double(layout.axis.y), layout.lod,
+                                    1.0f / float(layout.count)};
     }
     return f;
 }

@@ -15,6 +15,8 @@
 #include <array>
 #include <cstddef>
 
+#include "stochtex/kernel/footprint.h"
+
 namespace stochtex {
 
 struct Jacobian {
@@ -28,7 +30,7 @@ struct Probe {
     float weight;  // Σ weights = 1
 };
 
-constexpr int kMaxAnisotropy = 16;
+using kernel::kMaxAnisotropy;  // 16
 
 struct Footprint {
     std::array<Probe, kMaxAnisotropy> probes;  // only the first `count` are set

@@ -6,6 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "stochtex/kernel/moments.h"
+
 namespace stochtex {
 
 static std::atomic<uint64_t> nextEstimatorId{1};
@@ -41,15 +43,13 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
     if (!(memo.v == v && memo.density == density_)) memo = RowMemo{v, density_, TriangleGridRow(v, density_), periodFraction(v)};
     const BlendStencil s = memo.row.stencil(u);
     const float fu = periodFraction(u), fv = memo.fv;
-    std::array<float, 3> w2{};
-    for (size_t i = 0; i < 3; ++i) w2[i] = s.w[i] * s.w[i];
     // Neighbouring pixels mostly see the same tiles on the same scanline:
     // each thread remembers, per trilinear slot, the last tiles' rows (their
     // offsets hashed, their rows located) and reuses them when nothing they
     // depend on changed. Pure memoisation: results are identical.
     struct Slot {
         uint64_t owner = 0;  // FootprintEstimator::id_ (addresses can be reused)
-        uint32_t cellX = 0, cellY = 0;
+        kernel::uvec2 cell{0u, 0u};
         bool upper = false;
         int level = -1;
         float fv = -1.0f;
@@ -60,14 +60,13 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
         const int level = levels[k];
         TexelStats& t = out[k];
         Slot& slot = cache[size_t(std::min(k, 1))];
-        if (slot.owner != id_ || slot.level != level || slot.fv != fv || slot.cellX != s.cellX ||
-            slot.cellY != s.cellY || slot.upper != s.upper) {
+        if (slot.owner != id_ || slot.level != level || slot.fv != fv || slot.cell != s.cell ||
+            slot.upper != s.upper) {
             for (size_t a = 0; a < 2; ++a)
                 slot.rows[a] = noises_[a].tileRows(noises_[a].offsets(s), fv, pyramids_[a].level(level));
             if (covariance_) slot.rows[2] = noises_[0].tileRows(noises_[0].offsets(s), fv, covariance_->level(level));
             slot.owner = id_;
-            slot.cellX = s.cellX;
-            slot.cellY = s.cellY;
+            slot.cell = s.cell;
             slot.upper = s.upper;
             slot.level = level;
             slot.fv = fv;
@@ -81,8 +80,9 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
             // Eq. 8: the same blend as the unfiltered noise, on level l.
             t.mean[a] = TilingBlendingNoise::mix<2>(s, e, noise.example().mean(), 0);
             // Eq. 12: tiles assumed uncorrelated, weights constant over P.
-            t.var[a] = mode == VarianceEstimator::DeliotHeitz ? pyr.averageMoment(level)
-                                                              : w2[0] * e[0][1] + w2[1] * e[1][1] + w2[2] * e[2][1];
+            t.var[a] = mode == VarianceEstimator::DeliotHeitz
+                           ? pyr.averageMoment(level)
+                           : kernel::blendVariance(s.w, TilingBlendingNoise::channel<2>(e, 1));
         }
         t.cov = 0.0f;
         if (covariance_) {
@@ -91,7 +91,7 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
             } else {
                 const BasicPeriodicGrid<2>& grid = covariance_->level(level);
                 const auto c = noises_[0].tileValues<2>(slot.rows[2], fu, grid);
-                t.cov = w2[0] * c[0][1] + w2[1] * c[1][1] + w2[2] * c[2][1];  // eq. 17
+                t.cov = kernel::blendVariance(s.w, TilingBlendingNoise::channel<2>(c, 1));  // eq. 17
             }
         }
     }
@@ -101,11 +101,12 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
 // its instructions by ~12% (measured with callgrind).
 __attribute__((flatten)) FootprintStats FootprintEstimator::estimate(const Footprint& f, VarianceEstimator mode) const {
     const int top = maxLod();
-    if (f.count == 1 && (f.probes[0].lod == float(int(f.probes[0].lod)) || f.probes[0].lod >= float(top))) {
-        // One texel footprint at one level (isotropic, integral λ — e.g. any
-        // magnified pixel): eq. 14–15 reduce to the texel's own statistics.
+    // The probe levels, weights and sums are the kernel's (kernel/footprint.glsl,
+    // kernel/moments.glsl), as in the shaders.
+    const kernel::ProbeLevels first = kernel::probeLevels(f.probes[0].lod, top, f.count);
+    if (kernel::isSingleTexel(f.count, first.frac)) {
         const Probe& p = f.probes[0];
-        const TexelStats t = texel(p.u, p.v, std::min(int(p.lod), top), mode);
+        const TexelStats t = texel(p.u, p.v, first.l0, mode);
         FootprintStats out;
         out.mean = t.mean;
         out.varX = std::max(t.var[0], 0.0f);
@@ -113,33 +114,28 @@ __attribute__((flatten)) FootprintStats FootprintEstimator::estimate(const Footp
         out.cov = t.cov;
         return out;
     }
-    // Accumulate Σ w_P N̂, Σ w_P (N̂² + σ̂²), Σ w_P (N̂ N̂' + ĉov) in double:
-    // the final subtraction m2 − μ² cancels heavily for small footprints.
-    double m[2] = {0, 0}, m2[2] = {0, 0}, mxy = 0;
+    kernel::Moments sums{};
     for (int k = 0; k < f.count; ++k) {
         const Probe& p = f.probes[size_t(k)];
-        // Trilinear: the probe is split between levels ⌊λ⌋ and ⌊λ⌋ + 1.
-        const int l0 = std::min(int(p.lod), top);
-        const float frac = p.lod - float(l0);
-        const int levels[2] = {l0, std::min(l0 + 1, top)};
-        const double weights[2] = {double(p.weight) * (1.0 - frac), double(p.weight) * frac};
+        const kernel::ProbeLevels pl = kernel::probeLevels(p.lod, top, f.count);
+        const int levels[2] = {pl.l0, pl.l1};
+        const float weights[2] = {pl.w0, pl.w1};
         TexelStats t[2];
-        const int used = weights[1] > 0.0 ? 2 : 1;
+        const int used = pl.w1 > 0.0f ? 2 : 1;
         texels(p.u, p.v, levels, used, mode, t);
         for (int side = 0; side < used; ++side) {
-            const double wp = weights[side];
-            for (int a = 0; a < 2; ++a) {
-                m[a] += wp * t[side].mean[size_t(a)];
-                m2[a] += wp * (double(t[side].mean[size_t(a)]) * t[side].mean[size_t(a)] + t[side].var[size_t(a)]);
-            }
-            mxy += wp * (double(t[side].mean[0]) * t[side].mean[1] + t[side].cov);
+            const kernel::vec2 mean(t[side].mean[0], t[side].mean[1]);
+            if (k == 0 && side == 0) sums = kernel::momentsAbout(mean);
+            sums = kernel::momentsAdd(sums, weights[side], mean, kernel::vec2(t[side].var[0], t[side].var[1]),
+                                      t[side].cov);
         }
     }
+    const kernel::FootprintMoments r = kernel::momentsResult(sums);
     FootprintStats out;
-    out.mean = {float(m[0]), float(m[1])};
-    out.varX = float(std::max(0.0, m2[0] - m[0] * m[0]));
-    out.varY = float(std::max(0.0, m2[1] - m[1] * m[1]));
-    out.cov = float(mxy - m[0] * m[1]);
+    out.mean = {r.mean.x, r.mean.y};
+    out.varX = r.var.x;
+    out.varY = r.var.y;
+    out.cov = r.cov;
     return out;
 }
 

@@ -17,8 +17,12 @@ std::string exportedShaderInclude() {
            "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
            "// footprint comes from this fragment's derivatives of uv. Uniforms and\n"
            "// textures to set are listed in README.md.\n\n" +
-           shaderSource("common") + "\n" + shaderSource("filtering") +
-           "\nvec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";
+           [] {
+               std::string body;
+               for (const auto& stem : shaderChunks({"common", "filtering"})) body += shaderText(stem) + "\n";
+               return body;
+           }() +
+           "vec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";
 }
 
 namespace {

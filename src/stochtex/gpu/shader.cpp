@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <map>
 #include <regex>
+#include <string_view>
 
 #include "stochtex/core/embedded_file.h"
 
@@ -43,20 +44,72 @@ std::string header(GlslTarget target) {
            "precision highp sampler2D;\nprecision highp sampler2DArray;\n";
 }
 
-// The header, then the files one after the other. `starts[k]` is the line
-// (1-based, in the whole text) where file k begins.
-std::string assemble(GlslTarget target, const std::vector<std::string>& files,
+// The kernel files (kernel/*.glsl) each chunk calls, in dependency order:
+// they are assembled before it, once each, so a recipe names only what it
+// uses directly.
+const std::map<std::string, std::vector<std::string>>& chunkNeeds() {
+    static const std::map<std::string, std::vector<std::string>> needs = {
+        {"grid", {"hash"}},
+        {"common", {"hash", "grid"}},
+        {"filtering", {"footprint", "moments", "sigma_levels"}},
+    };
+    return needs;
+}
+
+void expandChunk(const std::string& stem, std::vector<std::string>& out) {
+    if (std::find(out.begin(), out.end(), stem) != out.end()) return;
+    const auto it = chunkNeeds().find(stem);
+    if (it != chunkNeeds().end())
+        for (const auto& dep : it->second) expandChunk(dep, out);
+    out.push_back(stem);
+}
+
+// Kernel files mark each function `inline` for C++ (kernel/glsl.h); GLSL
+// has no such word, so it is dropped from the start of lines.
+std::string glslText(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = text.find('\n', pos);
+        end = end == std::string::npos ? text.size() : end + 1;
+        std::string_view line(text.data() + pos, end - pos);
+        if (line.starts_with("inline ")) line.remove_prefix(7);
+        out += line;
+        pos = end;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::string> shaderChunks(const std::vector<std::string>& files) {
+    std::vector<std::string> out;
+    for (const auto& f : files) expandChunk(f, out);
+    return out;
+}
+
+std::string shaderText(const std::string& stem) { return glslText(shaderSource(stem)); }
+
+namespace {
+
+// The header, then the files (with the kernel files they need) one after
+// the other. `starts[k]` is the line (1-based, in the whole text) where
+// file k of `*expanded` begins.
+std::string assemble(GlslTarget target, const std::vector<std::string>& requested,
                      const std::vector<std::pair<std::string, std::string>>& overrides,
-                     std::vector<int>* starts = nullptr) {
+                     std::vector<int>* starts = nullptr, std::vector<std::string>* expanded = nullptr) {
+    const std::vector<std::string> files = shaderChunks(requested);
     std::string out = header(target);
     for (const auto& f : files) {
-        const std::string* text = &shaderSource(f);
+        std::string text = shaderText(f);
         for (const auto& [stem, replacement] : overrides)
-            if (stem == f) text = &replacement;
+            if (stem == f) text = replacement;
         if (starts) starts->push_back(int(std::count(out.begin(), out.end(), '\n')) + 1);
-        out += *text;
+        out += text;
         if (out.back() != '\n') out += '\n';
     }
+    if (expanded) *expanded = files;
     return out;
 }
 
@@ -93,7 +146,8 @@ unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
                       const std::vector<std::pair<std::string, std::string>>& overrides,
                       GlslTarget target = GlslTarget::Core330) {
     std::vector<int> starts;
-    const std::string src = assemble(target, files, overrides, &starts);
+    std::vector<std::string> expanded;
+    const std::string src = assemble(target, files, overrides, &starts, &expanded);
     const GLuint s = glCreateShader(stage);
     const char* p = src.c_str();
     glShaderSource(s, 1, &p, nullptr);
@@ -105,7 +159,7 @@ unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
         glDeleteShader(s);
         std::string names;
         for (const auto& f : files) names += (names.empty() ? "" : " + ") + f;
-        throw ShaderError("shader " + names + " does not compile:\n" + mapLocations(log, files, starts));
+        throw ShaderError("shader " + names + " does not compile:\n" + mapLocations(log, expanded, starts));
     }
     return s;
 }

@@ -21,6 +21,12 @@ public:
 const std::string& shaderSource(const std::string& stem);
 std::vector<std::string> shaderNames();
 
+// The files with the kernel files (kernel/*.glsl) they need put before
+// them, once each, in dependency order.
+std::vector<std::string> shaderChunks(const std::vector<std::string>& files);
+// A file's text as GLSL (kernel files lose their C++ `inline` marks).
+std::string shaderText(const std::string& stem);
+
 // The version header, then the files in order (what the driver compiles).
 std::string assembleShader(GlslTarget target, const std::vector<std::string>& files);
 

@@ -15,35 +15,33 @@
 #include <memory>
 
 #include "stochtex/core/floor.h"
-#include "stochtex/core/hash.h"
+#include "stochtex/kernel/grid.h"
 #include "stochtex/noise/example.h"
 
 namespace stochtex {
 
-constexpr double kDefaultGridDensity = 3.4641016151377544;  // 2√3
+// The grid's density, skew, stencil, vertices and tile offsets are the
+// kernel's (kernel/grid.glsl), shared with the shaders.
+constexpr double kDefaultGridDensity = 3.4641016151377544;  // 2√3 (kernel::kDefaultGridDensity in float)
 
-// The three tiles seen at a point: the lattice cell, which of its two
-// triangles holds the point, and the normalised weights of its vertices.
-// Vertex ids wrap modulo 2³² (as GLSL uints do) before hashing.
-struct BlendStencil {
-    uint32_t cellX = 0, cellY = 0;
-    bool upper = false;  // triangle (1,1),(1,0),(0,1) of the cell, else (0,0),(0,1),(1,0)
-    std::array<float, 3> w{};
+// The three tiles seen at a point (cell, triangle, weights); see kernel::Stencil.
+using BlendStencil = kernel::Stencil;
 
-    uint32_t vx(size_t i) const { return cellX + uint32_t(upper ? i < 2 : i == 2); }
-    uint32_t vy(size_t i) const { return cellY + uint32_t(upper ? i != 1 : i == 1); }
-    bool sameTiles(const BlendStencil& o) const { return cellX == o.cellX && cellY == o.cellY && upper == o.upper; }
-};
+inline bool sameTiles(const BlendStencil& a, const BlendStencil& b) {
+    return a.cell.x == b.cell.x && a.cell.y == b.cell.y && a.upper == b.upper;
+}
 
 // The triangle grid along one row of constant v: the skewed y coordinate
-// (1.15470054 v) and its floor do not change along u, so a scanline pays
-// only for x = u − 0.57735027 v.
+// (kGridSkewY·v) and its floor do not change along u, so a scanline pays
+// only for x = u − kGridSkewX·v. The split into cell and fraction is done in
+// double (uv may be far from the origin); the stencil itself is the
+// kernel's blendStencil, the same function the shaders call.
 class TriangleGridRow {
 public:
     TriangleGridRow(double v, double density = kDefaultGridDensity) : density_(density) {
         const double sv = v * density;
-        xShift_ = 0.57735026918962573 * sv;
-        const double y = 1.1547005383792515 * sv;
+        xShift_ = double(kernel::kGridSkewX) * sv;
+        const double y = double(kernel::kGridSkewY) * sv;
         const int64_t by = floorToInt(y);
         fy_ = float(y - double(by));
         iy_ = uint32_t(uint64_t(by));  // ids wrap to 32 bits for hashing, as in GLSL
@@ -52,20 +50,7 @@ public:
     BlendStencil stencil(double u) const {
         const double x = u * density_ - xShift_;
         const int64_t bx = floorToInt(x);
-        const float fx = float(x - double(bx));
-        BlendStencil s;
-        s.cellX = uint32_t(uint64_t(bx));
-        s.cellY = iy_;
-        const float fz = 1.0f - fx - fy_;
-        s.upper = !(fz > 0.0f);
-        if (!s.upper)
-            s.w = {fz, fy_, fx};
-        else
-            s.w = {-fz, 1.0f - fy_, 1.0f - fx};
-        // Variance-preserving normalisation: Σ w² = 1.
-        const float norm = 1.0f / std::sqrt(s.w[0] * s.w[0] + s.w[1] * s.w[1] + s.w[2] * s.w[2]);
-        for (float& w : s.w) w *= norm;
-        return s;
+        return kernel::blendStencil(kernel::uvec2(uint32_t(uint64_t(bx)), iy_), float(x - double(bx)), fy_);
     }
 
 private:
@@ -80,12 +65,9 @@ inline BlendStencil triangleGrid(double u, double v, double density = kDefaultGr
 }
 
 // Random tile offset of a grid vertex, in [0,1)² (one example period).
-struct TileOffset {
-    float u, v;
-};
+using TileOffset = kernel::vec2;
 inline TileOffset tileOffset(uint32_t vx, uint32_t vy, uint32_t seed) {
-    const UInt3 h = pcg3d({vx, vy, seed});
-    return {unitFloat(h.x), unitFloat(h.y)};
+    return kernel::tileOffset(kernel::uvec2(vx, vy), seed);
 }
 
 // One scalar noise made by tiling and blending an example.
@@ -108,17 +90,18 @@ public:
     };
     using Offsets = std::array<TileOffset, 3>;
     Offsets offsets(const BlendStencil& s) const {
-        return {tileOffset(s.vx(0), s.vy(0), seed_), tileOffset(s.vx(1), s.vy(1), seed_),
-                tileOffset(s.vx(2), s.vy(2), seed_)};
+        return {kernel::tileOffset(kernel::stencilVertex(s, 0), seed_),
+                kernel::tileOffset(kernel::stencilVertex(s, 1), seed_),
+                kernel::tileOffset(kernel::stencilVertex(s, 2), seed_)};
     }
     template <class Grid>
     TileRows tileRows(const Offsets& offs, float fv, const Grid& g) const {
         TileRows t;
         for (size_t i = 0; i < 3; ++i) {
             const TileOffset o = offs[i];
-            float sv = fv + o.v;
+            float sv = fv + o.y;
             if (sv >= 1.0f) sv -= 1.0f;
-            t.offsetTexels[i] = o.u * g.sizeF();
+            t.offsetTexels[i] = o.x * g.sizeF();
             t.rows[i] = g.rows(sv);
         }
         return t;
@@ -140,13 +123,16 @@ public:
         return out;
     }
 
+    // Channel c of the three tiles' values.
+    template <int C>
+    static kernel::vec3 channel(const std::array<std::array<float, C>, 3>& e, int c = 0) {
+        return {e[0][size_t(c)], e[1][size_t(c)], e[2][size_t(c)]};
+    }
     // Eq. 7 (and eq. 8 on a MIP level): μ + Σ w_i (e_i − μ), e_i = channel c
-    // of the tiles' values.
+    // of the tiles' values (kernel::blendMean, as in the shaders).
     template <int C>
     static float mix(const BlendStencil& s, const std::array<std::array<float, C>, 3>& e, float mean, int c = 0) {
-        float n = mean;
-        for (size_t i = 0; i < 3; ++i) n += s.w[i] * (e[i][size_t(c)] - mean);
-        return n;
+        return kernel::blendMean(mean, s.w, channel<C>(e, c));
     }
 
     // N(u) in the example's blending space (before T⁻¹), with the tiles of

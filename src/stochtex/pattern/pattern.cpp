@@ -72,7 +72,7 @@ void Pattern::forEachPixel(const View& view, PixelFn&& fn) const {
             for (int px = 0; px < view.width; ++px) {
                 const double u = (view.offsetU + (px + 0.5) * view.scale) * invW;
                 const BlendStencil s = grid.stencil(u);
-                if (!valid || !s.sameTiles(tiles.stencil)) {
+                if (!valid || !sameTiles(s, tiles.stencil)) {
                     tiles.tiles[0] = noises_[0].tileRows(s, fv);
                     tiles.tiles[1] = noises_[1].tileRows(s, fv);
                     valid = true;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "stochtex/core/parallel.h"
+#include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/normal.h"
 
 namespace stochtex {
@@ -217,39 +218,23 @@ PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode m
         }
 }
 
+// The level coordinates and the blend of the layers are the kernel's
+// (kernel/sigma_levels.glsl), as in the shaders.
 float PrefilteredColormap::levelCoordinate(float sigma) const {
-    const float top = float(sigmas_.size() - 1);
-    const float s256 = std::max(sigma, 0.0f) * 256.0f;
-    if (mode_ == PrefilterMode::Paper) {
-        // Nearest level in log2 σ: round(log2 x) = ⌊log2(√2·x)⌋, read off the
-        // float's exponent field instead of calling log2; below 1/256 the
-        // finest level.
-        const float y = s256 * 1.41421356f;
-        if (!(y >= 2.0f)) return 0.0f;
-        const int k = int(std::bit_cast<uint32_t>(y) >> 23) - 127;
-        return std::min(float(k), top);
-    }
-    // Level 0 is σ = 0, level k ≥ 1 is 2^(k−1)/256.
-    const float c = s256 <= 1.0f ? s256 : 1.0f + std::log2(s256);
-    return std::min(c, top);
+    return kernel::sigmaLevelCoordinate(sigma, mode_ == PrefilterMode::Paper, int(sigmas_.size()));
 }
 
 Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const {
-    const float cx = levelCoordinate(sx), cy = levelCoordinate(sy);
-    const int n = int(sigmas_.size());
-    const int x0 = std::min(int(cx), n - 1), y0 = std::min(int(cy), n - 1);
-    const float fx = cx - float(x0), fy = cy - float(y0);
-    if (fx == 0.0f && fy == 0.0f) return layer(x0, y0).sample(mx, my);
-    const int x1 = std::min(x0 + 1, n - 1), y1 = std::min(y0 + 1, n - 1);
-    const Rgb a = layer(x0, y0).sample(mx, my), b = layer(x1, y0).sample(mx, my);
-    const Rgb c = layer(x0, y1).sample(mx, my), d = layer(x1, y1).sample(mx, my);
-    Rgb out;
-    for (size_t k = 0; k < 3; ++k) {
-        const float top = a[k] + fx * (b[k] - a[k]);
-        const float bottom = c[k] + fx * (d[k] - c[k]);
-        out[k] = top + fy * (bottom - top);
-    }
-    return out;
+    const kernel::LayerBlend b =
+        kernel::layerBlend(kernel::vec2(sx, sy), mode_ == PrefilterMode::Paper, int(sigmas_.size()));
+    if (b.f.x == 0.0f && b.f.y == 0.0f) return layer(b.k0.x, b.k0.y).sample(mx, my);
+    const auto at = [&](int kx, int ky) {
+        const Rgb c = layer(kx, ky).sample(mx, my);
+        return kernel::vec3(c[0], c[1], c[2]);
+    };
+    const kernel::vec3 c = kernel::layerMix(at(b.k0.x, b.k0.y), at(b.k1.x, b.k0.y), at(b.k0.x, b.k1.y),
+                                            at(b.k1.x, b.k1.y), b.f);
+    return {c.x, c.y, c.z};
 }
 
 Image PrefilteredColormap::atlas(int rx, int ry) const {

@@ -1,62 +1,7 @@
-// Shared by every stochtex shader: the integer hash, the tiling-and-blending
-// grid and periodic bilinear lookups. Each function mirrors its CPU
-// counterpart (core/hash.h, noise/tiling_blending.h, noise/periodic_grid.h)
-// operation for operation, so CPU and GPU agree to float rounding.
-
-// pcg3d (Jarzynski & Olano 2020).
-uvec3 pcg3d(uvec3 v) {
-    v = v * 1664525u + 1013904223u;
-    v.x += v.y * v.z;
-    v.y += v.z * v.x;
-    v.z += v.x * v.y;
-    v ^= v >> 16u;
-    v.x += v.y * v.z;
-    v.y += v.z * v.x;
-    v.z += v.x * v.y;
-    return v;
-}
-
-// The top 24 bits as a float in [0, 1), exactly as unitFloat().
-float unitFloat(uint bits) { return float(bits >> 8u) * (1.0 / 16777216.0); }
-
-// The three tiles at uv: the lattice cell of the skewed grid on uv·density,
-// which of its two triangles holds uv, and the weights normalised to Σw² = 1.
-struct Stencil {
-    uvec2 cell;
-    bool upper;
-    vec3 w;
-};
-
-Stencil triangleGrid(vec2 uv, float density) {
-    float sv = uv.y * density;
-    float xShift = 0.57735026918962573 * sv;
-    float y = 1.1547005383792515 * sv;
-    float by = floor(y);
-    float fy = y - by;
-    float x = uv.x * density - xShift;
-    float bx = floor(x);
-    float fx = x - bx;
-    Stencil s;
-    s.cell = uvec2(ivec2(int(bx), int(by)));
-    float fz = 1.0 - fx - fy;
-    s.upper = !(fz > 0.0);
-    s.w = s.upper ? vec3(-fz, 1.0 - fy, 1.0 - fx) : vec3(fz, fy, fx);
-    s.w *= 1.0 / sqrt(dot(s.w, s.w));
-    return s;
-}
-
-// Vertex i of the stencil's triangle (as BlendStencil::vx, vy).
-uvec2 stencilVertex(Stencil s, int i) {
-    uint dx = s.upper ? uint(i < 2) : uint(i == 2);
-    uint dy = s.upper ? uint(i != 1) : uint(i == 1);
-    return s.cell + uvec2(dx, dy);
-}
-
-// Random offset of a tile in [0, 1)².
-vec2 tileOffset(uvec2 vertex, uint seed) {
-    uvec3 h = pcg3d(uvec3(vertex, seed));
-    return vec2(unitFloat(h.x), unitFloat(h.y));
-}
+// Shared by every stochtex shader: texture lookups of the examples, T⁻¹ and
+// the colormap, and eq. 7 over them. The hash, the triangle grid and the
+// tile offsets are the kernel's (kernel/hash.glsl, kernel/grid.glsl: the
+// same source the CPU compiles); the lookups mirror noise/periodic_grid.h.
 
 // Bilinear lookup of a periodic W×W grid (texel centres at (i + ½)/W) at
 // p ∈ [0, 1)², vertical interpolation first as on the CPU. Any channel count:
@@ -81,12 +26,9 @@ vec4 periodicBilinear(sampler2D grid, vec2 p) { return periodicBilinearLod(grid,
 
 // Eq. 7: N(u) = μ + Σ w_i (E(u + o_i) − μ), fu = uv reduced to one period.
 float tilingBlending(sampler2D example, float mean, uint seed, Stencil s, vec2 fu) {
-    float n = mean;
-    for (int i = 0; i < 3; ++i) {
-        vec2 p = fract(fu + tileOffset(stencilVertex(s, i), seed));
-        n += s.w[i] * (periodicBilinear(example, p).r - mean);
-    }
-    return n;
+    vec3 e;
+    for (int i = 0; i < 3; ++i) e[i] = periodicBilinear(example, fract(fu + tileOffset(stencilVertex(s, i), seed))).r;
+    return blendMean(mean, s.w, e);
 }
 
 // T⁻¹ through its LUT (n × 1 texture), clamped to [0, 1] as on the CPU.
