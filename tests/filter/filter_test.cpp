@@ -21,7 +21,7 @@ std::array<TilingBlendingNoise, 2> noisePair(const Image& ex, const Image& ey, u
             TilingBlendingNoise(std::make_shared<const NoiseExample>(ey), sy)};
 }
 
-constexpr double kDensity = 3.4641016151377544;
+const double kDensity = kDefaultGridDensity;
 
 }  // namespace
 

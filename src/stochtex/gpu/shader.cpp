@@ -102,9 +102,9 @@ std::string assemble(GlslTarget target, const std::vector<std::string>& requeste
     const std::vector<std::string> files = shaderChunks(requested);
     std::string out = header(target);
     for (const auto& f : files) {
-        std::string text = shaderText(f);
-        for (const auto& [stem, replacement] : overrides)
-            if (stem == f) text = replacement;
+        // An override replaces an embedded file or adds one of the caller's.
+        const auto own = std::find_if(overrides.begin(), overrides.end(), [&](const auto& o) { return o.first == f; });
+        const std::string text = own != overrides.end() ? own->second : shaderText(f);
         if (starts) starts->push_back(int(std::count(out.begin(), out.end(), '\n')) + 1);
         out += text;
         if (out.back() != '\n') out += '\n';
@@ -199,8 +199,9 @@ unsigned compileProgram(const std::vector<std::string>& vertexFiles, const std::
     return link({vs, fs});
 }
 
-unsigned compileComputeProgram(const std::vector<std::string>& files) {
-    return link({compileStage(GL_COMPUTE_SHADER, files, {}, GlslTarget::Core430)});
+unsigned compileComputeProgram(const std::vector<std::string>& files,
+                               const std::vector<std::pair<std::string, std::string>>& overrides) {
+    return link({compileStage(GL_COMPUTE_SHADER, files, overrides, GlslTarget::Core430)});
 }
 
 }  // namespace stochtex

@@ -32,10 +32,12 @@ std::string assembleShader(GlslTarget target, const std::vector<std::string>& fi
 
 // Compiles and links a program (needs a current context); returns its id.
 // Sources are given by stems; `overrides` maps stems to replacement text
-// (tests use it to feed a broken shader).
+// (tests use it to feed a broken shader) or to the text of a file of the
+// caller's that is not embedded (its stem names it in error messages).
 unsigned compileProgram(const std::vector<std::string>& vertexFiles, const std::vector<std::string>& fragmentFiles,
                         const std::vector<std::pair<std::string, std::string>>& overrides = {});
 // A compute program (GLSL 4.30 core; needs a 4.3 context).
-unsigned compileComputeProgram(const std::vector<std::string>& files);
+unsigned compileComputeProgram(const std::vector<std::string>& files,
+                               const std::vector<std::pair<std::string, std::string>>& overrides = {});
 
 }  // namespace stochtex

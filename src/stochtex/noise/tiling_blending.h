@@ -22,7 +22,8 @@ namespace stochtex {
 
 // The grid's density, skew, stencil, vertices and tile offsets are the
 // kernel's (kernel/grid.glsl), shared with the shaders.
-constexpr double kDefaultGridDensity = 3.4641016151377544;  // 2√3 (kernel::kDefaultGridDensity in float)
+// 2√3 rounded to float, the value the shaders get.
+inline const double kDefaultGridDensity = double(kernel::kDefaultGridDensity);
 
 // The three tiles seen at a point (cell, triangle, weights); see kernel::Stencil.
 using BlendStencil = kernel::Stencil;

@@ -12,6 +12,7 @@
 
 #include "stochtex/noise/example.h"
 #include "stochtex/noise/spectrum.h"
+#include "stochtex/noise/tiling_blending.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/json_reader.h"
 
@@ -48,7 +49,7 @@ struct PatternSpec {
     int width = 512, height = 512;
     double scale = 1.0;  // example texels per output pixel
     OffsetMode offsets = OffsetMode::Independent;
-    double gridDensity = 3.4641016151377544;  // 2√3 triangle-grid cells per uv unit
+    double gridDensity = kDefaultGridDensity;  // 2√3 triangle-grid cells per uv unit (as a float)
     NoiseSpec noise[2];
     bool quadraturePair = false;  // noise_y is "quadrature": the Hilbert pair of noise_x
     ColormapSpec colormap;

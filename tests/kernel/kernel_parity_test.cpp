@@ -1,0 +1,397 @@
+// Per-function parity of the kernel (src/stochtex/kernel/*.glsl): each
+// function runs on the GPU (a compute shader on whatever OpenGL the machine
+// has; Mesa llvmpipe in CI) over ≥ 10⁴ random inputs and is compared with
+// the same source compiled as C++. Integer results must match exactly;
+// float results within the number of ulps stated in each test (0 where the
+// operations are exactly rounded on both sides; log2 and sqrt-based lengths
+// are the GPU's own approximations).
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/shader.h"
+#include "stochtex/kernel/footprint.h"
+#include "stochtex/kernel/grid.h"
+#include "stochtex/kernel/hash.h"
+#include "stochtex/kernel/moments.h"
+#include "stochtex/kernel/sigma_levels.h"
+#include "stochtex/noise/tiling_blending.h"
+
+namespace stochtex {
+namespace {
+
+using namespace kernel;
+
+constexpr int kItems = 1 << 14;  // random inputs per function
+
+GlContext& context() {
+    static std::unique_ptr<GlContext> ctx = GlContext::headless();
+    return *ctx;
+}
+
+// Runs `body` (GLSL) once per item in a compute shader after the kernel
+// files `chunks`. Each item reads `inWords` uvec4 words (word(k), wordf(k))
+// and writes `outWords` (emit(k, uvec4), emitf(k, vec4)).
+std::vector<uvec4> runOnGpu(const std::vector<std::string>& chunks, const std::string& body, int inWords, int outWords,
+                            const std::vector<uvec4>& input) {
+    const int items = int(input.size()) / inWords;
+    const std::string harness =
+        "layout(local_size_x = 64) in;\n"
+        "layout(std430, binding = 0) readonly buffer Inputs { uvec4 inputWords[]; };\n"
+        "layout(std430, binding = 1) writeonly buffer Outputs { uvec4 outputWords[]; };\n"
+        "uniform uint uCount;\n"
+        "uint gItem;\n"
+        "uvec4 word(int k) { return inputWords[gItem * " + std::to_string(inWords) + "u + uint(k)]; }\n"
+        "vec4 wordf(int k) { return uintBitsToFloat(word(k)); }\n"
+        "void emit(int k, uvec4 v) { outputWords[gItem * " + std::to_string(outWords) + "u + uint(k)] = v; }\n"
+        "void emitf(int k, vec4 v) { emit(k, floatBitsToUint(v)); }\n"
+        "void main() {\n"
+        "    gItem = gl_GlobalInvocationID.x;\n"
+        "    if (gItem >= uCount) return;\n" + body + "\n}\n";
+    std::vector<std::string> files = chunks;
+    files.push_back("parity_harness");
+    const GLuint program = compileComputeProgram(files, {{"parity_harness", harness}});
+    GLuint buffers[2];
+    glGenBuffers(2, buffers);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[0]);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(input.size() * sizeof(uvec4)), input.data(), GL_STATIC_DRAW);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
+    std::vector<uvec4> output(size_t(items) * size_t(outWords), uvec4(0u));
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[1]);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(output.size() * sizeof(uvec4)), nullptr, GL_DYNAMIC_READ);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
+    glUseProgram(program);
+    glUniform1ui(glGetUniformLocation(program, "uCount"), GLuint(items));
+    glDispatchCompute(GLuint((items + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(output.size() * sizeof(uvec4)), output.data());
+    glDeleteBuffers(2, buffers);
+    glDeleteProgram(program);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    return output;
+}
+
+uvec4 bits(vec4 v) { return uvec4(floatBitsToUint(v.x), floatBitsToUint(v.y), floatBitsToUint(v.z), floatBitsToUint(v.w)); }
+vec4 floats(uvec4 w) { return vec4(uintBitsToFloat(w.x), uintBitsToFloat(w.y), uintBitsToFloat(w.z), uintBitsToFloat(w.w)); }
+
+// Distance in representable floats (0 for +0 vs −0).
+int64_t ulps(float a, float b) {
+    if (a == b) return 0;
+    if (std::isnan(a) || std::isnan(b)) return INT64_MAX;
+    const auto ordered = [](float f) {
+        const int32_t i = std::bit_cast<int32_t>(f);
+        return i < 0 ? int64_t(INT32_MIN) - int64_t(i) : int64_t(i);
+    };
+    return std::abs(ordered(a) - ordered(b));
+}
+
+// Deterministic random inputs (the kernel's own hash, seeded per test).
+struct Random {
+    uint seed;
+    uint counter = 0;
+    uvec3 next() { return pcg3d(uvec3(counter++, seed, 0x9e3779b9u)); }
+    float uniform(float lo, float hi) { return lo + (hi - lo) * unitFloat(next().x); }
+};
+
+// Compares item by item: `cpu` gives the expected words of item i, `check`
+// compares one item's words (GPU, CPU) and returns a failure message or "".
+void compareItems(const std::vector<uvec4>& gpu, int outWords, const std::function<std::vector<uvec4>(int)>& cpu,
+                  const std::function<std::string(const uvec4*, const uvec4*)>& check) {
+    int failures = 0;
+    for (int i = 0; i < int(gpu.size()) / outWords; ++i) {
+        const std::vector<uvec4> expected = cpu(i);
+        const std::string message = check(&gpu[size_t(i) * size_t(outWords)], expected.data());
+        if (!message.empty() && ++failures <= 5) ADD_FAILURE() << "item " << i << ": " << message;
+    }
+    EXPECT_EQ(failures, 0);
+}
+
+std::string exactWords(const uvec4* g, const uvec4* c, int n) {
+    for (int k = 0; k < n; ++k)
+        if (g[k] != c[k])
+            return "word " + std::to_string(k) + " differs: GPU (" + std::to_string(g[k].x) + ", " + std::to_string(g[k].y) +
+                   ", " + std::to_string(g[k].z) + ", " + std::to_string(g[k].w) + "), C++ (" + std::to_string(c[k].x) +
+                   ", " + std::to_string(c[k].y) + ", " + std::to_string(c[k].z) + ", " + std::to_string(c[k].w) + ")";
+    return "";
+}
+
+std::string closeFloats(vec4 g, vec4 c, int64_t maxUlps, const char* what) {
+    for (int k = 0; k < 4; ++k)
+        if (ulps(g[k], c[k]) > maxUlps)
+            return std::string(what) + "[" + std::to_string(k) + "]: GPU " + std::to_string(g[k]) + ", C++ " +
+                   std::to_string(c[k]) + " (" + std::to_string(ulps(g[k], c[k])) + " ulps > " +
+                   std::to_string(maxUlps) + ")";
+    return "";
+}
+
+// For log2-based values: |Δ| within `units` ulps of max(1, |value|). The
+// GPU's log2 has an absolute error of a few 2⁻²³ on [1, 2), which is many
+// ulps of a result near 0 (e.g. log2Split of 0.86 = −1 + log2 1.72).
+std::string closeLog(float g, float c, int units, const char* what) {
+    const double tolerance = units * std::ldexp(std::max(1.0, double(std::abs(c))), -23);
+    if (std::abs(double(g) - double(c)) <= tolerance) return "";
+    return std::string(what) + ": GPU " + std::to_string(g) + ", C++ " + std::to_string(c) + " (|Δ| = " +
+           std::to_string(std::abs(double(g) - double(c))) + " > " + std::to_string(tolerance) + ")";
+}
+
+class KernelParity : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!context().hasCompute()) GTEST_SKIP() << "no OpenGL 4.3 compute: " << context().describe();
+    }
+};
+
+TEST_F(KernelParity, Pcg3dUnitFloatAndDeriveSeedAreBitExact) {
+    Random r{1};
+    std::vector<uvec4> in(kItems);
+    for (auto& w : in) w = uvec4(r.next(), r.next().x);
+    const auto gpu = runOnGpu({"hash"}, R"(
+        uvec4 a = word(0);
+        uvec3 h = pcg3d(a.xyz);
+        emit(0, uvec4(h, deriveSeed(a.x, a.w)));
+        emitf(1, vec4(unitFloat(a.x), unitFloat(a.w), 0.0, 0.0));)",
+                              1, 2, in);
+    compareItems(gpu, 2, [&](int i) {
+        const uvec4 a = in[size_t(i)];
+        return std::vector<uvec4>{uvec4(pcg3d(uvec3(a.x, a.y, a.z)), deriveSeed(a.x, a.w)),
+                                  bits(vec4(unitFloat(a.x), unitFloat(a.w), 0.0f, 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 2); });
+}
+
+TEST_F(KernelParity, TriangleGridStencilVerticesAndOffsetsAreBitExact) {
+    // |uv| ≤ 64 periods, the default density and a random one.
+    Random r{2};
+    std::vector<uvec4> in(kItems);
+    for (auto& w : in) w = bits(vec4(r.uniform(-64.0f, 64.0f), r.uniform(-64.0f, 64.0f), r.uniform(1.0f, 9.0f), 0.0f));
+    for (int i = 0; i < kItems; i += 2) in[size_t(i)].z = floatBitsToUint(kernel::kDefaultGridDensity);
+    const auto gpu = runOnGpu({"grid"}, R"(
+        vec4 a = wordf(0);
+        Stencil s = triangleGrid(a.xy, a.z);
+        emit(0, uvec4(s.cell, uint(s.upper), 0u));
+        emitf(1, vec4(s.w, 0.0));
+        emit(2, uvec4(stencilVertex(s, 0), stencilVertex(s, 1)));
+        emitf(3, vec4(tileOffset(stencilVertex(s, 2), 77u), tileOffset(s.cell, word(0).x)));)",
+                              1, 4, in);
+    compareItems(gpu, 4, [&](int i) {
+        const vec4 a = floats(in[size_t(i)]);
+        const Stencil s = triangleGrid(vec2(a.x, a.y), a.z);
+        return std::vector<uvec4>{
+            uvec4(s.cell.x, s.cell.y, uint(s.upper), 0u), bits(vec4(s.w, 0.0f)),
+            uvec4(stencilVertex(s, 0), stencilVertex(s, 1)),
+            bits(vec4(tileOffset(stencilVertex(s, 2), 77u), tileOffset(s.cell, in[size_t(i)].x)))};
+    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 4); });
+}
+
+TEST_F(KernelParity, BlendMeanAndVarianceAreBitExact) {
+    Random r{3};
+    std::vector<uvec4> in(size_t(kItems) * 3);
+    for (size_t i = 0; i < in.size(); i += 3) {
+        const Stencil s = blendStencil(uvec2(0u), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f));
+        in[i] = bits(vec4(s.w, r.uniform(0.0f, 1.0f)));
+        in[i + 1] = bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), 0.0f));
+        in[i + 2] = bits(vec4(r.uniform(0.0f, 0.1f), r.uniform(0.0f, 0.1f), r.uniform(0.0f, 0.1f), 0.0f));
+    }
+    const auto gpu = runOnGpu({"grid"}, R"(
+        vec4 w = wordf(0), e = wordf(1), v = wordf(2);
+        emitf(0, vec4(blendMean(w.w, w.xyz, e.xyz), blendVariance(w.xyz, v.xyz), 0.0, 0.0));)",
+                              3, 1, in);
+    compareItems(gpu, 1, [&](int i) {
+        const vec4 w = floats(in[size_t(i) * 3]), e = floats(in[size_t(i) * 3 + 1]), v = floats(in[size_t(i) * 3 + 2]);
+        const vec3 w3(w.x, w.y, w.z);
+        return std::vector<uvec4>{
+            bits(vec4(blendMean(w.w, w3, vec3(e.x, e.y, e.z)), blendVariance(w3, vec3(v.x, v.y, v.z)), 0.0f, 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 1); });
+}
+
+// Random Jacobians: 2⁻¹² to 2⁴ uv per pixel (a thousandth of a texel to
+// thousands of texels on a 256² example), any direction, anisotropy 1 to 64.
+std::vector<uvec4> randomJacobians(uint seed) {
+    Random r{seed};
+    std::vector<uvec4> in(size_t(kItems) * 2);
+    for (size_t i = 0; i < in.size(); i += 2) {
+        const float major = std::exp2(r.uniform(-12.0f, 4.0f)), ratio = std::exp2(r.uniform(0.0f, 6.0f));
+        const float angle = r.uniform(0.0f, 6.2831853f);
+        const vec2 a(std::cos(angle), std::sin(angle)), b(-a.y, a.x);
+        const bool swap = (i / 2) % 2 == 1;
+        const vec2 jx = (swap ? b * (major / ratio) : a * major), jy = (swap ? a * major : b * (major / ratio));
+        in[i] = bits(vec4(jx.x, jx.y, jy.x, jy.y));
+        in[i + 1] = uvec4(1u + (r.next().x % 16u), 8u, 0u, 0u);  // K, maxLod
+    }
+    return in;
+}
+
+TEST_F(KernelParity, ProbeLayoutCountsAndAxesAreExactLodsWithinFourUlpsOfOne) {
+    // The lod's integer part comes from the exponent bits, its fraction from
+    // the GPU's log2 of the mantissa (llvmpipe: up to 3·2⁻²³ here).
+    const std::vector<uvec4> in = randomJacobians(4);
+    const auto gpu = runOnGpu({"footprint"}, R"(
+        vec4 j = wordf(0);
+        uvec4 p = word(1);
+        ProbeLayout l = probeLayout(j.xy, j.zw, 256.0, int(p.x), int(p.y));
+        emit(0, uvec4(uint(l.count), 0u, 0u, 0u));
+        emitf(1, vec4(l.lod, l.axis, 0.0));)",
+                              2, 2, in);
+    compareItems(gpu, 2, [&](int i) {
+        const vec4 j = floats(in[size_t(i) * 2]);
+        const uvec4 p = in[size_t(i) * 2 + 1];
+        const ProbeLayout l = probeLayout(vec2(j.x, j.y), vec2(j.z, j.w), 256.0f, int(p.x), int(p.y));
+        return std::vector<uvec4>{uvec4(uint(l.count), 0u, 0u, 0u), bits(vec4(l.lod, l.axis, 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) {
+        std::string m = exactWords(g, c, 1);
+        if (m.empty() && (g[1].y != c[1].y || g[1].z != c[1].z)) m = "axis differs";
+        if (m.empty()) m = closeLog(floats(g[1]).x, floats(c[1]).x, 4, "lod");
+        return m;
+    });
+}
+
+TEST_F(KernelParity, Log2SplitHasAnExactIntegerPart) {
+    Random r{5};
+    std::vector<uvec4> in(kItems);
+    for (auto& w : in) w = bits(vec4(std::exp2(r.uniform(-40.0f, 40.0f)), std::exp2(float(int(r.uniform(-20.0f, 20.0f)))), 0, 0));
+    const auto gpu = runOnGpu({"footprint"}, "vec4 a = wordf(0); emitf(0, vec4(log2Split(a.x), log2Split(a.y), 0.0, 0.0));",
+                              1, 1, in);
+    compareItems(gpu, 1, [&](int i) {
+        const vec4 a = floats(in[size_t(i)]);
+        return std::vector<uvec4>{bits(vec4(log2Split(a.x), log2Split(a.y), 0.0f, 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) {
+        const vec4 gf = floats(g[0]), cf = floats(c[0]);
+        if (std::floor(gf.x) != std::floor(cf.x)) return std::string("integer part differs");
+        if (gf.y != cf.y) return std::string("a power of two is not exact");  // log2 of a mantissa of 1 is 0
+        return closeLog(gf.x, cf.x, 4, "log2Split");
+    });
+}
+
+TEST_F(KernelParity, ProbePositionsAndLevelsAreBitExact) {
+    Random r{6};
+    std::vector<uvec4> in(kItems);
+    for (auto& w : in) {
+        const uint count = 1u + r.next().x % 16u;
+        w = uvec4(count, r.next().x % count, floatBitsToUint(r.uniform(0.0f, 9.0f)), 1u + r.next().x % 12u);
+    }
+    for (size_t i = 0; i < in.size(); i += 7) in[i].z = floatBitsToUint(float(i % 9));  // whole levels
+    const auto gpu = runOnGpu({"footprint"}, R"(
+        uvec4 a = word(0);
+        ProbeLevels l = probeLevels(uintBitsToFloat(a.z), int(a.w), int(a.x));
+        emit(0, uvec4(uint(l.l0), uint(l.l1), uint(isSingleTexel(int(a.x), l.frac)), 0u));
+        emitf(1, vec4(l.frac, l.w0, l.w1, probePosition(int(a.y), int(a.x))));)",
+                              1, 2, in);
+    compareItems(gpu, 2, [&](int i) {
+        const uvec4 a = in[size_t(i)];
+        const ProbeLevels l = probeLevels(uintBitsToFloat(a.z), int(a.w), int(a.x));
+        return std::vector<uvec4>{uvec4(uint(l.l0), uint(l.l1), uint(isSingleTexel(int(a.x), l.frac)), 0u),
+                                  bits(vec4(l.frac, l.w0, l.w1, probePosition(int(a.y), int(a.x))))};
+    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 2); });
+}
+
+TEST_F(KernelParity, FootprintSumsAreBitExact) {
+    // 1 to 32 weighted texel footprints per item (16 probes × 2 levels).
+    Random r{7};
+    constexpr int kTexels = 32;
+    std::vector<uvec4> in(size_t(kItems) * (1 + 2 * kTexels));
+    for (size_t i = 0; i < in.size(); i += 1 + 2 * kTexels) {
+        const uint n = 1u + r.next().x % kTexels;
+        in[i] = uvec4(n, 0u, 0u, 0u);
+        for (uint k = 0; k < kTexels; ++k) {
+            in[i + 1 + 2 * k] = bits(vec4(r.uniform(0.3f, 0.7f), r.uniform(0.3f, 0.7f), r.uniform(0.0f, 0.02f),
+                                          r.uniform(0.0f, 0.02f)));
+            in[i + 2 + 2 * k] = bits(vec4(r.uniform(-0.01f, 0.01f), 1.0f / float(n), 0.0f, 0.0f));
+        }
+    }
+    const auto run = [](uint n, const std::function<vec4(int)>& w) {
+        Moments m = momentsAbout(vec2(w(0).x, w(0).y));
+        for (int k = 0; k < int(n); ++k) {
+            const vec4 s = w(2 * k), c = w(2 * k + 1);
+            m = momentsAdd(m, c.y, vec2(s.x, s.y), vec2(s.z, s.w), c.x);
+        }
+        return momentsResult(m);
+    };
+    const auto gpu = runOnGpu({"moments"}, R"(
+        int n = int(word(0).x);
+        Moments m = momentsAbout(wordf(1).xy);
+        for (int k = 0; k < n; ++k) {
+            vec4 s = wordf(1 + 2 * k), c = wordf(2 + 2 * k);
+            m = momentsAdd(m, c.y, s.xy, s.zw, c.x);
+        }
+        FootprintMoments r = momentsResult(m);
+        emitf(0, vec4(r.mean, r.var));
+        emitf(1, vec4(r.cov, 0.0, 0.0, 0.0));)",
+                              1 + 2 * kTexels, 2, in);
+    compareItems(gpu, 2, [&](int i) {
+        const size_t base = size_t(i) * (1 + 2 * kTexels);
+        const FootprintMoments m = run(in[base].x, [&](int k) { return floats(in[base + 1 + size_t(k)]); });
+        return std::vector<uvec4>{bits(vec4(m.mean, m.var)), bits(vec4(m.cov, 0.0f, 0.0f, 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 2); });
+}
+
+TEST_F(KernelParity, SigmaLevelsPaperExactSmoothWithinFourUlpsOfOneAndLayerMixExact) {
+    Random r{8};
+    std::vector<uvec4> in(size_t(kItems) * 2);
+    for (size_t i = 0; i < in.size(); i += 2) {
+        in[i] = bits(vec4(std::exp2(r.uniform(-14.0f, 0.0f)), std::exp2(r.uniform(-14.0f, 0.0f)), r.uniform(0.0f, 1.0f),
+                          r.uniform(0.0f, 1.0f)));
+        in[i + 1] = uvec4(6u + r.next().x % 4u, 0u, 0u, 0u);
+    }
+    const auto gpu = runOnGpu({"sigma_levels"}, R"(
+        vec4 a = wordf(0);
+        int levels = int(word(1).x);
+        LayerBlend p = layerBlend(a.xy, true, levels), s = layerBlend(a.xy, false, levels);
+        emit(0, uvec4(p.k0, p.k1));
+        emit(1, uvec4(s.k0, s.k1));
+        emitf(2, vec4(p.f, s.f));
+        vec3 c = layerMix(vec3(a.z), vec3(a.w), vec3(a.x), vec3(a.y), a.zw);
+        emitf(3, vec4(c, sigmaLevelCoordinate(a.x, false, levels)));)",
+                              2, 4, in);
+    compareItems(gpu, 4, [&](int i) {
+        const vec4 a = floats(in[size_t(i) * 2]);
+        const int levels = int(in[size_t(i) * 2 + 1].x);
+        const LayerBlend p = layerBlend(vec2(a.x, a.y), true, levels), s = layerBlend(vec2(a.x, a.y), false, levels);
+        const vec3 c = layerMix(vec3(a.z), vec3(a.w), vec3(a.x), vec3(a.y), vec2(a.z, a.w));
+        return std::vector<uvec4>{uvec4(uvec2(p.k0), uvec2(p.k1)), uvec4(uvec2(s.k0), uvec2(s.k1)),
+                                  bits(vec4(p.f, s.f)), bits(vec4(c, sigmaLevelCoordinate(a.x, false, levels)))};
+    }, [](const uvec4* g, const uvec4* c) {
+        std::string m = exactWords(g, c, 1);  // paper: exact layers and weights
+        if (m.empty() && (g[2].x != c[2].x || g[2].y != c[2].y)) m = "paper weights differ";
+        if (m.empty() && (g[3].x != c[3].x || g[3].y != c[3].y || g[3].z != c[3].z)) m = "layerMix differs";
+        if (m.empty()) {  // smooth: log2 of σ·256 (coordinates ≥ 1); the layer may differ only at a whole coordinate
+            const vec4 gf = floats(g[2]), cf = floats(c[2]);
+            m = closeLog(floats(g[3]).w, floats(c[3]).w, 4, "smooth coordinate");
+            if (m.empty() && g[1] != c[1] && std::abs((float(g[1].x) + gf.z) - (float(c[1].x) + cf.z)) > 1e-6f)
+                m = "smooth layers differ away from a whole coordinate";
+        }
+        return m;
+    });
+}
+
+// The CPU scanline path splits the skewed coordinate in double and then
+// calls the kernel's blendStencil; held here to the kernel's float
+// triangleGrid (what the shaders run) on the same inputs.
+TEST(KernelCpuPath, ScanlineStencilMatchesTheKernelTriangleGrid) {
+    Random r{9};
+    int sameCell = 0, n = 0;
+    double maxWeightError = 0;
+    for (int i = 0; i < kItems; ++i) {
+        const float u = r.uniform(-64.0f, 64.0f), v = r.uniform(-64.0f, 64.0f);
+        const Stencil row = TriangleGridRow(v).stencil(u);
+        const Stencil k = triangleGrid(vec2(u, v), kernel::kDefaultGridDensity);
+        ++n;
+        if (row.cell == k.cell && row.upper == k.upper) {
+            ++sameCell;
+            for (int c = 0; c < 3; ++c) maxWeightError = std::max(maxWeightError, double(std::abs(row.w[c] - k.w[c])));
+        }
+    }
+    // Float uv on a 128-period-wide range: the skew loses up to ~1e-5 cells,
+    // so only points that close to an edge may change triangle.
+    EXPECT_GE(double(sameCell) / n, 0.999);
+    EXPECT_LT(maxWeightError, 2e-4);
+}
+
+}  // namespace
+}  // namespace stochtex
