@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/kernel/camera.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/kernel/footprint.h"
 #include "stochtex/kernel/grid.h"
@@ -368,6 +369,35 @@ TEST_F(KernelParity, SigmaLevelsPaperExactSmoothWithinFourUlpsOfOneAndLayerMixEx
         }
         return m;
     });
+}
+
+TEST_F(KernelParity, PlaneRayIsBitExact) {
+    // Pixels of 1 to 2048-pixel views, tilts 0–89°, fields of view 1–150°.
+    Random r{10};
+    std::vector<uvec4> in(size_t(kItems) * 2);
+    for (size_t i = 0; i < in.size(); i += 2) {
+        const vec2 size(float(1u + r.next().x % 2048u), float(1u + r.next().x % 2048u));
+        const float tilt = r.uniform(0.0f, 89.0f) * 0.017453293f, fov = r.uniform(1.0f, 150.0f) * 0.017453293f;
+        in[i] = bits(vec4(std::floor(r.uniform(0.0f, size.x)) + 0.5f, std::floor(r.uniform(0.0f, size.y)) + 0.5f,
+                          size.x, size.y));
+        in[i + 1] = bits(vec4(std::exp2(r.uniform(-4.0f, 6.0f)), std::tan(0.5f * fov), std::sin(tilt), std::cos(tilt)));
+    }
+    const auto gpu = runOnGpu({"camera"}, R"(
+        vec4 a = wordf(0), b = wordf(1);
+        PlaneRay r = planeRay(a.xy, a.zw, b.x, b.y, b.z, b.w);
+        emit(0, uvec4(uint(r.sky), 0u, 0u, 0u));
+        emitf(1, vec4(r.texels, r.jx));
+        emitf(2, vec4(r.jy, 0.0, 0.0));)",
+                              2, 3, in);
+    int sky = 0;
+    compareItems(gpu, 3, [&](int i) {
+        const vec4 a = floats(in[size_t(i) * 2]), b = floats(in[size_t(i) * 2 + 1]);
+        const PlaneRay r = planeRay(vec2(a.x, a.y), vec2(a.z, a.w), b.x, b.y, b.z, b.w);
+        sky += r.sky;
+        return std::vector<uvec4>{uvec4(uint(r.sky), 0u, 0u, 0u), bits(vec4(r.texels, r.jx)), bits(vec4(r.jy, 0.0f, 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 3); });
+    EXPECT_GT(sky, kItems / 50);  // the horizon is in the sample
+    EXPECT_LT(sky, kItems / 2);
 }
 
 // The CPU scanline path splits the skewed coordinate in double and then

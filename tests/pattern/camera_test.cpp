@@ -60,12 +60,14 @@ TEST(Camera, PlaneAtTiltZeroIsTheZoomView) {
             Jacobian zj, pj;
             ASSERT_TRUE(z.footprint(px, py, 128, zu, zv, zj));
             ASSERT_TRUE(p.footprint(px, py, 128, pu, pv, pj));
-            EXPECT_NEAR(pu, zu, 1e-12);
-            EXPECT_NEAR(pv, zv, 1e-12);
-            EXPECT_NEAR(pj.dudx, zj.dudx, 1e-15);
-            EXPECT_NEAR(pj.dvdy, zj.dvdy, 1e-15);
+            // The plane's ray is the kernel's float planeRay (as on the GPU):
+            // uv ≤ 5 periods within a few float ulps, J ≈ 0.023 to float precision.
+            EXPECT_NEAR(pu, zu, 1e-6);
+            EXPECT_NEAR(pv, zv, 1e-6);
+            EXPECT_NEAR(pj.dudx, zj.dudx, 1e-8);
+            EXPECT_NEAR(pj.dvdy, zj.dvdy, 1e-8);
             EXPECT_EQ(pj.dvdx, 0.0);
-            EXPECT_NEAR(pj.dudy, 0.0, 1e-15);
+            EXPECT_NEAR(pj.dudy, 0.0, 1e-8);
         }
 }
 

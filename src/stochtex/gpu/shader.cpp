@@ -52,6 +52,7 @@ const std::map<std::string, std::vector<std::string>>& chunkNeeds() {
         {"grid", {"hash"}},
         {"common", {"hash", "grid"}},
         {"filtering", {"footprint", "moments", "sigma_levels"}},
+        {"view", {"camera"}},
     };
     return needs;
 }

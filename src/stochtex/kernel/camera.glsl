@@ -1,0 +1,42 @@
+// The perspective ground-plane camera: where a pixel's ray meets the
+// textured plane and the exact Jacobian of that mapping. Kernel file: GLSL
+// and C++, see kernel/glsl.h.
+//
+// A pixel position p (centres at +½) gives the ray's normalised image
+// coordinates n_x = (p_x − w/2)·T/h₂, n_y = −(p_y − h₂)·T/h₂ (h₂ = h/2,
+// T = tan(fov/2)). With forward (0, −sin t, −cos t), up (0, −cos t, sin t),
+// right (1, 0, 0) the ray is d = (n_x, −s − n_y c, −c + n_y s), s = sin t,
+// c = cos t. It meets the ground, H = scale·h₂/T below the eye (at t = 0 a
+// pixel covers `scale` texels), at k = H/q, q = −d_z = c − n_y s, i.e.
+// k·(d_x, d_y) texels from the point below the view's centre. Differentiating
+// (∂n_x/∂p_x = T/h₂, ∂n_y/∂p_y = −T/h₂, s·d_y − c·q = −1):
+//     ∂texel/∂p_x = scale·(1/q, 0),  ∂texel/∂p_y = scale·(−n_x s/q², 1/q²).
+// Callers add the view's offset in their own precision (the CPU in double).
+
+// q at or below this: the ray misses the ground (sky).
+const float kHorizonSlack = 1e-9f;
+
+struct PlaneRay {
+    bool sky;
+    vec2 texels;  // k·(d_x, d_y): the ground point from the view's centre point, in texels
+    vec2 jx;      // ∂texel/∂p_x
+    vec2 jy;      // ∂texel/∂p_y
+};
+
+inline PlaneRay planeRay(vec2 p, vec2 viewSize, float scale, float tanHalfFov, float sinTilt, float cosTilt) {
+    float h2 = 0.5f * viewSize.y;
+    float nx = (p.x - 0.5f * viewSize.x) / h2 * tanHalfFov;
+    float ny = -(p.y - h2) / h2 * tanHalfFov;
+    float q = cosTilt - ny * sinTilt;
+    PlaneRay r;
+    r.sky = q <= kHorizonSlack;
+    r.texels = vec2(0.0f);
+    r.jx = vec2(0.0f);
+    r.jy = vec2(0.0f);
+    if (r.sky) return r;
+    float k = scale * h2 / tanHalfFov / q;
+    r.texels = k * vec2(nx, -sinTilt - ny * cosTilt);
+    r.jx = vec2(scale / q, 0.0f);
+    r.jy = vec2(-scale * nx * sinTilt / q, scale / q) / q;
+    return r;
+}

@@ -1,0 +1,7 @@
+#pragma once
+// C++ view of kernel/camera.glsl.
+#include "stochtex/kernel/glsl.h"
+
+namespace stochtex::kernel {
+#include "stochtex/kernel/camera.glsl"
+}  // namespace stochtex::kernel
