@@ -6,6 +6,7 @@
 #include "common.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_pattern.h"
+#include "stochtex/gpu/scene_render.h"
 #include "stochtex/image/image_io.h"
 
 namespace stochtex::cli {
@@ -45,7 +46,7 @@ void registerScene(CLI::App& app) {
             camera.eye = {0.0f, 0.2f, 2.6f};
             camera.target = {0.0f, -0.9f, -0.5f};
         }
-        const Image image = gpu.renderScene(mesh, camera, w, h, args->tiling);
+        const Image image = renderScene(gpu, mesh, camera, w, h, args->tiling);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image);
         std::printf("wrote %s (%dx%d, %s on a %s, filter %s, %s, %.2f s)\n", args->output.c_str(), w, h,

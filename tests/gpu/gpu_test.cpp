@@ -10,7 +10,9 @@
 
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_pattern.h"
+#include "stochtex/gpu/scene_render.h"
 #include "stochtex/core/error.h"
+#include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/filtered_pattern.h"
@@ -222,7 +224,7 @@ TEST(Gpu, SceneRendersObjects) {
     o.mode = FilterMode::Smooth;
     GpuPattern gpu(p, context(), o);
     for (const char* name : {"sphere", "torus", "plane"}) {
-        const Image img = gpu.renderScene(makeObject(name), SceneCamera{}, 160, 120, 4.0f);
+        const Image img = renderScene(gpu, makeObject(name), SceneCamera{}, 160, 120, 4.0f);
         ASSERT_EQ(img.width(), 160);
         ASSERT_EQ(img.height(), 120);
         int covered = 0;
@@ -239,10 +241,10 @@ TEST(Gpu, SceneRendersObjects) {
         EXPECT_GT(fraction, 0.1) << name;
         EXPECT_LT(fraction, 0.95) << name;
         EXPECT_GT(saturation / std::max(covered, 1), 0.1) << name << ": the weld colours should show";
-        EXPECT_EQ(gpu.renderScene(makeObject(name), SceneCamera{}, 160, 120, 4.0f).data(), img.data()) << name;
+        EXPECT_EQ(renderScene(gpu, makeObject(name), SceneCamera{}, 160, 120, 4.0f).data(), img.data()) << name;
     }
     EXPECT_THROW(makeObject("cube"), InputError);
-    EXPECT_THROW(gpu.renderScene(makeObject("sphere"), SceneCamera{}, 16, 16, -1.0f), InputError);
+    EXPECT_THROW(renderScene(gpu, makeObject("sphere"), SceneCamera{}, 16, 16, -1.0f), InputError);
 }
 
 TEST(Gpu, BrokenShaderReportsFileAndLine) {
@@ -257,33 +259,57 @@ TEST(Gpu, BrokenShaderReportsFileAndLine) {
     }
 }
 
-// Every program's sources compile as GLSL 3.30 core and GLSL ES 3.00
-// (WebGL 2), checked by the reference compiler.
+// A user's GLSL file (not embedded) compiles after the embedded chunks it
+// names, and its errors name the file and the line.
+TEST(Gpu, UserShaderFileErrorsNameTheFileAndLine) {
+    context();
+    const fs::path file = fs::temp_directory_path() / "stochtex_user_shader.frag";
+    std::ofstream(file) << "out vec4 colour;\nvoid main() {\n  colour = vec4(unitFloat(pcg3d(uvec3(1u)).x));\n"
+                           "  colour += missing_function();\n}\n";
+    const auto user = readShaderFile(file.string());
+    EXPECT_EQ(user.first, file.string());
+    try {
+        compileProgram({"fullscreen"}, {"hash", user.first}, {user});
+        FAIL() << "a broken user shader compiled";
+    } catch (const ShaderError& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find(file.string() + ":4"), std::string::npos) << msg;
+    }
+    fs::remove(file);
+    EXPECT_THROW(readShaderFile((fs::temp_directory_path() / "stochtex_no_such_shader.frag").string()), InputError);
+}
+
+// Every program of the recipe table compiles as GLSL 3.30 core and GLSL ES
+// 3.00 (WebGL 2), compute programs as GLSL 4.30, checked by the reference
+// compiler.
 TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {
     const fs::path dir = fs::temp_directory_path() / "stochtex_glslang";
     fs::create_directories(dir);
-    const std::vector<std::pair<std::string, std::vector<std::string>>> stages = {
-        {"vert", {"fullscreen"}}, {"frag", {"common", "unfiltered", "view", "pattern"}},
-        {"frag", {"common", "filtering", "view", "filtered"}},
-        {"vert", {"mesh"}},       {"frag", {"common", "unfiltered", "filtering", "scene"}}};
-    for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300})
-        for (const auto& [ext, files] : stages) {
-            const fs::path file = dir / ((t == GlslTarget::Core330 ? "core_" : "es_") + files.back() + "." + ext);
-            std::ofstream(file) << assembleShader(t, files);
-            const std::string cmd = "glslangValidator " + file.string() + " > " + (dir / "log.txt").string() + " 2>&1";
-            const int rc = std::system(cmd.c_str());
-            std::ifstream log(dir / "log.txt");
-            const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
-            EXPECT_EQ(rc, 0) << file << ":\n" << text;
+    const auto validate = [&](GlslTarget t, const std::string& name, const std::string& ext,
+                              const std::vector<std::string>& files) {
+        const std::string prefix = t == GlslTarget::Core330 ? "core_" : t == GlslTarget::Es300 ? "es_" : "";
+        const fs::path file = dir / (prefix + name + "." + ext);
+        std::ofstream(file) << assembleShader(t, files);
+        const std::string cmd = "glslangValidator " + file.string() + " > " + (dir / "log.txt").string() + " 2>&1";
+        const int rc = std::system(cmd.c_str());
+        std::ifstream log(dir / "log.txt");
+        const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+        EXPECT_EQ(rc, 0) << file << ":\n" << text;
+    };
+    int programs = 0;
+    for (const ProgramRecipe& r : programRecipes()) {
+        if (r.kind == ProgramRecipe::Kind::Graphics) {
+            for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300}) {
+                validate(t, r.name, "vert", r.vertex);
+                validate(t, r.name, "frag", r.main);
+            }
+            ++programs;
+        } else if (r.kind == ProgramRecipe::Kind::Compute) {
+            validate(GlslTarget::Core430, r.name, "comp", r.main);
+            ++programs;
         }
-    for (const char* colour : {"kernel_filtered", "kernel_unfiltered"}) {
-        const bool filtered = std::string(colour) == "kernel_filtered";
-        const fs::path file = dir / (std::string(colour) + ".comp");
-        std::ofstream(file) << assembleShader(GlslTarget::Core430, {"common", filtered ? "filtering" : "unfiltered", "view",
-                                                                    colour, "view_kernel"});
-        const int rc = std::system(("glslangValidator " + file.string() + " > /dev/null 2>&1").c_str());
-        EXPECT_EQ(rc, 0) << file;
     }
+    EXPECT_GE(programs, 5);
     fs::remove_all(dir);
 }
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/gl_objects.h"
 #include "stochtex/kernel/camera.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/kernel/footprint.h"
@@ -59,23 +60,20 @@ std::vector<uvec4> runOnGpu(const std::vector<std::string>& chunks, const std::s
         "    if (gItem >= uCount) return;\n" + body + "\n}\n";
     std::vector<std::string> files = chunks;
     files.push_back("parity_harness");
-    const GLuint program = compileComputeProgram(files, {{"parity_harness", harness}});
-    GLuint buffers[2];
-    glGenBuffers(2, buffers);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[0]);
+    const gl::Program program(compileComputeProgram(files, {{"parity_harness", harness}}));
+    const gl::Buffer inputs = gl::newBuffer(), outputs = gl::newBuffer();
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, inputs.id());
     glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(input.size() * sizeof(uvec4)), input.data(), GL_STATIC_DRAW);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, inputs.id());
     std::vector<uvec4> output(size_t(items) * size_t(outWords), uvec4(0u));
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[1]);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, outputs.id());
     glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(output.size() * sizeof(uvec4)), nullptr, GL_DYNAMIC_READ);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
-    glUseProgram(program);
-    glUniform1ui(glGetUniformLocation(program, "uCount"), GLuint(items));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, outputs.id());
+    glUseProgram(program.id());
+    glUniform1ui(glGetUniformLocation(program.id(), "uCount"), GLuint(items));
     glDispatchCompute(GLuint((items + 63) / 64), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(output.size() * sizeof(uvec4)), output.data());
-    glDeleteBuffers(2, buffers);
-    glDeleteProgram(program);
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     return output;
 }

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "stochtex/core/error.h"
+#include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 
@@ -19,7 +20,7 @@ std::string exportedShaderInclude() {
            "// textures to set are listed in README.md.\n\n" +
            [] {
                std::string body;
-               for (const auto& stem : shaderChunks({"common", "filtering"})) body += shaderText(stem) + "\n";
+               for (const auto& stem : shaderChunks(programRecipe("export-include").main)) body += shaderText(stem) + "\n";
                return body;
            }() +
            "vec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";

@@ -9,19 +9,19 @@
 #include <numbers>
 
 #include "stochtex/core/error.h"
-#include "stochtex/gpu/shader.h"
+#include "stochtex/gpu/programs.h"
+#include "stochtex/gpu/render_target.h"
 
 namespace stochtex {
 
 namespace {
 
 // A float texture read with texelFetch only (no filtering, no mipmaps).
-GLuint floatTexture(int width, int height, int channels, const float* data) {
+gl::Texture floatTexture(int width, int height, int channels, const float* data) {
     static const GLenum internal[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
     static const GLenum format[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
-    GLuint t = 0;
-    glGenTextures(1, &t);
-    glBindTexture(GL_TEXTURE_2D, t);
+    gl::Texture t = gl::newTexture();
+    glBindTexture(GL_TEXTURE_2D, t.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal[channels - 1]), width, height, 0, format[channels - 1], GL_FLOAT, data);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -31,10 +31,9 @@ GLuint floatTexture(int width, int height, int channels, const float* data) {
 }
 
 // A pyramid's levels as the mip chain of one RG32F texture (mean, moment).
-GLuint pyramidTexture(const StatsPyramid& p) {
-    GLuint t = 0;
-    glGenTextures(1, &t);
-    glBindTexture(GL_TEXTURE_2D, t);
+gl::Texture pyramidTexture(const StatsPyramid& p) {
+    gl::Texture t = gl::newTexture();
+    glBindTexture(GL_TEXTURE_2D, t.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (int l = 0; l < p.levels(); ++l) {
         const Image rg = p.interleavedLevel(l, 2);
@@ -47,12 +46,11 @@ GLuint pyramidTexture(const StatsPyramid& p) {
 }
 
 // The prefiltered table's layers as one texture array (see atlas()).
-GLuint tableTexture(const PrefilteredColormap& table, int rx, int ry) {
+gl::Texture tableTexture(const PrefilteredColormap& table, int rx, int ry) {
     const int n = int(table.sigmas().size());
     const Image atlas = table.atlas(rx, ry);
-    GLuint t = 0;
-    glGenTextures(1, &t);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, t);
+    gl::Texture t = gl::newTexture();
+    glBindTexture(GL_TEXTURE_2D_ARRAY, t.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGB32F, rx, ry, n * n, 0, GL_RGB, GL_FLOAT, atlas.data().data());
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -64,10 +62,11 @@ GLuint tableTexture(const PrefilteredColormap& table, int rx, int ry) {
 }  // namespace
 
 struct GpuPattern::Impl {
-    GLuint program = 0, vao = 0, sceneProgram = 0, kernelProgram = 0;
+    gl::Program program, kernelProgram;
+    gl::VertexArray vao;
     bool hasCompute = false;
     Pipeline pipeline = Pipeline::Fragment;
-    GLuint examples[2] = {0, 0}, inverses[2] = {0, 0}, colormap = 0;
+    gl::Texture examples[2], inverses[2], colormap;
     float means[2] = {0, 0};
     uint32_t seeds[2] = {0, 0};
     bool gaussianized[2] = {false, false};
@@ -77,7 +76,7 @@ struct GpuPattern::Impl {
     // Filtered rendering.
     FilterOptions options;
     Derivatives derivatives = Derivatives::Camera;
-    GLuint stats[2] = {0, 0}, covariance = 0, table = 0;
+    gl::Texture stats[2], covariance, table;
     bool shared = false;
     int maxLod = 0, tableLevels = 0;
     std::vector<float> average[3];  // Deliot–Heitz per-level moments: x, y, covariance
@@ -92,8 +91,7 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     m.options = options;
     m.hasCompute = context.hasCompute();
     const bool filtered = options.mode != FilterMode::None;
-    m.program = compileProgram({"fullscreen"}, filtered ? std::vector<std::string>{"common", "filtering", "view", "filtered"}
-                                                       : std::vector<std::string>{"common", "unfiltered", "view", "pattern"});
+    m.program = buildProgram(filtered ? "filtered" : "unfiltered");
     const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
     m.sky = f.skyColour();
     if (filtered) {
@@ -112,7 +110,7 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
         m.table = tableTexture(f.table(), h.resolutionX(), h.resolutionY());
         m.tableLevels = int(f.table().sigmas().size());
     }
-    glGenVertexArrays(1, &m.vao);
+    m.vao = gl::newVertexArray();
     m.exampleSize = pattern.exampleSize();
     m.density = pattern.gridDensity();
     for (int a = 0; a < 2; ++a) {
@@ -130,16 +128,9 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     m.colormap = floatTexture(table.width(), table.height(), 3, table.data().data());
 }
 
-GpuPattern::~GpuPattern() {
-    Impl& m = *impl_;
-    GLuint textures[] = {m.examples[0], m.examples[1], m.inverses[0], m.inverses[1], m.colormap,
-                         m.stats[0],    m.stats[1],    m.covariance,  m.table};
-    glDeleteTextures(9, textures);  // zeros are ignored
-    glDeleteVertexArrays(1, &m.vao);
-    glDeleteProgram(m.program);
-    if (m.sceneProgram) glDeleteProgram(m.sceneProgram);
-    if (m.kernelProgram) glDeleteProgram(m.kernelProgram);
-}
+GpuPattern::~GpuPattern() = default;
+
+bool GpuPattern::filtered() const { return impl_->options.mode != FilterMode::None; }
 
 Image GpuPattern::render(const View& view) {
     Camera camera;
@@ -157,15 +148,15 @@ void GpuPattern::bind(unsigned program) const {
     };
     auto uniform = [&](const char* name) { return glGetUniformLocation(program, name); };
     const char* samplers[] = {"uExampleX", "uExampleY", "uInverseX", "uInverseY", "uColormap"};
-    const GLuint textures[] = {m.examples[0], m.examples[1], m.inverses[0], m.inverses[1], m.colormap};
-    for (int k = 0; k < 5; ++k) bindTexture(k, GL_TEXTURE_2D, textures[k], samplers[k]);
+    const gl::Texture* textures[] = {&m.examples[0], &m.examples[1], &m.inverses[0], &m.inverses[1], &m.colormap};
+    for (int k = 0; k < 5; ++k) bindTexture(k, GL_TEXTURE_2D, textures[k]->id(), samplers[k]);
     glUniform1i(uniform("uGaussianizedX"), m.gaussianized[0]);
     glUniform1i(uniform("uGaussianizedY"), m.gaussianized[1]);
     if (m.options.mode != FilterMode::None) {
-        bindTexture(5, GL_TEXTURE_2D, m.stats[0], "uStatsX");
-        bindTexture(6, GL_TEXTURE_2D, m.stats[1], "uStatsY");
-        bindTexture(7, GL_TEXTURE_2D, m.shared ? m.covariance : m.stats[0], "uCovariance");
-        bindTexture(8, GL_TEXTURE_2D_ARRAY, m.table, "uTable");
+        bindTexture(5, GL_TEXTURE_2D, m.stats[0].id(), "uStatsX");
+        bindTexture(6, GL_TEXTURE_2D, m.stats[1].id(), "uStatsY");
+        bindTexture(7, GL_TEXTURE_2D, m.shared ? m.covariance.id() : m.stats[0].id(), "uCovariance");
+        bindTexture(8, GL_TEXTURE_2D_ARRAY, m.table.id(), "uTable");
         glUniform1i(uniform("uShared"), m.shared);
         glUniform1i(uniform("uDeliotHeitz"), m.options.estimator == VarianceEstimator::DeliotHeitz);
         glUniform1fv(uniform("uAverageX"), GLsizei(m.average[0].size()), m.average[0].data());
@@ -197,53 +188,9 @@ void GpuPattern::setPipeline(Pipeline p) {
         if (!m.hasCompute) throw GpuUnavailable("--pipeline compute needs OpenGL 4.3 (compute shaders)");
         if (m.derivatives == Derivatives::Rasterizer)
             throw InputError("--derivatives rasterizer needs the fragment pipeline (compute shaders have no dFdx)");
-        if (!m.kernelProgram) {
-            const bool filtered = m.options.mode != FilterMode::None;
-            m.kernelProgram = compileComputeProgram(
-                filtered ? std::vector<std::string>{"common", "filtering", "view", "kernel_filtered", "view_kernel"}
-                         : std::vector<std::string>{"common", "unfiltered", "view", "kernel_unfiltered", "view_kernel"});
-        }
+        if (!m.kernelProgram) m.kernelProgram = buildProgram(filtered() ? "filtered-compute" : "unfiltered-compute");
     }
     m.pipeline = p;
-}
-
-Image GpuPattern::draw(int width, int height, bool depth, const std::function<void()>& drawCalls) const {
-    Image out(width, height, 3, Image::Uninitialized{});
-    offscreen(width, height, depth, [&] {
-        drawCalls();
-        std::vector<float> rgba(size_t(width) * size_t(height) * 4);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
-        for (size_t i = 0; i < out.pixelCount(); ++i)
-            for (size_t c = 0; c < 3; ++c) out.data()[3 * i + c] = rgba[4 * i + c];
-    });
-    return out;
-}
-
-void GpuPattern::offscreen(int width, int height, bool depth, const std::function<void()>& work) const {
-    GLuint target = 0, fbo = 0, depthBuffer = 0;
-    glGenTextures(1, &target);
-    glBindTexture(GL_TEXTURE_2D, target);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
-    // Complete without mipmaps: an incomplete texture bound as a compute
-    // image takes no stores (NVIDIA enforces this; llvmpipe does not).
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
-    if (depth) {
-        glGenRenderbuffers(1, &depthBuffer);
-        glBindRenderbuffer(GL_RENDERBUFFER, depthBuffer);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer);
-    }
-    glViewport(0, 0, width, height);
-    work();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteTextures(1, &target);
-    if (depthBuffer) glDeleteRenderbuffers(1, &depthBuffer);
 }
 
 Image GpuPattern::render(const Camera& camera) {
@@ -251,7 +198,11 @@ Image GpuPattern::render(const Camera& camera) {
     const View& view = camera.view;
     // Framebuffer row y is image row y: the shader maps fragment y to v the
     // way the CPU maps image rows.
-    return draw(view.width, view.height, false, [&] { drawOrDispatch(camera); });
+    const RenderTarget target(view.width, view.height, false);
+    drawOrDispatch(camera);
+    Image out = target.readRgb(RenderTarget::Rows::AsDrawn);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return out;
 }
 
 void GpuPattern::setViewUniforms(unsigned program, const Camera& camera) const {
@@ -272,8 +223,8 @@ void GpuPattern::setViewUniforms(unsigned program, const Camera& camera) const {
 
 void GpuPattern::drawView(const Camera& camera) {
     const Impl& m = *impl_;
-    setViewUniforms(m.program, camera);
-    glBindVertexArray(m.vao);
+    setViewUniforms(m.program.id(), camera);
+    glBindVertexArray(m.vao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -284,7 +235,7 @@ void GpuPattern::drawOrDispatch(const Camera& camera) {
     GLint target = 0;
     glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
                                           &target);
-    setViewUniforms(m.kernelProgram, camera);
+    setViewUniforms(m.kernelProgram.id(), camera);
     glBindImageTexture(0, GLuint(target), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(GLuint((camera.view.width + 7) / 8), GLuint((camera.view.height + 7) / 8), 1);
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
@@ -294,7 +245,8 @@ double GpuPattern::secondsPerFrame(const Camera& camera, int frames) {
     validateCamera(camera);
     if (frames < 1) throw InputError("secondsPerFrame: frames must be >= 1");
     double seconds = 0;
-    offscreen(camera.view.width, camera.view.height, false, [&] {
+    const RenderTarget target(camera.view.width, camera.view.height, false);
+    {
         // Warm-up, at least 0.3 s: drivers finish compiling and uploading at
         // the first draw, and a GPU that idled (during a read-back, say)
         // needs a while at full load to raise its clocks again (an H100
@@ -309,58 +261,9 @@ double GpuPattern::secondsPerFrame(const Camera& camera, int frames) {
         for (int f = 0; f < frames; ++f) drawOrDispatch(camera);
         glFinish();
         seconds = std::chrono::duration<double>(clock::now() - start).count();
-    });
-    return seconds / frames;
-}
-
-Image GpuPattern::renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling) {
-    if (width < 1 || height < 1 || width > 8192 || height > 8192)
-        throw InputError("scene: image size must be in [1, 8192] per side");
-    if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
-        throw InputError("--tiling must be a finite number in (0, 1e4]");
-    Impl& m = *impl_;
-    if (!m.sceneProgram)
-        m.sceneProgram = compileProgram({"mesh"}, {"common", "unfiltered", "filtering", "scene"});
-    GLuint vao = 0, buffers[2] = {0, 0};
-    glGenVertexArrays(1, &vao);
-    glBindVertexArray(vao);
-    glGenBuffers(2, buffers);
-    glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(float)), mesh.vertices.data(), GL_STATIC_DRAW);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[1]);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
-                 GL_STATIC_DRAW);
-    const GLsizei stride = Mesh::kStride * sizeof(float);
-    const int sizes[3] = {3, 3, 2}, offsets[3] = {0, 3, 6};
-    for (GLuint a = 0; a < 3; ++a) {
-        glEnableVertexAttribArray(a);
-        glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
-                              reinterpret_cast<const void*>(size_t(offsets[a]) * sizeof(float)));
     }
-    Image img = draw(width, height, true, [&] {
-        glClearColor(0.08f, 0.09f, 0.11f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        glEnable(GL_DEPTH_TEST);
-        bind(m.sceneProgram);
-        auto uniform = [&](const char* name) { return glGetUniformLocation(m.sceneProgram, name); };
-        const Mat4 vp = camera.viewProjection(float(width) / float(height));
-        glUniformMatrix4fv(uniform("uViewProjection"), 1, GL_FALSE, vp.data());
-        glUniform1f(uniform("uTiling"), tiling);
-        glUniform1i(uniform("uFiltered"), m.options.mode != FilterMode::None);
-        const float l[3] = {0.45f, 0.8f, 0.4f};
-        const float n = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-        glUniform3f(uniform("uLight"), l[0] / n, l[1] / n, l[2] / n);
-        glUniform3f(uniform("uEye"), camera.eye[0], camera.eye[1], camera.eye[2]);
-        glBindVertexArray(vao);
-        glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, nullptr);
-        glDisable(GL_DEPTH_TEST);
-    });
-    glDeleteBuffers(2, buffers);
-    glDeleteVertexArrays(1, &vao);
-    // GL's row 0 is the bottom of the picture: flip for an image file.
-    Image flipped(width, height, 3, Image::Uninitialized{});
-    for (int y = 0; y < height; ++y) std::copy_n(img.row(height - 1 - y), size_t(width) * 3, flipped.row(y));
-    return flipped;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return seconds / frames;
 }
 
 }  // namespace stochtex

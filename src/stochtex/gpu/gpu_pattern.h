@@ -6,11 +6,9 @@
 // full resolution), footprints from the rasterizer's derivatives. Each
 // render draws one fragment per pixel into a float framebuffer and reads it
 // back.
-#include <functional>
 #include <memory>
 
 #include "stochtex/gpu/gl_context.h"
-#include "stochtex/gpu/scene.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/pattern.h"
@@ -57,23 +55,18 @@ public:
     // query: llvmpipe's queries end before its rasterizer threads do. For
     // throughput benchmarks.
     double secondsPerFrame(const Camera& camera, int frames);
-    // The pattern on a lit mesh (uv × tiling example periods), seen by a
-    // perspective camera; 3 channels, row 0 at the top.
-    Image renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling);
+
+    // Makes `program` current and binds every texture and uniform of the
+    // pattern to it (both the unfiltered and the filtered sets: a program
+    // ignores what it lacks). For programs of other recipes (the scene).
+    void bind(unsigned program) const;
+    // Paper or smooth (else the unfiltered S = H ∘ N).
+    bool filtered() const;
 
 private:
-    // Binds every texture and uniform of the pattern to `program` (both the
-    // unfiltered and the filtered sets: a program ignores what it lacks).
-    void bind(unsigned program) const;
     void setViewUniforms(unsigned program, const Camera& camera) const;
     // drawView, or the compute kernel into the bound framebuffer's texture.
     void drawOrDispatch(const Camera& camera);
-    // Renders into a float framebuffer (with a depth buffer if asked) and
-    // reads it back.
-    Image draw(int width, int height, bool depth, const std::function<void()>& drawCalls) const;
-    // A width × height RGBA32F texture (complete, so also a compute image)
-    // as the bound framebuffer, with a depth buffer if asked, during `work`.
-    void offscreen(int width, int height, bool depth, const std::function<void()>& work) const;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -3,12 +3,15 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <initializer_list>
 #include <map>
 #include <regex>
 #include <string_view>
 
 #include "stochtex/core/embedded_file.h"
+#include "stochtex/core/error.h"
 
 namespace stochtex {
 
@@ -182,6 +185,19 @@ unsigned link(std::initializer_list<unsigned> shaders) {
 }
 
 }  // namespace
+
+std::pair<std::string, std::string> readShaderFile(const std::string& path) {
+    constexpr std::uintmax_t kMaxBytes = 1 << 20;  // GLSL sources are kilobytes; refuse to slurp anything huge
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) throw InputError(path + ": cannot read shader file (" + ec.message() + ")");
+    if (size > kMaxBytes) throw InputError(path + ": shader file larger than 1 MiB");
+    std::ifstream in(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) throw InputError(path + ": cannot read shader file");
+    if (text.find('\0') != std::string::npos) throw InputError(path + ": not a text file");
+    return {path, text};
+}
 
 std::string assembleShader(GlslTarget target, const std::vector<std::string>& files) {
     return assemble(target, files, {});

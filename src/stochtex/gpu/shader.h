@@ -4,6 +4,7 @@
 // GLSL ES 3.00 (WebGL 2): only the header differs.
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stochtex {
@@ -26,6 +27,11 @@ std::vector<std::string> shaderNames();
 std::vector<std::string> shaderChunks(const std::vector<std::string>& files);
 // A file's text as GLSL (kernel files lose their C++ `inline` marks).
 std::string shaderText(const std::string& stem);
+
+// A user's GLSL file, as (path, text) to pass in `overrides` with its path
+// among the stems: its compile errors then read "path:line". InputError if
+// it cannot be read or is not text.
+std::pair<std::string, std::string> readShaderFile(const std::string& path);
 
 // The version header, then the files in order (what the driver compiles).
 std::string assembleShader(GlslTarget target, const std::vector<std::string>& files);

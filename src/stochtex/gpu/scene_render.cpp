@@ -1,0 +1,58 @@
+#include "stochtex/gpu/scene_render.h"
+
+#include <cmath>
+
+#include "stochtex/core/error.h"
+#include "stochtex/gpu/programs.h"
+#include "stochtex/gpu/render_target.h"
+
+namespace stochtex {
+
+Image renderScene(const GpuPattern& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
+                  float tiling) {
+    if (width < 1 || height < 1 || width > 8192 || height > 8192)
+        throw InputError("scene: image size must be in [1, 8192] per side");
+    if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
+        throw InputError("--tiling must be a finite number in (0, 1e4]");
+    const gl::Program program = buildProgram("scene");
+    const gl::VertexArray vao = gl::newVertexArray();
+    glBindVertexArray(vao.id());
+    const gl::Buffer vertices = gl::newBuffer(), indices = gl::newBuffer();
+    glBindBuffer(GL_ARRAY_BUFFER, vertices.id());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(float)), mesh.vertices.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices.id());
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
+                 GL_STATIC_DRAW);
+    const GLsizei stride = Mesh::kStride * sizeof(float);
+    const int sizes[3] = {3, 3, 2}, offsets[3] = {0, 3, 6};
+    for (GLuint a = 0; a < 3; ++a) {
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(size_t(offsets[a]) * sizeof(float)));
+    }
+    const RenderTarget target(width, height, true);
+    {
+        glClearColor(0.08f, 0.09f, 0.11f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        pattern.bind(program.id());
+        auto uniform = [&](const char* name) { return glGetUniformLocation(program.id(), name); };
+        const Mat4 vp = camera.viewProjection(float(width) / float(height));
+        glUniformMatrix4fv(uniform("uViewProjection"), 1, GL_FALSE, vp.data());
+        glUniform1f(uniform("uTiling"), tiling);
+        glUniform1i(uniform("uFiltered"), pattern.filtered());
+        const float l[3] = {0.45f, 0.8f, 0.4f};
+        const float n = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+        glUniform3f(uniform("uLight"), l[0] / n, l[1] / n, l[2] / n);
+        glUniform3f(uniform("uEye"), camera.eye[0], camera.eye[1], camera.eye[2]);
+        glBindVertexArray(vao.id());
+        glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, nullptr);
+        glDisable(GL_DEPTH_TEST);
+    }
+    // GL's row 0 is the bottom of the picture: flip for an image file.
+    Image out = target.readRgb(RenderTarget::Rows::TopDown);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return out;
+}
+
+}  // namespace stochtex
