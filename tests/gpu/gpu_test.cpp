@@ -16,6 +16,7 @@
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -241,7 +242,7 @@ TEST(Gpu, SceneRendersObjects) {
         EXPECT_GT(saturation / std::max(covered, 1), 0.1) << name << ": the weld colours should show";
         EXPECT_EQ(gpu.renderScene(makeObject(name), SceneCamera{}, 160, 120, 4.0f).data(), img.data()) << name;
     }
-    EXPECT_THROW(makeObject("cube"), InputError);
+    EXPECT_EQ(test::inputErrorOf([] { makeObject("cube"); }).parameter(), "object");
     EXPECT_THROW(gpu.renderScene(makeObject("sphere"), SceneCamera{}, 16, 16, -1.0f), InputError);
 }
 

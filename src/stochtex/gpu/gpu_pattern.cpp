@@ -15,6 +15,12 @@ namespace stochtex {
 
 namespace {
 
+// Raised by setDerivatives and setPipeline, whichever of the pair comes second.
+InputError rasterizerNeedsFragments() {
+    return InputError::parameter("derivatives",
+                                 "must be camera with the compute pipeline (compute shaders have no dFdx), got rasterizer");
+}
+
 // A float texture read with texelFetch only (no filtering, no mipmaps).
 GLuint floatTexture(int width, int height, int channels, const float* data) {
     static const GLenum internal[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
@@ -86,7 +92,7 @@ struct GpuPattern::Impl {
 GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
     : impl_(std::make_unique<Impl>()) {
     if (options.mode != FilterMode::None && options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
-        throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
+        throw InputError::parameter("mode", "must be none, paper or smooth on the GPU");
     context.makeCurrent();
     Impl& m = *impl_;
     m.options = options;
@@ -107,7 +113,9 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
             m.average[1].push_back(est.pyramid(1).averageMoment(l));
             m.average[2].push_back(m.shared ? est.covariancePyramid()->averageMoment(l) : 0.0f);
         }
-        if (m.maxLod >= 16) throw InputError("--gpu: examples larger than 32768² are not supported");
+        if (m.maxLod >= 16)
+            throw InputError("the GPU filters examples of at most 32768² texels, got " + std::to_string(pattern.exampleSize()) +
+                             "²");
         const ColormapTable& h = f.blendingSpaceColormap();
         m.table = tableTexture(f.table(), h.resolutionX(), h.resolutionY());
         m.tableLevels = int(f.table().sigmas().size());
@@ -187,16 +195,16 @@ void GpuPattern::bind(unsigned program) const {
 
 void GpuPattern::setDerivatives(Derivatives d) {
     if (d == Derivatives::Rasterizer && impl_->pipeline == Pipeline::Compute)
-        throw InputError("--derivatives rasterizer needs the fragment pipeline (compute shaders have no dFdx)");
+        throw rasterizerNeedsFragments();
     impl_->derivatives = d;
 }
 
 void GpuPattern::setPipeline(Pipeline p) {
     Impl& m = *impl_;
     if (p == Pipeline::Compute) {
-        if (!m.hasCompute) throw GpuUnavailable("--pipeline compute needs OpenGL 4.3 (compute shaders)");
+        if (!m.hasCompute) throw GpuUnavailable("the compute pipeline needs OpenGL 4.3 (compute shaders)");
         if (m.derivatives == Derivatives::Rasterizer)
-            throw InputError("--derivatives rasterizer needs the fragment pipeline (compute shaders have no dFdx)");
+            throw rasterizerNeedsFragments();
         if (!m.kernelProgram) {
             const bool filtered = m.options.mode != FilterMode::None;
             m.kernelProgram = compileComputeProgram(
@@ -292,7 +300,7 @@ void GpuPattern::drawOrDispatch(const Camera& camera) {
 
 double GpuPattern::secondsPerFrame(const Camera& camera, int frames) {
     validateCamera(camera);
-    if (frames < 1) throw InputError("secondsPerFrame: frames must be >= 1");
+    if (frames < 1) throw InputError::parameter("frames", "must be >= 1, got " + std::to_string(frames));
     double seconds = 0;
     offscreen(camera.view.width, camera.view.height, false, [&] {
         // Warm-up, at least 0.3 s: drivers finish compiling and uploading at
@@ -315,9 +323,10 @@ double GpuPattern::secondsPerFrame(const Camera& camera, int frames) {
 
 Image GpuPattern::renderScene(const Mesh& mesh, const SceneCamera& camera, int width, int height, float tiling) {
     if (width < 1 || height < 1 || width > 8192 || height > 8192)
-        throw InputError("scene: image size must be in [1, 8192] per side");
+        throw InputError::parameter("size", "must be in [1, 8192] per side, got " + std::to_string(width) + "x" +
+                                                std::to_string(height));
     if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
-        throw InputError("--tiling must be a finite number in (0, 1e4]");
+        throw InputError::parameter("tiling", "must be a finite number in (0, 1e4], got " + formatValue(tiling));
     Impl& m = *impl_;
     if (!m.sceneProgram)
         m.sceneProgram = compileProgram({"mesh"}, {"common", "unfiltered", "filtering", "scene"});
