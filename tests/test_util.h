@@ -1,7 +1,10 @@
 #pragma once
 // Helpers shared by the unit tests.
+#include <gtest/gtest.h>
+
 #include <cstdint>
 
+#include "stochtex/core/error.h"
 #include "stochtex/noise/spectrum.h"
 
 namespace stochtex::test {
@@ -22,6 +25,19 @@ inline SpectrumSpec spectrumSpec(SpectrumShape shape, double f, double b, double
 
 inline Image example(SpectrumShape shape, double f, double b, double theta, uint32_t seed, int size) {
     return synthesizeExample(spectrumSpec(shape, f, b, theta, seed, size));
+}
+
+// The InputError that `f` throws; a test failure (and a placeholder error)
+// if it throws none. Other exceptions propagate and fail the test.
+template <class F>
+InputError inputErrorOf(F&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no InputError was thrown";
+    return InputError("(none thrown)");
 }
 
 }  // namespace stochtex::test

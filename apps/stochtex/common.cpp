@@ -1,6 +1,8 @@
 #include "common.h"
 
 #include <filesystem>
+#include <string_view>
+#include <utility>
 
 #include "stochtex/core/error.h"
 #include "stochtex/image/image_io.h"
@@ -43,16 +45,13 @@ View makeView(const PatternSpec& spec, const ViewFlags& flags) {
     if (!flags.size.empty()) {
         v.width = flags.size[0];
         v.height = flags.size.size() > 1 ? flags.size[1] : flags.size[0];
-        if (v.width < 1 || v.height < 1 || v.width > kMaxOutputSide || v.height > kMaxOutputSide)
-            throw InputError("--size: " + std::to_string(v.width) + "x" + std::to_string(v.height) +
-                             " out of range (1.." + std::to_string(kMaxOutputSide) + " per side)");
     }
     if (flags.scale) v.scale = *flags.scale;
     if (!flags.offset.empty()) {
         v.offsetU = flags.offset[0];
         v.offsetV = flags.offset[1];
     }
-    validateView(v, "--size/--scale/--offset");
+    validateView(v);  // errors name size, scale or offset: main adds the flag
     return v;
 }
 
@@ -95,6 +94,40 @@ GpuPattern::Pipeline parsePipeline(const std::string& pipeline) {
     if (pipeline == "fragment") return GpuPattern::Pipeline::Fragment;
     if (pipeline == "compute") return GpuPattern::Pipeline::Compute;
     throw InputError("--pipeline: unknown \"" + pipeline + "\" (expected fragment or compute)");
+}
+
+// Library parameter → the flag that sets it. One table for every command:
+// where two commands set a parameter from differently named flags, the
+// command checks that flag itself (as correlation does for --layers-list).
+namespace {
+constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
+    {"mode", "--filter"},
+    {"aniso", "--aniso"},
+    {"referenceMaxSamples", "--reference-samples"},
+    {"tiltDeg", "--tilt"},
+    {"fovDeg", "--fov"},
+    {"size", "--size"},
+    {"scale", "--scale"},
+    {"offset", "--offset"},
+    {"object", "--object"},
+    {"tiling", "--tiling"},
+    {"derivatives", "--derivatives"},
+    {"count", "--count"},
+    {"footprints", "--footprints"},
+    {"layers", "--layers"},
+    {"maxScale", "--max-scale"},
+    {"envelopeSigma", "--envelope-sigma"},
+    {"time", "--time"},
+    {"scaling", "--scaling"},
+    {"offsets", "--offsets"},
+    {"interpolation", "--interpolation"},
+};
+}  // namespace
+
+std::string describeInputError(const InputError& e) {
+    for (const auto& [parameter, flag] : kParameterFlags)
+        if (e.parameter() == parameter) return std::string(flag) + ": " + e.what();
+    return e.what();
 }
 
 std::string htmlEscape(const std::string& s) {

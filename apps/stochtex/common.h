@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
@@ -45,6 +46,11 @@ void addThreadsFlag(CLI::App& cmd, int& threads);
 // InputError naming the flag for any other value.
 void addPipelineFlag(CLI::App& cmd, std::string& pipeline);
 GpuPattern::Pipeline parsePipeline(const std::string& pipeline);
+
+// An InputError as the user reads it: a library parameter error is prefixed
+// with the flag that sets the parameter ("--aniso: aniso must be in [1, 16],
+// got 0"); any other error as it is.
+std::string describeInputError(const InputError& e);
 
 // <, > and & as HTML entities.
 std::string htmlEscape(const std::string& s);

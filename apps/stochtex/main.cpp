@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "stochtex: error: %s\nRun with --help for usage.\n", e.what());
         return 2;
     } catch (const stochtex::InputError& e) {
-        std::fprintf(stderr, "stochtex: error: %s\n", e.what());
+        std::fprintf(stderr, "stochtex: error: %s\n", stochtex::cli::describeInputError(e).c_str());
         return 2;
     } catch (const stochtex::GpuUnavailable& e) {
         std::fprintf(stderr, "stochtex: error: %s\n", e.what());

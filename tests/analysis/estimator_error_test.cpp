@@ -65,7 +65,9 @@ TEST(EstimatorError, IndependentOfThreadCount) {
         EXPECT_EQ(one[i].sigmaRel, all[i].sigmaRel);
     }
     o.count = 0;
-    EXPECT_THROW(measureEstimatorErrors(pair, kDefaultGridDensity, o), InputError);
+    const InputError e = test::inputErrorOf([&] { measureEstimatorErrors(pair, kDefaultGridDensity, o); });
+    EXPECT_EQ(e.parameter(), "count");
+    EXPECT_STREQ(e.what(), "count must be in [1, 1e6], got 0");
 }
 
 }  // namespace

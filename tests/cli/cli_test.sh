@@ -120,37 +120,37 @@ expect_bad "missing image" "$out/bad4.png" "absent.png: no such image file" -- "
 echo "not an image" >"$work/out/corrupt.png"
 sed 's#out/noise.png#out/corrupt.png#' "$work/exemplar.json" >"$work/corrupt-image.json"
 expect_bad "corrupt image" "$out/bad5.png" "corrupt.png: not a readable image" -- "$bin" render "$work/corrupt-image.json" -o "$out/bad5.png"
-expect_bad "NaN scale" "$out/bad6.png" "scale must be a finite number" -- "$bin" render --preset gaussian -o "$out/bad6.png" --scale nan
-expect_bad "negative scale" "$out/bad7.png" "scale must be a finite number" -- "$bin" render --preset gaussian -o "$out/bad7.png" --scale -2
-expect_bad "negative size" "$out/bad8.png" "--size" -- "$bin" render --preset gaussian -o "$out/bad8.png" --size=-5
-expect_bad "size over cap" "$out/bad9.png" "out of range (1..16384 per side)" -- "$bin" render --preset gaussian -o "$out/bad9.png" --size 100000
-expect_bad "NaN offset" "$out/bad10.png" "offset must be finite" -- "$bin" render --preset gaussian -o "$out/bad10.png" --offset nan,0
+expect_bad "NaN scale" "$out/bad6.png" "--scale: scale must be a finite number in (0, 1e6], got nan" -- "$bin" render --preset gaussian -o "$out/bad6.png" --scale nan
+expect_bad "negative scale" "$out/bad7.png" "--scale: scale must be a finite number in (0, 1e6], got -2" -- "$bin" render --preset gaussian -o "$out/bad7.png" --scale -2
+expect_bad "negative size" "$out/bad8.png" "--size: size must be in [1, 16384] per side, got -5x-5" -- "$bin" render --preset gaussian -o "$out/bad8.png" --size=-5
+expect_bad "size over cap" "$out/bad9.png" "--size: size must be in [1, 16384] per side, got 100000x100000" -- "$bin" render --preset gaussian -o "$out/bad9.png" --size 100000
+expect_bad "NaN offset" "$out/bad10.png" "--offset: offset must be finite and at most 1e9 texels, got nan,0" -- "$bin" render --preset gaussian -o "$out/bad10.png" --offset nan,0
 expect_bad "bad extension" "$out/bad11.jpg" "unsupported output format" -- "$bin" render --preset gaussian -o "$out/bad11.jpg"
 expect_bad "missing output dir" "$out/nodir/bad12.png" "does not exist" -- "$bin" render --preset gaussian -o "$out/nodir/bad12.png"
 expect_bad "bad noise spec" "$out/bad13.png" "<inline JSON>: /components/0/frequency: must be in" -- "$bin" noise '{"type":"spectrum","components":[{"shape":"ring","frequency":-1,"bandwidth":2}]}' -o "$out/bad13.png"
 expect_bad "noise size over cap" "$out/bad14.png" "/size: must be in [8, 4096]" -- "$bin" noise '{"type":"spectrum","size":100000,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/bad14.png"
 expect_bad "bad colormap" "$out/bad15.png" "/type: unknown value" -- "$bin" colormap '{"type":"rainbow"}' -o "$out/bad15.png"
 expect_bad "unknown flag" "$out/bad16.png" "--bogus" -- "$bin" render --preset gaussian -o "$out/bad16.png" --bogus
-expect_bad "bad filter" "$out/bad18.png" 'unknown mode "blurry"' -- "$bin" render --preset gaussian -o "$out/bad18.png" --filter blurry
-expect_bad "aniso zero" "$out/bad19.png" "--aniso must be in [1, 16]" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
-expect_bad "aniso absurd" "$out/bad20.png" "--aniso must be in [1, 16]" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
-expect_bad "tilt" "$out/bad21.png" "--tilt must be in [0, 89]" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95
-expect_bad "zero scale" "$out/bad22.png" "scale must be a finite number" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
+expect_bad "bad filter" "$out/bad18.png" '--filter: mode must be none, paper, smooth, exact or reference, got "blurry"' -- "$bin" render --preset gaussian -o "$out/bad18.png" --filter blurry
+expect_bad "aniso zero" "$out/bad19.png" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
+expect_bad "aniso absurd" "$out/bad20.png" "--aniso: aniso must be in [1, 16], got 1000" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
+expect_bad "tilt" "$out/bad21.png" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95
+expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be a finite number in (0, 1e6], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
 expect_bad "bad view" "$out/bad23.png" 'unknown "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
 expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"
-expect_bad "zoom n = 0" "$out/zbad1" "--layers: the number of layers n must be in [1, 1024]" -- "$bin" zoom -o "$out/zbad1" --layers 0
-expect_bad "zoom H <= 0" "$out/zbad2" "--max-scale: H must be a finite number" -- "$bin" zoom -o "$out/zbad2" --max-scale 0
+expect_bad "zoom n = 0" "$out/zbad1" "--layers: layers (n) must be in [1, 1024], got 0" -- "$bin" zoom -o "$out/zbad1" --layers 0
+expect_bad "zoom H <= 0" "$out/zbad2" "--max-scale: maxScale (H) must be a finite number in (0, 1000], got 0" -- "$bin" zoom -o "$out/zbad2" --max-scale 0
 expect_bad "correlation N = 0" "$out/zbad3" "--instances must be in [2, 1e6]" -- "$bin" correlation -o "$out/zbad3" --instances 0
 expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image file" -- "$bin" contrast -o "$out/zbad4" --base "$work/nothere.png"
 expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: every n must be in [1, 1024]" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
 expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
-expect_bad "reproduce zero count" "$out/rbad2" "--count must be in [1, 1e6]" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
+expect_bad "reproduce zero count" "$out/rbad2" "--count: count must be in [1, 1e6], got 0" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
 expect_bad "gpu with the reference" "$out/gbad.png" "--gpu: the GPU renders --filter none, paper or smooth" -- "$bin" render --preset camouflage --gpu --filter reference -o "$out/gbad.png"
 expect_bad "unknown pipeline" "$out/gbad2.png" '--pipeline: unknown "vulkan"' -- "$bin" render --preset camouflage --gpu --pipeline vulkan -o "$out/gbad2.png"
 expect_bad "unknown derivatives" "$out/gbad3.png" '--derivatives: unknown "dfdx"' -- "$bin" render --preset camouflage --gpu --derivatives dfdx -o "$out/gbad3.png"
-expect_bad "compute with rasterizer derivatives" "$out/gbad4.png" "--derivatives rasterizer needs the fragment pipeline" -- "$bin" render --preset camouflage --gpu --filter paper --pipeline compute --derivatives rasterizer -o "$out/gbad4.png"
-expect_bad "scene unknown object" "$out/sbad.png" '--object: unknown "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
-expect_bad "bake unfiltered" "$out/bbad" "bake: --filter must be paper or smooth" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
+expect_bad "compute with rasterizer derivatives" "$out/gbad4.png" "--derivatives: derivatives must be camera with the compute pipeline" -- "$bin" render --preset camouflage --gpu --filter paper --pipeline compute --derivatives rasterizer -o "$out/gbad4.png"
+expect_bad "scene unknown object" "$out/sbad.png" '--object: object must be plane, sphere or torus, got "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
+expect_bad "bake unfiltered" "$out/bbad" "--filter: mode must be paper or smooth to export" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
 expect_bad "bake bad precision" "$out/bbad2" '--table-precision: unknown "double"' -- "$bin" bake --preset weld --table-precision double -o "$out/bbad2"
 expect_bad "bake-image exr" "$out/x.exr" "bake-image writes PNG" -- "$bin" bake-image --preset marble -o "$out/x.exr"
 

@@ -18,6 +18,7 @@
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -243,8 +244,9 @@ TEST(Gpu, SceneRendersObjects) {
         EXPECT_GT(saturation / std::max(covered, 1), 0.1) << name << ": the weld colours should show";
         EXPECT_EQ(renderScene(gpu, makeObject(name), SceneCamera{}, 160, 120, 4.0f).data(), img.data()) << name;
     }
-    EXPECT_THROW(makeObject("cube"), InputError);
-    EXPECT_THROW(renderScene(gpu, makeObject("sphere"), SceneCamera{}, 16, 16, -1.0f), InputError);
+    EXPECT_EQ(test::inputErrorOf([] { makeObject("cube"); }).parameter(), "object");
+    EXPECT_EQ(test::inputErrorOf([&] { renderScene(gpu, makeObject("sphere"), SceneCamera{}, 16, 16, -1.0f); }).parameter(),
+              "tiling");
 }
 
 TEST(Gpu, BrokenShaderReportsFileAndLine) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "stochtex/pattern/camera.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -85,6 +86,29 @@ TEST(Camera, PlaneSkyAboveTheHorizonAndStretchedFootprintsBelow) {
     EXPECT_GT(lastGround, 10);  // the horizon is well inside the image
     ASSERT_TRUE(c.footprint(100, lastGround + 5, 256, u, v, j));
     EXPECT_GT(j.dvdy / j.dudx, 10 * nearStretch);
+}
+
+TEST(Camera, ErrorsNameTheParameterAndTheValue) {
+    Camera c = plane(95, 60, 1.0);
+    InputError e = test::inputErrorOf([&] { validateCamera(c); });
+    EXPECT_EQ(e.parameter(), "tiltDeg");
+    EXPECT_STREQ(e.what(), "tiltDeg must be in [0, 89] degrees, got 95");
+    c = plane(30, 0.5, 1.0);
+    e = test::inputErrorOf([&] { validateCamera(c); });
+    EXPECT_EQ(e.parameter(), "fovDeg");
+    EXPECT_STREQ(e.what(), "fovDeg must be in [1, 150] degrees, got 0.5");
+    c = plane(30, 60, std::nan(""));
+    e = test::inputErrorOf([&] { validateCamera(c); });
+    EXPECT_EQ(e.parameter(), "scale");
+    EXPECT_STREQ(e.what(), "scale must be a finite number in (0, 1e6], got nan");
+    c = plane(30, 60, 1.0);
+    c.view.width = 0;
+    e = test::inputErrorOf([&] { validateCamera(c); });
+    EXPECT_EQ(e.parameter(), "size");
+    EXPECT_STREQ(e.what(), "size must be in [1, 16384] per side, got 0x150");
+    c.view.width = c.view.height = 16384;
+    e = test::inputErrorOf([&] { validateCamera(c); });
+    EXPECT_STREQ(e.what(), "size must be at most 67108864 pixels, got 16384x16384");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "stochtex/core/parallel.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/presets.h"
+#include "test_util.h"
 
 using namespace stochtex;
 
@@ -197,6 +198,26 @@ TEST(FilteredPattern, BadInputIsRejected) {
     c.kind = Camera::Kind::Plane;
     c.tiltDeg = 95;
     EXPECT_THROW(f.render(c), InputError);
+}
+
+// The library names its own parameters and the value it got; the CLI adds
+// the flag (tests/cli).
+TEST(FilteredPattern, ErrorsNameTheParameterAndTheValue) {
+    const Pattern p = Pattern::build(loadPreset("gaussian"));
+    const InputError aniso = test::inputErrorOf([&] { FilteredPattern(p, options(FilterMode::Smooth, 0)); });
+    EXPECT_EQ(aniso.parameter(), "aniso");
+    EXPECT_STREQ(aniso.what(), "aniso must be in [1, 16], got 0");
+    FilterOptions o = options(FilterMode::Reference);
+    o.referenceMaxSamples = 5000;
+    const InputError samples = test::inputErrorOf([&] { FilteredPattern(p, o); });
+    EXPECT_EQ(samples.parameter(), "referenceMaxSamples");
+    EXPECT_STREQ(samples.what(), "referenceMaxSamples must be in [1, 4096], got 5000");
+    const InputError mode = test::inputErrorOf([] { parseFilterMode("blurry"); });
+    EXPECT_EQ(mode.parameter(), "mode");
+    EXPECT_STREQ(mode.what(), "mode must be none, paper, smooth, exact or reference, got \"blurry\"");
+    const InputError k = test::inputErrorOf([] { makeFootprint(0, 0, Jacobian{1, 0, 0, 1}, 256, 8, 17); });
+    EXPECT_EQ(k.parameter(), "maxAniso");
+    EXPECT_STREQ(k.what(), "maxAniso (K) must be in [1, 16], got 17");
 }
 
 TEST(FilteredPattern, IdenticalForAnyThreadCountAndEstimatorInstance) {

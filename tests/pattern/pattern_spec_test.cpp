@@ -5,6 +5,7 @@
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/presets.h"
+#include "test_util.h"
 
 using namespace stochtex;
 
@@ -72,10 +73,26 @@ TEST(PatternSpec, SizesAreCapped) {
     EXPECT_NE(errorOf(big).find("/size: must be in [1, 16384]"), std::string::npos);
     std::string tooMany = kValid;
     tooMany.insert(1, "\"size\": [16384, 16384], ");
-    EXPECT_NE(errorOf(tooMany).find("/size: more than"), std::string::npos);
+    // The pixel cap is the renderer's (validateView), re-raised at /size.
+    EXPECT_EQ(errorOf(tooMany), "test.json: /size: size must be at most 67108864 pixels, got 16384x16384");
     std::string negative = kValid;
     negative.insert(1, "\"scale\": -2, ");
     EXPECT_NE(errorOf(negative).find("/scale: must be in"), std::string::npos);
+}
+
+TEST(JsonReader, LibraryParameterErrorsLandAtTheirMember) {
+    const nlohmann::json j = nlohmann::json::parse(R"({"scale": 0, "inner": {"x": 1}})");
+    const JsonReader r(j, "test.json");
+    auto messageOf = [](const JsonReader& at, const InputError& thrown) {
+        return std::string(test::inputErrorOf([&] { at.check([&] { throw thrown; }); }).what());
+    };
+    EXPECT_EQ(messageOf(r, InputError::parameter("scale", "must be > 0, got 0")),
+              "test.json: /scale: scale must be > 0, got 0");
+    // A parameter with no member of its name: the object's pointer.
+    EXPECT_EQ(messageOf(r.at("inner"), InputError::parameter("y", "must be set")), "test.json: /inner: y must be set");
+    // Not a parameter error: as it was.
+    EXPECT_EQ(messageOf(r, InputError("a.png: no such file")), "a.png: no such file");
+    EXPECT_NO_THROW(r.check([] {}));
 }
 
 TEST(PatternSpec, PaintedColormapValidation) {

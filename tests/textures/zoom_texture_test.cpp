@@ -6,6 +6,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -113,6 +114,22 @@ TEST(ZoomTexture, BadParametersAreInputErrors) {
     EXPECT_THROW(zoomLayers(p, 8, 8), InputError);
     EXPECT_THROW(LatticeTexture::whiteNoise(0, 8, 1), InputError);
     EXPECT_THROW(parseZoomOffsets("random"), InputError);
+}
+
+TEST(ZoomTexture, ErrorsNameTheParameterAndTheValue) {
+    ZoomParams p;
+    p.layers = 0;
+    InputError e = test::inputErrorOf([&] { validateZoomParams(p); });
+    EXPECT_EQ(e.parameter(), "layers");
+    EXPECT_STREQ(e.what(), "layers (n) must be in [1, 1024], got 0");
+    p = ZoomParams{};
+    p.envelopeSigma = -0.25;
+    e = test::inputErrorOf([&] { validateZoomParams(p); });
+    EXPECT_EQ(e.parameter(), "envelopeSigma");
+    EXPECT_STREQ(e.what(), "envelopeSigma (s) must be a finite number > 0, got -0.25");
+    e = test::inputErrorOf([] { parseZoomOffsets("random"); });
+    EXPECT_EQ(e.parameter(), "offsets");
+    EXPECT_STREQ(e.what(), "offsets must be none, simple, hashed or sin-hash, got \"random\"");
 }
 
 }  // namespace

@@ -11,11 +11,13 @@
 namespace stochtex {
 
 void validateEstimatorErrorOptions(const EstimatorErrorOptions& options, int exampleSize) {
-    if (options.count < 1 || options.count > 1000000) throw InputError("--count must be in [1, 1e6]");
-    if (options.footprints.empty()) throw InputError("--footprints: no footprint sizes");
+    if (options.count < 1 || options.count > 1000000)
+        throw InputError::parameter("count", "must be in [1, 1e6], got " + std::to_string(options.count));
+    if (options.footprints.empty()) throw InputError::parameter("footprints", "must list at least one size");
     for (int s : options.footprints)
         if (s < 1 || s > 4 * exampleSize)
-            throw InputError("--footprints: sizes must be in [1, " + std::to_string(4 * exampleSize) + "] texels");
+            throw InputError::parameter("footprints", "must be in [1, " + std::to_string(4 * exampleSize) +
+                                                          "] texels, got " + std::to_string(s));
 }
 
 std::vector<EstimatorError> measureEstimatorErrors(const std::array<TilingBlendingNoise, 2>& noises,

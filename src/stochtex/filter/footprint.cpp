@@ -11,7 +11,7 @@ namespace stochtex {
 
 Footprint makeFootprint(double u, double v, const Jacobian& j, int exampleSize, int maxLod, int maxAniso) {
     if (maxAniso < 1 || maxAniso > kMaxAnisotropy)
-        throw InputError("anisotropy K must be in [1, 16] (got " + std::to_string(maxAniso) + ")");
+        throw InputError::parameter("maxAniso", "(K) must be in [1, 16], got " + std::to_string(maxAniso));
     if (!std::isfinite(u) || !std::isfinite(v) || !std::isfinite(j.dudx) || !std::isfinite(j.dvdx) ||
         !std::isfinite(j.dudy) || !std::isfinite(j.dvdy))
         throw InputError("footprint: non-finite position or Jacobian");

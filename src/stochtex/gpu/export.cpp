@@ -76,7 +76,7 @@ void main() { colour = stochtex_sample(vUv * 8.0); }
 void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
                    const ExportOptions& exportOptions) {
     if (options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
-        throw InputError("bake: --filter must be paper or smooth");
+        throw InputError::parameter("mode", "must be paper or smooth to export");
     const FilteredPattern f(pattern, options);  // validates the options
     std::error_code ec;
     fs::create_directories(dir, ec);

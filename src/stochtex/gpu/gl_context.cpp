@@ -75,7 +75,7 @@ std::unique_ptr<GlContext> GlContext::headless() {
         ctx->impl_->context = c;
         return ctx;
     }
-    throw GpuUnavailable("--gpu: no headless OpenGL 3.3 core context could be created (EGL displays tried: " +
+    throw GpuUnavailable("no headless OpenGL 3.3 core context could be created (EGL displays tried: " +
                          (tried.empty() ? std::string("none") : tried) +
                          "); install Mesa (libegl-mesa0, libgl1-mesa-dri) or a GPU driver");
 }

@@ -16,6 +16,12 @@ namespace stochtex {
 
 namespace {
 
+// Raised by setDerivatives and setPipeline, whichever of the pair comes second.
+InputError rasterizerNeedsFragments() {
+    return InputError::parameter("derivatives",
+                                 "must be camera with the compute pipeline (compute shaders have no dFdx), got rasterizer");
+}
+
 // A float texture read with texelFetch only (no filtering, no mipmaps).
 gl::Texture floatTexture(int width, int height, int channels, const float* data) {
     static const GLenum internal[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
@@ -85,7 +91,7 @@ struct GpuPattern::Impl {
 GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
     : impl_(std::make_unique<Impl>()) {
     if (options.mode != FilterMode::None && options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
-        throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
+        throw InputError::parameter("mode", "must be none, paper or smooth on the GPU");
     context.makeCurrent();
     Impl& m = *impl_;
     m.options = options;
@@ -105,7 +111,9 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
             m.average[1].push_back(est.pyramid(1).averageMoment(l));
             m.average[2].push_back(m.shared ? est.covariancePyramid()->averageMoment(l) : 0.0f);
         }
-        if (m.maxLod >= 16) throw InputError("--gpu: examples larger than 32768² are not supported");
+        if (m.maxLod >= 16)
+            throw InputError("the GPU filters examples of at most 32768² texels, got " + std::to_string(pattern.exampleSize()) +
+                             "²");
         const ColormapTable& h = f.blendingSpaceColormap();
         m.table = tableTexture(f.table(), h.resolutionX(), h.resolutionY());
         m.tableLevels = int(f.table().sigmas().size());
@@ -178,16 +186,16 @@ void GpuPattern::bind(unsigned program) const {
 
 void GpuPattern::setDerivatives(Derivatives d) {
     if (d == Derivatives::Rasterizer && impl_->pipeline == Pipeline::Compute)
-        throw InputError("--derivatives rasterizer needs the fragment pipeline (compute shaders have no dFdx)");
+        throw rasterizerNeedsFragments();
     impl_->derivatives = d;
 }
 
 void GpuPattern::setPipeline(Pipeline p) {
     Impl& m = *impl_;
     if (p == Pipeline::Compute) {
-        if (!m.hasCompute) throw GpuUnavailable("--pipeline compute needs OpenGL 4.3 (compute shaders)");
+        if (!m.hasCompute) throw GpuUnavailable("the compute pipeline needs OpenGL 4.3 (compute shaders)");
         if (m.derivatives == Derivatives::Rasterizer)
-            throw InputError("--derivatives rasterizer needs the fragment pipeline (compute shaders have no dFdx)");
+            throw rasterizerNeedsFragments();
         if (!m.kernelProgram) m.kernelProgram = buildProgram(filtered() ? "filtered-compute" : "unfiltered-compute");
     }
     m.pipeline = p;
@@ -243,7 +251,7 @@ void GpuPattern::drawOrDispatch(const Camera& camera) {
 
 double GpuPattern::secondsPerFrame(const Camera& camera, int frames) {
     validateCamera(camera);
-    if (frames < 1) throw InputError("secondsPerFrame: frames must be >= 1");
+    if (frames < 1) throw InputError::parameter("frames", "must be >= 1, got " + std::to_string(frames));
     double seconds = 0;
     const RenderTarget target(camera.view.width, camera.view.height, false);
     {

@@ -59,7 +59,7 @@ Mesh makeObject(const std::string& name) {
     if (name == "sphere") return makeSphere();
     if (name == "torus") return makeTorus();
     if (name == "plane") return makePlaneMesh();
-    throw InputError("--object: unknown \"" + name + "\" (expected plane, sphere or torus)");
+    throw InputError::parameter("object", "must be plane, sphere or torus, got \"" + name + "\"");
 }
 
 Mat4 SceneCamera::viewProjection(float aspect) const {

@@ -11,9 +11,10 @@ namespace stochtex {
 Image renderScene(const GpuPattern& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
                   float tiling) {
     if (width < 1 || height < 1 || width > 8192 || height > 8192)
-        throw InputError("scene: image size must be in [1, 8192] per side");
+        throw InputError::parameter("size", "must be in [1, 8192] per side, got " + std::to_string(width) + "x" +
+                                                std::to_string(height));
     if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
-        throw InputError("--tiling must be a finite number in (0, 1e4]");
+        throw InputError::parameter("tiling", "must be a finite number in (0, 1e4], got " + formatValue(tiling));
     const gl::Program program = buildProgram("scene");
     const gl::VertexArray vao = gl::newVertexArray();
     glBindVertexArray(vao.id());

@@ -30,12 +30,12 @@ bool Camera::planeFootprint(int px, int py, int exampleSize, double& u, double& 
 }
 
 void validateCamera(const Camera& c) {
-    validateView(c.view, "--size/--scale/--offset");
+    validateView(c.view);
     if (c.kind == Camera::Kind::Plane) {
         if (!std::isfinite(c.tiltDeg) || c.tiltDeg < 0 || c.tiltDeg > 89)
-            throw InputError("--tilt must be in [0, 89] degrees");
+            throw InputError::parameter("tiltDeg", "must be in [0, 89] degrees, got " + formatValue(c.tiltDeg));
         if (!std::isfinite(c.fovDeg) || c.fovDeg < 1 || c.fovDeg > 150)
-            throw InputError("--fov must be in [1, 150] degrees");
+            throw InputError::parameter("fovDeg", "must be in [1, 150] degrees, got " + formatValue(c.fovDeg));
     }
 }
 

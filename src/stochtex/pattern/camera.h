@@ -37,7 +37,7 @@ private:
     bool planeFootprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const;
 };
 
-// InputError naming the flag if the camera is unusable.
+// InputError naming the parameter (tiltDeg, fovDeg, the view's) if the camera is unusable.
 void validateCamera(const Camera& c);
 
 }  // namespace stochtex

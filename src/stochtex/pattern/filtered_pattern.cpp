@@ -32,16 +32,17 @@ FilterMode parseFilterMode(const std::string& name) {
     if (name == "smooth") return FilterMode::Smooth;
     if (name == "exact") return FilterMode::Exact;
     if (name == "reference") return FilterMode::Reference;
-    throw InputError("--filter: unknown mode \"" + name + "\" (expected none, paper, smooth, exact or reference)");
+    throw InputError::parameter("mode", "must be none, paper, smooth, exact or reference, got \"" + name + "\"");
 }
 
 FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& options)
     : pattern_(pattern), options_(options), colormap_(foldInverseTransforms(pattern)) {
     if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
-        throw InputError("--aniso must be in [1, " + std::to_string(kMaxAnisotropy) + "] (got " +
-                         std::to_string(options.aniso) + ")");
+        throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
+                                                 std::to_string(options.aniso));
     if (options.referenceMaxSamples < 1 || options.referenceMaxSamples > 4096)
-        throw InputError("--reference-samples must be in [1, 4096]");
+        throw InputError::parameter("referenceMaxSamples",
+                                    "must be in [1, 4096], got " + std::to_string(options.referenceMaxSamples));
     if (!isPowerOfTwo(pattern.exampleSize()))
         throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
                          std::to_string(pattern.exampleSize()));

@@ -1,7 +1,6 @@
 #include "stochtex/pattern/json_reader.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "stochtex/core/error.h"
 
@@ -22,12 +21,6 @@ std::string describe(const nlohmann::json& v) {
     std::string s = v.dump();
     if (s.size() > 40) s = s.substr(0, 37) + "...";
     return s;
-}
-
-std::string formatNumber(double v) {
-    std::ostringstream os;
-    os << v;
-    return os.str();
 }
 }  // namespace
 
@@ -94,7 +87,7 @@ double JsonReader::number(double min, double max) const {
     const double v = value_->get<double>();
     if (!std::isfinite(v)) fail("must be finite");
     if (v < min || v > max)
-        fail("must be in [" + formatNumber(min) + ", " + formatNumber(max) + "] (got " + formatNumber(v) + ")");
+        fail("must be in [" + formatValue(min) + ", " + formatValue(max) + "], got " + formatValue(v));
     return v;
 }
 
@@ -107,7 +100,7 @@ int JsonReader::integer(int min, int max) const {
     if (!value_->is_number_integer()) fail("expected an integer, got " + describe(*value_));
     const long long v = value_->get<long long>();
     if (v < min || v > max)
-        fail("must be in [" + std::to_string(min) + ", " + std::to_string(max) + "] (got " + std::to_string(v) + ")");
+        fail("must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " + std::to_string(v));
     return int(v);
 }
 

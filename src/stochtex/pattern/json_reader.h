@@ -1,13 +1,15 @@
 #pragma once
 // Reads a JSON document while remembering where it is, so every validation
 // error names the source and the JSON pointer of the offending value, e.g.
-//   camouflage.json: /noise_x/components/0/frequency: must be > 0 (got -3)
+//   camouflage.json: /noise_x/components/0/frequency: must be in [0, 10000], got -3
 #include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "stochtex/core/error.h"
 
 namespace stochtex {
 
@@ -23,6 +25,20 @@ public:
     const std::string& source() const { return source_; }
 
     [[noreturn]] void fail(const std::string& problem) const;
+
+    // Runs a library check on values read from this object. A parameter error
+    // it raises is re-raised at this object's member of the same name (at the
+    // object itself if it has none), e.g.
+    //   pattern.json: /size: size must be at most 67108864 pixels, got 10000x10000
+    template <class Check>
+    void check(Check&& libraryCheck) const {
+        try {
+            libraryCheck();
+        } catch (const InputError& e) {
+            if (e.parameter().empty()) throw;
+            (has(e.parameter()) ? at(e.parameter()) : *this).fail(e.what());
+        }
+    }
 
     bool has(const std::string& key) const;
     JsonReader at(const std::string& key) const;  // required member

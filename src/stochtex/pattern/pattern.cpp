@@ -43,17 +43,18 @@ Rgb Pattern::evaluate(double u, double v) const {
     return colormap_.sample(n[0], n[1]);
 }
 
-void validateView(const View& view, const std::string& what) {
+void validateView(const View& view) {
+    const std::string size = std::to_string(view.width) + "x" + std::to_string(view.height);
     if (view.width < 1 || view.height < 1 || view.width > kMaxOutputSide || view.height > kMaxOutputSide)
-        throw InputError(what + ": output size " + std::to_string(view.width) + "x" + std::to_string(view.height) +
-                         " out of range (1.." + std::to_string(kMaxOutputSide) + " per side)");
+        throw InputError::parameter("size", "must be in [1, " + std::to_string(kMaxOutputSide) + "] per side, got " + size);
     if ((long long)view.width * view.height > kMaxOutputPixels)
-        throw InputError(what + ": output has more than " + std::to_string(kMaxOutputPixels) + " pixels");
+        throw InputError::parameter("size", "must be at most " + std::to_string(kMaxOutputPixels) + " pixels, got " + size);
     if (!(view.scale > 0) || !std::isfinite(view.scale) || view.scale > 1e6)
-        throw InputError(what + ": scale must be a finite number in (0, 1e6]");
+        throw InputError::parameter("scale", "must be a finite number in (0, 1e6], got " + formatValue(view.scale));
     if (!std::isfinite(view.offsetU) || !std::isfinite(view.offsetV) || std::abs(view.offsetU) > 1e9 ||
         std::abs(view.offsetV) > 1e9)
-        throw InputError(what + ": offset must be finite and at most 1e9 texels");
+        throw InputError::parameter("offset", "must be finite and at most 1e9 texels, got " + formatValue(view.offsetU) +
+                                                  "," + formatValue(view.offsetV));
 }
 
 // Walks the view's pixels row-parallel. Neighbouring pixels on a scanline
@@ -85,7 +86,7 @@ void Pattern::forEachPixel(const View& view, PixelFn&& fn) const {
 }
 
 Image Pattern::render(const View& view) const {
-    validateView(view, "render");
+    validateView(view);
     Image out(view.width, view.height, 3, Image::Uninitialized{});
     forEachPixel(view, [&](int px, int py, const PixelTiles& t, float fu) {
         const float nx = examples_[0]->toOutput(noises_[0].blend(t.stencil, t.tiles[0], fu));
@@ -100,7 +101,7 @@ Image Pattern::render(const View& view) const {
 }
 
 Image Pattern::renderNoise(int axis, const View& view) const {
-    validateView(view, "render");
+    validateView(view);
     Image out(view.width, view.height, 1, Image::Uninitialized{});
     const auto& noise = noises_[size_t(axis)];
     const auto& example = *examples_[size_t(axis)];

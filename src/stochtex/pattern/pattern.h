@@ -58,7 +58,8 @@ private:
     double density_;
 };
 
-// Checks a view against the output caps; InputError naming `what` otherwise.
-void validateView(const View& view, const std::string& what);
+// Checks a view against the output caps; InputError::parameter naming size,
+// scale or offset otherwise.
+void validateView(const View& view);
 
 }  // namespace stochtex

@@ -7,6 +7,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/pattern.h"
 
 namespace stochtex {
 namespace fs = std::filesystem;
@@ -192,11 +193,10 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
         } else {
             spec.width = spec.height = size->integer(1, kMaxOutputSide);
         }
-        if ((long long)spec.width * spec.height > kMaxOutputPixels)
-            size->fail("more than " + std::to_string(kMaxOutputPixels) + " pixels");
     }
     spec.scale = r.number("scale", 1.0, 1e-6, 1e6);
-    if (spec.scale <= 0) r.at("scale").fail("must be > 0");
+    // The output caps (pixel count) are the renderer's: the pattern's own view must pass them.
+    r.check([&] { validateView(View{spec.width, spec.height, spec.scale}); });
     spec.gridDensity = r.number("grid_density", spec.gridDensity, 1e-3, 1e3);
 
     spec.noise[0] = parseNoiseSpec(r.at("noise_x"), baseDir);

@@ -11,12 +11,13 @@ namespace stochtex {
 
 void validateZoomParams(const ZoomParams& p) {
     if (p.layers < 1 || p.layers > 1024)
-        throw InputError("--layers: the number of layers n must be in [1, 1024] (got " + std::to_string(p.layers) + ")");
+        throw InputError::parameter("layers", "(n) must be in [1, 1024], got " + std::to_string(p.layers));
     if (!(p.maxScale > 0) || !std::isfinite(p.maxScale) || p.maxScale > 1e3)
-        throw InputError("--max-scale: H must be a finite number in (0, 1000]");
+        throw InputError::parameter("maxScale", "(H) must be a finite number in (0, 1000], got " + formatValue(p.maxScale));
     if (!(p.envelopeSigma > 0) || !std::isfinite(p.envelopeSigma))
-        throw InputError("--envelope-sigma must be a finite number > 0");
-    if (!std::isfinite(p.time) || std::abs(p.time) > 1e9) throw InputError("--time must be finite (|t| ≤ 1e9)");
+        throw InputError::parameter("envelopeSigma", "(s) must be a finite number > 0, got " + formatValue(p.envelopeSigma));
+    if (!std::isfinite(p.time) || std::abs(p.time) > 1e9)
+        throw InputError::parameter("time", "(t) must be finite with |t| ≤ 1e9, got " + formatValue(p.time));
 }
 
 namespace {
@@ -195,7 +196,7 @@ Image renderZoom(const LatticeTexture& f, const ZoomParams& p, const ZoomRegion&
 ZoomScaling parseZoomScaling(const std::string& s) {
     if (s == "sliding") return ZoomScaling::Sliding;
     if (s == "exponential" || s == "fixed") return ZoomScaling::Exponential;
-    throw InputError("--scaling: unknown \"" + s + "\" (expected sliding or exponential)");
+    throw InputError::parameter("scaling", "must be sliding or exponential, got \"" + s + "\"");
 }
 
 ZoomOffsets parseZoomOffsets(const std::string& s) {
@@ -203,13 +204,13 @@ ZoomOffsets parseZoomOffsets(const std::string& s) {
     if (s == "simple") return ZoomOffsets::Simple;
     if (s == "hashed") return ZoomOffsets::Hashed;
     if (s == "sin-hash") return ZoomOffsets::SinHash;
-    throw InputError("--offsets: unknown \"" + s + "\" (expected none, simple, hashed or sin-hash)");
+    throw InputError::parameter("offsets", "must be none, simple, hashed or sin-hash, got \"" + s + "\"");
 }
 
 LatticeInterpolation parseLatticeInterpolation(const std::string& s) {
     if (s == "nearest") return LatticeInterpolation::Nearest;
     if (s == "linear") return LatticeInterpolation::Linear;
-    throw InputError("--interpolation: unknown \"" + s + "\" (expected nearest or linear)");
+    throw InputError::parameter("interpolation", "must be nearest or linear, got \"" + s + "\"");
 }
 
 }  // namespace stochtex
