@@ -53,31 +53,17 @@ using Renderbuffer = Handle<detail::deleteRenderbuffer>;
 using VertexArray = Handle<detail::deleteVertexArray>;
 using Program = Handle<detail::deleteProgram>;
 
-// New objects (glGen*/glCreateProgram made them; nothing is bound).
-inline Texture newTexture() {
+// New objects from a glGen* function (nothing is bound).
+template <class H>
+H generate(void (*gen)(GLsizei, GLuint*)) {
     GLuint id = 0;
-    glGenTextures(1, &id);
-    return Texture(id);
+    gen(1, &id);
+    return H(id);
 }
-inline Buffer newBuffer() {
-    GLuint id = 0;
-    glGenBuffers(1, &id);
-    return Buffer(id);
-}
-inline Framebuffer newFramebuffer() {
-    GLuint id = 0;
-    glGenFramebuffers(1, &id);
-    return Framebuffer(id);
-}
-inline Renderbuffer newRenderbuffer() {
-    GLuint id = 0;
-    glGenRenderbuffers(1, &id);
-    return Renderbuffer(id);
-}
-inline VertexArray newVertexArray() {
-    GLuint id = 0;
-    glGenVertexArrays(1, &id);
-    return VertexArray(id);
-}
+inline Texture newTexture() { return generate<Texture>(glGenTextures); }
+inline Buffer newBuffer() { return generate<Buffer>(glGenBuffers); }
+inline Framebuffer newFramebuffer() { return generate<Framebuffer>(glGenFramebuffers); }
+inline Renderbuffer newRenderbuffer() { return generate<Renderbuffer>(glGenRenderbuffers); }
+inline VertexArray newVertexArray() { return generate<VertexArray>(glGenVertexArrays); }
 
 }  // namespace stochtex::gl
