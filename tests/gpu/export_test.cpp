@@ -70,7 +70,7 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale)
         return t;
     };
     const GLuint sx = pyramid(m["stats"]["x"]), sy = pyramid(m["stats"]["y"]);
-    const bool shared = m["shared_offsets"];
+    const bool shared = m["covariance"];
     const GLuint cov = shared ? pyramid(m["stats"]["covariance"]) : sx;
     const Image atlas = readImage((dir / m["table"]["file"].get<std::string>()).string());
     const int tw = m["table"]["width"], th = m["table"]["height"], tl = m["table"]["levels"];
@@ -96,7 +96,7 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale)
     glUniform1ui(loc("uSeedY"), m["seeds"][1].get<unsigned>());
     glUniform1f(loc("uDensity"), m["grid_density"].get<float>());
     glUniform1f(loc("uInvW"), 1.0f / m["example_size"].get<float>());
-    glUniform1i(loc("uShared"), shared);
+    glUniform1i(loc("uHasCovariance"), shared);
     glUniform1i(loc("uDeliotHeitz"), 0);
     for (const char* k : {"x", "y", "cov"}) {
         const std::vector<float> v = m["average_moments"][k].get<std::vector<float>>();

@@ -238,3 +238,47 @@ TEST(FilteredPattern, IdenticalForAnyThreadCountAndEstimatorInstance) {
     const Image m1 = FilteredPattern(other, options(FilterMode::Smooth, 4)).render(cam);
     EXPECT_NE(m1.data(), all.data());
 }
+
+namespace stochtex {
+namespace {
+
+// The response stage: the prefiltered colormap reads no covariance, so a
+// shared-offset pair (phasor-stripes: a quadrature pair) builds no
+// covariance pyramid; the named filters map to their statistics sources.
+TEST(Response, CovarianceIsBuiltOnlyWhenTheResponseReadsIt) {
+    const Pattern p = Pattern::build(loadPreset("phasor-stripes"));
+    ASSERT_TRUE(p.sharedOffsets());
+    FilterOptions o;
+    o.mode = FilterMode::Smooth;
+    const FilteredPattern f(p, o);
+    EXPECT_FALSE(f.response().needsCovariance());
+    EXPECT_EQ(f.estimator().covariancePyramid(), nullptr);
+    // The same statistics with the covariance pyramid give the same colour:
+    // the response does not read it.
+    const FootprintEstimator withCov(p.noises(), true, p.gridDensity());
+    ASSERT_NE(withCov.covariancePyramid(), nullptr);
+    Jacobian j;
+    j.dudx = j.dvdy = 6.0 / p.exampleSize();
+    const Footprint fp = makeFootprint(0.3, 0.7, j, p.exampleSize(), withCov.maxLod(), 1);
+    const FootprintStats a = f.estimator().estimate(fp), b = withCov.estimate(fp);
+    // Without the pyramid only the between-texel part of ĉov remains.
+    EXPECT_GT(std::abs(b.cov - a.cov), 1e-6f);
+    EXPECT_EQ(a.mean, b.mean);
+    EXPECT_EQ(a.varX, b.varX);
+    EXPECT_EQ(a.varY, b.varY);
+    EXPECT_EQ(f.response().filtered(a), f.response().filtered(b));
+}
+
+TEST(Response, NamedFiltersAreASourceAndAResponse) {
+    EXPECT_EQ(statisticsSource(FilterMode::None), StatisticsSource::Point);
+    EXPECT_EQ(statisticsSource(FilterMode::Paper), StatisticsSource::Estimators);
+    EXPECT_EQ(statisticsSource(FilterMode::Smooth), StatisticsSource::Estimators);
+    EXPECT_EQ(statisticsSource(FilterMode::Exact), StatisticsSource::Exact);
+    EXPECT_EQ(statisticsSource(FilterMode::Reference), StatisticsSource::Reference);
+    EXPECT_EQ(prefilterMode(FilterMode::Paper), PrefilterMode::Paper);
+    EXPECT_EQ(prefilterMode(FilterMode::Smooth), PrefilterMode::Smooth);
+    EXPECT_EQ(prefilterMode(FilterMode::Exact), PrefilterMode::Smooth);
+}
+
+}  // namespace
+}  // namespace stochtex

@@ -46,7 +46,7 @@ Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
 | uniform | type | content |
 | --- | --- | --- |
 | `uStatsX`, `uStatsY` | `sampler2D`, RG32F, mip levels 0…L | level l = `stats_x_l.exr` (R = mean, G = variance) |
-| `uCovariance` | `sampler2D`, RG32F, mip levels | `covariance_l.exr` if `shared_offsets`, else bind `uStatsX` |
+| `uCovariance` | `sampler2D`, RG32F, mip levels | `covariance_l.exr` if `covariance`, else bind `uStatsX` |
 | `uTable` | `sampler2DArray`, RGBA16F or RGBA32F (`table.precision`), `levels²` layers of `width × height` | layer k = rows `[k·height, (k+1)·height)` of `table.exr`; texture row j = that layer's row j |
 
 All are read with `texelFetch` (no filtering needed); set `GL_TEXTURE_MAX_LEVEL`
@@ -55,8 +55,8 @@ to L so the pyramids are mipmap-complete.
 ## Uniforms (from `manifest.json`)
 
 `uMeanX`, `uMeanY` (`means`), `uSeedX`, `uSeedY` (`seeds`, unsigned),
-`uDensity` (`grid_density`), `uInvW` (1 / `example_size`), `uShared`
-(`shared_offsets`), `uDeliotHeitz` (false), `uAverageX/Y/Cov[16]`
+`uDensity` (`grid_density`), `uInvW` (1 / `example_size`), `uHasCovariance`
+(`covariance`: the response reads the covariance of a shared-offset pair), `uDeliotHeitz` (false), `uAverageX/Y/Cov[16]`
 (`average_moments`), `uMaxLod` (`levels` − 1), `uAniso` (`aniso`),
 `uSmooth` (`filter` == "smooth"), `uTableLevels` (`table.levels`).
 
@@ -90,7 +90,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     m["means"] = {pattern.example(0).mean(), pattern.example(1).mean()};
     m["seeds"] = {pattern.noises()[0].offsetSeed(), pattern.noises()[1].offsetSeed()};
     m["grid_density"] = pattern.gridDensity();
-    m["shared_offsets"] = est.covariancePyramid() != nullptr;
+    m["covariance"] = est.covariancePyramid() != nullptr;
     m["aniso"] = options.aniso;
     nlohmann::json averages = {{"x", nlohmann::json::array()}, {"y", nlohmann::json::array()}, {"cov", nlohmann::json::array()}};
     for (int l = 0; l <= est.maxLod(); ++l) {

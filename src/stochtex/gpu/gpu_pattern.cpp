@@ -165,7 +165,7 @@ void GpuPattern::bind(unsigned program) const {
         bindTexture(6, GL_TEXTURE_2D, m.stats[1].id(), "uStatsY");
         bindTexture(7, GL_TEXTURE_2D, m.shared ? m.covariance.id() : m.stats[0].id(), "uCovariance");
         bindTexture(8, GL_TEXTURE_2D_ARRAY, m.table.id(), "uTable");
-        glUniform1i(uniform("uShared"), m.shared);
+        glUniform1i(uniform("uHasCovariance"), m.shared);
         glUniform1i(uniform("uDeliotHeitz"), m.options.estimator == VarianceEstimator::DeliotHeitz);
         glUniform1fv(uniform("uAverageX"), GLsizei(m.average[0].size()), m.average[0].data());
         glUniform1fv(uniform("uAverageY"), GLsizei(m.average[1].size()), m.average[1].data());

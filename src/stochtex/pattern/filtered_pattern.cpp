@@ -35,8 +35,22 @@ FilterMode parseFilterMode(const std::string& name) {
     throw InputError::parameter("mode", "must be none, paper, smooth, exact or reference, got \"" + name + "\"");
 }
 
+StatisticsSource statisticsSource(FilterMode mode) {
+    switch (mode) {
+        case FilterMode::None: return StatisticsSource::Point;
+        case FilterMode::Paper:
+        case FilterMode::Smooth: return StatisticsSource::Estimators;
+        case FilterMode::Exact: return StatisticsSource::Exact;
+        case FilterMode::Reference: return StatisticsSource::Reference;
+    }
+    return StatisticsSource::Point;
+}
+
+PrefilterMode prefilterMode(FilterMode mode) { return mode == FilterMode::Paper ? PrefilterMode::Paper : PrefilterMode::Smooth; }
+
 FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& options)
-    : pattern_(pattern), options_(options), colormap_(foldInverseTransforms(pattern)) {
+    : pattern_(pattern), options_(options), source_(statisticsSource(options.mode)),
+      colormap_(foldInverseTransforms(pattern)) {
     if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
         throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
                                                  std::to_string(options.aniso));
@@ -52,36 +66,35 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
                                          pattern.example(1).toOutput(pattern.example(1).mean()));
         return;
     }
-    estimator_ = std::make_unique<FootprintEstimator>(pattern.noises(), pattern.sharedOffsets(), pattern.gridDensity(),
-                                                      options.pack8);
-    table_ = std::make_unique<PrefilteredColormap>(
-        colormap_, options.mode == FilterMode::Paper ? PrefilterMode::Paper : PrefilterMode::Smooth);
+    response_ = std::make_unique<PrefilteredColormapResponse>(colormap_, prefilterMode(options.mode));
+    // The covariance pyramid only for a shared-offset pair whose response reads it.
+    estimator_ = std::make_unique<FootprintEstimator>(
+        pattern.noises(), pattern.sharedOffsets() && response_->needsCovariance(), pattern.gridDensity(), options.pack8);
     // Sky: the whole example in one footprint (top MIP level).
     const auto top = estimator_->texel(0.0, 0.0, estimator_->maxLod(), options_.estimator);
-    sky_ = table_->sample(top.mean[0], top.mean[1], std::sqrt(top.var[0]), std::sqrt(top.var[1]));
+    FootprintStats whole;
+    whole.mean = top.mean;
+    whole.varX = top.var[0];
+    whole.varY = top.var[1];
+    whole.cov = top.cov;
+    sky_ = response_->filtered(whole);
 }
 
 Footprint FilteredPattern::footprint(double u, double v, const Jacobian& j) const {
     return makeFootprint(u, v, j, estimator_->exampleSize(), estimator_->maxLod(), options_.aniso);
 }
 
-Rgb FilteredPattern::shade(const Footprint& f) const {
-    const FootprintStats s = estimator_->estimate(f, options_.estimator);
-    return table_->sample(s.mean[0], s.mean[1], s.sigmaX(), s.sigmaY());
-}
+Rgb FilteredPattern::shade(const Footprint& f) const { return response_->filtered(estimator_->estimate(f, options_.estimator)); }
 
 Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j) const {
     if (!onPlane) return sky_;
-    switch (options_.mode) {
-        case FilterMode::None: return pattern_.evaluate(u, v);
-        case FilterMode::Paper:
-        case FilterMode::Smooth: return shade(footprint(u, v, j));
-        case FilterMode::Exact: {
-            const FootprintStats s =
-                bruteForceStats(pattern_.noises(), pattern_.gridDensity(), u, v, j, options_.referenceMaxSamples);
-            return table_->sample(s.mean[0], s.mean[1], s.sigmaX(), s.sigmaY());
-        }
-        case FilterMode::Reference: {
+    switch (source_) {
+        case StatisticsSource::Point: return pattern_.evaluate(u, v);
+        case StatisticsSource::Estimators: return shade(footprint(u, v, j));
+        case StatisticsSource::Exact:
+            return response_->filtered(
+                bruteForceStats(pattern_.noises(), pattern_.gridDensity(), u, v, j, options_.referenceMaxSamples));
+        case StatisticsSource::Reference: {
             const int n = bruteForceSamples(j, pattern_.exampleSize(), options_.referenceMaxSamples);
             double acc[3] = {0, 0, 0};
             for (int b = 0; b < n; ++b)
@@ -99,12 +112,11 @@ Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j) 
 
 Image FilteredPattern::render(const Camera& camera) const {
     validateCamera(camera);
-    if (options_.mode == FilterMode::None && camera.kind == Camera::Kind::Zoom) return pattern_.render(camera.view);
+    if (source_ == StatisticsSource::Point && camera.kind == Camera::Kind::Zoom) return pattern_.render(camera.view);
     Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
     const int w = pattern_.exampleSize();
     // A zoom has one Jacobian for the whole image: build its footprint once.
-    const bool oneFootprint = camera.kind == Camera::Kind::Zoom &&
-                              (options_.mode == FilterMode::Paper || options_.mode == FilterMode::Smooth);
+    const bool oneFootprint = camera.kind == Camera::Kind::Zoom && source_ == StatisticsSource::Estimators;
     Footprint shape;
     if (oneFootprint) {
         double u = 0, v = 0;

@@ -23,10 +23,16 @@
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
+#include "stochtex/pattern/response.h"
 
 namespace stochtex {
 
+// The named filters of the CLI and the papers: each is a statistics source
+// and a response (pattern/response.h).
 enum class FilterMode { None, Paper, Smooth, Exact, Reference };
+StatisticsSource statisticsSource(FilterMode mode);
+// The prefiltered table's mode (None and Reference build no table).
+PrefilterMode prefilterMode(FilterMode mode);
 
 struct FilterOptions {
     FilterMode mode = FilterMode::Smooth;
@@ -41,9 +47,11 @@ public:
     FilteredPattern(const Pattern& pattern, const FilterOptions& options);
 
     const FilterOptions& options() const { return options_; }
+    StatisticsSource source() const { return source_; }
     // Not built for FilterMode::None.
     const FootprintEstimator& estimator() const { return *estimator_; }
-    const PrefilteredColormap& table() const { return *table_; }
+    const Response& response() const { return *response_; }
+    const PrefilteredColormap& table() const { return response_->table(); }
     // H' (T⁻¹ folded in) that the prefiltered table was built from.
     const ColormapTable& blendingSpaceColormap() const { return colormap_; }
 
@@ -55,12 +63,13 @@ public:
 
 private:
     Footprint footprint(double u, double v, const Jacobian& j) const;
-    Rgb shade(const Footprint& f) const;  // paper / smooth
+    Rgb shade(const Footprint& f) const;  // estimators
     const Pattern& pattern_;
     FilterOptions options_;
+    StatisticsSource source_;
     std::unique_ptr<FootprintEstimator> estimator_;
     ColormapTable colormap_;
-    std::unique_ptr<PrefilteredColormap> table_;
+    std::unique_ptr<PrefilteredColormapResponse> response_;
     Rgb sky_{};
 };
 

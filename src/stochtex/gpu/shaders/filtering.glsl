@@ -7,7 +7,7 @@
 // CPU.
 uniform sampler2D uStatsX, uStatsY, uCovariance;  // RG32F mip levels: (E_l, V_l) / (E_l, C_l)
 uniform sampler2DArray uTable;                     // RGBA32F, layer kx·levels + ky
-uniform bool uShared;          // shared offsets: covariances from uCovariance
+uniform bool uHasCovariance;   // covariances from uCovariance (shared offsets and a response that reads them)
 uniform bool uDeliotHeitz;     // one constant variance per level
 uniform float uAverageX[16], uAverageY[16], uAverageCov[16];
 uniform int uMaxLod;
@@ -31,13 +31,13 @@ void texelStats(vec2 uv, int level, out vec4 stats, out float cov) {
         my[i] = ey.r;
         vy[i] = ey.g;
         // The covariance is fetched only with shared offsets (else it is 0).
-        c[i] = uShared ? periodicBilinearLod(uCovariance, px, level).g : 0.0;
+        c[i] = uHasCovariance ? periodicBilinearLod(uCovariance, px, level).g : 0.0;
     }
     stats = vec4(blendMean(uMeanX, s.w, mx), blendMean(uMeanY, s.w, my), blendVariance(s.w, vx), blendVariance(s.w, vy));
-    cov = uShared ? blendVariance(s.w, c) : 0.0;
+    cov = uHasCovariance ? blendVariance(s.w, c) : 0.0;
     if (uDeliotHeitz) {
         stats.zw = vec2(uAverageX[level], uAverageY[level]);
-        cov = uShared ? uAverageCov[level] : 0.0;
+        cov = uHasCovariance ? uAverageCov[level] : 0.0;
     }
 }
 
