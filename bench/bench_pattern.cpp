@@ -128,9 +128,10 @@ void BM_BuildPyramids512(benchmark::State& state) {
         s.components.push_back({SpectrumShape::LowPass, 8, 2, 0, 1});
         noises[a] = TilingBlendingNoise(std::make_shared<const NoiseExample>(synthesizeExample(s)), a);
     }
+    const TiledField field({noises[0], noises[1]}, kDefaultGridDensity, OffsetSharing::Independent);
     size_t bytes = 0;
     for (auto _ : state) {
-        FootprintEstimator e(noises, false, kDefaultGridDensity);
+        FootprintEstimator e(field, false);
         bytes = e.bytes();
         benchmark::DoNotOptimize(&e);
     }
@@ -157,7 +158,7 @@ BENCHMARK(BM_BuildPrefilteredTable)->ArgName("mode")->Arg(1)->Arg(2)->Unit(bench
 // max |Δμ̂_x|, |Δσ̂_x| between float and 8-bit pyramids).
 void BM_Pack8Loss(benchmark::State& state) {
     const Pattern& p = camouflage();
-    const FootprintEstimator full(p.noises(), false, p.gridDensity()), packed(p.noises(), false, p.gridDensity(), true);
+    const FootprintEstimator full(p.tiledField(), false), packed(p.tiledField(), false, true);
     double dmu = 0, dsigma = 0, maxMu = 0, maxSigma = 0;
     const int count = 2000;
     for (auto _ : state) {

@@ -16,12 +16,14 @@ namespace {
 
 using test::example;
 
-std::array<TilingBlendingNoise, 2> noisePair(const Image& ex, const Image& ey, uint32_t sx, uint32_t sy) {
-    return {TilingBlendingNoise(std::make_shared<const NoiseExample>(ex), sx),
-            TilingBlendingNoise(std::make_shared<const NoiseExample>(ey), sy)};
-}
-
 const double kDensity = kDefaultGridDensity;
+
+// Equal seeds declare the pair Shared (the covariance tests need it).
+TiledField noisePair(const Image& ex, const Image& ey, uint32_t sx, uint32_t sy) {
+    return TiledField({TilingBlendingNoise(std::make_shared<const NoiseExample>(ex), sx),
+                       TilingBlendingNoise(std::make_shared<const NoiseExample>(ey), sy)},
+                      kDensity, sx == sy ? OffsetSharing::Shared : OffsetSharing::Independent);
+}
 
 }  // namespace
 
@@ -85,20 +87,34 @@ TEST(Footprint, IsotropicAndAnisotropicProbesFollowTheOpenGlRule) {
 TEST(FootprintEstimator, LevelZeroTexelIsTheUnfilteredNoise) {
     const auto n = noisePair(example(SpectrumShape::LowPass, 8, 0, 0, 1, 128),
                              example(SpectrumShape::Ring, 12, 3, 0, 2, 128), 5, 6);
-    const FootprintEstimator est(n, false, kDensity);
+    const FootprintEstimator est(n, false);
     for (int i = 0; i < 50; ++i) {
         const double u = 0.37 * i - 3.1, v = 0.11 * i + 0.7;
         const auto t = est.texel(u, v, 0, VarianceEstimator::Paper);
-        EXPECT_EQ(t.mean[0], n[0].blend(triangleGrid(u, v), periodFraction(u), periodFraction(v)));
-        EXPECT_EQ(t.mean[1], n[1].blend(triangleGrid(u, v), periodFraction(u), periodFraction(v)));
+        EXPECT_EQ(t.mean[0], n.channel(0).blend(triangleGrid(u, v), periodFraction(u), periodFraction(v)));
+        EXPECT_EQ(t.mean[1], n.channel(1).blend(triangleGrid(u, v), periodFraction(u), periodFraction(v)));
         EXPECT_EQ(t.var[0], 0.0f);
     }
+}
+
+TEST(TiledField, SharedOffsetsNeedOneSeedAndCovarianceNeedsSharedOffsets) {
+    const Image e = example(SpectrumShape::LowPass, 6, 0, 0, 4, 64);
+    const auto noise = [&](uint32_t seed) { return TilingBlendingNoise(std::make_shared<const NoiseExample>(e), seed); };
+    EXPECT_EQ(test::inputErrorOf([&] { TiledField({noise(1), noise(2)}, kDensity, OffsetSharing::Shared); }).parameter(),
+              "offsets");
+    const TiledField independent({noise(1), noise(1)}, kDensity, OffsetSharing::Independent);
+    EXPECT_FALSE(independent.shared());
+    EXPECT_EQ(test::inputErrorOf([&] { FootprintEstimator(independent, true); }).parameter(), "covariance");
+    EXPECT_EQ(test::inputErrorOf([&] { TiledField({}, kDensity, OffsetSharing::Independent); }).parameter(), "channels");
+    const TiledField three({noise(1), noise(1), noise(1)}, kDensity, OffsetSharing::Shared);
+    EXPECT_EQ(three.channelCount(), 3);
+    EXPECT_EQ(test::inputErrorOf([&] { FootprintEstimator(three, true); }).parameter(), "field");
 }
 
 TEST(FootprintEstimator, CovarianceOfANoiseWithItselfIsItsVariance) {
     const Image e = example(SpectrumShape::LowPass, 6, 0, 0, 4, 128);
     const auto n = noisePair(e, e, 9, 9);  // E' = E, shared offsets
-    const FootprintEstimator est(n, true, kDensity);
+    const FootprintEstimator est(n, true);
     for (int i = 0; i < 40; ++i) {
         Jacobian j;
         j.dudx = (1 + i) / 128.0;
@@ -117,8 +133,8 @@ struct Errors {
     double mu = 0, sigma = 0, sigmaDh = 0;
 };
 
-static Errors measure(const std::array<TilingBlendingNoise, 2>& n, int size, bool aniso, int count) {
-    const FootprintEstimator est(n, false, kDensity);
+static Errors measure(const TiledField& n, int size, bool aniso, int count) {
+    const FootprintEstimator est(n, false);
     const int w = est.exampleSize();
     Errors e;
     for (int i = 0; i < count; ++i) {
@@ -134,7 +150,7 @@ static Errors measure(const std::array<TilingBlendingNoise, 2>& n, int size, boo
         } else {
             j.dudx = j.dvdy = double(size) / w;
         }
-        const FootprintStats exact = bruteForceStats(n, kDensity, u, v, j, 256);
+        const FootprintStats exact = bruteForceStats(n, u, v, j, 256);
         const Footprint f = makeFootprint(u, v, j, w, est.maxLod(), aniso ? 16 : 1);
         const FootprintStats paper = est.estimate(f), dh = est.estimate(f, VarianceEstimator::DeliotHeitz);
         e.mu += std::abs(paper.mean[0] - exact.mean[0]);
@@ -162,7 +178,7 @@ struct Bound {
 
 // Asserts the bounds for every footprint size and footprint shape, and that
 // per-texel variances (paper) beat one constant per LOD (Deliot–Heitz).
-static void checkBounds(const std::array<TilingBlendingNoise, 2>& n, std::initializer_list<Bound> bounds,
+static void checkBounds(const TiledField& n, std::initializer_list<Bound> bounds,
                         std::initializer_list<bool> shapes, int count) {
     double paperSigma = 0, dhSigma = 0;
     for (const Bound& b : bounds)
@@ -193,7 +209,7 @@ TEST(FootprintEstimator, HighFrequencyAnisotropicNoiseErrorsAreBounded) {
 TEST(FootprintEstimator, EightBitPackingLossIsSmall) {
     const auto n = noisePair(example(SpectrumShape::LowPass, 8, 0, 0, 31, 256),
                              example(SpectrumShape::Ring, 20, 3, 0, 32, 256), 3, 4);
-    const FootprintEstimator full(n, false, kDensity), packed(n, false, kDensity, true);
+    const FootprintEstimator full(n, false), packed(n, false, true);
     double dmu = 0, dsigma = 0, maxMu = 0;
     const int count = 2000;
     for (int i = 0; i < count; ++i) {

@@ -255,7 +255,7 @@ TEST(Response, CovarianceIsBuiltOnlyWhenTheResponseReadsIt) {
     EXPECT_EQ(f.estimator().covariancePyramid(), nullptr);
     // The same statistics with the covariance pyramid give the same colour:
     // the response does not read it.
-    const FootprintEstimator withCov(p.noises(), true, p.gridDensity());
+    const FootprintEstimator withCov(p.tiledField(), true);
     ASSERT_NE(withCov.covariancePyramid(), nullptr);
     Jacobian j;
     j.dudx = j.dvdy = 6.0 / p.exampleSize();

@@ -26,7 +26,8 @@ std::vector<EstimatorError> measureEstimatorErrors(const std::array<TilingBlendi
     const int w = noises[0].example().size();
     if (!isPowerOfTwo(w)) throw InputError("estimator errors: examples must be power-of-two sized");
     validateEstimatorErrorOptions(options, w);
-    const FootprintEstimator estimator(noises, false, gridDensity);
+    const TiledField field({noises[0], noises[1]}, gridDensity, OffsetSharing::Independent);
+    const FootprintEstimator estimator(field, false);
     // Global statistics: the top pyramid level is the whole example.
     std::array<double, 2> globalMean{}, globalSigma{};
     {
@@ -54,7 +55,7 @@ std::vector<EstimatorError> measureEstimatorErrors(const std::array<TilingBlendi
                 const UInt3 h = pcg3d({uint32_t(k), uint32_t(s), options.seed});
                 // Centres anywhere over 64 periods: every tile arrangement.
                 const double u = 64.0 * unitFloat(h.x), v = 64.0 * unitFloat(h.y);
-                const FootprintStats exact = bruteForceStats(noises, gridDensity, u, v, j, options.maxSamplesPerAxis);
+                const FootprintStats exact = bruteForceStats(field, u, v, j, options.maxSamplesPerAxis);
                 const Footprint f = makeFootprint(u, v, j, w, estimator.maxLod(), 1);
                 const FootprintStats paper = estimator.estimate(f, VarianceEstimator::Paper);
                 const FootprintStats dh = estimator.estimate(f, VarianceEstimator::DeliotHeitz);

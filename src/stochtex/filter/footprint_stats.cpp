@@ -6,15 +6,21 @@
 #include <limits>
 #include <stdexcept>
 
+#include "stochtex/core/error.h"
 #include "stochtex/kernel/moments.h"
 
 namespace stochtex {
 
 static std::atomic<uint64_t> nextEstimatorId{1};
 
-FootprintEstimator::FootprintEstimator(const std::array<TilingBlendingNoise, 2>& noises, bool sharedOffsets,
-                                       double gridDensity, bool pack8)
-    : noises_(noises), density_(gridDensity), size_(noises[0].example().size()), id_(nextEstimatorId++) {
+FootprintEstimator::FootprintEstimator(const TiledField& field, bool covariance, bool pack8)
+    : density_(field.gridDensity()), size_(field.exampleSize()), id_(nextEstimatorId++) {
+    if (field.channelCount() != 2)
+        throw InputError::parameter("field", "must have 2 channels (N_x, N_y), got " + std::to_string(field.channelCount()));
+    if (covariance && !field.shared())
+        throw InputError::parameter("covariance", "needs a field with shared offsets (tiles of N_x and N_y independent)");
+    noises_ = {field.channel(0), field.channel(1)};
+    const bool sharedOffsets = covariance;
     for (size_t a = 0; a < 2; ++a) {
         pyramids_[a] = StatsPyramid(noises_[a].example().values());
         if (pack8) pyramids_[a] = pyramids_[a].quantized8();
@@ -152,9 +158,10 @@ int bruteForceSamples(const Jacobian& j, int exampleSize, int maxPerAxis) {
     return std::clamp(int(std::ceil(2.0 * side)), 8, std::max(8, maxPerAxis));
 }
 
-FootprintStats bruteForceStats(const std::array<TilingBlendingNoise, 2>& noises, double gridDensity, double u,
-                               double v, const Jacobian& j, int maxPerAxis) {
-    const int n = bruteForceSamples(j, noises[0].example().size(), maxPerAxis);
+FootprintStats bruteForceStats(const TiledField& field, double u, double v, const Jacobian& j, int maxPerAxis) {
+    const std::array<const TilingBlendingNoise*, 2> noises = {&field.channel(0), &field.channel(1)};
+    const double gridDensity = field.gridDensity();
+    const int n = bruteForceSamples(j, field.exampleSize(), maxPerAxis);
     double m[2] = {0, 0}, m2[2] = {0, 0}, mxy = 0;
     for (int b = 0; b < n; ++b)
         for (int a = 0; a < n; ++a) {
@@ -162,7 +169,7 @@ FootprintStats bruteForceStats(const std::array<TilingBlendingNoise, 2>& noises,
             const double su = u + s * j.dudx + t * j.dudy, sv = v + s * j.dvdx + t * j.dvdy;
             const BlendStencil st = triangleGrid(su, sv, gridDensity);
             const float fu = periodFraction(su), fv = periodFraction(sv);
-            const double x = noises[0].blend(st, fu, fv), y = noises[1].blend(st, fu, fv);
+            const double x = noises[0]->blend(st, fu, fv), y = noises[1]->blend(st, fu, fv);
             m[0] += x;
             m[1] += y;
             m2[0] += x * x;

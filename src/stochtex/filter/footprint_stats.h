@@ -18,7 +18,7 @@
 
 #include "stochtex/filter/footprint.h"
 #include "stochtex/filter/pyramid.h"
-#include "stochtex/noise/tiling_blending.h"
+#include "stochtex/noise/tiled_field.h"
 
 namespace stochtex {
 
@@ -37,12 +37,12 @@ enum class VarianceEstimator {
 
 class FootprintEstimator {
 public:
-    // noises: the two tiled noises (their examples must be power-of-two
-    // sized); sharedOffsets: both use the same tiles, so covariances are
-    // estimated from the C_l pyramid (otherwise they are 0).
+    // field: two channels (N_x, N_y) whose examples are power-of-two sized.
+    // covariance: estimate within-texel covariances from the C_l pyramid
+    // (eq. 16–17), which needs a Shared field (InputError `covariance`
+    // otherwise); without it they are 0 and the pyramid is not built.
     // pack8: store the mean/variance pyramids with the paper's 8-bit packing.
-    FootprintEstimator(const std::array<TilingBlendingNoise, 2>& noises, bool sharedOffsets, double gridDensity,
-                       bool pack8 = false);
+    FootprintEstimator(const TiledField& field, bool covariance, bool pack8 = false);
 
     int exampleSize() const { return size_; }
     int maxLod() const { return pyramids_[0].levels() - 1; }
@@ -82,8 +82,7 @@ namespace stochtex {
 // s, t ∈ [−½, ½], by dense sampling: an n×n grid of cell centres with
 // n = clamp(⌈2·(largest side in texels)⌉, 8, maxPerAxis) — two samples per
 // texel of the bilinearly interpolated noise. Values are in blending space.
-FootprintStats bruteForceStats(const std::array<TilingBlendingNoise, 2>& noises, double gridDensity, double u,
-                               double v, const Jacobian& j, int maxPerAxis = 512);
+FootprintStats bruteForceStats(const TiledField& field, double u, double v, const Jacobian& j, int maxPerAxis = 512);
 // Samples per axis bruteForceStats uses for this Jacobian.
 int bruteForceSamples(const Jacobian& j, int exampleSize, int maxPerAxis);
 }  // namespace stochtex

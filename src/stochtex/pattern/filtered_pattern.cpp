@@ -69,7 +69,7 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
     response_ = std::make_unique<PrefilteredColormapResponse>(colormap_, prefilterMode(options.mode));
     // The covariance pyramid only for a shared-offset pair whose response reads it.
     estimator_ = std::make_unique<FootprintEstimator>(
-        pattern.noises(), pattern.sharedOffsets() && response_->needsCovariance(), pattern.gridDensity(), options.pack8);
+        pattern.tiledField(), pattern.sharedOffsets() && response_->needsCovariance(), options.pack8);
     // Sky: the whole example in one footprint (top MIP level).
     const auto top = estimator_->texel(0.0, 0.0, estimator_->maxLod(), options_.estimator);
     FootprintStats whole;
@@ -93,7 +93,7 @@ Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j) 
         case StatisticsSource::Estimators: return shade(footprint(u, v, j));
         case StatisticsSource::Exact:
             return response_->filtered(
-                bruteForceStats(pattern_.noises(), pattern_.gridDensity(), u, v, j, options_.referenceMaxSamples));
+                bruteForceStats(pattern_.tiledField(), u, v, j, options_.referenceMaxSamples));
         case StatisticsSource::Reference: {
             const int n = bruteForceSamples(j, pattern_.exampleSize(), options_.referenceMaxSamples);
             double acc[3] = {0, 0, 0};

@@ -20,16 +20,18 @@ Pattern Pattern::build(const PatternSpec& spec) {
                          std::to_string(examples[1].size()) + "; both examples must have the same size");
     const uint32_t sx = deriveSeed(spec.seed, 1);
     const uint32_t sy = spec.offsets == OffsetMode::Shared ? sx : deriveSeed(spec.seed, 2);
-    return Pattern(std::move(examples), {sx, sy}, buildColormap(spec.colormap), spec.gridDensity);
+    return Pattern(std::move(examples), {sx, sy}, buildColormap(spec.colormap), spec.gridDensity,
+                   spec.offsets == OffsetMode::Shared ? OffsetSharing::Shared : OffsetSharing::Independent);
 }
 
 Pattern::Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> offsetSeeds, ColormapTable colormap,
-                 double gridDensity)
+                 double gridDensity, OffsetSharing sharing)
     : colormap_(std::move(colormap)), density_(gridDensity) {
     for (size_t a = 0; a < 2; ++a) {
         examples_[a] = std::make_shared<const NoiseExample>(std::move(examples[a]));
         noises_[a] = TilingBlendingNoise(examples_[a], offsetSeeds[a]);
     }
+    tiledField_ = TiledField({noises_[0], noises_[1]}, gridDensity, sharing);
 }
 
 std::array<float, 2> Pattern::field(double u, double v) const {

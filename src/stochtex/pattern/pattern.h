@@ -7,6 +7,7 @@
 
 #include "stochtex/image/image.h"
 #include "stochtex/noise/example.h"
+#include "stochtex/noise/tiled_field.h"
 #include "stochtex/noise/tiling_blending.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/pattern_spec.h"
@@ -24,8 +25,10 @@ struct View {
 class Pattern {
 public:
     static Pattern build(const PatternSpec& spec);
+    // sharing Shared: both noises see the same tiles (one seed; InputError
+    // `offsets` otherwise), e.g. a quadrature pair.
     Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> offsetSeeds, ColormapTable colormap,
-            double gridDensity);
+            double gridDensity, OffsetSharing sharing);
 
     // N(uv) in output space (after T⁻¹ for Gaussianized exemplars).
     std::array<float, 2> field(double u, double v) const;
@@ -41,7 +44,9 @@ public:
     const ColormapTable& colormap() const { return colormap_; }
     int exampleSize() const { return examples_[0]->size(); }
     const std::array<TilingBlendingNoise, 2>& noises() const { return noises_; }
-    bool sharedOffsets() const { return noises_[0].offsetSeed() == noises_[1].offsetSeed(); }
+    // N as a two-channel tiled field, with its declared offset sharing.
+    const TiledField& tiledField() const { return tiledField_; }
+    bool sharedOffsets() const { return tiledField_.shared(); }
     double gridDensity() const { return density_; }
 
 private:
@@ -54,6 +59,7 @@ private:
 
     std::array<std::shared_ptr<const NoiseExample>, 2> examples_;
     std::array<TilingBlendingNoise, 2> noises_;
+    TiledField tiledField_;
     ColormapTable colormap_;
     double density_;
 };
