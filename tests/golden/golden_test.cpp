@@ -132,10 +132,9 @@ TEST_P(GoldenImage, MatchesTheStoredRender) {
     const int channel = int(worstIndex % size_t(got.channels()));
     std::printf("[ info ] %s: mean |Δ| %.3f/255, max %ld/255\n", c.name().c_str(), mean, worst);
     const std::string where = "worst pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " +
-                              std::to_string(channel) + ": fresh " +
-                              std::to_string(step(got.data()[worstIndex])) + "/255, stored " +
-                              std::to_string(step(want.data()[worstIndex])) + "/255; fresh render in " +
-                              written.string();
+                              std::to_string(channel) + ": fresh " + std::to_string(step(got.data()[worstIndex])) +
+                              "/255, stored " + std::to_string(step(want.data()[worstIndex])) +
+                              "/255; fresh render in " + written.string();
     EXPECT_TRUE(worst <= kMaxStep && mean <= kMeanStep)
         << c.name() << ": max |Δ| " << worst << "/255 (limit " << kMaxStep << "), mean |Δ| " << mean << "/255 (limit "
         << kMeanStep << "); " << where;
