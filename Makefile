@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 BUILD_TYPE ?= Release
 JOBS ?= $(shell nproc)
 
-.PHONY: all deps build demo test bench clean
+.PHONY: all deps build demo test golden-update bench clean
 
 all: build
 
@@ -20,6 +20,10 @@ demo: build
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# Rewrites tests/golden/*.png after an intended change of the pixels (docs/TESTING.md).
+golden-update: build
+	cmake --build $(BUILD_DIR) --target golden-update
 
 bench: build
 	$(BUILD_DIR)/bin/stochtex_bench

@@ -2,10 +2,13 @@
 # End-to-end checks of the stochtex CLI: success paths write what they say,
 # bad input exits with code 2, prints one clear message naming the input,
 # and leaves no output (or temporary) file behind.
-# Usage: cli_test.sh STOCHTEX_BINARY SOURCE_DIR
+# Usage: cli_test.sh CASE STOCHTEX_BINARY SOURCE_DIR
+# CASE names one case_* function below; tests/CMakeLists.txt registers each
+# as the ctest test cli.CASE, so a new case_* function is a new test.
 set -u
-bin=$1
-src=$2
+name=$1
+bin=$2
+src=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -36,126 +39,200 @@ expect_bad() {
 out=$work/out
 mkdir -p "$out"
 
-# --- help on every command ---
-for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene view bake bake-image; do
-  "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
-done
-
-# --- success paths ---
-expect_ok "render preset" "$out/camo.png" -- "$bin" render --preset camouflage -o "$out/camo.png" --size 64
-expect_ok "render exr" "$out/camo.exr" -- "$bin" render --preset camouflage -o "$out/camo.exr" --size 32,24
-expect_ok "render file" "$out/file.png" -- "$bin" render "$src/data/presets/woven.json" -o "$out/file.png" --size 48 --scale 2 --offset 10,-3.5
-expect_ok "render 1 thread" "$out/t1.png" -- "$bin" render --preset marble -o "$out/t1.png" --size 128 -j 1
-expect_ok "render 2 threads" "$out/t2.png" -- "$bin" render --preset marble -o "$out/t2.png" --size 128 -j 2
-cmp -s "$out/t1.png" "$out/t2.png" || fail "render differs between 1 and 2 threads"
-expect_ok "render other seed" "$out/s2.png" -- "$bin" render --preset marble -o "$out/s2.png" --size 128 --seed 99
-cmp -s "$out/t1.png" "$out/s2.png" && fail "different seeds gave identical images"
-expect_ok "noise inline" "$out/noise.png" -- "$bin" noise '{"type":"spectrum","size":64,"seed":3,"components":[{"shape":"ring","frequency":8,"bandwidth":2}]}' -o "$out/noise.png" --spectrum "$out/spec.png"
-[ -s "$out/spec.png" ] || fail "noise --spectrum not written"
-expect_ok "colormap preset" "$out/cm.png" -- "$bin" colormap --preset marble -o "$out/cm.png" --resolution 64
-expect_ok "colormap inline" "$out/cm2.png" -- "$bin" colormap '{"type":"phasor","profile":"square","duty":0.3}' -o "$out/cm2.png"
-expect_ok "presets" "" -- "$bin" presets
-grep -q "camouflage" "$work/out.txt" || fail "presets does not list camouflage"
-expect_ok "gallery" "$out/gal/index.html" -- "$bin" gallery -o "$out/gal" --size 64 --preset gaussian --preset woven
-[ -s "$out/gal/woven-sheet.png" ] || fail "gallery sheet missing"
-
-# Filtered rendering: every mode, both views.
-for f in none paper smooth exact reference; do
-  expect_ok "filter $f" "$out/f-$f.png" -- "$bin" render --preset marble -o "$out/f-$f.png" --size 32 --scale 8 --filter $f --reference-samples 16
-done
-expect_ok "plane view" "$out/plane.png" -- "$bin" render --preset camouflage -o "$out/plane.png" --size 48 --view plane --tilt 70 --filter smooth --aniso 8
-expect_ok "deliot-heitz" "$out/dh.png" -- "$bin" render --preset camouflage -o "$out/dh.png" --size 32 --scale 16 --filter paper --estimator deliot-heitz
-
-# An exemplar image as noise (Gaussianized), and an image colormap.
-cat >"$work/exemplar.json" <<JSON
+# An exemplar image as noise (Gaussianized), and an image colormap: a pattern
+# file whose images are written by the noise and colormap commands.
+make_exemplar() {
+  "$bin" noise '{"type":"spectrum","size":64,"seed":3,"components":[{"shape":"ring","frequency":8,"bandwidth":2}]}' -o "$out/noise.png" >/dev/null || fail "make_exemplar: noise"
+  "$bin" colormap --preset marble -o "$out/cm.png" --resolution 64 >/dev/null || fail "make_exemplar: colormap"
+  cat >"$work/exemplar.json" <<JSON
 {"noise_x": {"type": "image", "path": "out/noise.png"},
  "noise_y": {"type": "image", "path": "out/noise.png", "gaussianize": false},
  "colormap": {"type": "image", "path": "out/cm.png"}, "size": 64}
 JSON
-expect_ok "exemplar pattern" "$out/ex.png" -- "$bin" render "$work/exemplar.json" -o "$out/ex.png"
+}
+
+# --- help on every command ---
+case_help() {
+  for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene view bake bake-image; do
+    "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
+  done
+}
+
+# --- success paths ---
+case_render() {
+  expect_ok "render preset" "$out/camo.png" -- "$bin" render --preset camouflage -o "$out/camo.png" --size 64
+  expect_ok "render exr" "$out/camo.exr" -- "$bin" render --preset camouflage -o "$out/camo.exr" --size 32,24
+  expect_ok "render file" "$out/file.png" -- "$bin" render "$src/data/presets/woven.json" -o "$out/file.png" --size 48 --scale 2 --offset 10,-3.5
+  expect_ok "render 1 thread" "$out/t1.png" -- "$bin" render --preset marble -o "$out/t1.png" --size 128 -j 1
+  expect_ok "render 2 threads" "$out/t2.png" -- "$bin" render --preset marble -o "$out/t2.png" --size 128 -j 2
+  cmp -s "$out/t1.png" "$out/t2.png" || fail "render differs between 1 and 2 threads"
+  expect_ok "render other seed" "$out/s2.png" -- "$bin" render --preset marble -o "$out/s2.png" --size 128 --seed 99
+  cmp -s "$out/t1.png" "$out/s2.png" && fail "different seeds gave identical images"
+}
+
+case_noise() {
+  expect_ok "noise inline" "$out/noise.png" -- "$bin" noise '{"type":"spectrum","size":64,"seed":3,"components":[{"shape":"ring","frequency":8,"bandwidth":2}]}' -o "$out/noise.png" --spectrum "$out/spec.png"
+  [ -s "$out/spec.png" ] || fail "noise --spectrum not written"
+}
+
+case_colormap() {
+  expect_ok "colormap preset" "$out/cm.png" -- "$bin" colormap --preset marble -o "$out/cm.png" --resolution 64
+  expect_ok "colormap inline" "$out/cm2.png" -- "$bin" colormap '{"type":"phasor","profile":"square","duty":0.3}' -o "$out/cm2.png"
+}
+
+case_presets() {
+  expect_ok "presets" "" -- "$bin" presets
+  grep -q "camouflage" "$work/out.txt" || fail "presets does not list camouflage"
+}
+
+case_gallery() {
+  expect_ok "gallery" "$out/gal/index.html" -- "$bin" gallery -o "$out/gal" --size 64 --preset gaussian --preset woven
+  [ -s "$out/gal/woven-sheet.png" ] || fail "gallery sheet missing"
+}
+
+# Filtered rendering: every mode, both views.
+case_filter() {
+  for f in none paper smooth exact reference; do
+    expect_ok "filter $f" "$out/f-$f.png" -- "$bin" render --preset marble -o "$out/f-$f.png" --size 32 --scale 8 --filter $f --reference-samples 16
+  done
+  expect_ok "plane view" "$out/plane.png" -- "$bin" render --preset camouflage -o "$out/plane.png" --size 48 --view plane --tilt 70 --filter smooth --aniso 8
+  expect_ok "deliot-heitz" "$out/dh.png" -- "$bin" render --preset camouflage -o "$out/dh.png" --size 32 --scale 16 --filter paper --estimator deliot-heitz
+}
+
+case_exemplar() {
+  make_exemplar
+  expect_ok "exemplar pattern" "$out/ex.png" -- "$bin" render "$work/exemplar.json" -o "$out/ex.png"
+}
 
 # --- thesis studies (small) ---
-expect_ok "zoom frames" "$out/zoom/frame_0002.png" -- "$bin" zoom -o "$out/zoom" --frames 3 --size 64 --layers 4 --offsets hashed --no-video
-expect_ok "correlation" "$out/corr/figure2_10.png" -- "$bin" correlation -o "$out/corr" --variant fixed,random --layers-list 4 --instances 16 --size 16
-grep -q "^random,4,16," "$out/corr/correlation.csv" || fail "correlation.csv lacks the random,n=4 row"
-expect_ok "contrast" "$out/contrast/figure2_6.png" -- "$bin" contrast -o "$out/contrast" --size 64 --layers 8
-grep -q "^sigmoid,0," "$out/contrast/contrast.csv" || fail "contrast.csv: the sigmoid should clamp 0% of pixels"
-expect_ok "analyze" "$out/an/index.html" -- "$bin" analyze -o "$out/an" --instances 8 --plot-size 16 --layers-list 4 --size 64
-grep -q "figure2_10.png" "$out/an/index.html" || fail "analyze: index.html lacks the correlation sheet"
+case_zoom() {
+  expect_ok "zoom frames" "$out/zoom/frame_0002.png" -- "$bin" zoom -o "$out/zoom" --frames 3 --size 64 --layers 4 --offsets hashed --no-video
+}
+
+case_correlation() {
+  expect_ok "correlation" "$out/corr/figure2_10.png" -- "$bin" correlation -o "$out/corr" --variant fixed,random --layers-list 4 --instances 16 --size 16
+  grep -q "^random,4,16," "$out/corr/correlation.csv" || fail "correlation.csv lacks the random,n=4 row"
+}
+
+case_contrast() {
+  expect_ok "contrast" "$out/contrast/figure2_6.png" -- "$bin" contrast -o "$out/contrast" --size 64 --layers 8
+  grep -q "^sigmoid,0," "$out/contrast/contrast.csv" || fail "contrast.csv: the sigmoid should clamp 0% of pixels"
+}
+
+case_analyze() {
+  expect_ok "analyze" "$out/an/index.html" -- "$bin" analyze -o "$out/an" --instances 8 --plot-size 16 --layers-list 4 --size 64
+  grep -q "figure2_10.png" "$out/an/index.html" || fail "analyze: index.html lacks the correlation sheet"
+}
 
 # --- paper reproduction (reduced) ---
-expect_ok "reproduce table1" "$out/rep/table1.md" -- "$bin" reproduce table1 -o "$out/rep" --count 20 --footprints 2,16
-grep -q "^high,16,global," "$out/rep/table1.csv" || fail "table1.csv lacks the high/16/global row"
-expect_ok "reproduce figures7-9" "$out/rep/figure9.png" -- "$bin" reproduce figures7-9 -o "$out/rep" --size 64
-expect_ok "reproduce all" "$out/all/index.html" -- "$bin" reproduce all -o "$out/all" --count 10 --footprints 2,4 --size 32 --reference-samples 8
-grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 4"
+case_reproduce() {
+  expect_ok "reproduce table1" "$out/rep/table1.md" -- "$bin" reproduce table1 -o "$out/rep" --count 20 --footprints 2,16
+  grep -q "^high,16,global," "$out/rep/table1.csv" || fail "table1.csv lacks the high/16/global row"
+  expect_ok "reproduce figures7-9" "$out/rep/figure9.png" -- "$bin" reproduce figures7-9 -o "$out/rep" --size 64
+  expect_ok "reproduce all" "$out/all/index.html" -- "$bin" reproduce all -o "$out/all" --count 10 --footprints 2,4 --size 32 --reference-samples 8
+  grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 4"
+}
 
 # --- GPU (headless OpenGL: Mesa llvmpipe without a GPU) ---
-expect_ok "render --gpu" "$out/gpu.png" -- "$bin" render --preset camouflage --gpu --size 96 -o "$out/gpu.png"
-expect_ok "render --gpu --filter smooth" "$out/gpu2.png" -- "$bin" render --preset marble --gpu --filter smooth --scale 8 --size 96 -o "$out/gpu2.png"
-# The window, under a virtual X server. Mesa's GLX driver leaks a few
-# hundred bytes from a module it has unloaded by exit time, which
-# LeakSanitizer cannot suppress by name: leak checks are off for this run
-# only (sanitizer builds; no effect otherwise).
-expect_ok "view under Xvfb" "$out/view.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
-expect_ok "bake" "$out/bake/stochtex.glsl" -- "$bin" bake --preset weld --filter paper -o "$out/bake"
-# Bands streamed into the PNG give the same file as one render of the whole.
-expect_ok "bake-image" "$out/big.png" -- "$bin" bake-image --preset marble --size 200,150 --band 40 --filter smooth --scale 3 -o "$out/big.png"
-expect_ok "render for bake-image" "$out/big_ref.png" -- "$bin" render --preset marble --size 200,150 --filter smooth --scale 3 -o "$out/big_ref.png"
-cmp -s "$out/big.png" "$out/big_ref.png" || fail "bake-image differs from render"
-expect_ok "bake-image --gpu" "$out/bigg.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu -o "$out/bigg.png"
-expect_ok "bake-image --gpu compute" "$out/biggc.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu --pipeline compute -o "$out/biggc.png"
-expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
-expect_ok "render --gpu plane" "$out/gpu3.png" -- "$bin" render --preset marble --gpu --filter paper --view plane --tilt 70 --aniso 8 --size 96 -o "$out/gpu3.png"
-expect_ok "render --gpu compute" "$out/gpu4.png" -- "$bin" render --preset marble --gpu --pipeline compute --filter smooth --view plane --tilt 70 --aniso 8 --size 96,72 -o "$out/gpu4.png"
-expect_ok "render --gpu rasterizer derivatives" "$out/gpu5.png" -- "$bin" render --preset marble --gpu --derivatives rasterizer --filter smooth --view plane --size 96 -o "$out/gpu5.png"
+case_gpu_render() {
+  expect_ok "render --gpu" "$out/gpu.png" -- "$bin" render --preset camouflage --gpu --size 96 -o "$out/gpu.png"
+  expect_ok "render --gpu --filter smooth" "$out/gpu2.png" -- "$bin" render --preset marble --gpu --filter smooth --scale 8 --size 96 -o "$out/gpu2.png"
+  expect_ok "render --gpu plane" "$out/gpu3.png" -- "$bin" render --preset marble --gpu --filter paper --view plane --tilt 70 --aniso 8 --size 96 -o "$out/gpu3.png"
+  expect_ok "render --gpu compute" "$out/gpu4.png" -- "$bin" render --preset marble --gpu --pipeline compute --filter smooth --view plane --tilt 70 --aniso 8 --size 96,72 -o "$out/gpu4.png"
+  expect_ok "render --gpu rasterizer derivatives" "$out/gpu5.png" -- "$bin" render --preset marble --gpu --derivatives rasterizer --filter smooth --view plane --size 96 -o "$out/gpu5.png"
+}
+
+case_view() {
+  # The window, under a virtual X server. Mesa's GLX driver leaks a few
+  # hundred bytes from a module it has unloaded by exit time, which
+  # LeakSanitizer cannot suppress by name: leak checks are off for this run
+  # only (sanitizer builds; no effect otherwise).
+  expect_ok "view under Xvfb" "$out/view.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
+}
+
+case_bake() {
+  expect_ok "bake" "$out/bake/stochtex.glsl" -- "$bin" bake --preset weld --filter paper -o "$out/bake"
+}
+
+case_bake_image() {
+  # Bands streamed into the PNG give the same file as one render of the whole.
+  expect_ok "bake-image" "$out/big.png" -- "$bin" bake-image --preset marble --size 200,150 --band 40 --filter smooth --scale 3 -o "$out/big.png"
+  expect_ok "render for bake-image" "$out/big_ref.png" -- "$bin" render --preset marble --size 200,150 --filter smooth --scale 3 -o "$out/big_ref.png"
+  cmp -s "$out/big.png" "$out/big_ref.png" || fail "bake-image differs from render"
+  expect_ok "bake-image --gpu" "$out/bigg.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu -o "$out/bigg.png"
+  expect_ok "bake-image --gpu compute" "$out/biggc.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu --pipeline compute -o "$out/biggc.png"
+}
+
+case_scene() {
+  expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
+}
 
 # --- bad input ---
-echo '{"noise_x": {"type": "spectrum", ' >"$work/malformed.json"
-expect_bad "malformed JSON" "$out/bad1.png" "malformed.json: malformed JSON" -- "$bin" render "$work/malformed.json" -o "$out/bad1.png"
-expect_bad "unknown preset" "$out/bad2.png" 'unknown preset "nope"' -- "$bin" render --preset nope -o "$out/bad2.png"
-expect_bad "missing pattern file" "$out/bad3.png" "missing.json: no such file" -- "$bin" render "$work/missing.json" -o "$out/bad3.png"
-sed 's#out/noise.png#out/absent.png#' "$work/exemplar.json" >"$work/missing-image.json"
-expect_bad "missing image" "$out/bad4.png" "absent.png: no such image file" -- "$bin" render "$work/missing-image.json" -o "$out/bad4.png"
-echo "not an image" >"$work/out/corrupt.png"
-sed 's#out/noise.png#out/corrupt.png#' "$work/exemplar.json" >"$work/corrupt-image.json"
-expect_bad "corrupt image" "$out/bad5.png" "corrupt.png: not a readable image" -- "$bin" render "$work/corrupt-image.json" -o "$out/bad5.png"
-expect_bad "NaN scale" "$out/bad6.png" "--scale: scale must be a finite number in (0, 1e6], got nan" -- "$bin" render --preset gaussian -o "$out/bad6.png" --scale nan
-expect_bad "negative scale" "$out/bad7.png" "--scale: scale must be a finite number in (0, 1e6], got -2" -- "$bin" render --preset gaussian -o "$out/bad7.png" --scale -2
-expect_bad "negative size" "$out/bad8.png" "--size: size must be in [1, 16384] per side, got -5x-5" -- "$bin" render --preset gaussian -o "$out/bad8.png" --size=-5
-expect_bad "size over cap" "$out/bad9.png" "--size: size must be in [1, 16384] per side, got 100000x100000" -- "$bin" render --preset gaussian -o "$out/bad9.png" --size 100000
-expect_bad "NaN offset" "$out/bad10.png" "--offset: offset must be finite and at most 1e9 texels, got nan,0" -- "$bin" render --preset gaussian -o "$out/bad10.png" --offset nan,0
-expect_bad "bad extension" "$out/bad11.jpg" "unsupported output format" -- "$bin" render --preset gaussian -o "$out/bad11.jpg"
-expect_bad "missing output dir" "$out/nodir/bad12.png" "does not exist" -- "$bin" render --preset gaussian -o "$out/nodir/bad12.png"
-expect_bad "bad noise spec" "$out/bad13.png" "<inline JSON>: /components/0/frequency: must be in" -- "$bin" noise '{"type":"spectrum","components":[{"shape":"ring","frequency":-1,"bandwidth":2}]}' -o "$out/bad13.png"
-expect_bad "noise size over cap" "$out/bad14.png" "/size: must be in [8, 4096]" -- "$bin" noise '{"type":"spectrum","size":100000,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/bad14.png"
-expect_bad "bad colormap" "$out/bad15.png" "/type: unknown value" -- "$bin" colormap '{"type":"rainbow"}' -o "$out/bad15.png"
-expect_bad "unknown flag" "$out/bad16.png" "--bogus" -- "$bin" render --preset gaussian -o "$out/bad16.png" --bogus
-expect_bad "bad filter" "$out/bad18.png" '--filter: mode must be none, paper, smooth, exact or reference, got "blurry"' -- "$bin" render --preset gaussian -o "$out/bad18.png" --filter blurry
-expect_bad "aniso zero" "$out/bad19.png" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
-expect_bad "aniso absurd" "$out/bad20.png" "--aniso: aniso must be in [1, 16], got 1000" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
-expect_bad "tilt" "$out/bad21.png" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95
-expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be a finite number in (0, 1e6], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
-expect_bad "bad view" "$out/bad23.png" 'unknown "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
-expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"
-expect_bad "zoom n = 0" "$out/zbad1" "--layers: layers (n) must be in [1, 1024], got 0" -- "$bin" zoom -o "$out/zbad1" --layers 0
-expect_bad "zoom H <= 0" "$out/zbad2" "--max-scale: maxScale (H) must be a finite number in (0, 1000], got 0" -- "$bin" zoom -o "$out/zbad2" --max-scale 0
-expect_bad "correlation N = 0" "$out/zbad3" "--instances must be in [2, 1e6]" -- "$bin" correlation -o "$out/zbad3" --instances 0
-expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image file" -- "$bin" contrast -o "$out/zbad4" --base "$work/nothere.png"
-expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: every n must be in [1, 1024]" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
-expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
-expect_bad "reproduce zero count" "$out/rbad2" "--count: count must be in [1, 1e6], got 0" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
-expect_bad "gpu with the reference" "$out/gbad.png" "--gpu: the GPU renders --filter none, paper or smooth" -- "$bin" render --preset camouflage --gpu --filter reference -o "$out/gbad.png"
-expect_bad "unknown pipeline" "$out/gbad2.png" '--pipeline: unknown "vulkan"' -- "$bin" render --preset camouflage --gpu --pipeline vulkan -o "$out/gbad2.png"
-expect_bad "unknown derivatives" "$out/gbad3.png" '--derivatives: unknown "dfdx"' -- "$bin" render --preset camouflage --gpu --derivatives dfdx -o "$out/gbad3.png"
-expect_bad "compute with rasterizer derivatives" "$out/gbad4.png" "--derivatives: derivatives must be camera with the compute pipeline" -- "$bin" render --preset camouflage --gpu --filter paper --pipeline compute --derivatives rasterizer -o "$out/gbad4.png"
-expect_bad "scene unknown object" "$out/sbad.png" '--object: object must be plane, sphere or torus, got "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
-expect_bad "bake unfiltered" "$out/bbad" "--filter: mode must be paper or smooth to export" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
-expect_bad "bake bad precision" "$out/bbad2" '--table-precision: unknown "double"' -- "$bin" bake --preset weld --table-precision double -o "$out/bbad2"
-expect_bad "bake-image exr" "$out/x.exr" "bake-image writes PNG" -- "$bin" bake-image --preset marble -o "$out/x.exr"
+case_bad_input() {
+  make_exemplar
+  echo '{"noise_x": {"type": "spectrum", ' >"$work/malformed.json"
+  expect_bad "malformed JSON" "$out/bad1.png" "malformed.json: malformed JSON" -- "$bin" render "$work/malformed.json" -o "$out/bad1.png"
+  expect_bad "unknown preset" "$out/bad2.png" 'unknown preset "nope"' -- "$bin" render --preset nope -o "$out/bad2.png"
+  expect_bad "missing pattern file" "$out/bad3.png" "missing.json: no such file" -- "$bin" render "$work/missing.json" -o "$out/bad3.png"
+  sed 's#out/noise.png#out/absent.png#' "$work/exemplar.json" >"$work/missing-image.json"
+  expect_bad "missing image" "$out/bad4.png" "absent.png: no such image file" -- "$bin" render "$work/missing-image.json" -o "$out/bad4.png"
+  echo "not an image" >"$work/out/corrupt.png"
+  sed 's#out/noise.png#out/corrupt.png#' "$work/exemplar.json" >"$work/corrupt-image.json"
+  expect_bad "corrupt image" "$out/bad5.png" "corrupt.png: not a readable image" -- "$bin" render "$work/corrupt-image.json" -o "$out/bad5.png"
+}
 
+case_bad_render_flags() {
+  expect_bad "NaN scale" "$out/bad6.png" "--scale: scale must be a finite number in (0, 1e6], got nan" -- "$bin" render --preset gaussian -o "$out/bad6.png" --scale nan
+  expect_bad "negative scale" "$out/bad7.png" "--scale: scale must be a finite number in (0, 1e6], got -2" -- "$bin" render --preset gaussian -o "$out/bad7.png" --scale -2
+  expect_bad "negative size" "$out/bad8.png" "--size: size must be in [1, 16384] per side, got -5x-5" -- "$bin" render --preset gaussian -o "$out/bad8.png" --size=-5
+  expect_bad "size over cap" "$out/bad9.png" "--size: size must be in [1, 16384] per side, got 100000x100000" -- "$bin" render --preset gaussian -o "$out/bad9.png" --size 100000
+  expect_bad "NaN offset" "$out/bad10.png" "--offset: offset must be finite and at most 1e9 texels, got nan,0" -- "$bin" render --preset gaussian -o "$out/bad10.png" --offset nan,0
+  expect_bad "bad extension" "$out/bad11.jpg" "unsupported output format" -- "$bin" render --preset gaussian -o "$out/bad11.jpg"
+  expect_bad "missing output dir" "$out/nodir/bad12.png" "does not exist" -- "$bin" render --preset gaussian -o "$out/nodir/bad12.png"
+  expect_bad "unknown flag" "$out/bad16.png" "--bogus" -- "$bin" render --preset gaussian -o "$out/bad16.png" --bogus
+  expect_bad "bad filter" "$out/bad18.png" '--filter: mode must be none, paper, smooth, exact or reference, got "blurry"' -- "$bin" render --preset gaussian -o "$out/bad18.png" --filter blurry
+  expect_bad "aniso zero" "$out/bad19.png" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
+  expect_bad "aniso absurd" "$out/bad20.png" "--aniso: aniso must be in [1, 16], got 1000" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
+  expect_bad "tilt" "$out/bad21.png" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95
+  expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be a finite number in (0, 1e6], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
+  expect_bad "bad view" "$out/bad23.png" 'unknown "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
+  expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"
+}
+
+case_bad_spec() {
+  expect_bad "bad noise spec" "$out/bad13.png" "<inline JSON>: /components/0/frequency: must be in" -- "$bin" noise '{"type":"spectrum","components":[{"shape":"ring","frequency":-1,"bandwidth":2}]}' -o "$out/bad13.png"
+  expect_bad "noise size over cap" "$out/bad14.png" "/size: must be in [8, 4096]" -- "$bin" noise '{"type":"spectrum","size":100000,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/bad14.png"
+  expect_bad "bad colormap" "$out/bad15.png" "/type: unknown value" -- "$bin" colormap '{"type":"rainbow"}' -o "$out/bad15.png"
+}
+
+case_bad_study_flags() {
+  expect_bad "zoom n = 0" "$out/zbad1" "--layers: layers (n) must be in [1, 1024], got 0" -- "$bin" zoom -o "$out/zbad1" --layers 0
+  expect_bad "zoom H <= 0" "$out/zbad2" "--max-scale: maxScale (H) must be a finite number in (0, 1000], got 0" -- "$bin" zoom -o "$out/zbad2" --max-scale 0
+  expect_bad "correlation N = 0" "$out/zbad3" "--instances must be in [2, 1e6]" -- "$bin" correlation -o "$out/zbad3" --instances 0
+  expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image file" -- "$bin" contrast -o "$out/zbad4" --base "$work/nothere.png"
+  expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: every n must be in [1, 1024]" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
+  expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
+  expect_bad "reproduce zero count" "$out/rbad2" "--count: count must be in [1, 1e6], got 0" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
+}
+
+case_bad_gpu_flags() {
+  expect_bad "gpu with the reference" "$out/gbad.png" "--gpu: the GPU renders --filter none, paper or smooth" -- "$bin" render --preset camouflage --gpu --filter reference -o "$out/gbad.png"
+  expect_bad "unknown pipeline" "$out/gbad2.png" '--pipeline: unknown "vulkan"' -- "$bin" render --preset camouflage --gpu --pipeline vulkan -o "$out/gbad2.png"
+  expect_bad "unknown derivatives" "$out/gbad3.png" '--derivatives: unknown "dfdx"' -- "$bin" render --preset camouflage --gpu --derivatives dfdx -o "$out/gbad3.png"
+  expect_bad "compute with rasterizer derivatives" "$out/gbad4.png" "--derivatives: derivatives must be camera with the compute pipeline" -- "$bin" render --preset camouflage --gpu --filter paper --pipeline compute --derivatives rasterizer -o "$out/gbad4.png"
+}
+
+case_bad_export_flags() {
+  expect_bad "scene unknown object" "$out/sbad.png" '--object: object must be plane, sphere or torus, got "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
+  expect_bad "bake unfiltered" "$out/bbad" "--filter: mode must be paper or smooth to export" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
+  expect_bad "bake bad precision" "$out/bbad2" '--table-precision: unknown "double"' -- "$bin" bake --preset weld --table-precision double -o "$out/bbad2"
+  expect_bad "bake-image exr" "$out/x.exr" "bake-image writes PNG" -- "$bin" bake-image --preset marble -o "$out/x.exr"
+}
+
+declare -F "case_$name" >/dev/null || { echo "cli_test.sh: unknown case \"$name\""; exit 2; }
+"case_$name"
 if [ $failures -ne 0 ]; then
-  echo "$failures CLI check(s) failed"
+  echo "$failures check(s) of cli.$name failed"
   exit 1
 fi
-echo "all CLI checks passed"
+echo "all checks of cli.$name passed"

@@ -1,5 +1,6 @@
 // The GLSL implementation against the CPU reference, on whatever OpenGL the
 // machine has (Mesa llvmpipe in CI), and the shaders' portability.
+#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -75,8 +76,26 @@ void expectParity(const Pattern& pattern, const View& view, const std::string& w
 }
 
 TEST(Gpu, HeadlessContextIsCore33OrNewer) {
+    context().makeCurrent();
+    GLint major = 0, minor = 0, profile = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    const int version = 10 * major + minor;
+    EXPECT_GE(version, 33) << major << "." << minor;
+    EXPECT_NE(profile & GL_CONTEXT_CORE_PROFILE_BIT, 0) << "profile mask " << profile;
+    EXPECT_EQ(profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT, 0) << "profile mask " << profile;
+    EXPECT_TRUE(epoxy_is_desktop_gl());
+    // The compute pipeline is offered exactly when the context has compute shaders.
+    EXPECT_EQ(context().hasCompute(), version >= 43);
+    // The version string and describe() report the version the integers give.
+    const std::string numbers = std::to_string(major) + "." + std::to_string(minor);
+    const auto* glVersion = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    ASSERT_NE(glVersion, nullptr);
+    EXPECT_EQ(std::string(glVersion).rfind(numbers, 0), 0u) << glVersion;
     const std::string d = context().describe();
-    EXPECT_NE(d.find("OpenGL"), std::string::npos);
+    EXPECT_NE(d.find("OpenGL " + numbers), std::string::npos) << d;
     std::printf("[ info ] %s\n", d.c_str());
 }
 

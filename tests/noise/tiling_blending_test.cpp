@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -72,6 +73,56 @@ TEST(TriangleGrid, WeightsAreVariancePreservingAndVerticesAdjacent) {
     // At a lattice vertex, that vertex's tile alone is seen.
     const BlendStencil at = triangleGrid(0.0, 0.0);
     EXPECT_NEAR(at.w[0], 1.0f, 1e-6f);
+}
+
+// The convention of docs/MATH.md, pinned by values worked out by hand. With
+// ρ = 2√3, ρ·0.57735027 = 2 and ρ·1.15470054 = 4, so the skewed point is
+// (x, y) = (ρu − 2v, 4v); cell = (⌊x⌋, ⌊y⌋) (ids modulo 2³²), fz = 1 − {x} − {y};
+// lower triangle (fz > 0): vertices (0,0), (0,1), (1,0), weights ({fz}, {y}, {x});
+// upper: (1,1), (1,0), (0,1), weights (−fz, 1 − {y}, 1 − {x}); then w /= ‖w‖.
+TEST(TriangleGrid, MatchesTheDocumentedConventionAtHandComputedPoints) {
+    struct Case {
+        double u, v;
+        uint32_t cellX, cellY;
+        bool upper;
+        std::array<float, 3> w;  // normalised
+    };
+    const Case cases[] = {
+        // x = 0.34641016 − 0.1 = 0.24641016, y = 0.2, fz = 0.55358984;
+        // w = (0.55358984, 0.2, 0.24641016) / 0.63810632.
+        {0.1, 0.05, 0, 0, false, {0.86755110f, 0.31342739f, 0.38615847f}},
+        // x = 0.86602540 − 0.4 = 0.46602540, y = 0.8, fz = −0.26602540;
+        // w = (0.26602540, 0.2, 0.53397460) / 0.62920457.
+        {0.25, 0.2, 0, 0, true, {0.42279637f, 0.31786165f, 0.84865023f}},
+        // x = −1.03923048 + 0.2 = −0.83923048, y = −0.4: cell (−1, −1) wraps to
+        // 2³² − 1; {x} = 0.16076952, {y} = 0.6, fz = 0.23923048;
+        // w = (0.23923048, 0.6, 0.16076952) / 0.66564109.
+        {-0.3, -0.1, 0xffffffffu, 0xffffffffu, false, {0.35939861f, 0.90138666f, 0.24152583f}},
+        // x = 3.46410162 − 0.6 = 2.86410162, y = 1.2: cell (2, 1), fz = −0.06410162;
+        // w = (0.06410162, 0.8, 0.13589838) / 0.81398857.
+        {1.0, 0.3, 2, 1, true, {0.07875002f, 0.98281479f, 0.16695368f}},
+    };
+    for (const Case& c : cases) {
+        // The CPU's double-precision split (one point and scanline) and the
+        // kernel's float version (what the shaders run) must all hold it.
+        const kernel::vec2 uv(float(c.u), float(c.v));
+        const BlendStencil stencils[] = {triangleGrid(c.u, c.v), TriangleGridRow(c.v).stencil(c.u),
+                                         kernel::triangleGrid(uv, kernel::kDefaultGridDensity)};
+        for (const BlendStencil& s : stencils) {
+            SCOPED_TRACE(testing::Message() << "uv = (" << c.u << ", " << c.v << "), path " << (&s - stencils));
+            EXPECT_EQ(s.cell.x, c.cellX);
+            EXPECT_EQ(s.cell.y, c.cellY);
+            EXPECT_EQ(s.upper, c.upper);
+            for (int i = 0; i < 3; ++i) EXPECT_NEAR(s.w[i], c.w[size_t(i)], 1e-6f) << "weight " << i;
+            // Vertex i of the stencil is the vertex weight i belongs to.
+            const uint32_t dx[2][3] = {{0, 0, 1}, {1, 1, 0}}, dy[2][3] = {{0, 1, 0}, {1, 0, 1}};
+            for (int i = 0; i < 3; ++i) {
+                const kernel::uvec2 vertex = kernel::stencilVertex(s, i);
+                EXPECT_EQ(vertex.x, c.cellX + dx[c.upper][i]) << "vertex " << i;
+                EXPECT_EQ(vertex.y, c.cellY + dy[c.upper][i]) << "vertex " << i;
+            }
+        }
+    }
 }
 
 TEST(TilingBlending, MatchesEquationSevenAtAPoint) {
