@@ -2,12 +2,22 @@
 // Helpers shared by the unit tests.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdint>
+#include <filesystem>
+#include <string>
 
 #include "stochtex/core/error.h"
 #include "stochtex/noise/spectrum.h"
 
 namespace stochtex::test {
+
+// A path under the temp folder unique to this test process, so that
+// parallel ctest runs and other checkouts' tests never share files.
+inline std::filesystem::path scratchPath(const std::string& name) {
+    return std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+}
 
 // A one-component spectrum (mean ½, σ 1/6).
 inline SpectrumSpec spectrumSpec(SpectrumShape shape, double f, double b, double theta, uint32_t seed, int size) {

@@ -12,6 +12,7 @@
 
 #include "stochtex/gpu/export.h"
 #include "stochtex/gpu/gl_context.h"
+#include "test_util.h"
 #include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/presets.h"
@@ -149,7 +150,7 @@ TEST(Export, SeparateProgramRendersWhatRenderGpuRenders) {
         o.mode = half ? FilterMode::Smooth : FilterMode::Paper;
         ExportOptions e;
         e.halfTable = half;
-        const fs::path dir = fs::temp_directory_path() / (std::string("stochtex_export_") + name);
+        const fs::path dir = test::scratchPath(std::string("stochtex_export_") + name);
         fs::remove_all(dir);
         exportPattern(p, o, dir.string(), e);
         for (const char* f : {"manifest.json", "stochtex.glsl", "README.md", "table.exr", "stats_x_0.exr"})

@@ -209,7 +209,7 @@ TEST(Gpu, ComputeKernelMatchesTheCpu) {
 
 TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     // A bimodal exemplar: T⁻¹ must bring its plateaus back on the GPU too.
-    const fs::path dir = fs::temp_directory_path() / "stochtex_gpu_test";
+    const fs::path dir = test::scratchPath("stochtex_gpu_test");
     fs::create_directories(dir);
     Image ex(64, 64, 1);
     for (int y = 0; y < 64; ++y)
@@ -297,14 +297,14 @@ TEST(Gpu, UserShaderFileErrorsNameTheFileAndLine) {
         EXPECT_NE(msg.find(file.string() + ":4"), std::string::npos) << msg;
     }
     fs::remove(file);
-    EXPECT_THROW(readShaderFile((fs::temp_directory_path() / "stochtex_no_such_shader.frag").string()), InputError);
+    EXPECT_THROW(readShaderFile(test::scratchPath("stochtex_no_such_shader.frag").string()), InputError);
 }
 
 // Every program of the recipe table compiles as GLSL 3.30 core and GLSL ES
 // 3.00 (WebGL 2), compute programs as GLSL 4.30, checked by the reference
 // compiler.
 TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {
-    const fs::path dir = fs::temp_directory_path() / "stochtex_glslang";
+    const fs::path dir = test::scratchPath("stochtex_glslang");
     fs::create_directories(dir);
     const auto validate = [&](GlslTarget t, const std::string& name, const std::string& ext,
                               const std::vector<std::string>& files) {
