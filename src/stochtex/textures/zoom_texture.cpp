@@ -192,24 +192,10 @@ Image renderZoom(const LatticeTexture& f, const ZoomParams& p, const ZoomRegion&
     return out;
 }
 
-ZoomScaling parseZoomScaling(const std::string& s) {
-    if (s == "sliding") return ZoomScaling::Sliding;
-    if (s == "exponential" || s == "fixed") return ZoomScaling::Exponential;
-    throw InputError("--scaling: unknown \"" + s + "\" (expected sliding or exponential)");
-}
-
-ZoomOffsets parseZoomOffsets(const std::string& s) {
-    if (s == "none") return ZoomOffsets::None;
-    if (s == "simple") return ZoomOffsets::Simple;
-    if (s == "hashed") return ZoomOffsets::Hashed;
-    if (s == "sin-hash") return ZoomOffsets::SinHash;
-    throw InputError("--offsets: unknown \"" + s + "\" (expected none, simple, hashed or sin-hash)");
-}
-
+ZoomScaling parseZoomScaling(const std::string& s) { return parseEnum(kZoomScalingNames, s, "scaling"); }
+ZoomOffsets parseZoomOffsets(const std::string& s) { return parseEnum(kZoomOffsetsNames, s, "offsets"); }
 LatticeInterpolation parseLatticeInterpolation(const std::string& s) {
-    if (s == "nearest") return LatticeInterpolation::Nearest;
-    if (s == "linear") return LatticeInterpolation::Linear;
-    throw InputError("--interpolation: unknown \"" + s + "\" (expected nearest or linear)");
+    return parseEnum(kLatticeInterpolationNames, s, "interpolation");
 }
 
 }  // namespace stochtex
