@@ -2,7 +2,7 @@
 #include <benchmark/benchmark.h>
 
 #include "stochtex/analysis/correlation_accumulator.h"
-#include "stochtex/analysis/zoom_statistics.h"
+#include "stochtex/textures/zoom_statistics.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/textures/zoom_texture.h"
 

@@ -1,5 +1,6 @@
 #include "common.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <string_view>
 #include <utility>
@@ -84,6 +85,14 @@ void addThreadsFlag(CLI::App& cmd, int& threads) {
         ->check(CLI::Range(0, 1024));
 }
 
+void addFilterModeFlag(CLI::App& cmd, FilterMode& mode, const std::string& help) {
+    cmd.add_option("--filter", mode, help)
+        ->transform(CLI::CheckedTransformer(kFilterModeNames))
+        ->default_str(enumName(kFilterModeNames, mode));
+}
+
+void printProgress(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
+
 void addPipelineFlag(CLI::App& cmd, std::string& pipeline) {
     cmd.add_option("--pipeline", pipeline,
                    "--gpu: fragment (full-screen triangle) | compute (GLSL 4.30 kernel; reaches every shader unit of "
@@ -121,6 +130,8 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"scaling", "--scaling"},
     {"offsets", "--offsets"},
     {"interpolation", "--interpolation"},
+    {"instances", "--instances"},
+    {"layersList", "--layers-list"},
 };
 }  // namespace
 
@@ -130,15 +141,8 @@ std::string describeInputError(const InputError& e) {
     return e.what();
 }
 
-std::string htmlEscape(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        if (c == '<') o += "&lt;";
-        else if (c == '>') o += "&gt;";
-        else if (c == '&') o += "&amp;";
-        else o += c;
-    }
-    return o;
+void addOutputFolderFlag(CLI::App& cmd, std::string& dir, const std::string& what) {
+    cmd.add_option("-o,--output", dir, what)->required();
 }
 
 }  // namespace stochtex::cli

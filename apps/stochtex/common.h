@@ -8,6 +8,9 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_pattern.h"
+#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/report/page.h"
+#include "stochtex/report/table.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 
@@ -42,6 +45,12 @@ void checkImageOutput(const std::string& path);
 
 void addThreadsFlag(CLI::App& cmd, int& threads);
 
+// --filter MODE over kFilterModeNames (the default shown is the value's).
+void addFilterModeFlag(CLI::App& cmd, FilterMode& mode, const std::string& help);
+
+// A study's progress line on stderr.
+void printProgress(const std::string& line);
+
 // --pipeline fragment|compute of the --gpu commands; parsePipeline throws
 // InputError naming the flag for any other value.
 void addPipelineFlag(CLI::App& cmd, std::string& pipeline);
@@ -52,8 +61,8 @@ GpuPattern::Pipeline parsePipeline(const std::string& pipeline);
 // got 0"); any other error as it is.
 std::string describeInputError(const InputError& e);
 
-// <, > and & as HTML entities.
-std::string htmlEscape(const std::string& s);
+// -o,--output FOLDER, required (what: its help text).
+void addOutputFolderFlag(CLI::App& cmd, std::string& dir, const std::string& what = "Output folder");
 
 // Registration of each command (one file each).
 void registerRender(CLI::App& app);

@@ -4,30 +4,30 @@
 
 #include "common.h"
 #include "stochtex/core/parallel.h"
-#include "zoom_studies.h"
+#include "zoom_flags.h"
 
 namespace stochtex::cli {
 
 void registerContrast(CLI::App& app) {
     struct Args {
         ZoomFlags zoom;
-        ContrastStudy study;
+        ContrastStudyOptions study;
         std::string dir;
         int threads = 0;
     };
     auto args = std::make_shared<Args>();
+    args->zoom.params.layers = 16;  // Figure 2.6
     auto* cmd = app.add_subcommand("contrast", "Contrast corrections of the zoom texture with their histograms, "
                                                "curves and clamped-pixel percentages");
-    cmd->add_option("-o,--output", args->dir, "Output folder")->required();
-    cmd->add_option("--size", args->study.size, "Texture size in pixels");
-    cmd->add_option("--layers", args->study.layers, "Number of layers n (Figure 2.6 uses 16)");
-    addZoomFlags(*cmd, args->zoom, false);
+    addOutputFolderFlag(*cmd, args->dir);
+    cmd->add_option("--size", args->study.size, "Texture size in pixels")->capture_default_str();
+    addZoomFlags(*cmd, args->zoom);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         ThreadLimit limit(args->threads);
-        const StudyOutput out = runContrastStudy(args->zoom, args->study, args->dir);
-        std::printf("%s\nwrote figure2_6.png, the corrected textures and contrast.csv to %s\n", out.table.c_str(),
-                    args->dir.c_str());
+        const ContrastStudyResult r = runZoomContrastStudy(args->zoom, args->study, args->dir);
+        std::printf("%s\nwrote figure2_6.png, the corrected textures and contrast.csv to %s\n",
+                    r.table.markdown().c_str(), args->dir.c_str());
     });
 }
 

@@ -8,7 +8,8 @@
 #include <sstream>
 
 #include "common.h"
-#include "pattern_sheet.h"
+#include "stochtex/report/table.h"
+#include "stochtex/studies/pattern_sheet.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"

@@ -8,7 +8,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"
-#include "zoom_studies.h"
+#include "zoom_flags.h"
 
 #if __has_include(<opencv2/videoio.hpp>) && defined(STOCHTEX_HAVE_VIDEOIO)
 #include <opencv2/videoio.hpp>
@@ -42,8 +42,7 @@ void registerZoom(CLI::App& app) {
         if (!std::isfinite(args->speed)) throw InputError("--speed must be finite");
         const int w = args->size[0], h = args->size.size() > 1 ? args->size[1] : args->size[0];
         if (w < 1 || h < 1 || w > 8192 || h > 8192) throw InputError("--size must be in [1, 8192] per side");
-        ZoomParams p = makeZoomParams(args->zoom);
-        const LatticeTexture base = makeBase(args->zoom);
+        const ZoomSource source(makeZoomParams(args->zoom), makeZoomBase(args->zoom));
         ensureFolder(args->dir);
         ThreadLimit limit(args->threads);
 #ifdef STOCHTEX_VIDEO
@@ -59,10 +58,9 @@ void registerZoom(CLI::App& app) {
             std::fprintf(stderr, "note: built without OpenCV videoio (Debian: libopencv-videoio-dev); "
                                  "writing PNG frames only\n");
 #endif
-        const double t0 = p.time;
+        const double t0 = source.params().time;
         for (int k = 0; k < args->frames; ++k) {
-            p.time = t0 + k / args->fps * args->speed;
-            const Image frame = renderZoom(base, p, ZoomRegion::centred(w, h));
+            const Image frame = source.render(SourceRegion::centred(w, h), t0 + k / args->fps * args->speed, 0);
             char name[32];
             std::snprintf(name, sizeof name, "frame_%04d.png", k);
             writeImage((fs::path(args->dir) / name).string(), frame);

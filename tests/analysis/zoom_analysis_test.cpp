@@ -7,7 +7,7 @@
 
 #include "stochtex/analysis/contrast.h"
 #include "stochtex/analysis/correlation_accumulator.h"
-#include "stochtex/analysis/zoom_statistics.h"
+#include "stochtex/textures/zoom_statistics.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"

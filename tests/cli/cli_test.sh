@@ -208,9 +208,9 @@ case_bad_spec() {
 case_bad_study_flags() {
   expect_bad "zoom n = 0" "$out/zbad1" "--layers: layers (n) must be in [1, 1024], got 0" -- "$bin" zoom -o "$out/zbad1" --layers 0
   expect_bad "zoom H <= 0" "$out/zbad2" "--max-scale: maxScale (H) must be a finite number in (0, 1000], got 0" -- "$bin" zoom -o "$out/zbad2" --max-scale 0
-  expect_bad "correlation N = 0" "$out/zbad3" "--instances must be in [2, 1e6]" -- "$bin" correlation -o "$out/zbad3" --instances 0
+  expect_bad "correlation N = 0" "$out/zbad3" "--instances: instances must be in [2, 1e6], got 0" -- "$bin" correlation -o "$out/zbad3" --instances 0
   expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image file" -- "$bin" contrast -o "$out/zbad4" --base "$work/nothere.png"
-  expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: every n must be in [1, 1024]" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
+  expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: layersList must hold layer counts in [1, 1024], got 0" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
   expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
   expect_bad "reproduce zero count" "$out/rbad2" "--count: count must be in [1, 1e6], got 0" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
 }

@@ -26,14 +26,7 @@ ColormapTable foldInverseTransforms(const Pattern& p) {
 
 }  // namespace
 
-FilterMode parseFilterMode(const std::string& name) {
-    if (name == "none") return FilterMode::None;
-    if (name == "paper") return FilterMode::Paper;
-    if (name == "smooth") return FilterMode::Smooth;
-    if (name == "exact") return FilterMode::Exact;
-    if (name == "reference") return FilterMode::Reference;
-    throw InputError::parameter("mode", "must be none, paper, smooth, exact or reference, got \"" + name + "\"");
-}
+FilterMode parseFilterMode(const std::string& name) { return parseEnum(kFilterModeNames, name, "mode"); }
 
 StatisticsSource statisticsSource(FilterMode mode) {
     switch (mode) {

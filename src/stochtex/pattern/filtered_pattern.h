@@ -19,6 +19,7 @@
 // `none`, which builds no table, H at the examples' means).
 #include <memory>
 
+#include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/pattern.h"
@@ -33,6 +34,11 @@ enum class FilterMode { None, Paper, Smooth, Exact, Reference };
 StatisticsSource statisticsSource(FilterMode mode);
 // The prefiltered table's mode (None and Reference build no table).
 PrefilterMode prefilterMode(FilterMode mode);
+inline const EnumNames<FilterMode> kFilterModeNames{{"none", FilterMode::None},
+                                                    {"paper", FilterMode::Paper},
+                                                    {"smooth", FilterMode::Smooth},
+                                                    {"exact", FilterMode::Exact},
+                                                    {"reference", FilterMode::Reference}};
 
 struct FilterOptions {
     FilterMode mode = FilterMode::Smooth;

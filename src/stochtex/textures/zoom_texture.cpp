@@ -193,24 +193,10 @@ Image renderZoom(const LatticeTexture& f, const ZoomParams& p, const ZoomRegion&
     return out;
 }
 
-ZoomScaling parseZoomScaling(const std::string& s) {
-    if (s == "sliding") return ZoomScaling::Sliding;
-    if (s == "exponential" || s == "fixed") return ZoomScaling::Exponential;
-    throw InputError::parameter("scaling", "must be sliding or exponential, got \"" + s + "\"");
-}
-
-ZoomOffsets parseZoomOffsets(const std::string& s) {
-    if (s == "none") return ZoomOffsets::None;
-    if (s == "simple") return ZoomOffsets::Simple;
-    if (s == "hashed") return ZoomOffsets::Hashed;
-    if (s == "sin-hash") return ZoomOffsets::SinHash;
-    throw InputError::parameter("offsets", "must be none, simple, hashed or sin-hash, got \"" + s + "\"");
-}
-
+ZoomScaling parseZoomScaling(const std::string& s) { return parseEnum(kZoomScalingNames, s, "scaling"); }
+ZoomOffsets parseZoomOffsets(const std::string& s) { return parseEnum(kZoomOffsetsNames, s, "offsets"); }
 LatticeInterpolation parseLatticeInterpolation(const std::string& s) {
-    if (s == "nearest") return LatticeInterpolation::Nearest;
-    if (s == "linear") return LatticeInterpolation::Linear;
-    throw InputError::parameter("interpolation", "must be nearest or linear, got \"" + s + "\"");
+    return parseEnum(kLatticeInterpolationNames, s, "interpolation");
 }
 
 }  // namespace stochtex

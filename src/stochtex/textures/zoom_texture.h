@@ -22,13 +22,22 @@
 #include <string>
 #include <vector>
 
+#include "stochtex/core/enum_names.h"
 #include "stochtex/image/image.h"
 
 namespace stochtex {
 
 enum class ZoomScaling { Sliding, Exponential };
+inline const EnumNames<ZoomScaling> kZoomScalingNames{
+    {"sliding", ZoomScaling::Sliding}, {"exponential", ZoomScaling::Exponential}, {"fixed", ZoomScaling::Exponential}};
 enum class ZoomOffsets { None, Simple, Hashed, SinHash };
+inline const EnumNames<ZoomOffsets> kZoomOffsetsNames{{"none", ZoomOffsets::None},
+                                                      {"simple", ZoomOffsets::Simple},
+                                                      {"hashed", ZoomOffsets::Hashed},
+                                                      {"sin-hash", ZoomOffsets::SinHash}};
 enum class LatticeInterpolation { Nearest, Linear };
+inline const EnumNames<LatticeInterpolation> kLatticeInterpolationNames{{"nearest", LatticeInterpolation::Nearest},
+                                                                        {"linear", LatticeInterpolation::Linear}};
 
 struct ZoomParams {
     int layers = 8;                 // n
@@ -99,8 +108,7 @@ double evaluateZoom(const LatticeTexture& f, const std::vector<ZoomLayer>& layer
 // the result does not depend on the thread count).
 Image renderZoom(const LatticeTexture& f, const ZoomParams& p, const ZoomRegion& region);
 
-// Parsers for the CLI ("sliding|exponential", "none|simple|hashed|sin-hash",
-// "nearest|linear"); InputError otherwise.
+// Parsers over the name tables above; InputError naming the parameter otherwise.
 ZoomScaling parseZoomScaling(const std::string& s);
 ZoomOffsets parseZoomOffsets(const std::string& s);
 LatticeInterpolation parseLatticeInterpolation(const std::string& s);

@@ -1,11 +1,11 @@
-#include "pattern_sheet.h"
+#include "stochtex/studies/pattern_sheet.h"
 
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-namespace stochtex::cli {
+namespace stochtex {
 
 namespace {
 
@@ -63,4 +63,4 @@ PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const 
     return out;
 }
 
-}  // namespace stochtex::cli
+}  // namespace stochtex

@@ -6,7 +6,7 @@
 #include "stochtex/image/image.h"
 #include "stochtex/pattern/pattern.h"
 
-namespace stochtex::cli {
+namespace stochtex {
 
 struct PatternSheet {
     Image pattern;  // size × size, the view at `scale` texels per pixel
@@ -14,4 +14,4 @@ struct PatternSheet {
 };
 PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const std::string& label);
 
-}  // namespace stochtex::cli
+}  // namespace stochtex

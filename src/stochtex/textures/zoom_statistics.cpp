@@ -1,4 +1,4 @@
-#include "stochtex/analysis/zoom_statistics.h"
+#include "stochtex/textures/zoom_statistics.h"
 
 #include <cmath>
 

@@ -1,0 +1,73 @@
+#include "zoom_flags.h"
+
+#include "stochtex/image/image_io.h"
+
+namespace stochtex::cli {
+
+void addZoomFlags(CLI::App& cmd, ZoomFlags& f, bool withLayers) {
+    ZoomParams& p = f.params;
+    if (withLayers) cmd.add_option("--layers", p.layers, "Number of layers n (eq. 2.1)")->capture_default_str();
+    cmd.add_option("--max-scale", p.maxScale, "Maximum scale H")->capture_default_str();
+    cmd.add_option("--time", p.time, "Time t (first frame)")->capture_default_str();
+    cmd.add_option("--envelope-sigma", p.envelopeSigma, "Width of the Gaussian envelope A around a = 1")
+        ->capture_default_str();
+    cmd.add_option("--scaling", p.scaling, "sliding (eq. 2.2) or exponential (eq. 2.5, no sliding)")
+        ->transform(CLI::CheckedTransformer(kZoomScalingNames))
+        ->default_str("exponential");
+    cmd.add_option("--offsets", p.offsets, "Layer offsets: none, simple, hashed (pcg3d) or sin-hash (eq. 2.23)")
+        ->transform(CLI::CheckedTransformer(kZoomOffsetsNames))
+        ->default_str("none");
+    cmd.add_option("--interpolation", p.interpolation, "Base lattice reconstruction: nearest or linear")
+        ->transform(CLI::CheckedTransformer(kLatticeInterpolationNames))
+        ->default_str("linear");
+    cmd.add_option("--base", f.base, "Base texture: 'white' (white noise) or a grayscale image file")
+        ->capture_default_str();
+    cmd.add_option("--base-size", f.baseSize, "Period of the white-noise lattice")
+        ->check(CLI::Range(2, 16384))
+        ->capture_default_str();
+    cmd.add_option("--seed", f.seed, "Seed of the white noise (instance k uses a seed derived from it)")
+        ->capture_default_str();
+}
+
+ZoomParams makeZoomParams(const ZoomFlags& f) {
+    ZoomParams p = f.params;
+    p.offsetSeed = f.seed;
+    validateZoomParams(p);
+    return p;
+}
+
+ZoomBase makeZoomBase(const ZoomFlags& f) {
+    ZoomBase b;
+    b.size = f.baseSize;
+    b.seed = f.seed;
+    if (f.base != "white") b.image = toGray(readImage(f.base));
+    return b;
+}
+
+void addCorrelationStudyFlags(CLI::App& cmd, CorrelationStudyOptions& study, const std::string& sizeFlag,
+                              bool withVariants) {
+    if (withVariants)
+        cmd.add_option("--variant", study.variants, "Variants: sliding, fixed, simple, random (repeatable)")
+            ->delimiter(',')
+            ->transform(CLI::CheckedTransformer(kZoomVariantNames))
+            ->default_str("sliding,fixed,simple,random");
+    cmd.add_option("--layers-list", study.layers, "Layer counts n of the correlation grid, e.g. 16,8,4,2")
+        ->delimiter(',')
+        ->default_str("16,8,4,2");
+    cmd.add_option("--instances", study.instances, "Instances N of the statistical accumulator")->capture_default_str();
+    cmd.add_option(sizeFlag, study.size, "Extent of the correlation plots in pixels from the zoom centre")
+        ->capture_default_str();
+}
+
+ContrastStudyResult runZoomContrastStudy(const ZoomFlags& flags, const ContrastStudyOptions& study,
+                                         const std::string& dir) {
+    validateContrastStudy(study);
+    const ZoomSource source(makeZoomParams(flags), makeZoomBase(flags));
+    ensureFolder(dir);
+    const ContrastStudyResult r = contrastStudy(source, zoomContrastTargets(source, study.size), study);
+    writeFigures(dir, r.figures);
+    writeText(dir, "contrast.csv", r.table.csv());
+    return r;
+}
+
+}  // namespace stochtex::cli

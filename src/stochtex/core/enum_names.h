@@ -1,0 +1,41 @@
+#pragma once
+// One name table per enum, declared next to the enum and used by every
+// reader of names: the parsers here, the CLI's transformers (CLI11 takes the
+// same vector of pairs), the JSON reader and the bake manifest. The first
+// name of a value is its canonical name; later ones are aliases.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stochtex/core/error.h"
+
+namespace stochtex {
+
+template <class E>
+using EnumNames = std::vector<std::pair<std::string, E>>;
+
+// The canonical name of v ("?" if the table lacks it: a bug).
+template <class E>
+const std::string& enumName(const EnumNames<E>& names, E v) {
+    static const std::string unknown = "?";
+    for (const auto& [name, value] : names)
+        if (value == v) return name;
+    return unknown;
+}
+
+// The value named s; for a name not in the table, InputError naming the
+// parameter: "what must be a, b or c, got "s"" (canonical names only).
+template <class E>
+E parseEnum(const EnumNames<E>& names, const std::string& s, const std::string& what) {
+    std::vector<std::string> canonical;
+    for (const auto& [name, value] : names) {
+        if (name == s) return value;
+        if (enumName(names, value) == name) canonical.push_back(name);
+    }
+    std::string expected;
+    for (size_t i = 0; i < canonical.size(); ++i)
+        expected += (i == 0 ? "" : i + 1 == canonical.size() ? " or " : ", ") + canonical[i];
+    throw InputError::parameter(what, "must be " + expected + ", got \"" + s + "\"");
+}
+
+}  // namespace stochtex

@@ -1,0 +1,38 @@
+#pragma once
+// The report pages (`analyze`, `reproduce all`) and the files of a study:
+// figures with captions, the HTML page frame, output folders.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "stochtex/image/image.h"
+
+namespace stochtex {
+
+// One image a study made: its file name in the study's folder and what it
+// shows (an empty caption: written, but not shown on report pages).
+struct Figure {
+    std::string file;
+    Image image;
+    std::string caption;
+};
+
+// Creates dir (and parents); InputError naming it if that fails.
+void ensureFolder(const std::string& dir);
+
+// Writes every figure's image into dir (PNG or EXR by the file's extension).
+void writeFigures(const std::string& dir, const std::vector<Figure>& figures);
+
+// Writes text to dir/file atomically (CSV, Markdown, HTML).
+void writeText(const std::string& dir, const std::string& file, const std::string& text);
+
+// <figure> elements linking to prefix + file for the captioned figures,
+// at most `limit` of them.
+std::string htmlFigures(const std::string& prefix, const std::vector<Figure>& figures, size_t limit = SIZE_MAX);
+
+// A whole page: <head> with the report style (content at most maxWidthPx
+// wide, figure captions at most captionWidthPx), then body (HTML) unchanged.
+std::string htmlPage(const std::string& title, const std::string& body, int maxWidthPx = 1200,
+                     int captionWidthPx = 560);
+
+}  // namespace stochtex

@@ -1,0 +1,70 @@
+#pragma once
+// The paper's accuracy evidence (Grenier et al. 2022) as data: Table 1
+// (estimator errors), Figure 4 (filtered vs reference images and error
+// maps), Figures 7–9 (colormap layouts, palettes, noise spectra). Each
+// returns tables and images; writing them is the caller's (report/).
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stochtex/analysis/estimator_error.h"
+#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/report/page.h"
+#include "stochtex/report/table.h"
+
+namespace stochtex {
+
+// Progress lines for a terminal (may be empty).
+using StudyProgress = std::function<void(const std::string&)>;
+
+// The two noises of Table 1 (the paper describes them only as "a low
+// frequency isotropic noise and a high frequency anisotropic noise"):
+// 512² examples, N_x and N_y of the same spectrum with different seeds.
+constexpr int kTable1ExampleSize = 512;
+const char* table1NoiseName(int which);  // 0: low, 1: high
+PatternSpec table1PatternSpec(int which, uint32_t seed);
+
+struct Table1Options {
+    EstimatorErrorOptions errors;
+    uint32_t seed = 1;  // of the noises (footprint centres: errors.seed)
+};
+// InputError for unusable options (count, footprints).
+void validateTable1(const Table1Options& options);
+
+struct Table1Result {
+    std::array<std::vector<EstimatorError>, 2> rows;  // low, high; ordered as measureEstimatorErrors
+    Table data;                 // one row per noise × footprint × estimator (table1.csv)
+    std::vector<Table> tables;  // the paper's layout: one per estimator, then the published numbers
+    std::vector<Figure> figures;  // mean error vs footprint, ours and published
+};
+Table1Result table1(const Table1Options& options, const StudyProgress& progress = {});
+
+struct Figure4Options {
+    PatternSpec pattern;  // the paper uses the camouflage preset
+    std::string name = "camouflage";
+    int size = 512;                // image side per footprint, [16, 4096]
+    int referenceSamples = 64;     // per axis, [1, 4096]
+    std::vector<int> footprints{1, 2, 4, 8, 16, 32, 64, 128};
+    FilterMode mode = FilterMode::Smooth;  // smooth or paper: the estimators go through a table
+};
+void validateFigure4(const Figure4Options& options);
+
+struct Figure4Column {
+    int footprint = 0;
+    double meanErrorExact = 0, meanErrorEstimated = 0;  // mean ‖Ŝ − S̄‖₂ over the pixels (RGB)
+};
+struct Figure4Result {
+    std::vector<Figure4Column> columns;
+    Table table;                  // figure4.csv and the summary
+    std::vector<Figure> figures;  // figure4.png, figure4_errors.png, then the images per footprint
+};
+Figure4Result figure4(const Figure4Options& options, const StudyProgress& progress = {});
+
+// Figures 7–9: each a sheet of four presets (pattern, colormap, where N
+// falls, the two noises), `size` pixels per pattern, [64, 2048].
+void validateFigures7to9(int size);
+std::vector<Figure> figures7to9(int size, const StudyProgress& progress = {});
+
+}  // namespace stochtex

@@ -1,0 +1,78 @@
+#include "stochtex/textures/texture_source.h"
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/hash.h"
+
+namespace stochtex {
+
+ZoomSource::ZoomSource(const ZoomParams& params, ZoomBase base) : params_(params), base_(std::move(base)) {
+    validateZoomParams(params_);
+    if (base_.image.empty() && (base_.size < 2 || base_.size > 16384))
+        throw InputError("zoom base: the white-noise lattice size must be in [2, 16384], got " +
+                         std::to_string(base_.size));
+    first_ = lattice(0);
+}
+
+LatticeTexture ZoomSource::lattice(int instance) const {
+    if (!base_.image.empty()) return LatticeTexture::fromImage(base_.image.channels() == 1 ? base_.image : toGray(base_.image));
+    return LatticeTexture::whiteNoise(base_.size, base_.size, deriveSeed(base_.seed, uint32_t(instance)));
+}
+
+Image ZoomSource::render(const SourceRegion& region, double time, int instance) const {
+    ZoomParams p = params_;
+    p.time = time;
+    const ZoomRegion r{region.width, region.height, region.x0, region.y0};
+    return renderZoom(instance == 0 || !base_.image.empty() ? first_ : lattice(instance), p, r);
+}
+
+std::unique_ptr<const AnalyticStatistics> ZoomSource::statistics(double time) const {
+    ZoomParams p = params_;
+    p.time = time;
+    return std::make_unique<ZoomAnalyticStatistics>(p, first_);
+}
+
+std::array<double, 2> instanceOffset(int instance, int exampleSize) {
+    if (instance == 0) return {0.0, 0.0};
+    // Whole texels up to 1024 periods: far enough for a new set of tile
+    // offsets, near enough that double uv keeps every fraction of a texel.
+    const UInt3 h = pcg3d({uint32_t(instance), 0x5eedu, 0x0ff5e7u});
+    const uint32_t range = 1024u * uint32_t(exampleSize);
+    return {double(h.x % range), double(h.y % range)};
+}
+
+namespace {
+
+// The view of `base` moved to the region and to the instance's window.
+View windowView(View base, const SourceRegion& region, int instance, int exampleSize) {
+    const auto o = instanceOffset(instance, exampleSize);
+    base.width = region.width;
+    base.height = region.height;
+    base.offsetU += region.x0 * base.scale + o[0];
+    base.offsetV += region.y0 * base.scale + o[1];
+    return base;
+}
+
+}  // namespace
+
+Image PatternSource::render(const SourceRegion& region, double, int instance) const {
+    return pattern_.render(windowView(view_, region, instance, pattern_.exampleSize()));
+}
+
+Image FilteredPatternSource::render(const SourceRegion& region, double, int instance) const {
+    Camera c = camera_;
+    if (c.kind == Camera::Kind::Plane) {
+        // A perspective frame is not translation invariant: only whole frames.
+        if (region.x0 != 0 || region.y0 != 0)
+            throw InputError("filtered pattern source: a plane camera renders whole frames (region offset must be 0)");
+        const auto o = instanceOffset(instance, exampleSize_);
+        c.view.width = region.width;
+        c.view.height = region.height;
+        c.view.offsetU += o[0];
+        c.view.offsetV += o[1];
+    } else {
+        c.view = windowView(c.view, region, instance, exampleSize_);
+    }
+    return filtered_.render(c);
+}
+
+}  // namespace stochtex

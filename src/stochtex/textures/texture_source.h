@@ -1,0 +1,127 @@
+#pragma once
+// Frames of a texture for the studies: a source renders a window of its
+// plane at a time t and for an instance i (a realisation of its random
+// process), and tells its closed-form statistics where it knows them.
+//
+// Adapters: the stationary zoom texture (instance i = white-noise lattice i,
+// analytic statistics from ZoomStatistics), a Pattern (unfiltered) and a
+// FilteredPattern (any FilterMode, through its Camera). Patterns are static
+// (t is ignored); their instance i ≠ 0 is the same texture seen through a
+// window moved by a hashed offset of up to 1024 example periods, which for
+// the tiled-and-blended noise (tiles hashed per grid cell) is another draw of
+// the random tile offsets. Instance 0 is the plain render.
+#include <memory>
+
+#include "stochtex/image/image.h"
+#include "stochtex/pattern/camera.h"
+#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/pattern.h"
+#include "stochtex/textures/zoom_statistics.h"
+#include "stochtex/textures/zoom_texture.h"
+
+namespace stochtex {
+
+// A window of a source's pixel grid: image pixel (px, py) shows the
+// source's pixel (x0 + px, y0 + py). For the zoom texture the source's
+// pixels are the plane's points relative to the zoom centre; for patterns,
+// pixel (0, 0) is the pixel (0, 0) of the pattern's view or camera.
+struct SourceRegion {
+    int width = 256, height = 256;
+    double x0 = 0, y0 = 0;
+    static SourceRegion centred(int width, int height) { return {width, height, -0.5 * width, -0.5 * height}; }
+};
+
+// Moments over instances of a 1-channel source at one time, in closed form.
+class AnalyticStatistics {
+public:
+    virtual ~AnalyticStatistics() = default;
+    virtual double mean(double x, double y) const = 0;
+    virtual double variance(double x, double y) const = 0;
+    virtual double correlation(double x1, double y1, double x2, double y2) const = 0;
+};
+
+class TextureSource {
+public:
+    virtual ~TextureSource() = default;
+    virtual int channels() const = 0;
+    virtual Image render(const SourceRegion& region, double time, int instance) const = 0;
+    // nullptr where the source has no closed form.
+    virtual std::unique_ptr<const AnalyticStatistics> statistics(double /*time*/) const { return nullptr; }
+};
+
+// The zoom texture over a white-noise lattice (size × size, instance i uses
+// the seed deriveSeed(seed, i)) or over one gray image (every instance alike).
+struct ZoomBase {
+    int size = 512;
+    uint32_t seed = 1;
+    Image image;  // empty: white noise
+};
+
+class ZoomSource : public TextureSource {
+public:
+    // InputError for unusable parameters (validateZoomParams) or base.
+    ZoomSource(const ZoomParams& params, ZoomBase base);
+    const ZoomParams& params() const { return params_; }
+    // The lattice of one instance (the first one is kept).
+    LatticeTexture lattice(int instance) const;
+    const LatticeTexture& firstLattice() const { return first_; }
+
+    int channels() const override { return 1; }
+    Image render(const SourceRegion& region, double time, int instance) const override;
+    std::unique_ptr<const AnalyticStatistics> statistics(double time) const override;
+
+private:
+    ZoomParams params_;
+    ZoomBase base_;
+    LatticeTexture first_;
+};
+
+// The analytic statistics of the zoom texture (μ_f; σ_f² α(x, x); eq. 2.11).
+class ZoomAnalyticStatistics : public AnalyticStatistics {
+public:
+    ZoomAnalyticStatistics(const ZoomParams& params, const LatticeTexture& lattice)
+        : stats_(params, lattice.width(), lattice.height()), mean_(lattice.mean()), variance_(lattice.variance()) {}
+    const ZoomStatistics& zoom() const { return stats_; }
+    double mean(double, double) const override { return mean_; }
+    double variance(double x, double y) const override { return variance_ * stats_.varianceFactor(x, y); }
+    double correlation(double x1, double y1, double x2, double y2) const override {
+        return stats_.correlation(x1, y1, x2, y2);
+    }
+
+private:
+    ZoomStatistics stats_;
+    double mean_, variance_;
+};
+
+// The window offset (in texels) of pattern instance i: (0, 0) for i = 0.
+std::array<double, 2> instanceOffset(int instance, int exampleSize);
+
+// An unfiltered pattern seen through `view` (its size is ignored: the
+// region's is used). The pattern must outlive the source.
+class PatternSource : public TextureSource {
+public:
+    PatternSource(const Pattern& pattern, const View& view) : pattern_(pattern), view_(view) {}
+    int channels() const override { return 3; }
+    Image render(const SourceRegion& region, double time, int instance) const override;
+
+private:
+    const Pattern& pattern_;
+    View view_;
+};
+
+// A filtered pattern through `camera` (its size is ignored). The filtered
+// pattern must outlive the source.
+class FilteredPatternSource : public TextureSource {
+public:
+    FilteredPatternSource(const FilteredPattern& filtered, int exampleSize, const Camera& camera)
+        : filtered_(filtered), exampleSize_(exampleSize), camera_(camera) {}
+    int channels() const override { return 3; }
+    Image render(const SourceRegion& region, double time, int instance) const override;
+
+private:
+    const FilteredPattern& filtered_;
+    int exampleSize_;
+    Camera camera_;
+};
+
+}  // namespace stochtex

@@ -1,0 +1,317 @@
+// The studies as library calls: texture sources, the report table, and each
+// study on small sizes with fixed seeds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/hash.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/presets.h"
+#include "stochtex/report/page.h"
+#include "stochtex/report/table.h"
+#include "stochtex/studies/paper.h"
+#include "stochtex/studies/zoom_studies.h"
+
+namespace stochtex {
+namespace {
+
+bool sameImage(const Image& a, const Image& b) {
+    return a.width() == b.width() && a.height() == b.height() && a.channels() == b.channels() && a.data() == b.data();
+}
+
+const Figure* find(const std::vector<Figure>& figures, const std::string& file) {
+    for (const auto& f : figures)
+        if (f.file == file) return &f;
+    return nullptr;
+}
+
+// --- names and the report table ---
+
+TEST(EnumNames, ParseAndNameUseOneTable) {
+    EXPECT_EQ(parseEnum(kZoomOffsetsNames, "sin-hash", "offsets"), ZoomOffsets::SinHash);
+    EXPECT_EQ(parseEnum(kZoomScalingNames, "fixed", "scaling"), ZoomScaling::Exponential);  // alias
+    EXPECT_EQ(enumName(kZoomScalingNames, ZoomScaling::Exponential), "exponential");      // canonical = first
+    EXPECT_EQ(enumName(kZoomVariantNames, ZoomVariant::Random), "random");
+    try {
+        parseEnum(kLatticeInterpolationNames, "cubic", "interpolation");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "interpolation must be nearest or linear, got \"cubic\"");
+    }
+}
+
+TEST(Table, RendersCsvMarkdownAndHtmlFromTheSameRows) {
+    Table t;
+    t.title = "Errors";
+    t.note = "(2 rows)";
+    t.columns = {{"name", "image", ""}, {"clamped_percent", "clamped", "%"}, {"n", "n", ""}};
+    t.add({"a<b", TableCell::value(1.23456, "%.2f"), TableCell::integer(7)});
+    t.add({"c", TableCell::value(0.5), "text"});
+    EXPECT_EQ(t.csv(), "name,clamped_percent,n\na<b,1.23456,7\nc,0.5,text\n");
+    EXPECT_EQ(t.markdown(), "**Errors** (2 rows)\n\n| image | clamped (%) | n |\n|---|---|---|\n"
+                            "| a<b | 1.23 | 7 |\n| c | 0.5000 | text |\n");
+    EXPECT_EQ(t.html(), "<p><b>Errors</b> (2 rows)</p>\n<table><tr><th>image</th><th>clamped (%)</th><th>n</th></tr>"
+                        "<tr><td>a&lt;b</td><td>1.23</td><td>7</td></tr><tr><td>c</td><td>0.5000</td><td>text</td>"
+                        "</tr></table>\n");
+    EXPECT_THROW(t.add({"too few"}), std::logic_error);
+}
+
+TEST(Report, HtmlFiguresShowOnlyCaptionedFiguresUpToTheLimit) {
+    const std::vector<Figure> f{{"a.png", {}, "A & B"}, {"hidden.png", {}, ""}, {"b.png", {}, "B"}};
+    EXPECT_EQ(htmlFigures("p/", f, 1),
+              "<figure><a href='p/a.png'><img src='p/a.png'></a><figcaption>A &amp; B</figcaption></figure>\n");
+    const std::string all = htmlFigures("", f);
+    EXPECT_EQ(all.find("hidden"), std::string::npos);
+    EXPECT_NE(all.find("b.png"), std::string::npos);
+}
+
+// --- texture sources ---
+
+TEST(TextureSource, ZoomInstancesAreTheLatticesOfDerivedSeeds) {
+    ZoomParams p;
+    p.layers = 4;
+    const ZoomSource source(p, ZoomBase{64, 9, {}});
+    const SourceRegion region{24, 16, -3.0, 5.0};
+    ZoomParams later = p;
+    later.time = 0.25;
+    const ZoomRegion zr{24, 16, -3.0, 5.0};
+    EXPECT_TRUE(sameImage(source.render(region, 0.25, 0),
+                          renderZoom(LatticeTexture::whiteNoise(64, 64, deriveSeed(9, 0)), later, zr)));
+    EXPECT_TRUE(sameImage(source.render(region, 0.25, 3),
+                          renderZoom(LatticeTexture::whiteNoise(64, 64, deriveSeed(9, 3)), later, zr)));
+    EXPECT_FALSE(sameImage(source.render(region, 0.25, 0), source.render(region, 0.25, 1)));
+    // Statistics: μ_f = ½, σ_f² α(x, x) with σ_f² = 1/12 of uniform white noise.
+    const auto stats = source.statistics(0.25);
+    ASSERT_TRUE(stats);
+    const ZoomStatistics zs(later, 64, 64);
+    EXPECT_DOUBLE_EQ(stats->mean(1.5, 2.5), source.firstLattice().mean());
+    EXPECT_DOUBLE_EQ(stats->variance(1.5, 2.5), source.firstLattice().variance() * zs.varianceFactor(1.5, 2.5));
+    EXPECT_DOUBLE_EQ(stats->correlation(0, 0, 3, 0), zs.correlation(0, 0, 3, 0));
+    EXPECT_NEAR(stats->correlation(2, 2, 2, 2), 1.0, 1e-12);
+    EXPECT_THROW(ZoomSource(p, ZoomBase{1, 1, {}}), InputError);
+}
+
+TEST(TextureSource, PatternInstanceZeroIsThePlainRenderAndRegionsTranslate) {
+    const Pattern pattern = Pattern::build(loadPreset("marble"));
+    View view;
+    view.scale = 1;
+    view.width = view.height = 40;
+    const PatternSource source(pattern, view);
+    EXPECT_EQ(source.channels(), 3);
+    EXPECT_FALSE(source.statistics(0));
+    const Image full = pattern.render(view);
+    EXPECT_TRUE(sameImage(source.render({40, 40, 0, 0}, 7.0, 0), full));  // static: t ignored
+    const Image shifted = source.render({16, 8, 8, 4}, 0.0, 0);
+    bool same = true;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 3; ++c) same = same && shifted.at(x, y, c) == full.at(x + 8, y + 4, c);
+    EXPECT_TRUE(same);
+    // Another instance: the window moved by whole texels.
+    const auto o = instanceOffset(1, pattern.exampleSize());
+    EXPECT_EQ(o[0], std::floor(o[0]));
+    EXPECT_GT(o[0] + o[1], 0.0);
+    View moved = view;
+    moved.offsetU = o[0];
+    moved.offsetV = o[1];
+    EXPECT_TRUE(sameImage(source.render({40, 40, 0, 0}, 0.0, 1), pattern.render(moved)));
+}
+
+TEST(TextureSource, FilteredPatternInstanceZeroIsTheCameraRender) {
+    const Pattern pattern = Pattern::build(loadPreset("marble"));
+    for (FilterMode mode : {FilterMode::None, FilterMode::Smooth}) {
+        FilterOptions fo;
+        fo.mode = mode;
+        const FilteredPattern filtered(pattern, fo);
+        Camera cam;
+        cam.view.width = cam.view.height = 24;
+        cam.view.scale = 4;
+        const FilteredPatternSource source(filtered, pattern.exampleSize(), cam);
+        EXPECT_TRUE(sameImage(source.render({24, 24, 0, 0}, 0.0, 0), filtered.render(cam)));
+        cam.kind = Camera::Kind::Plane;
+        const FilteredPatternSource plane(filtered, pattern.exampleSize(), cam);
+        EXPECT_TRUE(sameImage(plane.render({24, 24, 0, 0}, 0.0, 0), filtered.render(cam)));
+        EXPECT_THROW(plane.render({24, 24, 1, 0}, 0.0, 0), InputError);
+    }
+}
+
+// --- the zoom studies ---
+
+// As tests/analysis (AnalyticAndMeasuredCorrelationAgreeForEveryVariant):
+// N = 512 instances pin a correlation to ≈ (1 − ρ²)/√N ≤ 0.044.
+TEST(Studies, MeasuredCorrelationOfTheZoomSourceMatchesItsClosedForm) {
+    ZoomParams p;
+    p.layers = 6;
+    p.offsets = ZoomOffsets::Hashed;
+    const ZoomSource source(p, ZoomBase{64, 3, {}});
+    const CorrelationMeasurement m = measureCorrelation(source, {32, 512, 0.0});
+    ASSERT_EQ(m.analyticRadial.width(), 32);
+    double radial = 0, nonRadial = 0;
+    for (size_t i = 0; i < m.analyticRadial.data().size(); ++i) {
+        radial += std::abs(m.analyticRadial.data()[i] - m.measuredRadial.data()[i]);
+        nonRadial += std::abs(m.analyticNonRadial.data()[i] - m.measuredNonRadial.data()[i]);
+    }
+    EXPECT_LT(radial / (32 * 32), 0.05);
+    EXPECT_LT(nonRadial / (32 * 32), 0.05);
+    EXPECT_GT(radial, 0.0);  // a measurement, not a copy
+    EXPECT_NEAR(m.measuredPoint.at(16, 16), 1.0, 1e-5);
+}
+
+TEST(Studies, CorrelationOfAPatternHasNoClosedFormButMeasures) {
+    const Pattern pattern = Pattern::build(loadPreset("marble"));
+    View view;
+    view.scale = 1;
+    const PatternSource source(pattern, view);
+    const CorrelationMeasurement m = measureCorrelation(source, {8, 128, 0.0});
+    EXPECT_TRUE(m.analyticRadial.empty());
+    for (int x = 0; x < 8; ++x) EXPECT_NEAR(m.measuredRadial.at(x, x), 1.0, 1e-5);
+    // Neighbouring texels of a smooth pattern correlate, more than far ones
+    // (N = 128: a correlation is pinned to ≈ 0.09).
+    EXPECT_GT(m.measuredRadial.at(1, 0), 0.5);
+    EXPECT_GT(m.measuredRadial.at(1, 0), m.measuredRadial.at(7, 0) + 0.2);
+}
+
+TEST(Studies, CorrelationStudyRowsAndEchoes) {
+    CorrelationStudyOptions o;
+    o.base.size = 64;
+    o.variants = {ZoomVariant::Fixed, ZoomVariant::Random};
+    o.layers = {8};
+    o.instances = 16;
+    o.size = 48;
+    const CorrelationStudyResult r = correlationStudy(o);
+    ASSERT_EQ(r.table.rows.size(), 2u);
+    EXPECT_EQ(r.table.rows[1][0].text, "random");
+    EXPECT_EQ(*r.table.rows[1][1].number, 8);
+    EXPECT_EQ(*r.table.rows[1][2].number, 16);
+    // As HashedOffsetsRemoveTheEchoes: off the diagonal band, hashed offsets
+    // leave < 0.05 of analytic correlation, unshifted layers > 0.3.
+    EXPECT_GT(*r.table.rows[0][6].number, 0.3);
+    EXPECT_LT(*r.table.rows[1][6].number, 0.05);
+    EXPECT_EQ(r.figures.size(), 1u + 2u * 7u);
+    EXPECT_EQ(r.figures[0].file, "figure2_10.png");
+    ASSERT_TRUE(find(r.figures, "random_n8_instance.png"));
+    EXPECT_EQ(find(r.figures, "random_n8_instance.png")->image.width(), 96);
+    o.instances = 1;
+    EXPECT_THROW(correlationStudy(o), InputError);
+}
+
+TEST(Studies, ContrastStudyOfTheZoomTexture) {
+    ZoomParams p;
+    p.layers = 8;
+    const ZoomSource source(p, ZoomBase{128, 1, {}});
+    ContrastStudyOptions o;
+    o.size = 64;
+    const ContrastStudyResult r = contrastStudy(source, zoomContrastTargets(source, o.size), o);
+    ASSERT_EQ(r.table.rows.size(), 5u);  // base, uncorrected, linear, polynomial, sigmoid
+    const auto& base = r.table.rows[0];
+    const auto& uncorrected = r.table.rows[1];
+    const auto& linear = r.table.rows[2];
+    const auto& sigmoid = r.table.rows[4];
+    EXPECT_EQ(sigmoid[0].text, "sigmoid");
+    EXPECT_EQ(*sigmoid[1].number, 0.0);  // the sigmoid never clamps
+    EXPECT_GT(*linear[1].number, 0.0);   // the linear map does
+    // The blend loses contrast; the linear correction restores most of the
+    // base's std (uniform: 1/√12 ≈ 0.289) despite clamping.
+    EXPECT_LT(*uncorrected[4].number, 0.5 * *base[4].number);
+    EXPECT_NEAR(*linear[4].number, *base[4].number, 0.05);
+    EXPECT_NEAR(*uncorrected[3].number, 0.5, 0.05);
+    ASSERT_TRUE(find(r.figures, "figure2_6.png"));
+    ASSERT_TRUE(find(r.figures, "polynomial_non_monotone.png"));
+    EXPECT_EQ(find(r.figures, "texture.png")->image.width(), 64);
+    // Colour sources and sources without statistics cannot be corrected.
+    const Pattern pattern = Pattern::build(loadPreset("marble"));
+    EXPECT_THROW(contrastStudy(PatternSource(pattern, View{}), {}, o), InputError);
+}
+
+TEST(Studies, SlidingStudyShowsBothScalings) {
+    ZoomParams p;
+    p.layers = 4;
+    const std::vector<Figure> f = slidingStudy(p, ZoomBase{64, 1, {}});
+    ASSERT_EQ(f.size(), 2u);
+    EXPECT_EQ(f[0].file, "frames.png");
+    EXPECT_GE(f[0].image.width(), 4 * 256);
+    EXPECT_EQ(f[1].file, "scales.png");
+}
+
+// --- the paper's evidence ---
+
+// The Table 1 pattern is built directly; it is the pattern the JSON of the
+// former CLI described.
+TEST(Studies, Table1PatternSpecIsTheDocumentedJson) {
+    const char* json[2] = {R"({"type": "spectrum", "size": 512, "components": [{"shape": "lowpass", "cutoff": 8}]})",
+                           R"({"type": "spectrum", "size": 512, "components": [{"shape": "bilobe", "frequency": 32,
+                               "bandwidth": 3, "orientation": 30}]})"};
+    for (int which = 0; which < 2; ++which) {
+        const std::string text = std::string("{\"name\": \"table1\", \"seed\": 5, \"noise_x\": ") + json[which] +
+                                 ", \"noise_y\": " + json[which] + ", \"colormap\": {\"type\": \"gaussian\"}}";
+        const PatternSpec parsed = parsePatternSpec(JsonReader(JsonReader::parse(text, "t"), "t"), ".");
+        const PatternSpec built = table1PatternSpec(which, 5);
+        for (int axis = 0; axis < 2; ++axis) {
+            NoiseSpec a = parsed.noise[axis], b = built.noise[axis];
+            a.spectrum.seed = noiseSeed(parsed, axis);
+            b.spectrum.seed = noiseSeed(built, axis);
+            EXPECT_TRUE(sameImage(buildExampleImage(a, "a"), buildExampleImage(b, "b"))) << which << axis;
+        }
+        EXPECT_EQ(built.offsets, parsed.offsets);
+        EXPECT_EQ(built.gridDensity, parsed.gridDensity);
+        EXPECT_TRUE(sameImage(buildColormap(built.colormap).toImage(), buildColormap(parsed.colormap).toImage()));
+    }
+}
+
+TEST(Studies, Table1ReducedRowsTablesAndPlots) {
+    Table1Options o;
+    o.errors.footprints = {2, 16};
+    o.errors.count = 30;
+    const Table1Result r = table1(o);
+    for (const auto& rows : r.rows) {
+        ASSERT_EQ(rows.size(), 6u);  // 2 sizes × (paper, deliot-heitz, global)
+        // As ReducedTable1HasSaneNumbers: at 2×2 the estimators beat the global statistics.
+        EXPECT_LT(rows[0].muAbs, 0.5 * rows[2].muAbs);
+        EXPECT_LT(rows[0].sigmaAbs, 0.5 * rows[2].sigmaAbs);
+        for (const auto& e : rows) EXPECT_EQ(e.values, 60);
+    }
+    ASSERT_EQ(r.data.rows.size(), 12u);
+    EXPECT_EQ(r.data.rows[6][0].text, "high");
+    EXPECT_EQ(*r.data.rows[0][3].number, r.rows[0][0].muAbs);
+    ASSERT_EQ(r.tables.size(), 4u);  // paper, deliot-heitz, global, published
+    EXPECT_EQ(r.tables[0].rows.size(), 2u);
+    EXPECT_EQ(r.tables[0].rows[1][0].text, "16×16");
+    EXPECT_EQ(r.tables[3].rows.size(), 7u);
+    EXPECT_EQ(r.figures.size(), 4u);
+    o.errors.count = 0;
+    EXPECT_THROW(table1(o), InputError);
+}
+
+TEST(Studies, Figure4ErrorsShrinkWithExactStatistics) {
+    Figure4Options o;
+    o.pattern = loadPreset("camouflage");
+    o.size = 24;
+    o.referenceSamples = 16;
+    o.footprints = {1, 8};
+    const Figure4Result r = figure4(o);
+    ASSERT_EQ(r.columns.size(), 2u);
+    for (const auto& c : r.columns) {
+        EXPECT_GE(c.meanErrorExact, 0.0);
+        EXPECT_LT(c.meanErrorExact, 0.1);
+        EXPECT_LT(c.meanErrorEstimated, 0.2);
+    }
+    // Exact footprint statistics beat the estimators where footprints are large.
+    EXPECT_LT(r.columns[1].meanErrorExact, r.columns[1].meanErrorEstimated);
+    EXPECT_EQ(r.figures.size(), 2u + 5u * 2u);
+    EXPECT_EQ(*r.table.rows[1][0].number, 8);
+    EXPECT_EQ(r.table.rows[1][0].text, "8²");
+    o.mode = FilterMode::Exact;
+    EXPECT_THROW(figure4(o), InputError);
+}
+
+TEST(Studies, Figures7to9AreThreeSheets) {
+    const std::vector<Figure> f = figures7to9(64);
+    ASSERT_EQ(f.size(), 3u);
+    EXPECT_EQ(f[2].file, "figure9.png");
+    EXPECT_GE(f[0].image.width(), 2 * 128);
+    EXPECT_THROW(figures7to9(16), InputError);
+}
+
+}  // namespace
+}  // namespace stochtex
