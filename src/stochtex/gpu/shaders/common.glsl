@@ -24,10 +24,15 @@ vec4 periodicBilinearLod(sampler2D grid, vec2 p, int lod) {
 
 vec4 periodicBilinear(sampler2D grid, vec2 p) { return periodicBilinearLod(grid, p, 0); }
 
-// Eq. 7: N(u) = μ + Σ w_i (E(u + o_i) − μ), fu = uv reduced to one period.
+// Tile i's value of the example at fu (uv reduced to one period).
+float tileValue(sampler2D example, uint seed, Stencil s, int i, vec2 fu) {
+    return periodicBilinear(example, fract(fu + tileOffset(stencilVertex(s, i), seed))).r;
+}
+
+// Eq. 7: N(u) = μ + Σ w_i (E(u + o_i) − μ). The three tiles are written out
+// (no loop writing a vector by index: llvmpipe spills such vectors).
 float tilingBlending(sampler2D example, float mean, uint seed, Stencil s, vec2 fu) {
-    vec3 e;
-    for (int i = 0; i < 3; ++i) e[i] = periodicBilinear(example, fract(fu + tileOffset(stencilVertex(s, i), seed))).r;
+    vec3 e = vec3(tileValue(example, seed, s, 0, fu), tileValue(example, seed, s, 1, fu), tileValue(example, seed, s, 2, fu));
     return blendMean(mean, s.w, e);
 }
 

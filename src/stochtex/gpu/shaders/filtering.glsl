@@ -15,26 +15,33 @@ uniform int uAniso;            // K
 uniform bool uSmooth;          // smooth table (else paper)
 uniform int uTableLevels;      // σ levels per axis
 
-// Texel statistics of one level at one probe: (mean x, mean y, var x, var y) and cov.
+// Tile i's statistics at one level: (E_l, V_l) of each noise and C_l.
+struct TileStats {
+    vec2 x;  // (mean, variance) of N_x's tile
+    vec2 y;
+    float c; // covariance (0 without uHasCovariance: not fetched)
+};
+
+TileStats tileStats(Stencil s, int i, vec2 fu, int level) {
+    uvec2 vertex = stencilVertex(s, i);
+    vec2 px = fract(fu + tileOffset(vertex, uSeedX));
+    vec2 py = fract(fu + tileOffset(vertex, uSeedY));
+    TileStats t;
+    t.x = periodicBilinearLod(uStatsX, px, level).rg;
+    t.y = periodicBilinearLod(uStatsY, py, level).rg;
+    t.c = uHasCovariance ? periodicBilinearLod(uCovariance, px, level).g : 0.0;
+    return t;
+}
+
+// Texel statistics of one level at one probe: (mean x, mean y, var x, var y)
+// and cov (eq. 8, 12, 17 by the kernel's blendMean / blendVariance).
 void texelStats(vec2 uv, int level, out vec4 stats, out float cov) {
     Stencil s = triangleGrid(uv, uDensity);
     vec2 fu = fract(uv);
-    vec3 mx, my, vx, vy, c;
-    for (int i = 0; i < 3; ++i) {
-        uvec2 vertex = stencilVertex(s, i);
-        vec2 px = fract(fu + tileOffset(vertex, uSeedX));
-        vec2 py = fract(fu + tileOffset(vertex, uSeedY));
-        vec2 ex = periodicBilinearLod(uStatsX, px, level).rg;
-        vec2 ey = periodicBilinearLod(uStatsY, py, level).rg;
-        mx[i] = ex.r;
-        vx[i] = ex.g;
-        my[i] = ey.r;
-        vy[i] = ey.g;
-        // The covariance is fetched only with shared offsets (else it is 0).
-        c[i] = uHasCovariance ? periodicBilinearLod(uCovariance, px, level).g : 0.0;
-    }
-    stats = vec4(blendMean(uMeanX, s.w, mx), blendMean(uMeanY, s.w, my), blendVariance(s.w, vx), blendVariance(s.w, vy));
-    cov = uHasCovariance ? blendVariance(s.w, c) : 0.0;
+    TileStats a = tileStats(s, 0, fu, level), b = tileStats(s, 1, fu, level), c = tileStats(s, 2, fu, level);
+    stats = vec4(blendMean(uMeanX, s.w, vec3(a.x.x, b.x.x, c.x.x)), blendMean(uMeanY, s.w, vec3(a.y.x, b.y.x, c.y.x)),
+                 blendVariance(s.w, vec3(a.x.y, b.x.y, c.x.y)), blendVariance(s.w, vec3(a.y.y, b.y.y, c.y.y)));
+    cov = uHasCovariance ? blendVariance(s.w, vec3(a.c, b.c, c.c)) : 0.0;
     if (uDeliotHeitz) {
         stats.zw = vec2(uAverageX[level], uAverageY[level]);
         cov = uHasCovariance ? uAverageCov[level] : 0.0;
@@ -62,20 +69,23 @@ vec3 prefiltered(vec2 mu, vec2 sigma) {
 }
 
 // Ŝ for the footprint of uv with Jacobian columns jx, jy (uv per pixel).
+// One loop for every footprint, a single texel included (its statistics are
+// then taken as they are): a branch around the loop would make SIMD lanes
+// run both paths.
 vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {
     ProbeLayout probes = probeLayout(jx, jy, 1.0 / uInvW, uAniso, uMaxLod);
     ProbeLevels levels = probeLevels(probes.lod, uMaxLod, probes.count);
-    vec4 st;
-    float c;
-    if (isSingleTexel(probes.count, levels.frac)) {
-        texelStats(uv, levels.l0, st, c);
-        return prefiltered(st.xy, sqrt(max(st.zw, vec2(0.0))));
-    }
+    vec4 st, first;
+    float c, firstCov;
     Moments sums;
     for (int k = 0; k < probes.count; ++k) {
         vec2 p = uv + probePosition(k, probes.count) * probes.axis;
         texelStats(p, levels.l0, st, c);
-        if (k == 0) sums = momentsAbout(st.xy);
+        if (k == 0) {
+            sums = momentsAbout(st.xy);
+            first = st;
+            firstCov = c;
+        }
         sums = momentsAdd(sums, levels.w0, st.xy, st.zw, c);
         if (levels.w1 > 0.0) {
             texelStats(p, levels.l1, st, c);
@@ -83,5 +93,10 @@ vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {
         }
     }
     FootprintMoments r = momentsResult(sums);
+    if (isSingleTexel(probes.count, levels.frac)) {
+        r.mean = first.xy;
+        r.var = max(first.zw, vec2(0.0));
+        r.cov = firstCov;
+    }
     return prefiltered(r.mean, sqrt(r.var));
 }
