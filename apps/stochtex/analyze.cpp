@@ -11,38 +11,35 @@
 namespace stochtex::cli {
 
 void registerAnalyze(CLI::App& app) {
-    struct Args {
-        ZoomFlags zoom;
+    struct Studies {
         CorrelationStudyOptions correlation;
         ContrastStudyOptions contrast;
-        std::string dir;
-        int threads = 0;
     };
-    auto args = std::make_shared<Args>();
+    auto args = std::make_shared<ZoomStudyArgs<Studies>>();
     auto* cmd = app.add_subcommand("analyze", "Report page (index.html) on the zoom texture's artifacts: sliding, "
                                               "contrast loss and corrections, correlation plots");
     addOutputFolderFlag(*cmd, args->dir, "Output folder (index.html and the figures)");
-    addCorrelationStudyFlags(*cmd, args->correlation, "--plot-size", false);
-    cmd->add_option("--size", args->contrast.size, "Size of the contrast-correction textures")->capture_default_str();
-    addZoomFlags(*cmd, args->zoom, false);
-    addThreadsFlag(*cmd, args->threads);
+    addCorrelationStudyFlags(*cmd, args->study.correlation, "--plot-size", false);
+    cmd->add_option("--size", args->study.contrast.size, "Size of the contrast-correction textures")
+        ->capture_default_str();
+    addZoomStudyFlags(*cmd, *args, false);
     cmd->callback([args] {
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
-        CorrelationStudyOptions correlation = args->correlation;
+        CorrelationStudyOptions correlation = args->study.correlation;
         correlation.zoom = makeZoomParams(args->zoom);
         correlation.base = makeZoomBase(args->zoom);
         validateCorrelationStudy(correlation);
         ZoomFlags contrastFlags = args->zoom;
         contrastFlags.params.layers = 16;  // Figure 2.6
-        validateContrastStudy(args->contrast);
+        validateContrastStudy(args->study.contrast);
         makeZoomParams(contrastFlags);
         const std::string& dir = args->dir;
         ensureFolder(dir + "/zoom");
         printProgress("analyze: zoom frames and layer scales");
         const std::vector<Figure> zoom = slidingStudy(correlation.zoom, correlation.base);
         writeFigures(dir + "/zoom", zoom);
-        const ContrastStudyResult contrast = runZoomContrastStudy(contrastFlags, args->contrast, dir + "/contrast");
+        const ContrastStudyResult contrast = runZoomContrastStudy(contrastFlags, args->study.contrast, dir + "/contrast");
         const CorrelationStudyResult corr = correlationStudy(correlation, printProgress);
         ensureFolder(dir + "/correlation");
         writeFigures(dir + "/correlation", corr.figures);

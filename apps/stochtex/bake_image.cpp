@@ -6,9 +6,8 @@
 #include <cstdio>
 
 #include "common.h"
-#include "stochtex/core/error.h"
+#include "pattern_renderer.h"
 #include "stochtex/core/parallel.h"
-#include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/image/png_stream.h"
 
 namespace stochtex::cli {
@@ -17,34 +16,28 @@ void registerBakeImage(CLI::App& app) {
     struct Args {
         PatternSource source;
         ViewFlags view;
-        std::string output, filter = "smooth";
-        int aniso = 1, bits = 8, band = 256, threads = 0;
-        bool gpu = false;
-        std::string pipeline = "fragment";
+        FilterOptions options;
+        DeviceFlags device;
+        std::string output;
+        int bits = 8, band = 256, threads = 0;
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("bake-image", "Render a large PNG in bands of rows with bounded memory "
                                                  "(e.g. --size 8192), on the CPU or with --gpu");
     addPatternSource(*cmd, args->source);
     addViewFlags(*cmd, args->view);
-    cmd->add_option("-o,--output", args->output, "Output PNG")->required();
-    cmd->add_option("--filter", args->filter, "none | paper | smooth");
-    cmd->add_option("--aniso", args->aniso, "Anisotropic probes K");
+    addOutputImageFlag(*cmd, args->output, "Output PNG");
+    addFilterModeFlag(*cmd, args->options.mode, "none | paper | smooth");
+    addAnisoFlag(*cmd, args->options.aniso);
     cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
     cmd->add_option("--band", args->band, "Rows rendered at a time")->check(CLI::Range(1, 4096));
-    cmd->add_flag("--gpu", args->gpu, "Render the bands with the GLSL implementation");
-    addPipelineFlag(*cmd, args->pipeline);
+    addDeviceFlags(*cmd, args->device, "Render the bands with the GLSL implementation", false);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         if (args->output.size() < 4 || args->output.substr(args->output.size() - 4) != ".png")
             throw InputError(args->output + ": bake-image writes PNG (.png)");
         checkImageOutput(args->output);
-        const GpuPattern::Pipeline pipeline = parsePipeline(args->pipeline);
-        FilterOptions options;
-        options.mode = parseFilterMode(args->filter);
-        options.aniso = args->aniso;
-        if (options.mode != FilterMode::None && options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
-            throw InputError("--filter: bake-image renders none, paper or smooth");
+        if (!isGpuFilter(args->options.mode)) throw InputError("--filter: bake-image renders none, paper or smooth");
         const PatternSpec spec = loadPatternSource(args->source);
         Camera whole;
         whole.view = makeView(spec, args->view);
@@ -52,30 +45,22 @@ void registerBakeImage(CLI::App& app) {
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
         const Pattern pattern = Pattern::build(spec);
-        std::unique_ptr<GlContext> context;
-        std::unique_ptr<GpuPattern> gpu;
-        std::unique_ptr<FilteredPattern> cpu;
-        if (args->gpu) {
-            context = GlContext::headless();
-            gpu = std::make_unique<GpuPattern>(pattern, *context, options);
-            gpu->setPipeline(pipeline);
-        } else {
-            cpu = std::make_unique<FilteredPattern>(pattern, options);
-        }
+        PatternRenderer renderer(pattern, args->options, args->device);
         const View& v = whole.view;
         PngStreamWriter png(args->output, v.width, v.height, 3, args->bits);
         for (int y0 = 0; y0 < v.height; y0 += args->band) {
             Camera band = whole;
             band.view.height = std::min(args->band, v.height - y0);
             band.view.offsetV = v.offsetV + y0 * v.scale;  // pixel rows y0… of the whole view
-            png.writeRows(gpu ? gpu->render(band) : cpu->render(band));
+            png.writeRows(renderer.render(band));
             std::fprintf(stderr, "\r%d/%d rows", y0 + band.view.height, v.height);
         }
         std::fprintf(stderr, "\n");
         png.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("wrote %s (%dx%d, %s, filter %s, %s, bands of %d rows, %.1f s)\n", args->output.c_str(), v.width,
-                    v.height, spec.name.c_str(), args->filter.c_str(), args->gpu ? "GPU" : "CPU", args->band, seconds);
+                    v.height, spec.name.c_str(), enumName(kFilterModeNames, args->options.mode).c_str(),
+                    args->device.gpu ? "GPU" : "CPU", args->band, seconds);
     });
 }
 

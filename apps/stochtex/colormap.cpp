@@ -21,7 +21,7 @@ void registerColormap(CLI::App& app) {
     auto* spec = cmd->add_option("spec", args->spec, "Colormap spec: a JSON file or inline JSON ({\"type\":...})");
     auto* preset = cmd->add_option("--preset,-p", args->preset, "Take the colormap of this preset pattern");
     spec->excludes(preset);
-    cmd->add_option("-o,--output", args->output, "Output image (.png or .exr)")->required();
+    addOutputImageFlag(*cmd, args->output);
     cmd->add_option("--resolution", args->resolution, "Table resolution (analytic and painted colormaps)")
         ->check(CLI::Range(2, kMaxColormapResolution));
     cmd->callback([args] {

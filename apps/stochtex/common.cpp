@@ -14,7 +14,7 @@ namespace stochtex::cli {
 namespace fs = std::filesystem;
 
 void addPatternSource(CLI::App& cmd, PatternSource& src) {
-    auto* file = cmd.add_option("pattern", src.file, "Pattern JSON file (see docs/PATTERNS.md)");
+    auto* file = cmd.add_option("pattern,--pattern", src.file, "Pattern JSON file (see docs/PATTERNS.md)");
     auto* preset = cmd.add_option("--preset,-p", src.preset, "Embedded preset name (stochtex presets lists them)");
     file->excludes(preset);
     cmd.add_option("--seed", src.seed, "Override the pattern seed");
@@ -86,23 +86,32 @@ void addThreadsFlag(CLI::App& cmd, int& threads) {
 }
 
 void addFilterModeFlag(CLI::App& cmd, FilterMode& mode, const std::string& help) {
-    cmd.add_option("--filter", mode, help)
-        ->transform(CLI::CheckedTransformer(kFilterModeNames))
-        ->default_str(enumName(kFilterModeNames, mode));
+    addEnumFlag(cmd, "--filter", mode, kFilterModeNames, "mode", help);
+}
+
+void addAnisoFlag(CLI::App& cmd, int& aniso) {
+    aniso = FilterOptions{}.aniso;
+    cmd.add_option("--aniso", aniso, "Anisotropic probes K (1 = isotropic trilinear, up to 16)")->capture_default_str();
+}
+
+void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov) {
+    addEnumFlag(cmd, "--view", camera.kind, Camera::kKindNames, "view",
+                "zoom (flat, --scale texels per pixel) | plane (perspective ground plane)");
+    cmd.add_option("--tilt", camera.tiltDeg, "Plane view: tilt from looking straight down, degrees [0, 89]")
+        ->capture_default_str();
+    if (withFov) cmd.add_option("--fov", camera.fovDeg, "Plane view: vertical field of view, degrees")->capture_default_str();
+}
+
+bool isGpuFilter(FilterMode mode) {
+    return mode == FilterMode::None || mode == FilterMode::Paper || mode == FilterMode::Smooth;
 }
 
 void printProgress(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
 
-void addPipelineFlag(CLI::App& cmd, std::string& pipeline) {
-    cmd.add_option("--pipeline", pipeline,
-                   "--gpu: fragment (full-screen triangle) | compute (GLSL 4.30 kernel; reaches every shader unit of "
-                   "compute GPUs, ~27x faster on an H100)");
-}
-
-GpuPattern::Pipeline parsePipeline(const std::string& pipeline) {
-    if (pipeline == "fragment") return GpuPattern::Pipeline::Fragment;
-    if (pipeline == "compute") return GpuPattern::Pipeline::Compute;
-    throw InputError("--pipeline: unknown \"" + pipeline + "\" (expected fragment or compute)");
+void addPipelineFlag(CLI::App& cmd, GpuPattern::Pipeline& pipeline) {
+    addEnumFlag(cmd, "--pipeline", pipeline, kGpuPipelineNames, "pipeline",
+                "--gpu: fragment (full-screen triangle) | compute (GLSL 4.30 kernel; reaches every shader unit of "
+                "compute GPUs, ~27x faster on an H100)");
 }
 
 // Library parameter → the flag that sets it. One table for every command:
@@ -132,6 +141,10 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"interpolation", "--interpolation"},
     {"instances", "--instances"},
     {"layersList", "--layers-list"},
+    {"frames", "--frames"},
+    {"from", "--from"},
+    {"to", "--to"},
+    {"filters", "--filters"},
 };
 }  // namespace
 
@@ -143,6 +156,10 @@ std::string describeInputError(const InputError& e) {
 
 void addOutputFolderFlag(CLI::App& cmd, std::string& dir, const std::string& what) {
     cmd.add_option("-o,--output", dir, what)->required();
+}
+
+void addOutputImageFlag(CLI::App& cmd, std::string& path, const std::string& what) {
+    addOutputFolderFlag(cmd, path, what);  // the same flag; only the help differs
 }
 
 }  // namespace stochtex::cli

@@ -4,8 +4,10 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "stochtex/core/enum_names.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/pattern/filtered_pattern.h"
@@ -21,6 +23,8 @@ struct PatternSource {
     std::string preset;
     std::optional<int64_t> seed;
 };
+// PATTERN or --pattern FILE | --preset NAME (one is required; no default),
+// and --seed to override the pattern's.
 void addPatternSource(CLI::App& cmd, PatternSource& src);
 PatternSpec loadPatternSource(const PatternSource& src);
 
@@ -43,18 +47,57 @@ JsonArgument readJsonArgument(const std::string& arg);
 // Fails early (before any work) if path is not a .png/.exr in an existing folder.
 void checkImageOutput(const std::string& path);
 
+// CLI11's transformer over an enum's name table (the table the library, the
+// JSON reader and the bake manifest use). It reads the name with parseEnum,
+// so a bad one reads `--flag: parameter must be a or b, got "x"` like a
+// library error (CLI::CheckedTransformer would list the enum's numbers); the
+// help lists the names.
+template <class E>
+CLI::Validator enumTransformer(const EnumNames<E>& names, const std::string& parameter) {
+    return CLI::Validator(
+        [names, parameter](std::string& s) -> std::string {
+            try {
+                s = std::to_string(static_cast<std::underlying_type_t<E>>(parseEnum(names, s, parameter)));
+                return {};
+            } catch (const InputError& e) {
+                return e.what();
+            }
+        },
+        "{" + canonicalNames(names, ", ") + "}");
+}
+
+// A flag whose value is one name of the table; the default shown is the value's.
+template <class E>
+CLI::Option* addEnumFlag(CLI::App& cmd, const std::string& flag, E& value, const EnumNames<E>& names,
+                         const std::string& parameter, const std::string& help) {
+    return cmd.add_option(flag, value, help)
+        ->transform(enumTransformer(names, parameter))
+        ->default_str(enumName(names, value));
+}
+
+// --threads,-j N: default 0 = all cores.
 void addThreadsFlag(CLI::App& cmd, int& threads);
 
-// --filter MODE over kFilterModeNames (the default shown is the value's).
+// --filter MODE over kFilterModeNames; the default is the value's (each
+// command documents why it starts where it does).
 void addFilterModeFlag(CLI::App& cmd, FilterMode& mode, const std::string& help);
+
+// --aniso K, 1..16 (the library checks the range). Sets aniso to the one
+// default, FilterOptions{}.aniso (1: isotropic trilinear).
+void addAnisoFlag(CLI::App& cmd, int& aniso);
+
+// --view zoom|plane, --tilt and (withFov) --fov: the camera's defaults
+// (pattern/camera.h) are the flags'.
+void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov = true);
+
+// The filters the GLSL implementation renders: none, paper, smooth.
+bool isGpuFilter(FilterMode mode);
 
 // A study's progress line on stderr.
 void printProgress(const std::string& line);
 
-// --pipeline fragment|compute of the --gpu commands; parsePipeline throws
-// InputError naming the flag for any other value.
-void addPipelineFlag(CLI::App& cmd, std::string& pipeline);
-GpuPattern::Pipeline parsePipeline(const std::string& pipeline);
+// --pipeline fragment|compute of the --gpu commands (default fragment).
+void addPipelineFlag(CLI::App& cmd, GpuPattern::Pipeline& pipeline);
 
 // An InputError as the user reads it: a library parameter error is prefixed
 // with the flag that sets the parameter ("--aniso: aniso must be in [1, 16],
@@ -63,6 +106,8 @@ std::string describeInputError(const InputError& e);
 
 // -o,--output FOLDER, required (what: its help text).
 void addOutputFolderFlag(CLI::App& cmd, std::string& dir, const std::string& what = "Output folder");
+// -o,--output IMAGE, required (checkImageOutput checks it before any work).
+void addOutputImageFlag(CLI::App& cmd, std::string& path, const std::string& what = "Output image (.png or .exr)");
 
 // Registration of each command (one file each).
 void registerRender(CLI::App& app);

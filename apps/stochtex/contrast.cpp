@@ -9,20 +9,13 @@
 namespace stochtex::cli {
 
 void registerContrast(CLI::App& app) {
-    struct Args {
-        ZoomFlags zoom;
-        ContrastStudyOptions study;
-        std::string dir;
-        int threads = 0;
-    };
-    auto args = std::make_shared<Args>();
+    auto args = std::make_shared<ZoomStudyArgs<ContrastStudyOptions>>();
     args->zoom.params.layers = 16;  // Figure 2.6
     auto* cmd = app.add_subcommand("contrast", "Contrast corrections of the zoom texture with their histograms, "
                                                "curves and clamped-pixel percentages");
     addOutputFolderFlag(*cmd, args->dir);
     cmd->add_option("--size", args->study.size, "Texture size in pixels")->capture_default_str();
-    addZoomFlags(*cmd, args->zoom);
-    addThreadsFlag(*cmd, args->threads);
+    addZoomStudyFlags(*cmd, *args, true);
     cmd->callback([args] {
         ThreadLimit limit(args->threads);
         const ContrastStudyResult r = runZoomContrastStudy(args->zoom, args->study, args->dir);

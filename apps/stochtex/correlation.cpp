@@ -10,20 +10,13 @@
 namespace stochtex::cli {
 
 void registerCorrelation(CLI::App& app) {
-    struct Args {
-        ZoomFlags zoom;
-        CorrelationStudyOptions study;
-        std::string dir;
-        int threads = 0;
-    };
-    auto args = std::make_shared<Args>();
+    auto args = std::make_shared<ZoomStudyArgs<CorrelationStudyOptions>>();
     auto* cmd = app.add_subcommand("correlation",
                                    "Correlation plots Corr[I(x,0), I(y,0)] and Corr[I(x,0), I(x,y)] of the zoom "
                                    "texture: analytic, measured over instances, and their difference");
     addOutputFolderFlag(*cmd, args->dir);
     addCorrelationStudyFlags(*cmd, args->study);
-    addZoomFlags(*cmd, args->zoom, false);
-    addThreadsFlag(*cmd, args->threads);
+    addZoomStudyFlags(*cmd, *args, false);
     cmd->callback([args] {
         ThreadLimit limit(args->threads);
         CorrelationStudyOptions o = args->study;

@@ -31,7 +31,7 @@ void registerGallery(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("gallery", "Render every preset with its colormap and noises");
-    cmd->add_option("-o,--output", args->dir, "Output folder (created if missing)")->required();
+    addOutputFolderFlag(*cmd, args->dir, "Output folder (created if missing)");
     cmd->add_option("--size", args->size, "Pattern size in pixels")->check(CLI::Range(64, 4096));
     cmd->add_option("--preset", args->only, "Only these presets (repeatable)");
     addThreadsFlag(*cmd, args->threads);

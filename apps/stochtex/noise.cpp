@@ -13,9 +13,7 @@ namespace stochtex::cli {
 
 void registerNoise(CLI::App& app) {
     struct Args {
-        std::string spec;
-        std::string output;
-        std::string spectrum;
+        std::string spec, output, spectrum;
         std::optional<int64_t> seed;
         int bits = 8;
         int threads = 0;
@@ -24,7 +22,7 @@ void registerNoise(CLI::App& app) {
     auto* cmd = app.add_subcommand("noise", "Write a noise example defined by a JSON noise spec");
     cmd->add_option("spec", args->spec, "Noise spec: a JSON file or inline JSON ({\"type\":\"spectrum\",...})")
         ->required();
-    cmd->add_option("-o,--output", args->output, "Output image (.png or .exr)")->required();
+    addOutputImageFlag(*cmd, args->output);
     cmd->add_option("--spectrum", args->spectrum, "Also write the log power spectrum (centred) to this image");
     cmd->add_option("--seed", args->seed, "Seed (overrides the spec's)");
     cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));

@@ -7,49 +7,8 @@
 #include "common.h"
 #include "reproduce.h"
 #include "stochtex/core/parallel.h"
-#include "stochtex/pattern/presets.h"
 
 namespace stochtex::cli {
-
-std::string writeTable1(const Table1Result& r, const std::string& dir) {
-    ensureFolder(dir);
-    writeText(dir, "table1.csv", r.data.csv());
-    std::string md;
-    for (const auto& t : r.tables) md += "\n" + t.markdown();
-    writeText(dir, "table1.md", "# Table 1: estimator errors (absolute (relative) mean errors)\n" + md);
-    writeFigures(dir, r.figures);
-    return md;
-}
-
-void writeFigure4(const Figure4Result& r, const std::string& dir) {
-    ensureFolder(dir);
-    writeFigures(dir, r.figures);
-    writeText(dir, "figure4.csv", r.table.csv());
-}
-
-void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, bool figure4) {
-    addOutputFolderFlag(sub, a.dir);
-    addThreadsFlag(sub, a.threads);
-    if (table) {
-        sub.add_option("--count", a.table.errors.count, "Random footprints per size")->capture_default_str();
-        sub.add_option("--footprints", a.table.errors.footprints, "Footprint sides in texels")->delimiter(',');
-        sub.add_option("--seed", a.table.seed, "Seed of the noises (footprint centres use --footprint-seed)");
-        sub.add_option("--footprint-seed", a.table.errors.seed, "Seed of the footprint centres");
-    }
-    if (figure4) {
-        sub.add_option("--preset", a.figure4.name, "Pattern of Figure 4")->capture_default_str();
-        sub.add_option("--size", a.figure4.size, "Image size per footprint")->capture_default_str();
-        sub.add_option("--reference-samples", a.figure4.referenceSamples, "Max reference samples per axis");
-        addFilterModeFlag(sub, a.figure4.mode, "Table used with the estimators: smooth or paper");
-    }
-}
-
-void prepareReproduce(ReproduceArgs& a) {
-    a.figure4.pattern = loadPreset(a.figure4.name);  // unknown preset: fail before any work
-    validateFigure4(a.figure4);
-    validateTable1(a.table);
-    validateFigures7to9(a.sheetSize);
-}
 
 void registerReproduce(CLI::App& app) {
     auto args = std::make_shared<ReproduceArgs>();

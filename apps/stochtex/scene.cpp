@@ -14,27 +14,25 @@ namespace stochtex::cli {
 void registerScene(CLI::App& app) {
     struct Args {
         PatternSource source;
-        std::string output, object = "sphere", filter = "smooth";
+        FilterOptions options;
+        std::string output, object = "sphere";
         std::vector<int> size{768, 512};
         float tiling = 4.0f;
-        int aniso = 8;
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("scene", "The pattern on a lit 3D object (plane, sphere or torus), headless OpenGL");
     addPatternSource(*cmd, args->source);
-    cmd->add_option("-o,--output", args->output, "Output image (.png or .exr)")->required();
+    addOutputImageFlag(*cmd, args->output);
     cmd->add_option("--object", args->object, "plane | sphere | torus");
-    cmd->add_option("--filter", args->filter, "none | paper | smooth");
-    cmd->add_option("--aniso", args->aniso, "Anisotropic probes K (1..16)");
+    addFilterModeFlag(*cmd, args->options.mode, "none | paper | smooth");
+    addAnisoFlag(*cmd, args->options.aniso);
     cmd->add_option("--tiling", args->tiling, "Example periods across the object's uv square");
     cmd->add_option("--size", args->size, "Image size: N or W,H")->delimiter(',')->expected(1, 2);
     cmd->callback([args] {
         checkImageOutput(args->output);
         const int w = args->size[0], h = args->size.size() > 1 ? args->size[1] : args->size[0];
         if (w < 1 || h < 1 || w > 8192 || h > 8192) throw InputError("--size must be in [1, 8192] per side");
-        FilterOptions options;
-        options.mode = parseFilterMode(args->filter);
-        options.aniso = args->aniso;
+        const FilterOptions& options = args->options;
         const Mesh mesh = makeObject(args->object);
         const PatternSpec spec = loadPatternSource(args->source);
         const auto start = std::chrono::steady_clock::now();
@@ -50,7 +48,7 @@ void registerScene(CLI::App& app) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image);
         std::printf("wrote %s (%dx%d, %s on a %s, filter %s, %s, %.2f s)\n", args->output.c_str(), w, h,
-                    spec.name.c_str(), args->object.c_str(), args->filter.c_str(), context->describe().c_str(), seconds);
+                    spec.name.c_str(), args->object.c_str(), enumName(kFilterModeNames, options.mode).c_str(), context->describe().c_str(), seconds);
     });
 }
 

@@ -11,15 +11,12 @@ void addZoomFlags(CLI::App& cmd, ZoomFlags& f, bool withLayers) {
     cmd.add_option("--time", p.time, "Time t (first frame)")->capture_default_str();
     cmd.add_option("--envelope-sigma", p.envelopeSigma, "Width of the Gaussian envelope A around a = 1")
         ->capture_default_str();
-    cmd.add_option("--scaling", p.scaling, "sliding (eq. 2.2) or exponential (eq. 2.5, no sliding)")
-        ->transform(CLI::CheckedTransformer(kZoomScalingNames))
-        ->default_str("exponential");
-    cmd.add_option("--offsets", p.offsets, "Layer offsets: none, simple, hashed (pcg3d) or sin-hash (eq. 2.23)")
-        ->transform(CLI::CheckedTransformer(kZoomOffsetsNames))
-        ->default_str("none");
-    cmd.add_option("--interpolation", p.interpolation, "Base lattice reconstruction: nearest or linear")
-        ->transform(CLI::CheckedTransformer(kLatticeInterpolationNames))
-        ->default_str("linear");
+    addEnumFlag(cmd, "--scaling", p.scaling, kZoomScalingNames, "scaling",
+                "sliding (eq. 2.2) or exponential (eq. 2.5, no sliding)");
+    addEnumFlag(cmd, "--offsets", p.offsets, kZoomOffsetsNames, "offsets",
+                "Layer offsets: none, simple, hashed (pcg3d) or sin-hash (eq. 2.23)");
+    addEnumFlag(cmd, "--interpolation", p.interpolation, kLatticeInterpolationNames, "interpolation",
+                "Base lattice reconstruction: nearest or linear");
     cmd.add_option("--base", f.base, "Base texture: 'white' (white noise) or a grayscale image file")
         ->capture_default_str();
     cmd.add_option("--base-size", f.baseSize, "Period of the white-noise lattice")
@@ -49,7 +46,7 @@ void addCorrelationStudyFlags(CLI::App& cmd, CorrelationStudyOptions& study, con
     if (withVariants)
         cmd.add_option("--variant", study.variants, "Variants: sliding, fixed, simple, random (repeatable)")
             ->delimiter(',')
-            ->transform(CLI::CheckedTransformer(kZoomVariantNames))
+            ->transform(enumTransformer(kZoomVariantNames, "variant"))
             ->default_str("sliding,fixed,simple,random");
     cmd.add_option("--layers-list", study.layers, "Layer counts n of the correlation grid, e.g. 16,8,4,2")
         ->delimiter(',')

@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "common.h"
+
 #include "stochtex/studies/zoom_studies.h"
 
 namespace stochtex::cli {
@@ -15,6 +17,22 @@ struct ZoomFlags {
     uint32_t seed = 1;
 };
 void addZoomFlags(CLI::App& cmd, ZoomFlags& f, bool withLayers = true);
+
+// What a command of a zoom-texture study holds: the texture's flags, the
+// study's options, its output folder and --threads.
+template <class Study>
+struct ZoomStudyArgs {
+    ZoomFlags zoom;
+    Study study;
+    std::string dir;
+    int threads = 0;
+};
+// The zoom flags (withLayers: --layers too) and --threads of a study command.
+template <class Study>
+void addZoomStudyFlags(CLI::App& cmd, ZoomStudyArgs<Study>& args, bool withLayers) {
+    addZoomFlags(cmd, args.zoom, withLayers);
+    addThreadsFlag(cmd, args.threads);
+}
 // InputError for unusable values (naming the flag), before any work.
 ZoomParams makeZoomParams(const ZoomFlags& f);
 ZoomBase makeZoomBase(const ZoomFlags& f);

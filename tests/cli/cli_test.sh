@@ -104,6 +104,12 @@ case_exemplar() {
   expect_ok "exemplar pattern" "$out/ex.png" -- "$bin" render "$work/exemplar.json" -o "$out/ex.png"
 }
 
+case_stability() {
+  expect_ok "stability" "$out/stab/stability-frames.csv" -- "$bin" stability --preset marble -o "$out/stab" --frames 3 --size 16 --to 8 --filters none,smooth --reference-samples 8 --write-frames
+  [ -s "$out/stab/smooth-002.png" ] || fail "stability: frames not written"
+  [ "$(wc -l <"$out/stab/stability.csv")" -eq 3 ] || fail "stability.csv: expected a header and 2 rows"
+}
+
 # --- thesis studies (small) ---
 case_zoom() {
   expect_ok "zoom frames" "$out/zoom/frame_0002.png" -- "$bin" zoom -o "$out/zoom" --frames 3 --size 64 --layers 4 --offsets hashed --no-video
@@ -195,7 +201,9 @@ case_bad_render_flags() {
   expect_bad "aniso absurd" "$out/bad20.png" "--aniso: aniso must be in [1, 16], got 1000" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
   expect_bad "tilt" "$out/bad21.png" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95
   expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be a finite number in (0, 1e6], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
-  expect_bad "bad view" "$out/bad23.png" 'unknown "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
+  expect_bad "bad view" "$out/bad23.png" '--view: view must be zoom or plane, got "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
+  expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper or deliot-heitz, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh
+  expect_bad "stability scale" "$out/sbad1" "--from: from must be a finite scale in (0, 1e6], got 0" -- "$bin" stability --preset gaussian -o "$out/sbad1" --from 0
   expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"
 }
 
@@ -217,8 +225,8 @@ case_bad_study_flags() {
 
 case_bad_gpu_flags() {
   expect_bad "gpu with the reference" "$out/gbad.png" "--gpu: the GPU renders --filter none, paper or smooth" -- "$bin" render --preset camouflage --gpu --filter reference -o "$out/gbad.png"
-  expect_bad "unknown pipeline" "$out/gbad2.png" '--pipeline: unknown "vulkan"' -- "$bin" render --preset camouflage --gpu --pipeline vulkan -o "$out/gbad2.png"
-  expect_bad "unknown derivatives" "$out/gbad3.png" '--derivatives: unknown "dfdx"' -- "$bin" render --preset camouflage --gpu --derivatives dfdx -o "$out/gbad3.png"
+  expect_bad "unknown pipeline" "$out/gbad2.png" '--pipeline: pipeline must be fragment or compute, got "vulkan"' -- "$bin" render --preset camouflage --gpu --pipeline vulkan -o "$out/gbad2.png"
+  expect_bad "unknown derivatives" "$out/gbad3.png" '--derivatives: derivatives must be camera or rasterizer, got "dfdx"' -- "$bin" render --preset camouflage --gpu --derivatives dfdx -o "$out/gbad3.png"
   expect_bad "compute with rasterizer derivatives" "$out/gbad4.png" "--derivatives: derivatives must be camera with the compute pipeline" -- "$bin" render --preset camouflage --gpu --filter paper --pipeline compute --derivatives rasterizer -o "$out/gbad4.png"
 }
 

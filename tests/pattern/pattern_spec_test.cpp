@@ -110,6 +110,23 @@ TEST(PatternSpec, PaintedColormapValidation) {
     EXPECT_FLOAT_EQ(ok.colormap.painted.shapes[0].color[1], 0.5f);
 }
 
+// "offsets" and a phasor's "profile" are read through the enums' name tables
+// (the ones the CLI and the bake manifest use).
+TEST(PatternSpec, EnumValuedKeysUseTheNameTables) {
+    const std::string noise = R"({"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 8}]})";
+    const std::string base = R"({"noise_x": )" + noise + R"(, "noise_y": )" + noise;
+    const std::string gaussian = R"(, "colormap": {"type": "gaussian"}})";
+    EXPECT_EQ(parse(base + R"(, "offsets": "shared")" + gaussian).offsets, OffsetMode::Shared);
+    EXPECT_EQ(parse(base + R"(, "offsets": "independent")" + gaussian).offsets, OffsetMode::Independent);
+    EXPECT_EQ(errorOf(base + R"(, "offsets": "same")" + gaussian),
+              "test.json: /offsets: unknown value \"same\" (expected one of: independent, shared)");
+    const std::string phasor = R"(, "colormap": {"type": "phasor", "profile": ")";
+    EXPECT_EQ(parse(base + phasor + R"(square"}})").colormap.profile, PhasorProfile::Square);
+    EXPECT_EQ(parse(base + phasor + R"(sawtooth"}})").colormap.profile, PhasorProfile::Sawtooth);
+    EXPECT_EQ(errorOf(base + phasor + R"(triangle"}})"),
+              "test.json: /colormap/profile: unknown value \"triangle\" (expected one of: sine, sawtooth, square)");
+}
+
 TEST(PatternSpec, QuadratureShorthandSharesSeedAndOffsets) {
     const PatternSpec s = loadPreset("phasor-stripes");
     EXPECT_TRUE(s.quadraturePair);

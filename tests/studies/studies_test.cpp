@@ -11,7 +11,9 @@
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
+#include "stochtex/studies/stability_study.h"
 #include "stochtex/studies/zoom_studies.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -311,6 +313,61 @@ TEST(Studies, Figures7to9AreThreeSheets) {
     EXPECT_EQ(f[2].file, "figure9.png");
     EXPECT_GE(f[0].image.width(), 2 * 128);
     EXPECT_THROW(figures7to9(16), InputError);
+}
+
+// The study measures the frames it hands out: re-measuring the sink's frames
+// gives the per-frame table, and the summary is their mean and maximum.
+TEST(StabilityStudy, TablesMatchTheFramesItRenders) {
+    const Pattern p = Pattern::build(loadPreset("marble"));
+    StabilityStudyOptions o;
+    o.filters.resize(2);
+    o.filters[0].mode = FilterMode::None;
+    o.filters[1].mode = FilterMode::Smooth;
+    o.frames = 4;
+    o.size = 16;
+    o.from = 1;
+    o.to = 8;
+    std::vector<std::vector<Image>> frames(2);
+    const StabilityStudyResult r =
+        stabilityStudy(p, o, {}, [&](size_t m, int k, const Image& f) {
+            ASSERT_EQ(size_t(k), frames[m].size());
+            frames[m].push_back(f);
+        });
+    ASSERT_EQ(r.measurements.size(), 2u);
+    ASSERT_EQ(r.summary.rows.size(), 2u);
+    ASSERT_EQ(r.perFrame.rows.size(), 2u * 3u);
+    EXPECT_EQ(r.summary.rows[1][0].text, "smooth");
+    for (size_t m = 0; m < 2; ++m) {
+        ASSERT_EQ(frames[m].size(), 4u);
+        const ZoomStability& z = r.measurements[m];
+        double sum = 0, max = 0;
+        for (int k = 0; k + 1 < 4; ++k) {
+            const double d = compensatedZoomDifference(frames[m][k], z.scales[k], frames[m][k + 1], z.scales[k + 1]);
+            EXPECT_NEAR(d, z.differences[k], 1e-12);
+            EXPECT_NEAR(*r.perFrame.rows[m * 3 + k][3].number, d, 1e-12);
+            sum += d;
+            max = std::max(max, d);
+        }
+        EXPECT_NEAR(*r.summary.rows[m][1].number, sum / 3, 1e-12);
+        EXPECT_NEAR(*r.summary.rows[m][2].number, max, 1e-12);
+    }
+    EXPECT_NEAR(r.measurements[0].scales.back(), 8.0, 1e-12);
+}
+
+TEST(StabilityStudy, ErrorsNameTheParameter) {
+    StabilityStudyOptions o;
+    o.filters.resize(1);
+    o.from = 0;
+    EXPECT_EQ(test::inputErrorOf([&] { validateStabilityStudy(o); }).parameter(), "from");
+    o.from = 1;
+    o.to = std::nan("");
+    EXPECT_EQ(test::inputErrorOf([&] { validateStabilityStudy(o); }).parameter(), "to");
+    o.to = 2;
+    o.frames = 1;
+    EXPECT_EQ(test::inputErrorOf([&] { validateStabilityStudy(o); }).parameter(), "frames");
+    o.frames = 2;
+    o.filters.clear();
+    EXPECT_EQ(test::inputErrorOf([&] { validateStabilityStudy(o); }).parameter(), "filters");
 }
 
 }  // namespace

@@ -23,19 +23,33 @@ const std::string& enumName(const EnumNames<E>& names, E v) {
     return unknown;
 }
 
+// The canonical names in table order, joined as "a, b or c" (lastSeparator
+// " or ") or "a, b, c" (lastSeparator ", ").
+template <class E>
+std::string canonicalNames(const EnumNames<E>& names, const std::string& lastSeparator = " or ") {
+    std::vector<std::string> canonical;
+    for (const auto& [name, value] : names)
+        if (enumName(names, value) == name) canonical.push_back(name);
+    std::string joined;
+    for (size_t i = 0; i < canonical.size(); ++i)
+        joined += (i == 0 ? "" : i + 1 == canonical.size() ? lastSeparator : ", ") + canonical[i];
+    return joined;
+}
+
+// The value named s, or nullptr.
+template <class E>
+const E* findEnum(const EnumNames<E>& names, const std::string& s) {
+    for (const auto& [name, value] : names)
+        if (name == s) return &value;
+    return nullptr;
+}
+
 // The value named s; for a name not in the table, InputError naming the
 // parameter: "what must be a, b or c, got "s"" (canonical names only).
 template <class E>
 E parseEnum(const EnumNames<E>& names, const std::string& s, const std::string& what) {
-    std::vector<std::string> canonical;
-    for (const auto& [name, value] : names) {
-        if (name == s) return value;
-        if (enumName(names, value) == name) canonical.push_back(name);
-    }
-    std::string expected;
-    for (size_t i = 0; i < canonical.size(); ++i)
-        expected += (i == 0 ? "" : i + 1 == canonical.size() ? " or " : ", ") + canonical[i];
-    throw InputError::parameter(what, "must be " + expected + ", got \"" + s + "\"");
+    if (const E* v = findEnum(names, s)) return *v;
+    throw InputError::parameter(what, "must be " + canonicalNames(names) + ", got \"" + s + "\"");
 }
 
 }  // namespace stochtex

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint.h"
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/noise/tiled_field.h"
@@ -34,6 +35,8 @@ enum class VarianceEstimator {
     Paper,        // eq. 12/14/15: per-texel variances from the V_l pyramid
     DeliotHeitz,  // one constant within-texel variance per LOD [DH19]
 };
+inline const EnumNames<VarianceEstimator> kVarianceEstimatorNames{{"paper", VarianceEstimator::Paper},
+                                                                  {"deliot-heitz", VarianceEstimator::DeliotHeitz}};
 
 class FootprintEstimator {
 public:

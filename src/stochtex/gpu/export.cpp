@@ -84,7 +84,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     const FootprintEstimator& est = f.estimator();
     nlohmann::json m;
     m["version"] = 1;
-    m["filter"] = options.mode == FilterMode::Paper ? "paper" : "smooth";
+    m["filter"] = enumName(kFilterModeNames, options.mode);
     m["example_size"] = pattern.exampleSize();
     m["levels"] = est.maxLod() + 1;
     m["means"] = {pattern.example(0).mean(), pattern.example(1).mean()};

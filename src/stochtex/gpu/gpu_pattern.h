@@ -71,4 +71,10 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// Names of the GPU's choices, as the CLI spells them.
+inline const EnumNames<GpuPattern::Derivatives> kGpuDerivativesNames{{"camera", GpuPattern::Derivatives::Camera},
+                                                                     {"rasterizer", GpuPattern::Derivatives::Rasterizer}};
+inline const EnumNames<GpuPattern::Pipeline> kGpuPipelineNames{{"fragment", GpuPattern::Pipeline::Fragment},
+                                                               {"compute", GpuPattern::Pipeline::Compute}};
+
 }  // namespace stochtex

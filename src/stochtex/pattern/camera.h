@@ -11,6 +11,7 @@
 //           so that at tilt 0 the centre pixel covers `scale` texels. J is the
 //           exact derivative of the ray–plane intersection (camera.cpp).
 //           Pixels whose ray misses the plane are "sky".
+#include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint.h"
 #include "stochtex/pattern/pattern.h"
 
@@ -18,6 +19,7 @@ namespace stochtex {
 
 struct Camera {
     enum class Kind { Zoom, Plane };
+    static inline const EnumNames<Kind> kKindNames{{"zoom", Kind::Zoom}, {"plane", Kind::Plane}};
     Kind kind = Kind::Zoom;
     View view;             // size, scale (texels per pixel), offset (texels)
     double tiltDeg = 60;   // plane only, in [0, 89]

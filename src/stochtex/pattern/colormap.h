@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "stochtex/core/enum_names.h"
 #include "stochtex/image/image.h"
 
 namespace stochtex {
@@ -71,6 +72,8 @@ private:
 
 // Analytic presets.
 enum class PhasorProfile { Sine, Sawtooth, Square };
+inline const EnumNames<PhasorProfile> kPhasorProfileNames{
+    {"sine", PhasorProfile::Sine}, {"sawtooth", PhasorProfile::Sawtooth}, {"square", PhasorProfile::Square}};
 enum class AnalyticColormap { Gaussian, Ridged };
 
 ColormapTable makeAnalyticColormap(AnalyticColormap kind, int resolution = 256);

@@ -133,7 +133,11 @@ std::string JsonReader::choice(std::initializer_list<const char*> choices) const
         if (s == c) return s;
         list += std::string(list.empty() ? "" : ", ") + c;
     }
-    fail("unknown value \"" + s + "\" (expected one of: " + list + ")");
+    failUnknown(s, list);
+}
+
+void JsonReader::failUnknown(const std::string& value, const std::string& expected) const {
+    fail("unknown value \"" + value + "\" (expected one of: " + expected + ")");
 }
 
 std::string JsonReader::choice(const std::string& key, const std::string& fallback,

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "stochtex/core/enum_names.h"
 #include "stochtex/core/error.h"
 
 namespace stochtex {
@@ -60,8 +61,22 @@ public:
     std::string choice(const std::string& key, const std::string& fallback,
                        std::initializer_list<const char*> choices) const;
     std::string choice(std::initializer_list<const char*> choices) const;
+    // A string naming a value of an enum's name table (the table the CLI and
+    // the bake manifest use); the same message as choice() otherwise.
+    template <class E>
+    E choice(const EnumNames<E>& names) const {
+        const std::string s = string();
+        if (const E* v = findEnum(names, s)) return *v;
+        failUnknown(s, canonicalNames(names, ", "));
+    }
+    template <class E>
+    E choice(const std::string& key, E fallback, const EnumNames<E>& names) const {
+        auto r = find(key);
+        return r ? r->choice(names) : fallback;
+    }
 
 private:
+    [[noreturn]] void failUnknown(const std::string& value, const std::string& expected) const;
     const nlohmann::json* value_;
     std::string source_;
     std::string pointer_;

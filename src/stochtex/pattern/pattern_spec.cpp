@@ -158,8 +158,7 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
     } else if (type == "phasor") {
         r.expectObject({"type", "resolution", "profile", "duty"});
         spec.source = ColormapSpec::Source::Phasor;
-        const std::string p = r.choice("profile", "sine", {"sine", "sawtooth", "square"});
-        spec.profile = p == "sine" ? PhasorProfile::Sine : p == "sawtooth" ? PhasorProfile::Sawtooth : PhasorProfile::Square;
+        spec.profile = r.choice("profile", PhasorProfile::Sine, kPhasorProfileNames);
         spec.duty = r.number("duty", 0.5, 0.0, 1.0);
     } else if (type == "image") {
         r.expectObject({"type", "path"});
@@ -215,9 +214,7 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
         spec.noise[1] = parseNoiseSpec(ny, baseDir);
     }
     // A quadrature pair only stays in quadrature if both share the tiling offsets.
-    const std::string offsets =
-        r.choice("offsets", quadrature ? "shared" : "independent", {"independent", "shared"});
-    spec.offsets = offsets == "shared" ? OffsetMode::Shared : OffsetMode::Independent;
+    spec.offsets = r.choice("offsets", quadrature ? OffsetMode::Shared : OffsetMode::Independent, kOffsetModeNames);
     spec.colormap = parseColormapSpec(r.at("colormap"), baseDir);
     return spec;
 }

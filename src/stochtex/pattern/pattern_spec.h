@@ -41,7 +41,10 @@ struct ColormapSpec {
     int resolution = 256;
 };
 
+// Pattern JSON "offsets".
 enum class OffsetMode { Independent, Shared };
+inline const EnumNames<OffsetMode> kOffsetModeNames{{"independent", OffsetMode::Independent},
+                                                    {"shared", OffsetMode::Shared}};
 
 struct PatternSpec {
     std::string name = "pattern";

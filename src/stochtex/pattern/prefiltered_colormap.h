@@ -14,11 +14,14 @@
 // with no visible loss (checked against direct convolution in the tests).
 #include <vector>
 
+#include "stochtex/core/enum_names.h"
 #include "stochtex/pattern/colormap.h"
 
 namespace stochtex {
 
 enum class PrefilterMode { Paper, Smooth };
+inline const EnumNames<PrefilterMode> kPrefilterModeNames{{"paper", PrefilterMode::Paper},
+                                                          {"smooth", PrefilterMode::Smooth}};
 
 class PrefilteredColormap {
 public:

@@ -1,0 +1,34 @@
+#include "pattern_renderer.h"
+
+namespace stochtex::cli {
+
+void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHelp, bool withDerivatives) {
+    cmd.add_flag("--gpu", flags.gpu, gpuHelp);
+    addPipelineFlag(cmd, flags.pipeline);
+    if (withDerivatives)
+        addEnumFlag(cmd, "--derivatives", flags.derivatives, kGpuDerivativesNames, "derivatives",
+                    "--gpu footprints: camera (the view's exact Jacobian, as the CPU) | rasterizer (dFdx/dFdy)");
+}
+
+void checkDeviceFilter(const DeviceFlags& flags, FilterMode mode) {
+    if (flags.gpu && !isGpuFilter(mode)) throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
+}
+
+PatternRenderer::PatternRenderer(const Pattern& pattern, const FilterOptions& options, const DeviceFlags& flags) {
+    if (!flags.gpu) {
+        cpu_ = std::make_unique<FilteredPattern>(pattern, options);
+        return;
+    }
+    checkDeviceFilter(flags, options.mode);
+    context_ = GlContext::headless();
+    device_ = context_->describe();
+    gpu_ = std::make_unique<GpuPattern>(pattern, *context_, options);
+    gpu_->setDerivatives(flags.derivatives);
+    gpu_->setPipeline(flags.pipeline);
+}
+
+PatternRenderer::~PatternRenderer() = default;
+
+Image PatternRenderer::render(const Camera& camera) { return gpu_ ? gpu_->render(camera) : cpu_->render(camera); }
+
+}  // namespace stochtex::cli

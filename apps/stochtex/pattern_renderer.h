@@ -1,0 +1,38 @@
+#pragma once
+// The renderer behind `render` and `bake-image`: the CPU (FilteredPattern) or,
+// with --gpu, the GLSL implementation on a headless OpenGL context.
+#include <memory>
+#include <string>
+
+#include "common.h"
+
+namespace stochtex::cli {
+
+struct DeviceFlags {
+    bool gpu = false;
+    GpuPattern::Pipeline pipeline = GpuPattern::Pipeline::Fragment;
+    GpuPattern::Derivatives derivatives = GpuPattern::Derivatives::Camera;
+};
+// --gpu, --pipeline and (withDerivatives) --derivatives.
+void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHelp, bool withDerivatives);
+// InputError if --gpu is asked for a filter the GPU does not implement
+// (exact, reference): callers check before building the pattern.
+void checkDeviceFilter(const DeviceFlags& flags, FilterMode mode);
+
+class PatternRenderer {
+public:
+    // pattern must outlive the renderer; checks checkDeviceFilter again.
+    PatternRenderer(const Pattern& pattern, const FilterOptions& options, const DeviceFlags& flags);
+    ~PatternRenderer();
+    Image render(const Camera& camera);
+    // "CPU" or the OpenGL context's description.
+    const std::string& device() const { return device_; }
+
+private:
+    std::unique_ptr<GlContext> context_;
+    std::unique_ptr<GpuPattern> gpu_;
+    std::unique_ptr<FilteredPattern> cpu_;
+    std::string device_ = "CPU";
+};
+
+}  // namespace stochtex::cli

@@ -1,0 +1,147 @@
+// The window of `stochtex view`. Wheel: zoom about the cursor; drag: pan;
+// 1/2/3: filter none/paper/smooth; V: zoom or plane view; Up/Down: tilt; D:
+// footprints from the camera's Jacobian or the rasterizer's derivatives; Esc: quit.
+#include "view_window.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "stochtex/image/image_io.h"
+
+namespace stochtex::cli {
+
+namespace {
+
+struct ViewerState {
+    Camera camera;
+    FilterMode mode = FilterMode::Smooth;
+    GpuPattern::Derivatives derivatives = GpuPattern::Derivatives::Camera;
+    double cursorX = 0, cursorY = 0;
+    bool dragging = false;
+};
+
+void onScroll(GLFWwindow* w, double, double dy) {
+    auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
+    // Zoom about the cursor: the texel under it stays put. GL rows go up,
+    // window rows down.
+    int fw = 0, fh = 0;
+    glfwGetFramebufferSize(w, &fw, &fh);
+    const double px = s->cursorX, py = fh - s->cursorY;
+    View& v = s->camera.view;
+    const double factor = std::pow(1.15, -dy);
+    const double next = std::clamp(v.scale * factor, 1.0 / 64.0, 4096.0);
+    v.offsetU += px * (v.scale - next);
+    v.offsetV += py * (v.scale - next);
+    v.scale = next;
+}
+
+void onCursor(GLFWwindow* w, double x, double y) {
+    auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
+    if (s->dragging) {
+        s->camera.view.offsetU -= (x - s->cursorX) * s->camera.view.scale;
+        s->camera.view.offsetV += (y - s->cursorY) * s->camera.view.scale;
+    }
+    s->cursorX = x;
+    s->cursorY = y;
+}
+
+void onButton(GLFWwindow* w, int button, int action, int) {
+    auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
+    if (button == GLFW_MOUSE_BUTTON_LEFT) s->dragging = action == GLFW_PRESS;
+}
+
+void onKey(GLFWwindow* w, int key, int, int action, int) {
+    if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+    auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
+    switch (key) {
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
+        case GLFW_KEY_1: s->mode = FilterMode::None; break;
+        case GLFW_KEY_2: s->mode = FilterMode::Paper; break;
+        case GLFW_KEY_3: s->mode = FilterMode::Smooth; break;
+        case GLFW_KEY_V:
+            s->camera.kind = s->camera.kind == Camera::Kind::Zoom ? Camera::Kind::Plane : Camera::Kind::Zoom;
+            break;
+        case GLFW_KEY_D:
+            s->derivatives = s->derivatives == GpuPattern::Derivatives::Camera ? GpuPattern::Derivatives::Rasterizer
+                                                                               : GpuPattern::Derivatives::Camera;
+            break;
+        case GLFW_KEY_UP: s->camera.tiltDeg = std::min(89.0, s->camera.tiltDeg + 2.0); break;
+        case GLFW_KEY_DOWN: s->camera.tiltDeg = std::max(0.0, s->camera.tiltDeg - 2.0); break;
+        default: break;
+    }
+}
+
+const char* modeName(FilterMode m) {
+    return m == FilterMode::None ? "unfiltered" : m == FilterMode::Paper ? "paper" : "smooth";
+}
+
+// The last frame from the back buffer (before the swap); GL row 0 is the bottom.
+Image readBackBuffer(int w, int h) {
+    std::vector<float> rgb(size_t(w) * size_t(h) * 3);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, rgb.data());
+    Image shot(w, h, 3, Image::Uninitialized{});
+    for (int y = 0; y < h; ++y) std::copy_n(rgb.data() + size_t(h - 1 - y) * size_t(w) * 3, size_t(w) * 3, shot.row(y));
+    return shot;
+}
+
+}  // namespace
+
+int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWindowOptions& options) {
+    ViewerState state;
+    state.camera = options.camera;
+    state.mode = options.filter.mode;
+    auto context = GlContext::window(state.camera.view.width, state.camera.view.height, "stochtex view");
+    auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
+    glfwSetWindowUserPointer(window, &state);
+    glfwSetScrollCallback(window, onScroll);
+    glfwSetCursorPosCallback(window, onCursor);
+    glfwSetMouseButtonCallback(window, onButton);
+    glfwSetKeyCallback(window, onKey);
+    std::map<FilterMode, std::unique_ptr<GpuPattern>> renderers;  // built on first use
+    int frame = 0;
+    auto last = std::chrono::steady_clock::now();
+    double fps = 0;
+    while (!context->shouldClose() && (options.frames == 0 || frame < options.frames)) {
+        int fw = 0, fh = 0;
+        context->framebufferSize(fw, fh);
+        state.camera.view.width = std::max(fw, 1);
+        state.camera.view.height = std::max(fh, 1);
+        auto& r = renderers[state.mode];
+        if (!r) {
+            FilterOptions o = options.filter;
+            o.mode = state.mode;
+            r = std::make_unique<GpuPattern>(pattern, *context, o);
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, state.camera.view.width, state.camera.view.height);
+        r->setDerivatives(state.derivatives);
+        r->drawView(state.camera);
+        ++frame;
+        if (!options.screenshot.empty() && (options.frames == 0 || frame == options.frames))
+            writeImage(options.screenshot, readBackBuffer(state.camera.view.width, state.camera.view.height));
+        const auto now = std::chrono::steady_clock::now();
+        const double dt = std::chrono::duration<double>(now - last).count();
+        last = now;
+        fps = fps == 0 ? 1.0 / std::max(dt, 1e-6) : 0.9 * fps + 0.1 / std::max(dt, 1e-6);
+        char title[200];
+        std::snprintf(title, sizeof title, "stochtex view - %s - %s - %s view - %s derivatives - scale %.3g - %.0f fps",
+                      name.c_str(), modeName(state.mode), enumName(Camera::kKindNames, state.camera.kind).c_str(),
+                      enumName(kGpuDerivativesNames, state.derivatives).c_str(), state.camera.view.scale, fps);
+        context->setTitle(title);
+        context->swapAndPoll();
+    }
+    return frame;
+}
+
+}  // namespace stochtex::cli
