@@ -207,6 +207,20 @@ ContrastTargets zoomContrastTargets(const ZoomSource& source, int size) {
 
 namespace {
 
+// A 360×240 plot over x ∈ [0, 1] (intensities), the size of every panel of
+// the contrast sheets.
+LinePlotOptions unitAxes(const std::string& title, const std::string& xLabel, const std::string& yLabel) {
+    LinePlotOptions o;
+    o.title = title;
+    o.xLabel = xLabel;
+    o.yLabel = yLabel;
+    o.width = 360;
+    o.height = 240;
+    o.xMin = 0;
+    o.xMax = 1;
+    return o;
+}
+
 Image histogramPlot(const Image& img, const std::string& title) {
     const std::vector<double> h = histogram(img, 64);
     PlotSeries s;
@@ -215,27 +229,12 @@ Image histogramPlot(const Image& img, const std::string& title) {
         s.x.push_back((double(i) + 0.5) / 64.0);
         s.y.push_back(h[i]);
     }
-    LinePlotOptions o;
-    o.title = title;
-    o.xLabel = "intensity";
-    o.yLabel = "fraction of pixels";
-    o.width = 360;
-    o.height = 240;
-    o.xMin = 0;
-    o.xMax = 1;
-    return linePlot({s}, o);
+    return linePlot({s}, unitAxes(title, "intensity", "fraction of pixels"));
 }
 
 // Axes of every correction-curve plot: I ∈ [0, 1] → h(I), room for clamping.
 LinePlotOptions curveAxes(const std::string& title) {
-    LinePlotOptions o;
-    o.title = title;
-    o.xLabel = "I";
-    o.yLabel = "h(I)";
-    o.width = 360;
-    o.height = 240;
-    o.xMin = 0;
-    o.xMax = 1;
+    LinePlotOptions o = unitAxes(title, "I", "h(I)");
     o.yMin = -0.5;
     o.yMax = 1.5;
     return o;
