@@ -20,12 +20,11 @@ FootprintEstimator::FootprintEstimator(const TiledField& field, bool covariance,
     if (covariance && !field.shared())
         throw InputError::parameter("covariance", "needs a field with shared offsets (tiles of N_x and N_y independent)");
     noises_ = {field.channel(0), field.channel(1)};
-    const bool sharedOffsets = covariance;
     for (size_t a = 0; a < 2; ++a) {
         pyramids_[a] = StatsPyramid(noises_[a].example().values());
         if (pack8) pyramids_[a] = pyramids_[a].quantized8();
     }
-    if (sharedOffsets)
+    if (covariance)
         covariance_ = std::make_unique<StatsPyramid>(
             StatsPyramid::covariance(noises_[0].example().values(), noises_[1].example().values()));
 }
@@ -34,6 +33,15 @@ FootprintEstimator::TexelStats FootprintEstimator::texel(double u, double v, int
     TexelStats t;
     texels(u, v, &level, 1, mode, &t);
     return t;
+}
+
+FootprintStats FootprintEstimator::asFootprint(const TexelStats& t) {
+    FootprintStats out;
+    out.mean = t.mean;
+    out.varX = std::max(t.var[0], 0.0f);
+    out.varY = std::max(t.var[1], 0.0f);
+    out.cov = t.cov;
+    return out;
 }
 
 void FootprintEstimator::texels(double u, double v, const int* levels, int count, VarianceEstimator mode,
@@ -112,13 +120,7 @@ __attribute__((flatten)) FootprintStats FootprintEstimator::estimate(const Footp
     const kernel::ProbeLevels first = kernel::probeLevels(f.probes[0].lod, top, f.count);
     if (kernel::isSingleTexel(f.count, first.frac)) {
         const Probe& p = f.probes[0];
-        const TexelStats t = texel(p.u, p.v, first.l0, mode);
-        FootprintStats out;
-        out.mean = t.mean;
-        out.varX = std::max(t.var[0], 0.0f);
-        out.varY = std::max(t.var[1], 0.0f);
-        out.cov = t.cov;
-        return out;
+        return asFootprint(texel(p.u, p.v, first.l0, mode));
     }
     kernel::Moments sums{};
     for (int k = 0; k < f.count; ++k) {

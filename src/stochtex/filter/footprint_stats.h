@@ -58,6 +58,9 @@ public:
         float cov;
     };
     TexelStats texel(double u, double v, int level, VarianceEstimator mode) const;
+    // One texel footprint as a footprint's statistics (eq. 14–15 reduce to
+    // the texel's own; variances clamped at 0).
+    static FootprintStats asFootprint(const TexelStats& t);
     // The same at `count` levels of one probe position (stencil and tile
     // offsets are shared: w_i is taken at the probe centre on every level).
     void texels(double u, double v, const int* levels, int count, VarianceEstimator mode, TexelStats* out) const;

@@ -65,12 +65,7 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
         pattern.tiledField(), pattern.sharedOffsets() && response_->needsCovariance(), options.pack8);
     // Sky: the whole example in one footprint (top MIP level).
     const auto top = estimator_->texel(0.0, 0.0, estimator_->maxLod(), options_.estimator);
-    FootprintStats whole;
-    whole.mean = top.mean;
-    whole.varX = top.var[0];
-    whole.varY = top.var[1];
-    whole.cov = top.cov;
-    sky_ = response_->filtered(whole);
+    sky_ = response_->filtered(FootprintEstimator::asFootprint(top));
 }
 
 Footprint FilteredPattern::footprint(double u, double v, const Jacobian& j) const {
