@@ -23,9 +23,11 @@
 #include "stochtex/kernel/footprint.h"
 #include "stochtex/kernel/grid.h"
 #include "stochtex/kernel/hash.h"
+#include "stochtex/kernel/lookup.h"
 #include "stochtex/kernel/moments.h"
 #include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/tiling_blending.h"
+#include "stochtex/pattern/colormap.h"
 
 namespace stochtex {
 namespace {
@@ -396,6 +398,120 @@ TEST_F(KernelParity, PlaneRayIsBitExact) {
     }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 3); });
     EXPECT_GT(sky, kItems / 50);  // the horizon is in the sample
     EXPECT_LT(sky, kItems / 2);
+}
+
+TEST_F(KernelParity, LookupAddressingAndBlendsAreBitExact) {
+    // Periodic grids of 1…1024 texels at points of one period moved by a tile
+    // offset; tables of 2…1024 entries at x ∈ [−0.2, 1.2] (both clamps).
+    Random r{10};
+    constexpr int kIn = 8;
+    std::vector<uvec4> in(size_t(kItems) * kIn);
+    for (size_t i = 0; i < in.size(); i += kIn) {
+        in[i] = bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f)));
+        in[i + 1] = uvec4(1u << (r.next().x % 11u), 2u + r.next().x % 1023u, 2u + r.next().x % 1023u, 0u);
+        in[i + 2] = bits(vec4(r.uniform(-0.2f, 1.2f), r.uniform(-0.2f, 1.2f), r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f)));
+        for (size_t k = 3; k < 7; ++k)
+            in[i + k] = bits(vec4(r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(0.0f, 8.0f)));
+        in[i + 7] = bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), 0.0f));
+    }
+    const auto gpu = runOnGpu({"lookup"}, R"(
+        vec4 a = wordf(0); uvec4 n = word(1); vec4 c = wordf(2); vec4 f = wordf(7);
+        float w = float(n.x);
+        vec2 t = vec2(periodicTexel(texelOfPoint(a.x, w), a.z * w, w), periodicTexel(texelOfPoint(a.y, w), a.w * w, w));
+        PeriodicTaps k = periodicTaps(t, int(n.x));
+        emitf(0, vec4(t, k.f));
+        emit(1, uvec4(k.left, k.right));
+        TableTap tx = tableTap(c.x, int(n.y)), ty = tableTap(c.y, int(n.z));
+        emit(2, uvec4(uint(tx.i), uint(ty.i), floatBitsToUint(tx.t), floatBitsToUint(ty.t)));
+        emitf(3, blendColumnsFirst(wordf(3), wordf(4), wordf(5), wordf(6), f.xy));
+        emitf(4, blendRowsFirst(wordf(3), wordf(4), wordf(5), wordf(6), f.xy));
+        emitf(5, vec4(blendEntries(c.z, c.w, f.z), 0.0, 0.0, 0.0));)",
+                              kIn, 6, in);
+    compareItems(gpu, 6, [&](int i) {
+        const uvec4* item = &in[size_t(i) * kIn];
+        const vec4 a = floats(item[0]), c = floats(item[2]), f = floats(item[7]);
+        const uvec4 n = item[1];
+        const float w = float(n.x);
+        const vec2 t(periodicTexel(texelOfPoint(a.x, w), a.z * w, w), periodicTexel(texelOfPoint(a.y, w), a.w * w, w));
+        const PeriodicTaps k = periodicTaps(t, int(n.x));
+        const TableTap tx = tableTap(c.x, int(n.y)), ty = tableTap(c.y, int(n.z));
+        const vec4 e[4] = {floats(item[3]), floats(item[4]), floats(item[5]), floats(item[6])};
+        return std::vector<uvec4>{
+            bits(vec4(t, k.f)), uvec4(uvec2(k.left), uvec2(k.right)),
+            uvec4(uint(tx.i), uint(ty.i), floatBitsToUint(tx.t), floatBitsToUint(ty.t)),
+            bits(blendColumnsFirst(e[0], e[1], e[2], e[3], vec2(f.x, f.y))),
+            bits(blendRowsFirst(e[0], e[1], e[2], e[3], vec2(f.x, f.y))),
+            bits(vec4(blendEntries(c.z, c.w, f.z), 0.0f, 0.0f, 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 6); });
+}
+
+// The CPU's periodic grids keep a padded copy and vector loads; held here,
+// bit for bit, to the kernel's taps and blend over the unpadded values (what
+// the shaders fetch), through the tiling-and-blending scanline path.
+TEST(KernelCpuPath, PeriodicGridsFollowTheKernelLookup) {
+    Random r{11};
+    for (const int w : {1, 2, 16, 64}) {
+        Image values(w, w, 1), second(w, w, 1);
+        for (int y = 0; y < w; ++y)
+            for (int x = 0; x < w; ++x) {
+                values.at(x, y) = r.uniform(0.0f, 1.0f);
+                second.at(x, y) = r.uniform(0.0f, 1.0f);
+            }
+        // Examples have W ≥ 2; pyramid tops are 1×1, read through the pair
+        // grid with the scanline path of a 2×2 example's noise.
+        const auto example = std::make_shared<NoiseExample>(w >= 2 ? values : Image(2, 2, 1, 0.5f));
+        const TilingBlendingNoise noise(example, 1234u);
+        const BasicPeriodicGrid<2> pair({&values, &second});
+        const auto kernelLookup = [&](const Image& img, vec2 p, vec2 o) {
+            const float fw = float(w);
+            const vec2 t(periodicTexel(texelOfPoint(p.x, fw), o.x * fw, fw),
+                         periodicTexel(texelOfPoint(p.y, fw), o.y * fw, fw));
+            const PeriodicTaps k = periodicTaps(t, w);
+            const auto texel = [&](int x, int y) { return vec4(img.at(x, y), 0.0f, 0.0f, 0.0f); };
+            return blendColumnsFirst(texel(k.left.x, k.left.y), texel(k.right.x, k.left.y), texel(k.left.x, k.right.y),
+                                     texel(k.right.x, k.right.y), k.f).x;
+        };
+        int mismatches = 0;
+        for (int i = 0; i < kItems / 4; ++i) {
+            const vec2 p(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f));
+            const BlendStencil s = triangleGrid(r.uniform(-8.0f, 8.0f), r.uniform(-8.0f, 8.0f));
+            const auto offsets = noise.offsets(s);
+            const auto pairs = noise.tileValues<2>(noise.tileRows(offsets, p.y, pair), p.x, pair);
+            for (size_t t = 0; t < 3; ++t) {
+                const vec2 o(offsets[t].x, offsets[t].y);
+                mismatches += pairs[t][0] != kernelLookup(values, p, o);
+                mismatches += pairs[t][1] != kernelLookup(second, p, o);
+            }
+            mismatches += pair.sample(p.x, p.y)[1] != kernelLookup(second, p, vec2(0.0f));
+            if (w < 2) continue;
+            const auto tiles = noise.tileValues<1>(noise.tileRows(offsets, p.y, example->grid()), p.x, example->grid());
+            for (size_t t = 0; t < 3; ++t) mismatches += tiles[t][0] != kernelLookup(values, p, vec2(offsets[t].x, offsets[t].y));
+            mismatches += example->grid().sampleBilinear(p.x, p.y) != kernelLookup(values, p, vec2(0.0f));
+        }
+        EXPECT_EQ(mismatches, 0) << "W = " << w;
+    }
+}
+
+// The CPU colormap table reads RGBA vectors; held to the kernel's taps and
+// blend over its entries, bit for bit, clamps included.
+TEST(KernelCpuPath, ColormapTableFollowsTheKernelLookup) {
+    Random r{12};
+    Image entries(5, 7, 3);
+    for (float& v : entries.data()) v = r.uniform(0.0f, 1.0f);
+    const ColormapTable table(entries);
+    int mismatches = 0;
+    for (int i = 0; i < kItems; ++i) {
+        const float x = r.uniform(-0.2f, 1.2f), y = r.uniform(-0.2f, 1.2f);
+        const TableTap tx = tableTap(x, 5), ty = tableTap(y, 7);
+        const auto e = [&](int di, int dj) {
+            const Rgb c = table.entry(tx.i + di, ty.i + dj);
+            return vec4(c[0], c[1], c[2], 0.0f);
+        };
+        const vec4 expected = blendRowsFirst(e(0, 0), e(1, 0), e(0, 1), e(1, 1), vec2(tx.t, ty.t));
+        const Rgb got = table.sample(x, y);
+        mismatches += got[0] != expected.x || got[1] != expected.y || got[2] != expected.z;
+    }
+    EXPECT_EQ(mismatches, 0);
 }
 
 // The CPU scanline path splits the skewed coordinate in double and then

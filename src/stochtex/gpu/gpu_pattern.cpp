@@ -51,14 +51,14 @@ gl::Texture pyramidTexture(const StatsPyramid& p) {
     return t;
 }
 
-// The prefiltered table's layers as one texture array (see atlas()).
-gl::Texture tableTexture(const PrefilteredColormap& table, int rx, int ry) {
-    const int n = int(table.sigmas().size());
-    const Image atlas = table.atlas(rx, ry);
+// RGB tables (rx × ry entries, `layers` of them stacked in `rgb`) as one
+// texture array read with texelFetch: the colormap H (one layer) and the
+// prefiltered table's layers (see atlas()).
+gl::Texture tableTexture(int rx, int ry, int layers, const float* rgb) {
     gl::Texture t = gl::newTexture();
     glBindTexture(GL_TEXTURE_2D_ARRAY, t.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGB32F, rx, ry, n * n, 0, GL_RGB, GL_FLOAT, atlas.data().data());
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGB32F, rx, ry, layers, 0, GL_RGB, GL_FLOAT, rgb);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
@@ -115,8 +115,10 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
             throw InputError("the GPU filters examples of at most 32768² texels, got " + std::to_string(pattern.exampleSize()) +
                              "²");
         const ColormapTable& h = f.blendingSpaceColormap();
-        m.table = tableTexture(f.table(), h.resolutionX(), h.resolutionY());
-        m.tableLevels = int(f.table().sigmas().size());
+        const int levels = int(f.table().sigmas().size());
+        const Image atlas = f.table().atlas(h.resolutionX(), h.resolutionY());
+        m.table = tableTexture(h.resolutionX(), h.resolutionY(), levels * levels, atlas.data().data());
+        m.tableLevels = levels;
     }
     m.vao = gl::newVertexArray();
     m.exampleSize = pattern.exampleSize();
@@ -133,7 +135,7 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
         m.inverses[a] = floatTexture(int(lut.size()), 1, 1, lut.data());
     }
     const Image table = pattern.colormap().table();
-    m.colormap = floatTexture(table.width(), table.height(), 3, table.data().data());
+    m.colormap = tableTexture(table.width(), table.height(), 1, table.data().data());
 }
 
 GpuPattern::~GpuPattern() = default;
@@ -155,9 +157,10 @@ void GpuPattern::bind(unsigned program) const {
         glUniform1i(glGetUniformLocation(program, name), unit);
     };
     auto uniform = [&](const char* name) { return glGetUniformLocation(program, name); };
-    const char* samplers[] = {"uExampleX", "uExampleY", "uInverseX", "uInverseY", "uColormap"};
-    const gl::Texture* textures[] = {&m.examples[0], &m.examples[1], &m.inverses[0], &m.inverses[1], &m.colormap};
-    for (int k = 0; k < 5; ++k) bindTexture(k, GL_TEXTURE_2D, textures[k]->id(), samplers[k]);
+    const char* samplers[] = {"uExampleX", "uExampleY", "uInverseX", "uInverseY"};
+    const gl::Texture* textures[] = {&m.examples[0], &m.examples[1], &m.inverses[0], &m.inverses[1]};
+    for (int k = 0; k < 4; ++k) bindTexture(k, GL_TEXTURE_2D, textures[k]->id(), samplers[k]);
+    bindTexture(4, GL_TEXTURE_2D_ARRAY, m.colormap.id(), "uColormap");
     glUniform1i(uniform("uGaussianizedX"), m.gaussianized[0]);
     glUniform1i(uniform("uGaussianizedY"), m.gaussianized[1]);
     if (m.options.mode != FilterMode::None) {

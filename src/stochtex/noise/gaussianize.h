@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "stochtex/image/image.h"
+#include "stochtex/kernel/lookup.h"
 
 namespace stochtex {
 
@@ -25,10 +26,8 @@ public:
 
     // T⁻¹(g), linear interpolation in a LUT over g ∈ [0,1] (clamped outside).
     float inverse(float g) const {
-        const float t = std::min(std::max(g, 0.0f), 1.0f) * float(lut_.size() - 1);
-        const int i = std::min(int(t), int(lut_.size()) - 2);
-        const float f = t - float(i);
-        return lut_[size_t(i)] + f * (lut_[size_t(i) + 1] - lut_[size_t(i)]);
+        const kernel::TableTap tap = kernel::tableTap(g, int(lut_.size()));
+        return kernel::blendEntries(lut_[size_t(tap.i)], lut_[size_t(tap.i) + 1], tap.t);
     }
 
     const std::vector<float>& inverseLut() const { return lut_; }

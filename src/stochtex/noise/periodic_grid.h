@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "stochtex/image/image.h"
+#include "stochtex/kernel/lookup.h"
 
 namespace stochtex {
 
@@ -47,25 +48,26 @@ public:
     float sizeF() const { return sizeF_; }
     size_t bytes() const { return padded_.size() * sizeof(float); }
 
-    GridRows rows(float v) const {
-        // fy ∈ [−½, W−½]: truncating fy + 1 > 0 is a floor without a libm
-        // call, and y0 ∈ [−1, W−1] indexes the padded copy directly.
-        const float fy = v * sizeF_ - 0.5f;
-        const int y0 = int(fy + 1.0f) - 1;
+    // The row pair of a lookup at the texel coordinate t of
+    // kernel::periodicTexel (in [½, W + ½]): int(t) is the padded index of
+    // the lower row, t − int(t) the upper row's weight (kernel/lookup.glsl).
+    GridRows rowsAt(float t) const {
+        const int y = int(t);
         const size_t stride = (size_t(size_) + 2) * C;
-        const float* r0 = padded_.data() + size_t(y0 + 1) * stride;
-        return {r0, r0 + stride, fy - float(y0)};
+        const float* r0 = padded_.data() + size_t(y) * stride;
+        return {r0, r0 + stride, t - float(y)};
     }
 
-    // Bilinear sample of every channel between the rows r at
-    // t = u·W + ½ ∈ [½, W + ½] (texel units, shifted so that int(t) is the
+    // Bilinear sample of every channel between the rows r at the texel
+    // coordinate t ∈ [½, W + ½] of kernel::periodicTexel (int(t) is the
     // padded index of the left texel).
     //
     // The left and right texels of a row are adjacent in memory (2·C
     // floats), so each row is one vector load: interpolate the two rows
     // vertically as whole vectors, then the left and right halves
     // horizontally. Every grid (examples, pyramid levels) shares this exact
-    // order of operations, so a level-0 mean lookup equals the example's.
+    // order of operations, so a level-0 mean lookup equals the example's;
+    // it is kernel::blendColumnsFirst's order, which the shaders use.
     std::array<float, C> sampleTexels(const GridRows& r, float t) const {
         static_assert(C == 1 || C == 2, "texel pairs are loaded as one 8- or 16-byte vector");
         using Pair = std::conditional_t<C == 1, Float2, Float4>;
@@ -89,7 +91,9 @@ public:
 
     // Bilinear sample at (u, v) ∈ [0,1]² (one period), wrapping at the
     // edges. Texel centres sit at ((i + ½)/W, (j + ½)/W).
-    std::array<float, C> sample(float u, float v) const { return sampleTexels(rows(v), u * sizeF_ + 0.5f); }
+    std::array<float, C> sample(float u, float v) const {
+        return sampleTexels(rowsAt(kernel::texelOfPoint(v, sizeF_)), kernel::texelOfPoint(u, sizeF_));
+    }
 
 private:
     // The channels interleaved, with a one-texel periodic border on every

@@ -98,12 +98,11 @@ public:
     template <class Grid>
     TileRows tileRows(const Offsets& offs, float fv, const Grid& g) const {
         TileRows t;
+        const float size = g.sizeF();
+        const float tv = kernel::texelOfPoint(fv, size);
         for (size_t i = 0; i < 3; ++i) {
-            const TileOffset o = offs[i];
-            float sv = fv + o.y;
-            if (sv >= 1.0f) sv -= 1.0f;
-            t.offsetTexels[i] = o.x * g.sizeF();
-            t.rows[i] = g.rows(sv);
+            t.offsetTexels[i] = offs[i].x * size;
+            t.rows[i] = g.rowsAt(kernel::periodicTexel(tv, offs[i].y * size, size));
         }
         return t;
     }
@@ -114,13 +113,9 @@ public:
     template <int C>
     std::array<std::array<float, C>, 3> tileValues(const TileRows& t, float fu, const BasicPeriodicGrid<C>& g) const {
         const float size = g.sizeF();
-        const float tu = fu * size + 0.5f;  // texel units, as sampleTexels wants
+        const float tu = kernel::texelOfPoint(fu, size);
         std::array<std::array<float, C>, 3> out;
-        for (size_t i = 0; i < 3; ++i) {
-            float su = tu + t.offsetTexels[i];
-            su -= su >= size + 0.5f ? size : 0.0f;  // wrap into one period (branch-free)
-            out[i] = g.sampleTexels(t.rows[i], su);
-        }
+        for (size_t i = 0; i < 3; ++i) out[i] = g.sampleTexels(t.rows[i], kernel::periodicTexel(tu, t.offsetTexels[i], size));
         return out;
     }
 

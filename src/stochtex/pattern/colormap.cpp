@@ -11,8 +11,6 @@ namespace stochtex {
 ColormapTable::ColormapTable(const Image& table) : width_(table.width()), height_(table.height()) {
     if (table.channels() != 3 || table.width() < 2 || table.height() < 2)
         throw std::invalid_argument("ColormapTable: needs an RGB table of at least 2×2");
-    lastX_ = float(width_ - 1);
-    lastY_ = float(height_ - 1);
     rgba_.resize(table.pixelCount());
     const float* src = table.data().data();
     for (size_t i = 0; i < rgba_.size(); ++i) rgba_[i] = Texel{src[3 * i], src[3 * i + 1], src[3 * i + 2], 0.0f};

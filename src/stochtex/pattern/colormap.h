@@ -17,6 +17,7 @@
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/image/image.h"
+#include "stochtex/kernel/lookup.h"
 
 namespace stochtex {
 
@@ -38,19 +39,16 @@ public:
         return {t[0], t[1], t[2]};
     }
 
-    // Bilinear, clamp-to-edge.
+    // Bilinear, clamp-to-edge: the taps of kernel::tableTap and the order
+    // of kernel::blendRowsFirst, as in the shaders.
     Rgb sample(float x, float y) const {
-        const float fx = std::min(std::max(x, 0.0f), 1.0f) * lastX_;
-        const float fy = std::min(std::max(y, 0.0f), 1.0f) * lastY_;
-        const int x0 = std::min(int(fx), width_ - 2);
-        const int y0 = std::min(int(fy), height_ - 2);
-        const float tx = fx - float(x0), ty = fy - float(y0);
+        const kernel::TableTap tx = kernel::tableTap(x, width_), ty = kernel::tableTap(y, height_);
         // Four RGBA texels, interpolated four channels at a time.
-        const Texel* a = rgba_.data() + size_t(y0) * size_t(width_) + size_t(x0);
+        const Texel* a = rgba_.data() + size_t(ty.i) * size_t(width_) + size_t(tx.i);
         const Texel* b = a + width_;
-        const Texel top = a[0] + tx * (a[1] - a[0]);
-        const Texel bottom = b[0] + tx * (b[1] - b[0]);
-        const Texel c = top + ty * (bottom - top);
+        const Texel bottom = a[0] + tx.t * (a[1] - a[0]);
+        const Texel top = b[0] + tx.t * (b[1] - b[0]);
+        const Texel c = bottom + ty.t * (top - bottom);
         return {c[0], c[1], c[2]};
     }
 
@@ -67,7 +65,6 @@ private:
     typedef float Texel __attribute__((vector_size(16)));
     int width_ = 0, height_ = 0;
     std::vector<Texel, DefaultInitAllocator<Texel>> rgba_;  // filled by the constructor
-    float lastX_ = 1.0f, lastY_ = 1.0f;  // Rx − 1, Ry − 1
 };
 
 // Analytic presets.

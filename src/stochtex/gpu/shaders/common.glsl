@@ -1,32 +1,29 @@
 // Shared by every stochtex shader: texture lookups of the examples, T⁻¹ and
-// the colormap, and eq. 7 over them. The hash, the triangle grid and the
-// tile offsets are the kernel's (kernel/hash.glsl, kernel/grid.glsl: the
-// same source the CPU compiles); the lookups mirror noise/periodic_grid.h.
+// the colormap, and eq. 7 over them. The hash, the triangle grid, the tile
+// offsets and the lookups' addressing and blends are the kernel's
+// (kernel/hash.glsl, grid.glsl, lookup.glsl: the same source the CPU
+// compiles); this file only fetches the texels.
 
 // Bilinear lookup of a periodic W×W grid (texel centres at (i + ½)/W) at
-// p ∈ [0, 1)², vertical interpolation first as on the CPU. Any channel count:
-// the caller picks the channels.
-vec4 periodicBilinearLod(sampler2D grid, vec2 p, int lod) {
+// fu + offset, fu ∈ [0, 1)² a point of one period and offset ∈ [0, 1)² a
+// tile's offset: the kernel's addressing and blend (kernel/lookup.glsl), as
+// the CPU's grids do it. Any channel count: the caller picks the channels.
+vec4 periodicBilinearLod(sampler2D grid, vec2 fu, vec2 offset, int lod) {
     // Mip l of a W-texel level 0 is max(W >> l, 1) wide. Not textureSize(grid,
     // lod): llvmpipe answers that size query with one lane's lod for the
     // whole SIMD vector, wrong where neighbouring pixels read other levels.
     int w = max(textureSize(grid, 0).x >> lod, 1);
-    vec2 t = p * float(w) - 0.5;
-    vec2 i0 = floor(t);
-    vec2 f = t - i0;
-    ivec2 a = (ivec2(i0) + w) % w;
-    ivec2 b = (a + 1) % w;
-    vec4 t00 = texelFetch(grid, ivec2(a.x, a.y), lod), t10 = texelFetch(grid, ivec2(b.x, a.y), lod);
-    vec4 t01 = texelFetch(grid, ivec2(a.x, b.y), lod), t11 = texelFetch(grid, ivec2(b.x, b.y), lod);
-    vec4 left = t00 + f.y * (t01 - t00), right = t10 + f.y * (t11 - t10);
-    return left + f.x * (right - left);
+    float fw = float(w);
+    vec2 t = vec2(periodicTexel(texelOfPoint(fu.x, fw), offset.x * fw, fw),
+                  periodicTexel(texelOfPoint(fu.y, fw), offset.y * fw, fw));
+    PeriodicTaps k = periodicTaps(t, w);
+    return blendColumnsFirst(texelFetch(grid, k.left, lod), texelFetch(grid, ivec2(k.right.x, k.left.y), lod),
+                             texelFetch(grid, ivec2(k.left.x, k.right.y), lod), texelFetch(grid, k.right, lod), k.f);
 }
-
-vec4 periodicBilinear(sampler2D grid, vec2 p) { return periodicBilinearLod(grid, p, 0); }
 
 // Tile i's value of the example at fu (uv reduced to one period).
 float tileValue(sampler2D example, uint seed, Stencil s, int i, vec2 fu) {
-    return periodicBilinear(example, fract(fu + tileOffset(stencilVertex(s, i), seed))).r;
+    return periodicBilinearLod(example, fu, tileOffset(stencilVertex(s, i), seed), 0).r;
 }
 
 // Eq. 7: N(u) = μ + Σ w_i (E(u + o_i) − μ). The three tiles are written out
@@ -38,25 +35,20 @@ float tilingBlending(sampler2D example, float mean, uint seed, Stencil s, vec2 f
 
 // T⁻¹ through its LUT (n × 1 texture), clamped to [0, 1] as on the CPU.
 float inverseTransform(sampler2D lut, float g) {
-    int n = textureSize(lut, 0).x;
-    float t = clamp(g, 0.0, 1.0) * float(n - 1);
-    int i = min(int(t), n - 2);
-    float f = t - float(i);
-    float a = texelFetch(lut, ivec2(i, 0), 0).r, b = texelFetch(lut, ivec2(i + 1, 0), 0).r;
-    return a + f * (b - a);
+    TableTap tap = tableTap(g, textureSize(lut, 0).x);
+    return blendEntries(texelFetch(lut, ivec2(tap.i, 0), 0).r, texelFetch(lut, ivec2(tap.i + 1, 0), 0).r, tap.t);
 }
 
-// The colormap table H: entry (i, j) at (i/(Rx − 1), j/(Ry − 1)), bilinear,
-// clamp-to-edge.
-vec3 colormapLookup(sampler2D table, vec2 xy) {
-    ivec2 r = textureSize(table, 0);
-    vec2 fxy = clamp(xy, 0.0, 1.0) * vec2(r - 1);
-    ivec2 i0 = min(ivec2(fxy), r - 2);
-    vec2 t = fxy - vec2(i0);
-    vec3 a0 = texelFetch(table, i0, 0).rgb, a1 = texelFetch(table, i0 + ivec2(1, 0), 0).rgb;
-    vec3 b0 = texelFetch(table, i0 + ivec2(0, 1), 0).rgb, b1 = texelFetch(table, i0 + ivec2(1, 1), 0).rgb;
-    vec3 top = a0 + t.x * (a1 - a0), bottom = b0 + t.x * (b1 - b0);
-    return top + t.y * (bottom - top);
+// Layer `layer` of a table texture (the colormap H, a layer of H̄): entry
+// (i, j) at (i/(Rx − 1), j/(Ry − 1)), bilinear, clamp-to-edge, by the
+// kernel's taps and blend as on the CPU (pattern/colormap.h).
+vec3 tableLookup(sampler2DArray table, int layer, vec2 xy) {
+    ivec2 r = textureSize(table, 0).xy;
+    TableTap tx = tableTap(xy.x, r.x), ty = tableTap(xy.y, r.y);
+    vec4 e00 = texelFetch(table, ivec3(tx.i, ty.i, layer), 0), e10 = texelFetch(table, ivec3(tx.i + 1, ty.i, layer), 0);
+    vec4 e01 = texelFetch(table, ivec3(tx.i, ty.i + 1, layer), 0);
+    vec4 e11 = texelFetch(table, ivec3(tx.i + 1, ty.i + 1, layer), 0);
+    return blendRowsFirst(e00, e10, e01, e11, vec2(tx.t, ty.t)).rgb;
 }
 
 // The pattern's noises: means, offset seeds, the tiling grid's density.

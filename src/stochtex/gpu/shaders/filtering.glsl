@@ -24,12 +24,11 @@ struct TileStats {
 
 TileStats tileStats(Stencil s, int i, vec2 fu, int level) {
     uvec2 vertex = stencilVertex(s, i);
-    vec2 px = fract(fu + tileOffset(vertex, uSeedX));
-    vec2 py = fract(fu + tileOffset(vertex, uSeedY));
+    vec2 ox = tileOffset(vertex, uSeedX), oy = tileOffset(vertex, uSeedY);
     TileStats t;
-    t.x = periodicBilinearLod(uStatsX, px, level).rg;
-    t.y = periodicBilinearLod(uStatsY, py, level).rg;
-    t.c = uHasCovariance ? periodicBilinearLod(uCovariance, px, level).g : 0.0;
+    t.x = periodicBilinearLod(uStatsX, fu, ox, level).rg;
+    t.y = periodicBilinearLod(uStatsY, fu, oy, level).rg;
+    t.c = uHasCovariance ? periodicBilinearLod(uCovariance, fu, ox, level).g : 0.0;
     return t;
 }
 
@@ -48,18 +47,7 @@ void texelStats(vec2 uv, int level, out vec4 stats, out float cov) {
     }
 }
 
-vec3 tableLayer(int kx, int ky, vec2 mu) {
-    int layer = kx * uTableLevels + ky;
-    ivec2 r = textureSize(uTable, 0).xy;
-    vec2 fxy = clamp(mu, 0.0, 1.0) * vec2(r - 1);
-    ivec2 i0 = min(ivec2(fxy), r - 2);
-    vec2 t = fxy - vec2(i0);
-    vec3 a0 = texelFetch(uTable, ivec3(i0, layer), 0).rgb, a1 = texelFetch(uTable, ivec3(i0 + ivec2(1, 0), layer), 0).rgb;
-    vec3 b0 = texelFetch(uTable, ivec3(i0 + ivec2(0, 1), layer), 0).rgb;
-    vec3 b1 = texelFetch(uTable, ivec3(i0 + ivec2(1, 1), layer), 0).rgb;
-    vec3 top = a0 + t.x * (a1 - a0), bottom = b0 + t.x * (b1 - b0);
-    return top + t.y * (bottom - top);
-}
+vec3 tableLayer(int kx, int ky, vec2 mu) { return tableLookup(uTable, kx * uTableLevels + ky, mu); }
 
 vec3 prefiltered(vec2 mu, vec2 sigma) {
     LayerBlend b = layerBlend(sigma, !uSmooth, uTableLevels);

@@ -1,7 +1,7 @@
 // The unfiltered pattern S = H(N_x, N_y) at a point.
 uniform sampler2D uExampleX, uExampleY;   // R32F, W×W
 uniform sampler2D uInverseX, uInverseY;   // T⁻¹ LUTs (n × 1)
-uniform sampler2D uColormap;              // RGB32F table
+uniform sampler2DArray uColormap;         // RGB32F table, one layer
 uniform bool uGaussianizedX, uGaussianizedY;
 
 vec3 unfilteredColour(vec2 uv) {
@@ -11,5 +11,5 @@ vec3 unfilteredColour(vec2 uv) {
     float ny = tilingBlending(uExampleY, uMeanY, uSeedY, s, fu);
     if (uGaussianizedX) nx = inverseTransform(uInverseX, nx);
     if (uGaussianizedY) ny = inverseTransform(uInverseY, ny);
-    return colormapLookup(uColormap, vec2(nx, ny));
+    return tableLookup(uColormap, 0, vec2(nx, ny));
 }
