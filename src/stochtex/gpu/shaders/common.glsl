@@ -59,8 +59,7 @@ vec3 colormapLookup(sampler2D table, vec2 xy) {
     return top + t.y * (bottom - top);
 }
 
-// The pattern's noises: means, offset seeds, the tiling grid's density.
-uniform float uMeanX, uMeanY;
-uniform uint uSeedX, uSeedY;
-uniform float uDensity;
-uniform float uInvW;         // 1 / W, W = the examples' size in texels
+// The pattern's parameters (kernel/pattern_params.glsl): one std140 block,
+// filled on the CPU from the same struct (GpuPattern::bind, an engine from
+// the export's README).
+layout(std140) uniform PatternParameters { PatternParams uPattern; };
