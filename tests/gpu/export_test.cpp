@@ -4,11 +4,15 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
 #include <cstdio>
-
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "stochtex/gpu/export.h"
 #include "stochtex/gpu/gl_context.h"
@@ -37,17 +41,73 @@ GLuint compile(GLenum stage, const std::string& src) {
     return s;
 }
 
+std::string readText(const fs::path& file) {
+    std::ifstream in(file);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The PatternParameters block's bytes as an engine fills them: each member's
+// value from the manifest, written at the offset the README's member table
+// gives ("| offset | type | `member` | meaning | source |").
+std::vector<std::uint8_t> parameterBlock(const std::string& readme, const nlohmann::json& m, std::size_t bytes) {
+    const auto f = [](float v) { return std::bit_cast<std::uint32_t>(v); };
+    const auto i = [](int v) { return std::bit_cast<std::uint32_t>(v); };
+    std::map<std::string, std::vector<std::uint32_t>> values = {
+        {"meanX", {f(m["means"][0].get<float>())}},
+        {"meanY", {f(m["means"][1].get<float>())}},
+        {"gridDensity", {f(m["grid_density"].get<float>())}},
+        {"invExampleSize", {f(1.0f / m["example_size"].get<float>())}},
+        {"seedX", {m["seeds"][0].get<std::uint32_t>()}},
+        {"seedY", {m["seeds"][1].get<std::uint32_t>()}},
+        {"gaussianizedX", {0}},
+        {"gaussianizedY", {0}},
+        {"hasCovariance", {i(m["covariance"].get<bool>())}},
+        {"deliotHeitz", {0}},
+        {"maxLod", {i(m["levels"].get<int>() - 1)}},
+        {"aniso", {i(m["aniso"].get<int>())}},
+        {"smoothTable", {i(m["filter"] == "smooth")}},
+        {"tableLevels", {i(m["table"]["levels"].get<int>())}},
+        {"spare0", {0}},
+        {"spare1", {0}},
+    };
+    std::vector<std::uint32_t>& averages = values["averageMoments"];
+    const nlohmann::json& am = m["average_moments"];
+    for (int l = 0; l < m["levels"].get<int>(); ++l)
+        averages.insert(averages.end(),
+                        {f(am["x"][l].get<float>()), f(am["y"][l].get<float>()), f(am["cov"][l].get<float>()), 0u});
+    std::vector<std::uint8_t> block(bytes, 0);
+    std::istringstream lines(readme);
+    for (std::string line; std::getline(lines, line);) {
+        // A member row: "| 16 | `uint` | `seedX` | ..."; no other table's row starts with a number.
+        std::size_t offset = 0;
+        char member[64] = {};
+        if (std::sscanf(line.c_str(), "| %zu | `%*[^`]` | `%63[^`]`", &offset, member) != 2) continue;
+        const auto it = values.find(member);
+        if (it == values.end()) {
+            ADD_FAILURE() << "README member " << member << " has no value here";
+            continue;
+        }
+        EXPECT_LE(offset + 4 * it->second.size(), bytes) << member;
+        if (offset + 4 * it->second.size() > bytes) continue;
+        std::memcpy(block.data() + offset, it->second.data(), 4 * it->second.size());
+        values.erase(it);
+    }
+    EXPECT_TRUE(values.empty()) << values.size() << " members missing from the README, e.g. " << values.begin()->first;
+    return block;
+}
+
 // An engine's view of the export: it knows GL and the README, nothing else.
 Image renderFromExport(const fs::path& dir, int width, int height, double scale) {
     std::ifstream mf(dir / "manifest.json");
     const nlohmann::json m = nlohmann::json::parse(mf);
-    std::ifstream inc(dir / "stochtex.glsl");
-    const std::string include((std::istreambuf_iterator<char>(inc)), std::istreambuf_iterator<char>());
+    const std::string include = readText(dir / "stochtex.glsl");
     const GLuint vs = compile(GL_VERTEX_SHADER, "#version 330 core\nvoid main() { vec2 p = vec2(float((gl_VertexID << 1) & 2), "
                                                 "float(gl_VertexID & 2)); gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }\n");
-    const GLuint fs_ = compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + include +
-                                                      "uniform float uPixelScale;\nout vec4 colour;\n"
-                                                      "void main() { colour = stochtex_sample(gl_FragCoord.xy * uPixelScale * uInvW); }\n");
+    const GLuint fs_ =
+        compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + include +
+                                        "uniform float uPixelScale;\nout vec4 colour;\n"
+                                        "void main() { colour = stochtex_sample(gl_FragCoord.xy * uPixelScale * "
+                                        "uPattern.invExampleSize); }\n");
     const GLuint prog = glCreateProgram();
     glAttachShader(prog, vs);
     glAttachShader(prog, fs_);
@@ -90,24 +150,19 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale)
     unit(1, GL_TEXTURE_2D, sy, "uStatsY");
     unit(2, GL_TEXTURE_2D, cov, "uCovariance");
     unit(3, GL_TEXTURE_2D_ARRAY, table, "uTable");
+    // The parameter block, at binding point 3 (not GpuPattern's 0, so only this buffer can be read).
+    const GLuint blockIndex = glGetUniformBlockIndex(prog, "PatternParameters");
+    EXPECT_NE(blockIndex, GL_INVALID_INDEX);
+    GLint blockBytes = 0;
+    glGetActiveUniformBlockiv(prog, blockIndex, GL_UNIFORM_BLOCK_DATA_SIZE, &blockBytes);
+    const std::vector<std::uint8_t> block = parameterBlock(readText(dir / "README.md"), m, std::size_t(blockBytes));
+    GLuint parameters = 0;
+    glGenBuffers(1, &parameters);
+    glBindBuffer(GL_UNIFORM_BUFFER, parameters);
+    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(block.size()), block.data(), GL_STATIC_DRAW);
+    glUniformBlockBinding(prog, blockIndex, 3);
+    glBindBufferBase(GL_UNIFORM_BUFFER, 3, parameters);
     auto loc = [&](const char* n) { return glGetUniformLocation(prog, n); };
-    glUniform1f(loc("uMeanX"), m["means"][0].get<float>());
-    glUniform1f(loc("uMeanY"), m["means"][1].get<float>());
-    glUniform1ui(loc("uSeedX"), m["seeds"][0].get<unsigned>());
-    glUniform1ui(loc("uSeedY"), m["seeds"][1].get<unsigned>());
-    glUniform1f(loc("uDensity"), m["grid_density"].get<float>());
-    glUniform1f(loc("uInvW"), 1.0f / m["example_size"].get<float>());
-    glUniform1i(loc("uHasCovariance"), shared);
-    glUniform1i(loc("uDeliotHeitz"), 0);
-    for (const char* k : {"x", "y", "cov"}) {
-        const std::vector<float> v = m["average_moments"][k].get<std::vector<float>>();
-        const std::string name = std::string("uAverage") + (k[0] == 'x' ? "X" : k[0] == 'y' ? "Y" : "Cov");
-        glUniform1fv(loc(name.c_str()), GLsizei(v.size()), v.data());
-    }
-    glUniform1i(loc("uMaxLod"), m["levels"].get<int>() - 1);
-    glUniform1i(loc("uAniso"), m["aniso"].get<int>());
-    glUniform1i(loc("uSmooth"), m["filter"] == "smooth");
-    glUniform1i(loc("uTableLevels"), tl);
     glUniform1f(loc("uPixelScale"), float(scale));
     GLuint target = 0, fbo = 0, vao = 0;
     glGenTextures(1, &target);
@@ -130,6 +185,7 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale)
     glDeleteTextures(4, textures);
     if (shared) glDeleteTextures(1, &cov);
     glDeleteFramebuffers(1, &fbo);
+    glDeleteBuffers(1, &parameters);
     glDeleteVertexArrays(1, &vao);
     glDeleteProgram(prog);
     glDeleteShader(vs);

@@ -2,11 +2,14 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/kernel/pattern_params.h"
 
 namespace stochtex {
 
@@ -16,11 +19,12 @@ std::string exportedShaderInclude() {
     return "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
            "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
            "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
-           "// footprint comes from this fragment's derivatives of uv. Uniforms and\n"
-           "// textures to set are listed in README.md.\n\n" +
+           "// footprint comes from this fragment's derivatives of uv. The textures to\n"
+           "// bind and the PatternParameters block to fill are described in README.md.\n\n" +
            [] {
                std::string body;
-               for (const auto& stem : shaderChunks(programRecipe("export-include").main)) body += shaderText(stem) + "\n";
+               for (const auto& stem : shaderChunks(programRecipe("export-include").main))
+                   body += shaderText(stem) + "\n";
                return body;
            }() +
            "vec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";
@@ -36,6 +40,8 @@ void writeStats(const StatsPyramid& p, const std::string& dir, const std::string
     }
 }
 
+// README.md; @BLOCK@, @SIZE@ and @MEMBERS@ are filled from the parameter
+// block's one table (kernel::kPatternParamFields).
 const char* kReadme = R"(# stochtex export
 
 Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
@@ -52,14 +58,18 @@ Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
 All are read with `texelFetch` (no filtering needed); set `GL_TEXTURE_MAX_LEVEL`
 to L so the pyramids are mipmap-complete.
 
-## Uniforms (from `manifest.json`)
+## Parameters: the `@BLOCK@` uniform block
 
-`uMeanX`, `uMeanY` (`means`), `uSeedX`, `uSeedY` (`seeds`, unsigned),
-`uDensity` (`grid_density`), `uInvW` (1 / `example_size`), `uHasCovariance`
-(`covariance`: the response reads the covariance of a shared-offset pair), `uDeliotHeitz` (false), `uAverageX/Y/Cov[16]`
-(`average_moments`), `uMaxLod` (`levels` − 1), `uAniso` (`aniso`),
-`uSmooth` (`filter` == "smooth"), `uTableLevels` (`table.levels`).
+`stochtex.glsl` declares `layout(std140) uniform @BLOCK@ { PatternParams uPattern; };`.
+Fill one buffer of @SIZE@ bytes with the members below (4-byte values at these
+std140 offsets; an int that is a switch holds 0 or 1), upload it as a uniform
+buffer and attach it to the block:
+`glUniformBlockBinding(program, glGetUniformBlockIndex(program, "@BLOCK@"), n)`,
+`glBindBufferBase(GL_UNIFORM_BUFFER, n, buffer)`.
 
+| offset | type | member | meaning | from `manifest.json` |
+| --- | --- | --- | --- | --- |
+@MEMBERS@
 ## Use
 
 ```glsl
@@ -70,6 +80,23 @@ out vec4 colour;
 void main() { colour = stochtex_sample(vUv * 8.0); }
 ```
 )";
+
+std::string readme() {
+    std::string members;
+    for (const kernel::PatternParamField& f : kernel::kPatternParamFields) {
+        const std::string type = f.count > 1 ? std::string(f.type) + "[" + std::to_string(f.count) + "]" : f.type;
+        members += "| " + std::to_string(f.offset) + " | `" + type + "` | `" + f.name + "` | " + f.meaning + " | " +
+                   f.manifest + " |\n";
+    }
+    const std::pair<std::string, std::string> fills[] = {{"@BLOCK@", kPatternBlockName},
+                                                         {"@SIZE@", std::to_string(sizeof(kernel::PatternParams))},
+                                                         {"@MEMBERS@", members}};
+    std::string text = kReadme;
+    for (const auto& [key, value] : fills)
+        for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
+            text.replace(at, key.size(), value);
+    return text;
+}
 
 }  // namespace
 
@@ -115,7 +142,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
                   {"sigmas", table.sigmas()}, {"precision", exportOptions.halfTable ? "half" : "float"}};
     writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
     writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude());
-    writeFileAtomic((fs::path(dir) / "README.md").string(), kReadme);
+    writeFileAtomic((fs::path(dir) / "README.md").string(), readme());
 }
 
 }  // namespace stochtex

@@ -11,6 +11,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/render_target.h"
+#include "stochtex/kernel/pattern_params.h"
 
 namespace stochtex {
 
@@ -73,19 +74,13 @@ struct GpuPattern::Impl {
     bool hasCompute = false;
     Pipeline pipeline = Pipeline::Fragment;
     gl::Texture examples[2], inverses[2], colormap;
-    float means[2] = {0, 0};
-    uint32_t seeds[2] = {0, 0};
-    bool gaussianized[2] = {false, false};
-    int exampleSize = 0;
-    double density = 0;
+    gl::Buffer parameters;  // kernel::PatternParams, the shaders' PatternParameters block
     Rgb sky{};
     // Filtered rendering.
     FilterOptions options;
     Derivatives derivatives = Derivatives::Camera;
     gl::Texture stats[2], covariance, table;
     bool shared = false;
-    int maxLod = 0, tableLevels = 0;
-    std::vector<float> average[3];  // Deliot–Heitz per-level moments: x, y, covariance
 };
 
 GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
@@ -100,42 +95,52 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     m.program = buildProgram(filtered ? "filtered" : "unfiltered");
     const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
     m.sky = f.skyColour();
+    kernel::PatternParams p{};
     if (filtered) {
         const FootprintEstimator& est = f.estimator();
+        if (est.maxLod() >= kernel::kMaxPyramidLevels)
+            throw InputError("the GPU filters examples of at most 32768² texels, got " +
+                             std::to_string(pattern.exampleSize()) + "²");
         for (int a = 0; a < 2; ++a) m.stats[a] = pyramidTexture(est.pyramid(a));
         m.shared = est.covariancePyramid() != nullptr;
         if (m.shared) m.covariance = pyramidTexture(*est.covariancePyramid());
-        m.maxLod = est.maxLod();
-        for (int l = 0; l <= m.maxLod; ++l) {
-            m.average[0].push_back(est.pyramid(0).averageMoment(l));
-            m.average[1].push_back(est.pyramid(1).averageMoment(l));
-            m.average[2].push_back(m.shared ? est.covariancePyramid()->averageMoment(l) : 0.0f);
-        }
-        if (m.maxLod >= 16)
-            throw InputError("the GPU filters examples of at most 32768² texels, got " + std::to_string(pattern.exampleSize()) +
-                             "²");
         const ColormapTable& h = f.blendingSpaceColormap();
         const int levels = int(f.table().sigmas().size());
         const Image atlas = f.table().atlas(h.resolutionX(), h.resolutionY());
         m.table = tableTexture(h.resolutionX(), h.resolutionY(), levels * levels, atlas.data().data());
-        m.tableLevels = levels;
+        p.hasCovariance = m.shared;
+        p.deliotHeitz = options.estimator == VarianceEstimator::DeliotHeitz;
+        p.maxLod = est.maxLod();
+        p.aniso = options.aniso;
+        p.smoothTable = options.mode == FilterMode::Smooth;
+        p.tableLevels = levels;
+        for (int l = 0; l <= est.maxLod(); ++l)
+            p.averageMoments[l] = {est.pyramid(0).averageMoment(l), est.pyramid(1).averageMoment(l),
+                                   m.shared ? est.covariancePyramid()->averageMoment(l) : 0.0f, 0.0f};
     }
     m.vao = gl::newVertexArray();
-    m.exampleSize = pattern.exampleSize();
-    m.density = pattern.gridDensity();
+    p.meanX = pattern.example(0).mean();
+    p.meanY = pattern.example(1).mean();
+    p.gridDensity = float(pattern.gridDensity());
+    p.invExampleSize = float(1.0 / pattern.exampleSize());
+    p.seedX = pattern.noises()[0].offsetSeed();
+    p.seedY = pattern.noises()[1].offsetSeed();
+    p.gaussianizedX = pattern.example(0).gaussianized();
+    p.gaussianizedY = pattern.example(1).gaussianized();
     for (int a = 0; a < 2; ++a) {
         const NoiseExample& ex = pattern.example(a);
         const Image& v = ex.grid().values();
         m.examples[a] = floatTexture(v.width(), v.height(), 1, v.data().data());
-        m.means[a] = ex.mean();
-        m.seeds[a] = pattern.noises()[size_t(a)].offsetSeed();
-        m.gaussianized[a] = ex.gaussianized();
         const std::vector<float> identity = {0.0f, 1.0f};
         const std::vector<float>& lut = ex.gaussianized() ? ex.transform()->inverseLut() : identity;
         m.inverses[a] = floatTexture(int(lut.size()), 1, 1, lut.data());
     }
     const Image table = pattern.colormap().table();
     m.colormap = tableTexture(table.width(), table.height(), 1, table.data().data());
+    m.parameters = gl::newBuffer();
+    glBindBuffer(GL_UNIFORM_BUFFER, m.parameters.id());
+    glBufferData(GL_UNIFORM_BUFFER, sizeof p, &p, GL_STATIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
 }
 
 GpuPattern::~GpuPattern() = default;
@@ -156,35 +161,21 @@ void GpuPattern::bind(unsigned program) const {
         glBindTexture(target, texture);
         glUniform1i(glGetUniformLocation(program, name), unit);
     };
-    auto uniform = [&](const char* name) { return glGetUniformLocation(program, name); };
     const char* samplers[] = {"uExampleX", "uExampleY", "uInverseX", "uInverseY"};
     const gl::Texture* textures[] = {&m.examples[0], &m.examples[1], &m.inverses[0], &m.inverses[1]};
     for (int k = 0; k < 4; ++k) bindTexture(k, GL_TEXTURE_2D, textures[k]->id(), samplers[k]);
     bindTexture(4, GL_TEXTURE_2D_ARRAY, m.colormap.id(), "uColormap");
-    glUniform1i(uniform("uGaussianizedX"), m.gaussianized[0]);
-    glUniform1i(uniform("uGaussianizedY"), m.gaussianized[1]);
     if (m.options.mode != FilterMode::None) {
         bindTexture(5, GL_TEXTURE_2D, m.stats[0].id(), "uStatsX");
         bindTexture(6, GL_TEXTURE_2D, m.stats[1].id(), "uStatsY");
         bindTexture(7, GL_TEXTURE_2D, m.shared ? m.covariance.id() : m.stats[0].id(), "uCovariance");
         bindTexture(8, GL_TEXTURE_2D_ARRAY, m.table.id(), "uTable");
-        glUniform1i(uniform("uHasCovariance"), m.shared);
-        glUniform1i(uniform("uDeliotHeitz"), m.options.estimator == VarianceEstimator::DeliotHeitz);
-        glUniform1fv(uniform("uAverageX"), GLsizei(m.average[0].size()), m.average[0].data());
-        glUniform1fv(uniform("uAverageY"), GLsizei(m.average[1].size()), m.average[1].data());
-        glUniform1fv(uniform("uAverageCov"), GLsizei(m.average[2].size()), m.average[2].data());
-        glUniform1i(uniform("uMaxLod"), m.maxLod);
-        glUniform1i(uniform("uAniso"), m.options.aniso);
-        glUniform1i(uniform("uSmooth"), m.options.mode == FilterMode::Smooth);
-        glUniform1i(uniform("uTableLevels"), m.tableLevels);
     }
-    glUniform1f(uniform("uMeanX"), m.means[0]);
-    glUniform1f(uniform("uMeanY"), m.means[1]);
-    glUniform1ui(uniform("uSeedX"), m.seeds[0]);
-    glUniform1ui(uniform("uSeedY"), m.seeds[1]);
-    glUniform1f(uniform("uInvW"), float(1.0 / m.exampleSize));
-    glUniform1f(uniform("uDensity"), float(m.density));
-    glUniform3f(uniform("uSky"), m.sky[0], m.sky[1], m.sky[2]);
+    // GLSL 3.30 / ES 3.00 cannot fix a block's binding point in the source.
+    const GLuint block = glGetUniformBlockIndex(program, kPatternBlockName);
+    if (block != GL_INVALID_INDEX) glUniformBlockBinding(program, block, kPatternBlockBinding);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kPatternBlockBinding, m.parameters.id());
+    glUniform3f(glGetUniformLocation(program, "uSky"), m.sky[0], m.sky[1], m.sky[2]);
 }
 
 void GpuPattern::setDerivatives(Derivatives d) {

@@ -56,9 +56,10 @@ public:
     // throughput benchmarks.
     double secondsPerFrame(const Camera& camera, int frames);
 
-    // Makes `program` current and binds every texture and uniform of the
-    // pattern to it (both the unfiltered and the filtered sets: a program
-    // ignores what it lacks). For programs of other recipes (the scene).
+    // Makes `program` current and binds every texture of the pattern to it
+    // (both the unfiltered and the filtered sets: a program ignores what it
+    // lacks) and its parameters' buffer to its PatternParameters block. For
+    // programs of other recipes (the scene).
     void bind(unsigned program) const;
     // Paper or smooth (else the unfiltered S = H ∘ N).
     bool filtered() const;

@@ -23,6 +23,12 @@ struct ProgramRecipe {
     std::vector<std::string> main;    // fragment, compute or include files
 };
 
+// The uniform block of the pattern's parameters (kernel::PatternParams) that
+// every recipe's programs declare (gpu/shaders/common.glsl), and the binding
+// point GpuPattern::bind attaches it to.
+inline constexpr const char* kPatternBlockName = "PatternParameters";
+inline constexpr unsigned kPatternBlockBinding = 0;
+
 const std::vector<ProgramRecipe>& programRecipes();
 // InputError-free: an unknown name is a programming error (std::invalid_argument).
 const ProgramRecipe& programRecipe(const std::string& name);

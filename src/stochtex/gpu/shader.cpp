@@ -53,7 +53,7 @@ std::string header(GlslTarget target) {
 const std::map<std::string, std::vector<std::string>>& chunkNeeds() {
     static const std::map<std::string, std::vector<std::string>> needs = {
         {"grid", {"hash"}},
-        {"common", {"hash", "grid", "lookup"}},
+        {"common", {"hash", "grid", "lookup", "pattern_params"}},
         {"filtering", {"footprint", "moments", "sigma_levels"}},
         {"view", {"camera"}},
     };

@@ -51,8 +51,7 @@ vec3 tableLookup(sampler2DArray table, int layer, vec2 xy) {
     return blendRowsFirst(e00, e10, e01, e11, vec2(tx.t, ty.t)).rgb;
 }
 
-// The pattern's noises: means, offset seeds, the tiling grid's density.
-uniform float uMeanX, uMeanY;
-uniform uint uSeedX, uSeedY;
-uniform float uDensity;
-uniform float uInvW;         // 1 / W, W = the examples' size in texels
+// The pattern's parameters (kernel/pattern_params.glsl): one std140 block,
+// filled on the CPU from the same struct (GpuPattern::bind, an engine from
+// the export's README).
+layout(std140) uniform PatternParameters { PatternParams uPattern; };

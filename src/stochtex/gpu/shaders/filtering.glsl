@@ -7,50 +7,45 @@
 // CPU.
 uniform sampler2D uStatsX, uStatsY, uCovariance;  // RG32F mip levels: (E_l, V_l) / (E_l, C_l)
 uniform sampler2DArray uTable;                     // RGBA32F, layer kx·levels + ky
-uniform bool uHasCovariance;   // covariances from uCovariance (shared offsets and a response that reads them)
-uniform bool uDeliotHeitz;     // one constant variance per level
-uniform float uAverageX[16], uAverageY[16], uAverageCov[16];
-uniform int uMaxLod;
-uniform int uAniso;            // K
-uniform bool uSmooth;          // smooth table (else paper)
-uniform int uTableLevels;      // σ levels per axis
 
 // Tile i's statistics at one level: (E_l, V_l) of each noise and C_l.
 struct TileStats {
     vec2 x;  // (mean, variance) of N_x's tile
     vec2 y;
-    float c; // covariance (0 without uHasCovariance: not fetched)
+    float c; // covariance (0 without uPattern.hasCovariance: not fetched)
 };
 
 TileStats tileStats(Stencil s, int i, vec2 fu, int level) {
     uvec2 vertex = stencilVertex(s, i);
-    vec2 ox = tileOffset(vertex, uSeedX), oy = tileOffset(vertex, uSeedY);
+    vec2 ox = tileOffset(vertex, uPattern.seedX), oy = tileOffset(vertex, uPattern.seedY);
     TileStats t;
     t.x = periodicBilinearLod(uStatsX, fu, ox, level).rg;
     t.y = periodicBilinearLod(uStatsY, fu, oy, level).rg;
-    t.c = uHasCovariance ? periodicBilinearLod(uCovariance, fu, ox, level).g : 0.0;
+    t.c = uPattern.hasCovariance != 0 ? periodicBilinearLod(uCovariance, fu, ox, level).g : 0.0;
     return t;
 }
 
 // Texel statistics of one level at one probe: (mean x, mean y, var x, var y)
 // and cov (eq. 8, 12, 17 by the kernel's blendMean / blendVariance).
 void texelStats(vec2 uv, int level, out vec4 stats, out float cov) {
-    Stencil s = triangleGrid(uv, uDensity);
+    Stencil s = triangleGrid(uv, uPattern.gridDensity);
     vec2 fu = fract(uv);
     TileStats a = tileStats(s, 0, fu, level), b = tileStats(s, 1, fu, level), c = tileStats(s, 2, fu, level);
-    stats = vec4(blendMean(uMeanX, s.w, vec3(a.x.x, b.x.x, c.x.x)), blendMean(uMeanY, s.w, vec3(a.y.x, b.y.x, c.y.x)),
+    stats = vec4(blendMean(uPattern.meanX, s.w, vec3(a.x.x, b.x.x, c.x.x)),
+                 blendMean(uPattern.meanY, s.w, vec3(a.y.x, b.y.x, c.y.x)),
                  blendVariance(s.w, vec3(a.x.y, b.x.y, c.x.y)), blendVariance(s.w, vec3(a.y.y, b.y.y, c.y.y)));
-    cov = uHasCovariance ? blendVariance(s.w, vec3(a.c, b.c, c.c)) : 0.0;
-    if (uDeliotHeitz) {
-        stats.zw = vec2(uAverageX[level], uAverageY[level]);
-        cov = uHasCovariance ? uAverageCov[level] : 0.0;
+    cov = uPattern.hasCovariance != 0 ? blendVariance(s.w, vec3(a.c, b.c, c.c)) : 0.0;
+    if (uPattern.deliotHeitz != 0) {
+        vec4 average = uPattern.averageMoments[level];
+        stats.zw = average.xy;
+        cov = uPattern.hasCovariance != 0 ? average.z : 0.0;
     }
 }
 
-vec3 tableLayer(int kx, int ky, vec2 mu) { return tableLookup(uTable, kx * uTableLevels + ky, mu); }
+vec3 tableLayer(int kx, int ky, vec2 mu) { return tableLookup(uTable, kx * uPattern.tableLevels + ky, mu); }
 
 vec3 prefiltered(vec2 mu, vec2 sigma) {
-    LayerBlend b = layerBlend(sigma, !uSmooth, uTableLevels);
+    LayerBlend b = layerBlend(sigma, uPattern.smoothTable == 0, uPattern.tableLevels);
     if (b.f.x == 0.0 && b.f.y == 0.0) return tableLayer(b.k0.x, b.k0.y, mu);
     return layerMix(tableLayer(b.k0.x, b.k0.y, mu), tableLayer(b.k1.x, b.k0.y, mu), tableLayer(b.k0.x, b.k1.y, mu),
                     tableLayer(b.k1.x, b.k1.y, mu), b.f);
@@ -61,8 +56,8 @@ vec3 prefiltered(vec2 mu, vec2 sigma) {
 // then taken as they are): a branch around the loop would make SIMD lanes
 // run both paths.
 vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {
-    ProbeLayout probes = probeLayout(jx, jy, 1.0 / uInvW, uAniso, uMaxLod);
-    ProbeLevels levels = probeLevels(probes.lod, uMaxLod, probes.count);
+    ProbeLayout probes = probeLayout(jx, jy, 1.0 / uPattern.invExampleSize, uPattern.aniso, uPattern.maxLod);
+    ProbeLevels levels = probeLevels(probes.lod, uPattern.maxLod, probes.count);
     vec4 st, first;
     float c, firstCov;
     Moments sums;

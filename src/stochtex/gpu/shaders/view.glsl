@@ -15,15 +15,15 @@ uniform vec3 uSky;           // colour of sky pixels
 // need no quad, so this may be called under any branch.
 vec2 viewUv(vec2 p, out vec2 jx, out vec2 jy, out bool sky) {
     sky = false;
-    float a = uScale * uInvW;
+    float a = uScale * uPattern.invExampleSize;
     if (!uPlane) {
         jx = vec2(a, 0.0);
         jy = vec2(0.0, a);
-        return (uOffset + p * uScale) * uInvW;
+        return (uOffset + p * uScale) * uPattern.invExampleSize;
     }
     PlaneRay r = planeRay(p, uViewSize, uScale, uTanHalfFov, uSinTilt, uCosTilt);
     sky = r.sky;
-    jx = r.jx * uInvW;
-    jy = r.jy * uInvW;
-    return (uOffset + 0.5 * uViewSize * uScale + r.texels) * uInvW;
+    jx = r.jx * uPattern.invExampleSize;
+    jy = r.jy * uPattern.invExampleSize;
+    return (uOffset + 0.5 * uViewSize * uScale + r.texels) * uPattern.invExampleSize;
 }
