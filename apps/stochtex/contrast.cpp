@@ -18,7 +18,8 @@ void registerContrast(CLI::App& app) {
     addZoomStudyFlags(*cmd, *args, true);
     cmd->callback([args] {
         ThreadLimit limit(args->threads);
-        const ContrastStudyResult r = runZoomContrastStudy(args->zoom, args->study, args->dir);
+        const ContrastStudyResult r =
+            writeZoomContrastStudy(makeZoomParams(args->zoom), makeZoomBase(args->zoom), args->study, args->dir);
         std::printf("%s\nwrote figure2_6.png, the corrected textures and contrast.csv to %s\n",
                     r.table.markdown().c_str(), args->dir.c_str());
     });

@@ -56,15 +56,4 @@ void addCorrelationStudyFlags(CLI::App& cmd, CorrelationStudyOptions& study, con
         ->capture_default_str();
 }
 
-ContrastStudyResult runZoomContrastStudy(const ZoomFlags& flags, const ContrastStudyOptions& study,
-                                         const std::string& dir) {
-    validateContrastStudy(study);
-    const ZoomSource source(makeZoomParams(flags), makeZoomBase(flags));
-    ensureFolder(dir);
-    const ContrastStudyResult r = contrastStudy(source, zoomContrastTargets(source, study.size), study);
-    writeFigures(dir, r.figures);
-    writeText(dir, "contrast.csv", r.table.csv());
-    return r;
-}
-
 }  // namespace stochtex::cli

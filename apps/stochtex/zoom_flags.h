@@ -42,9 +42,4 @@ ZoomBase makeZoomBase(const ZoomFlags& f);
 void addCorrelationStudyFlags(CLI::App& cmd, CorrelationStudyOptions& study, const std::string& sizeFlag = "--size",
                               bool withVariants = true);
 
-// The contrast study of the zoom texture the flags describe, written into
-// dir (figures and contrast.csv); shared by `contrast` and `analyze`.
-ContrastStudyResult runZoomContrastStudy(const ZoomFlags& flags, const ContrastStudyOptions& study,
-                                         const std::string& dir);
-
 }  // namespace stochtex::cli

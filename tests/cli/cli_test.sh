@@ -128,6 +128,9 @@ case_contrast() {
 case_analyze() {
   expect_ok "analyze" "$out/an/index.html" -- "$bin" analyze -o "$out/an" --instances 8 --plot-size 16 --layers-list 4 --size 64
   grep -q "figure2_10.png" "$out/an/index.html" || fail "analyze: index.html lacks the correlation sheet"
+  # No wall-clock time on the page: a second run writes identical files.
+  "$bin" analyze -o "$out/an2" --instances 8 --plot-size 16 --layers-list 4 --size 64 >/dev/null 2>&1
+  diff -r "$out/an" "$out/an2" >/dev/null || fail "analyze: two runs wrote different files"
 }
 
 # --- paper reproduction (reduced) ---

@@ -374,4 +374,15 @@ std::vector<Figure> slidingStudy(const ZoomParams& params, const ZoomBase& base)
     return out;
 }
 
+ContrastStudyResult writeZoomContrastStudy(const ZoomParams& params, const ZoomBase& base,
+                                           const ContrastStudyOptions& options, const std::string& dir) {
+    validateContrastStudy(options);
+    const ZoomSource source(params, base);
+    ensureFolder(dir);
+    ContrastStudyResult r = contrastStudy(source, zoomContrastTargets(source, options.size), options);
+    writeFigures(dir, r.figures);
+    writeText(dir, "contrast.csv", r.table.csv());
+    return r;
+}
+
 }  // namespace stochtex

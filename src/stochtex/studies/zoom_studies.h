@@ -84,9 +84,29 @@ ContrastStudyResult contrastStudy(const TextureSource& source, const ContrastTar
                                   const ContrastStudyOptions& options);
 // The zoom texture's targets: its first lattice's μ_f, σ_f² and values.
 ContrastTargets zoomContrastTargets(const ZoomSource& source, int size);
+// The contrast study of the zoom texture (params, base) with its figures and
+// contrast.csv written to dir.
+ContrastStudyResult writeZoomContrastStudy(const ZoomParams& params, const ZoomBase& base,
+                                           const ContrastStudyOptions& options, const std::string& dir);
 
 // --- sliding: the same frame pair with eq. 2.2 and eq. 2.5, and a_0(t) ---
 
 std::vector<Figure> slidingStudy(const ZoomParams& params, const ZoomBase& base);
+
+// --- the report page of the three studies (`stochtex analyze`) ---
+
+struct ArtifactReportOptions {
+    CorrelationStudyOptions correlation;  // its zoom texture and base feed every part
+    ContrastStudyOptions contrast;
+    int contrastLayers = 16;              // n of the contrast part (Figure 2.6 uses 16)
+};
+// InputError for unusable settings, before any work.
+void validateArtifactReport(const ArtifactReportOptions& options);
+// Runs sliding, contrast and correlation, writing each part's files into
+// dir/zoom, dir/contrast and dir/correlation as soon as it is done, then
+// dir/index.html with every figure and table. The page carries no
+// wall-clock time, so two runs write identical files.
+void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& options,
+                         const StudyProgress& progress = {});
 
 }  // namespace stochtex
