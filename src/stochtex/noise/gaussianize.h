@@ -25,7 +25,8 @@ public:
 
     // T⁻¹(g), linear interpolation in a LUT over g ∈ [0,1] (clamped outside).
     float inverse(float g) const {
-        const float t = std::min(std::max(g, 0.0f), 1.0f) * float(lut_.size() - 1);
+        // Clamped so that NaN reads 0 (std::max(NaN, 0) is NaN, and int(NaN) an index anywhere).
+        const float t = (g > 0.0f ? std::min(g, 1.0f) : 0.0f) * float(lut_.size() - 1);
         const int i = std::min(int(t), int(lut_.size()) - 2);
         const float f = t - float(i);
         return lut_[size_t(i)] + f * (lut_[size_t(i) + 1] - lut_[size_t(i)]);

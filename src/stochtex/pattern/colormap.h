@@ -40,8 +40,9 @@ public:
 
     // Bilinear, clamp-to-edge.
     Rgb sample(float x, float y) const {
-        const float fx = std::min(std::max(x, 0.0f), 1.0f) * lastX_;
-        const float fy = std::min(std::max(y, 0.0f), 1.0f) * lastY_;
+        // Clamped so that NaN reads 0 (std::max(NaN, 0) is NaN, and int(NaN) an index anywhere).
+        const float fx = (x > 0.0f ? std::min(x, 1.0f) : 0.0f) * lastX_;
+        const float fy = (y > 0.0f ? std::min(y, 1.0f) : 0.0f) * lastY_;
         const int x0 = std::min(int(fx), width_ - 2);
         const int y0 = std::min(int(fy), height_ - 2);
         const float tx = fx - float(x0), ty = fy - float(y0);
@@ -110,8 +111,17 @@ struct PaintedColormap {
     Rgb evaluate(double x, double y) const;
     // Table with `supersampling`² samples averaged per entry so edges are anti-aliased.
     ColormapTable rasterize(int resolution = 256, int supersampling = 4) const;
+
+    // Shape tests one sample costs: 1 per shape, 1 per vertex of a polygon.
+    long long edges() const;
+    // Fails (parameter "shapes") if resolution² × supersampling² × edges()
+    // is over kMaxPaintedWork.
+    void validateWork(int resolution, int supersampling = 4) const;
 };
 
 constexpr int kMaxColormapResolution = 4096;
+// Work budget of a painted rasterisation in shape tests, ~2 ns each
+// (2³² ≈ 9 s on one core): 16 shapes at resolution 4096, 4096 at 256.
+constexpr long long kMaxPaintedWork = 1LL << 32;
 
 }  // namespace stochtex
