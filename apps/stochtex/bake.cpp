@@ -30,7 +30,7 @@ void registerBake(CLI::App& app) {
             e.halfTable = false;
         else if (args->precision != "half")
             throw InputError("--table-precision: unknown \"" + args->precision + "\" (expected half or float)");
-        const PatternSpec spec = loadPatternSource(args->source);
+        const PatternSpec spec = loadPatternSource(args->source, args->options.mode);
         const Pattern pattern = Pattern::build(spec);
         exportPattern(pattern, args->options, args->dir, e);
         std::printf("exported %s (%s table) to %s: manifest.json, stochtex.glsl, README.md and the data\n",

@@ -29,7 +29,7 @@ void registerBakeImage(CLI::App& app) {
     addOutputImageFlag(*cmd, args->output, "Output PNG");
     addFilterModeFlag(*cmd, args->options.mode, "none | paper | smooth");
     addAnisoFlag(*cmd, args->options.aniso);
-    cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
+    addBitsFlag(*cmd, args->bits);
     cmd->add_option("--band", args->band, "Rows rendered at a time")->check(CLI::Range(1, 4096));
     addDeviceFlags(*cmd, args->device, "Render the bands with the GLSL implementation", false);
     addThreadsFlag(*cmd, args->threads);
@@ -38,7 +38,7 @@ void registerBakeImage(CLI::App& app) {
             throw InputError(args->output + ": bake-image writes PNG (.png)");
         checkImageOutput(args->output);
         if (!isGpuFilter(args->options.mode)) throw InputError("--filter: bake-image renders none, paper or smooth");
-        const PatternSpec spec = loadPatternSource(args->source);
+        const PatternSpec spec = loadPatternSource(args->source, args->options.mode);
         Camera whole;
         whole.view = makeView(spec, args->view);
         validateCamera(whole);

@@ -5,6 +5,8 @@
 #include <string_view>
 #include <utility>
 
+#include <unistd.h>  // access
+
 #include "stochtex/core/error.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/json_reader.h"
@@ -17,15 +19,24 @@ void addPatternSource(CLI::App& cmd, PatternSource& src) {
     auto* file = cmd.add_option("pattern,--pattern", src.file, "Pattern JSON file (see docs/PATTERNS.md)");
     auto* preset = cmd.add_option("--preset,-p", src.preset, "Embedded preset name (stochtex presets lists them)");
     file->excludes(preset);
-    cmd.add_option("--seed", src.seed, "Override the pattern seed");
+    addSeedFlag(cmd, "--seed", src.seed, "Override the pattern seed");
 }
 
 PatternSpec loadPatternSource(const PatternSource& src) {
     if (src.file.empty() && src.preset.empty()) throw InputError("give a pattern file or --preset NAME");
     PatternSpec spec = src.file.empty() ? loadPreset(src.preset) : loadPatternFile(src.file);
-    if (src.seed) {
-        if (*src.seed < 0 || *src.seed > 2147483647) throw InputError("--seed must be in [0, 2147483647]");
-        spec.seed = uint32_t(*src.seed);
+    if (src.seed) spec.seed = *src.seed;
+    return spec;
+}
+
+PatternSpec loadPatternSource(const PatternSource& src, FilterMode mode) {
+    PatternSpec spec = loadPatternSource(src);
+    if (mode == FilterMode::None || spec.colormap.source == ColormapSpec::Source::Image) return spec;
+    try {
+        validatePrefilteredResolution(spec.colormap.resolution, spec.colormap.resolution);
+    } catch (const InputError& e) {
+        throw InputError((src.file.empty() ? "preset " + src.preset : src.file) + ": /colormap/resolution: " +
+                         e.what() + " (--filter " + enumName(kFilterModeNames, mode) + ")");
     }
     return spec;
 }
@@ -76,8 +87,44 @@ void checkImageOutput(const std::string& path) {
         throw InputError(path + ": unsupported output format (use .png or .exr)");
     const fs::path p(path);
     std::error_code ec;
-    if (p.has_parent_path() && !fs::is_directory(p.parent_path(), ec))
-        throw InputError(path + ": directory " + p.parent_path().string() + " does not exist");
+    const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
+    if (!fs::is_directory(folder, ec)) throw InputError(path + ": directory " + folder.string() + " does not exist");
+    // Checked now, not when the finished image is renamed into place.
+    if (fs::is_directory(p, ec)) throw InputError(path + ": is a folder");
+    if (access(folder.c_str(), W_OK) != 0)
+        throw InputError(path + ": directory " + folder.string() + " is not writable");
+}
+
+namespace {
+// A CLI11 check (run on the text, before conversion) that the value is a seed.
+CLI::Validator seedValidator() {
+    return CLI::Validator(
+        [](std::string& s) -> std::string {
+            const std::string problem = "seed must be an integer in [0, 4294967295], got \"" + s + "\"";
+            if (s.empty() || s.size() > 10 || s.find_first_not_of("0123456789") != std::string::npos) return problem;
+            return std::stoull(s) > 4294967295ULL ? problem : std::string();
+        },
+        "UINT32");
+}
+}  // namespace
+
+CLI::Option* addSeedFlag(CLI::App& cmd, const std::string& flag, std::optional<uint32_t>& seed,
+                         const std::string& help) {
+    return cmd.add_option(flag, seed, help)->check(seedValidator());
+}
+
+CLI::Option* addSeedFlag(CLI::App& cmd, const std::string& flag, uint32_t& seed, const std::string& help) {
+    return cmd.add_option(flag, seed, help)->check(seedValidator())->capture_default_str();
+}
+
+void addBitsFlag(CLI::App& cmd, int& bits) {
+    cmd.add_option("--bits", bits, "PNG bit depth: 8 or 16")
+        ->check(CLI::Validator(
+            [](std::string& s) -> std::string {
+                return s == "8" || s == "16" ? std::string() : "bits must be 8 or 16, got \"" + s + "\"";
+            },
+            "8|16"))
+        ->capture_default_str();
 }
 
 void addThreadsFlag(CLI::App& cmd, int& threads) {

@@ -21,12 +21,16 @@ namespace stochtex::cli {
 struct PatternSource {
     std::string file;
     std::string preset;
-    std::optional<int64_t> seed;
+    std::optional<uint32_t> seed;
 };
 // PATTERN or --pattern FILE | --preset NAME (one is required; no default),
 // and --seed to override the pattern's.
 void addPatternSource(CLI::App& cmd, PatternSource& src);
 PatternSpec loadPatternSource(const PatternSource& src);
+// The same for a render with filter `mode`, refused before any work when the
+// pattern's colormap is too fine to prefilter (an analytic, phasor or painted
+// one: its resolution is known; an image's is checked when it is read).
+PatternSpec loadPatternSource(const PatternSource& src, FilterMode mode);
 
 struct ViewFlags {
     std::vector<int> size;          // N or W,H
@@ -44,8 +48,18 @@ struct JsonArgument {
 };
 JsonArgument readJsonArgument(const std::string& arg);
 
-// Fails early (before any work) if path is not a .png/.exr in an existing folder.
+// Fails early (before any work) unless path is a .png/.exr, not a folder, in
+// an existing folder that can be written.
 void checkImageOutput(const std::string& path);
+
+// --seed (or another seed flag): an integer in [0, 4294967295], the range of
+// every seed; anything else is refused with the reason, before conversion.
+CLI::Option* addSeedFlag(CLI::App& cmd, const std::string& flag, std::optional<uint32_t>& seed,
+                         const std::string& help);
+CLI::Option* addSeedFlag(CLI::App& cmd, const std::string& flag, uint32_t& seed, const std::string& help);
+
+// --bits 8|16, the PNG bit depth (default 8).
+void addBitsFlag(CLI::App& cmd, int& bits);
 
 // CLI11's transformer over an enum's name table (the table the library, the
 // JSON reader and the bake manifest use). It reads the name with parseEnum,

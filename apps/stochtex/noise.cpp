@@ -14,7 +14,7 @@ namespace stochtex::cli {
 void registerNoise(CLI::App& app) {
     struct Args {
         std::string spec, output, spectrum;
-        std::optional<int64_t> seed;
+        std::optional<uint32_t> seed;
         int bits = 8;
         int threads = 0;
     };
@@ -24,8 +24,8 @@ void registerNoise(CLI::App& app) {
         ->required();
     addOutputImageFlag(*cmd, args->output);
     cmd->add_option("--spectrum", args->spectrum, "Also write the log power spectrum (centred) to this image");
-    cmd->add_option("--seed", args->seed, "Seed (overrides the spec's)");
-    cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
+    addSeedFlag(*cmd, "--seed", args->seed, "Seed (overrides the spec's)");
+    addBitsFlag(*cmd, args->bits);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         checkImageOutput(args->output);
@@ -33,10 +33,7 @@ void registerNoise(CLI::App& app) {
         ThreadLimit limit(args->threads);
         const JsonArgument json = readJsonArgument(args->spec);
         NoiseSpec spec = parseNoiseSpec(JsonReader(json.json, json.source), json.baseDir);
-        if (args->seed) {
-            if (*args->seed < 0 || *args->seed > 2147483647) throw InputError("--seed must be in [0, 2147483647]");
-            spec.spectrum.seed = uint32_t(*args->seed);
-        }
+        if (args->seed) spec.spectrum.seed = *args->seed;
         const Image example = buildExampleImage(spec, json.source);
         writeImage(args->output, example, WriteOptions{args->bits});
         const ChannelStats s = channelStats(example);

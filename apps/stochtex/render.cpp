@@ -38,14 +38,14 @@ void registerRender(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("--pack8", args->options.pack8,
                   "Store the mean/variance pyramids in 8 bits (paper §5: RGBA8 = E_x, E_y, 16V_x, 16V_y)");
-    cmd->add_option("--bits", args->bits, "PNG bit depth")->check(CLI::IsMember({8, 16}));
+    addBitsFlag(*cmd, args->bits);
     addDeviceFlags(*cmd, args->device,
                    "Render with the GLSL implementation on a headless OpenGL context (--filter none, paper or smooth)",
                    true);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         checkImageOutput(args->output);
-        const PatternSpec spec = loadPatternSource(args->source);
+        const PatternSpec spec = loadPatternSource(args->source, args->options.mode);
         Camera camera = args->camera;
         camera.view = makeView(spec, args->view);
         validateCamera(camera);  // before building anything; FilteredPattern checks the options

@@ -26,8 +26,8 @@ void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, bool figure4
     if (table) {
         sub.add_option("--count", a.table.errors.count, "Random footprints per size")->capture_default_str();
         sub.add_option("--footprints", a.table.errors.footprints, "Footprint sides in texels")->delimiter(',');
-        sub.add_option("--seed", a.table.seed, "Seed of the noises (footprint centres use --footprint-seed)");
-        sub.add_option("--footprint-seed", a.table.errors.seed, "Seed of the footprint centres");
+        addSeedFlag(sub, "--seed", a.table.seed, "Seed of the noises (footprint centres use --footprint-seed)");
+        addSeedFlag(sub, "--footprint-seed", a.table.errors.seed, "Seed of the footprint centres");
     }
     if (figure4) {
         sub.add_option("--preset", a.figure4.name, "Pattern of Figure 4")->capture_default_str();

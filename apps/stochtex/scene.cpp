@@ -34,7 +34,7 @@ void registerScene(CLI::App& app) {
         if (w < 1 || h < 1 || w > 8192 || h > 8192) throw InputError("--size must be in [1, 8192] per side");
         const FilterOptions& options = args->options;
         const Mesh mesh = makeObject(args->object);
-        const PatternSpec spec = loadPatternSource(args->source);
+        const PatternSpec spec = loadPatternSource(args->source, args->options.mode);
         const auto start = std::chrono::steady_clock::now();
         const Pattern pattern = Pattern::build(spec);
         auto context = GlContext::headless();

@@ -42,7 +42,10 @@ void registerStability(CLI::App& app) {
         StabilityStudyOptions study = args->study;
         for (FilterMode mode : args->filters) study.filters.emplace_back(args->options).mode = mode;
         validateStabilityStudy(study);
-        const PatternSpec spec = loadPatternSource(args->source);
+        // Any filtered mode prefilters the colormap: check it as the first such mode would.
+        FilterMode prefiltered = FilterMode::None;
+        for (FilterMode mode : args->filters) prefiltered = mode != FilterMode::None ? mode : prefiltered;
+        const PatternSpec spec = loadPatternSource(args->source, prefiltered);
         const std::string& dir = args->dir;
         ensureFolder(dir);
         ThreadLimit limit(args->threads);

@@ -42,7 +42,7 @@ void registerView(CLI::App& app) {
             throw InputError("--filter: the viewer shows none, paper or smooth");
         validateCamera(o.camera);
         if (o.filter.aniso < 1 || o.filter.aniso > kMaxAnisotropy) throw InputError("--aniso must be in [1, 16]");
-        const PatternSpec spec = loadPatternSource(args->source);
+        const PatternSpec spec = loadPatternSource(args->source, FilterMode::Smooth);
         const int frames = runViewWindow(Pattern::build(spec), spec.name, o);
         if (!o.screenshot.empty()) std::printf("wrote %s after %d frames\n", o.screenshot.c_str(), frames);
     });

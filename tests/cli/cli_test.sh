@@ -240,6 +240,45 @@ case_bad_export_flags() {
   expect_bad "bake-image exr" "$out/x.exr" "bake-image writes PNG" -- "$bin" bake-image --preset marble -o "$out/x.exr"
 }
 
+# --- hostile JSON and flag values: refused up front, naming the input ---
+case_hostile_json() {
+  { head -c 100000 /dev/zero | tr '\0' '['; head -c 100000 /dev/zero | tr '\0' ']'; } >"$work/deep.json"
+  expect_bad "100k nested arrays" "$out/h1.png" "deep.json: /0/0/0" -- "$bin" render "$work/deep.json" -o "$out/h1.png"
+  grep -qF "nested deeper than 64 levels" "$work/err.txt" || fail "deep nesting: $(cat "$work/err.txt")"
+  echo '{"name": "x", "seed": 1e400}' >"$work/overflow.json"
+  expect_bad "number overflowing a double" "$out/h2.png" "overflow.json: /seed: number 1e400 is out of the range of a double" -- "$bin" render "$work/overflow.json" -o "$out/h2.png"
+  echo '{"name": "a", "name": "b"}' >"$work/dup.json"
+  expect_bad "duplicate member" "$out/h3.png" 'dup.json: /name: member "name" given twice' -- "$bin" render "$work/dup.json" -o "$out/h3.png"
+  expect_bad "unsigned seed shown as written" "$out/h4.png" "/seed: must be in [0, 4294967295], got 18446744073709551615" -- "$bin" noise '{"type":"spectrum","seed":18446744073709551615,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/h4.png"
+  { printf '{"name": "'; head -c 2000000 /dev/zero | tr '\0' a; printf '"}'; } >"$work/huge.json"
+  expect_bad "2 MB pattern file" "$out/h5.png" "huge.json: 2000012 bytes of JSON; the limit is 1048576 bytes" -- "$bin" render "$work/huge.json" -o "$out/h5.png"
+  mkdir -p "$work/folder.json"
+  expect_bad "folder as pattern" "$out/h6.png" "folder.json: is a folder, not a JSON file" -- "$bin" render "$work/folder.json" -o "$out/h6.png"
+  mkdir -p "$out/taken.png"
+  expect_bad "output is a folder" "$out/h7.png" "taken.png: is a folder" -- "$bin" render --preset gaussian -o "$out/taken.png"
+  expect_bad "bits not a number" "$out/h8.png" '--bits: bits must be 8 or 16, got "abc"' -- "$bin" render --preset gaussian --bits abc -o "$out/h8.png"
+  expect_bad "negative seed" "$out/h9.png" '--seed: seed must be an integer in [0, 4294967295], got "-1"' -- "$bin" render --preset gaussian --seed -1 -o "$out/h9.png"
+  expect_bad "table1 seed over uint32" "$out/h10" '--seed: seed must be an integer in [0, 4294967295], got "4294967296"' -- "$bin" reproduce table1 --seed 4294967296 -o "$out/h10"
+  # The whole uint32 range is a seed, in JSON and on the command line alike.
+  expect_ok "largest seed" "$out/h11.png" -- "$bin" render --preset gaussian --seed 4294967295 --size 16 -o "$out/h11.png"
+}
+
+# --- work budget: refused in well under a second, naming the parameter ---
+case_work_budget() {
+  echo '{"noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "colormap": {"type": "ridged", "resolution": 4096}, "size": 32}' >"$work/fine.json"
+  expect_bad "colormap too fine to prefilter" "$out/w1.png" "fine.json: /colormap/resolution: resolution must be at most 1024 per side to be prefiltered, got 4096x4096 (--filter smooth)" -- timeout 10 "$bin" render "$work/fine.json" --filter smooth -o "$out/w1.png"
+  expect_ok "the same colormap unfiltered" "$out/w2.png" -- "$bin" render "$work/fine.json" --filter none -o "$out/w2.png"
+  local discs='{"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "color": "#ff0000"}' shapes i
+  shapes=$discs
+  for i in $(seq 999); do shapes="$shapes, $discs"; done
+  echo "{\"type\": \"painted\", \"resolution\": 4096, \"shapes\": [$shapes]}" >"$work/discs.json"
+  expect_bad "1000 discs at 4096" "$out/w3.png" "discs.json: /shapes: shapes cost 1000 shape tests" -- timeout 10 "$bin" colormap "$work/discs.json" -o "$out/w3.png"
+  local comp='{"shape": "ring", "frequency": 8, "bandwidth": 2}' comps
+  comps=$comp
+  for i in $(seq 16); do comps="$comps, $comp"; done
+  expect_bad "17 components at 4096" "$out/w4.png" "/components: components × size² must be at most 268435456, got 17 × 4096² = 285212672" -- timeout 10 "$bin" noise "{\"type\": \"spectrum\", \"size\": 4096, \"components\": [$comps]}" -o "$out/w4.png"
+}
+
 declare -F "case_$name" >/dev/null || { echo "cli_test.sh: unknown case \"$name\""; exit 2; }
 "case_$name"
 if [ $failures -ne 0 ]; then

@@ -8,7 +8,10 @@
 // The continuous level coordinate of σ along one axis, in [0, levels − 1].
 inline float sigmaLevelCoordinate(float sigma, bool paper, int levels) {
     float top = float(levels - 1);
-    float s256 = max(sigma, 0.0f) * 256.0f;
+    float s256 = sigma * 256.0f;
+    // σ ≤ 0 and a NaN σ (a broken footprint) read level 0: !(x > 0) holds for
+    // NaN, which max(σ, 0) would pass on to int() below. +inf reads the top.
+    if (!(s256 > 0.0f)) return 0.0f;
     if (paper) {
         // round(log2 x) = ⌊log2(√2·x)⌋, read off the float's exponent field.
         float y = s256 * 1.41421356f;

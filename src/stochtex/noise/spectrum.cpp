@@ -6,6 +6,7 @@
 #include <opencv2/core.hpp>
 #include <stdexcept>
 
+#include "stochtex/core/error.h"
 #include "stochtex/noise/normal.h"
 
 namespace stochtex {
@@ -77,9 +78,18 @@ double spectrumPower(const SpectrumSpec& spec, double fu, double fv) {
     return p;
 }
 
+void validateSpectrumWork(const SpectrumSpec& spec) {
+    const long long n = spec.size, work = (long long)spec.components.size() * n * n;
+    if (work > kMaxSpectrumWork)
+        throw InputError::parameter("components", "× size² must be at most " + std::to_string(kMaxSpectrumWork) +
+                                                      ", got " + std::to_string(spec.components.size()) + " × " +
+                                                      std::to_string(n) + "² = " + std::to_string(work));
+}
+
 Image synthesizeExample(const SpectrumSpec& spec) {
     const int n = spec.size;
     if (n < 2 || n > kMaxExampleSize) throw std::invalid_argument("synthesizeExample: bad size");
+    validateSpectrumWork(spec);
     // White noise → spectrum.
     cv::Mat field(n, n, CV_64FC2);
     for (int y = 0; y < n; ++y)

@@ -43,6 +43,12 @@ struct SpectrumSpec {
 };
 
 constexpr int kMaxExampleSize = 4096;
+// Work budget of a synthesis: every component's power is evaluated at every
+// one of the W² frequencies, ~10 ns each (2²⁸ ≈ 3 s on one core).
+constexpr long long kMaxSpectrumWork = 1LL << 28;
+
+// Fails (parameter "components") if components × W² is over kMaxSpectrumWork.
+void validateSpectrumWork(const SpectrumSpec& spec);
 
 // Power P(f) of the spec at frequency (fu, fv) in cycles per period.
 double spectrumPower(const SpectrumSpec& spec, double fu, double fv);

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 
 namespace stochtex {
@@ -128,8 +129,26 @@ Rgb PaintedColormap::evaluate(double x, double y) const {
     return c;
 }
 
+long long PaintedColormap::edges() const {
+    long long n = 0;
+    for (const PaintedShape& s : shapes) n += s.kind == PaintedShape::Kind::Polygon ? (long long)s.points.size() : 1;
+    return n;
+}
+
+void PaintedColormap::validateWork(int resolution, int supersampling) const {
+    const long long samples = (long long)resolution * resolution * supersampling * supersampling;
+    if (edges() > 0 && samples * edges() > kMaxPaintedWork)
+        throw InputError::parameter(
+            "shapes", "cost " + std::to_string(edges()) + " shape tests (1 per shape, 1 per polygon vertex) × " +
+                          std::to_string(samples) + " samples (resolution " + std::to_string(resolution) + "² × " +
+                          std::to_string(supersampling * supersampling) +
+                          ") = " + formatValue(double(samples * edges())) + "; the limit is " +
+                          std::to_string(kMaxPaintedWork) + " (fewer shapes or vertices, or a lower resolution)");
+}
+
 ColormapTable PaintedColormap::rasterize(int resolution, int supersampling) const {
     if (supersampling < 1) throw std::invalid_argument("supersampling must be >= 1");
+    validateWork(resolution, supersampling);
     const double cell = 1.0 / double(resolution - 1);
     return tabulate(resolution, [&](double x, double y) {
         // Average over the cell centred on the table sample.

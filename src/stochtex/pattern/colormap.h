@@ -107,8 +107,17 @@ struct PaintedColormap {
     Rgb evaluate(double x, double y) const;
     // Table with `supersampling`² samples averaged per entry so edges are anti-aliased.
     ColormapTable rasterize(int resolution = 256, int supersampling = 4) const;
+
+    // Shape tests one sample costs: 1 per shape, 1 per vertex of a polygon.
+    long long edges() const;
+    // Fails (parameter "shapes") if resolution² × supersampling² × edges()
+    // is over kMaxPaintedWork.
+    void validateWork(int resolution, int supersampling = 4) const;
 };
 
 constexpr int kMaxColormapResolution = 4096;
+// Work budget of a painted rasterisation in shape tests, ~2 ns each
+// (2³² ≈ 9 s on one core): 16 shapes at resolution 4096, 4096 at 256.
+constexpr long long kMaxPaintedWork = 1LL << 32;
 
 }  // namespace stochtex

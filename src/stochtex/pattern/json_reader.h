@@ -2,6 +2,7 @@
 // Reads a JSON document while remembering where it is, so every validation
 // error names the source and the JSON pointer of the offending value, e.g.
 //   camouflage.json: /noise_x/components/0/frequency: must be in [0, 10000], got -3
+#include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -14,12 +15,25 @@
 
 namespace stochtex {
 
+// Limits of any JSON text read (pattern files, noise and colormap specs):
+// a pattern file is a few kB, and a DOM costs ~20× its text in memory; the
+// nesting of a pattern is under 10 levels, and a deeper document would only
+// exhaust the stack of whatever walks it recursively.
+constexpr size_t kMaxJsonBytes = size_t(1) << 20;
+constexpr int kMaxJsonDepth = 64;
+
 class JsonReader {
 public:
     JsonReader(const nlohmann::json& value, std::string source, std::string pointer = "");
 
-    // Parses text; a syntax error becomes an InputError naming source, line, column.
+    // Parses text. Every problem is an InputError naming the source: a syntax
+    // error (with line and column), text over kMaxJsonBytes, nesting deeper
+    // than kMaxJsonDepth, a number that overflows a double and a member given
+    // twice in one object (the last would silently win), the last three with
+    // the JSON pointer of the value.
     static nlohmann::json parse(const std::string& text, const std::string& source);
+    // Fails if a text (or file) of this many bytes is over kMaxJsonBytes.
+    static void checkSize(uintmax_t bytes, const std::string& source);
 
     const nlohmann::json& value() const { return *value_; }
     const std::string& pointer() const { return pointer_; }
@@ -54,6 +68,9 @@ public:
     double number(const std::string& key, double fallback, double min, double max) const;
     int integer(const std::string& key, int fallback, int min, int max) const;
     int integer(int min, int max) const;
+    // An integer in [0, 4294967295] (seeds).
+    uint32_t uint32() const;
+    uint32_t uint32(const std::string& key, uint32_t fallback) const;
     bool boolean(const std::string& key, bool fallback) const;
     std::string string() const;
     std::string string(const std::string& key, const std::string& fallback) const;
@@ -76,6 +93,8 @@ public:
     }
 
 private:
+    // An integer value as a wide type, whatever its JSON sign (fails unless an integer).
+    long long wideInteger(long long min, long long max) const;
     [[noreturn]] void failUnknown(const std::string& value, const std::string& expected) const;
     const nlohmann::json* value_;
     std::string source_;

@@ -110,6 +110,20 @@ PaintedShape parseShape(const JsonReader& r) {
     return s;
 }
 
+// Refuses an image whose values leave [lo, hi] (NaN and ±inf included), naming
+// the first such pixel: float images (EXR) can hold anything, and a value far
+// out of range overflows the float moments (E² of 1e20 is inf, inf − inf a NaN σ).
+void checkPixelRange(const Image& img, const std::string& file, double lo, double hi, const std::string& what) {
+    for (int y = 0; y < img.height(); ++y) {
+        const float* row = img.row(y);
+        for (int i = 0; i < img.width() * img.channels(); ++i)
+            if (!(row[i] >= lo && row[i] <= hi))
+                throw InputError(file + ": pixel (" + std::to_string(i / img.channels()) + ", " + std::to_string(y) +
+                                 ") channel " + std::to_string(i % img.channels()) + " is " + formatValue(row[i]) +
+                                 "; " + what + " values must be in [" + formatValue(lo) + ", " + formatValue(hi) + "]");
+    }
+}
+
 fs::path resolve(const JsonReader& r, const fs::path& baseDir) {
     const fs::path p = r.string();
     if (p.empty()) r.fail("empty path");
@@ -126,7 +140,7 @@ NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
         SpectrumSpec& s = spec.spectrum;
         s.size = r.integer("size", 256, 8, kMaxExampleSize);
         if (auto seed = r.find("seed")) {
-            s.seed = uint32_t(seed->integer(0, 2147483647));
+            s.seed = seed->uint32();
             spec.explicitSeed = true;
         }
         s.mean = r.number("mean", 0.5, 0.0, 1.0);
@@ -139,6 +153,7 @@ NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
         double total = 0;
         for (const auto& c : s.components) total += c.weight;
         if (total <= 0) comps.fail("component weights sum to zero");
+        r.check([&] { validateSpectrumWork(s); });
     } else {
         r.expectObject({"type", "path", "gaussianize"});
         spec.source = NoiseSpec::Source::Image;
@@ -174,6 +189,7 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
         }
     }
     spec.resolution = r.integer("resolution", 256, 2, kMaxColormapResolution);
+    if (spec.source == ColormapSpec::Source::Painted) r.check([&] { spec.painted.validateWork(spec.resolution); });
     return spec;
 }
 
@@ -183,7 +199,7 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
     PatternSpec spec;
     spec.name = r.string("name", "pattern");
     if (r.has("description")) (void)r.at("description").string();
-    spec.seed = uint32_t(r.integer("seed", 1, 0, 2147483647));
+    spec.seed = r.uint32("seed", 1);
     if (auto size = r.find("size")) {
         if (size->value().is_array()) {
             if (size->arraySize() != 2) size->fail("size is N or [width, height]");
@@ -221,7 +237,12 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
 
 nlohmann::json readJsonFile(const std::string& path) {
     std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such file");
+    if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder, not a JSON file");
+    if (!fs::exists(path, ec)) throw InputError(path + ": no such file");
+    if (!fs::is_regular_file(path, ec)) throw InputError(path + ": not a regular file");
+    // Refused before reading: a huge file would cost its size (and its DOM ~20×) in memory.
+    const auto bytes = fs::file_size(path, ec);
+    if (!ec) JsonReader::checkSize(bytes, path);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open file");
     std::stringstream ss;
@@ -245,7 +266,9 @@ uint32_t noiseSeed(const PatternSpec& spec, int axis) {
 
 Image buildExampleImage(const NoiseSpec& spec, const std::string& context) {
     if (spec.source == NoiseSpec::Source::Spectrum) return synthesizeExample(spec.spectrum);
-    const Image img = toGray(readImage(spec.image.string()));
+    const Image raw = readImage(spec.image.string());
+    checkPixelRange(raw, spec.image.string(), kMinExemplarValue, kMaxExemplarValue, "exemplar");
+    const Image img = toGray(raw);
     if (img.width() != img.height())
         throw InputError(context + ": exemplar " + spec.image.string() + " is " + std::to_string(img.width()) + "x" +
                          std::to_string(img.height()) + "; examples must be square (they tile with period 1)");
@@ -271,6 +294,7 @@ ColormapTable buildColormap(const ColormapSpec& spec) {
         case ColormapSpec::Source::Phasor: return makePhasorColormap(spec.profile, spec.duty, spec.resolution);
         case ColormapSpec::Source::Image: {
             const Image img = readImage(spec.image.string());
+            checkPixelRange(img, spec.image.string(), -kMaxColormapValue, kMaxColormapValue, "colormap");
             if (img.width() < 2 || img.height() < 2)
                 throw InputError(spec.image.string() + ": a colormap image needs at least 2x2 pixels");
             if (img.width() > kMaxColormapResolution || img.height() > kMaxColormapResolution)

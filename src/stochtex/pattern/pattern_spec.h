@@ -18,6 +18,13 @@
 
 namespace stochtex {
 
+// The values image files may hold (8/16-bit PNGs always do; float EXRs may
+// not, and are refused): an exemplar's pixels are noise values, in the
+// colormap's domain [0, 1]; a colormap's are colours, at most the largest
+// half float (the GPU table and the engine export may store halves).
+constexpr double kMinExemplarValue = 0.0, kMaxExemplarValue = 1.0;
+constexpr double kMaxColormapValue = 65504.0;
+
 constexpr int kMaxOutputSide = 16384;
 constexpr long long kMaxOutputPixels = 8192LL * 8192LL;
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/normal.h"
@@ -180,8 +181,16 @@ std::vector<double> PrefilteredColormap::sigmaLevels(PrefilterMode mode) {
     return s;
 }
 
+void validatePrefilteredResolution(int width, int height) {
+    if (width > kMaxPrefilteredResolution || height > kMaxPrefilteredResolution)
+        throw InputError::parameter("resolution", "must be at most " + std::to_string(kMaxPrefilteredResolution) +
+                                                      " per side to be prefiltered, got " + std::to_string(width) +
+                                                      "x" + std::to_string(height));
+}
+
 PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode mode)
     : mode_(mode), sigmas_(sigmaLevels(mode)) {
+    validatePrefilteredResolution(h.resolutionX(), h.resolutionY());
     const Image base = h.table();
     // The x blur runs as a y blur of the transposed table (streams rows).
     const Image baseT = transposed(base);

@@ -19,6 +19,13 @@
 
 namespace stochtex {
 
+// The largest table the filtered modes prefilter: a layer costs ~R² per pair
+// of σ levels (100 pairs in smooth mode); R = 1024 takes ~1.4 s and 0.5 GB,
+// and each doubling four times that.
+constexpr int kMaxPrefilteredResolution = 1024;
+// Fails (parameter "resolution") unless both sides are at most kMaxPrefilteredResolution.
+void validatePrefilteredResolution(int width, int height);
+
 enum class PrefilterMode { Paper, Smooth };
 inline const EnumNames<PrefilterMode> kPrefilterModeNames{{"paper", PrefilterMode::Paper},
                                                           {"smooth", PrefilterMode::Smooth}};
