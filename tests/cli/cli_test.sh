@@ -268,7 +268,7 @@ case_work_budget() {
   echo '{"noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "colormap": {"type": "ridged", "resolution": 4096}, "size": 32}' >"$work/fine.json"
   expect_bad "colormap too fine to prefilter" "$out/w1.png" "fine.json: /colormap/resolution: resolution must be at most 1024 per side to be prefiltered, got 4096x4096 (--filter smooth)" -- timeout 10 "$bin" render "$work/fine.json" --filter smooth -o "$out/w1.png"
   expect_ok "the same colormap unfiltered" "$out/w2.png" -- "$bin" render "$work/fine.json" --filter none -o "$out/w2.png"
-  local discs='{"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "color": "#ff0000"}' shapes i
+  local discs='{"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "colour": "#ff0000"}' shapes i
   shapes=$discs
   for i in $(seq 999); do shapes="$shapes, $discs"; done
   echo "{\"type\": \"painted\", \"resolution\": 4096, \"shapes\": [$shapes]}" >"$work/discs.json"
