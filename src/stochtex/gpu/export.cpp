@@ -115,7 +115,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     m["example_size"] = pattern.exampleSize();
     m["levels"] = est.maxLod() + 1;
     m["means"] = {pattern.example(0).mean(), pattern.example(1).mean()};
-    m["seeds"] = {pattern.noises()[0].offsetSeed(), pattern.noises()[1].offsetSeed()};
+    m["seeds"] = {pattern.noise(0).offsetSeed(), pattern.noise(1).offsetSeed()};
     m["grid_density"] = pattern.gridDensity();
     m["covariance"] = est.covariancePyramid() != nullptr;
     m["aniso"] = options.aniso;

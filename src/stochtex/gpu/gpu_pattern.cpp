@@ -123,8 +123,8 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     p.meanY = pattern.example(1).mean();
     p.gridDensity = float(pattern.gridDensity());
     p.invExampleSize = float(1.0 / pattern.exampleSize());
-    p.seedX = pattern.noises()[0].offsetSeed();
-    p.seedY = pattern.noises()[1].offsetSeed();
+    p.seedX = pattern.noise(0).offsetSeed();
+    p.seedY = pattern.noise(1).offsetSeed();
     p.gaussianizedX = pattern.example(0).gaussianized();
     p.gaussianizedY = pattern.example(1).gaussianized();
     for (int a = 0; a < 2; ++a) {

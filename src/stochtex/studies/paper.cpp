@@ -94,7 +94,7 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
     for (int which = 0; which < 2; ++which) {
         if (progress) progress(std::string("table1: ") + kTableNoiseNames[which] + " noise (building the 512² examples)");
         const Pattern p = Pattern::build(table1PatternSpec(which, o.seed));
-        res.rows[size_t(which)] = measureEstimatorErrors(p.noises(), p.gridDensity(), o.errors, [&](int k) {
+        res.rows[size_t(which)] = measureEstimatorErrors(p.tiledField(), o.errors, [&](int k) {
             if (progress) progress("  footprint " + std::to_string(k) + "/" + std::to_string(o.errors.footprints.size()));
         });
         for (const auto& r : res.rows[size_t(which)])
