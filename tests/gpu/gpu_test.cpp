@@ -119,22 +119,21 @@ TEST(Gpu, UnfilteredRenderMatchesTheCpuForPresets) {
 TEST(Gpu, FilteredRenderMatchesTheCpu) {
     for (const char* name : {"camouflage", "phasor-stripes"}) {
         const Pattern p = Pattern::build(loadPreset(name));
-        for (FilterMode mode : {FilterMode::Paper, FilterMode::Smooth})
+        for (const std::string filter : {"paper", "smooth"})
             for (double scale : {1.0, 3.0, 16.0, 64.0}) {
                 FilterOptions o;
-                o.mode = mode;
+                o.use(parseFilter(filter));
                 View v;
                 v.width = 128;
                 v.height = 96;
                 v.scale = scale;
                 v.offsetU = 321.0;
-                expectParity(p, v, std::string(name) + (mode == FilterMode::Paper ? " paper" : " smooth") + " scale " +
-                                       std::to_string(int(scale)), o);
+                expectParity(p, v, std::string(name) + " " + filter + " scale " + std::to_string(int(scale)), o);
             }
     }
     const Pattern p = Pattern::build(loadPreset("woven"));
     FilterOptions o;
-    o.mode = FilterMode::Smooth;
+    o.use(parseFilter("smooth"));
     o.aniso = 8;
     o.estimator = VarianceEstimator::DeliotHeitz;
     View v;
@@ -162,7 +161,7 @@ TEST(Gpu, PlaneViewMatchesTheCpu) {
         c.view.scale = 2.0;
         for (int aniso : {1, 8}) {
             FilterOptions o;
-            o.mode = FilterMode::Smooth;
+            o.use(parseFilter("smooth"));
             o.aniso = aniso;
             const std::string what = "plane " + std::to_string(int(tilt)) + "°, smooth, K = " + std::to_string(aniso);
             expectParity(p, c, what, o);
@@ -195,11 +194,11 @@ TEST(Gpu, ComputeKernelMatchesTheCpu) {
     c.view.offsetU = 1234.5;
     expectParity(p, c, "compute, zoom, unfiltered", GpuPattern::unfiltered(), 0.005, compute);
     FilterOptions o;
-    o.mode = FilterMode::Paper;
+    o.use(parseFilter("paper"));
     expectParity(p, c, "compute, zoom, paper", o, 0.005, compute);
     c.kind = Camera::Kind::Plane;
     c.tiltDeg = 70;
-    o.mode = FilterMode::Smooth;
+    o.use(parseFilter("smooth"));
     o.aniso = 8;
     expectParity(p, c, "compute, plane 70°, smooth, K = 8", o, 0.005, compute);
     GpuPattern gpu(p, context(), o);
@@ -229,7 +228,7 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     ASSERT_GT(st.stddev, 0.15);
     expectParity(p, v, "gaussianized exemplar");
     FilterOptions o;
-    o.mode = FilterMode::Smooth;
+    o.use(parseFilter("smooth"));
     v.scale = 4.0;
     expectParity(p, v, "gaussianized exemplar, smooth, scale 4", o);
     fs::remove_all(dir);
@@ -241,7 +240,7 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
 TEST(Gpu, SceneRendersObjects) {
     const Pattern p = Pattern::build(loadPreset("weld"));
     FilterOptions o;
-    o.mode = FilterMode::Smooth;
+    o.use(parseFilter("smooth"));
     GpuPattern gpu(p, context(), o);
     for (const char* name : {"sphere", "torus", "plane"}) {
         const Image img = renderScene(gpu, makeObject(name), SceneCamera{}, 160, 120, 4.0f);

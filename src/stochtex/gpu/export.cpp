@@ -102,8 +102,9 @@ std::string readme() {
 
 void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
                    const ExportOptions& exportOptions) {
-    if (options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
-        throw InputError::parameter("mode", "must be paper or smooth to export");
+    if (options.source != StatisticsSource::Estimators)
+        throw InputError::parameter("source", "must be estimators to export (filter paper or smooth), got " +
+                                                  enumName(kStatisticsSourceNames, options.source));
     const FilteredPattern f(pattern, options);  // validates the options
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -111,7 +112,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     const FootprintEstimator& est = f.estimator();
     nlohmann::json m;
     m["version"] = 1;
-    m["filter"] = enumName(kFilterModeNames, options.mode);
+    m["filter"] = filterName(options);
     m["example_size"] = pattern.exampleSize();
     m["levels"] = est.maxLod() + 1;
     m["means"] = {pattern.example(0).mean(), pattern.example(1).mean()};

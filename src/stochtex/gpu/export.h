@@ -27,7 +27,7 @@ struct ExportOptions {
     bool halfTable = true;
 };
 
-// options.mode: Paper or Smooth. The folder is created if missing.
+// options.source: Estimators (InputError naming `source` otherwise). The folder is created if missing.
 void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
                    const ExportOptions& exportOptions = {});
 

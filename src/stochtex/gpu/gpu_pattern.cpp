@@ -85,13 +85,14 @@ struct GpuPattern::Impl {
 
 GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
     : impl_(std::make_unique<Impl>()) {
-    if (options.mode != FilterMode::None && options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
-        throw InputError::parameter("mode", "must be none, paper or smooth on the GPU");
+    if (options.source != StatisticsSource::Point && options.source != StatisticsSource::Estimators)
+        throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
+                                                  enumName(kStatisticsSourceNames, options.source));
     context.makeCurrent();
     Impl& m = *impl_;
     m.options = options;
     m.hasCompute = context.hasCompute();
-    const bool filtered = options.mode != FilterMode::None;
+    const bool filtered = options.source == StatisticsSource::Estimators;
     m.program = buildProgram(filtered ? "filtered" : "unfiltered");
     const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
     m.sky = f.skyColour();
@@ -112,7 +113,7 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
         p.deliotHeitz = options.estimator == VarianceEstimator::DeliotHeitz;
         p.maxLod = est.maxLod();
         p.aniso = options.aniso;
-        p.smoothTable = options.mode == FilterMode::Smooth;
+        p.smoothTable = options.response.prefilter == PrefilterMode::Smooth;
         p.tableLevels = levels;
         for (int l = 0; l <= est.maxLod(); ++l)
             p.averageMoments[l] = {est.pyramid(0).averageMoment(l), est.pyramid(1).averageMoment(l),
@@ -145,7 +146,7 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
 
 GpuPattern::~GpuPattern() = default;
 
-bool GpuPattern::filtered() const { return impl_->options.mode != FilterMode::None; }
+bool GpuPattern::filtered() const { return impl_->options.source == StatisticsSource::Estimators; }
 
 Image GpuPattern::render(const View& view) {
     Camera camera;
@@ -165,7 +166,7 @@ void GpuPattern::bind(unsigned program) const {
     const gl::Texture* textures[] = {&m.examples[0], &m.examples[1], &m.inverses[0], &m.inverses[1]};
     for (int k = 0; k < 4; ++k) bindTexture(k, GL_TEXTURE_2D, textures[k]->id(), samplers[k]);
     bindTexture(4, GL_TEXTURE_2D_ARRAY, m.colormap.id(), "uColormap");
-    if (m.options.mode != FilterMode::None) {
+    if (m.options.source == StatisticsSource::Estimators) {
         bindTexture(5, GL_TEXTURE_2D, m.stats[0].id(), "uStatsX");
         bindTexture(6, GL_TEXTURE_2D, m.stats[1].id(), "uStatsY");
         bindTexture(7, GL_TEXTURE_2D, m.shared ? m.covariance.id() : m.stats[0].id(), "uCovariance");
