@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_pattern.h"
@@ -299,9 +301,30 @@ TEST(Gpu, UserShaderFileErrorsNameTheFileAndLine) {
     EXPECT_THROW(readShaderFile(test::scratchPath("stochtex_no_such_shader.frag").string()), InputError);
 }
 
-// Every program of the recipe table compiles as GLSL 3.30 core and GLSL ES
-// 3.00 (WebGL 2), compute programs as GLSL 4.30, checked by the reference
-// compiler.
+// The recipes that filter take the response's chunk where they list the
+// slot, after filtering.glsl (which declares footprintResponse) and after
+// the kernel file it needs; the others are left as they are.
+TEST(Gpu, FilteringRecipesAssembleTheResponseChunk) {
+    const std::string chunk = "response_prefiltered_colormap";
+    EXPECT_EQ(responseChunk(ResponseKind::PrefilteredColormap), chunk);
+    for (const char* name : {"filtered", "filtered-compute", "scene", "export-include"}) {
+        const std::vector<std::string> files =
+            shaderChunks(recipeFiles(programRecipe(name), ResponseKind::PrefilteredColormap));
+        const auto at = [&](const std::string& stem) {
+            return std::find(files.begin(), files.end(), stem) - files.begin();
+        };
+        ASSERT_LT(at(chunk), std::ptrdiff_t(files.size())) << name;
+        EXPECT_LT(at("filtering"), at(chunk)) << name;
+        EXPECT_LT(at("sigma_levels"), at(chunk)) << name;
+        EXPECT_EQ(std::count(files.begin(), files.end(), kResponseSlot), 0) << name;
+    }
+    for (const char* name : {"unfiltered", "unfiltered-compute"})
+        EXPECT_EQ(recipeFiles(programRecipe(name), ResponseKind::PrefilteredColormap), programRecipe(name).main);
+}
+
+// Every program of the recipe table, with the chunk of every response kind,
+// compiles as GLSL 3.30 core and GLSL ES 3.00 (WebGL 2), compute programs as
+// GLSL 4.30, checked by the reference compiler.
 TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {
     const fs::path dir = test::scratchPath("stochtex_glslang");
     fs::create_directories(dir);
@@ -317,18 +340,20 @@ TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {
         EXPECT_EQ(rc, 0) << file << ":\n" << text;
     };
     int programs = 0;
-    for (const ProgramRecipe& r : programRecipes()) {
-        if (r.kind == ProgramRecipe::Kind::Graphics) {
-            for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300}) {
-                validate(t, r.name, "vert", r.vertex);
-                validate(t, r.name, "frag", r.main);
+    for (const ProgramRecipe& r : programRecipes())
+        for (const auto& [kindName, kind] : kResponseKindNames) {
+            const std::string name = r.name + "-" + kindName;
+            if (r.kind == ProgramRecipe::Kind::Graphics) {
+                for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300}) {
+                    validate(t, name, "vert", r.vertex);
+                    validate(t, name, "frag", recipeFiles(r, kind));
+                }
+                ++programs;
+            } else if (r.kind == ProgramRecipe::Kind::Compute) {
+                validate(GlslTarget::Core430, name, "comp", recipeFiles(r, kind));
+                ++programs;
             }
-            ++programs;
-        } else if (r.kind == ProgramRecipe::Kind::Compute) {
-            validate(GlslTarget::Core430, r.name, "comp", r.main);
-            ++programs;
         }
-    }
     EXPECT_GE(programs, 5);
     fs::remove_all(dir);
 }

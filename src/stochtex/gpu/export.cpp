@@ -15,15 +15,15 @@ namespace stochtex {
 
 namespace fs = std::filesystem;
 
-std::string exportedShaderInclude() {
+std::string exportedShaderInclude(ResponseKind response) {
     return "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
            "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
            "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
            "// footprint comes from this fragment's derivatives of uv. The textures to\n"
            "// bind and the PatternParameters block to fill are described in README.md.\n\n" +
-           [] {
+           [response] {
                std::string body;
-               for (const auto& stem : shaderChunks(programRecipe("export-include").main))
+               for (const auto& stem : shaderChunks(recipeFiles(programRecipe("export-include"), response)))
                    body += shaderText(stem) + "\n";
                return body;
            }() +
@@ -142,7 +142,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
                   {"width", rx},          {"height", ry},
                   {"sigmas", table.sigmas()}, {"precision", exportOptions.halfTable ? "half" : "float"}};
     writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
-    writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude());
+    writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude(options.response.kind));
     writeFileAtomic((fs::path(dir) / "README.md").string(), readme());
 }
 

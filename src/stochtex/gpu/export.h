@@ -31,7 +31,7 @@ struct ExportOptions {
 void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
                    const ExportOptions& exportOptions = {});
 
-// The include's text (what stochtex.glsl holds).
-std::string exportedShaderInclude();
+// The include's text (what stochtex.glsl holds) with the response's chunk.
+std::string exportedShaderInclude(ResponseKind response = ResponseKind::PrefilteredColormap);
 
 }  // namespace stochtex

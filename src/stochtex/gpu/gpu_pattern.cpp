@@ -93,7 +93,7 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     m.options = options;
     m.hasCompute = context.hasCompute();
     const bool filtered = options.source == StatisticsSource::Estimators;
-    m.program = buildProgram(filtered ? "filtered" : "unfiltered");
+    m.program = buildProgram(filtered ? "filtered" : "unfiltered", options.response.kind);
     const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
     m.sky = f.skyColour();
     kernel::PatternParams p{};
@@ -103,7 +103,9 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
             throw InputError("the GPU filters examples of at most 32768² texels, got " +
                              std::to_string(pattern.exampleSize()) + "²");
         for (int a = 0; a < 2; ++a) m.stats[a] = pyramidTexture(est.pyramid(a));
-        m.shared = est.covariancePyramid() != nullptr;
+        // uHasCovariance: the pyramid exists only for a shared-offset pair
+        // whose response reads the covariance (FilteredPattern).
+        m.shared = f.response().needsCovariance() && est.covariancePyramid() != nullptr;
         if (m.shared) m.covariance = pyramidTexture(*est.covariancePyramid());
         const ColormapTable& h = f.blendingSpaceColormap();
         const int levels = int(f.table().sigmas().size());
@@ -148,6 +150,8 @@ GpuPattern::~GpuPattern() = default;
 
 bool GpuPattern::filtered() const { return impl_->options.source == StatisticsSource::Estimators; }
 
+ResponseKind GpuPattern::responseKind() const { return impl_->options.response.kind; }
+
 Image GpuPattern::render(const View& view) {
     Camera camera;
     camera.view = view;
@@ -191,7 +195,8 @@ void GpuPattern::setPipeline(Pipeline p) {
         if (!m.hasCompute) throw GpuUnavailable("the compute pipeline needs OpenGL 4.3 (compute shaders)");
         if (m.derivatives == Derivatives::Rasterizer)
             throw rasterizerNeedsFragments();
-        if (!m.kernelProgram) m.kernelProgram = buildProgram(filtered() ? "filtered-compute" : "unfiltered-compute");
+        if (!m.kernelProgram)
+            m.kernelProgram = buildProgram(filtered() ? "filtered-compute" : "unfiltered-compute", responseKind());
     }
     m.pipeline = p;
 }

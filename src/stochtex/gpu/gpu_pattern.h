@@ -64,6 +64,9 @@ public:
     void bind(unsigned program) const;
     // The estimators and a response (else the unfiltered S = H ∘ N).
     bool filtered() const;
+    // Whose shader chunk the programs of other recipes must assemble
+    // (buildProgram's response).
+    ResponseKind responseKind() const;
 
 private:
     void setViewUniforms(unsigned program, const Camera& camera) const;
