@@ -1,6 +1,7 @@
 #include "stochtex/pattern/filtered_pattern.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
@@ -26,24 +27,16 @@ ColormapTable foldInverseTransforms(const Pattern& p) {
 
 }  // namespace
 
-FilterMode parseFilterMode(const std::string& name) { return parseEnum(kFilterModeNames, name, "mode"); }
+NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames, name, "filter"); }
 
-StatisticsSource statisticsSource(FilterMode mode) {
-    switch (mode) {
-        case FilterMode::None: return StatisticsSource::Point;
-        case FilterMode::Paper:
-        case FilterMode::Smooth: return StatisticsSource::Estimators;
-        case FilterMode::Exact: return StatisticsSource::Exact;
-        case FilterMode::Reference: return StatisticsSource::Reference;
-    }
-    return StatisticsSource::Point;
+std::string filterName(const FilterOptions& options) {
+    for (const auto& [name, filter] : kFilterNames)
+        if (filter == options.filter()) return name;
+    return enumName(kStatisticsSourceNames, options.source) + "/" + enumName(kResponseKindNames, options.response.kind);
 }
 
-PrefilterMode prefilterMode(FilterMode mode) { return mode == FilterMode::Paper ? PrefilterMode::Paper : PrefilterMode::Smooth; }
-
 FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& options)
-    : pattern_(pattern), options_(options), source_(statisticsSource(options.mode)),
-      colormap_(foldInverseTransforms(pattern)) {
+    : pattern_(pattern), options_(options), source_(options.source), colormap_(foldInverseTransforms(pattern)) {
     if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
         throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
                                                  std::to_string(options.aniso));
@@ -53,19 +46,25 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
     if (!isPowerOfTwo(pattern.exampleSize()))
         throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
                          std::to_string(pattern.exampleSize()));
-    if (options.mode == FilterMode::None) {
+    if (source_ == StatisticsSource::Point) {
         // Nothing to prefilter: the sky shows H at the examples' means.
         sky_ = pattern.colormap().sample(pattern.example(0).toOutput(pattern.example(0).mean()),
                                          pattern.example(1).toOutput(pattern.example(1).mean()));
         return;
     }
-    response_ = std::make_unique<PrefilteredColormapResponse>(colormap_, prefilterMode(options.mode));
+    response_ = makeResponse(options.response, colormap_);
     // The covariance pyramid only for a shared-offset pair whose response reads it.
     estimator_ = std::make_unique<FootprintEstimator>(
         pattern.tiledField(), pattern.sharedOffsets() && response_->needsCovariance(), options.pack8);
     // Sky: the whole example in one footprint (top MIP level).
     const auto top = estimator_->texel(0.0, 0.0, estimator_->maxLod(), options_.estimator);
     sky_ = response_->filtered(FootprintEstimator::asFootprint(top));
+}
+
+const PrefilteredColormap& FilteredPattern::table() const {
+    const auto* r = dynamic_cast<const PrefilteredColormapResponse*>(response_.get());
+    if (!r) throw std::logic_error("FilteredPattern::table: the response is not a prefiltered colormap");
+    return r->table();
 }
 
 Footprint FilteredPattern::footprint(double u, double v, const Jacobian& j) const {
