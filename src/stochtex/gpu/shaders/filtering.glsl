@@ -6,7 +6,6 @@
 // moments.glsl), which filter/ and pattern/ call on the CPU. A response
 // chunk turns the statistics into the colour (footprintResponse).
 uniform sampler2D uStatsX, uStatsY, uCovariance;  // RG32F mip levels: (E_l, V_l) / (E_l, C_l)
-uniform sampler2DArray uTable;                     // RGBA32F, layer kx·levels + ky
 
 // Tile i's statistics at one level: (E_l, V_l) of each noise and C_l.
 struct TileStats {
@@ -41,8 +40,6 @@ void texelStats(vec2 uv, int level, out vec4 stats, out float cov) {
         cov = uPattern.hasCovariance != 0 ? average.z : 0.0;
     }
 }
-
-vec3 tableLayer(int kx, int ky, vec2 mu) { return tableLookup(uTable, kx * uPattern.tableLevels + ky, mu); }
 
 // The response: the colour of a footprint whose N has these statistics
 // (mean, variances, covariance; pattern/response.h). Declared here and
