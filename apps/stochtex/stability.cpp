@@ -62,8 +62,8 @@ void registerStability(CLI::App& app) {
         std::vector<std::unique_ptr<FrameSequenceWriter>> videos;
         for (const std::string& name : args->filters)
             if (args->video)
-                videos.push_back(std::make_unique<FrameSequenceWriter>((std::filesystem::path(dir) / (name + ".mp4")).string(),
-                                                                       study.size, study.size, 30.0, ""));
+                videos.push_back(std::make_unique<FrameSequenceWriter>(
+                    (std::filesystem::path(dir) / (name + ".mp4")).string(), study.size, study.size, 30.0, ""));
         StabilityFrameSink writeFrame;
         if (args->writeFrames || args->video)
             writeFrame = [&](size_t m, int k, const Image& frame) {

@@ -127,8 +127,8 @@ void checkImageSize(const std::string& path, const ImageHeader& h) {
     if (h.width < 1 || h.height < 1) throw InputError(path + ": the image is " + size + " pixels (empty)");
     if (h.width > kMaxImageSide || h.height > kMaxImageSide || h.width * h.height > kMaxImagePixels)
         throw InputError(path + ": the image is " + size + " pixels; images of at most " +
-                         std::to_string(kMaxImagePixels) + " pixels (4096x4096) and " +
-                         std::to_string(kMaxImageSide) + " per side are read");
+                         std::to_string(kMaxImagePixels) + " pixels (4096x4096) and " + std::to_string(kMaxImageSide) +
+                         " per side are read");
 }
 
 // libpng reports through these, never to the terminal: a warning is dropped,
