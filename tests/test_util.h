@@ -19,6 +19,16 @@ inline std::filesystem::path scratchPath(const std::string& name) {
     return std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
 }
 
+// A fixture with a fresh folder of its own (named after the suite and the
+// process), removed after each test.
+class ScratchFolder : public testing::Test {
+protected:
+    void SetUp() override { std::filesystem::create_directories(dir_); }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+    const std::filesystem::path dir_ =
+        scratchPath(std::string("stochtex_") + testing::UnitTest::GetInstance()->current_test_suite()->name());
+};
+
 // A one-component spectrum (mean ½, σ 1/6).
 inline SpectrumSpec spectrumSpec(SpectrumShape shape, double f, double b, double theta, uint32_t seed, int size) {
     SpectrumSpec s;

@@ -5,11 +5,14 @@
 #include <exception>
 
 #include "common.h"
+#include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/shader.h"
 
 int main(int argc, char** argv) {
+    // An interrupted command removes its temporary files and dies of the signal.
+    stochtex::installTempFileCleanup();
     CLI::App app{"stochtex: colour-mapped noise vector fields and procedural texture analysis"};
     app.require_subcommand(1);
     app.fallthrough(false);

@@ -1,12 +1,14 @@
 // stochtex stability: flicker of a zoom-out sequence, per filter mode.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "common.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/report/frame_sequence.h"
 #include "stochtex/studies/stability_study.h"
 
 namespace stochtex::cli {
@@ -19,7 +21,7 @@ void registerStability(CLI::App& app) {
         FilterOptions options;
         std::string dir;
         int threads = 0;
-        bool writeFrames = false;
+        bool writeFrames = false, video = false;
     };
     auto args = std::make_shared<Args>();
     args->options.referenceMaxSamples = 32;  // a sequence of references: fewer samples than a still
@@ -40,6 +42,7 @@ void registerStability(CLI::App& app) {
     cmd->add_option("--reference-samples", args->options.referenceMaxSamples, "Max samples per axis for the reference")
         ->capture_default_str();
     cmd->add_flag("--write-frames", args->writeFrames, "Also write every frame as PNG");
+    cmd->add_flag("--video", args->video, "Also write each filter's sequence as <filter>.mp4 (30 fps)");
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         StabilityStudyOptions study = args->study;
@@ -56,9 +59,16 @@ void registerStability(CLI::App& app) {
         const std::string& dir = args->dir;
         ensureFolder(dir);
         ThreadLimit limit(args->threads);
+        std::vector<std::unique_ptr<FrameSequenceWriter>> videos;
+        for (const std::string& name : args->filters)
+            if (args->video)
+                videos.push_back(std::make_unique<FrameSequenceWriter>(
+                    (std::filesystem::path(dir) / (name + ".mp4")).string(), study.size, study.size, 30.0, ""));
         StabilityFrameSink writeFrame;
-        if (args->writeFrames)
+        if (args->writeFrames || args->video)
             writeFrame = [&](size_t m, int k, const Image& frame) {
+                if (args->video) videos[m]->write(frame);
+                if (!args->writeFrames) return;
                 char file[64];
                 std::snprintf(file, sizeof file, "%s-%03d.png", args->filters[m].c_str(), k);
                 writeImage((std::filesystem::path(dir) / file).string(), frame);
@@ -69,6 +79,7 @@ void registerStability(CLI::App& app) {
         for (size_t m = 0; m < r.measurements.size(); ++m)
             std::printf("%-10s %12.5f %12.5f\n", args->filters[m].c_str(), r.measurements[m].mean,
                         r.measurements[m].max);
+        for (const auto& video : videos) std::printf("wrote %s\n", video->finish().c_str());
         writeText(dir, "stability.csv", r.summary.csv());
         writeText(dir, "stability-frames.csv", r.perFrame.csv());
         std::printf("wrote %s/stability.csv and stability-frames.csv\n", dir.c_str());

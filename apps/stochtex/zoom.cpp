@@ -1,11 +1,12 @@
 // stochtex zoom: frames of the stationary zoom texture (thesis eq. 2.1) as
-// PNGs, plus an MP4 where OpenCV's videoio and a codec are available.
+// PNGs plus zoom.mp4 in a folder, or one MP4 when -o ends in .mp4.
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
 #include "common.h"
-#include "frame_writer.h"
 #include "stochtex/core/parallel.h"
+#include "stochtex/report/frame_sequence.h"
 #include "zoom_flags.h"
 
 namespace stochtex::cli {
@@ -21,12 +22,14 @@ void registerZoom(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("zoom", "Frames of the stationary zoom texture (thesis eq. 2.1, 2.2, 2.5)");
-    addOutputFolderFlag(*cmd, args->dir, "Output folder for frame_NNNN.png (and zoom.mp4)");
+    addOutputFolderFlag(*cmd, args->dir,
+                        "Output: a folder for frame_NNNN.png and zoom.mp4 (an interrupted run leaves the frames "
+                        "written so far), or NAME.mp4 for the video alone");
     cmd->add_option("--frames", args->frames, "Number of frames")->check(CLI::Range(1, 100000));
     cmd->add_option("--fps", args->fps, "Frames per second (time step 1/fps × speed)");
     cmd->add_option("--speed", args->speed, "Time units t per second of video");
     cmd->add_option("--size", args->size, "Frame size: N or W,H")->delimiter(',')->expected(1, 2);
-    cmd->add_flag("--no-video", args->noVideo, "Write PNG frames only");
+    cmd->add_flag("--no-video", args->noVideo, "Write PNG frames only (into a folder)");
     addZoomFlags(*cmd, args->zoom);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
@@ -34,19 +37,36 @@ void registerZoom(CLI::App& app) {
         if (!std::isfinite(args->speed)) throw InputError("--speed must be finite");
         const int w = args->size[0], h = args->size.size() > 1 ? args->size[1] : args->size[0];
         if (w < 1 || h < 1 || w > 8192 || h > 8192) throw InputError("--size must be in [1, 8192] per side");
+        if (args->noVideo && isVideoPath(args->dir)) throw InputError("--no-video: -o " + args->dir + " is a video");
         const ZoomSource source(makeZoomParams(args->zoom), makeZoomBase(args->zoom));
-        ensureFolder(args->dir);
-        ThreadLimit limit(args->threads);
-        FrameSequenceWriter out(args->dir, w, h, args->fps, !args->noVideo);
         const double t0 = source.params().time;
+        const auto frameTime = [&](int k) { return t0 + k / args->fps * args->speed; };
+        // Times grow (or shrink) with k, so the last frame's bounds them all:
+        // checked before anything is written.
+        ZoomParams last = source.params();
+        last.time = frameTime(args->frames - 1);
+        try {
+            validateZoomParams(last);
+        } catch (const InputError& e) {
+            // Shortest round-trip digits: 1e9 + 1/60 must not print as 1e+09.
+            char t[32];
+            *std::to_chars(t, t + sizeof t - 1, last.time).ptr = '\0';
+            throw InputError(
+                "--time, --speed, --fps, --frames: the last frame would be at t = --time + (frames − 1) / "
+                "fps × speed = " +
+                std::string(t) + ", out of range: " + e.what());
+        }
+        ThreadLimit limit(args->threads);
+        FrameSequenceWriter out(args->dir, w, h, args->fps, args->noVideo ? "" : "zoom.mp4");
         for (int k = 0; k < args->frames; ++k) {
-            out.write(source.render(SourceRegion::centred(w, h), t0 + k / args->fps * args->speed, 0));
+            out.write(source.render(SourceRegion::centred(w, h), frameTime(k), 0));
             if ((k + 1) % 10 == 0 || k + 1 == args->frames)
                 std::fprintf(stderr, "\r[%d/%d] frames", k + 1, args->frames);
         }
         std::fprintf(stderr, "\n");
         if (const std::string mp4 = out.finish(); !mp4.empty()) std::printf("wrote %s\n", mp4.c_str());
-        std::printf("wrote %d frames (%dx%d) to %s\n", args->frames, w, h, args->dir.c_str());
+        if (!isVideoPath(args->dir))
+            std::printf("wrote %d frames (%dx%d) to %s\n", args->frames, w, h, args->dir.c_str());
     });
 }
 

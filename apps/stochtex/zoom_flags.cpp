@@ -37,7 +37,13 @@ ZoomBase makeZoomBase(const ZoomFlags& f) {
     ZoomBase b;
     b.size = f.baseSize;
     b.seed = f.seed;
-    if (f.base != "white") b.image = toGray(readImage(f.base));
+    if (f.base == "white") return b;
+    b.image = toGray(readImage(f.base));
+    try {
+        LatticeTexture::checkImage(b.image);
+    } catch (const InputError& e) {
+        throw InputError(f.base + ": " + e.what());
+    }
     return b;
 }
 

@@ -33,7 +33,7 @@ expect_bad() {
   grep -qF -- "$fragment" "$work/err.txt" || fail "$what: message lacks '$fragment': $(cat "$work/err.txt")"
   [ "$(wc -l <"$work/err.txt")" -le 2 ] || fail "$what: more than one message: $(cat "$work/err.txt")"
   [ ! -e "$file" ] || fail "$what: $file was left behind"
-  if ls -a "$(dirname "$file")" 2>/dev/null | grep -q '\.tmp$'; then fail "$what: temporary file left behind"; fi
+  if ls -a "$(dirname "$file")" 2>/dev/null | grep -qE '\.tmp(\.mp4)?$'; then fail "$what: temporary file left behind"; fi
 }
 
 out=$work/out
@@ -187,7 +187,7 @@ case_bad_input() {
   expect_bad "missing image" "$out/bad4.png" "absent.png: no such image file" -- "$bin" render "$work/missing-image.json" -o "$out/bad4.png"
   echo "not an image" >"$work/out/corrupt.png"
   sed 's#out/noise.png#out/corrupt.png#' "$work/exemplar.json" >"$work/corrupt-image.json"
-  expect_bad "corrupt image" "$out/bad5.png" "corrupt.png: not a readable image" -- "$bin" render "$work/corrupt-image.json" -o "$out/bad5.png"
+  expect_bad "corrupt image" "$out/bad5.png" "corrupt.png: not a PNG, OpenEXR or JPEG image" -- "$bin" render "$work/corrupt-image.json" -o "$out/bad5.png"
 }
 
 case_bad_render_flags() {
@@ -278,6 +278,112 @@ case_work_budget() {
   comps=$comp
   for i in $(seq 16); do comps="$comps, $comp"; done
   expect_bad "17 components at 4096" "$out/w4.png" "/components: components × size² must be at most 268435456, got 17 × 4096² = 285212672" -- timeout 10 "$bin" noise "{\"type\": \"spectrum\", \"size\": 4096, \"components\": [$comps]}" -o "$out/w4.png"
+}
+
+# --- hostile image files: the header is checked before decoding, one message names the file ---
+png_signature='\x89\x50\x4e\x47\x0d\x0a\x1a\x0a'
+png_iend='\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82'
+case_bad_image() {
+  make_exemplar
+  # 8-bit gray IHDRs with valid CRCs: 20000², 0×0; then 4×4 with its CRC flipped.
+  printf "$png_signature"'\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x4e\x20\x00\x00\x4e\x20\x08\x00\x00\x00\x00\xc6\x1b\x19\xe5'"$png_iend" >"$work/huge.png"
+  printf "$png_signature"'\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x00\x00\x00\x00\x00\x08\x00\x00\x00\x00\x1e\xe0\x23\xce'"$png_iend" >"$work/zero.png"
+  printf "$png_signature"'\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x04\x00\x00\x00\x04\x08\x00\x00\x00\x00\x73\x65\x3e\x5d'"$png_iend" >"$work/crc.png"
+  # A valid 1×1 gray PNG.
+  printf "$png_signature"'\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x01\x00\x00\x00\x01\x08\x00\x00\x00\x00\x3a\x7e\x9b\x55\x00\x00\x00\x0a\x49\x44\x41\x54\x78\x9c\x63\x68\x00\x00\x00\x82\x00\x81\x77\xcd\x72\xb6'"$png_iend" >"$work/one.png"
+  : >"$work/empty.png"
+  # With 1 GB of address space a decode of 20000² (400 MB of bytes, 1.6 GB of
+  # floats) cannot even start: the header check must answer first. (Skipped
+  # under AddressSanitizer, which reserves terabytes of address space.)
+  local limit=1000000
+  ldd "$bin" 2>/dev/null | grep -q libasan && limit=unlimited
+  for f in huge zero crc empty; do
+    sed "s#out/noise.png#$work/$f.png#" "$work/exemplar.json" >"$work/$f.json"
+  done
+  expect_bad "huge exemplar header" "$out/h.png" "huge.png: the image is 20000x20000 pixels; images of at most 16777216 pixels (4096x4096) and 65536 per side are read" -- bash -c "ulimit -v $limit; exec \"\$@\"" _ "$bin" render "$work/huge.json" -o "$out/h.png"
+  expect_bad "huge base header" "$out/hz" "huge.png: the image is 20000x20000 pixels" -- bash -c "ulimit -v $limit; exec \"\$@\"" _ "$bin" zoom --base "$work/huge.png" -o "$out/hz"
+  expect_bad "0x0 exemplar" "$out/z.png" "zero.png: the image is 0x0 pixels (empty)" -- "$bin" render "$work/zero.json" -o "$out/z.png"
+  expect_bad "bad CRC exemplar" "$out/c.png" "crc.png: corrupt PNG (IHDR: CRC error)" -- "$bin" render "$work/crc.json" -o "$out/c.png"
+  expect_bad "empty exemplar" "$out/e.png" "empty.png: the file is empty" -- "$bin" render "$work/empty.json" -o "$out/e.png"
+  expect_bad "1x1 base" "$out/o" "one.png: base texture: needs at least 2×2 pixels, got 1×1" -- "$bin" zoom --base "$work/one.png" -o "$out/o" --frames 1 --size 8
+  expect_bad "folder as base" "$out/d" "out: is a folder, not an image file" -- "$bin" contrast --base "$out" -o "$out/d"
+  for f in "$work/err.txt"; do grep -qi "libpng\|OpenCV" "$f" && fail "a library message leaked: $(cat "$f")"; done
+}
+
+# --- temporary files: unique, exclusive, removed on failure and on a signal ---
+case_bake_image_temp() {
+  # A link planted at the old fixed temporary name is never followed.
+  echo precious >"$work/victim"
+  ln -s "$work/victim" "$out/b.png.tmp"
+  expect_ok "bake-image beside a planted link" "$out/b.png" -- "$bin" bake-image --preset marble --size 64 --filter none -o "$out/b.png"
+  [ "$(cat "$work/victim")" = precious ] || fail "bake-image wrote through a planted symlink"
+  [ -L "$out/b.png" ] && fail "bake-image left a symlink as its output"
+  rm "$out/b.png.tmp"
+  # Concurrent runs to one path: both succeed and the file is one whole image.
+  "$bin" bake-image --preset marble --size 160,120 --band 8 --filter none -o "$out/ref.png" >/dev/null 2>&1 || fail "bake-image reference"
+  local pair
+  for pair in 1 2 3; do
+    "$bin" bake-image --preset marble --size 160,120 --band 8 --filter none -o "$out/c.png" >/dev/null 2>&1 & local p1=$!
+    "$bin" bake-image --preset marble --size 160,120 --band 8 --filter none -o "$out/c.png" >/dev/null 2>&1 & local p2=$!
+    wait $p1 || fail "concurrent bake-image $pair/1 failed"
+    wait $p2 || fail "concurrent bake-image $pair/2 failed"
+    cmp -s "$out/c.png" "$out/ref.png" || fail "concurrent bake-image $pair: the output is not the image"
+  done
+  if ls -a "$out" | grep -q '\.tmp'; then fail "temporary files left: $(ls -a "$out")"; fi
+}
+
+# Starts a command in the background, waits until its temporary file exists,
+# sends SIGNAL and checks the exit status (128 + signal) and that no temporary
+# file is left in FOLDER. Job control on, so SIGINT is not ignored by the job.
+# interrupt DESCRIPTION SIGNAL STATUS FOLDER -- command...
+interrupt() {
+  local what=$1 sig=$2 status=$3 folder=$4; shift 5
+  set -m
+  "$@" >/dev/null 2>&1 &
+  local pid=$! i
+  for i in $(seq 200); do
+    ls -a "$folder" 2>/dev/null | grep -q '\.tmp' && break
+    sleep 0.05
+  done
+  ls -a "$folder" 2>/dev/null | grep -q '\.tmp' || fail "$what: no temporary file appeared"
+  kill -s "$sig" $pid
+  wait $pid
+  local rc=$?
+  set +m
+  [ $rc -eq "$status" ] || fail "$what: exit status $rc, expected $status"
+  if ls -a "$folder" 2>/dev/null | grep -q '\.tmp'; then fail "$what: temporary file left: $(ls -a "$folder")"; fi
+}
+
+case_interrupted() {
+  interrupt "bake-image SIGTERM" TERM 143 "$out" -- "$bin" bake-image --preset camouflage --size 4096 --band 16 --threads 1 -o "$out/big.png"
+  [ -e "$out/big.png" ] && fail "bake-image SIGTERM: a partial big.png exists"
+  interrupt "bake-image SIGINT" INT 130 "$out" -- "$bin" bake-image --preset camouflage --size 4096 --band 16 --threads 1 -o "$out/big.png"
+  interrupt "zoom MP4 SIGTERM" TERM 143 "$out" -- "$bin" zoom --frames 100000 --size 256 --threads 1 -o "$out/z.mp4"
+  [ -e "$out/z.mp4" ] && fail "zoom SIGTERM: a partial z.mp4 exists"
+  # A folder keeps the frames written so far (as --help says), never a temporary file.
+  interrupt "zoom folder SIGTERM" TERM 143 "$out/zf" -- "$bin" zoom --frames 100000 --size 256 --threads 1 -o "$out/zf"
+  [ -e "$out/zf/zoom.mp4" ] && fail "zoom folder SIGTERM: a partial zoom.mp4 exists"
+  "$bin" zoom --help | grep -q "interrupted run leaves the frames" || fail "zoom --help does not say what an interrupted run leaves"
+}
+
+# --- zoom: every frame's time checked before anything is written ---
+case_zoom_times() {
+  expect_bad "zoom last time" "$out/t1" "the last frame would be at t = --time + (frames − 1) / fps × speed = 1000000000.0166667, out of range" -- "$bin" zoom --time 1e9 --frames 3 --size 8 -o "$out/t1"
+  expect_bad "zoom speed" "$out/t2" "out of range: time (t) must be finite with |t| ≤ 1e9" -- "$bin" zoom --speed 1e300 --frames 3 --size 8 -o "$out/t2"
+  expect_bad "zoom fps" "$out/t3" "out of range: time (t) must be finite with |t| ≤ 1e9" -- "$bin" zoom --fps 1e-300 --frames 3 --size 8 -o "$out/t3"
+  expect_bad "zoom fps video" "$out/t4.mp4" "out of range" -- "$bin" zoom --fps 1e-300 --frames 3 --size 8 -o "$out/t4.mp4"
+  expect_ok "zoom one frame at the bound" "$out/t5/frame_0000.png" -- "$bin" zoom --time 1e9 --frames 1 --size 8 -o "$out/t5" --no-video
+}
+
+# --- video: -o NAME.mp4 on every sequence command ---
+case_video() {
+  expect_ok "zoom to MP4" "$out/clip.mp4" -- "$bin" zoom --frames 12 --size 64,48 -o "$out/clip.mp4"
+  [ -f "$out/clip.mp4" ] && [ "$(ls -A "$out")" = clip.mp4 ] || fail "zoom to MP4 did not write the video alone: $(ls -A "$out")"
+  expect_ok "zoom folder with MP4" "$out/zf/zoom.mp4" -- "$bin" zoom --frames 3 --size 32 -o "$out/zf"
+  [ -s "$out/zf/frame_0002.png" ] || fail "zoom folder: frames missing"
+  expect_ok "stability videos" "$out/st/smooth.mp4" -- "$bin" stability --preset camouflage --frames 4 --size 32 --filters none,smooth --video -o "$out/st"
+  [ -s "$out/st/none.mp4" ] || fail "stability: none.mp4 missing"
+  expect_bad "no-video with an MP4" "$out/nv.mp4" "--no-video" -- "$bin" zoom --no-video -o "$out/nv.mp4"
 }
 
 declare -F "case_$name" >/dev/null || { echo "cli_test.sh: unknown case \"$name\""; exit 2; }

@@ -1,13 +1,19 @@
 #include "stochtex/image/image_io.h"
 
+#include <png.h>
+
+#include <algorithm>
 #include <cmath>
+#include <csetjmp>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <random>
 #include <vector>
 
 #include "stochtex/core/error.h"
@@ -32,28 +38,179 @@ std::string lowerExtension(const std::string& path) {
     return ext;
 }
 
-}  // namespace
+enum class ImageFormat { Png, Exr, Jpeg };
 
-bool isSupportedImagePath(const std::string& path) {
-    const std::string ext = lowerExtension(path);
-    return ext == ".png" || ext == ".exr";
+struct ImageHeader {
+    ImageFormat format;
+    long long width = 0, height = 0;
+};
+
+uint32_t bigEndian32(const uchar* b) {
+    return uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | uint32_t(b[3]);
+}
+uint32_t bigEndian16(const uchar* b) { return uint32_t(b[0]) << 8 | uint32_t(b[1]); }
+int32_t littleEndian32(const uchar* b) {
+    return int32_t(uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24);
 }
 
-Image readImage(const std::string& path) {
-    enableExr();
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such image file");
-    std::ifstream in(path, std::ios::binary);
-    std::vector<uchar> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in.good() && !in.eof()) throw InputError(path + ": cannot read file");
+// PNG: the signature, then IHDR, whose first fields are width and height.
+ImageHeader pngHeader(const std::string& path, const std::vector<uchar>& b) {
+    if (b.size() < 33 || std::memcmp(&b[12], "IHDR", 4) != 0)
+        throw InputError(path + ": corrupt PNG (no image header)");
+    return {ImageFormat::Png, bigEndian32(&b[16]), bigEndian32(&b[20])};
+}
+
+// OpenEXR: magic, version, then attributes `name\0 type\0 size value` up to an
+// empty name; the pixel extent is the dataWindow box2i (xMin, yMin, xMax, yMax).
+ImageHeader exrHeader(const std::string& path, const std::vector<uchar>& b) {
+    size_t at = 8;
+    const auto readString = [&](std::string& out) {
+        if (at >= b.size()) return false;
+        const auto end = std::find(b.begin() + long(at), b.end(), uchar(0));
+        if (end == b.end()) return false;
+        out.assign(b.begin() + long(at), end);
+        at = size_t(end - b.begin()) + 1;
+        return true;
+    };
+    std::string name, type;
+    while (readString(name) && !name.empty()) {
+        if (!readString(type) || at + 4 > b.size()) break;
+        const int32_t size = littleEndian32(&b[at]);
+        at += 4;
+        if (size < 0 || size_t(size) > b.size() - at) break;
+        if (name == "dataWindow" && type == "box2i" && size == 16) {
+            const long long x0 = littleEndian32(&b[at]), y0 = littleEndian32(&b[at + 4]);
+            const long long x1 = littleEndian32(&b[at + 8]), y1 = littleEndian32(&b[at + 12]);
+            return {ImageFormat::Exr, std::max(0ll, x1 - x0 + 1), std::max(0ll, y1 - y0 + 1)};
+        }
+        at += size_t(size);
+    }
+    throw InputError(path + ": corrupt OpenEXR file (no readable dataWindow in its header)");
+}
+
+// JPEG: markers up to the first start-of-frame (SOF0…SOF15 but DHT, JPG and
+// DAC), whose segment holds precision, height, width.
+ImageHeader jpegHeader(const std::string& path, const std::vector<uchar>& b) {
+    size_t at = 2;
+    while (at + 4 <= b.size() && b[at] == 0xFF) {
+        const uchar marker = b[at + 1];
+        if (marker == 0xFF) {  // fill byte
+            ++at;
+            continue;
+        }
+        if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {  // markers without a length
+            at += 2;
+            continue;
+        }
+        if (marker == 0xD9 || marker == 0xDA) break;  // end of image or scan before any frame header
+        const size_t length = bigEndian16(&b[at + 2]);
+        const bool frame = marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+        if (frame && length >= 7 && at + 9 <= b.size())
+            return {ImageFormat::Jpeg, bigEndian16(&b[at + 7]), bigEndian16(&b[at + 5])};  // width, height
+        at += 2 + length;
+    }
+    throw InputError(path + ": corrupt JPEG file (no frame header)");
+}
+
+// The format from the file's first bytes (never from its name).
+ImageHeader readHeader(const std::string& path, const std::vector<uchar>& b) {
+    static const uchar kPng[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    static const uchar kExr[] = {0x76, 0x2F, 0x31, 0x01};
+    if (b.size() >= 8 && std::memcmp(b.data(), kPng, 8) == 0) return pngHeader(path, b);
+    if (b.size() >= 8 && std::memcmp(b.data(), kExr, 4) == 0) return exrHeader(path, b);
+    if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return jpegHeader(path, b);
+    throw InputError(path + ": not a PNG, OpenEXR or JPEG image");
+}
+
+void checkImageSize(const std::string& path, const ImageHeader& h) {
+    const std::string size = std::to_string(h.width) + "x" + std::to_string(h.height);
+    if (h.width < 1 || h.height < 1) throw InputError(path + ": the image is " + size + " pixels (empty)");
+    if (h.width > kMaxImageSide || h.height > kMaxImageSide || h.width * h.height > kMaxImagePixels)
+        throw InputError(path + ": the image is " + size + " pixels; images of at most " +
+                         std::to_string(kMaxImagePixels) + " pixels (4096x4096) and " + std::to_string(kMaxImageSide) +
+                         " per side are read");
+}
+
+// libpng reports through these, never to the terminal: a warning is dropped,
+// an error is kept for the InputError and ends the decode (longjmp).
+struct PngReader {
+    const std::vector<uchar>* bytes = nullptr;
+    size_t at = 0;
+    std::string error;
+    std::vector<uchar> pixels;
+    std::vector<png_bytep> rows;
+};
+
+void onPngError(png_structp png, png_const_charp message) {
+    static_cast<PngReader*>(png_get_error_ptr(png))->error = message;
+    png_longjmp(png, 1);
+}
+
+void onPngWarning(png_structp, png_const_charp) {}
+
+void readPngBytes(png_structp png, png_bytep out, png_size_t n) {
+    auto* r = static_cast<PngReader*>(png_get_io_ptr(png));
+    if (r->bytes->size() - r->at < n) png_error(png, "the file ends early");
+    std::memcpy(out, r->bytes->data() + r->at, n);
+    r->at += n;
+}
+
+// Called once the header passed checkImageSize, so the pixel buffer is
+// bounded. Palettes, low bit depths and tRNS are expanded; gray + alpha
+// becomes RGBA.
+Image decodePng(const std::string& path, const std::vector<uchar>& bytes) {
+    // What the decode changes lives behind a pointer set before setjmp, so
+    // nothing is indeterminate when libpng jumps back.
+    const auto reader = std::make_unique<PngReader>();
+    reader->bytes = &bytes;
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, reader.get(), onPngError, onPngWarning);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    struct Destroy {
+        png_structp* png;
+        png_infop* info;
+        ~Destroy() {
+            if (*png) png_destroy_read_struct(png, info, nullptr);
+        }
+    } destroy{&png, &info};
+    if (!png || !info) throw std::runtime_error("readImage: libpng could not start");
+    if (setjmp(png_jmpbuf(png))) throw InputError(path + ": corrupt PNG (" + reader->error + ")");
+    png_set_read_fn(png, reader.get(), readPngBytes);
+    png_set_user_limits(png, kMaxImageSide, kMaxImageSide);
+    png_read_info(png, info);
+    png_set_expand(png);
+    if (png_get_color_type(png, info) == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    const size_t width = png_get_image_width(png, info), height = png_get_image_height(png, info);
+    const size_t rowBytes = png_get_rowbytes(png, info);
+    reader->pixels.resize(rowBytes * height);
+    reader->rows.resize(height);
+    for (size_t y = 0; y < height; ++y) reader->rows[y] = reader->pixels.data() + y * rowBytes;
+    png_read_image(png, reader->rows.data());
+    png_read_end(png, nullptr);
+
+    const int channels = png_get_channels(png, info);
+    const bool sixteen = png_get_bit_depth(png, info) == 16;  // stored big-endian
+    Image image(int(width), int(height), channels);
+    const size_t values = width * size_t(channels);
+    for (size_t y = 0; y < height; ++y) {
+        const uchar* src = reader->rows[y];
+        float* dst = image.row(int(y));
+        for (size_t i = 0; i < values; ++i)
+            dst[i] = sixteen ? float(bigEndian16(src + 2 * i)) / 65535.0f : float(src[i]) / 255.0f;
+    }
+    return image;
+}
+
+// EXR and JPEG through OpenCV, once the header passed checkImageSize.
+Image decodeWithOpenCv(const std::string& path, const std::vector<uchar>& bytes) {
     cv::Mat m;
     try {
         m = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
-    } catch (const cv::Exception& e) {
-        throw InputError(path + ": cannot decode image (" + e.msg + ")");
+    } catch (const cv::Exception&) {
+        m.release();  // OpenCV's assertion text says nothing to the user; the message below does
     }
-    if (m.empty()) throw InputError(path + ": not a readable image (corrupt or unsupported format)");
-
+    if (m.empty()) throw InputError(path + ": corrupt image (the pixel data cannot be decoded)");
     const int channels = m.channels();
     if (channels != 1 && channels != 3 && channels != 4)
         throw InputError(path + ": unsupported channel count " + std::to_string(channels));
@@ -69,47 +226,42 @@ Image readImage(const std::string& path) {
     m.convertTo(f, CV_32F, scale);
     if (channels == 3) cv::cvtColor(f, f, cv::COLOR_BGR2RGB);
     if (channels == 4) cv::cvtColor(f, f, cv::COLOR_BGRA2RGBA);
-
     Image image(f.cols, f.rows, channels);
-    for (int y = 0; y < f.rows; ++y) {
-        const float* src = f.ptr<float>(y);
-        float* dst = image.row(y);
-        for (int i = 0; i < f.cols * channels; ++i) {
-            if (!std::isfinite(src[i])) throw InputError(path + ": contains NaN or infinite values");
-            dst[i] = src[i];
-        }
-    }
+    for (int y = 0; y < f.rows; ++y) std::copy_n(f.ptr<float>(y), size_t(f.cols) * size_t(channels), image.row(y));
     return image;
 }
 
-void writeFileAtomic(const std::string& path, const std::string& bytes) {
-    const fs::path target(path);
-    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+}  // namespace
+
+bool isSupportedImagePath(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".png" || ext == ".exr";
+}
+
+Image readImage(const std::string& path) {
+    enableExr();
     std::error_code ec;
-    if (!fs::is_directory(dir, ec)) throw InputError(path + ": directory " + dir.string() + " does not exist");
-    std::random_device rd;
-    // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + string.
-    std::string name = ".";
-    name += target.filename().string();
-    name += '.';
-    name += std::to_string(rd());
-    name += ".tmp";
-    const fs::path tmp = dir / name;
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw InputError(path + ": cannot create file in " + dir.string());
-        out.write(bytes.data(), std::streamsize(bytes.size()));
-        out.close();
-        if (!out) {
-            fs::remove(tmp, ec);
-            throw InputError(path + ": write failed");
-        }
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw InputError(path + ": cannot rename temporary file into place");
-    }
+    if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder, not an image file");
+    if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such image file");
+    const uintmax_t fileSize = fs::file_size(path, ec);
+    if (ec) throw InputError(path + ": cannot read file: " + ec.message());
+    if (fileSize == 0) throw InputError(path + ": the file is empty");
+    if (fileSize > uintmax_t(kMaxImageFileBytes))
+        throw InputError(path + ": the file is larger than " + std::to_string(kMaxImageFileBytes >> 20) +
+                         " MiB, more than an image of " + std::to_string(kMaxImagePixels) + " pixels needs");
+    std::vector<uchar> bytes(static_cast<size_t>(fileSize));
+    std::ifstream in(path, std::ios::binary);
+    in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
+    if (!in) throw InputError(path + ": cannot read file");
+
+    const ImageHeader header = readHeader(path, bytes);
+    checkImageSize(path, header);
+    Image image = header.format == ImageFormat::Png ? decodePng(path, bytes) : decodeWithOpenCv(path, bytes);
+    if (image.width() != header.width || image.height() != header.height)
+        throw InputError(path + ": corrupt image (its header and its pixels disagree on the size)");
+    for (float v : image.data())
+        if (!std::isfinite(v)) throw InputError(path + ": contains NaN or infinite values");
+    return image;
 }
 
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
@@ -150,7 +302,9 @@ void writeImage(const std::string& path, const Image& image, const WriteOptions&
         throw InputError(path + ": cannot encode image (" + e.msg + ")");
     }
     if (!ok) throw InputError(path + ": cannot encode image");
-    writeFileAtomic(path, std::string(buffer.begin(), buffer.end()));
+    AtomicFile file(path);
+    file.write({reinterpret_cast<const char*>(buffer.data()), buffer.size()});
+    file.commit();
 }
 
 }  // namespace stochtex

@@ -1,14 +1,21 @@
 #pragma once
 // Reading and writing images through OpenCV imgcodecs.
 //
-// Formats by extension: .png (8-bit by default, 16-bit on request) and .exr
-// (float32, values written as they are). Reading converts any 8/16-bit or
-// float file to float in [0,1] (floats as stored), with RGB channel order.
-// Writing is atomic: the file is encoded in memory, written to a temporary
-// file beside the target and renamed, so a failure never leaves a partial
-// file under the requested name.
+// Writing, by extension: .png (8-bit by default, 16-bit on request) and .exr
+// (float32, values written as they are). Writing is atomic (AtomicFile): the
+// file is encoded in memory, written to a temporary file beside the target
+// and renamed, so a failure never leaves a partial file under the requested
+// name.
+//
+// Reading, by content: PNG (through libpng), OpenEXR and JPEG (through OpenCV),
+// converted to float in [0,1] (floats as stored), RGB channel order. The
+// size is read from the file's header and checked before anything is
+// decoded, so a small file that declares a huge image costs nothing; every
+// problem is one InputError naming the file (no library warning reaches the
+// terminal).
 #include <string>
 
+#include "stochtex/core/atomic_file.h"
 #include "stochtex/image/image.h"
 
 namespace stochtex {
@@ -18,14 +25,21 @@ struct WriteOptions {
     bool exrHalf = false;  // EXR channels as 16-bit half floats (else 32-bit float)
 };
 
-// Throws InputError naming the path if the file is missing or not an image.
+// The largest input image: 4096² pixels (the exemplar and colormap limit of
+// docs/PATTERNS.md; 256 MB as RGBA floats) in any shape, e.g. the 256 × 25600
+// table atlas of an export, up to 65536 pixels per side.
+constexpr long long kMaxImagePixels = 4096ll * 4096;
+constexpr int kMaxImageSide = 65536;
+// The largest input image file (a 4096² RGBA float EXR stored raw is 256 MB).
+constexpr long long kMaxImageFileBytes = 512ll << 20;
+
+// Throws InputError naming the path if the file is missing, not a PNG, EXR or
+// JPEG image, corrupt, empty (0 pixels) or larger than kMaxImagePixels or
+// kMaxImageSide.
 Image readImage(const std::string& path);
 
 // Throws InputError for an unsupported extension or an unwritable place.
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
-
-// Writes bytes atomically (temp + rename); used by every file the CLI writes.
-void writeFileAtomic(const std::string& path, const std::string& bytes);
 
 // True if the extension of path is one writeImage accepts.
 bool isSupportedImagePath(const std::string& path);

@@ -1,26 +1,27 @@
 #include "stochtex/image/png_stream.h"
 
 #include <png.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <csetjmp>
 #include <cstdio>
-#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
+#include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
 
 namespace stochtex {
 
 struct PngStreamWriter::Impl {
-    std::string path, temp;
+    std::string path;
+    std::unique_ptr<AtomicFile> output;  // the temporary file, renamed by finish()
     FILE* file = nullptr;
     png_structp png = nullptr;
     png_infop info = nullptr;
     int width = 0, height = 0, channels = 0, bits = 8, written = 0;
-    bool finished = false;
     std::string error;
 };
 
@@ -42,13 +43,17 @@ PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height,
     if (bits != 8 && bits != 16) throw InputError(path + ": PNG bit depth must be 8 or 16");
     Impl& m = *impl_;
     m.path = path;
-    m.temp = path + ".tmp";
     m.width = width;
     m.height = height;
     m.channels = channels;
     m.bits = bits;
-    m.file = std::fopen(m.temp.c_str(), "wb");
-    if (!m.file) throw InputError(path + ": cannot write (folder missing or not writable)");
+    m.output = std::make_unique<AtomicFile>(path);
+    const int fd = m.output->releaseDescriptor();
+    m.file = fdopen(fd, "wb");
+    if (!m.file) {
+        ::close(fd);
+        throw InputError(path + ": cannot write (out of memory for a stream)");
+    }
     m.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &m.error, onError, onWarning);
     m.info = m.png ? png_create_info_struct(m.png) : nullptr;
     if (!m.png || !m.info) throw std::runtime_error(path + ": libpng could not start");
@@ -66,10 +71,7 @@ PngStreamWriter::~PngStreamWriter() {
     Impl& m = *impl_;
     if (m.png) png_destroy_write_struct(&m.png, &m.info);
     if (m.file) std::fclose(m.file);
-    if (!m.finished) {
-        std::error_code ec;
-        std::filesystem::remove(m.temp, ec);
-    }
+    // m.output removes the temporary file unless finish() committed it.
 }
 
 void PngStreamWriter::writeRows(const Image& band) {
@@ -107,10 +109,7 @@ void PngStreamWriter::finish() {
         throw InputError(m.path + ": write failed (disk full?)");
     }
     m.file = nullptr;
-    std::error_code ec;
-    std::filesystem::rename(m.temp, m.path, ec);
-    if (ec) throw InputError(m.path + ": cannot move the finished file into place: " + ec.message());
-    m.finished = true;
+    m.output->commit();
 }
 
 }  // namespace stochtex

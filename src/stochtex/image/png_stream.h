@@ -1,7 +1,7 @@
 #pragma once
 // A PNG written a band of rows at a time (libpng), so images larger than
 // memory can be produced: memory is one band, whatever the image size. The
-// file appears under its name only when finish() succeeds (temp + rename).
+// file appears under its name only when finish() succeeds (AtomicFile).
 #include <memory>
 #include <string>
 

@@ -88,9 +88,15 @@ LatticeTexture LatticeTexture::whiteNoise(int width, int height, uint32_t seed) 
     return t;
 }
 
-LatticeTexture LatticeTexture::fromImage(const Image& gray) {
+void LatticeTexture::checkImage(const Image& gray) {
     if (gray.channels() != 1) throw InputError("base texture: expected a 1-channel image");
-    if (gray.width() < 2 || gray.height() < 2) throw InputError("base texture: needs at least 2×2 pixels");
+    if (gray.width() < 2 || gray.height() < 2)
+        throw InputError("base texture: needs at least 2×2 pixels, got " + std::to_string(gray.width()) + "×" +
+                         std::to_string(gray.height()));
+}
+
+LatticeTexture LatticeTexture::fromImage(const Image& gray) {
+    checkImage(gray);
     LatticeTexture t;
     t.width_ = gray.width();
     t.height_ = gray.height();

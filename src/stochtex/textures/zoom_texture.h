@@ -71,8 +71,11 @@ public:
     // Independent uniform values in [0, 1): μ_f = 1/2, σ_f² = 1/12.
     static LatticeTexture whiteNoise(int width, int height, uint32_t seed);
     // Any 1-channel image (values as given); μ_f and σ_f² are its own
-    // mean and variance.
+    // mean and variance. InputError (checkImage) for one it cannot use.
     static LatticeTexture fromImage(const Image& gray);
+    // InputError unless gray is 1-channel and at least 2×2; the message
+    // names no input, so whoever read the image prefixes its name.
+    static void checkImage(const Image& gray);
 
     int width() const { return width_; }
     int height() const { return height_; }

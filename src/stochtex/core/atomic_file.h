@@ -1,0 +1,56 @@
+#pragma once
+// Output files that appear under their name complete or not at all.
+//
+// An AtomicFile is a temporary file created exclusively (O_CREAT | O_EXCL |
+// O_NOFOLLOW, a fresh random name `.<name>.<hex>.tmp`) in the target's
+// folder, so it never follows a planted symlink and two runs writing the same
+// target never share one; commit() renames it over the target, and anything
+// else (an exception, the destructor) removes it. While it exists its path is
+// registered, and installTempFileCleanup() makes SIGINT, SIGTERM and SIGHUP
+// remove every registered file before the process dies of the signal (exit
+// status 128 + signal), so an interrupted command leaves no temporary file.
+// Every file the library and the CLI write goes through this (writeFileAtomic,
+// writeImage, PngStreamWriter, the MP4 writer).
+#include <string>
+#include <string_view>
+
+namespace stochtex {
+
+class AtomicFile {
+public:
+    // Throws InputError naming `path` when its folder is missing or not
+    // writable. `suffix` ends the temporary name, for writers that choose the
+    // format from it (an MP4 encoder needs ".mp4").
+    explicit AtomicFile(const std::string& path, const std::string& suffix = ".tmp");
+    ~AtomicFile();  // removes the temporary file unless commit() succeeded
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+
+    const std::string& path() const { return path_; }
+    const std::string& tempPath() const { return temp_; }
+
+    // Appends bytes; throws InputError (disk full, I/O error).
+    void write(std::string_view bytes);
+    // The descriptor passes to the caller (e.g. for fdopen), who closes it
+    // before commit(); for writers that open tempPath() by name, close it.
+    int releaseDescriptor();
+    // Closes the file if still open and renames it over path(); throws
+    // InputError on failure (the temporary file is then removed).
+    void commit();
+
+private:
+    std::string path_, temp_;
+    int fd_ = -1;
+    int slot_ = -1;  // in the signal-cleanup registry; -1: not registered
+    bool committed_ = false;
+};
+
+// Writes bytes atomically (an AtomicFile written and committed).
+void writeFileAtomic(const std::string& path, const std::string& bytes);
+
+// Installs the SIGINT/SIGTERM/SIGHUP handlers that remove the live temporary
+// files and then re-raise the signal with its default action. Signals the
+// process ignores (e.g. SIGHUP under nohup) stay ignored. Call once, early.
+void installTempFileCleanup();
+
+}  // namespace stochtex

@@ -1,0 +1,89 @@
+#include "stochtex/report/frame_sequence.h"
+
+#include <unistd.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
+#include <stdexcept>
+
+#include "stochtex/core/atomic_file.h"
+#include "stochtex/core/error.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/report/page.h"
+
+namespace stochtex {
+namespace fs = std::filesystem;
+
+bool isVideoPath(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".mp4";
+}
+
+struct FrameSequenceWriter::Video {
+    // The encoder opens the temporary file by name; its ".mp4" ending picks the container.
+    std::unique_ptr<AtomicFile> file;
+    cv::VideoWriter writer;
+};
+
+FrameSequenceWriter::FrameSequenceWriter(const std::string& output, int width, int height, double fps,
+                                         const std::string& videoName)
+    : video_(std::make_unique<Video>()) {
+    std::string videoPath;
+    if (isVideoPath(output)) {
+        videoPath = output;
+    } else {
+        dir_ = output;
+        ensureFolder(dir_);
+        if (!videoName.empty()) videoPath = (fs::path(dir_) / videoName).string();
+    }
+    if (videoPath.empty()) return;
+    video_->file = std::make_unique<AtomicFile>(videoPath, ".tmp.mp4");
+    ::close(video_->file->releaseDescriptor());
+    // MPEG-4 part 2: FFmpeg's own encoder, present in every FFmpeg build.
+    video_->writer.open(video_->file->tempPath(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), fps,
+                        cv::Size(width, height), true);
+    if (video_->writer.isOpened()) return;
+    if (dir_.empty()) throw InputError(output + ": cannot write MP4 (OpenCV has no FFmpeg MP4 encoder here)");
+    std::fprintf(stderr, "note: no MP4 encoder available in this OpenCV build; writing PNG frames only\n");
+    video_->file.reset();
+}
+
+FrameSequenceWriter::~FrameSequenceWriter() = default;
+
+void FrameSequenceWriter::write(const Image& frame) {
+    if (!dir_.empty()) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d.png", count_);
+        writeImage((fs::path(dir_) / name).string(), frame);
+    }
+    ++count_;
+    if (!video_->file) return;
+    if (frame.channels() != 1 && frame.channels() != 3)
+        throw std::invalid_argument("FrameSequenceWriter::write: 1- or 3-channel frames");
+    // 8-bit BGR, what the encoder takes; gray frames as equal channels.
+    cv::Mat m(frame.height(), frame.width(), CV_8UC3);
+    for (int y = 0; y < frame.height(); ++y) {
+        const float* src = frame.row(y);
+        auto* dst = m.ptr<cv::Vec3b>(y);
+        for (int x = 0; x < frame.width(); ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const float v = frame.channels() == 1 ? src[x] : src[3 * x + (2 - c)];
+                dst[x][c] = uchar(std::lround(255.0f * std::clamp(v, 0.0f, 1.0f)));
+            }
+        }
+    }
+    video_->writer.write(m);
+}
+
+std::string FrameSequenceWriter::finish() {
+    if (!video_->file) return "";
+    video_->writer.release();
+    video_->file->commit();
+    return video_->file->path();
+}
+
+}  // namespace stochtex

@@ -1,0 +1,36 @@
+#pragma once
+// A frame sequence on disk, by the output path's form:
+// * `NAME.mp4`: one MP4 video (MPEG-4 through OpenCV's videoio / FFmpeg),
+//   written to a temporary file and renamed by finish();
+// * a folder: frame_NNNN.png for every frame, plus `<video name>` (an MP4)
+//   when asked for and an encoder is available.
+// Every frame is checked and encoded as it comes, so memory is one frame.
+#include <memory>
+#include <string>
+
+#include "stochtex/image/image.h"
+
+namespace stochtex {
+
+// True when the path names an MP4 file (ends in .mp4, any case).
+bool isVideoPath(const std::string& path);
+
+class FrameSequenceWriter {
+public:
+    // output: an .mp4 path or a folder (created if missing). videoName: the
+    // MP4 beside the frames in folder mode ("" for PNG frames only). Throws
+    // InputError when an .mp4 is asked for and cannot be opened.
+    FrameSequenceWriter(const std::string& output, int width, int height, double fps, const std::string& videoName);
+    ~FrameSequenceWriter();
+    void write(const Image& frame);  // 1 (gray) or 3 (RGB) channels, [0, 1], width × height
+    // Closes the MP4 and moves it into place; returns its path, or "" when none was written.
+    std::string finish();
+
+private:
+    struct Video;
+    std::string dir_;  // "" in video-only mode
+    int count_ = 0;
+    std::unique_ptr<Video> video_;
+};
+
+}  // namespace stochtex
