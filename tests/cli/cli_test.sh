@@ -174,6 +174,8 @@ case_bake_image() {
 
 case_scene() {
   expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
+  # Unfiltered too: its draw used to be refused by GL and the empty frame reported as written.
+  expect_ok "scene torus unfiltered" "$out/scene_none.png" -- "$bin" scene --preset marble --object torus --size 96,64 --filter none -o "$out/scene_none.png"
 }
 
 # --- bad input ---
