@@ -13,8 +13,8 @@
 #include <cstdio>
 #include <map>
 #include <memory>
-#include <vector>
 
+#include "stochtex/gpu/render_target.h"
 #include "stochtex/image/image_io.h"
 
 namespace stochtex::cli {
@@ -31,11 +31,9 @@ struct ViewerState {
 
 void onScroll(GLFWwindow* w, double, double dy) {
     auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
-    // Zoom about the cursor: the texel under it stays put. GL rows go up,
-    // window rows down.
-    int fw = 0, fh = 0;
-    glfwGetFramebufferSize(w, &fw, &fh);
-    const double px = s->cursorX, py = fh - s->cursorY;
+    // Zoom about the cursor: the texel under it stays put. The window shows
+    // image rows top down (showTopDown), as its cursor rows go.
+    const double px = s->cursorX, py = s->cursorY;
     View& v = s->camera.view;
     const double factor = std::pow(1.15, -dy);
     const double next = std::clamp(v.scale * factor, 1.0 / 64.0, 4096.0);
@@ -48,7 +46,7 @@ void onCursor(GLFWwindow* w, double x, double y) {
     auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
     if (s->dragging) {
         s->camera.view.offsetU -= (x - s->cursorX) * s->camera.view.scale;
-        s->camera.view.offsetV += (y - s->cursorY) * s->camera.view.scale;
+        s->camera.view.offsetV -= (y - s->cursorY) * s->camera.view.scale;
     }
     s->cursorX = x;
     s->cursorY = y;
@@ -84,15 +82,22 @@ const char* modeName(FilterMode m) {
     return m == FilterMode::None ? "unfiltered" : m == FilterMode::Paper ? "paper" : "smooth";
 }
 
-// The last frame from the back buffer (before the swap); GL row 0 is the bottom.
-Image readBackBuffer(int w, int h) {
-    std::vector<float> rgb(size_t(w) * size_t(h) * 3);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+// The frame is drawn into `target` as `render` draws it (image row y in GL
+// row y, read back as drawn); a window shows GL row 0 at the bottom, so the
+// copy into the window's back buffer turns it upside down.
+void showTopDown(const RenderTarget& target) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    const int w = target.width(), h = target.height();
+    glBlitFramebuffer(0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// What the window shows: its back buffer before the swap, top row first.
+Image readWindow(int w, int h) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
-    glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, rgb.data());
-    Image shot(w, h, 3, Image::Uninitialized{});
-    for (int y = 0; y < h; ++y) std::copy_n(rgb.data() + size_t(h - 1 - y) * size_t(w) * 3, size_t(w) * 3, shot.row(y));
-    return shot;
+    return readBoundFramebufferRgb(w, h, RenderTarget::Rows::TopDown);
 }
 
 }  // namespace
@@ -109,6 +114,7 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
     glfwSetMouseButtonCallback(window, onButton);
     glfwSetKeyCallback(window, onKey);
     std::map<FilterMode, std::unique_ptr<GpuPattern>> renderers;  // built on first use
+    std::unique_ptr<RenderTarget> target;                         // rebuilt when the window's size changes
     int frame = 0;
     auto last = std::chrono::steady_clock::now();
     double fps = 0;
@@ -123,13 +129,16 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
             o.mode = state.mode;
             r = std::make_unique<GpuPattern>(pattern, *context, o);
         }
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, state.camera.view.width, state.camera.view.height);
+        const int w = state.camera.view.width, h = state.camera.view.height;
+        if (!target || target->width() != w || target->height() != h)
+            target = std::make_unique<RenderTarget>(w, h, false);
+        target->bind();
         r->setDerivatives(state.derivatives);
         r->drawView(state.camera);
+        showTopDown(*target);
         ++frame;
         if (!options.screenshot.empty() && (options.frames == 0 || frame == options.frames))
-            writeImage(options.screenshot, readBackBuffer(state.camera.view.width, state.camera.view.height));
+            writeImage(options.screenshot, readWindow(w, h));
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
         last = now;
