@@ -34,6 +34,12 @@ Pattern::Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> o
     tiledField_ = TiledField({noises_[0], noises_[1]}, gridDensity, sharing);
 }
 
+Pattern Pattern::withColormap(ColormapTable colormap) const {
+    Pattern p = *this;  // the examples are shared, not copied
+    p.colormap_ = std::move(colormap);
+    return p;
+}
+
 std::array<float, 2> Pattern::field(double u, double v) const {
     const BlendStencil s = triangleGrid(u, v, density_);
     const float fu = periodFraction(u), fv = periodFraction(v);
