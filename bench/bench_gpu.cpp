@@ -58,7 +58,7 @@ void BM_GpuFilteredVsUnfiltered(benchmark::State& state) {
     const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
     if (!ctx) return;
     FilterOptions o;
-    o.mode = FilterMode::Paper;
+    o.use(parseFilter("paper"));
     GpuPattern filtered(p, *ctx, o), unfiltered(p, *ctx);
     View v;
     v.width = v.height = 1024;
@@ -88,7 +88,7 @@ void BM_GpuShaderThroughput(benchmark::State& state) {
     const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
     if (!ctx) return;
     FilterOptions o;
-    o.mode = state.range(0) == 2 ? FilterMode::Smooth : FilterMode::Paper;
+    o.use(parseFilter(state.range(0) == 2 ? "smooth" : "paper"));
     o.aniso = state.range(0) == 3 ? 8 : 1;
     GpuPattern filtered(p, *ctx, o), unfiltered(p, *ctx);
     if (state.range(2) == 1) {

@@ -74,7 +74,7 @@ double seconds(const std::function<void()>& f) {
 void BM_FilteredVsUnfiltered(benchmark::State& state) {
     const Pattern& p = camouflage();
     FilterOptions o;
-    o.mode = state.range(1) == 1 ? FilterMode::Paper : FilterMode::Smooth;
+    o.use(parseFilter(state.range(1) == 1 ? "paper" : "smooth"));
     o.aniso = int(state.range(2));
     const FilteredPattern f(p, o);
     Camera cam;
@@ -105,7 +105,7 @@ BENCHMARK(BM_FilteredVsUnfiltered)
 void BM_PlaneFiltered(benchmark::State& state) {
     const Pattern& p = camouflage();
     FilterOptions o;
-    o.mode = FilterMode::Smooth;
+    o.use(parseFilter("smooth"));
     o.aniso = int(state.range(0));
     const FilteredPattern f(p, o);
     Camera cam;

@@ -20,7 +20,7 @@ void registerBake(CLI::App& app) {
                                            "stochtex.glsl (vec4 stochtex_sample(vec2 uv)) and a README");
     addPatternSource(*cmd, args->source);
     addOutputFolderFlag(*cmd, args->dir, "Output folder");
-    addFilterModeFlag(*cmd, args->options.mode, "Table: smooth | paper");
+    addFilterFlag(*cmd, args->options, "Table: smooth | paper");
     addAnisoFlag(*cmd, args->options.aniso);
     cmd->add_option("--table-precision", args->precision,
                     "half (default: half the size, error <= 0.06/255) | float (bit-exact with render --gpu)");
@@ -30,11 +30,11 @@ void registerBake(CLI::App& app) {
             e.halfTable = false;
         else if (args->precision != "half")
             throw InputError("--table-precision: unknown \"" + args->precision + "\" (expected half or float)");
-        const PatternSpec spec = loadPatternSource(args->source, args->options.mode);
+        const PatternSpec spec = loadPatternSource(args->source, args->options);
         const Pattern pattern = Pattern::build(spec);
         exportPattern(pattern, args->options, args->dir, e);
         std::printf("exported %s (%s table) to %s: manifest.json, stochtex.glsl, README.md and the data\n",
-                    spec.name.c_str(), enumName(kFilterModeNames, args->options.mode).c_str(), args->dir.c_str());
+                    spec.name.c_str(), filterName(args->options).c_str(), args->dir.c_str());
     });
 }
 

@@ -27,7 +27,7 @@ void registerBakeImage(CLI::App& app) {
     addPatternSource(*cmd, args->source);
     addViewFlags(*cmd, args->view);
     addOutputImageFlag(*cmd, args->output, "Output PNG");
-    addFilterModeFlag(*cmd, args->options.mode, "none | paper | smooth");
+    addFilterFlag(*cmd, args->options, "none | paper | smooth");
     addAnisoFlag(*cmd, args->options.aniso);
     addBitsFlag(*cmd, args->bits);
     cmd->add_option("--band", args->band, "Rows rendered at a time")->check(CLI::Range(1, 4096));
@@ -37,8 +37,8 @@ void registerBakeImage(CLI::App& app) {
         if (args->output.size() < 4 || args->output.substr(args->output.size() - 4) != ".png")
             throw InputError(args->output + ": bake-image writes PNG (.png)");
         checkImageOutput(args->output);
-        if (!isGpuFilter(args->options.mode)) throw InputError("--filter: bake-image renders none, paper or smooth");
-        const PatternSpec spec = loadPatternSource(args->source, args->options.mode);
+        if (!isGpuFilter(args->options)) throw InputError("--filter: bake-image renders none, paper or smooth");
+        const PatternSpec spec = loadPatternSource(args->source, args->options);
         Camera whole;
         whole.view = makeView(spec, args->view);
         validateCamera(whole);
@@ -59,8 +59,8 @@ void registerBakeImage(CLI::App& app) {
         png.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("wrote %s (%dx%d, %s, filter %s, %s, bands of %d rows, %.1f s)\n", args->output.c_str(), v.width,
-                    v.height, spec.name.c_str(), enumName(kFilterModeNames, args->options.mode).c_str(),
-                    args->device.gpu ? "GPU" : "CPU", args->band, seconds);
+                    v.height, spec.name.c_str(), filterName(args->options).c_str(), args->device.gpu ? "GPU" : "CPU",
+                    args->band, seconds);
     });
 }
 

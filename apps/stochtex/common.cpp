@@ -29,14 +29,16 @@ PatternSpec loadPatternSource(const PatternSource& src) {
     return spec;
 }
 
-PatternSpec loadPatternSource(const PatternSource& src, FilterMode mode) {
+PatternSpec loadPatternSource(const PatternSource& src, const FilterOptions& options) {
     PatternSpec spec = loadPatternSource(src);
-    if (mode == FilterMode::None || spec.colormap.source == ColormapSpec::Source::Image) return spec;
+    const bool prefilters =
+        options.source != StatisticsSource::Point && options.response.kind == ResponseKind::PrefilteredColormap;
+    if (!prefilters || spec.colormap.source == ColormapSpec::Source::Image) return spec;
     try {
         validatePrefilteredResolution(spec.colormap.resolution, spec.colormap.resolution);
     } catch (const InputError& e) {
-        throw InputError((src.file.empty() ? "preset " + src.preset : src.file) + ": /colormap/resolution: " +
-                         e.what() + " (--filter " + enumName(kFilterModeNames, mode) + ")");
+        throw InputError((src.file.empty() ? "preset " + src.preset : src.file) +
+                         ": /colormap/resolution: " + e.what() + " (--filter " + filterName(options) + ")");
     }
     return spec;
 }
@@ -132,8 +134,18 @@ void addThreadsFlag(CLI::App& cmd, int& threads) {
         ->check(CLI::Range(0, 1024));
 }
 
-void addFilterModeFlag(CLI::App& cmd, FilterMode& mode, const std::string& help) {
-    addEnumFlag(cmd, "--filter", mode, kFilterModeNames, "mode", help);
+void addFilterFlag(CLI::App& cmd, std::function<void(const NamedFilter&)> set, const std::string& shown,
+                   const std::string& help) {
+    cmd.add_option_function<std::string>(
+           "--filter", [set](const std::string& s) { set(parseFilter(s)); }, help)
+        ->check(nameValidator(kFilterNames, "filter"))
+        ->type_name("ENUM")
+        ->default_str(shown);
+}
+
+void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& help) {
+    addFilterFlag(
+        cmd, [&options](const NamedFilter& f) { options.use(f); }, filterName(options), help);
 }
 
 void addAnisoFlag(CLI::App& cmd, int& aniso) {
@@ -149,8 +161,8 @@ void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov) {
     if (withFov) cmd.add_option("--fov", camera.fovDeg, "Plane view: vertical field of view, degrees")->capture_default_str();
 }
 
-bool isGpuFilter(FilterMode mode) {
-    return mode == FilterMode::None || mode == FilterMode::Paper || mode == FilterMode::Smooth;
+bool isGpuFilter(const FilterOptions& options) {
+    return options.source == StatisticsSource::Point || options.source == StatisticsSource::Estimators;
 }
 
 void printProgress(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
@@ -166,7 +178,8 @@ void addPipelineFlag(CLI::App& cmd, GpuPattern::Pipeline& pipeline) {
 // command checks that flag itself (as correlation does for --layers-list).
 namespace {
 constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
-    {"mode", "--filter"},
+    {"filter", "--filter"},
+    {"source", "--filter"},
     {"aniso", "--aniso"},
     {"referenceMaxSamples", "--reference-samples"},
     {"tiltDeg", "--tilt"},

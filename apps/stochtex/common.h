@@ -2,6 +2,7 @@
 // Pieces shared by the CLI commands: the pattern source (file or preset),
 // the view flags, inline-or-file JSON arguments, output checks.
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -27,10 +28,11 @@ struct PatternSource {
 // and --seed to override the pattern's.
 void addPatternSource(CLI::App& cmd, PatternSource& src);
 PatternSpec loadPatternSource(const PatternSource& src);
-// The same for a render with filter `mode`, refused before any work when the
-// pattern's colormap is too fine to prefilter (an analytic, phasor or painted
-// one: its resolution is known; an image's is checked when it is read).
-PatternSpec loadPatternSource(const PatternSource& src, FilterMode mode);
+// The same for a render with these filter options, refused before any work
+// when they prefilter the colormap and it is too fine for that (an analytic,
+// phasor or painted one: its resolution is known; an image's is checked when
+// it is read).
+PatternSpec loadPatternSource(const PatternSource& src, const FilterOptions& options);
 
 struct ViewFlags {
     std::vector<int> size;          // N or W,H
@@ -65,19 +67,34 @@ void addBitsFlag(CLI::App& cmd, int& bits);
 // JSON reader and the bake manifest use). It reads the name with parseEnum,
 // so a bad one reads `--flag: parameter must be a or b, got "x"` like a
 // library error (CLI::CheckedTransformer would list the enum's numbers); the
-// help lists the names.
+// help lists the names. enumNameError: parseEnum's message for a name not
+// in the table, empty for one that is.
+template <class E>
+std::string enumNameError(const EnumNames<E>& names, const std::string& s, const std::string& parameter) {
+    try {
+        parseEnum(names, s, parameter);
+        return {};
+    } catch (const InputError& e) {
+        return e.what();
+    }
+}
 template <class E>
 CLI::Validator enumTransformer(const EnumNames<E>& names, const std::string& parameter) {
     return CLI::Validator(
-        [names, parameter](std::string& s) -> std::string {
-            try {
-                s = std::to_string(static_cast<std::underlying_type_t<E>>(parseEnum(names, s, parameter)));
-                return {};
-            } catch (const InputError& e) {
-                return e.what();
-            }
+        [names, parameter](std::string& s) {
+            const std::string error = enumNameError(names, s, parameter);
+            if (error.empty()) s = std::to_string(static_cast<std::underlying_type_t<E>>(*findEnum(names, s)));
+            return error;
         },
         "{" + canonicalNames(names, ", ") + "}");
+}
+
+// The check half of enumTransformer, for tables whose values are not enums
+// (kFilterNames): the name is left as it is for the option's callback.
+template <class E>
+CLI::Validator nameValidator(const EnumNames<E>& names, const std::string& parameter) {
+    return CLI::Validator([names, parameter](std::string& s) { return enumNameError(names, s, parameter); },
+                          "{" + canonicalNames(names, ", ") + "}");
 }
 
 // A flag whose value is one name of the table; the default shown is the value's.
@@ -92,9 +109,14 @@ CLI::Option* addEnumFlag(CLI::App& cmd, const std::string& flag, E& value, const
 // --threads,-j N: default 0 = all cores.
 void addThreadsFlag(CLI::App& cmd, int& threads);
 
-// --filter MODE over kFilterModeNames; the default is the value's (each
-// command documents why it starts where it does).
-void addFilterModeFlag(CLI::App& cmd, FilterMode& mode, const std::string& help);
+// --filter NAME over kFilterNames: a named pair of statistics source and
+// response, handed to `set` (which may throw InputError for a pair the
+// command cannot use); `shown` is the default the help lists.
+void addFilterFlag(CLI::App& cmd, std::function<void(const NamedFilter&)> set, const std::string& shown,
+                   const std::string& help);
+// --filter NAME setting both axes of `options`; the default is the options'
+// own (each command documents why it starts where it does).
+void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& help);
 
 // --aniso K, 1..16 (the library checks the range). Sets aniso to the one
 // default, FilterOptions{}.aniso (1: isotropic trilinear).
@@ -104,8 +126,9 @@ void addAnisoFlag(CLI::App& cmd, int& aniso);
 // (pattern/camera.h) are the flags'.
 void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov = true);
 
-// The filters the GLSL implementation renders: none, paper, smooth.
-bool isGpuFilter(FilterMode mode);
+// What the GLSL implementation renders: the point source (none) or the
+// estimators (paper, smooth).
+bool isGpuFilter(const FilterOptions& options);
 
 // A study's progress line on stderr.
 void printProgress(const std::string& line);

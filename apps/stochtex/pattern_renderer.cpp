@@ -10,8 +10,8 @@ void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHel
                     "--gpu footprints: camera (the view's exact Jacobian, as the CPU) | rasterizer (dFdx/dFdy)");
 }
 
-void checkDeviceFilter(const DeviceFlags& flags, FilterMode mode) {
-    if (flags.gpu && !isGpuFilter(mode)) throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
+void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
+    if (flags.gpu && !isGpuFilter(options)) throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
 }
 
 PatternRenderer::PatternRenderer(const Pattern& pattern, const FilterOptions& options, const DeviceFlags& flags) {
@@ -19,7 +19,7 @@ PatternRenderer::PatternRenderer(const Pattern& pattern, const FilterOptions& op
         cpu_ = std::make_unique<FilteredPattern>(pattern, options);
         return;
     }
-    checkDeviceFilter(flags, options.mode);
+    checkDeviceFilter(flags, options);
     context_ = GlContext::headless();
     device_ = context_->describe();
     gpu_ = std::make_unique<GpuPattern>(pattern, *context_, options);

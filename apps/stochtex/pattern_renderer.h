@@ -17,7 +17,7 @@ struct DeviceFlags {
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHelp, bool withDerivatives);
 // InputError if --gpu is asked for a filter the GPU does not implement
 // (exact, reference): callers check before building the pattern.
-void checkDeviceFilter(const DeviceFlags& flags, FilterMode mode);
+void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options);
 
 class PatternRenderer {
 public:

@@ -21,14 +21,14 @@ void registerRender(CLI::App& app) {
         int bits = 8, threads = 0;
     };
     auto args = std::make_shared<Args>();
-    args->options.mode = FilterMode::None;  // render shows S itself unless asked
+    args->options.use(parseFilter("none"));  // render shows S itself unless asked
     auto* cmd = app.add_subcommand("render", "Render a pattern to PNG or EXR, unfiltered, filtered or as the reference");
     addPatternSource(*cmd, args->source);
     addViewFlags(*cmd, args->view);
     addOutputImageFlag(*cmd, args->output);
-    addFilterModeFlag(*cmd, args->options.mode,
-                      "none (S at pixel centres) | paper (estimators + section-5 table) | smooth (estimators + "
-                      "interpolated table) | exact (brute-force statistics + table) | reference (supersampled S̄)");
+    addFilterFlag(*cmd, args->options,
+                  "none (S at pixel centres) | paper (estimators + section-5 table) | smooth (estimators + "
+                  "interpolated table) | exact (brute-force statistics + table) | reference (supersampled S̄)");
     addAnisoFlag(*cmd, args->options.aniso);
     addEnumFlag(*cmd, "--estimator", args->options.estimator, kVarianceEstimatorNames, "estimator",
                 "Variance estimator: paper | deliot-heitz (one variance per LOD)");
@@ -45,13 +45,13 @@ void registerRender(CLI::App& app) {
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         checkImageOutput(args->output);
-        const PatternSpec spec = loadPatternSource(args->source, args->options.mode);
+        const PatternSpec spec = loadPatternSource(args->source, args->options);
         Camera camera = args->camera;
         camera.view = makeView(spec, args->view);
         validateCamera(camera);  // before building anything; FilteredPattern checks the options
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
-        checkDeviceFilter(args->device, args->options.mode);  // before the pattern is built
+        checkDeviceFilter(args->device, args->options);  // before the pattern is built
         const Pattern pattern = Pattern::build(spec);
         PatternRenderer renderer(pattern, args->options, args->device);
         const Image image = renderer.render(camera);
@@ -59,7 +59,7 @@ void registerRender(CLI::App& app) {
         writeImage(args->output, image, WriteOptions{args->bits});
         std::printf("wrote %s (%dx%d, %s, %s view, filter %s, %s, %.2f s)\n", args->output.c_str(), camera.view.width,
                     camera.view.height, spec.name.c_str(), enumName(Camera::kKindNames, camera.kind).c_str(),
-                    enumName(kFilterModeNames, args->options.mode).c_str(), renderer.device().c_str(), seconds);
+                    filterName(args->options).c_str(), renderer.device().c_str(), seconds);
     });
 }
 

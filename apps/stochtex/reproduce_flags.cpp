@@ -33,7 +33,19 @@ void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, bool figure4
         sub.add_option("--preset", a.figure4.name, "Pattern of Figure 4")->capture_default_str();
         sub.add_option("--size", a.figure4.size, "Image size per footprint")->capture_default_str();
         sub.add_option("--reference-samples", a.figure4.referenceSamples, "Max reference samples per axis");
-        addFilterModeFlag(sub, a.figure4.mode, "Table used with the estimators: smooth or paper");
+        // Figure 4 compares the estimators' statistics with the exact ones:
+        // --filter chooses only the response.
+        const auto setResponse = [&a](const NamedFilter& f) {
+            if (f.source != StatisticsSource::Estimators)
+                throw InputError::parameter("filter",
+                                            "must be smooth or paper for figure 4 (the estimators through a "
+                                            "table), got " +
+                                                filterName(FilterOptions{}.use(f)));
+            a.figure4.response = f.response;
+        };
+        addFilterFlag(sub, setResponse,
+                      filterName(FilterOptions{}.use({StatisticsSource::Estimators, a.figure4.response})),
+                      "Table used with the estimators: smooth or paper");
     }
 }
 

@@ -24,7 +24,7 @@ void registerScene(CLI::App& app) {
     addPatternSource(*cmd, args->source);
     addOutputImageFlag(*cmd, args->output);
     cmd->add_option("--object", args->object, "plane | sphere | torus");
-    addFilterModeFlag(*cmd, args->options.mode, "none | paper | smooth");
+    addFilterFlag(*cmd, args->options, "none | paper | smooth");
     addAnisoFlag(*cmd, args->options.aniso);
     cmd->add_option("--tiling", args->tiling, "Example periods across the object's uv square");
     cmd->add_option("--size", args->size, "Image size: N or W,H")->delimiter(',')->expected(1, 2);
@@ -34,7 +34,7 @@ void registerScene(CLI::App& app) {
         if (w < 1 || h < 1 || w > 8192 || h > 8192) throw InputError("--size must be in [1, 8192] per side");
         const FilterOptions& options = args->options;
         const Mesh mesh = makeObject(args->object);
-        const PatternSpec spec = loadPatternSource(args->source, args->options.mode);
+        const PatternSpec spec = loadPatternSource(args->source, args->options);
         const auto start = std::chrono::steady_clock::now();
         const Pattern pattern = Pattern::build(spec);
         auto context = GlContext::headless();
@@ -48,7 +48,8 @@ void registerScene(CLI::App& app) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image);
         std::printf("wrote %s (%dx%d, %s on a %s, filter %s, %s, %.2f s)\n", args->output.c_str(), w, h,
-                    spec.name.c_str(), args->object.c_str(), enumName(kFilterModeNames, options.mode).c_str(), context->describe().c_str(), seconds);
+                    spec.name.c_str(), args->object.c_str(), filterName(options).c_str(), context->describe().c_str(),
+                    seconds);
     });
 }
 

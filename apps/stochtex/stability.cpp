@@ -1,6 +1,8 @@
 // stochtex stability: flicker of a zoom-out sequence, per filter mode.
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "common.h"
 #include "stochtex/core/parallel.h"
@@ -13,7 +15,7 @@ void registerStability(CLI::App& app) {
     struct Args {
         PatternSource source;
         StabilityStudyOptions study;
-        std::vector<FilterMode> filters{FilterMode::None, FilterMode::Paper, FilterMode::Smooth, FilterMode::Reference};
+        std::vector<std::string> filters{"none", "paper", "smooth", "reference"};  // kFilterNames
         FilterOptions options;
         std::string dir;
         int threads = 0;
@@ -27,7 +29,8 @@ void registerStability(CLI::App& app) {
     addOutputFolderFlag(*cmd, args->dir, "Output folder for stability.csv (and frames)");
     cmd->add_option("--filters", args->filters, "Filter modes to compare")
         ->delimiter(',')
-        ->transform(enumTransformer(kFilterModeNames, "mode"))
+        ->check(nameValidator(kFilterNames, "filter"))
+        ->type_name("ENUM")
         ->default_str("none,paper,smooth,reference");
     cmd->add_option("--frames", args->study.frames, "Number of frames")->check(CLI::Range(2, 1000));
     cmd->add_option("--size", args->study.size, "Frame size in pixels")->check(CLI::Range(8, 2048));
@@ -40,11 +43,15 @@ void registerStability(CLI::App& app) {
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         StabilityStudyOptions study = args->study;
-        for (FilterMode mode : args->filters) study.filters.emplace_back(args->options).mode = mode;
+        for (const std::string& name : args->filters) study.filters.emplace_back(args->options).use(parseFilter(name));
         validateStabilityStudy(study);
         // Any filtered mode prefilters the colormap: check it as the first such mode would.
-        FilterMode prefiltered = FilterMode::None;
-        for (FilterMode mode : args->filters) prefiltered = mode != FilterMode::None ? mode : prefiltered;
+        FilterOptions prefiltered = FilterOptions{}.use(parseFilter("none"));
+        for (const FilterOptions& f : study.filters)
+            if (f.source != StatisticsSource::Point) {
+                prefiltered = f;
+                break;
+            }
         const PatternSpec spec = loadPatternSource(args->source, prefiltered);
         const std::string& dir = args->dir;
         ensureFolder(dir);
@@ -53,15 +60,15 @@ void registerStability(CLI::App& app) {
         if (args->writeFrames)
             writeFrame = [&](size_t m, int k, const Image& frame) {
                 char file[64];
-                std::snprintf(file, sizeof file, "%s-%03d.png", enumName(kFilterModeNames, args->filters[m]).c_str(), k);
+                std::snprintf(file, sizeof file, "%s-%03d.png", args->filters[m].c_str(), k);
                 writeImage((std::filesystem::path(dir) / file).string(), frame);
             };
         std::printf("%-10s %12s %12s   (%d frames, scale %g -> %g, %dx%d)\n", "filter", "mean |dI|", "max |dI|",
                     study.frames, study.from, study.to, study.size, study.size);
         const StabilityStudyResult r = stabilityStudy(Pattern::build(spec), study, printProgress, writeFrame);
         for (size_t m = 0; m < r.measurements.size(); ++m)
-            std::printf("%-10s %12.5f %12.5f\n", enumName(kFilterModeNames, args->filters[m]).c_str(),
-                        r.measurements[m].mean, r.measurements[m].max);
+            std::printf("%-10s %12.5f %12.5f\n", args->filters[m].c_str(), r.measurements[m].mean,
+                        r.measurements[m].max);
         writeText(dir, "stability.csv", r.summary.csv());
         writeText(dir, "stability-frames.csv", r.perFrame.csv());
         std::printf("wrote %s/stability.csv and stability-frames.csv\n", dir.c_str());

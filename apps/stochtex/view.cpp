@@ -22,7 +22,7 @@ void registerView(CLI::App& app) {
                                            "derivatives, Esc quits");
     ViewWindowOptions& w = args->window;
     addPatternSource(*cmd, args->source);
-    addFilterModeFlag(*cmd, w.filter.mode, "Starting mode: none | paper | smooth");
+    addFilterFlag(*cmd, w.filter, "Starting mode: none | paper | smooth");
     addCameraFlags(*cmd, w.camera, false);
     cmd->add_option("--scale", w.camera.view.scale, "Starting scale (texels per pixel)");
     addAnisoFlag(*cmd, w.filter.aniso);
@@ -38,11 +38,10 @@ void registerView(CLI::App& app) {
         if (std::min(o.camera.view.width, o.camera.view.height) < 16 ||
             std::max(o.camera.view.width, o.camera.view.height) > 8192)
             throw InputError("--size must be in [16, 8192] per side");
-        if (!isGpuFilter(o.filter.mode))
-            throw InputError("--filter: the viewer shows none, paper or smooth");
+        if (!isGpuFilter(o.filter)) throw InputError("--filter: the viewer shows none, paper or smooth");
         validateCamera(o.camera);
         if (o.filter.aniso < 1 || o.filter.aniso > kMaxAnisotropy) throw InputError("--aniso must be in [1, 16]");
-        const PatternSpec spec = loadPatternSource(args->source, FilterMode::Smooth);
+        const PatternSpec spec = loadPatternSource(args->source, FilterOptions{}.use(parseFilter("smooth")));
         const int frames = runViewWindow(Pattern::build(spec), spec.name, o);
         if (!o.screenshot.empty()) std::printf("wrote %s after %d frames\n", o.screenshot.c_str(), frames);
     });

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <string>
 
 #include "stochtex/gpu/render_target.h"
 #include "stochtex/image/image_io.h"
@@ -23,7 +24,7 @@ namespace {
 
 struct ViewerState {
     Camera camera;
-    FilterMode mode = FilterMode::Smooth;
+    std::string filter = "smooth";  // a name of kFilterNames
     GpuPattern::Derivatives derivatives = GpuPattern::Derivatives::Camera;
     double cursorX = 0, cursorY = 0;
     bool dragging = false;
@@ -62,9 +63,9 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
     auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
     switch (key) {
         case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
-        case GLFW_KEY_1: s->mode = FilterMode::None; break;
-        case GLFW_KEY_2: s->mode = FilterMode::Paper; break;
-        case GLFW_KEY_3: s->mode = FilterMode::Smooth; break;
+        case GLFW_KEY_1: s->filter = "none"; break;
+        case GLFW_KEY_2: s->filter = "paper"; break;
+        case GLFW_KEY_3: s->filter = "smooth"; break;
         case GLFW_KEY_V:
             s->camera.kind = s->camera.kind == Camera::Kind::Zoom ? Camera::Kind::Plane : Camera::Kind::Zoom;
             break;
@@ -76,10 +77,6 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
         case GLFW_KEY_DOWN: s->camera.tiltDeg = std::max(0.0, s->camera.tiltDeg - 2.0); break;
         default: break;
     }
-}
-
-const char* modeName(FilterMode m) {
-    return m == FilterMode::None ? "unfiltered" : m == FilterMode::Paper ? "paper" : "smooth";
 }
 
 // The frame is drawn into `target` as `render` draws it (image row y in GL
@@ -105,7 +102,7 @@ Image readWindow(int w, int h) {
 int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWindowOptions& options) {
     ViewerState state;
     state.camera = options.camera;
-    state.mode = options.filter.mode;
+    state.filter = filterName(options.filter);
     auto context = GlContext::window(state.camera.view.width, state.camera.view.height, "stochtex view");
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     glfwSetWindowUserPointer(window, &state);
@@ -113,8 +110,8 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
     glfwSetCursorPosCallback(window, onCursor);
     glfwSetMouseButtonCallback(window, onButton);
     glfwSetKeyCallback(window, onKey);
-    std::map<FilterMode, std::unique_ptr<GpuPattern>> renderers;  // built on first use
-    std::unique_ptr<RenderTarget> target;                         // rebuilt when the window's size changes
+    std::map<std::string, std::unique_ptr<GpuPattern>> renderers;  // by filter name, built on first use
+    std::unique_ptr<RenderTarget> target;                          // rebuilt when the window's size changes
     int frame = 0;
     auto last = std::chrono::steady_clock::now();
     double fps = 0;
@@ -123,11 +120,10 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
         context->framebufferSize(fw, fh);
         state.camera.view.width = std::max(fw, 1);
         state.camera.view.height = std::max(fh, 1);
-        auto& r = renderers[state.mode];
+        auto& r = renderers[state.filter];
         if (!r) {
             FilterOptions o = options.filter;
-            o.mode = state.mode;
-            r = std::make_unique<GpuPattern>(pattern, *context, o);
+            r = std::make_unique<GpuPattern>(pattern, *context, o.use(parseFilter(state.filter)));
         }
         const int w = state.camera.view.width, h = state.camera.view.height;
         if (!target || target->width() != w || target->height() != h)
@@ -145,7 +141,8 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
         fps = fps == 0 ? 1.0 / std::max(dt, 1e-6) : 0.9 * fps + 0.1 / std::max(dt, 1e-6);
         char title[200];
         std::snprintf(title, sizeof title, "stochtex view - %s - %s - %s view - %s derivatives - scale %.3g - %.0f fps",
-                      name.c_str(), modeName(state.mode), enumName(Camera::kKindNames, state.camera.kind).c_str(),
+                      name.c_str(), state.filter == "none" ? "unfiltered" : state.filter.c_str(),
+                      enumName(Camera::kKindNames, state.camera.kind).c_str(),
                       enumName(kGpuDerivativesNames, state.derivatives).c_str(), state.camera.view.scale, fps);
         context->setTitle(title);
         context->swapAndPoll();

@@ -12,9 +12,11 @@
 namespace stochtex {
 namespace {
 
-std::array<TilingBlendingNoise, 2> noises(SpectrumShape shape, double f, double b, double theta) {
-    return {TilingBlendingNoise(std::make_shared<const NoiseExample>(test::example(shape, f, b, theta, 3, 128)), 11),
-            TilingBlendingNoise(std::make_shared<const NoiseExample>(test::example(shape, f, b, theta, 4, 128)), 12)};
+TiledField noises(SpectrumShape shape, double f, double b, double theta) {
+    return TiledField(
+        {TilingBlendingNoise(std::make_shared<const NoiseExample>(test::example(shape, f, b, theta, 3, 128)), 11),
+         TilingBlendingNoise(std::make_shared<const NoiseExample>(test::example(shape, f, b, theta, 4, 128)), 12)},
+        kDefaultGridDensity, OffsetSharing::Independent);
 }
 
 TEST(EstimatorError, ReducedTable1HasSaneNumbers) {
@@ -22,7 +24,7 @@ TEST(EstimatorError, ReducedTable1HasSaneNumbers) {
     o.footprints = {2, 8, 32};
     o.count = 150;
     for (const auto& pair : {noises(SpectrumShape::LowPass, 6, 0, 0), noises(SpectrumShape::BiLobe, 16, 2, 30)}) {
-        const auto rows = measureEstimatorErrors(pair, kDefaultGridDensity, o);
+        const auto rows = measureEstimatorErrors(pair, o);
         ASSERT_EQ(rows.size(), 9u);  // 3 sizes × (paper, deliot-heitz, global)
         for (size_t i = 0; i < rows.size(); ++i) {
             const EstimatorError& r = rows[i];
@@ -57,17 +59,23 @@ TEST(EstimatorError, IndependentOfThreadCount) {
     std::vector<EstimatorError> one;
     {
         ThreadLimit limit(1);
-        one = measureEstimatorErrors(pair, kDefaultGridDensity, o);
+        one = measureEstimatorErrors(pair, o);
     }
-    const auto all = measureEstimatorErrors(pair, kDefaultGridDensity, o);
+    const auto all = measureEstimatorErrors(pair, o);
     for (size_t i = 0; i < all.size(); ++i) {
         EXPECT_EQ(one[i].muAbs, all[i].muAbs);
         EXPECT_EQ(one[i].sigmaRel, all[i].sigmaRel);
     }
     o.count = 0;
-    const InputError e = test::inputErrorOf([&] { measureEstimatorErrors(pair, kDefaultGridDensity, o); });
+    const InputError e = test::inputErrorOf([&] { measureEstimatorErrors(pair, o); });
     EXPECT_EQ(e.parameter(), "count");
     EXPECT_STREQ(e.what(), "count must be in [1, 1e6], got 0");
+}
+
+TEST(EstimatorError, NeedsTwoChannels) {
+    const TiledField pair = noises(SpectrumShape::LowPass, 6, 0, 0);
+    const TiledField one({pair.channel(0)}, kDefaultGridDensity, OffsetSharing::Independent);
+    EXPECT_THROW(measureEstimatorErrors(one, EstimatorErrorOptions{}), std::invalid_argument);
 }
 
 }  // namespace

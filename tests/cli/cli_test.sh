@@ -219,7 +219,7 @@ case_bad_render_flags() {
   expect_bad "bad extension" "$out/bad11.jpg" "unsupported output format" -- "$bin" render --preset gaussian -o "$out/bad11.jpg"
   expect_bad "missing output dir" "$out/nodir/bad12.png" "does not exist" -- "$bin" render --preset gaussian -o "$out/nodir/bad12.png"
   expect_bad "unknown flag" "$out/bad16.png" "--bogus" -- "$bin" render --preset gaussian -o "$out/bad16.png" --bogus
-  expect_bad "bad filter" "$out/bad18.png" '--filter: mode must be none, paper, smooth, exact or reference, got "blurry"' -- "$bin" render --preset gaussian -o "$out/bad18.png" --filter blurry
+  expect_bad "bad filter" "$out/bad18.png" '--filter: filter must be none, paper, smooth, exact or reference, got "blurry"' -- "$bin" render --preset gaussian -o "$out/bad18.png" --filter blurry
   expect_bad "aniso zero" "$out/bad19.png" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
   expect_bad "aniso absurd" "$out/bad20.png" "--aniso: aniso must be in [1, 16], got 1000" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
   expect_bad "tilt" "$out/bad21.png" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95
@@ -243,6 +243,7 @@ case_bad_study_flags() {
   expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image file" -- "$bin" contrast -o "$out/zbad4" --base "$work/nothere.png"
   expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: layersList must hold layer counts in [1, 1024], got 0" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
   expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
+  expect_bad "figure 4 without the estimators" "$out/rbad3" "--filter: filter must be smooth or paper for figure 4 (the estimators through a table), got exact" -- "$bin" reproduce figure4 -o "$out/rbad3" --filter exact
   expect_bad "reproduce zero count" "$out/rbad2" "--count: count must be in [1, 1e6], got 0" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
 }
 
@@ -255,7 +256,7 @@ case_bad_gpu_flags() {
 
 case_bad_export_flags() {
   expect_bad "scene unknown object" "$out/sbad.png" '--object: object must be plane, sphere or torus, got "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
-  expect_bad "bake unfiltered" "$out/bbad" "--filter: mode must be paper or smooth to export" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
+  expect_bad "bake unfiltered" "$out/bbad" "--filter: source must be estimators to export (filter paper or smooth), got point" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
   expect_bad "bake bad precision" "$out/bbad2" '--table-precision: unknown "double"' -- "$bin" bake --preset weld --table-precision double -o "$out/bbad2"
   expect_bad "bake-image exr" "$out/x.exr" "bake-image writes PNG" -- "$bin" bake-image --preset marble -o "$out/x.exr"
 }
@@ -288,7 +289,7 @@ case_work_budget() {
   echo '{"noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "colormap": {"type": "ridged", "resolution": 4096}, "size": 32}' >"$work/fine.json"
   expect_bad "colormap too fine to prefilter" "$out/w1.png" "fine.json: /colormap/resolution: resolution must be at most 1024 per side to be prefiltered, got 4096x4096 (--filter smooth)" -- timeout 10 "$bin" render "$work/fine.json" --filter smooth -o "$out/w1.png"
   expect_ok "the same colormap unfiltered" "$out/w2.png" -- "$bin" render "$work/fine.json" --filter none -o "$out/w2.png"
-  local discs='{"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "color": "#ff0000"}' shapes i
+  local discs='{"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "colour": "#ff0000"}' shapes i
   shapes=$discs
   for i in $(seq 999); do shapes="$shapes, $discs"; done
   echo "{\"type\": \"painted\", \"resolution\": 4096, \"shapes\": [$shapes]}" >"$work/discs.json"

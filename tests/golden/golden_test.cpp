@@ -49,7 +49,7 @@ constexpr double kMeanStep = 0.2;  // mean |Δ|, in 1/255
 
 struct GoldenCase {
     std::string preset;
-    std::string filter;  // as parseFilterMode reads it
+    std::string filter;  // as parseFilter reads it
     std::string view;
 
     std::string name() const { return preset + "-" + filter + "-" + view; }
@@ -86,7 +86,7 @@ Image render(const GoldenCase& c) {
     camera.view.width = camera.view.height = kSize;
     camera.view.scale = 4.0;
     FilterOptions options;
-    options.mode = parseFilterMode(c.filter);
+    options.use(parseFilter(c.filter));
     if (c.view == "plane") {
         camera.kind = Camera::Kind::Plane;
         camera.tiltDeg = 70;

@@ -203,7 +203,7 @@ TEST(Export, SeparateProgramRendersWhatRenderGpuRenders) {
         const Pattern p = Pattern::build(loadPreset(name));
         FilterOptions o;
         const bool half = std::string(name) == "camouflage";
-        o.mode = half ? FilterMode::Smooth : FilterMode::Paper;
+        o.use(parseFilter(half ? "smooth" : "paper"));
         ExportOptions e;
         e.halfTable = half;
         const fs::path dir = test::scratchPath(std::string("stochtex_export_") + name);

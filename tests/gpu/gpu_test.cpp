@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_pattern.h"
@@ -120,22 +122,21 @@ TEST(Gpu, UnfilteredRenderMatchesTheCpuForPresets) {
 TEST(Gpu, FilteredRenderMatchesTheCpu) {
     for (const char* name : {"camouflage", "phasor-stripes"}) {
         const Pattern p = Pattern::build(loadPreset(name));
-        for (FilterMode mode : {FilterMode::Paper, FilterMode::Smooth})
+        for (const std::string filter : {"paper", "smooth"})
             for (double scale : {1.0, 3.0, 16.0, 64.0}) {
                 FilterOptions o;
-                o.mode = mode;
+                o.use(parseFilter(filter));
                 View v;
                 v.width = 128;
                 v.height = 96;
                 v.scale = scale;
                 v.offsetU = 321.0;
-                expectParity(p, v, std::string(name) + (mode == FilterMode::Paper ? " paper" : " smooth") + " scale " +
-                                       std::to_string(int(scale)), o);
+                expectParity(p, v, std::string(name) + " " + filter + " scale " + std::to_string(int(scale)), o);
             }
     }
     const Pattern p = Pattern::build(loadPreset("woven"));
     FilterOptions o;
-    o.mode = FilterMode::Smooth;
+    o.use(parseFilter("smooth"));
     o.aniso = 8;
     o.estimator = VarianceEstimator::DeliotHeitz;
     View v;
@@ -163,7 +164,7 @@ TEST(Gpu, PlaneViewMatchesTheCpu) {
         c.view.scale = 2.0;
         for (int aniso : {1, 8}) {
             FilterOptions o;
-            o.mode = FilterMode::Smooth;
+            o.use(parseFilter("smooth"));
             o.aniso = aniso;
             const std::string what = "plane " + std::to_string(int(tilt)) + "°, smooth, K = " + std::to_string(aniso);
             expectParity(p, c, what, o);
@@ -196,11 +197,11 @@ TEST(Gpu, ComputeKernelMatchesTheCpu) {
     c.view.offsetU = 1234.5;
     expectParity(p, c, "compute, zoom, unfiltered", GpuPattern::unfiltered(), 0.005, compute);
     FilterOptions o;
-    o.mode = FilterMode::Paper;
+    o.use(parseFilter("paper"));
     expectParity(p, c, "compute, zoom, paper", o, 0.005, compute);
     c.kind = Camera::Kind::Plane;
     c.tiltDeg = 70;
-    o.mode = FilterMode::Smooth;
+    o.use(parseFilter("smooth"));
     o.aniso = 8;
     expectParity(p, c, "compute, plane 70°, smooth, K = 8", o, 0.005, compute);
     GpuPattern gpu(p, context(), o);
@@ -230,7 +231,7 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     ASSERT_GT(st.stddev, 0.15);
     expectParity(p, v, "gaussianized exemplar");
     FilterOptions o;
-    o.mode = FilterMode::Smooth;
+    o.use(parseFilter("smooth"));
     v.scale = 4.0;
     expectParity(p, v, "gaussianized exemplar, smooth, scale 4", o);
     fs::remove_all(dir);
@@ -244,11 +245,11 @@ TEST(Gpu, SceneRendersObjectsInEveryFilterMode) {
     const Pattern p = Pattern::build(loadPreset("weld"));
     const int w = 160, h = 120;
     for (const char* name : {"sphere", "torus", "plane"}) {
-        std::map<FilterMode, double> coverage;
-        for (const FilterMode mode : {FilterMode::None, FilterMode::Paper, FilterMode::Smooth}) {
-            const std::string what = std::string(name) + ", filter " + enumName(kFilterModeNames, mode);
+        std::map<std::string, double> coverage;
+        for (const std::string mode : {"none", "paper", "smooth"}) {
+            const std::string what = std::string(name) + ", filter " + mode;
             FilterOptions o;
-            o.mode = mode;
+            o.use(parseFilter(mode));
             GpuPattern gpu(p, context(), o);
             const Image img = renderScene(gpu, makeObject(name), SceneCamera{}, w, h, 4.0f);
             ASSERT_EQ(img.width(), w);
@@ -273,8 +274,8 @@ TEST(Gpu, SceneRendersObjectsInEveryFilterMode) {
         }
         // One silhouette: the modes differ only in a few edge pixels (2% of
         // the frame: dark pattern texels that shade close to the clear colour).
-        EXPECT_NEAR(coverage[FilterMode::None], coverage[FilterMode::Smooth], 0.02) << name;
-        EXPECT_NEAR(coverage[FilterMode::Paper], coverage[FilterMode::Smooth], 0.02) << name;
+        EXPECT_NEAR(coverage["none"], coverage["smooth"], 0.02) << name;
+        EXPECT_NEAR(coverage["paper"], coverage["smooth"], 0.02) << name;
     }
     GpuPattern gpu(p, context(), FilterOptions{});
     EXPECT_EQ(test::inputErrorOf([] { makeObject("cube"); }).parameter(), "object");
@@ -314,9 +315,30 @@ TEST(Gpu, UserShaderFileErrorsNameTheFileAndLine) {
     EXPECT_THROW(readShaderFile(test::scratchPath("stochtex_no_such_shader.frag").string()), InputError);
 }
 
-// Every program of the recipe table compiles as GLSL 3.30 core and GLSL ES
-// 3.00 (WebGL 2), compute programs as GLSL 4.30, checked by the reference
-// compiler.
+// The recipes that filter take the response's chunk where they list the
+// slot, after filtering.glsl (which declares footprintResponse) and after
+// the kernel file it needs; the others are left as they are.
+TEST(Gpu, FilteringRecipesAssembleTheResponseChunk) {
+    const std::string chunk = "response_prefiltered_colormap";
+    EXPECT_EQ(responseChunk(ResponseKind::PrefilteredColormap), chunk);
+    for (const char* name : {"filtered", "filtered-compute", "scene", "export-include"}) {
+        const std::vector<std::string> files =
+            shaderChunks(recipeFiles(programRecipe(name), ResponseKind::PrefilteredColormap));
+        const auto at = [&](const std::string& stem) {
+            return std::find(files.begin(), files.end(), stem) - files.begin();
+        };
+        ASSERT_LT(at(chunk), std::ptrdiff_t(files.size())) << name;
+        EXPECT_LT(at("filtering"), at(chunk)) << name;
+        EXPECT_LT(at("sigma_levels"), at(chunk)) << name;
+        EXPECT_EQ(std::count(files.begin(), files.end(), kResponseSlot), 0) << name;
+    }
+    for (const char* name : {"unfiltered", "unfiltered-compute"})
+        EXPECT_EQ(recipeFiles(programRecipe(name), ResponseKind::PrefilteredColormap), programRecipe(name).main);
+}
+
+// Every program of the recipe table, with the chunk of every response kind,
+// compiles as GLSL 3.30 core and GLSL ES 3.00 (WebGL 2), compute programs as
+// GLSL 4.30, checked by the reference compiler.
 TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {
     const fs::path dir = test::scratchPath("stochtex_glslang");
     fs::create_directories(dir);
@@ -332,18 +354,20 @@ TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {
         EXPECT_EQ(rc, 0) << file << ":\n" << text;
     };
     int programs = 0;
-    for (const ProgramRecipe& r : programRecipes()) {
-        if (r.kind == ProgramRecipe::Kind::Graphics) {
-            for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300}) {
-                validate(t, r.name, "vert", r.vertex);
-                validate(t, r.name, "frag", r.main);
+    for (const ProgramRecipe& r : programRecipes())
+        for (const auto& [kindName, kind] : kResponseKindNames) {
+            const std::string name = r.name + "-" + kindName;
+            if (r.kind == ProgramRecipe::Kind::Graphics) {
+                for (GlslTarget t : {GlslTarget::Core330, GlslTarget::Es300}) {
+                    validate(t, name, "vert", r.vertex);
+                    validate(t, name, "frag", recipeFiles(r, kind));
+                }
+                ++programs;
+            } else if (r.kind == ProgramRecipe::Kind::Compute) {
+                validate(GlslTarget::Core430, name, "comp", recipeFiles(r, kind));
+                ++programs;
             }
-            ++programs;
-        } else if (r.kind == ProgramRecipe::Kind::Compute) {
-            validate(GlslTarget::Core430, r.name, "comp", r.main);
-            ++programs;
         }
-    }
     EXPECT_GE(programs, 5);
     fs::remove_all(dir);
 }

@@ -45,7 +45,7 @@ TEST(Colormap, PaintedShapesPutTheRightColourAtKnownPoints) {
     PaintedColormap p;
     p.background = {0.1f, 0.1f, 0.1f};
     auto add = [&](PaintedShape s, Rgb c) {
-        s.color = c;
+        s.colour = c;
         p.shapes.push_back(s);
     };
     PaintedShape half;

@@ -152,7 +152,7 @@ TEST(WorkBudget, PaintedShapesTimesResolutionSquaredIsCapped) {
     std::string shapes;
     for (int i = 0; i < 1000; ++i)
         shapes += std::string(i ? ", " : "") +
-                  R"({"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "color": "#ff0000"})";
+                  R"({"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "colour": "#ff0000"})";
     const std::string e =
         patternError(pattern(kSpectrum, R"({"type": "painted", "resolution": 4096, "shapes": [)" + shapes + "]}"));
     EXPECT_EQ(e.rfind("test.json: /colormap/shapes: shapes cost 1000 shape tests", 0), 0u) << e;

@@ -102,15 +102,19 @@ TEST(PatternSpec, PaintedColormapValidation) {
     const std::string base = R"({"noise_x": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 8}]},
         "noise_y": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 8}]},
         "colormap": {"type": "painted", "shapes": [)";
-    EXPECT_NE(errorOf(base + R"({"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "color": "#12345"}]}})")
-                  .find("/colormap/shapes/0/color: invalid colour"),
+    EXPECT_NE(errorOf(base + R"({"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "colour": "#12345"}]}})")
+                  .find("/colormap/shapes/0/colour: invalid colour"),
               std::string::npos);
-    EXPECT_NE(errorOf(base + R"({"shape": "polygon", "points": [[0, 0], [1, 1]], "color": "#123456"}]}})")
+    EXPECT_NE(errorOf(base + R"({"shape": "polygon", "points": [[0, 0], [1, 1]], "colour": "#123456"}]}})")
                   .find("/colormap/shapes/0/points: a polygon needs at least 3 points"),
               std::string::npos);
-    const PatternSpec ok = parse(base + R"({"shape": "band", "point": [0.5, 0.5], "angle": 10, "width": 0.1, "color": [1, 0.5, 0]}]}})");
+    // One spelling: the American member name is an unknown member.
+    EXPECT_NE(errorOf(base + R"({"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "color": "#123456"}]}})")
+                  .find("/colormap/shapes/0/color: unknown member"),
+              std::string::npos);
+    const PatternSpec ok = parse(base + R"({"shape": "band", "point": [0.5, 0.5], "angle": 10, "width": 0.1, "colour": [1, 0.5, 0]}]}})");
     ASSERT_EQ(ok.colormap.painted.shapes.size(), 1u);
-    EXPECT_FLOAT_EQ(ok.colormap.painted.shapes[0].color[1], 0.5f);
+    EXPECT_FLOAT_EQ(ok.colormap.painted.shapes[0].colour[1], 0.5f);
 }
 
 // "offsets" and a phasor's "profile" are read through the enums' name tables
@@ -169,7 +173,7 @@ TEST(Presets, PaintedPresetsShowEveryColourTheyPaint) {
         const PaintedColormap& layout = spec.colormap.painted;
         const ColormapTable table = layout.rasterize(resolution);
         for (size_t k = 0; k < layout.shapes.size(); ++k) {
-            const Rgb want = layout.shapes[k].color;
+            const Rgb want = layout.shapes[k].colour;
             int near = 0;
             for (int j = 0; j < resolution; ++j)
                 for (int i = 0; i < resolution; ++i) {

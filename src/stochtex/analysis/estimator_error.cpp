@@ -1,6 +1,8 @@
 #include "stochtex/analysis/estimator_error.h"
 
+#include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
@@ -20,13 +22,14 @@ void validateEstimatorErrorOptions(const EstimatorErrorOptions& options, int exa
                                                           "] texels, got " + std::to_string(s));
 }
 
-std::vector<EstimatorError> measureEstimatorErrors(const std::array<TilingBlendingNoise, 2>& noises,
-                                                   double gridDensity, const EstimatorErrorOptions& options,
+std::vector<EstimatorError> measureEstimatorErrors(const TiledField& field, const EstimatorErrorOptions& options,
                                                    const std::function<void(int)>& progress) {
-    const int w = noises[0].example().size();
+    if (field.channelCount() != 2)
+        throw std::invalid_argument("measureEstimatorErrors: needs a field of 2 channels, got " +
+                                    std::to_string(field.channelCount()));
+    const int w = field.exampleSize();
     if (!isPowerOfTwo(w)) throw InputError("estimator errors: examples must be power-of-two sized");
     validateEstimatorErrorOptions(options, w);
-    const TiledField field({noises[0], noises[1]}, gridDensity, OffsetSharing::Independent);
     const FootprintEstimator estimator(field, false);
     // Global statistics: the top pyramid level is the whole example.
     std::array<double, 2> globalMean{}, globalSigma{};

@@ -11,12 +11,11 @@
 //                  example (what a pixel falls back to without filtering
 //                  data; every estimator should beat it).
 // Both components of N are measured and pooled (2 values per footprint).
-#include <array>
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "stochtex/noise/tiling_blending.h"
+#include "stochtex/noise/tiled_field.h"
 
 namespace stochtex {
 
@@ -40,10 +39,12 @@ struct EstimatorError {
 // [1, 4·exampleSize].
 void validateEstimatorErrorOptions(const EstimatorErrorOptions& options, int exampleSize);
 
-// Rows ordered by footprint, then estimator (paper, deliot-heitz, global).
-// Multi-threaded over footprints; the result does not depend on threads.
-std::vector<EstimatorError> measureEstimatorErrors(const std::array<TilingBlendingNoise, 2>& noises,
-                                                   double gridDensity, const EstimatorErrorOptions& options,
+// The errors of a two-channel field's estimators (its grid density and
+// tile offsets; covariances are not measured, so its sharing does not
+// matter). Rows ordered by footprint, then estimator (paper, deliot-heitz,
+// global). Multi-threaded over footprints; the result does not depend on
+// threads. std::invalid_argument for a field without two channels.
+std::vector<EstimatorError> measureEstimatorErrors(const TiledField& field, const EstimatorErrorOptions& options,
                                                    const std::function<void(int)>& progress = {});
 
 }  // namespace stochtex

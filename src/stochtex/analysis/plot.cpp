@@ -236,7 +236,7 @@ Image linePlot(const std::vector<PlotSeries>& series, const LinePlotOptions& o) 
     cv::rectangle(m, cv::Rect(left, top, pw, ph), kInk, 1);
     int legendY = top + 14;
     for (const auto& s : series) {
-        const cv::Scalar col = bgr(s.color);
+        const cv::Scalar col = bgr(s.colour);
         const size_t n = std::min(s.x.size(), s.y.size());
         if (s.bars && n > 0) {
             const double step = n > 1 ? (s.x[1] - s.x[0]) : 1.0;

@@ -39,7 +39,7 @@ Image colourLegend(double vmin, double vmax, HeatPalette palette, const std::str
 struct PlotSeries {
     std::string name;
     std::vector<double> x, y;
-    std::array<float, 3> color{0.1f, 0.3f, 0.8f};  // RGB in [0, 1]
+    std::array<float, 3> colour{0.1f, 0.3f, 0.8f};  // RGB in [0, 1]
     bool bars = false;                              // histogram-style bars instead of a line
 };
 

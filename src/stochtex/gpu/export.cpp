@@ -15,15 +15,15 @@ namespace stochtex {
 
 namespace fs = std::filesystem;
 
-std::string exportedShaderInclude() {
+std::string exportedShaderInclude(ResponseKind response) {
     return "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
            "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
            "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
            "// footprint comes from this fragment's derivatives of uv. The textures to\n"
            "// bind and the PatternParameters block to fill are described in README.md.\n\n" +
-           [] {
+           [response] {
                std::string body;
-               for (const auto& stem : shaderChunks(programRecipe("export-include").main))
+               for (const auto& stem : shaderChunks(recipeFiles(programRecipe("export-include"), response)))
                    body += shaderText(stem) + "\n";
                return body;
            }() +
@@ -102,8 +102,9 @@ std::string readme() {
 
 void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
                    const ExportOptions& exportOptions) {
-    if (options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
-        throw InputError::parameter("mode", "must be paper or smooth to export");
+    if (options.source != StatisticsSource::Estimators)
+        throw InputError::parameter("source", "must be estimators to export (filter paper or smooth), got " +
+                                                  enumName(kStatisticsSourceNames, options.source));
     const FilteredPattern f(pattern, options);  // validates the options
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -111,11 +112,11 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     const FootprintEstimator& est = f.estimator();
     nlohmann::json m;
     m["version"] = 1;
-    m["filter"] = enumName(kFilterModeNames, options.mode);
+    m["filter"] = filterName(options);
     m["example_size"] = pattern.exampleSize();
     m["levels"] = est.maxLod() + 1;
     m["means"] = {pattern.example(0).mean(), pattern.example(1).mean()};
-    m["seeds"] = {pattern.noises()[0].offsetSeed(), pattern.noises()[1].offsetSeed()};
+    m["seeds"] = {pattern.noise(0).offsetSeed(), pattern.noise(1).offsetSeed()};
     m["grid_density"] = pattern.gridDensity();
     m["covariance"] = est.covariancePyramid() != nullptr;
     m["aniso"] = options.aniso;
@@ -141,7 +142,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
                   {"width", rx},          {"height", ry},
                   {"sigmas", table.sigmas()}, {"precision", exportOptions.halfTable ? "half" : "float"}};
     writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
-    writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude());
+    writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude(options.response.kind));
     writeFileAtomic((fs::path(dir) / "README.md").string(), readme());
 }
 

@@ -27,11 +27,11 @@ struct ExportOptions {
     bool halfTable = true;
 };
 
-// options.mode: Paper or Smooth. The folder is created if missing.
+// options.source: Estimators (InputError naming `source` otherwise). The folder is created if missing.
 void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
                    const ExportOptions& exportOptions = {});
 
-// The include's text (what stochtex.glsl holds).
-std::string exportedShaderInclude();
+// The include's text (what stochtex.glsl holds) with the response's chunk.
+std::string exportedShaderInclude(ResponseKind response = ResponseKind::PrefilteredColormap);
 
 }  // namespace stochtex

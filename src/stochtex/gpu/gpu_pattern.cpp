@@ -85,14 +85,15 @@ struct GpuPattern::Impl {
 
 GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
     : impl_(std::make_unique<Impl>()) {
-    if (options.mode != FilterMode::None && options.mode != FilterMode::Paper && options.mode != FilterMode::Smooth)
-        throw InputError::parameter("mode", "must be none, paper or smooth on the GPU");
+    if (options.source != StatisticsSource::Point && options.source != StatisticsSource::Estimators)
+        throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
+                                                  enumName(kStatisticsSourceNames, options.source));
     context.makeCurrent();
     Impl& m = *impl_;
     m.options = options;
     m.hasCompute = context.hasCompute();
-    const bool filtered = options.mode != FilterMode::None;
-    m.program = buildProgram(filtered ? "filtered" : "unfiltered");
+    const bool filtered = options.source == StatisticsSource::Estimators;
+    m.program = buildProgram(filtered ? "filtered" : "unfiltered", options.response.kind);
     const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
     m.sky = f.skyColour();
     kernel::PatternParams p{};
@@ -102,7 +103,9 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
             throw InputError("the GPU filters examples of at most 32768² texels, got " +
                              std::to_string(pattern.exampleSize()) + "²");
         for (int a = 0; a < 2; ++a) m.stats[a] = pyramidTexture(est.pyramid(a));
-        m.shared = est.covariancePyramid() != nullptr;
+        // uHasCovariance: the pyramid exists only for a shared-offset pair
+        // whose response reads the covariance (FilteredPattern).
+        m.shared = f.response().needsCovariance() && est.covariancePyramid() != nullptr;
         if (m.shared) m.covariance = pyramidTexture(*est.covariancePyramid());
         const ColormapTable& h = f.blendingSpaceColormap();
         const int levels = int(f.table().sigmas().size());
@@ -112,7 +115,7 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
         p.deliotHeitz = options.estimator == VarianceEstimator::DeliotHeitz;
         p.maxLod = est.maxLod();
         p.aniso = options.aniso;
-        p.smoothTable = options.mode == FilterMode::Smooth;
+        p.smoothTable = options.response.prefilter == PrefilterMode::Smooth;
         p.tableLevels = levels;
         for (int l = 0; l <= est.maxLod(); ++l)
             p.averageMoments[l] = {est.pyramid(0).averageMoment(l), est.pyramid(1).averageMoment(l),
@@ -123,8 +126,8 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     p.meanY = pattern.example(1).mean();
     p.gridDensity = float(pattern.gridDensity());
     p.invExampleSize = float(1.0 / pattern.exampleSize());
-    p.seedX = pattern.noises()[0].offsetSeed();
-    p.seedY = pattern.noises()[1].offsetSeed();
+    p.seedX = pattern.noise(0).offsetSeed();
+    p.seedY = pattern.noise(1).offsetSeed();
     p.gaussianizedX = pattern.example(0).gaussianized();
     p.gaussianizedY = pattern.example(1).gaussianized();
     for (int a = 0; a < 2; ++a) {
@@ -145,7 +148,9 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
 
 GpuPattern::~GpuPattern() = default;
 
-bool GpuPattern::filtered() const { return impl_->options.mode != FilterMode::None; }
+bool GpuPattern::filtered() const { return impl_->options.source == StatisticsSource::Estimators; }
+
+ResponseKind GpuPattern::responseKind() const { return impl_->options.response.kind; }
 
 Image GpuPattern::render(const View& view) {
     Camera camera;
@@ -169,11 +174,11 @@ void GpuPattern::bind(unsigned program) const {
     // declares both (the scene's) would otherwise leave uTable, an array
     // sampler, on unit 0 with the 2D uExampleX, and GL refuses to draw
     // (GL_INVALID_OPERATION) when samplers of two types share a unit.
-    const bool filtered = m.options.mode != FilterMode::None;
-    bindTexture(5, GL_TEXTURE_2D, filtered ? m.stats[0].id() : 0, "uStatsX");
-    bindTexture(6, GL_TEXTURE_2D, filtered ? m.stats[1].id() : 0, "uStatsY");
-    bindTexture(7, GL_TEXTURE_2D, !filtered ? 0 : m.shared ? m.covariance.id() : m.stats[0].id(), "uCovariance");
-    bindTexture(8, GL_TEXTURE_2D_ARRAY, filtered ? m.table.id() : 0, "uTable");
+    const bool estimated = filtered();
+    bindTexture(5, GL_TEXTURE_2D, estimated ? m.stats[0].id() : 0, "uStatsX");
+    bindTexture(6, GL_TEXTURE_2D, estimated ? m.stats[1].id() : 0, "uStatsY");
+    bindTexture(7, GL_TEXTURE_2D, !estimated ? 0 : m.shared ? m.covariance.id() : m.stats[0].id(), "uCovariance");
+    bindTexture(8, GL_TEXTURE_2D_ARRAY, estimated ? m.table.id() : 0, "uTable");
     // GLSL 3.30 / ES 3.00 cannot fix a block's binding point in the source.
     const GLuint block = glGetUniformBlockIndex(program, kPatternBlockName);
     if (block != GL_INVALID_INDEX) glUniformBlockBinding(program, block, kPatternBlockBinding);
@@ -193,7 +198,8 @@ void GpuPattern::setPipeline(Pipeline p) {
         if (!m.hasCompute) throw GpuUnavailable("the compute pipeline needs OpenGL 4.3 (compute shaders)");
         if (m.derivatives == Derivatives::Rasterizer)
             throw rasterizerNeedsFragments();
-        if (!m.kernelProgram) m.kernelProgram = buildProgram(filtered() ? "filtered-compute" : "unfiltered-compute");
+        if (!m.kernelProgram)
+            m.kernelProgram = buildProgram(filtered() ? "filtered-compute" : "unfiltered-compute", responseKind());
     }
     m.pipeline = p;
 }

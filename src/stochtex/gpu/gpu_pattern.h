@@ -18,11 +18,12 @@ namespace stochtex {
 class GpuPattern {
 public:
     // Data is copied to the GPU: the pattern need not outlive this object.
-    // options.mode: None, Paper or Smooth (InputError otherwise).
+    // options.source: Point or Estimators (InputError naming `source`
+    // otherwise); any response kind (its GLSL chunk: gpu/programs.h).
     GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options = unfiltered());
     static FilterOptions unfiltered() {
         FilterOptions o;
-        o.mode = FilterMode::None;
+        o.source = StatisticsSource::Point;
         return o;
     }
     ~GpuPattern();
@@ -61,8 +62,11 @@ public:
     // lacks) and its parameters' buffer to its PatternParameters block. For
     // programs of other recipes (the scene).
     void bind(unsigned program) const;
-    // Paper or smooth (else the unfiltered S = H ∘ N).
+    // The estimators and a response (else the unfiltered S = H ∘ N).
     bool filtered() const;
+    // Whose shader chunk the programs of other recipes must assemble
+    // (buildProgram's response).
+    ResponseKind responseKind() const;
 
 private:
     void setViewUniforms(unsigned program, const Camera& camera) const;

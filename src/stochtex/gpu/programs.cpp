@@ -1,22 +1,39 @@
 #include "stochtex/gpu/programs.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "stochtex/gpu/shader.h"
 
 namespace stochtex {
 
+const std::string& responseChunk(ResponseKind kind) {
+    static const std::string prefilteredColormap = "response_prefiltered_colormap";
+    switch (kind) {
+        case ResponseKind::PrefilteredColormap: return prefilteredColormap;
+    }
+    throw std::invalid_argument("responseChunk: no shader chunk for response kind " + std::to_string(int(kind)));
+}
+
 const std::vector<ProgramRecipe>& programRecipes() {
     using K = ProgramRecipe::Kind;
+    const std::string& R = kResponseSlot;
     static const std::vector<ProgramRecipe> recipes = {
         {"unfiltered", K::Graphics, {"fullscreen"}, {"common", "unfiltered", "view", "pattern"}},
-        {"filtered", K::Graphics, {"fullscreen"}, {"common", "filtering", "view", "filtered"}},
+        {"filtered", K::Graphics, {"fullscreen"}, {"common", "filtering", R, "view", "filtered"}},
         {"unfiltered-compute", K::Compute, {}, {"common", "unfiltered", "view", "kernel_unfiltered", "view_kernel"}},
-        {"filtered-compute", K::Compute, {}, {"common", "filtering", "view", "kernel_filtered", "view_kernel"}},
-        {"scene", K::Graphics, {"mesh"}, {"common", "unfiltered", "filtering", "scene"}},
-        {"export-include", K::Include, {}, {"common", "filtering"}},
+        {"filtered-compute", K::Compute, {}, {"common", "filtering", R, "view", "kernel_filtered", "view_kernel"}},
+        {"scene", K::Graphics, {"mesh"}, {"common", "unfiltered", "filtering", R, "scene"}},
+        {"export-include", K::Include, {}, {"common", "filtering", R}},
     };
     return recipes;
+}
+
+std::vector<std::string> recipeFiles(const ProgramRecipe& recipe, ResponseKind response) {
+    std::vector<std::string> files = recipe.main;
+    for (auto& f : files)
+        if (f == kResponseSlot) f = responseChunk(response);
+    return files;
 }
 
 const ProgramRecipe& programRecipe(const std::string& name) {
@@ -25,11 +42,11 @@ const ProgramRecipe& programRecipe(const std::string& name) {
     throw std::invalid_argument("no program recipe \"" + name + "\"");
 }
 
-gl::Program buildProgram(const std::string& name) {
+gl::Program buildProgram(const std::string& name, ResponseKind response) {
     const ProgramRecipe& r = programRecipe(name);
     switch (r.kind) {
-        case ProgramRecipe::Kind::Graphics: return gl::Program(compileProgram(r.vertex, r.main));
-        case ProgramRecipe::Kind::Compute: return gl::Program(compileComputeProgram(r.main));
+        case ProgramRecipe::Kind::Graphics: return gl::Program(compileProgram(r.vertex, recipeFiles(r, response)));
+        case ProgramRecipe::Kind::Compute: return gl::Program(compileComputeProgram(recipeFiles(r, response)));
         case ProgramRecipe::Kind::Include: break;
     }
     throw std::invalid_argument("program recipe \"" + name + "\" is an include, not a program");

@@ -4,10 +4,16 @@
 // stage needs are added by the assembler (shaderChunks), so a recipe names
 // only what it uses directly. GpuPattern, the scene, the export and the
 // tests (compilation, glslangValidator) all read this table.
+//
+// A filtering recipe lists kResponseSlot where the response's chunk goes:
+// filtering.glsl declares `vec3 footprintResponse(vec2 mean, vec2 var,
+// float cov)` and the chunk of the pattern's response kind (responseChunk)
+// defines it. A new response is a new chunk and its line in responseChunk.
 #include <string>
 #include <vector>
 
 #include "stochtex/gpu/gl_objects.h"
+#include "stochtex/pattern/response.h"
 
 namespace stochtex {
 
@@ -29,11 +35,18 @@ struct ProgramRecipe {
 inline constexpr const char* kPatternBlockName = "PatternParameters";
 inline constexpr unsigned kPatternBlockBinding = 0;
 
+inline const std::string kResponseSlot = "response";
+// The shader chunk (stem) of a response kind.
+const std::string& responseChunk(ResponseKind kind);
+
 const std::vector<ProgramRecipe>& programRecipes();
 // InputError-free: an unknown name is a programming error (std::invalid_argument).
 const ProgramRecipe& programRecipe(const std::string& name);
-// Compiles and links a Graphics or Compute recipe (needs a current context;
+// A recipe's main files with kResponseSlot replaced by the response's chunk.
+std::vector<std::string> recipeFiles(const ProgramRecipe& recipe, ResponseKind response);
+// Compiles and links a Graphics or Compute recipe with the response's chunk
+// (ignored by recipes without the slot; needs a current context;
 // ShaderError with file:line locations on failure).
-gl::Program buildProgram(const std::string& name);
+gl::Program buildProgram(const std::string& name, ResponseKind response = ResponseKind::PrefilteredColormap);
 
 }  // namespace stochtex

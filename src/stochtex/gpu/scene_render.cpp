@@ -18,7 +18,7 @@ Image renderScene(const GpuPattern& pattern, const Mesh& mesh, const SceneCamera
     if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
         throw InputError::parameter("tiling", "must be a finite number in (0, 1e4], got " + formatValue(tiling));
     for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}  // earlier callers' errors are not ours
-    const gl::Program program = buildProgram("scene");
+    const gl::Program program = buildProgram("scene", pattern.responseKind());
     const gl::VertexArray vao = gl::newVertexArray();
     glBindVertexArray(vao.id());
     const gl::Buffer vertices = gl::newBuffer(), indices = gl::newBuffer();

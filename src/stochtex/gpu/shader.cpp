@@ -54,7 +54,8 @@ const std::map<std::string, std::vector<std::string>>& chunkNeeds() {
     static const std::map<std::string, std::vector<std::string>> needs = {
         {"grid", {"hash"}},
         {"common", {"hash", "grid", "lookup", "pattern_params"}},
-        {"filtering", {"footprint", "moments", "sigma_levels"}},
+        {"filtering", {"footprint", "moments"}},
+        {"response_prefiltered_colormap", {"sigma_levels"}},
         {"view", {"camera"}},
     };
     return needs;

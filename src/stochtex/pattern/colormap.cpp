@@ -125,7 +125,7 @@ bool PaintedShape::contains(double x, double y) const {
 Rgb PaintedColormap::evaluate(double x, double y) const {
     Rgb c = background;
     for (const auto& s : shapes)
-        if (s.contains(x, y)) c = s.color;
+        if (s.contains(x, y)) c = s.colour;
     return c;
 }
 

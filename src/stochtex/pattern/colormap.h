@@ -84,7 +84,7 @@ float phasorProfile(PhasorProfile profile, double phase, double duty);
 struct PaintedShape {
     enum class Kind { Rectangle, Disc, Ring, HalfPlane, Band, Polygon };
     Kind kind = Kind::Rectangle;
-    Rgb color{0, 0, 0};
+    Rgb colour{0, 0, 0};
     std::array<double, 2> a{0, 0};  // rectangle min; disc/ring centre; half-plane/band point
     std::array<double, 2> b{0, 0};  // rectangle max
     double radius = 0;              // disc radius; ring outer radius

@@ -1,6 +1,7 @@
 #include "stochtex/pattern/filtered_pattern.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
@@ -46,24 +47,16 @@ Rgb averageColour(const Pattern& p, const ColormapTable& blendingSpaceColormap) 
 
 }  // namespace
 
-FilterMode parseFilterMode(const std::string& name) { return parseEnum(kFilterModeNames, name, "mode"); }
+NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames, name, "filter"); }
 
-StatisticsSource statisticsSource(FilterMode mode) {
-    switch (mode) {
-        case FilterMode::None: return StatisticsSource::Point;
-        case FilterMode::Paper:
-        case FilterMode::Smooth: return StatisticsSource::Estimators;
-        case FilterMode::Exact: return StatisticsSource::Exact;
-        case FilterMode::Reference: return StatisticsSource::Reference;
-    }
-    return StatisticsSource::Point;
+std::string filterName(const FilterOptions& options) {
+    for (const auto& [name, filter] : kFilterNames)
+        if (filter == options.filter()) return name;
+    return enumName(kStatisticsSourceNames, options.source) + "/" + enumName(kResponseKindNames, options.response.kind);
 }
 
-PrefilterMode prefilterMode(FilterMode mode) { return mode == FilterMode::Paper ? PrefilterMode::Paper : PrefilterMode::Smooth; }
-
 FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& options)
-    : pattern_(pattern), options_(options), source_(statisticsSource(options.mode)),
-      colormap_(foldInverseTransforms(pattern)) {
+    : pattern_(pattern), options_(options), source_(options.source), colormap_(foldInverseTransforms(pattern)) {
     if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
         throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
                                                  std::to_string(options.aniso));
@@ -74,11 +67,17 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
         throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
                          std::to_string(pattern.exampleSize()));
     sky_ = averageColour(pattern, colormap_);
-    if (options.mode == FilterMode::None) return;  // nothing to prefilter
-    response_ = std::make_unique<PrefilteredColormapResponse>(colormap_, prefilterMode(options.mode));
+    if (source_ == StatisticsSource::Point) return;  // nothing to prefilter
+    response_ = makeResponse(options.response, colormap_);
     // The covariance pyramid only for a shared-offset pair whose response reads it.
     estimator_ = std::make_unique<FootprintEstimator>(
         pattern.tiledField(), pattern.sharedOffsets() && response_->needsCovariance(), options.pack8);
+}
+
+const PrefilteredColormap& FilteredPattern::table() const {
+    const auto* r = dynamic_cast<const PrefilteredColormapResponse*>(response_.get());
+    if (!r) throw std::logic_error("FilteredPattern::table: the response is not a prefiltered colormap");
+    return r->table();
 }
 
 Footprint FilteredPattern::footprint(double u, double v, const Jacobian& j) const {

@@ -2,16 +2,19 @@
 // Filtered evaluation of a pattern: Ŝ = H̄(μ̂, σ̂) (paper eq. 5–6) and the
 // reference S̄ (eq. 3), for any Camera.
 //
-// Modes:
-//   none      — S = H∘N at the pixel centre (aliases when zoomed out);
-//   paper     — footprint estimators + the section-5 prefiltered table;
-//   smooth    — footprint estimators + the smooth prefiltered table;
+// Filtering has two axes (pattern/response.h): where the statistics come
+// from (FilterOptions::source) and the response that turns them into a
+// colour (FilterOptions::response). The named filters of the CLI and the
+// papers are shorthands for pairs:
+//   none      — point: S = H∘N at the pixel centre (aliases when zoomed out);
+//   paper     — estimators + the section-5 prefiltered table;
+//   smooth    — estimators + the smooth prefiltered table;
 //   exact     — brute-force footprint statistics + the smooth table: isolates
 //               the error of the Gaussian approximation (eq. 5) from the
 //               error of the estimators (paper Fig. 4b);
 //   reference — S̄: the average of H∘N over the footprint parallelogram by an
 //               n×n stratified grid, n = clamp(⌈2·extent in texels⌉, 8,
-//               referenceMaxSamples).
+//               referenceMaxSamples) (the response gives only the sky).
 // Filtering runs in the blending space: for a Gaussianized exemplar the
 // inverse histogram transform is folded into the colormap,
 // H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)), before prefiltering.
@@ -28,25 +31,43 @@
 
 namespace stochtex {
 
-// The named filters of the CLI and the papers: each is a statistics source
-// and a response (pattern/response.h).
-enum class FilterMode { None, Paper, Smooth, Exact, Reference };
-StatisticsSource statisticsSource(FilterMode mode);
-// The prefiltered table's mode (None and Reference build no table).
-PrefilterMode prefilterMode(FilterMode mode);
-inline const EnumNames<FilterMode> kFilterModeNames{{"none", FilterMode::None},
-                                                    {"paper", FilterMode::Paper},
-                                                    {"smooth", FilterMode::Smooth},
-                                                    {"exact", FilterMode::Exact},
-                                                    {"reference", FilterMode::Reference}};
+// A named filter: a statistics source and a response.
+struct NamedFilter {
+    StatisticsSource source = StatisticsSource::Estimators;
+    ResponseOptions response;
+    bool operator==(const NamedFilter&) const = default;
+};
+// The one table of filter names (the CLI's --filter, the stability study,
+// the bake manifest); each maps a name to a pair.
+inline const EnumNames<NamedFilter> kFilterNames{
+    {"none", {StatisticsSource::Point, {}}},
+    {"paper", {StatisticsSource::Estimators, {ResponseKind::PrefilteredColormap, PrefilterMode::Paper}}},
+    {"smooth", {StatisticsSource::Estimators, {ResponseKind::PrefilteredColormap, PrefilterMode::Smooth}}},
+    {"exact", {StatisticsSource::Exact, {ResponseKind::PrefilteredColormap, PrefilterMode::Smooth}}},
+    {"reference", {StatisticsSource::Reference, {ResponseKind::PrefilteredColormap, PrefilterMode::Smooth}}}};
 
 struct FilterOptions {
-    FilterMode mode = FilterMode::Smooth;
+    StatisticsSource source = StatisticsSource::Estimators;
+    ResponseOptions response;                        // the smooth prefiltered colormap
     int aniso = 1;                                   // K, 1..16
     VarianceEstimator estimator = VarianceEstimator::Paper;
     int referenceMaxSamples = 64;                    // per axis
     bool pack8 = false;                              // 8-bit pyramids (paper §5)
+
+    // Both axes at once, from a named filter.
+    FilterOptions& use(const NamedFilter& f) {
+        source = f.source;
+        response = f.response;
+        return *this;
+    }
+    NamedFilter filter() const { return {source, response}; }
 };
+
+// Parses a filter name (kFilterNames); InputError naming `filter` otherwise.
+NamedFilter parseFilter(const std::string& name);
+// The name of the options' pair; a pair without one reads "SOURCE/RESPONSE"
+// (e.g. "exact/prefiltered-colormap") so that it is never mistaken for one.
+std::string filterName(const FilterOptions& options);
 
 class FilteredPattern {
 public:
@@ -54,10 +75,12 @@ public:
 
     const FilterOptions& options() const { return options_; }
     StatisticsSource source() const { return source_; }
-    // Not built for FilterMode::None.
+    // Neither is built for the point source.
     const FootprintEstimator& estimator() const { return *estimator_; }
     const Response& response() const { return *response_; }
-    const PrefilteredColormap& table() const { return response_->table(); }
+    // The prefiltered colormap response's table (std::logic_error for
+    // another response kind).
+    const PrefilteredColormap& table() const;
     // H' (T⁻¹ folded in) that the prefiltered table was built from.
     const ColormapTable& blendingSpaceColormap() const { return colormap_; }
 
@@ -76,11 +99,8 @@ private:
     StatisticsSource source_;
     std::unique_ptr<FootprintEstimator> estimator_;
     ColormapTable colormap_;
-    std::unique_ptr<PrefilteredColormapResponse> response_;
+    std::unique_ptr<Response> response_;
     Rgb sky_{};
 };
-
-// Parses "none|paper|smooth|exact|reference"; InputError otherwise.
-FilterMode parseFilterMode(const std::string& name);
 
 }  // namespace stochtex

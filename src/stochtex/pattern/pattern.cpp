@@ -1,6 +1,8 @@
 #include "stochtex/pattern/pattern.h"
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
@@ -26,12 +28,11 @@ Pattern Pattern::build(const PatternSpec& spec) {
 
 Pattern::Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> offsetSeeds, ColormapTable colormap,
                  double gridDensity, OffsetSharing sharing)
-    : colormap_(std::move(colormap)), density_(gridDensity) {
-    for (size_t a = 0; a < 2; ++a) {
-        examples_[a] = std::make_shared<const NoiseExample>(std::move(examples[a]));
-        noises_[a] = TilingBlendingNoise(examples_[a], offsetSeeds[a]);
-    }
-    tiledField_ = TiledField({noises_[0], noises_[1]}, gridDensity, sharing);
+    : colormap_(std::move(colormap)) {
+    std::vector<TilingBlendingNoise> noises;
+    for (size_t a = 0; a < 2; ++a)
+        noises.emplace_back(std::make_shared<const NoiseExample>(std::move(examples[a])), offsetSeeds[a]);
+    field_ = TiledField(std::move(noises), gridDensity, sharing);
 }
 
 Pattern Pattern::withColormap(ColormapTable colormap) const {
@@ -41,9 +42,9 @@ Pattern Pattern::withColormap(ColormapTable colormap) const {
 }
 
 std::array<float, 2> Pattern::field(double u, double v) const {
-    const BlendStencil s = triangleGrid(u, v, density_);
+    const BlendStencil s = triangleGrid(u, v, gridDensity());
     const float fu = periodFraction(u), fv = periodFraction(v);
-    return {examples_[0]->toOutput(noises_[0].blend(s, fu, fv)), examples_[1]->toOutput(noises_[1].blend(s, fu, fv))};
+    return {example(0).toOutput(noise(0).blend(s, fu, fv)), example(1).toOutput(noise(1).blend(s, fu, fv))};
 }
 
 Rgb Pattern::evaluate(double u, double v) const {
@@ -71,19 +72,20 @@ void validateView(const View& view) {
 template <class PixelFn>
 void Pattern::forEachPixel(const View& view, PixelFn&& fn) const {
     const double invW = 1.0 / double(exampleSize());
+    const TilingBlendingNoise &nx = noise(0), &ny = noise(1);
     parallelRows(view.height, [&](int y0, int y1) {
         PixelTiles tiles;
         for (int py = y0; py < y1; ++py) {
             bool valid = false;
             const double v = (view.offsetV + (py + 0.5) * view.scale) * invW;
             const float fv = periodFraction(v);
-            const TriangleGridRow grid(v, density_);
+            const TriangleGridRow grid(v, gridDensity());
             for (int px = 0; px < view.width; ++px) {
                 const double u = (view.offsetU + (px + 0.5) * view.scale) * invW;
                 const BlendStencil s = grid.stencil(u);
                 if (!valid || !sameTiles(s, tiles.stencil)) {
-                    tiles.tiles[0] = noises_[0].tileRows(s, fv);
-                    tiles.tiles[1] = noises_[1].tileRows(s, fv);
+                    tiles.tiles[0] = nx.tileRows(s, fv);
+                    tiles.tiles[1] = ny.tileRows(s, fv);
                     valid = true;
                 }
                 tiles.stencil = s;
@@ -96,9 +98,11 @@ void Pattern::forEachPixel(const View& view, PixelFn&& fn) const {
 Image Pattern::render(const View& view) const {
     validateView(view);
     Image out(view.width, view.height, 3, Image::Uninitialized{});
+    const TilingBlendingNoise &noiseX = noise(0), &noiseY = noise(1);
+    const NoiseExample &exampleX = example(0), &exampleY = example(1);
     forEachPixel(view, [&](int px, int py, const PixelTiles& t, float fu) {
-        const float nx = examples_[0]->toOutput(noises_[0].blend(t.stencil, t.tiles[0], fu));
-        const float ny = examples_[1]->toOutput(noises_[1].blend(t.stencil, t.tiles[1], fu));
+        const float nx = exampleX.toOutput(noiseX.blend(t.stencil, t.tiles[0], fu));
+        const float ny = exampleY.toOutput(noiseY.blend(t.stencil, t.tiles[1], fu));
         const Rgb c = colormap_.sample(nx, ny);
         float* __restrict p = out.row(py) + size_t(px) * 3;
         p[0] = c[0];
@@ -111,10 +115,10 @@ Image Pattern::render(const View& view) const {
 Image Pattern::renderNoise(int axis, const View& view) const {
     validateView(view);
     Image out(view.width, view.height, 1, Image::Uninitialized{});
-    const auto& noise = noises_[size_t(axis)];
-    const auto& example = *examples_[size_t(axis)];
+    const TilingBlendingNoise& channel = noise(axis);
+    const NoiseExample& e = example(axis);
     forEachPixel(view, [&](int px, int py, const PixelTiles& t, float fu) {
-        const float n = example.toOutput(noise.blend(t.stencil, t.tiles[size_t(axis)], fu));
+        const float n = e.toOutput(channel.blend(t.stencil, t.tiles[size_t(axis)], fu));
         out.at(px, py) = std::min(std::max(n, 0.0f), 1.0f);
     });
     return out;

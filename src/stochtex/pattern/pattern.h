@@ -44,14 +44,15 @@ public:
     // N_axis as a gray image (axis 0 = x, 1 = y), same view mapping.
     Image renderNoise(int axis, const View& view) const;
 
-    const NoiseExample& example(int axis) const { return *examples_[size_t(axis)]; }
+    // N as a two-channel tiled field (channel 0 = N_x, 1 = N_y), with its
+    // declared offset sharing: the one place the noises are held.
+    const TiledField& tiledField() const { return field_; }
+    const TilingBlendingNoise& noise(int axis) const { return field_.channel(axis); }
+    const NoiseExample& example(int axis) const { return noise(axis).example(); }
     const ColormapTable& colormap() const { return colormap_; }
-    int exampleSize() const { return examples_[0]->size(); }
-    const std::array<TilingBlendingNoise, 2>& noises() const { return noises_; }
-    // N as a two-channel tiled field, with its declared offset sharing.
-    const TiledField& tiledField() const { return tiledField_; }
-    bool sharedOffsets() const { return tiledField_.shared(); }
-    double gridDensity() const { return density_; }
+    int exampleSize() const { return field_.exampleSize(); }
+    bool sharedOffsets() const { return field_.shared(); }
+    double gridDensity() const { return field_.gridDensity(); }
 
 private:
     struct PixelTiles {
@@ -61,11 +62,8 @@ private:
     template <class PixelFn>
     void forEachPixel(const View& view, PixelFn&& fn) const;
 
-    std::array<std::shared_ptr<const NoiseExample>, 2> examples_;
-    std::array<TilingBlendingNoise, 2> noises_;
-    TiledField tiledField_;
+    TiledField field_;
     ColormapTable colormap_;
-    double density_;
 };
 
 // Checks a view against the output caps; InputError::parameter naming size,

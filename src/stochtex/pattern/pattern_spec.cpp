@@ -39,7 +39,7 @@ SpectrumComponent parseComponent(const JsonReader& r) {
     return c;
 }
 
-Rgb parseColor(const JsonReader& r) {
+Rgb parseColour(const JsonReader& r) {
     if (r.value().is_string()) {
         const std::string s = r.string();
         auto hex = [](char ch) -> int {
@@ -72,18 +72,18 @@ PaintedShape parseShape(const JsonReader& r) {
     const std::string kind = r.at("shape").choice({"rectangle", "disc", "ring", "halfplane", "band", "polygon"});
     PaintedShape s;
     if (kind == "rectangle") {
-        r.expectObject({"shape", "color", "min", "max"});
+        r.expectObject({"shape", "colour", "min", "max"});
         s.kind = PaintedShape::Kind::Rectangle;
         s.a = parsePoint(r.at("min"));
         s.b = parsePoint(r.at("max"));
         if (s.b[0] < s.a[0] || s.b[1] < s.a[1]) r.at("max").fail("max must not be below min");
     } else if (kind == "disc") {
-        r.expectObject({"shape", "color", "center", "radius"});
+        r.expectObject({"shape", "colour", "center", "radius"});
         s.kind = PaintedShape::Kind::Disc;
         s.a = parsePoint(r.at("center"));
         s.radius = r.at("radius").number(0, 10);
     } else if (kind == "ring") {
-        r.expectObject({"shape", "color", "center", "inner", "outer"});
+        r.expectObject({"shape", "colour", "center", "inner", "outer"});
         s.kind = PaintedShape::Kind::Ring;
         s.a = parsePoint(r.at("center"));
         s.innerRadius = r.at("inner").number(0, 10);
@@ -91,22 +91,22 @@ PaintedShape parseShape(const JsonReader& r) {
         if (s.radius < s.innerRadius) r.at("outer").fail("outer radius must be >= inner radius");
     } else if (kind == "halfplane" || kind == "band") {
         if (kind == "halfplane")
-            r.expectObject({"shape", "color", "point", "angle"});
+            r.expectObject({"shape", "colour", "point", "angle"});
         else
-            r.expectObject({"shape", "color", "point", "angle", "width"});
+            r.expectObject({"shape", "colour", "point", "angle", "width"});
         s.kind = kind == "halfplane" ? PaintedShape::Kind::HalfPlane : PaintedShape::Kind::Band;
         s.a = parsePoint(r.at("point"));
         s.setAngle(r.number("angle", 0.0, -360, 360));
         if (kind == "band") s.width = r.at("width").number(0, 10);
     } else {
-        r.expectObject({"shape", "color", "points"});
+        r.expectObject({"shape", "colour", "points"});
         s.kind = PaintedShape::Kind::Polygon;
         const JsonReader pts = r.at("points");
         const size_t n = pts.arraySize();
         if (n < 3) pts.fail("a polygon needs at least 3 points");
         for (size_t i = 0; i < n; ++i) s.points.push_back(parsePoint(pts.at(i)));
     }
-    s.color = parseColor(r.at("color"));
+    s.colour = parseColour(r.at("colour"));
     return s;
 }
 
@@ -182,7 +182,7 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
     } else {
         r.expectObject({"type", "resolution", "background", "shapes"});
         spec.source = ColormapSpec::Source::Painted;
-        spec.painted.background = r.has("background") ? parseColor(r.at("background")) : Rgb{0, 0, 0};
+        spec.painted.background = r.has("background") ? parseColour(r.at("background")) : Rgb{0, 0, 0};
         if (auto shapes = r.find("shapes")) {
             const size_t n = shapes->arraySize();
             for (size_t i = 0; i < n; ++i) spec.painted.shapes.push_back(parseShape(shapes->at(i)));

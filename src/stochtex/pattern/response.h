@@ -8,8 +8,14 @@
 // phasor profiles next). A response says whether it needs the covariance
 // of (N_x, N_y): when it does not, the covariance pyramid is neither built
 // nor fetched, on the CPU or the GPU.
+//
+// A new response kind: a ResponseKind value and its name, a Response class
+// and its case in makeResponse (here), and its GLSL chunk (gpu/programs.cpp,
+// responseChunk), which defines
+// `vec3 footprintResponse(vec2 mean, vec2 var, float cov)`.
 #include <memory>
 
+#include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
@@ -22,6 +28,23 @@ enum class StatisticsSource {
     Estimators,  // μ̂, Σ̂ from the MIP pyramids (paper §4)
     Exact,       // brute-force statistics of the footprint (isolates the Gaussian approximation, Fig. 4b)
     Reference,   // S̄: the point response averaged over the footprint by supersampling (eq. 3)
+};
+inline const EnumNames<StatisticsSource> kStatisticsSourceNames{{"point", StatisticsSource::Point},
+                                                                {"estimators", StatisticsSource::Estimators},
+                                                                {"exact", StatisticsSource::Exact},
+                                                                {"reference", StatisticsSource::Reference}};
+
+// What turns statistics into a colour.
+enum class ResponseKind {
+    PrefilteredColormap,  // H̄(μ, σ_x, σ_y), paper eq. 5–6 (§5)
+};
+inline const EnumNames<ResponseKind> kResponseKindNames{{"prefiltered-colormap", ResponseKind::PrefilteredColormap}};
+
+// A response and its parameters, as a value (FilterOptions holds one).
+struct ResponseOptions {
+    ResponseKind kind = ResponseKind::PrefilteredColormap;
+    PrefilterMode prefilter = PrefilterMode::Smooth;  // PrefilteredColormap: the table's σ levels
+    bool operator==(const ResponseOptions&) const = default;
 };
 
 class Response {
@@ -48,5 +71,9 @@ public:
 private:
     PrefilteredColormap table_;
 };
+
+// The response that `options` names, over the colormap h (blending space):
+// the one place a response kind is built.
+std::unique_ptr<Response> makeResponse(const ResponseOptions& options, const ColormapTable& h);
 
 }  // namespace stochtex

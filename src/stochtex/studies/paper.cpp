@@ -94,7 +94,7 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
     for (int which = 0; which < 2; ++which) {
         if (progress) progress(std::string("table1: ") + kTableNoiseNames[which] + " noise (building the 512² examples)");
         const Pattern p = Pattern::build(table1PatternSpec(which, o.seed));
-        res.rows[size_t(which)] = measureEstimatorErrors(p.noises(), p.gridDensity(), o.errors, [&](int k) {
+        res.rows[size_t(which)] = measureEstimatorErrors(p.tiledField(), o.errors, [&](int k) {
             if (progress) progress("  footprint " + std::to_string(k) + "/" + std::to_string(o.errors.footprints.size()));
         });
         for (const auto& r : res.rows[size_t(which)])
@@ -163,8 +163,6 @@ void validateFigure4(const Figure4Options& o) {
     if (o.size < 16 || o.size > 4096) throw InputError("figure 4: size must be in [16, 4096], got " + std::to_string(o.size));
     if (o.referenceSamples < 1 || o.referenceSamples > 4096)
         throw InputError("figure 4: referenceSamples must be in [1, 4096], got " + std::to_string(o.referenceSamples));
-    if (o.mode != FilterMode::Smooth && o.mode != FilterMode::Paper)
-        throw InputError("figure 4 compares the estimators through a table: filter mode smooth or paper");
     if (o.footprints.empty()) throw InputError("figure 4: no footprints");
     for (int s : o.footprints)
         if (s < 1) throw InputError("figure 4: footprints must be ≥ 1");
@@ -206,11 +204,10 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         c.numbers.footprint = s;
         FilterOptions fo;
         fo.referenceMaxSamples = o.referenceSamples;
-        fo.mode = FilterMode::Reference;
-        c.reference = FilteredPattern(pattern, fo).render(cam);
-        fo.mode = FilterMode::Exact;
-        c.exact = FilteredPattern(pattern, fo).render(cam);
-        fo.mode = o.mode;
+        c.reference = FilteredPattern(pattern, fo.use(parseFilter("reference"))).render(cam);
+        c.exact = FilteredPattern(pattern, fo.use(parseFilter("exact"))).render(cam);
+        fo.source = StatisticsSource::Estimators;
+        fo.response = o.response;
         c.estimated = FilteredPattern(pattern, fo).render(cam);
         c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
         c.errEstimated = errorMap(c.estimated, c.reference, c.numbers.meanErrorEstimated);

@@ -48,7 +48,9 @@ struct Figure4Options {
     int size = 512;                // image side per footprint, [16, 4096]
     int referenceSamples = 64;     // per axis, [1, 4096]
     std::vector<int> footprints{1, 2, 4, 8, 16, 32, 64, 128};
-    FilterMode mode = FilterMode::Smooth;  // smooth or paper: the estimators go through a table
+    // The response of the estimated statistics (the exact ones go through
+    // the smooth table, as in the paper's Fig. 4b).
+    ResponseOptions response;
 };
 void validateFigure4(const Figure4Options& options);
 

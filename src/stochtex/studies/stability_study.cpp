@@ -35,7 +35,7 @@ StabilityStudyResult stabilityStudy(const Pattern& pattern, const StabilityStudy
                           {"difference", "|dI|", ""}};
     for (size_t m = 0; m < o.filters.size(); ++m) {
         const FilteredPattern filtered(pattern, o.filters[m]);
-        const std::string name = enumName(kFilterModeNames, o.filters[m].mode);
+        const std::string name = filterName(o.filters[m]);
         if (progress) progress("stability: " + name + ", " + std::to_string(o.frames) + " frames");
         int k = 0;
         const ZoomStability z = measureZoomStability(

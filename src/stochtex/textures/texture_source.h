@@ -5,8 +5,8 @@
 //
 // Adapters: the stationary zoom texture (instance i = white-noise lattice i,
 // analytic statistics from ZoomStatistics), a Pattern (unfiltered) and a
-// FilteredPattern (any FilterMode, through its Camera). Patterns are static
-// (t is ignored); their instance i ≠ 0 is the same texture seen through a
+// FilteredPattern (any statistics source and response, through its
+// Camera). Patterns are static (t is ignored); their instance i ≠ 0 is the same texture seen through a
 // window moved by a hashed offset of up to 1024 example periods, which for
 // the tiled-and-blended noise (tiles hashed per grid cell) is another draw of
 // the random tile offsets. Instance 0 is the plain render.

@@ -3,7 +3,7 @@
 // the rasterizer's dFdx/dFdy of uv: what an engine has for arbitrary
 // geometry (one-sided differences within each 2×2 quad).
 uniform bool uRasterizerDerivatives;
-layout(location = 0) out vec4 fragColor;
+layout(location = 0) out vec4 fragColour;
 
 void main() {
     bool sky;
@@ -15,5 +15,5 @@ void main() {
         // A quad neighbour past the horizon gives non-finite derivatives.
         sky = sky || any(isinf(jx)) || any(isnan(jx)) || any(isinf(jy)) || any(isnan(jy));
     }
-    fragColor = vec4(sky ? uSky : filteredColour(uv, jx, jy), 1.0);
+    fragColour = vec4(sky ? uSky : filteredColour(uv, jx, jy), 1.0);
 }

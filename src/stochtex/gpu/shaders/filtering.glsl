@@ -3,10 +3,9 @@
 // OpenGL-style anisotropic probes, each probe into two pyramid levels
 // (trilinear), and the texel statistics of eq. 8, 12, 17 are combined by
 // eq. 9, 14–15, 18–19, by the kernel's functions (kernel/footprint.glsl,
-// moments.glsl, sigma_levels.glsl), which filter/ and pattern/ call on the
-// CPU.
+// moments.glsl), which filter/ and pattern/ call on the CPU. A response
+// chunk turns the statistics into the colour (footprintResponse).
 uniform sampler2D uStatsX, uStatsY, uCovariance;  // RG32F mip levels: (E_l, V_l) / (E_l, C_l)
-uniform sampler2DArray uTable;                     // RGBA32F, layer kx·levels + ky
 
 // Tile i's statistics at one level: (E_l, V_l) of each noise and C_l.
 struct TileStats {
@@ -42,14 +41,11 @@ void texelStats(vec2 uv, int level, out vec4 stats, out float cov) {
     }
 }
 
-vec3 tableLayer(int kx, int ky, vec2 mu) { return tableLookup(uTable, kx * uPattern.tableLevels + ky, mu); }
-
-vec3 prefiltered(vec2 mu, vec2 sigma) {
-    LayerBlend b = layerBlend(sigma, uPattern.smoothTable == 0, uPattern.tableLevels);
-    if (b.f.x == 0.0 && b.f.y == 0.0) return tableLayer(b.k0.x, b.k0.y, mu);
-    return layerMix(tableLayer(b.k0.x, b.k0.y, mu), tableLayer(b.k1.x, b.k0.y, mu), tableLayer(b.k0.x, b.k1.y, mu),
-                    tableLayer(b.k1.x, b.k1.y, mu), b.f);
-}
+// The response: the colour of a footprint whose N has these statistics
+// (mean, variances, covariance; pattern/response.h). Declared here and
+// defined by the response chunk the program recipe names (gpu/programs.cpp:
+// response_prefiltered_colormap.glsl, …), assembled after this file.
+vec3 footprintResponse(vec2 mean, vec2 var, float cov);
 
 // Ŝ for the footprint of uv with Jacobian columns jx, jy (uv per pixel).
 // One loop for every footprint, a single texel included (its statistics are
@@ -81,5 +77,5 @@ vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {
         r.var = max(first.zw, vec2(0.0));
         r.cov = firstCov;
     }
-    return prefiltered(r.mean, sqrt(r.var));
+    return footprintResponse(r.mean, r.var, r.cov);
 }

@@ -8,7 +8,7 @@ uniform float uTiling;
 uniform bool uFiltered;
 uniform vec3 uLight;  // direction towards the light, normalised
 uniform vec3 uEye;
-layout(location = 0) out vec4 fragColor;
+layout(location = 0) out vec4 fragColour;
 
 void main() {
     vec2 uv = vUv * uTiling;
@@ -20,5 +20,5 @@ void main() {
     vec3 h = normalize(uLight + v);
     float diffuse = max(dot(n, uLight), 0.0);
     float specular = pow(max(dot(n, h), 0.0), 48.0) * 0.15;
-    fragColor = vec4(albedo * (0.25 + 0.75 * diffuse) + vec3(specular), 1.0);
+    fragColour = vec4(albedo * (0.25 + 0.75 * diffuse) + vec3(specular), 1.0);
 }
