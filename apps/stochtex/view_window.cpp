@@ -14,8 +14,8 @@
 #include <map>
 #include <memory>
 #include <string>
-#include <vector>
 
+#include "stochtex/gpu/render_target.h"
 #include "stochtex/image/image_io.h"
 
 namespace stochtex::cli {
@@ -32,11 +32,9 @@ struct ViewerState {
 
 void onScroll(GLFWwindow* w, double, double dy) {
     auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
-    // Zoom about the cursor: the texel under it stays put. GL rows go up,
-    // window rows down.
-    int fw = 0, fh = 0;
-    glfwGetFramebufferSize(w, &fw, &fh);
-    const double px = s->cursorX, py = fh - s->cursorY;
+    // Zoom about the cursor: the texel under it stays put. The window shows
+    // image rows top down (showTopDown), as its cursor rows go.
+    const double px = s->cursorX, py = s->cursorY;
     View& v = s->camera.view;
     const double factor = std::pow(1.15, -dy);
     const double next = std::clamp(v.scale * factor, 1.0 / 64.0, 4096.0);
@@ -49,7 +47,7 @@ void onCursor(GLFWwindow* w, double x, double y) {
     auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
     if (s->dragging) {
         s->camera.view.offsetU -= (x - s->cursorX) * s->camera.view.scale;
-        s->camera.view.offsetV += (y - s->cursorY) * s->camera.view.scale;
+        s->camera.view.offsetV -= (y - s->cursorY) * s->camera.view.scale;
     }
     s->cursorX = x;
     s->cursorY = y;
@@ -81,15 +79,22 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
     }
 }
 
-// The last frame from the back buffer (before the swap); GL row 0 is the bottom.
-Image readBackBuffer(int w, int h) {
-    std::vector<float> rgb(size_t(w) * size_t(h) * 3);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+// The frame is drawn into `target` as `render` draws it (image row y in GL
+// row y, read back as drawn); a window shows GL row 0 at the bottom, so the
+// copy into the window's back buffer turns it upside down.
+void showTopDown(const RenderTarget& target) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    const int w = target.width(), h = target.height();
+    glBlitFramebuffer(0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// What the window shows: its back buffer before the swap, top row first.
+Image readWindow(int w, int h) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
-    glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, rgb.data());
-    Image shot(w, h, 3, Image::Uninitialized{});
-    for (int y = 0; y < h; ++y) std::copy_n(rgb.data() + size_t(h - 1 - y) * size_t(w) * 3, size_t(w) * 3, shot.row(y));
-    return shot;
+    return readBoundFramebufferRgb(w, h, RenderTarget::Rows::TopDown);
 }
 
 }  // namespace
@@ -106,6 +111,7 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
     glfwSetMouseButtonCallback(window, onButton);
     glfwSetKeyCallback(window, onKey);
     std::map<std::string, std::unique_ptr<GpuPattern>> renderers;  // by filter name, built on first use
+    std::unique_ptr<RenderTarget> target;                          // rebuilt when the window's size changes
     int frame = 0;
     auto last = std::chrono::steady_clock::now();
     double fps = 0;
@@ -119,13 +125,16 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
             FilterOptions o = options.filter;
             r = std::make_unique<GpuPattern>(pattern, *context, o.use(parseFilter(state.filter)));
         }
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, state.camera.view.width, state.camera.view.height);
+        const int w = state.camera.view.width, h = state.camera.view.height;
+        if (!target || target->width() != w || target->height() != h)
+            target = std::make_unique<RenderTarget>(w, h, false);
+        target->bind();
         r->setDerivatives(state.derivatives);
         r->drawView(state.camera);
+        showTopDown(*target);
         ++frame;
         if (!options.screenshot.empty() && (options.frames == 0 || frame == options.frames))
-            writeImage(options.screenshot, readBackBuffer(state.camera.view.width, state.camera.view.height));
+            writeImage(options.screenshot, readWindow(w, h));
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
         last = now;

@@ -2,13 +2,14 @@
 # End-to-end checks of the stochtex CLI: success paths write what they say,
 # bad input exits with code 2, prints one clear message naming the input,
 # and leaves no output (or temporary) file behind.
-# Usage: cli_test.sh CASE STOCHTEX_BINARY SOURCE_DIR
+# Usage: cli_test.sh CASE STOCHTEX_BINARY SOURCE_DIR [IMAGE_COMPARE_BINARY]
 # CASE names one case_* function below; tests/CMakeLists.txt registers each
 # as the ctest test cli.CASE, so a new case_* function is a new test.
 set -u
 name=$1
 bin=$2
 src=$3
+compare=${4:-}  # tests/cli/image_compare.cpp: prints "mean M flipped F" in 8-bit steps
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -157,6 +158,23 @@ case_view() {
   # LeakSanitizer cannot suppress by name: leak checks are off for this run
   # only (sanitizer builds; no effect otherwise).
   expect_ok "view under Xvfb" "$out/view.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
+  # The window shows what `render` writes for the same view, the right way
+  # up: its screenshot (read back from the window's framebuffer) is within
+  # 8-bit rounding of the CPU render (0.5/255 mean: the GPU/CPU parity bound),
+  # and far from the render turned upside down (≥ 10/255 on these patterns;
+  # ~30-60/255 measured).
+  [ -n "$compare" ] || { fail "view: no image comparer given"; return; }
+  local v f
+  for v in zoom plane; do
+    for f in none smooth; do
+      local flags=(--preset camouflage --view "$v" --filter "$f" --aniso 4 --scale 1.5 --tilt 60 --size 96,64)
+      expect_ok "view $v $f" "$out/view_${v}_$f.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view "${flags[@]}" --frames 2 --screenshot "$out/view_${v}_$f.png"
+      expect_ok "render $v $f" "$out/render_${v}_$f.png" -- "$bin" render "${flags[@]}" -o "$out/render_${v}_$f.png"
+      local d
+      d=$("$compare" "$out/view_${v}_$f.png" "$out/render_${v}_$f.png") || { fail "view $v $f: compare failed"; continue; }
+      echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "view $v $f vs render: $d (want mean <= 0.5, flipped >= 10)"
+    done
+  done
 }
 
 case_bake() {
@@ -174,6 +192,8 @@ case_bake_image() {
 
 case_scene() {
   expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
+  # Unfiltered too: its draw used to be refused by GL and the empty frame reported as written.
+  expect_ok "scene torus unfiltered" "$out/scene_none.png" -- "$bin" scene --preset marble --object torus --size 96,64 --filter none -o "$out/scene_none.png"
 }
 
 # --- bad input ---

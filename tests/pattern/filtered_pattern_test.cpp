@@ -187,6 +187,42 @@ TEST(FilteredPattern, FilteredIsCloserToTheReferenceThanUnfilteredWhenZoomedOut)
     EXPECT_LT(smooth, 0.05);
 }
 
+// The plane view's sky is the pattern's average colour in every filter mode
+// (it used to be H at the mean unfiltered, and each table's lookup at the
+// whole example's σ otherwise: 141, 135 and 130/255 in camouflage's red).
+// Expected value from elsewhere: the mean of 65536 unfiltered samples spread
+// over ~160 example periods (0.62 of a period apart, beyond the noises'
+// correlation length), within 3/255 (its sampling error is ~0.5/255; the
+// rest is the blended noise's departure from a Gaussian).
+TEST(FilteredPattern, SkyIsThePatternsAverageColourInEveryMode) {
+    for (const char* name : {"camouflage", "marble", "weld"}) {
+        const Pattern p = Pattern::build(loadPreset(name));
+        View spread;
+        spread.width = spread.height = 256;
+        spread.scale = 0.618 * p.exampleSize();
+        const Image samples = p.render(spread);
+        Rgb average{0, 0, 0};
+        for (size_t i = 0; i < samples.pixelCount(); ++i)
+            for (size_t c = 0; c < 3; ++c) average[c] += samples.data()[3 * i + c] / float(samples.pixelCount());
+        Camera plane;
+        plane.kind = Camera::Kind::Plane;
+        plane.tiltDeg = 80;
+        plane.view.width = plane.view.height = 16;
+        const Rgb sky = FilteredPattern(p, options("none")).skyColour();
+        for (const std::string mode : {"none", "paper", "smooth", "exact", "reference"}) {
+            const std::string what = std::string(name) + ", " + mode;
+            const FilteredPattern f(p, options(mode));
+            for (size_t c = 0; c < 3; ++c) {
+                EXPECT_EQ(f.skyColour()[c], sky[c]) << what << " channel " << c;
+                EXPECT_NEAR(f.skyColour()[c], average[c], 3.0 / 255.0) << what << " channel " << c;
+            }
+            if (mode == "exact" || mode == "reference") continue;  // slow; same shade() path
+            const Image img = f.render(plane);  // the top rows look above the horizon at tilt 80°
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(img.at(0, 0, c), sky[size_t(c)]) << what << " pixel (0, 0)";
+        }
+    }
+}
+
 TEST(FilteredPattern, BadInputIsRejected) {
     const Pattern p = Pattern::build(loadPreset("gaussian"));
     EXPECT_THROW(FilteredPattern(p, options("smooth", 0)), InputError);

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "stochtex/core/error.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/pattern.h"
@@ -152,6 +155,39 @@ TEST(Presets, RequiredPresetsExistAndBuild) {
         const Pattern p = Pattern::build(s);
         EXPECT_EQ(p.exampleSize(), 256) << n;
     }
+}
+
+// A painted preset shows every colour it paints: a shape painted over by
+// later shapes (bordered-blots' red and green edging once were) is a layout
+// that does not match its description. Each shape's colour must own at least
+// 1% of the colormap's entries (within 2/255 per channel: the table averages
+// 4×4 samples per entry, so only edges mix); a 0.04-wide edging along two
+// borders of a sector covers ~4%.
+TEST(Presets, PaintedPresetsShowEveryColourTheyPaint) {
+    const int resolution = 256;
+    int painted = 0;
+    for (const auto& name : presetNames()) {
+        const PatternSpec spec = loadPreset(name);
+        if (spec.colormap.source != ColormapSpec::Source::Painted) continue;
+        ++painted;
+        const PaintedColormap& layout = spec.colormap.painted;
+        const ColormapTable table = layout.rasterize(resolution);
+        for (size_t k = 0; k < layout.shapes.size(); ++k) {
+            const Rgb want = layout.shapes[k].colour;
+            int near = 0;
+            for (int j = 0; j < resolution; ++j)
+                for (int i = 0; i < resolution; ++i) {
+                    const Rgb got = table.entry(i, j);
+                    float d = 0;
+                    for (size_t c = 0; c < 3; ++c) d = std::max(d, std::abs(got[c] - want[c]));
+                    if (d <= 2.0f / 255.0f) ++near;
+                }
+            EXPECT_GE(near, resolution * resolution / 100)
+                << name << ": shape " << k << "'s colour (" << want[0] * 255 << ", " << want[1] * 255 << ", "
+                << want[2] * 255 << ") covers " << near << " of " << resolution * resolution << " entries";
+        }
+    }
+    EXPECT_GE(painted, 8);  // weld, camouflage, marble, bordered-blots and Figure 7's four at least
 }
 
 TEST(Presets, UnknownPresetListsTheKnownOnes) {

@@ -313,6 +313,40 @@ TEST(Studies, Figures7to9AreThreeSheets) {
     EXPECT_THROW(figures7to9(16), InputError);
 }
 
+// Figures 7 and 8 show the effect of the colormap alone: the four panels
+// have one pair of noises (panel a's: the same example objects, tile-offset
+// seeds and grid, so N_x and N_y render bit-identically) and four different
+// colormaps. Figure 9 compares noises, so its panels' N_x differ.
+TEST(Studies, Figures7And8ShareOnePairOfNoises) {
+    View view;
+    view.width = view.height = 48;
+    view.scale = 3.0;
+    for (const int figure : {7, 8}) {
+        const std::vector<PaperFigurePanel> panels = paperFigurePanels(figure);
+        ASSERT_EQ(panels.size(), 4u);
+        const Pattern& a = panels[0].pattern;
+        for (size_t i = 1; i < panels.size(); ++i) {
+            const Pattern& p = panels[i].pattern;
+            const std::string what = "figure " + std::to_string(figure) + " panel " + panels[i].preset;
+            for (int axis = 0; axis < 2; ++axis) {
+                EXPECT_EQ(&p.example(axis), &a.example(axis)) << what << ": one example, not a rebuilt one";
+                EXPECT_EQ(p.noise(axis).offsetSeed(), a.noise(axis).offsetSeed()) << what;
+                EXPECT_EQ(p.renderNoise(axis, view).data(), a.renderNoise(axis, view).data())
+                    << what << " axis " << axis;
+            }
+            EXPECT_EQ(p.gridDensity(), a.gridDensity()) << what;
+            EXPECT_NE(p.colormap().table().data(), a.colormap().table().data()) << what << ": its own colormap";
+            EXPECT_EQ(p.colormap().table().data(), buildColormap(loadPreset(panels[i].preset).colormap).table().data())
+                << what << ": the preset's colormap";
+        }
+    }
+    const std::vector<PaperFigurePanel> spectra = paperFigurePanels(9);
+    for (size_t i = 1; i < spectra.size(); ++i)
+        EXPECT_NE(spectra[i].pattern.renderNoise(0, view).data(), spectra[0].pattern.renderNoise(0, view).data())
+            << "figure 9 panel " << spectra[i].preset;
+    EXPECT_EQ(test::inputErrorOf([] { paperFigurePanels(6); }).parameter(), "figure");
+}
+
 // The study measures the frames it hands out: re-measuring the sink's frames
 // gives the per-frame table, and the summary is their mean and maximum.
 TEST(StabilityStudy, TablesMatchTheFramesItRenders) {

@@ -170,12 +170,15 @@ void GpuPattern::bind(unsigned program) const {
     const gl::Texture* textures[] = {&m.examples[0], &m.examples[1], &m.inverses[0], &m.inverses[1]};
     for (int k = 0; k < 4; ++k) bindTexture(k, GL_TEXTURE_2D, textures[k]->id(), samplers[k]);
     bindTexture(4, GL_TEXTURE_2D_ARRAY, m.colormap.id(), "uColormap");
-    if (m.options.source == StatisticsSource::Estimators) {
-        bindTexture(5, GL_TEXTURE_2D, m.stats[0].id(), "uStatsX");
-        bindTexture(6, GL_TEXTURE_2D, m.stats[1].id(), "uStatsY");
-        bindTexture(7, GL_TEXTURE_2D, m.shared ? m.covariance.id() : m.stats[0].id(), "uCovariance");
-        bindTexture(8, GL_TEXTURE_2D_ARRAY, m.table.id(), "uTable");
-    }
+    // Every sampler gets its own unit even when unfiltered: a program that
+    // declares both (the scene's) would otherwise leave uTable, an array
+    // sampler, on unit 0 with the 2D uExampleX, and GL refuses to draw
+    // (GL_INVALID_OPERATION) when samplers of two types share a unit.
+    const bool estimated = filtered();
+    bindTexture(5, GL_TEXTURE_2D, estimated ? m.stats[0].id() : 0, "uStatsX");
+    bindTexture(6, GL_TEXTURE_2D, estimated ? m.stats[1].id() : 0, "uStatsY");
+    bindTexture(7, GL_TEXTURE_2D, !estimated ? 0 : m.shared ? m.covariance.id() : m.stats[0].id(), "uCovariance");
+    bindTexture(8, GL_TEXTURE_2D_ARRAY, estimated ? m.table.id() : 0, "uTable");
     // GLSL 3.30 / ES 3.00 cannot fix a block's binding point in the source.
     const GLuint block = glGetUniformBlockIndex(program, kPatternBlockName);
     if (block != GL_INVALID_INDEX) glUniformBlockBinding(program, block, kPatternBlockBinding);

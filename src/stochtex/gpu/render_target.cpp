@@ -30,14 +30,19 @@ void RenderTarget::bind() const {
 
 Image RenderTarget::readRgb(Rows rows) const {
     bind();
-    std::vector<float> rgba(size_t(width_) * size_t(height_) * 4);
+    return readBoundFramebufferRgb(width_, height_, rows);
+}
+
+Image readBoundFramebufferRgb(int width, int height, RenderTarget::Rows rows) {
+    std::vector<float> rgba(size_t(width) * size_t(height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
-    Image out(width_, height_, 3, Image::Uninitialized{});
-    for (int y = 0; y < height_; ++y) {
-        const float* src = rgba.data() + size_t(rows == Rows::TopDown ? height_ - 1 - y : y) * size_t(width_) * 4;
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+    Image out(width, height, 3, Image::Uninitialized{});
+    for (int y = 0; y < height; ++y) {
+        const int row = rows == RenderTarget::Rows::TopDown ? height - 1 - y : y;
+        const float* src = rgba.data() + size_t(row) * size_t(width) * 4;
         float* dst = out.row(y);
-        for (int x = 0; x < width_; ++x)
+        for (int x = 0; x < width; ++x)
             for (int c = 0; c < 3; ++c) dst[3 * x + c] = src[4 * x + c];
     }
     return out;

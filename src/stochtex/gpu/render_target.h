@@ -15,6 +15,7 @@ public:
     // Binds the framebuffer and sets the viewport to the whole target.
     void bind() const;
     GLuint texture() const { return colour_.id(); }
+    GLuint framebuffer() const { return framebuffer_.id(); }
     int width() const { return width_; }
     int height() const { return height_; }
 
@@ -29,5 +30,9 @@ private:
     gl::Renderbuffer depth_;
     gl::Framebuffer framebuffer_;
 };
+
+// The RGB channels of the framebuffer bound for reading (a target after
+// bind(), or a window's back buffer), width × height from GL's (0, 0).
+Image readBoundFramebufferRgb(int width, int height, RenderTarget::Rows rows);
 
 }  // namespace stochtex

@@ -1,6 +1,8 @@
 #include "stochtex/gpu/scene_render.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/programs.h"
@@ -15,6 +17,7 @@ Image renderScene(const GpuPattern& pattern, const Mesh& mesh, const SceneCamera
                                                 std::to_string(height));
     if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
         throw InputError::parameter("tiling", "must be a finite number in (0, 1e4], got " + formatValue(tiling));
+    for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}  // earlier callers' errors are not ours
     const gl::Program program = buildProgram("scene", pattern.responseKind());
     const gl::VertexArray vao = gl::newVertexArray();
     glBindVertexArray(vao.id());
@@ -50,6 +53,10 @@ Image renderScene(const GpuPattern& pattern, const Mesh& mesh, const SceneCamera
         glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, nullptr);
         glDisable(GL_DEPTH_TEST);
     }
+    // A draw GL refuses leaves only the clear colour: fail rather than
+    // return an empty picture as a success.
+    if (const GLenum e = glGetError(); e != GL_NO_ERROR)
+        throw std::runtime_error("renderScene: OpenGL error " + std::to_string(e) + " while drawing the scene");
     // GL's row 0 is the bottom of the picture: flip for an image file.
     Image out = target.readRgb(RenderTarget::Rows::TopDown);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -25,6 +25,26 @@ ColormapTable foldInverseTransforms(const Pattern& p) {
     return ColormapTable(t);
 }
 
+// The sky is the pattern's average colour E[H(N)], one colour whatever the
+// filter mode: H' convolved exactly (eq. 5, by numerical integration) with
+// the Gaussian of the whole example's statistics, in blending space (the
+// tiling-and-blending keeps the example's mean and variance), which is
+// where every filtered mode's ground converges far away. Neither H at the
+// mean (the unfiltered pixel's colour) nor a table's lookup (paper mode's
+// stops at σ = 0.125) would be the same colour in every mode.
+Rgb averageColour(const Pattern& p, const ColormapTable& blendingSpaceColormap) {
+    double mean[2], sigma[2];
+    for (int a = 0; a < 2; ++a) {
+        const auto& v = p.example(a).values().data();
+        double sum = 0, sum2 = 0;
+        for (const float x : v) sum += x;
+        mean[a] = sum / double(v.size());
+        for (const float x : v) sum2 += (x - mean[a]) * (x - mean[a]);
+        sigma[a] = std::sqrt(sum2 / double(v.size()));
+    }
+    return convolveColormapNumerically(blendingSpaceColormap, mean[0], mean[1], sigma[0], sigma[1]);
+}
+
 }  // namespace
 
 NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames, name, "filter"); }
@@ -46,19 +66,12 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
     if (!isPowerOfTwo(pattern.exampleSize()))
         throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
                          std::to_string(pattern.exampleSize()));
-    if (source_ == StatisticsSource::Point) {
-        // Nothing to prefilter: the sky shows H at the examples' means.
-        sky_ = pattern.colormap().sample(pattern.example(0).toOutput(pattern.example(0).mean()),
-                                         pattern.example(1).toOutput(pattern.example(1).mean()));
-        return;
-    }
+    sky_ = averageColour(pattern, colormap_);
+    if (source_ == StatisticsSource::Point) return;  // nothing to prefilter
     response_ = makeResponse(options.response, colormap_);
     // The covariance pyramid only for a shared-offset pair whose response reads it.
     estimator_ = std::make_unique<FootprintEstimator>(
         pattern.tiledField(), pattern.sharedOffsets() && response_->needsCovariance(), options.pack8);
-    // Sky: the whole example in one footprint (top MIP level).
-    const auto top = estimator_->texel(0.0, 0.0, estimator_->maxLod(), options_.estimator);
-    sky_ = response_->filtered(FootprintEstimator::asFootprint(top));
 }
 
 const PrefilteredColormap& FilteredPattern::table() const {

@@ -84,7 +84,8 @@ public:
     // H' (T⁻¹ folded in) that the prefiltered table was built from.
     const ColormapTable& blendingSpaceColormap() const { return colormap_; }
 
-    // The colour of sky pixels (plane camera).
+    // The colour of sky pixels (plane camera): the pattern's average colour,
+    // the same in every mode.
     const Rgb& skyColour() const { return sky_; }
     // Filtered colour of one footprint (sky = false gives the average colour).
     Rgb shade(bool onPlane, double u, double v, const Jacobian& j) const;

@@ -280,24 +280,62 @@ namespace {
 
 // Figures 7–9: each a sheet of four presets.
 struct PaperFigure {
+    int number;
     const char* file;
     const char* title;
+    bool sameNoises;  // the panels differ only in H (panel a's noises throughout)
     std::array<const char*, 4> presets, captions;
 };
 const PaperFigure kFigures[3] = {
-    {"figure7.png", "Figure 7: colormap layouts (same noises)",
+    {7,
+     "figure7.png",
+     "Figure 7: colormap layouts (same noises)",
+     true,
      {"borders", "concentric", "bands", "oblique-blots"},
      {"(a) colours on the borders", "(b) concentric regions", "(c) 1D horizontal bands", "(d) oblique boundaries"}},
-    {"figure8.png", "Figure 8: palettes (similar layouts)",
+    {8,
+     "figure8.png",
+     "Figure 8: palettes (same noises)",
+     true,
      {"weld", "camouflage", "marble", "bordered-blots"},
      {"(a) three weld colours", "(b) camouflage", "(c) marble strands", "(d) bordered blots"}},
-    {"figure9.png", "Figure 9: noise spectra",
+    {9,
+     "figure9.png",
+     "Figure 9: noise spectra",
+     false,
      {"weld", "low-high", "iso-aniso", "woven"},
      {"(a) two low-frequency isotropic", "(b) low + high frequency", "(c) isotropic + anisotropic",
       "(d) two orientations"}},
 };
 
 }  // namespace
+
+std::vector<PaperFigurePanel> paperFigurePanels(int figure) {
+    const PaperFigure* f = nullptr;
+    for (const auto& k : kFigures)
+        if (k.number == figure) f = &k;
+    if (!f) throw InputError::parameter("figure", "must be 7, 8 or 9, got " + std::to_string(figure));
+    std::vector<PaperFigurePanel> panels;
+    panels.reserve(4);
+    for (size_t i = 0; i < 4; ++i) {
+        PatternSpec spec = loadPreset(f->presets[i]);
+        if (f->sameNoises && i > 0) {
+            // Panel a's spec with this preset's colormap, and panel a's noises
+            // themselves (not rebuilt), so only H differs.
+            const PaperFigurePanel& a = panels.front();
+            ColormapSpec colormap = std::move(spec.colormap);
+            spec = a.spec;
+            spec.name = f->presets[i];
+            spec.colormap = std::move(colormap);
+            Pattern pattern = a.pattern.withColormap(buildColormap(spec.colormap));
+            panels.push_back({f->presets[i], f->captions[i], std::move(spec), std::move(pattern)});
+        } else {
+            Pattern pattern = Pattern::build(spec);
+            panels.push_back({f->presets[i], f->captions[i], std::move(spec), std::move(pattern)});
+        }
+    }
+    return panels;
+}
 
 void validateFigures7to9(int size) {
     if (size < 64 || size > 2048) throw InputError("figures 7-9: size must be in [64, 2048], got " + std::to_string(size));
@@ -310,11 +348,11 @@ std::vector<Figure> figures7to9(int size, const StudyProgress& progress) {
         if (progress) progress(f.title);
         std::vector<std::vector<Image>> rows(2);
         std::vector<std::vector<std::string>> captions(2);
-        for (size_t i = 0; i < 4; ++i) {
-            const PatternSpec spec = loadPreset(f.presets[i]);
-            const PatternSheet ps = patternSheet(Pattern::build(spec), spec.scale, size, f.presets[i]);
-            rows[i / 2].push_back(ps.sheet);
-            captions[i / 2].push_back(f.captions[i]);
+        const std::vector<PaperFigurePanel> panels = paperFigurePanels(f.number);
+        for (size_t i = 0; i < panels.size(); ++i) {
+            const PaperFigurePanel& p = panels[i];
+            rows[i / 2].push_back(patternSheet(p.pattern, p.spec.scale, size, p.preset).sheet);
+            captions[i / 2].push_back(p.caption);
         }
         out.push_back({f.file, sheet(rows, captions), f.title});
     }

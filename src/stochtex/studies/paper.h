@@ -10,6 +10,7 @@
 
 #include "stochtex/analysis/estimator_error.h"
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
@@ -65,7 +66,17 @@ struct Figure4Result {
 Figure4Result figure4(const Figure4Options& options, const StudyProgress& progress = {});
 
 // Figures 7–9: each a sheet of four presets (pattern, colormap, where N
-// falls, the two noises), `size` pixels per pattern, [64, 2048].
+// falls, the two noises), `size` pixels per pattern, [64, 2048]. Figures 7
+// and 8 compare colormaps, so their four panels share one pair of noises
+// (those of the first preset, panel a) under each preset's colormap; Figure
+// 9 compares noises, so each panel is its preset as it is.
+struct PaperFigurePanel {
+    std::string preset, caption;
+    PatternSpec spec;  // what the panel shows (for 7 and 8: panel a's noises, this preset's colormap)
+    Pattern pattern;
+};
+// figure: 7, 8 or 9 (InputError otherwise).
+std::vector<PaperFigurePanel> paperFigurePanels(int figure);
 void validateFigures7to9(int size);
 std::vector<Figure> figures7to9(int size, const StudyProgress& progress = {});
 
