@@ -43,10 +43,12 @@ for t in "${targets[@]}"; do
   mkdir -p "$build/corpus/$t" "$build/findings/$t"
   IFS=';' read -r -a seeds <"$build/fuzz/$t.corpus"
   log=$build/findings/$t.log
+  dict=()
+  [ "$t" != image ] && dict=(-dict=tests/fuzz/json.dict)
   # -max_len: a pattern file is a few kB; longer inputs only slow the search.
   # shellcheck disable=SC2086
   "$binary" -max_total_time="$seconds" -seed="${FUZZ_SEED:-1}" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
-    -print_final_stats=1 -artifact_prefix="$build/findings/$t/" ${FUZZ_FLAGS:-} \
+    -print_final_stats=1 -artifact_prefix="$build/findings/$t/" "${dict[@]}" ${FUZZ_FLAGS:-} \
     "$build/corpus/$t" "${seeds[@]}" >"$log" 2>&1
   rc=$?
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
