@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 BUILD_TYPE ?= Release
 JOBS ?= $(shell nproc)
 
-.PHONY: all deps build demo test golden-update bench clean
+.PHONY: all deps build demo test fuzz golden-update bench clean
 
 all: build
 
@@ -21,6 +21,13 @@ demo: build
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
+# Builds the libFuzzer targets (clang) in build-fuzz and runs each for SECONDS
+# (docs/TESTING.md). `make test` only replays their stored inputs.
+SECONDS ?= 60
+fuzz:
+	@bash scripts/install-deps.sh --fuzz
+	bash scripts/fuzz.sh $(SECONDS)
+
 # Rewrites tests/golden/*.png after an intended change of the pixels (docs/TESTING.md).
 golden-update: build
 	cmake --build $(BUILD_DIR) --target golden-update
@@ -29,4 +36,4 @@ bench: build
 	$(BUILD_DIR)/bin/stochtex_bench
 
 clean:
-	rm -rf $(BUILD_DIR) out
+	rm -rf $(BUILD_DIR) build-fuzz out

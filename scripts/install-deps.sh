@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages stochtex needs, only those that are missing.
 # Run as root (or with sudo available). Never downloads anything but Debian packages.
+#   scripts/install-deps.sh           what the build and the tests need
+#   scripts/install-deps.sh --fuzz    also clang and libFuzzer, for `make fuzz`
 set -euo pipefail
 
 packages=(
@@ -11,6 +13,9 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri glslang-tools
   libglfw3-dev xvfb xauth libpng-dev
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
