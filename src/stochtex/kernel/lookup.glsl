@@ -50,17 +50,16 @@ inline vec4 blendColumnsFirst(vec4 t00, vec4 t10, vec4 t01, vec4 t11, vec2 f) {
     return left + f.x * (right - left);
 }
 
-// A table of n ≥ 2 entries with entry i at x = i/(n − 1), clamp-to-edge (NaN
-// reads entry 0):
-// the left entry of the lookup at x and the right one's weight.
+// A table of n ≥ 2 entries with entry i at x = i/(n − 1), clamp-to-edge: the
+// left entry of the lookup at x and the right one's weight.
 struct TableTap {
     int i;
     float t;
 };
 
 inline TableTap tableTap(float x, int n) {
-    // Written so that NaN reads entry 0: clamp(NaN, 0, 1) may be NaN, and
-    // int(NaN) an index anywhere (hostile exemplars, tests/pattern/).
+    // NaN reads entry 0: clamp(NaN, 0, 1) may be NaN, and int(NaN) an index
+    // anywhere (hostile exemplars, tests/pattern/).
     float fx = (x > 0.0f ? min(x, 1.0f) : 0.0f) * float(n - 1);
     TableTap tap;
     tap.i = min(int(fx), n - 2);
