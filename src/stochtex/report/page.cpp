@@ -1,8 +1,13 @@
 #include "stochtex/report/page.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "stochtex/core/embedded_file.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/report/table.h"
@@ -23,14 +28,88 @@ void writeText(const std::string& dir, const std::string& file, const std::strin
     writeFileAtomic((std::filesystem::path(dir) / file).string(), text);
 }
 
+extern const EmbeddedFile kEmbeddedChartJs[];
+extern const std::size_t kEmbeddedChartJsCount;
+
+namespace {
+
+constexpr const char* kChartClass = "stochtex-chart";
+
+std::string cssColour(const std::array<float, 3>& c) {
+    auto byte = [](float v) { return std::to_string(std::lround(255.0 * std::clamp(v, 0.0f, 1.0f))); };
+    return "rgb(" + byte(c[0]) + "," + byte(c[1]) + "," + byte(c[2]) + ")";
+}
+
+nlohmann::ordered_json axis(const std::string& title, bool log, double lo, double hi) {
+    nlohmann::ordered_json a;
+    a["type"] = log ? "logarithmic" : "linear";
+    a["title"] = {{"display", !title.empty()}, {"text", title}};
+    if (std::isfinite(lo)) a["min"] = lo;
+    if (std::isfinite(hi)) a["max"] = hi;
+    return a;
+}
+
+// The Chart.js configuration of a line plot: the PNG's series, colours, dash
+// patterns and markers (by series index, as linePlot draws them) and labels.
+std::string chartConfig(const LineChart& c) {
+    static const char* markers[6] = {"circle", "rect", "triangle", "rectRot", "triangle", "circle"};
+    static const std::vector<int> dashes[4] = {{}, {6, 4}, {12, 6}, {12, 3, 3, 3}};
+    const LinePlotOptions& o = c.options;
+    const std::vector<std::string> labels = seriesLabels(c.series);
+    nlohmann::ordered_json datasets = nlohmann::ordered_json::array();
+    for (size_t i = 0; i < c.series.size(); ++i) {
+        const PlotSeries& s = c.series[i];
+        nlohmann::ordered_json points = nlohmann::ordered_json::array();
+        for (size_t k = 0; k < std::min(s.x.size(), s.y.size()); ++k) {
+            if (!std::isfinite(s.x[k]) || !std::isfinite(s.y[k])) continue;  // JSON has no NaN
+            if ((o.logX && !(s.x[k] > 0)) || (o.logY && !(s.y[k] > 0))) continue;
+            points.push_back({{"x", s.x[k]}, {"y", s.y[k]}});
+        }
+        const bool marked = points.size() <= 16;
+        nlohmann::ordered_json d;
+        d["label"] = labels[i];
+        d["data"] = std::move(points);
+        d["showLine"] = true;
+        d["borderColor"] = d["backgroundColor"] = cssColour(s.colour);
+        d["borderWidth"] = 2;
+        if (s.bars) d["stepped"] = "middle";
+        else d["borderDash"] = dashes[i % 4];
+        d["pointStyle"] = markers[i % 6];
+        d["pointRadius"] = marked ? 4 : 0;
+        d["pointBackgroundColor"] = i == 0 ? cssColour(s.colour) : "rgba(0,0,0,0)";
+        datasets.push_back(std::move(d));
+    }
+    nlohmann::ordered_json cfg;
+    cfg["type"] = "scatter";
+    cfg["data"]["datasets"] = std::move(datasets);
+    auto& opt = cfg["options"];
+    opt["animation"] = false;
+    opt["plugins"]["title"] = {{"display", !o.title.empty()}, {"text", o.title}};
+    opt["plugins"]["legend"] = {{"position", "right"}};
+    opt["scales"]["x"] = axis(o.xLabel, o.logX, o.xMin, o.xMax);
+    opt["scales"]["y"] = axis(o.yLabel, o.logY, o.yMin, o.yMax);
+    std::string json = cfg.dump();
+    // Inside <script>, "</" would end the element early.
+    for (size_t p = 0; (p = json.find("</", p)) != std::string::npos; p += 3) json.replace(p, 2, "<\\/");
+    return json;
+}
+
+}  // namespace
+
 std::string htmlFigures(const std::string& prefix, const std::vector<Figure>& figures, size_t limit) {
     std::ostringstream h;
     size_t shown = 0;
     for (const auto& f : figures) {
         if (f.caption.empty()) continue;
         if (shown++ == limit) break;
-        h << "<figure><a href='" << prefix << f.file << "'><img src='" << prefix << f.file << "'></a><figcaption>"
-          << htmlEscape(f.caption) << "</figcaption></figure>\n";
+        if (f.chart) {
+            h << "<figure class='chart'><canvas></canvas><script type='application/json' class='" << kChartClass
+              << "'>" << chartConfig(*f.chart) << "</script><figcaption>" << htmlEscape(f.caption) << " (<a href='"
+              << prefix << f.file << "'>PNG</a>)</figcaption></figure>\n";
+        } else {
+            h << "<figure><a href='" << prefix << f.file << "'><img src='" << prefix << f.file
+              << "'></a><figcaption>" << htmlEscape(f.caption) << "</figcaption></figure>\n";
+        }
     }
     return h.str();
 }
@@ -44,8 +123,17 @@ std::string htmlPage(const std::string& title, const std::string& body, int maxW
          "img{max-width:100%}figcaption{max-width:"
       << captionWidthPx
       << "px;font-size:90%}table{border-collapse:collapse;margin:.5em 0 1.5em}"
-         "td,th{border:1px solid #bbb;padding:.25em .6em;text-align:right}</style></head><body>"
-      << body << "</body></html>\n";
+         "td,th{border:1px solid #bbb;padding:.25em .6em;text-align:right}"
+         "figure.chart{width:"
+      << captionWidthPx << "px}</style></head><body>" << body;
+    if (body.find(kChartClass) != std::string::npos) {
+        if (kEmbeddedChartJsCount != 1) throw std::logic_error("htmlPage: Chart.js is not embedded");
+        h << "<script>" << kEmbeddedChartJs[0].contents
+          << "</script><script>document.querySelectorAll('script." << kChartClass
+          << "').forEach(function(s){new Chart(s.parentNode.querySelector('canvas'),JSON.parse(s.textContent));});"
+             "</script>";
+    }
+    h << "</body></html>\n";
     return h.str();
 }
 

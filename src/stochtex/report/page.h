@@ -2,19 +2,24 @@
 // The report pages (`analyze`, `reproduce all`) and the files of a study:
 // figures with captions, the HTML page frame, output folders.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "stochtex/analysis/plot.h"
 #include "stochtex/image/image.h"
 
 namespace stochtex {
 
 // One image a study made: its file name in the study's folder and what it
 // shows (an empty caption: written, but not shown on report pages).
+// A line plot also carries its data (chart): report pages then draw it as an
+// interactive chart, with the PNG one click away.
 struct Figure {
     std::string file;
     Image image;
     std::string caption;
+    std::optional<LineChart> chart = std::nullopt;
 };
 
 // Creates dir (and parents); InputError naming it if that fails.
@@ -27,11 +32,15 @@ void writeFigures(const std::string& dir, const std::vector<Figure>& figures);
 void writeText(const std::string& dir, const std::string& file, const std::string& text);
 
 // <figure> elements linking to prefix + file for the captioned figures,
-// at most `limit` of them.
+// at most `limit` of them; a figure with a chart is a Chart.js canvas whose
+// configuration is inlined as JSON (htmlPage adds the library).
 std::string htmlFigures(const std::string& prefix, const std::vector<Figure>& figures, size_t limit = SIZE_MAX);
 
 // A whole page: <head> with the report style (content at most maxWidthPx
-// wide, figure captions at most captionWidthPx), then body (HTML) unchanged.
+// wide, figure captions at most captionWidthPx), then body (HTML) unchanged;
+// when the body has charts, Chart.js (Debian's libjs-chart.js, embedded at
+// build time) and the few lines that start them are inlined, so the page
+// stays self-contained and the same bytes on every run.
 std::string htmlPage(const std::string& title, const std::string& body, int maxWidthPx = 1200,
                      int captionWidthPx = 560);
 

@@ -147,14 +147,15 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
                 }
             series.push_back(pub);
             LinePlotOptions lo;
-            lo.title = std::string(kTableNoiseNames[which]) + ": mean |" + (moment == 0 ? "mu" : "sigma") + " error|";
+            lo.title = std::string(kTableNoiseNames[which]) + ": mean |" + (moment == 0 ? "μ̂" : "σ̂") + " error|";
             lo.xLabel = "footprint side (texels)";
             lo.yLabel = "mean absolute error";
             lo.logX = lo.logY = true;
             const std::string file = std::string("table1_") + (which == 0 ? "low" : "high") + "_" +
                                      (moment == 0 ? "mu" : "sigma") + ".png";
-            res.figures.push_back(
-                {file, linePlot(series, lo), lo.title + " vs footprint size (log-log), ours and the published Table 1"});
+            res.figures.push_back({file, linePlot(series, lo),
+                                   lo.title + " vs footprint size (log-log), ours and the published Table 1",
+                                   LineChart{series, lo}});
         }
     return res;
 }
@@ -230,7 +231,6 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     std::vector<std::vector<Image>> rows(5);
     std::vector<std::vector<std::string>> captions(5);
     std::vector<Figure> images;
-    // Sheet captions are drawn with ASCII-only fonts.
     const char* rowNames[5] = {"reference", "exact stats", "error, exact", "estimators", "error, estim."};
     const char* rowFiles[5] = {"_reference.png", "_exact.png", "_error_exact.png", "_estimated.png",
                                "_error_estimated.png"};
@@ -246,12 +246,12 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
             const bool isError = r == 2 || r == 4;
             Image img = isError ? colourise(*shown[r], 0.0, vmax, HeatPalette::Viridis) : *shown[r];
             rows[size_t(r)].push_back(resizeSmooth(img, thumb, thumb));
-            captions[size_t(r)].push_back(std::string(rowNames[r]) + " " + std::to_string(s) + "x" + std::to_string(s));
+            captions[size_t(r)].push_back(std::string(rowNames[r]) + " " + std::to_string(s) + "²");
             images.push_back({tag + rowFiles[r], std::move(img), ""});
         }
     }
     rows.push_back({colourLegend(0.0, vmax, HeatPalette::Viridis,
-                                 "error ||S^ - S-||_2 (RGB), one scale for every error map")});
+                                 "error ‖Ŝ − S̄‖₂ (RGB), one scale for every error map")});
     captions.push_back({""});
 
     PlotSeries a{"exact statistics (eq. 5)", {}, {}, {0.1f, 0.6f, 0.2f}}, b{"estimators (eq. 5, 8, 12)", {}, {}, {0.1f, 0.3f, 0.8f}};
@@ -264,14 +264,15 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     LinePlotOptions lo;
     lo.title = "Figure 4: mean error vs footprint (" + o.name + ")";
     lo.xLabel = "footprint side (texels)";
-    lo.yLabel = "mean ||S^ - S-||2";
+    lo.yLabel = "mean ‖Ŝ − S̄‖₂";
     lo.logX = true;
     res.figures.push_back({"figure4.png", sheet(rows, captions),
                            "Figure 4 (" + o.name + ", " + std::to_string(o.size) + "² per footprint): rows = reference S̄ (≤ " +
                                std::to_string(o.referenceSamples) +
                                "² samples per pixel), Ŝ with exact μ, Σ, its error, Ŝ with the "
                                "estimators, its error; columns = footprint 1 … 128²."});
-    res.figures.push_back({"figure4_errors.png", linePlot({a, b}, lo), "Mean error per footprint (log scale in the footprint)."});
+    res.figures.push_back({"figure4_errors.png", linePlot({a, b}, lo),
+                           "Mean error per footprint (log scale in the footprint).", LineChart{{a, b}, lo}});
     for (auto& f : images) res.figures.push_back(std::move(f));
     return res;
 }

@@ -352,7 +352,7 @@ std::vector<Figure> slidingStudy(const ZoomParams& params, const ZoomBase& base)
                        ") with sliding scales (eq. 2.2) and with the exponential fix (eq. 2.5), half a time unit apart."});
     std::vector<PlotSeries> series;
     for (const auto& [name, scaling] : scalings) {
-        PlotSeries s{std::string(name) + ": layer 0 scale a_0(t)", {}, {},
+        PlotSeries s{std::string(name) + ": layer 0 scale a₀(t)", {}, {},
                      scaling == ZoomScaling::Sliding ? std::array<float, 3>{0.8f, 0.2f, 0.1f}
                                                      : std::array<float, 3>{0.1f, 0.3f, 0.8f}};
         ZoomParams p = params;
@@ -367,10 +367,11 @@ std::vector<Figure> slidingStudy(const ZoomParams& params, const ZoomBase& base)
     LinePlotOptions o;
     o.title = "Scale of one layer over time";
     o.xLabel = "t";
-    o.yLabel = "a_0";
+    o.yLabel = "a₀";
     out.push_back({"scales.png", linePlot(series, o),
-                   "a_0(t): linear ramps (sliding: screen speed 1/a differs per layer) vs exponential decay (every "
-                   "layer moves at the same relative speed −a'/a = 1)."});
+                   "a₀(t): linear ramps (sliding: screen speed 1/a differs per layer) vs exponential decay (every "
+                   "layer moves at the same relative speed −a'/a = 1).",
+                   LineChart{series, o}});
     return out;
 }
 

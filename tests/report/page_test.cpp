@@ -1,0 +1,43 @@
+#include "stochtex/report/page.h"
+
+#include <gtest/gtest.h>
+
+namespace stochtex {
+namespace {
+
+size_t count(const std::string& s, const std::string& what) {
+    size_t n = 0;
+    for (size_t p = 0; (p = s.find(what, p)) != std::string::npos; p += what.size()) ++n;
+    return n;
+}
+
+Figure chartFigure() {
+    PlotSeries a{"ours", {1, 2, 4}, {0.5, 0.25, 0.125}, {1, 0, 0}},
+        b{"theirs", {1, 2, 4}, {0.5, 0.25, 0.125}, {0, 0, 1}};
+    LinePlotOptions o;
+    o.title = "mean |μ̂ error| </script><b>";
+    o.logX = true;
+    return {"errors.png", Image(4, 4, 3, 1.0f), "Errors.", LineChart{{a, b}, o}};
+}
+
+TEST(Page, ChartsAreInlinedSelfContainedAndDeterministic) {
+    const std::vector<Figure> figures{chartFigure(), {"map.png", Image(4, 4, 3, 0.0f), "A map."}};
+    const std::string body = htmlFigures("sub/", figures);
+    EXPECT_EQ(count(body, "<canvas>"), 1u);
+    EXPECT_EQ(count(body, "<img src='sub/map.png'>"), 1u);
+    EXPECT_EQ(count(body, "href='sub/errors.png'"), 1u);  // the PNG stays one click away
+    EXPECT_NE(body.find("\"label\":\"theirs (same values as ours)\""), std::string::npos);
+    EXPECT_NE(body.find("\"type\":\"logarithmic\""), std::string::npos);  // the x axis
+    EXPECT_NE(body.find("μ̂"), std::string::npos);
+    EXPECT_EQ(count(body, "</script>"), 1u);  // the title's "</script>" is escaped inside the JSON
+    const std::string page = htmlPage("t", body);
+    EXPECT_EQ(count(page, "Chart.js v3"), 1u);  // the library itself, not a link to it
+    EXPECT_EQ(page.find("src='http"), std::string::npos);
+    EXPECT_EQ(page.find("<script src"), std::string::npos);
+    EXPECT_EQ(page, htmlPage("t", htmlFigures("sub/", figures)));
+    // A page without charts carries no script.
+    EXPECT_EQ(htmlPage("t", htmlFigures("", {figures[1]})).find("<script"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace stochtex
