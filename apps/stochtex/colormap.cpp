@@ -37,7 +37,8 @@ void registerColormap(CLI::App& app) {
         }
         if (args->resolution) cm.resolution = *args->resolution;
         const ColormapTable table = buildColormap(cm);
-        writeImage(args->output, table.toImage());
+        // A data colormap is written as data; colours as sRGB codes (PNG) or linear (EXR).
+        writeImage(args->output, table.toImage(), WriteOptions{.transfer = cm.transfer.value_or(Transfer::Srgb)});
         std::printf("wrote %s (%dx%d colormap, x right, y up)\n", args->output.c_str(), table.resolutionX(),
                     table.resolutionY());
     });

@@ -61,7 +61,7 @@ void registerGallery(CLI::App& app) {
             const Image& sheet = ps.sheet;
 
             writeImage((fs::path(args->dir) / (name + ".png")).string(), img);
-            writeImage((fs::path(args->dir) / (name + "-sheet.png")).string(), sheet);
+            writeImage((fs::path(args->dir) / (name + "-sheet.png")).string(), sheet, kNoTransfer);
             std::string description;
             const auto j = nlohmann::json::parse(presetText(name));
             if (j.contains("description")) description = j["description"].get<std::string>();

@@ -35,12 +35,13 @@ void registerNoise(CLI::App& app) {
         NoiseSpec spec = parseNoiseSpec(JsonReader(json.json, json.source), json.baseDir);
         if (args->seed) spec.spectrum.seed = *args->seed;
         const Image example = buildExampleImage(spec, json.source);
-        writeImage(args->output, example, WriteOptions{args->bits});
+        // Noise values are data: written as they are, as an exemplar is read.
+        writeImage(args->output, example, WriteOptions{.pngBitDepth = args->bits, .transfer = Transfer::Linear});
         const ChannelStats s = channelStats(example);
         std::printf("wrote %s (%dx%d, mean %.4f, std %.4f)\n", args->output.c_str(), example.width(),
                     example.height(), s.mean, s.stddev);
         if (!args->spectrum.empty()) {
-            writeImage(args->spectrum, displaySpectrum(powerSpectrum(example)));
+            writeImage(args->spectrum, displaySpectrum(powerSpectrum(example)), kNoTransfer);
             std::printf("wrote %s (log power spectrum, zero frequency at the centre)\n", args->spectrum.c_str());
         }
     });

@@ -15,6 +15,7 @@
 #include <memory>
 #include <string>
 
+#include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/render_target.h"
 #include "stochtex/image/image_io.h"
 
@@ -79,16 +80,28 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
     }
 }
 
-// The frame is drawn into `target` as `render` draws it (image row y in GL
-// row y, read back as drawn); a window shows GL row 0 at the bottom, so the
-// copy into the window's back buffer turns it upside down.
-void showTopDown(const RenderTarget& target) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    const int w = target.width(), h = target.height();
-    glBlitFramebuffer(0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
+// The frame is drawn into `target` as `render` draws it (linear light, image
+// row y in GL row y); the "display" program turns it over for the window,
+// whose GL row 0 is at the bottom, and encodes it to the sRGB codes a PNG of
+// `render` holds.
+class Display {
+public:
+    Display() : program_(buildProgram("display")), vao_(gl::newVertexArray()) {}
+    void show(const RenderTarget& target) const {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, target.width(), target.height());
+        glUseProgram(program_.id());
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, target.texture());
+        glUniform1i(glGetUniformLocation(program_.id(), "uImage"), 0);
+        glBindVertexArray(vao_.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+
+private:
+    gl::Program program_;
+    gl::VertexArray vao_;
+};
 
 // What the window shows: its back buffer before the swap, top row first.
 Image readWindow(int w, int h) {
@@ -112,6 +125,7 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
     glfwSetKeyCallback(window, onKey);
     std::map<std::string, std::unique_ptr<GpuPattern>> renderers;  // by filter name, built on first use
     std::unique_ptr<RenderTarget> target;                          // rebuilt when the window's size changes
+    const Display display;
     int frame = 0;
     auto last = std::chrono::steady_clock::now();
     double fps = 0;
@@ -131,10 +145,10 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
         target->bind();
         r->setDerivatives(state.derivatives);
         r->drawView(state.camera);
-        showTopDown(*target);
+        display.show(*target);
         ++frame;
         if (!options.screenshot.empty() && (options.frames == 0 || frame == options.frames))
-            writeImage(options.screenshot, readWindow(w, h));
+            writeImage(options.screenshot, readWindow(w, h), kNoTransfer);  // sRGB codes already
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
         last = now;

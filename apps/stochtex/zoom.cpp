@@ -57,7 +57,8 @@ void registerZoom(CLI::App& app) {
                 std::string(t) + ", out of range: " + e.what());
         }
         ThreadLimit limit(args->threads);
-        FrameSequenceWriter out(args->dir, w, h, args->fps, args->noVideo ? "" : "zoom.mp4");
+        // Zoom-texture values are data (thesis eq. 2.1), written as they are.
+        FrameSequenceWriter out(args->dir, w, h, args->fps, args->noVideo ? "" : "zoom.mp4", Transfer::Linear);
         for (int k = 0; k < args->frames; ++k) {
             out.write(source.render(SourceRegion::centred(w, h), frameTime(k), 0));
             if ((k + 1) % 10 == 0 || k + 1 == args->frames)

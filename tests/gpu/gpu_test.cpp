@@ -217,7 +217,7 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x)
             ex.at(x, y) = (std::sin(x * 0.3) * std::cos(y * 0.2) > 0 ? 0.8f : 0.2f) + 0.05f * float((x * 7 + y * 13) % 10) / 10.0f;
-    writeImage((dir / "bimodal.png").string(), ex, {});
+    writeImage((dir / "bimodal.png").string(), ex, kNoTransfer);  // noise values: data
     const std::string text = R"({"name": "exemplar", "seed": 3,
         "noise_x": {"type": "image", "path": "bimodal.png", "gaussianize": true},
         "noise_y": {"type": "image", "path": "bimodal.png", "gaussianize": true},
@@ -259,8 +259,10 @@ TEST(Gpu, SceneRendersObjectsInEveryFilterMode) {
             for (int y = 0; y < h; ++y)
                 for (int x = 0; x < w; ++x) {
                     const float r = img.at(x, y, 0), g = img.at(x, y, 1), b = img.at(x, y, 2);
-                    // Off the clear colour (0.08, 0.09, 0.11) by more than 8-bit noise.
-                    if (std::abs(r - 0.08f) + std::abs(g - 0.09f) + std::abs(b - 0.11f) > 0.02f) {
+                    // Off the clear colour (sRGB codes 0.08, 0.09, 0.11, linear in the target) by more than 8-bit noise.
+                    if (std::abs(r - linearFromSrgb(0.08f)) + std::abs(g - linearFromSrgb(0.09f)) +
+                            std::abs(b - linearFromSrgb(0.11f)) >
+                        0.02f) {
                         ++covered;
                         saturation += std::max({r, g, b}) - std::min({r, g, b});
                     }

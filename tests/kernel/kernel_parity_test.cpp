@@ -19,6 +19,7 @@
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gl_objects.h"
 #include "stochtex/kernel/camera.h"
+#include "stochtex/kernel/colour.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/kernel/footprint.h"
 #include "stochtex/kernel/grid.h"
@@ -443,6 +444,35 @@ TEST_F(KernelParity, LookupAddressingAndBlendsAreBitExact) {
             bits(blendRowsFirst(e[0], e[1], e[2], e[3], vec2(f.x, f.y))),
             bits(vec4(blendEntries(c.z, c.w, f.z), 0.0f, 0.0f, 0.0f))};
     }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 6); });
+}
+
+// The sRGB pair (the window's encode): pow is the GPU's own approximation, so
+// values agree within 1e-6 absolute (results in [0, 1]; an 8-bit code is
+// 3.9e-3, a 16-bit code 1.5e-5); inputs cover both pieces and both clamps.
+TEST_F(KernelParity, SrgbTransferPairWithin1e6) {
+    Random r{11};
+    std::vector<uvec4> in(kItems);
+    for (auto& w : in)
+        w = bits(vec4(r.uniform(-0.1f, 1.1f), r.uniform(0.0f, 0.0031308f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 0.04045f)));
+    const auto gpu = runOnGpu({"colour"}, R"(
+        vec4 a = wordf(0);
+        vec3 e = srgbFromLinear3(vec3(a.x, a.y, a.z));
+        emitf(0, vec4(e.x, e.y, e.z, linearFromSrgb(a.z)));
+        emitf(1, vec4(linearFromSrgb(a.x), linearFromSrgb(a.w), 0.0, 0.0));)",
+                              1, 2, in);
+    compareItems(gpu, 2, [&](int i) {
+        const vec4 a = floats(in[size_t(i)]);
+        const vec3 e = srgbFromLinear3(vec3(a.x, a.y, a.z));
+        return std::vector<uvec4>{bits(vec4(e.x, e.y, e.z, linearFromSrgb(a.z))),
+                                  bits(vec4(linearFromSrgb(a.x), linearFromSrgb(a.w), 0.0f, 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) -> std::string {
+        const vec4 g0 = floats(g[0]), c0 = floats(c[0]), g1 = floats(g[1]), c1 = floats(c[1]);
+        for (int k = 0; k < 4; ++k) {
+            if (std::abs(g0[k] - c0[k]) > 1e-6f) return "word 0[" + std::to_string(k) + "]: GPU " + std::to_string(g0[k]) + ", C++ " + std::to_string(c0[k]);
+            if (std::abs(g1[k] - c1[k]) > 1e-6f) return "word 1[" + std::to_string(k) + "]: GPU " + std::to_string(g1[k]) + ", C++ " + std::to_string(c1[k]);
+        }
+        return "";
+    });
 }
 
 // The CPU's periodic grids keep a padded copy and vector loads; held here,

@@ -112,7 +112,9 @@ TEST(PrefilteredColormap, SmoothModeInterpolatesBetweenLevelsAndPaperSnaps) {
 }
 
 TEST(FilteredPattern, LinearColormapReturnsTheEstimatedMean) {
-    const Pattern p = Pattern::build(loadPreset("gaussian"));  // H(x, y) = x
+    PatternSpec spec = loadPreset("gaussian");
+    spec.colormap.transfer = Transfer::Linear;  // H(x, y) = x as data, not decoded
+    const Pattern p = Pattern::build(spec);
     for (const char* mode : {"smooth", "paper"}) {
         const FilteredPattern f(p, options(mode, 4));
         int checked = 0;
@@ -141,6 +143,7 @@ TEST(FilteredPattern, ConstantColormapStaysConstant) {
     PatternSpec spec = loadPreset("weld");
     spec.colormap.painted.shapes.clear();
     spec.colormap.painted.background = {0.2f, 0.6f, 0.9f};
+    spec.colormap.transfer = Transfer::Linear;  // the colour as given
     const Pattern p = Pattern::build(spec);
     Camera cam = zoom(48, 7.0);
     cam.kind = Camera::Kind::Plane;

@@ -36,6 +36,7 @@ View smallView() {
 
 TEST(Pattern, ColormapOfXOnlyIgnoresNy) {
     PatternSpec spec = loadPreset("gaussian");  // H(x, y) = x
+    spec.colormap.transfer = Transfer::Linear;    // as data: the pixel is N_x itself
     const Image a = Pattern::build(spec).render(smallView());
     // Change noise_y completely: another spectrum and another example seed.
     spec.noise[1].spectrum.components[0].shape = SpectrumShape::Ring;

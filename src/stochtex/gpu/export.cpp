@@ -19,8 +19,10 @@ std::string exportedShaderInclude(ResponseKind response) {
     return "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
            "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
            "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
-           "// footprint comes from this fragment's derivatives of uv. The textures to\n"
-           "// bind and the PatternParameters block to fill are described in README.md.\n\n" +
+           "// footprint comes from this fragment's derivatives of uv. It returns LINEAR-light\n"
+           "// RGB (not sRGB codes): draw into an sRGB framebuffer (GL_FRAMEBUFFER_SRGB) or\n"
+           "// encode it before display. The textures to bind and the PatternParameters\n"
+           "// block to fill are described in README.md.\n\n" +
            [response] {
                std::string body;
                for (const auto& stem : shaderChunks(recipeFiles(programRecipe("export-include"), response)))
@@ -57,6 +59,17 @@ Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
 
 All are read with `texelFetch` (no filtering needed); set `GL_TEXTURE_MAX_LEVEL`
 to L so the pyramids are mipmap-complete.
+
+## Colour space
+
+`table.exr` holds linear-light RGB (`manifest.json`: `"colour_space": "linear"`;
+the pattern's sRGB colours were decoded once, before filtering), and
+`stochtex_sample` returns linear RGB: write it to an sRGB framebuffer
+(`GL_FRAMEBUFFER_SRGB`, an `SRGB8_ALPHA8` target) or encode it before display,
+as `stochtex render` does for PNG. Upload `table.exr` as float, never as an sRGB
+texture. A colormap declared `"transfer": "linear"` (data: heights, roughness)
+is exported as its values, unencoded. The statistics EXRs hold noise values
+(data).
 
 ## Parameters: the `@BLOCK@` uniform block
 
@@ -138,6 +151,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     WriteOptions w;
     w.exrHalf = exportOptions.halfTable;
     writeImage((fs::path(dir) / "table.exr").string(), atlas, w);
+    m["colour_space"] = "linear";  // table.exr and stochtex_sample: linear light, never sRGB codes
     m["table"] = {{"file", "table.exr"}, {"levels", n},
                   {"width", rx},          {"height", ry},
                   {"sigmas", table.sigmas()}, {"precision", exportOptions.halfTable ? "half" : "float"}};

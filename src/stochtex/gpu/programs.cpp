@@ -25,6 +25,7 @@ const std::vector<ProgramRecipe>& programRecipes() {
         {"filtered-compute", K::Compute, {}, {"common", "filtering", R, "view", "kernel_filtered", "view_kernel"}},
         {"scene", K::Graphics, {"mesh"}, {"common", "unfiltered", "filtering", R, "scene"}},
         {"export-include", K::Include, {}, {"common", "filtering", R}},
+        {"display", K::Graphics, {"fullscreen"}, {"display"}},  // a render target in a window, sRGB-encoded
     };
     return recipes;
 }

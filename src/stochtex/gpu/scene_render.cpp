@@ -7,6 +7,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/render_target.h"
+#include "stochtex/image/colour_space.h"
 
 namespace stochtex {
 
@@ -36,7 +37,8 @@ Image renderScene(const GpuPattern& pattern, const Mesh& mesh, const SceneCamera
     }
     const RenderTarget target(width, height, true);
     {
-        glClearColor(0.08f, 0.09f, 0.11f, 1.0f);
+        // The dark slate background, given as sRGB codes: the target holds linear light.
+        glClearColor(linearFromSrgb(0.08f), linearFromSrgb(0.09f), linearFromSrgb(0.11f), 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
         pattern.bind(program.id());

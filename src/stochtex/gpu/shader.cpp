@@ -57,6 +57,7 @@ const std::map<std::string, std::vector<std::string>>& chunkNeeds() {
         {"filtering", {"footprint", "moments"}},
         {"response_prefiltered_colormap", {"sigma_levels"}},
         {"view", {"camera"}},
+        {"display", {"colour"}},
     };
     return needs;
 }

@@ -112,12 +112,13 @@ ImageHeader jpegHeader(const std::string& path, const std::vector<uchar>& b) {
     throw InputError(path + ": corrupt JPEG file (no frame header)");
 }
 
+const uchar kExrMagic[] = {0x76, 0x2F, 0x31, 0x01};
+
 // The format from the file's first bytes (never from its name).
 ImageHeader readHeader(const std::string& path, const std::vector<uchar>& b) {
     static const uchar kPng[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    static const uchar kExr[] = {0x76, 0x2F, 0x31, 0x01};
     if (b.size() >= 8 && std::memcmp(b.data(), kPng, 8) == 0) return pngHeader(path, b);
-    if (b.size() >= 8 && std::memcmp(b.data(), kExr, 4) == 0) return exrHeader(path, b);
+    if (b.size() >= 8 && std::memcmp(b.data(), kExrMagic, 4) == 0) return exrHeader(path, b);
     if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return jpegHeader(path, b);
     throw InputError(path + ": not a PNG, OpenEXR or JPEG image");
 }
@@ -233,6 +234,12 @@ Image decodeWithOpenCv(const std::string& path, const std::vector<uchar>& bytes)
 
 }  // namespace
 
+bool holdsFloatValues(const std::string& path) {
+    char magic[4] = {};
+    std::ifstream in(path, std::ios::binary);
+    return in.read(magic, 4) && std::memcmp(magic, kExrMagic, 4) == 0;
+}
+
 bool isSupportedImagePath(const std::string& path) {
     const std::string ext = lowerExtension(path);
     return ext == ".png" || ext == ".exr";
@@ -270,8 +277,11 @@ void writeImage(const std::string& path, const Image& image, const WriteOptions&
     if (ext != ".png" && ext != ".exr")
         throw InputError(path + ": unsupported output format '" + ext + "' (use .png or .exr)");
     if (image.empty()) throw InputError(path + ": refusing to write an empty image");
-    const int channels = image.channels();
-    cv::Mat f(image.height(), image.width(), CV_32FC(channels), const_cast<float*>(image.data().data()));
+    // Integer codes are sRGB for colour (colour_space.h); floats stay linear.
+    const Image coded = ext == ".exr" ? Image() : encodeTransfer(image, options.transfer);
+    const Image& pixels = ext == ".exr" ? image : coded;
+    const int channels = pixels.channels();
+    cv::Mat f(pixels.height(), pixels.width(), CV_32FC(channels), const_cast<float*>(pixels.data().data()));
     cv::Mat bgr;
     if (channels == 3)
         cv::cvtColor(f, bgr, cv::COLOR_RGB2BGR);

@@ -2,7 +2,9 @@
 // Reading and writing images through OpenCV imgcodecs.
 //
 // Writing, by extension: .png (8-bit by default, 16-bit on request) and .exr
-// (float32, values written as they are). Writing is atomic (AtomicFile): the
+// (float32, values written as they are). Integer formats go through the
+// options' transfer function (colour_space.h): by default the image is
+// linear-light colour and its PNG codes are sRGB; EXR stays linear. Writing is atomic (AtomicFile): the
 // file is encoded in memory, written to a temporary file beside the target
 // and renamed, so a failure never leaves a partial file under the requested
 // name.
@@ -16,6 +18,7 @@
 #include <string>
 
 #include "stochtex/core/atomic_file.h"
+#include "stochtex/image/colour_space.h"
 #include "stochtex/image/image.h"
 
 namespace stochtex {
@@ -23,7 +26,13 @@ namespace stochtex {
 struct WriteOptions {
     int pngBitDepth = 8;  // 8 or 16
     bool exrHalf = false;  // EXR channels as 16-bit half floats (else 32-bit float)
+    // Of the integer formats' codes: Srgb encodes linear colour, Linear writes data as it is.
+    Transfer transfer = Transfer::Srgb;
 };
+
+// For images whose values are the file's codes already (plots, sheets
+// composed in sRGB codes, data): no transfer function on writing.
+inline const WriteOptions kNoTransfer{.transfer = Transfer::Linear};
 
 // The largest input image: 4096² pixels (the exemplar and colormap limit of
 // docs/PATTERNS.md; 256 MB as RGBA floats) in any shape, e.g. the 256 × 25600
@@ -40,6 +49,10 @@ Image readImage(const std::string& path);
 
 // Throws InputError for an unsupported extension or an unwritable place.
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
+
+// True if the file is an OpenEXR image (by its first bytes): its values are
+// floats, linear as stored, where PNG and JPEG hold integer codes.
+bool holdsFloatValues(const std::string& path);
 
 // True if the extension of path is one writeImage accepts.
 bool isSupportedImagePath(const std::string& path);

@@ -22,6 +22,7 @@ struct PngStreamWriter::Impl {
     png_structp png = nullptr;
     png_infop info = nullptr;
     int width = 0, height = 0, channels = 0, bits = 8, written = 0;
+    Transfer transfer = Transfer::Srgb;
     std::string error;
 };
 
@@ -36,7 +37,8 @@ void onWarning(png_structp, png_const_charp) {}
 
 }  // namespace
 
-PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height, int channels, int bits)
+PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height, int channels, int bits,
+                                 Transfer transfer)
     : impl_(std::make_unique<Impl>()) {
     if (width < 1 || height < 1) throw InputError(path + ": image size must be positive");
     if (channels != 1 && channels != 3) throw std::invalid_argument("PngStreamWriter: 1 or 3 channels");
@@ -47,6 +49,7 @@ PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height,
     m.height = height;
     m.channels = channels;
     m.bits = bits;
+    m.transfer = transfer;
     m.output = std::make_unique<AtomicFile>(path);
     const int fd = m.output->releaseDescriptor();
     m.file = fdopen(fd, "wb");
@@ -80,9 +83,10 @@ void PngStreamWriter::writeRows(const Image& band) {
         throw std::invalid_argument("PngStreamWriter: band does not fit the image");
     const size_t values = size_t(m.width) * size_t(m.channels);
     std::vector<unsigned char> row(values * size_t(m.bits / 8));
+    const Image coded = encodeTransfer(band, m.transfer);  // before setjmp: a longjmp skips no destructor
     if (setjmp(png_jmpbuf(m.png))) throw InputError(m.path + ": PNG error: " + m.error);
-    for (int y = 0; y < band.height(); ++y) {
-        const float* src = band.row(y);
+    for (int y = 0; y < coded.height(); ++y) {
+        const float* src = coded.row(y);
         if (m.bits == 8) {
             for (size_t i = 0; i < values; ++i)
                 row[i] = static_cast<unsigned char>(std::lround(255.0f * std::clamp(src[i], 0.0f, 1.0f)));

@@ -5,19 +5,22 @@
 #include <memory>
 #include <string>
 
+#include "stochtex/image/colour_space.h"
 #include "stochtex/image/image.h"
 
 namespace stochtex {
 
 class PngStreamWriter {
 public:
-    // bits: 8 or 16; the bands written must have `channels` channels (3 or 1).
-    PngStreamWriter(const std::string& path, int width, int height, int channels, int bits = 8);
+    // bits: 8 or 16; the bands written must have `channels` channels (3 or 1);
+    // transfer: of the codes, as WriteOptions::transfer (Srgb: bands are linear colour).
+    PngStreamWriter(const std::string& path, int width, int height, int channels, int bits = 8,
+                    Transfer transfer = Transfer::Srgb);
     ~PngStreamWriter();  // removes the temporary file if finish() was not reached
     PngStreamWriter(const PngStreamWriter&) = delete;
     PngStreamWriter& operator=(const PngStreamWriter&) = delete;
 
-    // The next band of rows, top to bottom (values clamped to [0, 1]).
+    // The next band of rows, top to bottom (values clamped to [0, 1], then encoded).
     void writeRows(const Image& band);
     void finish();
 

@@ -49,6 +49,7 @@ using glm::log2;
 using glm::max;
 using glm::min;
 using glm::mix;
+using glm::pow;
 using glm::sqrt;
 using glm::uintBitsToFloat;
 

@@ -167,20 +167,20 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
     ColormapSpec spec;
     const std::string type = r.at("type").choice({"gaussian", "ridged", "phasor", "image", "painted"});
     if (type == "gaussian" || type == "ridged") {
-        r.expectObject({"type", "resolution"});
+        r.expectObject({"type", "resolution", "transfer"});
         spec.source = ColormapSpec::Source::Analytic;
         spec.analytic = type == "gaussian" ? AnalyticColormap::Gaussian : AnalyticColormap::Ridged;
     } else if (type == "phasor") {
-        r.expectObject({"type", "resolution", "profile", "duty"});
+        r.expectObject({"type", "resolution", "profile", "duty", "transfer"});
         spec.source = ColormapSpec::Source::Phasor;
         spec.profile = r.choice("profile", PhasorProfile::Sine, kPhasorProfileNames);
         spec.duty = r.number("duty", 0.5, 0.0, 1.0);
     } else if (type == "image") {
-        r.expectObject({"type", "path"});
+        r.expectObject({"type", "path", "transfer"});
         spec.source = ColormapSpec::Source::Image;
         spec.image = resolve(r.at("path"), baseDir);
     } else {
-        r.expectObject({"type", "resolution", "background", "shapes"});
+        r.expectObject({"type", "resolution", "background", "shapes", "transfer"});
         spec.source = ColormapSpec::Source::Painted;
         spec.painted.background = r.has("background") ? parseColour(r.at("background")) : Rgb{0, 0, 0};
         if (auto shapes = r.find("shapes")) {
@@ -188,6 +188,7 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
             for (size_t i = 0; i < n; ++i) spec.painted.shapes.push_back(parseShape(shapes->at(i)));
         }
     }
+    if (r.has("transfer")) spec.transfer = r.at("transfer").choice(kTransferNames);
     spec.resolution = r.integer("resolution", 256, 2, kMaxColormapResolution);
     if (spec.source == ColormapSpec::Source::Painted) r.check([&] { spec.painted.validateWork(spec.resolution); });
     return spec;
@@ -288,10 +289,22 @@ NoiseExample buildNoiseExample(const NoiseSpec& spec, const std::string& context
     return NoiseExample(std::move(img));
 }
 
+namespace {
+
+// Table entries through the transfer function, where they enter (once).
+ColormapTable decodedTable(const ColormapTable& table, Transfer transfer) {
+    return transfer == Transfer::Linear ? table : ColormapTable(decodeTransfer(table.table(), transfer));
+}
+
+}  // namespace
+
 ColormapTable buildColormap(const ColormapSpec& spec) {
+    const Transfer transfer = spec.transfer.value_or(Transfer::Srgb);
     switch (spec.source) {
-        case ColormapSpec::Source::Analytic: return makeAnalyticColormap(spec.analytic, spec.resolution);
-        case ColormapSpec::Source::Phasor: return makePhasorColormap(spec.profile, spec.duty, spec.resolution);
+        case ColormapSpec::Source::Analytic:
+            return decodedTable(makeAnalyticColormap(spec.analytic, spec.resolution), transfer);
+        case ColormapSpec::Source::Phasor:
+            return decodedTable(makePhasorColormap(spec.profile, spec.duty, spec.resolution), transfer);
         case ColormapSpec::Source::Image: {
             const Image img = readImage(spec.image.string());
             checkPixelRange(img, spec.image.string(), -kMaxColormapValue, kMaxColormapValue, "colormap");
@@ -300,9 +313,20 @@ ColormapTable buildColormap(const ColormapSpec& spec) {
             if (img.width() > kMaxColormapResolution || img.height() > kMaxColormapResolution)
                 throw InputError(spec.image.string() + ": colormap image larger than " +
                                  std::to_string(kMaxColormapResolution) + " pixels per side");
-            return ColormapTable::fromImage(img);
+            const bool floats = holdsFloatValues(spec.image.string());
+            return decodedTable(ColormapTable::fromImage(img), spec.transfer.value_or(floats ? Transfer::Linear : transfer));
         }
-        case ColormapSpec::Source::Painted: return spec.painted.rasterize(spec.resolution);
+        case ColormapSpec::Source::Painted: {
+            // Decoded before rasterising, so anti-aliased edges average linear light.
+            PaintedColormap painted = spec.painted;
+            const auto decode = [&](Rgb& c) {
+                if (transfer == Transfer::Srgb)
+                    for (float& v : c) v = linearFromSrgb(v);
+            };
+            decode(painted.background);
+            for (PaintedShape& shape : painted.shapes) decode(shape.colour);
+            return painted.rasterize(spec.resolution);
+        }
     }
     throw InputError("unknown colormap source");
 }

@@ -6,10 +6,12 @@
 // the JSON pointer of the value at fault.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "stochtex/image/colour_space.h"
 #include "stochtex/noise/example.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/noise/tiling_blending.h"
@@ -46,6 +48,11 @@ struct ColormapSpec {
     std::filesystem::path image;
     PaintedColormap painted;
     int resolution = 256;
+    // How the colours given (hex, [r, g, b], the analytic H, an image's codes)
+    // become table entries (docs/PATTERNS.md): Srgb decodes them to linear
+    // light, Linear takes them as data. Unset: Srgb, except a float (EXR)
+    // image, whose values are linear already.
+    std::optional<Transfer> transfer;
 };
 
 // Pattern JSON "offsets".
@@ -82,6 +89,8 @@ uint32_t noiseSeed(const PatternSpec& spec, int axis);
 Image buildExampleImage(const NoiseSpec& spec, const std::string& context);
 // The example prepared for tiling and blending (Gaussianized if asked).
 NoiseExample buildNoiseExample(const NoiseSpec& spec, const std::string& context);
+// The table H in linear light (or as data, with transfer Linear): the one
+// place colours of a pattern enter.
 ColormapTable buildColormap(const ColormapSpec& spec);
 
 }  // namespace stochtex

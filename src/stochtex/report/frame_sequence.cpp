@@ -30,8 +30,8 @@ struct FrameSequenceWriter::Video {
 };
 
 FrameSequenceWriter::FrameSequenceWriter(const std::string& output, int width, int height, double fps,
-                                         const std::string& videoName)
-    : video_(std::make_unique<Video>()) {
+                                         const std::string& videoName, Transfer transfer)
+    : transfer_(transfer), video_(std::make_unique<Video>()) {
     std::string videoPath;
     if (isVideoPath(output)) {
         videoPath = output;
@@ -54,11 +54,13 @@ FrameSequenceWriter::FrameSequenceWriter(const std::string& output, int width, i
 
 FrameSequenceWriter::~FrameSequenceWriter() = default;
 
-void FrameSequenceWriter::write(const Image& frame) {
+void FrameSequenceWriter::write(const Image& linearFrame) {
+    // Encoded once for the PNG frame and the video alike.
+    const Image frame = encodeTransfer(linearFrame, transfer_);
     if (!dir_.empty()) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.png", count_);
-        writeImage((fs::path(dir_) / name).string(), frame);
+        writeImage((fs::path(dir_) / name).string(), frame, kNoTransfer);
     }
     ++count_;
     if (!video_->file) return;

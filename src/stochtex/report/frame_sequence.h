@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "stochtex/image/colour_space.h"
 #include "stochtex/image/image.h"
 
 namespace stochtex {
@@ -19,8 +20,11 @@ class FrameSequenceWriter {
 public:
     // output: an .mp4 path or a folder (created if missing). videoName: the
     // MP4 beside the frames in folder mode ("" for PNG frames only). Throws
-    // InputError when an .mp4 is asked for and cannot be opened.
-    FrameSequenceWriter(const std::string& output, int width, int height, double fps, const std::string& videoName);
+    // InputError when an .mp4 is asked for and cannot be opened. transfer: of
+    // the frames' 8-bit codes (PNG and video), as WriteOptions::transfer:
+    // Srgb for colour renders, Linear for data such as zoom-texture values.
+    FrameSequenceWriter(const std::string& output, int width, int height, double fps, const std::string& videoName,
+                        Transfer transfer = Transfer::Srgb);
     ~FrameSequenceWriter();
     void write(const Image& frame);  // 1 (gray) or 3 (RGB) channels, [0, 1], width × height
     // Closes the MP4 and moves it into place; returns its path, or "" when none was written.
@@ -30,6 +34,7 @@ private:
     struct Video;
     std::string dir_;  // "" in video-only mode
     int count_ = 0;
+    Transfer transfer_;
     std::unique_ptr<Video> video_;
 };
 

@@ -21,7 +21,7 @@ void ensureFolder(const std::string& dir) {
 }
 
 void writeFigures(const std::string& dir, const std::vector<Figure>& figures) {
-    for (const auto& f : figures) writeImage((std::filesystem::path(dir) / f.file).string(), f.image);
+    for (const auto& f : figures) writeImage((std::filesystem::path(dir) / f.file).string(), f.image, kNoTransfer);
 }
 
 void writeText(const std::string& dir, const std::string& file, const std::string& text) {

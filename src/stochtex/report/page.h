@@ -12,7 +12,9 @@
 namespace stochtex {
 
 // One image a study made: its file name in the study's folder and what it
-// shows (an empty caption: written, but not shown on report pages).
+// shows (an empty caption: written, but not shown on report pages). Figures
+// are display images: values are the file's codes (plots, sheets, data shown
+// as grey), so a linear colour render goes in through srgbFromLinear.
 // A line plot also carries its data (chart): report pages then draw it as an
 // interactive chart, with the PNG one click away.
 struct Figure {

@@ -6,6 +6,7 @@
 
 #include "stochtex/analysis/plot.h"
 #include "stochtex/core/error.h"
+#include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/studies/pattern_sheet.h"
 
@@ -244,7 +245,8 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         const Image* shown[5] = {&c.reference, &c.exact, &c.errExact, &c.estimated, &c.errEstimated};
         for (int r = 0; r < 5; ++r) {
             const bool isError = r == 2 || r == 4;
-            Image img = isError ? colourise(*shown[r], 0.0, vmax, HeatPalette::Viridis) : *shown[r];
+            // Figures hold display codes (report/page.h): renders are encoded, error maps drawn so.
+            Image img = isError ? colourise(*shown[r], 0.0, vmax, HeatPalette::Viridis) : srgbFromLinear(*shown[r]);
             rows[size_t(r)].push_back(resizeSmooth(img, thumb, thumb));
             captions[size_t(r)].push_back(std::string(rowNames[r]) + " " + std::to_string(s) + "²");
             images.push_back({tag + rowFiles[r], std::move(img), ""});

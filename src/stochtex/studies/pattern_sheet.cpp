@@ -1,5 +1,7 @@
 #include "stochtex/studies/pattern_sheet.h"
 
+#include "stochtex/image/colour_space.h"
+
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
@@ -26,7 +28,7 @@ Image colormapUsage(const Pattern& pattern, const View& view, int size) {
     cv::Mat h(size, size, CV_64F, hist.data());
     cv::GaussianBlur(h, h, cv::Size(0, 0), 1.5);
     const double peak = *std::max_element(hist.begin(), hist.end());
-    Image base = resizeSmooth(pattern.colormap().toImage(), size, size);
+    Image base = resizeSmooth(srgbFromLinear(pattern.colormap().toImage()), size, size);
     for (int j = 0; j < size; ++j)
         for (int i = 0; i < size; ++i) {
             const double d = peak > 0 ? std::sqrt(hist[size_t(j) * size_t(size) + size_t(i)] / peak) : 0.0;
@@ -49,8 +51,10 @@ PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const 
     half.width = half.height = small;
     half.scale = view.scale * 2.0;
     Image sheet(big + 2 * small, big, 3);
-    paste(sheet, out.pattern, 0, 0);
-    paste(sheet, resizeSmooth(pattern.colormap().toImage(), small, small), big, 0);
+    // The sheet is composed in sRGB codes (report/page.h, Figure): colours are
+    // encoded as they go in, the noises are data shown as grey.
+    paste(sheet, srgbFromLinear(out.pattern), 0, 0);
+    paste(sheet, resizeSmooth(srgbFromLinear(pattern.colormap().toImage()), small, small), big, 0);
     paste(sheet, colormapUsage(pattern, view, small), big + small, 0);
     paste(sheet, toRgb(pattern.renderNoise(0, half)), big, small);
     paste(sheet, toRgb(pattern.renderNoise(1, half)), big + small, small);

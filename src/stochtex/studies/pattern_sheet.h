@@ -9,8 +9,8 @@
 namespace stochtex {
 
 struct PatternSheet {
-    Image pattern;  // size × size, the view at `scale` texels per pixel
-    Image sheet;    // pattern | H, H where N falls / N_x, N_y (2·size × size)
+    Image pattern;  // size × size, the view at `scale` texels per pixel (linear light)
+    Image sheet;    // pattern | H, H where N falls / N_x, N_y (2·size × size), in sRGB codes
 };
 PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const std::string& label);
 
