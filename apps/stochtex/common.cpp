@@ -299,10 +299,11 @@ std::string commandPath(const CLI::App* cmd) {
 
 }  // namespace
 
-void hideEmptyDefaults(CLI::App& app) {
+void tidyDefaults(CLI::App& app) {
     for (CLI::Option* o : app.get_options({}))
-        if (o->get_default_str() == "[]") o->default_str("");
-    for (CLI::App* sub : app.get_subcommands({})) hideEmptyDefaults(*sub);
+        if (const std::string d = o->get_default_str(); d.size() >= 2 && d.front() == '[' && d.back() == ']')
+            o->default_str(d.substr(1, d.size() - 2));
+    for (CLI::App* sub : app.get_subcommands({})) tidyDefaults(*sub);
 }
 
 std::string explainParseError(const CLI::App& app, const std::vector<std::string>& args) {

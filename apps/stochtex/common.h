@@ -154,9 +154,10 @@ bool isGpuFilter(const FilterOptions& options);
 void addPipelineFlag(CLI::App& cmd, GpuPattern::Pipeline& pipeline);
 
 // Every option of app and its commands shows its default in --help (main
-// sets always_capture_default), except an empty list ("[]": the default is
-// described in the help text, e.g. "the pattern's").
-void hideEmptyDefaults(CLI::App& app);
+// sets always_capture_default); a list reads as it is typed ("768,512", not
+// CLI11's "[768,512]"), and an empty one not at all (its help text says
+// what is used, e.g. "the pattern's").
+void tidyDefaults(CLI::App& app);
 
 // A parse error's message as the user reads it when CLI11's would not say
 // what is wrong (CLI11 reports "A subcommand is required" for `rendr`): an

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerView(app);
     stochtex::cli::registerBake(app);
     stochtex::cli::registerBakeImage(app);
-    stochtex::cli::hideEmptyDefaults(app);
+    stochtex::cli::tidyDefaults(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -441,6 +441,9 @@ case_help_defaults() {
   done
   "$bin" zoom --help >"$work/h.txt"
   grep -E '^ +--frames ' "$work/h.txt" | grep -qE '=60( |$)' || fail "zoom --help: --frames shows no default"
+  # Lists read as they are typed; an empty one (the pattern's size) shows nothing.
+  "$bin" scene --help | grep -E '^ +--size ' | grep -qE '=768,512( |$)' || fail "scene --help: --size default: $("$bin" scene --help | grep -- --size)"
+  "$bin" render --help | grep -E '^ +--size ' | grep -q '=' && fail "render --help: --size shows an empty default"
 }
 
 case_no_effect_flags() {
