@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "common.h"
+#include "progress.h"
 #include "stochtex/core/parallel.h"
 #include "zoom_flags.h"
 
@@ -25,7 +26,9 @@ void registerAnalyze(CLI::App& app) {
         ArtifactReportOptions options = args->study;
         options.correlation.zoom = makeZoomParams(args->zoom);
         options.correlation.base = makeZoomBase(args->zoom);
-        writeArtifactReport(args->dir, options, [](const std::string& what) { printProgress("analyze: " + what); });
+        ProgressLine progress("analyze");
+        writeArtifactReport(args->dir, options, progress.callback());
+        progress.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("wrote %s/index.html (%.1f s)\n", args->dir.c_str(), seconds);
     });

@@ -7,6 +7,7 @@
 
 #include "common.h"
 #include "pattern_renderer.h"
+#include "progress.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/png_stream.h"
 
@@ -29,11 +30,14 @@ void registerBakeImage(CLI::App& app) {
     addOutputImageFlag(*cmd, args->output, "Output PNG");
     addFilterFlag(*cmd, args->options, "none | paper | smooth");
     addAnisoFlag(*cmd, args->options.aniso);
-    addBitsFlag(*cmd, args->bits);
+    const CLI::Option* bits = addBitsFlag(*cmd, args->bits);
     cmd->add_option("--band", args->band, "Rows rendered at a time")->check(CLI::Range(1, 4096));
     addDeviceFlags(*cmd, args->device, "Render the bands with the GLSL implementation", false);
     addThreadsFlag(*cmd, args->threads);
-    cmd->callback([args] {
+    cmd->callback([args, cmd, bits] {
+        refuseUnusedFilterFlags(*cmd, args->options);
+        refuseUnusedDeviceFlags(*cmd, args->device);
+        checkBitsApply(bits, args->output);
         if (args->output.size() < 4 || args->output.substr(args->output.size() - 4) != ".png")
             throw InputError(args->output + ": bake-image writes PNG (.png)");
         checkImageOutput(args->output);
@@ -44,6 +48,8 @@ void registerBakeImage(CLI::App& app) {
         validateCamera(whole);
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
+        ProgressLine progress("bake-image");
+        progress.update(0.0, "building the pattern and its tables");
         const Pattern pattern = Pattern::build(spec);
         PatternRenderer renderer(pattern, args->options, args->device);
         const View& v = whole.view;
@@ -52,11 +58,14 @@ void registerBakeImage(CLI::App& app) {
             Camera band = whole;
             band.view.height = std::min(args->band, v.height - y0);
             band.view.offsetV = v.offsetV + y0 * v.scale;  // pixel rows y0… of the whole view
-            png.writeRows(renderer.render(band));
-            std::fprintf(stderr, "\r%d/%d rows", y0 + band.view.height, v.height);
+            const int y1 = y0 + band.view.height;
+            const std::string rows =
+                "rows " + std::to_string(y0) + "–" + std::to_string(y1) + " of " + std::to_string(v.height);
+            png.writeRows(renderer.render(
+                band, progressPart(progress.callback(), double(y0) / v.height, double(y1) / v.height, rows)));
         }
-        std::fprintf(stderr, "\n");
         png.finish();
+        progress.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("wrote %s (%dx%d, %s, filter %s, %s, bands of %d rows, %.1f s)\n", args->output.c_str(), v.width,
                     v.height, spec.name.c_str(), filterName(args->options).c_str(), args->device.gpu ? "GPU" : "CPU",

@@ -1,5 +1,7 @@
 #include "common.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <string_view>
@@ -119,14 +121,26 @@ CLI::Option* addSeedFlag(CLI::App& cmd, const std::string& flag, uint32_t& seed,
     return cmd.add_option(flag, seed, help)->check(seedValidator())->capture_default_str();
 }
 
-void addBitsFlag(CLI::App& cmd, int& bits) {
-    cmd.add_option("--bits", bits, "PNG bit depth: 8 or 16")
+CLI::Option* addBitsFlag(CLI::App& cmd, int& bits) {
+    return cmd.add_option("--bits", bits, "PNG bit depth: 8 or 16")
         ->check(CLI::Validator(
             [](std::string& s) -> std::string {
                 return s == "8" || s == "16" ? std::string() : "bits must be 8 or 16, got \"" + s + "\"";
             },
             "8|16"))
         ->capture_default_str();
+}
+
+void checkBitsApply(const CLI::Option* bits, const std::string& output) {
+    const bool exr = output.size() >= 4 && output.compare(output.size() - 4, 4, ".exr") == 0;
+    refuseWithoutEffect(bits, !exr, "with an .exr output (EXR stores 32-bit floats)");
+}
+
+void refuseWithoutEffect(const CLI::Option* option, bool hasEffect, const std::string& why) {
+    if (!option || option->count() == 0 || hasEffect) return;
+    const std::string flag =
+        option->get_lnames().empty() ? "-" + option->get_snames().front() : "--" + option->get_lnames().front();
+    throw InputError(flag + ": has no effect " + why);
 }
 
 void addThreadsFlag(CLI::App& cmd, int& threads) {
@@ -148,9 +162,24 @@ void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& hel
         cmd, [&options](const NamedFilter& f) { options.use(f); }, filterName(options), help);
 }
 
-void addAnisoFlag(CLI::App& cmd, int& aniso) {
-    aniso = FilterOptions{}.aniso;
-    cmd.add_option("--aniso", aniso, "Anisotropic probes K (1 = isotropic trilinear, up to 16)")->capture_default_str();
+CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso) {
+    aniso = kDefaultAniso;
+    return cmd.add_option("--aniso", aniso, "Anisotropic probes K (1 = isotropic trilinear, up to 16)")
+        ->capture_default_str();
+}
+
+void refuseUnusedFilterFlags(const CLI::App& cmd, const FilterOptions& options) {
+    const std::string filter = "with --filter " + filterName(options);
+    const bool estimators = options.source == StatisticsSource::Estimators;
+    const bool bruteForce = options.source == StatisticsSource::Exact || options.source == StatisticsSource::Reference;
+    refuseWithoutEffect(cmd.get_option_no_throw("--aniso"), estimators,
+                        filter + " (only the estimators of paper and smooth take anisotropic probes)");
+    refuseWithoutEffect(cmd.get_option_no_throw("--estimator"), estimators,
+                        filter + " (only paper and smooth estimate the variance)");
+    refuseWithoutEffect(cmd.get_option_no_throw("--pack8"), estimators,
+                        filter + " (only paper and smooth read the pyramids)");
+    refuseWithoutEffect(cmd.get_option_no_throw("--reference-samples"), bruteForce,
+                        filter + " (only exact and reference sample the footprint)");
 }
 
 void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov) {
@@ -161,11 +190,16 @@ void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov) {
     if (withFov) cmd.add_option("--fov", camera.fovDeg, "Plane view: vertical field of view, degrees")->capture_default_str();
 }
 
+void refuseUnusedCameraFlags(const CLI::App& cmd, const Camera& camera) {
+    const bool plane = camera.kind == Camera::Kind::Plane;
+    refuseWithoutEffect(cmd.get_option_no_throw("--tilt"), plane, "in the zoom view (only --view plane is tilted)");
+    refuseWithoutEffect(cmd.get_option_no_throw("--fov"), plane,
+                        "in the zoom view (only --view plane has a field of view)");
+}
+
 bool isGpuFilter(const FilterOptions& options) {
     return options.source == StatisticsSource::Point || options.source == StatisticsSource::Estimators;
 }
-
-void printProgress(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
 
 void addPipelineFlag(CLI::App& cmd, GpuPattern::Pipeline& pipeline) {
     addEnumFlag(cmd, "--pipeline", pipeline, kGpuPipelineNames, "pipeline",
@@ -207,6 +241,100 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"filters", "--filters"},
 };
 }  // namespace
+
+size_t editDistance(const std::string& a, const std::string& b) {
+    // Optimal string alignment: Levenshtein plus swapped neighbours ("rednre").
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (size_t i = 1; i <= a.size(); ++i)
+        for (size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+namespace {
+
+// " (did you mean X?)" for the candidate nearest to `given`, when it is near
+// enough to be a typo: at most a third of the name wrong (at least 1, at most
+// 3 edits); "" otherwise.
+std::string nearest(const std::string& given, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t bestDistance = std::max<size_t>(1, std::min<size_t>(3, given.size() / 3)) + 1;
+    for (const std::string& c : candidates)
+        if (const size_t d = editDistance(given, c); d < bestDistance) {
+            best = c;
+            bestDistance = d;
+        }
+    return best.empty() ? "" : " (did you mean " + best + "?)";
+}
+
+// The option of cmd or of a command above it (--help, --version, --quiet
+// are the top level's) that a command-line word names, or null.
+const CLI::Option* findOption(const CLI::App* cmd, const std::string& word) {
+    for (; cmd; cmd = cmd->get_parent())
+        if (const CLI::Option* o = cmd->get_option_no_throw(word)) return o;
+    return nullptr;
+}
+
+std::vector<std::string> optionNames(const CLI::App* cmd) {
+    std::vector<std::string> names;
+    for (; cmd; cmd = cmd->get_parent())
+        for (const CLI::Option* o : cmd->get_options()) {
+            for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
+            for (const std::string& n : o->get_snames()) names.push_back("-" + n);
+        }
+    return names;
+}
+
+// "render: ", "reproduce table1: ", or "" at the top level (main says "stochtex").
+std::string commandPath(const CLI::App* cmd) {
+    std::string path;
+    for (; cmd && cmd->get_parent(); cmd = cmd->get_parent()) path = cmd->get_name() + (path.empty() ? "" : " " + path);
+    return path.empty() ? "" : path + ": ";
+}
+
+}  // namespace
+
+void tidyDefaults(CLI::App& app) {
+    for (CLI::Option* o : app.get_options({}))
+        if (const std::string d = o->get_default_str(); d.size() >= 2 && d.front() == '[' && d.back() == ']')
+            o->default_str(d.substr(1, d.size() - 2));
+    for (CLI::App* sub : app.get_subcommands({})) tidyDefaults(*sub);
+}
+
+std::string explainParseError(const CLI::App& app, const std::vector<std::string>& args) {
+    const CLI::App* cmd = &app;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& word = args[i];
+        if (word == "--") break;
+        // An option: -x, -xVALUE, --name or --name=VALUE (not a negative number).
+        if (word.size() > 1 && word[0] == '-' &&
+            std::isalpha(static_cast<unsigned char>(word[word[1] == '-' ? 2 : 1]))) {
+            const std::string name = word[1] == '-' ? word.substr(0, word.find('=')) : word.substr(0, 2);
+            const CLI::Option* option = findOption(cmd, name);
+            if (!option) return commandPath(cmd) + "unknown option " + name + nearest(name, optionNames(cmd));
+            // Its value is the next word unless attached.
+            if (option->get_items_expected_max() > 0 && name == word && i + 1 < args.size()) ++i;
+            continue;
+        }
+        const auto named = cmd->get_subcommands([&](const CLI::App* s) { return s->check_name(word); });
+        if (!named.empty()) {
+            cmd = named.front();
+            continue;
+        }
+        // A word that is no option: a command's name where one is expected.
+        if (cmd->get_require_subcommand_min() > 0 && cmd->get_subcommands({}).size() > 0) {
+            std::vector<std::string> names;
+            for (const CLI::App* sub : cmd->get_subcommands({})) names.push_back(sub->get_name());
+            return commandPath(cmd) + "unknown command \"" + word + "\"" + nearest(word, names);
+        }
+    }
+    return {};
+}
 
 std::string describeInputError(const InputError& e) {
     for (const auto& [parameter, flag] : kParameterFlags)

@@ -61,7 +61,15 @@ CLI::Option* addSeedFlag(CLI::App& cmd, const std::string& flag, std::optional<u
 CLI::Option* addSeedFlag(CLI::App& cmd, const std::string& flag, uint32_t& seed, const std::string& help);
 
 // --bits 8|16, the PNG bit depth (default 8).
-void addBitsFlag(CLI::App& cmd, int& bits);
+CLI::Option* addBitsFlag(CLI::App& cmd, int& bits);
+// InputError naming --bits when it was given for an output it cannot change
+// (EXR stores 32-bit floats).
+void checkBitsApply(const CLI::Option* bits, const std::string& output);
+
+// Options that would change nothing in the mode the command runs in are
+// refused rather than silently ignored: InputError "FLAG: has no effect
+// WHY" when `option` was given and !hasEffect (main exits 2).
+void refuseWithoutEffect(const CLI::Option* option, bool hasEffect, const std::string& why);
 
 // CLI11's transformer over an enum's name table (the table the library, the
 // JSON reader and the bake manifest use). It reads the name with parseEnum,
@@ -118,23 +126,48 @@ void addFilterFlag(CLI::App& cmd, std::function<void(const NamedFilter&)> set, c
 // own (each command documents why it starts where it does).
 void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& help);
 
-// --aniso K, 1..16 (the library checks the range). Sets aniso to the one
-// default, FilterOptions{}.aniso (1: isotropic trilinear).
-void addAnisoFlag(CLI::App& cmd, int& aniso);
+// The default of --aniso in every command. 8 probes: an isotropic footprint
+// (the zoom view) takes one probe whatever K is, so only oblique views pay,
+// and they need it (with K = 1, `render --view plane --filter smooth` blurs
+// the distance, as a texture without anisotropic filtering does); 8 is also
+// what engines commonly set for anisotropic filtering.
+constexpr int kDefaultAniso = 8;
+// --aniso K, 1..16 (the library checks the range), set to kDefaultAniso.
+CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso);
+// The checks of the filter-dependent flags: --aniso (and --estimator, --pack8:
+// the estimators' only) need paper or smooth, --reference-samples needs
+// exact or reference; each refused (refuseWithoutEffect) when given for a
+// filter that ignores it. Flags a command does not have are skipped.
+void refuseUnusedFilterFlags(const CLI::App& cmd, const FilterOptions& options);
 
 // --view zoom|plane, --tilt and (withFov) --fov: the camera's defaults
 // (pattern/camera.h) are the flags'.
 void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov = true);
+// --tilt and --fov refused in the zoom view (refuseWithoutEffect).
+void refuseUnusedCameraFlags(const CLI::App& cmd, const Camera& camera);
 
 // What the GLSL implementation renders: the point source (none) or the
 // estimators (paper, smooth).
 bool isGpuFilter(const FilterOptions& options);
 
-// A study's progress line on stderr.
-void printProgress(const std::string& line);
-
 // --pipeline fragment|compute of the --gpu commands (default fragment).
 void addPipelineFlag(CLI::App& cmd, GpuPattern::Pipeline& pipeline);
+
+// Every option of app and its commands shows its default in --help (main
+// sets always_capture_default); a list reads as it is typed ("768,512", not
+// CLI11's "[768,512]"), and an empty one not at all (its help text says
+// what is used, e.g. "the pattern's").
+void tidyDefaults(CLI::App& app);
+
+// A parse error's message as the user reads it when CLI11's would not say
+// what is wrong (CLI11 reports "A subcommand is required" for `rendr`): an
+// unknown command or option among args (argv without the program), named
+// with the command it was given to and the nearest known name; empty when
+// the arguments show no such mistake (CLI11's own message is then right).
+std::string explainParseError(const CLI::App& app, const std::vector<std::string>& args);
+// The edit distance of a and b (insertions, deletions, substitutions and
+// transpositions of neighbours, each 1).
+size_t editDistance(const std::string& a, const std::string& b);
 
 // An InputError as the user reads it: a library parameter error is prefixed
 // with the flag that sets the parameter ("--aniso: aniso must be in [1, 16],

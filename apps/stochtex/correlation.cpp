@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "common.h"
+#include "progress.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/studies/zoom_studies.h"
 #include "zoom_flags.h"
@@ -24,7 +25,9 @@ void registerCorrelation(CLI::App& app) {
         o.base = makeZoomBase(args->zoom);
         validateCorrelationStudy(o);
         ensureFolder(args->dir);
-        const CorrelationStudyResult r = correlationStudy(o, printProgress);
+        ProgressLine progress("correlation");
+        const CorrelationStudyResult r = correlationStudy(o, progress.callback());
+        progress.finish();
         writeFigures(args->dir, r.figures);
         writeText(args->dir, "correlation.csv", r.table.csv());
         std::printf("%s\nwrote %zu figures, figure2_10.png and correlation.csv to %s\n", r.table.markdown().c_str(),

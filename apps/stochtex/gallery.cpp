@@ -8,12 +8,13 @@
 #include <sstream>
 
 #include "common.h"
-#include "stochtex/report/table.h"
-#include "stochtex/studies/pattern_sheet.h"
+#include "progress.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/presets.h"
+#include "stochtex/report/table.h"
+#include "stochtex/studies/pattern_sheet.h"
 
 namespace stochtex::cli {
 namespace fs = std::filesystem;
@@ -50,10 +51,10 @@ void registerGallery(CLI::App& app) {
                 "figcaption{margin:.4em 0}</style></head><body><h1>stochtex gallery</h1>"
                 "<p>Each sheet: the pattern S = H&#8728;N (left); the colormap H (x right, y up), H shaded by "
                 "where N falls, and the two tiled noises N<sub>x</sub>, N<sub>y</sub> over the same region.</p>\n";
-        int index = 0;
+        ProgressLine progress("gallery");
+        size_t index = 0;
         for (const auto& name : names) {
-            ++index;
-            std::fprintf(stderr, "[%d/%zu] %s\n", index, names.size(), name.c_str());
+            progress.update(double(index++) / double(names.size()), name);
             const PatternSpec spec = loadPreset(name);
             const Pattern pattern = Pattern::build(spec);
             const PatternSheet ps = patternSheet(pattern, spec.scale, args->size, name);
@@ -70,6 +71,7 @@ void registerGallery(CLI::App& app) {
         }
         html << "</body></html>\n";
         writeFileAtomic((fs::path(args->dir) / "index.html").string(), html.str());
+        progress.finish();
         std::printf("gallery: %zu presets in %s (open %s)\n", names.size(), args->dir.c_str(),
                     (fs::path(args->dir) / "index.html").string().c_str());
     });

@@ -3,8 +3,11 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include "common.h"
+#include "progress.h"
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gl_context.h"
@@ -15,7 +18,14 @@ int main(int argc, char** argv) {
     stochtex::installTempFileCleanup();
     CLI::App app{"stochtex: colour-mapped noise vector fields and procedural texture analysis"};
     app.require_subcommand(1);
-    app.fallthrough(false);
+    // --quiet (and --help, --version) may follow the command's name.
+    app.fallthrough(true);
+    app.set_version_flag("--version", "stochtex " STOCHTEX_VERSION);
+    app.add_flag_callback(
+        "--quiet,-q", [] { stochtex::cli::setProgressQuiet(true); },
+        "No progress line (it is drawn only when stderr is a terminal)");
+    // Every option's help shows its default (inherited by the commands).
+    app.option_defaults()->always_capture_default();
     stochtex::cli::registerRender(app);
     stochtex::cli::registerGallery(app);
     stochtex::cli::registerNoise(app);
@@ -31,6 +41,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerView(app);
     stochtex::cli::registerBake(app);
     stochtex::cli::registerBakeImage(app);
+    stochtex::cli::tidyDefaults(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -40,7 +51,10 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "stochtex: error: %s\nRun with --help for usage.\n", e.what());
+        const std::string explained =
+            stochtex::cli::explainParseError(app, std::vector<std::string>(argv + 1, argv + argc));
+        std::fprintf(stderr, "stochtex: error: %s\nRun with --help for usage.\n",
+                     explained.empty() ? e.what() : explained.c_str());
         return 2;
     } catch (const stochtex::InputError& e) {
         std::fprintf(stderr, "stochtex: error: %s\n", stochtex::cli::describeInputError(e).c_str());

@@ -25,9 +25,10 @@ void registerNoise(CLI::App& app) {
     addOutputImageFlag(*cmd, args->output);
     cmd->add_option("--spectrum", args->spectrum, "Also write the log power spectrum (centred) to this image");
     addSeedFlag(*cmd, "--seed", args->seed, "Seed (overrides the spec's)");
-    addBitsFlag(*cmd, args->bits);
+    const CLI::Option* bits = addBitsFlag(*cmd, args->bits);
     addThreadsFlag(*cmd, args->threads);
-    cmd->callback([args] {
+    cmd->callback([args, bits] {
+        checkBitsApply(bits, args->output);
         checkImageOutput(args->output);
         if (!args->spectrum.empty()) checkImageOutput(args->spectrum);
         ThreadLimit limit(args->threads);

@@ -10,6 +10,11 @@ void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHel
                     "--gpu footprints: camera (the view's exact Jacobian, as the CPU) | rasterizer (dFdx/dFdy)");
 }
 
+void refuseUnusedDeviceFlags(const CLI::App& cmd, const DeviceFlags& flags) {
+    for (const char* flag : {"--pipeline", "--derivatives"})
+        refuseWithoutEffect(cmd.get_option_no_throw(flag), flags.gpu, "without --gpu (it sets up the GPU render)");
+}
+
 void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
     if (flags.gpu && !isGpuFilter(options)) throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
 }
@@ -29,6 +34,8 @@ PatternRenderer::PatternRenderer(const Pattern& pattern, const FilterOptions& op
 
 PatternRenderer::~PatternRenderer() = default;
 
-Image PatternRenderer::render(const Camera& camera) { return gpu_ ? gpu_->render(camera) : cpu_->render(camera); }
+Image PatternRenderer::render(const Camera& camera, const Progress& progress) {
+    return gpu_ ? gpu_->render(camera) : cpu_->render(camera, progress);
+}
 
 }  // namespace stochtex::cli

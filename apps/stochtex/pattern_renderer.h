@@ -15,6 +15,8 @@ struct DeviceFlags {
 };
 // --gpu, --pipeline and (withDerivatives) --derivatives.
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHelp, bool withDerivatives);
+// --pipeline and --derivatives refused without --gpu (refuseWithoutEffect).
+void refuseUnusedDeviceFlags(const CLI::App& cmd, const DeviceFlags& flags);
 // InputError if --gpu is asked for a filter the GPU does not implement
 // (exact, reference): callers check before building the pattern.
 void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options);
@@ -24,7 +26,8 @@ public:
     // pattern must outlive the renderer; checks checkDeviceFilter again.
     PatternRenderer(const Pattern& pattern, const FilterOptions& options, const DeviceFlags& flags);
     ~PatternRenderer();
-    Image render(const Camera& camera);
+    // progress: the fraction of rows done (CPU renders; a GPU render is quick).
+    Image render(const Camera& camera, const Progress& progress = {});
     // "CPU" or the OpenGL context's description.
     const std::string& device() const { return device_; }
 

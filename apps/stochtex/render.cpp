@@ -5,6 +5,7 @@
 
 #include "common.h"
 #include "pattern_renderer.h"
+#include "progress.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"
 
@@ -38,12 +39,16 @@ void registerRender(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("--pack8", args->options.pack8,
                   "Store the mean/variance pyramids in 8 bits (paper §5: RGBA8 = E_x, E_y, 16V_x, 16V_y)");
-    addBitsFlag(*cmd, args->bits);
+    const CLI::Option* bits = addBitsFlag(*cmd, args->bits);
     addDeviceFlags(*cmd, args->device,
                    "Render with the GLSL implementation on a headless OpenGL context (--filter none, paper or smooth)",
                    true);
     addThreadsFlag(*cmd, args->threads);
-    cmd->callback([args] {
+    cmd->callback([args, cmd, bits] {
+        refuseUnusedFilterFlags(*cmd, args->options);
+        refuseUnusedCameraFlags(*cmd, args->camera);
+        refuseUnusedDeviceFlags(*cmd, args->device);
+        checkBitsApply(bits, args->output);
         checkImageOutput(args->output);
         const PatternSpec spec = loadPatternSource(args->source, args->options);
         Camera camera = args->camera;
@@ -52,9 +57,12 @@ void registerRender(CLI::App& app) {
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
         checkDeviceFilter(args->device, args->options);  // before the pattern is built
+        ProgressLine progress("render");
+        progress.update(0.0, "building the pattern and its tables");
         const Pattern pattern = Pattern::build(spec);
         PatternRenderer renderer(pattern, args->options, args->device);
-        const Image image = renderer.render(camera);
+        const Image image = renderer.render(camera, progressPart(progress.callback(), 0.0, 1.0, "rendering"));
+        progress.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image, WriteOptions{args->bits});
         std::printf("wrote %s (%dx%d, %s, %s view, filter %s, %s, %.2f s)\n", args->output.c_str(), camera.view.width,

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "common.h"
+#include "progress.h"
 #include "reproduce.h"
 #include "stochtex/core/parallel.h"
 
@@ -19,7 +20,9 @@ void registerReproduce(CLI::App& app) {
     table1Cmd->callback([args] {
         prepareReproduce(*args);
         ThreadLimit limit(args->threads);
-        const std::string md = writeTable1(table1(args->table, printProgress), args->dir);
+        ProgressLine progress("reproduce table1");
+        const std::string md = writeTable1(table1(args->table, progress.callback()), args->dir);
+        progress.finish();
         std::printf("%s\nwrote table1.csv, table1.md and plots to %s\n", md.c_str(), args->dir.c_str());
     });
     auto* figure4Cmd = cmd->add_subcommand("figure4", "Figure 4: reference, exact-statistics and estimated filtering");
@@ -27,8 +30,10 @@ void registerReproduce(CLI::App& app) {
     figure4Cmd->callback([args] {
         prepareReproduce(*args);
         ThreadLimit limit(args->threads);
-        const Figure4Result r = figure4(args->figure4, printProgress);
+        ProgressLine progress("reproduce figure4");
+        const Figure4Result r = figure4(args->figure4, progress.callback());
         writeFigure4(r, args->dir);
+        progress.finish();
         std::printf("%s\nwrote figure4.png, figure4.csv and the images to %s\n", r.table.markdown().c_str(),
                     args->dir.c_str());
     });
@@ -39,7 +44,9 @@ void registerReproduce(CLI::App& app) {
         prepareReproduce(*args);
         ThreadLimit limit(args->threads);
         ensureFolder(args->dir);
-        writeFigures(args->dir, figures7to9(args->sheetSize, printProgress));
+        ProgressLine progress("reproduce figures7-9");
+        writeFigures(args->dir, figures7to9(args->sheetSize, progress.callback()));
+        progress.finish();
         std::printf("wrote figure7.png, figure8.png, figure9.png to %s\n", args->dir.c_str());
     });
     registerReproduceAll(*cmd, args);

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "progress.h"
 #include "reproduce.h"
 #include "stochtex/core/parallel.h"
 
@@ -17,16 +18,19 @@ void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> ar
         const auto start = std::chrono::steady_clock::now();
         auto elapsed = [&] { return int(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()); };
         const std::string& dir = args->dir;
-        const Table1Result t = table1(args->table, printProgress);
+        // Each part's files are written as soon as it is done.
+        ProgressLine progress("reproduce all");
+        const Table1Result t = table1(args->table, progressPart(progress.callback(), 0, 3));
         writeTable1(t, dir + "/table1");
         const int tTable = elapsed();
-        const Figure4Result f4 = figure4(args->figure4, printProgress);
+        const Figure4Result f4 = figure4(args->figure4, progressPart(progress.callback(), 1, 3));
         writeFigure4(f4, dir + "/figure4");
         const int tFigure4 = elapsed();
-        const std::vector<Figure> f79 = figures7to9(args->sheetSize, printProgress);
+        const std::vector<Figure> f79 = figures7to9(args->sheetSize, progressPart(progress.callback(), 2, 3));
         ensureFolder(dir + "/figures7-9");
         writeFigures(dir + "/figures7-9", f79);
         const int total = elapsed();
+        progress.finish();
         std::string tables;
         for (const auto& table : t.tables) tables += table.html();
         const std::string body =

@@ -1,4 +1,5 @@
 // stochtex stability: flicker of a zoom-out sequence, per filter mode.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -6,6 +7,7 @@
 #include <vector>
 
 #include "common.h"
+#include "progress.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/report/frame_sequence.h"
@@ -44,10 +46,18 @@ void registerStability(CLI::App& app) {
     cmd->add_flag("--write-frames", args->writeFrames, "Also write every frame as PNG");
     cmd->add_flag("--video", args->video, "Also write each filter's sequence as <filter>.mp4 (30 fps)");
     addThreadsFlag(*cmd, args->threads);
-    cmd->callback([args] {
+    cmd->callback([args, cmd] {
         StabilityStudyOptions study = args->study;
         for (const std::string& name : args->filters) study.filters.emplace_back(args->options).use(parseFilter(name));
         validateStabilityStudy(study);
+        const auto anyFilter = [&](auto uses) { return std::any_of(study.filters.begin(), study.filters.end(), uses); };
+        refuseWithoutEffect(cmd->get_option_no_throw("--aniso"),
+                            anyFilter([](const FilterOptions& f) { return f.source == StatisticsSource::Estimators; }),
+                            "without paper or smooth in --filters (only their estimators take anisotropic probes)");
+        refuseWithoutEffect(cmd->get_option_no_throw("--reference-samples"), anyFilter([](const FilterOptions& f) {
+                                return f.source == StatisticsSource::Exact || f.source == StatisticsSource::Reference;
+                            }),
+                            "without exact or reference in --filters (only they sample the footprint)");
         // Any filtered mode prefilters the colormap: check it as the first such mode would.
         FilterOptions prefiltered = FilterOptions{}.use(parseFilter("none"));
         for (const FilterOptions& f : study.filters)
@@ -75,7 +85,9 @@ void registerStability(CLI::App& app) {
             };
         std::printf("%-10s %12s %12s   (%d frames, scale %g -> %g, %dx%d)\n", "filter", "mean |dI|", "max |dI|",
                     study.frames, study.from, study.to, study.size, study.size);
-        const StabilityStudyResult r = stabilityStudy(Pattern::build(spec), study, printProgress, writeFrame);
+        ProgressLine progress("stability");
+        const StabilityStudyResult r = stabilityStudy(Pattern::build(spec), study, progress.callback(), writeFrame);
+        progress.finish();
         for (size_t m = 0; m < r.measurements.size(); ++m)
             std::printf("%-10s %12.5f %12.5f\n", args->filters[m].c_str(), r.measurements[m].mean,
                         r.measurements[m].max);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "common.h"
+#include "progress.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/report/frame_sequence.h"
 #include "zoom_flags.h"
@@ -59,13 +60,16 @@ void registerZoom(CLI::App& app) {
         ThreadLimit limit(args->threads);
         // Zoom-texture values are data (thesis eq. 2.1), written as they are.
         FrameSequenceWriter out(args->dir, w, h, args->fps, args->noVideo ? "" : "zoom.mp4", Transfer::Linear);
+        ProgressLine progress("zoom");
         for (int k = 0; k < args->frames; ++k) {
+            progress.update(double(k) / args->frames,
+                            "frame " + std::to_string(k + 1) + "/" + std::to_string(args->frames));
             out.write(source.render(SourceRegion::centred(w, h), frameTime(k), 0));
-            if ((k + 1) % 10 == 0 || k + 1 == args->frames)
-                std::fprintf(stderr, "\r[%d/%d] frames", k + 1, args->frames);
         }
-        std::fprintf(stderr, "\n");
-        if (const std::string mp4 = out.finish(); !mp4.empty()) std::printf("wrote %s\n", mp4.c_str());
+        progress.update(1.0, "finishing the video");
+        const std::string mp4 = out.finish();
+        progress.finish();
+        if (!mp4.empty()) std::printf("wrote %s\n", mp4.c_str());
         if (!isVideoPath(args->dir))
             std::printf("wrote %d frames (%dx%d) to %s\n", args->frames, w, h, args->dir.c_str());
     });

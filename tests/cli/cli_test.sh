@@ -93,7 +93,10 @@ case_gallery() {
 
 # Filtered rendering: every mode, both views.
 case_filter() {
-  for f in none paper smooth exact reference; do
+  for f in none paper smooth; do
+    expect_ok "filter $f" "$out/f-$f.png" -- "$bin" render --preset marble -o "$out/f-$f.png" --size 32 --scale 8 --filter $f
+  done
+  for f in exact reference; do  # the filters that sample the footprint
     expect_ok "filter $f" "$out/f-$f.png" -- "$bin" render --preset marble -o "$out/f-$f.png" --size 32 --scale 8 --filter $f --reference-samples 16
   done
   expect_ok "plane view" "$out/plane.png" -- "$bin" render --preset camouflage -o "$out/plane.png" --size 48 --view plane --tilt 70 --filter smooth --aniso 8
@@ -106,7 +109,7 @@ case_exemplar() {
 }
 
 case_stability() {
-  expect_ok "stability" "$out/stab/stability-frames.csv" -- "$bin" stability --preset marble -o "$out/stab" --frames 3 --size 16 --to 8 --filters none,smooth --reference-samples 8 --write-frames
+  expect_ok "stability" "$out/stab/stability-frames.csv" -- "$bin" stability --preset marble -o "$out/stab" --frames 3 --size 16 --to 8 --filters none,smooth --write-frames
   [ -s "$out/stab/smooth-002.png" ] || fail "stability: frames not written"
   [ "$(wc -l <"$out/stab/stability.csv")" -eq 3 ] || fail "stability.csv: expected a header and 2 rows"
 }
@@ -167,7 +170,10 @@ case_view() {
   local v f
   for v in zoom plane; do
     for f in none smooth; do
-      local flags=(--preset camouflage --view "$v" --filter "$f" --aniso 4 --scale 1.5 --tilt 60 --size 96,64)
+      local flags=(--preset camouflage --view "$v" --filter "$f" --scale 1.5 --size 96,64)
+      # Only where they act (render refuses them elsewhere).
+      [ "$v" = plane ] && flags+=(--tilt 60)
+      [ "$f" = smooth ] && flags+=(--aniso 4)
       expect_ok "view $v $f" "$out/view_${v}_$f.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view "${flags[@]}" --frames 2 --screenshot "$out/view_${v}_$f.png"
       expect_ok "render $v $f" "$out/render_${v}_$f.png" -- "$bin" render "${flags[@]}" -o "$out/render_${v}_$f.png"
       local d
@@ -404,6 +410,82 @@ case_video() {
   expect_ok "stability videos" "$out/st/smooth.mp4" -- "$bin" stability --preset camouflage --frames 4 --size 32 --filters none,smooth --video -o "$out/st"
   [ -s "$out/st/none.mp4" ] || fail "stability: none.mp4 missing"
   expect_bad "no-video with an MP4" "$out/nv.mp4" "--no-video" -- "$bin" zoom --no-video -o "$out/nv.mp4"
+}
+
+# --- discoverability: version, typos, defaults, flags that would do nothing ---
+case_version() {
+  "$bin" --version >"$work/v.txt" 2>&1 || fail "--version exits non-zero"
+  grep -qE '^stochtex [0-9]+\.[0-9]+\.[0-9]+( \(git [^)]+\))?$' "$work/v.txt" || fail "--version prints: $(cat "$work/v.txt")"
+}
+
+case_typos() {
+  expect_bad "mistyped command" "" 'stochtex: error: unknown command "rendr" (did you mean render?)' -- "$bin" rendr --preset marble -o "$out/t.png"
+  expect_bad "mistyped subcommand" "" 'stochtex: error: reproduce: unknown command "tabel1" (did you mean table1?)' -- "$bin" reproduce tabel1 -o "$out/t"
+  expect_bad "mistyped option" "$out/t.png" "stochtex: error: render: unknown option --frobnicat" -- "$bin" render --preset marble -o "$out/t.png" --frobnicat
+  grep -q "did you mean" "$work/err.txt" && fail "--frobnicat is near no option, yet: $(cat "$work/err.txt")"
+  expect_bad "near option" "$out/t.png" "stochtex: error: render: unknown option --anisoo (did you mean --aniso?)" -- "$bin" render --preset marble -o "$out/t.png" --filter smooth --anisoo 4
+  expect_bad "near option with =" "$out/t.png" "unknown option --filtr (did you mean --filter?)" -- "$bin" render --preset marble -o "$out/t.png" --filtr=smooth
+  expect_bad "unknown top-level option" "" "stochtex: error: unknown option --frobnicate" -- "$bin" --frobnicate
+  # Values are not mistaken for commands or options.
+  expect_ok "negative offset and a value like a command" "$out/ok.png" -- "$bin" render --preset marble --size 16 --offset -3,-4 --filter smooth -o "$out/ok.png"
+}
+
+case_help_defaults() {
+  for c in render bake-image stability bake scene view; do
+    "$bin" $c --help >"$work/h.txt" 2>&1 || fail "$c --help exits non-zero"
+    grep -E '^ +--aniso ' "$work/h.txt" | grep -qE '=8( |$)' || fail "$c --help: --aniso does not show the one default 8: $(grep -- --aniso "$work/h.txt")"
+  done
+  "$bin" render --help >"$work/h.txt"
+  for flag in "--tilt" "--fov" "--reference-samples" "--bits" "--filter" "--view"; do
+    grep -E "^ +$flag " "$work/h.txt" | grep -qE '=[^ ]+( |$)' || fail "render --help: $flag shows no default: $(grep -- "$flag" "$work/h.txt")"
+  done
+  "$bin" zoom --help >"$work/h.txt"
+  grep -E '^ +--frames ' "$work/h.txt" | grep -qE '=60( |$)' || fail "zoom --help: --frames shows no default"
+  # Lists read as they are typed; an empty one (the pattern's size) shows nothing.
+  "$bin" scene --help | grep -E '^ +--size ' | grep -qE '=768,512( |$)' || fail "scene --help: --size default: $("$bin" scene --help | grep -- --size)"
+  "$bin" render --help | grep -E '^ +--size ' | grep -q '=' && fail "render --help: --size shows an empty default"
+}
+
+case_no_effect_flags() {
+  expect_bad "aniso unfiltered" "$out/n1.png" "--aniso: has no effect with --filter none" -- "$bin" render --preset marble --aniso 4 -o "$out/n1.png"
+  expect_bad "aniso reference" "$out/n2.png" "--aniso: has no effect with --filter reference" -- "$bin" render --preset marble --filter reference --aniso 4 -o "$out/n2.png"
+  expect_bad "tilt in the zoom view" "$out/n3.png" "--tilt: has no effect in the zoom view" -- "$bin" render --preset marble --tilt 30 -o "$out/n3.png"
+  expect_bad "fov in the zoom view" "$out/n4.png" "--fov: has no effect in the zoom view" -- "$bin" render --preset marble --fov 40 -o "$out/n4.png"
+  expect_bad "bits with EXR" "$out/n5.exr" "--bits: has no effect with an .exr output" -- "$bin" render --preset marble --bits 16 -o "$out/n5.exr"
+  expect_bad "reference samples with smooth" "$out/n6.png" "--reference-samples: has no effect with --filter smooth" -- "$bin" render --preset marble --filter smooth --reference-samples 8 -o "$out/n6.png"
+  expect_bad "estimator unfiltered" "$out/n7.png" "--estimator: has no effect with --filter none" -- "$bin" render --preset marble --estimator deliot-heitz -o "$out/n7.png"
+  expect_bad "pipeline on the CPU" "$out/n8.png" "--pipeline: has no effect without --gpu" -- "$bin" render --preset marble --pipeline compute -o "$out/n8.png"
+  expect_bad "stability aniso" "$out/n9" "--aniso: has no effect without paper or smooth in --filters" -- "$bin" stability --preset marble --filters none,reference --aniso 4 -o "$out/n9"
+  expect_bad "bake-image aniso" "$out/n10.png" "--aniso: has no effect with --filter none" -- "$bin" bake-image --preset marble --filter none --aniso 2 -o "$out/n10.png"
+  expect_bad "scene aniso" "$out/n11.png" "--aniso: has no effect with --filter none" -- "$bin" scene --preset marble --filter none --aniso 2 -o "$out/n11.png"
+  expect_bad "noise bits with EXR" "$out/n12.exr" "--bits: has no effect with an .exr output" -- "$bin" noise '{"type":"spectrum","size":16,"components":[{"shape":"lowpass","cutoff":4}]}' --bits 16 -o "$out/n12.exr"
+  # Where they act, the same flags are accepted.
+  expect_ok "aniso with smooth, tilt in the plane view" "$out/ok.png" -- "$bin" render --preset marble --size 16 --filter smooth --aniso 4 --view plane --tilt 30 --fov 40 -o "$out/ok.png"
+}
+
+# --- progress: a \r line on a terminal only, ended before the report ---
+# drawn FILE: FILE holds a \r that is not a terminal's line end (\r\n).
+drawn() { sed 's/\r$//' "$1" | grep -q $'\r'; }
+
+case_progress() {
+  # Long enough (> 0.5 s) that a terminal gets a progress line.
+  local cmd=("$bin" render --preset marble --size 480 --filter reference --reference-samples 64 --threads 1)
+  "${cmd[@]}" -o "$out/p1.png" >"$work/o.txt" 2>"$work/e.txt" || fail "render: exit $?"
+  [ -s "$work/e.txt" ] && fail "stderr is no terminal, yet: $(cat -A "$work/e.txt")"
+  command -v script >/dev/null || { echo "no script(1): terminal checks skipped"; return; }
+  # script(1) runs the command on a terminal; its stdout and stderr land in tty.txt.
+  script -qec "$(printf '%q ' "${cmd[@]}") -o $out/p2.png" /dev/null >"$work/tty.txt" 2>&1 || fail "render on a terminal: exit $?"
+  drawn "$work/tty.txt" || fail "render on a terminal drew no progress line: $(cat -A "$work/tty.txt")"
+  grep -qE 'render: [0-9]+%  ETA' "$work/tty.txt" || fail "progress line lacks a percentage and ETA: $(cat -A "$work/tty.txt")"
+  # The line is finished (100%, newline) before the report starts a line of its own.
+  grep -qE $'render: 100%  done in [0-9]+s *\r$' "$work/tty.txt" || fail "progress line not finished: $(cat -A "$work/tty.txt")"
+  tr '\r' '\n' <"$work/tty.txt" | grep -q '^wrote ' || fail "report glued to the progress line: $(cat -A "$work/tty.txt")"
+  script -qec "$(printf '%q ' "${cmd[@]}") -o $out/p3.png --quiet" /dev/null >"$work/tty.txt" 2>&1 || fail "render --quiet: exit $?"
+  drawn "$work/tty.txt" && fail "--quiet drew a progress line: $(cat -A "$work/tty.txt")"
+  # --quiet belongs to stochtex: before the command's name too.
+  script -qec "$(printf '%q ' "$bin") -q $(printf '%q ' "${cmd[@]:1}") -o $out/p4.png" /dev/null >"$work/tty.txt" 2>&1 || fail "-q before the command: exit $?"
+  drawn "$work/tty.txt" && fail "-q before the command drew a progress line: $(cat -A "$work/tty.txt")"
+  [ -s "$out/p4.png" ] || fail "-q before the command: p4.png not written"
 }
 
 declare -F "case_$name" >/dev/null || { echo "cli_test.sh: unknown case \"$name\""; exit 2; }

@@ -110,7 +110,7 @@ Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j) 
     return sky_;
 }
 
-Image FilteredPattern::render(const Camera& camera) const {
+Image FilteredPattern::render(const Camera& camera, const Progress& progress) const {
     validateCamera(camera);
     if (source_ == StatisticsSource::Point && camera.kind == Camera::Kind::Zoom) return pattern_.render(camera.view);
     Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
@@ -124,7 +124,7 @@ Image FilteredPattern::render(const Camera& camera) const {
         camera.footprint(0, 0, w, u, v, j);
         shape = footprint(0.0, 0.0, j);
     }
-    parallelRows(camera.view.height, [&](int y0, int y1) {
+    const auto rows = [&](int y0, int y1) {
         for (int py = y0; py < y1; ++py)
             for (int px = 0; px < camera.view.width; ++px) {
                 double u = 0, v = 0;
@@ -136,7 +136,8 @@ Image FilteredPattern::render(const Camera& camera) const {
                 p[1] = c[1];
                 p[2] = c[2];
             }
-    });
+    };
+    parallelRows(camera.view.height, rows, progress);
     return out;
 }
 

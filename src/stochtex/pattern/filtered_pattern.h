@@ -23,6 +23,7 @@
 #include <memory>
 
 #include "stochtex/core/enum_names.h"
+#include "stochtex/core/progress.h"
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/pattern.h"
@@ -89,7 +90,8 @@ public:
     const Rgb& skyColour() const { return sky_; }
     // Filtered colour of one footprint (sky = false gives the average colour).
     Rgb shade(bool onPlane, double u, double v, const Jacobian& j) const;
-    Image render(const Camera& camera) const;
+    // progress: the fraction of rows done (may be empty).
+    Image render(const Camera& camera, const Progress& progress = {}) const;
 
 private:
     Footprint footprint(double u, double v, const Jacobian& j) const;

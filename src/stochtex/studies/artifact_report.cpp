@@ -28,20 +28,19 @@ void validateArtifactReport(const ArtifactReportOptions& options) {
 void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& options, const StudyProgress& progress) {
     validateArtifactReport(options);
     const CorrelationStudyOptions& correlation = options.correlation;
-    const auto report = [&](const std::string& what) {
-        if (progress) progress(what);
-    };
-
-    report("zoom frames and layer scales");
+    // Three parts; the correlation plots (many instances) take most of the time.
+    const Progress zoomPart = progressPart(progress, 0.0, 0.05, "zoom frames and layer scales");
+    const Progress contrastPart = progressPart(progress, 0.05, 0.15, "contrast corrections");
+    if (zoomPart) zoomPart(0.0, "");
     const std::vector<Figure> zoom = slidingStudy(correlation.zoom, correlation.base);
     ensureFolder(dir + "/zoom");
     writeFigures(dir + "/zoom", zoom);
 
-    report("contrast corrections");
+    if (contrastPart) contrastPart(0.0, "");
     const ContrastStudyResult contrast =
         writeZoomContrastStudy(contrastZoom(options), correlation.base, options.contrast, dir + "/contrast");
 
-    const CorrelationStudyResult corr = correlationStudy(correlation, progress);
+    const CorrelationStudyResult corr = correlationStudy(correlation, progressPart(progress, 0.15, 1.0));
     ensureFolder(dir + "/correlation");
     writeFigures(dir + "/correlation", corr.figures);
     writeText(dir + "/correlation", "correlation.csv", corr.table.csv());

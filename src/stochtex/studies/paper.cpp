@@ -93,10 +93,14 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
                         {"sigma_rel", "mean |σ̂ − σ|/σ", ""}, {"mean_mu", "mean μ", ""},
                         {"mean_sigma", "mean σ", ""},     {"values", "values", ""}};
     for (int which = 0; which < 2; ++which) {
-        if (progress) progress(std::string("table1: ") + kTableNoiseNames[which] + " noise (building the 512² examples)");
+        // Steps of one noise: building its examples, then each footprint size.
+        const Progress noise =
+            progressPart(progress, which, 2, std::string("table1: ") + kTableNoiseNames[which] + " noise");
+        const int steps = 1 + int(o.errors.footprints.size());
+        if (noise) noise(0.0, "building the 512² examples");
         const Pattern p = Pattern::build(table1PatternSpec(which, o.seed));
         res.rows[size_t(which)] = measureEstimatorErrors(p.tiledField(), o.errors, [&](int k) {
-            if (progress) progress("  footprint " + std::to_string(k) + "/" + std::to_string(o.errors.footprints.size()));
+            if (noise) noise(double(1 + k) / steps, "footprint " + std::to_string(k) + "/" + std::to_string(steps - 1));
         });
         for (const auto& r : res.rows[size_t(which)])
             res.data.add({which == 0 ? "low" : "high", TableCell::integer(r.footprint), r.estimator,
@@ -198,7 +202,8 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     };
     std::vector<Column> cols;
     for (int s : o.footprints) {
-        if (progress) progress("figure4: footprint " + std::to_string(s) + "² — reference, exact statistics, estimators");
+        const Progress part = progressPart(progress, int(cols.size()), int(o.footprints.size()),
+                                           "figure4: footprint " + std::to_string(s) + "²");
         Camera cam;
         cam.view.width = cam.view.height = o.size;
         cam.view.scale = s;
@@ -206,8 +211,11 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         c.numbers.footprint = s;
         FilterOptions fo;
         fo.referenceMaxSamples = o.referenceSamples;
-        c.reference = FilteredPattern(pattern, fo.use(parseFilter("reference"))).render(cam);
-        c.exact = FilteredPattern(pattern, fo.use(parseFilter("exact"))).render(cam);
+        // The two brute-force renders take nearly all the time, about equally.
+        c.reference = FilteredPattern(pattern, fo.use(parseFilter("reference")))
+                          .render(cam, progressPart(part, 0.0, 0.5, "reference"));
+        c.exact = FilteredPattern(pattern, fo.use(parseFilter("exact")))
+                      .render(cam, progressPart(part, 0.5, 1.0, "exact statistics"));
         fo.source = StatisticsSource::Estimators;
         fo.response = o.response;
         c.estimated = FilteredPattern(pattern, fo).render(cam);
@@ -348,11 +356,12 @@ std::vector<Figure> figures7to9(int size, const StudyProgress& progress) {
     validateFigures7to9(size);
     std::vector<Figure> out;
     for (const auto& f : kFigures) {
-        if (progress) progress(f.title);
+        const Progress part = progressPart(progress, int(out.size()), int(std::size(kFigures)), f.title);
         std::vector<std::vector<Image>> rows(2);
         std::vector<std::vector<std::string>> captions(2);
         const std::vector<PaperFigurePanel> panels = paperFigurePanels(f.number);
         for (size_t i = 0; i < panels.size(); ++i) {
+            if (part) part(double(i) / double(panels.size()), "");
             const PaperFigurePanel& p = panels[i];
             rows[i / 2].push_back(patternSheet(p.pattern, p.spec.scale, size, p.preset).sheet);
             captions[i / 2].push_back(p.caption);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stochtex/analysis/estimator_error.h"
+#include "stochtex/core/progress.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
@@ -17,8 +18,8 @@
 
 namespace stochtex {
 
-// Progress lines for a terminal (may be empty).
-using StudyProgress = std::function<void(const std::string&)>;
+// How far a study is (core/progress.h; may be empty).
+using StudyProgress = Progress;
 
 // The two noises of Table 1 (the paper describes them only as "a low
 // frequency isotropic noise and a high frequency anisotropic noise"):

@@ -36,7 +36,9 @@ StabilityStudyResult stabilityStudy(const Pattern& pattern, const StabilityStudy
     for (size_t m = 0; m < o.filters.size(); ++m) {
         const FilteredPattern filtered(pattern, o.filters[m]);
         const std::string name = filterName(o.filters[m]);
-        if (progress) progress("stability: " + name + ", " + std::to_string(o.frames) + " frames");
+        const Progress part = progressPart(progress, int(m), int(o.filters.size()),
+                                           "stability: " + name + ", " + std::to_string(o.frames) + " frames");
+        if (part) part(0.0, "");
         int k = 0;
         const ZoomStability z = measureZoomStability(
             [&](double s) {
@@ -45,7 +47,7 @@ StabilityStudyResult stabilityStudy(const Pattern& pattern, const StabilityStudy
                 cam.view.scale = s;
                 // Zoom about a fixed texture point: the view centre stays at texel (0, 0).
                 cam.view.offsetU = cam.view.offsetV = -0.5 * o.size * s;
-                Image frame = filtered.render(cam);
+                Image frame = filtered.render(cam, progressPart(part, k, o.frames));
                 if (onFrame) onFrame(m, k, frame);
                 ++k;
                 return frame;

@@ -136,8 +136,10 @@ CorrelationStudyResult correlationStudy(const CorrelationStudyOptions& o, const 
             const ZoomSource source(p, o.base);
             const std::string name = vname + "_n" + std::to_string(n);
             if (progress)
-                progress("[" + std::to_string(++done) + "/" + std::to_string(total) + "] " + name +
-                         ": analytic plots, then " + std::to_string(o.instances) + " instances");
+                progress(double(done) / double(total), "correlation " + name + " (" + std::to_string(done + 1) + "/" +
+                                                           std::to_string(total) + "): analytic plots, then " +
+                                                           std::to_string(o.instances) + " instances");
+            ++done;
             const CorrelationMeasurement m = measureCorrelation(source, {size, o.instances, p.time});
             double maxDiff = 0, offDiagonal = 0;
             const double diff = meanAbs(m.analyticRadial, m.measuredRadial, &maxDiff);
