@@ -28,7 +28,7 @@ void registerNoise(CLI::App& app) {
     addBitsFlag(*cmd, args->bits);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
-        checkImageOutput(args->output);
+        checkImageOutput(args->output, args->bits);
         if (!args->spectrum.empty()) checkImageOutput(args->spectrum);
         ThreadLimit limit(args->threads);
         const JsonArgument json = readJsonArgument(args->spec);

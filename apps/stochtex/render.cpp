@@ -22,7 +22,7 @@ void registerRender(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     args->options.use(parseFilter("none"));  // render shows S itself unless asked
-    auto* cmd = app.add_subcommand("render", "Render a pattern to PNG or EXR, unfiltered, filtered or as the reference");
+    auto* cmd = app.add_subcommand("render", "Render a pattern to PNG, EXR, JPEG or TIFF, unfiltered, filtered or as the reference");
     addPatternSource(*cmd, args->source);
     addViewFlags(*cmd, args->view);
     addOutputImageFlag(*cmd, args->output);
@@ -44,7 +44,7 @@ void registerRender(CLI::App& app) {
                    true);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
-        checkImageOutput(args->output);
+        checkImageOutput(args->output, args->bits);
         const PatternSpec spec = loadPatternSource(args->source, args->options);
         Camera camera = args->camera;
         camera.view = makeView(spec, args->view);

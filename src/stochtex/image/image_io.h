@@ -1,13 +1,16 @@
 #pragma once
 // Reading and writing images through OpenCV imgcodecs.
 //
-// Writing, by extension: .png (8-bit by default, 16-bit on request) and .exr
-// (float32, values written as they are). Writing is atomic (AtomicFile): the
+// Writing, by extension (any case): .png and .tif/.tiff (8-bit by default,
+// 16-bit on request; TIFF LZW-compressed), .jpg/.jpeg (8-bit, quality
+// kJpegQuality) and .exr (float32 or half, values written as they are; the
+// others clamp to [0, 1]). Writing is atomic (AtomicFile): the
 // file is encoded in memory, written to a temporary file beside the target
 // and renamed, so a failure never leaves a partial file under the requested
 // name.
 //
-// Reading, by content: PNG (through libpng), OpenEXR and JPEG (through OpenCV),
+// Reading, by content: PNG (through libpng), OpenEXR and JPEG (through OpenCV;
+// EXR through a private temporary file, OpenCV's decoder reading only files),
 // converted to float in [0,1] (floats as stored), RGB channel order. The
 // size is read from the file's header and checked before anything is
 // decoded, so a small file that declares a huge image costs nothing; every
@@ -21,9 +24,15 @@
 namespace stochtex {
 
 struct WriteOptions {
-    int pngBitDepth = 8;  // 8 or 16
+    int bitDepth = 8;      // PNG and TIFF: 8 or 16; JPEG: 8; EXR: not used
     bool exrHalf = false;  // EXR channels as 16-bit half floats (else 32-bit float)
 };
+
+// The output formats, as a message lists them.
+constexpr const char* kImageOutputFormats = ".png, .exr, .jpg/.jpeg or .tif/.tiff";
+// JPEG quality (OpenCV's 0…100 scale; libjpeg's default is 75): 95 keeps an
+// 8-bit render within a few steps of the PNG's on smooth areas.
+constexpr int kJpegQuality = 95;
 
 // The largest input image: 4096² pixels (the exemplar and colormap limit of
 // docs/PATTERNS.md; 256 MB as RGBA floats) in any shape, e.g. the 256 × 25600
@@ -38,10 +47,15 @@ constexpr long long kMaxImageFileBytes = 512ll << 20;
 // kMaxImageSide.
 Image readImage(const std::string& path);
 
-// Throws InputError for an unsupported extension or an unwritable place.
+// Throws InputError for an unsupported extension, a bit depth the format
+// cannot hold, or an unwritable place.
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
 
 // True if the extension of path is one writeImage accepts.
 bool isSupportedImagePath(const std::string& path);
+// What writeImage checks before writing anything: the extension is one of
+// kImageOutputFormats and the format holds options.bitDepth. InputError
+// naming the path otherwise.
+void checkImageOutputFormat(const std::string& path, const WriteOptions& options = {});
 
 }  // namespace stochtex
