@@ -27,8 +27,10 @@ void registerRender(CLI::App& app) {
     addViewFlags(*cmd, args->view);
     addOutputImageFlag(*cmd, args->output);
     addFilterFlag(*cmd, args->options,
-                  "none (S at pixel centres) | paper (estimators + section-5 table) | smooth (estimators + "
-                  "interpolated table) | exact (brute-force statistics + table) | reference (supersampled S̄)");
+                  "none (S at pixel centres) | paper (estimators + section-5 table: σ ≤ 0.125, below the "
+                  "presets' 1/6, so distant areas drift ~4/255, docs/PATTERNS.md) | smooth (estimators + "
+                  "interpolated table up to σ = 1: no drift) | exact (brute-force statistics + table) | "
+                  "reference (supersampled S̄)");
     addAnisoFlag(*cmd, args->options.aniso);
     addEnumFlag(*cmd, "--estimator", args->options.estimator, kVarianceEstimatorNames, "estimator",
                 "Variance estimator: paper | deliot-heitz (one variance per LOD)");
