@@ -20,7 +20,8 @@ void registerBake(CLI::App& app) {
                                            "stochtex.glsl (vec4 stochtex_sample(vec2 uv)) and a README");
     addPatternSource(*cmd, args->source);
     addOutputFolderFlag(*cmd, args->dir, "Output folder");
-    addFilterFlag(*cmd, args->options, "Table: smooth | paper");
+    addFilterFlag(*cmd, args->options,
+                  "Table: smooth | paper (σ ≤ 0.125: distant areas drift ~4/255 for the presets, docs/PATTERNS.md)");
     addAnisoFlag(*cmd, args->options.aniso);
     cmd->add_option("--table-precision", args->precision,
                     "half (default: half the size, error <= 0.06/255) | float (bit-exact with render --gpu)");

@@ -18,7 +18,8 @@ namespace stochtex::cli {
 namespace fs = std::filesystem;
 
 void addPatternSource(CLI::App& cmd, PatternSource& src) {
-    auto* file = cmd.add_option("pattern,--pattern", src.file, "Pattern JSON file (see docs/PATTERNS.md)");
+    auto* file = cmd.add_option("pattern,--pattern", src.file,
+                                "Pattern: a JSON file or inline JSON ({\"noise_x\":...}; see docs/PATTERNS.md)");
     auto* preset = cmd.add_option("--preset,-p", src.preset, "Embedded preset name (stochtex presets lists them)");
     file->excludes(preset);
     addSeedFlag(cmd, "--seed", src.seed, "Override the pattern seed");
@@ -26,7 +27,13 @@ void addPatternSource(CLI::App& cmd, PatternSource& src) {
 
 PatternSpec loadPatternSource(const PatternSource& src) {
     if (src.file.empty() && src.preset.empty()) throw InputError("give a pattern file or --preset NAME");
-    PatternSpec spec = src.file.empty() ? loadPreset(src.preset) : loadPatternFile(src.file);
+    PatternSpec spec;
+    if (src.file.empty()) {
+        spec = loadPreset(src.preset);
+    } else {
+        const JsonArgument json = readJsonArgument(src.file);  // inline like noise and colormap specs
+        spec = parsePatternSpec(JsonReader(json.json, json.source), json.baseDir);
+    }
     if (src.seed) spec.seed = *src.seed;
     return spec;
 }
@@ -39,7 +46,7 @@ PatternSpec loadPatternSource(const PatternSource& src, const FilterOptions& opt
     try {
         validatePrefilteredResolution(spec.colormap.resolution, spec.colormap.resolution);
     } catch (const InputError& e) {
-        throw InputError((src.file.empty() ? "preset " + src.preset : src.file) +
+        throw InputError((src.file.empty() ? "preset " + src.preset : readJsonArgumentSource(src.file)) +
                          ": /colormap/resolution: " + e.what() + " (--filter " + filterName(options) + ")");
     }
     return spec;
@@ -71,24 +78,26 @@ View makeView(const PatternSpec& spec, const ViewFlags& flags) {
     return v;
 }
 
+std::string readJsonArgumentSource(const std::string& arg) {
+    const size_t first = arg.find_first_not_of(" \t\n");
+    return first != std::string::npos && arg[first] == '{' ? "<inline JSON>" : arg;
+}
+
 JsonArgument readJsonArgument(const std::string& arg) {
     JsonArgument a;
-    const size_t first = arg.find_first_not_of(" \t\n");
-    if (first != std::string::npos && arg[first] == '{') {
-        a.source = "<inline JSON>";
+    a.source = readJsonArgumentSource(arg);
+    if (a.source != arg) {
         a.json = JsonReader::parse(arg, a.source);
         a.baseDir = ".";
     } else {
-        a.source = arg;
         a.json = readJsonFile(arg);
         a.baseDir = fs::path(arg).has_parent_path() ? fs::path(arg).parent_path() : fs::path(".");
     }
     return a;
 }
 
-void checkImageOutput(const std::string& path) {
-    if (!isSupportedImagePath(path))
-        throw InputError(path + ": unsupported output format (use .png or .exr)");
+void checkImageOutput(const std::string& path, int bits) {
+    checkImageOutputFormat(path, WriteOptions{bits});
     const fs::path p(path);
     std::error_code ec;
     const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
@@ -122,7 +131,7 @@ CLI::Option* addSeedFlag(CLI::App& cmd, const std::string& flag, uint32_t& seed,
 }
 
 CLI::Option* addBitsFlag(CLI::App& cmd, int& bits) {
-    return cmd.add_option("--bits", bits, "PNG bit depth: 8 or 16")
+    return cmd.add_option("--bits", bits, "Bits per channel of PNG and TIFF output: 8 or 16 (JPEG: 8)")
         ->check(CLI::Validator(
             [](std::string& s) -> std::string {
                 return s == "8" || s == "16" ? std::string() : "bits must be 8 or 16, got \"" + s + "\"";

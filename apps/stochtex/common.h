@@ -11,6 +11,7 @@
 #include "stochtex/core/enum_names.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_pattern.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
@@ -49,10 +50,13 @@ struct JsonArgument {
     std::filesystem::path baseDir;
 };
 JsonArgument readJsonArgument(const std::string& arg);
+// How messages name the argument: "<inline JSON>" or the file path.
+std::string readJsonArgumentSource(const std::string& arg);
 
-// Fails early (before any work) unless path is a .png/.exr, not a folder, in
+// Fails early (before any work) unless path has an image extension whose
+// format holds `bits` (checkImageOutputFormat), is not a folder, and is in
 // an existing folder that can be written.
-void checkImageOutput(const std::string& path);
+void checkImageOutput(const std::string& path, int bits = 8);
 
 // --seed (or another seed flag): an integer in [0, 4294967295], the range of
 // every seed; anything else is refused with the reason, before conversion.
@@ -177,7 +181,8 @@ std::string describeInputError(const InputError& e);
 // -o,--output FOLDER, required (what: its help text).
 void addOutputFolderFlag(CLI::App& cmd, std::string& dir, const std::string& what = "Output folder");
 // -o,--output IMAGE, required (checkImageOutput checks it before any work).
-void addOutputImageFlag(CLI::App& cmd, std::string& path, const std::string& what = "Output image (.png or .exr)");
+void addOutputImageFlag(CLI::App& cmd, std::string& path,
+                        const std::string& what = std::string("Output image (") + kImageOutputFormats + ")");
 
 // Registration of each command (one file each).
 void registerRender(CLI::App& app);

@@ -29,7 +29,7 @@ void registerNoise(CLI::App& app) {
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args, bits] {
         checkBitsApply(bits, args->output);
-        checkImageOutput(args->output);
+        checkImageOutput(args->output, args->bits);
         if (!args->spectrum.empty()) checkImageOutput(args->spectrum);
         ThreadLimit limit(args->threads);
         const JsonArgument json = readJsonArgument(args->spec);
@@ -37,7 +37,7 @@ void registerNoise(CLI::App& app) {
         if (args->seed) spec.spectrum.seed = *args->seed;
         const Image example = buildExampleImage(spec, json.source);
         // Noise values are data: written as they are, as an exemplar is read.
-        writeImage(args->output, example, WriteOptions{.pngBitDepth = args->bits, .transfer = Transfer::Linear});
+        writeImage(args->output, example, WriteOptions{.bitDepth = args->bits, .transfer = Transfer::Linear});
         const ChannelStats s = channelStats(example);
         std::printf("wrote %s (%dx%d, mean %.4f, std %.4f)\n", args->output.c_str(), example.width(),
                     example.height(), s.mean, s.stddev);

@@ -23,13 +23,15 @@ void registerRender(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     args->options.use(parseFilter("none"));  // render shows S itself unless asked
-    auto* cmd = app.add_subcommand("render", "Render a pattern to PNG or EXR, unfiltered, filtered or as the reference");
+    auto* cmd = app.add_subcommand("render", "Render a pattern to PNG, EXR, JPEG or TIFF, unfiltered, filtered or as the reference");
     addPatternSource(*cmd, args->source);
     addViewFlags(*cmd, args->view);
     addOutputImageFlag(*cmd, args->output);
     addFilterFlag(*cmd, args->options,
-                  "none (S at pixel centres) | paper (estimators + section-5 table) | smooth (estimators + "
-                  "interpolated table) | exact (brute-force statistics + table) | reference (supersampled S̄)");
+                  "none (S at pixel centres) | paper (estimators + section-5 table: σ ≤ 0.125, below the "
+                  "presets' 1/6, so distant areas drift ~4/255, docs/PATTERNS.md) | smooth (estimators + "
+                  "interpolated table up to σ = 1: no drift) | exact (brute-force statistics + table) | "
+                  "reference (supersampled S̄)");
     addAnisoFlag(*cmd, args->options.aniso);
     addEnumFlag(*cmd, "--estimator", args->options.estimator, kVarianceEstimatorNames, "estimator",
                 "Variance estimator: paper | deliot-heitz (one variance per LOD)");
@@ -49,7 +51,7 @@ void registerRender(CLI::App& app) {
         refuseUnusedCameraFlags(*cmd, args->camera);
         refuseUnusedDeviceFlags(*cmd, args->device);
         checkBitsApply(bits, args->output);
-        checkImageOutput(args->output);
+        checkImageOutput(args->output, args->bits);
         const PatternSpec spec = loadPatternSource(args->source, args->options);
         Camera camera = args->camera;
         camera.view = makeView(spec, args->view);

@@ -44,12 +44,6 @@ const ScratchFolder& scratch() {
     return folder;
 }
 
-// Set STOCHTEX_FUZZ_IGNORE_OPENCV_TEMP to fuzz on past the known leftover
-// (tests/fuzz/known/README.md) while it is open.
-bool ignoreLeftovers() {
-    static const bool ignore = std::getenv("STOCHTEX_FUZZ_IGNORE_OPENCV_TEMP") != nullptr;
-    return ignore;
-}
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -73,7 +67,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         (void)buildColormap(colormap);
     });
     const auto left = scratch().leftovers();
-    if (!left.empty() && !ignoreLeftovers()) {
+    if (!left.empty()) {
         std::fprintf(stderr, "fuzz: reading the image left %zu temporary file(s), e.g. %s\n", left.size(),
                      left.front().c_str());
         std::abort();

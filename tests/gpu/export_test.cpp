@@ -211,6 +211,23 @@ TEST(Export, SeparateProgramRendersWhatRenderGpuRenders) {
         exportPattern(p, o, dir.string(), e);
         for (const char* f : {"manifest.json", "stochtex.glsl", "README.md", "table.exr", "stats_x_0.exr"})
             EXPECT_TRUE(fs::exists(dir / f)) << f;
+        // The README's file table names every file written, with its format.
+        const std::string readme = readText(dir / "README.md");
+        const std::string fileTable = readme.substr(readme.find("## Files"));
+        size_t written = 0;
+        for (const auto& entry : fs::directory_iterator(dir)) {
+            const std::string f = entry.path().filename().string();
+            EXPECT_NE(fileTable.find("`" + f + "`"), std::string::npos) << f << " is not in the README's file table";
+            ++written;
+        }
+        // 9 levels per pyramid (256²), no covariance pyramid (the colour response does not read it), 4 others.
+        EXPECT_EQ(written, 22u);
+        // smooth: 10² layers of 256 rows, half floats; paper: 6² layers, floats.
+        const std::string table = half ? "256 × 25600, 3 channels (R, G, B) of 16-bit half float"
+                                       : "256 × 9216, 3 channels (R, G, B) of 32-bit float";
+        EXPECT_NE(fileTable.find("| `table.exr` | OpenEXR, " + table), std::string::npos) << fileTable;
+        EXPECT_NE(readme.find("`stats_x_8.exr` | OpenEXR, 256 × 256, 3 channels (R, G, B) of 32-bit float"),
+                  std::string::npos);
         GpuPattern gpu(p, *ctx, o);
         for (double scale : {1.0, 6.0}) {
             View v;

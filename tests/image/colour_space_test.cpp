@@ -72,7 +72,7 @@ class ColourSpaceFiles : public test::ScratchFolder {};
 TEST_F(ColourSpaceFiles, WritersEncodeIntegerFormatsAndKeepEXRLinear) {
     Image half(2, 2, 3, 0.5f);
     writeImage((dir_ / "c.png").string(), half);
-    writeImage((dir_ / "c16.png").string(), half, WriteOptions{.pngBitDepth = 16});
+    writeImage((dir_ / "c16.png").string(), half, WriteOptions{.bitDepth = 16});
     writeImage((dir_ / "d.png").string(), half, kNoTransfer);
     writeImage((dir_ / "c.exr").string(), half);
     EXPECT_EQ(std::lround(255.0f * readImage((dir_ / "c.png").string()).at(1, 1, 2)), 188);

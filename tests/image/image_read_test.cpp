@@ -180,3 +180,64 @@ TEST_F(ImageRead, PngDecodingAgreesWithOpenCv) {
                 }
     }
 }
+
+namespace {
+
+// An EXR's bytes with one more attribute, a dataWindow of width × 16, just
+// before the end of its header (the `\0` after the last attribute, which
+// precedes the offset table): OpenEXR reads the later one.
+std::string withSecondDataWindow(const std::string& exr, int32_t width) {
+    const std::string last = std::string("screenWindowWidth\0float\0", 24);
+    const size_t at = exr.find(last);
+    EXPECT_NE(at, std::string::npos) << "OpenCV's EXR header has no screenWindowWidth";
+    const size_t end = at + last.size() + 4 + 4;  // the size (4) and the float (4)
+    std::string attribute = std::string("dataWindow\0box2i\0", 17);
+    for (const int32_t v : {16, 0, 0, width - 1, 15})
+        for (int i = 0; i < 4; ++i) attribute += char((uint32_t(v) >> (8 * i)) & 0xff);
+    return exr.substr(0, end) + attribute + exr.substr(end);
+}
+
+// Temporary files OpenCV's decoder names this way; our own reads leave none.
+size_t openCvTemporaries(const fs::path& dir) {
+    size_t n = 0;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().filename().string().rfind("__opencv_temp", 0) == 0 ||
+            e.path().filename().string().find("stochtex-exr-read") != std::string::npos)
+            ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST_F(ImageRead, ExrReadsLeaveNoTemporaryFileWhenTheDecoderRefuses) {
+    // OpenCV's EXR decoder works on files only; imdecode copies the bytes to
+    // a temporary file and leaves it when its own size limit (2^20 a side)
+    // throws. Both places a temporary file can go are watched.
+    const fs::path tmp = dir_ / "tmp";
+    fs::create_directories(tmp);
+    const std::string savedTmp = std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "";
+    setenv("TMPDIR", tmp.c_str(), 1);
+    const size_t inSystemTmp = openCvTemporaries("/tmp");
+
+    Image gray(16, 16, 1);
+    for (size_t i = 0; i < gray.data().size(); ++i) gray.data()[i] = float(i) / 256.0f;
+    writeImage((dir_ / "gray.exr").string(), gray);
+    std::ifstream in(dir_ / "gray.exr", std::ios::binary);
+    const std::string exr((std::istreambuf_iterator<char>(in)), {});
+    // The file itself reads back (through the private file) exactly.
+    EXPECT_EQ(readImage((dir_ / "gray.exr").string()).data(), gray.data());
+
+    // A second dataWindow 2^21 wide: refused from the header, in our words.
+    const std::string twice = writeFile(dir_, "twice.exr", withSecondDataWindow(exr, 1 << 21));
+    EXPECT_NE(failureOf(twice).find("2097152x16 pixels"), std::string::npos);
+    // Pixel data cut off after the header: the decode fails, our file goes.
+    const std::string cut = writeFile(dir_, "cut.exr", exr.substr(0, exr.size() - 600));
+    EXPECT_NE(failureOf(cut).find("corrupt image"), std::string::npos);
+
+    EXPECT_EQ(openCvTemporaries(tmp), 0u);
+    EXPECT_EQ(openCvTemporaries("/tmp"), inSystemTmp);
+    if (savedTmp.empty())
+        unsetenv("TMPDIR");
+    else
+        setenv("TMPDIR", savedTmp.c_str(), 1);
+}

@@ -2,10 +2,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "stochtex/core/error.h"
 #include "stochtex/image/image.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/image/image_stream.h"
 
 using namespace stochtex;
 namespace fs = std::filesystem;
@@ -56,7 +59,7 @@ TEST(ImageIo, Png16KeepsSixteenBits) {
     img.at(1, 0) = 1000.0f / 65535.0f;
     img.at(2, 0) = 0.123456f;
     img.at(3, 0) = 1.0f;
-    writeImage((d / "g.png").string(), img, WriteOptions{.pngBitDepth = 16, .transfer = Transfer::Linear});
+    writeImage((d / "g.png").string(), img, WriteOptions{.bitDepth = 16, .transfer = Transfer::Linear});
     const Image back = readImage((d / "g.png").string());
     ASSERT_EQ(back.channels(), 1);
     for (int x = 0; x < 4; ++x) EXPECT_NEAR(back.at(x, 0), img.at(x, 0), 0.5 / 65535.0 + 1e-7);
@@ -93,7 +96,7 @@ TEST(ImageIo, BadInputsThrowInputErrorNamingThePath) {
         std::ofstream((d / "corrupt.png").string()) << "this is not a png";
     }
     EXPECT_THROW(readImage((d / "corrupt.png").string()), InputError);
-    EXPECT_THROW(writeImage((d / "x.jpg").string(), gradient(4, 4, 3)), InputError);
+    EXPECT_THROW(writeImage((d / "x.gif").string(), gradient(4, 4, 3)), InputError);
     EXPECT_THROW(writeImage((d / "no" / "such" / "dir.png").string(), gradient(4, 4, 3)), InputError);
     fs::remove_all(d);
 }
@@ -110,4 +113,91 @@ TEST(Image, StatsAndConversions) {
     EXPECT_FLOAT_EQ(g.at(1, 0), 1.0f / 3.0f);
     const Image rgb = toRgb(g);
     EXPECT_FLOAT_EQ(rgb.at(1, 0, 2), 1.0f / 3.0f);
+}
+
+TEST(ImageIo, JpegAndTiffAreWrittenByExtension) {
+    const fs::path d = tempDir();
+    const Image img = gradient(32, 16, 3);
+    // TIFF, lossless: 8 bits exact on the grid, 16 bits within half a step.
+    writeImage((d / "a.tif").string(), img);
+    cv::Mat t8 = cv::imread((d / "a.tif").string(), cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(t8.type(), CV_8UC3);
+    // Pixel (1, 0) in BGR order: R = 7, G = 38, B = 69 (gradient's formula).
+    EXPECT_EQ(t8.at<cv::Vec3b>(0, 1), cv::Vec3b(69, 38, 7));
+    writeImage((d / "b.TIFF").string(), img, WriteOptions{16});
+    cv::Mat t16 = cv::imread((d / "b.TIFF").string(), cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(t16.type(), CV_16UC3);
+    EXPECT_EQ(t16.at<cv::Vec3w>(0, 1)[2], 1799);  // 7/255 · 65535 = 1799
+    // JPEG: 8 bits, lossy at quality 95; a smooth gray ramp comes back within
+    // 3 steps per pixel (measured: max 1).
+    Image ramp(64, 64, 1);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) ramp.at(x, y) = float(x + y) / 126.0f;
+    writeImage((d / "c.jpg").string(), ramp);
+    writeImage((d / "d.jpeg").string(), img);
+    const Image back = readImage((d / "c.jpg").string());
+    ASSERT_EQ(back.width(), 64);
+    ASSERT_EQ(back.channels(), 1);
+    for (size_t i = 0; i < ramp.data().size(); ++i) EXPECT_NEAR(back.data()[i], ramp.data()[i], 3.0 / 255);
+    EXPECT_EQ(readImage((d / "d.jpeg").string()).channels(), 3);
+    EXPECT_EQ(filesIn(d), 4u);  // no temporary file left by any encoder
+    fs::remove_all(d);
+}
+
+TEST(ImageIo, UnknownFormatsAndDepthsAreRefusedNamingThePath) {
+    const fs::path d = tempDir();
+    const std::string bmp = (d / "x.bmp").string(), jpg = (d / "x.jpg").string();
+    try {
+        writeImage(bmp, gradient(4, 4, 3));
+        FAIL() << "no exception";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  bmp + ": unsupported output format '.bmp' (use .png, .exr, .jpg/.jpeg or .tif/.tiff)");
+    }
+    try {
+        writeImage(jpg, gradient(4, 4, 3), WriteOptions{16});
+        FAIL() << "no exception";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), jpg + ": JPEG holds 8 bits per channel, got 16");
+    }
+    EXPECT_THROW(checkImageOutputFormat((d / "x.png").string(), WriteOptions{12}), InputError);
+    EXPECT_NO_THROW(checkImageOutputFormat((d / "x.tiff").string(), WriteOptions{16}));
+    EXPECT_FALSE(isSupportedImagePath("a.gif"));
+    EXPECT_TRUE(isSupportedImagePath("a.JPG"));
+    EXPECT_EQ(filesIn(d), 0u);
+    fs::remove_all(d);
+}
+
+TEST(ImageIo, ExrStreamWritesBandsThatOpenCvReadsBackExactly) {
+    const fs::path d = tempDir();
+    // Values outside [0, 1] and negative ones: EXR keeps them (linear float).
+    Image rgb(7, 5, 3);
+    for (size_t i = 0; i < rgb.data().size(); ++i) rgb.data()[i] = -1.25f + 0.173f * float(i);
+    Image top(7, 2, 3), bottom(7, 3, 3);
+    std::copy_n(rgb.data().begin(), top.data().size(), top.data().begin());
+    std::copy_n(rgb.data().begin() + long(top.data().size()), bottom.data().size(), bottom.data().begin());
+    {
+        auto out = openImageStream((d / "s.exr").string(), 7, 5, 3, 8);
+        out->writeRows(top);
+        out->writeRows(bottom);
+        out->finish();
+    }
+    const Image back = readImage((d / "s.exr").string());  // OpenCV's (OpenEXR's) decoder
+    ASSERT_EQ(back.width(), 7);
+    ASSERT_EQ(back.height(), 5);
+    ASSERT_EQ(back.channels(), 3);
+    EXPECT_EQ(back.data(), rgb.data());  // bit-exact: float32 stored as is
+    Image gray(9, 4, 1);
+    for (size_t i = 0; i < gray.data().size(); ++i) gray.data()[i] = 0.01f * float(i * i);
+    ExrStreamWriter g((d / "g.exr").string(), 9, 4, 1);
+    g.writeRows(gray);
+    g.finish();
+    EXPECT_EQ(readImage((d / "g.exr").string()).data(), gray.data());
+    {
+        ExrStreamWriter unfinished((d / "u.exr").string(), 9, 4, 1);
+        unfinished.writeRows(gray);  // never finished: no file under any name
+    }
+    EXPECT_EQ(filesIn(d), 2u);
+    EXPECT_THROW(openImageStream((d / "x.jpg").string(), 4, 4, 3, 8), InputError);
+    fs::remove_all(d);
 }

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/programs.h"
@@ -34,12 +35,41 @@ std::string exportedShaderInclude(ResponseKind response) {
 
 namespace {
 
-void writeStats(const StatsPyramid& p, const std::string& dir, const std::string& stem, nlohmann::json& list) {
+// The table's colour space, which is what stochtex_sample returns: the
+// colormap's values as the pattern gives them, filtered as numbers (no
+// transfer function is applied or undone on the way).
+constexpr const char* kTableColourSpace =
+    "colours as the colormap holds them (hex colours and 8-bit images: sRGB-encoded values), not converted";
+
+// A file the export wrote and what it holds, for the README's file table
+// (which is built from these, so it lists exactly the files written).
+struct WrittenFile {
+    std::string names;  // one name, or a levelled family's names
+    std::string format;
+    std::string content;
+};
+
+// How writeImage stores an EXR: OpenCV writes ZIP-compressed scanlines and
+// names 3 channels B, G, R; the values are data, never colour-managed.
+std::string exrFormat(const Image& image, const WriteOptions& w) {
+    return "OpenEXR, " + std::to_string(image.width()) + " × " + std::to_string(image.height()) + ", " +
+           std::to_string(image.channels()) + " channels (R, G, B) of " +
+           (w.exrHalf ? "16-bit half float" : "32-bit float") + ", ZIP-compressed scanlines";
+}
+
+void writeStats(const StatsPyramid& p, const std::string& dir, const std::string& stem, nlohmann::json& list,
+                const std::string& green, std::vector<WrittenFile>& files) {
+    std::string names, sizes;
     for (int l = 0; l < p.levels(); ++l) {
         const std::string file = stem + "_" + std::to_string(l) + ".exr";
-        writeImage((fs::path(dir) / file).string(), p.interleavedLevel(l, 3));  // EXR has no 2-channel layout
+        const Image level = p.interleavedLevel(l, 3);  // EXR has no 2-channel layout
+        writeImage((fs::path(dir) / file).string(), level);
         list.push_back(file);
+        names += (l ? ", `" : "`") + file + "`";
+        if (l == 0) sizes = exrFormat(level, {});
     }
+    files.push_back({names, sizes + " at level 0, halving per level down to 1 × 1",
+                     "level l of the pyramid: R = mean E_l, G = " + green + ", B = 0 (noise-domain data, linear)"});
 }
 
 // README.md; @BLOCK@, @SIZE@ and @MEMBERS@ are filled from the parameter
@@ -71,6 +101,11 @@ texture. A colormap declared `"transfer": "linear"` (data: heights, roughness)
 is exported as its values, unencoded. The statistics EXRs hold noise values
 (data).
 
+## Files
+
+| file | format | content |
+| --- | --- | --- |
+@FILES@
 ## Parameters: the `@BLOCK@` uniform block
 
 `stochtex.glsl` declares `layout(std140) uniform @BLOCK@ { PatternParams uPattern; };`.
@@ -94,7 +129,9 @@ void main() { colour = stochtex_sample(vUv * 8.0); }
 ```
 )";
 
-std::string readme() {
+std::string readme(const std::vector<WrittenFile>& files) {
+    std::string fileRows;
+    for (const WrittenFile& f : files) fileRows += "| " + f.names + " | " + f.format + " | " + f.content + " |\n";
     std::string members;
     for (const kernel::PatternParamField& f : kernel::kPatternParamFields) {
         const std::string type = f.count > 1 ? std::string(f.type) + "[" + std::to_string(f.count) + "]" : f.type;
@@ -103,7 +140,8 @@ std::string readme() {
     }
     const std::pair<std::string, std::string> fills[] = {{"@BLOCK@", kPatternBlockName},
                                                          {"@SIZE@", std::to_string(sizeof(kernel::PatternParams))},
-                                                         {"@MEMBERS@", members}};
+                                                         {"@MEMBERS@", members},
+                                                         {"@FILES@", fileRows}};
     std::string text = kReadme;
     for (const auto& [key, value] : fills)
         for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
@@ -141,9 +179,12 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     }
     m["average_moments"] = averages;
     m["stats"] = {{"x", nlohmann::json::array()}, {"y", nlohmann::json::array()}, {"covariance", nlohmann::json::array()}};
-    writeStats(est.pyramid(0), dir, "stats_x", m["stats"]["x"]);
-    writeStats(est.pyramid(1), dir, "stats_y", m["stats"]["y"]);
-    if (est.covariancePyramid()) writeStats(*est.covariancePyramid(), dir, "covariance", m["stats"]["covariance"]);
+    std::vector<WrittenFile> files;
+    writeStats(est.pyramid(0), dir, "stats_x", m["stats"]["x"], "variance V_l of N_x", files);
+    writeStats(est.pyramid(1), dir, "stats_y", m["stats"]["y"], "variance V_l of N_y", files);
+    if (est.covariancePyramid())
+        writeStats(*est.covariancePyramid(), dir, "covariance", m["stats"]["covariance"],
+                   "covariance C_l of N_x and N_y (R is E_l of N_x)", files);
     const PrefilteredColormap& table = f.table();
     const int n = int(table.sigmas().size());
     const int rx = f.blendingSpaceColormap().resolutionX(), ry = f.blendingSpaceColormap().resolutionY();
@@ -155,9 +196,17 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     m["table"] = {{"file", "table.exr"}, {"levels", n},
                   {"width", rx},          {"height", ry},
                   {"sigmas", table.sigmas()}, {"precision", exportOptions.halfTable ? "half" : "float"}};
+    files.push_back({"`table.exr`", exrFormat(atlas, w),
+                     "the prefiltered table H̄: " + std::to_string(n * n) + " layers of " + std::to_string(rx) + " × " +
+                         std::to_string(ry) + " RGB colours stacked vertically (T⁻¹ folded in), no alpha; " +
+                         kTableColourSpace});
     writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
+    files.push_back({"`manifest.json`", "JSON (UTF-8)", "parameters and the lists of data files"});
     writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude(options.response.kind));
-    writeFileAtomic((fs::path(dir) / "README.md").string(), readme());
+    files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 source, no `#version` line",
+                     "`vec4 stochtex_sample(vec2 uv)` and what it calls"});
+    files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
+    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files));
 }
 
 }  // namespace stochtex

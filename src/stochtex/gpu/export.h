@@ -13,7 +13,8 @@
 //                        layer kx·n + ky in rows [k·Ry, (k+1)·Ry), row j of
 //                        a layer holding y = j/(Ry − 1) (T⁻¹ already folded in)
 //   stochtex.glsl        the include (no #version line: the host adds it)
-//   README.md            how to integrate it
+//   README.md            how to integrate it, with a table of the files written
+//                        and their formats (built from what was written)
 #include <string>
 
 #include "stochtex/pattern/filtered_pattern.h"

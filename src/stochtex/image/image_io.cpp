@@ -1,6 +1,7 @@
 #include "stochtex/image/image_io.h"
 
 #include <png.h>
+#include <unistd.h>  // close
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -36,6 +40,21 @@ std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
     for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
     return ext;
+}
+
+// What writeImage writes, by the path's extension (any case).
+enum class OutputFormat { Png, Exr, Jpeg, Tiff };
+// imencode's name for each format (it picks the encoder by it).
+constexpr const char* kOutputExtensions[] = {".png", ".exr", ".jpg", ".tif"};
+constexpr int kTiffCompressionLzw = 5;  // libtiff's COMPRESSION_LZW: lossless
+
+std::optional<OutputFormat> outputFormatOf(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    if (ext == ".png") return OutputFormat::Png;
+    if (ext == ".exr") return OutputFormat::Exr;
+    if (ext == ".jpg" || ext == ".jpeg") return OutputFormat::Jpeg;
+    if (ext == ".tif" || ext == ".tiff") return OutputFormat::Tiff;
+    return std::nullopt;
 }
 
 enum class ImageFormat { Png, Exr, Jpeg };
@@ -72,7 +91,11 @@ ImageHeader exrHeader(const std::string& path, const std::vector<uchar>& b) {
         at = size_t(end - b.begin()) + 1;
         return true;
     };
+    // OpenEXR reads a repeated attribute over the earlier one, so the last
+    // dataWindow is the one its decoder uses: checking the first would let a
+    // second, huge one through to OpenCV.
     std::string name, type;
+    std::optional<ImageHeader> found;
     while (readString(name) && !name.empty()) {
         if (!readString(type) || at + 4 > b.size()) break;
         const int32_t size = littleEndian32(&b[at]);
@@ -81,10 +104,11 @@ ImageHeader exrHeader(const std::string& path, const std::vector<uchar>& b) {
         if (name == "dataWindow" && type == "box2i" && size == 16) {
             const long long x0 = littleEndian32(&b[at]), y0 = littleEndian32(&b[at + 4]);
             const long long x1 = littleEndian32(&b[at + 8]), y1 = littleEndian32(&b[at + 12]);
-            return {ImageFormat::Exr, std::max(0ll, x1 - x0 + 1), std::max(0ll, y1 - y0 + 1)};
+            found = ImageHeader{ImageFormat::Exr, std::max(0ll, x1 - x0 + 1), std::max(0ll, y1 - y0 + 1)};
         }
         at += size_t(size);
     }
+    if (found) return *found;
     throw InputError(path + ": corrupt OpenEXR file (no readable dataWindow in its header)");
 }
 
@@ -203,11 +227,49 @@ Image decodePng(const std::string& path, const std::vector<uchar>& bytes) {
     return image;
 }
 
+// OpenCV's EXR decoder reads only files: cv::imdecode copies the bytes to
+// a temporary file of its own and leaves it behind when its size check
+// throws. So the bytes go to a file we own instead (an AtomicFile in the
+// temporary folder: exclusive, random name, removed on return, on an
+// exception and on SIGINT/SIGTERM), which cv::imread reads in place.
+cv::Mat decodeExr(const std::string& path, const std::vector<uchar>& bytes) {
+    std::error_code ec;
+    const fs::path folder = fs::temp_directory_path(ec);
+    if (ec) throw InputError(path + ": no temporary folder to decode OpenEXR through (" + ec.message() + ")");
+    AtomicFile scratch((folder / "stochtex-exr-read").string(), ".exr");
+    scratch.write({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+    ::close(scratch.releaseDescriptor());
+    return cv::imread(scratch.tempPath(), cv::IMREAD_UNCHANGED);
+}  // the destructor removes the file (it is never committed)
+
+// OpenCV's imread/imdecode print their decoders' failures on std::cerr
+// ("imread_(...): can't read data: unknown exception"); the InputError says
+// it in our words instead. Decodes are serialised while std::cerr is muted.
+class MutedCerr {
+public:
+    MutedCerr() : lock_(mutex()), saved_(std::cerr.rdbuf(nullptr)) {}
+    ~MutedCerr() {
+        std::cerr.rdbuf(saved_);
+        std::cerr.clear();  // writing to a null buffer set badbit
+    }
+    MutedCerr(const MutedCerr&) = delete;
+    MutedCerr& operator=(const MutedCerr&) = delete;
+
+private:
+    static std::mutex& mutex() {
+        static std::mutex m;
+        return m;
+    }
+    std::lock_guard<std::mutex> lock_;
+    std::streambuf* saved_;
+};
+
 // EXR and JPEG through OpenCV, once the header passed checkImageSize.
-Image decodeWithOpenCv(const std::string& path, const std::vector<uchar>& bytes) {
+Image decodeWithOpenCv(const std::string& path, const ImageHeader& header, const std::vector<uchar>& bytes) {
     cv::Mat m;
     try {
-        m = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+        const MutedCerr muted;
+        m = header.format == ImageFormat::Exr ? decodeExr(path, bytes) : cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
     } catch (const cv::Exception&) {
         m.release();  // OpenCV's assertion text says nothing to the user; the message below does
     }
@@ -240,9 +302,19 @@ bool holdsFloatValues(const std::string& path) {
     return in.read(magic, 4) && std::memcmp(magic, kExrMagic, 4) == 0;
 }
 
-bool isSupportedImagePath(const std::string& path) {
-    const std::string ext = lowerExtension(path);
-    return ext == ".png" || ext == ".exr";
+bool isSupportedImagePath(const std::string& path) { return outputFormatOf(path).has_value(); }
+
+void checkImageOutputFormat(const std::string& path, const WriteOptions& options) {
+    const std::optional<OutputFormat> format = outputFormatOf(path);
+    if (!format)
+        throw InputError(path + ": unsupported output format '" + lowerExtension(path) + "' (use " +
+                         kImageOutputFormats + ")");
+    const int bits = options.bitDepth;
+    const bool ok = *format == OutputFormat::Exr || bits == 8 || (bits == 16 && *format != OutputFormat::Jpeg);
+    if (!ok)
+        throw InputError(path + (*format == OutputFormat::Jpeg ? ": JPEG holds 8 bits per channel, got "
+                                                               : ": PNG and TIFF hold 8 or 16 bits per channel, got ") +
+                         std::to_string(bits));
 }
 
 Image readImage(const std::string& path) {
@@ -263,7 +335,7 @@ Image readImage(const std::string& path) {
 
     const ImageHeader header = readHeader(path, bytes);
     checkImageSize(path, header);
-    Image image = header.format == ImageFormat::Png ? decodePng(path, bytes) : decodeWithOpenCv(path, bytes);
+    Image image = header.format == ImageFormat::Png ? decodePng(path, bytes) : decodeWithOpenCv(path, header, bytes);
     if (image.width() != header.width || image.height() != header.height)
         throw InputError(path + ": corrupt image (its header and its pixels disagree on the size)");
     for (float v : image.data())
@@ -273,13 +345,13 @@ Image readImage(const std::string& path) {
 
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
     enableExr();
-    const std::string ext = lowerExtension(path);
-    if (ext != ".png" && ext != ".exr")
-        throw InputError(path + ": unsupported output format '" + ext + "' (use .png or .exr)");
+    checkImageOutputFormat(path, options);
+    const OutputFormat format = *outputFormatOf(path);
     if (image.empty()) throw InputError(path + ": refusing to write an empty image");
     // Integer codes are sRGB for colour (colour_space.h); floats stay linear.
-    const Image coded = ext == ".exr" ? Image() : encodeTransfer(image, options.transfer);
-    const Image& pixels = ext == ".exr" ? image : coded;
+    const bool exr = format == OutputFormat::Exr;
+    const Image coded = exr ? Image() : encodeTransfer(image, options.transfer);
+    const Image& pixels = exr ? image : coded;
     const int channels = pixels.channels();
     cv::Mat f(pixels.height(), pixels.width(), CV_32FC(channels), const_cast<float*>(pixels.data().data()));
     cv::Mat bgr;
@@ -292,22 +364,23 @@ void writeImage(const std::string& path, const Image& image, const WriteOptions&
 
     cv::Mat encoded;
     std::vector<int> params;
-    if (ext == ".png") {
-        if (options.pngBitDepth == 16)
-            bgr.convertTo(encoded, CV_16U, 65535.0);  // convertTo rounds and saturates
-        else if (options.pngBitDepth == 8)
-            bgr.convertTo(encoded, CV_8U, 255.0);
-        else
-            throw InputError(path + ": PNG bit depth must be 8 or 16");
-        params = {cv::IMWRITE_PNG_COMPRESSION, 3};
-    } else {
+    if (format == OutputFormat::Exr) {
         encoded = bgr;
         params = {cv::IMWRITE_EXR_TYPE, options.exrHalf ? cv::IMWRITE_EXR_TYPE_HALF : cv::IMWRITE_EXR_TYPE_FLOAT};
+    } else {
+        // convertTo rounds and saturates, so values outside [0, 1] clamp.
+        if (options.bitDepth == 16)
+            bgr.convertTo(encoded, CV_16U, 65535.0);
+        else
+            bgr.convertTo(encoded, CV_8U, 255.0);
+        if (format == OutputFormat::Png) params = {cv::IMWRITE_PNG_COMPRESSION, 3};
+        if (format == OutputFormat::Jpeg) params = {cv::IMWRITE_JPEG_QUALITY, kJpegQuality};
+        if (format == OutputFormat::Tiff) params = {cv::IMWRITE_TIFF_COMPRESSION, kTiffCompressionLzw};
     }
     std::vector<uchar> buffer;
     bool ok = false;
     try {
-        ok = cv::imencode(ext, encoded, buffer, params);
+        ok = cv::imencode(kOutputExtensions[int(format)], encoded, buffer, params);
     } catch (const cv::Exception& e) {
         throw InputError(path + ": cannot encode image (" + e.msg + ")");
     }

@@ -1,15 +1,18 @@
 #pragma once
 // Reading and writing images through OpenCV imgcodecs.
 //
-// Writing, by extension: .png (8-bit by default, 16-bit on request) and .exr
-// (float32, values written as they are). Integer formats go through the
-// options' transfer function (colour_space.h): by default the image is
-// linear-light colour and its PNG codes are sRGB; EXR stays linear. Writing is atomic (AtomicFile): the
+// Writing, by extension (any case): .png and .tif/.tiff (8-bit by default,
+// 16-bit on request; TIFF LZW-compressed), .jpg/.jpeg (8-bit, quality
+// kJpegQuality) and .exr (float32 or half, values written as they are; the
+// others clamp to [0, 1]). Integer formats go through the options' transfer
+// function (colour_space.h): by default the image is linear-light colour and
+// its codes are sRGB; EXR stays linear. Writing is atomic (AtomicFile): the
 // file is encoded in memory, written to a temporary file beside the target
 // and renamed, so a failure never leaves a partial file under the requested
 // name.
 //
-// Reading, by content: PNG (through libpng), OpenEXR and JPEG (through OpenCV),
+// Reading, by content: PNG (through libpng), OpenEXR and JPEG (through OpenCV;
+// EXR through a private temporary file, OpenCV's decoder reading only files),
 // converted to float in [0,1] (floats as stored), RGB channel order. The
 // size is read from the file's header and checked before anything is
 // decoded, so a small file that declares a huge image costs nothing; every
@@ -24,7 +27,7 @@
 namespace stochtex {
 
 struct WriteOptions {
-    int pngBitDepth = 8;  // 8 or 16
+    int bitDepth = 8;      // PNG and TIFF: 8 or 16; JPEG: 8; EXR: not used
     bool exrHalf = false;  // EXR channels as 16-bit half floats (else 32-bit float)
     // Of the integer formats' codes: Srgb encodes linear colour, Linear writes data as it is.
     Transfer transfer = Transfer::Srgb;
@@ -33,6 +36,12 @@ struct WriteOptions {
 // For images whose values are the file's codes already (plots, sheets
 // composed in sRGB codes, data): no transfer function on writing.
 inline const WriteOptions kNoTransfer{.transfer = Transfer::Linear};
+
+// The output formats, as a message lists them.
+constexpr const char* kImageOutputFormats = ".png, .exr, .jpg/.jpeg or .tif/.tiff";
+// JPEG quality (OpenCV's 0…100 scale; libjpeg's default is 75): 95 keeps an
+// 8-bit render within a few steps of the PNG's on smooth areas.
+constexpr int kJpegQuality = 95;
 
 // The largest input image: 4096² pixels (the exemplar and colormap limit of
 // docs/PATTERNS.md; 256 MB as RGBA floats) in any shape, e.g. the 256 × 25600
@@ -47,7 +56,8 @@ constexpr long long kMaxImageFileBytes = 512ll << 20;
 // kMaxImageSide.
 Image readImage(const std::string& path);
 
-// Throws InputError for an unsupported extension or an unwritable place.
+// Throws InputError for an unsupported extension, a bit depth the format
+// cannot hold, or an unwritable place.
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
 
 // True if the file is an OpenEXR image (by its first bytes): its values are
@@ -56,5 +66,9 @@ bool holdsFloatValues(const std::string& path);
 
 // True if the extension of path is one writeImage accepts.
 bool isSupportedImagePath(const std::string& path);
+// What writeImage checks before writing anything: the extension is one of
+// kImageOutputFormats and the format holds options.bitDepth. InputError
+// naming the path otherwise.
+void checkImageOutputFormat(const std::string& path, const WriteOptions& options = {});
 
 }  // namespace stochtex
