@@ -119,12 +119,15 @@ TEST(ImageIo, JpegAndTiffAreWrittenByExtension) {
     const fs::path d = tempDir();
     const Image img = gradient(32, 16, 3);
     // TIFF, lossless: 8 bits exact on the grid, 16 bits within half a step.
-    writeImage((d / "a.tif").string(), img);
+    // The values are written as codes (no transfer); the sRGB encoding is
+    // tested below and in colour_space_test.cpp.
+    const WriteOptions codes{.transfer = Transfer::Linear};
+    writeImage((d / "a.tif").string(), img, codes);
     cv::Mat t8 = cv::imread((d / "a.tif").string(), cv::IMREAD_UNCHANGED);
     ASSERT_EQ(t8.type(), CV_8UC3);
     // Pixel (1, 0) in BGR order: R = 7, G = 38, B = 69 (gradient's formula).
     EXPECT_EQ(t8.at<cv::Vec3b>(0, 1), cv::Vec3b(69, 38, 7));
-    writeImage((d / "b.TIFF").string(), img, WriteOptions{16});
+    writeImage((d / "b.TIFF").string(), img, WriteOptions{.bitDepth = 16, .transfer = Transfer::Linear});
     cv::Mat t16 = cv::imread((d / "b.TIFF").string(), cv::IMREAD_UNCHANGED);
     ASSERT_EQ(t16.type(), CV_16UC3);
     EXPECT_EQ(t16.at<cv::Vec3w>(0, 1)[2], 1799);  // 7/255 · 65535 = 1799
@@ -133,13 +136,18 @@ TEST(ImageIo, JpegAndTiffAreWrittenByExtension) {
     Image ramp(64, 64, 1);
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x) ramp.at(x, y) = float(x + y) / 126.0f;
-    writeImage((d / "c.jpg").string(), ramp);
-    writeImage((d / "d.jpeg").string(), img);
+    writeImage((d / "c.jpg").string(), ramp, codes);
     const Image back = readImage((d / "c.jpg").string());
     ASSERT_EQ(back.width(), 64);
     ASSERT_EQ(back.channels(), 1);
     for (size_t i = 0; i < ramp.data().size(); ++i) EXPECT_NEAR(back.data()[i], ramp.data()[i], 3.0 / 255);
-    EXPECT_EQ(readImage((d / "d.jpeg").string()).channels(), 3);
+    // By default colour is encoded: linear 0.5 is sRGB code 188 in JPEG too.
+    Image grey(16, 16, 3);
+    for (float& v : grey.data()) v = 0.5f;
+    writeImage((d / "d.jpeg").string(), grey);
+    const cv::Mat j = cv::imread((d / "d.jpeg").string(), cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(j.type(), CV_8UC3);
+    EXPECT_NEAR(j.at<cv::Vec3b>(8, 8)[1], 188, 1);
     EXPECT_EQ(filesIn(d), 4u);  // no temporary file left by any encoder
     fs::remove_all(d);
 }
