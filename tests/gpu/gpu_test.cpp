@@ -184,6 +184,36 @@ TEST(Gpu, PlaneViewMatchesTheCpu) {
     expectParity(p, c, "plane 50°, unfiltered", GpuPattern::unfiltered());
 }
 
+// The lean response (a normal map's slope pair, kernel/lean.glsl) at the same
+// tolerances: zoomed (one eye direction) and on the plane (each pixel's
+// own, the kernel's planeViewDirection), the variants of Figure 12.
+TEST(Gpu, LeanResponseMatchesTheCpu) {
+    const Pattern p = Pattern::build(loadPreset("lean-ridges"));
+    FilterOptions o;
+    o.response.kind = ResponseKind::Lean;
+    View v;
+    v.width = 96;
+    v.height = 64;
+    for (double scale : {0.5, 4.0, 32.0}) {
+        v.scale = scale;
+        expectParity(p, v, "lean-ridges lean scale " + formatValue(scale), o);
+    }
+    Camera c;
+    c.kind = Camera::Kind::Plane;
+    c.tiltDeg = 70;
+    c.fovDeg = 50;
+    c.view = View{128, 80, 0.5};
+    o.aniso = 8;
+    expectParity(p, c, "lean-ridges lean plane K = 8", o);
+    o.response.covariance = false;
+    expectParity(p, c, "lean-ridges lean plane K = 8, no covariance", o);
+    o.estimator = VarianceEstimator::DeliotHeitz;
+    expectParity(p, c, "lean-ridges lean plane K = 8, Deliot-Heitz", o);
+    // The GPU shades normal maps filtered only.
+    o.source = StatisticsSource::Point;
+    EXPECT_EQ(test::inputErrorOf([&] { GpuPattern(p, context(), o); }).parameter(), "source");
+}
+
 // The compute kernel runs the same GLSL functions: same tolerance, zoom and
 // plane, filtered (K = 1 and 8) and unfiltered. Skipped below OpenGL 4.3.
 TEST(Gpu, ComputeKernelMatchesTheCpu) {

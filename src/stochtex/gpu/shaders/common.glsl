@@ -4,6 +4,12 @@
 // (kernel/hash.glsl, grid.glsl, lookup.glsl: the same source the CPU
 // compiles); this file only fetches the texels.
 
+// The unit direction from the shaded point towards the eye in the texture
+// frame (x along u, y along v, z up): set per pixel by the view (view.glsl,
+// the kernel's planeViewDirection) and read by responses that shade (the
+// lean response); straight down where nothing sets it.
+vec3 gEyeDirection = vec3(0.0, 0.0, 1.0);
+
 // Bilinear lookup of a periodic W×W grid (texel centres at (i + ½)/W) at
 // fu + offset, fu ∈ [0, 1)² a point of one period and offset ∈ [0, 1)² a
 // tile's offset: the kernel's addressing and blend (kernel/lookup.glsl), as
