@@ -4,11 +4,14 @@
 // (kernel/hash.glsl, grid.glsl, lookup.glsl: the same source the CPU
 // compiles); this file only fetches the texels.
 
-// The unit direction from the shaded point towards the eye in the texture
-// frame (x along u, y along v, z up): set per pixel by the view (view.glsl,
-// the kernel's planeViewDirection) and read by responses that shade (the
-// lean response); straight down where nothing sets it.
+// The unit directions from the shaded point towards the eye and the light
+// in the texture frame (x along u, y along v, z up), read by responses that
+// shade (the lean response). The eye: set per pixel by the view (view.glsl,
+// the kernel's planeViewDirection) or the scene (the surface's tangent
+// frame); straight down where nothing sets it. The light: set by the scene
+// (w = 1); w = 0 leaves the response's own.
 vec3 gEyeDirection = vec3(0.0, 0.0, 1.0);
+vec4 gLightDirection = vec4(0.0);
 
 // Bilinear lookup of a periodic W×W grid (texel centres at (i + ½)/W) at
 // fu + offset, fu ∈ [0, 1)² a point of one period and offset ∈ [0, 1)² a

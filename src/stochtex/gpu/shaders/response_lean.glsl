@@ -4,7 +4,7 @@
 // statistics are those of the slope pair (GpuPattern uploads its pyramids).
 // Without uLeanCovariance (the "no covariance" variant) ĉov is 0, as on the
 // CPU; uPattern.hasCovariance is then 0 too, so C_l is not fetched.
-uniform vec3 uLeanLight;    // unit, towards the light (texture frame)
+uniform vec3 uLeanLight;    // unit, towards the light (texture frame; the scene's own: gLightDirection)
 uniform vec4 uLeanView;     // xyz: a fixed unit direction to the eye; w = 0: the camera's (gEyeDirection)
 uniform vec3 uLeanAlbedo;   // linear
 uniform float uLeanRoughness, uLeanSpecular;
@@ -13,5 +13,6 @@ uniform bool uLeanCovariance;
 vec3 footprintResponse(vec2 mean, vec2 var, float cov) {
     vec3 eye = uLeanView.w != 0.0 ? uLeanView.xyz : gEyeDirection;
     LeanLobe lobe = leanLobe(mean, var, uLeanCovariance ? cov : 0.0, uLeanRoughness);
-    return leanShade(lobe, uLeanLight, eye, uLeanAlbedo, uLeanSpecular);
+    vec3 light = gLightDirection.w != 0.0 ? gLightDirection.xyz : uLeanLight;
+    return leanShade(lobe, light, eye, uLeanAlbedo, uLeanSpecular);
 }
