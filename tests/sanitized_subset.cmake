@@ -19,4 +19,5 @@ set(stochtex_sanitized_test_sources
   pattern/pattern_test.cpp
   pattern/linear_light_test.cpp
   pattern/filtered_pattern_test.cpp
+  pattern/lean_test.cpp
   pattern/camera_test.cpp)

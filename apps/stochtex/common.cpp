@@ -248,6 +248,8 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"from", "--from"},
     {"to", "--to"},
     {"filters", "--filters"},
+    {"roughness", "--roughness"},
+    {"referenceSamples", "--reference-samples"},
 };
 }  // namespace
 

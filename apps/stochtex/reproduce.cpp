@@ -1,6 +1,7 @@
 // stochtex reproduce: the paper's accuracy evidence, one command each —
 // Table 1 (estimator errors), Figure 4 (filtered vs reference images and
-// error maps), Figures 7–9 (colormap layouts, palettes, noise spectra) — and
+// error maps), Figures 7–9 (colormap layouts, palettes, noise spectra),
+// Figure 12 (LEAN-mapped normal maps) — and
 // `all`, which runs them and writes an index.html (reproduce_all.cpp).
 #include <cstdio>
 
@@ -13,7 +14,7 @@ namespace stochtex::cli {
 
 void registerReproduce(CLI::App& app) {
     auto args = std::make_shared<ReproduceArgs>();
-    auto* cmd = app.add_subcommand("reproduce", "Regenerate the paper's evidence: table1, figure4, figures7-9, all");
+    auto* cmd = app.add_subcommand("reproduce", "Regenerate the paper's evidence: table1, figure4, figures7-9, figure12, all");
     cmd->require_subcommand(1);
     auto* table1Cmd = cmd->add_subcommand("table1", "Table 1: mean errors of μ̂ and σ̂ against exact footprint statistics");
     addReproduceFlags(*table1Cmd, *args, true, false);
@@ -48,6 +49,18 @@ void registerReproduce(CLI::App& app) {
         writeFigures(args->dir, figures7to9(args->sheetSize, progress.callback()));
         progress.finish();
         std::printf("wrote figure7.png, figure8.png, figure9.png to %s\n", args->dir.c_str());
+    });
+    auto* figure12Cmd = cmd->add_subcommand("figure12", "Figure 12: LEAN-mapped procedural normal map, four variants");
+    addFigure12Flags(*figure12Cmd, *args);
+    figure12Cmd->callback([args] {
+        prepareFigure12(*args);
+        ThreadLimit limit(args->threads);
+        ProgressLine progress("reproduce figure12");
+        const Figure12Result r = figure12(args->figure12, progress.callback());
+        writeFigure12(r, args->dir);
+        progress.finish();
+        std::printf("%s\nwrote figure12.png, figure12.csv and the images to %s\n", r.table.markdown().c_str(),
+                    args->dir.c_str());
     });
     registerReproduceAll(*cmd, args);
 }

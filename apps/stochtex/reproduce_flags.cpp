@@ -57,3 +57,36 @@ void prepareReproduce(ReproduceArgs& a) {
 }
 
 }  // namespace stochtex::cli
+
+namespace stochtex::cli {
+
+void addFigure12Flags(CLI::App& sub, ReproduceArgs& a) {
+    addOutputFolderFlag(sub, a.dir);
+    addThreadsFlag(sub, a.threads);
+    Figure12Options& f = a.figure12;
+    sub.add_option("--preset", f.name, "Pattern with a normal map")->capture_default_str();
+    sub.add_option_function<int>("--size", [&f](int w) { f.width = w, f.height = w * 5 / 8; },
+                                 "Width of the global view (height: 5/8 of it)")
+        ->default_str(std::to_string(f.width));
+    sub.add_option("--reference-samples", f.referenceSamples, "Max reference samples per axis")->capture_default_str();
+    sub.add_option("--tilt", f.tiltDeg, "Camera tilt from straight down, degrees")->capture_default_str();
+    sub.add_option("--aniso", f.aniso, "Max anisotropic probes K")->capture_default_str();
+    sub.add_option("--roughness", a.roughness, "Base Beckmann roughness (default: the preset's)");
+}
+
+void prepareFigure12(ReproduceArgs& a) {
+    a.figure12.pattern = loadPreset(a.figure12.name);
+    if (a.roughness && a.figure12.pattern.normalMap) {
+        a.figure12.pattern.normalMap->shading.roughness = *a.roughness;
+        a.figure12.pattern.normalMap->shading = validatedShading(a.figure12.pattern.normalMap->shading);
+    }
+    validateFigure12(a.figure12);
+}
+
+void writeFigure12(const Figure12Result& r, const std::string& dir) {
+    ensureFolder(dir);
+    writeFigures(dir, r.figures);
+    writeText(dir, "figure12.csv", r.table.csv());
+}
+
+}  // namespace stochtex::cli

@@ -149,6 +149,8 @@ case_reproduce() {
   expect_ok "reproduce table1" "$out/rep/table1.md" -- "$bin" reproduce table1 -o "$out/rep" --count 20 --footprints 2,16
   grep -q "^high,16,global," "$out/rep/table1.csv" || fail "table1.csv lacks the high/16/global row"
   expect_ok "reproduce figures7-9" "$out/rep/figure9.png" -- "$bin" reproduce figures7-9 -o "$out/rep" --size 64
+  expect_ok "reproduce figure12" "$out/rep/figure12.csv" -- "$bin" reproduce figure12 -o "$out/rep" --size 64 --reference-samples 4
+  grep -q "^deliot-heitz," "$out/rep/figure12.csv" || fail "reproduce figure12: the CSV lacks the Deliot-Heitz row"
   expect_ok "reproduce all" "$out/all/index.html" -- "$bin" reproduce all -o "$out/all" --count 10 --footprints 2,4 --size 32 --reference-samples 8
   grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 4"
 }
@@ -294,6 +296,8 @@ case_bad_study_flags() {
   expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
   expect_bad "figure 4 without the estimators" "$out/rbad3" "--filter: filter must be smooth or paper for figure 4 (the estimators through a table), got exact" -- "$bin" reproduce figure4 -o "$out/rbad3" --filter exact
   expect_bad "reproduce zero count" "$out/rbad2" "--count: count must be in [1, 1e6], got 0" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
+  expect_bad "figure 12 negative roughness" "$out/rbad4" "--roughness: roughness must be in [0.001, 10], got -0.1" -- "$bin" reproduce figure12 -o "$out/rbad4" --roughness -0.1
+  expect_bad "figure 12 without a normal map" "$out/rbad5" "camouflage: figure 12 needs a pattern with a normal_map" -- "$bin" reproduce figure12 -o "$out/rbad5" --preset camouflage
 }
 
 case_bad_gpu_flags() {

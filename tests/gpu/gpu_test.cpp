@@ -184,6 +184,78 @@ TEST(Gpu, PlaneViewMatchesTheCpu) {
     expectParity(p, c, "plane 50°, unfiltered", GpuPattern::unfiltered());
 }
 
+// The lean response (a normal map's slope pair, kernel/lean.glsl) at the same
+// tolerances: zoomed (one eye direction) and on the plane (each pixel's
+// own, the kernel's planeViewDirection), the variants of Figure 12.
+TEST(Gpu, LeanResponseMatchesTheCpu) {
+    const Pattern p = Pattern::build(loadPreset("lean-ridges"));
+    FilterOptions o;
+    o.response.kind = ResponseKind::Lean;
+    View v;
+    v.width = 96;
+    v.height = 64;
+    for (double scale : {0.5, 4.0, 32.0}) {
+        v.scale = scale;
+        expectParity(p, v, "lean-ridges lean scale " + formatValue(scale), o);
+    }
+    Camera c;
+    c.kind = Camera::Kind::Plane;
+    c.tiltDeg = 70;
+    c.fovDeg = 50;
+    c.view = View{128, 80, 0.5};
+    o.aniso = 8;
+    expectParity(p, c, "lean-ridges lean plane K = 8", o);
+    o.response.covariance = false;
+    expectParity(p, c, "lean-ridges lean plane K = 8, no covariance", o);
+    o.estimator = VarianceEstimator::DeliotHeitz;
+    expectParity(p, c, "lean-ridges lean plane K = 8, Deliot-Heitz", o);
+    // The GPU shades normal maps filtered only.
+    o.source = StatisticsSource::Point;
+    EXPECT_EQ(test::inputErrorOf([&] { GpuPattern(p, context(), o); }).parameter(), "source");
+}
+
+// The lean response on the scene's objects (§6.5 on 3D, Fig. 15): the
+// normal map is lit in each surface's tangent frame. The silhouette is the
+// mesh's (the same coverage as a colour pattern's), the highlights are
+// there (the brightest pixel is over 0.3, while the diffuse part alone
+// stays under the albedo, 0.18), and without the covariance the
+// picture changes.
+TEST(Gpu, SceneShadesANormalMapWithTheLeanResponse) {
+    const Pattern lean = Pattern::build(loadPreset("lean-ridges")), colour = Pattern::build(loadPreset("weld"));
+    const int w = 160, h = 120;
+    FilterOptions o;
+    o.response.kind = ResponseKind::Lean;
+    FilterOptions smooth;
+    smooth.use(parseFilter("smooth"));
+    for (const char* name : {"sphere", "torus"}) {
+        const Mesh mesh = makeObject(name);
+        const Image img = renderScene(GpuPattern(lean, context(), o), mesh, SceneCamera{}, w, h, 4.0f);
+        const Image ref = renderScene(GpuPattern(colour, context(), smooth), mesh, SceneCamera{}, w, h, 4.0f);
+        int coveredLean = 0, coveredColour = 0;
+        float brightest = 0;
+        bool finite = true;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                // Exactly the clear colour (a shaded pixel, even a dark one, is not).
+                const auto isBackground = [&](const Image& i) {
+                    return i.at(x, y, 0) == linearFromSrgb(0.08f) && i.at(x, y, 1) == linearFromSrgb(0.09f) &&
+                           i.at(x, y, 2) == linearFromSrgb(0.11f);
+                };
+                coveredLean += !isBackground(img);
+                coveredColour += !isBackground(ref);
+                brightest = std::max(brightest, img.at(x, y, 0));
+                finite = finite && std::isfinite(img.at(x, y, 0));
+            }
+        EXPECT_TRUE(finite) << name;
+        EXPECT_NEAR(coveredLean, coveredColour, 0.01 * w * h) << name;
+        EXPECT_GT(coveredLean, w * h / 10) << name;
+        EXPECT_GT(brightest, 0.3f) << name;  // measured 0.42 (sphere), 0.35 (torus)
+        FilterOptions noCov = o;
+        noCov.response.covariance = false;
+        EXPECT_NE(renderScene(GpuPattern(lean, context(), noCov), mesh, SceneCamera{}, w, h, 4.0f).data(), img.data()) << name;
+    }
+}
+
 // The compute kernel runs the same GLSL functions: same tolerance, zoom and
 // plane, filtered (K = 1 and 8) and unfiltered. Skipped below OpenGL 4.3.
 TEST(Gpu, ComputeKernelMatchesTheCpu) {

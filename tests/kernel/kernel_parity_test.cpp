@@ -24,6 +24,7 @@
 #include "stochtex/kernel/footprint.h"
 #include "stochtex/kernel/grid.h"
 #include "stochtex/kernel/hash.h"
+#include "stochtex/kernel/lean.h"
 #include "stochtex/kernel/lookup.h"
 #include "stochtex/kernel/moments.h"
 #include "stochtex/kernel/sigma_levels.h"
@@ -471,6 +472,50 @@ TEST_F(KernelParity, SrgbTransferPairWithin1e6) {
             if (std::abs(g0[k] - c0[k]) > 1e-6f) return "word 0[" + std::to_string(k) + "]: GPU " + std::to_string(g0[k]) + ", C++ " + std::to_string(c0[k]);
             if (std::abs(g1[k] - c1[k]) > 1e-6f) return "word 1[" + std::to_string(k) + "]: GPU " + std::to_string(g1[k]) + ", C++ " + std::to_string(c1[k]);
         }
+        return "";
+    });
+}
+
+// The LEAN lobe and shading (kernel/lean.glsl): exp2 and sqrt are the GPU's
+// own approximations (a few ulps each), so values agree within 1e-5 of
+// max(1, |value|) (the densities reach ~10³ for narrow lobes; a display code
+// is 3.9e-3). Inputs: lobes with any roughness in [0.02, 0.5], covariances
+// beyond the clamp at ±σ_x σ_y, slopes about the mean, directions above the
+// plane.
+TEST_F(KernelParity, LeanLobeAndShadingWithin1e5) {
+    Random r{12};
+    const auto direction = [&r] {
+        const vec3 d(r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(0.1f, 1.0f));
+        return d / length(d);
+    };
+    std::vector<uvec4> in;
+    for (int i = 0; i < kItems; ++i) {
+        const vec2 var(r.uniform(0.0f, 0.1f), r.uniform(0.0f, 0.1f));
+        const float cov = r.uniform(-1.2f, 1.2f) * std::sqrt(var.x * var.y);
+        const vec2 mean(r.uniform(-0.5f, 0.5f), r.uniform(-0.5f, 0.5f));
+        in.push_back(bits(vec4(mean.x, mean.y, var.x, var.y)));
+        in.push_back(bits(vec4(cov, r.uniform(0.02f, 0.5f), mean.x + r.uniform(-0.5f, 0.5f), mean.y + r.uniform(-0.5f, 0.5f))));
+        const vec3 l = direction(), v = direction();
+        in.push_back(bits(vec4(l.x, l.y, l.z, r.uniform(0.0f, 1.0f))));
+        in.push_back(bits(vec4(v.x, v.y, v.z, r.uniform(0.0f, 1.0f))));
+    }
+    const auto gpu = runOnGpu({"lean"}, R"(
+        vec4 a = wordf(0), b = wordf(1), c = wordf(2), d = wordf(3);
+        LeanLobe lobe = leanLobe(a.xy, a.zw, b.x, b.y);
+        vec3 rgb = leanShade(lobe, c.xyz, d.xyz, vec3(d.w), c.w);
+        emitf(0, vec4(leanSlopeDensity(lobe, b.zw), rgb));)",
+                              4, 1, in);
+    compareItems(gpu, 1, [&](int i) {
+        const vec4 a = floats(in[size_t(4 * i)]), b = floats(in[size_t(4 * i + 1)]), c = floats(in[size_t(4 * i + 2)]),
+                   d = floats(in[size_t(4 * i + 3)]);
+        const LeanLobe lobe = leanLobe(vec2(a.x, a.y), vec2(a.z, a.w), b.x, b.y);
+        const vec3 rgb = leanShade(lobe, vec3(c.x, c.y, c.z), vec3(d.x, d.y, d.z), vec3(d.w), c.w);
+        return std::vector<uvec4>{bits(vec4(leanSlopeDensity(lobe, vec2(b.z, b.w)), rgb.x, rgb.y, rgb.z))};
+    }, [](const uvec4* g, const uvec4* c) -> std::string {
+        const vec4 gv = floats(g[0]), cv = floats(c[0]);
+        for (int k = 0; k < 4; ++k)
+            if (!(std::abs(gv[k] - cv[k]) <= 1e-5f * std::max(1.0f, std::abs(cv[k]))))
+                return "[" + std::to_string(k) + "]: GPU " + std::to_string(gv[k]) + ", C++ " + std::to_string(cv[k]);
         return "";
     });
 }

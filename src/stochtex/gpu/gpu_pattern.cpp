@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/programs.h"
@@ -81,12 +82,16 @@ struct GpuPattern::Impl {
     Derivatives derivatives = Derivatives::Camera;
     gl::Texture stats[2], covariance, table;
     bool shared = false;
+    std::optional<LeanShading> lean;  // the lean response's shading
 };
 
 GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
     : impl_(std::make_unique<Impl>()) {
     if (options.source != StatisticsSource::Point && options.source != StatisticsSource::Estimators)
         throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
+                                                  enumName(kStatisticsSourceNames, options.source));
+    if (options.response.kind == ResponseKind::Lean && options.source != StatisticsSource::Estimators)
+        throw InputError::parameter("source", "must be estimators for the lean response on the GPU, got " +
                                                   enumName(kStatisticsSourceNames, options.source));
     context.makeCurrent();
     Impl& m = *impl_;
@@ -96,21 +101,27 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     m.program = buildProgram(filtered ? "filtered" : "unfiltered", options.response.kind);
     const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
     m.sky = f.skyColour();
+    // The field the response reads: the colour noises, or the normal map's slopes.
+    const TiledField& field = f.field();
+    if (options.response.kind == ResponseKind::Lean) m.lean = pattern.normalMap()->shading;
     kernel::PatternParams p{};
     if (filtered) {
         const FootprintEstimator& est = f.estimator();
         if (est.maxLod() >= kernel::kMaxPyramidLevels)
             throw InputError("the GPU filters examples of at most 32768² texels, got " +
-                             std::to_string(pattern.exampleSize()) + "²");
+                             std::to_string(field.exampleSize()) + "²");
         for (int a = 0; a < 2; ++a) m.stats[a] = pyramidTexture(est.pyramid(a));
         // uHasCovariance: the pyramid exists only for a shared-offset pair
         // whose response reads the covariance (FilteredPattern).
         m.shared = f.response().needsCovariance() && est.covariancePyramid() != nullptr;
         if (m.shared) m.covariance = pyramidTexture(*est.covariancePyramid());
+        // Only the prefiltered colormap has a table (uTable stays a 1×1 layer otherwise).
         const ColormapTable& h = f.blendingSpaceColormap();
-        const int levels = int(f.table().sigmas().size());
-        const Image atlas = f.table().atlas(h.resolutionX(), h.resolutionY());
-        m.table = tableTexture(h.resolutionX(), h.resolutionY(), levels * levels, atlas.data().data());
+        const int levels = m.lean ? 1 : int(f.table().sigmas().size());
+        const float none[3] = {0.0f, 0.0f, 0.0f};
+        m.table = m.lean ? tableTexture(1, 1, 1, none)
+                         : tableTexture(h.resolutionX(), h.resolutionY(), levels * levels,
+                                        f.table().atlas(h.resolutionX(), h.resolutionY()).data().data());
         p.hasCovariance = m.shared;
         p.deliotHeitz = options.estimator == VarianceEstimator::DeliotHeitz;
         p.maxLod = est.maxLod();
@@ -122,16 +133,16 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
                                    m.shared ? est.covariancePyramid()->averageMoment(l) : 0.0f, 0.0f};
     }
     m.vao = gl::newVertexArray();
-    p.meanX = pattern.example(0).mean();
-    p.meanY = pattern.example(1).mean();
-    p.gridDensity = float(pattern.gridDensity());
-    p.invExampleSize = float(1.0 / pattern.exampleSize());
-    p.seedX = pattern.noise(0).offsetSeed();
-    p.seedY = pattern.noise(1).offsetSeed();
-    p.gaussianizedX = pattern.example(0).gaussianized();
-    p.gaussianizedY = pattern.example(1).gaussianized();
+    p.meanX = field.channel(0).example().mean();
+    p.meanY = field.channel(1).example().mean();
+    p.gridDensity = float(field.gridDensity());
+    p.invExampleSize = float(1.0 / field.exampleSize());
+    p.seedX = field.channel(0).offsetSeed();
+    p.seedY = field.channel(1).offsetSeed();
+    p.gaussianizedX = field.channel(0).example().gaussianized();
+    p.gaussianizedY = field.channel(1).example().gaussianized();
     for (int a = 0; a < 2; ++a) {
-        const NoiseExample& ex = pattern.example(a);
+        const NoiseExample& ex = field.channel(a).example();
         const Image& v = ex.grid().values();
         m.examples[a] = floatTexture(v.width(), v.height(), 1, v.data().data());
         const std::vector<float> identity = {0.0f, 1.0f};
@@ -184,6 +195,17 @@ void GpuPattern::bind(unsigned program) const {
     if (block != GL_INVALID_INDEX) glUniformBlockBinding(program, block, kPatternBlockBinding);
     glBindBufferBase(GL_UNIFORM_BUFFER, kPatternBlockBinding, m.parameters.id());
     glUniform3f(glGetUniformLocation(program, "uSky"), m.sky[0], m.sky[1], m.sky[2]);
+    if (m.lean) {
+        const LeanShading& l = *m.lean;
+        glUniform3f(glGetUniformLocation(program, "uLeanLight"), float(l.light[0]), float(l.light[1]), float(l.light[2]));
+        const std::array<double, 3> view = l.view.value_or(std::array<double, 3>{0, 0, 1});
+        glUniform4f(glGetUniformLocation(program, "uLeanView"), float(view[0]), float(view[1]), float(view[2]),
+                    l.view ? 1.0f : 0.0f);
+        glUniform3f(glGetUniformLocation(program, "uLeanAlbedo"), l.albedo[0], l.albedo[1], l.albedo[2]);
+        glUniform1f(glGetUniformLocation(program, "uLeanRoughness"), float(l.roughness));
+        glUniform1f(glGetUniformLocation(program, "uLeanSpecular"), float(l.specular));
+        glUniform1i(glGetUniformLocation(program, "uLeanCovariance"), m.options.response.covariance ? 1 : 0);
+    }
 }
 
 void GpuPattern::setDerivatives(Derivatives d) {

@@ -8,9 +8,10 @@
 namespace stochtex {
 
 const std::string& responseChunk(ResponseKind kind) {
-    static const std::string prefilteredColormap = "response_prefiltered_colormap";
+    static const std::string prefilteredColormap = "response_prefiltered_colormap", lean = "response_lean";
     switch (kind) {
         case ResponseKind::PrefilteredColormap: return prefilteredColormap;
+        case ResponseKind::Lean: return lean;
     }
     throw std::invalid_argument("responseChunk: no shader chunk for response kind " + std::to_string(int(kind)));
 }

@@ -47,6 +47,7 @@ Image renderScene(const GpuPattern& pattern, const Mesh& mesh, const SceneCamera
         glUniformMatrix4fv(uniform("uViewProjection"), 1, GL_FALSE, vp.data());
         glUniform1f(uniform("uTiling"), tiling);
         glUniform1i(uniform("uFiltered"), pattern.filtered());
+        glUniform1i(uniform("uLean"), pattern.responseKind() == ResponseKind::Lean);
         const float l[3] = {0.45f, 0.8f, 0.4f};
         const float n = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
         glUniform3f(uniform("uLight"), l[0] / n, l[1] / n, l[2] / n);

@@ -23,10 +23,17 @@ struct PlaneRay {
     vec2 jy;      // ∂texel/∂p_y
 };
 
+// The ray's normalised image coordinates (n_x, n_y) of pixel position p.
+inline vec2 planeImageCoordinates(vec2 p, vec2 viewSize, float tanHalfFov) {
+    float h2 = 0.5f * viewSize.y;
+    return vec2((p.x - 0.5f * viewSize.x) / h2 * tanHalfFov, -(p.y - h2) / h2 * tanHalfFov);
+}
+
 inline PlaneRay planeRay(vec2 p, vec2 viewSize, float scale, float tanHalfFov, float sinTilt, float cosTilt) {
     float h2 = 0.5f * viewSize.y;
-    float nx = (p.x - 0.5f * viewSize.x) / h2 * tanHalfFov;
-    float ny = -(p.y - h2) / h2 * tanHalfFov;
+    vec2 n = planeImageCoordinates(p, viewSize, tanHalfFov);
+    float nx = n.x;
+    float ny = n.y;
     float q = cosTilt - ny * sinTilt;
     PlaneRay r;
     r.sky = q <= kHorizonSlack;
@@ -39,4 +46,14 @@ inline PlaneRay planeRay(vec2 p, vec2 viewSize, float scale, float tanHalfFov, f
     r.jx = vec2(scale / q, 0.0f);
     r.jy = vec2(-scale * nx * sinTilt / q, scale / q) / q;
     return r;
+}
+
+// The unit direction from the ground point of pixel p towards the eye,
+// −d/|d|, in the texture frame (x along u, y along v, z up): what a shading
+// model of the ground sees as its view direction (kernel/lean.glsl).
+inline vec3 planeViewDirection(vec2 p, vec2 viewSize, float tanHalfFov, float sinTilt, float cosTilt) {
+    vec2 n = planeImageCoordinates(p, viewSize, tanHalfFov);
+    vec3 d = vec3(n.x, -sinTilt - n.y * cosTilt, -cosTilt + n.y * sinTilt);
+    float len = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    return vec3(-d.x / len, -d.y / len, -d.z / len);
 }

@@ -12,6 +12,15 @@ namespace stochtex {
 // the kernel's (kernel/camera.glsl has the derivation), the same function
 // the shaders call, so CPU and GPU choose the same footprints up to float
 // rounding; the view's offset is added here in double.
+std::array<float, 3> Camera::viewDirection(int px, int py) const {
+    if (kind == Kind::Zoom) return {0.0f, 0.0f, 1.0f};
+    const double t = tiltDeg * std::numbers::pi / 180.0;
+    const kernel::vec3 d = kernel::planeViewDirection(
+        kernel::vec2(float(px) + 0.5f, float(py) + 0.5f), kernel::vec2(float(view.width), float(view.height)),
+        float(std::tan(0.5 * fovDeg * std::numbers::pi / 180.0)), float(std::sin(t)), float(std::cos(t)));
+    return {d.x, d.y, d.z};
+}
+
 bool Camera::planeFootprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const {
     const double t = tiltDeg * std::numbers::pi / 180.0;
     const kernel::PlaneRay r = kernel::planeRay(

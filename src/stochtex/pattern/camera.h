@@ -11,6 +11,8 @@
 //           so that at tilt 0 the centre pixel covers `scale` texels. J is the
 //           exact derivative of the ray–plane intersection (camera.cpp).
 //           Pixels whose ray misses the plane are "sky".
+#include <array>
+
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint.h"
 #include "stochtex/pattern/pattern.h"
@@ -34,6 +36,12 @@ struct Camera {
         j = Jacobian{view.scale * invW, 0.0, 0.0, view.scale * invW};
         return true;
     }
+
+    // The unit direction from pixel (px, py)'s ground point towards the eye
+    // in the texture frame (x along u, y along v, z up): (0, 0, 1) for the
+    // zoom (an orthographic view from above), the kernel's
+    // planeViewDirection for the plane.
+    std::array<float, 3> viewDirection(int px, int py) const;
 
 private:
     bool planeFootprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const;

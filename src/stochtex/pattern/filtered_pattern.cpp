@@ -45,6 +45,32 @@ Rgb averageColour(const Pattern& p, const ColormapTable& blendingSpaceColormap) 
     return convolveColormapNumerically(blendingSpaceColormap, mean[0], mean[1], sigma[0], sigma[1]);
 }
 
+// Mean and covariance of the whole field (its examples' own: tiling and
+// blending keeps them), the statistics of an infinite footprint.
+FootprintStats fieldStatistics(const TiledField& f) {
+    double mean[2] = {0, 0}, m2[3] = {0, 0, 0};
+    const auto& x = f.channel(0).example().values().data();
+    const auto& y = f.channel(1).example().values().data();
+    for (size_t i = 0; i < x.size(); ++i) {
+        mean[0] += x[i];
+        mean[1] += y[i];
+    }
+    mean[0] /= double(x.size());
+    mean[1] /= double(x.size());
+    for (size_t i = 0; i < x.size(); ++i) {
+        const double dx = x[i] - mean[0], dy = y[i] - mean[1];
+        m2[0] += dx * dx;
+        m2[1] += dy * dy;
+        m2[2] += dx * dy;
+    }
+    FootprintStats s;
+    s.mean = {float(mean[0]), float(mean[1])};
+    s.varX = float(m2[0] / double(x.size()));
+    s.varY = float(m2[1] / double(x.size()));
+    s.cov = float(m2[2] / double(x.size()));
+    return s;
+}
+
 }  // namespace
 
 NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames, name, "filter"); }
@@ -56,22 +82,40 @@ std::string filterName(const FilterOptions& options) {
 }
 
 FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& options)
-    : pattern_(pattern), options_(options), source_(options.source), colormap_(foldInverseTransforms(pattern)) {
+    : pattern_(pattern),
+      options_(options),
+      source_(options.source),
+      field_(&pattern.tiledField()),
+      colormap_(foldInverseTransforms(pattern)) {
     if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
         throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
                                                  std::to_string(options.aniso));
     if (options.referenceMaxSamples < 1 || options.referenceMaxSamples > 4096)
         throw InputError::parameter("referenceMaxSamples",
                                     "must be in [1, 4096], got " + std::to_string(options.referenceMaxSamples));
-    if (!isPowerOfTwo(pattern.exampleSize()))
+    if (options.response.kind == ResponseKind::Lean) {
+        // Built whatever the source: the lean point response is its own, not H.
+        response_ = makeResponse(options.response, colormap_,
+                                 pattern.normalMap() ? &pattern.normalMap()->shading : nullptr);
+        lean_ = static_cast<const LeanResponse*>(response_.get());
+        field_ = &pattern.normalMap()->slopes;
+    }
+    if (!isPowerOfTwo(field_->exampleSize()))
         throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
-                         std::to_string(pattern.exampleSize()));
-    sky_ = averageColour(pattern, colormap_);
+                         std::to_string(field_->exampleSize()));
+    sky_ = lean_ ? lean_->filtered(fieldStatistics(*field_)) : averageColour(pattern, colormap_);
     if (source_ == StatisticsSource::Point) return;  // nothing to prefilter
-    response_ = makeResponse(options.response, colormap_);
+    if (!response_) response_ = makeResponse(options.response, colormap_);
     // The covariance pyramid only for a shared-offset pair whose response reads it.
-    estimator_ = std::make_unique<FootprintEstimator>(
-        pattern.tiledField(), pattern.sharedOffsets() && response_->needsCovariance(), options.pack8);
+    estimator_ = std::make_unique<FootprintEstimator>(*field_, field_->shared() && response_->needsCovariance(),
+                                                      options.pack8);
+}
+
+Rgb FilteredPattern::point(double u, double v, const Direction& view) const {
+    if (!lean_) return pattern_.evaluate(u, v);
+    const BlendStencil s = triangleGrid(u, v, field_->gridDensity());
+    const float fu = periodFraction(u), fv = periodFraction(v);
+    return lean_->point(field_->channel(0).blend(s, fu, fv), field_->channel(1).blend(s, fu, fv), view);
 }
 
 const PrefilteredColormap& FilteredPattern::table() const {
@@ -84,23 +128,28 @@ Footprint FilteredPattern::footprint(double u, double v, const Jacobian& j) cons
     return makeFootprint(u, v, j, estimator_->exampleSize(), estimator_->maxLod(), options_.aniso);
 }
 
-Rgb FilteredPattern::shade(const Footprint& f) const { return response_->filtered(estimator_->estimate(f, options_.estimator)); }
+Rgb FilteredPattern::response(const FootprintStats& s, const Direction& view) const {
+    return lean_ ? lean_->filtered(s, view) : response_->filtered(s);
+}
 
-Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j) const {
+Rgb FilteredPattern::shade(const Footprint& f, const Direction& view) const {
+    return response(estimator_->estimate(f, options_.estimator), view);
+}
+
+Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j, const Direction& view) const {
     if (!onPlane) return sky_;
     switch (source_) {
-        case StatisticsSource::Point: return pattern_.evaluate(u, v);
-        case StatisticsSource::Estimators: return shade(footprint(u, v, j));
+        case StatisticsSource::Point: return point(u, v, view);
+        case StatisticsSource::Estimators: return shade(footprint(u, v, j), view);
         case StatisticsSource::Exact:
-            return response_->filtered(
-                bruteForceStats(pattern_.tiledField(), u, v, j, options_.referenceMaxSamples));
+            return response(bruteForceStats(*field_, u, v, j, options_.referenceMaxSamples), view);
         case StatisticsSource::Reference: {
-            const int n = bruteForceSamples(j, pattern_.exampleSize(), options_.referenceMaxSamples);
+            const int n = bruteForceSamples(j, field_->exampleSize(), options_.referenceMaxSamples);
             double acc[3] = {0, 0, 0};
             for (int b = 0; b < n; ++b)
                 for (int a = 0; a < n; ++a) {
                     const double s = (a + 0.5) / n - 0.5, t = (b + 0.5) / n - 0.5;
-                    const Rgb c = pattern_.evaluate(u + s * j.dudx + t * j.dudy, v + s * j.dvdx + t * j.dvdy);
+                    const Rgb c = point(u + s * j.dudx + t * j.dudy, v + s * j.dvdx + t * j.dvdy, view);
                     for (int k = 0; k < 3; ++k) acc[k] += c[size_t(k)];
                 }
             const double inv = 1.0 / (double(n) * n);
@@ -112,9 +161,10 @@ Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j) 
 
 Image FilteredPattern::render(const Camera& camera, const Progress& progress) const {
     validateCamera(camera);
-    if (source_ == StatisticsSource::Point && camera.kind == Camera::Kind::Zoom) return pattern_.render(camera.view);
+    if (source_ == StatisticsSource::Point && camera.kind == Camera::Kind::Zoom && !lean_)
+        return pattern_.render(camera.view);
     Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
-    const int w = pattern_.exampleSize();
+    const int w = field_->exampleSize();
     // A zoom has one Jacobian for the whole image: build its footprint once.
     const bool oneFootprint = camera.kind == Camera::Kind::Zoom && source_ == StatisticsSource::Estimators;
     Footprint shape;
@@ -130,7 +180,9 @@ Image FilteredPattern::render(const Camera& camera, const Progress& progress) co
                 double u = 0, v = 0;
                 Jacobian j;
                 const bool onPlane = camera.footprint(px, py, w, u, v, j);
-                const Rgb c = oneFootprint ? shade(shape.translated(u, v)) : shade(onPlane, u, v, j);
+                // Only the lean response reads where the eye is.
+                const Direction view = lean_ ? camera.viewDirection(px, py) : LeanResponse::kFromAbove;
+                const Rgb c = oneFootprint ? shade(shape.translated(u, v), view) : shade(onPlane, u, v, j, view);
                 float* p = out.row(py) + size_t(px) * 3;
                 p[0] = c[0];
                 p[1] = c[1];

@@ -4,6 +4,8 @@
 // triangle grid, and a colormap table H.
 #include <array>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "stochtex/image/image.h"
 #include "stochtex/noise/example.h"
@@ -22,6 +24,16 @@ struct View {
     double offsetU = 0, offsetV = 0;  // in example texels
 };
 
+// The normals of a pattern (its "normal_map"): the slope pair of a height
+// example, a Shared two-channel field (noise/slopes.h), and how it is shaded
+// (the lean response).
+struct NormalMap {
+    TiledField slopes;
+    LeanShading shading;
+};
+NormalMap buildNormalMap(const NormalMapSpec& spec, uint32_t heightSeed, uint32_t offsetSeed, double gridDensity,
+                         const std::string& context);
+
 class Pattern {
 public:
     static Pattern build(const PatternSpec& spec);
@@ -33,6 +45,8 @@ public:
     // The same noises N (the same examples, tile offsets and grid) under
     // another colormap: patterns that differ only in H, as paper Figures 7–8.
     Pattern withColormap(ColormapTable colormap) const;
+    // The same pattern carrying normals too.
+    Pattern withNormalMap(NormalMap normals) const;
 
     // N(uv) in output space (after T⁻¹ for Gaussianized exemplars).
     std::array<float, 2> field(double u, double v) const;
@@ -53,6 +67,8 @@ public:
     int exampleSize() const { return field_.exampleSize(); }
     bool sharedOffsets() const { return field_.shared(); }
     double gridDensity() const { return field_.gridDensity(); }
+    // The normals, or null for a colour-only pattern.
+    const NormalMap* normalMap() const { return normals_ ? &*normals_ : nullptr; }
 
 private:
     struct PixelTiles {
@@ -64,6 +80,7 @@ private:
 
     TiledField field_;
     ColormapTable colormap_;
+    std::optional<NormalMap> normals_;
 };
 
 // Checks a view against the output caps; InputError::parameter naming size,

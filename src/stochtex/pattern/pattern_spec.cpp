@@ -201,9 +201,51 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
     return spec;
 }
 
+LeanShading validatedShading(LeanShading s) {
+    if (!(std::isfinite(s.roughness) && s.roughness >= 1e-3 && s.roughness <= 10))
+        throw InputError::parameter("roughness", "must be in [0.001, 10], got " + formatValue(s.roughness));
+    if (!(std::isfinite(s.specular) && s.specular >= 0 && s.specular <= 1e3))
+        throw InputError::parameter("specular", "must be in [0, 1000], got " + formatValue(s.specular));
+    for (const char* name : {"light", "view"}) {
+        if (std::string(name) == "view" && !s.view) continue;
+        auto& d = std::string(name) == "light" ? s.light : *s.view;
+        const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        // Above the plane, not grazing: the lobe's D(h)/(4 v_z) needs v_z > 0.
+        if (!(std::isfinite(n) && n > 0 && d[2] / n >= 0.01))
+            throw InputError::parameter(name, "must point above the plane (z/|d| >= 0.01), got [" + formatValue(d[0]) +
+                                                  ", " + formatValue(d[1]) + ", " + formatValue(d[2]) + "]");
+        for (double& c : d) c /= n;
+    }
+    return s;
+}
+
+NormalMapSpec parseNormalMapSpec(const JsonReader& r, const fs::path& baseDir) {
+    r.expectObject({"height", "amplitude", "roughness", "light", "view", "albedo", "specular"});
+    NormalMapSpec spec;
+    spec.height = parseNoiseSpec(r.at("height"), baseDir);
+    spec.amplitude = r.number("amplitude", spec.amplitude, 1e-4, 100.0);
+    LeanShading& s = spec.shading;
+    // Any number here: validatedShading states the domain (and is what the library checks too).
+    s.roughness = r.number("roughness", s.roughness, -1e300, 1e300);
+    s.specular = r.number("specular", s.specular, -1e300, 1e300);
+    for (const char* name : {"light", "view"})
+        if (auto d = r.find(name)) {
+            if (d->arraySize() != 3) d->fail("a direction needs 3 components [x, y, z]");
+            if (std::string(name) == "view") s.view.emplace();
+            auto& out = std::string(name) == "light" ? s.light : *s.view;
+            for (size_t k = 0; k < 3; ++k) out[k] = d->at(k).number(-1e3, 1e3);
+        }
+    if (r.has("albedo")) {
+        s.albedo = parseColour(r.at("albedo"));  // sRGB components, as every colour of a pattern file
+        for (float& c : s.albedo) c = linearFromSrgb(c);
+    }
+    r.check([&] { s = validatedShading(s); });
+    return spec;
+}
+
 PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
     r.expectObject({"name", "description", "seed", "size", "scale", "offsets", "grid_density", "noise_x", "noise_y",
-                    "colormap"});
+                    "colormap", "normal_map"});
     PatternSpec spec;
     spec.name = r.string("name", "pattern");
     if (r.has("description")) (void)r.at("description").string();
@@ -240,6 +282,7 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
     // A quadrature pair only stays in quadrature if both share the tiling offsets.
     spec.offsets = r.choice("offsets", quadrature ? OffsetMode::Shared : OffsetMode::Independent, kOffsetModeNames);
     spec.colormap = parseColormapSpec(r.at("colormap"), baseDir);
+    if (auto nm = r.find("normal_map")) spec.normalMap = parseNormalMapSpec(*nm, baseDir);
     return spec;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
 // The pattern file format (JSON) and its validation. A pattern is
 //   { "name", "seed", "size", "scale", "offsets", "grid_density",
-//     "noise_x": NOISE, "noise_y": NOISE | "quadrature", "colormap": COLORMAP }
+//     "noise_x": NOISE, "noise_y": NOISE | "quadrature", "colormap": COLORMAP,
+//     "normal_map": NORMAL_MAP (optional) }
 // documented in full in docs/PATTERNS.md. Every error names the source and
 // the JSON pointer of the value at fault.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -55,6 +57,27 @@ struct ColormapSpec {
     std::optional<Transfer> transfer;
 };
 
+// How a normal map is lit and shaded (kernel/lean.glsl, docs/MATH.md "LEAN
+// mapping"). Directions are in the texture frame (x along u, y along v, z
+// up out of the plane), unit length, z > 0.
+struct LeanShading {
+    double roughness = 0.1;                      // base Beckmann roughness m (> 0)
+    std::array<double, 3> light{0.0, -0.6, 0.8};  // towards the light
+    // Towards the viewer; unset: from the camera (Camera::viewDirection).
+    std::optional<std::array<double, 3>> view;
+    Rgb albedo{0.18f, 0.18f, 0.18f};             // linear light
+    double specular = 0.05;                      // weight of the lobe's reflection
+};
+
+// Pattern JSON "normal_map": a height example (a noise, before any
+// Gaussianization) whose slopes, scaled to an RMS slope `amplitude`, are
+// the normals; shaded by the lean response.
+struct NormalMapSpec {
+    NoiseSpec height;
+    double amplitude = 0.3;  // RMS slope per axis
+    LeanShading shading;
+};
+
 // Pattern JSON "offsets".
 enum class OffsetMode { Independent, Shared };
 inline const EnumNames<OffsetMode> kOffsetModeNames{{"independent", OffsetMode::Independent},
@@ -70,10 +93,15 @@ struct PatternSpec {
     NoiseSpec noise[2];
     bool quadraturePair = false;  // noise_y is "quadrature": the Hilbert pair of noise_x
     ColormapSpec colormap;
+    std::optional<NormalMapSpec> normalMap;  // the pattern also carries normals
 };
 
 NoiseSpec parseNoiseSpec(const JsonReader& r, const std::filesystem::path& baseDir);
 ColormapSpec parseColormapSpec(const JsonReader& r, const std::filesystem::path& baseDir);
+NormalMapSpec parseNormalMapSpec(const JsonReader& r, const std::filesystem::path& baseDir);
+// InputError naming the parameter (roughness, amplitude, specular, light,
+// view) if the shading is unusable; directions are normalised.
+LeanShading validatedShading(LeanShading s);
 PatternSpec parsePatternSpec(const JsonReader& r, const std::filesystem::path& baseDir);
 
 // Reads a file (InputError if missing) and parses it as JSON.

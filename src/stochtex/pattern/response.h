@@ -13,11 +13,13 @@
 // and its case in makeResponse (here), and its GLSL chunk (gpu/programs.cpp,
 // responseChunk), which defines
 // `vec3 footprintResponse(vec2 mean, vec2 var, float cov)`.
+#include <array>
 #include <memory>
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 
 namespace stochtex {
@@ -37,13 +39,16 @@ inline const EnumNames<StatisticsSource> kStatisticsSourceNames{{"point", Statis
 // What turns statistics into a colour.
 enum class ResponseKind {
     PrefilteredColormap,  // H̄(μ, σ_x, σ_y), paper eq. 5–6 (§5)
+    Lean,                 // LEAN-mapped shading of the pattern's slope field (§6.5, kernel/lean.glsl)
 };
-inline const EnumNames<ResponseKind> kResponseKindNames{{"prefiltered-colormap", ResponseKind::PrefilteredColormap}};
+inline const EnumNames<ResponseKind> kResponseKindNames{{"prefiltered-colormap", ResponseKind::PrefilteredColormap},
+                                                        {"lean", ResponseKind::Lean}};
 
 // A response and its parameters, as a value (FilterOptions holds one).
 struct ResponseOptions {
     ResponseKind kind = ResponseKind::PrefilteredColormap;
     PrefilterMode prefilter = PrefilterMode::Smooth;  // PrefilteredColormap: the table's σ levels
+    bool covariance = true;  // Lean: read ĉov of the slopes (false: the "without covariance" variant, ĉov := 0)
     bool operator==(const ResponseOptions&) const = default;
 };
 
@@ -72,8 +77,34 @@ private:
     PrefilteredColormap table_;
 };
 
-// The response that `options` names, over the colormap h (blending space):
-// the one place a response kind is built.
-std::unique_ptr<Response> makeResponse(const ResponseOptions& options, const ColormapTable& h);
+// LEAN mapping (Olano & Baker 2010, paper §6.5): the statistics are those
+// of the slope pair (N_x, N_y) = (∂z/∂x, ∂z/∂y); their mean and 2×2
+// covariance plus the base roughness make an anisotropic Beckmann lobe
+// (kernel/lean.glsl), lit by a directional light. The slopes of one height
+// field are correlated, so the covariance is read (unless the variant
+// without it is asked for).
+class LeanResponse final : public Response {
+public:
+    using Direction = std::array<float, 3>;
+    static constexpr Direction kFromAbove{0.0f, 0.0f, 1.0f};
+    LeanResponse(const LeanShading& shading, bool covariance);
+    // Seen from `camera` (the unit direction towards the eye, used when the
+    // shading fixes no view direction of its own).
+    Rgb filtered(const FootprintStats& s, const Direction& camera) const;
+    Rgb filtered(const FootprintStats& s) const override { return filtered(s, kFromAbove); }
+    bool needsCovariance() const override { return covariance_; }
+    // The unfiltered shading of one slope: the base lobe around it.
+    Rgb point(float slopeX, float slopeY, const Direction& camera = kFromAbove) const;
+
+private:
+    LeanShading shading_;
+    bool covariance_;
+};
+
+// The response that `options` names, over the colormap h (blending space)
+// or, for Lean, the shading of the pattern's normal map (InputError naming
+// `response` without one): the one place a response kind is built.
+std::unique_ptr<Response> makeResponse(const ResponseOptions& options, const ColormapTable& h,
+                                       const LeanShading* shading = nullptr);
 
 }  // namespace stochtex

@@ -174,9 +174,6 @@ void validateFigure4(const Figure4Options& o) {
         if (s < 1) throw InputError("figure 4: footprints must be ≥ 1");
 }
 
-namespace {
-
-// Per pixel ‖a − b‖₂ over RGB, and its mean.
 Image errorMap(const Image& a, const Image& b, double& mean) {
     Image e(a.width(), a.height(), 1, Image::Uninitialized{});
     double s = 0;
@@ -190,8 +187,6 @@ Image errorMap(const Image& a, const Image& b, double& mean) {
     mean = s / double(a.pixelCount());
     return e;
 }
-
-}  // namespace
 
 Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     validateFigure4(o);

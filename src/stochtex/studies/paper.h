@@ -66,6 +66,9 @@ struct Figure4Result {
 };
 Figure4Result figure4(const Figure4Options& options, const StudyProgress& progress = {});
 
+// Per pixel ‖a − b‖₂ over RGB (a 1-channel image), and its mean.
+Image errorMap(const Image& a, const Image& b, double& mean);
+
 // Figures 7–9: each a sheet of four presets (pattern, colormap, where N
 // falls, the two noises), `size` pixels per pattern, [64, 2048]. Figures 7
 // and 8 compare colormaps, so their four panels share one pair of noises

@@ -4,6 +4,15 @@
 // (kernel/hash.glsl, grid.glsl, lookup.glsl: the same source the CPU
 // compiles); this file only fetches the texels.
 
+// The unit directions from the shaded point towards the eye and the light
+// in the texture frame (x along u, y along v, z up), read by responses that
+// shade (the lean response). The eye: set per pixel by the view (view.glsl,
+// the kernel's planeViewDirection) or the scene (the surface's tangent
+// frame); straight down where nothing sets it. The light: set by the scene
+// (w = 1); w = 0 leaves the response's own.
+vec3 gEyeDirection = vec3(0.0, 0.0, 1.0);
+vec4 gLightDirection = vec4(0.0);
+
 // Bilinear lookup of a periodic W×W grid (texel centres at (i + ½)/W) at
 // fu + offset, fu ∈ [0, 1)² a point of one period and offset ∈ [0, 1)² a
 // tile's offset: the kernel's addressing and blend (kernel/lookup.glsl), as

@@ -1,6 +1,8 @@
 // The pattern on a lit object (paper Fig. 15): the mesh's uv scaled by
 // uTiling (example periods across the uv square), filtered with the
 // footprint of the rasterizer's derivatives, under one directional light.
+// With the lean response the pattern's normal map is shaded instead (paper
+// §6.5), lit by the same light.
 in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vUv;
@@ -10,13 +12,37 @@ uniform vec3 uLight;  // direction towards the light, normalised
 uniform vec3 uEye;
 layout(location = 0) out vec4 fragColour;
 
+uniform bool uLean;  // the response shades the pattern's normal map: it is the whole colour
+
+// Light and eye in the surface's tangent frame for the lean response: T
+// along ∂p/∂u (from the screen derivatives of position and uv), the normal
+// n as z, B = n × T, so that the normal map's slopes tilt the surface about
+// its own frame. The eye is kept a little above the tangent plane (the
+// lobe's reflection divides by its z).
+vec3 leanShaded(vec2 uv, vec2 jx, vec2 jy, vec3 n, vec3 v) {
+    vec3 dpx = dFdx(vWorld), dpy = dFdy(vWorld);
+    vec3 t = cross(dpy, n) * jx.x + cross(n, dpx) * jy.x;
+    t = t - n * dot(n, t);
+    t = dot(t, t) > 0.0 ? normalize(t) : normalize(cross(n, vec3(0.6, 0.0, 0.8)));  // degenerate uv (a pole)
+    vec3 b = cross(n, t);
+    vec3 l = vec3(dot(uLight, t), dot(uLight, b), dot(uLight, n));
+    vec3 e = vec3(dot(v, t), dot(v, b), max(dot(v, n), 0.05));
+    gEyeDirection = normalize(e);
+    gLightDirection = vec4(l, 1.0);
+    return l.z > 0.0 ? filteredColour(uv, jx, jy) : vec3(0.0);  // the light is behind the surface
+}
+
 void main() {
     vec2 uv = vUv * uTiling;
     vec2 jx = dFdx(uv), jy = dFdy(uv);
-    vec3 albedo = uFiltered ? filteredColour(uv, jx, jy) : unfilteredColour(uv);
     vec3 n = normalize(vNormal);
     vec3 v = normalize(uEye - vWorld);
     if (dot(n, v) < 0.0) n = -n;  // two-sided: whatever the mesh's winding
+    if (uLean) {
+        fragColour = vec4(leanShaded(uv, jx, jy, n, v), 1.0);
+        return;
+    }
+    vec3 albedo = uFiltered ? filteredColour(uv, jx, jy) : unfilteredColour(uv);
     vec3 h = normalize(uLight + v);
     float diffuse = max(dot(n, uLight), 0.0);
     float specular = pow(max(dot(n, h), 0.0), 48.0) * 0.15;

@@ -22,6 +22,7 @@ vec2 viewUv(vec2 p, out vec2 jx, out vec2 jy, out bool sky) {
         return (uOffset + p * uScale) * uPattern.invExampleSize;
     }
     PlaneRay r = planeRay(p, uViewSize, uScale, uTanHalfFov, uSinTilt, uCosTilt);
+    gEyeDirection = planeViewDirection(p, uViewSize, uTanHalfFov, uSinTilt, uCosTilt);
     sky = r.sky;
     jx = r.jx * uPattern.invExampleSize;
     jy = r.jy * uPattern.invExampleSize;

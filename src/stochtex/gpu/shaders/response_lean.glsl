@@ -1,0 +1,18 @@
+// Response: LEAN mapping of the pattern's normal map (paper §6.5),
+// LeanResponse on the CPU: the kernel's anisotropic Beckmann lobe of the
+// slope statistics (kernel/lean.glsl) lit by a directional light. The
+// statistics are those of the slope pair (GpuPattern uploads its pyramids).
+// Without uLeanCovariance (the "no covariance" variant) ĉov is 0, as on the
+// CPU; uPattern.hasCovariance is then 0 too, so C_l is not fetched.
+uniform vec3 uLeanLight;    // unit, towards the light (texture frame; the scene's own: gLightDirection)
+uniform vec4 uLeanView;     // xyz: a fixed unit direction to the eye; w = 0: the camera's (gEyeDirection)
+uniform vec3 uLeanAlbedo;   // linear
+uniform float uLeanRoughness, uLeanSpecular;
+uniform bool uLeanCovariance;
+
+vec3 footprintResponse(vec2 mean, vec2 var, float cov) {
+    vec3 eye = uLeanView.w != 0.0 ? uLeanView.xyz : gEyeDirection;
+    LeanLobe lobe = leanLobe(mean, var, uLeanCovariance ? cov : 0.0, uLeanRoughness);
+    vec3 light = gLightDirection.w != 0.0 ? gLightDirection.xyz : uLeanLight;
+    return leanShade(lobe, light, eye, uLeanAlbedo, uLeanSpecular);
+}

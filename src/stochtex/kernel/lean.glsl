@@ -1,0 +1,67 @@
+// LEAN mapping of a slope field (Olano & Baker 2010; paper §6.5). Kernel
+// file: GLSL and C++, see kernel/glsl.h.
+//
+// The surface is a height field z(x, y) over the texture plane (x along u,
+// y along v, z up); a micro-facet of slopes s = (∂z/∂x, ∂z/∂y) has the
+// normal (−s_x, −s_y, 1)/√(1 + |s|²). Over a footprint the slopes have a mean
+// b and a 2×2 covariance Σ (paper §4 applied to the slope pair: eq. 9, 14,
+// 18). LEAN models the micro-slopes seen through the footprint as the base
+// Beckmann lobe of roughness m (slopes ~ N(0, m²/2·I)) spread by that
+// distribution: a Gaussian of mean b and covariance Σ + m²/2·I, an
+// anisotropic Beckmann lobe. With a zero footprint (Σ = 0) it is the base
+// lobe around the point's own slope, the unfiltered shading.
+
+struct LeanLobe {
+    vec2 mean;   // mean slope b
+    vec3 sigma;  // Σ_xx, Σ_yy, Σ_xy, the base roughness included
+};
+
+// The lobe of a footprint's slope statistics. The estimated covariance can
+// leave the positive semi-definite cone (|ĉov| > σ̂_x σ̂_y; the estimators
+// are not exact sums): it is clamped back, so that with m > 0 the lobe's
+// covariance stays positive definite.
+inline LeanLobe leanLobe(vec2 mean, vec2 var, float cov, float roughness) {
+    float base = 0.5f * roughness * roughness;
+    float vx = max(var.x, 0.0f);
+    float vy = max(var.y, 0.0f);
+    float bound = sqrt(vx * vy);
+    LeanLobe l;
+    l.mean = mean;
+    l.sigma = vec3(vx + base, vy + base, clamp(cov, -bound, bound));
+    return l;
+}
+
+// The lobe's density of slopes at s (a 2D Gaussian: it integrates to 1
+// over the slope plane). exp(−q/2) is written exp2(−q/2·log2 e).
+inline float leanSlopeDensity(LeanLobe l, vec2 s) {
+    float det = l.sigma.x * l.sigma.y - l.sigma.z * l.sigma.z;
+    float dx = s.x - l.mean.x;
+    float dy = s.y - l.mean.y;
+    float q = (dx * dx * l.sigma.y - 2.0f * dx * dy * l.sigma.z + dy * dy * l.sigma.x) / det;
+    return exp2(-0.72134752f * q) / (6.28318531f * sqrt(det));
+}
+
+// The micro-facet normal distribution of the lobe at the unit half vector
+// h: D(h) = P(s_h)/h_z⁴ with s_h = −(h_x, h_y)/h_z, the slope whose normal
+// is h (the Jacobian from slopes to directions; ∫ D(h) h_z dω = 1).
+inline float leanNdf(LeanLobe l, vec3 h) {
+    vec2 s = vec2(-h.x / h.z, -h.y / h.z);
+    float c2 = h.z * h.z;
+    return leanSlopeDensity(l, s) / (c2 * c2);
+}
+
+// Radiance towards the unit view direction v under a directional light of
+// unit direction l (both with z > 0) and unit irradiance: a Lambertian
+// albedo lit through the mean normal plus the lobe's specular reflection
+// D(h)/(4 v_z) (micro-facet model without Fresnel and shadowing; the
+// geometric normal is z), scaled by `specular`.
+inline vec3 leanShade(LeanLobe lobe, vec3 l, vec3 v, vec3 albedo, float specular) {
+    float hx = l.x + v.x;
+    float hy = l.y + v.y;
+    float hz = l.z + v.z;
+    float hn = sqrt(hx * hx + hy * hy + hz * hz);
+    float d = leanNdf(lobe, vec3(hx / hn, hy / hn, hz / hn));
+    float nn = sqrt(1.0f + lobe.mean.x * lobe.mean.x + lobe.mean.y * lobe.mean.y);
+    float diffuse = max((l.z - lobe.mean.x * l.x - lobe.mean.y * l.y) / nn, 0.0f);
+    return albedo * diffuse + vec3(specular * d / (4.0f * v.z));
+}

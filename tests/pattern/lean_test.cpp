@@ -1,0 +1,266 @@
+// LEAN-mapped procedural normal maps (paper §6.5): the slope pair of a height
+// example, the covariance estimator on it, the Beckmann lobe and the lean
+// response's zero-footprint limit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "stochtex/core/hash.h"
+#include "stochtex/filter/footprint_stats.h"
+#include "stochtex/kernel/lean.h"
+#include "stochtex/noise/slopes.h"
+#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/json_reader.h"
+#include "test_util.h"
+
+namespace stochtex {
+namespace {
+
+using test::example;
+
+// A low-pass height example that the synthesis does not clamp (σ = 0.08
+// about ½: 6σ inside [0, 1]), so that it is the periodic band-limited
+// signal whose derivative the spectrum gives.
+Image smoothHeight(int size, double cutoff, uint32_t seed) {
+    SpectrumSpec s = test::spectrumSpec(SpectrumShape::LowPass, cutoff, 0, 0, seed, size);
+    s.stddev = 0.08;
+    return synthesizeExample(s);
+}
+
+// A pure wave's spectral slopes are its analytic derivative (to float
+// rounding); a band-limited example's are its central differences up to
+// their own error: for a wave of ω radians per texel the central difference
+// is sin ω/ω times the derivative, |1 − sin ω/ω| ≤ ω²/6. A Gaussian
+// low-pass of cut-off fc holds its power below 3·fc, so the RMS difference
+// is bounded by (2π·3fc/W)²/6 of the RMS slope (1.4% for fc = 4, W = 256;
+// measured 0.64%).
+TEST(SpectralSlopes, AreTheDerivativeAndMatchCentralDifferences) {
+    const int n = 64;
+    Image wave(n, n, 1);
+    const double ku = 2 * std::numbers::pi * 3 / n, kv = 2 * std::numbers::pi * 5 / n;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) wave.at(x, y) = float(0.5 + 0.1 * std::sin(ku * x + kv * y));
+    const auto ws = spectralSlopes(wave);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const double c = 0.1 * std::cos(ku * x + kv * y);
+            ASSERT_NEAR(ws[0].at(x, y), c * ku, 2e-6) << x << ", " << y;
+            ASSERT_NEAR(ws[1].at(x, y), c * kv, 2e-6) << x << ", " << y;
+        }
+
+    const int w = 256;
+    const double fc = 4;
+    const Image h = smoothHeight(w, fc, 17);
+    const auto s = spectralSlopes(h);
+    double diff2 = 0, slope2 = 0, mean = 0;
+    for (int y = 0; y < w; ++y)
+        for (int x = 0; x < w; ++x) {
+            const double cx = 0.5 * (h.at((x + 1) % w, y) - h.at((x + w - 1) % w, y));
+            const double cy = 0.5 * (h.at(x, (y + 1) % w) - h.at(x, (y + w - 1) % w));
+            diff2 += (cx - s[0].at(x, y)) * (cx - s[0].at(x, y)) + (cy - s[1].at(x, y)) * (cy - s[1].at(x, y));
+            slope2 += double(s[0].at(x, y)) * s[0].at(x, y) + double(s[1].at(x, y)) * s[1].at(x, y);
+            mean += s[0].at(x, y) + s[1].at(x, y);
+        }
+    const double omega = 2 * std::numbers::pi * 3 * fc / w;
+    EXPECT_LT(std::sqrt(diff2 / slope2), omega * omega / 6);
+    EXPECT_GT(slope2, 0.0);
+    EXPECT_NEAR(mean / (2.0 * w * w), 0.0, 1e-7);  // periodic: slopes average to 0
+}
+
+// The height of the covariance tests: an oriented bi-lobe (ridges across
+// 30°), whose slopes are strongly correlated: a single wave direction
+// (cos 30°, −sin 30°) would make them perfectly anti-correlated, the
+// lobes' angular spread (bandwidth 3 at frequency 10) lessens that.
+TiledField ridgeSlopes(int size) {
+    const Image h = example(SpectrumShape::BiLobe, 10, 3, 30, 23, size);
+    return slopeField(h, 0.3, 41, kDefaultGridDensity);
+}
+
+TEST(SlopeField, IsASharedPairScaledToTheRmsSlope) {
+    const TiledField f = ridgeSlopes(128);
+    EXPECT_TRUE(f.shared());
+    ASSERT_EQ(f.channelCount(), 2);
+    double v[2] = {0, 0}, c = 0;
+    const auto& x = f.channel(0).example().values().data();
+    const auto& y = f.channel(1).example().values().data();
+    for (size_t i = 0; i < x.size(); ++i) {
+        v[0] += double(x[i]) * x[i];
+        v[1] += double(y[i]) * y[i];
+        c += double(x[i]) * y[i];
+    }
+    EXPECT_NEAR(std::sqrt((v[0] + v[1]) / (2.0 * double(x.size()))), 0.3, 1e-5);
+    // Ridges across 30°: the slopes lie along (cos 30°, −sin 30°), so they
+    // are anti-correlated (−1 for a single wave direction).
+    EXPECT_LT(c / std::sqrt(v[0] * v[1]), -0.7);
+    EXPECT_EQ(test::inputErrorOf([&] { slopeField(example(SpectrumShape::LowPass, 4, 0, 0, 1, 32), -1, 1, 1); }).parameter(),
+              "amplitude");
+}
+
+// The covariance estimator (eq. 16–19) against brute-force statistics on
+// random footprints of 1 to 64 texels, isotropic and 4–8:1 anisotropic.
+// Its error bound follows from the variance's: every step of eq. 8–19 is
+// linear in the pyramids (C_l of (x, y) = (V_l(x + y) − V_l(x − y))/4, and
+// N̂N̂' = ((N̂ + N̂')² − (N̂ − N̂')²)/4), so by polarisation
+//   ĉov(x, y) = (σ̂²(x + y) − σ̂²(x − y))/4
+// on the same footprint, and |ĉov − cov| ≤ (|σ̂²(x+y) − σ²(x+y)| +
+// |σ̂²(x−y) − σ²(x−y)|)/4: the covariance is exactly as accurate as the
+// variance estimator (bounded in filter_test, docs/TESTING.md) on the sum
+// and difference fields. Checked per footprint (the identity within 2e-5:
+// float pyramids and sums), plus the mean error, about twice the measured
+// one (2026-12-01: 0.00024, 0.0029, 0.020, 0.017 for 1, 4, 16, 64 texels,
+// against a mean |cov| of 0.0043 and 0.041 at 4 and 16 texels; a relative
+// error of 0.5 at 16 texels, the variance estimator's on this
+// 16-texel-period field, as in the paper's Table 1). Without the C_l
+// pyramid (ĉov_l := 0) the error is larger from 4 texels on (measured
+// 0.0032, 0.030, 0.060).
+TEST(SlopeField, CovarianceEstimateMatchesBruteForceStatistics) {
+    const TiledField f = ridgeSlopes(256);
+    const FootprintEstimator est(f, true), noCov(f, false);
+    // The sum and difference fields, with the same tiles.
+    const int w = est.exampleSize();
+    Image sum(w, w, 1), diff(w, w, 1);
+    for (int y = 0; y < w; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float a = f.channel(0).example().values().at(x, y), b = f.channel(1).example().values().at(x, y);
+            sum.at(x, y) = a + b;
+            diff.at(x, y) = a - b;
+        }
+    const uint32_t seed = f.channel(0).offsetSeed();
+    const TiledField polar({TilingBlendingNoise(std::make_shared<const NoiseExample>(sum), seed),
+                            TilingBlendingNoise(std::make_shared<const NoiseExample>(diff), seed)},
+                           f.gridDensity(), OffsetSharing::Shared);
+    const FootprintEstimator polarEst(polar, false);
+    struct Size {
+        int texels;
+        double bound;  // mean |ĉov − cov| over the footprints
+    };
+    for (const Size size : {Size{1, 0.0005}, Size{4, 0.006}, Size{16, 0.04}, Size{64, 0.035}}) {
+        double err = 0, errNoCov = 0;
+        const int count = 40;
+        for (int i = 0; i < count; ++i) {
+            const UInt3 hsh = pcg3d({uint32_t(i), uint32_t(size.texels), 5u});
+            const double u = unitFloat(hsh.x) * 10, v = unitFloat(hsh.y) * 10;
+            const bool aniso = i % 2 == 1;
+            const double angle = unitFloat(hsh.z) * 3.14159, ratio = aniso ? 4.0 + 4.0 * unitFloat(hsh.x ^ hsh.y) : 1.0;
+            Jacobian j;
+            j.dudx = size.texels * std::cos(angle) / w;
+            j.dvdx = size.texels * std::sin(angle) / w;
+            j.dudy = -size.texels / ratio * std::sin(angle) / w;
+            j.dvdy = size.texels / ratio * std::cos(angle) / w;
+            const Footprint fp = makeFootprint(u, v, j, w, est.maxLod(), aniso ? 16 : 1);
+            const FootprintStats exact = bruteForceStats(f, u, v, j, 256), e = est.estimate(fp);
+            const FootprintStats pe = polarEst.estimate(fp), px = bruteForceStats(polar, u, v, j, 256);
+            EXPECT_NEAR(e.cov, (pe.varX - pe.varY) / 4, 2e-5) << size.texels << " texels, footprint " << i;
+            const double bound = (std::abs(pe.varX - px.varX) + std::abs(pe.varY - px.varY)) / 4;
+            EXPECT_LE(std::abs(e.cov - exact.cov), bound + 4e-5) << size.texels << " texels, footprint " << i;
+            err += std::abs(e.cov - exact.cov);
+            errNoCov += std::abs(noCov.estimate(fp).cov - exact.cov);
+        }
+        err /= count;
+        errNoCov /= count;
+        EXPECT_LT(err, size.bound) << size.texels << " texels";
+        if (size.texels > 1) EXPECT_LT(err, errNoCov) << size.texels << " texels";
+    }
+}
+
+// The lobe is a probability density of slopes: it integrates to 1 over
+// the slope plane (midpoint rule on ±10 standard deviations, 600² cells:
+// error < 1e-4), and its normal distribution D(h) = P(s_h)/h_z⁴
+// integrates to 1 against h_z over the hemisphere (the slopes beyond the
+// grid's 89.9° carry < 1e-3 of the mass for these roughnesses).
+TEST(LeanLobe, IntegratesToOneOverSlopesAndOverTheHemisphere) {
+    using namespace kernel;
+    struct Case {
+        vec2 mean, var;
+        float cov, roughness;
+    };
+    for (const Case c : {Case{vec2(0.0f), vec2(0.0f), 0.0f, 0.2f}, Case{vec2(0.1f, -0.2f), vec2(0.02f, 0.05f), -0.025f, 0.1f},
+                         Case{vec2(-0.3f, 0.05f), vec2(0.01f, 0.003f), 0.004f, 0.3f}}) {
+        const LeanLobe l = leanLobe(c.mean, c.var, c.cov, c.roughness);
+        const double sx = std::sqrt(l.sigma.x), sy = std::sqrt(l.sigma.y);
+        const int n = 600;
+        double sum = 0;
+        for (int b = 0; b < n; ++b)
+            for (int a = 0; a < n; ++a) {
+                const float x = float(l.mean.x + sx * (20.0 * (a + 0.5) / n - 10));
+                const float y = float(l.mean.y + sy * (20.0 * (b + 0.5) / n - 10));
+                sum += leanSlopeDensity(l, vec2(x, y));
+            }
+        EXPECT_NEAR(sum * (20 * sx / n) * (20 * sy / n), 1.0, 1e-4);
+        // ∫ D(h) cos θ dω = ∫∫ D cos θ sin θ dθ dφ.
+        const int nt = 2000, np = 400;
+        double hemi = 0;
+        for (int p = 0; p < np; ++p)
+            for (int t = 0; t < nt; ++t) {
+                const double theta = (t + 0.5) / nt * (0.5 * std::numbers::pi), phi = (p + 0.5) / np * 2 * std::numbers::pi;
+                const vec3 h(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                             float(std::cos(theta)));
+                hemi += leanNdf(l, h) * std::cos(theta) * std::sin(theta);
+            }
+        EXPECT_NEAR(hemi * (0.5 * std::numbers::pi / nt) * (2 * std::numbers::pi / np), 1.0, 1e-3);
+    }
+}
+
+// A pattern with a normal map (docs/PATTERNS.md).
+PatternSpec normalMapSpec(double roughness) {
+    const nlohmann::json j = nlohmann::json::parse(R"({
+        "name": "bumps", "seed": 5,
+        "noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]},
+        "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]},
+        "colormap": {"type": "gaussian"},
+        "normal_map": {"height": {"type": "spectrum", "size": 128,
+                                  "components": [{"shape": "bilobe", "frequency": 12, "bandwidth": 3, "orientation": 30}]},
+                       "amplitude": 0.25, "light": [0.3, -0.6, 0.75], "view": [0, 0.4, 1]}})");
+    nlohmann::json k = j;
+    k["normal_map"]["roughness"] = roughness;
+    return parsePatternSpec(JsonReader(k, "bumps.json"), ".");
+}
+
+// With a zero footprint (every magnified pixel reads one level-0 texel,
+// whose variances and covariance are 0) the filtered shading is the
+// unfiltered shading with the base roughness, exactly; zoomed out, it is
+// not (the lobe widens).
+TEST(LeanResponse, ZeroFootprintIsTheUnfilteredShading) {
+    const Pattern p = Pattern::build(normalMapSpec(0.15));
+    ASSERT_NE(p.normalMap(), nullptr);
+    FilterOptions lean;
+    lean.response.kind = ResponseKind::Lean;
+    FilterOptions point = lean;
+    point.source = StatisticsSource::Point;
+    Camera cam;
+    cam.view = View{48, 40, 0.5, 3.0, 7.0};
+    const Image filtered = FilteredPattern(p, lean).render(cam), unfiltered = FilteredPattern(p, point).render(cam);
+    EXPECT_EQ(filtered.data(), unfiltered.data());
+    double spread = 0;  // the image is not flat: the test compares shading, not a constant
+    for (size_t i = 3; i < filtered.data().size(); ++i) spread = std::max(spread, double(std::abs(filtered.data()[i] - filtered.data()[0])));
+    EXPECT_GT(spread, 0.05);
+    cam.view.scale = 8;
+    const Image far = FilteredPattern(p, lean).render(cam), farPoint = FilteredPattern(p, point).render(cam);
+    EXPECT_NE(far.data(), farPoint.data());
+    // The response's own point shading is the base lobe around the slope.
+    const LeanResponse r(p.normalMap()->shading, true);
+    FootprintStats s;
+    s.mean = {0.1f, -0.05f};
+    EXPECT_EQ(r.point(0.1f, -0.05f), r.filtered(s));
+}
+
+TEST(LeanResponse, NeedsANormalMapAndAValidRoughness) {
+    const std::string message = test::inputErrorOf([] { normalMapSpec(-0.1); }).what();
+    EXPECT_NE(message.find("/normal_map/roughness: roughness must be in [0.001, 10], got -0.1"), std::string::npos)
+        << message;
+    PatternSpec colourOnly = normalMapSpec(0.1);
+    colourOnly.normalMap.reset();
+    const Pattern p = Pattern::build(colourOnly);
+    FilterOptions lean;
+    lean.response.kind = ResponseKind::Lean;
+    EXPECT_EQ(test::inputErrorOf([&] { FilteredPattern(p, lean); }).parameter(), "response");
+    // Without the covariance the response does not read it, so no pyramid is built.
+    const Pattern bumps = Pattern::build(normalMapSpec(0.1));
+    EXPECT_NE(FilteredPattern(bumps, lean).estimator().covariancePyramid(), nullptr);
+    lean.response.covariance = false;
+    EXPECT_EQ(FilteredPattern(bumps, lean).estimator().covariancePyramid(), nullptr);
+}
+
+}  // namespace
+}  // namespace stochtex
