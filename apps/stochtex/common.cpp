@@ -248,6 +248,11 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"from", "--from"},
     {"to", "--to"},
     {"filters", "--filters"},
+    {"frequency", "--frequency"},
+    {"bandwidth", "--bandwidth"},
+    {"orientation", "--orientation"},
+    {"density", "--density"},
+    {"comparisonSize", "--comparison-size"},
 };
 }  // namespace
 

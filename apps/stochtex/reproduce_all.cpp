@@ -11,7 +11,7 @@ namespace stochtex::cli {
 
 void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> args) {
     auto* all = reproduce.add_subcommand("all", "Everything above, with an index.html");
-    addReproduceFlags(*all, *args, true, true);
+    addReproduceFlags(*all, *args, true, &args->figure4);
     all->callback([args] {
         prepareReproduce(*args);
         ThreadLimit limit(args->threads);
@@ -24,7 +24,7 @@ void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> ar
         writeTable1(t, dir + "/table1");
         const int tTable = elapsed();
         const Figure4Result f4 = figure4(args->figure4, progressPart(progress.callback(), 1, 3));
-        writeFigure4(f4, dir + "/figure4");
+        writeFigure4(f4, "figure4", dir + "/figure4");
         const int tFigure4 = elapsed();
         const std::vector<Figure> f79 = figures7to9(args->sheetSize, progressPart(progress.callback(), 2, 3));
         ensureFolder(dir + "/figures7-9");
