@@ -144,6 +144,8 @@ case_reproduce() {
   expect_ok "reproduce figures7-9" "$out/rep/figure9.png" -- "$bin" reproduce figures7-9 -o "$out/rep" --size 64
   expect_ok "reproduce all" "$out/all/index.html" -- "$bin" reproduce all -o "$out/all" --count 10 --footprints 2,4 --size 32 --reference-samples 8
   grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 4"
+  grep -q "figure11/figure11.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 11"
+  [ -s "$out/all/figure10/figure10_comparison.png" ] || fail "reproduce all: figure 10's comparison not written"
 }
 
 # Figures 10 and 11 (phasor noise), reduced: their files, their numbers, and
@@ -151,6 +153,9 @@ case_reproduce() {
 case_reproduce_phasor() {
   expect_ok "reproduce figure10" "$out/f10/figure10_comparison.png" -- "$bin" reproduce figure10 -o "$out/f10" --size 64 --comparison-size 96
   [ -s "$out/f10/figure10.png" ] || fail "figure10: figure10.png not written"
+  # The same files for any thread count.
+  "$bin" reproduce figure10 -o "$out/f10j1" --size 64 --comparison-size 96 --threads 1 >/dev/null 2>&1 || fail "figure10 --threads 1"
+  diff -r "$out/f10" "$out/f10j1" >/dev/null || fail "figure10: 1 thread and all threads wrote different files"
   # Both fields' spectral centroids near the requested 24 cycles per period.
   awk -F, 'NR > 1 && ($2 < 22 || $2 > 26) { bad = 1 } END { exit bad }' "$out/f10/figure10.csv" \
     || fail "figure10.csv: a centroid far from 24 cycles: $(cat "$out/f10/figure10.csv")"
