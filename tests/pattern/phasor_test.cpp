@@ -202,6 +202,24 @@ TEST_F(PhasorProfileImage, OneRowIsOnePeriodOfColours) {
     EXPECT_NEAR(right[2], 0.5f, 2e-3f);
 }
 
+// A palette's colours are sRGB codes decoded once, then interpolated in
+// linear light: #bcbcbc (code 188) decodes to 0.5029 (sRGB curve by hand:
+// ((188/255 + 0.055)/1.055)^2.4), and halfway from black (the sawtooth at
+// t = ½, φ = 0) is half that, not the decode of code 94 (0.1119).
+TEST_F(PhasorProfileImage, PaletteColoursAreDecodedAndBlendedInLinearLight) {
+    const ColormapSpec cm = spec(R"({"type": "phasor", "profile": "sawtooth", "palette": ["#000000", "#bcbcbc"]})").colormap;
+    const PhasorColourProfile p = buildPhasorProfile(cm);
+    const double top = std::pow((188.0 / 255.0 + 0.055) / 1.055, 2.4);
+    EXPECT_NEAR(p(kPi - 1e-9)[0], top, 1e-5);
+    EXPECT_NEAR(p(0.0)[1], 0.5 * top, 1e-5);
+    // The table too: straight right of the centre is φ = 0.
+    EXPECT_NEAR(buildColormap(cm).sample(0.99f, 0.5f)[2], 0.5 * top, 2e-3);
+    // As data ("transfer": "linear"), the codes are the values.
+    const ColormapSpec data = spec(R"({"type": "phasor", "profile": "sawtooth", "transfer": "linear",
+        "palette": ["#000000", "#bcbcbc"]})").colormap;
+    EXPECT_NEAR(buildPhasorProfile(data)(0.0)[0], 0.5 * 188.0 / 255.0, 1e-6);
+}
+
 TEST_F(PhasorProfileImage, AnythingButOneRowIsRefusedNamingTheFile) {
     writeImage((dir_ / "square.png").string(), Image(4, 4, 1));
     const std::string e = errorOf(R"({"type": "phasor", "profile": "image", "path": "square.png"})");
