@@ -18,14 +18,17 @@ build: deps
 demo: build
 	$(BUILD_DIR)/bin/stochtex gallery -o out/gallery
 
+# Every test, then the sanitizer build (clang, ASan + UBSan with
+# float-cast-overflow): its unit-test subset and a short run of each fuzz target.
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+	bash scripts/sanitize-test.sh $(SANITIZE_FUZZ_SECONDS)
 
 # Builds the libFuzzer targets (clang) in build-fuzz and runs each for SECONDS
 # (docs/TESTING.md). `make test` only replays their stored inputs.
 SECONDS ?= 60
-fuzz:
-	@bash scripts/install-deps.sh --fuzz
+SANITIZE_FUZZ_SECONDS ?= 5
+fuzz: deps
 	bash scripts/fuzz.sh $(SECONDS)
 
 # Rewrites tests/golden/*.png after an intended change of the pixels (docs/TESTING.md).

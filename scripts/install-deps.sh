@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages stochtex needs, only those that are missing.
 # Run as root (or with sudo available). Never downloads anything but Debian packages.
-#   scripts/install-deps.sh           what the build and the tests need
-#   scripts/install-deps.sh --fuzz    also clang and libFuzzer, for `make fuzz`
+#   scripts/install-deps.sh           what the build and the tests need (clang and
+#                                     libFuzzer too: `make test` runs a sanitizer build)
 set -euo pipefail
 
 packages=(
@@ -13,10 +13,8 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri glslang-tools
   libglfw3-dev xvfb xauth libpng-dev
   libplplot-dev plplot-driver-cairo libpango1.0-dev libcairo2-dev fonts-dejavu-core libjs-chart.js
+  clang-14 libclang-rt-14-dev
 )
-if [ "${1:-}" = "--fuzz" ]; then
-  packages+=(clang-14 libclang-rt-14-dev)
-fi
 
 missing=()
 for p in "${packages[@]}"; do

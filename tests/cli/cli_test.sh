@@ -74,6 +74,13 @@ case_render() {
 case_noise() {
   expect_ok "noise inline" "$out/noise.png" -- "$bin" noise '{"type":"spectrum","size":64,"seed":3,"components":[{"shape":"ring","frequency":8,"bandwidth":2}]}' -o "$out/noise.png" --spectrum "$out/spec.png"
   [ -s "$out/spec.png" ] || fail "noise --spectrum not written"
+  # What noise writes, render takes: a size the filtered paths cannot use is refused here.
+  expect_bad "noise npot" "$out/n48.png" "/size: must be a power of two" -- "$bin" noise '{"type":"spectrum","size":48,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/n48.png"
+  # A 24-pixel exemplar is resampled to 32 for filtering, and says so.
+  expect_ok "exemplar 24" "$out/e24.png" -- "$bin" render --preset gaussian --size 24 -o "$out/e24.png"
+  printf '{"noise_x":{"type":"image","path":"e24.png"},"noise_y":{"type":"image","path":"e24.png"},"colormap":{"type":"gaussian"}}' >"$out/npot.json"
+  expect_ok "npot exemplar smooth" "$out/npot.png" -- "$bin" render --pattern "$out/npot.json" --size 32 --filter smooth -o "$out/npot.png"
+  grep -q "resampled from 24x24 to 32x32" "$work/err.txt" || fail "npot exemplar: no resampling note: $(cat "$work/err.txt")"
 }
 
 case_colormap() {

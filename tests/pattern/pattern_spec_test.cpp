@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "stochtex/core/error.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
@@ -198,4 +199,49 @@ TEST(Presets, UnknownPresetListsTheKnownOnes) {
         EXPECT_NE(std::string(e.what()).find("unknown preset \"nope\""), std::string::npos);
         EXPECT_NE(std::string(e.what()).find("camouflage"), std::string::npos);
     }
+}
+
+// A non-power-of-two exemplar is resampled up to the next power of two as the
+// periodic image it is, so every filtered path can build its pyramids: its
+// mean survives (bicubic keeps a periodic image's mean up to clamping) and the
+// resampled image wraps without a seam (the periodic border is continuous).
+TEST(PatternSpec, NonPowerOfTwoExemplarsAreResampledPeriodically) {
+    const std::filesystem::path dir = test::scratchPath("npot-exemplar");
+    std::filesystem::create_directories(dir);
+    Image img(24, 24, 1);
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 24; ++x)
+            img.at(x, y) = float(0.5 + 0.3 * std::sin(2 * M_PI * x / 24.0) * std::cos(2 * M_PI * 2 * y / 24.0));
+    writeImage((dir / "e24.png").string(), img, WriteOptions{.bitDepth = 16, .transfer = Transfer::Linear});
+    NoiseSpec spec;
+    spec.source = NoiseSpec::Source::Image;
+    spec.image = dir / "e24.png";
+    const Image e = buildExampleImage(spec, "test");
+    ASSERT_EQ(e.width(), 32);
+    ASSERT_EQ(e.height(), 32);
+    double mean = 0, maxStep = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            mean += e.at(x, y) / 1024.0;
+            // Neighbour steps, the wrap-around pair (31 → 0) included: a seam
+            // would be a step far above the smooth image's (≤ 2π·0.3·2/32 ≈ 0.12).
+            maxStep = std::max(maxStep, double(std::abs(e.at((x + 1) % 32, y) - e.at(x, y))));
+            maxStep = std::max(maxStep, double(std::abs(e.at(x, (y + 1) % 32) - e.at(x, y))));
+        }
+    EXPECT_NEAR(mean, 0.5, 2e-3);
+    EXPECT_LT(maxStep, 0.13);
+    // Texel centres map to texel centres: the value at resampled texel 0 is the
+    // source's at −½ + ½·24/32 = −0.125 texel. Within 4e-3 (bicubic's own error
+    // on this wave, measured 3.1e-3); corner-aligned sampling (source texel 0,
+    // value 0.5) would be 9.8e-3 off.
+    EXPECT_NEAR(e.at(0, 0), 0.5 + 0.3 * std::sin(2 * M_PI * -0.125 / 24.0) * std::cos(2 * M_PI * 2 * -0.125 / 24.0), 4e-3);
+    std::filesystem::remove_all(dir);
+}
+
+// The noise command writes what render accepts: a spectral example must have a
+// power-of-two size, refused at parse time with the reason.
+TEST(PatternSpec, SpectralExampleSizesArePowersOfTwo) {
+    const std::string e =
+        errorOf(withNoiseX(R"({"type": "spectrum", "size": 300, "components": [{"shape": "lowpass", "cutoff": 8}]})"));
+    EXPECT_NE(e.find("/noise_x/size: must be a power of two"), std::string::npos) << e;
 }

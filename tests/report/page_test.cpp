@@ -29,6 +29,8 @@ TEST(Page, ChartsAreInlinedSelfContainedAndDeterministic) {
     EXPECT_NE(body.find("\"label\":\"theirs (same values as ours)\""), std::string::npos);
     EXPECT_NE(body.find("\"type\":\"logarithmic\""), std::string::npos);  // the x axis
     EXPECT_NE(body.find("μ̂"), std::string::npos);
+    // The legend flows below the plot, never clipped at a narrow canvas's edge.
+    EXPECT_NE(body.find("\"legend\":{\"position\":\"bottom\"}"), std::string::npos);
     EXPECT_EQ(count(body, "</script>"), 1u);  // the title's "</script>" is escaped inside the JSON
     const std::string page = htmlPage("t", body);
     EXPECT_EQ(count(page, "Chart.js v3"), 1u);  // the library itself, not a link to it

@@ -35,4 +35,13 @@ private:
     std::optional<HistogramTransform> inverse_;
 };
 
+// The smallest power of two ≥ n (n ≥ 1).
+int nextPowerOfTwo(int n);
+
+// A square 1-channel example resampled to size × size as the periodic image
+// it is (period 1 in uv both ways): bicubic (OpenCV's, a = −0.75) with
+// wrap-around, so the seams stay continuous; texel centres map to texel
+// centres, (i + ½)·W/size − ½. Cubic overshoot is clamped to [lo, hi].
+Image resamplePeriodic(const Image& example, int size, float lo, float hi);
+
 }  // namespace stochtex

@@ -1,12 +1,15 @@
 #include "stochtex/pattern/pattern_spec.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
+#include "stochtex/filter/pyramid.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/noise/example.h"
 #include "stochtex/pattern/pattern.h"
 
 namespace stochtex {
@@ -139,6 +142,10 @@ NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
         r.expectObject({"type", "size", "seed", "mean", "stddev", "components", "quadrature"});
         SpectrumSpec& s = spec.spectrum;
         s.size = r.integer("size", 256, 8, kMaxExampleSize);
+        // Every render path builds MIP pyramids that halve the example.
+        if (!isPowerOfTwo(s.size))
+            r.at("size").fail("must be a power of two (the filtered renders build MIP pyramids that halve the "
+                              "example), got " + std::to_string(s.size));
         if (auto seed = r.find("seed")) {
             s.seed = seed->uint32();
             spec.explicitSeed = true;
@@ -285,7 +292,17 @@ Image buildExampleImage(const NoiseSpec& spec, const std::string& context) {
     if (img.width() < 8 || img.width() > kMaxExampleSize)
         throw InputError(context + ": exemplar " + spec.image.string() + " must be between 8 and " +
                          std::to_string(kMaxExampleSize) + " pixels wide");
-    return img;
+    if (isPowerOfTwo(img.width())) return img;
+    // The filtered paths build MIP pyramids that halve the example down to
+    // one texel, and every path of a pattern must see the same example: so
+    // any exemplar is resampled up to the next power of two (no detail lost;
+    // ≤ 4096 since the exemplar is). The pattern's scale then counts texels
+    // of the resampled example.
+    const int size = nextPowerOfTwo(img.width());
+    std::fprintf(stderr, "note: %s: exemplar resampled from %dx%d to %dx%d (periodic bicubic): filtering needs a "
+                         "power-of-two example, and scale counts its texels\n",
+                 spec.image.string().c_str(), img.width(), img.height(), size, size);
+    return resamplePeriodic(img, size, float(kMinExemplarValue), float(kMaxExemplarValue));
 }
 
 NoiseExample buildNoiseExample(const NoiseSpec& spec, const std::string& context) {

@@ -85,7 +85,10 @@ std::string chartConfig(const LineChart& c) {
     auto& opt = cfg["options"];
     opt["animation"] = false;
     opt["plugins"]["title"] = {{"display", !o.title.empty()}, {"text", o.title}};
-    opt["plugins"]["legend"] = {{"position", "right"}};
+    // Below the plot: Chart.js flows a bottom legend onto as many rows as its
+    // labels need, where a right-hand legend in a caption-wide canvas gets
+    // truncated labels (seen in headless Chromium).
+    opt["plugins"]["legend"] = {{"position", "bottom"}};
     opt["scales"]["x"] = axis(o.xLabel, o.logX, o.xMin, o.xMax);
     opt["scales"]["y"] = axis(o.yLabel, o.logY, o.yMin, o.yMax);
     std::string json = cfg.dump();
