@@ -14,6 +14,7 @@ set(stochtex_sanitized_test_sources
   noise/tiling_blending_test.cpp
   filter/filter_test.cpp
   pattern/colormap_test.cpp
+  pattern/phasor_test.cpp
   pattern/pattern_spec_test.cpp
   pattern/hostile_input_test.cpp
   pattern/pattern_test.cpp

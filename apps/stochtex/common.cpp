@@ -250,6 +250,11 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"filters", "--filters"},
     {"roughness", "--roughness"},
     {"referenceSamples", "--reference-samples"},
+    {"frequency", "--frequency"},
+    {"bandwidth", "--bandwidth"},
+    {"orientation", "--orientation"},
+    {"density", "--density"},
+    {"comparisonSize", "--comparison-size"},
 };
 }  // namespace
 

@@ -1,7 +1,8 @@
 // stochtex reproduce: the paper's accuracy evidence, one command each —
 // Table 1 (estimator errors), Figure 4 (filtered vs reference images and
 // error maps), Figures 7–9 (colormap layouts, palettes, noise spectra),
-// Figure 12 (LEAN-mapped normal maps) — and
+// Figure 10 (phasor variants; procedural phasor noise beside ours), Figure 11
+// (filtering the phasor sine pattern), Figure 12 (LEAN-mapped normal maps) — and
 // `all`, which runs them and writes an index.html (reproduce_all.cpp).
 #include <cstdio>
 
@@ -14,10 +15,10 @@ namespace stochtex::cli {
 
 void registerReproduce(CLI::App& app) {
     auto args = std::make_shared<ReproduceArgs>();
-    auto* cmd = app.add_subcommand("reproduce", "Regenerate the paper's evidence: table1, figure4, figures7-9, figure12, all");
+    auto* cmd = app.add_subcommand("reproduce", "Regenerate the paper's evidence: table1, figure4, figure10, figure11, figure12, figures7-9, all");
     cmd->require_subcommand(1);
     auto* table1Cmd = cmd->add_subcommand("table1", "Table 1: mean errors of μ̂ and σ̂ against exact footprint statistics");
-    addReproduceFlags(*table1Cmd, *args, true, false);
+    addReproduceFlags(*table1Cmd, *args, true, nullptr);
     table1Cmd->callback([args] {
         prepareReproduce(*args);
         ThreadLimit limit(args->threads);
@@ -26,20 +27,38 @@ void registerReproduce(CLI::App& app) {
         progress.finish();
         std::printf("%s\nwrote table1.csv, table1.md and plots to %s\n", md.c_str(), args->dir.c_str());
     });
-    auto* figure4Cmd = cmd->add_subcommand("figure4", "Figure 4: reference, exact-statistics and estimated filtering");
-    addReproduceFlags(*figure4Cmd, *args, false, true);
-    figure4Cmd->callback([args] {
+    const auto addFigure = [&](const std::string& figure, const std::string& help, Figure4Options* options) {
+        auto* sub = cmd->add_subcommand(figure, help);
+        addReproduceFlags(*sub, *args, false, options);
+        sub->callback([args, figure, options] {
+            prepareReproduce(*args);
+            ThreadLimit limit(args->threads);
+            ProgressLine progress("reproduce " + figure);
+            const Figure4Result r = stochtex::figure4(*options, progress.callback());
+            writeFigure4(r, figure, args->dir);
+            progress.finish();
+            std::printf("%s\nwrote %s.png, %s.csv and the images to %s\n", r.table.markdown().c_str(), figure.c_str(),
+                        figure.c_str(), args->dir.c_str());
+        });
+    };
+    addFigure("figure4", "Figure 4: reference, exact-statistics and estimated filtering", &args->figure4);
+    auto* figure10Cmd =
+        cmd->add_subcommand("figure10", "Figure 10: the phasor variants, and procedural phasor noise beside ours");
+    addFigure10Flags(*figure10Cmd, *args);
+    figure10Cmd->callback([args] {
         prepareReproduce(*args);
         ThreadLimit limit(args->threads);
-        ProgressLine progress("reproduce figure4");
-        const Figure4Result r = figure4(args->figure4, progress.callback());
-        writeFigure4(r, args->dir);
+        ProgressLine progress("reproduce figure10");
+        const Figure10Result r = figure10(args->figure10, progress.callback());
+        writeFigure10(r, args->dir);
         progress.finish();
-        std::printf("%s\nwrote figure4.png, figure4.csv and the images to %s\n", r.table.markdown().c_str(),
-                    args->dir.c_str());
+        std::printf("%s\nwrote figure10.png, figure10_comparison.png and figure10.csv to %s\n",
+                    r.table.markdown().c_str(), args->dir.c_str());
     });
+    addFigure("figure11", "Figure 11: filtering the phasor sine pattern: reference, estimated, error",
+              &args->figure11);
     auto* figures79 = cmd->add_subcommand("figures7-9", "Figures 7–9: colormap layouts, palettes, noise spectra");
-    addReproduceFlags(*figures79, *args, false, false);
+    addReproduceFlags(*figures79, *args, false, nullptr);
     figures79->add_option("--size", args->sheetSize, "Pattern size in each sheet")->capture_default_str();
     figures79->callback([args] {
         prepareReproduce(*args);

@@ -14,13 +14,35 @@ std::string writeTable1(const Table1Result& r, const std::string& dir) {
     return md;
 }
 
-void writeFigure4(const Figure4Result& r, const std::string& dir) {
+void writeFigure4(const Figure4Result& r, const std::string& figure, const std::string& dir) {
     ensureFolder(dir);
     writeFigures(dir, r.figures);
-    writeText(dir, "figure4.csv", r.table.csv());
+    writeText(dir, figure + ".csv", r.table.csv());
 }
 
-void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, bool figure4) {
+void writeFigure10(const Figure10Result& r, const std::string& dir) {
+    ensureFolder(dir);
+    writeFigures(dir, r.figures);
+    writeText(dir, "figure10.csv", r.table.csv());
+}
+
+void addFigure10Flags(CLI::App& sub, ReproduceArgs& a) {
+    addOutputFolderFlag(sub, a.dir);
+    addThreadsFlag(sub, a.threads);
+    Figure10Options& f = a.figure10;
+    sub.add_option("--size", f.size, "Pattern size in the variants' sheet")->capture_default_str();
+    sub.add_option("--comparison-size", f.comparisonSize, "Side of each comparison panel (one example period)")
+        ->capture_default_str();
+    sub.add_option("--frequency", f.field.frequency, "Frequency of both phasor fields, cycles per period")
+        ->capture_default_str();
+    sub.add_option("--bandwidth", f.field.bandwidth, "Spectral bandwidth of both fields, cycles per period")
+        ->capture_default_str();
+    sub.add_option("--orientation", f.field.orientation, "Wave direction of both fields, degrees")->capture_default_str();
+    sub.add_option("--density", f.field.density, "Gabor kernels per cell of the procedural noise")->capture_default_str();
+    addSeedFlag(sub, "--seed", f.field.seed, "Seed of the procedural noise's kernels");
+}
+
+void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, Figure4Options* figure) {
     addOutputFolderFlag(sub, a.dir);
     addThreadsFlag(sub, a.threads);
     if (table) {
@@ -29,22 +51,25 @@ void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, bool figure4
         addSeedFlag(sub, "--seed", a.table.seed, "Seed of the noises (footprint centres use --footprint-seed)");
         addSeedFlag(sub, "--footprint-seed", a.table.errors.seed, "Seed of the footprint centres");
     }
-    if (figure4) {
-        sub.add_option("--preset", a.figure4.name, "Pattern of Figure 4")->capture_default_str();
-        sub.add_option("--size", a.figure4.size, "Image size per footprint")->capture_default_str();
-        sub.add_option("--reference-samples", a.figure4.referenceSamples, "Max reference samples per axis");
-        // Figure 4 compares the estimators' statistics with the exact ones:
-        // --filter chooses only the response.
-        const auto setResponse = [&a](const NamedFilter& f) {
-            if (f.source != StatisticsSource::Estimators)
-                throw InputError::parameter("filter",
-                                            "must be smooth or paper for figure 4 (the estimators through a "
-                                            "table), got " +
-                                                filterName(FilterOptions{}.use(f)));
-            a.figure4.response = f.response;
+    if (figure) {
+        Figure4Options& f = *figure;
+        const std::string what = figure == &a.figure4 ? "figure 4" : "figure 11";
+        if (figure == &a.figure4) sub.add_option("--preset", f.name, "Pattern of Figure 4")->capture_default_str();
+        // (figure 4's --footprints would clash with table1's in `reproduce all`)
+        if (figure == &a.figure11 && !table)
+            sub.add_option("--footprints", f.footprints, "Footprint sides in texels")->delimiter(',');
+        sub.add_option("--size", f.size, "Image size per footprint")->capture_default_str();
+        sub.add_option("--reference-samples", f.referenceSamples, "Max reference samples per axis");
+        // Figures 4 and 11 compare the estimators' statistics with the
+        // reference: --filter chooses only the response.
+        const auto setResponse = [&f, what](const NamedFilter& named) {
+            if (named.source != StatisticsSource::Estimators)
+                throw InputError::parameter("filter", "must be smooth or paper for " + what +
+                                                          " (the estimators through a table), got " +
+                                                          filterName(FilterOptions{}.use(named)));
+            f.response = named.response;
         };
-        addFilterFlag(sub, setResponse,
-                      filterName(FilterOptions{}.use({StatisticsSource::Estimators, a.figure4.response})),
+        addFilterFlag(sub, setResponse, filterName(FilterOptions{}.use({StatisticsSource::Estimators, f.response})),
                       "Table used with the estimators: smooth or paper");
     }
 }
@@ -52,6 +77,8 @@ void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, bool figure4
 void prepareReproduce(ReproduceArgs& a) {
     a.figure4.pattern = loadPreset(a.figure4.name);  // unknown preset: fail before any work
     validateFigure4(a.figure4);
+    validateFigure4(a.figure11);
+    validateFigure10(a.figure10);
     validateTable1(a.table);
     validateFigures7to9(a.sheetSize);
 }

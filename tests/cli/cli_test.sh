@@ -153,6 +153,37 @@ case_reproduce() {
   grep -q "^deliot-heitz," "$out/rep/figure12.csv" || fail "reproduce figure12: the CSV lacks the Deliot-Heitz row"
   expect_ok "reproduce all" "$out/all/index.html" -- "$bin" reproduce all -o "$out/all" --count 10 --footprints 2,4 --size 32 --reference-samples 8
   grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 4"
+  grep -q "figure11/figure11.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 11"
+  [ -s "$out/all/figure10/figure10_comparison.png" ] || fail "reproduce all: figure 10's comparison not written"
+}
+
+# Figures 10 and 11 (phasor noise), reduced: their files, their numbers, and
+# bad parameters refused before any output.
+case_reproduce_phasor() {
+  expect_ok "reproduce figure10" "$out/f10/figure10_comparison.png" -- "$bin" reproduce figure10 -o "$out/f10" --size 64 --comparison-size 96
+  [ -s "$out/f10/figure10.png" ] || fail "figure10: figure10.png not written"
+  # The same files for any thread count.
+  "$bin" reproduce figure10 -o "$out/f10j1" --size 64 --comparison-size 96 --threads 1 >/dev/null 2>&1 || fail "figure10 --threads 1"
+  diff -r "$out/f10" "$out/f10j1" >/dev/null || fail "figure10: 1 thread and all threads wrote different files"
+  # Both fields' spectral centroids near the requested 24 cycles per period.
+  awk -F, 'NR > 1 && ($2 < 22 || $2 > 26) { bad = 1 } END { exit bad }' "$out/f10/figure10.csv" \
+    || fail "figure10.csv: a centroid far from 24 cycles: $(cat "$out/f10/figure10.csv")"
+  expect_ok "reproduce figure11" "$out/f11/figure11.png" -- "$bin" reproduce figure11 -o "$out/f11" --size 24 --reference-samples 16 --footprints 1,64
+  [ -s "$out/f11/fp64_error_estimated.png" ] || fail "figure11: the error map per footprint not written"
+  # The pattern fades to the profile's mean: at footprint 64, Ŝ within 0.02 of it, S̄ too.
+  awk -F, 'NR == 3 && ($3 > 0.02 || $4 > 0.02) { bad = 1 } NR == 2 && $4 < 0.3 { bad = 1 } END { exit bad }' "$out/f11/figure11.csv" \
+    || fail "figure11.csv: no fade to the profile's mean: $(cat "$out/f11/figure11.csv")"
+  expect_bad "figure10 zero frequency" "$out/pbad1" "--frequency: frequency must be in (0, 10000], got 0" -- "$bin" reproduce figure10 -o "$out/pbad1" --frequency 0
+  expect_bad "figure10 negative bandwidth" "$out/pbad2" "--bandwidth: bandwidth must be in (0, 10000], got -1" -- "$bin" reproduce figure10 -o "$out/pbad2" --bandwidth -1
+  expect_bad "figure11 estimators only" "$out/pbad3" "--filter: filter must be smooth or paper for figure 11" -- "$bin" reproduce figure11 -o "$out/pbad3" --filter reference
+  expect_bad "figure11 zero footprint" "$out/pbad4" "figure11: footprints must be in [1, 65536], got 0" -- "$bin" reproduce figure11 -o "$out/pbad4" --footprints 0
+  # A profile image must be one row (W×1).
+  "$bin" noise '{"type":"spectrum","size":16,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/square.png" >/dev/null || fail "noise for the profile"
+  cat >"$work/profile.json" <<JSON
+{"noise_x": {"type": "spectrum", "size": 32, "components": [{"shape": "bilobe", "frequency": 4, "bandwidth": 1}]},
+ "noise_y": "quadrature", "colormap": {"type": "phasor", "profile": "image", "path": "out/square.png"}, "size": 16}
+JSON
+  expect_bad "profile image not 1D" "$out/pbad5.png" "square.png: a phasor profile image must be one row over one period (W×1, W in [2, 4096]), got 16x16" -- "$bin" render --pattern "$work/profile.json" -o "$out/pbad5.png"
 }
 
 # --- GPU (headless OpenGL: Mesa llvmpipe without a GPU) ---

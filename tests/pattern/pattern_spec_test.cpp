@@ -132,7 +132,7 @@ TEST(PatternSpec, EnumValuedKeysUseTheNameTables) {
     EXPECT_EQ(parse(base + phasor + R"(square"}})").colormap.profile, PhasorProfile::Square);
     EXPECT_EQ(parse(base + phasor + R"(sawtooth"}})").colormap.profile, PhasorProfile::Sawtooth);
     EXPECT_EQ(errorOf(base + phasor + R"(triangle"}})"),
-              "test.json: /colormap/profile: unknown value \"triangle\" (expected one of: sine, sawtooth, square)");
+              "test.json: /colormap/profile: unknown value \"triangle\" (expected one of: sine, sawtooth, square, image)");
 }
 
 TEST(PatternSpec, QuadratureShorthandSharesSeedAndOffsets) {

@@ -6,6 +6,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
+#include "stochtex/image/colour_space.h"
 
 namespace stochtex {
 
@@ -74,14 +75,84 @@ float phasorProfile(PhasorProfile profile, double phase, double duty) {
         case PhasorProfile::Sine: return float(0.5 + 0.5 * std::sin(phase));
         case PhasorProfile::Sawtooth: return float(t - std::floor(t));
         case PhasorProfile::Square: return (t - std::floor(t)) < duty ? 1.0f : 0.0f;
+        case PhasorProfile::Image: break;
     }
-    return 0.0f;
+    throw std::invalid_argument("phasorProfile: a sampled profile has no analytic shape");
+}
+
+namespace {
+
+Rgb mix(const Rgb& a, const Rgb& b, float t) {
+    return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+}
+
+// Linear interpolation between samples k at positions (k + ½)/n (periodic) or
+// k/(n − 1) (clamped, for palettes).
+Rgb interpolate(const std::vector<Rgb>& samples, double t, bool periodic) {
+    const size_t n = samples.size();
+    const double x = periodic ? (t - std::floor(t)) * double(n) - 0.5 : std::clamp(t, 0.0, 1.0) * double(n - 1);
+    const double f = std::floor(x);
+    const double w = x - f;
+    const long long i = (long long)f;
+    const auto at = [&](long long k) {
+        return samples[periodic ? size_t((k % (long long)n + (long long)n) % (long long)n)
+                                : size_t(std::clamp(k, 0LL, (long long)n - 1))];
+    };
+    return mix(at(i), at(i + 1), float(w));
+}
+
+}  // namespace
+
+PhasorColourProfile PhasorColourProfile::analytic(PhasorProfile shape, double duty, bool decodeGray,
+                                                  std::vector<Rgb> palette) {
+    if (shape == PhasorProfile::Image) throw std::invalid_argument("PhasorColourProfile::analytic: needs a shape");
+    if (palette.size() == 1) throw std::invalid_argument("PhasorColourProfile: a palette needs at least 2 colours");
+    PhasorColourProfile p;
+    p.shape_ = shape;
+    p.duty_ = duty;
+    p.decodeGray_ = decodeGray;
+    p.palette_ = std::move(palette);
+    return p;
+}
+
+PhasorColourProfile PhasorColourProfile::sampled(std::vector<Rgb> samples, std::vector<Rgb> palette) {
+    if (samples.size() < 2) throw std::invalid_argument("PhasorColourProfile::sampled: needs at least 2 samples");
+    if (palette.size() == 1) throw std::invalid_argument("PhasorColourProfile: a palette needs at least 2 colours");
+    PhasorColourProfile p;
+    p.shape_ = PhasorProfile::Image;
+    p.samples_ = std::move(samples);
+    p.palette_ = std::move(palette);
+    return p;
+}
+
+Rgb PhasorColourProfile::operator()(double phase) const {
+    Rgb c;
+    if (shape_ == PhasorProfile::Image) {
+        c = interpolate(samples_, (phase + std::numbers::pi) / (2.0 * std::numbers::pi), true);
+    } else {
+        const float p = phasorProfile(shape_, phase, duty_);
+        // A palette is indexed by the value itself; a gray level is a colour.
+        c = gray(palette_.empty() && decodeGray_ ? linearFromSrgb(p) : p);
+    }
+    return palette_.empty() ? c : interpolate(palette_, double(c[0]), false);
+}
+
+Rgb PhasorColourProfile::mean() const {
+    constexpr int n = 4096;
+    double sum[3] = {0, 0, 0};
+    for (int k = 0; k < n; ++k) {
+        const Rgb c = (*this)(-std::numbers::pi + 2.0 * std::numbers::pi * (k + 0.5) / n);
+        for (size_t i = 0; i < 3; ++i) sum[i] += c[i];
+    }
+    return {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
+}
+
+ColormapTable makePhasorColormap(const PhasorColourProfile& profile, int resolution) {
+    return tabulate(resolution, [&](double x, double y) { return profile(std::atan2(y - 0.5, x - 0.5)); });
 }
 
 ColormapTable makePhasorColormap(PhasorProfile profile, double duty, int resolution) {
-    return tabulate(resolution, [&](double x, double y) {
-        return gray(phasorProfile(profile, std::atan2(y - 0.5, x - 0.5), duty));
-    });
+    return makePhasorColormap(PhasorColourProfile::analytic(profile, duty, false), resolution);
 }
 
 void PaintedShape::setAngle(double degrees) {

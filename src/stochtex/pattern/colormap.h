@@ -67,17 +67,53 @@ private:
     std::vector<Texel, DefaultInitAllocator<Texel>> rgba_;  // filled by the constructor
 };
 
-// Analytic presets.
-enum class PhasorProfile { Sine, Sawtooth, Square };
-inline const EnumNames<PhasorProfile> kPhasorProfileNames{
-    {"sine", PhasorProfile::Sine}, {"sawtooth", PhasorProfile::Sawtooth}, {"square", PhasorProfile::Square}};
+// Analytic presets. Phasor profiles: the analytic shapes, or Image, a
+// profile sampled over one period (a W×1 image; PhasorColourProfile::sampled).
+enum class PhasorProfile { Sine, Sawtooth, Square, Image };
+inline const EnumNames<PhasorProfile> kPhasorProfileNames{{"sine", PhasorProfile::Sine},
+                                                          {"sawtooth", PhasorProfile::Sawtooth},
+                                                          {"square", PhasorProfile::Square},
+                                                          {"image", PhasorProfile::Image}};
 enum class AnalyticColormap { Gaussian, Ridged };
 
 ColormapTable makeAnalyticColormap(AnalyticColormap kind, int resolution = 256);
+// P(φ) ∈ [0, 1] for φ ∈ (−π, π] of an analytic shape (not Image: invalid_argument);
 // duty: fraction of the period that is bright (square profile only).
-ColormapTable makePhasorColormap(PhasorProfile profile, double duty = 0.5, int resolution = 256);
-// P(φ) for φ ∈ (−π, π].
 float phasorProfile(PhasorProfile profile, double phase, double duty);
+
+// The phasor noise's periodic profile as colours: phase φ ∈ (−π, π] → the
+// table's colour (linear light, or data), so H(x, y) = P(atan2(y − ½, x − ½)).
+// Phase φ is at t = (φ + π)/(2π) of the period, as for the sawtooth.
+class PhasorColourProfile {
+public:
+    // An analytic shape. Without a palette, P is a gray level: an sRGB code,
+    // decoded to linear light when `decodeGray` (the colour pipeline decodes
+    // colours where they enter), else taken as data. With a palette (linear
+    // colours, ≥ 2), P ∈ [0, 1] runs through it, interpolated in linear light.
+    static PhasorColourProfile analytic(PhasorProfile shape, double duty, bool decodeGray,
+                                        std::vector<Rgb> palette = {});
+    // Samples over one period (≥ 2; sample k at t = (k + ½)/n, linear in
+    // between, wrapping): already linear colours, or, with a palette, gray
+    // levels (channel 0) indexing it.
+    static PhasorColourProfile sampled(std::vector<Rgb> samples, std::vector<Rgb> palette = {});
+
+    Rgb operator()(double phase) const;
+    // The average colour over one period (4096 midpoint samples: within
+    // 1/4096 of the exact mean for a square profile's jumps): what the
+    // pattern fades to when the footprint covers many periods.
+    Rgb mean() const;
+
+private:
+    PhasorProfile shape_ = PhasorProfile::Sine;
+    double duty_ = 0.5;
+    bool decodeGray_ = false;
+    std::vector<Rgb> samples_, palette_;
+};
+
+// H = P ∘ atan2 tabulated (resolution² entries).
+ColormapTable makePhasorColormap(const PhasorColourProfile& profile, int resolution = 256);
+// An analytic gray profile as data (no transfer).
+ColormapTable makePhasorColormap(PhasorProfile profile, double duty = 0.5, int resolution = 256);
 
 // A painted layout. Shapes are tested in order; the last one containing a
 // point gives its colour. Angles are in degrees, counter-clockwise, y up.

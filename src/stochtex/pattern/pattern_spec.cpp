@@ -178,10 +178,19 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
         spec.source = ColormapSpec::Source::Analytic;
         spec.analytic = type == "gaussian" ? AnalyticColormap::Gaussian : AnalyticColormap::Ridged;
     } else if (type == "phasor") {
-        r.expectObject({"type", "resolution", "profile", "duty", "transfer"});
+        r.expectObject({"type", "resolution", "profile", "duty", "path", "palette", "transfer"});
         spec.source = ColormapSpec::Source::Phasor;
         spec.profile = r.choice("profile", PhasorProfile::Sine, kPhasorProfileNames);
         spec.duty = r.number("duty", 0.5, 0.0, 1.0);
+        if (spec.profile == PhasorProfile::Image)
+            spec.image = resolve(r.at("path"), baseDir);
+        else if (r.has("path"))
+            r.at("path").fail("\"path\" is the profile image: it needs \"profile\": \"image\"");
+        if (auto palette = r.find("palette")) {
+            const size_t n = palette->arraySize();
+            if (n < 2 || n > 256) palette->fail("a palette needs 2 to 256 colours, got " + std::to_string(n));
+            for (size_t i = 0; i < n; ++i) spec.palette.push_back(parseColour(palette->at(i)));
+        }
     } else if (type == "image") {
         r.expectObject({"type", "path", "transfer"});
         spec.source = ColormapSpec::Source::Image;
@@ -358,13 +367,43 @@ ColormapTable decodedTable(const ColormapTable& table, Transfer transfer) {
 
 }  // namespace
 
+PhasorColourProfile buildPhasorProfile(const ColormapSpec& spec) {
+    if (spec.source != ColormapSpec::Source::Phasor) throw std::invalid_argument("buildPhasorProfile: not a phasor colormap");
+    const Transfer transfer = spec.transfer.value_or(Transfer::Srgb);
+    std::vector<Rgb> palette = spec.palette;
+    if (transfer == Transfer::Srgb)
+        for (Rgb& c : palette)
+            for (float& v : c) v = linearFromSrgb(v);
+    if (spec.profile != PhasorProfile::Image)
+        return PhasorColourProfile::analytic(spec.profile, spec.duty, transfer == Transfer::Srgb, std::move(palette));
+
+    const std::string file = spec.image.string();
+    const Image img = readImage(file);
+    checkPixelRange(img, file, -kMaxColormapValue, kMaxColormapValue, "profile");
+    if (img.height() != 1 || img.width() < 2 || img.width() > kMaxColormapResolution)
+        throw InputError(file + ": a phasor profile image must be one row over one period (W×1, W in [2, " +
+                         std::to_string(kMaxColormapResolution) + "]), got " + std::to_string(img.width()) + "x" +
+                         std::to_string(img.height()));
+    const bool gray = img.channels() == 1;
+    if (!palette.empty() && !gray)
+        throw InputError(file + ": a profile image that indexes a palette must be grayscale, got " +
+                         std::to_string(img.channels()) + " channels");
+    // Codes are decoded as a colormap image's are; a palette's index is data.
+    const Image values =
+        palette.empty() ? decodeTransfer(toRgb(img), spec.transfer.value_or(holdsFloatValues(file) ? Transfer::Linear
+                                                                                                 : transfer))
+                        : toRgb(img);
+    std::vector<Rgb> samples(size_t(values.width()));
+    for (int k = 0; k < values.width(); ++k) samples[size_t(k)] = {values.at(k, 0, 0), values.at(k, 0, 1), values.at(k, 0, 2)};
+    return PhasorColourProfile::sampled(std::move(samples), std::move(palette));
+}
+
 ColormapTable buildColormap(const ColormapSpec& spec) {
     const Transfer transfer = spec.transfer.value_or(Transfer::Srgb);
     switch (spec.source) {
         case ColormapSpec::Source::Analytic:
             return decodedTable(makeAnalyticColormap(spec.analytic, spec.resolution), transfer);
-        case ColormapSpec::Source::Phasor:
-            return decodedTable(makePhasorColormap(spec.profile, spec.duty, spec.resolution), transfer);
+        case ColormapSpec::Source::Phasor: return makePhasorColormap(buildPhasorProfile(spec), spec.resolution);
         case ColormapSpec::Source::Image: {
             const Image img = readImage(spec.image.string());
             checkPixelRange(img, spec.image.string(), -kMaxColormapValue, kMaxColormapValue, "colormap");

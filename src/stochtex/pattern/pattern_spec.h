@@ -47,7 +47,8 @@ struct ColormapSpec {
     AnalyticColormap analytic = AnalyticColormap::Gaussian;
     PhasorProfile profile = PhasorProfile::Sine;
     double duty = 0.5;
-    std::filesystem::path image;
+    std::vector<Rgb> palette;      // Phasor: P's value through these colours (as given, sRGB unless linear)
+    std::filesystem::path image;   // Image; Phasor with profile Image: the W×1 profile
     PaintedColormap painted;
     int resolution = 256;
     // How the colours given (hex, [r, g, b], the analytic H, an image's codes)
@@ -120,5 +121,9 @@ NoiseExample buildNoiseExample(const NoiseSpec& spec, const std::string& context
 // The table H in linear light (or as data, with transfer Linear): the one
 // place colours of a pattern enter.
 ColormapTable buildColormap(const ColormapSpec& spec);
+// A phasor colormap's profile P in the table's space (Source::Phasor only):
+// palette colours decoded, a profile image read and checked (W×1, else an
+// InputError naming the file).
+PhasorColourProfile buildPhasorProfile(const ColormapSpec& spec);
 
 }  // namespace stochtex

@@ -166,12 +166,13 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
 }
 
 void validateFigure4(const Figure4Options& o) {
-    if (o.size < 16 || o.size > 4096) throw InputError("figure 4: size must be in [16, 4096], got " + std::to_string(o.size));
+    const std::string what = o.figure == "figure4" ? "figure 4" : o.figure;
+    if (o.size < 16 || o.size > 4096) throw InputError(what + ": size must be in [16, 4096], got " + std::to_string(o.size));
     if (o.referenceSamples < 1 || o.referenceSamples > 4096)
-        throw InputError("figure 4: referenceSamples must be in [1, 4096], got " + std::to_string(o.referenceSamples));
-    if (o.footprints.empty()) throw InputError("figure 4: no footprints");
+        throw InputError(what + ": referenceSamples must be in [1, 4096], got " + std::to_string(o.referenceSamples));
+    if (o.footprints.empty()) throw InputError(what + ": no footprints");
     for (int s : o.footprints)
-        if (s < 1) throw InputError("figure 4: footprints must be ≥ 1");
+        if (s < 1 || s > 65536) throw InputError(what + ": footprints must be in [1, 65536], got " + std::to_string(s));
 }
 
 Image errorMap(const Image& a, const Image& b, double& mean) {
@@ -188,6 +189,37 @@ Image errorMap(const Image& a, const Image& b, double& mean) {
     return e;
 }
 
+namespace {
+
+// Mean over the pixels of ‖a − c‖₂ (RGB).
+double meanDistance(const Image& a, const Rgb& c) {
+    double s = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            double d2 = 0;
+            for (int k = 0; k < 3; ++k) d2 += std::pow(double(a.at(x, y, k)) - c[size_t(k)], 2);
+            s += std::sqrt(d2);
+        }
+    return s / double(a.pixelCount());
+}
+
+// "figure11" → "Figure 11".
+std::string figureTitle(const std::string& figure) {
+    return figure.rfind("figure", 0) == 0 ? "Figure " + figure.substr(6) : figure;
+}
+
+}  // namespace
+
+Figure4Options figure11Options() {
+    Figure4Options o;
+    o.pattern = loadPreset("phasor-stripes");
+    o.name = "phasor-stripes";
+    o.figure = "figure11";
+    o.exactStatistics = false;
+    o.fadesTo = buildPhasorProfile(o.pattern.colormap).mean();
+    return o;
+}
+
 Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     validateFigure4(o);
     const Pattern pattern = Pattern::build(o.pattern);
@@ -198,7 +230,7 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     std::vector<Column> cols;
     for (int s : o.footprints) {
         const Progress part = progressPart(progress, int(cols.size()), int(o.footprints.size()),
-                                           "figure4: footprint " + std::to_string(s) + "²");
+                                           o.figure + ": footprint " + std::to_string(s) + "²");
         Camera cam;
         cam.view.width = cam.view.height = o.size;
         cam.view.scale = s;
@@ -206,16 +238,22 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         c.numbers.footprint = s;
         FilterOptions fo;
         fo.referenceMaxSamples = o.referenceSamples;
-        // The two brute-force renders take nearly all the time, about equally.
+        // The brute-force renders take nearly all the time, about equally.
+        const double referenceShare = o.exactStatistics ? 0.5 : 1.0;
         c.reference = FilteredPattern(pattern, fo.use(parseFilter("reference")))
-                          .render(cam, progressPart(part, 0.0, 0.5, "reference"));
-        c.exact = FilteredPattern(pattern, fo.use(parseFilter("exact")))
-                      .render(cam, progressPart(part, 0.5, 1.0, "exact statistics"));
+                          .render(cam, progressPart(part, 0.0, referenceShare, "reference"));
+        if (o.exactStatistics)
+            c.exact = FilteredPattern(pattern, fo.use(parseFilter("exact")))
+                          .render(cam, progressPart(part, 0.5, 1.0, "exact statistics"));
         fo.source = StatisticsSource::Estimators;
         fo.response = o.response;
         c.estimated = FilteredPattern(pattern, fo).render(cam);
-        c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
+        if (o.exactStatistics) c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
         c.errEstimated = errorMap(c.estimated, c.reference, c.numbers.meanErrorEstimated);
+        if (o.fadesTo) {
+            c.numbers.meanFadeReference = meanDistance(c.reference, *o.fadesTo);
+            c.numbers.meanFadeEstimated = meanDistance(c.estimated, *o.fadesTo);
+        }
         cols.push_back(std::move(c));
     }
     // One colour scale for every error map: the 99.5th percentile of all.
@@ -228,12 +266,20 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     const double vmax = std::max(1e-3, double(all[all.size() * 995 / 1000]));
 
     Figure4Result res;
-    res.table.columns = {{"footprint", "footprint", ""},
-                         {"mean_error_exact_stats", "mean ‖Ŝ(μ, Σ) − S̄‖₂ (exact statistics)", ""},
-                         {"mean_error_estimators", "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (estimators)", ""}};
+    const std::string title = figureTitle(o.figure);
+    res.table.columns = {{"footprint", "footprint", ""}};
+    if (o.exactStatistics)
+        res.table.columns.push_back({"mean_error_exact_stats", "mean ‖Ŝ(μ, Σ) − S̄‖₂ (exact statistics)", ""});
+    res.table.columns.push_back({"mean_error_estimators", "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (estimators)", ""});
+    if (o.fadesTo) {
+        res.table.columns.push_back({"mean_fade_reference", "mean ‖S̄ − m‖₂ (m: the profile's mean)", ""});
+        res.table.columns.push_back({"mean_fade_estimators", "mean ‖Ŝ(μ̂, Σ̂) − m‖₂", ""});
+    }
     const int thumb = std::min(o.size, 192);
-    std::vector<std::vector<Image>> rows(5);
-    std::vector<std::vector<std::string>> captions(5);
+    // Rows of the sheet: reference, [exact, its error,] estimated, its error.
+    std::vector<int> shownRows = o.exactStatistics ? std::vector<int>{0, 1, 2, 3, 4} : std::vector<int>{0, 3, 4};
+    std::vector<std::vector<Image>> rows(shownRows.size());
+    std::vector<std::vector<std::string>> captions(shownRows.size());
     std::vector<Figure> images;
     const char* rowNames[5] = {"reference", "exact stats", "error, exact", "estimators", "error, estim."};
     const char* rowFiles[5] = {"_reference.png", "_exact.png", "_error_exact.png", "_estimated.png",
@@ -242,16 +288,24 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         const int s = c.numbers.footprint;
         TableCell fp(std::to_string(s) + "²");
         fp.number = s;
-        res.table.add({fp, TableCell::value(c.numbers.meanErrorExact), TableCell::value(c.numbers.meanErrorEstimated)});
+        std::vector<TableCell> cells{fp};
+        if (o.exactStatistics) cells.push_back(TableCell::value(c.numbers.meanErrorExact));
+        cells.push_back(TableCell::value(c.numbers.meanErrorEstimated));
+        if (o.fadesTo) {
+            cells.push_back(TableCell::value(c.numbers.meanFadeReference));
+            cells.push_back(TableCell::value(c.numbers.meanFadeEstimated));
+        }
+        res.table.add(std::move(cells));
         res.columns.push_back(c.numbers);
         const std::string tag = "fp" + std::to_string(s);
         const Image* shown[5] = {&c.reference, &c.exact, &c.errExact, &c.estimated, &c.errEstimated};
-        for (int r = 0; r < 5; ++r) {
+        for (size_t i = 0; i < shownRows.size(); ++i) {
+            const int r = shownRows[i];
             const bool isError = r == 2 || r == 4;
             // Figures hold display codes (report/page.h): renders are encoded, error maps drawn so.
             Image img = isError ? colourise(*shown[r], 0.0, vmax, HeatPalette::Viridis) : srgbFromLinear(*shown[r]);
-            rows[size_t(r)].push_back(resizeSmooth(img, thumb, thumb));
-            captions[size_t(r)].push_back(std::string(rowNames[r]) + " " + std::to_string(s) + "²");
+            rows[i].push_back(resizeSmooth(img, thumb, thumb));
+            captions[i].push_back(std::string(rowNames[r]) + " " + std::to_string(s) + "²");
             images.push_back({tag + rowFiles[r], std::move(img), ""});
         }
     }
@@ -266,18 +320,26 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         b.x.push_back(c.footprint);
         b.y.push_back(c.meanErrorEstimated);
     }
+    std::vector<PlotSeries> series;
+    if (o.exactStatistics) series.push_back(a);
+    series.push_back(b);
     LinePlotOptions lo;
-    lo.title = "Figure 4: mean error vs footprint (" + o.name + ")";
+    lo.title = title + ": mean error vs footprint (" + o.name + ")";
     lo.xLabel = "footprint side (texels)";
     lo.yLabel = "mean ‖Ŝ − S̄‖₂";
     lo.logX = true;
-    res.figures.push_back({"figure4.png", sheet(rows, captions),
-                           "Figure 4 (" + o.name + ", " + std::to_string(o.size) + "² per footprint): rows = reference S̄ (≤ " +
-                               std::to_string(o.referenceSamples) +
-                               "² samples per pixel), Ŝ with exact μ, Σ, its error, Ŝ with the "
-                               "estimators, its error; columns = footprint 1 … 128²."});
-    res.figures.push_back({"figure4_errors.png", linePlot({a, b}, lo),
-                           "Mean error per footprint (log scale in the footprint).", LineChart{{a, b}, lo}});
+    const std::string rowList = o.exactStatistics ? "reference S̄ (≤ " + std::to_string(o.referenceSamples) +
+                                                        "² samples per pixel), Ŝ with exact μ, Σ, its error, Ŝ with the "
+                                                        "estimators, its error"
+                                                  : "reference S̄ (≤ " + std::to_string(o.referenceSamples) +
+                                                        "² samples per pixel), Ŝ(μ̂, Σ̂) with the estimators, the "
+                                                        "error ‖Ŝ − S̄‖₂";
+    res.figures.push_back({o.figure + ".png", sheet(rows, captions),
+                           title + " (" + o.name + ", " + std::to_string(o.size) + "² per footprint): rows = " +
+                               rowList + "; columns = footprint " + std::to_string(o.footprints.front()) + " … " +
+                               std::to_string(o.footprints.back()) + "²."});
+    res.figures.push_back({o.figure + "_errors.png", linePlot(series, lo),
+                           "Mean error per footprint (log scale in the footprint).", LineChart{series, lo}});
     for (auto& f : images) res.figures.push_back(std::move(f));
     return res;
 }
@@ -292,7 +354,7 @@ struct PaperFigure {
     bool sameNoises;  // the panels differ only in H (panel a's noises throughout)
     std::array<const char*, 4> presets, captions;
 };
-const PaperFigure kFigures[3] = {
+const PaperFigure kFigures[4] = {
     {7,
      "figure7.png",
      "Figure 7: colormap layouts (same noises)",
@@ -312,7 +374,15 @@ const PaperFigure kFigures[3] = {
      {"weld", "low-high", "iso-aniso", "woven"},
      {"(a) two low-frequency isotropic", "(b) low + high frequency", "(c) isotropic + anisotropic",
       "(d) two orientations"}},
+    {10,
+     "figure10.png",
+     "Figure 10: phasor noise as a special case (N = a quadrature pair, H = P ∘ atan2)",
+     false,
+     {"phasor-stripes", "phasor-sawtooth", "phasor-square", "phasor-colour"},
+     {"(a) bi-lobe noises, sine profile", "(b) sawtooth profile", "(c) sum of two bi-lobes, square profile (duty 0.35)",
+      "(d) three-channel colour profile"}},
 };
+constexpr int kFirstPaperFigure = 7, kLastPaperFigure = 10;
 
 }  // namespace
 
@@ -320,7 +390,9 @@ std::vector<PaperFigurePanel> paperFigurePanels(int figure) {
     const PaperFigure* f = nullptr;
     for (const auto& k : kFigures)
         if (k.number == figure) f = &k;
-    if (!f) throw InputError::parameter("figure", "must be 7, 8 or 9, got " + std::to_string(figure));
+    if (!f)
+        throw InputError::parameter("figure", "must be in [" + std::to_string(kFirstPaperFigure) + ", " +
+                                                  std::to_string(kLastPaperFigure) + "], got " + std::to_string(figure));
     std::vector<PaperFigurePanel> panels;
     panels.reserve(4);
     for (size_t i = 0; i < 4; ++i) {
@@ -347,22 +419,28 @@ void validateFigures7to9(int size) {
     if (size < 64 || size > 2048) throw InputError("figures 7-9: size must be in [64, 2048], got " + std::to_string(size));
 }
 
+Figure paperFigureSheet(int figure, int size, const StudyProgress& progress) {
+    const std::vector<PaperFigurePanel> panels = paperFigurePanels(figure);
+    const PaperFigure* f = nullptr;
+    for (const auto& k : kFigures)
+        if (k.number == figure) f = &k;
+    std::vector<std::vector<Image>> rows(2);
+    std::vector<std::vector<std::string>> captions(2);
+    for (size_t i = 0; i < panels.size(); ++i) {
+        if (progress) progress(double(i) / double(panels.size()), panels[i].preset);
+        const PaperFigurePanel& p = panels[i];
+        rows[i / 2].push_back(patternSheet(p.pattern, p.spec.scale, size, p.preset).sheet);
+        captions[i / 2].push_back(p.caption);
+    }
+    return {f->file, sheet(rows, captions), f->title};
+}
+
 std::vector<Figure> figures7to9(int size, const StudyProgress& progress) {
     validateFigures7to9(size);
     std::vector<Figure> out;
-    for (const auto& f : kFigures) {
-        const Progress part = progressPart(progress, int(out.size()), int(std::size(kFigures)), f.title);
-        std::vector<std::vector<Image>> rows(2);
-        std::vector<std::vector<std::string>> captions(2);
-        const std::vector<PaperFigurePanel> panels = paperFigurePanels(f.number);
-        for (size_t i = 0; i < panels.size(); ++i) {
-            if (part) part(double(i) / double(panels.size()), "");
-            const PaperFigurePanel& p = panels[i];
-            rows[i / 2].push_back(patternSheet(p.pattern, p.spec.scale, size, p.preset).sheet);
-            captions[i / 2].push_back(p.caption);
-        }
-        out.push_back({f.file, sheet(rows, captions), f.title});
-    }
+    for (int figure = 7; figure <= 9; ++figure)
+        out.push_back(paperFigureSheet(figure, size,
+                                       progressPart(progress, figure - 7, 3, kFigures[size_t(figure - 7)].title)));
     return out;
 }
 

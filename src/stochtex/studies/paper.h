@@ -5,6 +5,7 @@
 // returns tables and images; writing them is the caller's (report/).
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,22 +53,39 @@ struct Figure4Options {
     // The response of the estimated statistics (the exact ones go through
     // the smooth table, as in the paper's Fig. 4b).
     ResponseOptions response;
+    // Which figure this is: the file names' prefix and the titles (figure4,
+    // figure11).
+    std::string figure = "figure4";
+    // Ŝ with the exact statistics and its error (Figure 4's rows 2–3;
+    // Figure 11 shows only S̄, Ŝ(μ̂, Σ̂) and the error).
+    bool exactStatistics = true;
+    // Where set, the colour the pattern fades to as the footprint grows (a
+    // phasor profile's mean): the mean distances of S̄ and Ŝ to it per footprint.
+    std::optional<Rgb> fadesTo;
 };
 void validateFigure4(const Figure4Options& options);
 
 struct Figure4Column {
     int footprint = 0;
     double meanErrorExact = 0, meanErrorEstimated = 0;  // mean ‖Ŝ − S̄‖₂ over the pixels (RGB)
+    // With fadesTo: mean ‖S̄ − m‖₂ and ‖Ŝ(μ̂, Σ̂) − m‖₂ over the pixels.
+    double meanFadeReference = 0, meanFadeEstimated = 0;
 };
 struct Figure4Result {
     std::vector<Figure4Column> columns;
-    Table table;                  // figure4.csv and the summary
-    std::vector<Figure> figures;  // figure4.png, figure4_errors.png, then the images per footprint
+    Table table;                  // <figure>.csv and the summary
+    std::vector<Figure> figures;  // <figure>.png, <figure>_errors.png, then the images per footprint
 };
 Figure4Result figure4(const Figure4Options& options, const StudyProgress& progress = {});
 
 // Per pixel ‖a − b‖₂ over RGB (a 1-channel image), and its mean.
 Image errorMap(const Image& a, const Image& b, double& mean);
+
+// Figure 11: Figure 4's comparison for the phasor sine pattern
+// (phasor-stripes): S̄, Ŝ(μ̂, Σ̂) and ‖Ŝ − S̄‖₂ per footprint, fading to the
+// profile's mean colour. The defaults; size, samples, footprints and the
+// response may be changed before calling figure4.
+Figure4Options figure11Options();
 
 // Figures 7–9: each a sheet of four presets (pattern, colormap, where N
 // falls, the two noises), `size` pixels per pattern, [64, 2048]. Figures 7
@@ -79,8 +97,12 @@ struct PaperFigurePanel {
     PatternSpec spec;  // what the panel shows (for 7 and 8: panel a's noises, this preset's colormap)
     Pattern pattern;
 };
-// figure: 7, 8 or 9 (InputError otherwise).
+// Figure 10 (studies/phasor_figures.h) is a sheet of four presets too: the
+// phasor variants, each as it is.
+// figure: 7 to 10 (InputError otherwise).
 std::vector<PaperFigurePanel> paperFigurePanels(int figure);
+// One figure's sheet, `size` pixels per pattern (not validated here).
+Figure paperFigureSheet(int figure, int size, const StudyProgress& progress = {});
 void validateFigures7to9(int size);
 std::vector<Figure> figures7to9(int size, const StudyProgress& progress = {});
 

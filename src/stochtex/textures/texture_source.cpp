@@ -1,7 +1,11 @@
 #include "stochtex/textures/texture_source.h"
 
+#include <cmath>
+#include <stdexcept>
+
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
+#include "stochtex/core/parallel.h"
 
 namespace stochtex {
 
@@ -73,6 +77,34 @@ Image FilteredPatternSource::render(const SourceRegion& region, double, int inst
         c.view = windowView(c.view, region, instance, exampleSize_);
     }
     return filtered_.render(c);
+}
+
+PhasorNoiseSource::PhasorNoiseSource(const PhasorNoiseParams& params, ColormapTable colormap, const View& view,
+                                     int exampleSize)
+    : noise_(params), colormap_(std::move(colormap)), view_(view), exampleSize_(exampleSize) {
+    if (exampleSize < 1) throw std::invalid_argument("PhasorNoiseSource: exampleSize must be positive");
+}
+
+Image PhasorNoiseSource::render(const SourceRegion& region, double, int instance) const {
+    PhasorNoiseParams p = noise_.params();
+    if (instance != 0) p.seed = deriveSeed(p.seed, uint32_t(instance));
+    const PhasorNoise noise(p);
+    View view = view_;
+    view.offsetU += region.x0 * view.scale;
+    view.offsetV += region.y0 * view.scale;
+    const double invW = 1.0 / double(exampleSize_);
+    Image out(region.width, region.height, 3, Image::Uninitialized{});
+    parallelRows(region.height, [&](int y0, int y1) {
+        for (int py = y0; py < y1; ++py) {
+            const double v = (view.offsetV + (py + 0.5) * view.scale) * invW;
+            for (int px = 0; px < region.width; ++px) {
+                const double phase = noise.phase((view.offsetU + (px + 0.5) * view.scale) * invW, v);
+                const Rgb c = colormap_.sample(float(0.5 + 0.25 * std::cos(phase)), float(0.5 + 0.25 * std::sin(phase)));
+                for (int k = 0; k < 3; ++k) out.at(px, py, k) = c[size_t(k)];
+            }
+        }
+    });
+    return out;
 }
 
 }  // namespace stochtex

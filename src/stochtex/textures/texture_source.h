@@ -4,8 +4,8 @@
 // process), and tells its closed-form statistics where it knows them.
 //
 // Adapters: the stationary zoom texture (instance i = white-noise lattice i,
-// analytic statistics from ZoomStatistics), a Pattern (unfiltered) and a
-// FilteredPattern (any statistics source and response, through its
+// analytic statistics from ZoomStatistics), a Pattern (unfiltered), the
+// procedural phasor noise (unfiltered) and a FilteredPattern (any statistics source and response, through its
 // Camera). Patterns are static (t is ignored); their instance i ≠ 0 is the same texture seen through a
 // window moved by a hashed offset of up to 1024 example periods, which for
 // the tiled-and-blended noise (tiles hashed per grid cell) is another draw of
@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "stochtex/image/image.h"
+#include "stochtex/noise/phasor_noise.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/pattern.h"
@@ -122,6 +123,25 @@ private:
     const FilteredPattern& filtered_;
     int exampleSize_;
     Camera camera_;
+};
+
+// Procedural phasor noise (noise/phasor_noise.h) under a phasor colormap H:
+// S = H(½ + ¼ cos φ, ½ + ¼ sin φ), the profile P(φ) through the same table as
+// a pattern's, unfiltered, one sample per pixel centre. Pixels map to uv as
+// a pattern's do: `view` in texels of an example of `exampleSize` (its size
+// is ignored: the region's is used). Instance i ≠ 0 draws the impulses with
+// the seed deriveSeed(seed, i). Static in t.
+class PhasorNoiseSource : public TextureSource {
+public:
+    PhasorNoiseSource(const PhasorNoiseParams& params, ColormapTable colormap, const View& view, int exampleSize);
+    int channels() const override { return 3; }
+    Image render(const SourceRegion& region, double time, int instance) const override;
+
+private:
+    PhasorNoise noise_;
+    ColormapTable colormap_;
+    View view_;
+    int exampleSize_;
 };
 
 }  // namespace stochtex
