@@ -248,6 +248,12 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"from", "--from"},
     {"to", "--to"},
     {"filters", "--filters"},
+    {"window", "--window"},
+    {"radialBins", "--radial-bins"},
+    {"method", "--method"},
+    {"step", "--step"},
+    {"arrowScale", "--arrow-scale"},
+    {"timeStep", "--dt"},
 };
 }  // namespace
 
