@@ -255,6 +255,12 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"orientation", "--orientation"},
     {"density", "--density"},
     {"comparisonSize", "--comparison-size"},
+    {"window", "--window"},
+    {"radialBins", "--radial-bins"},
+    {"method", "--method"},
+    {"step", "--step"},
+    {"arrowScale", "--arrow-scale"},
+    {"timeStep", "--dt"},
 };
 }  // namespace
 

@@ -195,6 +195,8 @@ void registerZoom(CLI::App& app);
 void registerCorrelation(CLI::App& app);
 void registerContrast(CLI::App& app);
 void registerAnalyze(CLI::App& app);
+void registerSpectrum(CLI::App& app);
+void registerFlow(CLI::App& app);
 void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
 void registerView(CLI::App& app);

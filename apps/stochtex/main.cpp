@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
     stochtex::cli::registerCorrelation(app);
     stochtex::cli::registerContrast(app);
     stochtex::cli::registerAnalyze(app);
+    stochtex::cli::registerSpectrum(app);
+    stochtex::cli::registerFlow(app);
     stochtex::cli::registerReproduce(app);
     stochtex::cli::registerScene(app);
     stochtex::cli::registerView(app);

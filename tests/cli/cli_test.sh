@@ -136,6 +136,30 @@ case_contrast() {
   grep -q "^sigmoid,0," "$out/contrast/contrast.csv" || fail "contrast.csv: the sigmoid should clamp 0% of pixels"
 }
 
+# Spectra and optical flow of the three kinds of source (issue 14 items 1, 3).
+case_spectrum() {
+  expect_ok "spectrum zoom" "$out/sp/index.html" -- "$bin" spectrum -o "$out/sp" --instances 4 --size 64 zoom --layers 3
+  grep -q "^4," "$out/sp/spectrum.csv" || fail "spectrum.csv: not 4 frames: $(cat "$out/sp/spectrum.csv")"
+  expect_ok "spectrum pattern" "$out/sp2/spectrum.png" -- "$bin" spectrum -o "$out/sp2" --size 64 pattern --preset woven
+  # Image files: a bi-lobe noise written by `noise`, its anisotropy far above 1.
+  "$bin" noise '{"type":"spectrum","size":64,"seed":2,"components":[{"shape":"bilobe","frequency":8,"bandwidth":1,"orientation":45}]}' -o "$out/lobe.png" >/dev/null
+  expect_ok "spectrum images" "$out/sp3/radial.csv" -- "$bin" spectrum -o "$out/sp3" --window none images "$out/lobe.png"
+  awk -F, 'NR==2 && !($4 > 5) {exit 1}' "$out/sp3/spectrum.csv" || fail "bi-lobe image: anisotropy not > 5: $(cat "$out/sp3/spectrum.csv")"
+  expect_bad "spectrum images size" "$out/sp4" "--size: has no effect on image files" -- "$bin" spectrum -o "$out/sp4" --size 32 images "$out/lobe.png"
+  expect_bad "spectrum no source" "$out/sp5" "A subcommand is required" -- "$bin" spectrum -o "$out/sp5"
+}
+
+case_flow() {
+  expect_ok "flow zoom" "$out/fl/flow_arrows.png" -- "$bin" flow -o "$out/fl" --frames 3 --dt 0.05 --size 64 --step 8 zoom --layers 4
+  # The zoom texture zooms in at rate 1 per time unit: ~0.05 per frame, outward.
+  awk -F, '$1=="mean" && !($8 > 0.03 && $8 < 0.07) {exit 1}' "$out/fl/flow.csv" || fail "flow zoom: expansion rate off: $(cat "$out/fl/flow.csv")"
+  "$bin" render --preset marble --size 64 -o "$out/f0.png" >/dev/null
+  "$bin" render --preset marble --size 64 --offset 2,0 -o "$out/f1.png" >/dev/null
+  expect_ok "flow images" "$out/fl2/flow.csv" -- "$bin" flow -o "$out/fl2" --method dis --step 8 images "$out/f0.png" "$out/f1.png"
+  expect_bad "flow one image" "$out/fl3" "images: the flow needs at least 2 image files" -- "$bin" flow -o "$out/fl3" images "$out/f0.png"
+  expect_bad "flow bad method" "$out/fl4" "--method" -- "$bin" flow -o "$out/fl4" --method magic zoom
+}
+
 case_analyze() {
   expect_ok "analyze" "$out/an/index.html" -- "$bin" analyze -o "$out/an" --instances 8 --plot-size 16 --layers-list 4 --size 64
   grep -q "figure2_10.png" "$out/an/index.html" || fail "analyze: index.html lacks the correlation sheet"

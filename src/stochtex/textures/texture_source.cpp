@@ -104,6 +104,35 @@ Image PhasorNoiseSource::render(const SourceRegion& region, double, int instance
             }
         }
     });
+ImageSequenceSource::ImageSequenceSource(std::vector<Image> frames) : frames_(std::move(frames)) {
+    if (frames_.empty()) throw InputError("image sequence: no image");
+    for (size_t k = 1; k < frames_.size(); ++k)
+        if (frames_[k].width() != width() || frames_[k].height() != height() ||
+            frames_[k].channels() != channels())
+            throw InputError("image sequence: image " + std::to_string(k + 1) + " is " +
+                             std::to_string(frames_[k].width()) + "×" + std::to_string(frames_[k].height()) + "×" +
+                             std::to_string(frames_[k].channels()) + ", the first is " + std::to_string(width()) +
+                             "×" + std::to_string(height()) + "×" + std::to_string(channels()));
+}
+
+Image ImageSequenceSource::render(const SourceRegion& region, double time, int instance) const {
+    const double k = instance != 0 ? instance : std::floor(time);
+    if (!(k >= 0 && k < frames()))
+        throw InputError("image sequence: no frame " + std::to_string(k) + " (there are " +
+                         std::to_string(frames()) + ")");
+    const Image& f = frames_[size_t(k)];
+    const int x0 = int(std::lround(region.x0)), y0 = int(std::lround(region.y0));
+    if (x0 < 0 || y0 < 0 || region.width < 1 || region.height < 1 || x0 + region.width > f.width() ||
+        y0 + region.height > f.height())
+        throw InputError("image sequence: the window " + std::to_string(region.width) + "×" +
+                         std::to_string(region.height) + " at (" + std::to_string(x0) + ", " + std::to_string(y0) +
+                         ") is not inside the " + std::to_string(f.width()) + "×" + std::to_string(f.height()) +
+                         " frames");
+    if (x0 == 0 && y0 == 0 && region.width == f.width() && region.height == f.height()) return f;
+    Image out(region.width, region.height, f.channels());
+    for (int y = 0; y < region.height; ++y)
+        for (int x = 0; x < region.width; ++x)
+            for (int c = 0; c < f.channels(); ++c) out.at(x, y, c) = f.at(x0 + x, y0 + y, c);
     return out;
 }
 

@@ -11,6 +11,7 @@
 // the tiled-and-blended noise (tiles hashed per grid cell) is another draw of
 // the random tile offsets. Instance 0 is the plain render.
 #include <memory>
+#include <vector>
 
 #include "stochtex/image/image.h"
 #include "stochtex/noise/phasor_noise.h"
@@ -142,6 +143,23 @@ private:
     ColormapTable colormap_;
     View view_;
     int exampleSize_;
+// Images as a source, so that files (frames of a video, photographs,
+// renders of another tool) feed the same studies: frame k = floor(time)
+// (one frame per time unit), instance i ≠ 0 reads frame i instead, so a set
+// of images can also stand for instances. Regions are windows of the frame
+// in its pixels (x0, y0 ≥ 0 from the top-left corner) and must lie inside.
+// All frames have one size and channel count (InputError otherwise).
+class ImageSequenceSource : public TextureSource {
+public:
+    explicit ImageSequenceSource(std::vector<Image> frames);
+    int frames() const { return int(frames_.size()); }
+    int width() const { return frames_.front().width(); }
+    int height() const { return frames_.front().height(); }
+    int channels() const override { return frames_.front().channels(); }
+    Image render(const SourceRegion& region, double time, int instance) const override;
+
+private:
+    std::vector<Image> frames_;
 };
 
 }  // namespace stochtex

@@ -1,0 +1,67 @@
+// stochtex flow: optical flow of image files, the zoom texture or a pattern's
+// frames (thesis §2.8, Figures 2.24–2.25), with the motion about the centre.
+#include <cstdio>
+
+#include "common.h"
+#include "progress.h"
+#include "stochtex/core/parallel.h"
+#include "stochtex/studies/flow_study.h"
+#include "texture_source_flags.h"
+
+namespace stochtex::cli {
+
+void registerFlow(CLI::App& app) {
+    struct Args {
+        FlowStudyOptions study;
+        std::vector<int> size{256};
+        std::string dir;
+        int threads = 0;
+    };
+    auto args = std::make_shared<Args>();
+    auto* cmd = app.add_subcommand("flow", "Optical flow between consecutive frames (Farnebäck, DIS or Lucas–Kanade): "
+                                           "HSV colours, arrows, outward motion: flow [flags] images|pattern|zoom ...");
+    cmd->fallthrough();
+    addOutputFolderFlag(*cmd, args->dir);
+    const CLI::Option* size =
+        cmd->add_option("--size", args->size, "Window size N or W,H (image files: their size)")->delimiter(',')->expected(1, 2);
+    const CLI::Option* frames = cmd->add_option("--frames", args->study.frames, "Frames (image files: all)")->capture_default_str();
+    const CLI::Option* dt =
+        cmd->add_option("--dt", args->study.timeStep, "Time between frames (image files: one file per frame)")->capture_default_str();
+    addEnumFlag(*cmd, "--method", args->study.method, kFlowMethodNames, "method",
+                "farneback | dis (dense) | lucas-kanade (sparse, on the grid)");
+    cmd->add_option("--step", args->study.step, "Grid of the vectors, pixels")->capture_default_str();
+    cmd->add_option("--arrow-scale", args->study.arrowScale, "Arrows drawn this many times their length")->capture_default_str();
+    addThreadsFlag(*cmd, args->threads);
+    addTextureSourceCommands(*cmd, [args, size, frames, dt](const TextureSource& source, const SourceInfo& info) {
+        FlowStudyOptions o = args->study;
+        o.frameTransfer = info.transfer;
+        if (info.images) {
+            refuseWithoutEffect(size, false, "on image files (the flow covers each whole file)");
+            refuseWithoutEffect(frames, false, "on image files (every file is a frame)");
+            refuseWithoutEffect(dt, false, "on image files (one file per frame)");
+            if (info.frames < 2) throw InputError("images: the flow needs at least 2 image files, got 1");
+            o.region = {info.width, info.height, 0, 0};
+            o.time = 0;
+            o.timeStep = 1;
+            o.frames = info.frames;
+        } else {
+            o.region = SourceRegion::centred(args->size[0], args->size.size() > 1 ? args->size[1] : args->size[0]);
+            o.time = info.time;
+        }
+        validateFlowStudy(o);
+        ThreadLimit limit(args->threads);
+        ensureFolder(args->dir);
+        ProgressLine progress("flow");
+        const FlowStudyResult r = flowStudy(source, o, progress.callback());
+        progress.finish();
+        writeFigures(args->dir, r.figures);
+        writeText(args->dir, "flow.csv", r.summary.csv());
+        writeText(args->dir, "index.html",
+                  htmlPage("Optical flow: " + info.name, "<h1>Optical flow: " + htmlEscape(info.name) + "</h1>" +
+                                                             r.summary.html() + htmlFigures("", r.figures)));
+        std::printf("%s\nwrote %zu figures, flow.csv and index.html to %s\n", r.summary.markdown().c_str(),
+                    r.figures.size(), args->dir.c_str());
+    });
+}
+
+}  // namespace stochtex::cli

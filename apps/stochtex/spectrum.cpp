@@ -1,0 +1,66 @@
+// stochtex spectrum: the power spectrum of image files, a pattern or the zoom
+// texture, averaged over frames and instances (thesis §2.7, Figure 2.22).
+#include <cstdio>
+
+#include "common.h"
+#include "progress.h"
+#include "stochtex/core/parallel.h"
+#include "stochtex/studies/spectrum_study.h"
+#include "texture_source_flags.h"
+
+namespace stochtex::cli {
+
+void registerSpectrum(CLI::App& app) {
+    struct Args {
+        SpectrumStudyOptions study;
+        std::vector<int> size{256};
+        std::string dir;
+        int threads = 0;
+    };
+    auto args = std::make_shared<Args>();
+    auto* cmd = app.add_subcommand("spectrum", "Power spectrum (centred, log scale), radial and angular profiles and "
+                                               "anisotropy of images, a pattern or the zoom texture: "
+                                               "spectrum [flags] images|pattern|zoom ...");
+    cmd->fallthrough();
+    addOutputFolderFlag(*cmd, args->dir);
+    const CLI::Option* size = cmd->add_option("--size", args->size, "Window size N or W,H (image files: their size)")->delimiter(',')->expected(1, 2);
+    const CLI::Option* instances = cmd->add_option("--instances", args->study.instances, "Instances averaged (patterns: moved windows; zoom: "
+                                                         "white-noise lattices)")
+        ->capture_default_str();
+    addEnumFlag(*cmd, "--window", args->study.window, kSpectrumWindowNames, "window",
+                "Taper before the DFT: hann (frames) | none (periodic images)");
+    cmd->add_option("--radial-bins", args->study.radialBins, "Bins of the radial profile")->capture_default_str();
+    addThreadsFlag(*cmd, args->threads);
+    addTextureSourceCommands(*cmd, [args, size, instances](const TextureSource& source, const SourceInfo& info) {
+        SpectrumStudyOptions o = args->study;
+        o.frameTransfer = info.transfer;
+        if (info.images) {
+            refuseWithoutEffect(size, false, "on image files (the spectrum covers each whole file)");
+            refuseWithoutEffect(instances, false, "on image files (every file is averaged)");
+            o.region = {info.width, info.height, 0, 0};
+            o.times.clear();
+            for (int k = 0; k < info.frames; ++k) o.times.push_back(k);
+            o.instances = 1;
+        } else {
+            o.region = SourceRegion::centred(args->size[0], args->size.size() > 1 ? args->size[1] : args->size[0]);
+            o.times = {info.time};
+        }
+        validateSpectrumStudy(o);
+        ThreadLimit limit(args->threads);
+        ensureFolder(args->dir);
+        ProgressLine progress("spectrum");
+        const SpectrumStudyResult r = spectrumStudy(source, o, progress.callback());
+        progress.finish();
+        writeFigures(args->dir, r.figures);
+        writeText(args->dir, "spectrum.csv", r.summary.csv());
+        writeText(args->dir, "radial.csv", r.profile.csv());
+        writeText(args->dir, "index.html",
+                  htmlPage("Power spectrum: " + info.name,
+                           "<h1>Power spectrum: " + htmlEscape(info.name) + "</h1>" + r.summary.html() +
+                               htmlFigures("", r.figures)));
+        std::printf("%s\nwrote spectrum.png, radial.png, angular.png, spectrum.csv, radial.csv and index.html to %s\n",
+                    r.summary.markdown().c_str(), args->dir.c_str());
+    });
+}
+
+}  // namespace stochtex::cli

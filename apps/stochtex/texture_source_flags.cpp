@@ -1,0 +1,58 @@
+#include "texture_source_flags.h"
+
+#include <memory>
+
+#include "common.h"
+#include "stochtex/image/image_io.h"
+#include "zoom_flags.h"
+
+namespace stochtex::cli {
+
+void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
+    cmd.require_subcommand(1);
+    auto files = std::make_shared<std::vector<std::string>>();
+    auto* images = cmd.add_subcommand("images", "Image files (PNG, EXR, JPEG): frames of a sequence, in order");
+    images->add_option("files", *files, "The images, all of one size")->required()->check(CLI::ExistingFile);
+    images->callback([files, study] {
+        std::vector<Image> frames;
+        for (const std::string& f : *files) frames.push_back(readImage(f));
+        const ImageSequenceSource source(std::move(frames));
+        study(source, {std::to_string(files->size()) + " image file(s)", true, source.frames(), source.width(),
+                       source.height(), Transfer::Linear});
+    });
+
+    struct PatternArgs {
+        PatternSource source;
+        ViewFlags view;
+        FilterOptions options;
+    };
+    auto p = std::make_shared<PatternArgs>();
+    p->options.use(parseFilter("none"));
+    auto* pattern = cmd.add_subcommand("pattern", "A pattern seen in the zoom view; instance i moves the window "
+                                                  "(another draw of the tile offsets)");
+    addPatternSource(*pattern, p->source);
+    addViewFlags(*pattern, p->view);
+    addFilterFlag(*pattern, p->options, "none | paper | smooth | exact | reference");
+    pattern->callback([p, pattern, study] {
+        refuseUnusedFilterFlags(*pattern, p->options);
+        const PatternSpec spec = loadPatternSource(p->source, p->options);
+        Camera camera;
+        camera.view = makeView(spec, p->view);
+        const Pattern built = Pattern::build(spec);
+        const FilteredPattern filtered(built, p->options);
+        const FilteredPatternSource source(filtered, built.exampleSize(), camera);
+        study(source, {spec.name + ", filter " + filterName(p->options), false, 0, 0, 0, Transfer::Srgb});
+    });
+
+    auto zoom = std::make_shared<ZoomFlags>();
+    auto* z = cmd.add_subcommand("zoom", "The stationary zoom texture (thesis eq. 2.1); instance i = white-noise "
+                                         "lattice i");
+    addZoomFlags(*z, *zoom);
+    z->callback([zoom, study] {
+        const ZoomSource source(makeZoomParams(*zoom), makeZoomBase(*zoom));
+        study(source, {"zoom texture, n = " + std::to_string(source.params().layers), false, 0, 0, 0,
+                       Transfer::Linear, source.params().time});
+    });
+}
+
+}  // namespace stochtex::cli

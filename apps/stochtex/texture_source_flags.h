@@ -1,0 +1,32 @@
+#pragma once
+// The texture a frame study (`spectrum`, `flow`) analyses, chosen by a
+// sub-command of it, so each source keeps its own flags:
+//   CMD images FILE...    image files: frames of a sequence (or instances)
+//   CMD pattern ...       a pattern (--preset / --pattern), unfiltered or --filter
+//   CMD zoom ...          the stationary zoom texture (the zoom command's flags)
+// The study's own flags stay on CMD, before the sub-command.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+
+#include "stochtex/image/colour_space.h"
+#include "stochtex/textures/texture_source.h"
+
+namespace stochtex::cli {
+
+// What the study needs to know of the source beside its frames.
+struct SourceInfo {
+    std::string name;
+    bool images = false;   // an ImageSequenceSource: windows at (0, 0), frames = files
+    int frames = 0;        // image files given (images only)
+    int width = 0, height = 0;  // the files' size (images only)
+    Transfer transfer = Transfer::Linear;  // how its frames are shown (Srgb: linear colour renders)
+    double time = 0;  // the first frame's time (zoom: --time)
+};
+using SourceStudy = std::function<void(const TextureSource& source, const SourceInfo& info)>;
+
+// Adds the three sub-commands to cmd (one is required); the chosen one builds
+// its source (InputError naming the flag or file on bad input) and calls study.
+void addTextureSourceCommands(CLI::App& cmd, SourceStudy study);
+
+}  // namespace stochtex::cli

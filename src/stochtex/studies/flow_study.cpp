@@ -1,0 +1,117 @@
+#include "stochtex/studies/flow_study.h"
+
+#include <cmath>
+#include <string>
+
+#include "stochtex/analysis/plot.h"
+#include "stochtex/core/error.h"
+
+namespace stochtex {
+
+void validateFlowStudy(const FlowStudyOptions& o) {
+    const SourceRegion& r = o.region;
+    if (r.width < 16 || r.height < 16 || r.width > 4096 || r.height > 4096)
+        throw InputError::parameter("size", "must be 16…4096 pixels a side, got " + std::to_string(r.width) + "×" +
+                                                std::to_string(r.height));
+    if (o.frames < 2 || o.frames > 10000)
+        throw InputError::parameter("frames", "must be 2…10000, got " + std::to_string(o.frames));
+    if (!std::isfinite(o.time) || !std::isfinite(o.timeStep) || !std::isfinite(o.time + o.timeStep * o.frames))
+        throw InputError::parameter("time", "the frame times must be finite");
+    if (o.step < 1 || o.step > std::min(r.width, r.height))
+        throw InputError::parameter("step", "must be 1…the window's side, got " + std::to_string(o.step));
+    if (o.margin < 0 || 2 * o.margin >= std::min(r.width, r.height))
+        throw InputError::parameter("margin", "must leave part of the window, got " + std::to_string(o.margin));
+    if (!(o.arrowScale > 0 && o.arrowScale <= 1000))
+        throw InputError::parameter("arrowScale", "must be in (0, 1000]");
+}
+
+namespace {
+
+void addSummaryRow(Table& t, const std::string& pair, const FlowSummary& s) {
+    t.add({pair, TableCell::integer(s.vectors), TableCell::value(s.meanU), TableCell::value(s.meanV),
+           TableCell::value(s.meanMagnitude), TableCell::value(s.meanRadial), TableCell::value(s.outwardFraction, "%.3f"),
+           TableCell::value(s.expansionRate, "%.5f")});
+}
+
+}  // namespace
+
+FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o, const StudyProgress& progress) {
+    validateFlowStudy(o);
+    const SourceRegion& region = o.region;
+    double cx = o.centreX, cy = o.centreY;
+    if (std::isnan(cx) || std::isnan(cy)) {
+        const double ox = -region.x0, oy = -region.y0;  // where the source's origin falls in the window
+        const bool inside = ox >= 0 && oy >= 0 && ox < region.width && oy < region.height;
+        cx = inside ? ox : 0.5 * region.width;
+        cy = inside ? oy : 0.5 * region.height;
+    }
+    FlowStudyResult r;
+    r.summary.columns = {{"pair", "frames", ""},
+                         {"vectors", "vectors", ""},
+                         {"mean_u", "mean u", "px"},
+                         {"mean_v", "mean v", "px"},
+                         {"mean_magnitude", "mean |flow|", "px"},
+                         {"mean_radial", "mean outward", "px"},
+                         {"outward_fraction", "outward fraction", ""},
+                         {"expansion_rate", "expansion rate", "per frame"}};
+    const bool dense = o.method != FlowMethod::LucasKanade;
+    Image prev = source.render(region, o.time, o.instance), first = prev, firstFlow;
+    std::vector<FlowVector> firstVectors;
+    for (int k = 0; k + 1 < o.frames; ++k) {
+        if (progress) progress(double(k) / (o.frames - 1), "pair " + std::to_string(k + 1) + "/" + std::to_string(o.frames - 1));
+        Image next = source.render(region, o.time + (k + 1) * o.timeStep, o.instance);
+        std::vector<FlowVector> v;
+        if (dense) {
+            Image flow = denseFlow(prev, next, o.method);
+            v = sampleFlow(flow, o.step, o.margin);
+            if (k == 0) firstFlow = std::move(flow);
+        } else {
+            v = flowVectors(prev, next, o.method, o.step, o.margin);
+        }
+        r.pairs.push_back(summariseFlow(v, cx, cy));
+        if (k == 0) firstVectors = std::move(v);
+        addSummaryRow(r.summary, std::to_string(k) + "→" + std::to_string(k + 1), r.pairs.back());
+        prev = std::move(next);
+    }
+    for (const FlowSummary& s : r.pairs) {
+        r.mean.vectors += s.vectors;
+        r.mean.meanU += s.meanU / r.pairs.size();
+        r.mean.meanV += s.meanV / r.pairs.size();
+        r.mean.meanMagnitude += s.meanMagnitude / r.pairs.size();
+        r.mean.meanRadial += s.meanRadial / r.pairs.size();
+        r.mean.outwardFraction += s.outwardFraction / r.pairs.size();
+        r.mean.expansionRate += s.expansionRate / r.pairs.size();
+    }
+    addSummaryRow(r.summary, "mean", r.mean);
+
+    const std::string method = enumName(kFlowMethodNames, o.method);
+    char numbers[200];
+    std::snprintf(numbers, sizeof numbers, "mean outward motion %.3f px, %.0f%% of moving vectors outward, expansion rate %.4f per frame",
+                  r.pairs[0].meanRadial, 100 * r.pairs[0].outwardFraction, r.pairs[0].expansionRate);
+    if (dense)
+        r.figures.push_back({"flow_colour.png", flowColourImage(firstFlow),
+                             "Flow of frames 0→1 (" + method +
+                                 "): direction as hue (right red, up yellow-green, left cyan, down violet), magnitude as "
+                                 "brightness (the largest is full)."});
+    r.figures.push_back({"flow_arrows.png", flowArrowsImage(encodeTransfer(first, o.frameTransfer), firstVectors, o.arrowScale),
+                         "Flow vectors of frames 0→1 (" + method + ", every " + std::to_string(o.step) +
+                             " px, drawn ×" + TableCell::value(o.arrowScale, "%g").text + "): " + numbers + "."});
+    if (r.pairs.size() >= 2) {
+        PlotSeries s{"expansion rate", {}, {}, {0.1f, 0.3f, 0.8f}};
+        for (size_t k = 0; k < r.pairs.size(); ++k) {
+            s.x.push_back(double(k));
+            s.y.push_back(r.pairs[k].expansionRate);
+        }
+        LinePlotOptions po;
+        po.title = "Expansion rate per frame pair";
+        po.xLabel = "pair k (frames k → k + 1)";
+        po.yLabel = "outward motion / distance";
+        r.figures.push_back({"expansion.png", linePlot({s}, po),
+                             "The least-squares rate k of outward motion ≈ k·distance from the centre: positive for "
+                             "content moving outward (a zoom in), 0 for a fixed texture.",
+                             LineChart{{s}, po}});
+    }
+    return r;
+}
+
+}  // namespace stochtex
