@@ -104,6 +104,9 @@ Image PhasorNoiseSource::render(const SourceRegion& region, double, int instance
             }
         }
     });
+    return out;
+}
+
 ImageSequenceSource::ImageSequenceSource(std::vector<Image> frames) : frames_(std::move(frames)) {
     if (frames_.empty()) throw InputError("image sequence: no image");
     for (size_t k = 1; k < frames_.size(); ++k)

@@ -143,6 +143,8 @@ private:
     ColormapTable colormap_;
     View view_;
     int exampleSize_;
+};
+
 // Images as a source, so that files (frames of a video, photographs,
 // renders of another tool) feed the same studies: frame k = floor(time)
 // (one frame per time unit), instance i ≠ 0 reads frame i instead, so a set
