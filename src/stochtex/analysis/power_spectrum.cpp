@@ -96,26 +96,43 @@ Image SpectrumAccumulator::mean() const {
     return out;
 }
 
-RadialProfile radialProfile(const Image& spectrum, int bins) {
-    checkSpectrum(spectrum, "radialProfile");
-    if (bins < 1) throw std::invalid_argument("radialProfile: bins must be ≥ 1");
+namespace {
+
+// The mean of P over the samples binOf puts in each of `bins` bins (binOf
+// returns −1 to leave a sample out; the zero frequency is never counted):
+// (bin, mean) for the bins that received samples.
+template <class BinOf>
+std::vector<std::pair<int, double>> binnedMeans(const Image& spectrum, int bins, BinOf binOf) {
     const int w = spectrum.width(), h = spectrum.height();
     std::vector<double> sum(size_t(bins), 0.0), count(size_t(bins), 0.0);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             if (x == w / 2 && y == h / 2) continue;
             const Frequency f = frequencyOf(x, y, w, h);
-            const double r = std::hypot(f.fx, f.fy);
-            const int b = int(r / 0.5 * bins);
-            if (b >= bins) continue;
+            const int b = binOf(f, std::hypot(f.fx, f.fy));
+            if (b < 0) continue;
             sum[size_t(b)] += spectrum.at(x, y);
             count[size_t(b)] += 1;
         }
+    std::vector<std::pair<int, double>> out;
+    for (int b = 0; b < bins; ++b)
+        if (count[size_t(b)] > 0) out.emplace_back(b, sum[size_t(b)] / count[size_t(b)]);
+    return out;
+}
+
+}  // namespace
+
+RadialProfile radialProfile(const Image& spectrum, int bins) {
+    checkSpectrum(spectrum, "radialProfile");
+    if (bins < 1) throw std::invalid_argument("radialProfile: bins must be ≥ 1");
     RadialProfile p;
-    for (int b = 0; b < bins; ++b) {
-        if (count[size_t(b)] == 0) continue;  // bins narrower than a sample near 0
+    // Bins narrower than a sample near 0 may stay empty: left out.
+    for (const auto& [b, mean] : binnedMeans(spectrum, bins, [bins](const Frequency&, double r) {
+             const int b = int(r / 0.5 * bins);
+             return b < bins ? b : -1;
+         })) {
         p.radius.push_back((b + 0.5) * 0.5 / bins);
-        p.power.push_back(sum[size_t(b)] / count[size_t(b)]);
+        p.power.push_back(mean);
     }
     return p;
 }
@@ -123,23 +140,13 @@ RadialProfile radialProfile(const Image& spectrum, int bins) {
 AngularProfile angularProfile(const Image& spectrum, int bins, double rMin, double rMax) {
     checkSpectrum(spectrum, "angularProfile");
     if (bins < 1) throw std::invalid_argument("angularProfile: bins must be ≥ 1");
-    const int w = spectrum.width(), h = spectrum.height();
-    std::vector<double> sum(size_t(bins), 0.0), count(size_t(bins), 0.0);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            if (x == w / 2 && y == h / 2) continue;
-            const Frequency f = frequencyOf(x, y, w, h);
-            const double r = std::hypot(f.fx, f.fy);
-            if (r < rMin || r > rMax) continue;
-            const int b = std::min(bins - 1, int(foldedAngle(f) / kPi * bins));
-            sum[size_t(b)] += spectrum.at(x, y);
-            count[size_t(b)] += 1;
-        }
     AngularProfile p;
-    for (int b = 0; b < bins; ++b) {
-        if (count[size_t(b)] == 0) continue;
+    for (const auto& [b, mean] : binnedMeans(spectrum, bins, [=](const Frequency& f, double r) {
+             if (r < rMin || r > rMax) return -1;
+             return std::min(bins - 1, int(foldedAngle(f) / kPi * bins));
+         })) {
         p.angleDeg.push_back((b + 0.5) * 180.0 / bins);
-        p.power.push_back(sum[size_t(b)] / count[size_t(b)]);
+        p.power.push_back(mean);
     }
     return p;
 }
