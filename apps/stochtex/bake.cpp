@@ -12,6 +12,7 @@ void registerBake(CLI::App& app) {
     struct Args {
         PatternSource source;
         FilterOptions options;
+        ResponseFlags response;
         std::string dir;
         std::string precision = "half";
     };
@@ -23,9 +24,11 @@ void registerBake(CLI::App& app) {
     addFilterFlag(*cmd, args->options,
                   "Table: smooth | paper (σ ≤ 0.125: distant areas drift ~4/255 for the presets, docs/PATTERNS.md)");
     addAnisoFlag(*cmd, args->options.aniso);
+    addResponseFlags(*cmd, args->response);
     cmd->add_option("--table-precision", args->precision,
                     "half (default: half the size, error <= 0.06/255) | float (bit-exact with render --gpu)");
-    cmd->callback([args] {
+    cmd->callback([args, cmd] {
+        applyResponseFlags(*cmd, args->response, args->options);
         ExportOptions e;
         if (args->precision == "float")
             e.halfTable = false;
@@ -34,7 +37,7 @@ void registerBake(CLI::App& app) {
         const PatternSpec spec = loadPatternSource(args->source, args->options);
         const Pattern pattern = Pattern::build(spec);
         exportPattern(pattern, args->options, args->dir, e);
-        std::printf("exported %s (%s table) to %s: manifest.json, stochtex.glsl, README.md and the data\n",
+        std::printf("exported %s (filter %s) to %s: manifest.json, stochtex.glsl, README.md and the data\n",
                     spec.name.c_str(), filterName(args->options).c_str(), args->dir.c_str());
     });
 }

@@ -18,6 +18,7 @@ void registerBakeImage(CLI::App& app) {
         PatternSource source;
         ViewFlags view;
         FilterOptions options;
+        ResponseFlags response;
         DeviceFlags device;
         std::string output;
         int bits = 8, band = 256, threads = 0;
@@ -32,11 +33,13 @@ void registerBakeImage(CLI::App& app) {
                        "as rendered)");
     addFilterFlag(*cmd, args->options, "none | paper | smooth");
     addAnisoFlag(*cmd, args->options.aniso);
+    addResponseFlags(*cmd, args->response);
     const CLI::Option* bits = addBitsFlag(*cmd, args->bits);
     cmd->add_option("--band", args->band, "Rows rendered at a time")->check(CLI::Range(1, 4096));
     addDeviceFlags(*cmd, args->device, "Render the bands with the GLSL implementation", false);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args, cmd, bits] {
+        applyResponseFlags(*cmd, args->response, args->options);
         refuseUnusedFilterFlags(*cmd, args->options);
         refuseUnusedDeviceFlags(*cmd, args->device);
         checkBitsApply(bits, args->output);

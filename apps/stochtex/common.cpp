@@ -171,6 +171,23 @@ void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& hel
         cmd, [&options](const NamedFilter& f) { options.use(f); }, filterName(options), help);
 }
 
+void addResponseFlags(CLI::App& cmd, ResponseFlags& flags) {
+    cmd.add_option("--response", flags.kind,
+                   "What the statistics become: prefiltered-colormap (the pattern's colours) | lean (its "
+                   "normal_map, shaded; docs/PATTERNS.md)")
+        ->transform(enumTransformer(kResponseKindNames, "response"))
+        ->default_str(enumName(kResponseKindNames, ResponseKind::PrefilteredColormap));
+    cmd.add_flag("--no-covariance", flags.noCovariance,
+                 "--response lean without the slopes' covariance (paper Fig. 12's variant)");
+}
+
+void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterOptions& options) {
+    if (flags.kind) options.response.kind = *flags.kind;
+    refuseWithoutEffect(cmd.get_option_no_throw("--no-covariance"), options.response.kind == ResponseKind::Lean,
+                        "without --response lean (only the normal map's slopes are correlated)");
+    if (flags.noCovariance) options.response.covariance = false;
+}
+
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso) {
     aniso = kDefaultAniso;
     return cmd.add_option("--aniso", aniso, "Anisotropic probes K (1 = isotropic trilinear, up to 16)")
@@ -224,6 +241,7 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"filter", "--filter"},
     {"source", "--filter"},
     {"aniso", "--aniso"},
+    {"response", "--response"},
     {"referenceMaxSamples", "--reference-samples"},
     {"tiltDeg", "--tilt"},
     {"fovDeg", "--fov"},
@@ -248,6 +266,7 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"from", "--from"},
     {"to", "--to"},
     {"filters", "--filters"},
+    {"truthSamples", "--truth-samples"},
     {"roughness", "--roughness"},
     {"referenceSamples", "--reference-samples"},
     {"frequency", "--frequency"},

@@ -130,6 +130,20 @@ void addFilterFlag(CLI::App& cmd, std::function<void(const NamedFilter&)> set, c
 // own (each command documents why it starts where it does).
 void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& help);
 
+// --response NAME (kResponseKindNames) and --no-covariance: the response
+// axis of the filter (pattern/response.h). --filter names a pair with the
+// prefiltered colormap; --response lean shades the pattern's normal map
+// instead, from the statistics the filter names (none: the point's slope;
+// paper/smooth: the estimators; exact; reference: supersampled shading).
+struct ResponseFlags {
+    std::optional<ResponseKind> kind;
+    bool noCovariance = false;  // lean without ĉov (paper Fig. 12's variant)
+};
+void addResponseFlags(CLI::App& cmd, ResponseFlags& flags);
+// Sets options.response from the flags (after --filter, which sets both
+// axes); --no-covariance without the lean response is refused.
+void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterOptions& options);
+
 // The default of --aniso in every command. 8 probes: an isotropic footprint
 // (the zoom view) takes one probe whatever K is, so only oblique views pay,
 // and they need it (with K = 1, `render --view plane --filter smooth` blurs

@@ -17,6 +17,7 @@ void registerRender(CLI::App& app) {
         ViewFlags view;
         Camera camera;
         FilterOptions options;
+        ResponseFlags response;
         DeviceFlags device;
         std::string output;
         int bits = 8, threads = 0;
@@ -33,6 +34,7 @@ void registerRender(CLI::App& app) {
                   "interpolated table up to σ = 1: no drift) | exact (brute-force statistics + table) | "
                   "reference (supersampled S̄)");
     addAnisoFlag(*cmd, args->options.aniso);
+    addResponseFlags(*cmd, args->response);
     addEnumFlag(*cmd, "--estimator", args->options.estimator, kVarianceEstimatorNames, "estimator",
                 "Variance estimator: paper | deliot-heitz (one variance per LOD)");
     addCameraFlags(*cmd, args->camera);
@@ -47,6 +49,7 @@ void registerRender(CLI::App& app) {
                    true);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args, cmd, bits] {
+        applyResponseFlags(*cmd, args->response, args->options);
         refuseUnusedFilterFlags(*cmd, args->options);
         refuseUnusedCameraFlags(*cmd, args->camera);
         refuseUnusedDeviceFlags(*cmd, args->device);

@@ -15,6 +15,7 @@ void registerScene(CLI::App& app) {
     struct Args {
         PatternSource source;
         FilterOptions options;
+        ResponseFlags response;
         std::string output, object = "sphere";
         std::vector<int> size{768, 512};
         float tiling = 4.0f;
@@ -26,9 +27,11 @@ void registerScene(CLI::App& app) {
     cmd->add_option("--object", args->object, "plane | sphere | torus");
     addFilterFlag(*cmd, args->options, "none | paper | smooth");
     addAnisoFlag(*cmd, args->options.aniso);
+    addResponseFlags(*cmd, args->response);
     cmd->add_option("--tiling", args->tiling, "Example periods across the object's uv square");
     cmd->add_option("--size", args->size, "Image size: N or W,H")->delimiter(',')->expected(1, 2);
     cmd->callback([args, cmd] {
+        applyResponseFlags(*cmd, args->response, args->options);
         refuseUnusedFilterFlags(*cmd, args->options);
         checkImageOutput(args->output);
         const int w = args->size[0], h = args->size.size() > 1 ? args->size[1] : args->size[0];

@@ -14,11 +14,12 @@ void registerView(CLI::App& app) {
     struct Args {
         PatternSource source;
         ViewWindowOptions window;
+        ResponseFlags response;
         std::vector<int> size{960, 640};
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("view", "Interactive window (GLSL): wheel zooms, drag pans, 1/2/3 filter "
-                                           "none/paper/smooth, V zoom/plane, Up/Down tilt, D camera/rasterizer "
+                                           "none/paper/smooth, L colours/LEAN normals, V zoom/plane, Up/Down tilt, D camera/rasterizer "
                                            "derivatives, Esc quits");
     ViewWindowOptions& w = args->window;
     addPatternSource(*cmd, args->source);
@@ -26,11 +27,13 @@ void registerView(CLI::App& app) {
     addCameraFlags(*cmd, w.camera, false);
     cmd->add_option("--scale", w.camera.view.scale, "Starting scale (texels per pixel)");
     addAnisoFlag(*cmd, w.filter.aniso);
+    addResponseFlags(*cmd, args->response);
     cmd->add_option("--size", args->size, "Window size: N or W,H")->delimiter(',')->expected(1, 2);
     cmd->add_option("--frames", w.frames, "Quit after this many frames (0: when the window closes)")
         ->check(CLI::Range(0, 1000000));
     cmd->add_option("--screenshot", w.screenshot, "Save the last frame to this PNG/EXR");
-    cmd->callback([args] {
+    cmd->callback([args, cmd] {
+        applyResponseFlags(*cmd, args->response, args->window.filter);
         ViewWindowOptions o = args->window;
         if (!o.screenshot.empty()) checkImageOutput(o.screenshot);
         o.camera.view.width = args->size[0];

@@ -1,5 +1,6 @@
 // The window of `stochtex view`. Wheel: zoom about the cursor; drag: pan;
-// 1/2/3: filter none/paper/smooth; V: zoom or plane view; Up/Down: tilt; D:
+// 1/2/3: filter none/paper/smooth; L: colours or the normal map's LEAN
+// shading (a pattern with a normal_map); V: zoom or plane view; Up/Down: tilt; D:
 // footprints from the camera's Jacobian or the rasterizer's derivatives; Esc: quit.
 #include "view_window.h"
 
@@ -26,6 +27,8 @@ namespace {
 struct ViewerState {
     Camera camera;
     std::string filter = "smooth";  // a name of kFilterNames
+    ResponseKind response = ResponseKind::PrefilteredColormap;
+    bool hasNormalMap = false;  // whether L may switch to the lean response
     GpuPattern::Derivatives derivatives = GpuPattern::Derivatives::Camera;
     double cursorX = 0, cursorY = 0;
     bool dragging = false;
@@ -67,6 +70,10 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
         case GLFW_KEY_1: s->filter = "none"; break;
         case GLFW_KEY_2: s->filter = "paper"; break;
         case GLFW_KEY_3: s->filter = "smooth"; break;
+        case GLFW_KEY_L:
+            if (s->hasNormalMap)
+                s->response = s->response == ResponseKind::Lean ? ResponseKind::PrefilteredColormap : ResponseKind::Lean;
+            break;
         case GLFW_KEY_V:
             s->camera.kind = s->camera.kind == Camera::Kind::Zoom ? Camera::Kind::Plane : Camera::Kind::Zoom;
             break;
@@ -115,7 +122,11 @@ Image readWindow(int w, int h) {
 int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWindowOptions& options) {
     ViewerState state;
     state.camera = options.camera;
-    state.filter = filterName(options.filter);
+    // The filter's name without the response (L switches that).
+    state.filter = filterName(
+        FilterOptions{}.use({options.filter.source, {ResponseKind::PrefilteredColormap, options.filter.response.prefilter}}));
+    state.response = options.filter.response.kind;
+    state.hasNormalMap = pattern.normalMap() != nullptr;
     auto context = GlContext::window(state.camera.view.width, state.camera.view.height, "stochtex view");
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     glfwSetWindowUserPointer(window, &state);
@@ -123,7 +134,7 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
     glfwSetCursorPosCallback(window, onCursor);
     glfwSetMouseButtonCallback(window, onButton);
     glfwSetKeyCallback(window, onKey);
-    std::map<std::string, std::unique_ptr<GpuPattern>> renderers;  // by filter name, built on first use
+    std::map<std::pair<std::string, ResponseKind>, std::unique_ptr<GpuPattern>> renderers;  // built on first use
     std::unique_ptr<RenderTarget> target;                          // rebuilt when the window's size changes
     const Display display;
     int frame = 0;
@@ -134,10 +145,14 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
         context->framebufferSize(fw, fh);
         state.camera.view.width = std::max(fw, 1);
         state.camera.view.height = std::max(fh, 1);
-        auto& r = renderers[state.filter];
+        auto& r = renderers[{state.filter, state.response}];
         if (!r) {
             FilterOptions o = options.filter;
-            r = std::make_unique<GpuPattern>(pattern, *context, o.use(parseFilter(state.filter)));
+            const bool covariance = o.response.covariance;
+            o.use(parseFilter(state.filter));
+            o.response.kind = state.response;
+            o.response.covariance = covariance;
+            r = std::make_unique<GpuPattern>(pattern, *context, o);
         }
         const int w = state.camera.view.width, h = state.camera.view.height;
         if (!target || target->width() != w || target->height() != h)
@@ -154,8 +169,10 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
         last = now;
         fps = fps == 0 ? 1.0 / std::max(dt, 1e-6) : 0.9 * fps + 0.1 / std::max(dt, 1e-6);
         char title[200];
-        std::snprintf(title, sizeof title, "stochtex view - %s - %s - %s view - %s derivatives - scale %.3g - %.0f fps",
-                      name.c_str(), state.filter == "none" ? "unfiltered" : state.filter.c_str(),
+        std::snprintf(title, sizeof title,
+                      "stochtex view - %s - %s%s - %s view - %s derivatives - scale %.3g - %.0f fps", name.c_str(),
+                      state.filter == "none" ? "unfiltered" : state.filter.c_str(),
+                      state.response == ResponseKind::Lean ? " LEAN normals" : "",
                       enumName(Camera::kKindNames, state.camera.kind).c_str(),
                       enumName(kGpuDerivativesNames, state.derivatives).c_str(), state.camera.view.scale, fps);
         context->setTitle(title);

@@ -69,6 +69,13 @@ case_render() {
   cmp -s "$out/t1.png" "$out/t2.png" || fail "render differs between 1 and 2 threads"
   expect_ok "render other seed" "$out/s2.png" -- "$bin" render --preset marble -o "$out/s2.png" --size 128 --seed 99
   cmp -s "$out/t1.png" "$out/s2.png" && fail "different seeds gave identical images"
+  # The normal map of a pattern, shaded (LEAN), unfiltered and filtered, and the variant without covariance.
+  expect_ok "render lean none" "$out/lean_none.png" -- "$bin" render --preset lean-ridges --response lean --filter none --view plane --tilt 70 --size 64,40 -o "$out/lean_none.png"
+  grep -q "filter none/lean" "$work/out.txt" || fail "render lean: the report does not name the response: $(cat "$work/out.txt")"
+  expect_ok "render lean smooth" "$out/lean_smooth.png" -- "$bin" render --preset lean-ridges --response lean --filter smooth --view plane --tilt 70 --size 64,40 -o "$out/lean_smooth.png"
+  expect_ok "render lean no cov" "$out/lean_nocov.png" -- "$bin" render --preset lean-ridges --response lean --no-covariance --filter smooth --view plane --tilt 70 --size 64,40 -o "$out/lean_nocov.png"
+  cmp -s "$out/lean_none.png" "$out/lean_smooth.png" && fail "render lean: filtered and unfiltered shading are identical"
+  cmp -s "$out/lean_smooth.png" "$out/lean_nocov.png" && fail "render lean: the covariance changes nothing"
 }
 
 case_noise() {
@@ -249,6 +256,14 @@ case_view() {
 
 case_bake() {
   expect_ok "bake" "$out/bake/stochtex.glsl" -- "$bin" bake --preset weld --filter paper -o "$out/bake"
+  # A normal map: slope pyramids with their covariance, the shading in the manifest, no table, the lobe function.
+  expect_ok "bake lean" "$out/bakelean/stochtex.glsl" -- "$bin" bake --preset lean-ridges --response lean -o "$out/bakelean"
+  [ -s "$out/bakelean/covariance_0.exr" ] || fail "bake lean: no covariance pyramid"
+  [ -e "$out/bakelean/table.exr" ] && fail "bake lean: a table was written"
+  grep -q '"response": "lean"' "$out/bakelean/manifest.json" || fail "bake lean: manifest lacks the response"
+  grep -q '"roughness": 0.08' "$out/bakelean/manifest.json" || fail "bake lean: manifest lacks the shading"
+  grep -q "LeanLobe stochtex_lean_lobe(vec2 uv)" "$out/bakelean/stochtex.glsl" || fail "bake lean: no lobe function"
+  grep -q "uLeanRoughness" "$out/bakelean/README.md" || fail "bake lean: README lacks the lean uniforms"
 }
 
 case_bake_image() {
@@ -257,6 +272,9 @@ case_bake_image() {
   expect_ok "render for bake-image" "$out/big_ref.png" -- "$bin" render --preset marble --size 200,150 --filter smooth --scale 3 -o "$out/big_ref.png"
   cmp -s "$out/big.png" "$out/big_ref.png" || fail "bake-image differs from render"
   expect_ok "bake-image --gpu" "$out/bigg.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu -o "$out/bigg.png"
+  expect_ok "bake-image lean" "$out/biglean.png" -- "$bin" bake-image --preset lean-ridges --response lean --size 96,64 --band 24 --filter smooth -o "$out/biglean.png"
+  expect_ok "render lean for bake-image" "$out/biglean_ref.png" -- "$bin" render --preset lean-ridges --response lean --size 96,64 --filter smooth -o "$out/biglean_ref.png"
+  cmp -s "$out/biglean.png" "$out/biglean_ref.png" || fail "bake-image lean differs from render"
   expect_ok "bake-image --gpu compute" "$out/biggc.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu --pipeline compute -o "$out/biggc.png"
 }
 
@@ -300,6 +318,9 @@ case_scene() {
   expect_ok "scene torus" "$out/scene.png" -- "$bin" scene --preset marble --object torus --size 96,64 -o "$out/scene.png"
   # Unfiltered too: its draw used to be refused by GL and the empty frame reported as written.
   expect_ok "scene torus unfiltered" "$out/scene_none.png" -- "$bin" scene --preset marble --object torus --size 96,64 --filter none -o "$out/scene_none.png"
+  expect_ok "scene lean" "$out/scene_lean.png" -- "$bin" scene --preset lean-ridges --response lean --object sphere --size 96,64 -o "$out/scene_lean.png"
+  expect_ok "scene lean unfiltered" "$out/scene_lean_none.png" -- "$bin" scene --preset lean-ridges --response lean --filter none --object sphere --size 96,64 -o "$out/scene_lean_none.png"
+  cmp -s "$out/scene_lean.png" "$out/scene_lean_none.png" && fail "scene lean: filtered and unfiltered are identical"
 }
 
 # --- bad input ---
@@ -326,6 +347,9 @@ case_bad_render_flags() {
   expect_bad "missing output dir" "$out/nodir/bad12.png" "does not exist" -- "$bin" render --preset gaussian -o "$out/nodir/bad12.png"
   expect_bad "unknown flag" "$out/bad16.png" "--bogus" -- "$bin" render --preset gaussian -o "$out/bad16.png" --bogus
   expect_bad "bad filter" "$out/bad18.png" '--filter: filter must be none, paper, smooth, exact or reference, got "blurry"' -- "$bin" render --preset gaussian -o "$out/bad18.png" --filter blurry
+  expect_bad "lean without a normal map" "$out/bad24.png" "--response: response lean shades a normal map; the pattern has none" -- "$bin" render --preset weld --response lean -o "$out/bad24.png"
+  expect_bad "no-covariance without lean" "$out/bad25.png" "--no-covariance: has no effect without --response lean" -- "$bin" render --preset lean-ridges --no-covariance -o "$out/bad25.png"
+  expect_bad "bad response" "$out/bad26.png" '--response: response must be prefiltered-colormap or lean, got "bump"' -- "$bin" render --preset lean-ridges --response bump -o "$out/bad26.png"
   expect_bad "aniso zero" "$out/bad19.png" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
   expect_bad "aniso absurd" "$out/bad20.png" "--aniso: aniso must be in [1, 16], got 1000" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
   expect_bad "tilt" "$out/bad21.png" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95

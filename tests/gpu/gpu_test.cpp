@@ -209,9 +209,15 @@ TEST(Gpu, LeanResponseMatchesTheCpu) {
     expectParity(p, c, "lean-ridges lean plane K = 8, no covariance", o);
     o.estimator = VarianceEstimator::DeliotHeitz;
     expectParity(p, c, "lean-ridges lean plane K = 8, Deliot-Heitz", o);
-    // The GPU shades normal maps filtered only.
+    // Unfiltered: the base lobe around each pixel's own slope (the point
+    // response), zoomed and on the plane.
     o.source = StatisticsSource::Point;
-    EXPECT_EQ(test::inputErrorOf([&] { GpuPattern(p, context(), o); }).parameter(), "source");
+    o.aniso = 1;
+    o.estimator = VarianceEstimator::Paper;
+    o.response.covariance = true;
+    v.scale = 2.0;
+    expectParity(p, v, "lean-ridges lean unfiltered zoom", o);
+    expectParity(p, c, "lean-ridges lean unfiltered plane", o);
 }
 
 // The lean response on the scene's objects (§6.5 on 3D, Fig. 15): the
@@ -389,25 +395,28 @@ TEST(Gpu, UserShaderFileErrorsNameTheFileAndLine) {
     EXPECT_THROW(readShaderFile(test::scratchPath("stochtex_no_such_shader.frag").string()), InputError);
 }
 
-// The recipes that filter take the response's chunk where they list the
-// slot, after filtering.glsl (which declares footprintResponse) and after
-// the kernel file it needs; the others are left as they are.
+// The pattern recipes take the response's chunk where they list the slot,
+// after filtering.glsl or unfiltered.glsl (which declare footprintResponse
+// and pointResponse) and after the kernel file it needs; the display
+// program is left as it is.
 TEST(Gpu, FilteringRecipesAssembleTheResponseChunk) {
     const std::string chunk = "response_prefiltered_colormap";
     EXPECT_EQ(responseChunk(ResponseKind::PrefilteredColormap), chunk);
-    for (const char* name : {"filtered", "filtered-compute", "scene", "export-include"}) {
+    for (const char* name : {"unfiltered", "unfiltered-compute", "filtered", "filtered-compute", "scene", "export-include"}) {
         const std::vector<std::string> files =
             shaderChunks(recipeFiles(programRecipe(name), ResponseKind::PrefilteredColormap));
         const auto at = [&](const std::string& stem) {
             return std::find(files.begin(), files.end(), stem) - files.begin();
         };
         ASSERT_LT(at(chunk), std::ptrdiff_t(files.size())) << name;
-        EXPECT_LT(at("filtering"), at(chunk)) << name;
+        // After what declares the functions it defines: filteredColour's
+        // footprintResponse, unfilteredColour's pointResponse.
+        const bool filtering = std::string(name).find("unfiltered") == std::string::npos;
+        EXPECT_LT(at(filtering ? "filtering" : "unfiltered"), at(chunk)) << name;
         EXPECT_LT(at("sigma_levels"), at(chunk)) << name;
         EXPECT_EQ(std::count(files.begin(), files.end(), kResponseSlot), 0) << name;
     }
-    for (const char* name : {"unfiltered", "unfiltered-compute"})
-        EXPECT_EQ(recipeFiles(programRecipe(name), ResponseKind::PrefilteredColormap), programRecipe(name).main);
+    EXPECT_EQ(recipeFiles(programRecipe("display"), ResponseKind::Lean), programRecipe("display").main);
 }
 
 // Every program of the recipe table, with the chunk of every response kind,

@@ -332,6 +332,13 @@ TEST(Response, NamedFiltersAreASourceAndAResponse) {
     FilterOptions exactPaper = FilterOptions{}.use(parseFilter("exact"));
     exactPaper.response.prefilter = PrefilterMode::Paper;
     EXPECT_EQ(filterName(exactPaper), "exact/prefiltered-colormap");
+    FilterOptions lean = FilterOptions{}.use(parseFilter("paper"));
+    lean.response.kind = ResponseKind::Lean;
+    EXPECT_EQ(filterName(lean), "paper/lean");
+    lean.use(parseFilter("none"));
+    lean.response.kind = ResponseKind::Lean;
+    lean.response.covariance = false;
+    EXPECT_EQ(filterName(lean), "none/lean without covariance");
 }
 
 // The factory builds the kind the options name, with its parameters: its

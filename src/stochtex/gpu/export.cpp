@@ -1,5 +1,6 @@
 #include "stochtex/gpu/export.h"
 
+#include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -17,20 +18,35 @@ namespace stochtex {
 namespace fs = std::filesystem;
 
 std::string exportedShaderInclude(ResponseKind response) {
-    return "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
-           "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
-           "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
-           "// footprint comes from this fragment's derivatives of uv. It returns LINEAR-light\n"
-           "// RGB (not sRGB codes): draw into an sRGB framebuffer (GL_FRAMEBUFFER_SRGB) or\n"
-           "// encode it before display. The textures to bind and the PatternParameters\n"
-           "// block to fill are described in README.md.\n\n" +
-           [response] {
-               std::string body;
-               for (const auto& stem : shaderChunks(recipeFiles(programRecipe("export-include"), response)))
-                   body += shaderText(stem) + "\n";
-               return body;
-           }() +
-           "vec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";
+    const bool lean = response == ResponseKind::Lean;
+    std::string text =
+        "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
+        "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
+        "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
+        "// footprint comes from this fragment's derivatives of uv. It returns LINEAR-light\n"
+        "// RGB (not sRGB codes): draw into an sRGB framebuffer (GL_FRAMEBUFFER_SRGB) or\n"
+        "// encode it before display. The textures to bind and the PatternParameters\n"
+        "// block to fill are described in README.md.\n";
+    if (lean)
+        text +=
+            "// This pattern is a LEAN-mapped normal map (paper §6.5): stochtex_sample is its\n"
+            "// shading under the uLean* uniforms (README.md). To light it yourself, take the\n"
+            "// footprint's slope lobe, LeanLobe stochtex_lean_lobe(vec2 uv), and shade with\n"
+            "// leanShade(lobe, light, view, albedo, specular) or your own BRDF over leanNdf(lobe, h);\n"
+            "// directions in the texture frame (x along u, y along v, z up).\n";
+    text += "\n";
+    for (const auto& stem : shaderChunks(recipeFiles(programRecipe("export-include"), response)))
+        text += shaderText(stem) + "\n";
+    text += "vec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";
+    if (lean)
+        text +=
+            "// The filtered slopes of the footprint of uv as a Beckmann lobe (mean slope and\n"
+            "// covariance, the base roughness uLeanRoughness included).\n"
+            "LeanLobe stochtex_lean_lobe(vec2 uv) {\n"
+            "    FootprintMoments m = footprintStatistics(uv, dFdx(uv), dFdy(uv));\n"
+            "    return leanLobe(m.mean, m.var, uLeanCovariance ? m.cov : 0.0, uLeanRoughness);\n"
+            "}\n";
+    return text;
 }
 
 namespace {
@@ -39,7 +55,8 @@ namespace {
 // colormap's values as the pattern gives them, filtered as numbers (no
 // transfer function is applied or undone on the way).
 constexpr const char* kTableColourSpace =
-    "colours as the colormap holds them (hex colours and 8-bit images: sRGB-encoded values), not converted";
+    "linear-light RGB (the pattern's sRGB colours decoded once, before filtering; a colormap declared "
+    "`\"transfer\": \"linear\"` keeps its values)";
 
 // A file the export wrote and what it holds, for the README's file table
 // (which is built from these, so it lists exactly the files written).
@@ -85,8 +102,7 @@ Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
 | --- | --- | --- |
 | `uStatsX`, `uStatsY` | `sampler2D`, RG32F, mip levels 0…L | level l = `stats_x_l.exr` (R = mean, G = variance) |
 | `uCovariance` | `sampler2D`, RG32F, mip levels | `covariance_l.exr` if `covariance`, else bind `uStatsX` |
-| `uTable` | `sampler2DArray`, RGBA16F or RGBA32F (`table.precision`), `levels²` layers of `width × height` | layer k = rows `[k·height, (k+1)·height)` of `table.exr`; texture row j = that layer's row j |
-
+@TABLE@
 All are read with `texelFetch` (no filtering needed); set `GL_TEXTURE_MAX_LEVEL`
 to L so the pyramids are mipmap-complete.
 
@@ -101,7 +117,7 @@ texture. A colormap declared `"transfer": "linear"` (data: heights, roughness)
 is exported as its values, unencoded. The statistics EXRs hold noise values
 (data).
 
-## Files
+@LEAN@## Files
 
 | file | format | content |
 | --- | --- | --- |
@@ -129,7 +145,37 @@ void main() { colour = stochtex_sample(vUv * 8.0); }
 ```
 )";
 
-std::string readme(const std::vector<WrittenFile>& files) {
+// The rows and section only one response kind has.
+constexpr const char* kTableRow =
+    "| `uTable` | `sampler2DArray`, RGBA16F or RGBA32F (`table.precision`), `levels²` layers of `width × height` "
+    "| layer k = rows `[k·height, (k+1)·height)` of `table.exr`; texture row j = that layer's row j |\n";
+const char* kLeanSection = R"(## LEAN shading (normal map)
+
+This export is a procedural normal map (`"response": "lean"`): the pyramids
+hold the statistics of its two slopes ∂z/∂x, ∂z/∂y (tiled with one set of
+offsets, so their covariance is exported too), and there is no table.
+`stochtex_sample` returns the shaded radiance: an anisotropic Beckmann lobe
+of the footprint's mean slope and slope covariance plus the base roughness
+(LEAN mapping, Olano & Baker 2010), lit by a directional light of unit
+irradiance. Set these uniforms from `manifest.json`'s `lean` (directions in
+the texture frame: x along u, y along v, z up; unit length):
+
+| uniform | type | from `manifest.json` |
+| --- | --- | --- |
+| `uLeanLight` | `vec3` | `lean.light`: towards the light |
+| `uLeanView` | `vec4` | `lean.view`: xyz towards the eye, w = 1; w = 0 means straight down (set xyz to your eye direction per fragment and w = 1 for a perspective view) |
+| `uLeanAlbedo` | `vec3` | `lean.albedo`: diffuse reflectance, linear |
+| `uLeanRoughness` | `float` | `lean.roughness`: base Beckmann roughness m |
+| `uLeanSpecular` | `float` | `lean.specular`: weight of the lobe's reflection |
+| `uLeanCovariance` | `bool` | `lean.covariance`: read the slopes' covariance |
+
+To light it with your own lights and BRDF, call `LeanLobe stochtex_lean_lobe(vec2 uv)`
+(mean slope `mean`, covariance `sigma` = (Σxx, Σyy, Σxy)) and evaluate
+`leanNdf(lobe, h)` for a unit half vector h, or `leanShade(lobe, light, view, albedo, specular)`.
+
+)";
+
+std::string readme(const std::vector<WrittenFile>& files, bool lean) {
     std::string fileRows;
     for (const WrittenFile& f : files) fileRows += "| " + f.names + " | " + f.format + " | " + f.content + " |\n";
     std::string members;
@@ -141,12 +187,44 @@ std::string readme(const std::vector<WrittenFile>& files) {
     const std::pair<std::string, std::string> fills[] = {{"@BLOCK@", kPatternBlockName},
                                                          {"@SIZE@", std::to_string(sizeof(kernel::PatternParams))},
                                                          {"@MEMBERS@", members},
-                                                         {"@FILES@", fileRows}};
+                                                         {"@FILES@", fileRows},
+                                                         {"@TABLE@", lean ? "" : kTableRow},
+                                                         {"@LEAN@", lean ? kLeanSection : ""}};
     std::string text = kReadme;
     for (const auto& [key, value] : fills)
         for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
             text.replace(at, key.size(), value);
     return text;
+}
+
+// table.exr (the prefiltered colormap response's data) and its manifest entry.
+void writeTable(const FilteredPattern& f, const std::string& dir, const ExportOptions& exportOptions,
+                nlohmann::json& m, std::vector<WrittenFile>& files) {
+    const PrefilteredColormap& table = f.table();
+    const int n = int(table.sigmas().size());
+    const int rx = f.blendingSpaceColormap().resolutionX(), ry = f.blendingSpaceColormap().resolutionY();
+    const Image atlas = table.atlas(rx, ry);
+    WriteOptions w;
+    w.exrHalf = exportOptions.halfTable;
+    writeImage((fs::path(dir) / "table.exr").string(), atlas, w);
+    m["table"] = {{"file", "table.exr"}, {"levels", n},
+                  {"width", rx},          {"height", ry},
+                  {"sigmas", table.sigmas()}, {"precision", exportOptions.halfTable ? "half" : "float"}};
+    files.push_back({"`table.exr`", exrFormat(atlas, w),
+                     "the prefiltered table H̄: " + std::to_string(n * n) + " layers of " + std::to_string(rx) + " × " +
+                         std::to_string(ry) + " RGB colours stacked vertically (T⁻¹ folded in), no alpha; " +
+                         kTableColourSpace});
+}
+
+// The lean response's shading: what the uLean* uniforms hold.
+nlohmann::json leanManifest(const LeanShading& l, bool covariance) {
+    const std::array<double, 3> view = l.view.value_or(std::array<double, 3>{0, 0, 1});
+    return {{"light", l.light},
+            {"view", {view[0], view[1], view[2], l.view ? 1.0 : 0.0}},
+            {"albedo", {l.albedo[0], l.albedo[1], l.albedo[2]}},
+            {"roughness", l.roughness},
+            {"specular", l.specular},
+            {"covariance", covariance}};
 }
 
 }  // namespace
@@ -161,14 +239,17 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     fs::create_directories(dir, ec);
     if (ec || !fs::is_directory(dir)) throw InputError(dir + ": cannot create output folder");
     const FootprintEstimator& est = f.estimator();
+    const TiledField& field = f.field();  // the colour noises, or the normal map's slopes
+    const bool lean = options.response.kind == ResponseKind::Lean;
     nlohmann::json m;
     m["version"] = 1;
     m["filter"] = filterName(options);
-    m["example_size"] = pattern.exampleSize();
+    m["response"] = enumName(kResponseKindNames, options.response.kind);
+    m["example_size"] = field.exampleSize();
     m["levels"] = est.maxLod() + 1;
-    m["means"] = {pattern.example(0).mean(), pattern.example(1).mean()};
-    m["seeds"] = {pattern.noise(0).offsetSeed(), pattern.noise(1).offsetSeed()};
-    m["grid_density"] = pattern.gridDensity();
+    m["means"] = {field.channel(0).example().mean(), field.channel(1).example().mean()};
+    m["seeds"] = {field.channel(0).offsetSeed(), field.channel(1).offsetSeed()};
+    m["grid_density"] = field.gridDensity();
     m["covariance"] = est.covariancePyramid() != nullptr;
     m["aniso"] = options.aniso;
     nlohmann::json averages = {{"x", nlohmann::json::array()}, {"y", nlohmann::json::array()}, {"cov", nlohmann::json::array()}};
@@ -185,28 +266,18 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     if (est.covariancePyramid())
         writeStats(*est.covariancePyramid(), dir, "covariance", m["stats"]["covariance"],
                    "covariance C_l of N_x and N_y (R is E_l of N_x)", files);
-    const PrefilteredColormap& table = f.table();
-    const int n = int(table.sigmas().size());
-    const int rx = f.blendingSpaceColormap().resolutionX(), ry = f.blendingSpaceColormap().resolutionY();
-    const Image atlas = table.atlas(rx, ry);
-    WriteOptions w;
-    w.exrHalf = exportOptions.halfTable;
-    writeImage((fs::path(dir) / "table.exr").string(), atlas, w);
     m["colour_space"] = "linear";  // table.exr and stochtex_sample: linear light, never sRGB codes
-    m["table"] = {{"file", "table.exr"}, {"levels", n},
-                  {"width", rx},          {"height", ry},
-                  {"sigmas", table.sigmas()}, {"precision", exportOptions.halfTable ? "half" : "float"}};
-    files.push_back({"`table.exr`", exrFormat(atlas, w),
-                     "the prefiltered table H̄: " + std::to_string(n * n) + " layers of " + std::to_string(rx) + " × " +
-                         std::to_string(ry) + " RGB colours stacked vertically (T⁻¹ folded in), no alpha; " +
-                         kTableColourSpace});
+    if (lean)
+        m["lean"] = leanManifest(pattern.normalMap()->shading, options.response.covariance);
+    else
+        writeTable(f, dir, exportOptions, m, files);
     writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
     files.push_back({"`manifest.json`", "JSON (UTF-8)", "parameters and the lists of data files"});
     writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude(options.response.kind));
     files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 source, no `#version` line",
                      "`vec4 stochtex_sample(vec2 uv)` and what it calls"});
     files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
-    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files));
+    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, lean));
 }
 
 }  // namespace stochtex

@@ -90,9 +90,6 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     if (options.source != StatisticsSource::Point && options.source != StatisticsSource::Estimators)
         throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
                                                   enumName(kStatisticsSourceNames, options.source));
-    if (options.response.kind == ResponseKind::Lean && options.source != StatisticsSource::Estimators)
-        throw InputError::parameter("source", "must be estimators for the lean response on the GPU, got " +
-                                                  enumName(kStatisticsSourceNames, options.source));
     context.makeCurrent();
     Impl& m = *impl_;
     m.options = options;

@@ -20,9 +20,9 @@ const std::vector<ProgramRecipe>& programRecipes() {
     using K = ProgramRecipe::Kind;
     const std::string& R = kResponseSlot;
     static const std::vector<ProgramRecipe> recipes = {
-        {"unfiltered", K::Graphics, {"fullscreen"}, {"common", "unfiltered", "view", "pattern"}},
+        {"unfiltered", K::Graphics, {"fullscreen"}, {"common", "unfiltered", R, "view", "pattern"}},
         {"filtered", K::Graphics, {"fullscreen"}, {"common", "filtering", R, "view", "filtered"}},
-        {"unfiltered-compute", K::Compute, {}, {"common", "unfiltered", "view", "kernel_unfiltered", "view_kernel"}},
+        {"unfiltered-compute", K::Compute, {}, {"common", "unfiltered", R, "view", "kernel_unfiltered", "view_kernel"}},
         {"filtered-compute", K::Compute, {}, {"common", "filtering", R, "view", "kernel_filtered", "view_kernel"}},
         {"scene", K::Graphics, {"mesh"}, {"common", "unfiltered", "filtering", R, "scene"}},
         {"export-include", K::Include, {}, {"common", "filtering", R}},

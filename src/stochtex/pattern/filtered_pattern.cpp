@@ -78,6 +78,14 @@ NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames
 std::string filterName(const FilterOptions& options) {
     for (const auto& [name, filter] : kFilterNames)
         if (filter == options.filter()) return name;
+    // Another response over a named filter's statistics: "smooth/lean".
+    if (options.response.kind != ResponseKind::PrefilteredColormap) {
+        const NamedFilter colours{options.source, {ResponseKind::PrefilteredColormap, options.response.prefilter}};
+        for (const auto& [name, filter] : kFilterNames)
+            if (filter == colours)
+                return name + "/" + enumName(kResponseKindNames, options.response.kind) +
+                       (options.response.covariance ? "" : " without covariance");
+    }
     return enumName(kStatisticsSourceNames, options.source) + "/" + enumName(kResponseKindNames, options.response.kind);
 }
 

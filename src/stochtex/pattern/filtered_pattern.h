@@ -69,8 +69,10 @@ struct FilterOptions {
 
 // Parses a filter name (kFilterNames); InputError naming `filter` otherwise.
 NamedFilter parseFilter(const std::string& name);
-// The name of the options' pair; a pair without one reads "SOURCE/RESPONSE"
-// (e.g. "exact/prefiltered-colormap") so that it is never mistaken for one.
+// The name of the options' pair; another response over a named filter's
+// statistics reads "NAME/RESPONSE" ("smooth/lean", "none/lean without
+// covariance"), any other pair "SOURCE/RESPONSE" (e.g.
+// "exact/prefiltered-colormap") so that it is never mistaken for a name.
 std::string filterName(const FilterOptions& options);
 
 class FilteredPattern {

@@ -1,6 +1,7 @@
 #include "stochtex/studies/normal_maps.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 #include "stochtex/analysis/plot.h"
@@ -117,8 +118,14 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
         Image cropShown = resizeNearest(cropped(shown, crop), cropW, cropH);
         rows[0].push_back(resizeSmooth(shown, thumbW, thumbH));
         rows[1].push_back(cropShown);
-        const std::string err = k == 0 ? "" : ", error " + formatValue(res.rows[size_t(k - 1)].meanErrorGlobal) + " / " +
-                                                  formatValue(res.rows[size_t(k - 1)].meanErrorCrop) + " (crop)";
+        // Errors to 4 decimals (the CSV keeps every digit).
+        const auto fixed4 = [](double v) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.4f", v);
+            return std::string(text);
+        };
+        const std::string err = k == 0 ? "" : ", error " + fixed4(res.rows[size_t(k - 1)].meanErrorGlobal) + " / " +
+                                                  fixed4(res.rows[size_t(k - 1)].meanErrorCrop) + " (crop)";
         texts[0].push_back(std::string(captions[k]) + err);
         texts[1].push_back(std::string(captions[k]) + ", mid-distance crop");
         images.push_back({"figure12_" + tag + ".png", shown, ""});

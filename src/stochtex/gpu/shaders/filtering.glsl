@@ -47,11 +47,11 @@ void texelStats(vec2 uv, int level, out vec4 stats, out float cov) {
 // response_prefiltered_colormap.glsl, …), assembled after this file.
 vec3 footprintResponse(vec2 mean, vec2 var, float cov);
 
-// Ŝ for the footprint of uv with Jacobian columns jx, jy (uv per pixel).
-// One loop for every footprint, a single texel included (its statistics are
-// then taken as they are): a branch around the loop would make SIMD lanes
-// run both paths.
-vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {
+// The statistics (μ̂, σ̂², ĉov) of N over the footprint of uv with Jacobian
+// columns jx, jy (uv per pixel). One loop for every footprint, a single
+// texel included (its statistics are then taken as they are): a branch
+// around the loop would make SIMD lanes run both paths.
+FootprintMoments footprintStatistics(vec2 uv, vec2 jx, vec2 jy) {
     ProbeLayout probes = probeLayout(jx, jy, 1.0 / uPattern.invExampleSize, uPattern.aniso, uPattern.maxLod);
     ProbeLevels levels = probeLevels(probes.lod, uPattern.maxLod, probes.count);
     vec4 st, first;
@@ -77,5 +77,11 @@ vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {
         r.var = max(first.zw, vec2(0.0));
         r.cov = firstCov;
     }
+    return r;
+}
+
+// Ŝ for the footprint of uv: the response of its statistics.
+vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {
+    FootprintMoments r = footprintStatistics(uv, jx, jy);
     return footprintResponse(r.mean, r.var, r.cov);
 }

@@ -10,9 +10,16 @@ uniform vec3 uLeanAlbedo;   // linear
 uniform float uLeanRoughness, uLeanSpecular;
 uniform bool uLeanCovariance;
 
-vec3 footprintResponse(vec2 mean, vec2 var, float cov) {
+vec3 leanShaded(LeanLobe lobe) {
     vec3 eye = uLeanView.w != 0.0 ? uLeanView.xyz : gEyeDirection;
-    LeanLobe lobe = leanLobe(mean, var, uLeanCovariance ? cov : 0.0, uLeanRoughness);
     vec3 light = gLightDirection.w != 0.0 ? gLightDirection.xyz : uLeanLight;
     return leanShade(lobe, light, eye, uLeanAlbedo, uLeanSpecular);
 }
+
+vec3 footprintResponse(vec2 mean, vec2 var, float cov) {
+    return leanShaded(leanLobe(mean, var, uLeanCovariance ? cov : 0.0, uLeanRoughness));
+}
+
+// Unfiltered: the base lobe around the point's own slope
+// (LeanResponse::point).
+vec3 pointResponse(vec2 slope) { return leanShaded(leanLobe(slope, vec2(0.0), 0.0, uLeanRoughness)); }

@@ -16,3 +16,9 @@ vec3 prefiltered(vec2 mu, vec2 sigma) {
 }
 
 vec3 footprintResponse(vec2 mean, vec2 var, float cov) { return prefiltered(mean, sqrt(var)); }
+
+// Unfiltered (unfiltered.glsl): H at the point's N (T⁻¹ applied already),
+// the colormap itself. Unused by the filtered programs and the export, whose
+// compilers drop it with uColormap.
+uniform sampler2DArray uColormap;  // H: RGB32F table, one layer
+vec3 pointResponse(vec2 n) { return tableLookup(uColormap, 0, n); }

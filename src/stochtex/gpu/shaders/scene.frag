@@ -29,7 +29,8 @@ vec3 leanShaded(vec2 uv, vec2 jx, vec2 jy, vec3 n, vec3 v) {
     vec3 e = vec3(dot(v, t), dot(v, b), max(dot(v, n), 0.05));
     gEyeDirection = normalize(e);
     gLightDirection = vec4(l, 1.0);
-    return l.z > 0.0 ? filteredColour(uv, jx, jy) : vec3(0.0);  // the light is behind the surface
+    if (l.z <= 0.0) return vec3(0.0);  // the light is behind the surface
+    return uFiltered ? filteredColour(uv, jx, jy) : unfilteredColour(uv);
 }
 
 void main() {

@@ -1,7 +1,12 @@
-// The unfiltered pattern S = H(N_x, N_y) at a point.
+// The unfiltered pattern S at a point: the response at N(u) with no spread
+// (pointResponse, defined by the response chunk: H(N_x, N_y), or the
+// normal map's shading of the slopes N).
 uniform sampler2D uExampleX, uExampleY;   // R32F, W×W
 uniform sampler2D uInverseX, uInverseY;   // T⁻¹ LUTs (n × 1)
-uniform sampler2DArray uColormap;         // RGB32F table, one layer
+
+// The point response (pattern/response.h); declared here, defined by the
+// response chunk the program recipe names, assembled after this file.
+vec3 pointResponse(vec2 n);
 
 vec3 unfilteredColour(vec2 uv) {
     Stencil s = triangleGrid(uv, uPattern.gridDensity);
@@ -10,5 +15,5 @@ vec3 unfilteredColour(vec2 uv) {
     float ny = tilingBlending(uExampleY, uPattern.meanY, uPattern.seedY, s, fu);
     if (uPattern.gaussianizedX != 0) nx = inverseTransform(uInverseX, nx);
     if (uPattern.gaussianizedY != 0) ny = inverseTransform(uInverseY, ny);
-    return tableLookup(uColormap, 0, vec2(nx, ny));
+    return pointResponse(vec2(nx, ny));
 }
