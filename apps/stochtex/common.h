@@ -211,6 +211,7 @@ void registerContrast(CLI::App& app);
 void registerAnalyze(CLI::App& app);
 void registerSpectrum(CLI::App& app);
 void registerFlow(CLI::App& app);
+void registerCoherence(CLI::App& app);
 void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
 void registerView(CLI::App& app);

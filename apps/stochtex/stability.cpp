@@ -1,4 +1,6 @@
-// stochtex stability: flicker of a zoom-out sequence, per filter mode.
+// stochtex stability: flicker of a zoom-out sequence, per filter mode, as the
+// change of the frames and as the change of their error against the ground
+// truth S̄ (studies/stability_study.h).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -19,7 +21,7 @@ void registerStability(CLI::App& app) {
     struct Args {
         PatternSource source;
         StabilityStudyOptions study;
-        std::vector<std::string> filters{"none", "paper", "smooth", "reference"};  // kFilterNames
+        std::vector<std::string> filters{"none", "paper", "smooth", "exact", "reference"};  // kFilterNames
         FilterOptions options;
         std::string dir;
         int threads = 0;
@@ -28,20 +30,24 @@ void registerStability(CLI::App& app) {
     auto args = std::make_shared<Args>();
     args->options.referenceMaxSamples = 32;  // a sequence of references: fewer samples than a still
     auto* cmd = app.add_subcommand("stability",
-                                   "Zoom-out sequence per filter mode: mean |frame − next frame| after undoing the zoom");
+                                   "Zoom-out sequence per filter mode: error flicker (the change of frame − S̄ from frame "
+                                   "to frame, zoom undone), accuracy and image change");
     addPatternSource(*cmd, args->source);
     addOutputFolderFlag(*cmd, args->dir, "Output folder for stability.csv (and frames)");
     cmd->add_option("--filters", args->filters, "Filter modes to compare")
         ->delimiter(',')
         ->check(nameValidator(kFilterNames, "filter"))
         ->type_name("ENUM")
-        ->default_str("none,paper,smooth,reference");
+        ->default_str("none,paper,smooth,exact,reference");
     cmd->add_option("--frames", args->study.frames, "Number of frames")->check(CLI::Range(2, 1000));
     cmd->add_option("--size", args->study.size, "Frame size in pixels")->check(CLI::Range(8, 2048));
     cmd->add_option("--from", args->study.from, "First scale (texels per pixel)");
     cmd->add_option("--to", args->study.to, "Last scale");
     addAnisoFlag(*cmd, args->options.aniso);
     cmd->add_option("--reference-samples", args->options.referenceMaxSamples, "Max samples per axis for the reference")
+        ->capture_default_str();
+    cmd->add_option("--truth-samples", args->study.truthSamples,
+                    "Max samples per axis of the ground truth S̄ that errors are measured against")
         ->capture_default_str();
     cmd->add_flag("--write-frames", args->writeFrames, "Also write every frame as PNG");
     cmd->add_flag("--video", args->video, "Also write each filter's sequence as <filter>.mp4 (30 fps)");
@@ -83,18 +89,17 @@ void registerStability(CLI::App& app) {
                 std::snprintf(file, sizeof file, "%s-%03d.png", args->filters[m].c_str(), k);
                 writeImage((std::filesystem::path(dir) / file).string(), frame);
             };
-        std::printf("%-10s %12s %12s   (%d frames, scale %g -> %g, %dx%d)\n", "filter", "mean |dI|", "max |dI|",
-                    study.frames, study.from, study.to, study.size, study.size);
+        std::printf("%d frames, scale %g -> %g, %dx%d, ground truth: S̄ with at most %d samples per axis\n",
+                    study.frames, study.from, study.to, study.size, study.size, study.truthSamples);
         ProgressLine progress("stability");
         const StabilityStudyResult r = stabilityStudy(Pattern::build(spec), study, progress.callback(), writeFrame);
         progress.finish();
-        for (size_t m = 0; m < r.measurements.size(); ++m)
-            std::printf("%-10s %12.5f %12.5f\n", args->filters[m].c_str(), r.measurements[m].mean,
-                        r.measurements[m].max);
+        std::printf("%s", r.summary.markdown().c_str());
         for (const auto& video : videos) std::printf("wrote %s\n", video->finish().c_str());
         writeText(dir, "stability.csv", r.summary.csv());
         writeText(dir, "stability-frames.csv", r.perFrame.csv());
-        std::printf("wrote %s/stability.csv and stability-frames.csv\n", dir.c_str());
+        writeFigures(dir, r.figures);
+        std::printf("wrote stability.csv, stability-frames.csv, error_flicker.png and accuracy.png to %s\n", dir.c_str());
     });
 }
 

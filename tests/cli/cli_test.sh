@@ -156,6 +156,16 @@ case_spectrum() {
   expect_bad "spectrum no source" "$out/sp5" "A subcommand is required" -- "$bin" spectrum -o "$out/sp5"
 }
 
+case_coherence() {
+  expect_ok "coherence zoom" "$out/co/index.html" -- "$bin" coherence -o "$out/co" --size 48 --frames 6 --step 0.25 --layers-list 3,8 zoom --base-size 128
+  [ "$(wc -l <"$out/co/frames.csv")" -eq 7 ] || fail "coherence: frames.csv lacks a row per frame"
+  grep -q "^8," "$out/co/layers.csv" || fail "coherence: layers.csv lacks n = 8"
+  [ -s "$out/co/layers.png" ] && [ -s "$out/co/frames.png" ] || fail "coherence: figures missing"
+  expect_ok "coherence pattern" "$out/co2/coherence.csv" -- "$bin" coherence -o "$out/co2" --size 32 --frames 2 pattern --preset marble
+  expect_bad "coherence layers on a pattern" "$out/co3" "--layers-list: has no effect without the zoom texture" -- "$bin" coherence -o "$out/co3" --size 32 --layers-list 3 pattern --preset marble
+  expect_bad "coherence one frame" "$out/co4" "--frames: frames must be in [2, 10000], got 1" -- "$bin" coherence -o "$out/co4" --frames 1 zoom
+}
+
 case_flow() {
   expect_ok "flow zoom" "$out/fl/flow_arrows.png" -- "$bin" flow -o "$out/fl" --frames 3 --dt 0.05 --size 64 --step 8 zoom --layers 4
   # The zoom texture zooms in at rate 1 per time unit: ~0.05 per frame, outward.

@@ -2,6 +2,7 @@
 // study on small sizes with fixed seeds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "stochtex/core/error.h"
@@ -58,6 +59,11 @@ TEST(Table, RendersCsvMarkdownAndHtmlFromTheSameRows) {
                         "<tr><td>a&lt;b</td><td>1.23</td><td>7</td></tr><tr><td>c</td><td>0.5000</td><td>text</td>"
                         "</tr></table>\n");
     EXPECT_THROW(t.add({"too few"}), std::logic_error);
+    // A '|' in a header or cell stays inside its Markdown cell.
+    Table bars;
+    bars.columns = {{"d", "mean |ΔI|", ""}};
+    bars.add({"|x|"});
+    EXPECT_EQ(bars.markdown(), "| mean \\|ΔI\\| |\n|---|\n| \\|x\\| |\n");
 }
 
 TEST(Report, HtmlFiguresShowOnlyCaptionedFiguresUpToTheLimit) {
@@ -381,7 +387,8 @@ TEST(Studies, Figures7And8ShareOnePairOfNoises) {
 }
 
 // The study measures the frames it hands out: re-measuring the sink's frames
-// gives the per-frame table, and the summary is their mean and maximum.
+// (and the ground truth, rendered here independently) gives the per-frame
+// table, and the summary is their mean and maximum.
 TEST(StabilityStudy, TablesMatchTheFramesItRenders) {
     const Pattern p = Pattern::build(loadPreset("marble"));
     StabilityStudyOptions o;
@@ -392,31 +399,126 @@ TEST(StabilityStudy, TablesMatchTheFramesItRenders) {
     o.size = 16;
     o.from = 1;
     o.to = 8;
+    o.truthSamples = 12;
     std::vector<std::vector<Image>> frames(2);
     const StabilityStudyResult r =
         stabilityStudy(p, o, {}, [&](size_t m, int k, const Image& f) {
             ASSERT_EQ(size_t(k), frames[m].size());
             frames[m].push_back(f);
         });
+    FilterOptions truthOptions = FilterOptions{}.use(parseFilter("reference"));
+    truthOptions.referenceMaxSamples = 12;
+    const FilteredPattern truth(p, truthOptions);
     ASSERT_EQ(r.measurements.size(), 2u);
     ASSERT_EQ(r.summary.rows.size(), 2u);
-    ASSERT_EQ(r.perFrame.rows.size(), 2u * 3u);
+    ASSERT_EQ(r.perFrame.rows.size(), 2u * 4u);
     EXPECT_EQ(r.summary.rows[1][0].text, "smooth");
+    ASSERT_EQ(r.figures.size(), 2u);
     for (size_t m = 0; m < 2; ++m) {
         ASSERT_EQ(frames[m].size(), 4u);
-        const ZoomStability& z = r.measurements[m];
-        double sum = 0, max = 0;
+        const StabilityMeasurement& z = r.measurements[m];
+        std::vector<Image> errors;
+        for (int k = 0; k < 4; ++k) {
+            Camera c;
+            c.view.width = c.view.height = 16;
+            c.view.scale = z.imageChange.scales[size_t(k)];
+            c.view.offsetU = c.view.offsetV = -8 * c.view.scale;
+            const Image t = truth.render(c);
+            Image e = frames[m][size_t(k)];
+            double sum = 0;
+            for (size_t i = 0; i < e.data().size(); ++i) {
+                e.data()[i] -= t.data()[i];
+                sum += std::abs(e.data()[i]);
+            }
+            EXPECT_NEAR(z.accuracy[size_t(k)], sum / double(e.data().size()), 1e-9);
+            EXPECT_NEAR(*r.perFrame.rows[m * 4 + size_t(k)][3].number, z.accuracy[size_t(k)], 1e-12);
+            errors.push_back(std::move(e));
+        }
+        double sum = 0, max = 0, flickerSum = 0;
         for (int k = 0; k + 1 < 4; ++k) {
-            const double d = compensatedZoomDifference(frames[m][k], z.scales[k], frames[m][k + 1], z.scales[k + 1]);
-            EXPECT_NEAR(d, z.differences[k], 1e-12);
-            EXPECT_NEAR(*r.perFrame.rows[m * 3 + k][3].number, d, 1e-12);
+            const double a = z.imageChange.scales[size_t(k)], b = z.imageChange.scales[size_t(k + 1)];
+            const double d = compensatedZoomDifference(frames[m][size_t(k)], a, frames[m][size_t(k + 1)], b);
+            const double e = compensatedZoomDifference(errors[size_t(k)], a, errors[size_t(k + 1)], b);
+            EXPECT_NEAR(d, z.imageChange.differences[size_t(k)], 1e-12);
+            EXPECT_NEAR(e, z.errorFlicker.differences[size_t(k)], 1e-9);
+            EXPECT_NEAR(*r.perFrame.rows[m * 4 + size_t(k + 1)][4].number, d, 1e-12);
+            EXPECT_NEAR(*r.perFrame.rows[m * 4 + size_t(k + 1)][5].number, e, 1e-9);
             sum += d;
+            flickerSum += e;
             max = std::max(max, d);
         }
+        EXPECT_FALSE(r.perFrame.rows[m * 4][4].number.has_value());  // no pair before the first frame
         EXPECT_NEAR(*r.summary.rows[m][1].number, sum / 3, 1e-12);
         EXPECT_NEAR(*r.summary.rows[m][2].number, max, 1e-12);
+        EXPECT_NEAR(*r.summary.rows[m][3].number, flickerSum / 3, 1e-9);
     }
-    EXPECT_NEAR(r.measurements[0].scales.back(), 8.0, 1e-12);
+    EXPECT_NEAR(r.measurements[0].imageChange.scales.back(), 8.0, 1e-12);
+}
+
+// What the error flicker rewards (issue 14 item 8): on two presets it ranks
+// the filters by how closely they follow the converged S̄ from frame to
+// frame — reference < exact < paper, smooth < none — where the image change
+// ranks the estimators (blurrier) above the reference. A blurred reference
+// (3×3 box: steadier images) and a constant grey (the image change's
+// optimum) both score worse than the reference itself.
+TEST(StabilityStudy, ErrorFlickerRanksFiltersByFidelityNotBlur) {
+    for (const char* preset : {"marble", "camouflage"}) {
+        const Pattern p = Pattern::build(loadPreset(preset));
+        StabilityStudyOptions o;
+        for (const char* f : {"none", "paper", "smooth", "exact", "reference"}) {
+            o.filters.emplace_back().use(parseFilter(f));
+            o.filters.back().referenceMaxSamples = 16;
+        }
+        o.frames = 10;
+        o.size = 48;
+        o.from = 1;
+        o.to = 64;
+        o.truthSamples = 32;
+        std::vector<Image> references;
+        const StabilityStudyResult r = stabilityStudy(p, o, {}, [&](size_t m, int, const Image& f) {
+            if (m == 4) references.push_back(f);
+        });
+        const auto flicker = [&](size_t m) { return r.measurements[m].errorFlicker.mean; };
+        std::printf("[ info ] %s error flicker: none %.5f paper %.5f smooth %.5f exact %.5f reference %.5f\n", preset,
+                    flicker(0), flicker(1), flicker(2), flicker(3), flicker(4));
+        EXPECT_LT(flicker(4), flicker(3)) << preset;
+        EXPECT_LT(flicker(3), std::min(flicker(1), flicker(2))) << preset;
+        EXPECT_LT(std::max(flicker(1), flicker(2)), flicker(0)) << preset;
+        // Re-measure the reference frames blurred, and a constant grey, against the same truth.
+        FilterOptions truthOptions = FilterOptions{}.use(parseFilter("reference"));
+        truthOptions.referenceMaxSamples = 32;
+        const FilteredPattern truth(p, truthOptions);
+        ZoomSequenceMeter sharp, blurred, grey;
+        for (int k = 0; k < o.frames; ++k) {
+            Camera c;
+            c.view.width = c.view.height = o.size;
+            c.view.scale = r.measurements[4].imageChange.scales[size_t(k)];
+            c.view.offsetU = c.view.offsetV = -0.5 * o.size * c.view.scale;
+            const Image t = truth.render(c);
+            const Image& ref = references[size_t(k)];
+            Image box(ref.width(), ref.height(), ref.channels());
+            for (int y = 0; y < ref.height(); ++y)
+                for (int x = 0; x < ref.width(); ++x)
+                    for (int ch = 0; ch < ref.channels(); ++ch) {
+                        double acc = 0;
+                        for (int dy = -1; dy <= 1; ++dy)
+                            for (int dx = -1; dx <= 1; ++dx)
+                                acc += ref.at(std::clamp(x + dx, 0, ref.width() - 1),
+                                              std::clamp(y + dy, 0, ref.height() - 1), ch);
+                        box.at(x, y, ch) = float(acc / 9.0);
+                    }
+            Image flat(ref.width(), ref.height(), ref.channels());
+            for (float& v : flat.data()) v = 0.5f;
+            sharp.add(ref, t, c.view.scale);
+            blurred.add(box, t, c.view.scale);
+            grey.add(flat, t, c.view.scale);
+        }
+        EXPECT_NEAR(sharp.errorFlicker().mean, flicker(4), 1e-9) << preset;
+        EXPECT_LT(blurred.imageChange().mean, sharp.imageChange().mean) << preset;  // what blur wins
+        EXPECT_GT(blurred.errorFlicker().mean, 1.5 * sharp.errorFlicker().mean) << preset;
+        EXPECT_EQ(grey.imageChange().mean, 0.0) << preset;
+        EXPECT_GT(grey.errorFlicker().mean, flicker(3)) << preset;
+    }
 }
 
 TEST(StabilityStudy, ErrorsNameTheParameter) {

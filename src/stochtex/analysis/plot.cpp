@@ -599,6 +599,15 @@ Image colourLegend(double vmin, double vmax, HeatPalette palette, const std::str
     return canvas.image();
 }
 
+std::array<float, 3> seriesColour(size_t i) {
+    // Tableau 10: distinct in hue and lightness, and readable on white.
+    static constexpr std::array<float, 3> palette[10] = {
+        {0.122f, 0.467f, 0.706f}, {1.000f, 0.498f, 0.055f}, {0.173f, 0.627f, 0.173f}, {0.839f, 0.153f, 0.157f},
+        {0.580f, 0.404f, 0.741f}, {0.549f, 0.337f, 0.294f}, {0.890f, 0.467f, 0.761f}, {0.498f, 0.498f, 0.498f},
+        {0.737f, 0.741f, 0.133f}, {0.090f, 0.745f, 0.812f}};
+    return palette[i % 10];
+}
+
 Image linePlot(const std::vector<PlotSeries>& series, const LinePlotOptions& o, PlotLayout* layout) {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
     for (const auto& s : series)

@@ -58,6 +58,10 @@ struct PlotSeries {
     bool bars = false;                              // histogram-style bars instead of a line
 };
 
+// The i-th colour of a categorical palette (10 colours, then repeating),
+// for plots whose series are distinct things (filters, variants).
+std::array<float, 3> seriesColour(size_t i);
+
 // Every line series gets its own dash pattern and marker (by its index), and
 // a series with the same points as an earlier one says so in the legend, so
 // coinciding curves stay distinguishable.

@@ -29,13 +29,54 @@ double compensatedZoomDifference(const Image& a, double sa, const Image& b, doub
     return count ? sum / double(count * size_t(a.channels())) : 0.0;
 }
 
+double zoomSequenceScale(int k, int frames, double from, double to) {
+    return frames < 2 ? from : from * std::pow(to / from, double(k) / double(frames - 1));
+}
+
+namespace {
+
+void append(ZoomStability& z, double difference) {
+    z.differences.push_back(difference);
+    z.max = std::max(z.max, difference);
+    z.mean += (difference - z.mean) / double(z.differences.size());
+}
+
+}  // namespace
+
+void ZoomSequenceMeter::add(const Image& frame, const Image& truth, double scale) {
+    if (frame.width() != truth.width() || frame.height() != truth.height() || frame.channels() != truth.channels())
+        throw std::invalid_argument("ZoomSequenceMeter::add: the frame and its truth differ in size");
+    Image error(frame.width(), frame.height(), frame.channels(), Image::Uninitialized{});
+    double sum = 0;
+    for (size_t i = 0; i < error.data().size(); ++i) {
+        error.data()[i] = frame.data()[i] - truth.data()[i];
+        sum += std::abs(double(error.data()[i]));
+    }
+    accuracy_.push_back(error.data().empty() ? 0.0 : sum / double(error.data().size()));
+    if (!change_.scales.empty()) {
+        const double previous = change_.scales.back();
+        append(change_, compensatedZoomDifference(frame_, previous, frame, scale));
+        append(flicker_, compensatedZoomDifference(error_, previous, error, scale));
+    }
+    change_.scales.push_back(scale);
+    flicker_.scales.push_back(scale);
+    frame_ = frame;
+    error_ = std::move(error);
+}
+
+double ZoomSequenceMeter::meanAccuracy() const {
+    double sum = 0;
+    for (double a : accuracy_) sum += a;
+    return accuracy_.empty() ? 0.0 : sum / double(accuracy_.size());
+}
+
 ZoomStability measureZoomStability(const std::function<Image(double)>& render, int frames, double from, double to,
                                    const std::function<void(int)>& progress) {
     if (frames < 2) throw std::invalid_argument("measureZoomStability: need at least 2 frames");
     ZoomStability r;
     Image previous;
     for (int k = 0; k < frames; ++k) {
-        const double s = from * std::pow(to / from, double(k) / double(frames - 1));
+        const double s = zoomSequenceScale(k, frames, from, to);
         Image frame = render(s);
         if (k > 0) r.differences.push_back(compensatedZoomDifference(previous, r.scales.back(), frame, s));
         r.scales.push_back(s);

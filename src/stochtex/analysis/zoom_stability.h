@@ -23,9 +23,37 @@ struct ZoomStability {
     double max = 0;
 };
 
+// The scale of frame k of `frames` geometric from `from` to `to`.
+double zoomSequenceScale(int k, int frames, double from, double to);
+
 // Renders `frames` frames with scales geometric from `from` to `to` and
 // measures consecutive compensated differences. render(scale) gives a frame.
 ZoomStability measureZoomStability(const std::function<Image(double)>& render, int frames, double from, double to,
                                    const std::function<void(int)>& progress = {});
+
+// A zoom sequence measured against its ground truth (the converged S̄ of
+// each frame), one frame at a time (it keeps two frames, whatever the
+// length). Per consecutive pair: the compensated difference of the frames
+// themselves ("image change", the measure above) and of their error frames
+// frame − truth ("error flicker"); per frame: the accuracy
+// mean |frame − truth|. Image change rewards blur (a constant grey image
+// scores 0); error flicker does not: a blurred or constant sequence's error
+// moves with the truth it misses, so only frames that follow the truth
+// from one frame to the next score low.
+class ZoomSequenceMeter {
+public:
+    // frame and truth: the same size and channels (std::invalid_argument otherwise).
+    void add(const Image& frame, const Image& truth, double scale);
+
+    const ZoomStability& imageChange() const { return change_; }
+    const ZoomStability& errorFlicker() const { return flicker_; }
+    const std::vector<double>& accuracy() const { return accuracy_; }  // per frame
+    double meanAccuracy() const;
+
+private:
+    Image frame_, error_;  // the previous frame and its error frame
+    ZoomStability change_, flicker_;
+    std::vector<double> accuracy_;
+};
 
 }  // namespace stochtex

@@ -48,17 +48,31 @@ std::string Table::csv() const {
     return o.str();
 }
 
+namespace {
+
+// A cell's text inside a Markdown table: a '|' would end the cell (|ΔI|).
+std::string markdownCell(const std::string& text) {
+    std::string out;
+    for (char ch : text) {
+        if (ch == '|') out += '\\';
+        out += ch;
+    }
+    return out;
+}
+
+}  // namespace
+
 std::string Table::markdown() const {
     std::ostringstream o;
     if (!title.empty()) o << "**" << title << "**" << (note.empty() ? "" : " " + note) << "\n\n";
     o << '|';
-    for (const auto& c : columns) o << ' ' << headerText(c) << " |";
+    for (const auto& c : columns) o << ' ' << markdownCell(headerText(c)) << " |";
     o << "\n|";
     for (size_t i = 0; i < columns.size(); ++i) o << "---|";
     o << '\n';
     for (const auto& row : rows) {
         o << '|';
-        for (const auto& c : row) o << ' ' << c.text << " |";
+        for (const auto& c : row) o << ' ' << markdownCell(c.text) << " |";
         o << '\n';
     }
     return o.str();

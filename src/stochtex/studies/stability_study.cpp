@@ -1,8 +1,10 @@
 #include "stochtex/studies/stability_study.h"
 
 #include <cmath>
+#include <memory>
 #include <string>
 
+#include "stochtex/analysis/plot.h"
 #include "stochtex/core/error.h"
 
 namespace stochtex {
@@ -24,41 +26,95 @@ void validateStabilityStudy(const StabilityStudyOptions& o) {
         throw InputError::parameter("size", "must be in [8, 2048], got " + std::to_string(o.size));
     checkScale(o.from, "from");
     checkScale(o.to, "to");
+    if (o.truthSamples < 1 || o.truthSamples > 4096)
+        throw InputError::parameter("truthSamples", "must be in [1, 4096], got " + std::to_string(o.truthSamples));
 }
 
 StabilityStudyResult stabilityStudy(const Pattern& pattern, const StabilityStudyOptions& o,
                                     const StudyProgress& progress, const StabilityFrameSink& onFrame) {
     validateStabilityStudy(o);
-    StabilityStudyResult r;
-    r.summary.columns = {{"filter", "filter", ""}, {"mean_difference", "mean |dI|", ""}, {"max_difference", "max |dI|", ""}};
-    r.perFrame.columns = {{"filter", "filter", ""}, {"frame", "frame", ""}, {"scale", "scale", ""},
-                          {"difference", "|dI|", ""}};
-    for (size_t m = 0; m < o.filters.size(); ++m) {
-        const FilteredPattern filtered(pattern, o.filters[m]);
-        const std::string name = filterName(o.filters[m]);
-        const Progress part = progressPart(progress, int(m), int(o.filters.size()),
-                                           "stability: " + name + ", " + std::to_string(o.frames) + " frames");
-        if (part) part(0.0, "");
-        int k = 0;
-        const ZoomStability z = measureZoomStability(
-            [&](double s) {
-                Camera cam;
-                cam.view.width = cam.view.height = o.size;
-                cam.view.scale = s;
-                // Zoom about a fixed texture point: the view centre stays at texel (0, 0).
-                cam.view.offsetU = cam.view.offsetV = -0.5 * o.size * s;
-                Image frame = filtered.render(cam, progressPart(part, k, o.frames));
-                if (onFrame) onFrame(m, k, frame);
-                ++k;
-                return frame;
-            },
-            o.frames, o.from, o.to);
-        r.summary.add({name, TableCell::value(z.mean, "%.5f"), TableCell::value(z.max, "%.5f")});
-        for (size_t f = 0; f < z.differences.size(); ++f)
-            r.perFrame.add({name, TableCell::integer((long long)f), TableCell::value(z.scales[f], "%g"),
-                            TableCell::value(z.differences[f], "%.5f")});
-        r.measurements.push_back(z);
+    std::vector<std::unique_ptr<FilteredPattern>> filters;
+    std::vector<std::string> names;
+    for (const FilterOptions& f : o.filters) {
+        filters.push_back(std::make_unique<FilteredPattern>(pattern, f));
+        names.push_back(filterName(f));
     }
+    FilterOptions truthOptions = o.filters.front();
+    truthOptions.source = StatisticsSource::Reference;
+    truthOptions.referenceMaxSamples = o.truthSamples;
+    const FilteredPattern truth(pattern, truthOptions);
+    std::vector<ZoomSequenceMeter> meters(filters.size());
+    const int renders = int(filters.size()) + 1;
+    for (int k = 0; k < o.frames; ++k) {
+        Camera cam;
+        cam.view.width = cam.view.height = o.size;
+        cam.view.scale = zoomSequenceScale(k, o.frames, o.from, o.to);
+        // Zoom about a fixed texture point: the view centre stays at texel (0, 0).
+        cam.view.offsetU = cam.view.offsetV = -0.5 * o.size * cam.view.scale;
+        const auto part = [&](int r, const std::string& what) {
+            return progressPart(progress, k * renders + r, o.frames * renders,
+                                "stability: frame " + std::to_string(k + 1) + "/" + std::to_string(o.frames) + ", " +
+                                    what);
+        };
+        const Image reference = truth.render(cam, part(0, "ground truth"));
+        for (size_t m = 0; m < filters.size(); ++m) {
+            const Image frame = filters[m]->render(cam, part(int(m) + 1, names[m]));
+            if (onFrame) onFrame(m, k, frame);
+            meters[m].add(frame, reference, cam.view.scale);
+        }
+    }
+
+    StabilityStudyResult r;
+    r.summary.columns = {{"filter", "filter", ""},
+                         {"image_change_mean", "image change, mean |ΔI|", ""},
+                         {"image_change_max", "image change, max", ""},
+                         {"error_flicker_mean", "error flicker, mean |ΔE|", ""},
+                         {"error_flicker_max", "error flicker, max", ""},
+                         {"accuracy_mean", "mean |I − S̄|", ""}};
+    r.perFrame.columns = {{"filter", "filter", ""},         {"frame", "frame", ""},
+                          {"scale", "scale", ""},           {"accuracy", "|I − S̄|", ""},
+                          {"image_change", "|ΔI|", ""},     {"error_flicker", "|ΔE|", ""}};
+    PlotSeries flickerSeries, accuracySeries;
+    std::vector<PlotSeries> flickerPlot, accuracyPlot;
+    for (size_t m = 0; m < filters.size(); ++m) {
+        StabilityMeasurement s{meters[m].imageChange(), meters[m].errorFlicker(), meters[m].accuracy(),
+                               meters[m].meanAccuracy()};
+        r.summary.add({names[m], TableCell::value(s.imageChange.mean, "%.5f"), TableCell::value(s.imageChange.max, "%.5f"),
+                       TableCell::value(s.errorFlicker.mean, "%.5f"), TableCell::value(s.errorFlicker.max, "%.5f"),
+                       TableCell::value(s.meanAccuracy, "%.5f")});
+        PlotSeries flicker{names[m], {}, {}, seriesColour(m)}, accuracy{names[m], {}, {}, seriesColour(m)};
+        for (int k = 0; k < o.frames; ++k) {
+            const double scale = s.imageChange.scales[size_t(k)];
+            const bool pair = k > 0;
+            r.perFrame.add({names[m], TableCell::integer(k), TableCell::value(scale, "%g"),
+                            TableCell::value(s.accuracy[size_t(k)], "%.5f"),
+                            pair ? TableCell::value(s.imageChange.differences[size_t(k - 1)], "%.5f") : TableCell(""),
+                            pair ? TableCell::value(s.errorFlicker.differences[size_t(k - 1)], "%.5f") : TableCell("")});
+            accuracy.x.push_back(scale);
+            accuracy.y.push_back(s.accuracy[size_t(k)]);
+            if (!pair) continue;
+            flicker.x.push_back(scale);
+            flicker.y.push_back(s.errorFlicker.differences[size_t(k - 1)]);
+        }
+        flickerPlot.push_back(flicker);
+        accuracyPlot.push_back(accuracy);
+        r.measurements.push_back(std::move(s));
+    }
+    LinePlotOptions fo;
+    fo.title = "Error flicker: |ΔE| between consecutive frames, E = frame − S̄";
+    fo.xLabel = "scale (texels per pixel)";
+    fo.yLabel = "mean |ΔE|";
+    fo.logX = true;
+    r.figures.push_back({"error_flicker.png", linePlot(flickerPlot, fo),
+                         "Error flicker per frame: the zoom-compensated change of the error frames (frame − ground "
+                         "truth S̄, " + std::to_string(o.truthSamples) + " samples per axis at most). Low only where a "
+                         "filter follows the truth from frame to frame.",
+                         LineChart{flickerPlot, fo}});
+    LinePlotOptions ao = fo;
+    ao.title = "Accuracy: mean |frame − S̄| per frame";
+    ao.yLabel = "mean |I − S̄|";
+    r.figures.push_back({"accuracy.png", linePlot(accuracyPlot, ao), "Accuracy per frame: mean |frame − S̄|.",
+                         LineChart{accuracyPlot, ao}});
     return r;
 }
 

@@ -1,13 +1,19 @@
 #pragma once
 // Flicker of a zoom-out sequence, per filter: each filter renders the same
-// frames (scales geometric from `from` to `to`, zooming about texel (0, 0))
-// and the zoom-compensated difference between consecutive frames is measured
-// (analysis/zoom_stability.h).
+// frames (scales geometric from `from` to `to`, zooming about texel (0, 0)),
+// and so does the ground truth, S̄ supersampled with `truthSamples` per axis
+// (ZoomSequenceMeter, analysis/zoom_stability.h). Per filter: the
+// zoom-compensated change of the frames ("image change", which blur wins),
+// the same difference of the error frames frame − truth ("error flicker",
+// which only a sequence that follows the truth wins), and the accuracy
+// mean |frame − truth|. Frames are rendered one index at a time for every
+// filter, so memory stays at two frames per filter.
 #include <functional>
 #include <vector>
 
 #include "stochtex/analysis/zoom_stability.h"
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
 
@@ -18,18 +24,30 @@ struct StabilityStudyOptions {
     int frames = 64;                     // [2, 1000]
     int size = 128;                      // frame side in pixels, [8, 2048]
     double from = 1, to = 128;           // first and last scale (texels per pixel), finite, (0, 1e6]
+    // The ground truth: the reference S̄ with at most this many samples per
+    // axis and pixel ([1, 4096]), twice the stability command's reference.
+    int truthSamples = 64;
+};
+
+struct StabilityMeasurement {
+    ZoomStability imageChange;   // consecutive frames, zoom undone
+    ZoomStability errorFlicker;  // consecutive error frames (frame − truth), zoom undone
+    std::vector<double> accuracy;  // per frame: mean |frame − truth|
+    double meanAccuracy = 0;
 };
 
 struct StabilityStudyResult {
-    std::vector<ZoomStability> measurements;  // per filter, in order
-    Table summary;                            // filter, mean_difference, max_difference
-    Table perFrame;                           // filter, frame, scale, difference
+    std::vector<StabilityMeasurement> measurements;  // per filter, in order
+    Table summary;   // filter; image change, error flicker (mean, max); accuracy (mean)
+    Table perFrame;  // filter, frame, scale, accuracy; image change and error flicker from the previous frame
+    std::vector<Figure> figures;  // error flicker and accuracy per frame, per filter (line plots)
 };
 
-// InputError naming the parameter (filters, frames, size, from, to).
+// InputError naming the parameter (filters, frames, size, from, to, truthSamples).
 void validateStabilityStudy(const StabilityStudyOptions& options);
 
-// onFrame(filter index, frame index, frame) sees every rendered frame.
+// onFrame(filter index, frame index, frame) sees every rendered frame (not
+// the truth's).
 using StabilityFrameSink = std::function<void(size_t, int, const Image&)>;
 StabilityStudyResult stabilityStudy(const Pattern& pattern, const StabilityStudyOptions& options,
                                     const StudyProgress& progress = {}, const StabilityFrameSink& onFrame = {});

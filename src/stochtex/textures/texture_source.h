@@ -64,6 +64,7 @@ public:
     // InputError for unusable parameters (validateZoomParams) or base.
     ZoomSource(const ZoomParams& params, ZoomBase base);
     const ZoomParams& params() const { return params_; }
+    const ZoomBase& base() const { return base_; }
     // The lattice of one instance (the first one is kept).
     LatticeTexture lattice(int instance) const;
     const LatticeTexture& firstLattice() const { return first_; }
