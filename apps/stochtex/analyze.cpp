@@ -1,11 +1,13 @@
 // stochtex analyze: one report page on the stationary zoom texture's
-// artifacts — sliding, contrast loss and its corrections, correlation — with
-// every image and table of the `zoom`, `contrast` and `correlation` studies.
+// artifacts — sliding, contrast loss and its corrections, correlation,
+// spectrum, optical flow, temporal coherence — with every image and table of
+// the `zoom`, `contrast`, `correlation`, `spectrum`, `flow` and `coherence` studies.
 #include <chrono>
 #include <cstdio>
 
 #include "common.h"
 #include "progress.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/core/parallel.h"
 #include "zoom_flags.h"
 
@@ -14,18 +16,30 @@ namespace stochtex::cli {
 void registerAnalyze(CLI::App& app) {
     auto args = std::make_shared<ZoomStudyArgs<ArtifactReportOptions>>();
     auto* cmd = app.add_subcommand("analyze", "Report page (index.html) on the zoom texture's artifacts: sliding, "
-                                              "contrast loss and corrections, correlation plots");
+                                              "contrast loss and corrections, correlation plots, spectrum, optical "
+                                              "flow, temporal coherence");
     addOutputFolderFlag(*cmd, args->dir, "Output folder (index.html and the figures)");
     addCorrelationStudyFlags(*cmd, args->study.correlation, "--plot-size", false);
     cmd->add_option("--size", args->study.contrast.size, "Size of the contrast-correction textures")
         ->capture_default_str();
+    cmd->add_option("--frame-size", args->study.frameSize, "Frame side of the spectrum, flow and coherence parts")
+        ->capture_default_str();
+    cmd->add_option("--coherence-layers", args->study.coherenceLayers, "Layer counts n of the temporal-coherence curve")
+        ->delimiter(',');
+    auto images = std::make_shared<std::vector<std::string>>();
+    cmd->add_option("--images", *images, "Image textures for the image-base part (Figures 2.15, 2.17; e.g. "
+                                         "data/textures/*.png)");
     addZoomStudyFlags(*cmd, *args, false);
-    cmd->callback([args] {
+    cmd->callback([args, images] {
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
         ArtifactReportOptions options = args->study;
         options.correlation.zoom = makeZoomParams(args->zoom);
         options.correlation.base = makeZoomBase(args->zoom);
+        for (const std::string& f : *images) options.imageBases.push_back({f, readImage(f)});
+        options.imageBase.zoom = options.correlation.zoom;
+        options.imageBase.zoom.layers = 8;  // Figure 2.17
+        options.imageBase.instances = options.correlation.instances;
         ProgressLine progress("analyze");
         writeArtifactReport(args->dir, options, progress.callback());
         progress.finish();

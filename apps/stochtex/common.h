@@ -212,6 +212,7 @@ void registerAnalyze(CLI::App& app);
 void registerSpectrum(CLI::App& app);
 void registerFlow(CLI::App& app);
 void registerCoherence(CLI::App& app);
+void registerFractalize(CLI::App& app);
 void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
 void registerView(CLI::App& app);

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerSpectrum(app);
     stochtex::cli::registerFlow(app);
     stochtex::cli::registerCoherence(app);
+    stochtex::cli::registerFractalize(app);
     stochtex::cli::registerReproduce(app);
     stochtex::cli::registerScene(app);
     stochtex::cli::registerView(app);

@@ -17,7 +17,7 @@ void addZoomFlags(CLI::App& cmd, ZoomFlags& f, bool withLayers) {
                 "Layer offsets: none, simple, hashed (pcg3d) or sin-hash (eq. 2.23)");
     addEnumFlag(cmd, "--interpolation", p.interpolation, kLatticeInterpolationNames, "interpolation",
                 "Base lattice reconstruction: nearest or linear");
-    cmd.add_option("--base", f.base, "Base texture: 'white' (white noise) or a grayscale image file")
+    cmd.add_option("--base", f.base, "Base texture: 'white' (white noise) or an image file (colour: gray by 0.21r + 0.72g + 0.07b)")
         ->capture_default_str();
     cmd.add_option("--base-size", f.baseSize, "Period of the white-noise lattice")
         ->check(CLI::Range(2, 16384))

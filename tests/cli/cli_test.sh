@@ -166,6 +166,16 @@ case_coherence() {
   expect_bad "coherence one frame" "$out/co4" "--frames: frames must be in [2, 10000], got 1" -- "$bin" coherence -o "$out/co4" --frames 1 zoom
 }
 
+case_fractalize() {
+  # The shipped textures are what the script makes.
+  bash "$src/scripts/make-textures.sh" "$bin" "$out/tex" >/dev/null 2>&1 || fail "make-textures.sh failed"
+  for f in "$src"/data/textures/*.png; do cmp -s "$f" "$out/tex/$(basename "$f")" || fail "data/textures: $(basename "$f") differs from what make-textures.sh writes"; done
+  expect_ok "fractalize" "$out/fr/figure2_17.png" -- "$bin" fractalize "$src/data/textures/stone.png" "$src/data/textures/weld.png" -o "$out/fr" --size 32 --instances 16
+  [ "$(wc -l <"$out/fr/fractalize.csv")" -eq 3 ] || fail "fractalize: the CSV lacks a row per image"
+  expect_bad "fractalize one instance" "$out/fr2" "--instances: instances must be in [2, 100000], got 1" -- "$bin" fractalize "$src/data/textures/stone.png" -o "$out/fr2" --instances 1
+  expect_bad "fractalize missing image" "$out/fr3" "nope.png: no such image file" -- "$bin" fractalize "$work/nope.png" -o "$out/fr3"
+}
+
 case_flow() {
   expect_ok "flow zoom" "$out/fl/flow_arrows.png" -- "$bin" flow -o "$out/fl" --frames 3 --dt 0.05 --size 64 --step 8 zoom --layers 4
   # The zoom texture zooms in at rate 1 per time unit: ~0.05 per frame, outward.
@@ -178,10 +188,15 @@ case_flow() {
 }
 
 case_analyze() {
-  expect_ok "analyze" "$out/an/index.html" -- "$bin" analyze -o "$out/an" --instances 8 --plot-size 16 --layers-list 4 --size 64
+  expect_ok "analyze" "$out/an/index.html" -- "$bin" analyze -o "$out/an" --instances 8 --plot-size 16 --layers-list 4 --size 64 --frame-size 32 --coherence-layers 3,8
   grep -q "figure2_10.png" "$out/an/index.html" || fail "analyze: index.html lacks the correlation sheet"
+  for f in spectrum/spectrum.png flow/flow_arrows.png coherence/layers.png coherence/frames.png; do
+    grep -q "$f" "$out/an/index.html" || fail "analyze: index.html lacks $f"
+  done
+  grep -q "Figure 2.25" "$out/an/index.html" || fail "analyze: the flow section names no thesis figure"
+  expect_ok "analyze with images" "$out/an3/images/figure2_15.png" -- "$bin" analyze -o "$out/an3" --instances 8 --plot-size 16 --layers-list 4 --size 64 --frame-size 32 --coherence-layers 3 --images "$src/data/textures/stone.png"
   # No wall-clock time on the page: a second run writes identical files.
-  "$bin" analyze -o "$out/an2" --instances 8 --plot-size 16 --layers-list 4 --size 64 >/dev/null 2>&1
+  "$bin" analyze -o "$out/an2" --instances 8 --plot-size 16 --layers-list 4 --size 64 --frame-size 32 --coherence-layers 3,8 >/dev/null 2>&1
   diff -r "$out/an" "$out/an2" >/dev/null || fail "analyze: two runs wrote different files"
 }
 

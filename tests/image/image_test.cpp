@@ -108,11 +108,22 @@ TEST(Image, StatsAndConversions) {
     const ChannelStats s = channelStats(img, 0);
     EXPECT_DOUBLE_EQ(s.mean, 0.5);
     EXPECT_DOUBLE_EQ(s.stddev, 0.5);
+    // The thesis's luminosity formula (Figure 2.17): 0.21 r + 0.72 g + 0.07 b.
+    img.at(0, 0, 1) = 1.0f;
+    img.at(1, 0, 2) = 1.0f;
     const Image g = toGray(img);
     EXPECT_EQ(g.channels(), 1);
-    EXPECT_FLOAT_EQ(g.at(1, 0), 1.0f / 3.0f);
+    EXPECT_FLOAT_EQ(g.at(0, 0), 0.72f);
+    EXPECT_FLOAT_EQ(g.at(1, 0), 0.21f + 0.07f);
     const Image rgb = toRgb(g);
-    EXPECT_FLOAT_EQ(rgb.at(1, 0, 2), 1.0f / 3.0f);
+    EXPECT_FLOAT_EQ(rgb.at(1, 0, 2), 0.28f);
+    // Periodic shifts wrap both ways.
+    Image row(3, 2, 1);
+    for (int i = 0; i < 6; ++i) row.data()[size_t(i)] = float(i);
+    const Image s1 = shiftedPeriodic(row, 1, -1);
+    EXPECT_EQ(s1.at(0, 0), row.at(1, 1));
+    EXPECT_EQ(s1.at(2, 1), row.at(0, 0));
+    EXPECT_EQ(shiftedPeriodic(row, 3, 2).data(), row.data());
 }
 
 TEST(ImageIo, JpegAndTiffAreWrittenByExtension) {

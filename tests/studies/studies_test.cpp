@@ -11,6 +11,7 @@
 #include "stochtex/pattern/presets.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
+#include "stochtex/studies/image_base_study.h"
 #include "stochtex/studies/normal_maps.h"
 #include "stochtex/studies/paper.h"
 #include "stochtex/studies/stability_study.h"
@@ -519,6 +520,46 @@ TEST(StabilityStudy, ErrorFlickerRanksFiltersByFidelityNotBlur) {
         EXPECT_EQ(grey.imageChange().mean, 0.0) << preset;
         EXPECT_GT(grey.errorFlicker().mean, flicker(3)) << preset;
     }
+}
+
+// Image textures as the zoom texture's base (thesis §2.7.1): correlation over
+// periodic translations is the image's own autocorrelation. White noise has
+// none beyond the reference pixel; stripes of period 8 correlate fully with
+// themselves 8 pixels away (an echo of 1), and the zoom texture over them
+// keeps echoes (ghosting) with or without offsets, where over white noise
+// the hashed offsets leave no strong echo.
+TEST(ImageBaseStudy, RegularImagesEchoStochasticOnesDoNot) {
+    Image noise(64, 64, 1), stripes(64, 64, 3);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            noise.at(x, y) = unitFloat(pcg3d({uint32_t(x), uint32_t(y), 9u}).x);
+            for (int c = 0; c < 3; ++c) stripes.at(x, y, c) = 0.5f + 0.5f * float(std::sin(2 * M_PI * x / 8.0));
+        }
+    ImageBaseStudyOptions o;
+    o.zoom.layers = 8;
+    o.size = 32;
+    o.instances = 200;
+    const ImageBaseStudyResult r = imageBaseStudy({{"noise", noise}, {"stripes", stripes}}, o);
+    ASSERT_EQ(r.table.rows.size(), 2u);
+    const auto echo = [&](size_t image, size_t column) { return *r.table.rows[image][column].number; };
+    std::printf("[ info ] echoes: noise %.3f %.3f %.3f, stripes %.3f %.3f %.3f\n", echo(0, 1), echo(0, 2), echo(0, 3),
+                echo(1, 1), echo(1, 2), echo(1, 3));
+    // 200 translations: a null correlation's standard error is 1/√200 ≈ 0.07; the
+    // largest of ~1000 pixels stays below ~4.5 of those.
+    EXPECT_LT(echo(0, 1), 0.35);
+    EXPECT_GT(echo(1, 1), 0.95);
+    EXPECT_GT(echo(1, 2), 0.5);
+    EXPECT_GT(echo(1, 3), 0.5);
+    EXPECT_LT(echo(0, 3), echo(1, 3));
+    ASSERT_EQ(r.figures.size(), 2u);
+    EXPECT_EQ(r.figures[1].file, "figure2_17.png");
+    // Instance 0 of the image source is the image itself, from pixel (0, 0).
+    const ImageTextureSource src(toGray(stripes));
+    const Image f = src.render({8, 1, 0.0, 0.0}, 0, 0);
+    EXPECT_FLOAT_EQ(f.at(2, 0), toGray(stripes).at(2, 0));
+    ImageBaseStudyOptions bad = o;
+    bad.instances = 1;
+    EXPECT_EQ(test::inputErrorOf([&] { validateImageBaseStudy(bad, {{"noise", noise}}); }).parameter(), "instances");
 }
 
 TEST(StabilityStudy, ErrorsNameTheParameter) {

@@ -31,14 +31,23 @@ Image toRgb(const Image& image) {
 
 Image toGray(const Image& image) {
     if (image.channels() == 1) return image;
-    const int used = std::min(image.channels(), 3);  // alpha is not a colour
     Image out(image.width(), image.height(), 1);
     for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x) {
-            float sum = 0.0f;
-            for (int c = 0; c < used; ++c) sum += image.at(x, y, c);
-            out.at(x, y) = sum / float(used);
-        }
+        for (int x = 0; x < image.width(); ++x)
+            out.at(x, y) = image.channels() == 2
+                               ? 0.5f * (image.at(x, y, 0) + image.at(x, y, 1))
+                               : 0.21f * image.at(x, y, 0) + 0.72f * image.at(x, y, 1) + 0.07f * image.at(x, y, 2);
+    return out;
+}
+
+Image shiftedPeriodic(const Image& image, int dx, int dy) {
+    const int w = image.width(), h = image.height(), c = image.channels();
+    Image out(w, h, c, Image::Uninitialized{});
+    if (w == 0 || h == 0) return out;
+    const int ox = ((dx % w) + w) % w, oy = ((dy % h) + h) % h;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int k = 0; k < c; ++k) out.at(x, y, k) = image.at((x + ox) % w, (y + oy) % h, k);
     return out;
 }
 

@@ -65,8 +65,12 @@ private:
 
 // Same pixels with 3 channels (gray is replicated; extra channels are dropped).
 Image toRgb(const Image& image);
-// Luminance-free average of the channels into one channel.
+// One channel: RGB(A) by the thesis's luminosity formula
+// I = 0.21 r + 0.72 g + 0.07 b (Tavernier 2017, Figure 2.17; alpha is not a
+// colour), two channels by their average, one channel as it is.
 Image toGray(const Image& image);
+// The image moved periodically: out(x, y) = in((x + dx) mod W, (y + dy) mod H).
+Image shiftedPeriodic(const Image& image, int dx, int dy);
 // Nearest-neighbour resize, used for showing small tables large in sheets.
 Image resizeNearest(const Image& image, int width, int height);
 // Bilinear (area for shrinking) resize through OpenCV.

@@ -1,9 +1,14 @@
 // The report page of the zoom texture's artifacts (`stochtex analyze`):
 // the sliding, contrast and correlation studies of zoom_studies.h on one
 // page, each part's files written as soon as the part is done.
+#include <algorithm>
 #include <string>
 #include <vector>
 
+#include "stochtex/core/error.h"
+#include "stochtex/studies/flow_study.h"
+#include "stochtex/studies/spectrum_study.h"
+#include "stochtex/studies/temporal_coherence_study.h"
 #include "stochtex/studies/zoom_studies.h"
 #include "stochtex/textures/zoom_texture.h"
 
@@ -17,12 +22,49 @@ ZoomParams contrastZoom(const ArtifactReportOptions& options) {
     return p;
 }
 
+SpectrumStudyOptions spectrumOptions(const ArtifactReportOptions& o) {
+    SpectrumStudyOptions s;
+    s.region = SourceRegion::centred(o.frameSize, o.frameSize);
+    s.times = {o.correlation.zoom.time};
+    s.instances = o.spectrumInstances;
+    return s;
+}
+
+FlowStudyOptions flowOptions(const ArtifactReportOptions& o) {
+    FlowStudyOptions f;
+    f.region = SourceRegion::centred(o.frameSize, o.frameSize);
+    f.time = o.correlation.zoom.time;
+    f.frames = 3;
+    f.step = std::max(8, o.frameSize / 16);
+    f.margin = f.step;
+    return f;
+}
+
+LayerCoherenceOptions coherenceOptions(const ArtifactReportOptions& o) {
+    LayerCoherenceOptions c;
+    c.layers = o.coherenceLayers;
+    c.frames.region = SourceRegion::centred(o.frameSize, o.frameSize);
+    c.frames.times = evenTimes(o.correlation.zoom.time, 2.0 / o.coherenceFrames, o.coherenceFrames);
+    return c;
+}
+
 }  // namespace
 
 void validateArtifactReport(const ArtifactReportOptions& options) {
     validateCorrelationStudy(options.correlation);
     validateContrastStudy(options.contrast);
     validateZoomParams(contrastZoom(options));
+    if (options.frameSize < 16 || options.frameSize > 2048)
+        throw InputError::parameter("frameSize", "must be in [16, 2048], got " + std::to_string(options.frameSize));
+    validateSpectrumStudy(spectrumOptions(options));
+    validateFlowStudy(flowOptions(options));
+    const LayerCoherenceOptions c = coherenceOptions(options);
+    validateTemporalCoherence(c.frames);
+    if (c.layers.empty()) throw InputError::parameter("coherenceLayers", "must name at least one layer count");
+    for (int n : c.layers)
+        if (n < 1 || n > 64)
+            throw InputError::parameter("coherenceLayers", "must hold layer counts in [1, 64], got " + std::to_string(n));
+    if (!options.imageBases.empty()) validateImageBaseStudy(options.imageBase, options.imageBases);
 }
 
 void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& options, const StudyProgress& progress) {
@@ -31,6 +73,7 @@ void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& op
     // Three parts; the correlation plots (many instances) take most of the time.
     const Progress zoomPart = progressPart(progress, 0.0, 0.05, "zoom frames and layer scales");
     const Progress contrastPart = progressPart(progress, 0.05, 0.15, "contrast corrections");
+    const Progress framePart = progressPart(progress, 0.7, 1.0, "spectrum, flow, temporal coherence");
     if (zoomPart) zoomPart(0.0, "");
     const std::vector<Figure> zoom = slidingStudy(correlation.zoom, correlation.base);
     ensureFolder(dir + "/zoom");
@@ -40,10 +83,41 @@ void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& op
     const ContrastStudyResult contrast =
         writeZoomContrastStudy(contrastZoom(options), correlation.base, options.contrast, dir + "/contrast");
 
-    const CorrelationStudyResult corr = correlationStudy(correlation, progressPart(progress, 0.15, 1.0));
+    const CorrelationStudyResult corr = correlationStudy(correlation, progressPart(progress, 0.15, 0.7));
     ensureFolder(dir + "/correlation");
     writeFigures(dir + "/correlation", corr.figures);
     writeText(dir + "/correlation", "correlation.csv", corr.table.csv());
+
+    // The frame analyses of the zoom texture (thesis §2.1.1, 2.7, 2.8).
+    const ZoomSource source(correlation.zoom, correlation.base);
+    const SpectrumStudyResult spectrum = spectrumStudy(source, spectrumOptions(options), progressPart(framePart, 0.0, 0.2, "spectrum"));
+    ensureFolder(dir + "/spectrum");
+    writeFigures(dir + "/spectrum", spectrum.figures);
+    writeText(dir + "/spectrum", "spectrum.csv", spectrum.summary.csv());
+    const FlowStudyResult flow = flowStudy(source, flowOptions(options), progressPart(framePart, 0.2, 0.4, "optical flow"));
+    ensureFolder(dir + "/flow");
+    writeFigures(dir + "/flow", flow.figures);
+    writeText(dir + "/flow", "flow.csv", flow.summary.csv());
+    const LayerCoherenceOptions coherenceRun = coherenceOptions(options);
+    const TemporalCoherenceResult coherence = temporalCoherenceStudy(source, coherenceRun.frames, progressPart(framePart, 0.4, 0.55, "temporal coherence"));
+    const LayerCoherenceResult layers = layerCoherenceStudy(source, coherenceRun, progressPart(framePart, 0.55, 1.0, "coherence over n"));
+    ensureFolder(dir + "/coherence");
+    writeFigures(dir + "/coherence", coherence.figures);
+    writeFigures(dir + "/coherence", layers.figures);
+    writeText(dir + "/coherence", "coherence.csv", coherence.summary.csv());
+    writeText(dir + "/coherence", "layers.csv", layers.table.csv());
+
+    std::string imageSection;
+    if (!options.imageBases.empty()) {
+        const ImageBaseStudyResult images = imageBaseStudy(options.imageBases, options.imageBase);
+        ensureFolder(dir + "/images");
+        writeFigures(dir + "/images", images.figures);
+        writeText(dir + "/images", "fractalize.csv", images.table.csv());
+        imageSection = "<h2>Image textures as the base (section 2.7.1, Figures 2.15 and 2.17)</h2>\n<p>Each image's "
+                       "correlation with a point over its periodic translations, then the zoom texture over it "
+                       "without and with hashed offsets: regular structures echo (ghosting).</p>" +
+                       images.table.html() + htmlFigures("images/", images.figures);
+    }
 
     // The plots of each variant at the first layer count.
     const std::string firstLayers = std::to_string(correlation.layers.front());
@@ -65,7 +139,21 @@ void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& op
         corr.table.html() + htmlFigures("correlation/", corr.figures, 1) + "<h3>Each variant at n = " + firstLayers +
         "</h3>\n" + htmlFigures("correlation/", firstN) +
         "<p>All plots for every n are in <a href='correlation/'>correlation/</a> (<a "
-        "href='correlation/correlation.csv'>correlation.csv</a>).</p>";
+        "href='correlation/correlation.csv'>correlation.csv</a>).</p>" +
+        "<h2>Power spectrum (section 2.1.1, Figures 2.4 and 2.22)</h2>\n<p>The mean periodogram of " +
+        std::to_string(options.spectrumInstances) + " instances of the zoom texture (n = " +
+        std::to_string(correlation.zoom.layers) + "): flat like white noise where the layers keep the noise's scale.</p>" +
+        spectrum.summary.html() + htmlFigures("spectrum/", spectrum.figures) +
+        "<h2>Optical flow (section 2.8, Figure 2.25)</h2>\n<p>Farnebäck's dense flow between consecutive frames "
+        "(1/30 apart): the zoom texture's motion is an outward expansion about the zoom centre, whatever its "
+        "other artifacts (the thesis's remark on Figure 2.25).</p>" +
+        flow.summary.html() + htmlFigures("flow/", flow.figures) +
+        "<h2>Temporal coherence (section 2.1.1, Figures 2.4 and 2.16)</h2>\n<p>Per frame: mean, contrast, "
+        "dominant scale (the spectrum's power-weighted mean |f|) and radial spectrum, over " +
+        std::to_string(options.coherenceFrames) + " frames of two zoom periods; then the same for each layer "
+        "count n: too few layers lose coherence.</p>" +
+        coherence.summary.html() + htmlFigures("coherence/", coherence.figures) + layers.table.html() +
+        htmlFigures("coherence/", layers.figures) + imageSection;
     writeText(dir, "index.html", htmlPage("stochtex: zoom texture artifacts", body));
 }
 

@@ -18,7 +18,11 @@ ZoomSource::ZoomSource(const ZoomParams& params, ZoomBase base) : params_(params
 }
 
 LatticeTexture ZoomSource::lattice(int instance) const {
-    if (!base_.image.empty()) return LatticeTexture::fromImage(base_.image.channels() == 1 ? base_.image : toGray(base_.image));
+    if (!base_.image.empty()) {
+        const Image gray = toGray(base_.image);
+        const auto o = imageInstanceOffset(instance, gray.width(), gray.height());
+        return LatticeTexture::fromImage(instance == 0 ? gray : shiftedPeriodic(gray, o[0], o[1]));
+    }
     return LatticeTexture::whiteNoise(base_.size, base_.size, deriveSeed(base_.seed, uint32_t(instance)));
 }
 
@@ -26,13 +30,34 @@ Image ZoomSource::render(const SourceRegion& region, double time, int instance) 
     ZoomParams p = params_;
     p.time = time;
     const ZoomRegion r{region.width, region.height, region.x0, region.y0};
-    return renderZoom(instance == 0 || !base_.image.empty() ? first_ : lattice(instance), p, r);
+    return renderZoom(instance == 0 ? first_ : lattice(instance), p, r);
 }
 
 std::unique_ptr<const AnalyticStatistics> ZoomSource::statistics(double time) const {
     ZoomParams p = params_;
     p.time = time;
     return std::make_unique<ZoomAnalyticStatistics>(p, first_);
+}
+
+std::array<int, 2> imageInstanceOffset(int instance, int width, int height) {
+    if (instance == 0 || width < 1 || height < 1) return {0, 0};
+    const UInt3 h = pcg3d({uint32_t(instance), 0x1ba6eu, 0x5e1f7u});
+    return {int(h.x % uint32_t(width)), int(h.y % uint32_t(height))};
+}
+
+ImageTextureSource::ImageTextureSource(Image gray) : image_(std::move(gray)) { LatticeTexture::checkImage(image_); }
+
+Image ImageTextureSource::render(const SourceRegion& region, double, int instance) const {
+    const int w = image_.width(), h = image_.height();
+    const auto o = imageInstanceOffset(instance, w, h);
+    Image out(region.width, region.height, 1, Image::Uninitialized{});
+    const auto wrap = [](long long v, int n) { return int(((v % n) + n) % n); };
+    for (int y = 0; y < region.height; ++y) {
+        const int ty = wrap((long long)std::floor(region.y0) + y + o[1], h);
+        for (int x = 0; x < region.width; ++x)
+            out.at(x, y) = image_.at(wrap((long long)std::floor(region.x0) + x + o[0], w), ty);
+    }
+    return out;
 }
 
 std::array<double, 2> instanceOffset(int instance, int exampleSize) {

@@ -52,7 +52,9 @@ public:
 };
 
 // The zoom texture over a white-noise lattice (size × size, instance i uses
-// the seed deriveSeed(seed, i)) or over one gray image (every instance alike).
+// the seed deriveSeed(seed, i)) or over one gray image (instance i ≠ 0: the
+// image moved periodically by imageInstanceOffset(i), so that statistics over
+// instances are those of the image's translations, thesis §2.7.1).
 struct ZoomBase {
     int size = 512;
     uint32_t seed = 1;
@@ -94,6 +96,25 @@ public:
 private:
     ZoomStatistics stats_;
     double mean_, variance_;
+};
+
+// The periodic shift of an image texture's instance i: (0, 0) for i = 0,
+// else hashed in [0, width) × [0, height).
+std::array<int, 2> imageInstanceOffset(int instance, int width, int height);
+
+// A gray image as a periodic texture (thesis §2.7.1, Figure 2.15): source
+// pixel (x, y) is texel (x mod W, y mod H) of the image moved by
+// imageInstanceOffset(i); static in t. Its correlation over instances is the
+// image's own (spatial) autocorrelation.
+class ImageTextureSource : public TextureSource {
+public:
+    // InputError unless gray is 1-channel and at least 2×2.
+    explicit ImageTextureSource(Image gray);
+    int channels() const override { return 1; }
+    Image render(const SourceRegion& region, double time, int instance) const override;
+
+private:
+    Image image_;
 };
 
 // The window offset (in texels) of pattern instance i: (0, 0) for i = 0.
