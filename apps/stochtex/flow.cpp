@@ -1,10 +1,13 @@
 // stochtex flow: optical flow of image files, the zoom texture or a pattern's
 // frames (thesis §2.8, Figures 2.24–2.25), with the motion about the centre.
+#include <algorithm>
 #include <cstdio>
+#include <memory>
 
 #include "common.h"
 #include "progress.h"
 #include "stochtex/core/parallel.h"
+#include "stochtex/report/frame_sequence.h"
 #include "stochtex/studies/flow_study.h"
 #include "texture_source_flags.h"
 
@@ -16,6 +19,7 @@ void registerFlow(CLI::App& app) {
         std::vector<int> size{256};
         std::string dir;
         int threads = 0;
+        bool video = false;
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("flow", "Optical flow between consecutive frames (Farnebäck, DIS or Lucas–Kanade): "
@@ -31,6 +35,7 @@ void registerFlow(CLI::App& app) {
                 "farneback | dis (dense) | lucas-kanade (sparse, on the grid)");
     cmd->add_option("--step", args->study.step, "Grid of the vectors, pixels")->capture_default_str();
     cmd->add_option("--arrow-scale", args->study.arrowScale, "Arrows drawn this many times their length")->capture_default_str();
+    cmd->add_flag("--video", args->video, "Also write the frames as frames.mp4 and an animated frames.webp shown in index.html");
     addThreadsFlag(*cmd, args->threads);
     addTextureSourceCommands(*cmd, [args, size, frames, dt](const TextureSource& source, const SourceInfo& info) {
         FlowStudyOptions o = args->study;
@@ -51,14 +56,26 @@ void registerFlow(CLI::App& app) {
         validateFlowStudy(o);
         ThreadLimit limit(args->threads);
         ensureFolder(args->dir);
+        std::unique_ptr<FrameSequenceWriter> video;
+        if (args->video)
+            video = std::make_unique<FrameSequenceWriter>(args->dir + "/frames.mp4", o.region.width, o.region.height,
+                                                          std::min(30.0, 1.0 / o.timeStep), "", o.frameTransfer);
         ProgressLine progress("flow");
-        const FlowStudyResult r = flowStudy(source, o, progress.callback());
+        const FlowStudyResult r = flowStudy(source, o, progress.callback(), [&](int, const Image& frame) {
+            if (video) video->write(frame);
+        });
         progress.finish();
+        std::string preview;
+        if (video) {
+            video->finish();
+            preview = "<figure><img src='frames.webp'><figcaption>The frames analysed (animated; full resolution "
+                      "in <a href='frames.mp4'>frames.mp4</a>).</figcaption></figure>";
+        }
         writeFigures(args->dir, r.figures);
         writeText(args->dir, "flow.csv", r.summary.csv());
         writeText(args->dir, "index.html",
                   htmlPage("Optical flow: " + info.name, "<h1>Optical flow: " + htmlEscape(info.name) + "</h1>" +
-                                                             r.summary.html() + htmlFigures("", r.figures)));
+                                                             preview + r.summary.html() + htmlFigures("", r.figures)));
         std::printf("%s\nwrote %zu figures, flow.csv and index.html to %s\n", r.summary.markdown().c_str(),
                     r.figures.size(), args->dir.c_str());
     });

@@ -177,7 +177,9 @@ case_fractalize() {
 }
 
 case_flow() {
-  expect_ok "flow zoom" "$out/fl/flow_arrows.png" -- "$bin" flow -o "$out/fl" --frames 3 --dt 0.05 --size 64 --step 8 zoom --layers 4
+  expect_ok "flow zoom" "$out/fl/flow_arrows.png" -- "$bin" flow -o "$out/fl" --frames 3 --dt 0.05 --size 64 --step 8 --video zoom --layers 4
+  [ -s "$out/fl/frames.mp4" ] && [ -s "$out/fl/frames.webp" ] || fail "flow --video: frames.mp4 or frames.webp missing"
+  grep -q "<img src='frames.webp'>" "$out/fl/index.html" || fail "flow --video: index.html does not show the preview"
   # The zoom texture zooms in at rate 1 per time unit: ~0.05 per frame, outward.
   awk -F, '$1=="mean" && !($8 > 0.03 && $8 < 0.07) {exit 1}' "$out/fl/flow.csv" || fail "flow zoom: expansion rate off: $(cat "$out/fl/flow.csv")"
   "$bin" render --preset marble --size 64 -o "$out/f0.png" >/dev/null
@@ -554,11 +556,13 @@ case_zoom_times() {
 # --- video: -o NAME.mp4 on every sequence command ---
 case_video() {
   expect_ok "zoom to MP4" "$out/clip.mp4" -- "$bin" zoom --frames 12 --size 64,48 -o "$out/clip.mp4"
-  [ -f "$out/clip.mp4" ] && [ "$(ls -A "$out")" = clip.mp4 ] || fail "zoom to MP4 did not write the video alone: $(ls -A "$out")"
+  [ -f "$out/clip.mp4" ] && [ "$(ls -A "$out" | tr '\n' ' ')" = "clip.mp4 clip.webp " ] || fail "zoom to MP4 did not write the video and its preview alone: $(ls -A "$out")"
+  # The preview is an animated WebP of every frame (RIFF....WEBP with an ANIM chunk).
+  head -c 12 "$out/clip.webp" | tail -c 4 | grep -q WEBP && grep -qa ANIM "$out/clip.webp" || fail "clip.webp is not an animated WebP"
   expect_ok "zoom folder with MP4" "$out/zf/zoom.mp4" -- "$bin" zoom --frames 3 --size 32 -o "$out/zf"
   [ -s "$out/zf/frame_0002.png" ] || fail "zoom folder: frames missing"
   expect_ok "stability videos" "$out/st/smooth.mp4" -- "$bin" stability --preset camouflage --frames 4 --size 32 --filters none,smooth --video -o "$out/st"
-  [ -s "$out/st/none.mp4" ] || fail "stability: none.mp4 missing"
+  [ -s "$out/st/none.mp4" ] && [ -s "$out/st/none.webp" ] || fail "stability: none.mp4 or its preview missing"
   expect_bad "no-video with an MP4" "$out/nv.mp4" "--no-video" -- "$bin" zoom --no-video -o "$out/nv.mp4"
 }
 

@@ -31,10 +31,12 @@ TEST_F(FrameSequence, AnMp4PathWritesOneVideoWithEveryFrame) {
         FrameSequenceWriter out(path, w, h, 25.0, "", Transfer::Linear);  // the codec alone
         for (int k = 0; k < frames; ++k) out.write(uniform(w, h, k % 2 ? 3 : 1, float(k) / float(frames - 1)));
         EXPECT_EQ(out.finish(), path);
+        EXPECT_EQ(out.previewPath(), (dir_ / "clip.webp").string());
     }
     int files = 0;
     for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++files;
-    EXPECT_EQ(files, 1) << "only the video, no frames or temporary file";
+    EXPECT_EQ(files, 2) << "only the video and its animated preview, no frames or temporary file";
+    EXPECT_GT(fs::file_size(dir_ / "clip.webp"), 0u);
 
     cv::VideoCapture in(path, cv::CAP_FFMPEG);
     ASSERT_TRUE(in.isOpened());

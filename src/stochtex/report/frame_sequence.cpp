@@ -12,6 +12,7 @@
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/report/animated_preview.h"
 #include "stochtex/report/page.h"
 
 namespace stochtex {
@@ -27,6 +28,7 @@ struct FrameSequenceWriter::Video {
     // The encoder opens the temporary file by name; its ".mp4" ending picks the container.
     std::unique_ptr<AtomicFile> file;
     cv::VideoWriter writer;
+    std::unique_ptr<AnimatedPreviewWriter> preview;
 };
 
 FrameSequenceWriter::FrameSequenceWriter(const std::string& output, int width, int height, double fps,
@@ -46,7 +48,11 @@ FrameSequenceWriter::FrameSequenceWriter(const std::string& output, int width, i
     // MPEG-4 part 2: FFmpeg's own encoder, present in every FFmpeg build.
     video_->writer.open(video_->file->tempPath(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), fps,
                         cv::Size(width, height), true);
-    if (video_->writer.isOpened()) return;
+    if (video_->writer.isOpened()) {
+        previewPath_ = fs::path(videoPath).replace_extension(".webp").string();
+        video_->preview = std::make_unique<AnimatedPreviewWriter>(previewPath_, width, height, fps);
+        return;
+    }
     if (dir_.empty()) throw InputError(output + ": cannot write MP4 (OpenCV has no FFmpeg MP4 encoder here)");
     std::fprintf(stderr, "note: no MP4 encoder available in this OpenCV build; writing PNG frames only\n");
     video_->file.reset();
@@ -79,11 +85,13 @@ void FrameSequenceWriter::write(const Image& linearFrame) {
         }
     }
     video_->writer.write(m);
+    video_->preview->add(frame);
 }
 
 std::string FrameSequenceWriter::finish() {
     if (!video_->file) return "";
     video_->writer.release();
+    video_->preview->finish();
     video_->file->commit();
     return video_->file->path();
 }

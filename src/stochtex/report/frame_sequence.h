@@ -4,6 +4,8 @@
 //   written to a temporary file and renamed by finish();
 // * a folder: frame_NNNN.png for every frame, plus `<video name>` (an MP4)
 //   when asked for and an encoder is available.
+// Beside every MP4 goes its animated preview for HTML pages, the same name
+// ending in .webp (report/animated_preview.h).
 // Every frame is checked and encoded as it comes, so memory is one frame.
 #include <memory>
 #include <string>
@@ -27,8 +29,11 @@ public:
                         Transfer transfer = Transfer::Srgb);
     ~FrameSequenceWriter();
     void write(const Image& frame);  // 1 (gray) or 3 (RGB) channels, [0, 1], width × height
-    // Closes the MP4 and moves it into place; returns its path, or "" when none was written.
+    // Closes the MP4 and its preview and moves them into place; returns the
+    // MP4's path, or "" when none was written.
     std::string finish();
+    // The animated preview's path ("" without a video).
+    const std::string& previewPath() const { return previewPath_; }
 
 private:
     struct Video;
@@ -36,6 +41,7 @@ private:
     int count_ = 0;
     Transfer transfer_;
     std::unique_ptr<Video> video_;
+    std::string previewPath_;
 };
 
 }  // namespace stochtex

@@ -35,7 +35,8 @@ void addSummaryRow(Table& t, const std::string& pair, const FlowSummary& s) {
 
 }  // namespace
 
-FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o, const StudyProgress& progress) {
+FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o, const StudyProgress& progress,
+                          const FlowFrameSink& onFrame) {
     validateFlowStudy(o);
     const SourceRegion& region = o.region;
     double cx = o.centreX, cy = o.centreY;
@@ -56,10 +57,12 @@ FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o
                          {"expansion_rate", "expansion rate", "per frame"}};
     const bool dense = o.method != FlowMethod::LucasKanade;
     Image prev = source.render(region, o.time, o.instance), first = prev, firstFlow;
+    if (onFrame) onFrame(0, prev);
     std::vector<FlowVector> firstVectors;
     for (int k = 0; k + 1 < o.frames; ++k) {
         if (progress) progress(double(k) / (o.frames - 1), "pair " + std::to_string(k + 1) + "/" + std::to_string(o.frames - 1));
         Image next = source.render(region, o.time + (k + 1) * o.timeStep, o.instance);
+        if (onFrame) onFrame(k + 1, next);
         std::vector<FlowVector> v;
         if (dense) {
             Image flow = denseFlow(prev, next, o.method);

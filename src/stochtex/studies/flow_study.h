@@ -5,6 +5,7 @@
 // (mean vector, outward fraction, expansion rate) per pair and on average,
 // and figures: the flow as colour, arrows on the first frame, and the
 // expansion rate over the pairs.
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -40,7 +41,9 @@ struct FlowStudyResult {
     Table summary;                   // flow.csv: one row per pair, then the mean
     std::vector<Figure> figures;     // flow_colour.png (dense methods), flow_arrows.png, expansion.png (≥ 2 pairs)
 };
+// onFrame(k, frame) sees every frame analysed, in order (for a video of them).
+using FlowFrameSink = std::function<void(int, const Image&)>;
 FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& options,
-                          const StudyProgress& progress = {});
+                          const StudyProgress& progress = {}, const FlowFrameSink& onFrame = {});
 
 }  // namespace stochtex
