@@ -197,6 +197,7 @@ void registerContrast(CLI::App& app);
 void registerAnalyze(CLI::App& app);
 void registerSpectrum(CLI::App& app);
 void registerFlow(CLI::App& app);
+void registerStimuli(CLI::App& app);
 void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
 void registerView(CLI::App& app);

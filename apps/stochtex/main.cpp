@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerAnalyze(app);
     stochtex::cli::registerSpectrum(app);
     stochtex::cli::registerFlow(app);
+    stochtex::cli::registerStimuli(app);
     stochtex::cli::registerReproduce(app);
     stochtex::cli::registerScene(app);
     stochtex::cli::registerView(app);
