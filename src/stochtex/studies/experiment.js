@@ -19,7 +19,10 @@
     var resetMs = script !== null ? 20 : config.resetMs;
 
     var $ = function (id) { return document.getElementById(id); };
-    var image = $('stimulus');
+    // The stimuli are <img> elements of the page (loaded before its load
+    // event), one per trial in the order shown.
+    var images = trials.map(function (t) { return $('stimulus-' + t.trial); });
+    var loaded = false;
     var state = 'intro';
     var index = 0;
     var questionShownAt = 0;
@@ -27,10 +30,12 @@
     var rows = [];
 
     // One image pixel per device pixel: the stimulus is not rescaled.
-    function fitImage() {
+    function fitImages() {
         var side = (config.size / (window.devicePixelRatio || 1)) + 'px';
-        image.style.width = side;
-        image.style.height = side;
+        images.forEach(function (image) {
+            image.style.width = side;
+            image.style.height = side;
+        });
     }
 
     function setState(s) {
@@ -39,7 +44,7 @@
         $('intro').hidden = s !== 'intro';
         $('question').hidden = s !== 'question';
         $('done').hidden = s !== 'done';
-        image.style.visibility = s === 'stimulus' ? 'visible' : 'hidden';
+        if (index < images.length) images[index].style.visibility = s === 'stimulus' ? 'visible' : 'hidden';
         if (s === 'question' && script !== null) {
             var key = script.charAt(index);
             if (key) setTimeout(function () { press(key); }, 5);
@@ -55,16 +60,16 @@
     function wait(ms) { return new Promise(function (resolve) { setTimeout(resolve, ms); }); }
 
     function runTrial() {
-        var trial = trials[index];
+        var image = images[index];
         setState('reset');
-        image.src = trial.image;
-        var decoded = image.decode ? image.decode().catch(function () {}) : Promise.resolve();
-        Promise.all([wait(resetMs), decoded]).then(function () {
+        image.style.display = 'block';
+        wait(resetMs).then(function () {
             setState('stimulus');
             var shownAt = performance.now();
             return wait(durationMs).then(function () {
                 setState('reset');
                 shownMs = performance.now() - shownAt;
+                image.style.display = 'none';
                 $('progress').textContent = 'Trial ' + (index + 1) + ' of ' + trials.length;
                 questionShownAt = performance.now();
                 setState('question');
@@ -95,7 +100,7 @@
     }
 
     function start() {
-        if (state !== 'intro') return;
+        if (state !== 'intro' || !loaded) return;
         if (trials.length === 0) finish(); else runTrial();
     }
 
@@ -112,8 +117,12 @@
     $('start').addEventListener('click', start);
     $('yes').addEventListener('click', function () { answer(true); });
     $('no').addEventListener('click', function () { answer(false); });
-    window.addEventListener('resize', fitImage);
-    fitImage();
+    window.addEventListener('resize', fitImages);
+    window.addEventListener('load', function () {
+        loaded = true;
+        $('start').disabled = false;
+        if (script !== null) setTimeout(function () { press(' '); }, 5);
+    });
+    fitImages();
     setState('intro');
-    if (script !== null) setTimeout(function () { press(' '); }, 5);
 })();

@@ -48,14 +48,18 @@ std::string experimentPage(const StimulusSetOptions& o, const std::vector<Stimul
     if (kEmbeddedExperimentJsCount != 1) throw std::logic_error("stimulusSet: experiment.js is not embedded");
     nlohmann::ordered_json config = {
         {"size", o.size}, {"durationMs", o.durationMs}, {"resetMs", o.resetMs}, {"trials", nlohmann::json::array()}};
+    std::ostringstream stage;
     for (size_t i = 0; i < trials.size(); ++i) {
         const StimulusTrial& t = trials[i];
         config["trials"].push_back(nlohmann::ordered_json{{"trial", t.trial},
                                                           {"stimulus", t.stimulus},
                                                           {"w", t.tile},
                                                           {"correlation", t.correlation},
-                                                          {"alpha", t.alpha},
-                                                          {"image", pngDataUri(images[i].image)}});
+                                                          {"alpha", t.alpha}});
+        // Every stimulus is an element of the page, loaded before its load
+        // event: nothing is fetched or decoded between trials.
+        stage << "<img id='stimulus-" << t.trial << "' class='stimulus' alt='' src='" << pngDataUri(images[i].image)
+              << "'>";
     }
     const std::string grey = cssGrey(o.mean);
     const double minutes = trials.size() * (o.resetMs + o.durationMs + 1500.0) / 60000.0;
@@ -63,11 +67,12 @@ std::string experimentPage(const StimulusSetOptions& o, const std::vector<Stimul
     h << "<style>body{max-width:none;margin:0;background:" << grey
       << ";color:#000;min-height:100vh}"
          "#stage{position:fixed;inset:0;display:flex;align-items:center;justify-content:center;pointer-events:none}"
-         "#stimulus{image-rendering:pixelated;visibility:hidden}"
+         ".stimulus{image-rendering:pixelated;visibility:hidden;display:none}"
          ".panel{position:relative;max-width:42em;margin:4em auto;padding:0 1em;font-size:110%}"
          "#question{text-align:center;margin-top:40vh}button{font-size:120%;margin:0 .5em;padding:.3em 1.2em}"
          "pre{background:#eee;padding:.5em;max-height:20em;overflow:auto}</style>\n"
-         "<div id='stage'><img id='stimulus' alt=''></div>\n"
+         "<div id='stage'>"
+      << stage.str() << "</div>\n"
          "<div id='intro' class='panel'><h1>Do you see a repeating pattern?</h1>"
          "<p>You will see "
       << trials.size() << " noise images, one at a time (about " << std::lround(std::max(1.0, minutes))
@@ -78,7 +83,7 @@ std::string experimentPage(const StimulusSetOptions& o, const std::vector<Stimul
          "(or click the buttons). Go by your impression; answer quickly.</p>"
          "<p>Keep your eyes on the centre of the screen. Use a dim room and a fixed viewing distance, and do not zoom "
          "the page: the images are shown one image pixel per screen pixel.</p>"
-         "<p><button id='start'>Start</button> (or press Space)</p></div>\n"
+         "<p><button id='start' disabled>Start</button> (or press Space)</p></div>\n"
          "<div id='question' class='panel' hidden><p><b>Repeating pattern?</b></p>"
          "<p><button id='yes'>Yes (Y)</button><button id='no'>No (N)</button></p><p id='progress'></p></div>\n"
          "<div id='done' class='panel' hidden><h1>Thank you</h1><p><a id='download' download='answers.csv'>"
