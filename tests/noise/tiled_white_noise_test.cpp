@@ -87,6 +87,7 @@ TEST(TiledWhiteNoise, ContrastCorrectionKeepsMeanAndVariance) {
         EXPECT_NEAR(mean, 0.0, 5.0 * std::sqrt(sigma2 / n)) << alpha;
         EXPECT_NEAR(variance, sigma2, 5.0 * sigma2 * std::sqrt(2.0 / n)) << alpha;
         EXPECT_LE(maxAbs, tiledWhiteNoiseBound(alpha) + 1e-6) << alpha;
+        std::printf("alpha = %.1f: mean %+.5f, variance / (1/3) = %.4f\n", alpha, mean, variance / sigma2);
     }
     EXPECT_NEAR(tiledWhiteNoiseBound(0.5), std::sqrt(2.0), 1e-15);
 }

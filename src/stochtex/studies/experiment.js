@@ -93,8 +93,8 @@
         if (state !== 'question') return;
         var trial = trials[index];
         var responseMs = performance.now() - questionShownAt;
-        rows.push([trial.trial, trial.stimulus, trial.w, trial.correlation, trial.alpha, yes ? 'yes' : 'no',
-                   Math.round(responseMs), Math.round(shownMs)].join(','));
+        rows.push([trial.trial, trial.stimulus, trial.w, trial.correlation, Number(trial.alpha.toPrecision(6)),
+                   yes ? 'yes' : 'no', Math.round(responseMs), Math.round(shownMs)].join(','));
         index += 1;
         if (index < trials.length) runTrial(); else finish();
     }

@@ -65,7 +65,7 @@ std::string experimentPage(const StimulusSetOptions& o, const std::vector<Stimul
     const double minutes = trials.size() * (o.resetMs + o.durationMs + 1500.0) / 60000.0;
     std::ostringstream h;
     h << "<style>body{max-width:none;margin:0;background:" << grey
-      << ";color:#000;min-height:100vh}"
+      << ";color:#000}"
          "#stage{position:fixed;inset:0;display:flex;align-items:center;justify-content:center;pointer-events:none}"
          ".stimulus{image-rendering:pixelated;visibility:hidden;display:none}"
          ".panel{position:relative;max-width:42em;margin:4em auto;padding:0 1em;font-size:110%}"
