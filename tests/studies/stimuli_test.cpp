@@ -126,8 +126,9 @@ TEST(Stimuli, SetListsEveryStimulusOnceInTheSeededOrderAndEmbedsThemInThePage) {
     for (const auto& t : other.trials) b.push_back(t.stimulus);
     EXPECT_NE(a, b);
     // Trial 1 of the page is the first image, embedded as a PNG data: URI.
-    EXPECT_NE(one.page.find("<img id='stimulus-1' class='stimulus' alt='' src='" + pngDataUri(one.images[0].image) + "'>"),
-              std::string::npos);
+    EXPECT_NE(
+        one.page.find("<img id='stimulus-1' class='stimulus' alt='' src='" + pngDataUri(one.images[0].image) + "'>"),
+        std::string::npos);
     EXPECT_NE(one.page.find("background:rgb(128,128,128)"), std::string::npos);  // mean ½ → code 128
 }
 

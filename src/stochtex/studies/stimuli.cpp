@@ -72,7 +72,8 @@ std::string experimentPage(const StimulusSetOptions& o, const std::vector<Stimul
          "#question{text-align:center;margin-top:40vh}button{font-size:120%;margin:0 .5em;padding:.3em 1.2em}"
          "pre{background:#eee;padding:.5em;max-height:20em;overflow:auto}</style>\n"
          "<div id='stage'>"
-      << stage.str() << "</div>\n"
+      << stage.str()
+      << "</div>\n"
          "<div id='intro' class='panel'><h1>Do you see a repeating pattern?</h1>"
          "<p>You will see "
       << trials.size() << " noise images, one at a time (about " << std::lround(std::max(1.0, minutes))
