@@ -220,6 +220,8 @@ TEST(StimuliAnalysis, BadAnswersNameTheFileAndLine) {
     EXPECT_EQ(message(header + "1,8,1.5,no\n"), "answers.csv:2: correlation must be a number in [0, 1], got \"1.5\"");
     EXPECT_EQ(message(header + "1,8,nan,no\n"), "answers.csv:2: correlation must be a number in [0, 1], got \"nan\"");
     EXPECT_EQ(message(header + "1,8,0.5,no\n"), "(no error)");
+    EXPECT_EQ(message(header + "1,8,0.5,no\n" + header + "1,8,0.5,yes\n"), "(no error)");  // two files concatenated
+    EXPECT_EQ(parseStimulusAnswers(header + "1,8,0.5,no\n" + header + "1,8,0.5,yes\n", "a.csv").size(), 2u);
     EXPECT_THROW(readStimulusAnswers("/nonexistent/answers.csv"), InputError);
 }
 

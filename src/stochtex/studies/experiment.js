@@ -105,6 +105,7 @@
     }
 
     document.addEventListener('keydown', function (event) {
+        if (event.repeat) return;  // a held key answers one question, not the next ones too
         var key = (event.key || '').toLowerCase();
         if (state === 'intro' && (key === ' ' || key === 'enter')) {
             event.preventDefault();

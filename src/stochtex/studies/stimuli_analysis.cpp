@@ -73,7 +73,8 @@ std::vector<StimulusAnswer> parseStimulusAnswers(const std::string& text, const 
     std::vector<StimulusAnswer> answers;
     while (std::getline(in, line)) {
         ++number;
-        if (trim(line).empty()) continue;
+        // Blank lines, and the header again where participants' files were concatenated.
+        if (trim(line).empty() || fields(line) == header) continue;
         const std::string at = source + ":" + std::to_string(number) + ": ";
         const std::vector<std::string> f = fields(line);
         if (f.size() != header.size())

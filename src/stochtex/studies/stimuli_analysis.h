@@ -21,7 +21,8 @@ struct StimulusAnswer {
 // and answer (any order; others, e.g. trial, stimulus, alpha,
 // response_time_ms, are ignored), then one line per trial: w a positive
 // integer, correlation in [0, 1], answer yes or no (also y / n, any case).
-// Blank lines and CR line ends are allowed, fields may be "quoted". A bad
+// Blank lines, CR line ends and repeats of the header line (files
+// concatenated) are allowed, fields may be "quoted". A bad
 // file is one InputError "SOURCE:LINE: problem" (SOURCE alone for an empty
 // file or one without answers).
 std::vector<StimulusAnswer> parseStimulusAnswers(const std::string& text, const std::string& source);
