@@ -167,7 +167,9 @@ StimulusSet stimulusSet(const StimulusSetOptions& o, const StudyProgress& progre
         for (double c : o.correlations)
             for (int r = 1; r <= o.repeats; ++r) {
                 StimulusTrial t;
-                t.stimulus = "w" + std::to_string(w) + "_c" + correlationName(c) + "_r" + std::to_string(r) + ".png";
+                // Appended piece by piece: "w" + std::string trips GCC 12's -Wrestrict false positive.
+                t.stimulus = "w";
+                t.stimulus += std::to_string(w) + "_c" + correlationName(c) + "_r" + std::to_string(r) + ".png";
                 t.tile = w;
                 t.correlation = c;
                 t.alpha = blendAlphaForCorrelation(c);
