@@ -14,6 +14,7 @@ packages=(
   libglfw3-dev xvfb xauth libpng-dev libwebp-dev
   libplplot-dev plplot-driver-cairo libpango1.0-dev libcairo2-dev fonts-dejavu-core libjs-chart.js
   clang-14 libclang-rt-14-dev
+  chromium
 )
 
 missing=()

@@ -12,6 +12,7 @@ set(stochtex_sanitized_test_sources
   noise/spectrum_test.cpp
   noise/gaussianize_test.cpp
   noise/tiling_blending_test.cpp
+  noise/tiled_white_noise_test.cpp
   filter/filter_test.cpp
   pattern/colormap_test.cpp
   pattern/phasor_test.cpp

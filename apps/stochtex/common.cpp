@@ -283,6 +283,13 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"step", "--step"},
     {"arrowScale", "--arrow-scale"},
     {"timeStep", "--dt"},
+    {"tiles", "--tiles"},
+    {"correlations", "--correlations"},
+    {"repeats", "--repeats"},
+    {"durationMs", "--duration-ms"},
+    {"resetMs", "--reset-ms"},
+    {"mean", "--mean"},
+    {"contrast", "--contrast"},
 };
 }  // namespace
 

@@ -213,6 +213,7 @@ void registerSpectrum(CLI::App& app);
 void registerFlow(CLI::App& app);
 void registerCoherence(CLI::App& app);
 void registerFractalize(CLI::App& app);
+void registerStimuli(CLI::App& app);
 void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
 void registerView(CLI::App& app);

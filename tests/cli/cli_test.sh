@@ -54,7 +54,7 @@ JSON
 
 # --- help on every command ---
 case_help() {
-  for c in render gallery noise colormap presets zoom correlation contrast analyze reproduce scene view bake bake-image; do
+  for c in render gallery noise colormap presets zoom correlation contrast analyze stimuli reproduce scene view bake bake-image; do
     "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
   done
 }
@@ -200,6 +200,43 @@ case_analyze() {
   # No wall-clock time on the page: a second run writes identical files.
   "$bin" analyze -o "$out/an2" --instances 8 --plot-size 16 --layers-list 4 --size 64 --frame-size 32 --coherence-layers 3,8 >/dev/null 2>&1
   diff -r "$out/an" "$out/an2" >/dev/null || fail "analyze: two runs wrote different files"
+}
+
+# --- the perception experiment (thesis 2.6.2) ---
+case_stimuli() {
+  expect_ok "stimuli" "$out/st/experiment.html" -- "$bin" stimuli -o "$out/st" --size 32 --tiles 4,8,16 --correlations 0,0.5,1 --repeats 2 --seed 5 -j 1
+  [ "$(ls "$out/st"/*.png | wc -l)" -eq 18 ] || fail "stimuli: not 18 PNGs: $(ls "$out/st")"
+  [ "$(wc -l <"$out/st/stimuli.csv")" -eq 19 ] || fail "stimuli.csv: not 18 rows"
+  head -1 "$out/st/stimuli.csv" | grep -qx "trial,stimulus,w,correlation,alpha,repeat,seed" || fail "stimuli.csv header: $(head -1 "$out/st/stimuli.csv")"
+  grep -q ",w16_c1_r2.png,16,1,1,2," "$out/st/stimuli.csv" || fail "stimuli.csv lacks w16_c1_r2.png with alpha 1"
+  grep -q ",w8_c0.5_r1.png,8,0.5,0.5,1," "$out/st/stimuli.csv" || fail "stimuli.csv lacks w8_c0.5_r1.png with alpha 0.5"
+  [ "$(grep -o 'data:image/png;base64,' "$out/st/experiment.html" | wc -l)" -eq 18 ] || fail "experiment.html does not embed 18 images"
+  expect_ok "stimuli 2 threads" "$out/st2/experiment.html" -- "$bin" stimuli -o "$out/st2" --size 32 --tiles 4,8,16 --correlations 0,0.5,1 --repeats 2 --seed 5 -j 2
+  diff -r "$out/st" "$out/st2" >/dev/null || fail "stimuli: 1 and 2 threads wrote different files"
+  expect_ok "stimuli other seed" "$out/st3/stimuli.csv" -- "$bin" stimuli -o "$out/st3" --size 32 --tiles 4,8,16 --correlations 0,0.5,1 --repeats 2 --seed 6
+  cmp -s "$out/st/stimuli.csv" "$out/st3/stimuli.csv" && fail "stimuli: another seed gave the same trial order"
+  cmp -s "$out/st/w8_c0.5_r1.png" "$out/st3/w8_c0.5_r1.png" && fail "stimuli: another seed gave the same image"
+  # Analysis: w 8 at correlation 0: 1 of 2 yes; at 1: 2 of 2 (Wilson 95 %: [0.34238, 1]).
+  printf 'trial,stimulus,w,correlation,alpha,answer,response_time_ms,shown_ms\n1,a.png,8,0,0,yes,400,1000\n2,b.png,8,1,1,yes,300,1000\n3,c.png,8,0,0,no,500,1000\n4,d.png,8,1,1,yes,350,1000\n' >"$work/answers.csv"
+  expect_ok "stimuli analyse" "$out/an/index.html" -- "$bin" stimuli --analyse "$work/answers.csv" -o "$out/an"
+  grep -qx "8,0,2,1,0.5,0.0945312,0.905469" "$out/an/detection.csv" || fail "detection.csv lacks 8,0 at 1 of 2: $(cat "$out/an/detection.csv")"
+  grep -qx "8,1,2,2,1,0.34238,1" "$out/an/detection.csv" || fail "detection.csv lacks 8,1 at 2 of 2: $(cat "$out/an/detection.csv")"
+  for f in detection.png detection_w8.png detection.md; do [ -s "$out/an/$f" ] || fail "analyse: $f not written"; done
+}
+
+case_bad_stimuli_flags() {
+  expect_bad "tile not dividing size" "$out/sb1" "--tiles: tiles must hold tile sizes that divide size = 32, got 5" -- "$bin" stimuli -o "$out/sb1" --size 32 --tiles 4,5
+  expect_bad "tile 0" "$out/sb2" "--tiles: tiles must hold tile sizes that divide size = 32, got 0" -- "$bin" stimuli -o "$out/sb2" --size 32 --tiles 0
+  expect_bad "correlation above 1" "$out/sb3" "--correlations: correlations must hold values in [0, 1], got 1.5" -- "$bin" stimuli -o "$out/sb3" --size 32 --correlations 0,1.5
+  expect_bad "no repeats" "$out/sb4" "--repeats: repeats must be in [1, 1000], got 0" -- "$bin" stimuli -o "$out/sb4" --repeats 0
+  expect_bad "zero duration" "$out/sb5" "--duration-ms: durationMs must be in [1, 60000] ms, got 0" -- "$bin" stimuli -o "$out/sb5" --duration-ms 0
+  expect_bad "mean 1" "$out/sb6" "--mean: mean must be in (0, 1), got 1" -- "$bin" stimuli -o "$out/sb6" --mean 1
+  expect_bad "analyse missing" "$out/sb7" "$work/nothere.csv: cannot read the answers file" -- "$bin" stimuli --analyse "$work/nothere.csv" -o "$out/sb7"
+  printf 'trial,w,correlation,answer\n1,8,0.5,yes\n2,8,0.5,perhaps\n' >"$work/bad.csv"
+  expect_bad "analyse bad answer" "$out/sb8" "$work/bad.csv:3: answer must be yes or no, got \"perhaps\"" -- "$bin" stimuli --analyse "$work/bad.csv" -o "$out/sb8"
+  printf 'trial,w,answer\n1,8,yes\n' >"$work/bad2.csv"
+  expect_bad "analyse no correlation column" "$out/sb9" "$work/bad2.csv:1: no column \"correlation\"" -- "$bin" stimuli --analyse "$work/bad2.csv" -o "$out/sb9"
+  expect_bad "analyse with a stimulus flag" "$out/sb10" "--tiles: has no effect with --analyse" -- "$bin" stimuli --analyse "$work/bad.csv" --tiles 8 -o "$out/sb10"
 }
 
 # --- paper reproduction (reduced) ---

@@ -343,7 +343,7 @@ Image readImage(const std::string& path) {
     return image;
 }
 
-void writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
+std::vector<unsigned char> encodeImage(const std::string& path, const Image& image, const WriteOptions& options) {
     enableExr();
     checkImageOutputFormat(path, options);
     const OutputFormat format = *outputFormatOf(path);
@@ -385,6 +385,11 @@ void writeImage(const std::string& path, const Image& image, const WriteOptions&
         throw InputError(path + ": cannot encode image (" + e.msg + ")");
     }
     if (!ok) throw InputError(path + ": cannot encode image");
+    return buffer;
+}
+
+void writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
+    const std::vector<unsigned char> buffer = encodeImage(path, image, options);
     AtomicFile file(path);
     file.write({reinterpret_cast<const char*>(buffer.data()), buffer.size()});
     file.commit();

@@ -19,6 +19,7 @@
 // problem is one InputError naming the file (no library warning reaches the
 // terminal).
 #include <string>
+#include <vector>
 
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/image/colour_space.h"
@@ -59,6 +60,9 @@ Image readImage(const std::string& path);
 // Throws InputError for an unsupported extension, a bit depth the format
 // cannot hold, or an unwritable place.
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
+// The bytes writeImage would write to path (the format by its extension),
+// for files that embed an image (data: URIs of self-contained pages).
+std::vector<unsigned char> encodeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
 
 // True if the file is an OpenEXR image (by its first bytes): its values are
 // floats, linear as stored, where PNG and JPEG hold integer codes.

@@ -38,6 +38,12 @@ void writeText(const std::string& dir, const std::string& file, const std::strin
 // configuration is inlined as JSON (htmlPage adds the library).
 std::string htmlFigures(const std::string& prefix, const std::vector<Figure>& figures, size_t limit = SIZE_MAX);
 
+// A figure-like image (values are the file's codes, as in writeFigures) as
+// an 8-bit PNG in a data: URI, for pages that must be one file.
+std::string pngDataUri(const Image& image);
+// Base64 (RFC 4648, padded) of bytes.
+std::string base64(const std::vector<unsigned char>& bytes);
+
 // A whole page: <head> with the report style (content at most maxWidthPx
 // wide, figure captions at most captionWidthPx), then body (HTML) unchanged;
 // when the body has charts, Chart.js (Debian's libjs-chart.js, embedded at

@@ -1,0 +1,76 @@
+// stochtex stimuli: the perception experiment of the thesis (§2.6.2): partly
+// correlated tiled white noise stimuli and the page that shows them, or
+// (--analyse) the detection rates of the answers that page collected.
+#include <cstdio>
+
+#include "common.h"
+#include "progress.h"
+#include "stochtex/core/parallel.h"
+#include "stochtex/studies/stimuli.h"
+#include "stochtex/studies/stimuli_analysis.h"
+
+namespace stochtex::cli {
+
+void registerStimuli(CLI::App& app) {
+    struct Args {
+        StimulusSetOptions set;
+        std::string dir, answers;
+        int threads = 0;
+    };
+    auto args = std::make_shared<Args>();
+    auto* cmd = app.add_subcommand("stimuli",
+                                   "Perception experiment (thesis §2.6.2): tiled white-noise stimuli with "
+                                   "tile-to-tile correlation, the experiment page (experiment.html), or "
+                                   "with --analyse the detection rates of its answers");
+    addOutputFolderFlag(*cmd, args->dir);
+    std::vector<CLI::Option*> setFlags{
+        cmd->add_option("--size", args->set.size, "Stimulus side, pixels (shown 1:1)")->capture_default_str(),
+        cmd->add_option("--tiles", args->set.tiles, "Tile sizes w, pixels, each dividing --size")->delimiter(','),
+        cmd->add_option("--correlations", args->set.correlations, "Tile-to-tile correlations in [0, 1] (eq. 2.28)")
+            ->delimiter(','),
+        cmd->add_option("--repeats", args->set.repeats, "Stimuli per (w, correlation)")->capture_default_str(),
+        addSeedFlag(*cmd, "--seed", args->set.seed, "Seed of the images and of the trial order"),
+        cmd->add_option("--duration-ms", args->set.durationMs, "Time a stimulus is shown, ms")->capture_default_str(),
+        cmd->add_option("--reset-ms", args->set.resetMs, "Mean-grey screen before each stimulus, ms")
+            ->capture_default_str(),
+        cmd->add_option("--mean", args->set.mean, "Mean display value of stimuli and screen, (0, 1)")
+            ->capture_default_str(),
+        cmd->add_option("--contrast", args->set.contrast, "Noise amplitude, fraction of the largest that never clips")
+            ->capture_default_str()};
+    cmd->add_option("--analyse,--analyze", args->answers, "Answers CSV of experiment.html: write detection rates");
+    addThreadsFlag(*cmd, args->threads);
+    cmd->callback([args, setFlags] {
+        if (!args->answers.empty()) {
+            for (const CLI::Option* f : setFlags) refuseWithoutEffect(f, false, "with --analyse");
+            const DetectionRates r = detectionRates(readStimulusAnswers(args->answers));
+            ensureFolder(args->dir);
+            writeFigures(args->dir, r.figures);
+            writeText(args->dir, "detection.csv", r.table.csv());
+            writeText(args->dir, "detection.md", r.table.markdown());
+            writeText(args->dir, "index.html",
+                      htmlPage("Perception experiment: detection rates",
+                               "<h1>Perception experiment: detection rates</h1><p>Answers: " +
+                                   htmlEscape(args->answers) + "</p>" + r.table.html() + htmlFigures("", r.figures)));
+            std::printf("%s\nwrote detection.csv, detection.md, %zu plots and index.html to %s\n",
+                        r.table.markdown().c_str(), r.figures.size(), args->dir.c_str());
+            return;
+        }
+        validateStimulusSet(args->set);
+        ThreadLimit limit(args->threads);
+        ensureFolder(args->dir);
+        ProgressLine progress("stimuli");
+        const StimulusSet set = stimulusSet(args->set, progress.callback());
+        progress.finish();
+        writeFigures(args->dir, set.images);
+        writeText(args->dir, "stimuli.csv", set.listing.csv());
+        writeText(args->dir, "experiment.html", set.page);
+        std::printf(
+            "wrote %zu stimuli (%d px, %zu tile sizes x %zu correlations x %d), stimuli.csv and "
+            "experiment.html to %s\nopen experiment.html in a browser; analyse its answers with "
+            "stochtex stimuli --analyse answers.csv -o FOLDER\n",
+            set.images.size(), args->set.size, args->set.tiles.size(), args->set.correlations.size(), args->set.repeats,
+            args->dir.c_str());
+    });
+}
+
+}  // namespace stochtex::cli
