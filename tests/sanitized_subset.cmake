@@ -1,5 +1,5 @@
 # The unit tests of the modules below the GPU and the studies (core, image,
-# noise, filter, pattern): every parser, image reader and CPU kernel a user's
+# noise, filter, pattern, and the marble texture of textures): every parser, image reader and CPU kernel a user's
 # input reaches. They are part of stochtex_tests and, on their own, of the
 # sanitizer build that `make test` runs (tests/sanitized, docs/TESTING.md
 # "Sanitizers"). Paths are relative to tests/.
@@ -22,4 +22,5 @@ set(stochtex_sanitized_test_sources
   pattern/linear_light_test.cpp
   pattern/filtered_pattern_test.cpp
   pattern/lean_test.cpp
-  pattern/camera_test.cpp)
+  pattern/camera_test.cpp
+  textures/marble_texture_test.cpp)

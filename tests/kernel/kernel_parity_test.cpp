@@ -26,6 +26,7 @@
 #include "stochtex/kernel/hash.h"
 #include "stochtex/kernel/lean.h"
 #include "stochtex/kernel/lookup.h"
+#include "stochtex/kernel/marble.h"
 #include "stochtex/kernel/moments.h"
 #include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/tiling_blending.h"
@@ -516,6 +517,75 @@ TEST_F(KernelParity, LeanLobeAndShadingWithin1e5) {
         for (int k = 0; k < 4; ++k)
             if (!(std::abs(gv[k] - cv[k]) <= 1e-5f * std::max(1.0f, std::abs(cv[k]))))
                 return "[" + std::to_string(k) + "]: GPU " + std::to_string(gv[k]) + ", C++ " + std::to_string(cv[k]);
+        return "";
+    });
+}
+
+// The marble texture and its noises (kernel/marble.glsl): cos, sin and exp2
+// are the GPU's own approximations, so values agree within 1e-5 (the noises
+// at a given point), 1e-4 (the scaled layers: a rounding δl of l, a few
+// 10⁻⁷, moves the noise coordinate p = x / 2^l by |p| ln 2 δl ≤ 3·10⁻⁵
+// here, the noise by ≤ 3 times that) and 1e-3 for the marble, whose band
+// phase multiplies the noise's error by b ≤ 10 (a display code is 3.9e-3). Cell noise is piecewise constant: points within
+// 10⁻⁴ + 10⁻⁵|p| of a cell edge at either scale read are left out, since there one
+// rounding of exp2 picks the neighbouring cell on one side only.
+TEST_F(KernelParity, MarbleLayersWithin1e3AndNoisesWithin1e5) {
+    Random r{13};
+    std::vector<uvec4> in;
+    const auto nearEdge = [](double v) { return std::abs(v - std::round(v)) < 1e-4 + 1e-5 * std::abs(v); };
+    while (int(in.size()) < 2 * kItems) {
+        const vec2 x(r.uniform(-300.0f, 300.0f), r.uniform(-300.0f, 300.0f));
+        const float level = r.uniform(2.0f, 9.0f), amplitude = r.uniform(0.0f, 1.5f), t = r.uniform(0.0f, 2.0f);
+        const float rate = r.uniform(-1.0f, 1.0f), frequency = r.uniform(0.0f, 0.05f);
+        const int scaling = int(r.next().x % 3u);
+        const uint seed = r.next().x;
+        const Marble m{vec2(r.uniform(-0.2f, 0.2f), r.uniform(-0.2f, 0.2f)), r.uniform(0.0f, 10.0f), level, amplitude,
+                       frequency, rate, scaling, seed};
+        const double l = double(marbleLevel(m, x, t)), k = std::floor(l);
+        bool edge = false;
+        const auto cellEdge = [&](double level, uint cellSeed) {
+            const vec2 phase = cellPhase(cellSeed);
+            return nearEdge(x.x * std::exp2(-level) + phase.x) || nearEdge(x.y * std::exp2(-level) + phase.y);
+        };
+        if (scaling == kMarbleContinuous)
+            edge = cellEdge(l, seed);
+        else
+            edge = cellEdge(k, deriveSeed(seed, uint(int(k)))) || cellEdge(k + 1, deriveSeed(seed, uint(int(k) + 1)));
+        edge = edge || cellEdge(std::log2(32.0), seed);  // the direct cellNoise(x / 32) below
+        if (edge) continue;
+        in.push_back(bits(vec4(x.x, x.y, t, m.bandFrequency.x)));
+        in.push_back(uvec4(floatBitsToUint(m.bandFrequency.y), floatBitsToUint(m.distortion), floatBitsToUint(level),
+                           floatBitsToUint(amplitude)));
+        in.push_back(uvec4(floatBitsToUint(frequency), floatBitsToUint(rate), uint(scaling), seed));
+    }
+    const auto gpu = runOnGpu({"marble"}, R"(
+        vec4 a = wordf(0), b = wordf(1);
+        uvec4 c = word(2);
+        Marble m = Marble(vec2(a.w, b.x), b.y, b.z, b.w, uintBitsToFloat(c.x), uintBitsToFloat(c.y), int(c.z), c.w);
+        vec2 x = a.xy;
+        emitf(0, vec4(marbleValue(m, kMarbleLayerMarble, x, a.z), marbleValue(m, kMarbleLayerScaledNoise, x, a.z),
+                      marbleValue(m, kMarbleLayerScalingOnly, x, a.z), marbleValue(m, kMarbleLayerBaseNoise, x, a.z)));
+        emitf(1, vec4(gradientNoise(x * 0.03125, c.w), cellNoise(x * 0.03125, c.w), marbleLevel(m, x, a.z), 0.0));)",
+                              3, 2, in);
+    compareItems(gpu, 2, [&](int i) {
+        const vec4 a = floats(in[size_t(3 * i)]), b = floats(in[size_t(3 * i + 1)]);
+        const uvec4 c = in[size_t(3 * i + 2)];
+        const Marble m{vec2(a.w, b.x), b.y, b.z, b.w, uintBitsToFloat(c.x), uintBitsToFloat(c.y), int(c.z), c.w};
+        const vec2 x(a.x, a.y);
+        return std::vector<uvec4>{
+            bits(vec4(marbleValue(m, kMarbleLayerMarble, x, a.z), marbleValue(m, kMarbleLayerScaledNoise, x, a.z),
+                      marbleValue(m, kMarbleLayerScalingOnly, x, a.z), marbleValue(m, kMarbleLayerBaseNoise, x, a.z))),
+            bits(vec4(gradientNoise(x * 0.03125f, c.w), cellNoise(x * 0.03125f, c.w), marbleLevel(m, x, a.z), 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) -> std::string {
+        const vec4 layers = floats(g[0]) - floats(c[0]), noises = floats(g[1]) - floats(c[1]);
+        for (int k = 0; k < 4; ++k) {
+            if (!(std::abs(layers[k]) <= (k == 0 ? 1e-3f : 1e-4f)))
+                return "layer " + std::to_string(k) + ": GPU " + std::to_string(floats(g[0])[k]) + ", C++ " +
+                       std::to_string(floats(c[0])[k]);
+            if (!(std::abs(noises[k]) <= 1e-5f))
+                return "noise " + std::to_string(k) + ": GPU " + std::to_string(floats(g[1])[k]) + ", C++ " +
+                       std::to_string(floats(c[1])[k]);
+        }
         return "";
     });
 }

@@ -53,6 +53,7 @@ std::string header(GlslTarget target) {
 const std::map<std::string, std::vector<std::string>>& chunkNeeds() {
     static const std::map<std::string, std::vector<std::string>> needs = {
         {"grid", {"hash"}},
+        {"marble", {"hash"}},
         {"common", {"hash", "grid", "lookup", "pattern_params"}},
         {"filtering", {"footprint", "moments"}},
         {"response_prefiltered_colormap", {"sigma_levels"}},

@@ -19,6 +19,7 @@
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -40,6 +41,7 @@ using glm::vec4;
 using glm::abs;
 using glm::ceil;
 using glm::clamp;
+using glm::cos;
 using glm::exp2;
 using glm::floatBitsToUint;
 using glm::floor;
@@ -50,6 +52,7 @@ using glm::max;
 using glm::min;
 using glm::mix;
 using glm::pow;
+using glm::sin;
 using glm::sqrt;
 using glm::uintBitsToFloat;
 

@@ -49,6 +49,10 @@ public:
     virtual Image render(const SourceRegion& region, double time, int instance) const = 0;
     // nullptr where the source has no closed form.
     virtual std::unique_ptr<const AnalyticStatistics> statistics(double /*time*/) const { return nullptr; }
+    // InputError where render(region, time, ·) cannot be done (a window or a
+    // time outside the source's range), so that a study checks every frame
+    // before it writes anything; render throws the same error.
+    virtual void checkWindow(const SourceRegion& /*region*/, double /*time*/) const {}
 };
 
 // The zoom texture over a white-noise lattice (size × size, instance i uses
