@@ -1,7 +1,10 @@
-// stochtex analyze: one report page on the stationary zoom texture's
-// artifacts — sliding, contrast loss and its corrections, correlation,
-// spectrum, optical flow, temporal coherence — with every image and table of
-// the `zoom`, `contrast`, `correlation`, `spectrum`, `flow` and `coherence` studies.
+// stochtex analyze: one report page on the artifacts of procedural textures
+// — the zoom texture's sliding, contrast loss and its corrections,
+// correlation, spectrum, optical flow and temporal coherence, image bases,
+// the marble texture and the perception stimuli — with every image and table
+// of the `zoom`, `contrast`, `correlation`, `spectrum`, `flow`, `coherence`,
+// `fractalize`, `marble` and `stimuli` studies.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -17,7 +20,7 @@ void registerAnalyze(CLI::App& app) {
     auto args = std::make_shared<ZoomStudyArgs<ArtifactReportOptions>>();
     auto* cmd = app.add_subcommand("analyze", "Report page (index.html) on the zoom texture's artifacts: sliding, "
                                               "contrast loss and corrections, correlation plots, spectrum, optical "
-                                              "flow, temporal coherence");
+                                              "flow, temporal coherence, the marble texture, perception stimuli");
     addOutputFolderFlag(*cmd, args->dir, "Output folder (index.html and the figures)");
     addCorrelationStudyFlags(*cmd, args->study.correlation, "--plot-size", false);
     cmd->add_option("--size", args->study.contrast.size, "Size of the contrast-correction textures")
@@ -40,6 +43,11 @@ void registerAnalyze(CLI::App& app) {
         options.imageBase.zoom = options.correlation.zoom;
         options.imageBase.zoom.layers = 8;  // Figure 2.17
         options.imageBase.instances = options.correlation.instances;
+        // The marble part at the frame size and instance count of the others.
+        options.marble.size = std::max(32, options.frameSize);
+        options.marble.correlationSize = std::max(16, options.marble.size * 3 / 8);
+        options.marble.instances = std::max(16, options.correlation.instances);
+        options.marble.flowStep = std::max(4, options.marble.size / 16);
         ProgressLine progress("analyze");
         writeArtifactReport(args->dir, options, progress.callback());
         progress.finish();

@@ -24,7 +24,7 @@ void registerCoherence(CLI::App& app) {
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("coherence", "Temporal coherence: per-frame mean, contrast, dominant scale and "
                                                 "spectrum, and their change over time: coherence [flags] "
-                                                "images|pattern|zoom ...");
+                                                "images|pattern|zoom|marble ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
     const CLI::Option* size = cmd->add_option("--size", args->size, "Frame size N or W,H (image files: their size)")->delimiter(',')->expected(1, 2);
@@ -46,7 +46,7 @@ void registerCoherence(CLI::App& app) {
         }
         const auto* zoom = dynamic_cast<const ZoomSource*>(&source);
         refuseWithoutEffect(layers, zoom != nullptr, "without the zoom texture (n is its number of layers)");
-        validateTemporalCoherence(o);
+        validateTemporalCoherence(o, &source);
         ThreadLimit limit(args->threads);
         ensureFolder(args->dir);
         ProgressLine progress("coherence");

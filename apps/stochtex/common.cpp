@@ -290,6 +290,20 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"resetMs", "--reset-ms"},
     {"mean", "--mean"},
     {"contrast", "--contrast"},
+    {"bandPeriod", "--band-period"},
+    {"bandAngle", "--band-angle"},
+    {"distortion", "--distortion"},
+    {"level", "--level"},
+    {"levelAmplitude", "--level-amplitude"},
+    {"levelPeriod", "--level-period"},
+    {"levelRate", "--level-rate"},
+    {"scalings", "--scalings"},
+    {"correlationSize", "--correlation-size"},
+    {"pointX", "--point"},
+    {"pointY", "--point"},
+    {"spectrumInstances", "--spectrum-instances"},
+    {"slideRate", "--slide-rate"},
+    {"flowStep", "--step"},
 };
 }  // namespace
 

@@ -214,6 +214,7 @@ void registerFlow(CLI::App& app);
 void registerCoherence(CLI::App& app);
 void registerFractalize(CLI::App& app);
 void registerStimuli(CLI::App& app);
+void registerMarble(CLI::App& app);
 void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
 void registerView(CLI::App& app);

@@ -23,7 +23,7 @@ void registerFlow(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("flow", "Optical flow between consecutive frames (Farnebäck, DIS or Lucas–Kanade): "
-                                           "HSV colours, arrows, outward motion: flow [flags] images|pattern|zoom ...");
+                                           "HSV colours, arrows, outward motion: flow [flags] images|pattern|zoom|marble ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
     const CLI::Option* size =
@@ -53,7 +53,7 @@ void registerFlow(CLI::App& app) {
             o.region = SourceRegion::centred(args->size[0], args->size.size() > 1 ? args->size[1] : args->size[0]);
             o.time = info.time;
         }
-        validateFlowStudy(o);
+        validateFlowStudy(o, &source);
         ThreadLimit limit(args->threads);
         ensureFolder(args->dir);
         std::unique_ptr<FrameSequenceWriter> video;

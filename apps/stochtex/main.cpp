@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerCoherence(app);
     stochtex::cli::registerFractalize(app);
     stochtex::cli::registerStimuli(app);
+    stochtex::cli::registerMarble(app);
     stochtex::cli::registerReproduce(app);
     stochtex::cli::registerScene(app);
     stochtex::cli::registerView(app);

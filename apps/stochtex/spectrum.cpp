@@ -20,7 +20,7 @@ void registerSpectrum(CLI::App& app) {
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("spectrum", "Power spectrum (centred, log scale), radial and angular profiles and "
                                                "anisotropy of images, a pattern or the zoom texture: "
-                                               "spectrum [flags] images|pattern|zoom ...");
+                                               "spectrum [flags] images|pattern|zoom|marble ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
     const CLI::Option* size = cmd->add_option("--size", args->size, "Window size N or W,H (image files: their size)")->delimiter(',')->expected(1, 2);
@@ -45,7 +45,7 @@ void registerSpectrum(CLI::App& app) {
             o.region = SourceRegion::centred(args->size[0], args->size.size() > 1 ? args->size[1] : args->size[0]);
             o.times = {info.time};
         }
-        validateSpectrumStudy(o);
+        validateSpectrumStudy(o, &source);
         ThreadLimit limit(args->threads);
         ensureFolder(args->dir);
         ProgressLine progress("spectrum");

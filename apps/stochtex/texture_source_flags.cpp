@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "common.h"
+#include "marble_flags.h"
 #include "stochtex/image/image_io.h"
 #include "zoom_flags.h"
 
@@ -52,6 +53,16 @@ void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
         const ZoomSource source(makeZoomParams(*zoom), makeZoomBase(*zoom));
         study(source, {"zoom texture, n = " + std::to_string(source.params().layers), false, 0, 0, 0,
                        Transfer::Linear, source.params().time});
+    });
+
+    auto marble = std::make_shared<MarbleParams>();
+    auto* m = cmd.add_subcommand("marble", "The marble texture (thesis eq. 2.29); instance i = the noises of seed i");
+    addMarbleFlags(*m, *marble, true);
+    m->callback([marble, study] {
+        const MarbleSource source(*marble);
+        study(source, {"marble texture, " + enumName(kMarbleLayerNames, marble->layer) + ", " +
+                           enumName(kMarbleScalingNames, marble->scaling) + " scaling",
+                       false, 0, 0, 0, Transfer::Linear});
     });
 }
 

@@ -4,6 +4,7 @@
 //   CMD images FILE...    image files: frames of a sequence (or instances)
 //   CMD pattern ...       a pattern (--preset / --pattern), unfiltered or --filter
 //   CMD zoom ...          the stationary zoom texture (the zoom command's flags)
+//   CMD marble ...        the marble texture (the marble command's texture flags, --scaling, --layer)
 // The study's own flags stay on CMD, before the sub-command.
 #include <CLI/CLI.hpp>
 #include <functional>
@@ -25,7 +26,7 @@ struct SourceInfo {
 };
 using SourceStudy = std::function<void(const TextureSource& source, const SourceInfo& info)>;
 
-// Adds the three sub-commands to cmd (one is required); the chosen one builds
+// Adds the four sub-commands to cmd (one is required); the chosen one builds
 // its source (InputError naming the flag or file on bad input) and calls study.
 void addTextureSourceCommands(CLI::App& cmd, SourceStudy study);
 

@@ -54,7 +54,7 @@ JSON
 
 # --- help on every command ---
 case_help() {
-  for c in render gallery noise colormap presets zoom correlation contrast analyze stimuli reproduce scene view bake bake-image; do
+  for c in render gallery noise colormap presets zoom correlation contrast analyze stimuli marble spectrum flow coherence fractalize reproduce scene view bake bake-image; do
     "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
   done
 }
@@ -196,6 +196,11 @@ case_analyze() {
     grep -q "$f" "$out/an/index.html" || fail "analyze: index.html lacks $f"
   done
   grep -q "Figure 2.25" "$out/an/index.html" || fail "analyze: the flow section names no thesis figure"
+  for f in marble/stretching.png marble/correlation.png marble/spectra.png marble/sliding_continuous.webp stimuli/stimuli.png stimuli/experiment.html; do
+    grep -q "$f" "$out/an/index.html" || fail "analyze: index.html lacks $f"
+    [ -s "$out/an/$f" ] || fail "analyze: $f not written"
+  done
+  grep -q "Figures 2.23–2.24" "$out/an/index.html" || fail "analyze: the marble section names no thesis figure"
   expect_ok "analyze with images" "$out/an3/images/figure2_15.png" -- "$bin" analyze -o "$out/an3" --instances 8 --plot-size 16 --layers-list 4 --size 64 --frame-size 32 --coherence-layers 3 --images "$src/data/textures/stone.png"
   # No wall-clock time on the page: a second run writes identical files.
   "$bin" analyze -o "$out/an2" --instances 8 --plot-size 16 --layers-list 4 --size 64 --frame-size 32 --coherence-layers 3,8 >/dev/null 2>&1
@@ -222,6 +227,30 @@ case_stimuli() {
   grep -qx "8,0,2,1,0.5,0.0945312,0.905469" "$out/an/detection.csv" || fail "detection.csv lacks 8,0 at 1 of 2: $(cat "$out/an/detection.csv")"
   grep -qx "8,1,2,2,1,0.34238,1" "$out/an/detection.csv" || fail "detection.csv lacks 8,1 at 2 of 2: $(cat "$out/an/detection.csv")"
   for f in detection.png detection_w8.png detection.md; do [ -s "$out/an/$f" ] || fail "analyse: $f not written"; done
+}
+
+case_marble() {
+  expect_ok "marble" "$out/mb/index.html" -- "$bin" marble -o "$out/mb" --size 64 --correlation-size 32 --instances 32 --spectrum-instances 2 --frames 4 --step 8 -j 1
+  for f in stretching.png stretch.png correlation.png spectra.png sliding_expansion.png sliding_continuous_flow_arrows.png \
+           sliding_continuous.mp4 sliding_continuous.webp sliding_blended-corrected.mp4 sliding_blended-corrected.webp \
+           correlation.csv spectra.csv sliding.csv; do
+    [ -s "$out/mb/$f" ] || fail "marble: $f not written"
+  done
+  grep -q "<img src='sliding_continuous.webp'>" "$out/mb/index.html" || fail "marble: index.html does not show the preview"
+  grep -q "Figure 2.22" "$out/mb/index.html" || fail "marble: the spectra section names no thesis figure"
+  head -1 "$out/mb/sliding.csv" | grep -qx "layer,scaling,mean_magnitude,mean_radial,outward_fraction,expansion_rate,scaling_rate" || fail "sliding.csv header: $(head -1 "$out/mb/sliding.csv")"
+  expect_ok "marble 2 threads" "$out/mb2/index.html" -- "$bin" marble -o "$out/mb2" --size 64 --correlation-size 32 --instances 32 --spectrum-instances 2 --frames 4 --step 8 -j 2
+  for f in correlation.csv spectra.csv sliding.csv stretching.png correlation.png; do
+    cmp -s "$out/mb/$f" "$out/mb2/$f" || fail "marble: $f differs between 1 and 2 threads"
+  done
+  # The texture as a source of the frame studies.
+  expect_ok "spectrum marble" "$out/ms/spectrum.csv" -- "$bin" spectrum -o "$out/ms" --size 64 marble --layer scaled-noise --scaling blended
+  expect_ok "flow marble" "$out/mf/flow.csv" -- "$bin" flow -o "$out/mf" --size 64 --frames 3 --step 8 marble --level-amplitude 0 --level-rate 1
+  awk -F, '$1=="mean" && !($8 > 0.015 && $8 < 0.04) {exit 1}' "$out/mf/flow.csv" || fail "flow marble: expansion rate off 2^(1/30) - 1: $(cat "$out/mf/flow.csv")"
+  expect_bad "marble bad scaling" "$out/mb3" "--scalings" -- "$bin" marble -o "$out/mb3" --scalings stretchy
+  expect_bad "marble correlation window" "$out/mb4" "--correlation-size: correlationSize must not exceed size (64), got 96" -- "$bin" marble -o "$out/mb4" --size 64
+  expect_bad "marble band period" "$out/mb5" "--band-period: bandPeriod must be in [1, 1e+06], got 0" -- "$bin" marble -o "$out/mb5" --band-period 0
+  expect_bad "marble source time" "$out/mb6" "marble texture: at time 1 the noise scale exponent l = m + n cos(q x) + r t spans [119, 121]" -- "$bin" flow -o "$out/mb6" --size 48 --frames 2 --dt 1 --step 8 marble --level-rate 100 --level 20
 }
 
 case_bad_stimuli_flags() {

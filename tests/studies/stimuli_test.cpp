@@ -227,3 +227,36 @@ TEST(StimuliAnalysis, BadAnswersNameTheFileAndLine) {
 
 }  // namespace
 }  // namespace stochtex
+
+namespace stochtex {
+namespace {
+
+// The report's overview measures eq. 2.28 on the very images it shows:
+// 2·(256 − w)·256 pixel pairs give a standard error near 0.003 for
+// independent pairs; 0.03 leaves room for the pairs' dependence (each
+// pixel is in up to four).
+TEST(StimulusOverview, MeasuresTheAskedTileCorrelationOnTheImagesShown) {
+    StimulusSetOptions o;
+    o.tiles = {16, 32};
+    o.correlations = {0, 0.5, 1};
+    const StimulusOverview v = stimulusOverview(o);
+    ASSERT_EQ(v.table.rows.size(), 6u);
+    for (const auto& row : v.table.rows) {
+        const double asked = row[1].number.value(), measured = row[3].number.value();
+        EXPECT_NEAR(measured, asked, asked == 1 ? 1e-9 : 0.03) << row[0].text << " " << row[1].text;
+        EXPECT_EQ(row[4].number.value(), 2.0 * (256 - row[0].number.value()) * 256);
+    }
+    EXPECT_EQ(v.sheet.file, "stimuli.png");
+    EXPECT_GT(v.sheet.image.width(), 3 * 256);
+    EXPECT_GT(v.sheet.image.height(), 2 * 256);
+    // The measure itself: a checkerboard of 4-pixel squares repeats every 8
+    // pixels (correlation 1) and flips every 4 (−1), along x and y.
+    Image board(64, 64, 1);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) board.at(x, y) = float(((x % 8) < 4) != ((y % 8) < 4));
+    EXPECT_NEAR(tileToTileCorrelation(board, 8), 1.0, 1e-12);
+    EXPECT_NEAR(tileToTileCorrelation(board, 4), -1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace stochtex

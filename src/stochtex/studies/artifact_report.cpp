@@ -1,11 +1,15 @@
-// The report page of the zoom texture's artifacts (`stochtex analyze`):
-// the sliding, contrast and correlation studies of zoom_studies.h on one
-// page, each part's files written as soon as the part is done.
+// The report page of the procedural textures' artifacts (`stochtex
+// analyze`): the zoom texture's sliding, contrast, correlation, spectrum,
+// flow and coherence, the image bases, the marble texture and the stimuli
+// on one page, each part's files written as soon as the part is done.
 #include <algorithm>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/report/frame_sequence.h"
 #include "stochtex/studies/flow_study.h"
 #include "stochtex/studies/spectrum_study.h"
 #include "stochtex/studies/temporal_coherence_study.h"
@@ -65,6 +69,8 @@ void validateArtifactReport(const ArtifactReportOptions& options) {
         if (n < 1 || n > 64)
             throw InputError::parameter("coherenceLayers", "must hold layer counts in [1, 64], got " + std::to_string(n));
     if (!options.imageBases.empty()) validateImageBaseStudy(options.imageBase, options.imageBases);
+    validateMarbleStudy(options.marble);
+    validateStimulusSet(options.stimuli);
 }
 
 void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& options, const StudyProgress& progress) {
@@ -73,7 +79,7 @@ void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& op
     // Three parts; the correlation plots (many instances) take most of the time.
     const Progress zoomPart = progressPart(progress, 0.0, 0.05, "zoom frames and layer scales");
     const Progress contrastPart = progressPart(progress, 0.05, 0.15, "contrast corrections");
-    const Progress framePart = progressPart(progress, 0.7, 1.0, "spectrum, flow, temporal coherence");
+    const Progress framePart = progressPart(progress, 0.6, 0.85, "spectrum, flow, temporal coherence");
     if (zoomPart) zoomPart(0.0, "");
     const std::vector<Figure> zoom = slidingStudy(correlation.zoom, correlation.base);
     ensureFolder(dir + "/zoom");
@@ -83,7 +89,7 @@ void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& op
     const ContrastStudyResult contrast =
         writeZoomContrastStudy(contrastZoom(options), correlation.base, options.contrast, dir + "/contrast");
 
-    const CorrelationStudyResult corr = correlationStudy(correlation, progressPart(progress, 0.15, 0.7));
+    const CorrelationStudyResult corr = correlationStudy(correlation, progressPart(progress, 0.15, 0.6));
     ensureFolder(dir + "/correlation");
     writeFigures(dir + "/correlation", corr.figures);
     writeText(dir + "/correlation", "correlation.csv", corr.table.csv());
@@ -119,6 +125,33 @@ void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& op
                        images.table.html() + htmlFigures("images/", images.figures);
     }
 
+    // The marble texture, with a video of each sliding sequence.
+    std::map<std::string, std::unique_ptr<FrameSequenceWriter>> videos;
+    ensureFolder(dir + "/marble");
+    const MarbleStudyResult marble = marbleStudy(options.marble, progressPart(progress, 0.85, 0.97, "marble"),
+                                                 [&](const std::string& name, int, const Image& frame) {
+        auto& v = videos[name];
+        if (!v)
+            v = std::make_unique<FrameSequenceWriter>(dir + "/marble/" + name + ".mp4", frame.width(), frame.height(),
+                                                      std::min(30.0, 1.0 / options.marble.timeStep), "",
+                                                      Transfer::Linear);
+        v->write(frame);
+    });
+    for (auto& [name, v] : videos) v->finish();
+    writeFigures(dir + "/marble", marble.figures);
+    writeText(dir + "/marble", "correlation.csv", marble.correlation.csv());
+    writeText(dir + "/marble", "spectra.csv", marble.spectra.csv());
+    writeText(dir + "/marble", "sliding.csv", marble.sliding.csv());
+
+    // The perception stimuli: an overview and the experiment page.
+    if (progress) progress(0.97, "stimuli");
+    const StimulusOverview stimuli = stimulusOverview(options.stimuli);
+    const StimulusSet set = stimulusSet(options.stimuli);
+    ensureFolder(dir + "/stimuli");
+    writeFigures(dir + "/stimuli", {stimuli.sheet});
+    writeText(dir + "/stimuli", "overview.csv", stimuli.table.csv());
+    writeText(dir + "/stimuli", "experiment.html", set.page);
+
     // The plots of each variant at the first layer count.
     const std::string firstLayers = std::to_string(correlation.layers.front());
     std::vector<Figure> firstN;
@@ -153,7 +186,16 @@ void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& op
         std::to_string(options.coherenceFrames) + " frames of two zoom periods; then the same for each layer "
         "count n: too few layers lose coherence.</p>" +
         coherence.summary.html() + htmlFigures("coherence/", coherence.figures) + layers.table.html() +
-        htmlFigures("coherence/", layers.figures) + imageSection;
+        htmlFigures("coherence/", layers.figures) + imageSection +
+        "<h2>The marble texture (sections 2.7.2 and 2.8, Figures 1.6, 2.19–2.24)</h2>\n<p>I(x) = pattern(a&middot;x + "
+        "b noise(x / 2<sup>l</sup>)) (eq. 2.29) over a gradient noise, with the noise scale's exponent l varying "
+        "in space (stretching) or in time (sliding); the continuous scaling against the fix by blended integer "
+        "scales. Files in <a href='marble/'>marble/</a>.</p>\n" + marbleSectionHtml(marble, "marble/", true) +
+        "<h2>Perception stimuli (section 2.6.2, Figures 2.13–2.14)</h2>\n<p>Tiled white noise whose tiles correlate "
+        "by a chosen amount; the experiment shows each for " + std::to_string(options.stimuli.durationMs) +
+        " ms and asks whether a repeating pattern was seen: open <a href='stimuli/experiment.html'>"
+        "stimuli/experiment.html</a> in a browser and turn its answers into detection rates with the "
+        "stimuli command's analysis (docs/EXPERIMENT.md).</p>\n" + stimuli.table.html() + htmlFigures("stimuli/", {stimuli.sheet});
     writeText(dir, "index.html", htmlPage("stochtex: zoom texture artifacts", body));
 }
 

@@ -8,7 +8,7 @@
 
 namespace stochtex {
 
-void validateFlowStudy(const FlowStudyOptions& o) {
+void validateFlowStudy(const FlowStudyOptions& o, const TextureSource* source) {
     const SourceRegion& r = o.region;
     if (r.width < 16 || r.height < 16 || r.width > 4096 || r.height > 4096)
         throw InputError::parameter("size", "must be 16…4096 pixels a side, got " + std::to_string(r.width) + "×" +
@@ -23,6 +23,8 @@ void validateFlowStudy(const FlowStudyOptions& o) {
         throw InputError::parameter("margin", "must leave part of the window, got " + std::to_string(o.margin));
     if (!(o.arrowScale > 0 && o.arrowScale <= 1000))
         throw InputError::parameter("arrowScale", "must be in (0, 1000]");
+    if (source)
+        for (int k = 0; k < o.frames; ++k) source->checkWindow(o.region, o.time + k * o.timeStep);
 }
 
 namespace {
@@ -37,7 +39,7 @@ void addSummaryRow(Table& t, const std::string& pair, const FlowSummary& s) {
 
 FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o, const StudyProgress& progress,
                           const FlowFrameSink& onFrame) {
-    validateFlowStudy(o);
+    validateFlowStudy(o, &source);
     const SourceRegion& region = o.region;
     double cx = o.centreX, cy = o.centreY;
     if (std::isnan(cx) || std::isnan(cy)) {

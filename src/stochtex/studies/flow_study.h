@@ -33,7 +33,9 @@ struct FlowStudyOptions {
     double arrowScale = 4;  // arrows drawn this many times their length
     Transfer frameTransfer = Transfer::Linear;  // as SpectrumStudyOptions::frameTransfer
 };
-void validateFlowStudy(const FlowStudyOptions& options);
+// InputError naming the parameter; with a source, also its checkWindow at
+// every frame's time. Before any work.
+void validateFlowStudy(const FlowStudyOptions& options, const TextureSource* source = nullptr);
 
 struct FlowStudyResult {
     std::vector<FlowSummary> pairs;  // pair k: frames k → k + 1

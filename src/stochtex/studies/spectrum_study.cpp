@@ -8,7 +8,7 @@
 
 namespace stochtex {
 
-void validateSpectrumStudy(const SpectrumStudyOptions& o) {
+void validateSpectrumStudy(const SpectrumStudyOptions& o, const TextureSource* source) {
     const SourceRegion& r = o.region;
     if (r.width < 4 || r.height < 4 || r.width > 4096 || r.height > 4096)
         throw InputError::parameter("size", "must be 4…4096 pixels a side, got " + std::to_string(r.width) + "×" +
@@ -24,6 +24,8 @@ void validateSpectrumStudy(const SpectrumStudyOptions& o) {
     if (o.angularBins < 1 || o.angularBins > 3600) throw InputError::parameter("angularBins", "must be 1…3600");
     if (!(o.rMin >= 0 && o.rMin < o.rMax && o.rMax <= 0.75))
         throw InputError::parameter("rMin", "the annulus needs 0 ≤ rMin < rMax ≤ 0.75 cycles/pixel");
+    if (source)
+        for (double t : o.times) source->checkWindow(o.region, t);
 }
 
 namespace {
@@ -39,7 +41,7 @@ std::string geometryText(const SpectrumGeometry& g) {
 
 SpectrumStudyResult spectrumStudy(const TextureSource& source, const SpectrumStudyOptions& o,
                                   const StudyProgress& progress) {
-    validateSpectrumStudy(o);
+    validateSpectrumStudy(o, &source);
     SpectrumStudyResult r;
     SpectrumAccumulator acc(o.region.width, o.region.height, o.window);
     const int total = int(o.times.size()) * o.instances;

@@ -26,8 +26,9 @@ struct SpectrumStudyOptions {
     // image files' codes), Srgb encoded (linear-light colour renders).
     Transfer frameTransfer = Transfer::Linear;
 };
-// InputError naming the parameter, before any work.
-void validateSpectrumStudy(const SpectrumStudyOptions& options);
+// InputError naming the parameter, before any work; with a source, also its
+// checkWindow at every time.
+void validateSpectrumStudy(const SpectrumStudyOptions& options, const TextureSource* source = nullptr);
 
 struct SpectrumStudyResult {
     Image spectrum;  // the mean periodogram, centred

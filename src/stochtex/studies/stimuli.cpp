@@ -9,6 +9,7 @@
 
 #include "stochtex/core/embedded_file.h"
 #include "stochtex/core/error.h"
+#include "stochtex/analysis/plot.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/noise/tiled_white_noise.h"
 
@@ -200,6 +201,57 @@ StimulusSet stimulusSet(const StimulusSetOptions& o, const StudyProgress& progre
     set.page = experimentPage(o, set.trials, set.images);
     if (progress) progress(1.0, "page");
     return set;
+}
+
+double tileToTileCorrelation(const Image& image, int tile) {
+    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
+    long long n = 0;
+    const auto pair = [&](double a, double b) {
+        sa += a, sb += b, saa += a * a, sbb += b * b, sab += a * b;
+        ++n;
+    };
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            if (x + tile < image.width()) pair(image.at(x, y), image.at(x + tile, y));
+            if (y + tile < image.height()) pair(image.at(x, y), image.at(x, y + tile));
+        }
+    if (n < 2) return std::nan("");
+    const double cov = sab / n - (sa / n) * (sb / n);
+    const double va = saa / n - (sa / n) * (sa / n), vb = sbb / n - (sb / n) * (sb / n);
+    return cov / std::sqrt(va * vb);
+}
+
+StimulusOverview stimulusOverview(const StimulusSetOptions& o) {
+    validateStimulusSet(o);
+    StimulusOverview r;
+    r.table.columns = {{"w", "tile size w", "pixels"},
+                       {"correlation", "correlation asked", ""},
+                       {"alpha", "α", ""},
+                       {"measured", "measured one tile apart", ""},
+                       {"pairs", "pixel pairs", ""}};
+    std::vector<std::vector<Image>> rows;
+    std::vector<std::vector<std::string>> captions;
+    uint32_t index = 0;
+    for (int w : o.tiles) {
+        rows.emplace_back();
+        captions.emplace_back();
+        for (double c : o.correlations) {
+            const Image s = stimulusImage({o.size, w, c, deriveSeed(o.seed, 1 + index++ * uint32_t(o.repeats)), o.mean,
+                                           o.contrast});
+            const long long pairs = 2ll * std::max(0, o.size - w) * o.size;
+            r.table.add({TableCell::integer(w), TableCell::value(c, "%g"),
+                         TableCell::value(blendAlphaForCorrelation(c), "%.4f"),
+                         TableCell::value(tileToTileCorrelation(s, w), "%.4f"), TableCell::integer(pairs)});
+            rows.back().push_back(s);
+            captions.back().push_back("w = " + std::to_string(w) + ", correlation " + TableCell::value(c, "%g").text);
+        }
+    }
+    r.sheet = {"stimuli.png", sheet(rows, captions),
+               "One stimulus per tile size w (rows) and tile-to-tile correlation (columns), as the experiment "
+               "shows them (display values, " + std::to_string(o.size) + " pixels, mean " +
+                   TableCell::value(o.mean, "%g").text + "): tiled white noise blended with fresh noise by α and "
+               "contrast-corrected (eq. 2.24), correlation α²/(α² + (1 − α)²) (eq. 2.28)."};
+    return r;
 }
 
 }  // namespace stochtex

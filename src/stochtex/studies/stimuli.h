@@ -81,4 +81,18 @@ struct StimulusSet {
 // page that shows them in that order.
 StimulusSet stimulusSet(const StimulusSetOptions& options, const StudyProgress& progress = {});
 
+// For a report (Figures 2.13–2.14): one stimulus per (w, correlation) of
+// the grid, as a sheet (a row per w), and the correlation measured in each
+// between pixels one tile apart (horizontal and vertical pairs) beside the
+// asked one, so eq. 2.28 is checked on the very images shown.
+struct StimulusOverview {
+    Table table;    // overview.csv: w, correlation, α, measured, pairs
+    Figure sheet;   // stimuli.png
+};
+StimulusOverview stimulusOverview(const StimulusSetOptions& options);
+
+// The Pearson correlation between the values one tile (w pixels) apart,
+// over every horizontal and vertical pair inside a 1-channel image.
+double tileToTileCorrelation(const Image& image, int tile);
+
 }  // namespace stochtex

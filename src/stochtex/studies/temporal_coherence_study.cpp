@@ -9,7 +9,7 @@
 
 namespace stochtex {
 
-void validateTemporalCoherence(const TemporalCoherenceOptions& o) {
+void validateTemporalCoherence(const TemporalCoherenceOptions& o, const TextureSource* source) {
     const SourceRegion& r = o.region;
     if (r.width < 8 || r.height < 8 || r.width > 2048 || r.height > 2048)
         throw InputError::parameter("size", "must be in [8, 2048] per side, got " + std::to_string(r.width) + "x" +
@@ -21,6 +21,8 @@ void validateTemporalCoherence(const TemporalCoherenceOptions& o) {
     if (o.instance < 0) throw InputError::parameter("instance", "must be ≥ 0, got " + std::to_string(o.instance));
     if (o.radialBins < 4 || o.radialBins > 4096)
         throw InputError::parameter("radialBins", "must be in [4, 4096], got " + std::to_string(o.radialBins));
+    if (source)
+        for (double t : o.times) source->checkWindow(o.region, t);
 }
 
 std::vector<double> evenTimes(double start, double step, int count) {
@@ -73,7 +75,7 @@ std::vector<TableCell> coherenceCells(const TemporalCoherence& c) {
 
 TemporalCoherenceResult temporalCoherenceStudy(const TextureSource& source, const TemporalCoherenceOptions& o,
                                                const StudyProgress& progress) {
-    validateTemporalCoherence(o);
+    validateTemporalCoherence(o, &source);
     TemporalCoherenceResult r;
     std::vector<Image> shown;
     std::vector<size_t> shownIndex;

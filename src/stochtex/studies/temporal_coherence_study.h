@@ -23,7 +23,8 @@ struct TemporalCoherenceOptions {
     Transfer frameTransfer = Transfer::Linear;  // how the frames are shown (Srgb: linear-light colour)
 };
 // InputError naming the parameter (region, times, instance, radialBins).
-void validateTemporalCoherence(const TemporalCoherenceOptions& options);
+// With a source, also its checkWindow at every frame's time.
+void validateTemporalCoherence(const TemporalCoherenceOptions& options, const TextureSource* source = nullptr);
 // `count` times from `start`, `step` apart.
 std::vector<double> evenTimes(double start, double step, int count);
 

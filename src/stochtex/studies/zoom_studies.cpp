@@ -34,11 +34,16 @@ CorrelationMeasurement measureCorrelation(const TextureSource& source, const Cor
     if (o.instances < 2) throw InputError("correlation: needs at least 2 instances");
     CorrelationMeasurement m;
     if (const auto stats = source.statistics(o.time)) {
-        m.analyticRadial = map(o.size, [&](int x, int y) { return stats->correlation(x, 0, y, 0); });
-        m.analyticNonRadial = map(o.size, [&](int x, int y) { return stats->correlation(x, 0, x, y); });
+        const double x0 = o.x0, y0 = o.y0;
+        m.analyticRadial = map(o.size, [&](int x, int y) { return stats->correlation(x0 + x, y0, x0 + y, y0); });
+        m.analyticNonRadial = map(o.size, [&](int x, int y) { return stats->correlation(x0 + x, y0, x0 + x, y0 + y); });
     }
-    CorrelationAccumulator acc(o.size, o.size, o.size / 2, o.size / 2, 0, 0);
-    const SourceRegion region{o.size, o.size, 0.0, 0.0};
+    const int px = o.pointX < 0 ? o.size / 2 : o.pointX, py = o.pointY < 0 ? o.size / 2 : o.pointY;
+    if (px >= o.size || py >= o.size)
+        throw InputError("correlation: the reference point (" + std::to_string(px) + ", " + std::to_string(py) +
+                         ") lies outside the " + std::to_string(o.size) + "-pixel window");
+    CorrelationAccumulator acc(o.size, o.size, px, py, 0, 0);
+    const SourceRegion region{o.size, o.size, o.x0, o.y0};
     for (int k = 0; k < o.instances; ++k) acc.add(gray(source.render(region, o.time, k)));
     m.measuredRadial = acc.probeCorrelation();
     m.measuredNonRadial = acc.correlationWithRow();

@@ -12,7 +12,9 @@
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/image_base_study.h"
+#include "stochtex/studies/marble_study.h"
 #include "stochtex/studies/paper.h"
+#include "stochtex/studies/stimuli.h"
 #include "stochtex/textures/texture_source.h"
 
 namespace stochtex {
@@ -20,15 +22,17 @@ namespace stochtex {
 // --- correlation over instances, any 1-channel source (colour: its gray) ---
 
 struct CorrelationMeasureOptions {
-    int size = 128;        // frames cover the source pixels x, y ∈ [0, size)
+    int size = 128;        // frames cover the source pixels x, y ∈ [0, size) (moved by x0, y0)
     int instances = 512;   // N
     double time = 0;
+    double x0 = 0, y0 = 0;        // the window's first pixel in the source
+    int pointX = -1, pointY = -1;  // the point map's reference in window pixels; −1: size/2
 };
 struct CorrelationMeasurement {
     // Row 0 is the source's row y = 0; the point map's reference is (size/2, size/2).
     Image measuredRadial;     // (x, y) = Corr[I(x, 0), I(y, 0)]
     Image measuredNonRadial;  // (x, y) = Corr[I(x, 0), I(x, y)]
-    Image measuredPoint;      // Corr with the point (size/2, size/2)
+    Image measuredPoint;      // Corr with the reference point (default (size/2, size/2))
     Image analyticRadial, analyticNonRadial;  // empty when the source has no closed form
 };
 CorrelationMeasurement measureCorrelation(const TextureSource& source, const CorrelationMeasureOptions& options);
@@ -110,15 +114,21 @@ struct ArtifactReportOptions {
     // Image textures as the base (Figures 2.15–2.17; none: the part is left out).
     std::vector<ImageBase> imageBases;
     ImageBaseStudyOptions imageBase;
+    // The marble texture (§2.7.2, 2.8; Figures 2.19–2.24) and the perception
+    // stimuli (§2.6.2; Figures 2.13–2.14, with the experiment page).
+    MarbleStudyOptions marble;
+    StimulusSetOptions stimuli;
 };
 // InputError for unusable settings, before any work.
 void validateArtifactReport(const ArtifactReportOptions& options);
-// Runs sliding, contrast, correlation, spectrum, flow and temporal
-// coherence, writing each part's files into dir/zoom, dir/contrast,
-// dir/correlation, dir/spectrum, dir/flow and dir/coherence as soon as it
-// is done, then dir/index.html with every figure and table, each section
-// naming the thesis figure it reproduces. The page carries no
-// wall-clock time, so two runs write identical files.
+// Runs sliding, contrast, correlation, spectrum, flow, temporal coherence,
+// the image bases, the marble texture and the stimuli, writing each part's
+// files into dir/zoom, dir/contrast, dir/correlation, dir/spectrum, dir/flow,
+// dir/coherence, dir/images, dir/marble (with the sliding videos, MP4 and
+// animated WebP) and dir/stimuli (with experiment.html) as soon as it is
+// done, then dir/index.html with every figure and table, each section naming
+// the thesis figure it reproduces. The page carries no wall-clock time, so
+// two runs write identical files.
 void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& options,
                          const StudyProgress& progress = {});
 

@@ -1,0 +1,80 @@
+// stochtex marble: the marble texture's artifacts (thesis §2.7.2, §2.8), continuous
+// scaling vs the fix: stretching, correlation, spectra, sliding (with videos).
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include "common.h"
+#include "marble_flags.h"
+#include "progress.h"
+#include "stochtex/core/parallel.h"
+#include "stochtex/report/frame_sequence.h"
+#include "stochtex/studies/marble_study.h"
+
+namespace stochtex::cli {
+
+void registerMarble(CLI::App& app) {
+    struct Args {
+        MarbleStudyOptions study;
+        std::vector<double> point;
+        std::string dir;
+        int threads = 0;
+    };
+    auto args = std::make_shared<Args>();
+    MarbleStudyOptions& s = args->study;
+    auto* cmd = app.add_subcommand("marble", "The marble texture (thesis eq. 2.29): stretching, correlation, spectra "
+                                             "and sliding, continuous scaling vs the blended fix; videos of the sliding");
+    addOutputFolderFlag(*cmd, args->dir);
+    addMarbleFlags(*cmd, s.marble, false);
+    cmd->add_option("--scalings", s.scalings, "Scalings compared: continuous, blended, blended-corrected")
+        ->delimiter(',')
+        ->transform(enumTransformer(kMarbleScalingNames, "scalings"))
+        ->default_str("continuous,blended-corrected");
+    cmd->add_option("--size", s.size, "Frames of N×N pixels centred on the origin")->capture_default_str();
+    cmd->add_option("--correlation-size", s.correlationSize, "Correlation window around the point, pixels")
+        ->capture_default_str();
+    cmd->add_option("--point", args->point, "Correlation reference X,Y in pixels from the origin (default: x = "
+                                            "-period/4 of l, where the scaling shears the noise most, y halfway "
+                                            "to the edge)")
+        ->delimiter(',')
+        ->expected(2);
+    cmd->add_option("--instances", s.instances, "Seeds per correlation map")->capture_default_str();
+    cmd->add_option("--spectrum-instances", s.spectrumInstances, "Seeds per spectrum")->capture_default_str();
+    cmd->add_option("--slide-rate", s.slideRate, "Sliding: r in l = m + r t")->capture_default_str();
+    cmd->add_option("--frames", s.frames, "Sliding frames")->capture_default_str();
+    cmd->add_option("--dt", s.timeStep, "Time between sliding frames")->capture_default_str();
+    cmd->add_option("--step", s.flowStep, "Pixels between flow vectors")->capture_default_str();
+    addEnumFlag(*cmd, "--method", s.flowMethod, kFlowMethodNames, "method",
+                "Optical flow: dis (default: exact on the smooth noise), farneback or lucas-kanade");
+    addThreadsFlag(*cmd, args->threads);
+    cmd->callback([args] {
+        MarbleStudyOptions o = args->study;
+        if (!args->point.empty()) o.pointX = args->point[0], o.pointY = args->point[1];
+        validateMarbleStudy(o);
+        ThreadLimit limit(args->threads);
+        ensureFolder(args->dir);
+        std::map<std::string, std::unique_ptr<FrameSequenceWriter>> videos;
+        ProgressLine progress("marble");
+        const MarbleStudyResult r = marbleStudy(o, progress.callback(), [&](const std::string& name, int, const Image& f) {
+            auto& v = videos[name];
+            if (!v)
+                v = std::make_unique<FrameSequenceWriter>(args->dir + "/" + name + ".mp4", f.width(), f.height(),
+                                                          std::min(30.0, 1.0 / o.timeStep), "", Transfer::Linear);
+            v->write(f);
+        });
+        for (auto& [name, v] : videos) v->finish();
+        progress.finish();
+        writeFigures(args->dir, r.figures);
+        writeText(args->dir, "correlation.csv", r.correlation.csv());
+        writeText(args->dir, "spectra.csv", r.spectra.csv());
+        writeText(args->dir, "sliding.csv", r.sliding.csv());
+        writeText(args->dir, "index.html", htmlPage("The marble texture", "<h1>The marble texture (thesis eq. 2.29)</h1>" +
+                                                                              marbleSectionHtml(r, "", true)));
+        std::printf("%s\n%s\n%s\nwrote %zu figures, %zu videos (MP4 + animated WebP), correlation.csv, spectra.csv, "
+                    "sliding.csv and index.html to %s\n",
+                    r.correlation.markdown().c_str(), r.spectra.markdown().c_str(), r.sliding.markdown().c_str(),
+                    r.figures.size(), videos.size(), args->dir.c_str());
+    });
+}
+
+}  // namespace stochtex::cli
