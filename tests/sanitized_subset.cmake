@@ -23,4 +23,5 @@ set(stochtex_sanitized_test_sources
   pattern/filtered_pattern_test.cpp
   pattern/lean_test.cpp
   pattern/camera_test.cpp
+  pattern/texture_graph_test.cpp
   textures/marble_texture_test.cpp)

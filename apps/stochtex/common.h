@@ -215,6 +215,7 @@ void registerCoherence(CLI::App& app);
 void registerFractalize(CLI::App& app);
 void registerStimuli(CLI::App& app);
 void registerMarble(CLI::App& app);
+void registerNodes(CLI::App& app);
 void registerReproduce(CLI::App& app);
 void registerScene(CLI::App& app);
 void registerView(CLI::App& app);

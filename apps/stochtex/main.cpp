@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerNoise(app);
     stochtex::cli::registerColormap(app);
     stochtex::cli::registerPresets(app);
+    stochtex::cli::registerNodes(app);
     stochtex::cli::registerStability(app);
     stochtex::cli::registerZoom(app);
     stochtex::cli::registerCorrelation(app);

@@ -54,7 +54,7 @@ JSON
 
 # --- help on every command ---
 case_help() {
-  for c in render gallery noise colormap presets zoom correlation contrast analyze stimuli marble spectrum flow coherence fractalize reproduce scene view bake bake-image; do
+  for c in render gallery noise colormap presets nodes zoom correlation contrast analyze stimuli marble spectrum flow coherence fractalize reproduce scene view bake bake-image; do
     "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
   done
 }
@@ -251,6 +251,21 @@ case_marble() {
   expect_bad "marble correlation window" "$out/mb4" "--correlation-size: correlationSize must not exceed size (64), got 96" -- "$bin" marble -o "$out/mb4" --size 64
   expect_bad "marble band period" "$out/mb5" "--band-period: bandPeriod must be in [1, 1e+06], got 0" -- "$bin" marble -o "$out/mb5" --band-period 0
   expect_bad "marble source time" "$out/mb6" "marble texture: at time 1 the noise scale exponent l = m + n cos(q x) + r t spans [119, 121]" -- "$bin" flow -o "$out/mb6" --size 48 --frames 2 --dt 1 --step 8 marble --level-rate 100 --level 20
+}
+
+case_graph() {
+  # A graph file is a pattern file: the camouflage preset as a graph renders byte-identical to it.
+  expect_ok "render graph" "$out/g.png" -- "$bin" render "$src/data/graphs/camouflage.json" --size 96 -o "$out/g.png"
+  expect_ok "render preset" "$out/p.png" -- "$bin" render --preset camouflage --size 96 -o "$out/p.png"
+  cmp -s "$out/g.png" "$out/p.png" || fail "graph: data/graphs/camouflage.json differs from the camouflage preset"
+  expect_ok "render derivative graph filtered" "$out/d.png" -- "$bin" render "$src/data/graphs/derivative-ridges.json" --size 64 --filter smooth --scale 4 -o "$out/d.png"
+  "$bin" nodes | grep -q "^derivative (linear; input: field → field)" || fail "nodes: derivative not listed"
+  "$bin" nodes --json | grep -q '"type": "spectral_noise"' || fail "nodes --json: spectral_noise not listed"
+  printf '{"nodes": {"a": {"type": "affine", "input": "b"}, "b": {"type": "affine", "input": "a"}, "c": {"type": "colormap", "x": "a", "y": "b", "colormap": {"type": "gaussian"}}}, "output": "c"}' >"$work/cycle.json"
+  expect_bad "graph cycle" "$out/cy.png" "cycle.json: /nodes/" -- "$bin" render "$work/cycle.json" -o "$out/cy.png"
+  grep -q "closes a cycle" "$work/err.txt" || fail "graph cycle: message lacks 'closes a cycle': $(cat "$work/err.txt")"
+  printf '{"nodes": {"c": {"type": "colormap", "x": "c", "y": "c", "colormap": {"type": "gaussian"}}}, "output": "c"}' >"$work/colour.json"
+  expect_bad "graph colour into a field" "$out/co.png" "colour.json: /nodes/c/x: expects a field, but \"c\" (colormap) gives a colour" -- "$bin" render "$work/colour.json" -o "$out/co.png"
 }
 
 case_bad_stimuli_flags() {

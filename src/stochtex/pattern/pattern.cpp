@@ -8,11 +8,19 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/noise/slopes.h"
+#include "stochtex/pattern/texture_graph.h"
 
 namespace stochtex {
 
 Pattern Pattern::build(const PatternSpec& spec) {
     std::array<NoiseExample, 2> examples;
+    if (spec.graph) {
+        GraphFields fields = buildGraphFields(*spec.graph, spec.seed, spec.name);
+        const uint32_t sx = deriveSeed(spec.seed, 1);
+        const uint32_t sy = spec.offsets == OffsetMode::Shared ? sx : deriveSeed(spec.seed, 2);
+        return Pattern(std::move(fields.examples), {sx, sy}, buildColormap(fields.colormap), spec.gridDensity,
+                       spec.offsets == OffsetMode::Shared ? OffsetSharing::Shared : OffsetSharing::Independent);
+    }
     for (int axis = 0; axis < 2; ++axis) {
         NoiseSpec ns = spec.noise[axis];
         ns.spectrum.seed = noiseSeed(spec, axis);

@@ -9,6 +9,7 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/texture_graph.h"
 #include "stochtex/noise/example.h"
 #include "stochtex/pattern/pattern.h"
 
@@ -16,10 +17,10 @@ namespace stochtex {
 namespace fs = std::filesystem;
 
 namespace {
-
 constexpr double kMaxFrequency = 1e4;
+}  // namespace
 
-SpectrumComponent parseComponent(const JsonReader& r) {
+SpectrumComponent parseSpectrumComponent(const JsonReader& r) {
     r.expectObject({"shape", "frequency", "cutoff", "bandwidth", "orientation", "weight"});
     SpectrumComponent c;
     const std::string shape = r.at("shape").choice({"lowpass", "ring", "bilobe"});
@@ -41,6 +42,8 @@ SpectrumComponent parseComponent(const JsonReader& r) {
     c.weight = r.number("weight", 1.0, 0.0, 1e6);
     return c;
 }
+
+namespace {
 
 Rgb parseColour(const JsonReader& r) {
     if (r.value().is_string()) {
@@ -127,13 +130,13 @@ void checkPixelRange(const Image& img, const std::string& file, double lo, doubl
     }
 }
 
-fs::path resolve(const JsonReader& r, const fs::path& baseDir) {
+}  // namespace
+
+fs::path resolveInputPath(const JsonReader& r, const fs::path& baseDir) {
     const fs::path p = r.string();
     if (p.empty()) r.fail("empty path");
     return p.is_absolute() ? p : baseDir / p;
 }
-
-}  // namespace
 
 NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
     NoiseSpec spec;
@@ -156,7 +159,7 @@ NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
         const JsonReader comps = r.at("components");
         const size_t n = comps.arraySize();
         if (n == 0) comps.fail("needs at least one spectrum component");
-        for (size_t i = 0; i < n; ++i) s.components.push_back(parseComponent(comps.at(i)));
+        for (size_t i = 0; i < n; ++i) s.components.push_back(parseSpectrumComponent(comps.at(i)));
         double total = 0;
         for (const auto& c : s.components) total += c.weight;
         if (total <= 0) comps.fail("component weights sum to zero");
@@ -164,7 +167,7 @@ NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
     } else {
         r.expectObject({"type", "path", "gaussianize"});
         spec.source = NoiseSpec::Source::Image;
-        spec.image = resolve(r.at("path"), baseDir);
+        spec.image = resolveInputPath(r.at("path"), baseDir);
         spec.gaussianize = r.boolean("gaussianize", true);
     }
     return spec;
@@ -183,7 +186,7 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
         spec.profile = r.choice("profile", PhasorProfile::Sine, kPhasorProfileNames);
         spec.duty = r.number("duty", 0.5, 0.0, 1.0);
         if (spec.profile == PhasorProfile::Image)
-            spec.image = resolve(r.at("path"), baseDir);
+            spec.image = resolveInputPath(r.at("path"), baseDir);
         else if (r.has("path"))
             r.at("path").fail("\"path\" is the profile image: it needs \"profile\": \"image\"");
         if (auto palette = r.find("palette")) {
@@ -194,7 +197,7 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
     } else if (type == "image") {
         r.expectObject({"type", "path", "transfer"});
         spec.source = ColormapSpec::Source::Image;
-        spec.image = resolve(r.at("path"), baseDir);
+        spec.image = resolveInputPath(r.at("path"), baseDir);
     } else {
         r.expectObject({"type", "resolution", "background", "shapes", "transfer"});
         spec.source = ColormapSpec::Source::Painted;
@@ -253,8 +256,12 @@ NormalMapSpec parseNormalMapSpec(const JsonReader& r, const fs::path& baseDir) {
 }
 
 PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
-    r.expectObject({"name", "description", "seed", "size", "scale", "offsets", "grid_density", "noise_x", "noise_y",
-                    "colormap", "normal_map"});
+    const bool graph = r.value().is_object() && r.has("nodes");
+    if (graph)
+        r.expectObject({"name", "description", "seed", "size", "scale", "offsets", "grid_density", "nodes", "output"});
+    else
+        r.expectObject({"name", "description", "seed", "size", "scale", "offsets", "grid_density", "noise_x", "noise_y",
+                        "colormap", "normal_map"});
     PatternSpec spec;
     spec.name = r.string("name", "pattern");
     if (r.has("description")) (void)r.at("description").string();
@@ -272,6 +279,13 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
     // The output caps (pixel count) are the renderer's: the pattern's own view must pass them.
     r.check([&] { validateView(View{spec.width, spec.height, spec.scale}); });
     spec.gridDensity = r.number("grid_density", spec.gridDensity, 1e-3, 1e3);
+    if (graph) {
+        auto g = std::make_shared<TextureGraph>(parseTextureGraph(r, baseDir));
+        spec.colormap = g->node(g->output).colormap;
+        spec.offsets = r.choice("offsets", OffsetMode::Independent, kOffsetModeNames);
+        spec.graph = std::move(g);
+        return spec;
+    }
 
     spec.noise[0] = parseNoiseSpec(r.at("noise_x"), baseDir);
     const JsonReader ny = r.at("noise_y");

@@ -3,11 +3,14 @@
 //   { "name", "seed", "size", "scale", "offsets", "grid_density",
 //     "noise_x": NOISE, "noise_y": NOISE | "quadrature", "colormap": COLORMAP,
 //     "normal_map": NORMAL_MAP (optional) }
+// or the same header with "nodes" and "output": a texture graph
+// (texture_graph.h),
 // documented in full in docs/PATTERNS.md. Every error names the source and
 // the JSON pointer of the value at fault.
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -84,6 +87,8 @@ enum class OffsetMode { Independent, Shared };
 inline const EnumNames<OffsetMode> kOffsetModeNames{{"independent", OffsetMode::Independent},
                                                     {"shared", OffsetMode::Shared}};
 
+struct TextureGraph;  // texture_graph.h
+
 struct PatternSpec {
     std::string name = "pattern";
     uint32_t seed = 1;
@@ -95,9 +100,16 @@ struct PatternSpec {
     bool quadraturePair = false;  // noise_y is "quadrature": the Hilbert pair of noise_x
     ColormapSpec colormap;
     std::optional<NormalMapSpec> normalMap;  // the pattern also carries normals
+    // A graph file (texture_graph.h): its nodes give the two examples and the
+    // colormap (`colormap` holds the output node's); noise[] is unused.
+    std::shared_ptr<const TextureGraph> graph;
 };
 
 NoiseSpec parseNoiseSpec(const JsonReader& r, const std::filesystem::path& baseDir);
+// One spectrum component object (a NOISE's "components" entry).
+SpectrumComponent parseSpectrumComponent(const JsonReader& r);
+// A path member, relative to baseDir unless absolute; fails if empty.
+std::filesystem::path resolveInputPath(const JsonReader& r, const std::filesystem::path& baseDir);
 ColormapSpec parseColormapSpec(const JsonReader& r, const std::filesystem::path& baseDir);
 NormalMapSpec parseNormalMapSpec(const JsonReader& r, const std::filesystem::path& baseDir);
 // InputError naming the parameter (roughness, amplitude, specular, light,

@@ -1,0 +1,71 @@
+#pragma once
+// The nodes of texture graphs (texture_graph.h), each described once: its
+// inputs, what it gives, and its parameter table (name, description, type,
+// default, range). The table drives the JSON parsing and validation of a
+// graph, `stochtex nodes`, and the per-node benchmarks; a new node is a new
+// entry here and its operation in texture_graph.cpp.
+//
+// The nodes so far are those a graph of the form "linear part → one
+// transfer function" needs, which the paper's estimators filter exactly:
+// sources (spectral noise, exemplar), linear operators of fields (a
+// directional derivative, an affine remap, a weighted sum; linear maps of
+// Gaussian fields are Gaussian, so each folds into the example the field is
+// tiled from), and the 2D transfer function H (a colormap).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace stochtex {
+
+// What flows along an edge.
+enum class PortType { Field, Colour };
+const char* portTypeName(PortType t);
+
+enum class ParamType {
+    Number,      // a finite number in [min, max]
+    Integer,     // an integer in [min, max]
+    Boolean,
+    Seed,        // an integer in [0, 2³² − 1]; unset: derived from the graph's seed and the node's id
+    Path,        // an image file, relative to the graph file's folder
+    Components,  // spectrum components, as a pattern file's noise (docs/PATTERNS.md)
+    Colormap,    // a COLORMAP object, as a pattern file's (docs/PATTERNS.md)
+};
+const char* paramTypeName(ParamType t);
+
+struct ParamInfo {
+    std::string name;
+    ParamType type;
+    std::string description;
+    nlohmann::json fallback;  // the default; null: required (or, for a seed, derived)
+    double min = 0, max = 0;  // Number and Integer
+};
+
+struct PortInfo {
+    std::string name;
+    PortType type;
+    std::string description;
+};
+
+enum class NodeKind { SpectralNoise, Exemplar, Derivative, Affine, Sum, Colormap };
+
+struct NodeInfo {
+    std::string name;  // the JSON "type"
+    NodeKind kind;
+    std::string category;  // source, linear, transfer
+    std::string description;
+    std::vector<PortInfo> inputs;
+    PortType output;
+    std::vector<ParamInfo> params;
+};
+
+// Every node, in the order `stochtex nodes` lists them.
+const std::vector<NodeInfo>& graphNodes();
+// The node called `name`, or null.
+const NodeInfo* findGraphNode(const std::string& name);
+// The whole table as JSON (for `stochtex nodes --json` and user interfaces):
+// [{type, category, description, inputs: [{name, type, description}],
+//   output, params: [{name, type, description, default, min, max}]}].
+nlohmann::json graphNodesJson();
+
+}  // namespace stochtex

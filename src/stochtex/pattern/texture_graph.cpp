@@ -1,0 +1,244 @@
+#include "stochtex/pattern/texture_graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <set>
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/hash.h"
+#include "stochtex/noise/slopes.h"
+
+namespace stochtex {
+
+namespace {
+
+bool validId(const std::string& id) {
+    if (id.empty() || id.size() > 64) return false;
+    return std::all_of(id.begin(), id.end(), [](char c) { return std::isalnum((unsigned char)c) || c == '_' || c == '-'; });
+}
+
+std::string knownTypes() {
+    std::string s;
+    for (const NodeInfo& n : graphNodes()) s += (s.empty() ? "" : ", ") + n.name;
+    return s;
+}
+
+bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
+
+// One node's members: its type, its input ports, its parameters by the table.
+GraphNode parseNode(const JsonReader& n, const std::string& id, const std::filesystem::path& baseDir) {
+    if (!validId(id)) n.fail("node ids are 1–64 letters, digits, '_' or '-'");
+    if (!n.value().is_object()) n.fail("expected a node object with a \"type\"");
+    const std::string type = n.at("type").string();
+    GraphNode g;
+    g.id = id;
+    g.info = findGraphNode(type);
+    if (!g.info) n.at("type").fail("unknown node type \"" + type + "\"; known: " + knownTypes());
+    const NodeInfo& info = *g.info;
+    for (const auto& [key, value] : n.value().items()) {
+        (void)value;
+        const bool known = key == "type" ||
+                           std::any_of(info.inputs.begin(), info.inputs.end(), [&](const PortInfo& p) { return p.name == key; }) ||
+                           std::any_of(info.params.begin(), info.params.end(), [&](const ParamInfo& p) { return p.name == key; });
+        if (known) continue;
+        std::string names;
+        for (const PortInfo& p : info.inputs) names += (names.empty() ? "" : ", ") + p.name;
+        for (const ParamInfo& p : info.params) names += (names.empty() ? "" : ", ") + p.name;
+        n.at(key).fail("a " + type + " node has no port or parameter \"" + key + "\"; it has: " + names);
+    }
+    for (const PortInfo& p : info.inputs) {
+        if (!n.has(p.name)) n.fail("a " + type + " node needs its input \"" + p.name + "\" (a " + portTypeName(p.type) + ")");
+        g.inputs[p.name] = n.at(p.name).string();
+    }
+    for (const ParamInfo& p : info.params) {
+        const bool required = p.fallback.is_null();
+        if (required && p.type != ParamType::Seed && !n.has(p.name)) n.fail("a " + type + " node needs \"" + p.name + "\"");
+        switch (p.type) {
+            case ParamType::Number:
+                g.numbers[p.name] = n.number(p.name, p.fallback.get<double>(), p.min, p.max);
+                break;
+            case ParamType::Integer:
+                g.numbers[p.name] = n.integer(p.name, p.fallback.get<int>(), int(p.min), int(p.max));
+                break;
+            case ParamType::Boolean: g.numbers[p.name] = n.boolean(p.name, p.fallback.get<bool>()) ? 1 : 0; break;
+            case ParamType::Seed:
+                if (n.has(p.name)) g.seed = n.at(p.name).uint32();
+                break;
+            case ParamType::Path: g.noise.image = resolveInputPath(n.at(p.name), baseDir); break;
+            case ParamType::Components: {
+                const JsonReader comps = n.at(p.name);
+                const size_t count = comps.arraySize();
+                if (count == 0) comps.fail("needs at least one spectrum component");
+                for (size_t i = 0; i < count; ++i) g.noise.spectrum.components.push_back(parseSpectrumComponent(comps.at(i)));
+                break;
+            }
+            case ParamType::Colormap: g.colormap = parseColormapSpec(n.at(p.name), baseDir); break;
+        }
+    }
+    // The sources' example descriptions, as a pattern file's noises.
+    if (info.kind == NodeKind::SpectralNoise) {
+        SpectrumSpec& s = g.noise.spectrum;
+        g.noise.source = NoiseSpec::Source::Spectrum;
+        s.size = int(g.numbers["size"]);
+        if (!isPowerOfTwo(s.size))
+            n.at("size").fail("must be a power of two (the filtered renders build MIP pyramids that halve the example), "
+                              "got " + std::to_string(s.size));
+        s.mean = g.numbers["mean"];
+        s.stddev = g.numbers["stddev"];
+        s.quadrature = g.numbers["quadrature"] != 0;
+        g.noise.explicitSeed = g.seed.has_value();
+        double total = 0;
+        for (const auto& c : s.components) total += c.weight;
+        if (total <= 0) n.at("components").fail("component weights sum to zero");
+        n.check([&] { validateSpectrumWork(s); });
+    } else if (info.kind == NodeKind::Exemplar) {
+        g.noise.source = NoiseSpec::Source::Image;
+        g.noise.gaussianize = g.numbers["gaussianize"] != 0;
+    }
+    return g;
+}
+
+}  // namespace
+
+const GraphNode& TextureGraph::node(const std::string& id) const {
+    for (const GraphNode& n : nodes)
+        if (n.id == id) return n;
+    throw std::out_of_range("TextureGraph::node: no node " + id);
+}
+
+TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path& baseDir) {
+    const JsonReader nodes = r.at("nodes");
+    if (!nodes.value().is_object()) nodes.fail("expected an object of nodes by id");
+    if (nodes.value().empty()) nodes.fail("needs at least one node");
+    if (nodes.value().size() > size_t(kMaxGraphNodes))
+        nodes.fail("has " + std::to_string(nodes.value().size()) + " nodes, more than " + std::to_string(kMaxGraphNodes));
+    std::map<std::string, GraphNode> byId;
+    for (const auto& [id, value] : nodes.value().items()) {
+        (void)value;
+        byId.emplace(id, parseNode(nodes.at(id), id, baseDir));
+    }
+    // Edges: each input names a node whose output has the port's type.
+    for (const auto& [id, g] : byId)
+        for (const PortInfo& p : g.info->inputs) {
+            const JsonReader edge = nodes.at(id).at(p.name);
+            const std::string& from = g.inputs.at(p.name);
+            const auto it = byId.find(from);
+            if (it == byId.end()) edge.fail("no node \"" + from + "\"");
+            if (it->second.info->output != p.type)
+                edge.fail("expects a " + std::string(portTypeName(p.type)) + ", but \"" + from + "\" (" +
+                          it->second.info->name + ") gives a " + portTypeName(it->second.info->output));
+        }
+    // Depth-first order (inputs first); an edge back to a node on the path is a cycle.
+    TextureGraph graph;
+    std::map<std::string, int> state;  // 1: on the path, 2: done
+    std::vector<std::string> path;
+    const std::function<void(const std::string&)> visit = [&](const std::string& id) {
+        state[id] = 1;
+        path.push_back(id);
+        const GraphNode& g = byId.at(id);
+        for (const PortInfo& p : g.info->inputs) {
+            const std::string& from = g.inputs.at(p.name);
+            if (state[from] == 1) {
+                std::string cycle;
+                for (auto it = std::find(path.begin(), path.end(), from); it != path.end(); ++it) cycle += *it + " → ";
+                nodes.at(id).at(p.name).fail("closes a cycle: " + cycle + from);
+            }
+            if (state[from] == 0) visit(from);
+        }
+        path.pop_back();
+        state[id] = 2;
+        graph.nodes.push_back(g);
+    };
+    for (const auto& [id, g] : byId)
+        if (state[id] == 0) visit(id);
+    const JsonReader out = r.at("output");
+    graph.output = out.string();
+    const auto it = byId.find(graph.output);
+    if (it == byId.end()) out.fail("no node \"" + graph.output + "\"");
+    if (it->second.info->output != PortType::Colour)
+        out.fail("the output must be a colour, but \"" + graph.output + "\" (" + it->second.info->name + ") gives a field");
+    return graph;
+}
+
+uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id) {
+    // FNV-1a of the id, then the kernel's hash with the pattern seed.
+    uint32_t h = 2166136261u;
+    for (unsigned char c : id) h = (h ^ c) * 16777619u;
+    return deriveSeed(patternSeed, h);
+}
+
+NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
+                             const std::string& context) {
+    const GraphNode& g = graph.node(id);
+    const std::string where = context + ": node \"" + id + "\"";
+    // A linear node's input: its example values, which must be the field's own.
+    const auto linearInput = [&](const std::string& port) {
+        NoiseExample e = buildGraphField(graph, g.inputs.at(port), patternSeed, context);
+        if (e.gaussianized())
+            throw InputError(where + " (" + g.info->name + "): its input \"" + g.inputs.at(port) +
+                             "\" is a Gaussianized exemplar, whose field is not linear in its example; give it "
+                             "\"gaussianize\": false to use it here");
+        return e;
+    };
+    const auto number = [&](const char* name) { return g.numbers.at(name); };
+    switch (g.info->kind) {
+        case NodeKind::SpectralNoise: {
+            NoiseSpec ns = g.noise;
+            ns.spectrum.seed = g.seed ? *g.seed : graphNodeSeed(patternSeed, id);
+            return buildNoiseExample(ns, where);
+        }
+        case NodeKind::Exemplar: return buildNoiseExample(g.noise, where);
+        case NodeKind::Derivative: {
+            const NoiseExample e = linearInput("input");
+            const std::array<Image, 2> slopes = spectralSlopes(e.values());
+            const double a = number("angle") * std::numbers::pi / 180;
+            const float c = float(std::cos(a)), s = float(std::sin(a));
+            Image d(e.size(), e.size(), 1, Image::Uninitialized{});
+            double sumSq = 0;
+            for (size_t i = 0; i < d.data().size(); ++i) {
+                d.data()[i] = c * slopes[0].data()[i] + s * slopes[1].data()[i];
+                sumSq += double(d.data()[i]) * d.data()[i];
+            }
+            const double rms = std::sqrt(sumSq / double(d.data().size()));
+            if (!(rms > 1e-12)) throw InputError(where + " (derivative): the input is flat along this direction");
+            const float gain = float(number("stddev") / rms), mean = float(number("mean"));
+            for (float& v : d.data()) v = mean + gain * v;
+            return NoiseExample(std::move(d));
+        }
+        case NodeKind::Affine: {
+            const NoiseExample e = linearInput("input");
+            Image v = e.values();
+            const float scale = float(number("scale")), offset = float(number("offset"));
+            for (float& x : v.data()) x = scale * x + offset;
+            return NoiseExample(std::move(v));
+        }
+        case NodeKind::Sum: {
+            const NoiseExample a = linearInput("a"), b = linearInput("b");
+            if (a.size() != b.size())
+                throw InputError(where + " (sum): its inputs' examples are " + std::to_string(a.size()) + " and " +
+                                 std::to_string(b.size()) + " texels wide; a sum needs one size");
+            Image v = a.values();
+            const float wa = float(number("weight_a")), wb = float(number("weight_b"));
+            for (size_t i = 0; i < v.data().size(); ++i) v.data()[i] = wa * v.data()[i] + wb * b.values().data()[i];
+            return NoiseExample(std::move(v));
+        }
+        case NodeKind::Colormap: break;
+    }
+    throw std::logic_error("buildGraphField: node " + id + " is not a field");
+}
+
+GraphFields buildGraphFields(const TextureGraph& graph, uint32_t patternSeed, const std::string& context) {
+    const GraphNode& out = graph.node(graph.output);
+    GraphFields f{{buildGraphField(graph, out.inputs.at("x"), patternSeed, context),
+                   buildGraphField(graph, out.inputs.at("y"), patternSeed, context)},
+                  out.colormap};
+    if (f.examples[0].size() != f.examples[1].size())
+        throw InputError(context + ": node \"" + graph.output + "\" (colormap): x's example is " +
+                         std::to_string(f.examples[0].size()) + " texels wide but y's is " +
+                         std::to_string(f.examples[1].size()) + "; both must have one size");
+    return f;
+}
+
+}  // namespace stochtex

@@ -1,0 +1,71 @@
+#pragma once
+// Texture graphs (issue "Texture graphs"; paper §7 and Figure 14): a pattern
+// file may describe its pattern as nodes and edges instead of
+// {noise_x, noise_y, colormap}:
+//   { "name", "seed", "size", "scale", "offsets", "grid_density",
+//     "nodes": { ID: { "type": NODE, PORT: ID, ..., PARAM: value, ... }, ... },
+//     "output": ID }
+// Node types, ports and parameters come from graph_nodes.h; every error
+// names the JSON pointer of the value at fault (an unknown node type, port
+// or parameter, an edge to a missing node, a colour where a field is
+// expected, a missing input, a cycle, a parameter out of range).
+//
+// Evaluation folds the linear part into the examples (a linear map of a
+// tiled field is the tiled field of the mapped example, with the same tiles
+// and blend weights), so a graph "linear part → colormap" becomes the two
+// examples and the colormap of a Pattern, rendered and filtered by every
+// path exactly as a pattern file's (docs/GRAPHS.md).
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "stochtex/noise/example.h"
+#include "stochtex/pattern/graph_nodes.h"
+#include "stochtex/pattern/pattern_spec.h"
+
+namespace stochtex {
+
+constexpr int kMaxGraphNodes = 256;
+
+struct GraphNode {
+    std::string id;
+    const NodeInfo* info = nullptr;
+    std::map<std::string, std::string> inputs;  // port → node id
+    std::map<std::string, double> numbers;      // Number, Integer, Boolean (0/1) parameters, defaults filled
+    std::optional<uint32_t> seed;               // the Seed parameter when given
+    NoiseSpec noise;                            // sources: the example's description
+    ColormapSpec colormap;                      // colormap nodes
+};
+
+struct TextureGraph {
+    std::vector<GraphNode> nodes;  // every node after its inputs
+    std::string output;            // the node whose colour is the pattern
+    const GraphNode& node(const std::string& id) const;
+};
+
+// Parses and checks the graph members ("nodes", "output") of a pattern file.
+TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path& baseDir);
+
+// The seed of a source node without an explicit one: from the pattern seed
+// and the node's id (so adding or renaming another node changes nothing).
+uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id);
+
+// The two examples the output colormap reads (its x and y inputs, linear
+// nodes folded in) and that colormap. InputError naming the node for what
+// can only be seen while building (examples of different sizes, a linear
+// node over a Gaussianized exemplar, a flat field to differentiate).
+struct GraphFields {
+    std::array<NoiseExample, 2> examples;
+    ColormapSpec colormap;
+};
+GraphFields buildGraphFields(const TextureGraph& graph, uint32_t patternSeed, const std::string& context);
+
+// The example of any field node, linear nodes folded in (1 channel, W×W),
+// and whether it is a Gaussianized exemplar (then its values are T(E)).
+NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
+                             const std::string& context);
+
+}  // namespace stochtex
