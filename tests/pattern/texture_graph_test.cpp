@@ -162,3 +162,4 @@ TEST(TextureGraph, SourceSeedsComeFromTheIdNotThePosition) {
 
 }  // namespace
 }  // namespace stochtex
+
