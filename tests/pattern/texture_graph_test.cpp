@@ -160,6 +160,29 @@ TEST(TextureGraph, SourceSeedsComeFromTheIdNotThePosition) {
     EXPECT_NE(graphNodeSeed(7, "height"), graphNodeSeed(8, "height"));
 }
 
+// Every node of the table builds and renders in its sample graph, so a
+// node added to the table is parsed, built and rendered here (and timed by
+// the per-node benchmark) without a test of its own for that.
+TEST(TextureGraph, EveryNodeBuildsAndRendersInItsSampleGraph) {
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "stochtex_sample_exemplar.png";
+    Image img(64, 64, 1);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) img.at(x, y) = float(0.5 + 0.4 * std::sin(0.3 * x) * std::cos(0.2 * y));
+    writeImage(file.string(), img, WriteOptions{.transfer = Transfer::Linear});
+    for (const NodeInfo& node : graphNodes()) {
+        const std::string text = sampleNodeGraph(node, file.string()).dump();
+        try {
+            const Pattern p = Pattern::build(parse(text));
+            const Image out = p.render(View{32, 32, 1.0});
+            double lo = 1e9, hi = -1e9;
+            for (float v : out.data()) lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
+            EXPECT_GT(hi - lo, 0.01) << node.name << ": a flat render";
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << node.name << ": " << e.what() << "\n" << text;
+        }
+    }
+    std::filesystem::remove(file);
+}
+
 }  // namespace
 }  // namespace stochtex
-

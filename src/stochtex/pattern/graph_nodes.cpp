@@ -32,7 +32,7 @@ const std::vector<NodeInfo>& graphNodes() {
           {"stddev", ParamType::Number, "Standard deviation of the example", 1.0 / 6.0, 1e-4, 0.5},
           {"quadrature", ParamType::Boolean, "The Hilbert partner of the same white noise (a phase shift of π/2)", false},
           {"components", ParamType::Components, "Spectrum components: lowpass, ring or bilobe (docs/PATTERNS.md)",
-           json()}}},
+           json(), 0, 0, json::parse(R"([{"shape": "lowpass", "cutoff": 8}])")}}},
         {"exemplar", NodeKind::Exemplar, "source", "An image as the example (periodic), tiled and blended",
          {},
          PortType::Field,
@@ -62,7 +62,7 @@ const std::vector<NodeInfo>& graphNodes() {
           {"y", PortType::Field, "N_y, the colormap's vertical coordinate"}},
          PortType::Colour,
          {{"colormap", ParamType::Colormap, "A COLORMAP: analytic, phasor, image or painted (docs/PATTERNS.md)",
-           json()}}},
+           json(), 0, 0, json::parse(R"({"type": "gaussian"})")}}},
     };
     return nodes;
 }
@@ -93,6 +93,33 @@ nlohmann::json graphNodesJson() {
                        {"params", params}});
     }
     return all;
+}
+
+nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplarPath) {
+    using json = nlohmann::json;
+    const auto withParams = [&](const NodeInfo& info) {
+        json j = {{"type", info.name}};
+        for (const ParamInfo& p : info.params)
+            if (p.type == ParamType::Path) j[p.name] = exemplarPath;
+            else if (p.fallback.is_null() && !p.sample.is_null()) j[p.name] = p.sample;
+        return j;
+    };
+    json nodes = json::object();
+    json self = withParams(node);
+    for (const PortInfo& in : node.inputs) {
+        nodes["in_" + in.name] = withParams(*findGraphNode("spectral_noise"));
+        self[in.name] = "in_" + in.name;
+    }
+    nodes["node"] = self;
+    std::string output = "node";
+    if (node.output == PortType::Field) {
+        json colormap = withParams(*findGraphNode("colormap"));
+        colormap["x"] = "node";
+        colormap["y"] = "node";
+        nodes["colour"] = colormap;
+        output = "colour";
+    }
+    return {{"name", "sample-" + node.name}, {"size", 64}, {"nodes", nodes}, {"output", output}};
 }
 
 }  // namespace stochtex

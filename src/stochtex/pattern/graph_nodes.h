@@ -39,6 +39,9 @@ struct ParamInfo {
     std::string description;
     nlohmann::json fallback;  // the default; null: required (or, for a seed, derived)
     double min = 0, max = 0;  // Number and Integer
+    // For a required parameter: a typical value, used where a graph is built
+    // from the table alone (sampleNodeGraph). Null for paths (the caller's).
+    nlohmann::json sample = nullptr;
 };
 
 struct PortInfo {
@@ -67,5 +70,12 @@ const NodeInfo* findGraphNode(const std::string& name);
 // [{type, category, description, inputs: [{name, type, description}],
 //   output, params: [{name, type, description, default, min, max}]}].
 nlohmann::json graphNodesJson();
+
+// The smallest graph file around a node, from the table alone: each field
+// input fed by its own spectral_noise (sample parameters), the node with its
+// defaults and samples (an exemplar reads `exemplarPath`), and a colormap
+// reading it when it gives a field. Used by the per-node benchmarks and the
+// test that every node builds and renders.
+nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplarPath);
 
 }  // namespace stochtex
