@@ -259,6 +259,7 @@ case_graph() {
   expect_ok "render preset" "$out/p.png" -- "$bin" render --preset camouflage --size 96 -o "$out/p.png"
   cmp -s "$out/g.png" "$out/p.png" || fail "graph: data/graphs/camouflage.json differs from the camouflage preset"
   expect_ok "render derivative graph filtered" "$out/d.png" -- "$bin" render "$src/data/graphs/derivative-ridges.json" --size 64 --filter smooth --scale 4 -o "$out/d.png"
+  expect_ok "bake graph" "$out/bk/manifest.json" -- "$bin" bake "$src/data/graphs/derivative-ridges.json" -o "$out/bk"
   "$bin" nodes | grep -q "^derivative (linear; input: field → field)" || fail "nodes: derivative not listed"
   "$bin" nodes --json | grep -q '"type": "spectral_noise"' || fail "nodes --json: spectral_noise not listed"
   printf '{"nodes": {"a": {"type": "affine", "input": "b"}, "b": {"type": "affine", "input": "a"}, "c": {"type": "colormap", "x": "a", "y": "b", "colormap": {"type": "gaussian"}}}, "output": "c"}' >"$work/cycle.json"

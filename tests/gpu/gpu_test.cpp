@@ -315,6 +315,26 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     fs::remove_all(dir);
 }
 
+// A texture graph reaches the GPU as the pattern its linear nodes fold
+// into: the derivative graph renders as the CPU does, unfiltered and
+// filtered, within the tolerances of every other pattern.
+TEST(Gpu, GraphPatternMatchesTheCpu) {
+    const std::string text = R"({"name": "graph", "seed": 4, "offsets": "shared", "nodes": {
+        "h": {"type": "spectral_noise", "size": 128, "components": [{"shape": "ring", "frequency": 8, "bandwidth": 3}]},
+        "du": {"type": "derivative", "input": "h", "angle": 0}, "dv": {"type": "derivative", "input": "h", "angle": 90},
+        "s": {"type": "sum", "a": "du", "b": "h", "weight_a": 0.7, "weight_b": 0.3},
+        "c": {"type": "colormap", "x": "s", "y": "dv", "colormap": {"type": "phasor", "profile": "sine"}}},
+        "output": "c"})";
+    const Pattern p = Pattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "graph"), "graph"), "."));
+    View v;
+    v.width = v.height = 96;
+    expectParity(p, v, "graph");
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    v.scale = 4.0;
+    expectParity(p, v, "graph, smooth, scale 4", o);
+}
+
 // Paper Fig. 15: the pattern on lit objects, in every GPU filter mode. The
 // object covers the expected part of the image (the same part whatever the
 // mode: the mesh, not the filter, sets the silhouette), carries the
