@@ -184,5 +184,20 @@ TEST(TextureGraph, EveryNodeBuildsAndRendersInItsSampleGraph) {
     std::filesystem::remove(file);
 }
 
+// A chain where every node reads the previous one twice would take 2^n
+// builds if shared inputs were rebuilt; each node is built once.
+TEST(TextureGraph, SharedInputsAreBuiltOnceSoDeepDiamondsStayLinear) {
+    std::string nodes = R"("s0": {"type": "spectral_noise", "size": 16, "components": [{"shape": "lowpass", "cutoff": 2}]})";
+    for (int i = 1; i <= 200; ++i)
+        nodes += ", \"s" + std::to_string(i) + "\": {\"type\": \"sum\", \"a\": \"s" + std::to_string(i - 1) +
+                 "\", \"b\": \"s" + std::to_string(i - 1) + "\"}";
+    nodes += R"(, "c": {"type": "colormap", "x": "s200", "y": "s0", "colormap": {"type": "gaussian"}})";
+    const PatternSpec s = parse(graph(nodes));
+    const NoiseExample e = buildGraphField(*s.graph, "s200", s.seed, "g");  // 0.5·a + 0.5·b of equal inputs: s0 itself
+    const NoiseExample base = buildGraphField(*s.graph, "s0", s.seed, "g");
+    for (size_t i = 0; i < e.values().data().size(); ++i)
+        ASSERT_NEAR(e.values().data()[i], base.values().data()[i], 1e-5) << i;
+}
+
 }  // namespace
 }  // namespace stochtex

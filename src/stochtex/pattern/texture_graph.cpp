@@ -169,13 +169,36 @@ uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id) {
     return deriveSeed(patternSeed, h);
 }
 
-NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
-                             const std::string& context) {
+namespace {
+
+// Examples built so far, by node id, and their texels in all.
+struct FieldCache {
+    std::map<std::string, NoiseExample> built;
+    long long texels = 0;
+};
+
+NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
+                        const std::string& context, FieldCache& cache);
+
+NoiseExample buildFieldOnce(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
+                            const std::string& context, FieldCache& cache) {
+    if (const auto it = cache.built.find(id); it != cache.built.end()) return it->second;
+    NoiseExample e = buildField(graph, id, patternSeed, context, cache);
+    cache.texels += (long long)e.size() * e.size();
+    if (cache.texels > kMaxGraphExampleTexels)
+        throw InputError(context + ": the graph's examples hold more than " + std::to_string(kMaxGraphExampleTexels) +
+                         " texels in all (at node \"" + id + "\"); use smaller or fewer examples");
+    cache.built.emplace(id, e);
+    return e;
+}
+
+NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
+                        const std::string& context, FieldCache& cache) {
     const GraphNode& g = graph.node(id);
     const std::string where = context + ": node \"" + id + "\"";
     // A linear node's input: its example values, which must be the field's own.
     const auto linearInput = [&](const std::string& port) {
-        NoiseExample e = buildGraphField(graph, g.inputs.at(port), patternSeed, context);
+        NoiseExample e = buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache);
         if (e.gaussianized())
             throw InputError(where + " (" + g.info->name + "): its input \"" + g.inputs.at(port) +
                              "\" is a Gaussianized exemplar, whose field is not linear in its example; give it "
@@ -229,10 +252,19 @@ NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, u
     throw std::logic_error("buildGraphField: node " + id + " is not a field");
 }
 
+}  // namespace
+
+NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
+                             const std::string& context) {
+    FieldCache cache;
+    return buildFieldOnce(graph, id, patternSeed, context, cache);
+}
+
 GraphFields buildGraphFields(const TextureGraph& graph, uint32_t patternSeed, const std::string& context) {
     const GraphNode& out = graph.node(graph.output);
-    GraphFields f{{buildGraphField(graph, out.inputs.at("x"), patternSeed, context),
-                   buildGraphField(graph, out.inputs.at("y"), patternSeed, context)},
+    FieldCache cache;
+    GraphFields f{{buildFieldOnce(graph, out.inputs.at("x"), patternSeed, context, cache),
+                   buildFieldOnce(graph, out.inputs.at("y"), patternSeed, context, cache)},
                   out.colormap};
     if (f.examples[0].size() != f.examples[1].size())
         throw InputError(context + ": node \"" + graph.output + "\" (colormap): x's example is " +

@@ -29,6 +29,10 @@
 namespace stochtex {
 
 constexpr int kMaxGraphNodes = 256;
+// The examples a graph builds hold at most this many texels in all (1 GiB of
+// floats): each node's example is built once and kept while the graph is
+// built, and a node's example is up to 4096².
+constexpr long long kMaxGraphExampleTexels = 1ll << 28;
 
 struct GraphNode {
     std::string id;
@@ -63,8 +67,9 @@ struct GraphFields {
 };
 GraphFields buildGraphFields(const TextureGraph& graph, uint32_t patternSeed, const std::string& context);
 
-// The example of any field node, linear nodes folded in (1 channel, W×W),
-// and whether it is a Gaussianized exemplar (then its values are T(E)).
+// The example of any field node, linear nodes folded in (1 channel, W×W;
+// a Gaussianized exemplar's values are T(E)). Each node is built once, so a
+// node feeding many is not rebuilt for each (time linear in the nodes).
 NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
                              const std::string& context);
 
