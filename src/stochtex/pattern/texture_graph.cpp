@@ -37,8 +37,8 @@ GraphNode parseNode(const JsonReader& n, const std::string& id, const std::files
     g.info = findGraphNode(type);
     if (!g.info) n.at("type").fail("unknown node type \"" + type + "\"; known: " + knownTypes());
     const NodeInfo& info = *g.info;
-    for (const auto& [key, value] : n.value().items()) {
-        (void)value;
+    for (auto item = n.value().begin(); item != n.value().end(); ++item) {
+        const std::string key = item.key();  // a plain variable: lambdas below capture it (clang 14)
         const bool known = key == "type" ||
                            std::any_of(info.inputs.begin(), info.inputs.end(), [&](const PortInfo& p) { return p.name == key; }) ||
                            std::any_of(info.params.begin(), info.params.end(), [&](const ParamInfo& p) { return p.name == key; });

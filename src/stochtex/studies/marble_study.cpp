@@ -100,17 +100,12 @@ double marbleAnisotropy(const MarbleParams& p, double x, double y) {
     return small > 0 ? std::sqrt((0.5 * (t + root)) / small) : std::numeric_limits<double>::infinity();
 }
 
-MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& progress, const MarbleFrameSink& onFrame) {
-    validateMarbleStudy(o);
-    MarbleStudyResult r;
-    const SourceRegion frame = SourceRegion::centred(o.size, o.size);
-    const Progress stretchPart = progressPart(progress, 0.0, 0.05, "stretching");
-    const Progress correlationPart = progressPart(progress, 0.05, 0.55, "correlation");
-    const Progress spectrumPart = progressPart(progress, 0.55, 0.7, "spectra");
-    const Progress slidingPart = progressPart(progress, 0.7, 1.0, "sliding");
+namespace {
 
-    // --- stretching: the texture and its steps, per scaling ---
-    if (stretchPart) stretchPart(0.0, "");
+// Stretching: the texture and its steps per scaling, and the anisotropy of
+// the scaled noise coordinates with the reference point.
+void stretchingPart(const MarbleStudyOptions& o, MarbleStudyResult& r) {
+    const SourceRegion frame = SourceRegion::centred(o.size, o.size);
     std::vector<std::vector<Image>> rows;
     std::vector<std::vector<std::string>> captions;
     const MarbleLayer shown[3] = {MarbleLayer::Marble, MarbleLayer::ScaledNoise, MarbleLayer::ScalingOnly};
@@ -158,8 +153,10 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& 
                              TableCell::value(px, "%.1f").text + ", σ₁/σ₂ = " +
                              TableCell::value(r.pointAnisotropy, "%.2f").text + ").",
                          LineChart{curves, so}});
+}
 
-    // --- correlation around the point, per layer and scaling ---
+// Correlation over seeds around the reference point, per layer and scaling.
+void correlationPart(const MarbleStudyOptions& o, const Progress& progress, MarbleStudyResult& r) {
     r.correlation.title = "Correlation around the reference point";
     r.correlation.note = "over " + std::to_string(o.instances) + " seeds; the correlated region is Corr ≥ 0.5 connected "
                          "to the point; the anti-correlation is the lowest 5×5 mean of the map. Each value has a "
@@ -189,10 +186,10 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& 
     for (MarbleScaling s : o.scalings) maps.push_back({MarbleLayer::Marble, s});
     for (MarbleScaling s : o.scalings) maps.push_back({MarbleLayer::ScalingOnly, s});
     maps.push_back({MarbleLayer::BaseNoise, MarbleScaling::Continuous});
-    rows.clear();
-    captions.clear();
+    std::vector<std::vector<Image>> rows;
+    std::vector<std::vector<std::string>> captions;
     for (size_t k = 0; k < maps.size(); ++k) {
-        if (correlationPart) correlationPart(double(k) / maps.size(), layerName(maps[k].layer));
+        if (progress) progress(double(k) / maps.size(), layerName(maps[k].layer));
         const MarbleSource source(panel(o, maps[k].scaling, maps[k].layer));
         const Image c = measureCorrelation(source, cm).measuredPoint;
         const CorrelationShape shape = correlationShape(c, half, half);
@@ -215,8 +212,10 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& 
                              ") at the window's centre (Figures 2.19–2.21): the marble, the scaling step alone (white "
                              "cell noise through the same scaling: no lobes of its own, so what is elongated is the "
                              "artifact) and the base gradient noise, whose negative lobes the marble inherits."});
+}
 
-    // --- spectra of the marble and of the scaled noise ---
+// Spectra of the marble and of the scaled noise, per scaling.
+void spectraPart(const MarbleStudyOptions& o, const Progress& progress, MarbleStudyResult& r) {
     r.spectra.title = "Power spectra";
     r.spectra.note = "mean periodogram of " + std::to_string(o.spectrumInstances) + " seeds, Hann window";
     r.spectra.columns = {{"layer", "layer", ""},
@@ -225,19 +224,19 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& 
                          {"orientation", "major axis", "°"},
                          {"angular_max_min", "angular max/min", ""},
                          {"mean_radius", "mean |f|", "cycles/pixel"}};
-    rows.clear();
-    captions.clear();
-    SpectrumStudyOptions so2;
-    so2.region = frame;
-    so2.instances = o.spectrumInstances;
+    std::vector<std::vector<Image>> rows;
+    std::vector<std::vector<std::string>> captions;
+    SpectrumStudyOptions so;
+    so.region = SourceRegion::centred(o.size, o.size);
+    so.instances = o.spectrumInstances;
     int done = 0;
     for (MarbleScaling s : o.scalings) {
         rows.emplace_back();
         captions.emplace_back();
         for (MarbleLayer layer : {MarbleLayer::Marble, MarbleLayer::ScaledNoise}) {
             const SpectrumStudyResult sp = spectrumStudy(
-                MarbleSource(panel(o, s, layer)), so2,
-                progressPart(spectrumPart, double(done) / (2 * o.scalings.size()),
+                MarbleSource(panel(o, s, layer)), so,
+                progressPart(progress, double(done) / (2 * o.scalings.size()),
                              double(done + 1) / (2 * o.scalings.size()), layerName(layer)));
             ++done;
             const SpectrumGeometry& g = sp.geometry;
@@ -253,12 +252,16 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& 
                          "Power spectra (log scale over 4 decades, zero frequency at the centre; Figure 2.22). The "
                          "bands put two peaks on the axis of a; stretching adds a direction of its own to the "
                          "scaled noise, whose spectrum is round without it."});
+}
 
-    // --- sliding: l grows with t ---
+// Sliding: l grows with t; the flow of the marble (videos, figures) and of the scaled noise.
+void slidingPart(const MarbleStudyOptions& o, const Progress& progress, const MarbleFrameSink& onFrame,
+                 MarbleStudyResult& r) {
     r.sliding.title = "Sliding: optical flow while l grows with time";
     r.sliding.note = "l = m + r t, r = " + formatValue(o.slideRate) + " per time unit, Δt = " + formatValue(o.timeStep) +
-                     ", " + enumName(kFlowMethodNames, o.flowMethod) + " flow averaged over the frame pairs; a texture scaled about the origin moves outward "
-                     "at the rate 2^(rΔt) − 1 (the scaled noise); the marble's bands do not move";
+                     ", " + enumName(kFlowMethodNames, o.flowMethod) +
+                     " flow averaged over the frame pairs; a texture scaled about the origin moves outward at the rate "
+                     "2^(rΔt) − 1 (the scaled noise); the marble's bands do not move";
     r.sliding.columns = {{"layer", "layer", ""},
                          {"scaling", "scaling", ""},
                          {"mean_magnitude", "mean |flow|", "px"},
@@ -268,7 +271,7 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& 
                          {"scaling_rate", "scaling's rate", "per frame"}};
     const double scalingRate = std::exp2(o.slideRate * o.timeStep) - 1;
     FlowStudyOptions fo;
-    fo.region = frame;
+    fo.region = SourceRegion::centred(o.size, o.size);
     fo.frames = o.frames;
     fo.timeStep = o.timeStep;
     fo.step = o.flowStep;
@@ -285,7 +288,7 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& 
         if (marble) r.videos.push_back(video);
         const FlowStudyResult f = flowStudy(
             MarbleSource(slidingPanel(o, s, layer)), fo,
-            progressPart(slidingPart, double(k) / runs, double(k + 1) / runs, layerName(layer) + ", " + scalingName(s)),
+            progressPart(progress, double(k) / runs, double(k + 1) / runs, layerName(layer) + ", " + scalingName(s)),
             [&](int i, const Image& img) {
                 if (marble && onFrame) onFrame(video, i, img);
             });
@@ -314,6 +317,18 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& 
                              " per frame) and the marble, whose bands stay, more slowly; with the blended scales "
                              "nothing moves: the two fields cross-fade in place.",
                          LineChart{expansion, eo}});
+}
+
+}  // namespace
+
+MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& progress, const MarbleFrameSink& onFrame) {
+    validateMarbleStudy(o);
+    MarbleStudyResult r;
+    if (progress) progress(0.0, "stretching");
+    stretchingPart(o, r);
+    correlationPart(o, progressPart(progress, 0.05, 0.55, "correlation"), r);
+    spectraPart(o, progressPart(progress, 0.55, 0.7, "spectra"), r);
+    slidingPart(o, progressPart(progress, 0.7, 1.0, "sliding"), onFrame, r);
     return r;
 }
 
