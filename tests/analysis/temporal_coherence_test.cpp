@@ -53,6 +53,9 @@ TEST(TemporalCoherence, AStillSequenceHoldsStill) {
     // flat spectrum is 2/3 · 0.5 = 1/3 (the Hann window smears it a little).
     EXPECT_NEAR(c.frames[0].meanFrequency, 1.0 / 3.0, 0.03);
     EXPECT_DOUBLE_EQ(c.frames[4].time, 2.0);
+    // The sequence's means are the frame's own (1e-15: five divided terms summed).
+    EXPECT_NEAR(c.meanContrast, c.frames[0].contrast, 1e-15);
+    EXPECT_NEAR(c.meanFrequency, c.frames[0].meanFrequency, 1e-15);
 }
 
 // Fresh white noise every frame keeps its look (only the realisation
@@ -72,6 +75,14 @@ TEST(TemporalCoherence, LosingHighFrequenciesIsALossOfCoherence) {
     EXPECT_GT(b.contrastChange, 10 * a.contrastChange);
     EXPECT_GT(b.spectrumChange, 3 * a.spectrumChange);
     EXPECT_LT(std::abs(b.meanChange), 0.02);  // the blur keeps the mean
+    // The means over the sequence, which the relative changes divide by:
+    // halfway between the sharp and the blurred frames' (1e-12: float sums).
+    double contrast = 0, frequency = 0;
+    for (const FrameAppearance& f : b.frames) contrast += f.contrast, frequency += f.meanFrequency;
+    EXPECT_NEAR(b.meanContrast, contrast / 8, 1e-12);
+    EXPECT_NEAR(b.meanFrequency, frequency / 8, 1e-12);
+    EXPECT_LT(b.meanContrast, b.frames[0].contrast);
+    EXPECT_GT(b.meanContrast, b.frames[1].contrast);
 }
 
 TEST(TemporalCoherence, ErrorsNameTheProblem) {

@@ -90,18 +90,13 @@ TemporalCoherenceResult temporalCoherenceStudy(const TextureSource& source, cons
                           {"mean_frequency", "dominant scale: mean |f|", "cycles/pixel"}};
     PlotSeries contrast{"contrast σ / mean σ", {}, {}, seriesColour(0)},
         scale{"mean |f| / its mean (dominant scale)", {}, {}, seriesColour(1)};
-    double meanContrast = 0, meanScale = 0;
-    for (const FrameAppearance& f : c.frames) {
-        meanContrast += f.contrast / double(c.frames.size());
-        meanScale += f.meanFrequency / double(c.frames.size());
-    }
     for (const FrameAppearance& f : c.frames) {
         r.perFrame.add({TableCell::value(f.time, "%g"), TableCell::value(f.mean, "%.5f"),
                         TableCell::value(f.contrast, "%.5f"), TableCell::value(f.meanFrequency, "%.5f")});
         contrast.x.push_back(f.time);
-        contrast.y.push_back(meanContrast > 0 ? f.contrast / meanContrast : 0.0);
+        contrast.y.push_back(c.meanContrast > 0 ? f.contrast / c.meanContrast : 0.0);
         scale.x.push_back(f.time);
-        scale.y.push_back(meanScale > 0 ? f.meanFrequency / meanScale : 0.0);
+        scale.y.push_back(c.meanFrequency > 0 ? f.meanFrequency / c.meanFrequency : 0.0);
     }
     LinePlotOptions po;
     po.title = "Appearance over time (1 = the sequence's mean)";
