@@ -16,7 +16,7 @@ namespace stochtex::cli {
 void registerFlow(CLI::App& app) {
     struct Args {
         FlowStudyOptions study;
-        std::vector<int> size{256};
+        WindowSizeFlag window;
         std::string dir;
         int threads = 0;
         bool video = false;
@@ -26,8 +26,7 @@ void registerFlow(CLI::App& app) {
                                            "HSV colours, arrows, outward motion: flow [flags] images|pattern|zoom|marble ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
-    const CLI::Option* size =
-        cmd->add_option("--size", args->size, "Window size N or W,H (image files: their size)")->delimiter(',')->expected(1, 2);
+    addWindowSizeFlag(*cmd, args->window, "Window size");
     const CLI::Option* frames = cmd->add_option("--frames", args->study.frames, "Frames (image files: all)")->capture_default_str();
     const CLI::Option* dt =
         cmd->add_option("--dt", args->study.timeStep, "Time between frames (image files: one file per frame)")->capture_default_str();
@@ -37,20 +36,18 @@ void registerFlow(CLI::App& app) {
     cmd->add_option("--arrow-scale", args->study.arrowScale, "Arrows drawn this many times their length")->capture_default_str();
     cmd->add_flag("--video", args->video, "Also write the frames as frames.mp4 and an animated frames.webp shown in index.html");
     addThreadsFlag(*cmd, args->threads);
-    addTextureSourceCommands(*cmd, [args, size, frames, dt](const TextureSource& source, const SourceInfo& info) {
+    addTextureSourceCommands(*cmd, [args, frames, dt](const TextureSource& source, const SourceInfo& info) {
         FlowStudyOptions o = args->study;
         o.frameTransfer = info.transfer;
+        o.region = studyRegion(args->window, info, "on image files (the flow covers each whole file)");
         if (info.images) {
-            refuseWithoutEffect(size, false, "on image files (the flow covers each whole file)");
             refuseWithoutEffect(frames, false, "on image files (every file is a frame)");
             refuseWithoutEffect(dt, false, "on image files (one file per frame)");
             if (info.frames < 2) throw InputError("images: the flow needs at least 2 image files, got 1");
-            o.region = {info.width, info.height, 0, 0};
             o.time = 0;
             o.timeStep = 1;
             o.frames = info.frames;
         } else {
-            o.region = SourceRegion::centred(args->size[0], args->size.size() > 1 ? args->size[1] : args->size[0]);
             o.time = info.time;
         }
         validateFlowStudy(o, &source);
