@@ -2,7 +2,6 @@
 // frames (thesis §2.8, Figures 2.24–2.25), with the motion about the centre.
 #include <algorithm>
 #include <cstdio>
-#include <memory>
 
 #include "common.h"
 #include "progress.h"
@@ -53,21 +52,15 @@ void registerFlow(CLI::App& app) {
         validateFlowStudy(o, &source);
         ThreadLimit limit(args->threads);
         ensureFolder(args->dir);
-        std::unique_ptr<FrameSequenceWriter> video;
-        if (args->video)
-            video = std::make_unique<FrameSequenceWriter>(args->dir + "/frames.mp4", o.region.width, o.region.height,
-                                                          std::min(30.0, 1.0 / o.timeStep), "", o.frameTransfer);
+        FrameSequenceSet video(
+            args->dir, {"frames"}, o.region.width, o.region.height,
+            {.video = args->video, .fps = std::min(30.0, 1.0 / o.timeStep), .transfer = o.frameTransfer});
         ProgressLine progress("flow");
-        const FlowStudyResult r = flowStudy(source, o, progress.callback(), [&](int, const Image& frame) {
-            if (video) video->write(frame);
-        });
+        const FlowStudyResult r =
+            flowStudy(source, o, progress.callback(), [&](int k, const Image& frame) { video.write(0, k, frame); });
         progress.finish();
-        std::string preview;
-        if (video) {
-            video->finish();
-            preview = "<figure><img src='frames.webp'><figcaption>The frames analysed (animated; full resolution "
-                      "in <a href='frames.mp4'>frames.mp4</a>).</figcaption></figure>";
-        }
+        video.finish();
+        const std::string preview = args->video ? htmlAnimatedPreview("", "frames", "The frames analysed") : "";
         writeFigures(args->dir, r.figures);
         writeText(args->dir, "flow.csv", r.summary.csv());
         writeText(args->dir, "index.html",
