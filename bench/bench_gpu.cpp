@@ -3,8 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <chrono>
 
+#include "alternate_timing.h"
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/pattern/presets.h"
@@ -22,11 +22,10 @@ std::unique_ptr<GlContext> contextOrSkip(benchmark::State& state) {
     }
 }
 
-template <class F>
-double seconds(F&& f) {
-    const auto a = std::chrono::steady_clock::now();
-    f();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+// Frames per `secondsPerFrame` measurement so that one measurement takes
+// about 0.2 s (1 on llvmpipe, hundreds on a GPU).
+int framesPerMeasurement(GpuPattern& g, const Camera& c) {
+    return std::clamp(int(0.2 / g.secondsPerFrame(c, 1)), 1, 2000);
 }
 
 // Unfiltered camouflage, 1024², GPU and CPU alternately in one run; each GPU
@@ -38,15 +37,11 @@ void BM_GpuVsCpuUnfiltered(benchmark::State& state) {
     GpuPattern gpu(p, *ctx);
     View v;
     v.width = v.height = int(state.range(0));
-    double tg = 0, tc = 0;
-    for (auto _ : state) {
-        tg += seconds([&] { benchmark::DoNotOptimize(gpu.render(v).data().data()); });
-        tc += seconds([&] { benchmark::DoNotOptimize(p.render(v).data().data()); });
-    }
-    const double texels = double(v.width) * v.height * double(state.iterations());
-    state.counters["gpu_Mtexel/s"] = texels / tg * 1e-6;
-    state.counters["cpu_Mtexel/s"] = texels / tc * 1e-6;
-    state.counters["gpu/cpu"] = tc / tg;
+    const bench::AlternateTimes t = bench::timeAlternately(
+        state, [&] { benchmark::DoNotOptimize(gpu.render(v).data().data()); },
+        [&] { benchmark::DoNotOptimize(p.render(v).data().data()); });
+    bench::reportAlternateRates(state, double(v.width) * v.height, bench::TexelRate::Mega, {"gpu", t.first},
+                                {"cpu", t.second}, "gpu/cpu");
     state.SetLabel(ctx->describe());
 }
 BENCHMARK(BM_GpuVsCpuUnfiltered)->ArgName("size")->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
@@ -63,15 +58,11 @@ void BM_GpuFilteredVsUnfiltered(benchmark::State& state) {
     View v;
     v.width = v.height = 1024;
     v.scale = double(state.range(0));
-    double tf = 0, tu = 0;
-    for (auto _ : state) {
-        tf += seconds([&] { benchmark::DoNotOptimize(filtered.render(v).data().data()); });
-        tu += seconds([&] { benchmark::DoNotOptimize(unfiltered.render(v).data().data()); });
-    }
-    const double texels = double(v.width) * v.height * double(state.iterations());
-    state.counters["filtered_Mtexel/s"] = texels / tf * 1e-6;
-    state.counters["unfiltered_Mtexel/s"] = texels / tu * 1e-6;
-    state.counters["ratio"] = tu / tf;
+    const bench::AlternateTimes t = bench::timeAlternately(
+        state, [&] { benchmark::DoNotOptimize(filtered.render(v).data().data()); },
+        [&] { benchmark::DoNotOptimize(unfiltered.render(v).data().data()); });
+    bench::reportAlternateRates(state, double(v.width) * v.height, bench::TexelRate::Mega, {"filtered", t.first},
+                                {"unfiltered", t.second});
     state.SetLabel(ctx->describe());
 }
 BENCHMARK(BM_GpuFilteredVsUnfiltered)->ArgName("scale")->Arg(1)->Arg(128)->Unit(benchmark::kMillisecond);
@@ -81,8 +72,7 @@ BENCHMARK(BM_GpuFilteredVsUnfiltered)->ArgName("scale")->Arg(1)->Arg(128)->Unit(
 // pixel on the ground, footprints from 1 texel to strongly anisotropic);
 // mode 1 = paper, 2 = smooth, 3 = paper ×8 anisotropic, each beside the
 // unfiltered shader in the same run; pipeline 0 = fragment shader, 1 =
-// compute kernel (OpenGL 4.3). Frames per measurement are chosen so one
-// measurement takes ~0.2 s (1 on llvmpipe, hundreds on a GPU).
+// compute kernel (OpenGL 4.3); `framesPerMeasurement` frames a measurement.
 void BM_GpuShaderThroughput(benchmark::State& state) {
     const Pattern p = Pattern::build(loadPreset("camouflage"));
     const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
@@ -100,17 +90,11 @@ void BM_GpuShaderThroughput(benchmark::State& state) {
     c.kind = Camera::Kind::Plane;
     c.tiltDeg = 55;
     c.view.width = c.view.height = int(state.range(1));
-    auto frames = [&](GpuPattern& g) { return std::clamp(int(0.2 / g.secondsPerFrame(c, 1)), 1, 2000); };
-    const int ff = frames(filtered), fu = frames(unfiltered);
-    double tf = 0, tu = 0;
-    for (auto _ : state) {
-        tf += filtered.secondsPerFrame(c, ff);
-        tu += unfiltered.secondsPerFrame(c, fu);
-    }
-    const double texels = double(c.view.width) * c.view.height * double(state.iterations());
-    state.counters["filtered_Gtexel/s"] = texels / tf * 1e-9;
-    state.counters["unfiltered_Gtexel/s"] = texels / tu * 1e-9;
-    state.counters["ratio"] = tu / tf;
+    const int ff = framesPerMeasurement(filtered, c), fu = framesPerMeasurement(unfiltered, c);
+    const bench::AlternateTimes t = bench::timeAlternately(
+        state, [&] { return filtered.secondsPerFrame(c, ff); }, [&] { return unfiltered.secondsPerFrame(c, fu); });
+    bench::reportAlternateRates(state, double(c.view.width) * c.view.height, bench::TexelRate::Giga,
+                                {"filtered", t.first}, {"unfiltered", t.second});
     state.SetLabel(ctx->describe());
 }
 BENCHMARK(BM_GpuShaderThroughput)
@@ -137,17 +121,11 @@ void BM_GpuLeanThroughput(benchmark::State& state) {
     c.tiltDeg = 70;
     c.view.scale = 0.5;
     c.view.width = c.view.height = int(state.range(0));
-    auto frames = [&](GpuPattern& g) { return std::clamp(int(0.2 / g.secondsPerFrame(c, 1)), 1, 2000); };
-    const int ff = frames(filtered), fu = frames(unfiltered);
-    double tf = 0, tu = 0;
-    for (auto _ : state) {
-        tf += filtered.secondsPerFrame(c, ff);
-        tu += unfiltered.secondsPerFrame(c, fu);
-    }
-    const double texels = double(c.view.width) * c.view.height * double(state.iterations());
-    state.counters["filtered_Gtexel/s"] = texels / tf * 1e-9;
-    state.counters["unfiltered_Gtexel/s"] = texels / tu * 1e-9;
-    state.counters["ratio"] = tu / tf;
+    const int ff = framesPerMeasurement(filtered, c), fu = framesPerMeasurement(unfiltered, c);
+    const bench::AlternateTimes t = bench::timeAlternately(
+        state, [&] { return filtered.secondsPerFrame(c, ff); }, [&] { return unfiltered.secondsPerFrame(c, fu); });
+    bench::reportAlternateRates(state, double(c.view.width) * c.view.height, bench::TexelRate::Giga,
+                                {"filtered", t.first}, {"unfiltered", t.second});
     state.SetLabel(ctx->describe());
 }
 BENCHMARK(BM_GpuLeanThroughput)->ArgName("size")->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond);

@@ -2,10 +2,7 @@
 // counters report Mtexel/s (benchmark's rate counter, in texels/s).
 #include <benchmark/benchmark.h>
 
-#include <functional>
-
-#include <chrono>
-
+#include "alternate_timing.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/noise/spectrum.h"
@@ -62,12 +59,6 @@ void BM_BuildPattern(benchmark::State& state) {
 }
 BENCHMARK(BM_BuildPattern)->Unit(benchmark::kMillisecond);
 
-double seconds(const std::function<void()>& f) {
-    const auto t0 = std::chrono::steady_clock::now();
-    f();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // Filtered vs unfiltered on the same 512² zoom view, timed alternately in
 // one run so machine drift cancels in the ratio. Args: scale (footprint
 // side in texels), filter mode (1 paper, 2 smooth), anisotropy K.
@@ -80,15 +71,11 @@ void BM_FilteredVsUnfiltered(benchmark::State& state) {
     Camera cam;
     cam.view.width = cam.view.height = 512;
     cam.view.scale = double(state.range(0));
-    double tf = 0, tu = 0;
-    for (auto _ : state) {
-        tu += seconds([&] { benchmark::DoNotOptimize(p.render(cam.view).data().data()); });
-        tf += seconds([&] { benchmark::DoNotOptimize(f.render(cam).data().data()); });
-    }
-    const double texels = 512.0 * 512.0 * double(state.iterations());
-    state.counters["filtered_Mtexel/s"] = texels / tf * 1e-6;
-    state.counters["unfiltered_Mtexel/s"] = texels / tu * 1e-6;
-    state.counters["ratio"] = tu / tf;
+    const bench::AlternateTimes t = bench::timeAlternately(
+        state, [&] { benchmark::DoNotOptimize(p.render(cam.view).data().data()); },
+        [&] { benchmark::DoNotOptimize(f.render(cam).data().data()); });
+    bench::reportAlternateRates(state, 512.0 * 512.0, bench::TexelRate::Mega, {"filtered", t.second},
+                                {"unfiltered", t.first});
 }
 BENCHMARK(BM_FilteredVsUnfiltered)
     ->ArgNames({"scale", "mode", "K"})
@@ -137,15 +124,11 @@ void BM_LeanFilteredVsUnfiltered(benchmark::State& state) {
     cam.tiltDeg = 70;
     cam.view.width = cam.view.height = 512;
     cam.view.scale = 0.5;
-    double tf = 0, tu = 0;
-    for (auto _ : state) {
-        tu += seconds([&] { benchmark::DoNotOptimize(unfiltered.render(cam).data().data()); });
-        tf += seconds([&] { benchmark::DoNotOptimize(filtered.render(cam).data().data()); });
-    }
-    const double texels = 512.0 * 512.0 * double(state.iterations());
-    state.counters["filtered_Mtexel/s"] = texels / tf * 1e-6;
-    state.counters["unfiltered_Mtexel/s"] = texels / tu * 1e-6;
-    state.counters["ratio"] = tu / tf;
+    const bench::AlternateTimes t = bench::timeAlternately(
+        state, [&] { benchmark::DoNotOptimize(unfiltered.render(cam).data().data()); },
+        [&] { benchmark::DoNotOptimize(filtered.render(cam).data().data()); });
+    bench::reportAlternateRates(state, 512.0 * 512.0, bench::TexelRate::Mega, {"filtered", t.second},
+                                {"unfiltered", t.first});
 }
 BENCHMARK(BM_LeanFilteredVsUnfiltered)
     ->ArgNames({"K", "cov"})

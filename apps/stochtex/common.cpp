@@ -38,11 +38,17 @@ PatternSpec loadPatternSource(const PatternSource& src) {
     return spec;
 }
 
+namespace {
+
+bool prefiltersColormap(const FilterOptions& options) {
+    return options.source != StatisticsSource::Point && options.response.kind == ResponseKind::PrefilteredColormap;
+}
+
+}  // namespace
+
 PatternSpec loadPatternSource(const PatternSource& src, const FilterOptions& options) {
     PatternSpec spec = loadPatternSource(src);
-    const bool prefilters =
-        options.source != StatisticsSource::Point && options.response.kind == ResponseKind::PrefilteredColormap;
-    if (!prefilters || spec.colormap.source == ColormapSpec::Source::Image) return spec;
+    if (!prefiltersColormap(options) || spec.colormap.source == ColormapSpec::Source::Image) return spec;
     try {
         validatePrefilteredResolution(spec.colormap.resolution, spec.colormap.resolution);
     } catch (const InputError& e) {
@@ -50,6 +56,12 @@ PatternSpec loadPatternSource(const PatternSource& src, const FilterOptions& opt
                          ": /colormap/resolution: " + e.what() + " (--filter " + filterName(options) + ")");
     }
     return spec;
+}
+
+PatternSpec loadPatternSource(const PatternSource& src, const std::vector<FilterOptions>& filters) {
+    for (const FilterOptions& f : filters)
+        if (prefiltersColormap(f)) return loadPatternSource(src, f);
+    return loadPatternSource(src);
 }
 
 void addViewFlags(CLI::App& cmd, ViewFlags& flags) {
@@ -206,6 +218,17 @@ void refuseUnusedFilterFlags(const CLI::App& cmd, const FilterOptions& options) 
                         filter + " (only paper and smooth read the pyramids)");
     refuseWithoutEffect(cmd.get_option_no_throw("--reference-samples"), bruteForce,
                         filter + " (only exact and reference sample the footprint)");
+}
+
+void refuseUnusedFilterFlags(const CLI::App& cmd, const std::vector<FilterOptions>& filters) {
+    const auto any = [&](auto uses) { return std::any_of(filters.begin(), filters.end(), uses); };
+    refuseWithoutEffect(cmd.get_option_no_throw("--aniso"),
+                        any([](const FilterOptions& f) { return f.source == StatisticsSource::Estimators; }),
+                        "without paper or smooth in --filters (only their estimators take anisotropic probes)");
+    refuseWithoutEffect(cmd.get_option_no_throw("--reference-samples"), any([](const FilterOptions& f) {
+                            return f.source == StatisticsSource::Exact || f.source == StatisticsSource::Reference;
+                        }),
+                        "without exact or reference in --filters (only they sample the footprint)");
 }
 
 void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov) {

@@ -34,6 +34,9 @@ PatternSpec loadPatternSource(const PatternSource& src);
 // phasor or painted one: its resolution is known; an image's is checked when
 // it is read).
 PatternSpec loadPatternSource(const PatternSource& src, const FilterOptions& options);
+// The same for a command that renders with several filters (stability's
+// --filters): checked as the first of them that prefilters the colormap.
+PatternSpec loadPatternSource(const PatternSource& src, const std::vector<FilterOptions>& filters);
 
 struct ViewFlags {
     std::vector<int> size;          // N or W,H
@@ -157,6 +160,9 @@ CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso);
 // exact or reference; each refused (refuseWithoutEffect) when given for a
 // filter that ignores it. Flags a command does not have are skipped.
 void refuseUnusedFilterFlags(const CLI::App& cmd, const FilterOptions& options);
+// The same for a list of filters (--filters): --aniso refused unless one of
+// them is paper or smooth, --reference-samples unless one is exact or reference.
+void refuseUnusedFilterFlags(const CLI::App& cmd, const std::vector<FilterOptions>& filters);
 
 // --view zoom|plane, --tilt and (withFov) --fov: the camera's defaults
 // (pattern/camera.h) are the flags'.

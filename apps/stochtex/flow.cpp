@@ -2,7 +2,6 @@
 // frames (thesis §2.8, Figures 2.24–2.25), with the motion about the centre.
 #include <algorithm>
 #include <cstdio>
-#include <memory>
 
 #include "common.h"
 #include "progress.h"
@@ -16,7 +15,7 @@ namespace stochtex::cli {
 void registerFlow(CLI::App& app) {
     struct Args {
         FlowStudyOptions study;
-        std::vector<int> size{256};
+        WindowSizeFlag window;
         std::string dir;
         int threads = 0;
         bool video = false;
@@ -26,8 +25,7 @@ void registerFlow(CLI::App& app) {
                                            "HSV colours, arrows, outward motion: flow [flags] images|pattern|zoom|marble ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
-    const CLI::Option* size =
-        cmd->add_option("--size", args->size, "Window size N or W,H (image files: their size)")->delimiter(',')->expected(1, 2);
+    addWindowSizeFlag(*cmd, args->window, "Window size");
     const CLI::Option* frames = cmd->add_option("--frames", args->study.frames, "Frames (image files: all)")->capture_default_str();
     const CLI::Option* dt =
         cmd->add_option("--dt", args->study.timeStep, "Time between frames (image files: one file per frame)")->capture_default_str();
@@ -37,40 +35,32 @@ void registerFlow(CLI::App& app) {
     cmd->add_option("--arrow-scale", args->study.arrowScale, "Arrows drawn this many times their length")->capture_default_str();
     cmd->add_flag("--video", args->video, "Also write the frames as frames.mp4 and an animated frames.webp shown in index.html");
     addThreadsFlag(*cmd, args->threads);
-    addTextureSourceCommands(*cmd, [args, size, frames, dt](const TextureSource& source, const SourceInfo& info) {
+    addTextureSourceCommands(*cmd, [args, frames, dt](const TextureSource& source, const SourceInfo& info) {
         FlowStudyOptions o = args->study;
         o.frameTransfer = info.transfer;
+        o.region = studyRegion(args->window, info, "on image files (the flow covers each whole file)");
         if (info.images) {
-            refuseWithoutEffect(size, false, "on image files (the flow covers each whole file)");
             refuseWithoutEffect(frames, false, "on image files (every file is a frame)");
             refuseWithoutEffect(dt, false, "on image files (one file per frame)");
             if (info.frames < 2) throw InputError("images: the flow needs at least 2 image files, got 1");
-            o.region = {info.width, info.height, 0, 0};
             o.time = 0;
             o.timeStep = 1;
             o.frames = info.frames;
         } else {
-            o.region = SourceRegion::centred(args->size[0], args->size.size() > 1 ? args->size[1] : args->size[0]);
             o.time = info.time;
         }
         validateFlowStudy(o, &source);
         ThreadLimit limit(args->threads);
         ensureFolder(args->dir);
-        std::unique_ptr<FrameSequenceWriter> video;
-        if (args->video)
-            video = std::make_unique<FrameSequenceWriter>(args->dir + "/frames.mp4", o.region.width, o.region.height,
-                                                          std::min(30.0, 1.0 / o.timeStep), "", o.frameTransfer);
+        FrameSequenceSet video(
+            args->dir, {"frames"}, o.region.width, o.region.height,
+            {.video = args->video, .fps = std::min(30.0, 1.0 / o.timeStep), .transfer = o.frameTransfer});
         ProgressLine progress("flow");
-        const FlowStudyResult r = flowStudy(source, o, progress.callback(), [&](int, const Image& frame) {
-            if (video) video->write(frame);
-        });
+        const FlowStudyResult r =
+            flowStudy(source, o, progress.callback(), [&](int k, const Image& frame) { video.write(0, k, frame); });
         progress.finish();
-        std::string preview;
-        if (video) {
-            video->finish();
-            preview = "<figure><img src='frames.webp'><figcaption>The frames analysed (animated; full resolution "
-                      "in <a href='frames.mp4'>frames.mp4</a>).</figcaption></figure>";
-        }
+        video.finish();
+        const std::string preview = args->video ? htmlAnimatedPreview("", "frames", "The frames analysed") : "";
         writeFigures(args->dir, r.figures);
         writeText(args->dir, "flow.csv", r.summary.csv());
         writeText(args->dir, "index.html",

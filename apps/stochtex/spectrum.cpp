@@ -13,7 +13,7 @@ namespace stochtex::cli {
 void registerSpectrum(CLI::App& app) {
     struct Args {
         SpectrumStudyOptions study;
-        std::vector<int> size{256};
+        WindowSizeFlag window;
         std::string dir;
         int threads = 0;
     };
@@ -23,7 +23,7 @@ void registerSpectrum(CLI::App& app) {
                                                "spectrum [flags] images|pattern|zoom|marble ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
-    const CLI::Option* size = cmd->add_option("--size", args->size, "Window size N or W,H (image files: their size)")->delimiter(',')->expected(1, 2);
+    addWindowSizeFlag(*cmd, args->window, "Window size");
     const CLI::Option* instances = cmd->add_option("--instances", args->study.instances, "Instances averaged (patterns: moved windows; zoom: "
                                                          "white-noise lattices)")
         ->capture_default_str();
@@ -31,18 +31,16 @@ void registerSpectrum(CLI::App& app) {
                 "Taper before the DFT: hann (frames) | none (periodic images)");
     cmd->add_option("--radial-bins", args->study.radialBins, "Bins of the radial profile")->capture_default_str();
     addThreadsFlag(*cmd, args->threads);
-    addTextureSourceCommands(*cmd, [args, size, instances](const TextureSource& source, const SourceInfo& info) {
+    addTextureSourceCommands(*cmd, [args, instances](const TextureSource& source, const SourceInfo& info) {
         SpectrumStudyOptions o = args->study;
         o.frameTransfer = info.transfer;
+        o.region = studyRegion(args->window, info, "on image files (the spectrum covers each whole file)");
         if (info.images) {
-            refuseWithoutEffect(size, false, "on image files (the spectrum covers each whole file)");
             refuseWithoutEffect(instances, false, "on image files (every file is averaged)");
-            o.region = {info.width, info.height, 0, 0};
             o.times.clear();
             for (int k = 0; k < info.frames; ++k) o.times.push_back(k);
             o.instances = 1;
         } else {
-            o.region = SourceRegion::centred(args->size[0], args->size.size() > 1 ? args->size[1] : args->size[0]);
             o.times = {info.time};
         }
         validateSpectrumStudy(o, &source);

@@ -1,17 +1,13 @@
 // stochtex stability: flicker of a zoom-out sequence, per filter mode, as the
 // change of the frames and as the change of their error against the ground
 // truth S̄ (studies/stability_study.h).
-#include <algorithm>
 #include <cstdio>
-#include <filesystem>
-#include <memory>
 #include <string>
 #include <vector>
 
 #include "common.h"
 #include "progress.h"
 #include "stochtex/core/parallel.h"
-#include "stochtex/image/image_io.h"
 #include "stochtex/report/frame_sequence.h"
 #include "stochtex/studies/stability_study.h"
 
@@ -56,46 +52,22 @@ void registerStability(CLI::App& app) {
         StabilityStudyOptions study = args->study;
         for (const std::string& name : args->filters) study.filters.emplace_back(args->options).use(parseFilter(name));
         validateStabilityStudy(study);
-        const auto anyFilter = [&](auto uses) { return std::any_of(study.filters.begin(), study.filters.end(), uses); };
-        refuseWithoutEffect(cmd->get_option_no_throw("--aniso"),
-                            anyFilter([](const FilterOptions& f) { return f.source == StatisticsSource::Estimators; }),
-                            "without paper or smooth in --filters (only their estimators take anisotropic probes)");
-        refuseWithoutEffect(cmd->get_option_no_throw("--reference-samples"), anyFilter([](const FilterOptions& f) {
-                                return f.source == StatisticsSource::Exact || f.source == StatisticsSource::Reference;
-                            }),
-                            "without exact or reference in --filters (only they sample the footprint)");
-        // Any filtered mode prefilters the colormap: check it as the first such mode would.
-        FilterOptions prefiltered = FilterOptions{}.use(parseFilter("none"));
-        for (const FilterOptions& f : study.filters)
-            if (f.source != StatisticsSource::Point) {
-                prefiltered = f;
-                break;
-            }
-        const PatternSpec spec = loadPatternSource(args->source, prefiltered);
+        refuseUnusedFilterFlags(*cmd, study.filters);
+        const PatternSpec spec = loadPatternSource(args->source, study.filters);
         const std::string& dir = args->dir;
         ensureFolder(dir);
         ThreadLimit limit(args->threads);
-        std::vector<std::unique_ptr<FrameSequenceWriter>> videos;
-        for (const std::string& name : args->filters)
-            if (args->video)
-                videos.push_back(std::make_unique<FrameSequenceWriter>(
-                    (std::filesystem::path(dir) / (name + ".mp4")).string(), study.size, study.size, 30.0, ""));
+        FrameSequenceSet outputs(dir, args->filters, study.size, study.size,
+                                 {.video = args->video, .frames = args->writeFrames});
         StabilityFrameSink writeFrame;
-        if (args->writeFrames || args->video)
-            writeFrame = [&](size_t m, int k, const Image& frame) {
-                if (args->video) videos[m]->write(frame);
-                if (!args->writeFrames) return;
-                char file[64];
-                std::snprintf(file, sizeof file, "%s-%03d.png", args->filters[m].c_str(), k);
-                writeImage((std::filesystem::path(dir) / file).string(), frame);
-            };
+        if (outputs.writes()) writeFrame = [&](size_t m, int k, const Image& frame) { outputs.write(m, k, frame); };
         std::printf("%d frames, scale %g -> %g, %dx%d, ground truth: S̄ with at most %d samples per axis\n",
                     study.frames, study.from, study.to, study.size, study.size, study.truthSamples);
         ProgressLine progress("stability");
         const StabilityStudyResult r = stabilityStudy(Pattern::build(spec), study, progress.callback(), writeFrame);
         progress.finish();
         std::printf("%s", r.summary.markdown().c_str());
-        for (const auto& video : videos) std::printf("wrote %s\n", video->finish().c_str());
+        for (const std::string& video : outputs.finish()) std::printf("wrote %s\n", video.c_str());
         writeText(dir, "stability.csv", r.summary.csv());
         writeText(dir, "stability-frames.csv", r.perFrame.csv());
         writeFigures(dir, r.figures);

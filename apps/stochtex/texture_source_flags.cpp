@@ -66,4 +66,18 @@ void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
     });
 }
 
+void addWindowSizeFlag(CLI::App& cmd, WindowSizeFlag& flag, const std::string& what) {
+    flag.option = cmd.add_option("--size", flag.size, what + " N or W,H (image files: their size)")
+                      ->delimiter(',')
+                      ->expected(1, 2);
+}
+
+SourceRegion studyRegion(const WindowSizeFlag& flag, const SourceInfo& info, const std::string& onImages) {
+    if (info.images) {
+        refuseWithoutEffect(flag.option, false, onImages);
+        return {info.width, info.height, 0, 0};
+    }
+    return SourceRegion::centred(flag.size[0], flag.size.size() > 1 ? flag.size[1] : flag.size[0]);
+}
+
 }  // namespace stochtex::cli

@@ -53,6 +53,9 @@ TEST(TemporalCoherence, AStillSequenceHoldsStill) {
     // flat spectrum is 2/3 · 0.5 = 1/3 (the Hann window smears it a little).
     EXPECT_NEAR(c.frames[0].meanFrequency, 1.0 / 3.0, 0.03);
     EXPECT_DOUBLE_EQ(c.frames[4].time, 2.0);
+    // The sequence's means are the frame's own (1e-15: five divided terms summed).
+    EXPECT_NEAR(c.meanContrast, c.frames[0].contrast, 1e-15);
+    EXPECT_NEAR(c.meanFrequency, c.frames[0].meanFrequency, 1e-15);
 }
 
 // Fresh white noise every frame keeps its look (only the realisation
@@ -72,6 +75,14 @@ TEST(TemporalCoherence, LosingHighFrequenciesIsALossOfCoherence) {
     EXPECT_GT(b.contrastChange, 10 * a.contrastChange);
     EXPECT_GT(b.spectrumChange, 3 * a.spectrumChange);
     EXPECT_LT(std::abs(b.meanChange), 0.02);  // the blur keeps the mean
+    // The means over the sequence, which the relative changes divide by:
+    // halfway between the sharp and the blurred frames' (1e-12: float sums).
+    double contrast = 0, frequency = 0;
+    for (const FrameAppearance& f : b.frames) contrast += f.contrast, frequency += f.meanFrequency;
+    EXPECT_NEAR(b.meanContrast, contrast / 8, 1e-12);
+    EXPECT_NEAR(b.meanFrequency, frequency / 8, 1e-12);
+    EXPECT_LT(b.meanContrast, b.frames[0].contrast);
+    EXPECT_GT(b.meanContrast, b.frames[1].contrast);
 }
 
 TEST(TemporalCoherence, ErrorsNameTheProblem) {
@@ -116,6 +127,47 @@ TEST(TemporalCoherence, ZoomTextureNeedsEnoughLayers) {
     EXPECT_GT(n3.contrastVariation, 3.0 * n8.contrastVariation);
     ASSERT_EQ(r.table.rows.size(), 2u);
     EXPECT_EQ(r.table.rows[1][0].text, "8");
+}
+
+// The coherence command's one call: the study of the frames and, with layer
+// counts, the curve over n, the same numbers as the two studies run apart,
+// and the page section with both; layer counts need the zoom texture and are
+// checked before any work.
+TEST(TemporalCoherence, ReportRunsBothStudies) {
+    ZoomBase base;
+    base.size = 64;
+    const ZoomSource zoom(ZoomParams{}, base);
+    CoherenceReportOptions o;
+    o.frames.region = SourceRegion::centred(32, 32);
+    o.frames.times = evenTimes(0.0, 0.25, 3);
+    o.layers = {3, 8};
+    const CoherenceReport r = coherenceReport(zoom, o);
+    const TemporalCoherenceResult alone = temporalCoherenceStudy(zoom, o.frames);
+    EXPECT_EQ(r.frames.coherence.scaleVariation, alone.coherence.scaleVariation);  // the same run: exact
+    EXPECT_EQ(r.frames.summary.csv(), alone.summary.csv());
+    ASSERT_TRUE(r.layers.has_value());
+    EXPECT_EQ(r.layers->table.csv(), layerCoherenceStudy(zoom, {o.layers, o.frames}).table.csv());
+    ASSERT_EQ(r.figures.size(), 3u);
+    EXPECT_EQ(r.figures[2].file, "layers.png");
+    EXPECT_NE(r.html.find(r.frames.summary.html()), std::string::npos);
+    EXPECT_NE(r.html.find("<h2>Over the number of layers n"), std::string::npos);
+    EXPECT_NE(r.html.find("layers.png"), std::string::npos);
+
+    o.layers.clear();
+    const CoherenceReport single = coherenceReport(zoom, o);
+    EXPECT_FALSE(single.layers.has_value());
+    EXPECT_EQ(single.figures.size(), 2u);
+    EXPECT_EQ(single.html.find("layers.png"), std::string::npos);
+
+    o.layers = {0};
+    EXPECT_EQ(test::inputErrorOf([&] { validateCoherenceReport(o, zoom); }).parameter(), "layersList");
+    const ImageSequenceSource images({whiteNoise(32, 1), whiteNoise(32, 2), whiteNoise(32, 3)});
+    o.layers = {3};
+    o.frames.region = {32, 32, 0, 0};
+    o.frames.times = evenTimes(0, 1, 3);  // image files: frame k at time k
+    EXPECT_EQ(test::inputErrorOf([&] { validateCoherenceReport(o, images); }).parameter(), "layersList");
+    o.layers.clear();
+    EXPECT_NO_THROW(validateCoherenceReport(o, images));
 }
 
 }  // namespace

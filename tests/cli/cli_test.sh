@@ -148,6 +148,11 @@ case_spectrum() {
   expect_ok "spectrum zoom" "$out/sp/index.html" -- "$bin" spectrum -o "$out/sp" --instances 4 --size 64 zoom --layers 3
   grep -q "^4," "$out/sp/spectrum.csv" || fail "spectrum.csv: not 4 frames: $(cat "$out/sp/spectrum.csv")"
   expect_ok "spectrum pattern" "$out/sp2/spectrum.png" -- "$bin" spectrum -o "$out/sp2" --size 64 pattern --preset woven
+  # --size W,H (the window flag spectrum, flow and coherence share): the frame shown is that window.
+  expect_ok "spectrum W,H" "$out/sp6/frame.png" -- "$bin" spectrum -o "$out/sp6" --size 40,24 zoom --layers 3
+  local dims
+  dims=$(od -An -tu1 -j16 -N8 "$out/sp6/frame.png" | awk '{print $3*256+$4 "x" $7*256+$8}')
+  [ "$dims" = 40x24 ] || fail "spectrum --size 40,24: frame.png is $dims"
   # Image files: a bi-lobe noise written by `noise`, its anisotropy far above 1.
   "$bin" noise '{"type":"spectrum","size":64,"seed":2,"components":[{"shape":"bilobe","frequency":8,"bandwidth":1,"orientation":45}]}' -o "$out/lobe.png" >/dev/null
   expect_ok "spectrum images" "$out/sp3/radial.csv" -- "$bin" spectrum -o "$out/sp3" --window none images "$out/lobe.png"
@@ -164,6 +169,10 @@ case_coherence() {
   expect_ok "coherence pattern" "$out/co2/coherence.csv" -- "$bin" coherence -o "$out/co2" --size 32 --frames 2 pattern --preset marble
   expect_bad "coherence layers on a pattern" "$out/co3" "--layers-list: has no effect without the zoom texture" -- "$bin" coherence -o "$out/co3" --size 32 --layers-list 3 pattern --preset marble
   expect_bad "coherence one frame" "$out/co4" "--frames: frames must be in [2, 10000], got 1" -- "$bin" coherence -o "$out/co4" --frames 1 zoom
+  # Every parameter is checked before the output folder is made, the layer counts included.
+  expect_bad "coherence layer count" "$out/co5" "--layers-list: layersList must be in [1, 64] each, got 0" -- "$bin" coherence -o "$out/co5" --size 32 --frames 2 --layers-list 0 zoom
+  "$bin" render --preset marble --size 16 -o "$out/f.png" >/dev/null || fail "coherence: render an image"
+  expect_bad "coherence images size" "$out/co6" "--size: has no effect on image files (each file is a frame)" -- "$bin" coherence -o "$out/co6" --size 32 images "$out/f.png"
 }
 
 case_fractalize() {

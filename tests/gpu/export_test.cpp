@@ -251,5 +251,31 @@ TEST(Export, SeparateProgramRendersWhatRenderGpuRenders) {
     }
 }
 
+// The lean include compiles and links in an engine's own program with its
+// lighting entry point, stochtex_lean_lobe (built by the response chunk's
+// footprintLobe), beside stochtex_sample.
+TEST(Export, LeanIncludeLinksWithTheLobeFunction) {
+    auto ctx = GlContext::headless();
+    const GLuint vs = compile(GL_VERTEX_SHADER,
+                              "#version 330 core\nout vec2 uv;\nvoid main() { uv = vec2(0.5); gl_Position = vec4(0.0); }\n");
+    const GLuint fs_ = compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + exportedShaderInclude(ResponseKind::Lean) +
+                                                       "in vec2 uv;\nout vec4 colour;\n"
+                                                       "void main() { LeanLobe l = stochtex_lean_lobe(uv);\n"
+                                                       "    colour = stochtex_sample(uv) + "
+                                                       "vec4(leanNdf(l, vec3(0.0, 0.0, 1.0))); }\n");
+    const GLuint prog = glCreateProgram();
+    glAttachShader(prog, vs);
+    glAttachShader(prog, fs_);
+    glLinkProgram(prog);
+    GLint linked = 0;
+    glGetProgramiv(prog, GL_LINK_STATUS, &linked);
+    char log[4096] = "";
+    glGetProgramInfoLog(prog, sizeof log, nullptr, log);
+    EXPECT_EQ(linked, GL_TRUE) << log;
+    glDeleteProgram(prog);
+    glDeleteShader(vs);
+    glDeleteShader(fs_);
+}
+
 }  // namespace
 }  // namespace stochtex

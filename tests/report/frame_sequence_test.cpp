@@ -9,6 +9,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "stochtex/core/error.h"
+#include "stochtex/image/image_io.h"
 #include "test_util.h"
 
 using namespace stochtex;
@@ -72,4 +73,32 @@ TEST_F(FrameSequence, AnUnfinishedVideoLeavesNoFile) {
         out.write(uniform(16, 16, 1, 0.5f));
     }
     EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+// Sequences side by side, by index (two may share a name): videos opened at
+// once, PNG frames <name>-NNN.png encoded with the set's transfer.
+TEST_F(FrameSequence, ASetWritesEachSequencesVideoAndFrames) {
+    {
+        FrameSequenceSet out(dir_.string(), {"none", "smooth"}, 16, 8, {.video = true, .frames = true});
+        EXPECT_TRUE(out.writes());
+        for (int k = 0; k < 3; ++k)
+            for (size_t m = 0; m < 2; ++m) out.write(m, k, uniform(16, 8, 1, 0.25f * float(m + 1)));
+        EXPECT_EQ(out.finish(),
+                  (std::vector<std::string>{(dir_ / "none.mp4").string(), (dir_ / "smooth.mp4").string()}));
+    }
+    for (const char* name : {"none-000.png", "none-002.png", "smooth-001.png", "none.mp4", "smooth.mp4", "smooth.webp"})
+        EXPECT_TRUE(fs::is_regular_file(dir_ / name)) << name;
+    EXPECT_FALSE(fs::exists(dir_ / "none-003.png"));
+    // sRGB (the default transfer) of linear 0.5 is code 188 (0.7354 · 255 = 187.5, rounded half up).
+    const Image png = readImage((dir_ / "smooth-001.png").string());
+    EXPECT_NEAR(png.at(3, 3) * 255.0f, 188.0f, 0.5f);
+
+    // The videos are opened at once: a folder that is not there fails before any frame.
+    EXPECT_ANY_THROW(FrameSequenceSet((dir_ / "missing").string(), {"a"}, 16, 8, {.video = true}));
+    FrameSequenceSet nothing(dir_.string(), {"other"}, 16, 8, {});
+    EXPECT_FALSE(nothing.writes());
+    nothing.write(0, 0, uniform(16, 8, 1, 0.5f));
+    EXPECT_TRUE(nothing.finish().empty());
+    EXPECT_FALSE(fs::exists(dir_ / "other-000.png"));
+    EXPECT_FALSE(fs::exists(dir_ / "other.mp4"));
 }

@@ -20,6 +20,14 @@ Figure chartFigure() {
     return {"errors.png", Image(4, 4, 3, 1.0f), "Errors.", LineChart{{a, b}, o}};
 }
 
+// The preview of a video beside its figures: the animated WebP shown, the
+// MP4 linked, the caption as given (HTML) and the paths escaped.
+TEST(Page, AnimatedPreviewShowsTheWebpAndLinksTheVideo) {
+    EXPECT_EQ(htmlAnimatedPreview("marble/", "sliding_<x>", "<b>s</b>"),
+              "<figure><img src='marble/sliding_&lt;x&gt;.webp'><figcaption><b>s</b> (animated; full resolution in "
+              "<a href='marble/sliding_&lt;x&gt;.mp4'>sliding_&lt;x&gt;.mp4</a>).</figcaption></figure>");
+}
+
 TEST(Page, ChartsAreInlinedSelfContainedAndDeterministic) {
     const std::vector<Figure> figures{chartFigure(), {"map.png", Image(4, 4, 3, 0.0f), "A map."}};
     const std::string body = htmlFigures("sub/", figures);

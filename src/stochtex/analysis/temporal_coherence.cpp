@@ -57,17 +57,17 @@ TemporalCoherence TemporalCoherenceMeter::result() const {
         contrast.push_back(f.contrast);
         scale.push_back(f.meanFrequency);
     }
-    double meanContrast = 0, meanScale = 0;
     for (size_t k = 0; k < frames_.size(); ++k) {
-        meanContrast += contrast[k] / double(frames_.size());
-        meanScale += scale[k] / double(frames_.size());
+        r.meanContrast += contrast[k] / double(frames_.size());
+        r.meanFrequency += scale[k] / double(frames_.size());
     }
     const double pairs = double(frames_.size() - 1);
     for (size_t k = 0; k + 1 < frames_.size(); ++k) {
         const FrameAppearance &a = frames_[k], &b = frames_[k + 1];
         r.meanChange += std::abs(b.mean - a.mean) / pairs;
-        r.contrastChange += (meanContrast > 0 ? std::abs(b.contrast - a.contrast) / meanContrast : 0.0) / pairs;
-        r.scaleChange += (meanScale > 0 ? std::abs(b.meanFrequency - a.meanFrequency) / meanScale : 0.0) / pairs;
+        r.contrastChange += (r.meanContrast > 0 ? std::abs(b.contrast - a.contrast) / r.meanContrast : 0.0) / pairs;
+        r.scaleChange +=
+            (r.meanFrequency > 0 ? std::abs(b.meanFrequency - a.meanFrequency) / r.meanFrequency : 0.0) / pairs;
         double change = 0;
         int bins = 0;
         for (size_t i = 0; i < a.radial.power.size(); ++i) {

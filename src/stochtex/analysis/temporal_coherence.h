@@ -25,6 +25,9 @@ struct FrameAppearance {
 
 struct TemporalCoherence {
     std::vector<FrameAppearance> frames;
+    // Means over the frames, the references of the relative figures below:
+    double meanContrast = 0;   // of contrast
+    double meanFrequency = 0;  // of meanFrequency (the sequence's dominant scale)
     // Means over consecutive pairs (k, k + 1) of the change of each figure:
     double meanChange = 0;      // |Δ mean|
     double contrastChange = 0;  // |Δ contrast| / (mean contrast of the sequence)

@@ -44,7 +44,7 @@ std::string exportedShaderInclude(ResponseKind response) {
             "// covariance, the base roughness uLeanRoughness included).\n"
             "LeanLobe stochtex_lean_lobe(vec2 uv) {\n"
             "    FootprintMoments m = footprintStatistics(uv, dFdx(uv), dFdy(uv));\n"
-            "    return leanLobe(m.mean, m.var, uLeanCovariance ? m.cov : 0.0, uLeanRoughness);\n"
+            "    return footprintLobe(m.mean, m.var, m.cov);\n"
             "}\n";
     return text;
 }

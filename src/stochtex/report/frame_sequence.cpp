@@ -96,4 +96,29 @@ std::string FrameSequenceWriter::finish() {
     return video_->file->path();
 }
 
+FrameSequenceSet::FrameSequenceSet(const std::string& dir, const std::vector<std::string>& names, int width, int height,
+                                   const Options& options)
+    : dir_(dir), names_(names), options_(options) {
+    if (!options.video) return;
+    for (const std::string& name : names)
+        videos_.push_back(std::make_unique<FrameSequenceWriter>((fs::path(dir) / (name + ".mp4")).string(), width,
+                                                                height, options.fps, "", options.transfer));
+}
+
+FrameSequenceSet::~FrameSequenceSet() = default;
+
+void FrameSequenceSet::write(size_t sequence, int frame, const Image& image) {
+    if (options_.video) videos_.at(sequence)->write(image);
+    if (!options_.frames) return;
+    char file[32];
+    std::snprintf(file, sizeof file, "-%03d.png", frame);
+    writeImage((fs::path(dir_) / (names_.at(sequence) + file)).string(), image, {.transfer = options_.transfer});
+}
+
+std::vector<std::string> FrameSequenceSet::finish() {
+    std::vector<std::string> paths;
+    for (const auto& video : videos_) paths.push_back(video->finish());
+    return paths;
+}
+
 }  // namespace stochtex

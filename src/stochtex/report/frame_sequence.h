@@ -9,6 +9,7 @@
 // Every frame is checked and encoded as it comes, so memory is one frame.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "stochtex/image/colour_space.h"
 #include "stochtex/image/image.h"
@@ -42,6 +43,35 @@ private:
     Transfer transfer_;
     std::unique_ptr<Video> video_;
     std::string previewPath_;
+};
+
+// Several sequences rendered side by side (one per filter of a study), each
+// written as it comes into one folder: sequence i as `<names[i]>.mp4` with
+// its preview (`video`) and as `<names[i]>-NNN.png` for frame NNN
+// (`frames`). The videos are opened at once, so a folder or encoder that
+// cannot be written is reported before any work.
+class FrameSequenceSet {
+public:
+    struct Options {
+        bool video = false;
+        bool frames = false;
+        double fps = 30;
+        Transfer transfer = Transfer::Srgb;  // of the 8-bit codes, as FrameSequenceWriter's
+    };
+    FrameSequenceSet(const std::string& dir, const std::vector<std::string>& names, int width, int height,
+                     const Options& options);
+    ~FrameSequenceSet();
+    // False when neither videos nor frames are written (write does nothing).
+    bool writes() const { return options_.video || options_.frames; }
+    void write(size_t sequence, int frame, const Image& image);
+    // Closes the videos (FrameSequenceWriter::finish); their paths, in the order of names.
+    std::vector<std::string> finish();
+
+private:
+    std::string dir_;
+    std::vector<std::string> names_;
+    Options options_;
+    std::vector<std::unique_ptr<FrameSequenceWriter>> videos_;
 };
 
 }  // namespace stochtex

@@ -99,6 +99,12 @@ std::string chartConfig(const LineChart& c) {
 
 }  // namespace
 
+std::string htmlAnimatedPreview(const std::string& prefix, const std::string& name, const std::string& caption) {
+    const std::string path = htmlEscape(prefix + name);
+    return "<figure><img src='" + path + ".webp'><figcaption>" + caption + " (animated; full resolution in <a href='" +
+           path + ".mp4'>" + htmlEscape(name) + ".mp4</a>).</figcaption></figure>";
+}
+
 std::string htmlFigures(const std::string& prefix, const std::vector<Figure>& figures, size_t limit) {
     std::ostringstream h;
     size_t shown = 0;

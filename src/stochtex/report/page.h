@@ -38,6 +38,10 @@ void writeText(const std::string& dir, const std::string& file, const std::strin
 // configuration is inlined as JSON (htmlPage adds the library).
 std::string htmlFigures(const std::string& prefix, const std::vector<Figure>& figures, size_t limit = SIZE_MAX);
 
+// A <figure> showing the animated preview prefix + name + ".webp" of a video
+// (FrameSequenceWriter), captioned `caption` (HTML) and linking to the MP4.
+std::string htmlAnimatedPreview(const std::string& prefix, const std::string& name, const std::string& caption);
+
 // A figure-like image (values are the file's codes, as in writeFigures) as
 // an 8-bit PNG in a data: URI, for pages that must be one file.
 std::string pngDataUri(const Image& image);

@@ -346,10 +346,7 @@ std::string marbleSectionHtml(const MarbleStudyResult& r, const std::string& pre
     html += "<h3>Power spectra (Figure 2.22)</h3>\n" + r.spectra.html() + htmlFigures(prefix, spectra);
     html += "<h3>Sliding and optical flow (section 2.8, Figures 2.23–2.24)</h3>\n" + r.sliding.html();
     if (videos)
-        for (const std::string& v : r.videos)
-            html += "<figure><img src='" + htmlEscape(prefix + v) + ".webp'><figcaption>" + htmlEscape(v) +
-                    " (animated; full resolution in <a href='" + htmlEscape(prefix + v) + ".mp4'>" + htmlEscape(v) +
-                    ".mp4</a>).</figcaption></figure>\n";
+        for (const std::string& v : r.videos) html += htmlAnimatedPreview(prefix, v, htmlEscape(v)) + "\n";
     html += htmlFigures(prefix, sliding);
     return html;
 }

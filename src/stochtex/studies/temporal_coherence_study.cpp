@@ -90,18 +90,13 @@ TemporalCoherenceResult temporalCoherenceStudy(const TextureSource& source, cons
                           {"mean_frequency", "dominant scale: mean |f|", "cycles/pixel"}};
     PlotSeries contrast{"contrast σ / mean σ", {}, {}, seriesColour(0)},
         scale{"mean |f| / its mean (dominant scale)", {}, {}, seriesColour(1)};
-    double meanContrast = 0, meanScale = 0;
-    for (const FrameAppearance& f : c.frames) {
-        meanContrast += f.contrast / double(c.frames.size());
-        meanScale += f.meanFrequency / double(c.frames.size());
-    }
     for (const FrameAppearance& f : c.frames) {
         r.perFrame.add({TableCell::value(f.time, "%g"), TableCell::value(f.mean, "%.5f"),
                         TableCell::value(f.contrast, "%.5f"), TableCell::value(f.meanFrequency, "%.5f")});
         contrast.x.push_back(f.time);
-        contrast.y.push_back(meanContrast > 0 ? f.contrast / meanContrast : 0.0);
+        contrast.y.push_back(c.meanContrast > 0 ? f.contrast / c.meanContrast : 0.0);
         scale.x.push_back(f.time);
-        scale.y.push_back(meanScale > 0 ? f.meanFrequency / meanScale : 0.0);
+        scale.y.push_back(c.meanFrequency > 0 ? f.meanFrequency / c.meanFrequency : 0.0);
     }
     LinePlotOptions po;
     po.title = "Appearance over time (1 = the sequence's mean)";
@@ -132,12 +127,16 @@ TemporalCoherenceResult temporalCoherenceStudy(const TextureSource& source, cons
     return r;
 }
 
-LayerCoherenceResult layerCoherenceStudy(const ZoomSource& zoom, const LayerCoherenceOptions& o,
-                                         const StudyProgress& progress) {
+void validateLayerCoherence(const LayerCoherenceOptions& o) {
     validateTemporalCoherence(o.frames);
     if (o.layers.empty()) throw InputError::parameter("layersList", "must name at least one layer count");
     for (int n : o.layers)
         if (n < 1 || n > 64) throw InputError::parameter("layersList", "must be in [1, 64] each, got " + std::to_string(n));
+}
+
+LayerCoherenceResult layerCoherenceStudy(const ZoomSource& zoom, const LayerCoherenceOptions& o,
+                                         const StudyProgress& progress) {
+    validateLayerCoherence(o);
     LayerCoherenceResult r;
     r.table.columns = {{"layers", "n", ""}};
     addCoherenceColumns(r.table);
@@ -174,6 +173,29 @@ LayerCoherenceResult layerCoherenceStudy(const ZoomSource& zoom, const LayerCohe
                              "): the thesis sees n = 3 lose coherence (frames lose their high frequencies) where "
                              "n = 8 keeps it (Figure 2.4).",
                          LineChart{{scale, contrast, spectrum}, po}});
+    return r;
+}
+
+void validateCoherenceReport(const CoherenceReportOptions& o, const TextureSource& source) {
+    validateTemporalCoherence(o.frames, &source);
+    if (o.layers.empty()) return;
+    if (!dynamic_cast<const ZoomSource*>(&source))
+        throw InputError::parameter("layersList", "needs the zoom texture (n is its number of layers)");
+    validateLayerCoherence({o.layers, o.frames});
+}
+
+CoherenceReport coherenceReport(const TextureSource& source, const CoherenceReportOptions& o,
+                                const StudyProgress& progress) {
+    validateCoherenceReport(o, source);
+    CoherenceReport r;
+    r.frames = temporalCoherenceStudy(source, o.frames, progress);
+    r.figures = r.frames.figures;
+    r.html = r.frames.summary.html() + htmlFigures("", r.frames.figures);
+    if (o.layers.empty()) return r;
+    r.layers = layerCoherenceStudy(dynamic_cast<const ZoomSource&>(source), {o.layers, o.frames}, progress);
+    r.figures.insert(r.figures.end(), r.layers->figures.begin(), r.layers->figures.end());
+    r.html += "<h2>Over the number of layers n (thesis Figure 2.4)</h2>" + r.layers->table.html() +
+              htmlFigures("", r.layers->figures);
     return r;
 }
 

@@ -3,6 +3,8 @@
 // Figures 2.4 and 2.16; analysis/temporal_coherence.h), and the thesis's
 // observation that the zoom texture needs enough layers to keep its look —
 // n = 3 loses coherence where n = 8 keeps it — as a measured curve over n.
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "stochtex/analysis/temporal_coherence.h"
@@ -47,7 +49,28 @@ struct LayerCoherenceResult {
     Table table;                               // n, the changes and variations
     std::vector<Figure> figures;               // layers.png, the curves over n
 };
+// InputError naming the parameter (as validateTemporalCoherence, and
+// layersList), before any work.
+void validateLayerCoherence(const LayerCoherenceOptions& options);
 LayerCoherenceResult layerCoherenceStudy(const ZoomSource& zoom, const LayerCoherenceOptions& options,
                                          const StudyProgress& progress = {});
+
+// The `coherence` report of one source: temporalCoherenceStudy of its frames
+// and, given layer counts, layerCoherenceStudy of the zoom texture over them.
+struct CoherenceReportOptions {
+    TemporalCoherenceOptions frames;
+    std::vector<int> layers;  // layer counts n, 1…64 each (the source is then a ZoomSource); empty: no curve over n
+};
+// InputError naming the parameter (region, times, …, layersList), with the
+// source's checkWindow at every frame's time; before any work.
+void validateCoherenceReport(const CoherenceReportOptions& options, const TextureSource& source);
+struct CoherenceReport {
+    TemporalCoherenceResult frames;
+    std::optional<LayerCoherenceResult> layers;  // with options.layers
+    std::vector<Figure> figures;  // frames' figures, then the layers' (appearance.png, frames.png, layers.png)
+    std::string html;             // the page section: summary, figures, the curve over n (figures beside the page)
+};
+CoherenceReport coherenceReport(const TextureSource& source, const CoherenceReportOptions& options,
+                                const StudyProgress& progress = {});
 
 }  // namespace stochtex
