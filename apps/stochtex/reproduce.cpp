@@ -4,12 +4,8 @@
 // Figure 10 (phasor variants; procedural phasor noise beside ours), Figure 11
 // (filtering the phasor sine pattern), Figure 12 (LEAN-mapped normal maps) — and
 // `all`, which runs them and writes an index.html (reproduce_all.cpp).
-#include <cstdio>
-
 #include "common.h"
-#include "progress.h"
 #include "reproduce.h"
-#include "stochtex/core/parallel.h"
 
 namespace stochtex::cli {
 
@@ -21,24 +17,20 @@ void registerReproduce(CLI::App& app) {
     addReproduceFlags(*table1Cmd, *args, true, nullptr);
     table1Cmd->callback([args] {
         prepareReproduce(*args);
-        ThreadLimit limit(args->threads);
-        ProgressLine progress("reproduce table1");
-        const std::string md = writeTable1(table1(args->table, progress.callback()), args->dir);
-        progress.finish();
-        std::printf("%s\nwrote table1.csv, table1.md and plots to %s\n", md.c_str(), args->dir.c_str());
+        runReproduction(*args, "table1", [&](const Progress& p) {
+            return writeTable1(table1(args->table, p), args->dir) + "\nwrote table1.csv, table1.md and plots to " + args->dir;
+        });
     });
     const auto addFigure = [&](const std::string& figure, const std::string& help, Figure4Options* options) {
         auto* sub = cmd->add_subcommand(figure, help);
         addReproduceFlags(*sub, *args, false, options);
         sub->callback([args, figure, options] {
             prepareReproduce(*args);
-            ThreadLimit limit(args->threads);
-            ProgressLine progress("reproduce " + figure);
-            const Figure4Result r = stochtex::figure4(*options, progress.callback());
-            writeFigure4(r, figure, args->dir);
-            progress.finish();
-            std::printf("%s\nwrote %s.png, %s.csv and the images to %s\n", r.table.markdown().c_str(), figure.c_str(),
-                        figure.c_str(), args->dir.c_str());
+            runReproduction(*args, figure, [&](const Progress& p) {
+                const Figure4Result r = stochtex::figure4(*options, p);
+                writeFigure4(r, figure, args->dir);
+                return r.table.markdown() + "\nwrote " + figure + ".png, " + figure + ".csv and the images to " + args->dir;
+            });
         });
     };
     addFigure("figure4", "Figure 4: reference, exact-statistics and estimated filtering", &args->figure4);
@@ -47,39 +39,33 @@ void registerReproduce(CLI::App& app) {
     addFigure10Flags(*figure10Cmd, *args);
     figure10Cmd->callback([args] {
         prepareReproduce(*args);
-        ThreadLimit limit(args->threads);
-        ProgressLine progress("reproduce figure10");
-        const Figure10Result r = figure10(args->figure10, progress.callback());
-        writeFigure10(r, args->dir);
-        progress.finish();
-        std::printf("%s\nwrote figure10.png, figure10_comparison.png and figure10.csv to %s\n",
-                    r.table.markdown().c_str(), args->dir.c_str());
+        runReproduction(*args, "figure10", [&](const Progress& p) {
+            const Figure10Result r = figure10(args->figure10, p);
+            writeFigure10(r, args->dir);
+            return r.table.markdown() + "\nwrote figure10.png, figure10_comparison.png and figure10.csv to " + args->dir;
+        });
     });
-    addFigure("figure11", "Figure 11: filtering the phasor sine pattern: reference, estimated, error",
-              &args->figure11);
+    addFigure("figure11", "Figure 11: filtering the phasor sine pattern: reference, estimated, error", &args->figure11);
     auto* figures79 = cmd->add_subcommand("figures7-9", "Figures 7–9: colormap layouts, palettes, noise spectra");
     addReproduceFlags(*figures79, *args, false, nullptr);
     figures79->add_option("--size", args->sheetSize, "Pattern size in each sheet")->capture_default_str();
     figures79->callback([args] {
         prepareReproduce(*args);
-        ThreadLimit limit(args->threads);
         ensureFolder(args->dir);
-        ProgressLine progress("reproduce figures7-9");
-        writeFigures(args->dir, figures7to9(args->sheetSize, progress.callback()));
-        progress.finish();
-        std::printf("wrote figure7.png, figure8.png, figure9.png to %s\n", args->dir.c_str());
+        runReproduction(*args, "figures7-9", [&](const Progress& p) {
+            writeFigures(args->dir, figures7to9(args->sheetSize, p));
+            return "wrote figure7.png, figure8.png, figure9.png to " + args->dir;
+        });
     });
     auto* figure12Cmd = cmd->add_subcommand("figure12", "Figure 12: LEAN-mapped procedural normal map, four variants");
     addFigure12Flags(*figure12Cmd, *args);
     figure12Cmd->callback([args] {
         prepareFigure12(*args);
-        ThreadLimit limit(args->threads);
-        ProgressLine progress("reproduce figure12");
-        const Figure12Result r = figure12(args->figure12, progress.callback());
-        writeFigure12(r, args->dir);
-        progress.finish();
-        std::printf("%s\nwrote figure12.png, figure12.csv and the images to %s\n", r.table.markdown().c_str(),
-                    args->dir.c_str());
+        runReproduction(*args, "figure12", [&](const Progress& p) {
+            const Figure12Result r = figure12(args->figure12, p);
+            writeFigure12(r, args->dir);
+            return r.table.markdown() + "\nwrote figure12.png, figure12.csv and the images to " + args->dir;
+        });
     });
     registerReproduceAll(*cmd, args);
 }

@@ -1,10 +1,12 @@
 #pragma once
 // The flags and outputs shared by the `reproduce` subcommands.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "common.h"
+#include "stochtex/core/progress.h"
 #include "stochtex/studies/normal_maps.h"
 #include "stochtex/studies/paper.h"
 #include "stochtex/studies/phasor_figures.h"
@@ -46,6 +48,11 @@ std::string writeTable1(const Table1Result& r, const std::string& dir);
 void writeFigure4(const Figure4Result& r, const std::string& figure, const std::string& dir);
 // Writes figure10.png, figure10_comparison.png and figure10.csv.
 void writeFigure10(const Figure10Result& r, const std::string& dir);
+
+// Runs one reproduction with --threads and a progress line titled
+// "reproduce <name>", then prints the report `run` returns.
+void runReproduction(const ReproduceArgs& args, const std::string& name,
+                     const std::function<std::string(const Progress&)>& run);
 
 void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> args);
 

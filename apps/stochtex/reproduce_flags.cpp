@@ -1,5 +1,10 @@
 // The flags and outputs shared by the `reproduce` subcommands (reproduce.h).
 #include "reproduce.h"
+
+#include <cstdio>
+
+#include "progress.h"
+#include "stochtex/core/parallel.h"
 #include "stochtex/pattern/presets.h"
 
 namespace stochtex::cli {
@@ -114,6 +119,15 @@ void writeFigure12(const Figure12Result& r, const std::string& dir) {
     ensureFolder(dir);
     writeFigures(dir, r.figures);
     writeText(dir, "figure12.csv", r.table.csv());
+}
+
+void runReproduction(const ReproduceArgs& args, const std::string& name,
+                     const std::function<std::string(const Progress&)>& run) {
+    ThreadLimit limit(args.threads);
+    ProgressLine progress("reproduce " + name);
+    const std::string report = run(progress.callback());
+    progress.finish();
+    std::printf("%s\n", report.c_str());
 }
 
 }  // namespace stochtex::cli
