@@ -9,9 +9,9 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/image/image_io.h"
-#include "stochtex/pattern/texture_graph.h"
 #include "stochtex/noise/example.h"
 #include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/texture_graph.h"
 
 namespace stochtex {
 namespace fs = std::filesystem;
@@ -132,6 +132,17 @@ void checkPixelRange(const Image& img, const std::string& file, double lo, doubl
 
 }  // namespace
 
+void checkSpectrumSpec(const JsonReader& r, const SpectrumSpec& s) {
+    // Every render path builds MIP pyramids that halve the example.
+    if (!isPowerOfTwo(s.size))
+        r.at("size").fail("must be a power of two (the filtered renders build MIP pyramids that halve the "
+                          "example), got " + std::to_string(s.size));
+    double total = 0;
+    for (const auto& c : s.components) total += c.weight;
+    if (total <= 0) r.at("components").fail("component weights sum to zero");
+    r.check([&] { validateSpectrumWork(s); });
+}
+
 fs::path resolveInputPath(const JsonReader& r, const fs::path& baseDir) {
     const fs::path p = r.string();
     if (p.empty()) r.fail("empty path");
@@ -145,10 +156,6 @@ NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
         r.expectObject({"type", "size", "seed", "mean", "stddev", "components", "quadrature"});
         SpectrumSpec& s = spec.spectrum;
         s.size = r.integer("size", 256, 8, kMaxExampleSize);
-        // Every render path builds MIP pyramids that halve the example.
-        if (!isPowerOfTwo(s.size))
-            r.at("size").fail("must be a power of two (the filtered renders build MIP pyramids that halve the "
-                              "example), got " + std::to_string(s.size));
         if (auto seed = r.find("seed")) {
             s.seed = seed->uint32();
             spec.explicitSeed = true;
@@ -160,10 +167,7 @@ NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
         const size_t n = comps.arraySize();
         if (n == 0) comps.fail("needs at least one spectrum component");
         for (size_t i = 0; i < n; ++i) s.components.push_back(parseSpectrumComponent(comps.at(i)));
-        double total = 0;
-        for (const auto& c : s.components) total += c.weight;
-        if (total <= 0) comps.fail("component weights sum to zero");
-        r.check([&] { validateSpectrumWork(s); });
+        checkSpectrumSpec(r, s);
     } else {
         r.expectObject({"type", "path", "gaussianize"});
         spec.source = NoiseSpec::Source::Image;

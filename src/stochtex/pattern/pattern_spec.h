@@ -106,6 +106,10 @@ struct PatternSpec {
 };
 
 NoiseSpec parseNoiseSpec(const JsonReader& r, const std::filesystem::path& baseDir);
+// The checks of a spectrum noise read from r (its members size and
+// components): a power-of-two size, weights that do not sum to zero, the
+// synthesis' work budget; failures at r's members.
+void checkSpectrumSpec(const JsonReader& r, const SpectrumSpec& s);
 // One spectrum component object (a NOISE's "components" entry).
 SpectrumComponent parseSpectrumComponent(const JsonReader& r);
 // A path member, relative to baseDir unless absolute; fails if empty.

@@ -25,8 +25,6 @@ std::string knownTypes() {
     return s;
 }
 
-bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
-
 // One node's members: its type, its input ports, its parameters by the table.
 GraphNode parseNode(const JsonReader& n, const std::string& id, const std::filesystem::path& baseDir) {
     if (!validId(id)) n.fail("node ids are 1–64 letters, digits, '_' or '-'");
@@ -82,17 +80,11 @@ GraphNode parseNode(const JsonReader& n, const std::string& id, const std::files
         SpectrumSpec& s = g.noise.spectrum;
         g.noise.source = NoiseSpec::Source::Spectrum;
         s.size = int(g.numbers["size"]);
-        if (!isPowerOfTwo(s.size))
-            n.at("size").fail("must be a power of two (the filtered renders build MIP pyramids that halve the example), "
-                              "got " + std::to_string(s.size));
         s.mean = g.numbers["mean"];
         s.stddev = g.numbers["stddev"];
         s.quadrature = g.numbers["quadrature"] != 0;
         g.noise.explicitSeed = g.seed.has_value();
-        double total = 0;
-        for (const auto& c : s.components) total += c.weight;
-        if (total <= 0) n.at("components").fail("component weights sum to zero");
-        n.check([&] { validateSpectrumWork(s); });
+        checkSpectrumSpec(n, s);
     } else if (info.kind == NodeKind::Exemplar) {
         g.noise.source = NoiseSpec::Source::Image;
         g.noise.gaussianize = g.numbers["gaussianize"] != 0;
