@@ -1,7 +1,7 @@
 // stochtex marble: the marble texture's artifacts (thesis §2.7.2, §2.8), continuous
 // scaling vs the fix: stretching, correlation, spectra, sliding (with videos).
 #include <cstdio>
-#include <map>
+#include <algorithm>
 #include <memory>
 
 #include "common.h"
@@ -53,16 +53,12 @@ void registerMarble(CLI::App& app) {
         validateMarbleStudy(o);
         ThreadLimit limit(args->threads);
         ensureFolder(args->dir);
-        std::map<std::string, std::unique_ptr<FrameSequenceWriter>> videos;
+        FrameSequenceSet videos(args->dir, marbleVideoNames(o), o.size, o.size,
+                                {true, false, std::min(30.0, 1.0 / o.timeStep), Transfer::Linear});
         ProgressLine progress("marble");
-        const MarbleStudyResult r = marbleStudy(o, progress.callback(), [&](const std::string& name, int, const Image& f) {
-            auto& v = videos[name];
-            if (!v)
-                v = std::make_unique<FrameSequenceWriter>(args->dir + "/" + name + ".mp4", f.width(), f.height(),
-                                                          std::min(30.0, 1.0 / o.timeStep), "", Transfer::Linear);
-            v->write(f);
-        });
-        for (auto& [name, v] : videos) v->finish();
+        const MarbleStudyResult r =
+            marbleStudy(o, progress.callback(), [&](size_t v, int k, const Image& f) { videos.write(v, k, f); });
+        videos.finish();
         progress.finish();
         writeFigures(args->dir, r.figures);
         writeText(args->dir, "correlation.csv", r.correlation.csv());
@@ -73,7 +69,7 @@ void registerMarble(CLI::App& app) {
         std::printf("%s\n%s\n%s\nwrote %zu figures, %zu videos (MP4 + animated WebP), correlation.csv, spectra.csv, "
                     "sliding.csv and index.html to %s\n",
                     r.correlation.markdown().c_str(), r.spectra.markdown().c_str(), r.sliding.markdown().c_str(),
-                    r.figures.size(), videos.size(), args->dir.c_str());
+                    r.figures.size(), r.videos.size(), args->dir.c_str());
     });
 }
 

@@ -3,8 +3,6 @@
 // flow and coherence, the image bases, the marble texture and the stimuli
 // on one page, each part's files written as soon as the part is done.
 #include <algorithm>
-#include <map>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -126,18 +124,13 @@ void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& op
     }
 
     // The marble texture, with a video of each sliding sequence.
-    std::map<std::string, std::unique_ptr<FrameSequenceWriter>> videos;
     ensureFolder(dir + "/marble");
-    const MarbleStudyResult marble = marbleStudy(options.marble, progressPart(progress, 0.85, 0.97, "marble"),
-                                                 [&](const std::string& name, int, const Image& frame) {
-        auto& v = videos[name];
-        if (!v)
-            v = std::make_unique<FrameSequenceWriter>(dir + "/marble/" + name + ".mp4", frame.width(), frame.height(),
-                                                      std::min(30.0, 1.0 / options.marble.timeStep), "",
-                                                      Transfer::Linear);
-        v->write(frame);
-    });
-    for (auto& [name, v] : videos) v->finish();
+    FrameSequenceSet videos(dir + "/marble", marbleVideoNames(options.marble), options.marble.size, options.marble.size,
+                            {true, false, std::min(30.0, 1.0 / options.marble.timeStep), Transfer::Linear});
+    const MarbleStudyResult marble =
+        marbleStudy(options.marble, progressPart(progress, 0.85, 0.97, "marble"),
+                    [&](size_t v, int k, const Image& frame) { videos.write(v, k, frame); });
+    videos.finish();
     writeFigures(dir + "/marble", marble.figures);
     writeText(dir + "/marble", "correlation.csv", marble.correlation.csv());
     writeText(dir + "/marble", "spectra.csv", marble.spectra.csv());

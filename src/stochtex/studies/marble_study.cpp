@@ -285,12 +285,11 @@ void slidingPart(const MarbleStudyOptions& o, const Progress& progress, const Ma
         const MarbleScaling s = o.scalings[k % o.scalings.size()];
         const bool marble = layer == MarbleLayer::Marble;
         const std::string video = "sliding_" + scalingName(s);
-        if (marble) r.videos.push_back(video);
         const FlowStudyResult f = flowStudy(
             MarbleSource(slidingPanel(o, s, layer)), fo,
             progressPart(progress, double(k) / runs, double(k + 1) / runs, layerName(layer) + ", " + scalingName(s)),
             [&](int i, const Image& img) {
-                if (marble && onFrame) onFrame(video, i, img);
+                if (marble && onFrame) onFrame(k, i, img);
             });
         r.sliding.add({layerName(layer), scalingName(s), TableCell::value(f.mean.meanMagnitude),
                        TableCell::value(f.mean.meanRadial), TableCell::value(f.mean.outwardFraction, "%.3f"),
@@ -321,9 +320,16 @@ void slidingPart(const MarbleStudyOptions& o, const Progress& progress, const Ma
 
 }  // namespace
 
+std::vector<std::string> marbleVideoNames(const MarbleStudyOptions& o) {
+    std::vector<std::string> names;
+    for (MarbleScaling s : o.scalings) names.push_back("sliding_" + scalingName(s));
+    return names;
+}
+
 MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& progress, const MarbleFrameSink& onFrame) {
     validateMarbleStudy(o);
     MarbleStudyResult r;
+    r.videos = marbleVideoNames(o);
     if (progress) progress(0.0, "stretching");
     stretchingPart(o, r);
     correlationPart(o, progressPart(progress, 0.05, 0.55, "correlation"), r);

@@ -66,11 +66,14 @@ struct MarbleStudyResult {
     Table spectra;      // spectra.csv: layer × scaling, anisotropy
     Table sliding;      // sliding.csv: layer (marble, scaled noise) × scaling, the mean flow figures beside the scaling's own rate
     std::vector<Figure> figures;
-    std::vector<std::string> videos;  // the sliding frames' names per scaling (sliding_<scaling>), for a sink's files
+    std::vector<std::string> videos;  // marbleVideoNames
 };
-// onFrame(video, k, frame): every sliding frame, video by video (names as in
-// MarbleStudyResult::videos), values in [0, 1].
-using MarbleFrameSink = std::function<void(const std::string&, int, const Image&)>;
+// The sliding sequences' names, one per scaling (sliding_<scaling>), in the
+// order a sink receives them: the names of their files.
+std::vector<std::string> marbleVideoNames(const MarbleStudyOptions& options);
+// onFrame(video, k, frame): every sliding frame, video by video (the index
+// into marbleVideoNames), values in [0, 1], options.size² pixels.
+using MarbleFrameSink = std::function<void(size_t, int, const Image&)>;
 MarbleStudyResult marbleStudy(const MarbleStudyOptions& options, const StudyProgress& progress = {},
                               const MarbleFrameSink& onFrame = {});
 
