@@ -1,7 +1,8 @@
 // One benchmark per node of texture graphs, registered from the node table
 // (pattern/graph_nodes.h) without code per node: each node's sample graph
-// (sampleNodeGraph) is built (examples synthesised, linear nodes folded) and
-// rendered at 256², so a new node is timed as soon as it is in the table.
+// (sampleNodeGraph) is built (examples synthesised, linear nodes folded,
+// tables made) and rendered at 256² by the graph evaluator (GraphPattern),
+// so a new node is timed as soon as it is in the table.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -10,7 +11,7 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/json_reader.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 
 using namespace stochtex;
 
@@ -37,7 +38,7 @@ void buildAndRender(benchmark::State& state, const NodeInfo* node) {
     const PatternSpec spec = parsePatternSpec(JsonReader(parsed, node->name), ".");
     const View view{256, 256, 1.0};
     for (auto _ : state) {
-        const Pattern p = Pattern::build(spec);
+        const GraphPattern p = GraphPattern::build(spec);
         Image img = p.render(view);
         benchmark::DoNotOptimize(img.data().data());
     }

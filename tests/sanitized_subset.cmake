@@ -24,4 +24,5 @@ set(stochtex_sanitized_test_sources
   pattern/lean_test.cpp
   pattern/camera_test.cpp
   pattern/texture_graph_test.cpp
+  pattern/graph_pattern_test.cpp
   textures/marble_texture_test.cpp)

@@ -54,8 +54,7 @@ void registerBakeImage(CLI::App& app) {
         const auto start = std::chrono::steady_clock::now();
         ProgressLine progress("bake-image");
         progress.update(0.0, "building the pattern and its tables");
-        const Pattern pattern = Pattern::build(spec);
-        PatternRenderer renderer(pattern, args->options, args->device);
+        PatternRenderer renderer(spec, args->options, args->device);
         const View& v = whole.view;
         const std::unique_ptr<ImageStreamWriter> out = openImageStream(args->output, v.width, v.height, 3, args->bits);
         for (int y0 = 0; y0 < v.height; y0 += args->band) {

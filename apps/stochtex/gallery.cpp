@@ -1,5 +1,6 @@
 // stochtex gallery: every preset rendered beside its colormap and its two
-// noises, as sheets in one folder with an index.html to browse them.
+// noises (a graph preset beside its stages), as sheets in one folder with an
+// index.html to browse them.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,10 +19,6 @@
 
 namespace stochtex::cli {
 namespace fs = std::filesystem;
-
-namespace {
-
-}  // namespace
 
 void registerGallery(CLI::App& app) {
     struct Args {
@@ -56,8 +53,10 @@ void registerGallery(CLI::App& app) {
         for (const auto& name : names) {
             progress.update(double(index++) / double(names.size()), name);
             const PatternSpec spec = loadPreset(name);
-            const Pattern pattern = Pattern::build(spec);
-            const PatternSheet ps = patternSheet(pattern, spec.scale, args->size, name);
+            // A graph with a non-linear node before its output: its stages instead of H and N.
+            const PatternSheet ps = spec.graph && !foldsIntoPattern(*spec.graph)
+                                        ? graphSheet(GraphPattern::build(spec), *spec.graph, spec.scale, args->size)
+                                        : patternSheet(Pattern::build(spec), spec.scale, args->size, name);
             const Image& img = ps.pattern;
             const Image& sheet = ps.sheet;
 

@@ -27,6 +27,8 @@ void registerNodes(CLI::App& app) {
             for (const auto& p : n["params"]) {
                 std::string range;
                 if (p.contains("min")) range = "[" + formatValue(p["min"]) + ", " + formatValue(p["max"]) + "]";
+                for (const auto& c : p.value("choices", nlohmann::json::array()))
+                    range += (range.empty() ? "" : "|") + c.get<std::string>();
                 const auto& d = p["default"];
                 const std::string fallback = d.is_null()     ? (p["type"] == "seed" ? "(derived)" : "(required)")
                                              : d.is_number() ? formatValue(d.get<double>())

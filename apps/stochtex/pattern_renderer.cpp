@@ -19,15 +19,24 @@ void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
     if (flags.gpu && !isGpuFilter(options)) throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
 }
 
-PatternRenderer::PatternRenderer(const Pattern& pattern, const FilterOptions& options, const DeviceFlags& flags) {
-    if (!flags.gpu) {
-        cpu_ = std::make_unique<FilteredPattern>(pattern, options);
+PatternRenderer::PatternRenderer(const PatternSpec& spec, const FilterOptions& options, const DeviceFlags& flags) {
+    checkDeviceFilter(flags, options);
+    if (spec.graph && !foldsIntoPattern(*spec.graph)) {
+        if (flags.gpu)
+            throw InputError(spec.name + ": --gpu: a graph with a non-linear node before its output renders on the "
+                                         "CPU only so far");
+        graph_ = std::make_unique<GraphPattern>(GraphPattern::build(spec));
+        filteredGraph_ = std::make_unique<FilteredGraph>(*graph_, options);
         return;
     }
-    checkDeviceFilter(flags, options);
+    pattern_ = std::make_unique<Pattern>(Pattern::build(spec));
+    if (!flags.gpu) {
+        cpu_ = std::make_unique<FilteredPattern>(*pattern_, options);
+        return;
+    }
     context_ = GlContext::headless();
     device_ = context_->describe();
-    gpu_ = std::make_unique<GpuPattern>(pattern, *context_, options);
+    gpu_ = std::make_unique<GpuPattern>(*pattern_, *context_, options);
     gpu_->setDerivatives(flags.derivatives);
     gpu_->setPipeline(flags.pipeline);
 }
@@ -35,6 +44,7 @@ PatternRenderer::PatternRenderer(const Pattern& pattern, const FilterOptions& op
 PatternRenderer::~PatternRenderer() = default;
 
 Image PatternRenderer::render(const Camera& camera, const Progress& progress) {
+    if (filteredGraph_) return filteredGraph_->render(camera, progress);
     return gpu_ ? gpu_->render(camera) : cpu_->render(camera, progress);
 }
 

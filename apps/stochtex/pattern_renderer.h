@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common.h"
+#include "stochtex/pattern/graph_pattern.h"
 
 namespace stochtex::cli {
 
@@ -23,8 +24,9 @@ void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options);
 
 class PatternRenderer {
 public:
-    // pattern must outlive the renderer; checks checkDeviceFilter again.
-    PatternRenderer(const Pattern& pattern, const FilterOptions& options, const DeviceFlags& flags);
+    // Builds the pattern, or the graph (GraphPattern, on the CPU) when it
+    // is not a pattern H∘N; checks checkDeviceFilter again.
+    PatternRenderer(const PatternSpec& spec, const FilterOptions& options, const DeviceFlags& flags);
     ~PatternRenderer();
     // progress: the fraction of rows done (CPU renders; a GPU render is quick).
     Image render(const Camera& camera, const Progress& progress = {});
@@ -34,7 +36,10 @@ public:
 private:
     std::unique_ptr<GlContext> context_;
     std::unique_ptr<GpuPattern> gpu_;
+    std::unique_ptr<Pattern> pattern_;
     std::unique_ptr<FilteredPattern> cpu_;
+    std::unique_ptr<GraphPattern> graph_;
+    std::unique_ptr<FilteredGraph> filteredGraph_;
     std::string device_ = "CPU";
 };
 

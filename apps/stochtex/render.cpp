@@ -64,8 +64,7 @@ void registerRender(CLI::App& app) {
         checkDeviceFilter(args->device, args->options);  // before the pattern is built
         ProgressLine progress("render");
         progress.update(0.0, "building the pattern and its tables");
-        const Pattern pattern = Pattern::build(spec);
-        PatternRenderer renderer(pattern, args->options, args->device);
+        PatternRenderer renderer(spec, args->options, args->device);
         const Image image = renderer.render(camera, progressPart(progress.callback(), 0.0, 1.0, "rendering"));
         progress.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

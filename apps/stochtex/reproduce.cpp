@@ -2,7 +2,8 @@
 // Table 1 (estimator errors), Figure 4 (filtered vs reference images and
 // error maps), Figures 7–9 (colormap layouts, palettes, noise spectra),
 // Figure 10 (phasor variants; procedural phasor noise beside ours), Figure 11
-// (filtering the phasor sine pattern), Figure 12 (LEAN-mapped normal maps) — and
+// (filtering the phasor sine pattern), Figure 12 (LEAN-mapped normal maps),
+// Figure 14 (a texture graph filtered by moment matching) — and
 // `all`, which runs them and writes an index.html (reproduce_all.cpp).
 #include "common.h"
 #include "reproduce.h"
@@ -11,7 +12,7 @@ namespace stochtex::cli {
 
 void registerReproduce(CLI::App& app) {
     auto args = std::make_shared<ReproduceArgs>();
-    auto* cmd = app.add_subcommand("reproduce", "Regenerate the paper's evidence: table1, figure4, figure10, figure11, figure12, figures7-9, all");
+    auto* cmd = app.add_subcommand("reproduce", "Regenerate the paper's evidence: table1, figure4, figure10, figure11, figure12, figure14, figures7-9, all");
     cmd->require_subcommand(1);
     auto* table1Cmd = cmd->add_subcommand("table1", "Table 1: mean errors of μ̂ and σ̂ against exact footprint statistics");
     addReproduceFlags(*table1Cmd, *args, true, nullptr);
@@ -67,6 +68,7 @@ void registerReproduce(CLI::App& app) {
             return r.table.markdown() + "\nwrote figure12.png, figure12.csv and the images to " + args->dir;
         });
     });
+    registerReproduceFigure14(*cmd, args);
     registerReproduceAll(*cmd, args);
 }
 

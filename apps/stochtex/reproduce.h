@@ -7,6 +7,7 @@
 
 #include "common.h"
 #include "stochtex/core/progress.h"
+#include "stochtex/studies/graph_filtering.h"
 #include "stochtex/studies/normal_maps.h"
 #include "stochtex/studies/paper.h"
 #include "stochtex/studies/phasor_figures.h"
@@ -21,6 +22,8 @@ struct ReproduceArgs {
     std::optional<double> roughness;  // figure 12: overrides the normal map's
     Figure4Options figure11 = figure11Options();
     Figure10Options figure10;
+    Figure14Options figure14 = figure14Options();
+    std::string figure14Pattern;  // a graph file instead of the preset
     int sheetSize = 384;
     int threads = 0;
 };
@@ -55,5 +58,7 @@ void runReproduction(const ReproduceArgs& args, const std::string& name,
                      const std::function<std::string(const Progress&)>& run);
 
 void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> args);
+// `reproduce figure14` (reproduce_figure14.cpp).
+void registerReproduceFigure14(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> args);
 
 }  // namespace stochtex::cli

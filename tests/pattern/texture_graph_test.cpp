@@ -1,6 +1,7 @@
 // Texture graphs (pattern/texture_graph.h, graph_nodes.h): parsing and
 // every refusal with its JSON pointer, equivalence with a preset, and the
 // folding of linear nodes into examples.
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/texture_graph.h"
 
 #include <gtest/gtest.h>
@@ -172,7 +173,8 @@ TEST(TextureGraph, EveryNodeBuildsAndRendersInItsSampleGraph) {
     for (const NodeInfo& node : graphNodes()) {
         const std::string text = sampleNodeGraph(node, file.string()).dump();
         try {
-            const Pattern p = Pattern::build(parse(text));
+            // GraphPattern evaluates any graph (a folding one as its Pattern would).
+            const GraphPattern p = GraphPattern::build(parse(text));
             const Image out = p.render(View{32, 32, 1.0});
             double lo = 1e9, hi = -1e9;
             for (float v : out.data()) lo = std::min(lo, double(v)), hi = std::max(hi, double(v));

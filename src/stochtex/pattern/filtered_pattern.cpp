@@ -10,21 +10,6 @@ namespace stochtex {
 
 namespace {
 
-// H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)) on H's own grid.
-ColormapTable foldInverseTransforms(const Pattern& p) {
-    const ColormapTable& h = p.colormap();
-    if (!p.example(0).gaussianized() && !p.example(1).gaussianized()) return h;
-    Image t(h.resolutionX(), h.resolutionY(), 3, Image::Uninitialized{});
-    for (int j = 0; j < t.height(); ++j)
-        for (int i = 0; i < t.width(); ++i) {
-            const float x = p.example(0).toOutput(float(i) / float(t.width() - 1));
-            const float y = p.example(1).toOutput(float(j) / float(t.height() - 1));
-            const Rgb c = h.sample(x, y);
-            for (int k = 0; k < 3; ++k) t.at(i, j, k) = c[size_t(k)];
-        }
-    return ColormapTable(t);
-}
-
 // The sky is the pattern's average colour E[H(N)], one colour whatever the
 // filter mode: H' convolved exactly (eq. 5, by numerical integration) with
 // the Gaussian of the whole example's statistics, in blending space (the
@@ -73,6 +58,19 @@ FootprintStats fieldStatistics(const TiledField& f) {
 
 }  // namespace
 
+ColormapTable foldInverseTransforms(const ColormapTable& h, const NoiseExample* x, const NoiseExample* y) {
+    const bool foldX = x && x->gaussianized(), foldY = y && y->gaussianized();
+    if (!foldX && !foldY) return h;
+    Image t(h.resolutionX(), h.resolutionY(), 3, Image::Uninitialized{});
+    for (int j = 0; j < t.height(); ++j)
+        for (int i = 0; i < t.width(); ++i) {
+            const float a = float(i) / float(t.width() - 1), b = float(j) / float(t.height() - 1);
+            const Rgb c = h.sample(foldX ? x->toOutput(a) : a, foldY ? y->toOutput(b) : b);
+            for (int k = 0; k < 3; ++k) t.at(i, j, k) = c[size_t(k)];
+        }
+    return ColormapTable(t);
+}
+
 NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames, name, "filter"); }
 
 std::string filterName(const FilterOptions& options) {
@@ -94,7 +92,7 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
       options_(options),
       source_(options.source),
       field_(&pattern.tiledField()),
-      colormap_(foldInverseTransforms(pattern)) {
+      colormap_(foldInverseTransforms(pattern.colormap(), &pattern.example(0), &pattern.example(1))) {
     if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
         throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
                                                  std::to_string(options.aniso));

@@ -14,9 +14,11 @@ const char* paramTypeName(ParamType t) {
         case ParamType::Seed: return "seed";
         case ParamType::Path: return "path";
         case ParamType::Components: return "components";
-        case ParamType::Colormap: break;
+        case ParamType::Colormap: return "colormap";
+        case ParamType::Curve: return "curve";
+        case ParamType::Choice: break;
     }
-    return "colormap";
+    return "choice";
 }
 
 const std::vector<NodeInfo>& graphNodes() {
@@ -63,6 +65,27 @@ const std::vector<NodeInfo>& graphNodes() {
          PortType::Colour,
          {{"colormap", ParamType::Colormap, "A COLORMAP: analytic, phasor, image or painted (docs/PATTERNS.md)",
            json(), 0, 0, json::parse(R"({"type": "gaussian"})")}}},
+        {"colormap_field", NodeKind::ColormapField, "transfer",
+         "A 2D transfer function read as a field: one channel, or the luminance, of H(x, y) (paper Fig. 14)",
+         {{"x", PortType::Field, "The colormap's horizontal coordinate"},
+          {"y", PortType::Field, "The colormap's vertical coordinate"}},
+         PortType::Field,
+         {{"colormap", ParamType::Colormap, "A COLORMAP (docs/PATTERNS.md); \"transfer\": \"linear\" reads its colours as data",
+           json(), 0, 0, json::parse(R"({"type": "phasor", "profile": "sine"})")},
+          {"channel", ParamType::Choice, "The channel of H read: red, green, blue, or luminance (Rec. 709, linear)",
+           "luminance", 0, 0, nullptr, {"red", "green", "blue", "luminance"}}}},
+        {"curve", NodeKind::Curve, "transfer", "A 1D transfer function: the piecewise-linear curve through the points",
+         {{"input", PortType::Field, "The field (read in [0, 1], clamped)"}},
+         PortType::Field,
+         {{"points", ParamType::Curve, "[[x, y], ...]: x strictly increasing in [0, 1], y in [-100, 100]", json(), 0,
+           0, json::parse("[[0, 0], [0.5, 1], [1, 0]]")},
+          {"resolution", ParamType::Integer, "Entries of the table the curve is sampled into", 256, 2, 1024}}},
+        {"mix", NodeKind::Mix, "colour", "a + t·(b − a): two colours mixed by a field (t not clamped)",
+         {{"a", PortType::Colour, "The colour where t = 0"},
+          {"b", PortType::Colour, "The colour where t = 1"},
+          {"t", PortType::Field, "The mixing field"}},
+         PortType::Colour,
+         {}},
     };
     return nodes;
 }
@@ -71,6 +94,21 @@ const NodeInfo* findGraphNode(const std::string& name) {
     for (const NodeInfo& n : graphNodes())
         if (n.name == name) return &n;
     return nullptr;
+}
+
+bool isLinearNode(NodeKind kind) {
+    switch (kind) {
+        case NodeKind::SpectralNoise:
+        case NodeKind::Exemplar:
+        case NodeKind::Derivative:
+        case NodeKind::Affine:
+        case NodeKind::Sum: return true;
+        case NodeKind::Colormap:
+        case NodeKind::ColormapField:
+        case NodeKind::Curve:
+        case NodeKind::Mix: break;
+    }
+    return false;
 }
 
 nlohmann::json graphNodesJson() {
@@ -83,6 +121,7 @@ nlohmann::json graphNodesJson() {
             nlohmann::json j = {{"name", p.name}, {"type", paramTypeName(p.type)}, {"description", p.description},
                                 {"default", p.fallback}};
             if (p.type == ParamType::Number || p.type == ParamType::Integer) j["min"] = p.min, j["max"] = p.max;
+            if (p.type == ParamType::Choice) j["choices"] = p.choices;
             params.push_back(std::move(j));
         }
         all.push_back({{"type", n.name},
@@ -107,8 +146,16 @@ nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplar
     json nodes = json::object();
     json self = withParams(node);
     for (const PortInfo& in : node.inputs) {
-        nodes["in_" + in.name] = withParams(*findGraphNode("spectral_noise"));
-        self[in.name] = "in_" + in.name;
+        const std::string id = "in_" + in.name;
+        self[in.name] = id;
+        if (in.type == PortType::Field) {
+            nodes[id] = withParams(*findGraphNode("spectral_noise"));
+            continue;
+        }
+        json colours = withParams(*findGraphNode("colormap"));
+        colours["x"] = colours["y"] = id + "_noise";
+        nodes[id] = colours;
+        nodes[id + "_noise"] = withParams(*findGraphNode("spectral_noise"));
     }
     nodes["node"] = self;
     std::string output = "node";

@@ -5,12 +5,14 @@
 // graph, `stochtex nodes`, and the per-node benchmarks; a new node is a new
 // entry here and its operation in texture_graph.cpp.
 //
-// The nodes so far are those a graph of the form "linear part → one
-// transfer function" needs, which the paper's estimators filter exactly:
-// sources (spectral noise, exemplar), linear operators of fields (a
+// Sources (spectral noise, exemplar) and linear operators of fields (a
 // directional derivative, an affine remap, a weighted sum; linear maps of
 // Gaussian fields are Gaussian, so each folds into the example the field is
-// tiled from), and the 2D transfer function H (a colormap).
+// tiled from) make the linear part, which the paper's estimators filter
+// exactly. Transfer functions (the 2D colormap H, H read as a field, a 1D
+// curve) and the mix of colours by a field are non-linear: a graph with one
+// of them before its output is evaluated per pixel and filtered by moment
+// matching (graph_pattern.h).
 #include <string>
 #include <vector>
 
@@ -30,6 +32,8 @@ enum class ParamType {
     Path,        // an image file, relative to the graph file's folder
     Components,  // spectrum components, as a pattern file's noise (docs/PATTERNS.md)
     Colormap,    // a COLORMAP object, as a pattern file's (docs/PATTERNS.md)
+    Curve,       // [[x, y], ...]: at least 2 points, x strictly increasing in [0, 1]
+    Choice,      // one of ParamInfo::choices (a string)
 };
 const char* paramTypeName(ParamType t);
 
@@ -42,6 +46,7 @@ struct ParamInfo {
     // For a required parameter: a typical value, used where a graph is built
     // from the table alone (sampleNodeGraph). Null for paths (the caller's).
     nlohmann::json sample = nullptr;
+    std::vector<std::string> choices = {};  // Choice
 };
 
 struct PortInfo {
@@ -50,12 +55,12 @@ struct PortInfo {
     std::string description;
 };
 
-enum class NodeKind { SpectralNoise, Exemplar, Derivative, Affine, Sum, Colormap };
+enum class NodeKind { SpectralNoise, Exemplar, Derivative, Affine, Sum, Colormap, ColormapField, Curve, Mix };
 
 struct NodeInfo {
     std::string name;  // the JSON "type"
     NodeKind kind;
-    std::string category;  // source, linear, transfer
+    std::string category;  // source, linear, transfer, colour
     std::string description;
     std::vector<PortInfo> inputs;
     PortType output;
@@ -66,15 +71,20 @@ struct NodeInfo {
 const std::vector<NodeInfo>& graphNodes();
 // The node called `name`, or null.
 const NodeInfo* findGraphNode(const std::string& name);
+// Whether a node's output is linear in its sources' examples (sources and
+// linear operators), so that it folds into an example.
+bool isLinearNode(NodeKind kind);
+
 // The whole table as JSON (for `stochtex nodes --json` and user interfaces):
 // [{type, category, description, inputs: [{name, type, description}],
-//   output, params: [{name, type, description, default, min, max}]}].
+//   output, params: [{name, type, description, default, min, max, choices}]}].
 nlohmann::json graphNodesJson();
 
 // The smallest graph file around a node, from the table alone: each field
-// input fed by its own spectral_noise (sample parameters), the node with its
-// defaults and samples (an exemplar reads `exemplarPath`), and a colormap
-// reading it when it gives a field. Used by the per-node benchmarks and the
+// input fed by its own spectral_noise (sample parameters) and each colour
+// input by a colormap of one, the node with its defaults and samples (an
+// exemplar reads `exemplarPath`), and a colormap reading it when it gives a
+// field. Used by the per-node benchmarks and the
 // test that every node builds and renders.
 nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplarPath);
 

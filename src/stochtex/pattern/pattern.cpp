@@ -15,6 +15,10 @@ namespace stochtex {
 Pattern Pattern::build(const PatternSpec& spec) {
     std::array<NoiseExample, 2> examples;
     if (spec.graph) {
+        if (!foldsIntoPattern(*spec.graph))
+            throw InputError(spec.name + ": this graph has a non-linear node before its output (\"" + spec.graph->output +
+                             "\" reads one), so it is not a pattern H∘N of two fields; it renders on the CPU "
+                             "(docs/GRAPHS.md says where such graphs go)");
         GraphFields fields = buildGraphFields(*spec.graph, spec.seed, spec.name);
         const uint32_t sx = deriveSeed(spec.seed, 1);
         const uint32_t sy = spec.offsets == OffsetMode::Shared ? sx : deriveSeed(spec.seed, 2);

@@ -25,6 +25,24 @@ std::string knownTypes() {
     return s;
 }
 
+// A curve's points: [[x, y], ...], x strictly increasing in [0, 1].
+std::vector<std::array<double, 2>> parseCurve(const JsonReader& r) {
+    constexpr size_t kMaxPoints = 1024;
+    const size_t count = r.arraySize();
+    if (count < 2 || count > kMaxPoints)
+        r.fail("a curve needs 2 to " + std::to_string(kMaxPoints) + " points [x, y], got " + std::to_string(count));
+    std::vector<std::array<double, 2>> points;
+    for (size_t i = 0; i < count; ++i) {
+        const JsonReader p = r.at(i);
+        if (p.arraySize() != 2) p.fail("a point is [x, y]");
+        const double x = p.at(0).number(0, 1), y = p.at(1).number(-100, 100);
+        if (!points.empty() && !(x > points.back()[0]))
+            p.at(0).fail("x must increase from point to point (after " + std::to_string(points.back()[0]) + ")");
+        points.push_back({x, y});
+    }
+    return points;
+}
+
 // One node's members: its type, its input ports, its parameters by the table.
 GraphNode parseNode(const JsonReader& n, const std::string& id, const std::filesystem::path& baseDir) {
     if (!validId(id)) n.fail("node ids are 1–64 letters, digits, '_' or '-'");
@@ -73,6 +91,18 @@ GraphNode parseNode(const JsonReader& n, const std::string& id, const std::files
                 break;
             }
             case ParamType::Colormap: g.colormap = parseColormapSpec(n.at(p.name), baseDir); break;
+            case ParamType::Curve: g.curve = parseCurve(n.at(p.name)); break;
+            case ParamType::Choice: {
+                const std::string value = n.has(p.name) ? n.at(p.name).string() : p.fallback.get<std::string>();
+                const auto it = std::find(p.choices.begin(), p.choices.end(), value);
+                if (it == p.choices.end()) {
+                    std::string names;
+                    for (const std::string& c : p.choices) names += (names.empty() ? "" : ", ") + c;
+                    n.at(p.name).fail("unknown value \"" + value + "\"; expected one of " + names);
+                }
+                g.numbers[p.name] = double(it - p.choices.begin());
+                break;
+            }
         }
     }
     // The sources' example descriptions, as a pattern file's noises.
@@ -152,6 +182,23 @@ TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path&
     if (it->second.info->output != PortType::Colour)
         out.fail("the output must be a colour, but \"" + graph.output + "\" (" + it->second.info->name + ") gives a field");
     return graph;
+}
+
+bool foldsIntoPattern(const TextureGraph& graph) {
+    const GraphNode& out = graph.node(graph.output);
+    if (out.info->kind != NodeKind::Colormap) return false;
+    // Every node upstream of the output's inputs must be linear.
+    std::vector<std::string> todo{out.inputs.at("x"), out.inputs.at("y")};
+    std::set<std::string> seen;
+    while (!todo.empty()) {
+        const std::string id = todo.back();
+        todo.pop_back();
+        if (!seen.insert(id).second) continue;
+        const GraphNode& g = graph.node(id);
+        if (!isLinearNode(g.info->kind)) return false;
+        for (const auto& [port, from] : g.inputs) todo.push_back(from);
+    }
+    return true;
 }
 
 uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id) {
@@ -239,9 +286,12 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
             for (size_t i = 0; i < v.data().size(); ++i) v.data()[i] = wa * v.data()[i] + wb * b.values().data()[i];
             return NoiseExample(std::move(v));
         }
-        case NodeKind::Colormap: break;
+        case NodeKind::Colormap:
+        case NodeKind::ColormapField:
+        case NodeKind::Curve:
+        case NodeKind::Mix: break;
     }
-    throw std::logic_error("buildGraphField: node " + id + " is not a field");
+    throw std::logic_error("buildGraphField: node " + id + " is not linear in its sources");
 }
 
 }  // namespace
@@ -250,6 +300,14 @@ NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, u
                              const std::string& context) {
     FieldCache cache;
     return buildFieldOnce(graph, id, patternSeed, context, cache);
+}
+
+std::vector<NoiseExample> buildGraphFields(const TextureGraph& graph, const std::vector<std::string>& ids,
+                                           uint32_t patternSeed, const std::string& context) {
+    FieldCache cache;
+    std::vector<NoiseExample> out;
+    for (const std::string& id : ids) out.push_back(buildFieldOnce(graph, id, patternSeed, context, cache));
+    return out;
 }
 
 GraphFields buildGraphFields(const TextureGraph& graph, uint32_t patternSeed, const std::string& context) {

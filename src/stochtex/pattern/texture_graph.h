@@ -41,7 +41,9 @@ struct GraphNode {
     std::map<std::string, double> numbers;      // Number, Integer, Boolean (0/1) parameters, defaults filled
     std::optional<uint32_t> seed;               // the Seed parameter when given
     NoiseSpec noise;                            // sources: the example's description
-    ColormapSpec colormap;                      // colormap nodes
+    ColormapSpec colormap;                      // colormap and colormap_field nodes
+    std::vector<std::array<double, 2>> curve;   // curve nodes: the points
+    // Choice parameters: the index of the value in ParamInfo::choices (in numbers).
 };
 
 struct TextureGraph {
@@ -52,6 +54,11 @@ struct TextureGraph {
 
 // Parses and checks the graph members ("nodes", "output") of a pattern file.
 TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path& baseDir);
+
+// Whether the graph is "linear part → colormap": its output is a colormap
+// node whose inputs are linear in the sources, so that it folds into a
+// Pattern (two examples and H). Other graphs are evaluated by GraphPattern.
+bool foldsIntoPattern(const TextureGraph& graph);
 
 // The seed of a source node without an explicit one: from the pattern seed
 // and the node's id (so adding or renaming another node changes nothing).
@@ -67,10 +74,13 @@ struct GraphFields {
 };
 GraphFields buildGraphFields(const TextureGraph& graph, uint32_t patternSeed, const std::string& context);
 
-// The example of any field node, linear nodes folded in (1 channel, W×W;
+// The example of any linear field node (isLinearNode), linear nodes folded in (1 channel, W×W;
 // a Gaussianized exemplar's values are T(E)). Each node is built once, so a
 // node feeding many is not rebuilt for each (time linear in the nodes).
 NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
                              const std::string& context);
+// The examples of several linear field nodes, each node built once for all.
+std::vector<NoiseExample> buildGraphFields(const TextureGraph& graph, const std::vector<std::string>& ids,
+                                           uint32_t patternSeed, const std::string& context);
 
 }  // namespace stochtex

@@ -1,5 +1,6 @@
 #include "stochtex/studies/pattern_sheet.h"
 
+#include "stochtex/analysis/plot.h"
 #include "stochtex/image/colour_space.h"
 
 #include <algorithm>
@@ -65,6 +66,25 @@ PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const 
     drawLabel(sheet, big + small, big, small, "noise N_y");
     out.sheet = std::move(sheet);
     return out;
+}
+
+}  // namespace stochtex
+
+namespace stochtex {
+
+PatternSheet graphSheet(const GraphPattern& graph, const TextureGraph& nodes, double scale, int size) {
+    // The stages at half the side over the same region.
+    const int side = std::max(32, size / 2);
+    const View view{side, side, scale * size / side};
+    std::vector<Image> images;
+    std::vector<std::string> captions;
+    const auto add = [&](const std::string& id) {
+        images.push_back(srgbFromLinear(graph.renderNode(view, id)));
+        captions.push_back(id + " (" + nodes.node(id).info->name + ")");
+    };
+    for (const std::string& id : graph.leafIds()) add(id);
+    for (const GraphPattern::Operation& op : graph.operations()) add(op.id);
+    return {graph.render(View{size, size, scale}), sheet({images}, {captions})};
 }
 
 }  // namespace stochtex

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "stochtex/image/image.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern.h"
 
 namespace stochtex {
@@ -13,5 +14,11 @@ struct PatternSheet {
     Image sheet;    // pattern | H, H where N falls / N_x, N_y (2·size × size), in sRGB codes
 };
 PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const std::string& label);
+
+// A graph evaluated per pixel (graph_pattern.h) and its stages: each leaf
+// and operation node over the same region at half the side (fields as
+// gray), in the program's order, the last being the pattern, captioned
+// "id (type)".
+PatternSheet graphSheet(const GraphPattern& graph, const TextureGraph& nodes, double scale, int size);
 
 }  // namespace stochtex

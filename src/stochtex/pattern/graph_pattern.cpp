@@ -1,0 +1,436 @@
+#include "stochtex/pattern/graph_pattern.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/hash.h"
+#include "stochtex/core/parallel.h"
+#include "stochtex/filter/pyramid.h"
+#include "stochtex/kernel/graph_ops.h"
+
+namespace stochtex {
+
+namespace {
+
+using kernel::vec2;
+using kernel::vec3;
+
+vec3 toVec(const Rgb& c) { return vec3(c[0], c[1], c[2]); }
+Rgb toRgb(const vec3& c) { return {c.x, c.y, c.z}; }
+
+// A table as an image of its entries, each through `entry` (Rx×Ry×3).
+template <class EntryFn>
+ColormapTable tabulate(int rx, int ry, EntryFn&& entry) {
+    Image t(rx, ry, 3, Image::Uninitialized{});
+    for (int j = 0; j < ry; ++j)
+        for (int i = 0; i < rx; ++i) {
+            const vec3 e = entry(i, j);
+            t.at(i, j, 0) = e.x;
+            t.at(i, j, 1) = e.y;
+            t.at(i, j, 2) = e.z;
+        }
+    return ColormapTable(t);
+}
+
+// A colormap_field's table from H: (g, g², 0) with g the asked channel.
+ColormapTable fieldTable(const ColormapTable& h, int channel) {
+    return tabulate(h.resolutionX(), h.resolutionY(), [&](int i, int j) {
+        return kernel::momentEntry(kernel::graphChannel(toVec(h.entry(i, j)), channel));
+    });
+}
+
+// The piecewise-linear curve through the points at x (clamped to the ends).
+double curveAt(const std::vector<std::array<double, 2>>& points, double x) {
+    if (x <= points.front()[0]) return points.front()[1];
+    for (size_t k = 1; k < points.size(); ++k)
+        if (x <= points[k][0]) {
+            const auto &a = points[k - 1], &b = points[k];
+            return a[1] + (x - a[0]) / (b[0] - a[0]) * (b[1] - a[1]);
+        }
+    return points.back()[1];
+}
+
+// A curve's table: R entries of (f, f², 0) on two identical rows; with a
+// Gaussianized input, f∘T⁻¹ (the blending space's curve).
+ColormapTable curveTable(const std::vector<std::array<double, 2>>& points, int resolution, const NoiseExample* input) {
+    return tabulate(resolution, 2, [&](int i, int) {
+        float x = float(i) / float(resolution - 1);
+        if (input) x = input->toOutput(x);
+        return kernel::momentEntry(float(curveAt(points, x)));
+    });
+}
+
+}  // namespace
+
+GraphPattern GraphPattern::build(const PatternSpec& spec) {
+    if (!spec.graph) throw std::invalid_argument("GraphPattern::build: the pattern is not a graph");
+    const TextureGraph& graph = *spec.graph;
+    const std::string& context = spec.name;
+    // Which nodes are linear in the sources (fold into an example).
+    std::map<std::string, bool> linear;
+    for (const GraphNode& g : graph.nodes) {
+        bool l = isLinearNode(g.info->kind);
+        for (const auto& port : g.inputs) l = l && linear.at(port.second);
+        linear[g.id] = l;
+    }
+    // The nodes the output depends on, in the graph's order (inputs first).
+    std::set<std::string> needed{graph.output};
+    for (auto it = graph.nodes.rbegin(); it != graph.nodes.rend(); ++it)
+        if (needed.count(it->id))
+            for (const auto& port : it->inputs) needed.insert(port.second);
+    // The operations: every needed node that is not linear in the sources;
+    // the leaves: the linear nodes they read, in the order first read.
+    std::vector<const GraphNode*> ops;
+    GraphPattern p;
+    for (const GraphNode& g : graph.nodes) {
+        if (!needed.count(g.id) || linear.at(g.id)) continue;
+        if (g.info->kind == NodeKind::Derivative)
+            throw InputError(context + ": node \"" + g.id + "\" (derivative): its input \"" + g.inputs.at("input") +
+                             "\" is not linear in the sources, so it has no example to differentiate");
+        ops.push_back(&g);
+        for (const PortInfo& port : g.info->inputs) {
+            const std::string& from = g.inputs.at(port.name);
+            if (linear.at(from) && std::find(p.leafIds_.begin(), p.leafIds_.end(), from) == p.leafIds_.end())
+                p.leafIds_.push_back(from);
+        }
+    }
+    std::map<std::string, int> slot;
+    for (size_t k = 0; k < p.leafIds_.size(); ++k) slot[p.leafIds_[k]] = int(k);
+    for (size_t k = 0; k < ops.size(); ++k) slot[ops[k]->id] = int(p.leafIds_.size() + k);
+
+    // The leaves' examples and tiles: leaf k's offsets are seeded as a
+    // pattern's noise k (deriveSeed(seed, k + 1)), or all with the first
+    // seed when offsets are shared.
+    const std::vector<NoiseExample> examples = buildGraphFields(graph, p.leafIds_, spec.seed, context);
+    const bool shared = spec.offsets == OffsetMode::Shared;
+    std::vector<TilingBlendingNoise> noises;
+    for (size_t k = 0; k < examples.size(); ++k)
+        noises.emplace_back(std::make_shared<const NoiseExample>(examples[k]),
+                            deriveSeed(spec.seed, shared ? 1u : uint32_t(k + 1)));
+    for (size_t k = 0; k < noises.size();) {
+        const bool pair = k + 1 < noises.size() && examples[k + 1].size() == examples[k].size();
+        const TilingBlendingNoise& second = noises[pair ? k + 1 : k];
+        const bool oneSeed = second.offsetSeed() == noises[k].offsetSeed();
+        p.leafLocation_.push_back({int(p.pairs_.size()), 0});
+        if (pair) p.leafLocation_.push_back({int(p.pairs_.size()), 1});
+        p.pairs_.emplace_back(std::vector<TilingBlendingNoise>{noises[k], second}, spec.gridDensity,
+                              oneSeed ? OffsetSharing::Shared : OffsetSharing::Independent);
+        k += pair ? 2 : 1;
+    }
+
+    // The program, with its tables.
+    const auto gaussianizedLeaf = [&](const std::string& id) -> const NoiseExample* {
+        const auto it = slot.find(id);
+        if (it == slot.end() || it->second >= p.leafCount()) return nullptr;
+        const NoiseExample& e = examples[size_t(it->second)];
+        return e.gaussianized() ? &e : nullptr;
+    };
+    for (const GraphNode* g : ops) {
+        Operation op;
+        op.id = g->id;
+        op.kind = g->info->kind;
+        for (size_t i = 0; i < g->info->inputs.size(); ++i) {
+            const std::string& from = g->inputs.at(g->info->inputs[i].name);
+            op.inputs[i] = slot.at(from);
+            const bool table = op.kind == NodeKind::Colormap || op.kind == NodeKind::ColormapField ||
+                               op.kind == NodeKind::Curve;
+            if (!table && gaussianizedLeaf(from))
+                throw InputError(context + ": node \"" + g->id + "\" (" + g->info->name + "): its input \"" + from +
+                                 "\" is a Gaussianized exemplar, whose field only a transfer function reads directly; "
+                                 "give it \"gaussianize\": false to use it here");
+        }
+        const std::string& x = g->info->inputs.empty() ? std::string() : g->inputs.at(g->info->inputs[0].name);
+        switch (op.kind) {
+            case NodeKind::Colormap:
+            case NodeKind::ColormapField: {
+                const std::string& y = g->inputs.at("y");
+                const ColormapTable h = buildColormap(g->colormap);
+                const ColormapTable blended = foldInverseTransforms(h, gaussianizedLeaf(x), gaussianizedLeaf(y));
+                const int channel = int(g->numbers.count("channel") ? g->numbers.at("channel") : 0);
+                if (op.kind == NodeKind::Colormap)
+                    p.tables_.push_back({h, blended, false});
+                else
+                    p.tables_.push_back({fieldTable(h, channel), fieldTable(blended, channel), true});
+                op.table = int(p.tables_.size()) - 1;
+                break;
+            }
+            case NodeKind::Curve: {
+                const int resolution = int(g->numbers.at("resolution"));
+                p.tables_.push_back({curveTable(g->curve, resolution, nullptr),
+                                     curveTable(g->curve, resolution, gaussianizedLeaf(x)), true});
+                op.table = int(p.tables_.size()) - 1;
+                break;
+            }
+            case NodeKind::Affine:
+                op.parameters = {float(g->numbers.at("scale")), float(g->numbers.at("offset"))};
+                break;
+            case NodeKind::Sum:
+                op.parameters = {float(g->numbers.at("weight_a")), float(g->numbers.at("weight_b"))};
+                break;
+            case NodeKind::Mix: break;
+            case NodeKind::SpectralNoise:
+            case NodeKind::Exemplar:
+            case NodeKind::Derivative: throw std::logic_error("GraphPattern::build: a source as an operation");
+        }
+        p.operations_.push_back(std::move(op));
+    }
+    return p;
+}
+
+Rgb GraphPattern::evaluate(const BlendStencil& s, float fu, float fv, int lastSlot) const {
+    if (lastSlot < 0) lastSlot = outputSlot();
+    std::array<vec3, kMaxGraphNodes> slots;  // leaves, then one per operation (each a node)
+    for (int k = 0; k < leafCount(); ++k) {
+        const TilingBlendingNoise& n = leaf(k);
+        slots[size_t(k)] = vec3(n.example().toOutput(n.blend(s, fu, fv)), 0.0f, 0.0f);
+    }
+    if (lastSlot < leafCount()) return toRgb(slots[size_t(lastSlot)]);
+    size_t out = size_t(leafCount());
+    for (const Operation& op : operations_) {
+        const vec3 a = slots[size_t(op.inputs[0])];
+        const vec3 b = op.inputs[1] >= 0 ? slots[size_t(op.inputs[1])] : vec3(0.0f);
+        switch (op.kind) {
+            case NodeKind::Colormap:
+            case NodeKind::ColormapField:
+                slots[out] = toVec(tables_[size_t(op.table)].point.sample(a.x, b.x));
+                break;
+            case NodeKind::Curve: slots[out] = toVec(tables_[size_t(op.table)].point.sample(a.x, 0.5f)); break;
+            case NodeKind::Affine:
+                slots[out] = vec3(kernel::affineValue(a.x, op.parameters[0], op.parameters[1]), 0.0f, 0.0f);
+                break;
+            case NodeKind::Sum:
+                slots[out] = vec3(kernel::sumValue(a.x, b.x, op.parameters[0], op.parameters[1]), 0.0f, 0.0f);
+                break;
+            case NodeKind::Mix: slots[out] = kernel::mixColour(a, b, slots[size_t(op.inputs[2])].x); break;
+            default: throw std::logic_error("GraphPattern: a source as an operation");
+        }
+        if (int(out) == lastSlot) break;
+        ++out;
+    }
+    return toRgb(slots[size_t(lastSlot)]);
+}
+
+Rgb GraphPattern::evaluate(double u, double v) const {
+    return evaluate(triangleGrid(u, v, gridDensity()), periodFraction(u), periodFraction(v));
+}
+
+template <class PixelFn>
+Image GraphPattern::renderPixels(const View& view, const Progress& progress, PixelFn&& pixel) const {
+    validateView(view);
+    Image out(view.width, view.height, 3, Image::Uninitialized{});
+    const double invW = 1.0 / double(exampleSize());
+    parallelRows(
+        view.height,
+        [&](int y0, int y1) {
+            for (int py = y0; py < y1; ++py) {
+                const double v = (view.offsetV + (py + 0.5) * view.scale) * invW;
+                const TriangleGridRow grid(v, gridDensity());
+                const float fv = periodFraction(v);
+                float* row = out.row(py);
+                for (int px = 0; px < view.width; ++px) {
+                    const double u = (view.offsetU + (px + 0.5) * view.scale) * invW;
+                    const Rgb c = pixel(grid.stencil(u), periodFraction(u), fv);
+                    std::copy(c.begin(), c.end(), row + size_t(px) * 3);
+                }
+            }
+        },
+        progress);
+    return out;
+}
+
+Image GraphPattern::render(const View& view, const Progress& progress) const {
+    return renderPixels(view, progress, [&](const BlendStencil& s, float fu, float fv) { return evaluate(s, fu, fv); });
+}
+
+Image GraphPattern::renderNode(const View& view, const std::string& id) const {
+    int slot = -1;
+    bool field = true;
+    for (int k = 0; k < leafCount(); ++k)
+        if (leafIds_[size_t(k)] == id) slot = k;
+    for (size_t k = 0; k < operations_.size(); ++k)
+        if (operations_[k].id == id) {
+            slot = leafCount() + int(k);
+            field = operations_[k].kind != NodeKind::Colormap && operations_[k].kind != NodeKind::Mix;
+        }
+    if (slot < 0) throw InputError("node \"" + id + "\" is neither a leaf nor an operation of the graph's program");
+    return renderPixels(view, {}, [&](const BlendStencil& s, float fu, float fv) {
+        const Rgb c = evaluate(s, fu, fv, slot);
+        if (!field) return c;
+        const float g = std::clamp(c[0], 0.0f, 1.0f);
+        return Rgb{g, g, g};
+    });
+}
+
+FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments)
+    : graph_(graph), options_(options), moments_(moments) {
+    if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
+        throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
+                                                 std::to_string(options.aniso));
+    if (options.referenceMaxSamples < 1 || options.referenceMaxSamples > 4096)
+        throw InputError::parameter("referenceMaxSamples",
+                                    "must be in [1, 4096], got " + std::to_string(options.referenceMaxSamples));
+    if (options.response.kind != ResponseKind::PrefilteredColormap)
+        throw InputError::parameter("response", "a texture graph is filtered through its prefiltered tables; the " +
+                                                    enumName(kResponseKindNames, options.response.kind) +
+                                                    " response needs a pattern's normal map");
+    for (const TiledField& pair : graph.leafPairs())
+        if (!isPowerOfTwo(pair.exampleSize()))
+            throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
+                             std::to_string(pair.exampleSize()));
+    // The prefiltered tables serve the sky in every mode.
+    for (const GraphPattern::Operation& op : graph.operations()) {
+        if (op.table < 0) continue;
+        const ColormapTable& t = graph.tables()[size_t(op.table)].blended;
+        try {
+            validatePrefilteredResolution(t.resolutionX(), t.resolutionY());
+        } catch (const InputError& e) {
+            throw InputError("node \"" + op.id + "\": " + e.what());
+        }
+        tables_.emplace_back(t, options.response.prefilter);
+    }
+    std::vector<std::array<float, 2>> whole;
+    for (int k = 0; k < graph.leafCount(); ++k) {
+        const auto& values = graph.leaf(k).example().values().data();
+        double sum = 0, sum2 = 0;
+        for (const float x : values) sum += x;
+        const double mean = sum / double(values.size());
+        for (const float x : values) sum2 += (x - mean) * (x - mean);
+        whole.push_back({float(mean), float(sum2 / double(values.size()))});
+    }
+    sky_ = fromMoments(whole);
+    if (options.source == StatisticsSource::Estimators)
+        for (const TiledField& pair : graph.leafPairs())
+            estimators_.push_back(std::make_unique<FootprintEstimator>(pair, false, options.pack8));
+}
+
+Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMoments) const {
+    if (int(leafMoments.size()) != graph_.leafCount())
+        throw std::invalid_argument("FilteredGraph::fromMoments: " + std::to_string(leafMoments.size()) +
+                                    " leaf moments for " + std::to_string(graph_.leafCount()) + " leaves");
+    // A field's moments in (x, y) of a slot, a colour's mean in all three.
+    std::array<vec3, kMaxGraphNodes> slots;
+    for (size_t k = 0; k < leafMoments.size(); ++k) slots[k] = vec3(leafMoments[k][0], leafMoments[k][1], 0.0f);
+    size_t out = leafMoments.size();
+    const auto moments = [](const vec3& s) { return vec2(s.x, s.y); };
+    const auto sigma = [](const vec3& s) { return std::sqrt(std::max(s.y, 0.0f)); };
+    for (const GraphPattern::Operation& op : graph_.operations()) {
+        const vec3 a = slots[size_t(op.inputs[0])];
+        const vec3 b = op.inputs[1] >= 0 ? slots[size_t(op.inputs[1])] : vec3(0.0f);
+        const PrefilteredColormap* table = op.table >= 0 ? &tables_[size_t(op.table)] : nullptr;
+        vec2 field(0.0f);
+        switch (op.kind) {
+            case NodeKind::Colormap: slots[out] = toVec(table->sample(a.x, b.x, sigma(a), sigma(b))); break;
+            case NodeKind::ColormapField:
+                field = kernel::matchedMoments(toVec(table->sample(a.x, b.x, sigma(a), sigma(b))));
+                break;
+            case NodeKind::Curve: field = kernel::matchedMoments(toVec(table->sample(a.x, 0.5f, sigma(a), 0.0f))); break;
+            case NodeKind::Affine: field = kernel::affineMoments(moments(a), op.parameters[0], op.parameters[1]); break;
+            case NodeKind::Sum:
+                field = kernel::sumMoments(moments(a), moments(b), op.parameters[0], op.parameters[1]);
+                break;
+            case NodeKind::Mix: slots[out] = kernel::mixColour(a, b, slots[size_t(op.inputs[2])].x); break;
+            default: throw std::logic_error("FilteredGraph: a source as an operation");
+        }
+        if (op.kind != NodeKind::Colormap && op.kind != NodeKind::Mix) {
+            // Only the tables make a field non-Gaussian; MeanOnly drops what they add.
+            const bool dropVariance = moments_ == GraphMoments::MeanOnly && table;
+            slots[out] = vec3(field.x, dropVariance ? 0.0f : field.y, 0.0f);
+        }
+        ++out;
+    }
+    return toRgb(slots[out - 1]);
+}
+
+Rgb FilteredGraph::fromPairStats(const std::vector<FootprintStats>& stats) const {
+    std::vector<std::array<float, 2>> m(static_cast<size_t>(graph_.leafCount()));
+    for (int k = 0; k < graph_.leafCount(); ++k) {
+        const auto [pair, channel] = graph_.leafLocation(k);
+        const FootprintStats& s = stats[size_t(pair)];
+        m[size_t(k)] = {s.mean[size_t(channel)], std::max(channel == 0 ? s.varX : s.varY, 0.0f)};
+    }
+    return fromMoments(m);
+}
+
+std::vector<Footprint> FilteredGraph::footprints(double u, double v, const Jacobian& j) const {
+    std::vector<Footprint> f;
+    for (const auto& e : estimators_) f.push_back(makeFootprint(u, v, j, e->exampleSize(), e->maxLod(), options_.aniso));
+    return f;
+}
+
+Rgb FilteredGraph::shade(const std::vector<Footprint>& footprints) const {
+    std::vector<FootprintStats> stats;
+    for (size_t k = 0; k < estimators_.size(); ++k) stats.push_back(estimators_[k]->estimate(footprints[k], options_.estimator));
+    return fromPairStats(stats);
+}
+
+Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j) const {
+    if (!onPlane) return sky_;
+    switch (options_.source) {
+        case StatisticsSource::Point: return graph_.evaluate(u, v);
+        case StatisticsSource::Estimators: return shade(footprints(u, v, j));
+        case StatisticsSource::Exact: {
+            std::vector<FootprintStats> stats;
+            for (const TiledField& pair : graph_.leafPairs())
+                stats.push_back(bruteForceStats(pair, u, v, j, options_.referenceMaxSamples));
+            return fromPairStats(stats);
+        }
+        case StatisticsSource::Reference: {
+            const int n = bruteForceSamples(j, graph_.exampleSize(), options_.referenceMaxSamples);
+            double acc[3] = {0, 0, 0};
+            for (int b = 0; b < n; ++b)
+                for (int a = 0; a < n; ++a) {
+                    const double s = (a + 0.5) / n - 0.5, t = (b + 0.5) / n - 0.5;
+                    const Rgb c = graph_.evaluate(u + s * j.dudx + t * j.dudy, v + s * j.dvdx + t * j.dvdy);
+                    for (int k = 0; k < 3; ++k) acc[k] += c[size_t(k)];
+                }
+            const double inv = 1.0 / (double(n) * n);
+            return {float(acc[0] * inv), float(acc[1] * inv), float(acc[2] * inv)};
+        }
+    }
+    return sky_;
+}
+
+Image FilteredGraph::render(const Camera& camera, const Progress& progress) const {
+    validateCamera(camera);
+    if (options_.source == StatisticsSource::Point && camera.kind == Camera::Kind::Zoom)
+        return graph_.render(camera.view, progress);
+    Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
+    const int w = graph_.exampleSize();
+    // A zoom has one Jacobian for the whole image: its footprints are built
+    // once and translated to each pixel (as FilteredPattern does).
+    const bool oneFootprint = camera.kind == Camera::Kind::Zoom && options_.source == StatisticsSource::Estimators;
+    std::vector<Footprint> shapes;
+    if (oneFootprint) {
+        double u = 0, v = 0;
+        Jacobian j;
+        camera.footprint(0, 0, w, u, v, j);
+        shapes = footprints(0.0, 0.0, j);
+    }
+    parallelRows(
+        camera.view.height,
+        [&](int y0, int y1) {
+            for (int py = y0; py < y1; ++py)
+                for (int px = 0; px < camera.view.width; ++px) {
+                    double u = 0, v = 0;
+                    Jacobian j;
+                    const bool onPlane = camera.footprint(px, py, w, u, v, j);
+                    Rgb c;
+                    if (oneFootprint) {
+                        std::vector<Footprint> here;
+                        for (const Footprint& f : shapes) here.push_back(f.translated(u, v));
+                        c = shade(here);
+                    } else {
+                        c = shade(onPlane, u, v, j);
+                    }
+                    std::copy(c.begin(), c.end(), out.row(py) + size_t(px) * 3);
+                }
+        },
+        progress);
+    return out;
+}
+
+}  // namespace stochtex

@@ -1,0 +1,142 @@
+#pragma once
+// Any texture graph, evaluated per pixel (issue "Texture graphs", paper
+// Figure 14 and §7): the linear part folds into the examples of the graph's
+// leaves — the linear field nodes that a non-linear node reads — tiled and
+// blended on one triangle grid; the non-linear nodes (colormap,
+// colormap_field, curve, mix, and affine or sum over their results) run as a
+// short program of kernel/graph_ops.glsl operations on the leaves' values.
+//
+// Filtering (FilteredGraph) goes beyond the paper, which filters one
+// transfer function of Gaussian fields: a non-linear node's output is not
+// Gaussian, so it is carried by its footprint moments. The leaves' moments
+// come from the estimators (or the exact footprint statistics); a table
+// node's output field g has E[g] and E[g²] from one lookup of the
+// prefiltered table of (g, g²) at the moments of its inputs, and is then
+// treated as Gaussian with that mean and variance by the next table (moment
+// matching); the last colormap is the paper's H̄(μ, σ). The reference is
+// the supersampled average of the point evaluation, as for patterns. The
+// approximation's error against it is measured by `reproduce figure14`
+// (docs/GRAPHS.md, docs/MATH.md "Filtering a graph by moment matching").
+//
+// A graph "linear part → colormap" evaluated here gives the Pattern's own
+// values: its two leaves get the Pattern's tile-offset seeds, and its one
+// colormap operation is H̄(μ̂, σ̂) (tested).
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "stochtex/core/progress.h"
+#include "stochtex/filter/footprint_stats.h"
+#include "stochtex/pattern/camera.h"
+#include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/pattern/prefiltered_colormap.h"
+#include "stochtex/pattern/texture_graph.h"
+
+namespace stochtex {
+
+class GraphPattern {
+public:
+    // spec.graph must be set (std::invalid_argument otherwise). InputError
+    // naming the node for what only building shows (a linear node over a
+    // non-linear field, a Gaussianized exemplar read other than by a table).
+    static GraphPattern build(const PatternSpec& spec);
+
+    // One operation of the per-pixel program. Slots 0..leafCount()−1 hold
+    // the leaves; operation k writes slot leafCount() + k.
+    struct Operation {
+        std::string id;  // the node
+        NodeKind kind;
+        std::array<int, 3> inputs{-1, -1, -1};  // slots, in the node's port order
+        int table = -1;                         // colormap, colormap_field, curve: index into tables()
+        std::array<float, 2> parameters{};      // affine: scale, offset; sum: weight_a, weight_b
+    };
+    // A table node's table: a colour (colormap) or, for a field, (g, g², 0)
+    // per entry (kernel momentEntry); a curve's has 2 identical rows.
+    struct Table {
+        ColormapTable point;    // what the unfiltered evaluation reads
+        ColormapTable blended;  // the same with the inverse histogram transforms of Gaussianized leaf inputs folded in
+        bool field = false;
+    };
+
+    int leafCount() const { return int(leafIds_.size()); }
+    const std::vector<std::string>& leafIds() const { return leafIds_; }
+    // The leaves in fields of two channels, which the estimators read:
+    // consecutive leaves with examples of one size share a field, a leaf
+    // without a partner fills both channels.
+    const std::vector<TiledField>& leafPairs() const { return pairs_; }
+    // Where leaf k is: its field in leafPairs() and its channel there.
+    std::array<int, 2> leafLocation(int k) const { return leafLocation_[size_t(k)]; }
+    const TilingBlendingNoise& leaf(int k) const {
+        return pairs_[size_t(leafLocation_[size_t(k)][0])].channel(leafLocation_[size_t(k)][1]);
+    }
+    // The first leaf's example side: uv = texels / this (View, Camera).
+    int exampleSize() const { return leaf(0).example().size(); }
+    const std::vector<Operation>& operations() const { return operations_; }
+    const std::vector<Table>& tables() const { return tables_; }
+    int outputSlot() const { return leafCount() + int(operations_.size()) - 1; }
+    double gridDensity() const { return pairs_.front().gridDensity(); }
+
+    // S(uv): the leaves at uv (after T⁻¹ for Gaussianized exemplars) through the program.
+    Rgb evaluate(double u, double v) const;
+    // The same with the grid stencil and the period fractions of uv given;
+    // lastSlot: stop after this slot and return its value (default: the output).
+    Rgb evaluate(const BlendStencil& s, float fu, float fv, int lastSlot = -1) const;
+    // Unfiltered, one sample per pixel centre, multi-threaded.
+    Image render(const View& view, const Progress& progress = {}) const;
+    // The value of any leaf or operation node over the same view (a field
+    // as gray, clamped to [0, 1]; a colour as it is). InputError naming the
+    // node if it is neither.
+    Image renderNode(const View& view, const std::string& id) const;
+
+private:
+    template <class PixelFn>
+    Image renderPixels(const View& view, const Progress& progress, PixelFn&& pixel) const;
+    std::vector<std::string> leafIds_;
+    std::vector<TiledField> pairs_;
+    std::vector<std::array<int, 2>> leafLocation_;
+    std::vector<Operation> operations_;
+    std::vector<Table> tables_;
+};
+
+// How the moments of a non-linear node's output field are passed on.
+enum class GraphMoments {
+    Matched,   // mean and variance (moment matching through the (g, g²) tables)
+    MeanOnly,  // the mean alone, variance 0: what filtering only the last transfer function amounts to
+};
+inline const EnumNames<GraphMoments> kGraphMomentsNames{{"matched", GraphMoments::Matched},
+                                                        {"mean-only", GraphMoments::MeanOnly}};
+
+// A graph filtered through a camera. The options are FilteredPattern's:
+// source point / estimators / exact / reference, the prefiltered tables'
+// mode, anisotropy, variance estimator, reference samples, 8-bit pyramids.
+// The response must be the prefiltered colormap (InputError `response`
+// otherwise: a graph has no normal map).
+class FilteredGraph {
+public:
+    FilteredGraph(const GraphPattern& graph, const FilterOptions& options,
+                  GraphMoments moments = GraphMoments::Matched);
+
+    // The colour of sky pixels: the program on the whole examples' moments.
+    const Rgb& skyColour() const { return sky_; }
+    Rgb shade(bool onPlane, double u, double v, const Jacobian& j) const;
+    Image render(const Camera& camera, const Progress& progress = {}) const;
+
+    // The program on the leaves' moments (mean, variance per leaf).
+    Rgb fromMoments(const std::vector<std::array<float, 2>>& leafMoments) const;
+
+private:
+    Rgb fromPairStats(const std::vector<FootprintStats>& stats) const;  // one per leaf pair
+    std::vector<Footprint> footprints(double u, double v, const Jacobian& j) const;  // one per estimator
+    Rgb shade(const std::vector<Footprint>& footprints) const;                        // estimators
+    const GraphPattern& graph_;
+    FilterOptions options_;
+    GraphMoments moments_;
+    std::vector<std::unique_ptr<FootprintEstimator>> estimators_;  // one per leaf pair
+    std::vector<PrefilteredColormap> tables_;                      // per GraphPattern table
+    Rgb sky_{};
+};
+
+}  // namespace stochtex

@@ -1,0 +1,296 @@
+// The graph evaluator (pattern/graph_pattern.h): the non-linear nodes'
+// kernel functions on known inputs, each node's evaluation, a folding graph
+// evaluated as its Pattern, moment-matched filtering against the reference,
+// and the refusals.
+#include "stochtex/pattern/graph_pattern.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/parallel.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/kernel/graph_ops.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/presets.h"
+
+namespace stochtex {
+namespace {
+
+PatternSpec parse(const std::string& text) {
+    const auto j = JsonReader::parse(text, "g.json");
+    return parsePatternSpec(JsonReader(j, "g.json"), ".");
+}
+
+const std::string kNoise =
+    R"({"type": "spectral_noise", "size": 64, "seed": 3, "components": [{"shape": "lowpass", "cutoff": 4}]})";
+
+std::string graph(const std::string& nodes, const std::string& output = "c") {
+    return R"({"size": 32, "seed": 9, "nodes": {)" + nodes + R"(}, "output": ")" + output + R"("})";
+}
+
+double meanError(const Image& a, const Image& b) {
+    double s = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            double d2 = 0;
+            for (int c = 0; c < 3; ++c) d2 += std::pow(double(a.at(x, y, c)) - b.at(x, y, c), 2);
+            s += std::sqrt(d2);
+        }
+    return s / double(a.pixelCount());
+}
+
+bool identical(const Image& a, const Image& b) {
+    return a.data().size() == b.data().size() &&
+           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
+}
+
+TEST(GraphOps, KernelFunctionsOnKnownInputs) {
+    using namespace kernel;
+    const vec3 c(0.2f, 0.4f, 0.6f);
+    EXPECT_EQ(graphChannel(c, kGraphChannelRed), 0.2f);
+    EXPECT_EQ(graphChannel(c, kGraphChannelGreen), 0.4f);
+    EXPECT_EQ(graphChannel(c, kGraphChannelBlue), 0.6f);
+    EXPECT_NEAR(graphChannel(c, kGraphChannelLuminance), 0.2126 * 0.2 + 0.7152 * 0.4 + 0.0722 * 0.6, 1e-7);
+    EXPECT_NEAR(graphChannel(vec3(0.3f), kGraphChannelLuminance), 0.3, 1e-7);  // the weights sum to 1
+    const vec3 e = momentEntry(0.3f);
+    EXPECT_NEAR(e.x, 0.3, 1e-7);
+    EXPECT_NEAR(e.y, 0.09, 1e-7);
+    EXPECT_EQ(e.z, 0.0f);
+    const vec2 m = matchedMoments(vec3(0.5f, 0.3f, 0.0f));
+    EXPECT_NEAR(m.x, 0.5, 1e-7);
+    EXPECT_NEAR(m.y, 0.05, 1e-7);
+    EXPECT_EQ(matchedMoments(vec3(0.5f, 0.2f, 0.0f)).y, 0.0f);  // E[g²] < E[g]² by rounding: clamped
+    const vec2 a = affineMoments(vec2(0.5f, 0.04f), -2.0f, 1.0f);
+    EXPECT_NEAR(a.x, 0.0, 1e-7);
+    EXPECT_NEAR(a.y, 0.16, 1e-7);
+    EXPECT_NEAR(affineValue(0.25f, -2.0f, 1.0f), 0.5, 1e-7);
+    const vec2 s = sumMoments(vec2(0.2f, 0.01f), vec2(0.6f, 0.04f), 0.5f, 0.5f);
+    EXPECT_NEAR(s.x, 0.4, 1e-7);
+    EXPECT_NEAR(s.y, 0.0125, 1e-8);
+    EXPECT_NEAR(sumValue(0.2f, 0.6f, 0.25f, 2.0f), 1.25, 1e-7);
+    const vec3 lo(0.1f, 0.2f, 0.3f), hi(0.9f, 0.6f, 0.3f);
+    EXPECT_EQ(mixColour(lo, hi, 0.0f).x, 0.1f);
+    EXPECT_EQ(mixColour(lo, hi, 1.0f).y, 0.6f);
+    EXPECT_NEAR(mixColour(lo, hi, 0.25f).x, 0.3, 1e-7);
+    EXPECT_NEAR(mixColour(lo, hi, 2.0f).x, 1.7, 1e-6);  // not clamped
+}
+
+// A graph "linear part → colormap" evaluated and filtered per pixel gives
+// its Pattern's values bit for bit: the same leaves, tile seeds and lookups.
+TEST(GraphPattern, FoldingGraphEvaluatesAsItsPattern) {
+    for (const char* offsets : {"independent", "shared"}) {
+        const PatternSpec s = parse(R"({"seed": 4, "offsets": ")" + std::string(offsets) + R"(", "nodes": {
+            "h": )" + kNoise + R"(, "n": {"type": "spectral_noise", "size": 64, "components": [{"shape": "ring", "frequency": 6, "bandwidth": 2}]},
+            "d": {"type": "derivative", "input": "h", "angle": 30},
+            "c": {"type": "colormap", "x": "d", "y": "n", "colormap": {"type": "phasor", "profile": "sine"}}}, "output": "c"})");
+        ASSERT_TRUE(foldsIntoPattern(*s.graph));
+        const Pattern pattern = Pattern::build(s);
+        const GraphPattern g = GraphPattern::build(s);
+        ASSERT_EQ(g.leafCount(), 2);
+        EXPECT_EQ(g.leafIds()[0], "d");
+        const View view{48, 40, 1.7, 13.25, -40.5};
+        EXPECT_TRUE(identical(pattern.render(view), g.render(view))) << offsets;
+        Camera cam;
+        cam.view = {32, 32, 6.0, 3.5, 1.0};
+        for (const char* filter : {"smooth", "paper", "reference"}) {
+            FilterOptions o;
+            o.use(parseFilter(filter));
+            o.referenceMaxSamples = 12;
+            EXPECT_TRUE(identical(FilteredPattern(pattern, o).render(cam), FilteredGraph(g, o).render(cam)))
+                << offsets << ", " << filter;
+        }
+    }
+}
+
+// Each non-linear node on known inputs: the node's value against its
+// formula applied to the value of its input, pixel by pixel.
+TEST(GraphPattern, EachOperationComputesItsFormulaOnItsInputs) {
+    const std::string nodes = R"("a": )" + kNoise + R"(,
+        "b": {"type": "spectral_noise", "size": 64, "seed": 8, "components": [{"shape": "lowpass", "cutoff": 3}]},
+        "up": {"type": "curve", "input": "a", "points": [[0, 0], [1, 1]]},
+        "down": {"type": "curve", "input": "a", "points": [[0, 0.9], [0.5, 0.1], [1, 0.3]], "resolution": 1024},
+        "lum": {"type": "colormap_field", "x": "a", "y": "b", "colormap": {"type": "gaussian", "transfer": "linear"}},
+        "ax": {"type": "affine", "input": "lum", "scale": -2, "offset": 1.5},
+        "sm": {"type": "sum", "a": "ax", "b": "down", "weight_a": 0.25, "weight_b": 0.5},
+        "red": {"type": "colormap", "x": "sm", "y": "sm", "colormap": {"type": "painted", "background": [1, 0, 0], "shapes": []}},
+        "blue": {"type": "colormap", "x": "up", "y": "up", "colormap": {"type": "painted", "background": [0, 0, 1], "shapes": []}},
+        "c": {"type": "mix", "a": "red", "b": "blue", "t": "sm"})";
+    const GraphPattern g = GraphPattern::build(parse(graph(nodes)));
+    const View view{24, 24, 2.0, 5.0, 7.0};
+    const auto field = [&](const char* id) { return g.renderNode(view, id); };
+    const Image a = field("a"), b = field("b"), up = field("up"), down = field("down"), lum = field("lum");
+    const Image sm = g.renderNode(view, "sm"), out = g.render(view);
+    const auto curve = [](double x) { return x <= 0.5 ? 0.9 - 1.6 * x : 0.1 + 0.4 * (x - 0.5); };
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 24; ++x) {
+            const double va = a.at(x, y, 0);
+            ASSERT_GT(va, 0.0);
+            ASSERT_LT(va, 1.0);
+            EXPECT_NEAR(up.at(x, y, 0), va, 1e-6);
+            // 1024 entries: the table's linear interpolation is exact between its kinks, off by ≤ 1.6/1023·½ near x = ½.
+            EXPECT_NEAR(down.at(x, y, 0), curve(va), std::abs(va - 0.5) < 1e-3 ? 8e-4 : 1e-5);
+            // H = x as data: the luminance of a gray x is x.
+            EXPECT_NEAR(lum.at(x, y, 0), va, 1e-6);
+            // The sum of the affine of lum and down, from their rendered values
+            // (inside [0, 1] here: renderNode's clamp is idle).
+            const double s = 0.25 * (-2 * lum.at(x, y, 0) + 1.5) + 0.5 * down.at(x, y, 0);
+            ASSERT_GT(s, 0.0);
+            ASSERT_LT(s, 1.0);
+            EXPECT_NEAR(sm.at(x, y, 0), s, 1e-6);
+            // mix of red and blue by sm: (1 − s, 0, s).
+            EXPECT_NEAR(out.at(x, y, 0), 1 - sm.at(x, y, 0), 1e-6);
+            EXPECT_NEAR(out.at(x, y, 1), 0.0, 1e-7);
+            EXPECT_NEAR(out.at(x, y, 2), sm.at(x, y, 0), 1e-6);
+        }
+    (void)b;
+}
+
+// Moment matching through (g, g²) tables: a curve f(x) = x² sampled at 33
+// points (the piecewise-linear curve is above x² by h²/6 = 1.6e-4 on
+// average), on a leaf of moments (μ, σ²) = (0.5, 0.125²), gives
+// E[X²] = μ² + σ² = 0.265625; σ = 0.125 is one of the table's σ levels, so
+// only the curve and the layer's resampling (32 entries at this σ, error
+// ≤ (1/31)²/4 = 2.6e-4) are in the way. A second x² then reads
+// Y = X² as Gaussian of mean m and variance v = 4μ²σ² + 2σ⁴ = 0.016113:
+// E[Y²] = m² + v = 0.086670, against m² = 0.070557 when only the mean is
+// passed on; its σ = 0.127 lies between levels, where the smooth table's
+// log2 interpolation adds ≤ 6e-4. A mix of black and white by the result
+// shows its mean as the colour.
+TEST(GraphPattern, MomentsThroughCurvesMatchTheGaussianExpectations) {
+    std::string points;
+    for (int k = 0; k <= 32; ++k) points += std::string(k ? ", " : "") + "[" + std::to_string(k / 32.0) + ", " +
+                                            std::to_string((k / 32.0) * (k / 32.0)) + "]";
+    const std::string square = R"({"type": "curve", "resolution": 1024, "points": [)" + points + "], \"input\": ";
+    const std::string shades = R"("black": {"type": "colormap", "x": "a", "y": "a", "colormap": {"type": "painted", "background": [0, 0, 0], "shapes": []}},
+        "white": {"type": "colormap", "x": "a", "y": "a", "colormap": {"type": "painted", "background": [1, 1, 1], "shapes": []}},)";
+    const GraphPattern once = GraphPattern::build(parse(graph(R"("a": )" + kNoise + ", " + shades +
+                                                             R"("sq": )" + square + R"("a"},
+        "c": {"type": "mix", "a": "black", "b": "white", "t": "sq"})")));
+    const GraphPattern twice = GraphPattern::build(parse(graph(R"("a": )" + kNoise + ", " + shades +
+                                                              R"("sq": )" + square + R"("a"}, "sq2": )" + square + R"("sq"},
+        "c": {"type": "mix", "a": "black", "b": "white", "t": "sq2"})")));
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    const std::vector<std::array<float, 2>> leaf{{0.5f, 0.015625f}};
+    ASSERT_EQ(once.leafCount(), 1);  // the black and white colormaps read the leaf too (a constant colour)
+    EXPECT_NEAR(FilteredGraph(once, o).fromMoments(leaf)[0], 0.265625, 6e-4);
+    EXPECT_NEAR(FilteredGraph(twice, o).fromMoments(leaf)[0], 0.086670, 1.5e-3);
+    EXPECT_NEAR(FilteredGraph(twice, o, GraphMoments::MeanOnly).fromMoments(leaf)[0], 0.070557, 1e-3);
+    // Without the input's variance the curve gives f(μ) = 0.25.
+    EXPECT_NEAR(FilteredGraph(once, o).fromMoments({{0.5f, 0.0f}})[0], 0.25, 1e-3);
+}
+
+// Figure 14's graph zoomed out: moment matching stays near the reference
+// where pixel centres alias and passing the intermediate field's mean alone
+// loses its variance. Measured at 128² (reproduce figure14 --size 128): at
+// 16 texels per pixel none 0.318, mean-only 0.324, matched 0.145; here
+// 32², ≤ 32² reference samples.
+TEST(GraphPattern, MomentMatchingFiltersFigure14CloserToTheReference) {
+    const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
+    for (const int footprint : {1, 16}) {
+        Camera cam;
+        cam.view = {32, 32, double(footprint), 100.0, 37.0};
+        FilterOptions o;
+        o.referenceMaxSamples = 32;
+        const Image reference = FilteredGraph(g, o.use(parseFilter("reference"))).render(cam);
+        const double none = meanError(FilteredGraph(g, o.use(parseFilter("none"))).render(cam), reference);
+        o.use(parseFilter("smooth"));
+        const double meanOnly = meanError(FilteredGraph(g, o, GraphMoments::MeanOnly).render(cam), reference);
+        const double matched = meanError(FilteredGraph(g, o).render(cam), reference);
+        if (footprint == 1) {
+            EXPECT_LT(matched, 0.06);
+            EXPECT_LT(none, 0.06);
+        } else {
+            EXPECT_LT(matched, 0.6 * none) << none;
+            EXPECT_LT(matched, 0.6 * meanOnly) << meanOnly;
+            EXPECT_LT(matched, 0.2);
+        }
+    }
+}
+
+TEST(GraphPattern, FilteredRendersDoNotDependOnTheThreadCount) {
+    const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
+    Camera cam;
+    cam.view = {40, 24, 5.0, 3.0, 2.0};
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    const FilteredGraph f(g, o);
+    Image one, two;
+    {
+        ThreadLimit limit(1);
+        one = f.render(cam);
+    }
+    {
+        ThreadLimit limit(2);
+        two = f.render(cam);
+    }
+    EXPECT_TRUE(identical(one, two));
+}
+
+std::string buildError(const std::string& text) {
+    try {
+        const GraphPattern g = GraphPattern::build(parse(text));
+        FilterOptions o;
+        o.response.kind = ResponseKind::Lean;
+        FilteredGraph f(g, o);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(GraphPattern, RefusesWhatItCannotEvaluateNamingTheNode) {
+    const std::string curve = R"("a": )" + kNoise + R"(, "k": {"type": "curve", "input": "a", "points": [[0, 1], [1, 0]]},)";
+    std::string e = buildError(graph(curve + R"( "d": {"type": "derivative", "input": "k"},
+        "c": {"type": "colormap", "x": "d", "y": "a", "colormap": {"type": "gaussian"}})"));
+    EXPECT_NE(e.find("node \"d\" (derivative): its input \"k\" is not linear in the sources"), std::string::npos) << e;
+    e = buildError(graph(curve + R"( "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}})"));
+    EXPECT_NE(e.find("response"), std::string::npos) << e;  // a graph has no normal map to shade
+    try {
+        (void)Pattern::build(loadPreset("figure14"));
+        ADD_FAILURE() << "Pattern::build accepted a graph with a non-linear node before its output";
+    } catch (const InputError& err) {
+        EXPECT_NE(std::string(err.what()).find("non-linear node before its output"), std::string::npos) << err.what();
+    }
+    // A Gaussianized exemplar only a table reads.
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "stochtex_graph_exemplar.png";
+    Image img(16, 16, 1);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) img.at(x, y) = float(0.5 + 0.3 * std::sin(0.7 * x + 0.4 * y));
+    writeImage(file.string(), img, WriteOptions{.transfer = Transfer::Linear});
+    e = buildError(graph(R"("x": {"type": "exemplar", "path": ")" + file.string() + R"("}, "a": )" + kNoise + R"(,
+        "p": {"type": "colormap", "x": "a", "y": "a", "colormap": {"type": "gaussian"}},
+        "c": {"type": "mix", "a": "p", "b": "p", "t": "x"})"));
+    EXPECT_NE(e.find("node \"c\" (mix): its input \"x\" is a Gaussianized exemplar"), std::string::npos) << e;
+    std::filesystem::remove(file);
+}
+
+TEST(GraphPattern, RefusesBadCurvesAndChoicesWithTheirJsonPointer) {
+    const auto parseError = [](const std::string& text) -> std::string {
+        try {
+            (void)parse(text);
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        return "(no error)";
+    };
+    const std::string a = R"("a": )" + kNoise + ",";
+    const std::string tail = R"(, "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}})";
+    std::string e = parseError(graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0], [0.5, 1], [0.5, 0]]})" + tail));
+    EXPECT_NE(e.find("/nodes/k/points/2/0: x must increase"), std::string::npos) << e;
+    e = parseError(graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0]]})" + tail));
+    EXPECT_NE(e.find("/nodes/k/points: a curve needs 2 to 1024 points"), std::string::npos) << e;
+    e = parseError(graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0], [1.5, 1]]})" + tail));
+    EXPECT_NE(e.find("/nodes/k/points/1/0"), std::string::npos) << e;
+    e = parseError(graph(a + R"( "k": {"type": "colormap_field", "x": "a", "y": "a", "channel": "alpha", "colormap": {"type": "gaussian"}})" + tail));
+    EXPECT_NE(e.find("/nodes/k/channel: unknown value \"alpha\"; expected one of red, green, blue, luminance"),
+              std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace stochtex
