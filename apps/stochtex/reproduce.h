@@ -49,6 +49,8 @@ void writeFigure12(const Figure12Result& r, const std::string& dir);
 std::string writeTable1(const Table1Result& r, const std::string& dir);
 // Writes <figure>.png, <figure>.csv and the images per footprint (figures 4, 11).
 void writeFigure4(const Figure4Result& r, const std::string& figure, const std::string& dir);
+// Writes figure14.png, figure14_filtering.png, figure14_errors.png, figure14.csv and the images.
+void writeFigure14(const Figure14Result& r, const std::string& dir);
 // Writes figure10.png, figure10_comparison.png and figure10.csv.
 void writeFigure10(const Figure10Result& r, const std::string& dir);
 

@@ -1,5 +1,5 @@
-// stochtex reproduce all: Table 1, Figure 4, Figures 7–9, 10, 11 and 12 in
-// one folder each, with an index.html.
+// stochtex reproduce all: Table 1, Figure 4, Figures 7–9, 10, 11, 12 and 14
+// in one folder each, with an index.html.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -30,25 +30,32 @@ void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> ar
         args->figure12.height = std::max(32, args->figure12.width * 5 / 8);
         args->figure12.referenceSamples = std::min(args->figure12.referenceSamples, args->figure4.referenceSamples);
         prepareFigure12(*args);
+        // Figure 14 at half Figure 4's side (its reference costs more per pixel).
+        args->figure14.size = std::max(16, args->figure4.size / 2);
+        args->figure14.referenceSamples = std::min(args->figure14.referenceSamples, args->figure4.referenceSamples);
+        validateFigure14(args->figure14);
         // Each part's files are written as soon as it is done.
         ProgressLine progress("reproduce all");
-        const Table1Result t = table1(args->table, progressPart(progress.callback(), 0, 6));
+        const Table1Result t = table1(args->table, progressPart(progress.callback(), 0, 7));
         writeTable1(t, dir + "/table1");
         const int tTable = elapsed();
-        const Figure4Result f4 = figure4(args->figure4, progressPart(progress.callback(), 1, 6));
+        const Figure4Result f4 = figure4(args->figure4, progressPart(progress.callback(), 1, 7));
         writeFigure4(f4, "figure4", dir + "/figure4");
         const int tFigure4 = elapsed();
-        const std::vector<Figure> f79 = figures7to9(args->sheetSize, progressPart(progress.callback(), 2, 6));
+        const std::vector<Figure> f79 = figures7to9(args->sheetSize, progressPart(progress.callback(), 2, 7));
         ensureFolder(dir + "/figures7-9");
         writeFigures(dir + "/figures7-9", f79);
         const int tFigures79 = elapsed();
-        const Figure10Result f10 = figure10(args->figure10, progressPart(progress.callback(), 3, 6));
+        const Figure10Result f10 = figure10(args->figure10, progressPart(progress.callback(), 3, 7));
         writeFigure10(f10, dir + "/figure10");
-        const Figure4Result f11 = figure4(args->figure11, progressPart(progress.callback(), 4, 6));
+        const Figure4Result f11 = figure4(args->figure11, progressPart(progress.callback(), 4, 7));
         writeFigure4(f11, "figure11", dir + "/figure11");
         const int tFigures1011 = elapsed();
-        const Figure12Result f12 = figure12(args->figure12, progressPart(progress.callback(), 5, 6));
+        const Figure12Result f12 = figure12(args->figure12, progressPart(progress.callback(), 5, 7));
         writeFigure12(f12, dir + "/figure12");
+        const int tFigure12 = elapsed();
+        const Figure14Result f14 = figure14(args->figure14, progressPart(progress.callback(), 6, 7));
+        writeFigure14(f14, dir + "/figure14");
         const int total = elapsed();
         progress.finish();
         std::string tables;
@@ -58,7 +65,8 @@ void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> ar
             "<code>stochtex reproduce all</code> in " + std::to_string(total) + " s (Table 1: " +
             std::to_string(tTable) + " s, Figure 4: " + std::to_string(tFigure4 - tTable) + " s, Figures 7–9: " +
             std::to_string(tFigures79 - tFigure4) + " s, Figures 10–11: " + std::to_string(tFigures1011 - tFigures79) +
-            " s, Figure 12: " + std::to_string(total - tFigures1011) + " s).</p><h2>Table 1: estimator errors</h2><p>Absolute (relative) mean "
+            " s, Figure 12: " + std::to_string(tFigure12 - tFigures1011) + " s, Figure 14: " +
+            std::to_string(total - tFigure12) + " s).</p><h2>Table 1: estimator errors</h2><p>Absolute (relative) mean "
             "errors of μ̂ and σ̂ against the exact footprint statistics of the tiled noise, over random square "
             "footprints. Noises: low frequency isotropic = low-pass, cut-off 8 cycles per period; high frequency "
             "anisotropic = bi-lobe, 32 cycles per period, bandwidth 3, 30°; 512² examples. <a "
@@ -70,7 +78,9 @@ void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> ar
             "<h2>Figure 11: filtering the phasor sine pattern</h2>" + f11.table.html() +
             htmlFigures("figure11/", f11.figures) +
             "<h2>Figure 12: LEAN-mapped procedural normal map</h2>" + f12.table.html() +
-            htmlFigures("figure12/", f12.figures);
+            htmlFigures("figure12/", f12.figures) +
+            "<h2>Figure 14: a texture graph, filtered by moment matching</h2>" + f14.table.html() +
+            htmlFigures("figure14/", f14.figures);
         writeText(dir, "index.html", htmlPage("stochtex: paper reproduction", body, 1300, 640));
         std::printf("wrote %s/index.html (%d s)\n", dir.c_str(), total);
     });

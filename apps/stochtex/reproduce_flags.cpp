@@ -31,6 +31,12 @@ void writeFigure10(const Figure10Result& r, const std::string& dir) {
     writeText(dir, "figure10.csv", r.table.csv());
 }
 
+void writeFigure14(const Figure14Result& r, const std::string& dir) {
+    ensureFolder(dir);
+    writeFigures(dir, r.figures);
+    writeText(dir, "figure14.csv", r.table.csv());
+}
+
 void addFigure10Flags(CLI::App& sub, ReproduceArgs& a) {
     addOutputFolderFlag(sub, a.dir);
     addThreadsFlag(sub, a.threads);

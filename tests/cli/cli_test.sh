@@ -276,6 +276,19 @@ case_graph() {
   grep -q "closes a cycle" "$work/err.txt" || fail "graph cycle: message lacks 'closes a cycle': $(cat "$work/err.txt")"
   printf '{"nodes": {"c": {"type": "colormap", "x": "c", "y": "c", "colormap": {"type": "gaussian"}}}, "output": "c"}' >"$work/colour.json"
   expect_bad "graph colour into a field" "$out/co.png" "colour.json: /nodes/c/x: expects a field, but \"c\" (colormap) gives a colour" -- "$bin" render "$work/colour.json" -o "$out/co.png"
+  # Non-linear nodes before the output (Figure 14): evaluated per pixel, filtered by moment matching.
+  for node in colormap_field curve mix; do "$bin" nodes | grep -q "^$node (" || fail "nodes: $node not listed"; done
+  expect_ok "render figure14" "$out/f14.png" -- "$bin" render --preset figure14 --size 48 -o "$out/f14.png"
+  expect_ok "render figure14 smooth" "$out/f14s.png" -- "$bin" render --preset figure14 --size 48 --scale 8 --filter smooth -o "$out/f14s.png"
+  expect_ok "render figure14 reference" "$out/f14r.png" -- "$bin" render --preset figure14 --size 32 --scale 8 --filter reference --reference-samples 8 -o "$out/f14r.png"
+  expect_bad "figure14 on the GPU" "$out/f14g.png" "figure14: --gpu: a graph with a non-linear node before its output renders on the CPU only" -- "$bin" render --preset figure14 --gpu -o "$out/f14g.png"
+  expect_bad "figure14 in a scene" "$out/f14sc.png" "figure14: this graph has a non-linear node before its output" -- "$bin" scene --preset figure14 -o "$out/f14sc.png"
+  expect_bad "figure14 lean" "$out/f14l.png" "response" -- "$bin" render --preset figure14 --filter smooth --response lean -o "$out/f14l.png"
+  printf '{"nodes": {"a": {"type": "spectral_noise", "size": 32, "components": [{"shape": "lowpass", "cutoff": 2}]}, "k": {"type": "curve", "input": "a", "points": [[0, 0], [0, 1]]}, "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}}}, "output": "c"}' >"$work/curve.json"
+  expect_bad "graph bad curve" "$out/cu.png" "curve.json: /nodes/k/points/1/0: x must increase" -- "$bin" render "$work/curve.json" -o "$out/cu.png"
+  expect_ok "reproduce figure14" "$out/rf14/figure14.csv" -- "$bin" reproduce figure14 -o "$out/rf14" --size 24 --footprints 1,16 --reference-samples 8
+  [ -s "$out/rf14/figure14_filtering.png" ] || fail "reproduce figure14: figure14_filtering.png not written"
+  grep -q "^16," "$out/rf14/figure14.csv" || fail "reproduce figure14: no row for footprint 16: $(cat "$out/rf14/figure14.csv")"
 }
 
 case_bad_stimuli_flags() {
@@ -303,6 +316,7 @@ case_reproduce() {
   expect_ok "reproduce all" "$out/all/index.html" -- "$bin" reproduce all -o "$out/all" --count 10 --footprints 2,4 --size 32 --reference-samples 8
   grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 4"
   grep -q "figure11/figure11.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 11"
+  grep -q "figure14/figure14_filtering.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 14"
   [ -s "$out/all/figure10/figure10_comparison.png" ] || fail "reproduce all: figure 10's comparison not written"
 }
 

@@ -22,6 +22,7 @@
 #include "stochtex/kernel/colour.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/kernel/footprint.h"
+#include "stochtex/kernel/graph_ops.h"
 #include "stochtex/kernel/grid.h"
 #include "stochtex/kernel/hash.h"
 #include "stochtex/kernel/lean.h"
@@ -586,6 +587,51 @@ TEST_F(KernelParity, MarbleLayersWithin1e3AndNoisesWithin1e5) {
                 return "noise " + std::to_string(k) + ": GPU " + std::to_string(floats(g[1])[k]) + ", C++ " +
                        std::to_string(floats(c[1])[k]);
         }
+        return "";
+    });
+}
+
+// The texture-graph operations (kernel/graph_ops.glsl) on random inputs:
+// within 4 ulps of max(1, |value|), the room a fused multiply-add leaves
+// (E[g²] − E[g]² cancels, so ulps of the result itself would be too strict).
+TEST_F(KernelParity, GraphOperationsWithin4UlpsOfOne) {
+    Random r{17};
+    std::vector<uvec4> in;
+    for (int i = 0; i < kItems; ++i) {
+        const float mean = r.uniform(-1.0f, 2.0f);
+        in.push_back(bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(-1.0f, 2.0f))));
+        in.push_back(bits(vec4(r.uniform(-4.0f, 4.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f))));
+        in.push_back(bits(vec4(mean, mean * mean + r.uniform(-0.01f, 0.2f), r.uniform(-1.0f, 2.0f), r.uniform(0.0f, 0.3f))));
+        in.push_back(bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(-0.5f, 1.5f))));
+    }
+    const auto gpu = runOnGpu({"graph_ops"}, R"(
+        vec4 c = wordf(0), p = wordf(1), m = wordf(2), b = wordf(3);
+        emitf(0, vec4(graphChannel(c.xyz, kGraphChannelRed), graphChannel(c.xyz, kGraphChannelGreen),
+                      graphChannel(c.xyz, kGraphChannelBlue), graphChannel(c.xyz, kGraphChannelLuminance)));
+        emitf(1, vec4(momentEntry(c.w).xy, matchedMoments(vec3(m.x, m.y, 0.0))));
+        emitf(2, vec4(affineValue(c.w, p.x, p.y), affineMoments(m.xy, p.x, p.y), sumValue(c.w, c.x, p.z, p.w)));
+        emitf(3, vec4(sumMoments(m.xy, m.zw, p.z, p.w), 0.0, 0.0));
+        emitf(4, vec4(mixColour(c.xyz, b.xyz, b.w), 0.0));)",
+                              4, 5, in);
+    compareItems(gpu, 5, [&](int i) {
+        const vec4 c = floats(in[size_t(4 * i)]), p = floats(in[size_t(4 * i + 1)]);
+        const vec4 m = floats(in[size_t(4 * i + 2)]), b = floats(in[size_t(4 * i + 3)]);
+        const vec3 rgb(c.x, c.y, c.z);
+        const vec3 entry = momentEntry(c.w);
+        const vec2 matched = matchedMoments(vec3(m.x, m.y, 0.0f)), affine = affineMoments(vec2(m.x, m.y), p.x, p.y);
+        const vec2 sum = sumMoments(vec2(m.x, m.y), vec2(m.z, m.w), p.z, p.w);
+        return std::vector<uvec4>{
+            bits(vec4(graphChannel(rgb, kGraphChannelRed), graphChannel(rgb, kGraphChannelGreen),
+                      graphChannel(rgb, kGraphChannelBlue), graphChannel(rgb, kGraphChannelLuminance))),
+            bits(vec4(entry.x, entry.y, matched.x, matched.y)),
+            bits(vec4(affineValue(c.w, p.x, p.y), affine.x, affine.y, sumValue(c.w, c.x, p.z, p.w))),
+            bits(vec4(sum.x, sum.y, 0.0f, 0.0f)), bits(vec4(mixColour(rgb, vec3(b.x, b.y, b.z), b.w), 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) -> std::string {
+        for (int w = 0; w < 5; ++w)
+            for (int k = 0; k < 4; ++k) {
+                const std::string m = closeLog(floats(g[w])[k], floats(c[w])[k], 4, "graph op");
+                if (!m.empty()) return "word " + std::to_string(w) + "[" + std::to_string(k) + "] " + m;
+            }
         return "";
     });
 }
