@@ -22,11 +22,17 @@ void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
 PatternRenderer::PatternRenderer(const PatternSpec& spec, const FilterOptions& options, const DeviceFlags& flags) {
     checkDeviceFilter(flags, options);
     if (spec.graph && !foldsIntoPattern(*spec.graph)) {
-        if (flags.gpu)
-            throw InputError(spec.name + ": --gpu: a graph with a non-linear node before its output renders on the "
-                                         "CPU only so far");
         graph_ = std::make_unique<GraphPattern>(GraphPattern::build(spec));
-        filteredGraph_ = std::make_unique<FilteredGraph>(*graph_, options);
+        if (!flags.gpu) {
+            filteredGraph_ = std::make_unique<FilteredGraph>(*graph_, options);
+            return;
+        }
+        if (flags.pipeline != GpuPattern::Pipeline::Fragment || flags.derivatives != GpuPattern::Derivatives::Camera)
+            throw InputError(spec.name + ": --gpu: a graph with a non-linear node before its output renders with "
+                                         "the fragment pipeline and the camera's derivatives");
+        context_ = GlContext::headless();
+        device_ = context_->describe();
+        gpuGraph_ = std::make_unique<GpuGraph>(*graph_, *context_, options);
         return;
     }
     pattern_ = std::make_unique<Pattern>(Pattern::build(spec));
@@ -45,6 +51,7 @@ PatternRenderer::~PatternRenderer() = default;
 
 Image PatternRenderer::render(const Camera& camera, const Progress& progress) {
     if (filteredGraph_) return filteredGraph_->render(camera, progress);
+    if (gpuGraph_) return gpuGraph_->render(camera);
     return gpu_ ? gpu_->render(camera) : cpu_->render(camera, progress);
 }
 

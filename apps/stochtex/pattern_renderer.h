@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/pattern/graph_pattern.h"
 
 namespace stochtex::cli {
@@ -24,8 +25,8 @@ void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options);
 
 class PatternRenderer {
 public:
-    // Builds the pattern, or the graph (GraphPattern, on the CPU) when it
-    // is not a pattern H∘N; checks checkDeviceFilter again.
+    // Builds the pattern, or the graph (GraphPattern; GpuGraph with --gpu)
+    // when it is not a pattern H∘N; checks checkDeviceFilter again.
     PatternRenderer(const PatternSpec& spec, const FilterOptions& options, const DeviceFlags& flags);
     ~PatternRenderer();
     // progress: the fraction of rows done (CPU renders; a GPU render is quick).
@@ -40,6 +41,7 @@ private:
     std::unique_ptr<FilteredPattern> cpu_;
     std::unique_ptr<GraphPattern> graph_;
     std::unique_ptr<FilteredGraph> filteredGraph_;
+    std::unique_ptr<GpuGraph> gpuGraph_;
     std::string device_ = "CPU";
 };
 

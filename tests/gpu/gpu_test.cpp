@@ -17,6 +17,7 @@
 #include "stochtex/gpu/scene_render.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/programs.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/filtered_pattern.h"
@@ -335,6 +336,35 @@ TEST(Gpu, GraphPatternMatchesTheCpu) {
     expectParity(p, v, "graph, smooth, scale 4", o);
 }
 
+// A texture graph with non-linear nodes before its output (Figure 14) as one
+// generated program: unfiltered, and filtered by moment matching through the
+// prefiltered tables, against the CPU evaluator (pattern/graph_pattern.h).
+void expectGraphParity(const GraphPattern& g, const Camera& camera, const FilterOptions& o, const std::string& what,
+                       double meanLimit, double allowedOutliers) {
+    GpuGraph gpu(g, context(), o);
+    const Difference d = compare(gpu.render(camera), FilteredGraph(g, o).render(camera));
+    std::printf("[ info ] %s: mean |GPU - CPU| %.2e, max %.2e, %.3f%% of pixels over 2/255\n", what.c_str(), d.mean,
+                d.max, 100.0 * d.outlierFraction);
+    EXPECT_LE(d.mean, meanLimit) << what;
+    EXPECT_LE(d.outlierFraction, allowedOutliers) << what << " (max |Δ| " << d.max << ")";
+}
+
+TEST(Gpu, TextureGraphProgramMatchesTheCpu) {
+    const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
+    Camera c;
+    c.view = {128, 96, 1.0, 321.0, -40.0};
+    expectGraphParity(g, c, GpuPattern::unfiltered(), "figure14 unfiltered", 0.5 / 255.0, 0.005);
+    c.view.scale = 2.7;
+    expectGraphParity(g, c, GpuPattern::unfiltered(), "figure14 unfiltered, scale 2.7", 0.5 / 255.0, 0.005);
+    for (const std::string filter : {"paper", "smooth"})
+        for (const double scale : {1.0, 4.0, 16.0, 64.0}) {
+            FilterOptions o;
+            o.use(parseFilter(filter));
+            c.view.scale = scale;
+            expectGraphParity(g, c, o, "figure14 " + filter + " scale " + std::to_string(int(scale)), 0.5 / 255.0, 0.005);
+        }
+}
+
 // Paper Fig. 15: the pattern on lit objects, in every GPU filter mode. The
 // object covers the expected part of the image (the same part whatever the
 // mode: the mesh, not the filter, sets the silhouette), carries the
@@ -441,7 +471,15 @@ TEST(Gpu, FilteringRecipesAssembleTheResponseChunk) {
 
 // Every program of the recipe table, with the chunk of every response kind,
 // compiles as GLSL 3.30 core and GLSL ES 3.00 (WebGL 2), compute programs as
-// GLSL 4.30, checked by the reference compiler.
+// GLSL 4.30, checked by the reference compiler; the texture-graph recipes
+// with the chunk generated for Figure 14's graph.
+// The generated chunks a recipe reads (the texture-graph recipes': Figure 14's graph).
+std::vector<std::pair<std::string, std::string>> generatedChunks(const std::string& recipe) {
+    if (!recipe.starts_with("graph")) return {};
+    const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
+    return {{kGraphProgramStem, graphProgramSource(g, recipe.starts_with("graph-filtered"))}};
+}
+
 TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {
     const fs::path dir = test::scratchPath("stochtex_glslang");
     fs::create_directories(dir);
@@ -449,7 +487,7 @@ TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {
                               const std::vector<std::string>& files) {
         const std::string prefix = t == GlslTarget::Core330 ? "core_" : t == GlslTarget::Es300 ? "es_" : "";
         const fs::path file = dir / (prefix + name + "." + ext);
-        std::ofstream(file) << assembleShader(t, files);
+        std::ofstream(file) << assembleShader(t, files, generatedChunks(name));
         const std::string cmd = "glslangValidator " + file.string() + " > " + (dir / "log.txt").string() + " 2>&1";
         const int rc = std::system(cmd.c_str());
         std::ifstream log(dir / "log.txt");

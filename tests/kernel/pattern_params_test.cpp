@@ -12,9 +12,11 @@
 #include <vector>
 
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/kernel/pattern_params.h"
+#include "stochtex/pattern/presets.h"
 
 namespace stochtex {
 namespace {
@@ -72,7 +74,12 @@ TEST(KernelPatternParams, CppOffsetsMatchTheStd140LayoutOfEveryProgram) {
         // Programs without the pattern (the window's "display") declare no block.
         const std::vector<std::string> chunks = shaderChunks(recipeFiles(r, ResponseKind::PrefilteredColormap));
         if (std::find(chunks.begin(), chunks.end(), "pattern_params") == chunks.end()) continue;
-        const gl::Program program = buildProgram(r.name);
+        // A texture graph's recipe reads a generated chunk: Figure 14's.
+        std::vector<std::pair<std::string, std::string>> generated;
+        if (r.name.starts_with("graph"))
+            generated = {{kGraphProgramStem, graphProgramSource(GraphPattern::build(loadPreset("figure14")),
+                                                                r.name == "graph-filtered")}};
+        const gl::Program program = buildProgram(r.name, ResponseKind::PrefilteredColormap, generated);
         GLint dataSize = 0;
         const std::map<std::string, GlMember> members = blockMembers(program.id(), dataSize);
         EXPECT_EQ(size_t(dataSize), sizeof(kernel::PatternParams)) << r.name;

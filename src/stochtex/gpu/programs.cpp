@@ -27,6 +27,10 @@ const std::vector<ProgramRecipe>& programRecipes() {
         {"scene", K::Graphics, {"mesh"}, {"common", "unfiltered", "filtering", R, "scene"}},
         {"export-include", K::Include, {}, {"common", "filtering", R}},
         {"display", K::Graphics, {"fullscreen"}, {"display"}},  // a render target in a window, sRGB-encoded
+        // A texture graph's program: the generated chunk wires the kernel functions (gpu/gpu_graph.h).
+        {"graph", K::Graphics, {"fullscreen"}, {"common", "graph_ops", "view", kGraphProgramStem, "graph"}},
+        {"graph-filtered", K::Graphics, {"fullscreen"},
+         {"common", "filtering", "response_prefiltered_colormap", "graph_ops", "view", kGraphProgramStem, "graph"}},
     };
     return recipes;
 }
@@ -44,11 +48,13 @@ const ProgramRecipe& programRecipe(const std::string& name) {
     throw std::invalid_argument("no program recipe \"" + name + "\"");
 }
 
-gl::Program buildProgram(const std::string& name, ResponseKind response) {
+gl::Program buildProgram(const std::string& name, ResponseKind response,
+                         const std::vector<std::pair<std::string, std::string>>& generated) {
     const ProgramRecipe& r = programRecipe(name);
     switch (r.kind) {
-        case ProgramRecipe::Kind::Graphics: return gl::Program(compileProgram(r.vertex, recipeFiles(r, response)));
-        case ProgramRecipe::Kind::Compute: return gl::Program(compileComputeProgram(recipeFiles(r, response)));
+        case ProgramRecipe::Kind::Graphics:
+            return gl::Program(compileProgram(r.vertex, recipeFiles(r, response), generated));
+        case ProgramRecipe::Kind::Compute: return gl::Program(compileComputeProgram(recipeFiles(r, response), generated));
         case ProgramRecipe::Kind::Include: break;
     }
     throw std::invalid_argument("program recipe \"" + name + "\" is an include, not a program");

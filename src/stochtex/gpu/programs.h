@@ -36,6 +36,9 @@ inline constexpr const char* kPatternBlockName = "PatternParameters";
 inline constexpr unsigned kPatternBlockBinding = 0;
 
 inline const std::string kResponseSlot = "response";
+// The stem the texture-graph recipes read for the chunk generated per graph
+// (gpu/gpu_graph.h, graphProgramSource); its text is passed as an override.
+inline const std::string kGraphProgramStem = "graph_program";
 // The shader chunk (stem) of a response kind.
 const std::string& responseChunk(ResponseKind kind);
 
@@ -47,6 +50,8 @@ std::vector<std::string> recipeFiles(const ProgramRecipe& recipe, ResponseKind r
 // Compiles and links a Graphics or Compute recipe with the response's chunk
 // (ignored by recipes without the slot; needs a current context;
 // ShaderError with file:line locations on failure).
-gl::Program buildProgram(const std::string& name, ResponseKind response = ResponseKind::PrefilteredColormap);
+// `generated`: the text of generated chunks by stem (a graph recipe's kGraphProgramStem).
+gl::Program buildProgram(const std::string& name, ResponseKind response = ResponseKind::PrefilteredColormap,
+                         const std::vector<std::pair<std::string, std::string>>& generated = {});
 
 }  // namespace stochtex

@@ -203,8 +203,9 @@ std::pair<std::string, std::string> readShaderFile(const std::string& path) {
     return {path, text};
 }
 
-std::string assembleShader(GlslTarget target, const std::vector<std::string>& files) {
-    return assemble(target, files, {});
+std::string assembleShader(GlslTarget target, const std::vector<std::string>& files,
+                           const std::vector<std::pair<std::string, std::string>>& overrides) {
+    return assemble(target, files, overrides);
 }
 
 unsigned compileProgram(const std::vector<std::string>& vertexFiles, const std::vector<std::string>& fragmentFiles,

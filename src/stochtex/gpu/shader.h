@@ -33,8 +33,10 @@ std::string shaderText(const std::string& stem);
 // it cannot be read or is not text.
 std::pair<std::string, std::string> readShaderFile(const std::string& path);
 
-// The version header, then the files in order (what the driver compiles).
-std::string assembleShader(GlslTarget target, const std::vector<std::string>& files);
+// The version header, then the files in order (what the driver compiles);
+// `overrides` as for compileProgram.
+std::string assembleShader(GlslTarget target, const std::vector<std::string>& files,
+                           const std::vector<std::pair<std::string, std::string>>& overrides = {});
 
 // Compiles and links a program (needs a current context); returns its id.
 // Sources are given by stems; `overrides` maps stems to replacement text

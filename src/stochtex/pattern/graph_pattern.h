@@ -126,6 +126,10 @@ public:
 
     // The program on the leaves' moments (mean, variance per leaf).
     Rgb fromMoments(const std::vector<std::array<float, 2>>& leafMoments) const;
+    // The estimators of leaf pair k (built for the estimators source only)
+    // and the prefiltered table of GraphPattern table k, for the GPU.
+    const FootprintEstimator& estimator(int pair) const { return *estimators_.at(size_t(pair)); }
+    const PrefilteredColormap& table(int k) const { return tables_.at(size_t(k)); }
 
 private:
     Rgb fromPairStats(const std::vector<FootprintStats>& stats) const;  // one per leaf pair

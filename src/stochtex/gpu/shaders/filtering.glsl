@@ -7,37 +7,59 @@
 // chunk turns the statistics into the colour (footprintResponse).
 uniform sampler2D uStatsX, uStatsY, uCovariance;  // RG32F mip levels: (E_l, V_l) / (E_l, C_l)
 
+// One pair of tiled noises whose statistics are estimated together: the
+// pattern's (N_x, N_y), read from uPattern by patternPair(), or a pair of a
+// texture graph's leaves (gpu/gpu_graph.cpp writes them as constants). Their
+// pyramids are passed beside it (GLSL cannot keep samplers in a struct).
+struct NoisePair {
+    vec2 mean;          // μ of each example
+    uvec2 seed;         // tile-offset seeds
+    int hasCovariance;  // 1: covariances fetched and used (a shared-offset pair)
+    int deliotHeitz;    // 1: uPattern.averageMoments instead of eq. 12 (the pattern's pair only)
+    int maxLod;         // L = log2 W
+    float exampleSize;  // W
+};
+
+NoisePair patternPair() {
+    return NoisePair(vec2(uPattern.meanX, uPattern.meanY), uvec2(uPattern.seedX, uPattern.seedY),
+                     uPattern.hasCovariance, uPattern.deliotHeitz, uPattern.maxLod, 1.0 / uPattern.invExampleSize);
+}
+
 // Tile i's statistics at one level: (E_l, V_l) of each noise and C_l.
 struct TileStats {
     vec2 x;  // (mean, variance) of N_x's tile
     vec2 y;
-    float c; // covariance (0 without uPattern.hasCovariance: not fetched)
+    float c; // covariance (0 without the pair's hasCovariance: not fetched)
 };
 
-TileStats tileStats(Stencil s, int i, vec2 fu, int level) {
+TileStats tileStats(sampler2D statsX, sampler2D statsY, sampler2D covariance, NoisePair pair, Stencil s, int i,
+                    vec2 fu, int level) {
     uvec2 vertex = stencilVertex(s, i);
-    vec2 ox = tileOffset(vertex, uPattern.seedX), oy = tileOffset(vertex, uPattern.seedY);
+    vec2 ox = tileOffset(vertex, pair.seed.x), oy = tileOffset(vertex, pair.seed.y);
     TileStats t;
-    t.x = periodicBilinearLod(uStatsX, fu, ox, level).rg;
-    t.y = periodicBilinearLod(uStatsY, fu, oy, level).rg;
-    t.c = uPattern.hasCovariance != 0 ? periodicBilinearLod(uCovariance, fu, ox, level).g : 0.0;
+    t.x = periodicBilinearLod(statsX, fu, ox, level).rg;
+    t.y = periodicBilinearLod(statsY, fu, oy, level).rg;
+    t.c = pair.hasCovariance != 0 ? periodicBilinearLod(covariance, fu, ox, level).g : 0.0;
     return t;
 }
 
 // Texel statistics of one level at one probe: (mean x, mean y, var x, var y)
 // and cov (eq. 8, 12, 17 by the kernel's blendMean / blendVariance).
-void texelStats(vec2 uv, int level, out vec4 stats, out float cov) {
+void texelStats(sampler2D statsX, sampler2D statsY, sampler2D covariance, NoisePair pair, vec2 uv, int level,
+                out vec4 stats, out float cov) {
     Stencil s = triangleGrid(uv, uPattern.gridDensity);
     vec2 fu = fract(uv);
-    TileStats a = tileStats(s, 0, fu, level), b = tileStats(s, 1, fu, level), c = tileStats(s, 2, fu, level);
-    stats = vec4(blendMean(uPattern.meanX, s.w, vec3(a.x.x, b.x.x, c.x.x)),
-                 blendMean(uPattern.meanY, s.w, vec3(a.y.x, b.y.x, c.y.x)),
+    TileStats a = tileStats(statsX, statsY, covariance, pair, s, 0, fu, level);
+    TileStats b = tileStats(statsX, statsY, covariance, pair, s, 1, fu, level);
+    TileStats c = tileStats(statsX, statsY, covariance, pair, s, 2, fu, level);
+    stats = vec4(blendMean(pair.mean.x, s.w, vec3(a.x.x, b.x.x, c.x.x)),
+                 blendMean(pair.mean.y, s.w, vec3(a.y.x, b.y.x, c.y.x)),
                  blendVariance(s.w, vec3(a.x.y, b.x.y, c.x.y)), blendVariance(s.w, vec3(a.y.y, b.y.y, c.y.y)));
-    cov = uPattern.hasCovariance != 0 ? blendVariance(s.w, vec3(a.c, b.c, c.c)) : 0.0;
-    if (uPattern.deliotHeitz != 0) {
+    cov = pair.hasCovariance != 0 ? blendVariance(s.w, vec3(a.c, b.c, c.c)) : 0.0;
+    if (pair.deliotHeitz != 0) {
         vec4 average = uPattern.averageMoments[level];
         stats.zw = average.xy;
-        cov = uPattern.hasCovariance != 0 ? average.z : 0.0;
+        cov = pair.hasCovariance != 0 ? average.z : 0.0;
     }
 }
 
@@ -47,19 +69,20 @@ void texelStats(vec2 uv, int level, out vec4 stats, out float cov) {
 // response_prefiltered_colormap.glsl, …), assembled after this file.
 vec3 footprintResponse(vec2 mean, vec2 var, float cov);
 
-// The statistics (μ̂, σ̂², ĉov) of N over the footprint of uv with Jacobian
-// columns jx, jy (uv per pixel). One loop for every footprint, a single
-// texel included (its statistics are then taken as they are): a branch
-// around the loop would make SIMD lanes run both paths.
-FootprintMoments footprintStatistics(vec2 uv, vec2 jx, vec2 jy) {
-    ProbeLayout probes = probeLayout(jx, jy, 1.0 / uPattern.invExampleSize, uPattern.aniso, uPattern.maxLod);
-    ProbeLevels levels = probeLevels(probes.lod, uPattern.maxLod, probes.count);
+// The statistics (μ̂, σ̂², ĉov) of a pair over the footprint of uv with
+// Jacobian columns jx, jy (uv per pixel). One loop for every footprint, a
+// single texel included (its statistics are then taken as they are): a
+// branch around the loop would make SIMD lanes run both paths.
+FootprintMoments pairStatistics(sampler2D statsX, sampler2D statsY, sampler2D covariance, NoisePair pair, vec2 uv,
+                                vec2 jx, vec2 jy) {
+    ProbeLayout probes = probeLayout(jx, jy, pair.exampleSize, uPattern.aniso, pair.maxLod);
+    ProbeLevels levels = probeLevels(probes.lod, pair.maxLod, probes.count);
     vec4 st, first;
     float c, firstCov;
     Moments sums;
     for (int k = 0; k < probes.count; ++k) {
         vec2 p = uv + probePosition(k, probes.count) * probes.axis;
-        texelStats(p, levels.l0, st, c);
+        texelStats(statsX, statsY, covariance, pair, p, levels.l0, st, c);
         if (k == 0) {
             sums = momentsAbout(st.xy);
             first = st;
@@ -67,7 +90,7 @@ FootprintMoments footprintStatistics(vec2 uv, vec2 jx, vec2 jy) {
         }
         sums = momentsAdd(sums, levels.w0, st.xy, st.zw, c);
         if (levels.w1 > 0.0) {
-            texelStats(p, levels.l1, st, c);
+            texelStats(statsX, statsY, covariance, pair, p, levels.l1, st, c);
             sums = momentsAdd(sums, levels.w1, st.xy, st.zw, c);
         }
     }
@@ -78,6 +101,11 @@ FootprintMoments footprintStatistics(vec2 uv, vec2 jx, vec2 jy) {
         r.cov = firstCov;
     }
     return r;
+}
+
+// The pattern's N over the footprint of uv.
+FootprintMoments footprintStatistics(vec2 uv, vec2 jx, vec2 jy) {
+    return pairStatistics(uStatsX, uStatsY, uCovariance, patternPair(), uv, jx, jy);
 }
 
 // Ŝ for the footprint of uv: the response of its statistics.
