@@ -45,7 +45,7 @@ void registerView(CLI::App& app) {
         validateCamera(o.camera);
         if (o.filter.aniso < 1 || o.filter.aniso > kMaxAnisotropy) throw InputError("--aniso must be in [1, 16]");
         const PatternSpec spec = loadPatternSource(args->source, FilterOptions{}.use(parseFilter("smooth")));
-        const int frames = runViewWindow(Pattern::build(spec), spec.name, o);
+        const int frames = runViewWindow(spec, o);
         if (!o.screenshot.empty()) std::printf("wrote %s after %d frames\n", o.screenshot.c_str(), frames);
     });
 }

@@ -12,13 +12,16 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
 
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/render_target.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/texture_graph.h"
 
 namespace stochtex::cli {
 
@@ -119,14 +122,20 @@ Image readWindow(int w, int h) {
 
 }  // namespace
 
-int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWindowOptions& options) {
+namespace {
+
+// The GPU renderer of one filter mode (the window builds one per mode, on first use).
+using RendererFactory = std::function<std::unique_ptr<GpuView>(GlContext&, const FilterOptions&)>;
+
+int runWindow(const RendererFactory& makeRenderer, bool hasNormalMap, const std::string& name,
+              const ViewWindowOptions& options) {
     ViewerState state;
     state.camera = options.camera;
     // The filter's name without the response (L switches that).
     state.filter = filterName(
         FilterOptions{}.use({options.filter.source, {ResponseKind::PrefilteredColormap, options.filter.response.prefilter}}));
     state.response = options.filter.response.kind;
-    state.hasNormalMap = pattern.normalMap() != nullptr;
+    state.hasNormalMap = hasNormalMap;
     auto context = GlContext::window(state.camera.view.width, state.camera.view.height, "stochtex view");
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     glfwSetWindowUserPointer(window, &state);
@@ -134,7 +143,7 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
     glfwSetCursorPosCallback(window, onCursor);
     glfwSetMouseButtonCallback(window, onButton);
     glfwSetKeyCallback(window, onKey);
-    std::map<std::pair<std::string, ResponseKind>, std::unique_ptr<GpuPattern>> renderers;  // built on first use
+    std::map<std::pair<std::string, ResponseKind>, std::unique_ptr<GpuView>> renderers;  // built on first use
     std::unique_ptr<RenderTarget> target;                          // rebuilt when the window's size changes
     const Display display;
     int frame = 0;
@@ -152,7 +161,7 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
             o.use(parseFilter(state.filter));
             o.response.kind = state.response;
             o.response.covariance = covariance;
-            r = std::make_unique<GpuPattern>(pattern, *context, o);
+            r = makeRenderer(*context, o);
         }
         const int w = state.camera.view.width, h = state.camera.view.height;
         if (!target || target->width() != w || target->height() != h)
@@ -179,6 +188,19 @@ int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWin
         context->swapAndPoll();
     }
     return frame;
+}
+
+}  // namespace
+
+int runViewWindow(const PatternSpec& spec, const ViewWindowOptions& options) {
+    if (spec.graph && !foldsIntoPattern(*spec.graph)) {
+        const GraphPattern graph = GraphPattern::build(spec);
+        return runWindow([&](GlContext& c, const FilterOptions& o) { return std::make_unique<GpuGraph>(graph, c, o); },
+                         false, spec.name, options);
+    }
+    const Pattern pattern = Pattern::build(spec);
+    return runWindow([&](GlContext& c, const FilterOptions& o) { return std::make_unique<GpuPattern>(pattern, c, o); },
+                     pattern.normalMap() != nullptr, spec.name, options);
 }
 
 }  // namespace stochtex::cli

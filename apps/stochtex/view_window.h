@@ -5,6 +5,7 @@
 #include <string>
 
 #include "stochtex/gpu/gpu_pattern.h"
+#include "stochtex/pattern/pattern_spec.h"
 
 namespace stochtex::cli {
 
@@ -15,8 +16,9 @@ struct ViewWindowOptions {
     std::string screenshot;  // save the last frame here when not empty
 };
 
-// Opens the window and runs until it closes (or `frames` frames); returns
-// the number of frames drawn.
-int runViewWindow(const Pattern& pattern, const std::string& name, const ViewWindowOptions& options);
+// Opens the window on the pattern of `spec` (a texture graph that is not a
+// pattern H∘N through its generated program) and runs until it closes (or
+// `frames` frames); returns the number of frames drawn.
+int runViewWindow(const PatternSpec& spec, const ViewWindowOptions& options);
 
 }  // namespace stochtex::cli

@@ -371,19 +371,22 @@ case_view() {
   # and far from the render turned upside down (≥ 10/255 on these patterns;
   # ~30-60/255 measured).
   [ -n "$compare" ] || { fail "view: no image comparer given"; return; }
-  local v f
+  # figure14: a texture graph, drawn by its generated program.
+  local p v f
+  for p in camouflage figure14; do
   for v in zoom plane; do
     for f in none smooth; do
-      local flags=(--preset camouflage --view "$v" --filter "$f" --scale 1.5 --size 96,64)
+      local flags=(--preset "$p" --view "$v" --filter "$f" --scale 1.5 --size 96,64)
       # Only where they act (render refuses them elsewhere).
       [ "$v" = plane ] && flags+=(--tilt 60)
       [ "$f" = smooth ] && flags+=(--aniso 4)
-      expect_ok "view $v $f" "$out/view_${v}_$f.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view "${flags[@]}" --frames 2 --screenshot "$out/view_${v}_$f.png"
-      expect_ok "render $v $f" "$out/render_${v}_$f.png" -- "$bin" render "${flags[@]}" -o "$out/render_${v}_$f.png"
+      expect_ok "view $p $v $f" "$out/view_${p}_${v}_$f.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view "${flags[@]}" --frames 2 --screenshot "$out/view_${p}_${v}_$f.png"
+      expect_ok "render $p $v $f" "$out/render_${p}_${v}_$f.png" -- "$bin" render "${flags[@]}" -o "$out/render_${p}_${v}_$f.png"
       local d
-      d=$("$compare" "$out/view_${v}_$f.png" "$out/render_${v}_$f.png") || { fail "view $v $f: compare failed"; continue; }
-      echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "view $v $f vs render: $d (want mean <= 0.5, flipped >= 10)"
+      d=$("$compare" "$out/view_${p}_${v}_$f.png" "$out/render_${p}_${v}_$f.png") || { fail "view $p $v $f: compare failed"; continue; }
+      echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "view $p $v $f vs render: $d (want mean <= 0.5, flipped >= 10)"
     done
+  done
   done
 }
 

@@ -477,7 +477,7 @@ TEST(Gpu, FilteringRecipesAssembleTheResponseChunk) {
 std::vector<std::pair<std::string, std::string>> generatedChunks(const std::string& recipe) {
     if (!recipe.starts_with("graph")) return {};
     const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
-    return {{kGraphProgramStem, graphProgramSource(g, recipe.starts_with("graph-filtered"))}};
+    return {{kGraphProgramStem, graphProgramSource(g)}};
 }
 
 TEST(Gpu, ShadersValidateAsCore330AndEs300AndTheKernelAs430) {

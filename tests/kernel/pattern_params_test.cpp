@@ -77,8 +77,7 @@ TEST(KernelPatternParams, CppOffsetsMatchTheStd140LayoutOfEveryProgram) {
         // A texture graph's recipe reads a generated chunk: Figure 14's.
         std::vector<std::pair<std::string, std::string>> generated;
         if (r.name.starts_with("graph"))
-            generated = {{kGraphProgramStem, graphProgramSource(GraphPattern::build(loadPreset("figure14")),
-                                                                r.name == "graph-filtered")}};
+            generated = {{kGraphProgramStem, graphProgramSource(GraphPattern::build(loadPreset("figure14")))}};
         const gl::Program program = buildProgram(r.name, ResponseKind::PrefilteredColormap, generated);
         GLint dataSize = 0;
         const std::map<std::string, GlMember> members = blockMembers(program.id(), dataSize);

@@ -2,12 +2,12 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/programs.h"
-#include "stochtex/gpu/render_target.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/gpu/uploads.h"
 #include "stochtex/kernel/pattern_params.h"
@@ -32,67 +32,30 @@ constexpr int kMaxUnits = 16;
 
 }  // namespace
 
-std::string graphProgramSource(const GraphPattern& graph, bool filtered, GraphMoments moments) {
-    std::ostringstream o;
-    o << "// Generated for one texture graph (gpu/gpu_graph.cpp): its leaves, then its operations.\n";
-    for (int k = 0; k < graph.leafCount(); ++k) {
-        o << "uniform sampler2D uGraphLeaf" << k << ";  // leaf \"" << graph.leafIds()[size_t(k)] << "\": "
-          << (filtered ? "(E, V) pyramid" : "example") << "\n";
-        if (!filtered && graph.leaf(k).example().gaussianized()) o << "uniform sampler2D uGraphInverse" << k << ";\n";
-    }
-    for (size_t t = 0; t < graph.tables().size(); ++t)
-        o << "uniform sampler2DArray uGraphTable" << t << ";  // " << (filtered ? "prefiltered layers" : "one layer")
-          << "\n";
-    o << "\nvec3 graphColour(vec2 uv, vec2 jx, vec2 jy) {\n";
-    if (filtered) {
-        for (size_t p = 0; p < graph.leafPairs().size(); ++p) {
-            const TiledField& pair = graph.leafPairs()[p];
-            // The leaves this pair holds (a leaf without a partner fills both channels).
-            int leaves[2] = {-1, -1};
-            for (int k = 0; k < graph.leafCount(); ++k)
-                if (graph.leafLocation(k)[0] == int(p)) leaves[graph.leafLocation(k)[1]] = k;
-            if (leaves[1] < 0) leaves[1] = leaves[0];
-            int maxLod = 0;
-            while ((1 << maxLod) < pair.exampleSize()) ++maxLod;
-            o << "    FootprintMoments p" << p << " = pairStatistics(uGraphLeaf" << leaves[0] << ", uGraphLeaf" << leaves[1]
-              << ", uGraphLeaf" << leaves[0] << ", NoisePair(vec2(" << glslFloat(pair.channel(0).example().mean())
-              << ", " << glslFloat(pair.channel(1).example().mean()) << "), uvec2(" << pair.channel(0).offsetSeed()
-              << "u, " << pair.channel(1).offsetSeed() << "u), 0, 0, " << maxLod << ", "
-              << glslFloat(float(pair.exampleSize())) << "), uv, jx, jy);\n";
-            for (int c = 0; c < 2; ++c)
-                if (c == 0 || leaves[1] != leaves[0])
-                    o << "    vec3 " << slot(leaves[c]) << " = vec3(p" << p << ".mean." << "xy"[c] << ", max(p" << p
-                      << ".var." << "xy"[c] << ", 0.0), 0.0);\n";
-        }
-    } else {
-        o << "    Stencil s = triangleGrid(uv, uPattern.gridDensity);\n    vec2 fu = fract(uv);\n";
-        for (int k = 0; k < graph.leafCount(); ++k) {
-            const TilingBlendingNoise& n = graph.leaf(k);
-            o << "    vec3 " << slot(k) << " = vec3(tilingBlending(uGraphLeaf" << k << ", "
-              << glslFloat(n.example().mean()) << ", " << n.offsetSeed() << "u, s, fu), 0.0, 0.0);\n";
-            if (n.example().gaussianized())
-                o << "    " << slot(k) << ".x = inverseTransform(uGraphInverse" << k << ", " << slot(k) << ".x);\n";
-        }
-    }
+namespace {
+
+// The operations after the leaves, on values (point) or on moments
+// (filtered), in the CPU evaluator's order (pattern/graph_pattern.cpp).
+void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filtered, GraphMoments moments) {
     int out = graph.leafCount();
     for (const GraphPattern::Operation& op : graph.operations()) {
         const std::string a = slot(op.inputs[0]), b = op.inputs[1] >= 0 ? slot(op.inputs[1]) : "",
                           t = op.inputs[2] >= 0 ? slot(op.inputs[2]) : "";
-        const std::string table = "uGraphTable" + std::to_string(op.table);
+        const std::string table = (filtered ? "uGraphPrefiltered" : "uGraphTable") + std::to_string(op.table);
+        const std::string sigmas = "sqrt(max(vec2(" + a + ".y, " + b + ".y), 0.0))";
         const std::string p0 = glslFloat(op.parameters[0]), p1 = glslFloat(op.parameters[1]);
-        o << "    vec3 " << slot(out) << " = ";  // operation " << op.id
+        o << "    vec3 " << slot(out) << " = ";
         switch (op.kind) {
             case NodeKind::Colormap:
                 if (filtered)
-                    o << "prefilteredLookup(" << table << ", vec2(" << a << ".x, " << b << ".x), sqrt(max(vec2(" << a
-                      << ".y, " << b << ".y), 0.0)))";
+                    o << "prefilteredLookup(" << table << ", vec2(" << a << ".x, " << b << ".x), " << sigmas << ")";
                 else
                     o << "tableLookup(" << table << ", 0, vec2(" << a << ".x, " << b << ".x))";
                 break;
             case NodeKind::ColormapField:
                 if (filtered)
-                    o << "vec3(matchedMoments(prefilteredLookup(" << table << ", vec2(" << a << ".x, " << b
-                      << ".x), sqrt(max(vec2(" << a << ".y, " << b << ".y), 0.0)))), 0.0)";
+                    o << "vec3(matchedMoments(prefilteredLookup(" << table << ", vec2(" << a << ".x, " << b << ".x), "
+                      << sigmas << ")), 0.0)";
                 else
                     o << "tableLookup(" << table << ", 0, vec2(" << a << ".x, " << b << ".x))";
                 break;
@@ -125,36 +88,91 @@ std::string graphProgramSource(const GraphPattern& graph, bool filtered, GraphMo
         ++out;
     }
     o << "    return " << slot(out - 1) << ";\n}\n";
+}
+
+}  // namespace
+
+std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) {
+    std::ostringstream o;
+    o << "// Generated for one texture graph (gpu/gpu_graph.cpp): the pattern's two colour\n"
+         "// functions, its leaves then its operations.\n";
+    for (int k = 0; k < graph.leafCount(); ++k) {
+        o << "uniform sampler2D uGraphExample" << k << ", uGraphStats" << k << ";  // leaf \""
+          << graph.leafIds()[size_t(k)] << "\": example, (E, V) pyramid\n";
+        if (graph.leaf(k).example().gaussianized()) o << "uniform sampler2D uGraphInverse" << k << ";  // T⁻¹ LUT\n";
+    }
+    for (size_t t = 0; t < graph.tables().size(); ++t)
+        o << "uniform sampler2DArray uGraphTable" << t << ", uGraphPrefiltered" << t << ";\n";
+
+    o << "\nvec3 unfilteredColour(vec2 uv) {\n"
+         "    Stencil s = triangleGrid(uv, uPattern.gridDensity);\n    vec2 fu = fract(uv);\n";
+    for (int k = 0; k < graph.leafCount(); ++k) {
+        const TilingBlendingNoise& n = graph.leaf(k);
+        o << "    vec3 " << slot(k) << " = vec3(tilingBlending(uGraphExample" << k << ", " << glslFloat(n.example().mean())
+          << ", " << n.offsetSeed() << "u, s, fu), 0.0, 0.0);\n";
+        if (n.example().gaussianized())
+            o << "    " << slot(k) << ".x = inverseTransform(uGraphInverse" << k << ", " << slot(k) << ".x);\n";
+    }
+    writeOperations(o, graph, false, moments);
+
+    o << "\nvec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {\n";
+    for (size_t p = 0; p < graph.leafPairs().size(); ++p) {
+        const TiledField& pair = graph.leafPairs()[p];
+        // The leaves this pair holds (a leaf without a partner fills both channels).
+        int leaves[2] = {-1, -1};
+        for (int k = 0; k < graph.leafCount(); ++k)
+            if (graph.leafLocation(k)[0] == int(p)) leaves[graph.leafLocation(k)[1]] = k;
+        if (leaves[1] < 0) leaves[1] = leaves[0];
+        int maxLod = 0;
+        while ((1 << maxLod) < pair.exampleSize()) ++maxLod;
+        o << "    FootprintMoments p" << p << " = pairStatistics(uGraphStats" << leaves[0] << ", uGraphStats" << leaves[1]
+          << ", uGraphStats" << leaves[0] << ", NoisePair(vec2(" << glslFloat(pair.channel(0).example().mean()) << ", "
+          << glslFloat(pair.channel(1).example().mean()) << "), uvec2(" << pair.channel(0).offsetSeed() << "u, "
+          << pair.channel(1).offsetSeed() << "u), 0, 0, " << maxLod << ", " << glslFloat(float(pair.exampleSize()))
+          << "), uv, jx, jy);\n";
+        for (int c = 0; c < 2; ++c)
+            if (c == 0 || leaves[1] != leaves[0])
+                o << "    vec3 " << slot(leaves[c]) << " = vec3(p" << p << ".mean." << "xy"[c] << ", max(p" << p
+                  << ".var." << "xy"[c] << ", 0.0), 0.0);\n";
+    }
+    writeOperations(o, graph, true, moments);
     return o.str();
 }
 
-struct GpuGraph::Impl {
-    gl::Program program;
-    gl::VertexArray vao;
-    std::vector<std::pair<std::string, gl::Texture>> planes, arrays;  // sampler name → texture
-    gl::Buffer parameters;
-    Rgb sky{};
-};
+namespace {
 
-GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments)
-    : impl_(std::make_unique<Impl>()) {
+// The graph's programs, once the options are ones its GPU program has.
+GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments) {
     if (options.source != StatisticsSource::Point && options.source != StatisticsSource::Estimators)
         throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
                                                   enumName(kStatisticsSourceNames, options.source));
     const bool filtered = options.source == StatisticsSource::Estimators;
     if (filtered && options.estimator != VarianceEstimator::Paper)
         throw InputError::parameter("estimator", "must be paper for a texture graph on the GPU");
-    int units = int(graph.tables().size()) + graph.leafCount();
-    for (int k = 0; k < graph.leafCount() && !filtered; ++k) units += graph.leaf(k).example().gaussianized();
+    // The point set (examples, T⁻¹ LUTs, tables) always, the filtered set (pyramids, prefiltered tables) when filtering.
+    int units = (int(graph.tables().size()) + graph.leafCount()) * (filtered ? 2 : 1);
+    for (int k = 0; k < graph.leafCount(); ++k) units += graph.leaf(k).example().gaussianized();
     if (units > kMaxUnits)
         throw InputError("the graph's GPU program reads " + std::to_string(units) + " textures, more than the " +
                          std::to_string(kMaxUnits) + " units a fragment shader has; use fewer leaves or tables");
+    return {filtered ? "graph-filtered" : "graph", filtered ? "graph-filtered-compute" : "graph-compute",
+            ResponseKind::PrefilteredColormap, {{kGraphProgramStem, graphProgramSource(graph, moments)}}};
+}
+
+}  // namespace
+
+struct GpuGraph::Impl {
+    std::vector<std::pair<std::string, gl::Texture>> planes, arrays;  // sampler name → texture
+    gl::Buffer parameters;
+    Rgb sky{};
+};
+
+GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments)
+    : GpuView(context, graphRecipes(graph, options, moments)), impl_(std::make_unique<Impl>()) {
+    const bool filtered = options.source == StatisticsSource::Estimators;
     const FilteredGraph f(graph, options, moments);  // the prefiltered tables, the pyramids, the sky
-    context.makeCurrent();
     Impl& m = *impl_;
     m.sky = f.skyColour();
-    m.program = buildProgram(filtered ? "graph-filtered" : "graph", ResponseKind::PrefilteredColormap,
-                             {{kGraphProgramStem, graphProgramSource(graph, filtered, moments)}});
     kernel::PatternParams p{};
     p.gridDensity = float(graph.gridDensity());
     p.invExampleSize = float(1.0 / graph.exampleSize());
@@ -162,34 +180,30 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
     p.smoothTable = options.response.prefilter == PrefilterMode::Smooth;
     p.tableLevels = int(PrefilteredColormap::sigmaLevels(options.response.prefilter).size());
     for (int k = 0; k < graph.leafCount(); ++k) {
-        const std::string name = "uGraphLeaf" + std::to_string(k);
-        const auto [pair, channel] = graph.leafLocation(k);
-        if (filtered) {
-            m.planes.emplace_back(name, pyramidTexture(f.estimator(pair).pyramid(channel)));
-            continue;
-        }
+        const std::string leaf = std::to_string(k);
         const NoiseExample& e = graph.leaf(k).example();
         const Image& v = e.grid().values();
-        m.planes.emplace_back(name, floatTexture(v.width(), v.height(), 1, v.data().data()));
+        m.planes.emplace_back("uGraphExample" + leaf, floatTexture(v.width(), v.height(), 1, v.data().data()));
         if (e.gaussianized()) {
             const std::vector<float>& lut = e.transform()->inverseLut();
-            m.planes.emplace_back("uGraphInverse" + std::to_string(k), floatTexture(int(lut.size()), 1, 1, lut.data()));
+            m.planes.emplace_back("uGraphInverse" + leaf, floatTexture(int(lut.size()), 1, 1, lut.data()));
         }
+        if (!filtered) continue;
+        const auto [pair, channel] = graph.leafLocation(k);
+        m.planes.emplace_back("uGraphStats" + leaf, pyramidTexture(f.estimator(pair).pyramid(channel)));
     }
     for (size_t t = 0; t < graph.tables().size(); ++t) {
-        const std::string name = "uGraphTable" + std::to_string(t);
-        if (filtered) {
-            const ColormapTable& h = graph.tables()[t].blended;
-            const int levels = int(f.table(int(t)).sigmas().size());
-            m.arrays.emplace_back(name, tableTexture(h.resolutionX(), h.resolutionY(), levels * levels,
-                                                     f.table(int(t)).atlas(h.resolutionX(), h.resolutionY()).data().data()));
-        } else {
-            const Image table = graph.tables()[t].point.table();
-            m.arrays.emplace_back(name, tableTexture(table.width(), table.height(), 1, table.data().data()));
-        }
+        const std::string table = std::to_string(t);
+        const Image point = graph.tables()[t].point.table();
+        m.arrays.emplace_back("uGraphTable" + table, tableTexture(point.width(), point.height(), 1, point.data().data()));
+        if (!filtered) continue;
+        const ColormapTable& h = graph.tables()[t].blended;
+        const int levels = int(f.table(int(t)).sigmas().size());
+        m.arrays.emplace_back("uGraphPrefiltered" + table,
+                              tableTexture(h.resolutionX(), h.resolutionY(), levels * levels,
+                                           f.table(int(t)).atlas(h.resolutionX(), h.resolutionY()).data().data()));
     }
     if (filtered) p.maxLod = f.estimator(0).maxLod();
-    m.vao = gl::newVertexArray();
     m.parameters = gl::newBuffer();
     glBindBuffer(GL_UNIFORM_BUFFER, m.parameters.id());
     glBufferData(GL_UNIFORM_BUFFER, sizeof p, &p, GL_STATIC_DRAW);
@@ -198,9 +212,8 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
 
 GpuGraph::~GpuGraph() = default;
 
-void GpuGraph::drawView(const Camera& camera) {
+void GpuGraph::bind(unsigned program) const {
     const Impl& m = *impl_;
-    const GLuint program = m.program.id();
     glUseProgram(program);
     int unit = 0;
     const auto bind = [&](GLenum target, const std::string& name, GLuint texture) {
@@ -210,30 +223,24 @@ void GpuGraph::drawView(const Camera& camera) {
     };
     for (const auto& [name, texture] : m.planes) bind(GL_TEXTURE_2D, name, texture.id());
     for (const auto& [name, texture] : m.arrays) bind(GL_TEXTURE_2D_ARRAY, name, texture.id());
-    // The pattern's own samplers, declared by the shared chunks but not read
-    // by the graph: on units of their own type, since GL refuses to draw
-    // when samplers of two types share one.
-    for (const char* name : {"uStatsX", "uStatsY", "uCovariance"})
-        glUniform1i(glGetUniformLocation(program, name), 0);
+    // Samplers declared but not bound (the filtered set when unfiltered, the
+    // response chunk's): on a unit of their own type, since GL refuses to
+    // draw when samplers of two types share one.
+    for (int k = 0; k < kMaxUnits; ++k) {
+        const std::string leaf = std::to_string(k);
+        for (const std::string& name : {"uGraphStats" + leaf, "uGraphInverse" + leaf})
+            if (std::none_of(m.planes.begin(), m.planes.end(), [&](const auto& p) { return p.first == name; }))
+                glUniform1i(glGetUniformLocation(program, name.c_str()), 0);
+        const std::string name = "uGraphPrefiltered" + leaf;
+        if (std::none_of(m.arrays.begin(), m.arrays.end(), [&](const auto& a) { return a.first == name; }))
+            glUniform1i(glGetUniformLocation(program, name.c_str()), int(m.planes.size()));
+    }
     for (const char* name : {"uTable", "uColormap"})
         glUniform1i(glGetUniformLocation(program, name), int(m.planes.size()));
     const GLuint block = glGetUniformBlockIndex(program, kPatternBlockName);
     if (block != GL_INVALID_INDEX) glUniformBlockBinding(program, block, kPatternBlockBinding);
     glBindBufferBase(GL_UNIFORM_BUFFER, kPatternBlockBinding, m.parameters.id());
     glUniform3f(glGetUniformLocation(program, "uSky"), m.sky[0], m.sky[1], m.sky[2]);
-    setCameraUniforms(program, camera, false);
-    glBindVertexArray(m.vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-}
-
-Image GpuGraph::render(const Camera& camera) {
-    validateCamera(camera);
-    // Framebuffer row y is image row y, as GpuPattern::render.
-    const RenderTarget target(camera.view.width, camera.view.height, false);
-    drawView(camera);
-    Image out = target.readRgb(RenderTarget::Rows::AsDrawn);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return out;
 }
 
 }  // namespace stochtex

@@ -12,17 +12,22 @@
 #include <string>
 
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/gpu_view.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/graph_pattern.h"
 
 namespace stochtex {
 
-// The generated chunk: `vec3 graphColour(vec2 uv, vec2 jx, vec2 jy)` and
-// the samplers it reads (uGraphLeafK, uGraphInverseK, uGraphTableK).
-// filtered: the estimators and prefiltered tables (else the point values).
-std::string graphProgramSource(const GraphPattern& graph, bool filtered, GraphMoments moments = GraphMoments::Matched);
+// The generated chunk: the pattern's two colour functions for the graph,
+// `vec3 unfilteredColour(vec2 uv)` (the point values) and `vec3
+// filteredColour(vec2 uv, vec2 jx, vec2 jy)` (the estimators and the
+// prefiltered tables), which the pattern's main files call (pattern.frag,
+// filtered.frag, the compute kernels, scene.frag), and the samplers they read
+// (uGraphExampleK, uGraphInverseK, uGraphStatsK per leaf; uGraphTableK,
+// uGraphPrefilteredK per table).
+std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched);
 
-class GpuGraph {
+class GpuGraph final : public GpuView {
 public:
     // options.source: Point or Estimators (InputError naming `source`
     // otherwise), the paper estimator only; InputError when the graph needs
@@ -30,15 +35,11 @@ public:
     // to the GPU: the graph need not outlive this object.
     GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options,
              GraphMoments moments = GraphMoments::Matched);
-    ~GpuGraph();
-    GpuGraph(const GpuGraph&) = delete;
-    GpuGraph& operator=(const GpuGraph&) = delete;
+    ~GpuGraph() override;
 
-    // The camera mapping of FilteredGraph::render; RGB float. Footprints
-    // are the camera's exact Jacobian.
-    Image render(const Camera& camera);
-    // Draws into the framebuffer bound now, over the current viewport.
-    void drawView(const Camera& camera);
+    // Binds the graph's textures (the point set, and the filtered set when
+    // filtering), its parameters and the sky colour to `program`.
+    void bind(unsigned program) const override;
 
 private:
     struct Impl;

@@ -3,15 +3,12 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <functional>
-#include <numbers>
 #include <optional>
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/programs.h"
-#include "stochtex/gpu/render_target.h"
 #include "stochtex/gpu/uploads.h"
 #include "stochtex/kernel/pattern_params.h"
 
@@ -19,41 +16,34 @@ namespace stochtex {
 
 namespace {
 
-// Raised by setDerivatives and setPipeline, whichever of the pair comes second.
-InputError rasterizerNeedsFragments() {
-    return InputError::parameter("derivatives",
-                                 "must be camera with the compute pipeline (compute shaders have no dFdx), got rasterizer");
+// The pattern's programs, once the statistics source is one the GPU has.
+GpuView::Recipes patternRecipes(const FilterOptions& options) {
+    if (options.source != StatisticsSource::Point && options.source != StatisticsSource::Estimators)
+        throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
+                                                  enumName(kStatisticsSourceNames, options.source));
+    const bool filtered = options.source == StatisticsSource::Estimators;
+    return {filtered ? "filtered" : "unfiltered", filtered ? "filtered-compute" : "unfiltered-compute",
+            options.response.kind, {}};
 }
 
 }  // namespace
 
 struct GpuPattern::Impl {
-    gl::Program program, kernelProgram;
-    gl::VertexArray vao;
-    bool hasCompute = false;
-    Pipeline pipeline = Pipeline::Fragment;
     gl::Texture examples[2], inverses[2], colormap;
     gl::Buffer parameters;  // kernel::PatternParams, the shaders' PatternParameters block
     Rgb sky{};
     // Filtered rendering.
     FilterOptions options;
-    Derivatives derivatives = Derivatives::Camera;
     gl::Texture stats[2], covariance, table;
     bool shared = false;
     std::optional<LeanShading> lean;  // the lean response's shading
 };
 
 GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
-    : impl_(std::make_unique<Impl>()) {
-    if (options.source != StatisticsSource::Point && options.source != StatisticsSource::Estimators)
-        throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
-                                                  enumName(kStatisticsSourceNames, options.source));
-    context.makeCurrent();
+    : GpuView(context, patternRecipes(options)), impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.options = options;
-    m.hasCompute = context.hasCompute();
     const bool filtered = options.source == StatisticsSource::Estimators;
-    m.program = buildProgram(filtered ? "filtered" : "unfiltered", options.response.kind);
     const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
     m.sky = f.skyColour();
     // The field the response reads: the colour noises, or the normal map's slopes.
@@ -87,7 +77,6 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
             p.averageMoments[l] = {est.pyramid(0).averageMoment(l), est.pyramid(1).averageMoment(l),
                                    m.shared ? est.covariancePyramid()->averageMoment(l) : 0.0f, 0.0f};
     }
-    m.vao = gl::newVertexArray();
     p.meanX = field.channel(0).example().mean();
     p.meanY = field.channel(1).example().mean();
     p.gridDensity = float(field.gridDensity());
@@ -117,12 +106,6 @@ GpuPattern::~GpuPattern() = default;
 bool GpuPattern::filtered() const { return impl_->options.source == StatisticsSource::Estimators; }
 
 ResponseKind GpuPattern::responseKind() const { return impl_->options.response.kind; }
-
-Image GpuPattern::render(const View& view) {
-    Camera camera;
-    camera.view = view;
-    return render(camera);
-}
 
 void GpuPattern::bind(unsigned program) const {
     const Impl& m = *impl_;
@@ -161,86 +144,6 @@ void GpuPattern::bind(unsigned program) const {
         glUniform1f(glGetUniformLocation(program, "uLeanSpecular"), float(l.specular));
         glUniform1i(glGetUniformLocation(program, "uLeanCovariance"), m.options.response.covariance ? 1 : 0);
     }
-}
-
-void GpuPattern::setDerivatives(Derivatives d) {
-    if (d == Derivatives::Rasterizer && impl_->pipeline == Pipeline::Compute)
-        throw rasterizerNeedsFragments();
-    impl_->derivatives = d;
-}
-
-void GpuPattern::setPipeline(Pipeline p) {
-    Impl& m = *impl_;
-    if (p == Pipeline::Compute) {
-        if (!m.hasCompute) throw GpuUnavailable("the compute pipeline needs OpenGL 4.3 (compute shaders)");
-        if (m.derivatives == Derivatives::Rasterizer)
-            throw rasterizerNeedsFragments();
-        if (!m.kernelProgram)
-            m.kernelProgram = buildProgram(filtered() ? "filtered-compute" : "unfiltered-compute", responseKind());
-    }
-    m.pipeline = p;
-}
-
-Image GpuPattern::render(const Camera& camera) {
-    validateCamera(camera);
-    const View& view = camera.view;
-    // Framebuffer row y is image row y: the shader maps fragment y to v the
-    // way the CPU maps image rows.
-    const RenderTarget target(view.width, view.height, false);
-    drawOrDispatch(camera);
-    Image out = target.readRgb(RenderTarget::Rows::AsDrawn);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return out;
-}
-
-void GpuPattern::setViewUniforms(unsigned program, const Camera& camera) const {
-    bind(program);
-    setCameraUniforms(program, camera, impl_->derivatives == Derivatives::Rasterizer);
-}
-
-void GpuPattern::drawView(const Camera& camera) {
-    const Impl& m = *impl_;
-    setViewUniforms(m.program.id(), camera);
-    glBindVertexArray(m.vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-}
-
-void GpuPattern::drawOrDispatch(const Camera& camera) {
-    const Impl& m = *impl_;
-    if (m.pipeline == Pipeline::Fragment) return drawView(camera);
-    // The kernel writes the texture attached to the bound framebuffer.
-    GLint target = 0;
-    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
-                                          &target);
-    setViewUniforms(m.kernelProgram.id(), camera);
-    glBindImageTexture(0, GLuint(target), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glDispatchCompute(GLuint((camera.view.width + 7) / 8), GLuint((camera.view.height + 7) / 8), 1);
-    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-}
-
-double GpuPattern::secondsPerFrame(const Camera& camera, int frames) {
-    validateCamera(camera);
-    if (frames < 1) throw InputError::parameter("frames", "must be >= 1, got " + std::to_string(frames));
-    double seconds = 0;
-    const RenderTarget target(camera.view.width, camera.view.height, false);
-    {
-        // Warm-up, at least 0.3 s: drivers finish compiling and uploading at
-        // the first draw, and a GPU that idled (during a read-back, say)
-        // needs a while at full load to raise its clocks again (an H100
-        // measured right after idling ran at 345 of 1980 MHz).
-        using clock = std::chrono::steady_clock;
-        const auto warm = clock::now();
-        do {
-            drawOrDispatch(camera);
-            glFinish();
-        } while (std::chrono::duration<double>(clock::now() - warm).count() < 0.3);
-        const auto start = clock::now();
-        for (int f = 0; f < frames; ++f) drawOrDispatch(camera);
-        glFinish();
-        seconds = std::chrono::duration<double>(clock::now() - start).count();
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return seconds / frames;
 }
 
 }  // namespace stochtex

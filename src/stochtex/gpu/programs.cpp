@@ -19,18 +19,26 @@ const std::string& responseChunk(ResponseKind kind) {
 const std::vector<ProgramRecipe>& programRecipes() {
     using K = ProgramRecipe::Kind;
     const std::string& R = kResponseSlot;
+    // A graph's tables are prefiltered colormaps: their lookup is that response's chunk.
+    const std::string& G = responseChunk(ResponseKind::PrefilteredColormap);
     static const std::vector<ProgramRecipe> recipes = {
         {"unfiltered", K::Graphics, {"fullscreen"}, {"common", "unfiltered", R, "view", "pattern"}},
-        {"filtered", K::Graphics, {"fullscreen"}, {"common", "filtering", R, "view", "filtered"}},
+        {"filtered", K::Graphics, {"fullscreen"}, {"common", "pattern_filtering", R, "view", "filtered"}},
         {"unfiltered-compute", K::Compute, {}, {"common", "unfiltered", R, "view", "kernel_unfiltered", "view_kernel"}},
-        {"filtered-compute", K::Compute, {}, {"common", "filtering", R, "view", "kernel_filtered", "view_kernel"}},
-        {"scene", K::Graphics, {"mesh"}, {"common", "unfiltered", "filtering", R, "scene"}},
-        {"export-include", K::Include, {}, {"common", "filtering", R}},
+        {"filtered-compute", K::Compute, {}, {"common", "pattern_filtering", R, "view", "kernel_filtered", "view_kernel"}},
+        {"scene", K::Graphics, {"mesh"}, {"common", "unfiltered", "pattern_filtering", R, "scene"}},
+        {"export-include", K::Include, {}, {"common", "pattern_filtering", R}},
         {"display", K::Graphics, {"fullscreen"}, {"display"}},  // a render target in a window, sRGB-encoded
-        // A texture graph's program: the generated chunk wires the kernel functions (gpu/gpu_graph.h).
-        {"graph", K::Graphics, {"fullscreen"}, {"common", "graph_ops", "view", kGraphProgramStem, "graph"}},
+        // A texture graph's programs: the chunk generated per graph (gpu/gpu_graph.h) defines
+        // unfilteredColour and filteredColour by wiring the kernel functions; the rest is the pattern's.
+        {"graph", K::Graphics, {"fullscreen"}, {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "pattern"}},
         {"graph-filtered", K::Graphics, {"fullscreen"},
-         {"common", "filtering", "response_prefiltered_colormap", "graph_ops", "view", kGraphProgramStem, "graph"}},
+         {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "filtered"}},
+        {"graph-compute", K::Compute, {},
+         {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "kernel_unfiltered", "view_kernel"}},
+        {"graph-filtered-compute", K::Compute, {},
+         {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "kernel_filtered", "view_kernel"}},
+        {"graph-scene", K::Graphics, {"mesh"}, {"common", "filtering", G, "graph_ops", kGraphProgramStem, "scene"}},
     };
     return recipes;
 }

@@ -56,6 +56,7 @@ const std::map<std::string, std::vector<std::string>>& chunkNeeds() {
         {"marble", {"hash"}},
         {"common", {"hash", "grid", "lookup", "pattern_params"}},
         {"filtering", {"footprint", "moments"}},
+        {"pattern_filtering", {"filtering"}},
         {"response_prefiltered_colormap", {"sigma_levels"}},
         {"response_lean", {"lean"}},
         {"view", {"camera"}},

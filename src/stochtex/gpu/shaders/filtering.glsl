@@ -1,11 +1,11 @@
-// The filtered pattern Ŝ = H̄(μ̂, σ̂) (paper §4–5): the
-// footprint comes from the rasterizer's derivatives of uv, is split into
-// OpenGL-style anisotropic probes, each probe into two pyramid levels
-// (trilinear), and the texel statistics of eq. 8, 12, 17 are combined by
-// eq. 9, 14–15, 18–19, by the kernel's functions (kernel/footprint.glsl,
-// moments.glsl), which filter/ and pattern/ call on the CPU. A response
-// chunk turns the statistics into the colour (footprintResponse).
-uniform sampler2D uStatsX, uStatsY, uCovariance;  // RG32F mip levels: (E_l, V_l) / (E_l, C_l)
+// The footprint statistics of a pair of tiled noises (paper §4): the
+// footprint (the camera's Jacobian or the rasterizer's derivatives of uv) is
+// split into OpenGL-style anisotropic probes, each probe into two pyramid
+// levels (trilinear), and the texel statistics of eq. 8, 12, 17 are combined
+// by eq. 9, 14–15, 18–19, by the kernel's functions (kernel/footprint.glsl,
+// moments.glsl), which filter/ and pattern/ call on the CPU. The pattern's
+// pair is pattern_filtering.glsl's; a texture graph's pairs are its
+// generated chunk's (gpu/gpu_graph.cpp).
 
 // One pair of tiled noises whose statistics are estimated together: the
 // pattern's (N_x, N_y), read from uPattern by patternPair(), or a pair of a
@@ -19,11 +19,6 @@ struct NoisePair {
     int maxLod;         // L = log2 W
     float exampleSize;  // W
 };
-
-NoisePair patternPair() {
-    return NoisePair(vec2(uPattern.meanX, uPattern.meanY), uvec2(uPattern.seedX, uPattern.seedY),
-                     uPattern.hasCovariance, uPattern.deliotHeitz, uPattern.maxLod, 1.0 / uPattern.invExampleSize);
-}
 
 // Tile i's statistics at one level: (E_l, V_l) of each noise and C_l.
 struct TileStats {
@@ -63,12 +58,6 @@ void texelStats(sampler2D statsX, sampler2D statsY, sampler2D covariance, NoiseP
     }
 }
 
-// The response: the colour of a footprint whose N has these statistics
-// (mean, variances, covariance; pattern/response.h). Declared here and
-// defined by the response chunk the program recipe names (gpu/programs.cpp:
-// response_prefiltered_colormap.glsl, …), assembled after this file.
-vec3 footprintResponse(vec2 mean, vec2 var, float cov);
-
 // The statistics (μ̂, σ̂², ĉov) of a pair over the footprint of uv with
 // Jacobian columns jx, jy (uv per pixel). One loop for every footprint, a
 // single texel included (its statistics are then taken as they are): a
@@ -101,15 +90,4 @@ FootprintMoments pairStatistics(sampler2D statsX, sampler2D statsY, sampler2D co
         r.cov = firstCov;
     }
     return r;
-}
-
-// The pattern's N over the footprint of uv.
-FootprintMoments footprintStatistics(vec2 uv, vec2 jx, vec2 jy) {
-    return pairStatistics(uStatsX, uStatsY, uCovariance, patternPair(), uv, jx, jy);
-}
-
-// Ŝ for the footprint of uv: the response of its statistics.
-vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {
-    FootprintMoments r = footprintStatistics(uv, jx, jy);
-    return footprintResponse(r.mean, r.var, r.cov);
 }
