@@ -21,28 +21,24 @@ void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
 
 PatternRenderer::PatternRenderer(const PatternSpec& spec, const FilterOptions& options, const DeviceFlags& flags) {
     checkDeviceFilter(flags, options);
-    if (spec.graph && !foldsIntoPattern(*spec.graph)) {
+    const bool graph = spec.graph && !foldsIntoPattern(*spec.graph);
+    if (graph)
         graph_ = std::make_unique<GraphPattern>(GraphPattern::build(spec));
-        if (!flags.gpu) {
-            filteredGraph_ = std::make_unique<FilteredGraph>(*graph_, options);
-            return;
-        }
-        if (flags.pipeline != GpuPattern::Pipeline::Fragment || flags.derivatives != GpuPattern::Derivatives::Camera)
-            throw InputError(spec.name + ": --gpu: a graph with a non-linear node before its output renders with "
-                                         "the fragment pipeline and the camera's derivatives");
-        context_ = GlContext::headless();
-        device_ = context_->describe();
-        gpuGraph_ = std::make_unique<GpuGraph>(*graph_, *context_, options);
-        return;
-    }
-    pattern_ = std::make_unique<Pattern>(Pattern::build(spec));
+    else
+        pattern_ = std::make_unique<Pattern>(Pattern::build(spec));
     if (!flags.gpu) {
-        cpu_ = std::make_unique<FilteredPattern>(*pattern_, options);
+        if (graph)
+            cpuGraph_ = std::make_unique<FilteredGraph>(*graph_, options);
+        else
+            cpu_ = std::make_unique<FilteredPattern>(*pattern_, options);
         return;
     }
     context_ = GlContext::headless();
     device_ = context_->describe();
-    gpu_ = std::make_unique<GpuPattern>(*pattern_, *context_, options);
+    if (graph)
+        gpu_ = std::make_unique<GpuGraph>(*graph_, *context_, options);
+    else
+        gpu_ = std::make_unique<GpuPattern>(*pattern_, *context_, options);
     gpu_->setDerivatives(flags.derivatives);
     gpu_->setPipeline(flags.pipeline);
 }
@@ -50,9 +46,8 @@ PatternRenderer::PatternRenderer(const PatternSpec& spec, const FilterOptions& o
 PatternRenderer::~PatternRenderer() = default;
 
 Image PatternRenderer::render(const Camera& camera, const Progress& progress) {
-    if (filteredGraph_) return filteredGraph_->render(camera, progress);
-    if (gpuGraph_) return gpuGraph_->render(camera);
-    return gpu_ ? gpu_->render(camera) : cpu_->render(camera, progress);
+    if (gpu_) return gpu_->render(camera);
+    return cpuGraph_ ? cpuGraph_->render(camera, progress) : cpu_->render(camera, progress);
 }
 
 }  // namespace stochtex::cli

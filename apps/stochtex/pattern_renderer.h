@@ -36,12 +36,11 @@ public:
 
 private:
     std::unique_ptr<GlContext> context_;
-    std::unique_ptr<GpuPattern> gpu_;
+    std::unique_ptr<GpuView> gpu_;  // GpuPattern or GpuGraph
     std::unique_ptr<Pattern> pattern_;
     std::unique_ptr<FilteredPattern> cpu_;
     std::unique_ptr<GraphPattern> graph_;
-    std::unique_ptr<FilteredGraph> filteredGraph_;
-    std::unique_ptr<GpuGraph> gpuGraph_;
+    std::unique_ptr<FilteredGraph> cpuGraph_;
     std::string device_ = "CPU";
 };
 

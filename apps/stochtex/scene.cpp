@@ -6,6 +6,7 @@
 #include "common.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_pattern.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/scene_render.h"
 #include "stochtex/image/image_io.h"
 
@@ -40,15 +41,14 @@ void registerScene(CLI::App& app) {
         const Mesh mesh = makeObject(args->object);
         const PatternSpec spec = loadPatternSource(args->source, args->options);
         const auto start = std::chrono::steady_clock::now();
-        const Pattern pattern = Pattern::build(spec);
         auto context = GlContext::headless();
-        GpuPattern gpu(pattern, *context, options);
+        const std::unique_ptr<GpuView> gpu = makeGpuView(spec, *context, options);
         SceneCamera camera;
         if (args->object == "plane") {
             camera.eye = {0.0f, 0.2f, 2.6f};
             camera.target = {0.0f, -0.9f, -0.5f};
         }
-        const Image image = renderScene(gpu, mesh, camera, w, h, args->tiling);
+        const Image image = renderScene(*gpu, mesh, camera, w, h, args->tiling);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image);
         std::printf("wrote %s (%dx%d, %s on a %s, filter %s, %s, %.2f s)\n", args->output.c_str(), w, h,

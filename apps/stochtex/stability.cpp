@@ -54,9 +54,10 @@ void registerStability(CLI::App& app) {
         validateStabilityStudy(study);
         refuseUnusedFilterFlags(*cmd, study.filters);
         const PatternSpec spec = loadPatternSource(args->source, study.filters);
+        ThreadLimit limit(args->threads);
+        const Pattern pattern = Pattern::build(spec);  // what only building shows, before any output
         const std::string& dir = args->dir;
         ensureFolder(dir);
-        ThreadLimit limit(args->threads);
         FrameSequenceSet outputs(dir, args->filters, study.size, study.size,
                                  {.video = args->video, .frames = args->writeFrames});
         StabilityFrameSink writeFrame;
@@ -64,7 +65,7 @@ void registerStability(CLI::App& app) {
         std::printf("%d frames, scale %g -> %g, %dx%d, ground truth: S̄ with at most %d samples per axis\n",
                     study.frames, study.from, study.to, study.size, study.size, study.truthSamples);
         ProgressLine progress("stability");
-        const StabilityStudyResult r = stabilityStudy(Pattern::build(spec), study, progress.callback(), writeFrame);
+        const StabilityStudyResult r = stabilityStudy(pattern, study, progress.callback(), writeFrame);
         progress.finish();
         std::printf("%s", r.summary.markdown().c_str());
         for (const std::string& video : outputs.finish()) std::printf("wrote %s\n", video.c_str());

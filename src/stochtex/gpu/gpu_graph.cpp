@@ -155,13 +155,14 @@ GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& op
     if (units > kMaxUnits)
         throw InputError("the graph's GPU program reads " + std::to_string(units) + " textures, more than the " +
                          std::to_string(kMaxUnits) + " units a fragment shader has; use fewer leaves or tables");
-    return {filtered ? "graph-filtered" : "graph", filtered ? "graph-filtered-compute" : "graph-compute",
+    return {filtered ? "graph-filtered" : "graph", filtered ? "graph-filtered-compute" : "graph-compute", "graph-scene",
             ResponseKind::PrefilteredColormap, {{kGraphProgramStem, graphProgramSource(graph, moments)}}};
 }
 
 }  // namespace
 
 struct GpuGraph::Impl {
+    bool filtered = false;
     std::vector<std::pair<std::string, gl::Texture>> planes, arrays;  // sampler name → texture
     gl::Buffer parameters;
     Rgb sky{};
@@ -172,6 +173,7 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
     const bool filtered = options.source == StatisticsSource::Estimators;
     const FilteredGraph f(graph, options, moments);  // the prefiltered tables, the pyramids, the sky
     Impl& m = *impl_;
+    m.filtered = filtered;
     m.sky = f.skyColour();
     kernel::PatternParams p{};
     p.gridDensity = float(graph.gridDensity());
@@ -211,6 +213,14 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
 }
 
 GpuGraph::~GpuGraph() = default;
+
+bool GpuGraph::filtered() const { return impl_->filtered; }
+
+std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options) {
+    if (spec.graph && !foldsIntoPattern(*spec.graph))
+        return std::make_unique<GpuGraph>(GraphPattern::build(spec), context, options);
+    return std::make_unique<GpuPattern>(Pattern::build(spec), context, options);
+}
 
 void GpuGraph::bind(unsigned program) const {
     const Impl& m = *impl_;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/gpu/gpu_view.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/graph_pattern.h"
@@ -40,10 +41,15 @@ public:
     // Binds the graph's textures (the point set, and the filtered set when
     // filtering), its parameters and the sky colour to `program`.
     void bind(unsigned program) const override;
+    bool filtered() const override;
 
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+// The GPU view of a pattern file: GpuPattern, or GpuGraph for a texture
+// graph that is not a pattern H∘N (what it is built from is not kept).
+std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options);
 
 }  // namespace stochtex

@@ -22,7 +22,7 @@ GpuView::Recipes patternRecipes(const FilterOptions& options) {
         throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
                                                   enumName(kStatisticsSourceNames, options.source));
     const bool filtered = options.source == StatisticsSource::Estimators;
-    return {filtered ? "filtered" : "unfiltered", filtered ? "filtered-compute" : "unfiltered-compute",
+    return {filtered ? "filtered" : "unfiltered", filtered ? "filtered-compute" : "unfiltered-compute", "scene",
             options.response.kind, {}};
 }
 
@@ -104,8 +104,6 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
 GpuPattern::~GpuPattern() = default;
 
 bool GpuPattern::filtered() const { return impl_->options.source == StatisticsSource::Estimators; }
-
-ResponseKind GpuPattern::responseKind() const { return impl_->options.response.kind; }
 
 void GpuPattern::bind(unsigned program) const {
     const Impl& m = *impl_;

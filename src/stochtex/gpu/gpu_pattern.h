@@ -33,10 +33,7 @@ public:
     // programs of other recipes (the scene).
     void bind(unsigned program) const override;
     // The estimators and a response (else the unfiltered S = H ∘ N).
-    bool filtered() const;
-    // Whose shader chunk the programs of other recipes must assemble
-    // (buildProgram's response).
-    ResponseKind responseKind() const;
+    bool filtered() const override;
 
 private:
     struct Impl;

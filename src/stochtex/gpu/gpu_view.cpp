@@ -30,6 +30,8 @@ GpuView::GpuView(GlContext& context, Recipes recipes) : recipes_(std::move(recip
 
 GpuView::~GpuView() = default;
 
+gl::Program GpuView::sceneProgram() const { return buildProgram(recipes_.scene, recipes_.response, recipes_.generated); }
+
 void GpuView::setDerivatives(Derivatives d) {
     if (d == Derivatives::Rasterizer && pipeline_ == Pipeline::Compute) throw rasterizerNeedsFragments();
     derivatives_ = d;

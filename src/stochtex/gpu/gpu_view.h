@@ -23,7 +23,7 @@ public:
     // The recipes of the fragment and the compute program (built on first
     // use) with the response's chunk and the generated chunks by stem.
     struct Recipes {
-        std::string fragment, compute;
+        std::string fragment, compute, scene;
         ResponseKind response = ResponseKind::PrefilteredColormap;
         std::vector<std::pair<std::string, std::string>> generated;
     };
@@ -62,6 +62,13 @@ public:
     // reads, its parameters' buffer and the sky colour. Also for programs of
     // other recipes (the scene's).
     virtual void bind(unsigned program) const = 0;
+    // The estimators and prefiltered tables (else the point values).
+    virtual bool filtered() const = 0;
+    // Whose shader chunk the programs assemble.
+    ResponseKind responseKind() const { return recipes_.response; }
+    // The program that draws this view's pattern on a mesh (scene.frag),
+    // with the same chunks; needs the context current.
+    gl::Program sceneProgram() const;
 
 protected:
     // Makes the context current and builds the fragment program.

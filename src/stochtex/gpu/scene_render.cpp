@@ -11,7 +11,7 @@
 
 namespace stochtex {
 
-Image renderScene(const GpuPattern& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
+Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
                   float tiling) {
     if (width < 1 || height < 1 || width > 8192 || height > 8192)
         throw InputError::parameter("size", "must be in [1, 8192] per side, got " + std::to_string(width) + "x" +
@@ -19,7 +19,7 @@ Image renderScene(const GpuPattern& pattern, const Mesh& mesh, const SceneCamera
     if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
         throw InputError::parameter("tiling", "must be a finite number in (0, 1e4], got " + formatValue(tiling));
     for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}  // earlier callers' errors are not ours
-    const gl::Program program = buildProgram("scene", pattern.responseKind());
+    const gl::Program program = pattern.sceneProgram();
     const gl::VertexArray vao = gl::newVertexArray();
     glBindVertexArray(vao.id());
     const gl::Buffer vertices = gl::newBuffer(), indices = gl::newBuffer();

@@ -17,8 +17,8 @@ Pattern Pattern::build(const PatternSpec& spec) {
     if (spec.graph) {
         if (!foldsIntoPattern(*spec.graph))
             throw InputError(spec.name + ": this graph has a non-linear node before its output (\"" + spec.graph->output +
-                             "\" reads one), so it is not a pattern H∘N of two fields; it renders on the CPU "
-                             "(docs/GRAPHS.md says where such graphs go)");
+                             "\" reads one), so it is not the pattern H∘N of two fields this needs; render, "
+                             "bake-image, view and scene evaluate such graphs (docs/GRAPHS.md)");
         GraphFields fields = buildGraphFields(*spec.graph, spec.seed, spec.name);
         const uint32_t sx = deriveSeed(spec.seed, 1);
         const uint32_t sy = spec.offsets == OffsetMode::Shared ? sx : deriveSeed(spec.seed, 2);
