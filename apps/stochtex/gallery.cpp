@@ -54,7 +54,7 @@ void registerGallery(CLI::App& app) {
             progress.update(double(index++) / double(names.size()), name);
             const PatternSpec spec = loadPreset(name);
             // A graph with a non-linear node before its output: its stages instead of H and N.
-            const PatternSheet ps = spec.graph && !foldsIntoPattern(*spec.graph)
+            const PatternSheet ps = needsGraphEvaluator(spec)
                                         ? graphSheet(GraphPattern::build(spec), *spec.graph, spec.scale, args->size)
                                         : patternSheet(Pattern::build(spec), spec.scale, args->size, name);
             const Image& img = ps.pattern;

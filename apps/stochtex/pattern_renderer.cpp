@@ -21,7 +21,7 @@ void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
 
 PatternRenderer::PatternRenderer(const PatternSpec& spec, const FilterOptions& options, const DeviceFlags& flags) {
     checkDeviceFilter(flags, options);
-    const bool graph = spec.graph && !foldsIntoPattern(*spec.graph);
+    const bool graph = needsGraphEvaluator(spec);
     if (graph)
         graph_ = std::make_unique<GraphPattern>(GraphPattern::build(spec));
     else

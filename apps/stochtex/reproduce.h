@@ -42,6 +42,9 @@ void addFigure12Flags(CLI::App& sub, ReproduceArgs& args);
 void prepareReproduce(ReproduceArgs& args);
 // The same for figure 12 (its preset and options).
 void prepareFigure12(ReproduceArgs& args);
+// `reproduce all`: figures 11, 12 and 14 take figure 4's size and reference
+// samples (scaled), then are prepared as above.
+void prepareReproduceAll(ReproduceArgs& args);
 // Writes figure12.png, figure12.csv and the images.
 void writeFigure12(const Figure12Result& r, const std::string& dir);
 

@@ -1,6 +1,5 @@
 // stochtex reproduce all: Table 1, Figure 4, Figures 7–9, 10, 11, 12 and 14
 // in one folder each, with an index.html.
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -19,21 +18,7 @@ void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> ar
         const auto start = std::chrono::steady_clock::now();
         auto elapsed = [&] { return int(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()); };
         const std::string& dir = args->dir;
-        // Figure 11 is Figure 4's comparison for the phasor pattern: the same
-        // image size, reference samples and table.
-        args->figure11.size = args->figure4.size;
-        args->figure11.referenceSamples = args->figure4.referenceSamples;
-        args->figure11.response = args->figure4.response;
-        // Figure 12's global view is 5/4 of Figure 4's side wide (640 × 400 by
-        // default), with at most its reference samples.
-        args->figure12.width = std::max(32, args->figure4.size * 5 / 4);
-        args->figure12.height = std::max(32, args->figure12.width * 5 / 8);
-        args->figure12.referenceSamples = std::min(args->figure12.referenceSamples, args->figure4.referenceSamples);
-        prepareFigure12(*args);
-        // Figure 14 at half Figure 4's side (its reference costs more per pixel).
-        args->figure14.size = std::max(16, args->figure4.size / 2);
-        args->figure14.referenceSamples = std::min(args->figure14.referenceSamples, args->figure4.referenceSamples);
-        validateFigure14(args->figure14);
+        prepareReproduceAll(*args);
         // Each part's files are written as soon as it is done.
         ProgressLine progress("reproduce all");
         const Table1Result t = table1(args->table, progressPart(progress.callback(), 0, 7));

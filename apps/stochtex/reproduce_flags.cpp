@@ -1,6 +1,7 @@
 // The flags and outputs shared by the `reproduce` subcommands (reproduce.h).
 #include "reproduce.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "progress.h"
@@ -119,6 +120,24 @@ void prepareFigure12(ReproduceArgs& a) {
         a.figure12.pattern.normalMap->shading = validatedShading(a.figure12.pattern.normalMap->shading);
     }
     validateFigure12(a.figure12);
+}
+
+void prepareReproduceAll(ReproduceArgs& a) {
+    // Figure 11 is Figure 4's comparison for the phasor pattern: the same
+    // image size, reference samples and table.
+    a.figure11.size = a.figure4.size;
+    a.figure11.referenceSamples = a.figure4.referenceSamples;
+    a.figure11.response = a.figure4.response;
+    // Figure 12's global view is 5/4 of Figure 4's side wide (640 × 400 by
+    // default), with at most its reference samples.
+    a.figure12.width = std::max(32, a.figure4.size * 5 / 4);
+    a.figure12.height = std::max(32, a.figure12.width * 5 / 8);
+    a.figure12.referenceSamples = std::min(a.figure12.referenceSamples, a.figure4.referenceSamples);
+    prepareFigure12(a);
+    // Figure 14 at half Figure 4's side (its reference costs more per pixel).
+    a.figure14.size = std::max(16, a.figure4.size / 2);
+    a.figure14.referenceSamples = std::min(a.figure14.referenceSamples, a.figure4.referenceSamples);
+    validateFigure14(a.figure14);
 }
 
 void writeFigure12(const Figure12Result& r, const std::string& dir) {

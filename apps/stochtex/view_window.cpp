@@ -193,8 +193,9 @@ int runWindow(const RendererFactory& makeRenderer, bool hasNormalMap, const std:
 }  // namespace
 
 int runViewWindow(const PatternSpec& spec, const ViewWindowOptions& options) {
-    if (spec.graph && !foldsIntoPattern(*spec.graph)) {
+    if (needsGraphEvaluator(spec)) {
         const GraphPattern graph = GraphPattern::build(spec);
+        checkGraphTextureUnits(graph, true);  // the window switches to filtered modes: refuse before it opens
         return runWindow([&](GlContext& c, const FilterOptions& o) { return std::make_unique<GpuGraph>(graph, c, o); },
                          false, spec.name, options);
     }

@@ -21,6 +21,7 @@
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
 #include "test_util.h"
@@ -340,28 +341,111 @@ TEST(Gpu, GraphPatternMatchesTheCpu) {
 // generated program: unfiltered, and filtered by moment matching through the
 // prefiltered tables, against the CPU evaluator (pattern/graph_pattern.h).
 void expectGraphParity(const GraphPattern& g, const Camera& camera, const FilterOptions& o, const std::string& what,
-                       double meanLimit, double allowedOutliers) {
-    GpuGraph gpu(g, context(), o);
-    const Difference d = compare(gpu.render(camera), FilteredGraph(g, o).render(camera));
+                       double meanLimit, double allowedOutliers, GraphMoments moments = GraphMoments::Matched) {
+    GpuGraph gpu(g, context(), o, moments);
+    const Difference d = compare(gpu.render(camera), FilteredGraph(g, o, moments).render(camera));
     std::printf("[ info ] %s: mean |GPU - CPU| %.2e, max %.2e, %.3f%% of pixels over 2/255\n", what.c_str(), d.mean,
                 d.max, 100.0 * d.outlierFraction);
     EXPECT_LE(d.mean, meanLimit) << what;
     EXPECT_LE(d.outlierFraction, allowedOutliers) << what << " (max |Δ| " << d.max << ")";
 }
 
+// Every node of the table in its sample graph (graph_nodes.h,
+// sampleNodeGraph): each node's operation in the generated program against
+// the CPU evaluator, unfiltered and smooth. A node that gives a field is read
+// by a colormap, so a linear node folds into a leaf and a non-linear one
+// runs as an operation (curve, colormap_field, mix: their kernel functions).
+TEST(Gpu, EveryNodeInItsSampleGraphMatchesTheCpu) {
+    const fs::path dir = test::scratchPath("stochtex_gpu_nodes"), file = dir / "exemplar.png";
+    fs::create_directories(dir);
+    Image img(64, 64, 1);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) img.at(x, y) = float(0.5 + 0.4 * std::sin(0.3 * x) * std::cos(0.2 * y));
+    writeImage(file.string(), img, WriteOptions{.transfer = Transfer::Linear});
+    for (const NodeInfo& node : graphNodes()) {
+        nlohmann::json j = sampleNodeGraph(node, file.string());
+        j["seed"] = 3;
+        const auto parsed = JsonReader::parse(j.dump(), node.name);
+        const GraphPattern g = GraphPattern::build(parsePatternSpec(JsonReader(parsed, node.name), "."));
+        Camera c;
+        c.view = {64, 48, 1.5, 17.0, 5.0};
+        expectGraphParity(g, c, GpuPattern::unfiltered(), node.name + " unfiltered", 1e-4, 0.005);
+        FilterOptions o;
+        o.use(parseFilter("smooth"));
+        c.view.scale = 6.0;
+        expectGraphParity(g, c, o, node.name + " smooth, scale 6", 1e-4, 0.005);
+    }
+    fs::remove_all(dir);
+}
+
+// A graph with what Figure 14 lacks: a Gaussianized exemplar leaf (T⁻¹ on
+// points, folded into its table when filtered), leaves of two sizes (a pair
+// of its own), independent tile offsets, a curve, a sum, an affine and a mix;
+// unfiltered, smooth, and smooth passing the intermediate fields' means alone.
+TEST(Gpu, TextureGraphWithEveryOperationMatchesTheCpu) {
+    const fs::path dir = test::scratchPath("stochtex_gpu_graph"), file = dir / "exemplar.png";
+    fs::create_directories(dir);
+    Image img(64, 64, 1);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            img.at(x, y) = float(0.5 + 0.3 * std::sin(0.2 * x + 0.1 * y) * std::cos(0.15 * y) + 0.1 * std::sin(0.7 * x));
+    writeImage(file.string(), img, WriteOptions{.transfer = Transfer::Linear});
+    const std::string text = R"({"name": "every", "seed": 12, "offsets": "independent", "nodes": {
+        "e": {"type": "exemplar", "path": ")" + file.string() + R"("},
+        "n": {"type": "spectral_noise", "size": 128, "components": [{"shape": "lowpass", "cutoff": 5}]},
+        "n2": {"type": "spectral_noise", "size": 128, "components": [{"shape": "ring", "frequency": 9, "bandwidth": 3}]},
+        "f": {"type": "colormap_field", "x": "e", "y": "n", "colormap": {"type": "phasor", "profile": "sine", "transfer": "linear"}},
+        "k": {"type": "curve", "input": "n2", "points": [[0, 0.2], [0.4, 0.9], [1, 0.1]]},
+        "s": {"type": "sum", "a": "f", "b": "k", "weight_a": 0.6, "weight_b": 0.4},
+        "af": {"type": "affine", "input": "s", "scale": 0.8, "offset": 0.1},
+        "ca": {"type": "colormap", "x": "af", "y": "n2", "colormap": {"type": "phasor", "profile": "sine", "palette": ["#203060", "#f0c040"]}},
+        "cb": {"type": "colormap", "x": "k", "y": "f", "colormap": {"type": "gaussian"}},
+        "c": {"type": "mix", "a": "ca", "b": "cb", "t": "af"}}, "output": "c"})";
+    const GraphPattern g = GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "every"), "every"), "."));
+    ASSERT_EQ(g.leafCount(), 3);
+    ASSERT_EQ(g.leafPairs().size(), 2u);  // the 64² exemplar alone, the two 128² noises together
+    ASSERT_TRUE(g.leaf(0).example().gaussianized());
+    Camera c;
+    c.view = {96, 64, 1.3, 40.0, 9.0};
+    expectGraphParity(g, c, GpuPattern::unfiltered(), "every operation, unfiltered", 1e-4, 0.005);
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    for (const double scale : {3.0, 20.0}) {
+        c.view.scale = scale;
+        expectGraphParity(g, c, o, "every operation, smooth, scale " + std::to_string(int(scale)), 1e-4, 0.005);
+        expectGraphParity(g, c, o, "every operation, smooth mean-only, scale " + std::to_string(int(scale)), 1e-4, 0.005,
+                          GraphMoments::MeanOnly);
+    }
+    // More textures than a fragment shader has units: one message, before any GL work.
+    std::string many = R"({"nodes": {"a": {"type": "spectral_noise", "size": 16, "components": [{"shape": "lowpass", "cutoff": 2}]})";
+    std::string chain = "a";
+    for (int k = 0; k < 9; ++k) {
+        const std::string id = "t" + std::to_string(k);
+        many += ", \"" + id + "\": {\"type\": \"curve\", \"input\": \"" + chain + "\", \"points\": [[0, 1], [1, 0]]}";
+        chain = id;
+    }
+    many += R"(, "c": {"type": "colormap", "x": ")" + chain + R"(", "y": "a", "colormap": {"type": "gaussian"}}}, "output": "c"})";
+    const GraphPattern big = GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(many, "many"), "many"), "."));
+    EXPECT_NO_THROW({ const GpuGraph unfiltered(big, context(), GpuPattern::unfiltered()); });  // 1 leaf + 10 tables
+    const std::string e = test::inputErrorOf([&] { const GpuGraph filtered(big, context(), o); }).what();
+    EXPECT_NE(e.find("reads 22 textures filtered, more than the 16 units"), std::string::npos) << e;
+    fs::remove_all(dir);
+}
+
 TEST(Gpu, TextureGraphProgramMatchesTheCpu) {
     const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
     Camera c;
     c.view = {128, 96, 1.0, 321.0, -40.0};
-    expectGraphParity(g, c, GpuPattern::unfiltered(), "figure14 unfiltered", 0.5 / 255.0, 0.005);
+    // Mean limits at 5× the largest measured (2.1e-5 on llvmpipe), far under the issue's 0.5/255.
+    expectGraphParity(g, c, GpuPattern::unfiltered(), "figure14 unfiltered", 1e-4, 0.005);
     c.view.scale = 2.7;
-    expectGraphParity(g, c, GpuPattern::unfiltered(), "figure14 unfiltered, scale 2.7", 0.5 / 255.0, 0.005);
+    expectGraphParity(g, c, GpuPattern::unfiltered(), "figure14 unfiltered, scale 2.7", 1e-4, 0.005);
     for (const std::string filter : {"paper", "smooth"})
         for (const double scale : {1.0, 4.0, 16.0, 64.0}) {
             FilterOptions o;
             o.use(parseFilter(filter));
             c.view.scale = scale;
-            expectGraphParity(g, c, o, "figure14 " + filter + " scale " + std::to_string(int(scale)), 0.5 / 255.0, 0.005);
+            expectGraphParity(g, c, o, "figure14 " + filter + " scale " + std::to_string(int(scale)), 1e-4, 0.005);
         }
 }
 

@@ -108,46 +108,64 @@ TEST(GraphPattern, FoldingGraphEvaluatesAsItsPattern) {
 }
 
 // Each non-linear node on known inputs: the node's value against its
-// formula applied to the value of its input, pixel by pixel.
+// formula applied to the value of its input, pixel by pixel. The image
+// colormap holds R = x, G = y, B = 0.25 as data (a float EXR), so a channel
+// and the luminance read known mixtures of the two inputs.
 TEST(GraphPattern, EachOperationComputesItsFormulaOnItsInputs) {
+    const std::filesystem::path ramp = std::filesystem::temp_directory_path() / "stochtex_graph_ramp.exr";
+    Image h(16, 16, 3);
+    for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 16; ++i) {
+            h.at(i, 15 - j, 0) = float(i) / 15.0f;  // x to the right
+            h.at(i, 15 - j, 1) = float(j) / 15.0f;  // y up: the bottom row is y = 0
+            h.at(i, 15 - j, 2) = 0.25f;
+        }
+    writeImage(ramp.string(), h);
+    const std::string image = R"({"type": "image", "path": ")" + ramp.string() + R"("})";
     const std::string nodes = R"("a": )" + kNoise + R"(,
-        "b": {"type": "spectral_noise", "size": 64, "seed": 8, "components": [{"shape": "lowpass", "cutoff": 3}]},
+        "b": {"type": "spectral_noise", "size": 64, "seed": 8, "stddev": 0.1, "components": [{"shape": "lowpass", "cutoff": 3}]},
         "up": {"type": "curve", "input": "a", "points": [[0, 0], [1, 1]]},
         "down": {"type": "curve", "input": "a", "points": [[0, 0.9], [0.5, 0.1], [1, 0.3]], "resolution": 1024},
-        "lum": {"type": "colormap_field", "x": "a", "y": "b", "colormap": {"type": "gaussian", "transfer": "linear"}},
+        "lum": {"type": "colormap_field", "x": "a", "y": "b", "colormap": )" + image + R"(},
+        "green": {"type": "colormap_field", "x": "a", "y": "b", "channel": "green", "colormap": )" + image + R"(},
+        "blue": {"type": "colormap_field", "x": "a", "y": "b", "channel": "blue", "colormap": )" + image + R"(},
         "ax": {"type": "affine", "input": "lum", "scale": -2, "offset": 1.5},
         "sm": {"type": "sum", "a": "ax", "b": "down", "weight_a": 0.25, "weight_b": 0.5},
-        "red": {"type": "colormap", "x": "sm", "y": "sm", "colormap": {"type": "painted", "background": [1, 0, 0], "shapes": []}},
-        "blue": {"type": "colormap", "x": "up", "y": "up", "colormap": {"type": "painted", "background": [0, 0, 1], "shapes": []}},
-        "c": {"type": "mix", "a": "red", "b": "blue", "t": "sm"})";
+        "red": {"type": "colormap", "x": "sm", "y": "green", "colormap": {"type": "painted", "background": [1, 0, 0], "shapes": []}},
+        "navy": {"type": "colormap", "x": "up", "y": "blue", "colormap": {"type": "painted", "background": [0, 0, 1], "shapes": []}},
+        "c": {"type": "mix", "a": "red", "b": "navy", "t": "sm"})";
     const GraphPattern g = GraphPattern::build(parse(graph(nodes)));
+    std::filesystem::remove(ramp);
     const View view{24, 24, 2.0, 5.0, 7.0};
     const auto field = [&](const char* id) { return g.renderNode(view, id); };
     const Image a = field("a"), b = field("b"), up = field("up"), down = field("down"), lum = field("lum");
-    const Image sm = g.renderNode(view, "sm"), out = g.render(view);
+    const Image green = field("green"), blue = field("blue"), sm = field("sm"), out = g.render(view);
     const auto curve = [](double x) { return x <= 0.5 ? 0.9 - 1.6 * x : 0.1 + 0.4 * (x - 0.5); };
     for (int y = 0; y < 24; ++y)
         for (int x = 0; x < 24; ++x) {
-            const double va = a.at(x, y, 0);
+            const double va = a.at(x, y, 0), vb = b.at(x, y, 0);
             ASSERT_GT(va, 0.0);
             ASSERT_LT(va, 1.0);
+            ASSERT_GT(vb, 0.0);
+            ASSERT_LT(vb, 1.0);
             EXPECT_NEAR(up.at(x, y, 0), va, 1e-6);
             // 1024 entries: the table's linear interpolation is exact between its kinks, off by ≤ 1.6/1023·½ near x = ½.
             EXPECT_NEAR(down.at(x, y, 0), curve(va), std::abs(va - 0.5) < 1e-3 ? 8e-4 : 1e-5);
-            // H = x as data: the luminance of a gray x is x.
-            EXPECT_NEAR(lum.at(x, y, 0), va, 1e-6);
+            // The channels of H(a, b) = (a, b, 0.25), and its Rec. 709 luminance.
+            EXPECT_NEAR(green.at(x, y, 0), vb, 1e-6);
+            EXPECT_NEAR(blue.at(x, y, 0), 0.25, 1e-6);
+            EXPECT_NEAR(lum.at(x, y, 0), 0.2126 * va + 0.7152 * vb + 0.0722 * 0.25, 1e-6);
             // The sum of the affine of lum and down, from their rendered values
             // (inside [0, 1] here: renderNode's clamp is idle).
             const double s = 0.25 * (-2 * lum.at(x, y, 0) + 1.5) + 0.5 * down.at(x, y, 0);
             ASSERT_GT(s, 0.0);
             ASSERT_LT(s, 1.0);
             EXPECT_NEAR(sm.at(x, y, 0), s, 1e-6);
-            // mix of red and blue by sm: (1 − s, 0, s).
+            // mix of red and navy by sm: (1 − s, 0, s).
             EXPECT_NEAR(out.at(x, y, 0), 1 - sm.at(x, y, 0), 1e-6);
             EXPECT_NEAR(out.at(x, y, 1), 0.0, 1e-7);
             EXPECT_NEAR(out.at(x, y, 2), sm.at(x, y, 0), 1e-6);
         }
-    (void)b;
 }
 
 // Moment matching through (g, g²) tables: a curve f(x) = x² sampled at 33

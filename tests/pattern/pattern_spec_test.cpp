@@ -154,7 +154,7 @@ TEST(Presets, RequiredPresetsExistAndBuild) {
     for (const auto& n : names) {
         const PatternSpec s = loadPreset(n);
         EXPECT_EQ(s.name, n);
-        if (s.graph && !foldsIntoPattern(*s.graph)) {  // figure14: evaluated per pixel
+        if (needsGraphEvaluator(s)) {  // figure14: evaluated per pixel
             EXPECT_EQ(GraphPattern::build(s).exampleSize(), 256) << n;
             continue;
         }

@@ -139,6 +139,16 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
     return o.str();
 }
 
+void checkGraphTextureUnits(const GraphPattern& graph, bool filtered) {
+    // The point set (examples, T⁻¹ LUTs, tables) always, the filtered set (pyramids, prefiltered tables) when filtering.
+    int units = (int(graph.tables().size()) + graph.leafCount()) * (filtered ? 2 : 1);
+    for (int k = 0; k < graph.leafCount(); ++k) units += graph.leaf(k).example().gaussianized();
+    if (units > kMaxUnits)
+        throw InputError("the graph's GPU program reads " + std::to_string(units) + " textures " +
+                         (filtered ? "filtered" : "unfiltered") + ", more than the " + std::to_string(kMaxUnits) +
+                         " units a fragment shader has; use fewer leaves or tables");
+}
+
 namespace {
 
 // The graph's programs, once the options are ones its GPU program has.
@@ -149,12 +159,7 @@ GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& op
     const bool filtered = options.source == StatisticsSource::Estimators;
     if (filtered && options.estimator != VarianceEstimator::Paper)
         throw InputError::parameter("estimator", "must be paper for a texture graph on the GPU");
-    // The point set (examples, T⁻¹ LUTs, tables) always, the filtered set (pyramids, prefiltered tables) when filtering.
-    int units = (int(graph.tables().size()) + graph.leafCount()) * (filtered ? 2 : 1);
-    for (int k = 0; k < graph.leafCount(); ++k) units += graph.leaf(k).example().gaussianized();
-    if (units > kMaxUnits)
-        throw InputError("the graph's GPU program reads " + std::to_string(units) + " textures, more than the " +
-                         std::to_string(kMaxUnits) + " units a fragment shader has; use fewer leaves or tables");
+    checkGraphTextureUnits(graph, filtered);
     return {filtered ? "graph-filtered" : "graph", filtered ? "graph-filtered-compute" : "graph-compute", "graph-scene",
             ResponseKind::PrefilteredColormap, {{kGraphProgramStem, graphProgramSource(graph, moments)}}};
 }
@@ -217,7 +222,7 @@ GpuGraph::~GpuGraph() = default;
 bool GpuGraph::filtered() const { return impl_->filtered; }
 
 std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options) {
-    if (spec.graph && !foldsIntoPattern(*spec.graph))
+    if (needsGraphEvaluator(spec))
         return std::make_unique<GpuGraph>(GraphPattern::build(spec), context, options);
     return std::make_unique<GpuPattern>(Pattern::build(spec), context, options);
 }

@@ -28,6 +28,11 @@ namespace stochtex {
 // uGraphPrefilteredK per table).
 std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched);
 
+// InputError when the graph's program needs more textures than a fragment
+// shader has units (16): the point set, and with `filtered` the pyramids and
+// prefiltered tables too.
+void checkGraphTextureUnits(const GraphPattern& graph, bool filtered);
+
 class GpuGraph final : public GpuView {
 public:
     // options.source: Point or Estimators (InputError naming `source`

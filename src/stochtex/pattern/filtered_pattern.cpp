@@ -18,16 +18,8 @@ namespace {
 // mean (the unfiltered pixel's colour) nor a table's lookup (paper mode's
 // stops at σ = 0.125) would be the same colour in every mode.
 Rgb averageColour(const Pattern& p, const ColormapTable& blendingSpaceColormap) {
-    double mean[2], sigma[2];
-    for (int a = 0; a < 2; ++a) {
-        const auto& v = p.example(a).values().data();
-        double sum = 0, sum2 = 0;
-        for (const float x : v) sum += x;
-        mean[a] = sum / double(v.size());
-        for (const float x : v) sum2 += (x - mean[a]) * (x - mean[a]);
-        sigma[a] = std::sqrt(sum2 / double(v.size()));
-    }
-    return convolveColormapNumerically(blendingSpaceColormap, mean[0], mean[1], sigma[0], sigma[1]);
+    const std::array<double, 2> x = exampleMoments(p.example(0)), y = exampleMoments(p.example(1));
+    return convolveColormapNumerically(blendingSpaceColormap, x[0], y[0], std::sqrt(x[1]), std::sqrt(y[1]));
 }
 
 // Mean and covariance of the whole field (its examples' own: tiling and
@@ -71,6 +63,24 @@ ColormapTable foldInverseTransforms(const ColormapTable& h, const NoiseExample* 
     return ColormapTable(t);
 }
 
+std::array<double, 2> exampleMoments(const NoiseExample& example) {
+    const auto& v = example.values().data();
+    double sum = 0, sum2 = 0;
+    for (const float x : v) sum += x;
+    const double mean = sum / double(v.size());
+    for (const float x : v) sum2 += (x - mean) * (x - mean);
+    return {mean, sum2 / double(v.size())};
+}
+
+void validateFilterOptions(const FilterOptions& options) {
+    if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
+        throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
+                                                 std::to_string(options.aniso));
+    if (options.referenceMaxSamples < 1 || options.referenceMaxSamples > 4096)
+        throw InputError::parameter("referenceMaxSamples",
+                                    "must be in [1, 4096], got " + std::to_string(options.referenceMaxSamples));
+}
+
 NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames, name, "filter"); }
 
 std::string filterName(const FilterOptions& options) {
@@ -93,12 +103,7 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
       source_(options.source),
       field_(&pattern.tiledField()),
       colormap_(foldInverseTransforms(pattern.colormap(), &pattern.example(0), &pattern.example(1))) {
-    if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
-        throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
-                                                 std::to_string(options.aniso));
-    if (options.referenceMaxSamples < 1 || options.referenceMaxSamples > 4096)
-        throw InputError::parameter("referenceMaxSamples",
-                                    "must be in [1, 4096], got " + std::to_string(options.referenceMaxSamples));
+    validateFilterOptions(options);
     if (options.response.kind == ResponseKind::Lean) {
         // Built whatever the source: the lean point response is its own, not H.
         response_ = makeResponse(options.response, colormap_,

@@ -75,6 +75,12 @@ NamedFilter parseFilter(const std::string& name);
 // "exact/prefiltered-colormap") so that it is never mistaken for a name.
 std::string filterName(const FilterOptions& options);
 
+// InputError naming `aniso` or `referenceMaxSamples` when out of range.
+void validateFilterOptions(const FilterOptions& options);
+// The mean and variance of an example's values (blending space): those of
+// its tiled field, whose tiling and blending keeps them.
+std::array<double, 2> exampleMoments(const NoiseExample& example);
+
 // H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)) on H's own grid, for each of x and y
 // that is a Gaussianized exemplar (null: that axis as it is): a colormap
 // moved into the blending space, where the statistics are Gaussian.

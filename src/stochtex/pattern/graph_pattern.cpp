@@ -66,6 +66,8 @@ ColormapTable curveTable(const std::vector<std::array<double, 2>>& points, int r
 
 }  // namespace
 
+bool needsGraphEvaluator(const PatternSpec& spec) { return spec.graph && !foldsIntoPattern(*spec.graph); }
+
 GraphPattern GraphPattern::build(const PatternSpec& spec) {
     if (!spec.graph) throw std::invalid_argument("GraphPattern::build: the pattern is not a graph");
     const TextureGraph& graph = *spec.graph;
@@ -129,6 +131,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
         const NoiseExample& e = examples[size_t(it->second)];
         return e.gaussianized() ? &e : nullptr;
     };
+    long long tableEntries = 0;
     for (const GraphNode* g : ops) {
         Operation op;
         op.id = g->id;
@@ -144,6 +147,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
                                  "give it \"gaussianize\": false to use it here");
         }
         const std::string& x = g->info->inputs.empty() ? std::string() : g->inputs.at(g->info->inputs[0].name);
+        const size_t tablesBefore = p.tables_.size();
         switch (op.kind) {
             case NodeKind::Colormap:
             case NodeKind::ColormapField: {
@@ -176,18 +180,20 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
             case NodeKind::Exemplar:
             case NodeKind::Derivative: throw std::logic_error("GraphPattern::build: a source as an operation");
         }
+        if (p.tables_.size() > tablesBefore) {
+            const ColormapTable& t = p.tables_.back().point;
+            tableEntries += (long long)t.resolutionX() * t.resolutionY();
+            if (tableEntries > kMaxGraphTableEntries)
+                throw InputError(context + ": node \"" + g->id + "\" (" + g->info->name + "): the graph's tables hold more than " +
+                                 std::to_string(kMaxGraphTableEntries) + " entries in all; use lower resolutions or fewer tables");
+        }
         p.operations_.push_back(std::move(op));
     }
     return p;
 }
 
-Rgb GraphPattern::evaluate(const BlendStencil& s, float fu, float fv, int lastSlot) const {
-    if (lastSlot < 0) lastSlot = outputSlot();
-    std::array<vec3, kMaxGraphNodes> slots;  // leaves, then one per operation (each a node)
-    for (int k = 0; k < leafCount(); ++k) {
-        const TilingBlendingNoise& n = leaf(k);
-        slots[size_t(k)] = vec3(n.example().toOutput(n.blend(s, fu, fv)), 0.0f, 0.0f);
-    }
+template <class Slots>
+Rgb GraphPattern::run(Slots& slots, int lastSlot) const {
     if (lastSlot < leafCount()) return toRgb(slots[size_t(lastSlot)]);
     size_t out = size_t(leafCount());
     for (const Operation& op : operations_) {
@@ -212,6 +218,24 @@ Rgb GraphPattern::evaluate(const BlendStencil& s, float fu, float fv, int lastSl
         ++out;
     }
     return toRgb(slots[size_t(lastSlot)]);
+}
+
+Rgb GraphPattern::evaluate(const BlendStencil& s, float fu, float fv, int lastSlot) const {
+    std::array<vec3, kMaxGraphNodes> slots;  // leaves, then one per operation (each a node)
+    for (int k = 0; k < leafCount(); ++k) {
+        const TilingBlendingNoise& n = leaf(k);
+        slots[size_t(k)] = vec3(n.example().toOutput(n.blend(s, fu, fv)), 0.0f, 0.0f);
+    }
+    return run(slots, lastSlot < 0 ? outputSlot() : lastSlot);
+}
+
+Rgb GraphPattern::fromLeafValues(const std::vector<float>& values) const {
+    if (int(values.size()) != leafCount())
+        throw std::invalid_argument("GraphPattern::fromLeafValues: " + std::to_string(values.size()) + " values for " +
+                                    std::to_string(leafCount()) + " leaves");
+    std::array<vec3, kMaxGraphNodes> slots;
+    for (size_t k = 0; k < values.size(); ++k) slots[k] = vec3(values[k], 0.0f, 0.0f);
+    return run(slots, outputSlot());
 }
 
 Rgb GraphPattern::evaluate(double u, double v) const {
@@ -267,12 +291,7 @@ Image GraphPattern::renderNode(const View& view, const std::string& id) const {
 
 FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments)
     : graph_(graph), options_(options), moments_(moments) {
-    if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
-        throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
-                                                 std::to_string(options.aniso));
-    if (options.referenceMaxSamples < 1 || options.referenceMaxSamples > 4096)
-        throw InputError::parameter("referenceMaxSamples",
-                                    "must be in [1, 4096], got " + std::to_string(options.referenceMaxSamples));
+    validateFilterOptions(options);
     if (options.response.kind != ResponseKind::PrefilteredColormap)
         throw InputError::parameter("response", "a texture graph is filtered through its prefiltered tables; the " +
                                                     enumName(kResponseKindNames, options.response.kind) +
@@ -281,7 +300,17 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         if (!isPowerOfTwo(pair.exampleSize()))
             throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
                              std::to_string(pair.exampleSize()));
-    // The prefiltered tables serve the sky in every mode.
+    std::vector<std::array<float, 2>> whole;
+    for (int k = 0; k < graph.leafCount(); ++k) {
+        const std::array<double, 2> m = exampleMoments(graph.leaf(k).example());
+        whole.push_back({float(m[0]), float(m[1])});
+    }
+    if (options.source == StatisticsSource::Point) {  // nothing to prefilter
+        std::vector<float> means;
+        for (const auto& m : whole) means.push_back(graph.leaf(int(means.size())).example().toOutput(m[0]));
+        sky_ = graph.fromLeafValues(means);
+        return;
+    }
     for (const GraphPattern::Operation& op : graph.operations()) {
         if (op.table < 0) continue;
         const ColormapTable& t = graph.tables()[size_t(op.table)].blended;
@@ -291,15 +320,6 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
             throw InputError("node \"" + op.id + "\": " + e.what());
         }
         tables_.emplace_back(t, options.response.prefilter);
-    }
-    std::vector<std::array<float, 2>> whole;
-    for (int k = 0; k < graph.leafCount(); ++k) {
-        const auto& values = graph.leaf(k).example().values().data();
-        double sum = 0, sum2 = 0;
-        for (const float x : values) sum += x;
-        const double mean = sum / double(values.size());
-        for (const float x : values) sum2 += (x - mean) * (x - mean);
-        whole.push_back({float(mean), float(sum2 / double(values.size()))});
     }
     sky_ = fromMoments(whole);
     if (options.source == StatisticsSource::Estimators)
@@ -379,7 +399,9 @@ Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j) co
             return fromPairStats(stats);
         }
         case StatisticsSource::Reference: {
-            const int n = bruteForceSamples(j, graph_.exampleSize(), options_.referenceMaxSamples);
+            int size = 0;  // the finest leaf sets the sampling
+            for (const TiledField& pair : graph_.leafPairs()) size = std::max(size, pair.exampleSize());
+            const int n = bruteForceSamples(j, size, options_.referenceMaxSamples);
             double acc[3] = {0, 0, 0};
             for (int b = 0; b < n; ++b)
                 for (int a = 0; a < n; ++a) {

@@ -19,8 +19,11 @@
 // (docs/GRAPHS.md, docs/MATH.md "Filtering a graph by moment matching").
 //
 // A graph "linear part → colormap" evaluated here gives the Pattern's own
-// values: its two leaves get the Pattern's tile-offset seeds, and its one
-// colormap operation is H̄(μ̂, σ̂) (tested).
+// values in zoom views when its colormap reads two different nodes: its two
+// leaves get the Pattern's tile-offset seeds, and its one colormap operation
+// is H̄(μ̂, σ̂) (tested). The sky differs (FilteredGraph's is the program on
+// the whole examples' moments), and a colormap reading one node twice is one
+// leaf here, where Pattern tiles it twice with two seeds.
 #include <array>
 #include <memory>
 #include <string>
@@ -36,6 +39,14 @@
 #include "stochtex/pattern/texture_graph.h"
 
 namespace stochtex {
+
+// Whether the pattern file is a texture graph that needs GraphPattern: one
+// with a non-linear node before its output (else it is a Pattern, H∘N).
+bool needsGraphEvaluator(const PatternSpec& spec);
+
+// The examples' tables hold at most this many entries in all (each table is
+// kept twice, for points and in blending space, 16 bytes an entry: 256 MiB).
+constexpr long long kMaxGraphTableEntries = 1ll << 23;
 
 class GraphPattern {
 public:
@@ -81,6 +92,8 @@ public:
 
     // S(uv): the leaves at uv (after T⁻¹ for Gaussianized exemplars) through the program.
     Rgb evaluate(double u, double v) const;
+    // The program on given leaf values (one per leaf, in output space).
+    Rgb fromLeafValues(const std::vector<float>& values) const;
     // The same with the grid stencil and the period fractions of uv given;
     // lastSlot: stop after this slot and return its value (default: the output).
     Rgb evaluate(const BlendStencil& s, float fu, float fv, int lastSlot = -1) const;
@@ -92,6 +105,9 @@ public:
     Image renderNode(const View& view, const std::string& id) const;
 
 private:
+    // The operations on slots whose leaves are set; returns slot `lastSlot`.
+    template <class Slots>
+    Rgb run(Slots& slots, int lastSlot) const;
     template <class PixelFn>
     Image renderPixels(const View& view, const Progress& progress, PixelFn&& pixel) const;
     std::vector<std::string> leafIds_;
@@ -119,7 +135,8 @@ public:
     FilteredGraph(const GraphPattern& graph, const FilterOptions& options,
                   GraphMoments moments = GraphMoments::Matched);
 
-    // The colour of sky pixels: the program on the whole examples' moments.
+    // The colour of sky pixels: the program on the whole examples' moments
+    // (for the point source, which prefilters nothing, on their means).
     const Rgb& skyColour() const { return sky_; }
     Rgb shade(bool onPlane, double u, double v, const Jacobian& j) const;
     Image render(const Camera& camera, const Progress& progress = {}) const;

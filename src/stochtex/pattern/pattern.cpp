@@ -8,6 +8,7 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/noise/slopes.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/texture_graph.h"
 
 namespace stochtex {
@@ -15,10 +16,10 @@ namespace stochtex {
 Pattern Pattern::build(const PatternSpec& spec) {
     std::array<NoiseExample, 2> examples;
     if (spec.graph) {
-        if (!foldsIntoPattern(*spec.graph))
+        if (needsGraphEvaluator(spec))
             throw InputError(spec.name + ": this graph has a non-linear node before its output (\"" + spec.graph->output +
-                             "\" reads one), so it is not the pattern H∘N of two fields this needs; render, "
-                             "bake-image, view and scene evaluate such graphs (docs/GRAPHS.md)");
+                             "\" reads one), so it is not the pattern H∘N of two fields this needs; such graphs are "
+                             "evaluated per pixel, where docs/GRAPHS.md lists");
         GraphFields fields = buildGraphFields(*spec.graph, spec.seed, spec.name);
         const uint32_t sx = deriveSeed(spec.seed, 1);
         const uint32_t sy = spec.offsets == OffsetMode::Shared ? sx : deriveSeed(spec.seed, 2);
