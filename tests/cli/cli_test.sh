@@ -285,6 +285,9 @@ case_graph() {
   expect_ok "render figure14 on the GPU, compute" "$out/f14c.png" -- "$bin" render --preset figure14 --size 48 --scale 8 --filter smooth --gpu --pipeline compute -o "$out/f14c.png"
   expect_ok "figure14 in a scene" "$out/f14sc.png" -- "$bin" scene --preset figure14 --filter smooth --size 64 -o "$out/f14sc.png"
   expect_bad "figure14 tiled" "$out/f14st" "figure14: this graph has a non-linear node before its output" -- "$bin" stability -o "$out/f14st" --preset figure14
+  expect_ok "bake figure14" "$out/bk14/stochtex.glsl" -- "$bin" bake --preset figure14 --filter smooth -o "$out/bk14"
+  grep -q '"uniform": "uGraphPrefiltered1"' "$out/bk14/manifest.json" || fail "bake figure14: manifest lacks the second table's sampler"
+  grep -q "vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy)" "$out/bk14/stochtex.glsl" || fail "bake figure14: the include lacks the graph's program"
   expect_bad "figure14 lean" "$out/f14l.png" "response" -- "$bin" render --preset figure14 --filter smooth --response lean -o "$out/f14l.png"
   printf '{"nodes": {"a": {"type": "spectral_noise", "size": 32, "components": [{"shape": "lowpass", "cutoff": 2}]}, "k": {"type": "curve", "input": "a", "points": [[0, 0], [0, 1]]}, "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}}}, "output": "c"}' >"$work/curve.json"
   expect_bad "graph bad curve" "$out/cu.png" "curve.json: /nodes/k/points/1/0: x must increase" -- "$bin" render "$work/curve.json" -o "$out/cu.png"

@@ -17,6 +17,7 @@
 #include "stochtex/gpu/export.h"
 #include "stochtex/gpu/gl_context.h"
 #include "test_util.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/presets.h"
@@ -113,6 +114,7 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale)
     glAttachShader(prog, fs_);
     glLinkProgram(prog);
     glUseProgram(prog);
+    // Every sampler of manifest.json's "textures", each on a unit of its own.
     auto pyramid = [&](const nlohmann::json& files) {
         GLuint t = 0;
         glGenTextures(1, &t);
@@ -130,26 +132,26 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale)
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(files.size()) - 1);
         return t;
     };
-    const GLuint sx = pyramid(m["stats"]["x"]), sy = pyramid(m["stats"]["y"]);
-    const bool shared = m["covariance"];
-    const GLuint cov = shared ? pyramid(m["stats"]["covariance"]) : sx;
-    const Image atlas = readImage((dir / m["table"]["file"].get<std::string>()).string());
-    const int tw = m["table"]["width"], th = m["table"]["height"], tl = m["table"]["levels"];
-    GLuint table = 0;
-    glGenTextures(1, &table);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, table);
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGB32F, tw, th, tl * tl, 0, GL_RGB, GL_FLOAT, atlas.data().data());
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
-    auto unit = [&](int u, GLenum target, GLuint t, const char* name) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + u));
-        glBindTexture(target, t);
-        glUniform1i(glGetUniformLocation(prog, name), u);
+    auto table = [&](const nlohmann::json& t) {
+        const Image atlas = readImage((dir / t["file"].get<std::string>()).string());
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, id);
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGB32F, t["width"].get<int>(), t["height"].get<int>(),
+                     t["layers"].get<int>(), 0, GL_RGB, GL_FLOAT, atlas.data().data());
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+        return id;
     };
-    unit(0, GL_TEXTURE_2D, sx, "uStatsX");
-    unit(1, GL_TEXTURE_2D, sy, "uStatsY");
-    unit(2, GL_TEXTURE_2D, cov, "uCovariance");
-    unit(3, GL_TEXTURE_2D_ARRAY, table, "uTable");
+    std::vector<GLuint> textures;
+    for (const nlohmann::json& t : m["textures"])  // created on unit 0, then each bound to its own unit
+        textures.push_back(t["kind"] == "table" ? table(t) : pyramid(t["files"]));
+    for (size_t k = 0; k < textures.size(); ++k) {
+        const nlohmann::json& t = m["textures"][k];
+        glActiveTexture(GLenum(GL_TEXTURE0 + k));
+        glBindTexture(t["kind"] == "table" ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, textures[k]);
+        glUniform1i(glGetUniformLocation(prog, t["uniform"].get<std::string>().c_str()), GLint(k));
+    }
     // The parameter block, at binding point 3 (not GpuPattern's 0, so only this buffer can be read).
     const GLuint blockIndex = glGetUniformBlockIndex(prog, "PatternParameters");
     EXPECT_NE(blockIndex, GL_INVALID_INDEX);
@@ -181,9 +183,8 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale)
     Image out(width, height, 3, Image::Uninitialized{});
     for (size_t i = 0; i < out.pixelCount(); ++i)
         for (size_t c = 0; c < 3; ++c) out.data()[3 * i + c] = rgba[4 * i + c];
-    GLuint textures[] = {sx, sy, table, target};
-    glDeleteTextures(4, textures);
-    if (shared) glDeleteTextures(1, &cov);
+    textures.push_back(target);
+    glDeleteTextures(GLsizei(textures.size()), textures.data());
     glDeleteFramebuffers(1, &fbo);
     glDeleteBuffers(1, &parameters);
     glDeleteVertexArrays(1, &vao);
@@ -191,6 +192,21 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale)
     glDeleteShader(vs);
     glDeleteShader(fs_);
     return out;
+}
+
+// The largest |export − render --gpu| over a 96 × 80 view at `scale`.
+double exportDifference(GpuView& gpu, GlContext& ctx, const fs::path& dir, double scale) {
+    View v;
+    v.width = 96;
+    v.height = 80;
+    v.scale = scale;
+    const Image reference = gpu.render(v);
+    ctx.makeCurrent();
+    const Image exported = renderFromExport(dir, v.width, v.height, scale);
+    double maxDiff = 0;
+    for (size_t i = 0; i < reference.data().size(); ++i)
+        maxDiff = std::max(maxDiff, double(std::abs(reference.data()[i] - exported.data()[i])));
+    return maxDiff;
 }
 
 TEST(Export, SeparateProgramRendersWhatRenderGpuRenders) {
@@ -230,22 +246,51 @@ TEST(Export, SeparateProgramRendersWhatRenderGpuRenders) {
                   std::string::npos);
         GpuPattern gpu(p, *ctx, o);
         for (double scale : {1.0, 6.0}) {
-            View v;
-            v.width = 96;
-            v.height = 80;
-            v.scale = scale;
-            const Image reference = gpu.render(v);
-            ctx->makeCurrent();
-            const Image exported = renderFromExport(dir, v.width, v.height, scale);
-            double maxDiff = 0;
-            for (size_t i = 0; i < reference.data().size(); ++i)
-                maxDiff = std::max(maxDiff, double(std::abs(reference.data()[i] - exported.data()[i])));
+            const double maxDiff = exportDifference(gpu, *ctx, dir, scale);
             std::printf("[ info ] %s (%s table) at scale %g: max |export - render --gpu| %.2e\n", name,
                         half ? "half" : "float", scale, maxDiff);
             EXPECT_LT(maxDiff, half ? 2.5e-4 : 1e-5) << name << " at scale " << scale;
             if (half) {
                 EXPECT_GT(maxDiff, 1e-6) << "the half table should differ from the float one";
             }
+        }
+        fs::remove_all(dir);
+    }
+}
+
+// A texture graph's export (figure14, non-linear nodes before its output):
+// its leaves' pyramids, its tables and its generated program, loaded by the
+// same engine-side code, render what GpuGraph renders.
+TEST(Export, GraphRendersWhatRenderGpuRenders) {
+    auto ctx = GlContext::headless();
+    const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
+    for (const bool half : {true, false}) {
+        FilterOptions o;
+        o.use(parseFilter(half ? "smooth" : "paper"));
+        ExportOptions e;
+        e.halfTable = half;
+        const fs::path dir = test::scratchPath(std::string("stochtex_export_graph_") + (half ? "half" : "float"));
+        fs::remove_all(dir);
+        exportGraph(g, o, dir.string(), e);
+        // 3 leaves of 9 levels (256²), 2 tables, manifest, include, README.
+        size_t written = 0;
+        const std::string readme = readText(dir / "README.md");
+        for (const auto& entry : fs::directory_iterator(dir)) {
+            EXPECT_NE(readme.find("`" + entry.path().filename().string() + "`"), std::string::npos)
+                << entry.path().filename() << " is not in the README";
+            ++written;
+        }
+        EXPECT_EQ(written, 3u * 9u + 2u + 3u);
+        EXPECT_NE(readme.find("`uGraphPrefiltered1`"), std::string::npos);
+        GpuGraph gpu(g, *ctx, o);
+        for (double scale : {1.0, 6.0}) {
+            const double maxDiff = exportDifference(gpu, *ctx, dir, scale);
+            std::printf("[ info ] figure14 (%s table) at scale %g: max |export - render --gpu| %.2e\n",
+                        half ? "half" : "float", scale, maxDiff);
+            // Half floats only in the colour table (the field's (g, g²) table
+            // stays float: a rounded g would cross the painted edges): entries
+            // round by ≤ 2⁻¹² (measured 2.2e-4).
+            EXPECT_LT(maxDiff, half ? 5e-4 : 1e-5) << "scale " << scale;
         }
         fs::remove_all(dir);
     }

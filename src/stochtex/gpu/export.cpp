@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
@@ -17,16 +18,25 @@ namespace stochtex {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+const char* kIncludeHeader =
+    "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
+    "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
+    "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
+    "// footprint comes from this fragment's derivatives of uv. It returns LINEAR-light\n"
+    "// RGB (not sRGB codes): draw into an sRGB framebuffer (GL_FRAMEBUFFER_SRGB) or\n"
+    "// encode it before display. The textures to bind (manifest.json's \"textures\") and\n"
+    "// the PatternParameters block to fill are described in README.md.\n";
+
+const char* kSampleFunction =
+    "vec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";
+
+}  // namespace
+
 std::string exportedShaderInclude(ResponseKind response) {
     const bool lean = response == ResponseKind::Lean;
-    std::string text =
-        "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
-        "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
-        "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
-        "// footprint comes from this fragment's derivatives of uv. It returns LINEAR-light\n"
-        "// RGB (not sRGB codes): draw into an sRGB framebuffer (GL_FRAMEBUFFER_SRGB) or\n"
-        "// encode it before display. The textures to bind and the PatternParameters\n"
-        "// block to fill are described in README.md.\n";
+    std::string text = kIncludeHeader;
     if (lean)
         text +=
             "// This pattern is a LEAN-mapped normal map (paper §6.5): stochtex_sample is its\n"
@@ -37,7 +47,7 @@ std::string exportedShaderInclude(ResponseKind response) {
     text += "\n";
     for (const auto& stem : shaderChunks(recipeFiles(programRecipe("export-include"), response)))
         text += shaderText(stem) + "\n";
-    text += "vec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";
+    text += kSampleFunction;
     if (lean)
         text +=
             "// The filtered slopes of the footprint of uv as a Beckmann lobe (mean slope and\n"
@@ -47,6 +57,17 @@ std::string exportedShaderInclude(ResponseKind response) {
             "    return footprintLobe(m.mean, m.var, m.cov);\n"
             "}\n";
     return text;
+}
+
+std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments) {
+    std::string text = std::string(kIncludeHeader) +
+                       "// This pattern is a texture graph (docs/GRAPHS.md): its program, generated for it,\n"
+                       "// defines filteredColour (moment matching through its prefiltered tables). Its seeds\n"
+                       "// and means are constants here; of the PatternParameters block it reads\n"
+                       "// gridDensity, invExampleSize, maxLod, aniso, smoothTable and tableLevels.\n\n";
+    for (const auto& stem : shaderChunks(recipeFiles(programRecipe("export-graph-include"), ResponseKind::PrefilteredColormap)))
+        text += (stem == kGraphProgramStem ? graphProgramSource(graph, moments) : shaderText(stem)) + "\n";
+    return text + kSampleFunction;
 }
 
 namespace {
@@ -74,6 +95,7 @@ std::string exrFormat(const Image& image, const WriteOptions& w) {
            (w.exrHalf ? "16-bit half float" : "32-bit float") + ", ZIP-compressed scanlines";
 }
 
+// Writes a pyramid's levels as stem_l.exr; their names go into `list`.
 void writeStats(const StatsPyramid& p, const std::string& dir, const std::string& stem, nlohmann::json& list,
                 const std::string& green, std::vector<WrittenFile>& files) {
     std::string names, sizes;
@@ -100,20 +122,21 @@ Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
 
 | uniform | type | content |
 | --- | --- | --- |
-| `uStatsX`, `uStatsY` | `sampler2D`, RG32F, mip levels 0…L | level l = `stats_x_l.exr` (R = mean, G = variance) |
-| `uCovariance` | `sampler2D`, RG32F, mip levels | `covariance_l.exr` if `covariance`, else bind `uStatsX` |
-@TABLE@
+@TEXTURES@
+`manifest.json`'s `"textures"` lists the same: each sampler uniform with its
+files (`"pyramid"`: one file per mip level; `"table"`: one file of `layers`
+stacked `width × height` layers).
 All are read with `texelFetch` (no filtering needed); set `GL_TEXTURE_MAX_LEVEL`
 to L so the pyramids are mipmap-complete.
 
 ## Colour space
 
-`table.exr` holds linear-light RGB (`manifest.json`: `"colour_space": "linear"`;
+The tables (`table*.exr`) hold linear-light RGB (`manifest.json`: `"colour_space": "linear"`;
 the pattern's sRGB colours were decoded once, before filtering), and
 `stochtex_sample` returns linear RGB: write it to an sRGB framebuffer
 (`GL_FRAMEBUFFER_SRGB`, an `SRGB8_ALPHA8` target) or encode it before display,
-as `stochtex render` does for PNG. Upload `table.exr` as float, never as an sRGB
-texture. A colormap declared `"transfer": "linear"` (data: heights, roughness)
+as `stochtex render` does for PNG. Upload the tables as float, never as sRGB
+textures. A colormap declared `"transfer": "linear"` (data: heights, roughness)
 is exported as its values, unencoded. The statistics EXRs hold noise values
 (data).
 
@@ -145,10 +168,20 @@ void main() { colour = stochtex_sample(vUv * 8.0); }
 ```
 )";
 
-// The rows and section only one response kind has.
-constexpr const char* kTableRow =
-    "| `uTable` | `sampler2DArray`, RGBA16F or RGBA32F (`table.precision`), `levels²` layers of `width × height` "
-    "| layer k = rows `[k·height, (k+1)·height)` of `table.exr`; texture row j = that layer's row j |\n";
+// The README's row for a sampler of manifest.json's "textures".
+std::string textureRow(const nlohmann::json& t) {
+    const std::string uniform = "`" + t["uniform"].get<std::string>() + "`";
+    if (t["kind"] == "pyramid") {
+        const std::string first = t["files"].front(), last = t["files"].back();
+        return "| " + uniform + " | `sampler2D`, RG32F, mip levels 0…" + std::to_string(t["files"].size() - 1) +
+               " | level l from `" + first + "` … `" + last + "` (R = mean, G = " + t["content"].get<std::string>() +
+               ") |\n";
+    }
+    return "| " + uniform + " | `sampler2DArray`, RGB16F or RGB32F (`precision`), " +
+           std::to_string(t["layers"].get<int>()) + " layers of " + std::to_string(t["width"].get<int>()) + " × " +
+           std::to_string(t["height"].get<int>()) + " | layer k = rows `[k·height, (k+1)·height)` of `" +
+           t["file"].get<std::string>() + "`; texture row j = that layer's row j |\n";
+}
 const char* kLeanSection = R"(## LEAN shading (normal map)
 
 This export is a procedural normal map (`"response": "lean"`): the pyramids
@@ -175,7 +208,9 @@ To light it with your own lights and BRDF, call `LeanLobe stochtex_lean_lobe(vec
 
 )";
 
-std::string readme(const std::vector<WrittenFile>& files, bool lean) {
+std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& textures, bool lean) {
+    std::string textureRows;
+    for (const nlohmann::json& t : textures) textureRows += textureRow(t);
     std::string fileRows;
     for (const WrittenFile& f : files) fileRows += "| " + f.names + " | " + f.format + " | " + f.content + " |\n";
     std::string members;
@@ -188,7 +223,7 @@ std::string readme(const std::vector<WrittenFile>& files, bool lean) {
                                                          {"@SIZE@", std::to_string(sizeof(kernel::PatternParams))},
                                                          {"@MEMBERS@", members},
                                                          {"@FILES@", fileRows},
-                                                         {"@TABLE@", lean ? "" : kTableRow},
+                                                         {"@TEXTURES@", textureRows},
                                                          {"@LEAN@", lean ? kLeanSection : ""}};
     std::string text = kReadme;
     for (const auto& [key, value] : fills)
@@ -197,23 +232,49 @@ std::string readme(const std::vector<WrittenFile>& files, bool lean) {
     return text;
 }
 
-// table.exr (the prefiltered colormap response's data) and its manifest entry.
-void writeTable(const FilteredPattern& f, const std::string& dir, const ExportOptions& exportOptions,
-                nlohmann::json& m, std::vector<WrittenFile>& files) {
-    const PrefilteredColormap& table = f.table();
+// A prefiltered table's atlas as `file`, its manifest entry and its
+// "textures" entry for `uniform`.
+nlohmann::json writeTable(const PrefilteredColormap& table, int rx, int ry, const std::string& file,
+                          const std::string& uniform, const std::string& what, const std::string& dir,
+                          const ExportOptions& exportOptions, nlohmann::json& textures, std::vector<WrittenFile>& files) {
     const int n = int(table.sigmas().size());
-    const int rx = f.blendingSpaceColormap().resolutionX(), ry = f.blendingSpaceColormap().resolutionY();
     const Image atlas = table.atlas(rx, ry);
     WriteOptions w;
     w.exrHalf = exportOptions.halfTable;
-    writeImage((fs::path(dir) / "table.exr").string(), atlas, w);
-    m["table"] = {{"file", "table.exr"}, {"levels", n},
-                  {"width", rx},          {"height", ry},
-                  {"sigmas", table.sigmas()}, {"precision", exportOptions.halfTable ? "half" : "float"}};
-    files.push_back({"`table.exr`", exrFormat(atlas, w),
-                     "the prefiltered table H̄: " + std::to_string(n * n) + " layers of " + std::to_string(rx) + " × " +
+    writeImage((fs::path(dir) / file).string(), atlas, w);
+    const std::string precision = exportOptions.halfTable ? "half" : "float";
+    textures.push_back({{"uniform", uniform}, {"kind", "table"}, {"file", file}, {"layers", n * n},
+                        {"width", rx}, {"height", ry}, {"precision", precision}});
+    files.push_back({"`" + file + "`", exrFormat(atlas, w),
+                     what + ": " + std::to_string(n * n) + " layers of " + std::to_string(rx) + " × " +
                          std::to_string(ry) + " RGB colours stacked vertically (T⁻¹ folded in), no alpha; " +
                          kTableColourSpace});
+    return {{"file", file}, {"levels", n}, {"width", rx}, {"height", ry}, {"sigmas", table.sigmas()},
+            {"precision", precision}};
+}
+
+nlohmann::json pyramidTexture(const std::string& uniform, const nlohmann::json& files, const std::string& content) {
+    return {{"uniform", uniform}, {"kind", "pyramid"}, {"files", files}, {"content", content}};
+}
+
+// Creates the export folder; InputError naming it if that fails.
+void makeFolder(const std::string& dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir)) throw InputError(dir + ": cannot create output folder");
+}
+
+// manifest.json, stochtex.glsl and README.md, after the data.
+void writeDescription(const std::string& dir, nlohmann::json& m, const std::string& include,
+                      std::vector<WrittenFile>& files, bool lean) {
+    m["colour_space"] = "linear";  // the tables and stochtex_sample: linear light, never sRGB codes
+    writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
+    files.push_back({"`manifest.json`", "JSON (UTF-8)", "parameters, the textures to bind and the lists of data files"});
+    writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), include);
+    files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 source, no `#version` line",
+                     "`vec4 stochtex_sample(vec2 uv)` and what it calls"});
+    files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
+    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], lean));
 }
 
 // The lean response's shading: what the uLean* uniforms hold.
@@ -235,9 +296,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
         throw InputError::parameter("source", "must be estimators to export (filter paper or smooth), got " +
                                                   enumName(kStatisticsSourceNames, options.source));
     const FilteredPattern f(pattern, options);  // validates the options
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir)) throw InputError(dir + ": cannot create output folder");
+    makeFolder(dir);
     const FootprintEstimator& est = f.estimator();
     const TiledField& field = f.field();  // the colour noises, or the normal map's slopes
     const bool lean = options.response.kind == ResponseKind::Lean;
@@ -263,21 +322,81 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     std::vector<WrittenFile> files;
     writeStats(est.pyramid(0), dir, "stats_x", m["stats"]["x"], "variance V_l of N_x", files);
     writeStats(est.pyramid(1), dir, "stats_y", m["stats"]["y"], "variance V_l of N_y", files);
-    if (est.covariancePyramid())
+    nlohmann::json& textures = m["textures"] = nlohmann::json::array();
+    textures.push_back(pyramidTexture("uStatsX", m["stats"]["x"], "variance"));
+    textures.push_back(pyramidTexture("uStatsY", m["stats"]["y"], "variance"));
+    if (est.covariancePyramid()) {
         writeStats(*est.covariancePyramid(), dir, "covariance", m["stats"]["covariance"],
                    "covariance C_l of N_x and N_y (R is E_l of N_x)", files);
-    m["colour_space"] = "linear";  // table.exr and stochtex_sample: linear light, never sRGB codes
-    if (lean)
+        textures.push_back(pyramidTexture("uCovariance", m["stats"]["covariance"], "covariance, R the mean of N_x"));
+    } else {
+        // Not read (covariance false), but a sampler of uStatsX's type on a unit of its own.
+        textures.push_back(pyramidTexture("uCovariance", m["stats"]["x"], "variance; not read"));
+    }
+    if (lean) {
         m["lean"] = leanManifest(pattern.normalMap()->shading, options.response.covariance);
-    else
-        writeTable(f, dir, exportOptions, m, files);
-    writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
-    files.push_back({"`manifest.json`", "JSON (UTF-8)", "parameters and the lists of data files"});
-    writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), exportedShaderInclude(options.response.kind));
-    files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 source, no `#version` line",
-                     "`vec4 stochtex_sample(vec2 uv)` and what it calls"});
-    files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
-    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, lean));
+    } else {
+        const ColormapTable& h = f.blendingSpaceColormap();
+        m["table"] = writeTable(f.table(), h.resolutionX(), h.resolutionY(), "table.exr", "uTable",
+                                "the prefiltered table H̄", dir, exportOptions, textures, files);
+    }
+    writeDescription(dir, m, exportedShaderInclude(options.response.kind), files, lean);
+}
+
+void exportGraph(const GraphPattern& graph, const FilterOptions& options, const std::string& dir,
+                 const ExportOptions& exportOptions) {
+    if (options.source != StatisticsSource::Estimators)
+        throw InputError::parameter("source", "must be estimators to export (filter paper or smooth), got " +
+                                                  enumName(kStatisticsSourceNames, options.source));
+    if (options.estimator != VarianceEstimator::Paper)
+        throw InputError::parameter("estimator", "must be paper for a texture graph on the GPU");
+    const FilteredGraph f(graph, options);  // validates the options; the pyramids and tables
+    makeFolder(dir);
+    nlohmann::json m;
+    m["version"] = 1;
+    m["filter"] = filterName(options);
+    m["response"] = enumName(kResponseKindNames, options.response.kind);
+    // The block members the graph's program reads (the rest: its constants).
+    m["example_size"] = graph.exampleSize();
+    m["levels"] = f.estimator(0).maxLod() + 1;
+    m["grid_density"] = graph.gridDensity();
+    m["aniso"] = options.aniso;
+    m["means"] = {0, 0};
+    m["seeds"] = {0, 0};
+    m["covariance"] = false;
+    const nlohmann::json zeros(std::vector<float>(size_t(f.estimator(0).maxLod() + 1), 0.0f));
+    m["average_moments"] = {{"x", zeros}, {"y", zeros}, {"cov", zeros}};
+    nlohmann::json& textures = m["textures"] = nlohmann::json::array();
+    nlohmann::json& leaves = m["graph"]["leaves"] = nlohmann::json::array();
+    std::vector<WrittenFile> files;
+    for (int k = 0; k < graph.leafCount(); ++k) {
+        const std::string& id = graph.leafIds()[size_t(k)];
+        const auto [pair, channel] = graph.leafLocation(k);
+        nlohmann::json list = nlohmann::json::array();
+        writeStats(f.estimator(pair).pyramid(channel), dir, "stats_" + std::to_string(k), list,
+                   "variance V_l of leaf \"" + id + "\"", files);
+        textures.push_back(pyramidTexture("uGraphStats" + std::to_string(k), list, "variance"));
+        leaves.push_back({{"id", id}, {"files", list}});
+    }
+    nlohmann::json& tables = m["graph"]["tables"] = nlohmann::json::array();
+    for (size_t t = 0; t < graph.tables().size(); ++t) {
+        const ColormapTable& h = graph.tables()[t].blended;
+        std::string node;
+        for (const GraphPattern::Operation& op : graph.operations())
+            if (op.table == int(t)) node = op.id;
+        const std::string file = "table_" + std::to_string(t) + ".exr";
+        // A field's (g, g²) table stays float: the next table reads g, and a
+        // half-float g (rounded by up to 2⁻¹¹ of it) moves across that table's edges.
+        ExportOptions precision = exportOptions;
+        precision.halfTable = exportOptions.halfTable && !graph.tables()[t].field;
+        tables.push_back(writeTable(f.table(int(t)), h.resolutionX(), h.resolutionY(), file,
+                                    "uGraphPrefiltered" + std::to_string(t),
+                                    "the prefiltered table of node \"" + node + "\"", dir, precision, textures,
+                                    files));
+        tables.back()["node"] = node;
+    }
+    m["table"] = tables.front();  // every table has the same σ levels (tableLevels)
+    writeDescription(dir, m, exportedGraphInclude(graph), files, false);
 }
 
 }  // namespace stochtex

@@ -3,7 +3,8 @@
 // one self-contained GLSL include, so a program that knows nothing of
 // stochtex renders Ŝ = H̄(μ̂, σ̂) with `vec4 stochtex_sample(vec2 uv)`.
 //
-// Files written to the folder:
+// Files written to the folder (manifest.json's "textures" lists the sampler
+// uniforms with their files):
 //   manifest.json        parameters and the list of data files (below)
 //   stats_x_L.exr        level L of noise x's pyramid: R = E_L, G = V_L (float32)
 //   stats_y_L.exr        the same for noise y
@@ -18,6 +19,7 @@
 #include <string>
 
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 
 namespace stochtex {
 
@@ -34,5 +36,15 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
 
 // The include's text (what stochtex.glsl holds) with the response's chunk.
 std::string exportedShaderInclude(ResponseKind response = ResponseKind::PrefilteredColormap);
+
+// A texture graph that is not a pattern H∘N (graph_pattern.h), filtered by
+// moment matching: stats_K_L.exr per leaf K (R = E_L, G = V_L),
+// table_T.exr per table (the prefiltered layers of its (g, g²) or colour
+// table, as table.exr; a field's table in float whatever halfTable says), manifest.json (with "graph": its leaves and tables),
+// stochtex.glsl (its generated program, exportedGraphInclude) and README.md.
+// options.source: Estimators, the paper estimator (InputError otherwise).
+void exportGraph(const GraphPattern& graph, const FilterOptions& options, const std::string& dir,
+                 const ExportOptions& exportOptions = {});
+std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched);
 
 }  // namespace stochtex

@@ -39,6 +39,7 @@ const std::vector<ProgramRecipe>& programRecipes() {
         {"graph-filtered-compute", K::Compute, {},
          {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "kernel_filtered", "view_kernel"}},
         {"graph-scene", K::Graphics, {"mesh"}, {"common", "filtering", G, "graph_ops", kGraphProgramStem, "scene"}},
+        {"export-graph-include", K::Include, {}, {"common", "filtering", G, "graph_ops", kGraphProgramStem}},
     };
     return recipes;
 }
