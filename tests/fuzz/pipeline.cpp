@@ -1,11 +1,39 @@
 // Fuzz target: a pattern file through the whole pipeline: parse, build
-// (examples at most 32 texels, colormap at most 32 entries a side), then
-// render 8×8 pixels unfiltered and with every filter, in the zoom view at
-// the pattern's scale and in the plane view with anisotropic probes.
+// (examples at most 32 texels, colormaps and curves at most 32 entries a
+// side), then render 8×8 pixels unfiltered and with every filter, in the zoom
+// view at the pattern's scale and in the plane view with anisotropic probes.
+// A texture graph with non-linear nodes before its output goes through its
+// own evaluator (GraphPattern, FilteredGraph) the same way.
 #include "fuzz_target.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern.h"
+
+namespace {
+
+// Renders through every filter with `Filtered` (FilteredPattern or FilteredGraph over `built`).
+template <class Filtered, class Built>
+void renderEveryFilter(const Built& built, const stochtex::View& view) {
+    using namespace stochtex;
+    Camera zoom;
+    zoom.view = view;
+    Camera plane = zoom;
+    plane.kind = Camera::Kind::Plane;
+    plane.tiltDeg = 75;
+    for (const auto& [name, filter] : kFilterNames) {
+        FilterOptions options;
+        options.use(filter);
+        options.referenceMaxSamples = 8;  // keeps exact and reference at ≤ 64 samples a pixel
+        (void)Filtered(built, options).render(zoom);
+    }
+    FilterOptions aniso;
+    aniso.use(parseFilter("smooth"));
+    aniso.aniso = 8;
+    (void)Filtered(built, aniso).render(plane);
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace stochtex;
@@ -18,27 +46,29 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         }
         if (!fuzz::readsOnlyFuzzImages(spec.colormap)) return;
         fuzz::shrink(spec.colormap);
+        if (spec.graph) {
+            auto graph = std::make_shared<TextureGraph>(*spec.graph);
+            for (GraphNode& n : graph->nodes) {
+                if (!fuzz::readsOnlyFuzzImages(n.noise) || !fuzz::readsOnlyFuzzImages(n.colormap)) return;
+                fuzz::shrink(n.noise);
+                fuzz::shrink(n.colormap);
+                if (const auto r = n.numbers.find("resolution"); r != n.numbers.end())  // a curve's table
+                    r->second = fuzz::shrink(int(r->second), fuzz::kColormapLimit);
+            }
+            spec.graph = graph;
+        }
         spec.width = fuzz::shrink(spec.width, fuzz::kOutputLimit);
         spec.height = fuzz::shrink(spec.height, fuzz::kOutputLimit);
-
-        const Pattern pattern = Pattern::build(spec);
         const View view{spec.width, spec.height, spec.scale};
-        (void)pattern.render(view);
 
-        Camera zoom;
-        zoom.view = view;
-        Camera plane = zoom;
-        plane.kind = Camera::Kind::Plane;
-        plane.tiltDeg = 75;
-        for (const auto& [name, filter] : kFilterNames) {
-            FilterOptions options;
-            options.use(filter);
-            options.referenceMaxSamples = 8;  // keeps exact and reference at ≤ 64 samples a pixel
-            (void)FilteredPattern(pattern, options).render(zoom);
+        if (needsGraphEvaluator(spec)) {
+            const GraphPattern graph = GraphPattern::build(spec);
+            (void)graph.render(view);
+            renderEveryFilter<FilteredGraph>(graph, view);
+            return;
         }
-        FilterOptions aniso;
-        aniso.use(parseFilter("smooth"));
-        aniso.aniso = 8;
-        (void)FilteredPattern(pattern, aniso).render(plane);
+        const Pattern pattern = Pattern::build(spec);
+        (void)pattern.render(view);
+        renderEveryFilter<FilteredPattern>(pattern, view);
     });
 }
