@@ -380,7 +380,8 @@ TEST(Gpu, EveryNodeInItsSampleGraphMatchesTheCpu) {
 
 // A graph with what Figure 14 lacks: a Gaussianized exemplar leaf (T⁻¹ on
 // points, folded into its table when filtered), leaves of two sizes (a pair
-// of its own), independent tile offsets, a curve, a sum, an affine and a mix;
+// of its own), a leaf seen through a transform of uv, independent tile
+// offsets, a curve, a sum, an affine and a mix;
 // unfiltered, smooth, and smooth passing the intermediate fields' means alone.
 TEST(Gpu, TextureGraphWithEveryOperationMatchesTheCpu) {
     const fs::path dir = test::scratchPath("stochtex_gpu_graph"), file = dir / "exemplar.png";
@@ -395,15 +396,17 @@ TEST(Gpu, TextureGraphWithEveryOperationMatchesTheCpu) {
         "n": {"type": "spectral_noise", "size": 128, "components": [{"shape": "lowpass", "cutoff": 5}]},
         "n2": {"type": "spectral_noise", "size": 128, "components": [{"shape": "ring", "frequency": 9, "bandwidth": 3}]},
         "f": {"type": "colormap_field", "x": "e", "y": "n", "colormap": {"type": "phasor", "profile": "sine", "transfer": "linear"}},
-        "k": {"type": "curve", "input": "n2", "points": [[0, 0.2], [0.4, 0.9], [1, 0.1]]},
+        "n2t": {"type": "transform", "input": "n2", "angle": 35, "scale": 1.7, "offset_u": 0.3, "offset_v": -2},
+        "k": {"type": "curve", "input": "n2t", "points": [[0, 0.2], [0.4, 0.9], [1, 0.1]]},
         "s": {"type": "sum", "a": "f", "b": "k", "weight_a": 0.6, "weight_b": 0.4},
         "af": {"type": "affine", "input": "s", "scale": 0.8, "offset": 0.1},
-        "ca": {"type": "colormap", "x": "af", "y": "n2", "colormap": {"type": "phasor", "profile": "sine", "palette": ["#203060", "#f0c040"]}},
+        "ca": {"type": "colormap", "x": "af", "y": "n2t", "colormap": {"type": "phasor", "profile": "sine", "palette": ["#203060", "#f0c040"]}},
         "cb": {"type": "colormap", "x": "k", "y": "f", "colormap": {"type": "gaussian"}},
         "c": {"type": "mix", "a": "ca", "b": "cb", "t": "af"}}, "output": "c"})";
     const GraphPattern g = GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "every"), "every"), "."));
     ASSERT_EQ(g.leafCount(), 3);
-    ASSERT_EQ(g.leafPairs().size(), 2u);  // the 64² exemplar alone, the two 128² noises together
+    ASSERT_EQ(g.leafPairs().size(), 3u);  // the 64² exemplar, the 128² noise, the transformed 128² noise
+    ASSERT_FALSE(g.pairTransform(2).identity());
     ASSERT_TRUE(g.leaf(0).example().gaussianized());
     Camera c;
     c.view = {96, 64, 1.3, 40.0, 9.0};

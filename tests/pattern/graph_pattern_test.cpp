@@ -168,6 +168,53 @@ TEST(GraphPattern, EachOperationComputesItsFormulaOnItsInputs) {
         }
 }
 
+// A transform node: the field at uv is its input's at scale·R(angle)·uv +
+// offset, tiles and all. Against the same graph without it, evaluated at the
+// transformed point (the leaf keeps its example and tile seed), and filtered:
+// a zoom at scale k through a ×2 transform is the untransformed zoom at 2k.
+TEST(GraphPattern, TransformSeesItsInputThroughTheMappedUv) {
+    const std::string head = R"("n": {"type": "spectral_noise", "size": 64, "seed": 4, "components": [{"shape": "bilobe", "frequency": 6, "bandwidth": 2, "orientation": 20}]},
+        "k": {"type": "curve", "input": "f", "points": [[0, 0], [0.5, 1], [1, 0.2]]},
+        "c": {"type": "colormap", "x": "k", "y": "f", "colormap": {"type": "phasor", "profile": "sine"}})";
+    const GraphPattern plain = GraphPattern::build(parse(graph(head + R"(, "f": {"type": "affine", "input": "n"})")));
+    const GraphPattern turned = GraphPattern::build(parse(graph(head + R"(, "f": {"type": "transform", "input": "n", "angle": 90, "scale": 2, "offset_u": 0.25, "offset_v": -3})")));
+    EXPECT_FALSE(foldsIntoPattern(*parse(graph(R"("n": )" + kNoise + R"(, "f": {"type": "transform", "input": "n", "scale": 2},
+        "c": {"type": "colormap", "x": "f", "y": "n", "colormap": {"type": "gaussian"}})")).graph));
+    ASSERT_FALSE(turned.pairTransform(0).identity());
+    double worst = 0;
+    for (int i = 0; i < 200; ++i) {
+        const double u = -3.0 + 0.037 * i, v = 1.5 - 0.021 * i;
+        // angle 90°: R uv = (−v, u); ×2; + (0.25, −3).
+        const Rgb a = turned.evaluate(u, v), b = plain.evaluate(-2 * v + 0.25, 2 * u - 3);
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(a[size_t(c)] - b[size_t(c)])));
+    }
+    EXPECT_LT(worst, 1e-5);
+    // Filtered: scale only, so the views are the same region of the input.
+    const GraphPattern zoomed = GraphPattern::build(parse(graph(head + R"(, "f": {"type": "transform", "input": "n", "scale": 2})")));
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    Camera near, far;
+    near.view = {24, 24, 3.0, 10.0, 4.0};
+    far.view = {24, 24, 6.0, 20.0, 8.0};
+    const double e = meanError(FilteredGraph(zoomed, o).render(near), FilteredGraph(plain, o).render(far));
+    EXPECT_LT(e, 1e-4);
+    // A derivative of a transformed field, and a sum over two transforms, are refused.
+    const auto error = [](const std::string& text) -> std::string {
+        try {
+            (void)GraphPattern::build(parse(text));
+        } catch (const InputError& err) {
+            return err.what();
+        }
+        return "(no error)";
+    };
+    std::string m = error(graph(R"("n": )" + kNoise + R"(, "f": {"type": "transform", "input": "n", "angle": 30},
+        "d": {"type": "derivative", "input": "f"}, "c": {"type": "colormap", "x": "d", "y": "n", "colormap": {"type": "gaussian"}})"));
+    EXPECT_NE(m.find("node \"d\" (derivative): its input is seen through a transform of uv"), std::string::npos) << m;
+    m = error(graph(R"("n": )" + kNoise + R"(, "f": {"type": "transform", "input": "n", "angle": 30},
+        "s": {"type": "sum", "a": "f", "b": "n"}, "c": {"type": "colormap", "x": "s", "y": "n", "colormap": {"type": "gaussian"}})"));
+    EXPECT_NE(m.find("node \"s\" (sum): its inputs are seen through different transforms"), std::string::npos) << m;
+}
+
 // Moment matching through (g, g²) tables: a curve f(x) = x² sampled at 33
 // points (the piecewise-linear curve is above x² by h²/6 = 1.6e-4 on
 // average), on a leaf of moments (μ, σ²) = (0.5, 0.125²), gives

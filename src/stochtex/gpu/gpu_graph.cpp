@@ -27,6 +27,18 @@ std::string glslFloat(float v) {
 
 std::string slot(int k) { return "v" + std::to_string(k); }
 
+// A pair's uv (and Jacobian columns) through its transform of uv, written
+// out with the transform's numbers: "uv" itself when it is the identity.
+std::string pairUv(const UvTransform& t, const std::string& v, bool withOffset) {
+    if (t.identity()) return v;
+    const auto f = [](double x) { return glslFloat(float(x)); };
+    std::string s = "vec2(" + f(t.m[0]) + " * " + v + ".x + " + f(t.m[1]) + " * " + v + ".y";
+    if (withOffset) s += " + " + f(t.t[0]);
+    s += ", " + f(t.m[2]) + " * " + v + ".x + " + f(t.m[3]) + " * " + v + ".y";
+    if (withOffset) s += " + " + f(t.t[1]);
+    return s + ")";
+}
+
 // Texture units: a fragment shader has at least 16.
 constexpr int kMaxUnits = 16;
 
@@ -104,12 +116,16 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
     for (size_t t = 0; t < graph.tables().size(); ++t)
         o << "uniform sampler2DArray uGraphTable" << t << ", uGraphPrefiltered" << t << ";\n";
 
-    o << "\nvec3 unfilteredColour(vec2 uv) {\n"
-         "    Stencil s = triangleGrid(uv, uPattern.gridDensity);\n    vec2 fu = fract(uv);\n";
+    o << "\nvec3 unfilteredColour(vec2 uv) {\n";
+    // One stencil per pair's uv (pairs under one transform share it).
+    for (size_t p = 0; p < graph.leafPairs().size(); ++p)
+        o << "    vec2 uv" << p << " = " << pairUv(graph.pairTransform(int(p)), "uv", true) << ";\n    Stencil s" << p
+          << " = triangleGrid(uv" << p << ", uPattern.gridDensity);\n    vec2 fu" << p << " = fract(uv" << p << ");\n";
     for (int k = 0; k < graph.leafCount(); ++k) {
         const TilingBlendingNoise& n = graph.leaf(k);
+        const int p = graph.leafLocation(k)[0];
         o << "    vec3 " << slot(k) << " = vec3(tilingBlending(uGraphExample" << k << ", " << glslFloat(n.example().mean())
-          << ", " << n.offsetSeed() << "u, s, fu), 0.0, 0.0);\n";
+          << ", " << n.offsetSeed() << "u, s" << p << ", fu" << p << "), 0.0, 0.0);\n";
         if (n.example().gaussianized())
             o << "    " << slot(k) << ".x = inverseTransform(uGraphInverse" << k << ", " << slot(k) << ".x);\n";
     }
@@ -129,7 +145,9 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
           << ", uGraphStats" << leaves[0] << ", NoisePair(vec2(" << glslFloat(pair.channel(0).example().mean()) << ", "
           << glslFloat(pair.channel(1).example().mean()) << "), uvec2(" << pair.channel(0).offsetSeed() << "u, "
           << pair.channel(1).offsetSeed() << "u), 0, 0, " << maxLod << ", " << glslFloat(float(pair.exampleSize()))
-          << "), uv, jx, jy);\n";
+          << "), " << pairUv(graph.pairTransform(int(p)), "uv", true) << ", "
+          << pairUv(graph.pairTransform(int(p)), "jx", false) << ", " << pairUv(graph.pairTransform(int(p)), "jy", false)
+          << ");\n";
         for (int c = 0; c < 2; ++c)
             if (c == 0 || leaves[1] != leaves[0])
                 o << "    vec3 " << slot(leaves[c]) << " = vec3(p" << p << ".mean." << "xy"[c] << ", max(p" << p

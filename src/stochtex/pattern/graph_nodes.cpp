@@ -59,6 +59,14 @@ const std::vector<NodeInfo>& graphNodes() {
          PortType::Field,
          {{"weight_a", ParamType::Number, "Weight of a", 0.5, -100, 100},
           {"weight_b", ParamType::Number, "Weight of b", 0.5, -100, 100}}},
+        {"transform", NodeKind::Transform, "linear",
+         "The field seen through a transform of uv: input(scale · R(angle) · uv + offset), tiles and all",
+         {{"input", PortType::Field, "The field"}},
+         PortType::Field,
+         {{"angle", ParamType::Number, "Rotation, degrees from +u towards +v", 0, -360, 360},
+          {"scale", ParamType::Number, "Scale of uv (2: features half as large)", 1, 1.0 / 64, 64},
+          {"offset_u", ParamType::Number, "Offset along u, example periods", 0, -1e4, 1e4},
+          {"offset_v", ParamType::Number, "Offset along v, example periods", 0, -1e4, 1e4}}},
         {"colormap", NodeKind::Colormap, "transfer", "The 2D transfer function H: colour = H(x, y) (paper eq. 1)",
          {{"x", PortType::Field, "N_x, the colormap's horizontal coordinate"},
           {"y", PortType::Field, "N_y, the colormap's vertical coordinate"}},
@@ -102,7 +110,8 @@ bool isLinearNode(NodeKind kind) {
         case NodeKind::Exemplar:
         case NodeKind::Derivative:
         case NodeKind::Affine:
-        case NodeKind::Sum: return true;
+        case NodeKind::Sum:
+        case NodeKind::Transform: return true;
         case NodeKind::Colormap:
         case NodeKind::ColormapField:
         case NodeKind::Curve:

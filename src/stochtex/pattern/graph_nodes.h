@@ -55,7 +55,7 @@ struct PortInfo {
     std::string description;
 };
 
-enum class NodeKind { SpectralNoise, Exemplar, Derivative, Affine, Sum, Colormap, ColormapField, Curve, Mix };
+enum class NodeKind { SpectralNoise, Exemplar, Derivative, Affine, Sum, Transform, Colormap, ColormapField, Curve, Mix };
 
 struct NodeInfo {
     std::string name;  // the JSON "type"

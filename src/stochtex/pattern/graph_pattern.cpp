@@ -113,14 +113,20 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
     for (size_t k = 0; k < examples.size(); ++k)
         noises.emplace_back(std::make_shared<const NoiseExample>(examples[k]),
                             deriveSeed(spec.seed, shared ? 1u : uint32_t(k + 1)));
+    std::vector<UvTransform> transforms;
+    for (const std::string& id : p.leafIds_) transforms.push_back(graphNodeTransform(graph, id, context));
     for (size_t k = 0; k < noises.size();) {
-        const bool pair = k + 1 < noises.size() && examples[k + 1].size() == examples[k].size();
+        // Consecutive leaves of one size seen through one transform share a field.
+        const bool pair = k + 1 < noises.size() && examples[k + 1].size() == examples[k].size() &&
+                          transforms[k + 1] == transforms[k];
         const TilingBlendingNoise& second = noises[pair ? k + 1 : k];
         const bool oneSeed = second.offsetSeed() == noises[k].offsetSeed();
         p.leafLocation_.push_back({int(p.pairs_.size()), 0});
         if (pair) p.leafLocation_.push_back({int(p.pairs_.size()), 1});
         p.pairs_.emplace_back(std::vector<TilingBlendingNoise>{noises[k], second}, spec.gridDensity,
                               oneSeed ? OffsetSharing::Shared : OffsetSharing::Independent);
+        p.pairTransforms_.push_back(transforms[k]);
+        p.untransformed_ = p.untransformed_ && transforms[k].identity();
         k += pair ? 2 : 1;
     }
 
@@ -226,7 +232,22 @@ Rgb GraphPattern::evaluate(const BlendStencil& s, float fu, float fv, int lastSl
         const TilingBlendingNoise& n = leaf(k);
         slots[size_t(k)] = vec3(n.example().toOutput(n.blend(s, fu, fv)), 0.0f, 0.0f);
     }
-    return run(slots, lastSlot < 0 ? outputSlot() : lastSlot);
+    return run(slots, lastSlot);
+}
+
+Rgb GraphPattern::evaluate(double u, double v, int lastSlot) const {
+    if (lastSlot < 0) lastSlot = outputSlot();
+    if (untransformed_) return evaluate(triangleGrid(u, v, gridDensity()), periodFraction(u), periodFraction(v), lastSlot);
+    std::array<vec3, kMaxGraphNodes> slots;
+    for (int k = 0; k < leafCount(); ++k) {
+        // Each leaf at its pair's uv (the pair's tiles are its own).
+        const auto [pair, channel] = leafLocation(k);
+        const auto [pu, pv] = pairTransforms_[size_t(pair)].apply(u, v);
+        const TilingBlendingNoise& n = leaf(k);
+        const float b = n.blend(triangleGrid(pu, pv, gridDensity()), periodFraction(pu), periodFraction(pv));
+        slots[size_t(k)] = vec3(n.example().toOutput(b), 0.0f, 0.0f);
+    }
+    return run(slots, lastSlot);
 }
 
 Rgb GraphPattern::fromLeafValues(const std::vector<float>& values) const {
@@ -238,12 +259,9 @@ Rgb GraphPattern::fromLeafValues(const std::vector<float>& values) const {
     return run(slots, outputSlot());
 }
 
-Rgb GraphPattern::evaluate(double u, double v) const {
-    return evaluate(triangleGrid(u, v, gridDensity()), periodFraction(u), periodFraction(v));
-}
+Rgb GraphPattern::evaluate(double u, double v) const { return evaluate(u, v, -1); }
 
-template <class PixelFn>
-Image GraphPattern::renderPixels(const View& view, const Progress& progress, PixelFn&& pixel) const {
+Image GraphPattern::renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray) const {
     validateView(view);
     Image out(view.width, view.height, 3, Image::Uninitialized{});
     const double invW = 1.0 / double(exampleSize());
@@ -257,7 +275,9 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, Pix
                 float* row = out.row(py);
                 for (int px = 0; px < view.width; ++px) {
                     const double u = (view.offsetU + (px + 0.5) * view.scale) * invW;
-                    const Rgb c = pixel(grid.stencil(u), periodFraction(u), fv);
+                    Rgb c = untransformed_ ? evaluate(grid.stencil(u), periodFraction(u), fv, lastSlot)
+                                           : evaluate(u, v, lastSlot);
+                    if (gray) c[0] = c[1] = c[2] = std::clamp(c[0], 0.0f, 1.0f);
                     std::copy(c.begin(), c.end(), row + size_t(px) * 3);
                 }
             }
@@ -267,7 +287,7 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, Pix
 }
 
 Image GraphPattern::render(const View& view, const Progress& progress) const {
-    return renderPixels(view, progress, [&](const BlendStencil& s, float fu, float fv) { return evaluate(s, fu, fv); });
+    return renderPixels(view, progress, outputSlot(), false);
 }
 
 Image GraphPattern::renderNode(const View& view, const std::string& id) const {
@@ -281,12 +301,7 @@ Image GraphPattern::renderNode(const View& view, const std::string& id) const {
             field = operations_[k].kind != NodeKind::Colormap && operations_[k].kind != NodeKind::Mix;
         }
     if (slot < 0) throw InputError("node \"" + id + "\" is neither a leaf nor an operation of the graph's program");
-    return renderPixels(view, {}, [&](const BlendStencil& s, float fu, float fv) {
-        const Rgb c = evaluate(s, fu, fv, slot);
-        if (!field) return c;
-        const float g = std::clamp(c[0], 0.0f, 1.0f);
-        return Rgb{g, g, g};
-    });
+    return renderPixels(view, {}, slot, field);
 }
 
 FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments)
@@ -375,9 +390,30 @@ Rgb FilteredGraph::fromPairStats(const std::vector<FootprintStats>& stats) const
     return fromMoments(m);
 }
 
+namespace {
+
+// A pair's view of uv's footprint: its transform applied to the centre and the Jacobian.
+Jacobian transformed(const UvTransform& t, const Jacobian& j) {
+    const auto [dudx, dvdx] = t.linear(j.dudx, j.dvdx);
+    const auto [dudy, dvdy] = t.linear(j.dudy, j.dvdy);
+    Jacobian r = j;
+    r.dudx = dudx;
+    r.dvdx = dvdx;
+    r.dudy = dudy;
+    r.dvdy = dvdy;
+    return r;
+}
+
+}  // namespace
+
 std::vector<Footprint> FilteredGraph::footprints(double u, double v, const Jacobian& j) const {
     std::vector<Footprint> f;
-    for (const auto& e : estimators_) f.push_back(makeFootprint(u, v, j, e->exampleSize(), e->maxLod(), options_.aniso));
+    for (size_t k = 0; k < estimators_.size(); ++k) {
+        const UvTransform& t = graph_.pairTransform(int(k));
+        const auto [pu, pv] = t.apply(u, v);
+        const FootprintEstimator& e = *estimators_[k];
+        f.push_back(makeFootprint(pu, pv, transformed(t, j), e.exampleSize(), e.maxLod(), options_.aniso));
+    }
     return f;
 }
 
@@ -394,8 +430,11 @@ Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j) co
         case StatisticsSource::Estimators: return shade(footprints(u, v, j));
         case StatisticsSource::Exact: {
             std::vector<FootprintStats> stats;
-            for (const TiledField& pair : graph_.leafPairs())
-                stats.push_back(bruteForceStats(pair, u, v, j, options_.referenceMaxSamples));
+            for (size_t k = 0; k < graph_.leafPairs().size(); ++k) {
+                const UvTransform& t = graph_.pairTransform(int(k));
+                const auto [pu, pv] = t.apply(u, v);
+                stats.push_back(bruteForceStats(graph_.leafPairs()[k], pu, pv, transformed(t, j), options_.referenceMaxSamples));
+            }
             return fromPairStats(stats);
         }
         case StatisticsSource::Reference: {
@@ -430,7 +469,11 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
         double u = 0, v = 0;
         Jacobian j;
         camera.footprint(0, 0, w, u, v, j);
-        shapes = footprints(0.0, 0.0, j);
+        for (size_t k = 0; k < estimators_.size(); ++k) {  // at the origin of each pair's uv, translated per pixel
+            const FootprintEstimator& e = *estimators_[k];
+            shapes.push_back(makeFootprint(0.0, 0.0, transformed(graph_.pairTransform(int(k)), j), e.exampleSize(),
+                                           e.maxLod(), options_.aniso));
+        }
     }
     parallelRows(
         camera.view.height,
@@ -443,7 +486,10 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                     Rgb c;
                     if (oneFootprint) {
                         std::vector<Footprint> here;
-                        for (const Footprint& f : shapes) here.push_back(f.translated(u, v));
+                        for (size_t k = 0; k < shapes.size(); ++k) {
+                            const auto [pu, pv] = graph_.pairTransform(int(k)).apply(u, v);
+                            here.push_back(shapes[k].translated(pu, pv));
+                        }
                         c = shade(here);
                     } else {
                         c = shade(onPlane, u, v, j);

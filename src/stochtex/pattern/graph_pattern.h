@@ -78,6 +78,8 @@ public:
     // consecutive leaves with examples of one size share a field, a leaf
     // without a partner fills both channels.
     const std::vector<TiledField>& leafPairs() const { return pairs_; }
+    // The transform of uv each pair of leaves is seen through (transform nodes).
+    const UvTransform& pairTransform(int pair) const { return pairTransforms_[size_t(pair)]; }
     // Where leaf k is: its field in leafPairs() and its channel there.
     std::array<int, 2> leafLocation(int k) const { return leafLocation_[size_t(k)]; }
     const TilingBlendingNoise& leaf(int k) const {
@@ -94,9 +96,8 @@ public:
     Rgb evaluate(double u, double v) const;
     // The program on given leaf values (one per leaf, in output space).
     Rgb fromLeafValues(const std::vector<float>& values) const;
-    // The same with the grid stencil and the period fractions of uv given;
     // lastSlot: stop after this slot and return its value (default: the output).
-    Rgb evaluate(const BlendStencil& s, float fu, float fv, int lastSlot = -1) const;
+    Rgb evaluate(double u, double v, int lastSlot) const;
     // Unfiltered, one sample per pixel centre, multi-threaded.
     Image render(const View& view, const Progress& progress = {}) const;
     // The value of any leaf or operation node over the same view (a field
@@ -108,10 +109,13 @@ private:
     // The operations on slots whose leaves are set; returns slot `lastSlot`.
     template <class Slots>
     Rgb run(Slots& slots, int lastSlot) const;
-    template <class PixelFn>
-    Image renderPixels(const View& view, const Progress& progress, PixelFn&& pixel) const;
+    // Every leaf seen through no transform: one stencil per pixel, the scanline's grid row.
+    Rgb evaluate(const BlendStencil& s, float fu, float fv, int lastSlot) const;
+    Image renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray) const;
     std::vector<std::string> leafIds_;
     std::vector<TiledField> pairs_;
+    std::vector<UvTransform> pairTransforms_;
+    bool untransformed_ = true;
     std::vector<std::array<int, 2>> leafLocation_;
     std::vector<Operation> operations_;
     std::vector<Table> tables_;

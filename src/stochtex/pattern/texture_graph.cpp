@@ -195,10 +195,62 @@ bool foldsIntoPattern(const TextureGraph& graph) {
         todo.pop_back();
         if (!seen.insert(id).second) continue;
         const GraphNode& g = graph.node(id);
-        if (!isLinearNode(g.info->kind)) return false;
+        if (!isLinearNode(g.info->kind) || g.info->kind == NodeKind::Transform) return false;
         for (const auto& [port, from] : g.inputs) todo.push_back(from);
     }
     return true;
+}
+
+namespace {
+
+UvTransform nodeTransform(const TextureGraph& graph, const std::string& id, const std::string& context,
+                          std::map<std::string, UvTransform>& memo) {
+    if (const auto it = memo.find(id); it != memo.end()) return it->second;
+    const GraphNode& g = graph.node(id);
+    const std::string where = context + ": node \"" + id + "\" (" + g.info->name + ")";
+    const auto input = [&](const char* port) { return nodeTransform(graph, g.inputs.at(port), context, memo); };
+    UvTransform r;
+    switch (g.info->kind) {
+        case NodeKind::Transform: {
+            // input(M_in · (A·uv + b) + t_in): A = scale·R(angle), b = offset.
+            const UvTransform in = input("input");
+            const double a = g.numbers.at("angle") * std::numbers::pi / 180, k = g.numbers.at("scale");
+            const double c = k * std::cos(a), s = k * std::sin(a);
+            const std::array<double, 4> m{c, -s, s, c};
+            const std::array<double, 2> b{g.numbers.at("offset_u"), g.numbers.at("offset_v")};
+            r.m = {in.m[0] * m[0] + in.m[1] * m[2], in.m[0] * m[1] + in.m[1] * m[3], in.m[2] * m[0] + in.m[3] * m[2],
+                   in.m[2] * m[1] + in.m[3] * m[3]};
+            const std::array<double, 2> mb = in.linear(b[0], b[1]);
+            r.t = {mb[0] + in.t[0], mb[1] + in.t[1]};
+            break;
+        }
+        case NodeKind::Derivative:
+            if (!input("input").identity())
+                throw InputError(where + ": its input is seen through a transform of uv; put the transform after the "
+                                         "derivative");
+            break;
+        case NodeKind::Affine: r = input("input"); break;
+        case NodeKind::Sum:
+            r = input("a");
+            if (!(input("b") == r))
+                throw InputError(where + ": its inputs are seen through different transforms of uv; a sum needs one");
+            break;
+        case NodeKind::SpectralNoise:
+        case NodeKind::Exemplar: break;
+        case NodeKind::Colormap:
+        case NodeKind::ColormapField:
+        case NodeKind::Curve:
+        case NodeKind::Mix: throw std::logic_error("graphNodeTransform: node " + id + " is not linear in its sources");
+    }
+    memo.emplace(id, r);
+    return r;
+}
+
+}  // namespace
+
+UvTransform graphNodeTransform(const TextureGraph& graph, const std::string& id, const std::string& context) {
+    std::map<std::string, UvTransform> memo;
+    return nodeTransform(graph, id, context, memo);
 }
 
 uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id) {
@@ -286,6 +338,8 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
             for (size_t i = 0; i < v.data().size(); ++i) v.data()[i] = wa * v.data()[i] + wb * b.values().data()[i];
             return NoiseExample(std::move(v));
         }
+        // The same example, seen through another uv (graphNodeTransform).
+        case NodeKind::Transform: return buildFieldOnce(graph, g.inputs.at("input"), patternSeed, context, cache);
         case NodeKind::Colormap:
         case NodeKind::ColormapField:
         case NodeKind::Curve:

@@ -55,9 +55,27 @@ struct TextureGraph {
 // Parses and checks the graph members ("nodes", "output") of a pattern file.
 TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path& baseDir);
 
+// The transform of uv a linear field node is seen through (transform
+// nodes, composed): the field at uv is its example's tiled field at
+// M·uv + t. Identity for every node not downstream of a transform.
+struct UvTransform {
+    std::array<double, 4> m{1, 0, 0, 1};  // row-major: (m0 m1; m2 m3)
+    std::array<double, 2> t{0, 0};
+    bool identity() const { return m == std::array<double, 4>{1, 0, 0, 1} && t == std::array<double, 2>{0, 0}; }
+    bool operator==(const UvTransform&) const = default;
+    std::array<double, 2> apply(double u, double v) const { return {m[0] * u + m[1] * v + t[0], m[2] * u + m[3] * v + t[1]}; }
+    // The linear part on a vector (a Jacobian column).
+    std::array<double, 2> linear(double u, double v) const { return {m[0] * u + m[1] * v, m[2] * u + m[3] * v}; }
+};
+// The transform of a linear field node. InputError naming the node where a
+// derivative reads a transformed field (put the transform after it) or a
+// sum reads two fields under different transforms.
+UvTransform graphNodeTransform(const TextureGraph& graph, const std::string& id, const std::string& context);
+
 // Whether the graph is "linear part → colormap": its output is a colormap
-// node whose inputs are linear in the sources, so that it folds into a
-// Pattern (two examples and H). Other graphs are evaluated by GraphPattern.
+// node whose inputs are linear in the sources and seen through no transform
+// of uv, so that it folds into a Pattern (two examples and H). Other graphs
+// are evaluated by GraphPattern.
 bool foldsIntoPattern(const TextureGraph& graph);
 
 // The seed of a source node without an explicit one: from the pattern seed
