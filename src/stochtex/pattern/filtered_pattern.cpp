@@ -156,15 +156,7 @@ Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j, 
             return response(bruteForceStats(*field_, u, v, j, options_.referenceMaxSamples), view);
         case StatisticsSource::Reference: {
             const int n = bruteForceSamples(j, field_->exampleSize(), options_.referenceMaxSamples);
-            double acc[3] = {0, 0, 0};
-            for (int b = 0; b < n; ++b)
-                for (int a = 0; a < n; ++a) {
-                    const double s = (a + 0.5) / n - 0.5, t = (b + 0.5) / n - 0.5;
-                    const Rgb c = point(u + s * j.dudx + t * j.dudy, v + s * j.dvdx + t * j.dvdy, view);
-                    for (int k = 0; k < 3; ++k) acc[k] += c[size_t(k)];
-                }
-            const double inv = 1.0 / (double(n) * n);
-            return {float(acc[0] * inv), float(acc[1] * inv), float(acc[2] * inv)};
+            return supersampledAverage(u, v, j, n, [&](double pu, double pv) { return point(pu, pv, view); });
         }
     }
     return sky_;

@@ -75,6 +75,22 @@ NamedFilter parseFilter(const std::string& name);
 // "exact/prefiltered-colormap") so that it is never mistaken for a name.
 std::string filterName(const FilterOptions& options);
 
+// S̄ (paper eq. 3): the average of pointColour over the footprint
+// parallelogram uv + J·(s, t), s, t ∈ [−½, ½], on an n×n grid of cell
+// centres. FilteredPattern and FilteredGraph share it.
+template <class PointColour>
+Rgb supersampledAverage(double u, double v, const Jacobian& j, int n, PointColour&& pointColour) {
+    double acc[3] = {0, 0, 0};
+    for (int b = 0; b < n; ++b)
+        for (int a = 0; a < n; ++a) {
+            const double s = (a + 0.5) / n - 0.5, t = (b + 0.5) / n - 0.5;
+            const Rgb c = pointColour(u + s * j.dudx + t * j.dudy, v + s * j.dvdx + t * j.dvdy);
+            for (int k = 0; k < 3; ++k) acc[k] += c[size_t(k)];
+        }
+    const double inv = 1.0 / (double(n) * n);
+    return {float(acc[0] * inv), float(acc[1] * inv), float(acc[2] * inv)};
+}
+
 // InputError naming `aniso` or `referenceMaxSamples` when out of range.
 void validateFilterOptions(const FilterOptions& options);
 // The mean and variance of an example's values (blending space): those of

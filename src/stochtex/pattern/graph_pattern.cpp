@@ -441,15 +441,7 @@ Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j) co
             int size = 0;  // the finest leaf sets the sampling
             for (const TiledField& pair : graph_.leafPairs()) size = std::max(size, pair.exampleSize());
             const int n = bruteForceSamples(j, size, options_.referenceMaxSamples);
-            double acc[3] = {0, 0, 0};
-            for (int b = 0; b < n; ++b)
-                for (int a = 0; a < n; ++a) {
-                    const double s = (a + 0.5) / n - 0.5, t = (b + 0.5) / n - 0.5;
-                    const Rgb c = graph_.evaluate(u + s * j.dudx + t * j.dudy, v + s * j.dvdx + t * j.dvdy);
-                    for (int k = 0; k < 3; ++k) acc[k] += c[size_t(k)];
-                }
-            const double inv = 1.0 / (double(n) * n);
-            return {float(acc[0] * inv), float(acc[1] * inv), float(acc[2] * inv)};
+            return supersampledAverage(u, v, j, n, [&](double pu, double pv) { return graph_.evaluate(pu, pv); });
         }
     }
     return sky_;
