@@ -35,10 +35,7 @@ void registerBake(CLI::App& app) {
         else if (args->precision != "half")
             throw InputError("--table-precision: unknown \"" + args->precision + "\" (expected half or float)");
         const PatternSpec spec = loadPatternSource(args->source, args->options);
-        if (needsGraphEvaluator(spec))  // non-linear nodes before the output: its own program
-            exportGraph(GraphPattern::build(spec), args->options, args->dir, e);
-        else
-            exportPattern(Pattern::build(spec), args->options, args->dir, e);
+        exportPatternSpec(spec, args->options, args->dir, e);
         std::printf("exported %s (filter %s) to %s: manifest.json, stochtex.glsl, README.md and the data\n",
                     spec.name.c_str(), filterName(args->options).c_str(), args->dir.c_str());
     });

@@ -45,6 +45,10 @@ std::string exportedShaderInclude(ResponseKind response = ResponseKind::Prefilte
 // options.source: Estimators, the paper estimator (InputError otherwise).
 void exportGraph(const GraphPattern& graph, const FilterOptions& options, const std::string& dir,
                  const ExportOptions& exportOptions = {});
+// A pattern file's export: exportGraph for a texture graph that is not a
+// pattern H∘N (needsGraphEvaluator), else exportPattern.
+void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,
+                       const ExportOptions& exportOptions = {});
 std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched);
 
 }  // namespace stochtex
