@@ -25,4 +25,6 @@ set(stochtex_sanitized_test_sources
   pattern/camera_test.cpp
   pattern/texture_graph_test.cpp
   pattern/graph_pattern_test.cpp
+  pattern/graph_lean_test.cpp
+  pattern/graph_tiled_field_test.cpp
   textures/marble_texture_test.cpp)

@@ -435,6 +435,45 @@ TEST(Gpu, TextureGraphWithEveryOperationMatchesTheCpu) {
     fs::remove_all(dir);
 }
 
+// The nodes past the paper's: a lean node (its slopes' pair with its
+// covariance pyramid, the light and the eye per pixel) over the height that
+// also feeds its albedo, and a colour image tiled as one 3-channel field
+// whose channels are composed back into a colour; in a plane view, where
+// each pixel's eye direction differs, unfiltered and smooth.
+TEST(Gpu, LeanAndTiledFieldNodesMatchTheCpuInAPlaneView) {
+    const fs::path dir = test::scratchPath("stochtex_gpu_lean_graph"), file = dir / "rgb.png";
+    fs::create_directories(dir);
+    Image img(64, 64, 3);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int c = 0; c < 3; ++c) img.at(x, y, c) = float(0.5 + 0.4 * std::sin(0.2 * x * (c + 1) + 0.3 * y));
+    writeImage(file.string(), img);
+    const std::string text = R"({"name": "lean-tiled", "seed": 6, "nodes": {
+        "t": {"type": "tiled_field", "path": ")" + file.string() + R"(", "gaussianize": false},
+        "r": {"type": "channel", "field": "t", "index": 0},
+        "g": {"type": "channel", "field": "t", "index": 1},
+        "b": {"type": "channel", "field": "t", "index": 2},
+        "rgb": {"type": "compose", "r": "r", "g": "g", "b": "b"},
+        "h": {"type": "spectral_noise", "size": 64, "components": [{"shape": "bilobe", "frequency": 8, "bandwidth": 3, "orientation": 30}]},
+        "lit": {"type": "lean", "height": "h", "albedo": "rgb", "amplitude": 0.3, "roughness": 0.1, "specular": 0.2},
+        "pale": {"type": "colormap", "x": "h", "y": "h", "colormap": {"type": "gaussian"}},
+        "c": {"type": "mix", "a": "lit", "b": "pale", "t": "r"}}, "output": "c"})";
+    const GraphPattern g = GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "lt"), "lt"), "."));
+    ASSERT_EQ(g.leafCount(), 6);  // r, g, b and h, then the slopes
+    ASSERT_EQ(g.leafIds()[4], "lit.slope_u");
+    EXPECT_TRUE(g.pairCovariance(g.leafLocation(4)[0]));
+    Camera c;
+    c.kind = Camera::Kind::Plane;
+    c.view = {96, 64, 0.8, 5.0, 3.0};
+    c.tiltDeg = 65;
+    c.fovDeg = 50;
+    expectGraphParity(g, c, GpuPattern::unfiltered(), "lean and tiled field, unfiltered", 1e-4, 0.005);
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    expectGraphParity(g, c, o, "lean and tiled field, smooth", 1e-4, 0.005);
+    fs::remove_all(dir);
+}
+
 TEST(Gpu, TextureGraphProgramMatchesTheCpu) {
     const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
     Camera c;

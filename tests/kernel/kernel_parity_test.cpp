@@ -478,6 +478,48 @@ TEST_F(KernelParity, SrgbTransferPairWithin1e6) {
     });
 }
 
+// The texture-graph operations beyond the tables (kernel/graph_ops.glsl):
+// momentSigma and composeColour within 4 ulps; leanNodeShade, which goes
+// through the LEAN lobe's exp2 and sqrt, within 1e-5 of max(1, |value|) as
+// the lobe itself (LeanLobeAndShadingWithin1e5).
+TEST_F(KernelParity, GraphLeanComposeAndSigmaMatchTheCpu) {
+    Random r{23};
+    const auto direction = [&r] {
+        const vec3 d(r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(0.1f, 1.0f));
+        return d / length(d);
+    };
+    std::vector<uvec4> in;
+    for (int i = 0; i < kItems; ++i) {
+        const vec2 var(r.uniform(0.0f, 0.1f), r.uniform(0.0f, 0.1f));
+        in.push_back(bits(vec4(r.uniform(-0.5f, 0.5f), r.uniform(-0.5f, 0.5f), var.x, var.y)));
+        const vec3 l = direction(), v = direction();
+        in.push_back(bits(vec4(l.x, l.y, l.z, r.uniform(-1.2f, 1.2f) * std::sqrt(var.x * var.y))));
+        in.push_back(bits(vec4(v.x, v.y, v.z, r.uniform(0.02f, 0.5f))));
+        in.push_back(bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f))));
+    }
+    const auto gpu = runOnGpu({"graph_ops"}, R"(
+        vec4 a = wordf(0), b = wordf(1), c = wordf(2), d = wordf(3);
+        emitf(0, vec4(leanNodeShade(a.xy, a.zw, b.w, d.xyz, b.xyz, c.xyz, c.w, d.w), momentSigma(vec2(d.x, a.z - 0.05))));
+        emitf(1, vec4(composeColour(d.x, d.y, d.z), 0.0));)",
+                              4, 2, in);
+    compareItems(gpu, 2, [&](int i) {
+        const vec4 a = floats(in[size_t(4 * i)]), b = floats(in[size_t(4 * i + 1)]), c = floats(in[size_t(4 * i + 2)]),
+                   d = floats(in[size_t(4 * i + 3)]);
+        const vec3 rgb = leanNodeShade(vec2(a.x, a.y), vec2(a.z, a.w), b.w, vec3(d.x, d.y, d.z), vec3(b.x, b.y, b.z),
+                                       vec3(c.x, c.y, c.z), c.w, d.w);
+        return std::vector<uvec4>{bits(vec4(rgb.x, rgb.y, rgb.z, momentSigma(vec2(d.x, a.z - 0.05f)))),
+                                  bits(vec4(composeColour(d.x, d.y, d.z), 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) -> std::string {
+        const vec4 g0 = floats(g[0]), c0 = floats(c[0]), g1 = floats(g[1]), c1 = floats(c[1]);
+        for (int k = 0; k < 3; ++k)
+            if (!(std::abs(g0[k] - c0[k]) <= 1e-5f * std::max(1.0f, std::abs(c0[k]))))
+                return "lean [" + std::to_string(k) + "]: GPU " + std::to_string(g0[k]) + ", C++ " + std::to_string(c0[k]);
+        std::string m = closeLog(g0[3], c0[3], 4, "momentSigma");
+        for (int k = 0; k < 3 && m.empty(); ++k) m = closeLog(g1[k], c1[k], 4, "composeColour");
+        return m;
+    });
+}
+
 // The LEAN lobe and shading (kernel/lean.glsl): exp2 and sqrt are the GPU's
 // own approximations (a few ulps each), so values agree within 1e-5 of
 // max(1, |value|) (the densities reach ~10³ for narrow lobes; a display code

@@ -378,6 +378,17 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
         textures.push_back(pyramidTexture("uGraphStats" + std::to_string(k), list, "variance"));
         leaves.push_back({{"id", id}, {"files", list}});
     }
+    // The covariance pyramids of the pairs whose covariance a lean node reads.
+    nlohmann::json& covariances = m["graph"]["covariances"] = nlohmann::json::array();
+    for (size_t p = 0; p < graph.leafPairs().size(); ++p) {
+        if (!graph.pairCovariance(int(p))) continue;
+        nlohmann::json list = nlohmann::json::array();
+        writeStats(*f.estimator(int(p)).covariancePyramid(), dir, "covariance_" + std::to_string(p), list,
+                   "covariance C_l of leaf pair " + std::to_string(p) + " (a lean node's slopes; R is E_l of the first)",
+                   files);
+        textures.push_back(pyramidTexture("uGraphCov" + std::to_string(p), list, "covariance, R the mean of the first leaf"));
+        covariances.push_back({{"pair", p}, {"files", list}});
+    }
     nlohmann::json& tables = m["graph"]["tables"] = nlohmann::json::array();
     for (size_t t = 0; t < graph.tables().size(); ++t) {
         const ColormapTable& h = graph.tables()[t].blended;

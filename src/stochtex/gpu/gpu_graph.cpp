@@ -54,7 +54,7 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
         const std::string a = slot(op.inputs[0]), b = op.inputs[1] >= 0 ? slot(op.inputs[1]) : "",
                           t = op.inputs[2] >= 0 ? slot(op.inputs[2]) : "";
         const std::string table = (filtered ? "uGraphPrefiltered" : "uGraphTable") + std::to_string(op.table);
-        const std::string sigmas = "sqrt(max(vec2(" + a + ".y, " + b + ".y), 0.0))";
+        const std::string sigmas = "vec2(momentSigma(" + a + ".xy), momentSigma(" + b + ".xy))";
         const std::string p0 = glslFloat(op.parameters[0]), p1 = glslFloat(op.parameters[1]);
         o << "    vec3 " << slot(out) << " = ";
         switch (op.kind) {
@@ -73,8 +73,8 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
                 break;
             case NodeKind::Curve:
                 if (filtered)
-                    o << "vec3(matchedMoments(prefilteredLookup(" << table << ", vec2(" << a << ".x, 0.5), vec2(sqrt(max("
-                      << a << ".y, 0.0)), 0.0))), 0.0)";
+                    o << "vec3(matchedMoments(prefilteredLookup(" << table << ", vec2(" << a << ".x, 0.5), vec2(momentSigma("
+                      << a << ".xy), 0.0))), 0.0)";
                 else
                     o << "tableLookup(" << table << ", 0, vec2(" << a << ".x, 0.5))";
                 break;
@@ -91,6 +91,19 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
                     o << "vec3(sumValue(" << a << ".x, " << b << ".x, " << p0 << ", " << p1 << "), 0.0, 0.0)";
                 break;
             case NodeKind::Mix: o << "mixColour(" << a << ", " << b << ", " << t << ".x)"; break;
+            case NodeKind::Compose: o << "composeColour(" << a << ".x, " << b << ".x, " << t << ".x)"; break;
+            case NodeKind::Lean: {
+                // The scene's light when it has one (gLightDirection.w = 1), else the node's; the camera's eye.
+                const auto& q = op.parameters;
+                const std::string light = "(gLightDirection.w != 0.0 ? gLightDirection.xyz : vec3(" + glslFloat(q[2]) +
+                                          ", " + glslFloat(q[3]) + ", " + glslFloat(q[4]) + "))";
+                const int pair = graph.leafLocation(op.inputs[0])[0];
+                const std::string cov = filtered && q[5] != 0 ? "p" + std::to_string(pair) + ".cov" : "0.0";
+                o << "leanNodeShade(vec2(" << a << ".x, " << b << ".x), " << (filtered ? "vec2(" + a + ".y, " + b + ".y)" : "vec2(0.0)")
+                  << ", " << cov << ", " << t << ", " << light << ", gEyeDirection, " << glslFloat(q[0]) << ", "
+                  << glslFloat(q[1]) << ")";
+                break;
+            }
             default: throw std::logic_error("graphProgramSource: a source as an operation");
         }
         o << ";  // " << op.id << "\n";
@@ -115,6 +128,8 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
     }
     for (size_t t = 0; t < graph.tables().size(); ++t)
         o << "uniform sampler2DArray uGraphTable" << t << ", uGraphPrefiltered" << t << ";\n";
+    for (size_t p = 0; p < graph.leafPairs().size(); ++p)
+        if (graph.pairCovariance(int(p))) o << "uniform sampler2D uGraphCov" << p << ";  // pair " << p << "'s C_l pyramid\n";
 
     o << "\nvec3 unfilteredColour(vec2 uv) {\n";
     // One stencil per pair's uv (pairs under one transform share it).
@@ -141,10 +156,12 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
         if (leaves[1] < 0) leaves[1] = leaves[0];
         int maxLod = 0;
         while ((1 << maxLod) < pair.exampleSize()) ++maxLod;
+        const bool covariance = graph.pairCovariance(int(p));
         o << "    FootprintMoments p" << p << " = pairStatistics(uGraphStats" << leaves[0] << ", uGraphStats" << leaves[1]
-          << ", uGraphStats" << leaves[0] << ", NoisePair(vec2(" << glslFloat(pair.channel(0).example().mean()) << ", "
+          << ", " << (covariance ? "uGraphCov" + std::to_string(p) : "uGraphStats" + std::to_string(leaves[0]))
+          << ", NoisePair(vec2(" << glslFloat(pair.channel(0).example().mean()) << ", "
           << glslFloat(pair.channel(1).example().mean()) << "), uvec2(" << pair.channel(0).offsetSeed() << "u, "
-          << pair.channel(1).offsetSeed() << "u), 0, 0, " << maxLod << ", " << glslFloat(float(pair.exampleSize()))
+          << pair.channel(1).offsetSeed() << "u), " << (covariance ? 1 : 0) << ", 0, " << maxLod << ", " << glslFloat(float(pair.exampleSize()))
           << "), " << pairUv(graph.pairTransform(int(p)), "uv", true) << ", "
           << pairUv(graph.pairTransform(int(p)), "jx", false) << ", " << pairUv(graph.pairTransform(int(p)), "jy", false)
           << ");\n";
@@ -161,6 +178,7 @@ void checkGraphTextureUnits(const GraphPattern& graph, bool filtered) {
     // The point set (examples, T⁻¹ LUTs, tables) always, the filtered set (pyramids, prefiltered tables) when filtering.
     int units = (int(graph.tables().size()) + graph.leafCount()) * (filtered ? 2 : 1);
     for (int k = 0; k < graph.leafCount(); ++k) units += graph.leaf(k).example().gaussianized();
+    for (size_t p = 0; p < graph.leafPairs().size(); ++p) units += filtered && graph.pairCovariance(int(p));
     if (units > kMaxUnits)
         throw InputError("the graph's GPU program reads " + std::to_string(units) + " textures " +
                          (filtered ? "filtered" : "unfiltered") + ", more than the " + std::to_string(kMaxUnits) +
@@ -217,6 +235,9 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
         const auto [pair, channel] = graph.leafLocation(k);
         m.planes.emplace_back("uGraphStats" + leaf, pyramidTexture(f.estimator(pair).pyramid(channel)));
     }
+    for (size_t p = 0; p < graph.leafPairs().size(); ++p)
+        if (filtered && graph.pairCovariance(int(p)))
+            m.planes.emplace_back("uGraphCov" + std::to_string(p), pyramidTexture(*f.estimator(int(p)).covariancePyramid()));
     for (size_t t = 0; t < graph.tables().size(); ++t) {
         const std::string table = std::to_string(t);
         const Image point = graph.tables()[t].point.table();
@@ -261,7 +282,7 @@ void GpuGraph::bind(unsigned program) const {
     // draw when samplers of two types share one.
     for (int k = 0; k < kMaxUnits; ++k) {
         const std::string leaf = std::to_string(k);
-        for (const std::string& name : {"uGraphStats" + leaf, "uGraphInverse" + leaf})
+        for (const std::string& name : {"uGraphStats" + leaf, "uGraphInverse" + leaf, "uGraphCov" + leaf})
             if (std::none_of(m.planes.begin(), m.planes.end(), [&](const auto& p) { return p.first == name; }))
                 glUniform1i(glGetUniformLocation(program, name.c_str()), 0);
         const std::string name = "uGraphPrefiltered" + leaf;

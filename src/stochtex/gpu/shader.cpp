@@ -59,6 +59,7 @@ const std::map<std::string, std::vector<std::string>>& chunkNeeds() {
         {"pattern_filtering", {"filtering"}},
         {"response_prefiltered_colormap", {"sigma_levels"}},
         {"response_lean", {"lean"}},
+        {"graph_ops", {"lean"}},
         {"view", {"camera"}},
         {"display", {"colour"}},
     };

@@ -40,6 +40,16 @@ Image toGray(const Image& image) {
     return out;
 }
 
+Image channelOf(const Image& image, int c) {
+    if (c < 0 || c >= image.channels())
+        throw std::out_of_range("channelOf: no channel " + std::to_string(c) + " in an image of " +
+                                std::to_string(image.channels()));
+    Image out(image.width(), image.height(), 1, Image::Uninitialized{});
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) out.at(x, y) = image.at(x, y, c);
+    return out;
+}
+
 Image shiftedPeriodic(const Image& image, int dx, int dy) {
     const int w = image.width(), h = image.height(), c = image.channels();
     Image out(w, h, c, Image::Uninitialized{});

@@ -69,6 +69,8 @@ Image toRgb(const Image& image);
 // I = 0.21 r + 0.72 g + 0.07 b (Tavernier 2017, Figure 2.17; alpha is not a
 // colour), two channels by their average, one channel as it is.
 Image toGray(const Image& image);
+// Channel c of the image (0 ≤ c < channels, std::out_of_range otherwise), as a 1-channel image.
+Image channelOf(const Image& image, int c);
 // The image moved periodically: out(x, y) = in((x + dx) mod W, (y + dy) mod H).
 Image shiftedPeriodic(const Image& image, int dx, int dy);
 // Nearest-neighbour resize, used for showing small tables large in sheets.

@@ -31,6 +31,11 @@ inline vec3 momentEntry(float g) { return vec3(g, g * g, 0.0f); }
 // flat region of g could make it negative.
 inline vec2 matchedMoments(vec3 lookup) { return vec2(lookup.x, max(lookup.y - lookup.x * lookup.x, 0.0f)); }
 
+// The standard deviation a prefiltered lookup reads from a field's moments
+// (mean, variance): the variance is clamped at 0, where an estimator's
+// rounding leaves it slightly negative.
+inline float momentSigma(vec2 m) { return sqrt(max(m.y, 0.0f)); }
+
 // affine node: scale·x + offset, on a value and on moments (exact).
 inline float affineValue(float x, float scale, float offset) { return scale * x + offset; }
 inline vec2 affineMoments(vec2 m, float scale, float offset) {
@@ -50,3 +55,18 @@ inline vec2 sumMoments(vec2 a, vec2 b, float wa, float wb) {
 // t, so on means it is the same formula, exact when t is uncorrelated with
 // the colours over the footprint (put a curve before t to clamp it).
 inline vec3 mixColour(vec3 a, vec3 b, float t) { return a + t * (b - a); }
+
+// compose node: a colour from three fields. On means it is the same
+// formula, exact (a colour's mean is its channels' means).
+inline vec3 composeColour(float r, float g, float b) { return vec3(r, g, b); }
+
+// lean node: the radiance of a height field's micro-facets (kernel/lean.glsl,
+// paper §6.5). The slopes' footprint mean, variances and covariance make
+// the anisotropic Beckmann lobe; unfiltered, the variances and covariance
+// are 0 (the base lobe about the point's slope). albedo is a colour input's
+// value, or its footprint mean when filtered: exact when the albedo is
+// uncorrelated with the slopes over the footprint.
+inline vec3 leanNodeShade(vec2 slopeMean, vec2 slopeVar, float slopeCov, vec3 albedo, vec3 light, vec3 eye,
+                          float roughness, float specular) {
+    return leanShade(leanLobe(slopeMean, slopeVar, slopeCov, roughness), light, eye, albedo, specular);
+}

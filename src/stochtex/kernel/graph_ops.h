@@ -1,6 +1,7 @@
 #pragma once
 // C++ view of kernel/graph_ops.glsl.
 #include "stochtex/kernel/glsl.h"
+#include "stochtex/kernel/lean.h"
 
 namespace stochtex::kernel {
 #include "stochtex/kernel/graph_ops.glsl"

@@ -4,7 +4,14 @@
 
 namespace stochtex {
 
-const char* portTypeName(PortType t) { return t == PortType::Field ? "field" : "colour"; }
+const char* portTypeName(PortType t) {
+    switch (t) {
+        case PortType::Field: return "field";
+        case PortType::Colour: return "colour";
+        case PortType::Channels: break;
+    }
+    return "tiled field";
+}
 
 const char* paramTypeName(ParamType t) {
     switch (t) {
@@ -43,6 +50,25 @@ const std::vector<NodeInfo>& graphNodes() {
            "Blend the histogram-transformed exemplar and map back (paper §5); such a field feeds a transfer "
            "function directly, not a linear node",
            true}}},
+        {"tiled_field", NodeKind::TiledField, "source",
+         "An image of K channels (1 to 4) as K examples tiled and blended with the same tiles and weights: a "
+         "noise vector field (paper eq. 7) whose channels keep their correlations; channel nodes read them",
+         {},
+         PortType::Channels,
+         {{"path", ParamType::Path, "The image (1 to 4 channels), relative to the graph file", json()},
+          {"transfer", ParamType::Choice,
+           "How its codes become values: auto (srgb, but linear for a float file such as EXR), srgb (colour channels "
+           "decoded to linear light; alpha stays data) or linear (as data)",
+           "auto", 0, 0, nullptr, {"auto", "srgb", "linear"}},
+          {"gaussianize", ParamType::Boolean,
+           "Blend each channel's histogram-transformed example and map back (paper §5); such a channel feeds a "
+           "transfer function directly, not a linear node",
+           true}}},
+        {"channel", NodeKind::Channel, "linear",
+         "One channel of a tiled field, on the tiles every channel of that field shares",
+         {{"field", PortType::Channels, "The tiled field"}},
+         PortType::Field,
+         {{"index", ParamType::Integer, "The channel, from 0 (red, green, blue, alpha of a colour image)", 0, 0, 3}}},
         {"derivative", NodeKind::Derivative, "linear",
          "Directional derivative of a field, exact on its example (spectral), rescaled about a mean",
          {{"input", PortType::Field, "The field"}},
@@ -94,6 +120,26 @@ const std::vector<NodeInfo>& graphNodes() {
           {"t", PortType::Field, "The mixing field"}},
          PortType::Colour,
          {}},
+        {"compose", NodeKind::Compose, "colour",
+         "A colour from three fields, (r, g, b) in linear light: with the channels of a tiled field, a colour exemplar "
+         "tiled and blended",
+         {{"r", PortType::Field, "Red"}, {"g", PortType::Field, "Green"}, {"b", PortType::Field, "Blue"}},
+         PortType::Colour,
+         {}},
+        {"lean", NodeKind::Lean, "shading",
+         "LEAN mapping (paper §6.5): the height field's slopes as micro-facet normals; their footprint mean and "
+         "covariance make an anisotropic Beckmann lobe, lit by a directional light",
+         {{"height", PortType::Field, "The height field (linear in the sources: its slopes are exact on its example)"},
+          {"albedo", PortType::Colour, "The diffuse colour (linear light)"}},
+         PortType::Colour,
+         {{"amplitude", ParamType::Number, "RMS slope per axis the height field is scaled to", 0.3, 1e-3, 10},
+          {"roughness", ParamType::Number, "Base Beckmann roughness m of each micro-facet", 0.1, 1e-3, 2},
+          {"specular", ParamType::Number, "Weight of the lobe's reflection", 0.05, 0, 100},
+          {"light_azimuth", ParamType::Number, "Direction towards the light, degrees from +u towards +v (a scene's own "
+           "light replaces it)", -90, -360, 360},
+          {"light_elevation", ParamType::Number, "Elevation of the light above the plane, degrees", 53.13, 1, 90},
+          {"covariance", ParamType::Boolean, "Read the slopes' covariance (false: the variant without it, ĉov := 0)",
+           true}}},
     };
     return nodes;
 }
@@ -108,6 +154,8 @@ bool isLinearNode(NodeKind kind) {
     switch (kind) {
         case NodeKind::SpectralNoise:
         case NodeKind::Exemplar:
+        case NodeKind::TiledField:
+        case NodeKind::Channel:
         case NodeKind::Derivative:
         case NodeKind::Affine:
         case NodeKind::Sum:
@@ -115,7 +163,9 @@ bool isLinearNode(NodeKind kind) {
         case NodeKind::Colormap:
         case NodeKind::ColormapField:
         case NodeKind::Curve:
-        case NodeKind::Mix: break;
+        case NodeKind::Mix:
+        case NodeKind::Compose:
+        case NodeKind::Lean: break;
     }
     return false;
 }
@@ -159,19 +209,28 @@ nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplar
         self[in.name] = id;
         if (in.type == PortType::Field) {
             nodes[id] = withParams(*findGraphNode("spectral_noise"));
-            continue;
+        } else if (in.type == PortType::Channels) {
+            nodes[id] = withParams(*findGraphNode("tiled_field"));
+        } else {
+            json colours = withParams(*findGraphNode("colormap"));
+            colours["x"] = colours["y"] = id + "_noise";
+            nodes[id] = colours;
+            nodes[id + "_noise"] = withParams(*findGraphNode("spectral_noise"));
         }
-        json colours = withParams(*findGraphNode("colormap"));
-        colours["x"] = colours["y"] = id + "_noise";
-        nodes[id] = colours;
-        nodes[id + "_noise"] = withParams(*findGraphNode("spectral_noise"));
     }
     nodes["node"] = self;
-    std::string output = "node";
-    if (node.output == PortType::Field) {
+    // A field (or a tiled field's first channel) shown through a colormap.
+    std::string field = "node", output = "node";
+    if (node.output == PortType::Channels) {
+        json channel = withParams(*findGraphNode("channel"));
+        channel["field"] = "node";
+        nodes["node_channel"] = channel;
+        field = "node_channel";
+    }
+    if (node.output != PortType::Colour) {
         json colormap = withParams(*findGraphNode("colormap"));
-        colormap["x"] = "node";
-        colormap["y"] = "node";
+        colormap["x"] = field;
+        colormap["y"] = field;
         nodes["colour"] = colormap;
         output = "colour";
     }

@@ -5,14 +5,15 @@
 // graph, `stochtex nodes`, and the per-node benchmarks; a new node is a new
 // entry here and its operation in texture_graph.cpp.
 //
-// Sources (spectral noise, exemplar) and linear operators of fields (a
-// directional derivative, an affine remap, a weighted sum; linear maps of
-// Gaussian fields are Gaussian, so each folds into the example the field is
-// tiled from) make the linear part, which the paper's estimators filter
-// exactly. Transfer functions (the 2D colormap H, H read as a field, a 1D
-// curve) and the mix of colours by a field are non-linear: a graph with one
-// of them before its output is evaluated per pixel and filtered by moment
-// matching (graph_pattern.h).
+// Sources (spectral noise, exemplar, the channels of a K-channel tiled
+// field) and linear operators of fields (a directional derivative, an affine
+// remap, a weighted sum, a transform of uv; linear maps of Gaussian fields
+// are Gaussian, so each folds into the example the field is tiled from) make
+// the linear part, which the paper's estimators filter exactly. Transfer
+// functions (the 2D colormap H, H read as a field, a 1D curve), the mix of
+// colours by a field, a colour from three fields and the LEAN shading of a height field are non-linear:
+// a graph with one of them before its output is evaluated per pixel and
+// filtered by moment matching (graph_pattern.h).
 #include <string>
 #include <vector>
 
@@ -20,8 +21,9 @@
 
 namespace stochtex {
 
-// What flows along an edge.
-enum class PortType { Field, Colour };
+// What flows along an edge: a scalar field, a colour, or a tiled field of
+// K channels (tiled_field) whose channels a channel node reads.
+enum class PortType { Field, Colour, Channels };
 const char* portTypeName(PortType t);
 
 enum class ParamType {
@@ -55,12 +57,15 @@ struct PortInfo {
     std::string description;
 };
 
-enum class NodeKind { SpectralNoise, Exemplar, Derivative, Affine, Sum, Transform, Colormap, ColormapField, Curve, Mix };
+enum class NodeKind {
+    SpectralNoise, Exemplar, TiledField, Channel, Derivative, Affine, Sum, Transform,
+    Colormap, ColormapField, Curve, Mix, Compose, Lean
+};
 
 struct NodeInfo {
     std::string name;  // the JSON "type"
     NodeKind kind;
-    std::string category;  // source, linear, transfer, colour
+    std::string category;  // source, linear, transfer, colour, shading
     std::string description;
     std::vector<PortInfo> inputs;
     PortType output;
@@ -81,11 +86,12 @@ bool isLinearNode(NodeKind kind);
 nlohmann::json graphNodesJson();
 
 // The smallest graph file around a node, from the table alone: each field
-// input fed by its own spectral_noise (sample parameters) and each colour
-// input by a colormap of one, the node with its defaults and samples (an
-// exemplar reads `exemplarPath`), and a colormap reading it when it gives a
-// field. Used by the per-node benchmarks and the
-// test that every node builds and renders.
+// input fed by its own spectral_noise (sample parameters), each colour input
+// by a colormap of one and a tiled-field input by a tiled_field, the node
+// with its defaults and samples (a path reads `exemplarPath`), and a
+// colormap reading it when it gives a field (or its first channel, for a
+// tiled field). Used by the per-node benchmarks and the test that every node
+// builds and renders.
 nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplarPath);
 
 }  // namespace stochtex

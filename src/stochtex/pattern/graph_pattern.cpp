@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <set>
 #include <stdexcept>
 
@@ -11,6 +12,7 @@
 #include "stochtex/core/parallel.h"
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/kernel/graph_ops.h"
+#include "stochtex/noise/slopes.h"
 
 namespace stochtex {
 
@@ -20,6 +22,13 @@ using kernel::vec2;
 using kernel::vec3;
 
 vec3 toVec(const Rgb& c) { return vec3(c[0], c[1], c[2]); }
+
+// Whether a node gives a colour (else a field), from the node table.
+bool givesColour(NodeKind kind) {
+    for (const NodeInfo& n : graphNodes())
+        if (n.kind == kind) return n.output == PortType::Colour;
+    return false;
+}
 Rgb toRgb(const vec3& c) { return {c.x, c.y, c.z}; }
 
 // A table as an image of its entries, each through `entry` (Rx×Ry×3).
@@ -90,35 +99,83 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
     GraphPattern p;
     for (const GraphNode& g : graph.nodes) {
         if (!needed.count(g.id) || linear.at(g.id)) continue;
-        if (g.info->kind == NodeKind::Derivative)
-            throw InputError(context + ": node \"" + g.id + "\" (derivative): its input \"" + g.inputs.at("input") +
-                             "\" is not linear in the sources, so it has no example to differentiate");
+        const bool lean = g.info->kind == NodeKind::Lean;
+        if (g.info->kind == NodeKind::Derivative || lean) {
+            const std::string& from = g.inputs.at(lean ? "height" : "input");
+            if (!linear.at(from))
+                throw InputError(context + ": node \"" + g.id + "\" (" + g.info->name + "): its input \"" + from +
+                                 "\" is not linear in the sources, so it has no example to " +
+                                 (lean ? "take the slopes of" : "differentiate"));
+        }
         ops.push_back(&g);
         for (const PortInfo& port : g.info->inputs) {
+            if (lean && port.name == "height") continue;  // read through its slopes (below)
             const std::string& from = g.inputs.at(port.name);
             if (linear.at(from) && std::find(p.leafIds_.begin(), p.leafIds_.end(), from) == p.leafIds_.end())
                 p.leafIds_.push_back(from);
         }
     }
+    // Each lean node reads its height's slopes: a pair of leaves after the
+    // others ("ID.slope_u", "ID.slope_v"), on the height's tiles.
+    const size_t fieldLeaves = p.leafIds_.size();
+    std::vector<std::string> fieldIds = p.leafIds_;
+    for (const GraphNode* g : ops)
+        if (g->info->kind == NodeKind::Lean) {
+            p.leafIds_.push_back(g->id + ".slope_u");
+            p.leafIds_.push_back(g->id + ".slope_v");
+            fieldIds.push_back(g->inputs.at("height"));
+        }
     std::map<std::string, int> slot;
     for (size_t k = 0; k < p.leafIds_.size(); ++k) slot[p.leafIds_[k]] = int(k);
     for (size_t k = 0; k < ops.size(); ++k) slot[ops[k]->id] = int(p.leafIds_.size() + k);
 
-    // The leaves' examples and tiles: leaf k's offsets are seeded as a
-    // pattern's noise k (deriveSeed(seed, k + 1)), or all with the first
-    // seed when offsets are shared.
-    const std::vector<NoiseExample> examples = buildGraphFields(graph, p.leafIds_, spec.seed, context);
+    // The leaves' tiles: the leaves of one tile group (graphTileGroup: the
+    // channels of one tiled field; a lean node's slopes and its height) share
+    // the offset seed of the group's first leaf k, seeded as a pattern's
+    // noise k (deriveSeed(seed, k + 1)); all leaves share the first seed
+    // when offsets are shared.
+    const std::vector<NoiseExample> fields = buildGraphFields(graph, fieldIds, spec.seed, context);
     const bool shared = spec.offsets == OffsetMode::Shared;
+    std::map<std::string, uint32_t> groupSeed;
+    const auto seedOf = [&](const std::string& fieldId, size_t leaf) {
+        const std::string group = graphTileGroup(graph, fieldId);
+        return groupSeed.emplace(group, deriveSeed(spec.seed, shared ? 1u : uint32_t(leaf + 1))).first->second;
+    };
+    std::vector<NoiseExample> examples;
     std::vector<TilingBlendingNoise> noises;
-    for (size_t k = 0; k < examples.size(); ++k)
-        noises.emplace_back(std::make_shared<const NoiseExample>(examples[k]),
-                            deriveSeed(spec.seed, shared ? 1u : uint32_t(k + 1)));
     std::vector<UvTransform> transforms;
-    for (const std::string& id : p.leafIds_) transforms.push_back(graphNodeTransform(graph, id, context));
-    for (size_t k = 0; k < noises.size();) {
-        // Consecutive leaves of one size seen through one transform share a field.
-        const bool pair = k + 1 < noises.size() && examples[k + 1].size() == examples[k].size() &&
-                          transforms[k + 1] == transforms[k];
+    for (size_t k = 0; k < fieldLeaves; ++k) {
+        examples.push_back(fields[k]);
+        noises.emplace_back(std::make_shared<const NoiseExample>(fields[k]), seedOf(fieldIds[k], k));
+        transforms.push_back(graphNodeTransform(graph, fieldIds[k], context));
+    }
+    std::vector<bool> leanPair;  // per lean node, in order: whether it reads its slopes' covariance
+    for (const GraphNode* g : ops) {
+        if (g->info->kind != NodeKind::Lean) continue;
+        const size_t k = noises.size();
+        const std::string& heightId = g->inputs.at("height");
+        const NoiseExample& height = fields[fieldLeaves + (k - fieldLeaves) / 2];
+        const std::string where = context + ": node \"" + g->id + "\" (lean)";
+        if (height.gaussianized())
+            throw InputError(where + ": its input \"" + heightId + "\" is a Gaussianized exemplar, whose field is not "
+                             "linear in its example; give it \"gaussianize\": false to use it here");
+        if (!graphNodeTransform(graph, heightId, context).identity())
+            throw InputError(where + ": its input \"" + heightId + "\" is seen through a transform of uv, whose slopes "
+                             "would be along turned axes; a lean node needs its height untransformed");
+        TiledField slopes;
+        try {
+            slopes = slopeField(height.values(), g->numbers.at("amplitude"), seedOf(heightId, k), spec.gridDensity);
+        } catch (const InputError& e) {
+            throw InputError(where + ": " + e.what());
+        }
+        for (int c = 0; c < 2; ++c) {
+            examples.push_back(slopes.channel(c).example());
+            noises.push_back(slopes.channel(c));
+            transforms.push_back(UvTransform{});
+        }
+        leanPair.push_back(g->numbers.at("covariance") != 0);
+    }
+    const auto addPair = [&](size_t k, bool pair, bool covariance) {
         const TilingBlendingNoise& second = noises[pair ? k + 1 : k];
         const bool oneSeed = second.offsetSeed() == noises[k].offsetSeed();
         p.leafLocation_.push_back({int(p.pairs_.size()), 0});
@@ -126,9 +183,17 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
         p.pairs_.emplace_back(std::vector<TilingBlendingNoise>{noises[k], second}, spec.gridDensity,
                               oneSeed ? OffsetSharing::Shared : OffsetSharing::Independent);
         p.pairTransforms_.push_back(transforms[k]);
+        p.pairCovariance_.push_back(covariance);
         p.untransformed_ = p.untransformed_ && transforms[k].identity();
+    };
+    for (size_t k = 0; k < fieldLeaves;) {
+        // Consecutive leaves of one size seen through one transform share a field.
+        const bool pair = k + 1 < fieldLeaves && examples[k + 1].size() == examples[k].size() &&
+                          transforms[k + 1] == transforms[k];
+        addPair(k, pair, false);
         k += pair ? 2 : 1;
     }
+    for (size_t k = fieldLeaves; k < noises.size(); k += 2) addPair(k, true, leanPair[(k - fieldLeaves) / 2]);
 
     // The program, with its tables.
     const auto gaussianizedLeaf = [&](const std::string& id) -> const NoiseExample* {
@@ -144,6 +209,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
         op.kind = g->info->kind;
         for (size_t i = 0; i < g->info->inputs.size(); ++i) {
             const std::string& from = g->inputs.at(g->info->inputs[i].name);
+            if (op.kind == NodeKind::Lean && i == 0) continue;  // its slopes, below
             op.inputs[i] = slot.at(from);
             const bool table = op.kind == NodeKind::Colormap || op.kind == NodeKind::ColormapField ||
                                op.kind == NodeKind::Curve;
@@ -181,10 +247,29 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
             case NodeKind::Sum:
                 op.parameters = {float(g->numbers.at("weight_a")), float(g->numbers.at("weight_b"))};
                 break;
-            case NodeKind::Mix: break;
+            case NodeKind::Mix:
+            case NodeKind::Compose: break;
+            case NodeKind::Lean: {
+                // Slots: the slopes along u and v, then the albedo.
+                op.inputs = {slot.at(g->id + ".slope_u"), slot.at(g->id + ".slope_v"), slot.at(g->inputs.at("albedo"))};
+                LeanShading shading;
+                const double azimuth = g->numbers.at("light_azimuth") * std::numbers::pi / 180;
+                const double elevation = g->numbers.at("light_elevation") * std::numbers::pi / 180;
+                shading.light = {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                                 std::sin(elevation)};
+                shading.roughness = g->numbers.at("roughness");
+                shading.specular = g->numbers.at("specular");
+                shading = validatedShading(shading);
+                op.parameters = {float(shading.roughness), float(shading.specular),   float(shading.light[0]),
+                                 float(shading.light[1]), float(shading.light[2]),   float(g->numbers.at("covariance"))};
+                break;
+            }
             case NodeKind::SpectralNoise:
             case NodeKind::Exemplar:
-            case NodeKind::Derivative: throw std::logic_error("GraphPattern::build: a source as an operation");
+            case NodeKind::TiledField:
+            case NodeKind::Channel:
+            case NodeKind::Derivative:
+            case NodeKind::Transform: throw std::logic_error("GraphPattern::build: a linear node as an operation");
         }
         if (p.tables_.size() > tablesBefore) {
             const ColormapTable& t = p.tables_.back().point;
@@ -199,7 +284,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
 }
 
 template <class Slots>
-Rgb GraphPattern::run(Slots& slots, int lastSlot) const {
+Rgb GraphPattern::run(Slots& slots, int lastSlot, const Direction& eye) const {
     if (lastSlot < leafCount()) return toRgb(slots[size_t(lastSlot)]);
     size_t out = size_t(leafCount());
     for (const Operation& op : operations_) {
@@ -218,6 +303,13 @@ Rgb GraphPattern::run(Slots& slots, int lastSlot) const {
                 slots[out] = vec3(kernel::sumValue(a.x, b.x, op.parameters[0], op.parameters[1]), 0.0f, 0.0f);
                 break;
             case NodeKind::Mix: slots[out] = kernel::mixColour(a, b, slots[size_t(op.inputs[2])].x); break;
+            case NodeKind::Compose: slots[out] = kernel::composeColour(a.x, b.x, slots[size_t(op.inputs[2])].x); break;
+            case NodeKind::Lean: {
+                const auto& q = op.parameters;
+                slots[out] = kernel::leanNodeShade(vec2(a.x, b.x), vec2(0.0f), 0.0f, slots[size_t(op.inputs[2])],
+                                                   vec3(q[2], q[3], q[4]), toVec(eye), q[0], q[1]);
+                break;
+            }
             default: throw std::logic_error("GraphPattern: a source as an operation");
         }
         if (int(out) == lastSlot) break;
@@ -226,18 +318,19 @@ Rgb GraphPattern::run(Slots& slots, int lastSlot) const {
     return toRgb(slots[size_t(lastSlot)]);
 }
 
-Rgb GraphPattern::evaluate(const BlendStencil& s, float fu, float fv, int lastSlot) const {
+Rgb GraphPattern::evaluate(const BlendStencil& s, float fu, float fv, int lastSlot, const Direction& eye) const {
     std::array<vec3, kMaxGraphNodes> slots;  // leaves, then one per operation (each a node)
     for (int k = 0; k < leafCount(); ++k) {
         const TilingBlendingNoise& n = leaf(k);
         slots[size_t(k)] = vec3(n.example().toOutput(n.blend(s, fu, fv)), 0.0f, 0.0f);
     }
-    return run(slots, lastSlot);
+    return run(slots, lastSlot, eye);
 }
 
-Rgb GraphPattern::evaluate(double u, double v, int lastSlot) const {
+Rgb GraphPattern::evaluate(double u, double v, int lastSlot, const Direction& eye) const {
     if (lastSlot < 0) lastSlot = outputSlot();
-    if (untransformed_) return evaluate(triangleGrid(u, v, gridDensity()), periodFraction(u), periodFraction(v), lastSlot);
+    if (untransformed_)
+        return evaluate(triangleGrid(u, v, gridDensity()), periodFraction(u), periodFraction(v), lastSlot, eye);
     std::array<vec3, kMaxGraphNodes> slots;
     for (int k = 0; k < leafCount(); ++k) {
         // Each leaf at its pair's uv (the pair's tiles are its own).
@@ -247,7 +340,7 @@ Rgb GraphPattern::evaluate(double u, double v, int lastSlot) const {
         const float b = n.blend(triangleGrid(pu, pv, gridDensity()), periodFraction(pu), periodFraction(pv));
         slots[size_t(k)] = vec3(n.example().toOutput(b), 0.0f, 0.0f);
     }
-    return run(slots, lastSlot);
+    return run(slots, lastSlot, eye);
 }
 
 Rgb GraphPattern::fromLeafValues(const std::vector<float>& values) const {
@@ -256,10 +349,10 @@ Rgb GraphPattern::fromLeafValues(const std::vector<float>& values) const {
                                     std::to_string(leafCount()) + " leaves");
     std::array<vec3, kMaxGraphNodes> slots;
     for (size_t k = 0; k < values.size(); ++k) slots[k] = vec3(values[k], 0.0f, 0.0f);
-    return run(slots, outputSlot());
+    return run(slots, outputSlot(), kFromAbove);
 }
 
-Rgb GraphPattern::evaluate(double u, double v) const { return evaluate(u, v, -1); }
+Rgb GraphPattern::evaluate(double u, double v) const { return evaluate(u, v, -1, kFromAbove); }
 
 Image GraphPattern::renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray) const {
     validateView(view);
@@ -275,8 +368,8 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
                 float* row = out.row(py);
                 for (int px = 0; px < view.width; ++px) {
                     const double u = (view.offsetU + (px + 0.5) * view.scale) * invW;
-                    Rgb c = untransformed_ ? evaluate(grid.stencil(u), periodFraction(u), fv, lastSlot)
-                                           : evaluate(u, v, lastSlot);
+                    Rgb c = untransformed_ ? evaluate(grid.stencil(u), periodFraction(u), fv, lastSlot, kFromAbove)
+                                           : evaluate(u, v, lastSlot, kFromAbove);
                     if (gray) c[0] = c[1] = c[2] = std::clamp(c[0], 0.0f, 1.0f);
                     std::copy(c.begin(), c.end(), row + size_t(px) * 3);
                 }
@@ -298,7 +391,7 @@ Image GraphPattern::renderNode(const View& view, const std::string& id) const {
     for (size_t k = 0; k < operations_.size(); ++k)
         if (operations_[k].id == id) {
             slot = leafCount() + int(k);
-            field = operations_[k].kind != NodeKind::Colormap && operations_[k].kind != NodeKind::Mix;
+            field = !givesColour(operations_[k].kind);
         }
     if (slot < 0) throw InputError("node \"" + id + "\" is neither a leaf nor an operation of the graph's program");
     return renderPixels(view, {}, slot, field);
@@ -320,6 +413,16 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         const std::array<double, 2> m = exampleMoments(graph.leaf(k).example());
         whole.push_back({float(m[0]), float(m[1])});
     }
+    // The covariance of each pair's two examples over the whole period (a lean node's sky).
+    std::vector<float> wholeCov;
+    for (const TiledField& pair : graph.leafPairs()) {
+        const auto& a = pair.channel(0).example().values().data();
+        const auto& b = pair.channel(1).example().values().data();
+        double sa = 0, sb = 0, sab = 0;
+        for (size_t i = 0; i < a.size(); ++i) sa += a[i], sb += b[i], sab += double(a[i]) * b[i];
+        const double n = double(a.size());
+        wholeCov.push_back(float(sab / n - sa / n * (sb / n)));
+    }
     if (options.source == StatisticsSource::Point) {  // nothing to prefilter
         std::vector<float> means;
         for (const auto& m : whole) means.push_back(graph.leaf(int(means.size())).example().toOutput(m[0]));
@@ -336,13 +439,15 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         }
         tables_.emplace_back(t, options.response.prefilter);
     }
-    sky_ = fromMoments(whole);
+    sky_ = fromMoments(whole, wholeCov);
     if (options.source == StatisticsSource::Estimators)
-        for (const TiledField& pair : graph.leafPairs())
-            estimators_.push_back(std::make_unique<FootprintEstimator>(pair, false, options.pack8));
+        for (size_t k = 0; k < graph.leafPairs().size(); ++k)
+            estimators_.push_back(std::make_unique<FootprintEstimator>(graph.leafPairs()[k], graph.pairCovariance(int(k)),
+                                                                       options.pack8));
 }
 
-Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMoments) const {
+Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMoments,
+                                const std::vector<float>& pairCovariances, const Direction& eye) const {
     if (int(leafMoments.size()) != graph_.leafCount())
         throw std::invalid_argument("FilteredGraph::fromMoments: " + std::to_string(leafMoments.size()) +
                                     " leaf moments for " + std::to_string(graph_.leafCount()) + " leaves");
@@ -351,7 +456,7 @@ Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMome
     for (size_t k = 0; k < leafMoments.size(); ++k) slots[k] = vec3(leafMoments[k][0], leafMoments[k][1], 0.0f);
     size_t out = leafMoments.size();
     const auto moments = [](const vec3& s) { return vec2(s.x, s.y); };
-    const auto sigma = [](const vec3& s) { return std::sqrt(std::max(s.y, 0.0f)); };
+    const auto sigma = [](const vec3& s) { return kernel::momentSigma(vec2(s.x, s.y)); };
     for (const GraphPattern::Operation& op : graph_.operations()) {
         const vec3 a = slots[size_t(op.inputs[0])];
         const vec3 b = op.inputs[1] >= 0 ? slots[size_t(op.inputs[1])] : vec3(0.0f);
@@ -368,9 +473,19 @@ Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMome
                 field = kernel::sumMoments(moments(a), moments(b), op.parameters[0], op.parameters[1]);
                 break;
             case NodeKind::Mix: slots[out] = kernel::mixColour(a, b, slots[size_t(op.inputs[2])].x); break;
+            case NodeKind::Compose: slots[out] = kernel::composeColour(a.x, b.x, slots[size_t(op.inputs[2])].x); break;
+            case NodeKind::Lean: {
+                // The slopes' covariance: that of their pair, when the node reads it.
+                const auto& q = op.parameters;
+                const size_t pair = size_t(graph_.leafLocation(op.inputs[0])[0]);
+                const float cov = q[5] != 0 && pair < pairCovariances.size() ? pairCovariances[pair] : 0.0f;
+                slots[out] = kernel::leanNodeShade(vec2(a.x, b.x), vec2(a.y, b.y), cov, slots[size_t(op.inputs[2])],
+                                                   vec3(q[2], q[3], q[4]), toVec(eye), q[0], q[1]);
+                break;
+            }
             default: throw std::logic_error("FilteredGraph: a source as an operation");
         }
-        if (op.kind != NodeKind::Colormap && op.kind != NodeKind::Mix) {
+        if (!givesColour(op.kind)) {
             // Only the tables make a field non-Gaussian; MeanOnly drops what they add.
             const bool dropVariance = moments_ == GraphMoments::MeanOnly && table;
             slots[out] = vec3(field.x, dropVariance ? 0.0f : field.y, 0.0f);
@@ -380,14 +495,16 @@ Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMome
     return toRgb(slots[out - 1]);
 }
 
-Rgb FilteredGraph::fromPairStats(const std::vector<FootprintStats>& stats) const {
+Rgb FilteredGraph::fromPairStats(const std::vector<FootprintStats>& stats, const Direction& eye) const {
     std::vector<std::array<float, 2>> m(static_cast<size_t>(graph_.leafCount()));
+    std::vector<float> covariances;
+    for (const FootprintStats& s : stats) covariances.push_back(s.cov);
     for (int k = 0; k < graph_.leafCount(); ++k) {
         const auto [pair, channel] = graph_.leafLocation(k);
         const FootprintStats& s = stats[size_t(pair)];
         m[size_t(k)] = {s.mean[size_t(channel)], std::max(channel == 0 ? s.varX : s.varY, 0.0f)};
     }
-    return fromMoments(m);
+    return fromMoments(m, covariances, eye);
 }
 
 namespace {
@@ -417,17 +534,17 @@ std::vector<Footprint> FilteredGraph::footprints(double u, double v, const Jacob
     return f;
 }
 
-Rgb FilteredGraph::shade(const std::vector<Footprint>& footprints) const {
+Rgb FilteredGraph::shade(const std::vector<Footprint>& footprints, const Direction& eye) const {
     std::vector<FootprintStats> stats;
     for (size_t k = 0; k < estimators_.size(); ++k) stats.push_back(estimators_[k]->estimate(footprints[k], options_.estimator));
-    return fromPairStats(stats);
+    return fromPairStats(stats, eye);
 }
 
-Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j) const {
+Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j, const Direction& eye) const {
     if (!onPlane) return sky_;
     switch (options_.source) {
-        case StatisticsSource::Point: return graph_.evaluate(u, v);
-        case StatisticsSource::Estimators: return shade(footprints(u, v, j));
+        case StatisticsSource::Point: return graph_.evaluate(u, v, -1, eye);
+        case StatisticsSource::Estimators: return shade(footprints(u, v, j), eye);
         case StatisticsSource::Exact: {
             std::vector<FootprintStats> stats;
             for (size_t k = 0; k < graph_.leafPairs().size(); ++k) {
@@ -435,13 +552,14 @@ Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j) co
                 const auto [pu, pv] = t.apply(u, v);
                 stats.push_back(bruteForceStats(graph_.leafPairs()[k], pu, pv, transformed(t, j), options_.referenceMaxSamples));
             }
-            return fromPairStats(stats);
+            return fromPairStats(stats, eye);
         }
         case StatisticsSource::Reference: {
             int size = 0;  // the finest leaf sets the sampling
             for (const TiledField& pair : graph_.leafPairs()) size = std::max(size, pair.exampleSize());
             const int n = bruteForceSamples(j, size, options_.referenceMaxSamples);
-            return supersampledAverage(u, v, j, n, [&](double pu, double pv) { return graph_.evaluate(pu, pv); });
+            return supersampledAverage(u, v, j, n,
+                                       [&](double pu, double pv) { return graph_.evaluate(pu, pv, -1, eye); });
         }
     }
     return sky_;
@@ -456,6 +574,8 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
     // A zoom has one Jacobian for the whole image: its footprints are built
     // once and translated to each pixel (as FilteredPattern does).
     const bool oneFootprint = camera.kind == Camera::Kind::Zoom && options_.source == StatisticsSource::Estimators;
+    const bool shadesLight = std::any_of(graph_.operations().begin(), graph_.operations().end(),
+                                         [](const GraphPattern::Operation& op) { return op.kind == NodeKind::Lean; });
     std::vector<Footprint> shapes;
     if (oneFootprint) {
         double u = 0, v = 0;
@@ -475,6 +595,8 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                     double u = 0, v = 0;
                     Jacobian j;
                     const bool onPlane = camera.footprint(px, py, w, u, v, j);
+                    // Only a lean node reads where the eye is.
+                    const Direction eye = shadesLight ? camera.viewDirection(px, py) : GraphPattern::kFromAbove;
                     Rgb c;
                     if (oneFootprint) {
                         std::vector<Footprint> here;
@@ -482,9 +604,9 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                             const auto [pu, pv] = graph_.pairTransform(int(k)).apply(u, v);
                             here.push_back(shapes[k].translated(pu, pv));
                         }
-                        c = shade(here);
+                        c = shade(here, eye);
                     } else {
-                        c = shade(onPlane, u, v, j);
+                        c = shade(onPlane, u, v, j, eye);
                     }
                     std::copy(c.begin(), c.end(), out.row(py) + size_t(px) * 3);
                 }

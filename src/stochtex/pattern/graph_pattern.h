@@ -5,6 +5,8 @@
 // blended on one triangle grid; the non-linear nodes (colormap,
 // colormap_field, curve, mix, and affine or sum over their results) run as a
 // short program of kernel/graph_ops.glsl operations on the leaves' values.
+// A lean node reads its height's slopes (spectral, as a derivative node's)
+// as two more leaves on the height's tiles, and their covariance.
 //
 // Filtering (FilteredGraph) goes beyond the paper, which filters one
 // transfer function of Gaussian fields: a non-linear node's output is not
@@ -50,6 +52,10 @@ constexpr long long kMaxGraphTableEntries = 1ll << 23;
 
 class GraphPattern {
 public:
+    // A unit direction in the texture frame (x along u, y along v, z up).
+    using Direction = std::array<float, 3>;
+    static constexpr Direction kFromAbove{0.0f, 0.0f, 1.0f};
+
     // spec.graph must be set (std::invalid_argument otherwise). InputError
     // naming the node for what only building shows (a linear node over a
     // non-linear field, a Gaussianized exemplar read other than by a table).
@@ -62,7 +68,9 @@ public:
         NodeKind kind;
         std::array<int, 3> inputs{-1, -1, -1};  // slots, in the node's port order
         int table = -1;                         // colormap, colormap_field, curve: index into tables()
-        std::array<float, 2> parameters{};      // affine: scale, offset; sum: weight_a, weight_b
+        // affine: scale, offset; sum: weight_a, weight_b; lean: roughness,
+        // specular, the light's direction (x, y, z), covariance (1: read it).
+        std::array<float, 6> parameters{};
     };
     // A table node's table: a colour (colormap) or, for a field, (g, g², 0)
     // per entry (kernel momentEntry); a curve's has 2 identical rows.
@@ -80,6 +88,9 @@ public:
     const std::vector<TiledField>& leafPairs() const { return pairs_; }
     // The transform of uv each pair of leaves is seen through (transform nodes).
     const UvTransform& pairTransform(int pair) const { return pairTransforms_[size_t(pair)]; }
+    // Whether an operation reads the covariance of the pair's two leaves (a
+    // lean node's slopes): its estimator then builds the covariance pyramid.
+    bool pairCovariance(int pair) const { return pairCovariance_[size_t(pair)]; }
     // Where leaf k is: its field in leafPairs() and its channel there.
     std::array<int, 2> leafLocation(int k) const { return leafLocation_[size_t(k)]; }
     const TilingBlendingNoise& leaf(int k) const {
@@ -94,10 +105,12 @@ public:
 
     // S(uv): the leaves at uv (after T⁻¹ for Gaussianized exemplars) through the program.
     Rgb evaluate(double u, double v) const;
-    // The program on given leaf values (one per leaf, in output space).
+    // The program on given leaf values (one per leaf, in output space), seen from above.
     Rgb fromLeafValues(const std::vector<float>& values) const;
-    // lastSlot: stop after this slot and return its value (default: the output).
-    Rgb evaluate(double u, double v, int lastSlot) const;
+    // lastSlot: stop after this slot and return its value (−1: the output);
+    // eye: the unit direction towards the eye, which a lean node reads
+    // (evaluate(u, v) and the renders: from above).
+    Rgb evaluate(double u, double v, int lastSlot, const Direction& eye) const;
     // Unfiltered, one sample per pixel centre, multi-threaded.
     Image render(const View& view, const Progress& progress = {}) const;
     // The value of any leaf or operation node over the same view (a field
@@ -108,13 +121,14 @@ public:
 private:
     // The operations on slots whose leaves are set; returns slot `lastSlot`.
     template <class Slots>
-    Rgb run(Slots& slots, int lastSlot) const;
+    Rgb run(Slots& slots, int lastSlot, const Direction& eye) const;
     // Every leaf seen through no transform: one stencil per pixel, the scanline's grid row.
-    Rgb evaluate(const BlendStencil& s, float fu, float fv, int lastSlot) const;
+    Rgb evaluate(const BlendStencil& s, float fu, float fv, int lastSlot, const Direction& eye) const;
     Image renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray) const;
     std::vector<std::string> leafIds_;
     std::vector<TiledField> pairs_;
     std::vector<UvTransform> pairTransforms_;
+    std::vector<bool> pairCovariance_;
     bool untransformed_ = true;
     std::vector<std::array<int, 2>> leafLocation_;
     std::vector<Operation> operations_;
@@ -136,26 +150,31 @@ inline const EnumNames<GraphMoments> kGraphMomentsNames{{"matched", GraphMoments
 // otherwise: a graph has no normal map).
 class FilteredGraph {
 public:
+    using Direction = GraphPattern::Direction;
     FilteredGraph(const GraphPattern& graph, const FilterOptions& options,
                   GraphMoments moments = GraphMoments::Matched);
 
     // The colour of sky pixels: the program on the whole examples' moments
     // (for the point source, which prefilters nothing, on their means).
     const Rgb& skyColour() const { return sky_; }
-    Rgb shade(bool onPlane, double u, double v, const Jacobian& j) const;
+    // eye: the unit direction towards the eye (Camera::viewDirection), which a lean node reads.
+    Rgb shade(bool onPlane, double u, double v, const Jacobian& j,
+              const Direction& eye = GraphPattern::kFromAbove) const;
     Image render(const Camera& camera, const Progress& progress = {}) const;
 
-    // The program on the leaves' moments (mean, variance per leaf).
-    Rgb fromMoments(const std::vector<std::array<float, 2>>& leafMoments) const;
+    // The program on the leaves' moments (mean, variance per leaf) and the
+    // covariance of each pair's two leaves (a lean node's slopes; none: 0).
+    Rgb fromMoments(const std::vector<std::array<float, 2>>& leafMoments, const std::vector<float>& pairCovariances = {},
+                    const Direction& eye = GraphPattern::kFromAbove) const;
     // The estimators of leaf pair k (built for the estimators source only)
     // and the prefiltered table of GraphPattern table k, for the GPU.
     const FootprintEstimator& estimator(int pair) const { return *estimators_.at(size_t(pair)); }
     const PrefilteredColormap& table(int k) const { return tables_.at(size_t(k)); }
 
 private:
-    Rgb fromPairStats(const std::vector<FootprintStats>& stats) const;  // one per leaf pair
+    Rgb fromPairStats(const std::vector<FootprintStats>& stats, const Direction& eye) const;  // one per leaf pair
     std::vector<Footprint> footprints(double u, double v, const Jacobian& j) const;  // one per estimator
-    Rgb shade(const std::vector<Footprint>& footprints) const;                        // estimators
+    Rgb shade(const std::vector<Footprint>& footprints, const Direction& eye) const;  // estimators
     const GraphPattern& graph_;
     FilterOptions options_;
     GraphMoments moments_;

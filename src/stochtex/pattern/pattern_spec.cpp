@@ -346,7 +346,13 @@ Image buildExampleImage(const NoiseSpec& spec, const std::string& context) {
     if (spec.source == NoiseSpec::Source::Spectrum) return synthesizeExample(spec.spectrum);
     const Image raw = readImage(spec.image.string());
     checkPixelRange(raw, spec.image.string(), kMinExemplarValue, kMaxExemplarValue, "exemplar");
-    const Image img = toGray(raw);
+    if (spec.channel >= raw.channels())
+        throw InputError(context + ": " + spec.image.string() + " has " + std::to_string(raw.channels()) +
+                         " channel" + (raw.channels() == 1 ? "" : "s") + "; there is no channel " +
+                         std::to_string(spec.channel));
+    Image img = spec.channel < 0 ? toGray(raw) : channelOf(raw, spec.channel);
+    const Transfer transfer = spec.transfer.value_or(holdsFloatValues(spec.image.string()) ? Transfer::Linear : Transfer::Srgb);
+    if (spec.channel >= 0 && spec.channel < 3 && transfer == Transfer::Srgb) img = decodeTransfer(img, transfer);
     if (img.width() != img.height())
         throw InputError(context + ": exemplar " + spec.image.string() + " is " + std::to_string(img.width()) + "x" +
                          std::to_string(img.height()) + "; examples must be square (they tile with period 1)");

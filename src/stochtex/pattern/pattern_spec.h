@@ -42,6 +42,11 @@ struct NoiseSpec {
     bool explicitSeed = false;      // spectrum.seed came from the file
     std::filesystem::path image;    // Source::Image (resolved against the file's folder)
     bool gaussianize = true;        // Source::Image: blend T(E), apply T⁻¹ after
+    int channel = -1;               // Source::Image: −1, the gray of its channels; else this channel
+    // Source::Image with a channel: how its codes become values (Srgb: a
+    // colour channel decoded to linear light; unset: Srgb, but Linear for a
+    // float file). The gray of an exemplar is its codes, as data.
+    std::optional<Transfer> transfer;
 };
 
 struct ColormapSpec {

@@ -115,9 +115,11 @@ GraphNode parseNode(const JsonReader& n, const std::string& id, const std::files
         s.quadrature = g.numbers["quadrature"] != 0;
         g.noise.explicitSeed = g.seed.has_value();
         checkSpectrumSpec(n, s);
-    } else if (info.kind == NodeKind::Exemplar) {
+    } else if (info.kind == NodeKind::Exemplar || info.kind == NodeKind::TiledField) {
         g.noise.source = NoiseSpec::Source::Image;
         g.noise.gaussianize = g.numbers["gaussianize"] != 0;
+        if (info.kind == NodeKind::TiledField && g.numbers["transfer"] != 0)  // 0: auto
+            g.noise.transfer = g.numbers["transfer"] == 1 ? Transfer::Srgb : Transfer::Linear;
     }
     return g;
 }
@@ -180,7 +182,8 @@ TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path&
     const auto it = byId.find(graph.output);
     if (it == byId.end()) out.fail("no node \"" + graph.output + "\"");
     if (it->second.info->output != PortType::Colour)
-        out.fail("the output must be a colour, but \"" + graph.output + "\" (" + it->second.info->name + ") gives a field");
+        out.fail("the output must be a colour, but \"" + graph.output + "\" (" + it->second.info->name + ") gives a " +
+                 portTypeName(it->second.info->output));
     return graph;
 }
 
@@ -195,7 +198,11 @@ bool foldsIntoPattern(const TextureGraph& graph) {
         todo.pop_back();
         if (!seen.insert(id).second) continue;
         const GraphNode& g = graph.node(id);
-        if (!isLinearNode(g.info->kind) || g.info->kind == NodeKind::Transform) return false;
+        // A Pattern has one uv for both noises, and tiles them with two
+        // seeds: a transform, or two channels that must share tiles, need
+        // GraphPattern.
+        if (!isLinearNode(g.info->kind) || g.info->kind == NodeKind::Transform || g.info->kind == NodeKind::Channel)
+            return false;
         for (const auto& [port, from] : g.inputs) todo.push_back(from);
     }
     return true;
@@ -236,11 +243,15 @@ UvTransform nodeTransform(const TextureGraph& graph, const std::string& id, cons
                 throw InputError(where + ": its inputs are seen through different transforms of uv; a sum needs one");
             break;
         case NodeKind::SpectralNoise:
-        case NodeKind::Exemplar: break;
+        case NodeKind::Exemplar:
+        case NodeKind::TiledField:
+        case NodeKind::Channel: break;
         case NodeKind::Colormap:
         case NodeKind::ColormapField:
         case NodeKind::Curve:
-        case NodeKind::Mix: throw std::logic_error("graphNodeTransform: node " + id + " is not linear in its sources");
+        case NodeKind::Mix:
+        case NodeKind::Compose:
+        case NodeKind::Lean: throw std::logic_error("graphNodeTransform: node " + id + " is not linear in its sources");
     }
     memo.emplace(id, r);
     return r;
@@ -251,6 +262,22 @@ UvTransform nodeTransform(const TextureGraph& graph, const std::string& id, cons
 UvTransform graphNodeTransform(const TextureGraph& graph, const std::string& id, const std::string& context) {
     std::map<std::string, UvTransform> memo;
     return nodeTransform(graph, id, context, memo);
+}
+
+std::string graphTileGroup(const TextureGraph& graph, const std::string& id) {
+    std::set<std::string> fields, seen;  // the tiled fields upstream, the nodes visited
+    bool otherSource = false;
+    std::vector<std::string> todo{id};
+    while (!todo.empty()) {
+        const std::string n = todo.back();
+        todo.pop_back();
+        if (!seen.insert(n).second) continue;
+        const GraphNode& g = graph.node(n);
+        if (g.info->kind == NodeKind::TiledField) fields.insert(n);
+        else if (g.info->inputs.empty()) otherSource = true;
+        for (const auto& [port, from] : g.inputs) todo.push_back(from);
+    }
+    return fields.size() == 1 && !otherSource ? *fields.begin() : id;
 }
 
 uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id) {
@@ -304,6 +331,14 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
             return buildNoiseExample(ns, where);
         }
         case NodeKind::Exemplar: return buildNoiseExample(g.noise, where);
+        case NodeKind::Channel: {
+            // The tiled field's image, this channel of it (GraphPattern gives
+            // every channel of one tiled field the same tiles).
+            const GraphNode& field = graph.node(g.inputs.at("field"));
+            NoiseSpec ns = field.noise;
+            ns.channel = int(number("index"));
+            return buildNoiseExample(ns, context + ": node \"" + field.id + "\" (tiled_field)");
+        }
         case NodeKind::Derivative: {
             const NoiseExample e = linearInput("input");
             const std::array<Image, 2> slopes = spectralSlopes(e.values());
@@ -340,12 +375,15 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
         }
         // The same example, seen through another uv (graphNodeTransform).
         case NodeKind::Transform: return buildFieldOnce(graph, g.inputs.at("input"), patternSeed, context, cache);
+        case NodeKind::TiledField:  // not a field: its channels are
         case NodeKind::Colormap:
         case NodeKind::ColormapField:
         case NodeKind::Curve:
-        case NodeKind::Mix: break;
+        case NodeKind::Mix:
+        case NodeKind::Compose:
+        case NodeKind::Lean: break;
     }
-    throw std::logic_error("buildGraphField: node " + id + " is not linear in its sources");
+    throw std::logic_error("buildGraphField: node " + id + " is not a field linear in its sources");
 }
 
 }  // namespace

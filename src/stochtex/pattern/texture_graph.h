@@ -78,6 +78,11 @@ UvTransform graphNodeTransform(const TextureGraph& graph, const std::string& id,
 // are evaluated by GraphPattern.
 bool foldsIntoPattern(const TextureGraph& graph);
 
+// The tiles a linear field node is tiled with, as a key: the id of its
+// tiled_field when every source it reads is a channel of that one tiled
+// field (all such nodes share the field's tiles), else the node's own id.
+std::string graphTileGroup(const TextureGraph& graph, const std::string& id);
+
 // The seed of a source node without an explicit one: from the pattern seed
 // and the node's id (so adding or renaming another node changes nothing).
 uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id);
