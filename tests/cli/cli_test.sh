@@ -294,6 +294,14 @@ case_graph() {
   expect_ok "reproduce figure14" "$out/rf14/figure14.csv" -- "$bin" reproduce figure14 -o "$out/rf14" --size 24 --footprints 1,16 --reference-samples 8
   [ -s "$out/rf14/figure14_filtering.png" ] || fail "reproduce figure14: figure14_filtering.png not written"
   grep -q "^16," "$out/rf14/figure14.csv" || fail "reproduce figure14: no row for footprint 16: $(cat "$out/rf14/figure14.csv")"
+  # A colour exemplar as one 3-channel tiled field, the albedo of a lean node.
+  for node in tiled_field channel compose lean; do "$bin" nodes | grep -q "^$node (" || fail "nodes: $node not listed"; done
+  expect_ok "render painted-bumps" "$out/pb.png" -- "$bin" render "$src/data/graphs/painted-bumps.json" --size 64 --view plane --filter smooth -o "$out/pb.png"
+  expect_ok "render painted-bumps on the GPU" "$out/pbg.png" -- "$bin" render "$src/data/graphs/painted-bumps.json" --size 64 --view plane --filter smooth --gpu -o "$out/pbg.png"
+  expect_ok "bake painted-bumps" "$out/bkpb/manifest.json" -- "$bin" bake "$src/data/graphs/painted-bumps.json" -o "$out/bkpb"
+  grep -q '"uniform": "uGraphCov' "$out/bkpb/manifest.json" || fail "bake painted-bumps: manifest lacks the slopes' covariance sampler"
+  printf '{"nodes": {"t": {"type": "tiled_field", "path": "%s"}, "k": {"type": "channel", "field": "t", "index": 2}, "c": {"type": "colormap", "x": "k", "y": "k", "colormap": {"type": "gaussian"}}}, "output": "c"}' "$src/data/textures/stone.png" >"$work/channel.json"
+  expect_bad "graph missing channel" "$out/ch.png" "stone.png has 1 channel; there is no channel 2" -- "$bin" render "$work/channel.json" -o "$out/ch.png"
 }
 
 case_bad_stimuli_flags() {

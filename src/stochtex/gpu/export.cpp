@@ -406,7 +406,9 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
                                     files));
         tables.back()["node"] = node;
     }
-    m["table"] = tables.front();  // every table has the same σ levels (tableLevels)
+    // Every table has the same σ levels (tableLevels); a graph of compose and
+    // lean nodes alone has none.
+    if (!tables.empty()) m["table"] = tables.front();
     writeDescription(dir, m, exportedGraphInclude(graph), files, false);
 }
 
