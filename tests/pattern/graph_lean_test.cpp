@@ -165,6 +165,16 @@ TEST(GraphPattern, LeanNodeRefusesHeightsWithoutAnExampleOrWithTurnedAxes) {
     e = buildError(head + R"("f": {"type": "affine", "input": "h", "scale": 0},
         "c": {"type": "lean", "height": "f", "albedo": "a"}}, "output": "c"})");
     EXPECT_NE(e.find("node \"c\" (lean): amplitude cannot scale a flat height example"), std::string::npos) << e;
+    // Each lean node adds two slope values per pixel: 100 of them (a mix
+    // chain keeps each one needed) outnumber the program's 256 slots.
+    std::string chain = head + R"("l0": {"type": "lean", "height": "h", "albedo": "a"})";
+    for (int i = 1; i < 100; ++i)
+        chain += ", \"l" + std::to_string(i) + "\": {\"type\": \"lean\", \"height\": \"h\", \"albedo\": \"l" +
+                 std::to_string(i - 1) + "\"}";
+    e = buildError(chain + R"(}, "output": "l99"})");
+    EXPECT_NE(e.find("the graph's program needs 302 values per pixel (each lean node adds two slopes), more than 256"),
+              std::string::npos)
+        << e;
     // The albedo is a colour, the height a field.
     e = buildError(head + R"("c": {"type": "lean", "height": "a", "albedo": "a"}}, "output": "c"})");
     EXPECT_NE(e.find("/nodes/c/height: expects a field, but \"a\" (colormap) gives a colour"), std::string::npos) << e;

@@ -127,7 +127,7 @@ TEST_F(TiledFieldNode, RefusesMissingChannelsAndTiledFieldsWhereAFieldGoes) {
     const std::string field = R"("t": {"type": "tiled_field", "path": ")" + exr_ + R"("}, )";
     std::string e = parseError(R"({"name": "g", "nodes": {)" + field + R"("k": {"type": "channel", "field": "t", "index": 3},
         "c": {"type": "colormap", "x": "k", "y": "k", "colormap": {"type": "gaussian"}}}, "output": "c"})");
-    EXPECT_NE(e.find("node \"t\" (tiled_field): " + exr_ + " has 3 channels; there is no channel 3"), std::string::npos) << e;
+    EXPECT_NE(e.find("node \"k\" (channel): " + exr_ + " has 3 channels; there is no channel 3"), std::string::npos) << e;
     e = parseError(R"({"name": "g", "nodes": {)" + field +
                    R"("c": {"type": "colormap", "x": "t", "y": "t", "colormap": {"type": "gaussian"}}}, "output": "c"})");
     EXPECT_NE(e.find("/nodes/c/x: expects a field, but \"t\" (tiled_field) gives a tiled field"), std::string::npos) << e;

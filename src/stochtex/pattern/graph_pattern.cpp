@@ -125,6 +125,11 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
             p.leafIds_.push_back(g->id + ".slope_v");
             fieldIds.push_back(g->inputs.at("height"));
         }
+    // A lean node's two slope leaves are no nodes of the file: the program's slots can outnumber them.
+    if (p.leafIds_.size() + ops.size() > size_t(kMaxGraphNodes))
+        throw InputError(context + ": the graph's program needs " + std::to_string(p.leafIds_.size() + ops.size()) +
+                         " values per pixel (each lean node adds two slopes), more than " +
+                         std::to_string(kMaxGraphNodes) + "; use fewer nodes");
     std::map<std::string, int> slot;
     for (size_t k = 0; k < p.leafIds_.size(); ++k) slot[p.leafIds_[k]] = int(k);
     for (size_t k = 0; k < ops.size(); ++k) slot[ops[k]->id] = int(p.leafIds_.size() + k);
@@ -158,7 +163,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
         const std::string where = context + ": node \"" + g->id + "\" (lean)";
         if (height.gaussianized())
             throw InputError(where + ": its input \"" + heightId + "\" is a Gaussianized exemplar, whose field is not "
-                             "linear in its example; give it \"gaussianize\": false to use it here");
+                             "linear in its example; set \"gaussianize\": false on its exemplar or tiled_field to use it here");
         if (!graphNodeTransform(graph, heightId, context).identity())
             throw InputError(where + ": its input \"" + heightId + "\" is seen through a transform of uv, whose slopes "
                              "would be along turned axes; a lean node needs its height untransformed");
@@ -216,7 +221,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
             if (!table && gaussianizedLeaf(from))
                 throw InputError(context + ": node \"" + g->id + "\" (" + g->info->name + "): its input \"" + from +
                                  "\" is a Gaussianized exemplar, whose field only a transfer function reads directly; "
-                                 "give it \"gaussianize\": false to use it here");
+                                 "set \"gaussianize\": false on its exemplar or tiled_field to use it here");
         }
         const std::string& x = g->info->inputs.empty() ? std::string() : g->inputs.at(g->info->inputs[0].name);
         const size_t tablesBefore = p.tables_.size();

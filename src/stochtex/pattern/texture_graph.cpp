@@ -319,8 +319,8 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
         NoiseExample e = buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache);
         if (e.gaussianized())
             throw InputError(where + " (" + g.info->name + "): its input \"" + g.inputs.at(port) +
-                             "\" is a Gaussianized exemplar, whose field is not linear in its example; give it "
-                             "\"gaussianize\": false to use it here");
+                             "\" is a Gaussianized exemplar, whose field is not linear in its example; set "
+                             "\"gaussianize\": false on its exemplar or tiled_field to use it here");
         return e;
     };
     const auto number = [&](const char* name) { return g.numbers.at(name); };
@@ -337,7 +337,7 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
             const GraphNode& field = graph.node(g.inputs.at("field"));
             NoiseSpec ns = field.noise;
             ns.channel = int(number("index"));
-            return buildNoiseExample(ns, context + ": node \"" + field.id + "\" (tiled_field)");
+            return buildNoiseExample(ns, where + " (channel)");
         }
         case NodeKind::Derivative: {
             const NoiseExample e = linearInput("input");

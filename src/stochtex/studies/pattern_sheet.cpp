@@ -80,7 +80,9 @@ PatternSheet graphSheet(const GraphPattern& graph, const TextureGraph& nodes, do
     std::vector<std::string> captions;
     const auto add = [&](const std::string& id) {
         images.push_back(srgbFromLinear(graph.renderNode(view, id)));
-        captions.push_back(id + " (" + nodes.node(id).info->name + ")");
+        // A lean node's slope leaves ("ID.slope_u") are no node of the file.
+        const auto node = std::find_if(nodes.nodes.begin(), nodes.nodes.end(), [&](const GraphNode& n) { return n.id == id; });
+        captions.push_back(node == nodes.nodes.end() ? id + " (slope)" : id + " (" + node->info->name + ")");
     };
     for (const std::string& id : graph.leafIds()) add(id);
     for (const GraphPattern::Operation& op : graph.operations()) add(op.id);
