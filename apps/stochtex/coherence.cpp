@@ -24,7 +24,7 @@ void registerCoherence(CLI::App& app) {
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("coherence", "Temporal coherence: per-frame mean, contrast, dominant scale and "
                                                 "spectrum, and their change over time: coherence [flags] "
-                                                "images|pattern|zoom|marble ...");
+                                                "images|pattern|zoom|marble|shadertoy ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
     addWindowSizeFlag(*cmd, args->window, "Frame size");

@@ -327,6 +327,14 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"spectrumInstances", "--spectrum-instances"},
     {"slideRate", "--slide-rate"},
     {"flowStep", "--step"},
+    {"width", "--size"},
+    {"height", "--size"},
+    {"fps", "--fps"},
+    {"startTime", "--time"},
+    {"date", "--date"},
+    {"pass", "--inspect"},
+    {"pixel", "--inspect"},
+    {"key", "--keys"},
 };
 }  // namespace
 

@@ -22,7 +22,7 @@ void registerFlow(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("flow", "Optical flow between consecutive frames (Farnebäck, DIS or Lucas–Kanade): "
-                                           "HSV colours, arrows, outward motion: flow [flags] images|pattern|zoom|marble ...");
+                                           "HSV colours, arrows, outward motion: flow [flags] images|pattern|zoom|marble|shadertoy ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
     addWindowSizeFlag(*cmd, args->window, "Window size");

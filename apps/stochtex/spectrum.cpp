@@ -19,8 +19,8 @@ void registerSpectrum(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("spectrum", "Power spectrum (centred, log scale), radial and angular profiles and "
-                                               "anisotropy of images, a pattern or the zoom texture: "
-                                               "spectrum [flags] images|pattern|zoom|marble ...");
+                                               "anisotropy of images, a pattern, the zoom or marble texture, or a ShaderToy program: "
+                                               "spectrum [flags] images|pattern|zoom|marble|shadertoy ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
     addWindowSizeFlag(*cmd, args->window, "Window size");

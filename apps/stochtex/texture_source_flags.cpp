@@ -4,10 +4,44 @@
 
 #include "common.h"
 #include "marble_flags.h"
+#include "shadertoy_flags.h"
 #include "stochtex/image/image_io.h"
 #include "zoom_flags.h"
 
 namespace stochtex::cli {
+
+namespace {
+
+// A ShaderToy program's frames (docs/SHADERTOY.md): the study's window is
+// centred in the frame; instance i sets the program's instance uniform.
+void addShadertoySource(CLI::App& cmd, const SourceStudy& study) {
+    struct Args {
+        std::string program;
+        ShadertoyFlags flags;
+        int firstFrame = 0;
+    };
+    auto args = std::make_shared<Args>();
+    auto* st = cmd.add_subcommand("shadertoy", "A ShaderToy program's Image pass (a folder or manifest, docs/SHADERTOY.md); "
+                                               "the window is centred in the frame");
+    st->add_option("program", args->program, "The program's folder or manifest")->required();
+    addShadertoyFlags(*st, args->flags);
+    st->add_option("--first-frame", args->firstFrame, "The frame the study starts at (the frames before it are "
+                                                     "rendered too: buffers with feedback need them); default 0");
+    st->callback([args, study] {
+        if (args->firstFrame < 0 || args->firstFrame > 1000000)
+            throw InputError("--first-frame: must be in [0, 1000000], got " + std::to_string(args->firstFrame));
+        const ShadertoySpec spec = loadShadertoy(args->program);
+        const ShadertoySettings settings = shadertoySettings(args->flags);
+        auto context = GlContext::headless();
+        ShadertoyHost host(spec, settings);
+        for (const int key : args->flags.keys) host.setKey(key, true);
+        const ShadertoySource source(host);
+        study(source, {spec.name + " (ShaderToy program)", false, 0, 0, 0, Transfer::Srgb,
+                       settings.startTime + args->firstFrame / settings.fps});
+    });
+}
+
+}  // namespace
 
 void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
     cmd.require_subcommand(1);
@@ -64,6 +98,8 @@ void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
                            enumName(kMarbleScalingNames, marble->scaling) + " scaling",
                        false, 0, 0, 0, Transfer::Linear});
     });
+
+    addShadertoySource(cmd, study);
 }
 
 void addWindowSizeFlag(CLI::App& cmd, WindowSizeFlag& flag, const std::string& what) {

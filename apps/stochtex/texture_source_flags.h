@@ -5,6 +5,7 @@
 //   CMD pattern ...       a pattern (--preset / --pattern), unfiltered or --filter
 //   CMD zoom ...          the stationary zoom texture (the zoom command's flags)
 //   CMD marble ...        the marble texture (the marble command's texture flags, --scaling, --layer)
+//   CMD shadertoy PROG    a ShaderToy program's frames (the shadertoy command's flags)
 // The study's own flags stay on CMD, before the sub-command.
 #include <CLI/CLI.hpp>
 #include <functional>

@@ -304,6 +304,30 @@ case_graph() {
   expect_bad "graph missing channel" "$out/ch.png" "stone.png has 1 channel; there is no channel 2" -- "$bin" render "$work/channel.json" -o "$out/ch.png"
 }
 
+case_shadertoy() {
+  # A two-pass program with feedback: buffer A counts frames, the image shows it beside a gradient.
+  mkdir -p "$work/st"
+  printf 'void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(p), 0) + vec4(1.0, 0.0, 0.0, 0.0); }\n' >"$work/st/a.glsl"
+  printf 'void mainImage(out vec4 c, in vec2 p) { vec2 uv = p / iResolution.xy; c = vec4(uv, texelFetch(iChannel0, ivec2(p), 0).x / 10.0, 1.0); }\n' >"$work/st/image.glsl"
+  printf '{"name": "counter", "passes": {"buffer_a": {"code": "a.glsl", "channels": [{"type": "buffer", "buffer": "a"}]}, "image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "a"}]}}}' >"$work/st/shadertoy.json"
+  expect_ok "shadertoy frame" "$out/st.png" -- "$bin" shadertoy "$work/st" --size 32,16 --frames 4 -o "$out/st.png"
+  expect_ok "shadertoy sheet" "$out/sts.png" -- "$bin" shadertoy "$work/st" --size 32,16 --frames 5 --sheet -o "$out/sts.png"
+  expect_ok "shadertoy video" "$out/st.mp4" -- "$bin" shadertoy "$work/st" --size 32,16 --frames 8 --fps 24 -o "$out/st.mp4"
+  expect_ok "shadertoy frames" "$out/stf/frame_0002.png" -- "$bin" shadertoy "$work/st" --size 32,16 --frames 3 -o "$out/stf"
+  "$bin" shadertoy "$work/st" --size 32,16 --frames 7 --inspect buffer_a:3,4 >"$work/inspect.txt" 2>&1 || fail "shadertoy inspect: $(cat "$work/inspect.txt")"
+  grep -q "^buffer_a (3, 4) at iFrame 6: 7 0 0 0$" "$work/inspect.txt" || fail "shadertoy inspect: $(cat "$work/inspect.txt")"
+  printf 'void mainImage(out vec4 c, in vec2 p) {\n  c = vec4(nope);\n}\n' >"$work/st/broken.glsl"
+  printf '{"passes": {"image": {"code": "broken.glsl"}}}' >"$work/broken.json"
+  cp "$work/st/broken.glsl" "$work/broken.glsl"
+  expect_bad "shadertoy compile error" "$out/stb.png" "broken.glsl:2" -- "$bin" shadertoy "$work/broken.json" -o "$out/stb.png"
+  expect_bad "shadertoy no output" "" "-o/--output or --inspect is required" -- "$bin" shadertoy "$work/st"
+  expect_bad "shadertoy inspect pass" "" "--inspect: pass \"buffer_c\" names no pass of counter" -- "$bin" shadertoy "$work/st" --inspect buffer_c:1,1
+  expect_ok "spectrum of a shadertoy frame" "$out/sts/index.html" -- "$bin" spectrum -o "$out/sts" --size 64 shadertoy "$src/data/shadertoy/swirl" --size 96,80 --first-frame 120
+  [ -s "$out/sts/spectrum.csv" ] || fail "spectrum of a shadertoy frame: spectrum.csv not written"
+  expect_bad "spectrum window outside the frame" "$out/stw" "--size: size of the window, 128x128 at (-64, -64) from the centre, exceeds the 96x80 frame" -- "$bin" spectrum -o "$out/stw" --size 128 shadertoy "$src/data/shadertoy/swirl" --size 96,80
+  expect_bad "shadertoy date" "$out/std.png" "--date: expected YYYY-MM-DD" -- "$bin" shadertoy "$work/st" --date yesterday -o "$out/std.png"
+}
+
 case_bad_stimuli_flags() {
   expect_bad "tile not dividing size" "$out/sb1" "--tiles: tiles must hold tile sizes that divide size = 32, got 5" -- "$bin" stimuli -o "$out/sb1" --size 32 --tiles 4,5
   expect_bad "tile 0" "$out/sb2" "--tiles: tiles must hold tile sizes that divide size = 32, got 0" -- "$bin" stimuli -o "$out/sb2" --size 32 --tiles 0

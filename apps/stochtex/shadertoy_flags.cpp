@@ -1,0 +1,75 @@
+#include "shadertoy_flags.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <regex>
+
+#include "stochtex/analysis/plot.h"
+#include "stochtex/core/error.h"
+
+namespace stochtex::cli {
+
+void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& f) {
+    cmd.add_option("--size", f.size, "Frame size, iResolution: N or W,H (default 640,360)")->delimiter(',')->expected(1, 2);
+    cmd.add_option("--time", f.time, "iTime of frame 0, seconds (default 0)");
+    cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate (default 60)");
+    cmd.add_option("--mouse", f.mouse, "iMouse: X,Y (pressed there) or X,Y,CLICK_X,CLICK_Y, pixels, y up")
+        ->delimiter(',')
+        ->expected(2, 4);
+    cmd.add_option("--date", f.date, "iDate at iTime 0: YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS (default 2026-01-01T12:00:00)");
+    cmd.add_option("--keys", f.keys, "Key codes held from frame 0 (JavaScript keyCode, e.g. 65 for A), comma-separated")
+        ->delimiter(',');
+}
+
+ShadertoySettings shadertoySettings(const ShadertoyFlags& f) {
+    ShadertoySettings s;
+    s.width = f.size[0];
+    s.height = f.size.size() > 1 ? f.size[1] : f.size[0];
+    s.startTime = f.time;
+    s.fps = f.fps;
+    if (f.mouse.size() == 3) throw InputError("--mouse: give X,Y or X,Y,CLICK_X,CLICK_Y, got 3 numbers");
+    for (size_t k = 0; k < f.mouse.size(); ++k) s.mouse[k] = f.mouse[k];
+    if (f.mouse.size() == 2) s.mouse[2] = f.mouse[0], s.mouse[3] = f.mouse[1];  // pressed where it is
+    const std::regex date(R"((\d{4})-(\d{2})-(\d{2})(?:T(\d{2}):(\d{2}):(\d{2}))?)");
+    std::smatch m;
+    if (!std::regex_match(f.date, m, date)) throw InputError("--date: expected YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS, got \"" + f.date + "\"");
+    for (int k = 0; k < 6; ++k) s.date[size_t(k)] = m[k + 1].matched ? std::stoi(m[k + 1].str()) : 0;
+    for (const int key : f.keys)
+        if (key < 0 || key > 255) throw InputError("--keys: key codes are 0–255 (JavaScript keyCode), got " + std::to_string(key));
+    validateShadertoySettings(s);
+    return s;
+}
+
+Inspect parseInspect(const std::string& text) {
+    if (text.empty()) return {};
+    const std::regex form(R"(([a-z_]+):(\d{1,5}),(\d{1,5}))");
+    std::smatch m;
+    if (!std::regex_match(text, m, form))
+        throw InputError("--inspect: expected PASS:X,Y (e.g. buffer_a:10,20), got \"" + text + "\"");
+    return {m[1].str(), std::stoi(m[2].str()), std::stoi(m[3].str())};
+}
+
+void printInspect(const ShadertoyHost& host, const Inspect& in) {
+    const std::array<float, 4> v = host.pixel(in.pass, in.x, in.y);
+    std::printf("%s (%d, %d) at iFrame %d: %.9g %.9g %.9g %.9g\n", in.pass.c_str(), in.x, in.y, host.frame() - 1,
+                double(v[0]), double(v[1]), double(v[2]), double(v[3]));
+}
+
+Image clampedFrame(const Image& frame) {
+    Image out = frame;
+    for (float& v : out.data()) v = std::clamp(v, 0.0f, 1.0f);
+    return out;
+}
+
+Image sheetOf(const std::vector<Image>& frames, const std::vector<std::string>& captions) {
+    std::vector<std::vector<Image>> rows;
+    std::vector<std::vector<std::string>> text;
+    for (size_t k = 0; k < frames.size(); ++k) {
+        if (k % 8 == 0) rows.emplace_back(), text.emplace_back();
+        rows.back().push_back(clampedFrame(frames[k]));
+        text.back().push_back(captions[k]);
+    }
+    return sheet(rows, text);
+}
+
+}  // namespace stochtex::cli

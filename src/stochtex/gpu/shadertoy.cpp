@@ -1,0 +1,449 @@
+#include "stochtex/gpu/shadertoy.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <vector>
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/hash.h"
+#include "stochtex/gpu/gl_objects.h"
+#include "stochtex/gpu/shader.h"
+#include "stochtex/image/image_io.h"
+
+namespace stochtex {
+
+void validateShadertoySettings(const ShadertoySettings& s) {
+    if (s.width < 1 || s.width > 8192) throw InputError::parameter("width", "must be in [1, 8192], got " + std::to_string(s.width));
+    if (s.height < 1 || s.height > 8192)
+        throw InputError::parameter("height", "must be in [1, 8192], got " + std::to_string(s.height));
+    if (!(std::isfinite(s.fps) && s.fps > 0 && s.fps <= 1000))
+        throw InputError::parameter("fps", "must be in (0, 1000], got " + formatValue(s.fps));
+    if (!(std::isfinite(s.startTime) && std::abs(s.startTime) <= 1e6))
+        throw InputError::parameter("startTime", "must be finite and within ±1e6 s, got " + formatValue(s.startTime));
+    const auto& d = s.date;
+    if (d[1] < 1 || d[1] > 12 || d[2] < 1 || d[2] > 31 || d[3] < 0 || d[3] > 23 || d[4] < 0 || d[4] > 59 || d[5] < 0 ||
+        d[5] > 59)
+        throw InputError::parameter("date", "must be a calendar date and time (month 1–12, day 1–31, hour 0–23, minute "
+                                            "and second 0–59)");
+}
+
+namespace {
+
+// A GL sampler object: filtering and wrapping of one channel, apart from its texture.
+void deleteSampler(GLuint id) { glDeleteSamplers(1, &id); }
+using Sampler = gl::Handle<deleteSampler>;
+
+constexpr int kKeys = 256;
+
+// The uniforms every pass declares (ShaderToy's), then the program's own,
+// and the output; mainImage's wrapper after the user's files.
+std::string prelude(const ShadertoySpec& spec) {
+    std::string s =
+        "// stochtex ShaderToy host: ShaderToy's uniforms.\n"
+        "uniform vec3 iResolution;\nuniform float iTime;\nuniform float iTimeDelta;\nuniform int iFrame;\n"
+        "uniform float iFrameRate;\nuniform vec4 iMouse;\nuniform vec4 iDate;\nuniform float iSampleRate;\n"
+        "uniform vec3 iChannelResolution[4];\nuniform float iChannelTime[4];\n"
+        "uniform sampler2D iChannel0;\nuniform sampler2D iChannel1;\nuniform sampler2D iChannel2;\nuniform sampler2D iChannel3;\n";
+    for (const ShadertoyUniform& u : spec.uniforms)
+        s += "uniform " + enumName(kShadertoyUniformTypeNames, u.type) + " " + u.name + ";\n";
+    return s + "out vec4 stochtexFragColour;\n";
+}
+const char* kMain =
+    "void main() {\n    vec4 colour = vec4(0.0);\n    mainImage(colour, gl_FragCoord.xy);\n    stochtexFragColour = colour;\n}\n";
+
+GLint minFilter(ChannelFilter f) {
+    return f == ChannelFilter::Nearest ? GL_NEAREST : f == ChannelFilter::Linear ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
+}
+
+// A texture of the image's channels (1–4: R, RG, RGB, RGBA as GL reads
+// them), rows flipped when vflip so that the file's top row is at v = 1.
+gl::Texture imageTexture(const Image& img, bool vflip, bool mipmaps) {
+    static const GLenum internal[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
+    static const GLenum format[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    const int c = img.channels();
+    std::vector<float> rows(img.data().size());
+    const size_t stride = size_t(img.width()) * size_t(c);
+    for (int y = 0; y < img.height(); ++y) {
+        // GL's row 0 is v = 0, the bottom: the file's last row when flipped.
+        const int from = vflip ? img.height() - 1 - y : y;
+        std::copy(img.row(from), img.row(from) + stride, rows.begin() + std::ptrdiff_t(size_t(y) * stride));
+    }
+    gl::Texture t = gl::newTexture();
+    glBindTexture(GL_TEXTURE_2D, t.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal[c - 1]), img.width(), img.height(), 0, format[c - 1], GL_FLOAT,
+                 rows.data());
+    if (mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
+    else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    return t;
+}
+
+// ShaderToy's noise textures, drawn from the project's hash: every texel's
+// channels uniform in [0, 1), independent (rgba) or one value in all (gray).
+Image noiseImage(int size, bool rgba, uint32_t seed) {
+    Image img(size, size, 4, Image::Uninitialized{});
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const UInt3 h = pcg3d({uint32_t(x), uint32_t(y), deriveSeed(seed, 0x6e6f6973u)});
+            const UInt3 g = pcg3d({h.x, h.y, h.z});
+            const float v[4] = {unitFloat(h.x), unitFloat(h.y), unitFloat(h.z), unitFloat(g.x)};
+            for (int c = 0; c < 4; ++c) img.at(x, y, c) = rgba ? v[c] : v[0];
+        }
+    return img;
+}
+
+// The compiler's messages (after ShaderError's first line) on one line:
+// "file:line(col): error: …; …", at most five, so that a command prints one
+// message however many errors a shader has.
+std::string compilerMessages(const std::string& what) {
+    std::vector<std::string> lines;
+    size_t pos = what.find('\n');
+    while (pos != std::string::npos && pos + 1 < what.size()) {
+        const size_t end = what.find('\n', pos + 1);
+        std::string line = what.substr(pos + 1, end == std::string::npos ? std::string::npos : end - pos - 1);
+        while (!line.empty() && std::isspace((unsigned char)line.back())) line.pop_back();
+        if (!line.empty()) lines.push_back(line);
+        pos = end;
+    }
+    std::string out;
+    for (size_t k = 0; k < lines.size() && k < 5; ++k) out += (k ? "; " : "") + lines[k];
+    if (lines.size() > 5) out += "; and " + std::to_string(lines.size() - 5) + " more";
+    return out.empty() ? what : out;
+}
+
+}  // namespace
+
+struct ShadertoyHost::Impl {
+    ShadertoySpec spec;
+    ShadertoySettings settings;
+    gl::VertexArray vao;
+    struct Target {
+        gl::Texture texture;
+        gl::Framebuffer framebuffer;
+    };
+    // Per pass: its program, its uniform locations, two targets (a buffer
+    // writes one while it may read the other), which holds the last output.
+    struct Pass {
+        gl::Program program;
+        std::array<Target, 2> targets;
+        int latest = 0;
+        bool renderedThisFrame = false;
+        bool mipmaps = false;  // some channel reads it with mipmaps
+        std::array<Sampler, 4> samplers;
+        std::array<gl::Texture, 4> inputs;  // image, keyboard and noise channels' textures
+        std::array<std::array<int, 2>, 4> inputSize{};
+    };
+    std::vector<Pass> passes;
+    gl::Texture keyboard;
+    std::array<float, kKeys * 3> keys{};  // rows: down, pressed this frame, toggled
+    int frame = 0;
+    int instance = 0;
+
+    Target newTarget(bool mipmaps) const {
+        Target t{gl::newTexture(), gl::newFramebuffer()};
+        glBindTexture(GL_TEXTURE_2D, t.texture.id());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, settings.width, settings.height, 0, GL_RGBA, GL_FLOAT, nullptr);
+        if (mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
+        else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer.id());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.texture.id(), 0);
+        return t;
+    }
+
+    void clearTargets() {
+        const float zero[4] = {0, 0, 0, 0};
+        for (Pass& p : passes)
+            for (Target& t : p.targets) {
+                glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer.id());
+                glClearBufferfv(GL_COLOR, 0, zero);
+            }
+    }
+
+    void uploadKeyboard() {
+        glBindTexture(GL_TEXTURE_2D, keyboard.id());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, kKeys, 3, 0, GL_RED, GL_FLOAT, keys.data());
+    }
+
+    // The texture channel i of pass p reads now, and its size.
+    GLuint channelTexture(size_t p, size_t i, std::array<int, 2>& size) const {
+        const ShadertoyChannel& ch = spec.passes[p].channels[i];
+        const Pass& pass = passes[p];
+        switch (ch.kind) {
+            case ShadertoyChannel::Kind::None: size = {0, 0}; return 0;
+            case ShadertoyChannel::Kind::Buffer: {
+                const Pass& b = passes[size_t(spec.bufferPass(ch.buffer))];
+                size = {settings.width, settings.height};
+                // Previous: the other target once the buffer has run this frame.
+                const bool other = ch.frame == ShadertoyChannel::Frame::Previous && b.renderedThisFrame;
+                return b.targets[size_t(other ? 1 - b.latest : b.latest)].texture.id();
+            }
+            case ShadertoyChannel::Kind::Keyboard: size = {kKeys, 3}; return keyboard.id();
+            case ShadertoyChannel::Kind::Image:
+            case ShadertoyChannel::Kind::Noise: size = pass.inputSize[i]; return pass.inputs[i].id();
+        }
+        return 0;
+    }
+
+    double time() const { return settings.startTime + frame / settings.fps; }
+
+    void run(size_t p) {
+        Pass& pass = passes[p];
+        const bool buffer = spec.passes[p].name != "image";
+        const int write = buffer ? 1 - pass.latest : 0;
+        glBindFramebuffer(GL_FRAMEBUFFER, pass.targets[size_t(write)].framebuffer.id());
+        glViewport(0, 0, settings.width, settings.height);
+        const GLuint prog = pass.program.id();
+        glUseProgram(prog);
+        const auto loc = [&](const char* name) { return glGetUniformLocation(prog, name); };
+        const float t = float(time());
+        glUniform3f(loc("iResolution"), float(settings.width), float(settings.height), 1.0f);
+        glUniform1f(loc("iTime"), t);
+        glUniform1f(loc("iTimeDelta"), float(1.0 / settings.fps));
+        glUniform1i(loc("iFrame"), frame);
+        glUniform1f(loc("iFrameRate"), float(settings.fps));
+        glUniform4f(loc("iMouse"), settings.mouse[0], settings.mouse[1], settings.mouse[2], settings.mouse[3]);
+        const auto& d = settings.date;
+        const double seconds = d[3] * 3600.0 + d[4] * 60.0 + d[5] + time();
+        glUniform4f(loc("iDate"), float(d[0]), float(d[1] - 1), float(d[2]), float(seconds));
+        glUniform1f(loc("iSampleRate"), float(settings.sampleRate));
+        for (const ShadertoyUniform& u : spec.uniforms) {
+            const GLint l = loc(u.name.c_str());
+            const auto& v = u.value;
+            const double value = u.name == spec.instanceUniform ? double(instance) : v[0];
+            switch (u.type) {
+                case ShadertoyUniform::Type::Float: glUniform1f(l, float(value)); break;
+                case ShadertoyUniform::Type::Int: glUniform1i(l, int(value)); break;
+                case ShadertoyUniform::Type::Vec2: glUniform2f(l, float(v[0]), float(v[1])); break;
+                case ShadertoyUniform::Type::Vec3: glUniform3f(l, float(v[0]), float(v[1]), float(v[2])); break;
+                case ShadertoyUniform::Type::Vec4: glUniform4f(l, float(v[0]), float(v[1]), float(v[2]), float(v[3])); break;
+            }
+        }
+        float resolutions[12] = {}, times[4] = {t, t, t, t};
+        for (size_t i = 0; i < 4; ++i) {
+            std::array<int, 2> size{};
+            const GLuint tex = channelTexture(p, i, size);
+            glActiveTexture(GLenum(GL_TEXTURE0 + i));
+            glBindTexture(GL_TEXTURE_2D, tex);
+            glBindSampler(GLuint(i), pass.samplers[i].id());
+            const std::string name = "iChannel" + std::to_string(i);
+            glUniform1i(loc(name.c_str()), GLint(i));
+            resolutions[3 * i] = float(size[0]);
+            resolutions[3 * i + 1] = float(size[1]);
+            resolutions[3 * i + 2] = size[0] > 0 ? 1.0f : 0.0f;
+        }
+        glUniform3fv(loc("iChannelResolution"), 4, resolutions);
+        glUniform1fv(loc("iChannelTime"), 4, times);
+        glBindVertexArray(vao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        for (GLuint i = 0; i < 4; ++i) glBindSampler(i, 0);
+        if (pass.mipmaps) {
+            glBindTexture(GL_TEXTURE_2D, pass.targets[size_t(write)].texture.id());
+            glGenerateMipmap(GL_TEXTURE_2D);
+        }
+        pass.latest = write;
+        pass.renderedThisFrame = true;
+    }
+};
+
+ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, const ShadertoySettings& settings)
+    : impl_(std::make_unique<Impl>()) {
+    validateShadertoySettings(settings);
+    Impl& m = *impl_;
+    m.spec = spec;
+    m.settings = settings;
+    m.vao = gl::newVertexArray();
+    m.keyboard = gl::newTexture();
+    m.uploadKeyboard();
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    std::vector<std::pair<std::string, std::string>> sources{{"shadertoy_prelude", prelude(spec)},
+                                                             {"shadertoy_main", kMain}};
+    if (!spec.common.empty()) sources.push_back(readShaderFile(spec.common.string()));
+    // Which buffers some channel reads with mipmaps.
+    std::array<bool, 4> mipmapped{};
+    for (const ShadertoyPass& pass : spec.passes)
+        for (const ShadertoyChannel& ch : pass.channels)
+            if (ch.kind == ShadertoyChannel::Kind::Buffer && ch.filter == ChannelFilter::Mipmap) mipmapped[size_t(ch.buffer)] = true;
+    for (const ShadertoyPass& pass : spec.passes) {
+        Impl::Pass p;
+        std::vector<std::pair<std::string, std::string>> overrides = sources;
+        overrides.push_back(readShaderFile(pass.code.string()));
+        std::vector<std::string> files{"shadertoy_prelude"};
+        if (!spec.common.empty()) files.push_back(spec.common.string());
+        files.push_back(pass.code.string());
+        files.push_back("shadertoy_main");
+        try {
+            p.program = gl::Program(compileProgram({"fullscreen"}, files, overrides));
+        } catch (const ShaderError& e) {
+            throw InputError(spec.name + ": pass " + pass.name + " does not compile: " + compilerMessages(e.what()));
+        }
+        const int buffer = pass.name == "image" ? -1 : pass.name.back() - 'a';
+        p.mipmaps = buffer >= 0 && mipmapped[size_t(buffer)];
+        for (int t = 0; t < (buffer >= 0 ? 2 : 1); ++t) p.targets[size_t(t)] = m.newTarget(p.mipmaps);
+        for (size_t i = 0; i < 4; ++i) {
+            const ShadertoyChannel& ch = pass.channels[i];
+            GLuint id = 0;
+            glGenSamplers(1, &id);
+            p.samplers[i] = Sampler(id);
+            // Mipmaps on a texture without them (keyboard) read level 0 only.
+            glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, minFilter(ch.filter));
+            glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, ch.filter == ChannelFilter::Nearest ? GL_NEAREST : GL_LINEAR);
+            const GLint wrap = ch.wrap == ChannelWrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+            glSamplerParameteri(id, GL_TEXTURE_WRAP_S, wrap);
+            glSamplerParameteri(id, GL_TEXTURE_WRAP_T, wrap);
+            if (ch.kind == ShadertoyChannel::Kind::Image) {
+                const Image img = readImage(ch.image.string());
+                if (img.channels() < 1 || img.channels() > 4)
+                    throw InputError(ch.image.string() + ": a channel image has 1 to 4 channels, got " +
+                                     std::to_string(img.channels()));
+                p.inputs[i] = imageTexture(img, ch.vflip, ch.filter == ChannelFilter::Mipmap);
+                p.inputSize[i] = {img.width(), img.height()};
+            } else if (ch.kind == ShadertoyChannel::Kind::Noise) {
+                p.inputs[i] = imageTexture(noiseImage(ch.noiseSize, ch.rgbaNoise, ch.noiseSeed), false,
+                                           ch.filter == ChannelFilter::Mipmap);
+                p.inputSize[i] = {ch.noiseSize, ch.noiseSize};
+            }
+        }
+        m.passes.push_back(std::move(p));
+    }
+    reset(0);
+}
+
+ShadertoyHost::~ShadertoyHost() = default;
+
+const ShadertoySpec& ShadertoyHost::spec() const { return impl_->spec; }
+const ShadertoySettings& ShadertoyHost::settings() const { return impl_->settings; }
+int ShadertoyHost::frame() const { return impl_->frame; }
+int ShadertoyHost::instance() const { return impl_->instance; }
+
+void ShadertoyHost::reset(int instance) {
+    Impl& m = *impl_;
+    m.frame = 0;
+    m.instance = instance;
+    m.keys.fill(0.0f);
+    m.uploadKeyboard();
+    for (Impl::Pass& p : m.passes) p.latest = 0;
+    m.clearTargets();
+}
+
+void ShadertoyHost::renderFrame() {
+    Impl& m = *impl_;
+    for (Impl::Pass& p : m.passes) p.renderedThisFrame = false;
+    for (size_t p = 0; p < m.passes.size(); ++p) m.run(p);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    ++m.frame;
+    // "Pressed" lasts one frame.
+    std::fill(m.keys.begin() + kKeys, m.keys.begin() + 2 * kKeys, 0.0f);
+    m.uploadKeyboard();
+}
+
+namespace {
+
+// RGBA pixels of a framebuffer, GL's rows (bottom first).
+std::vector<float> readRgba(GLuint framebuffer, int x, int y, int width, int height) {
+    std::vector<float> rgba(size_t(width) * size_t(height) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(x, y, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    return rgba;
+}
+
+}  // namespace
+
+Image ShadertoyHost::image() const {
+    const Impl& m = *impl_;
+    const Impl::Pass& p = m.passes.back();
+    const int w = m.settings.width, h = m.settings.height;
+    const std::vector<float> rgba = readRgba(p.targets[size_t(p.latest)].framebuffer.id(), 0, 0, w, h);
+    Image out(w, h, 3, Image::Uninitialized{});
+    for (int y = 0; y < h; ++y) {
+        const float* src = rgba.data() + size_t(h - 1 - y) * size_t(w) * 4;
+        float* dst = out.row(y);
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) dst[3 * x + c] = src[4 * x + c];
+    }
+    return out;
+}
+
+std::array<float, 4> ShadertoyHost::pixel(const std::string& pass, int x, int y) const {
+    const Impl& m = *impl_;
+    const auto it = std::find_if(m.spec.passes.begin(), m.spec.passes.end(), [&](const ShadertoyPass& p) { return p.name == pass; });
+    if (it == m.spec.passes.end()) {
+        std::string names;
+        for (const ShadertoyPass& p : m.spec.passes) names += (names.empty() ? "" : ", ") + p.name;
+        throw InputError::parameter("pass", "\"" + pass + "\" names no pass of " + m.spec.name + " (it has " + names + ")");
+    }
+    if (x < 0 || y < 0 || x >= m.settings.width || y >= m.settings.height)
+        throw InputError::parameter("pixel", "(" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+                                                 std::to_string(m.settings.width) + "x" + std::to_string(m.settings.height) + " frame");
+    const Impl::Pass& p = m.passes[size_t(it - m.spec.passes.begin())];
+    const std::vector<float> v = readRgba(p.targets[size_t(p.latest)].framebuffer.id(), x, y, 1, 1);
+    return {v[0], v[1], v[2], v[3]};
+}
+
+void ShadertoyHost::setKey(int keyCode, bool down) {
+    Impl& m = *impl_;
+    if (keyCode < 0 || keyCode >= kKeys)
+        throw InputError::parameter("key", "key codes are 0–255 (JavaScript keyCode), got " + std::to_string(keyCode));
+    float& held = m.keys[size_t(keyCode)];
+    if (down && held == 0.0f) {
+        m.keys[size_t(kKeys + keyCode)] = 1.0f;
+        float& toggled = m.keys[size_t(2 * kKeys + keyCode)];
+        toggled = 1.0f - toggled;
+    }
+    held = down ? 1.0f : 0.0f;
+    m.uploadKeyboard();
+}
+
+void ShadertoyHost::setMouse(const std::array<float, 4>& mouse) { impl_->settings.mouse = mouse; }
+
+void renderShadertoyFrames(ShadertoyHost& host, int frames, const ShadertoyFrameSink& sink, const Progress& progress) {
+    if (frames < 1 || frames > 1000000)
+        throw InputError::parameter("frames", "must be in [1, 1000000], got " + std::to_string(frames));
+    for (int k = 0; k < frames; ++k) {
+        const int frame = host.frame();
+        host.renderFrame();
+        if (sink) sink(frame, host.image());
+        if (progress) progress(double(k + 1) / frames, "frame " + std::to_string(frame));
+    }
+}
+
+int ShadertoySource::frameAt(double time) const {
+    const ShadertoySettings& s = host_.settings();
+    return int(std::lround((time - s.startTime) * s.fps));
+}
+
+void ShadertoySource::checkWindow(const SourceRegion& region, double time) const {
+    const ShadertoySettings& s = host_.settings();
+    if (region.x0 != std::floor(region.x0) || region.y0 != std::floor(region.y0))
+        throw InputError::parameter("size", "must place the window on whole pixels of the frame, got (" +
+                                                formatValue(region.x0) + ", " + formatValue(region.y0) + ")");
+    const double x0 = region.x0 + s.width / 2, y0 = region.y0 + s.height / 2;
+    if (x0 < 0 || y0 < 0 || x0 + region.width > s.width || y0 + region.height > s.height)
+        throw InputError::parameter("size", "of the window, " + std::to_string(region.width) + "x" +
+                                                std::to_string(region.height) + " at (" + formatValue(region.x0) + ", " +
+                                                formatValue(region.y0) + ") from the centre, exceeds the " +
+                                                std::to_string(s.width) + "x" + std::to_string(s.height) + " frame");
+    if (!(std::isfinite(time) && frameAt(time) >= 0 && frameAt(time) <= 1000000))
+        throw InputError::parameter("time", "must be at or after the program's start (" + formatValue(s.startTime) +
+                                                " s) and within 10⁶ frames, got " + formatValue(time));
+}
+
+Image ShadertoySource::render(const SourceRegion& region, double time, int instance) const {
+    checkWindow(region, time);
+    const int n = frameAt(time);
+    if (instance != host_.instance() || n < host_.frame() - 1 || host_.frame() == 0) host_.reset(instance);
+    while (host_.frame() <= n) host_.renderFrame();
+    const Image frame = host_.image();
+    Image out(region.width, region.height, 3, Image::Uninitialized{});
+    const int x0 = int(region.x0) + host_.settings().width / 2, y0 = int(region.y0) + host_.settings().height / 2;
+    for (int y = 0; y < region.height; ++y)
+        std::copy(frame.row(y0 + y) + size_t(x0) * 3, frame.row(y0 + y) + size_t(x0 + region.width) * 3, out.row(y));
+    return out;
+}
+
+}  // namespace stochtex

@@ -1,0 +1,107 @@
+#pragma once
+// A ShaderToy-compatible host (issue "The workbench"; thesis ch. 3, GLcv):
+// runs a program (gpu/shadertoy_spec.h) frame by frame on a GL context,
+// headless or in a window, with ShaderToy's uniforms:
+//   iResolution (vec3: width, height, 1), iTime, iTimeDelta, iFrame,
+//   iFrameRate, iMouse (vec4, pixels: xy the position while pressed, zw the
+//   click), iDate (vec4: year, month − 1, day, seconds since midnight),
+//   iChannel0–3, iChannelResolution[4] (vec3), iChannelTime[4], iSampleRate.
+// Buffers are RGBA32F, double-buffered (a pass may read its own previous
+// frame), cleared to 0 on reset. Time is the frame's: iTime = start +
+// iFrame / fps, so a frame's pixels depend on its number alone and runs are
+// deterministic; iDate counts from a fixed date (no wall clock).
+//
+// A program's frame is its Image pass's output as ShaderToy shows it (row 0
+// at the top), values as the shader writes them (ShaderToy's are display
+// codes; the host neither encodes nor clamps them).
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "stochtex/core/progress.h"
+#include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/shadertoy_spec.h"
+#include "stochtex/image/image.h"
+#include "stochtex/textures/texture_source.h"
+
+namespace stochtex {
+
+struct ShadertoySettings {
+    int width = 640, height = 360;  // iResolution, [1, 8192] each
+    double fps = 60;                // iFrameRate; iTimeDelta = 1 / fps
+    double startTime = 0;           // iTime of frame 0
+    std::array<float, 4> mouse{};   // iMouse
+    // iDate at iTime = 0: year, month (1–12), day, hour, minute, second. The
+    // seconds then run on with iTime (past midnight without a new day).
+    std::array<int, 6> date{2026, 1, 1, 12, 0, 0};
+    double sampleRate = 44100;  // iSampleRate
+};
+// InputError naming the parameter (width, height, fps, startTime, date).
+void validateShadertoySettings(const ShadertoySettings& s);
+
+class ShadertoyHost {
+public:
+    // Compiles every pass and loads its channels on the current context.
+    // InputError: a pass that does not compile (the compiler's messages as
+    // "file:line" of the user's files), an unreadable channel image, bad
+    // settings.
+    ShadertoyHost(const ShadertoySpec& spec, const ShadertoySettings& settings);
+    ~ShadertoyHost();
+    ShadertoyHost(const ShadertoyHost&) = delete;
+    ShadertoyHost& operator=(const ShadertoyHost&) = delete;
+
+    const ShadertoySpec& spec() const;
+    const ShadertoySettings& settings() const;
+    // Back to frame 0: buffers cleared, keys released, the program's instance
+    // uniform (ShadertoySpec::instanceUniform) set to `instance`.
+    void reset(int instance = 0);
+    int instance() const;
+    // Renders the next frame (every pass in order); frame() then counts it.
+    void renderFrame();
+    // Frames rendered since reset; the next one is iFrame = frame().
+    int frame() const;
+    // The Image pass's last output, RGB, row 0 at the top.
+    Image image() const;
+    // The RGBA of a pass's last output at pixel (x, y), ShaderToy's
+    // fragCoord convention (y up from the bottom row). InputError naming the
+    // pass or the pixel when there is none.
+    std::array<float, 4> pixel(const std::string& pass, int x, int y) const;
+
+    // The keyboard texture (256 × 3: down, pressed this frame, toggled) and
+    // the mouse for the frames to come.
+    void setKey(int keyCode, bool down);
+    void setMouse(const std::array<float, 4>& mouse);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Renders `frames` frames (≥ 1) on from the host's state, handing each to
+// `sink` with its number (iFrame) as it comes, so memory stays one frame.
+using ShadertoyFrameSink = std::function<void(int frame, const Image& image)>;
+void renderShadertoyFrames(ShadertoyHost& host, int frames, const ShadertoyFrameSink& sink,
+                           const Progress& progress = {});
+
+// A program's frames as a texture source, for the studies (spectrum, flow,
+// temporal coherence, statistics over instances): source pixel (0, 0) is the
+// frame's centre pixel (width / 2, height / 2), rows going down, as the
+// zoom texture's windows are centred; time t is frame round((t −
+// startTime) · fps), reached by rendering every frame before it (feedback
+// buffers need them); instance i sets the program's instance uniform. The
+// host must outlive the source, whose renders move it on.
+class ShadertoySource : public TextureSource {
+public:
+    explicit ShadertoySource(ShadertoyHost& host) : host_(host) {}
+    int channels() const override { return 3; }
+    Image render(const SourceRegion& region, double time, int instance) const override;
+    // InputError for a window outside the frame or a time before the start.
+    void checkWindow(const SourceRegion& region, double time) const override;
+
+private:
+    int frameAt(double time) const;
+    ShadertoyHost& host_;
+};
+
+}  // namespace stochtex

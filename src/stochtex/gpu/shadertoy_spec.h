@@ -1,0 +1,106 @@
+#pragma once
+// A ShaderToy-style program as files (issue "The workbench"; thesis ch. 3,
+// GLcv): an Image pass and up to four buffer passes (Buffer A–D), each a
+// GLSL file defining mainImage(out vec4 fragColor, in vec2 fragCoord), an
+// optional Common file put before every pass, and each pass's four channel
+// inputs iChannel0–3. This is the description only (no GL); ShadertoyHost
+// (gpu/shadertoy.h) runs it.
+//
+// A program is a folder or a manifest:
+// * a folder holds image.glsl, and optionally common.glsl and
+//   buffer_a.glsl … buffer_d.glsl; its passes read no channels unless the
+//   folder also holds shadertoy.json, which is then the manifest;
+// * a manifest (a .json file) names the files, relative to itself:
+//   { "name": "…",
+//     "common": "common.glsl",
+//     "passes": { "buffer_a": { "code": "a.glsl", "channels": [CHANNEL, …] },
+//                 "image":    { "code": "image.glsl", "channels": [ … ] } },
+//     "uniforms": { "uGain": {"type": "float", "value": 0.5}, … },
+//     "instance": "uInstance" }
+//   CHANNEL (up to four, null for none):
+//     {"type": "buffer", "buffer": "a", "frame": "latest" | "previous" | "current"}
+//     {"type": "image", "path": "tex.png", "vflip": true}
+//     {"type": "keyboard"}
+//     {"type": "noise", "kind": "gray" | "rgba", "size": 64, "seed": 0}
+//   each with "filter": "nearest" | "linear" | "mipmap" and
+//   "wrap": "clamp" | "repeat" (ShaderToy's defaults: images and noise
+//   mipmap and repeat, buffers linear and clamp, the keyboard nearest and
+//   clamp).
+//   "uniforms" adds the program's own (float, int, vec2, vec3, vec4); the
+//   int uniform named by "instance" is the instance of a texture source
+//   (a seed for statistics over instances).
+//
+// Passes run in ShaderToy's order, Buffer A to D, then Image. A buffer read
+// as "latest" gives its last output: this frame's when it runs before the
+// reader, the previous frame's otherwise (a pass reading itself: feedback).
+// "previous" always gives the previous frame's; "current" requires the
+// buffer to run before the reader (InputError otherwise: a pass cycle).
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "stochtex/core/enum_names.h"
+
+namespace stochtex {
+
+enum class ChannelFilter { Nearest, Linear, Mipmap };
+inline const EnumNames<ChannelFilter> kChannelFilterNames{
+    {"nearest", ChannelFilter::Nearest}, {"linear", ChannelFilter::Linear}, {"mipmap", ChannelFilter::Mipmap}};
+enum class ChannelWrap { Clamp, Repeat };
+inline const EnumNames<ChannelWrap> kChannelWrapNames{{"clamp", ChannelWrap::Clamp}, {"repeat", ChannelWrap::Repeat}};
+
+struct ShadertoyChannel {
+    enum class Kind { None, Buffer, Image, Keyboard, Noise };
+    enum class Frame { Latest, Previous, Current };
+    Kind kind = Kind::None;
+    int buffer = 0;  // Buffer: 0–3 for A–D
+    Frame frame = Frame::Latest;
+    std::filesystem::path image;  // Image (resolved)
+    bool vflip = true;            // Image: row 0 of the file at the top, as ShaderToy shows it
+    bool rgbaNoise = true;        // Noise: four independent channels, else gray in all four
+    int noiseSize = 64;           // Noise: a power of two in [8, 1024]
+    uint32_t noiseSeed = 0;
+    ChannelFilter filter = ChannelFilter::Linear;
+    ChannelWrap wrap = ChannelWrap::Clamp;
+};
+
+struct ShadertoyPass {
+    std::string name;  // buffer_a … buffer_d, image
+    std::filesystem::path code;
+    std::array<ShadertoyChannel, 4> channels{};
+};
+
+struct ShadertoyUniform {
+    enum class Type { Float, Int, Vec2, Vec3, Vec4 };
+    std::string name;
+    Type type = Type::Float;
+    std::array<double, 4> value{};
+};
+inline const EnumNames<ShadertoyUniform::Type> kShadertoyUniformTypeNames{
+    {"float", ShadertoyUniform::Type::Float}, {"int", ShadertoyUniform::Type::Int},
+    {"vec2", ShadertoyUniform::Type::Vec2},   {"vec3", ShadertoyUniform::Type::Vec3},
+    {"vec4", ShadertoyUniform::Type::Vec4}};
+
+struct ShadertoySpec {
+    std::string name;
+    std::filesystem::path common;       // empty: none
+    std::vector<ShadertoyPass> passes;  // the buffers present, in order A–D, then the image pass (last)
+    std::vector<ShadertoyUniform> uniforms;
+    std::string instanceUniform;  // empty: none
+    // The pass that renders buffer b (0–3), or −1 when the program has none.
+    int bufferPass(int buffer) const;
+};
+
+// The names of the passes in ShaderToy's order: buffer_a … buffer_d, image.
+const std::array<const char*, 5>& shadertoyPassNames();
+
+// Reads a program folder or manifest file. InputError naming the file and,
+// for a manifest, the JSON pointer: a missing or unreadable file, an unknown
+// pass, channel type, filter, wrap or uniform type, a channel reading a
+// buffer the program lacks, a pass cycle ("current" reads), a reserved or
+// invalid uniform name.
+ShadertoySpec loadShadertoy(const std::string& path);
+
+}  // namespace stochtex

@@ -1,0 +1,315 @@
+// The ShaderToy host (gpu/shadertoy.h): small programs written for the
+// tests, one per uniform and feature, read back pixel by pixel; programs in
+// the style of real ones render deterministically; bad programs are refused
+// naming the file (and line).
+#include "stochtex/gpu/shadertoy.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "stochtex/core/error.h"
+#include "stochtex/gpu/gl_context.h"
+#include "stochtex/image/image_io.h"
+#include "test_util.h"
+
+namespace stochtex {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Shadertoy : public test::ScratchFolder {
+protected:
+    void SetUp() override {
+        ScratchFolder::SetUp();
+        try {
+            context_ = GlContext::headless();
+        } catch (const GpuUnavailable& e) {
+            GTEST_SKIP() << e.what();
+        }
+    }
+    // Writes a file of the program under the scratch folder; returns its path.
+    std::string write(const std::string& name, const std::string& text) const {
+        const fs::path p = dir_ / name;
+        fs::create_directories(p.parent_path());
+        std::ofstream(p) << text;
+        return p.string();
+    }
+    static ShadertoySettings small(int w = 16, int h = 8) {
+        ShadertoySettings s;
+        s.width = w;
+        s.height = h;
+        return s;
+    }
+    std::unique_ptr<GlContext> context_;
+};
+
+std::string error(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+void expectPixel(const std::array<float, 4>& got, const std::array<float, 4>& want, float tolerance, const std::string& what) {
+    for (int c = 0; c < 4; ++c)
+        EXPECT_NEAR(got[size_t(c)], want[size_t(c)], tolerance) << what << " [" << c << "]";
+}
+
+// iResolution, iTime, iTimeDelta, iFrame, iFrameRate at pixel centres
+// (fragCoord = pixel + ½, y up), frame after frame.
+TEST_F(Shadertoy, TimeAndResolutionUniformsFollowTheFrame) {
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        fragColor = vec4(fragCoord / iResolution.xy, iTime + 100.0 * iTimeDelta, float(iFrame) + iFrameRate * 1000.0);
+    })");
+    ShadertoySettings s = small();
+    s.fps = 30;
+    s.startTime = 2.0;
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), s);
+    for (int frame = 0; frame < 3; ++frame) {
+        host.renderFrame();
+        expectPixel(host.pixel("image", 3, 5), {3.5f / 16, 5.5f / 8, float(2.0 + frame / 30.0 + 100.0 / 30), 30000.0f + frame},
+                    1e-4f, "frame " + std::to_string(frame));
+    }
+    // image(): row 0 at the top, so fragCoord.y = h − ½ there.
+    const Image top = host.image();
+    EXPECT_NEAR(top.at(0, 0, 1), 7.5f / 8, 1e-6);
+    EXPECT_NEAR(top.at(0, 7, 1), 0.5f / 8, 1e-6);
+}
+
+// A buffer reading its own previous frame counts frames (feedback); the
+// image reads it as latest (this frame's), previous and current.
+TEST_F(Shadertoy, BufferFeedbackCountsFramesAndFramesReadAsAsked) {
+    write("p/a.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        fragColor = texelFetch(iChannel0, ivec2(fragCoord), 0) + vec4(1.0, 0.0, 0.0, 0.0);
+    })");
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        ivec2 p = ivec2(fragCoord);
+        fragColor = vec4(texelFetch(iChannel0, p, 0).x, texelFetch(iChannel1, p, 0).x, texelFetch(iChannel2, p, 0).x, 0.0);
+    })");
+    const std::string manifest = write("p/shadertoy.json", R"({"name": "counter", "passes": {
+        "buffer_a": {"code": "a.glsl", "channels": [{"type": "buffer", "buffer": "a"}]},
+        "image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "a"},
+                  {"type": "buffer", "buffer": "a", "frame": "previous"}, {"type": "buffer", "buffer": "a", "frame": "current"}]}}})");
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), small());
+    for (int frame = 0; frame < 5; ++frame) host.renderFrame();
+    expectPixel(host.pixel("buffer_a", 7, 2), {5, 0, 0, 0}, 0, "buffer_a after 5 frames");
+    expectPixel(host.pixel("image", 7, 2), {5, 4, 5, 0}, 0, "latest, previous, current");
+    host.reset();
+    host.renderFrame();
+    expectPixel(host.pixel("buffer_a", 0, 0), {1, 0, 0, 0}, 0, "after reset");
+    (void)manifest;
+}
+
+// Channel filters and wraps on a 4×1 image of known texels (vflip off):
+// nearest and linear between texels, repeat and clamp outside [0, 1].
+TEST_F(Shadertoy, ChannelFilterAndWrapSampleAsAsked) {
+    Image img(4, 1, 1);
+    const float texels[4] = {0.0f, 0.25f, 0.5f, 1.0f};
+    for (int x = 0; x < 4; ++x) img.at(x, 0) = texels[x];
+    fs::create_directories(dir_ / "p");
+    writeImage((dir_ / "p/strip.exr").string(), img);
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        // u = 0.25: between texels 0 and 1 (centres 0.125, 0.375); u = 1.125: texel 0 again or clamped to 3.
+        fragColor = vec4(texture(iChannel0, vec2(0.25, 0.5)).x, texture(iChannel1, vec2(0.25, 0.5)).x,
+                         texture(iChannel1, vec2(1.125, 0.5)).x, texture(iChannel2, vec2(1.125, 0.5)).x);
+    })");
+    write("p/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [
+        {"type": "image", "path": "strip.exr", "filter": "nearest", "wrap": "repeat", "vflip": false},
+        {"type": "image", "path": "strip.exr", "filter": "linear", "wrap": "repeat", "vflip": false},
+        {"type": "image", "path": "strip.exr", "filter": "linear", "wrap": "clamp", "vflip": false}]}}})");
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), small(4, 4));
+    host.renderFrame();
+    // Nearest at the boundary u = 0.25 takes texel 1; linear the mean of 0 and 1;
+    // repeat at 1.125 is u = 0.125, texel 0's centre; clamp is texel 3.
+    expectPixel(host.pixel("image", 1, 1), {0.25f, 0.125f, 0.0f, 1.0f}, 1e-3f, "filter and wrap");
+}
+
+// The keyboard texture: row 0 held, row 1 pressed this frame only, row 2 toggled.
+TEST_F(Shadertoy, KeyboardTextureHoldsPressesAndToggles) {
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        fragColor = vec4(texelFetch(iChannel0, ivec2(65, 0), 0).x, texelFetch(iChannel0, ivec2(65, 1), 0).x,
+                         texelFetch(iChannel0, ivec2(65, 2), 0).x, texelFetch(iChannel0, ivec2(66, 0), 0).x);
+    })");
+    write("p/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "keyboard"}]}}})");
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), small());
+    host.renderFrame();
+    expectPixel(host.pixel("image", 0, 0), {0, 0, 0, 0}, 0, "no key");
+    host.setKey(65, true);
+    host.renderFrame();
+    expectPixel(host.pixel("image", 0, 0), {1, 1, 1, 0}, 0, "A pressed");
+    host.renderFrame();
+    expectPixel(host.pixel("image", 0, 0), {1, 0, 1, 0}, 0, "A held");
+    host.setKey(65, false);
+    host.renderFrame();
+    expectPixel(host.pixel("image", 0, 0), {0, 0, 1, 0}, 0, "A released, still toggled");
+    host.setKey(65, true);
+    host.renderFrame();
+    expectPixel(host.pixel("image", 0, 0), {1, 1, 0, 0}, 0, "A pressed again, toggled back");
+    EXPECT_NE(error([&] { host.setKey(300, true); }).find("key codes are 0–255"), std::string::npos);
+}
+
+// iDate from the settings' date plus iTime, iMouse as given, iChannelResolution of each channel.
+TEST_F(Shadertoy, DateMouseAndChannelResolution) {
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        fragColor = fragCoord.x < 1.0 ? iDate : fragCoord.x < 2.0 ? iMouse
+                  : vec4(iChannelResolution[0].xy, iChannelResolution[1].xy);
+    })");
+    write("p/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [
+        {"type": "noise", "size": 32}, {"type": "keyboard"}]}}})");
+    ShadertoySettings s = small(4, 2);
+    s.date = {2031, 7, 14, 9, 30, 5};
+    s.startTime = 1.5;
+    s.mouse = {10, 20, 3, 4};
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), s);
+    host.renderFrame();
+    expectPixel(host.pixel("image", 0, 0), {2031, 6, 14, 9 * 3600 + 30 * 60 + 5 + 1.5f}, 1e-2f, "iDate");
+    expectPixel(host.pixel("image", 1, 0), {10, 20, 3, 4}, 0, "iMouse");
+    expectPixel(host.pixel("image", 2, 0), {32, 32, 256, 3}, 0, "iChannelResolution");
+    host.setMouse({1, 2, -1, -2});
+    host.renderFrame();
+    expectPixel(host.pixel("image", 1, 0), {1, 2, -1, -2}, 0, "iMouse moved");
+}
+
+// Noise textures: in [0, 1), deterministic by seed, gray in all channels;
+// a Common file's functions reach every pass; the program's own uniforms
+// and its instance uniform.
+TEST_F(Shadertoy, NoiseCommonAndOwnUniforms) {
+    write("p/common.glsl", "float twice(float x) { return 2.0 * x; }\n");
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        vec4 n = texelFetch(iChannel0, ivec2(fragCoord), 0), g = texelFetch(iChannel1, ivec2(fragCoord), 0);
+        fragColor = fragCoord.y < 1.0 ? n : fragCoord.y < 2.0 ? vec4(g.x - g.y, g.x - g.w, twice(uGain), float(uInstance))
+                  : vec4(uOffset, 0.0, 0.0);
+    })");
+    write("p/shadertoy.json", R"({"common": "common.glsl", "instance": "uInstance",
+        "uniforms": {"uGain": {"type": "float", "value": 0.75}, "uInstance": {"type": "int"}, "uOffset": {"type": "vec2", "value": [3, -4]}},
+        "passes": {"image": {"code": "image.glsl", "channels": [{"type": "noise", "size": 8, "seed": 3, "filter": "nearest"},
+                                                                {"type": "noise", "kind": "gray", "size": 8}]}}})");
+    const ShadertoySpec spec = loadShadertoy((dir_ / "p").string());
+    ShadertoyHost host(spec, small(8, 3));
+    host.reset(7);
+    host.renderFrame();
+    const Image a = host.image();
+    double lo = 1, hi = 0;
+    for (int x = 0; x < 8; ++x)
+        for (int c = 0; c < 3; ++c) lo = std::min(lo, double(a.at(x, 2, c))), hi = std::max(hi, double(a.at(x, 2, c)));
+    EXPECT_GE(lo, 0.0);
+    EXPECT_LT(hi, 1.0);
+    EXPECT_GT(hi - lo, 0.3);  // not a constant
+    expectPixel(host.pixel("image", 4, 1), {0, 0, 1.5f, 7}, 0, "gray noise, common, uniforms");
+    expectPixel(host.pixel("image", 4, 2), {3, -4, 0, 0}, 0, "vec2 uniform");
+    ShadertoyHost again(spec, small(8, 3));
+    again.reset(7);
+    again.renderFrame();
+    const Image b = again.image();
+    EXPECT_EQ(a.data(), b.data());
+}
+
+// A program in the style of real ones: a Common file, two buffers that read
+// each other (one this frame's, one the previous frame's), a noise and an
+// image texture with mipmaps, the image pass reading both buffers; renders
+// without error and the same twice, frame for frame.
+TEST_F(Shadertoy, MultiBufferProgramRendersDeterministically) {
+    Image img(16, 16, 3);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 3; ++c) img.at(x, y, c) = float((x * 3 + y * 5 + c * 7) % 16) / 15.0f;
+    fs::create_directories(dir_ / "p");
+    writeImage((dir_ / "p/tex.png").string(), img);
+    write("p/common.glsl", "#define PI 3.14159265\nvec2 rot(vec2 p, float a) { return mat2(cos(a), sin(a), -sin(a), cos(a)) * p; }\n");
+    write("p/a.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        vec2 uv = fragCoord / iResolution.xy;
+        vec4 prev = texture(iChannel0, uv);
+        vec4 n = texture(iChannel1, rot(uv, iTime) * 2.0);
+        fragColor = mix(prev, n, 0.1);
+    })");
+    write("p/b.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        vec2 uv = fragCoord / iResolution.xy;
+        fragColor = textureLod(iChannel0, uv + 0.01 * sin(iTime * PI), 2.0) * texture(iChannel1, uv);
+    })");
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        vec2 uv = fragCoord / iResolution.xy;
+        fragColor = vec4(0.5 * texture(iChannel0, uv).rgb + 0.5 * texture(iChannel1, uv).rgb, 1.0);
+    })");
+    write("p/shadertoy.json", R"({"name": "real-world", "common": "common.glsl", "passes": {
+        "buffer_a": {"code": "a.glsl", "channels": [{"type": "buffer", "buffer": "a"}, {"type": "noise", "size": 64}]},
+        "buffer_b": {"code": "b.glsl", "channels": [{"type": "buffer", "buffer": "a", "filter": "mipmap"}, {"type": "image", "path": "tex.png"}]},
+        "image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "a"}, {"type": "buffer", "buffer": "b"}]}}})");
+    const ShadertoySpec spec = loadShadertoy((dir_ / "p").string());
+    std::vector<Image> runs[2];
+    for (auto& frames : runs) {
+        ShadertoyHost host(spec, small(64, 48));
+        renderShadertoyFrames(host, 6, [&](int, const Image& f) { frames.push_back(f); });
+    }
+    ASSERT_EQ(runs[0].size(), 6u);
+    for (size_t k = 0; k < 6; ++k) EXPECT_EQ(runs[0][k].data(), runs[1][k].data()) << "frame " << k;
+    double change = 0;
+    for (size_t i = 0; i < runs[0][5].data().size(); ++i) change += std::abs(runs[0][5].data()[i] - runs[0][0].data()[i]);
+    EXPECT_GT(change, 1.0);  // the buffers evolve
+}
+
+// A program's frames through the texture-source interface: a window of the
+// frame at a time, the instance uniform per instance, refusals outside.
+TEST_F(Shadertoy, FramesFeedTheStudiesAsATextureSource) {
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        fragColor = vec4(float(iFrame), float(uInstance), fragCoord.x, 1.0);
+    })");
+    write("p/shadertoy.json", R"({"instance": "uInstance", "uniforms": {"uInstance": {"type": "int"}},
+        "passes": {"image": {"code": "image.glsl"}}})");
+    ShadertoySettings s = small(16, 8);
+    s.fps = 10;
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), s);
+    const ShadertoySource source(host);
+    const Image a = source.render({4, 2, -5, -3}, 0.5, 2);  // frame pixels x 3–6, rows 1–2 (centre (8, 4))
+    EXPECT_EQ(a.width(), 4);
+    EXPECT_EQ(a.at(0, 0, 0), 5.0f);  // t = 0.5 s at 10 fps
+    EXPECT_EQ(a.at(0, 0, 1), 2.0f);
+    EXPECT_EQ(a.at(1, 0, 2), 4.5f);
+    const Image b = source.render({4, 2, -5, -3}, 0.2, 0);  // earlier: replayed from frame 0
+    EXPECT_EQ(b.at(0, 0, 0), 2.0f);
+    EXPECT_EQ(b.at(0, 0, 1), 0.0f);
+    EXPECT_NE(error([&] { source.checkWindow(SourceRegion::centred(20, 2), 0); }).find("exceeds the 16x8 frame"),
+              std::string::npos);
+    EXPECT_NE(error([&] { source.checkWindow(SourceRegion::centred(4, 2), -1); }).find("at or after the program's start"),
+              std::string::npos);
+    const Image whole = source.render(SourceRegion::centred(16, 8), 0.5, 2);
+    EXPECT_EQ(whole.at(0, 0, 2), 0.5f);  // the whole frame from its first pixel
+}
+
+TEST_F(Shadertoy, BadProgramsAreRefusedNamingTheFileAndLine) {
+    const std::string image = write("bad/image.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0);\n    c.x = undefinedThing;\n}\n");
+    std::string e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "bad").string()), small()); });
+    EXPECT_NE(e.find(image + ":3"), std::string::npos) << e;
+    e = error([&] { (void)loadShadertoy((dir_ / "none").string()); });
+    EXPECT_NE(e.find("no such ShaderToy folder or manifest"), std::string::npos) << e;
+    write("empty/common.glsl", "\n");
+    e = error([&] { (void)loadShadertoy((dir_ / "empty").string()); });
+    EXPECT_NE(e.find("a ShaderToy folder needs image.glsl"), std::string::npos) << e;
+    write("m/image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }\n");
+    const auto manifestError = [&](const std::string& text) {
+        write("m/shadertoy.json", text);
+        return error([&] { ShadertoyHost host(loadShadertoy((dir_ / "m").string()), small()); });
+    };
+    e = manifestError(R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "image", "path": "missing.png"}]}}})");
+    EXPECT_NE(e.find("missing.png"), std::string::npos) << e;
+    e = manifestError(R"({"passes": {"buffer_a": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "b", "frame": "current"}]},
+        "buffer_b": {"code": "image.glsl"}, "image": {"code": "image.glsl"}}})");
+    EXPECT_NE(e.find("/passes/buffer_a/channels/0/frame: a pass cycle"), std::string::npos) << e;
+    e = manifestError(R"({"uniforms": {"uX": {"type": "mat3"}}, "passes": {"image": {"code": "image.glsl"}}})");
+    EXPECT_NE(e.find("/uniforms/uX/type: unknown value \"mat3\""), std::string::npos) << e;
+    e = manifestError(R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "c"}]}}})");
+    EXPECT_NE(e.find("/passes/image/channels/0/buffer: the program has no pass \"buffer_c\""), std::string::npos) << e;
+    e = manifestError(R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "video"}]}}})");
+    EXPECT_NE(e.find("/passes/image/channels/0/type: unknown value \"video\""), std::string::npos) << e;
+    e = manifestError(R"({"uniforms": {"iTime": {"type": "float"}}, "passes": {"image": {"code": "image.glsl"}}})");
+    EXPECT_NE(e.find("/uniforms/iTime: not a usable uniform name"), std::string::npos) << e;
+    e = manifestError(R"({"passes": {"buffer_a": {"code": "image.glsl"}}})");
+    EXPECT_NE(e.find("/passes: needs an \"image\" pass"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace stochtex
