@@ -45,7 +45,7 @@ void registerShadertoy(CLI::App& app) {
         const ShadertoySettings settings = shadertoySettings(a.flags);
         const auto start = std::chrono::steady_clock::now();
         auto context = GlContext::headless();
-        ShadertoyHost host(spec, settings);
+        ShadertoyHost host(spec, *context, settings);
         for (const int key : a.flags.keys) host.setKey(key, true);
         std::unique_ptr<FrameSequenceWriter> frames;
         if (!a.output.empty() && !image)

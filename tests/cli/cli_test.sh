@@ -325,6 +325,7 @@ case_shadertoy() {
   expect_ok "spectrum of a shadertoy frame" "$out/sts/index.html" -- "$bin" spectrum -o "$out/sts" --size 64 shadertoy "$src/data/shadertoy/swirl" --size 96,80 --first-frame 120
   [ -s "$out/sts/spectrum.csv" ] || fail "spectrum of a shadertoy frame: spectrum.csv not written"
   expect_bad "spectrum window outside the frame" "$out/stw" "--size: size of the window, 128x128 at (-64, -64) from the centre, exceeds the 96x80 frame" -- "$bin" spectrum -o "$out/stw" --size 128 shadertoy "$src/data/shadertoy/swirl" --size 96,80
+  expect_ok "shadertoy with a pattern" "$out/stp.png" -- "$bin" shadertoy "$src/data/shadertoy/pattern-zoom" --size 64,36 --time 5 -o "$out/stp.png"
   expect_bad "shadertoy date" "$out/std.png" "--date: expected YYYY-MM-DD" -- "$bin" shadertoy "$work/st" --date yesterday -o "$out/std.png"
 }
 

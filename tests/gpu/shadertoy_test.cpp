@@ -7,12 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/presets.h"
 #include "test_util.h"
 
 namespace stochtex {
@@ -69,7 +72,7 @@ TEST_F(Shadertoy, TimeAndResolutionUniformsFollowTheFrame) {
     ShadertoySettings s = small();
     s.fps = 30;
     s.startTime = 2.0;
-    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), s);
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, s);
     for (int frame = 0; frame < 3; ++frame) {
         host.renderFrame();
         expectPixel(host.pixel("image", 3, 5), {3.5f / 16, 5.5f / 8, float(2.0 + frame / 30.0 + 100.0 / 30), 30000.0f + frame},
@@ -95,7 +98,7 @@ TEST_F(Shadertoy, BufferFeedbackCountsFramesAndFramesReadAsAsked) {
         "buffer_a": {"code": "a.glsl", "channels": [{"type": "buffer", "buffer": "a"}]},
         "image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "a"},
                   {"type": "buffer", "buffer": "a", "frame": "previous"}, {"type": "buffer", "buffer": "a", "frame": "current"}]}}})");
-    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), small());
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, small());
     for (int frame = 0; frame < 5; ++frame) host.renderFrame();
     expectPixel(host.pixel("buffer_a", 7, 2), {5, 0, 0, 0}, 0, "buffer_a after 5 frames");
     expectPixel(host.pixel("image", 7, 2), {5, 4, 5, 0}, 0, "latest, previous, current");
@@ -122,7 +125,7 @@ TEST_F(Shadertoy, ChannelFilterAndWrapSampleAsAsked) {
         {"type": "image", "path": "strip.exr", "filter": "nearest", "wrap": "repeat", "vflip": false},
         {"type": "image", "path": "strip.exr", "filter": "linear", "wrap": "repeat", "vflip": false},
         {"type": "image", "path": "strip.exr", "filter": "linear", "wrap": "clamp", "vflip": false}]}}})");
-    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), small(4, 4));
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, small(4, 4));
     host.renderFrame();
     // Nearest at the boundary u = 0.25 takes texel 1; linear the mean of 0 and 1;
     // repeat at 1.125 is u = 0.125, texel 0's centre; clamp is texel 3.
@@ -136,7 +139,7 @@ TEST_F(Shadertoy, KeyboardTextureHoldsPressesAndToggles) {
                          texelFetch(iChannel0, ivec2(65, 2), 0).x, texelFetch(iChannel0, ivec2(66, 0), 0).x);
     })");
     write("p/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "keyboard"}]}}})");
-    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), small());
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, small());
     host.renderFrame();
     expectPixel(host.pixel("image", 0, 0), {0, 0, 0, 0}, 0, "no key");
     host.setKey(65, true);
@@ -165,7 +168,7 @@ TEST_F(Shadertoy, DateMouseAndChannelResolution) {
     s.date = {2031, 7, 14, 9, 30, 5};
     s.startTime = 1.5;
     s.mouse = {10, 20, 3, 4};
-    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), s);
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, s);
     host.renderFrame();
     expectPixel(host.pixel("image", 0, 0), {2031, 6, 14, 9 * 3600 + 30 * 60 + 5 + 1.5f}, 1e-2f, "iDate");
     expectPixel(host.pixel("image", 1, 0), {10, 20, 3, 4}, 0, "iMouse");
@@ -190,7 +193,7 @@ TEST_F(Shadertoy, NoiseCommonAndOwnUniforms) {
         "passes": {"image": {"code": "image.glsl", "channels": [{"type": "noise", "size": 8, "seed": 3, "filter": "nearest"},
                                                                 {"type": "noise", "kind": "gray", "size": 8}]}}})");
     const ShadertoySpec spec = loadShadertoy((dir_ / "p").string());
-    ShadertoyHost host(spec, small(8, 3));
+    ShadertoyHost host(spec, *context_, small(8, 3));
     host.reset(7);
     host.renderFrame();
     const Image a = host.image();
@@ -202,7 +205,7 @@ TEST_F(Shadertoy, NoiseCommonAndOwnUniforms) {
     EXPECT_GT(hi - lo, 0.3);  // not a constant
     expectPixel(host.pixel("image", 4, 1), {0, 0, 1.5f, 7}, 0, "gray noise, common, uniforms");
     expectPixel(host.pixel("image", 4, 2), {3, -4, 0, 0}, 0, "vec2 uniform");
-    ShadertoyHost again(spec, small(8, 3));
+    ShadertoyHost again(spec, *context_, small(8, 3));
     again.reset(7);
     again.renderFrame();
     const Image b = again.image();
@@ -242,7 +245,7 @@ TEST_F(Shadertoy, MultiBufferProgramRendersDeterministically) {
     const ShadertoySpec spec = loadShadertoy((dir_ / "p").string());
     std::vector<Image> runs[2];
     for (auto& frames : runs) {
-        ShadertoyHost host(spec, small(64, 48));
+        ShadertoyHost host(spec, *context_, small(64, 48));
         renderShadertoyFrames(host, 6, [&](int, const Image& f) { frames.push_back(f); });
     }
     ASSERT_EQ(runs[0].size(), 6u);
@@ -262,7 +265,7 @@ TEST_F(Shadertoy, FramesFeedTheStudiesAsATextureSource) {
         "passes": {"image": {"code": "image.glsl"}}})");
     ShadertoySettings s = small(16, 8);
     s.fps = 10;
-    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), s);
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, s);
     const ShadertoySource source(host);
     const Image a = source.render({4, 2, -5, -3}, 0.5, 2);  // frame pixels x 3–6, rows 1–2 (centre (8, 4))
     EXPECT_EQ(a.width(), 4);
@@ -280,9 +283,41 @@ TEST_F(Shadertoy, FramesFeedTheStudiesAsATextureSource) {
     EXPECT_EQ(whole.at(0, 0, 2), 0.5f);  // the whole frame from its first pixel
 }
 
+// A program with a pattern: stochtex_sample(uv) is the filtered pattern
+// (the export's include, the footprint from the fragment's derivatives), as
+// the CPU filters it over the same zoom view; a graph pattern too.
+TEST_F(Shadertoy, PatternIncludeSamplesTheFilteredPattern) {
+    for (const std::string preset : {"camouflage", "figure14"}) {
+        const PatternSpec spec = loadPreset(preset);
+        const int w = needsGraphEvaluator(spec) ? GraphPattern::build(spec).exampleSize() : Pattern::build(spec).exampleSize();
+        const double scale = 3.0;
+        write("pat/image.glsl", "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                "    vec2 uv = vec2(fragCoord.x, iResolution.y - fragCoord.y) * " + std::to_string(scale) +
+                                " / " + std::to_string(w) + ".0;\n    fragColor = stochtex_sample(uv);\n}\n");
+        write("pat/shadertoy.json", R"({"pattern": {"preset": ")" + preset + R"(", "filter": "smooth"},
+            "passes": {"image": {"code": "image.glsl", "channels": [{"type": "noise"}]}}})");
+        ShadertoyHost host(loadShadertoy((dir_ / "pat").string()), *context_, small(48, 32));
+        host.renderFrame();
+        const Image gpu = host.image();
+        Camera cam;
+        cam.view = {48, 32, scale};
+        FilterOptions o;
+        o.use(parseFilter("smooth"));
+        const Image cpu = needsGraphEvaluator(spec) ? FilteredGraph(GraphPattern::build(spec), o).render(cam)
+                                                    : FilteredPattern(Pattern::build(spec), o).render(cam);
+        double mean = 0;
+        for (size_t i = 0; i < cpu.data().size(); ++i) mean += std::abs(double(gpu.data()[i]) - cpu.data()[i]);
+        mean /= double(cpu.data().size());
+        std::printf("[ info ] %s through stochtex_sample: mean |ShaderToy - CPU| %.2e\n", preset.c_str(), mean);
+        EXPECT_LT(mean, 2e-4) << preset;
+    }
+    write("pat/shadertoy.json", R"({"pattern": {"preset": "nope"}, "passes": {"image": {"code": "image.glsl"}}})");
+    EXPECT_NE(error([&] { (void)loadShadertoy((dir_ / "pat").string()); }).find("/pattern/preset: "), std::string::npos);
+}
+
 TEST_F(Shadertoy, BadProgramsAreRefusedNamingTheFileAndLine) {
     const std::string image = write("bad/image.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0);\n    c.x = undefinedThing;\n}\n");
-    std::string e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "bad").string()), small()); });
+    std::string e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "bad").string()), *context_, small()); });
     EXPECT_NE(e.find(image + ":3"), std::string::npos) << e;
     e = error([&] { (void)loadShadertoy((dir_ / "none").string()); });
     EXPECT_NE(e.find("no such ShaderToy folder or manifest"), std::string::npos) << e;
@@ -292,7 +327,7 @@ TEST_F(Shadertoy, BadProgramsAreRefusedNamingTheFileAndLine) {
     write("m/image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }\n");
     const auto manifestError = [&](const std::string& text) {
         write("m/shadertoy.json", text);
-        return error([&] { ShadertoyHost host(loadShadertoy((dir_ / "m").string()), small()); });
+        return error([&] { ShadertoyHost host(loadShadertoy((dir_ / "m").string()), *context_, small()); });
     };
     e = manifestError(R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "image", "path": "missing.png"}]}}})");
     EXPECT_NE(e.find("missing.png"), std::string::npos) << e;

@@ -9,7 +9,9 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
+#include "stochtex/gpu/export.h"
 #include "stochtex/gpu/gl_objects.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 
@@ -37,6 +39,7 @@ void deleteSampler(GLuint id) { glDeleteSamplers(1, &id); }
 using Sampler = gl::Handle<deleteSampler>;
 
 constexpr int kKeys = 256;
+constexpr int kPatternUnits = 16;  // a pattern's GpuView binds at most these (checkGraphTextureUnits)
 
 // The uniforms every pass declares (ShaderToy's), then the program's own,
 // and the output; mainImage's wrapper after the user's files.
@@ -137,6 +140,8 @@ struct ShadertoyHost::Impl {
         std::array<std::array<int, 2>, 4> inputSize{};
     };
     std::vector<Pass> passes;
+    std::unique_ptr<GpuView> pattern;  // the stochtex_sample include's textures and parameters
+    int channelUnit = 0;               // iChannel0's texture unit
     gl::Texture keyboard;
     std::array<float, kKeys * 3> keys{};  // rows: down, pressed this frame, toggled
     int frame = 0;
@@ -197,6 +202,7 @@ struct ShadertoyHost::Impl {
         glBindFramebuffer(GL_FRAMEBUFFER, pass.targets[size_t(write)].framebuffer.id());
         glViewport(0, 0, settings.width, settings.height);
         const GLuint prog = pass.program.id();
+        if (pattern) pattern->bind(prog);  // units 0–15 and the parameter block
         glUseProgram(prog);
         const auto loc = [&](const char* name) { return glGetUniformLocation(prog, name); };
         const float t = float(time());
@@ -226,11 +232,12 @@ struct ShadertoyHost::Impl {
         for (size_t i = 0; i < 4; ++i) {
             std::array<int, 2> size{};
             const GLuint tex = channelTexture(p, i, size);
-            glActiveTexture(GLenum(GL_TEXTURE0 + i));
+            const GLuint unit = GLuint(channelUnit) + GLuint(i);
+            glActiveTexture(GL_TEXTURE0 + unit);
             glBindTexture(GL_TEXTURE_2D, tex);
-            glBindSampler(GLuint(i), pass.samplers[i].id());
+            glBindSampler(unit, pass.samplers[i].id());
             const std::string name = "iChannel" + std::to_string(i);
-            glUniform1i(loc(name.c_str()), GLint(i));
+            glUniform1i(loc(name.c_str()), GLint(unit));
             resolutions[3 * i] = float(size[0]);
             resolutions[3 * i + 1] = float(size[1]);
             resolutions[3 * i + 2] = size[0] > 0 ? 1.0f : 0.0f;
@@ -239,7 +246,7 @@ struct ShadertoyHost::Impl {
         glUniform1fv(loc("iChannelTime"), 4, times);
         glBindVertexArray(vao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        for (GLuint i = 0; i < 4; ++i) glBindSampler(i, 0);
+        for (GLuint i = 0; i < 4; ++i) glBindSampler(GLuint(channelUnit) + i, 0);
         if (pass.mipmaps) {
             glBindTexture(GL_TEXTURE_2D, pass.targets[size_t(write)].texture.id());
             glGenerateMipmap(GL_TEXTURE_2D);
@@ -249,18 +256,33 @@ struct ShadertoyHost::Impl {
     }
 };
 
-ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, const ShadertoySettings& settings)
+ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, const ShadertoySettings& settings)
     : impl_(std::make_unique<Impl>()) {
     validateShadertoySettings(settings);
     Impl& m = *impl_;
     m.spec = spec;
     m.settings = settings;
+    context.makeCurrent();
+    // The pattern's include and its textures: the channels then take the units after the pattern's 16.
+    std::string include;
+    if (spec.pattern) {
+        GLint units = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+        if (units < kPatternUnits + 4)
+            throw InputError(spec.name + ": a program with a pattern needs " + std::to_string(kPatternUnits + 4) +
+                             " texture units; this GL has " + std::to_string(units));
+        m.channelUnit = kPatternUnits;
+        m.pattern = makeGpuView(*spec.pattern, context, spec.patternFilter);
+        include = needsGraphEvaluator(*spec.pattern) ? exportedGraphInclude(GraphPattern::build(*spec.pattern))
+                                                     : exportedShaderInclude(spec.patternFilter.response.kind);
+    }
     m.vao = gl::newVertexArray();
     m.keyboard = gl::newTexture();
     m.uploadKeyboard();
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     std::vector<std::pair<std::string, std::string>> sources{{"shadertoy_prelude", prelude(spec)},
-                                                             {"shadertoy_main", kMain}};
+                                                             {"shadertoy_main", kMain},
+                                                             {"stochtex_pattern", include}};
     if (!spec.common.empty()) sources.push_back(readShaderFile(spec.common.string()));
     // Which buffers some channel reads with mipmaps.
     std::array<bool, 4> mipmapped{};
@@ -272,6 +294,7 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, const ShadertoySettings&
         std::vector<std::pair<std::string, std::string>> overrides = sources;
         overrides.push_back(readShaderFile(pass.code.string()));
         std::vector<std::string> files{"shadertoy_prelude"};
+        if (spec.pattern) files.insert(files.end(), {"colour", "stochtex_pattern"});
         if (!spec.common.empty()) files.push_back(spec.common.string());
         files.push_back(pass.code.string());
         files.push_back("shadertoy_main");

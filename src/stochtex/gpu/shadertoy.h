@@ -42,11 +42,11 @@ void validateShadertoySettings(const ShadertoySettings& s);
 
 class ShadertoyHost {
 public:
-    // Compiles every pass and loads its channels on the current context.
-    // InputError: a pass that does not compile (the compiler's messages as
-    // "file:line" of the user's files), an unreadable channel image, bad
-    // settings.
-    ShadertoyHost(const ShadertoySpec& spec, const ShadertoySettings& settings);
+    // Compiles every pass and loads its channels (and the program's pattern)
+    // on the context, which must outlive the host. InputError: a pass that
+    // does not compile (the compiler's messages as "file:line" of the
+    // user's files), an unreadable channel image, bad settings.
+    ShadertoyHost(const ShadertoySpec& spec, GlContext& context, const ShadertoySettings& settings);
     ~ShadertoyHost();
     ShadertoyHost(const ShadertoyHost&) = delete;
     ShadertoyHost& operator=(const ShadertoyHost&) = delete;

@@ -7,6 +7,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/pattern/presets.h"
 
 namespace stochtex {
 
@@ -89,7 +90,7 @@ ShadertoyChannel parseChannel(const JsonReader& c, const fs::path& baseDir) {
 }
 
 ShadertoySpec parseManifest(const JsonReader& r, const fs::path& baseDir) {
-    r.expectObject({"name", "description", "common", "passes", "uniforms", "instance"});
+    r.expectObject({"name", "description", "common", "passes", "uniforms", "instance", "pattern"});
     ShadertoySpec spec;
     spec.name = r.string("name", "shadertoy");
     if (r.has("common")) {
@@ -163,6 +164,22 @@ ShadertoySpec parseManifest(const JsonReader& r, const fs::path& baseDir) {
                                      [&](const ShadertoyUniform& u) { return u.name == spec.instanceUniform; });
         if (it == spec.uniforms.end() || it->type != ShadertoyUniform::Type::Int)
             r.at("instance").fail("must name an int uniform of \"uniforms\"");
+    }
+    if (const auto pattern = r.find("pattern")) {
+        pattern->expectObject({"preset", "file", "filter"});
+        if (pattern->has("preset") == pattern->has("file")) pattern->fail("needs one of \"preset\" or \"file\"");
+        if (pattern->has("preset")) {
+            const JsonReader preset = pattern->at("preset");
+            try {
+                spec.pattern = loadPreset(preset.string());
+            } catch (const InputError& e) {
+                preset.fail(e.what());
+            }
+        } else {
+            spec.pattern = loadPatternFile(resolveInputPath(pattern->at("file"), baseDir).string());
+        }
+        const std::string filter = pattern->choice("filter", std::string("smooth"), {"paper", "smooth"});
+        spec.patternFilter.use(parseFilter(filter));
     }
     return spec;
 }

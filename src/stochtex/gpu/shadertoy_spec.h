@@ -16,7 +16,8 @@
 //     "passes": { "buffer_a": { "code": "a.glsl", "channels": [CHANNEL, …] },
 //                 "image":    { "code": "image.glsl", "channels": [ … ] } },
 //     "uniforms": { "uGain": {"type": "float", "value": 0.5}, … },
-//     "instance": "uInstance" }
+//     "instance": "uInstance",
+//     "pattern": { "preset": "marble" | "file": "p.json", "filter": "smooth" } }
 //   CHANNEL (up to four, null for none):
 //     {"type": "buffer", "buffer": "a", "frame": "latest" | "previous" | "current"}
 //     {"type": "image", "path": "tex.png", "vflip": true}
@@ -29,6 +30,11 @@
 //   "uniforms" adds the program's own (float, int, vec2, vec3, vec4); the
 //   int uniform named by "instance" is the instance of a texture source
 //   (a seed for statistics over instances).
+//   "pattern" gives every pass a stochtex pattern (a preset, or a pattern
+//   or graph file) as the include `stochtex bake` exports: vec4
+//   stochtex_sample(vec2 uv), uv in example periods, the footprint from the
+//   fragment's derivatives, filtered ("paper" or "smooth"), linear light
+//   (srgbFromLinear3 turns it into display codes).
 //
 // Passes run in ShaderToy's order, Buffer A to D, then Image. A buffer read
 // as "latest" gives its last output: this frame's when it runs before the
@@ -38,10 +44,13 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "stochtex/core/enum_names.h"
+#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/pattern_spec.h"
 
 namespace stochtex {
 
@@ -89,6 +98,8 @@ struct ShadertoySpec {
     std::vector<ShadertoyPass> passes;  // the buffers present, in order A–D, then the image pass (last)
     std::vector<ShadertoyUniform> uniforms;
     std::string instanceUniform;  // empty: none
+    std::optional<PatternSpec> pattern;  // the stochtex_sample include's pattern
+    FilterOptions patternFilter;         // its filter (estimators: paper or smooth)
     // The pass that renders buffer b (0–3), or −1 when the program has none.
     int bufferPass(int buffer) const;
 };
