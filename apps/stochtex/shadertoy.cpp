@@ -39,14 +39,15 @@ void registerShadertoy(CLI::App& app) {
         const bool image = !a.output.empty() && isSupportedImagePath(a.output);
         if (image) checkImageOutput(a.output);
         if (a.sheet && !image) throw InputError("--sheet: needs an image output");
-        if (a.sheet && (a.frames < 1 || a.frames > 64)) throw InputError("--sheet: shows 1 to 64 frames, got " + std::to_string(a.frames));
+        if (a.frames < 1 || a.frames > 1000000) throw InputError("--frames: must be in [1, 1000000], got " + std::to_string(a.frames));
         const Inspect inspect = parseInspect(a.inspect);
         const ShadertoySpec spec = loadShadertoy(a.program);
         const ShadertoySettings settings = shadertoySettings(a.flags);
+        if (a.sheet) checkSheet(a.frames, settings.width, settings.height);
         const auto start = std::chrono::steady_clock::now();
         auto context = GlContext::headless();
         ShadertoyHost host(spec, *context, settings);
-        for (const int key : a.flags.keys) host.setKey(key, true);
+        if (!inspect.pass.empty()) host.checkPixel(inspect.pass, inspect.x, inspect.y);
         std::unique_ptr<FrameSequenceWriter> frames;
         if (!a.output.empty() && !image)
             frames = std::make_unique<FrameSequenceWriter>(a.output, settings.width, settings.height, settings.fps, "",

@@ -34,8 +34,7 @@ ShadertoySettings shadertoySettings(const ShadertoyFlags& f) {
     std::smatch m;
     if (!std::regex_match(f.date, m, date)) throw InputError("--date: expected YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS, got \"" + f.date + "\"");
     for (int k = 0; k < 6; ++k) s.date[size_t(k)] = m[k + 1].matched ? std::stoi(m[k + 1].str()) : 0;
-    for (const int key : f.keys)
-        if (key < 0 || key > 255) throw InputError("--keys: key codes are 0–255 (JavaScript keyCode), got " + std::to_string(key));
+    s.keys = f.keys;
     validateShadertoySettings(s);
     return s;
 }
@@ -59,6 +58,15 @@ Image clampedFrame(const Image& frame) {
     Image out = frame;
     for (float& v : out.data()) v = std::clamp(v, 0.0f, 1.0f);
     return out;
+}
+
+void checkSheet(int frames, int width, int height) {
+    // sheet() draws on at most 16384 pixels a side; eight frames a row, their captions below.
+    const int columns = std::min(frames, 8), rows = (frames + 7) / 8;
+    if (frames < 1 || frames > 64) throw InputError("--sheet: shows 1 to 64 frames, got " + std::to_string(frames));
+    if ((long long)columns * (width + 16) > 16000 || (long long)rows * (height + 64) > 16000)
+        throw InputError("--sheet: " + std::to_string(frames) + " frames of " + std::to_string(width) + "x" +
+                         std::to_string(height) + " make a sheet over 16000 pixels a side; use a smaller --size");
 }
 
 Image sheetOf(const std::vector<Image>& frames, const std::vector<std::string>& captions) {

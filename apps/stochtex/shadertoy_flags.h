@@ -33,6 +33,8 @@ void printInspect(const ShadertoyHost& host, const Inspect& inspect);
 
 // A frame for 8-bit outputs: every value clamped to [0, 1] (a shader may write any float).
 Image clampedFrame(const Image& frame);
+// InputError naming --sheet when `frames` frames of this size make no sheet.
+void checkSheet(int frames, int width, int height);
 // The frames as a contact sheet, eight to a row, each captioned.
 Image sheetOf(const std::vector<Image>& frames, const std::vector<std::string>& captions);
 

@@ -34,7 +34,6 @@ void addShadertoySource(CLI::App& cmd, const SourceStudy& study) {
         const ShadertoySettings settings = shadertoySettings(args->flags);
         auto context = GlContext::headless();
         ShadertoyHost host(spec, *context, settings);
-        for (const int key : args->flags.keys) host.setKey(key, true);
         const ShadertoySource source(host);
         study(source, {spec.name + " (ShaderToy program)", false, 0, 0, 0, Transfer::Srgb,
                        settings.startTime + args->firstFrame / settings.fps});

@@ -98,14 +98,13 @@ TEST_F(Shadertoy, BufferFeedbackCountsFramesAndFramesReadAsAsked) {
         "buffer_a": {"code": "a.glsl", "channels": [{"type": "buffer", "buffer": "a"}]},
         "image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "a"},
                   {"type": "buffer", "buffer": "a", "frame": "previous"}, {"type": "buffer", "buffer": "a", "frame": "current"}]}}})");
-    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, small());
+    ShadertoyHost host(loadShadertoy(manifest), *context_, small());
     for (int frame = 0; frame < 5; ++frame) host.renderFrame();
     expectPixel(host.pixel("buffer_a", 7, 2), {5, 0, 0, 0}, 0, "buffer_a after 5 frames");
     expectPixel(host.pixel("image", 7, 2), {5, 4, 5, 0}, 0, "latest, previous, current");
     host.reset();
     host.renderFrame();
     expectPixel(host.pixel("buffer_a", 0, 0), {1, 0, 0, 0}, 0, "after reset");
-    (void)manifest;
 }
 
 // Channel filters and wraps on a 4×1 image of known texels (vflip off):
@@ -253,6 +252,31 @@ TEST_F(Shadertoy, MultiBufferProgramRendersDeterministically) {
     double change = 0;
     for (size_t i = 0; i < runs[0][5].data().size(); ++i) change += std::abs(runs[0][5].data()[i] - runs[0][0].data()[i]);
     EXPECT_GT(change, 1.0);  // the buffers evolve
+}
+
+// After a reset, every level of a mipmapped buffer reads 0 until the
+// buffer runs again (no level of the previous run survives); keys held by
+// the settings come back with every reset, so a texture source sees them.
+TEST_F(Shadertoy, ResetClearsEveryMipLevelAndKeepsTheHeldKeys) {
+    write("p/a.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(5.0); }\n");
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        vec2 uv = fragCoord / iResolution.xy;
+        fragColor = vec4(textureLod(iChannel0, uv, 3.0).x, texture(iChannel0, uv).x, texelFetch(iChannel1, ivec2(65, 0), 0).x,
+                         texelFetch(iChannel1, ivec2(65, 1), 0).x);
+    })");
+    write("p/shadertoy.json", R"({"passes": {"buffer_a": {"code": "a.glsl"},
+        "image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "a", "frame": "previous", "filter": "mipmap"},
+                                                     {"type": "keyboard"}]}}})");
+    ShadertoySettings s = small(32, 16);
+    s.keys = {65};
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, s);
+    host.renderFrame();
+    expectPixel(host.pixel("image", 5, 5), {0, 0, 1, 1}, 0, "frame 0: nothing before; A held and pressed");
+    host.renderFrame();
+    expectPixel(host.pixel("image", 5, 5), {5, 5, 1, 0}, 0, "frame 1: the previous frame at every level");
+    host.reset();
+    host.renderFrame();
+    expectPixel(host.pixel("image", 5, 5), {0, 0, 1, 1}, 0, "frame 0 after a reset");
 }
 
 // A program's frames through the texture-source interface: a window of the

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <cctype>
 #include <cmath>
 #include <vector>
@@ -23,13 +24,29 @@ void validateShadertoySettings(const ShadertoySettings& s) {
         throw InputError::parameter("height", "must be in [1, 8192], got " + std::to_string(s.height));
     if (!(std::isfinite(s.fps) && s.fps > 0 && s.fps <= 1000))
         throw InputError::parameter("fps", "must be in (0, 1000], got " + formatValue(s.fps));
-    if (!(std::isfinite(s.startTime) && std::abs(s.startTime) <= 1e6))
-        throw InputError::parameter("startTime", "must be finite and within ±1e6 s, got " + formatValue(s.startTime));
+    if (!(std::isfinite(s.startTime) && s.startTime >= 0 && s.startTime <= 1e6))
+        throw InputError::parameter("startTime", "must be in [0, 1e6] s, got " + formatValue(s.startTime));
     const auto& d = s.date;
-    if (d[1] < 1 || d[1] > 12 || d[2] < 1 || d[2] > 31 || d[3] < 0 || d[3] > 23 || d[4] < 0 || d[4] > 59 || d[5] < 0 ||
-        d[5] > 59)
-        throw InputError::parameter("date", "must be a calendar date and time (month 1–12, day 1–31, hour 0–23, minute "
-                                            "and second 0–59)");
+    const bool leap = (d[0] % 4 == 0 && d[0] % 100 != 0) || d[0] % 400 == 0;
+    const int days[12] = {31, leap ? 29 : 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    if (d[0] < 1 || d[0] > 9999 || d[1] < 1 || d[1] > 12 || d[2] < 1 || d[2] > days[d[1] - 1] || d[3] < 0 ||
+        d[3] > 23 || d[4] < 0 || d[4] > 59 || d[5] < 0 || d[5] > 59)
+        throw InputError::parameter("date", "must be a calendar date and time (year 1–9999, month 1–12, a day of that "
+                                            "month, hour 0–23, minute and second 0–59)");
+    for (const int key : s.keys)
+        if (key < 0 || key > 255)
+            throw InputError::parameter("key", "key codes are 0–255 (JavaScript keyCode), got " + std::to_string(key));
+}
+
+void checkShadertoyMemory(const ShadertoySpec& spec, const ShadertoySettings& s) {
+    // Two RGBA32F targets per buffer, one for the image; a third more with mipmaps.
+    const double frame = double(s.width) * s.height * 16.0 * 4.0 / 3.0;
+    const double bytes = frame * double(2 * (int(spec.passes.size()) - 1) + 1);
+    if (bytes > double(kMaxShadertoyBytes))
+        throw InputError::parameter("width", "the " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                                 " frame's buffers would take " + formatValue(bytes / (1 << 20)) +
+                                                 " MiB, more than " + std::to_string(kMaxShadertoyBytes >> 20) +
+                                                 " MiB; use a smaller size");
 }
 
 namespace {
@@ -149,22 +166,36 @@ struct ShadertoyHost::Impl {
 
     Target newTarget(bool mipmaps) const {
         Target t{gl::newTexture(), gl::newFramebuffer()};
+        while (glGetError() != GL_NO_ERROR) {
+        }
         glBindTexture(GL_TEXTURE_2D, t.texture.id());
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, settings.width, settings.height, 0, GL_RGBA, GL_FLOAT, nullptr);
         if (mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
         else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer.id());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.texture.id(), 0);
+        if (glGetError() == GL_OUT_OF_MEMORY || glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw InputError::parameter("width", "the " + std::to_string(settings.width) + "x" +
+                                                     std::to_string(settings.height) +
+                                                     " frame's buffers do not fit in this GL's memory");
         return t;
     }
 
+    // Every target at 0, its mip levels too (a mipmapped read of a buffer
+    // that has not run yet sees zeros, not a previous run's levels).
     void clearTargets() {
         const float zero[4] = {0, 0, 0, 0};
         for (Pass& p : passes)
             for (Target& t : p.targets) {
+                if (!t.framebuffer) continue;  // the image pass has one target
                 glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer.id());
                 glClearBufferfv(GL_COLOR, 0, zero);
+                if (p.mipmaps) {
+                    glBindTexture(GL_TEXTURE_2D, t.texture.id());
+                    glGenerateMipmap(GL_TEXTURE_2D);
+                }
             }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
     void uploadKeyboard() {
@@ -259,6 +290,13 @@ struct ShadertoyHost::Impl {
 ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, const ShadertoySettings& settings)
     : impl_(std::make_unique<Impl>()) {
     validateShadertoySettings(settings);
+    checkShadertoyMemory(spec, settings);
+    for (const ShadertoyPass& pass : spec.passes)  // a spec built in code, not by loadShadertoy
+        for (const ShadertoyChannel& ch : pass.channels)
+            if (ch.kind == ShadertoyChannel::Kind::Buffer && (ch.buffer < 0 || ch.buffer > 3 || spec.bufferPass(ch.buffer) < 0))
+                throw std::invalid_argument("ShadertoyHost: pass " + pass.name + " reads a buffer the program lacks");
+    if (spec.passes.empty() || spec.passes.back().name != "image")
+        throw std::invalid_argument("ShadertoyHost: the program's last pass must be the image pass");
     Impl& m = *impl_;
     m.spec = spec;
     m.settings = settings;
@@ -347,6 +385,10 @@ void ShadertoyHost::reset(int instance) {
     m.frame = 0;
     m.instance = instance;
     m.keys.fill(0.0f);
+    for (const int key : m.settings.keys) {  // held from frame 0: down and toggled, pressed on frame 0
+        m.keys[size_t(key)] = m.keys[size_t(kKeys + key)] = 1.0f;
+        m.keys[size_t(2 * kKeys + key)] = 1.0f;
+    }
     m.uploadKeyboard();
     for (Impl::Pass& p : m.passes) p.latest = 0;
     m.clearTargets();
@@ -393,6 +435,15 @@ Image ShadertoyHost::image() const {
 }
 
 std::array<float, 4> ShadertoyHost::pixel(const std::string& pass, int x, int y) const {
+    checkPixel(pass, x, y);
+    const Impl& m = *impl_;
+    const auto it = std::find_if(m.spec.passes.begin(), m.spec.passes.end(), [&](const ShadertoyPass& p) { return p.name == pass; });
+    const Impl::Pass& p = m.passes[size_t(it - m.spec.passes.begin())];
+    const std::vector<float> v = readRgba(p.targets[size_t(p.latest)].framebuffer.id(), x, y, 1, 1);
+    return {v[0], v[1], v[2], v[3]};
+}
+
+void ShadertoyHost::checkPixel(const std::string& pass, int x, int y) const {
     const Impl& m = *impl_;
     const auto it = std::find_if(m.spec.passes.begin(), m.spec.passes.end(), [&](const ShadertoyPass& p) { return p.name == pass; });
     if (it == m.spec.passes.end()) {
@@ -403,9 +454,6 @@ std::array<float, 4> ShadertoyHost::pixel(const std::string& pass, int x, int y)
     if (x < 0 || y < 0 || x >= m.settings.width || y >= m.settings.height)
         throw InputError::parameter("pixel", "(" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
                                                  std::to_string(m.settings.width) + "x" + std::to_string(m.settings.height) + " frame");
-    const Impl::Pass& p = m.passes[size_t(it - m.spec.passes.begin())];
-    const std::vector<float> v = readRgba(p.targets[size_t(p.latest)].framebuffer.id(), x, y, 1, 1);
-    return {v[0], v[1], v[2], v[3]};
 }
 
 void ShadertoyHost::setKey(int keyCode, bool down) {
@@ -442,10 +490,8 @@ int ShadertoySource::frameAt(double time) const {
 
 void ShadertoySource::checkWindow(const SourceRegion& region, double time) const {
     const ShadertoySettings& s = host_.settings();
-    if (region.x0 != std::floor(region.x0) || region.y0 != std::floor(region.y0))
-        throw InputError::parameter("size", "must place the window on whole pixels of the frame, got (" +
-                                                formatValue(region.x0) + ", " + formatValue(region.y0) + ")");
-    const double x0 = region.x0 + s.width / 2, y0 = region.y0 + s.height / 2;
+    // Windows start on whole pixels (an odd centred window's half-pixel start rounds down).
+    const double x0 = std::floor(region.x0) + s.width / 2, y0 = std::floor(region.y0) + s.height / 2;
     if (x0 < 0 || y0 < 0 || x0 + region.width > s.width || y0 + region.height > s.height)
         throw InputError::parameter("size", "of the window, " + std::to_string(region.width) + "x" +
                                                 std::to_string(region.height) + " at (" + formatValue(region.x0) + ", " +
@@ -463,7 +509,8 @@ Image ShadertoySource::render(const SourceRegion& region, double time, int insta
     while (host_.frame() <= n) host_.renderFrame();
     const Image frame = host_.image();
     Image out(region.width, region.height, 3, Image::Uninitialized{});
-    const int x0 = int(region.x0) + host_.settings().width / 2, y0 = int(region.y0) + host_.settings().height / 2;
+    const int x0 = int(std::floor(region.x0)) + host_.settings().width / 2;
+    const int y0 = int(std::floor(region.y0)) + host_.settings().height / 2;
     for (int y = 0; y < region.height; ++y)
         std::copy(frame.row(y0 + y) + size_t(x0) * 3, frame.row(y0 + y) + size_t(x0 + region.width) * 3, out.row(y));
     return out;

@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "stochtex/core/progress.h"
 #include "stochtex/gpu/gl_context.h"
@@ -36,9 +37,14 @@ struct ShadertoySettings {
     // seconds then run on with iTime (past midnight without a new day).
     std::array<int, 6> date{2026, 1, 1, 12, 0, 0};
     double sampleRate = 44100;  // iSampleRate
+    std::vector<int> keys;      // key codes (0–255) held from frame 0, after every reset
 };
-// InputError naming the parameter (width, height, fps, startTime, date).
+// InputError naming the parameter (width, height, fps, startTime, date, key).
 void validateShadertoySettings(const ShadertoySettings& s);
+// A program's targets hold at most this many bytes (RGBA32F, two per buffer).
+constexpr long long kMaxShadertoyBytes = 2ll << 30;
+// InputError naming `width` when the program's targets at this size would exceed it.
+void checkShadertoyMemory(const ShadertoySpec& spec, const ShadertoySettings& s);
 
 class ShadertoyHost {
 public:
@@ -53,7 +59,7 @@ public:
 
     const ShadertoySpec& spec() const;
     const ShadertoySettings& settings() const;
-    // Back to frame 0: buffers cleared, keys released, the program's instance
+    // Back to frame 0: buffers cleared, keys as the settings hold them, the program's instance
     // uniform (ShadertoySpec::instanceUniform) set to `instance`.
     void reset(int instance = 0);
     int instance() const;
@@ -67,6 +73,8 @@ public:
     // fragCoord convention (y up from the bottom row). InputError naming the
     // pass or the pixel when there is none.
     std::array<float, 4> pixel(const std::string& pass, int x, int y) const;
+    // The same checks, before any frame is rendered.
+    void checkPixel(const std::string& pass, int x, int y) const;
 
     // The keyboard texture (256 × 3: down, pressed this frame, toggled) and
     // the mouse for the frames to come.

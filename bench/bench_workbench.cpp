@@ -1,0 +1,106 @@
+// The workbench's throughput, as the thesis's Table 3.2 (GLcv): frames per
+// second of a ShaderToy program alone ("none"), with each frame read back
+// to the CPU ("copy"), and with the read-back frame's power spectrum
+// ("spectrum") or its dense optical flow from the previous frame (DIS,
+// "flow") computed by the analyses the studies use. The four modes run in
+// turn within each iteration, so machine drift falls on all alike.
+#include <benchmark/benchmark.h>
+#include <epoxy/gl.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "alternate_timing.h"
+#include "stochtex/analysis/optical_flow.h"
+#include "stochtex/analysis/power_spectrum.h"
+#include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/shadertoy.h"
+
+namespace stochtex {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A program in the style of real ones: a feedback buffer advecting dye
+// through a swirling field (data/shadertoy/swirl's code) and an image pass
+// colouring it.
+ShadertoySpec workbenchProgram(const fs::path& dir) {
+    fs::create_directories(dir);
+    std::ofstream(dir / "buffer_a.glsl") << R"(
+vec2 velocity(vec2 uv, float t) {
+    vec2 d1 = uv - vec2(0.35 + 0.1 * sin(0.7 * t), 0.5), d2 = uv - vec2(0.65, 0.5 + 0.1 * cos(0.5 * t));
+    return 0.004 * (vec2(-d1.y, d1.x) / (dot(d1, d1) + 0.02) + vec2(d2.y, -d2.x) / (dot(d2, d2) + 0.02));
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 uv = fragCoord / iResolution.xy;
+    vec4 dye = texture(iChannel0, uv - velocity(uv, iTime)) * 0.99;
+    float source = 0.08 * smoothstep(0.08, 0.0, uv.x) * (0.5 + 0.5 * sin(40.0 * uv.y + 3.0 * iTime));
+    fragColor = dye + vec4(source, 12.0 * source * source, 0.0, 0.0);
+})";
+    std::ofstream(dir / "image.glsl") << R"(
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec4 d = texture(iChannel0, fragCoord / iResolution.xy);
+    fragColor = vec4(clamp(vec3(d.x, 0.6 * d.x + 0.4 * d.y, 0.2 + 0.3 * d.y), 0.0, 1.0), 1.0);
+})";
+    std::ofstream(dir / "shadertoy.json") << R"({"name": "workbench", "passes": {
+        "buffer_a": {"code": "buffer_a.glsl", "channels": [{"type": "buffer", "buffer": "a"}]},
+        "image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "a"}]}}})";
+    return loadShadertoy(dir.string());
+}
+
+void BM_WorkbenchThroughput(benchmark::State& state) {
+    std::unique_ptr<GlContext> ctx;
+    try {
+        ctx = GlContext::headless();
+    } catch (const GpuUnavailable& e) {
+        state.SkipWithError(e.what());
+        return;
+    }
+    const fs::path dir = fs::temp_directory_path() / "stochtex_bench_workbench";
+    ShadertoySettings s;
+    s.width = int(state.range(0));
+    s.height = int(state.range(1));
+    ShadertoyHost host(workbenchProgram(dir), *ctx, s);
+    for (int k = 0; k < 30; ++k) host.renderFrame();  // past the empty first frames
+    Image previous = toGray(host.image());
+    double none = 0, copy = 0, spectrum = 0, flow = 0;
+    for (auto _ : state) {
+        none += bench::seconds([&] {
+            host.renderFrame();
+            glFinish();
+        });
+        copy += bench::seconds([&] {
+            host.renderFrame();
+            benchmark::DoNotOptimize(host.image().data().data());
+        });
+        spectrum += bench::seconds([&] {
+            host.renderFrame();
+            benchmark::DoNotOptimize(centredPowerSpectrum(toGray(host.image()), SpectrumWindow::Hann).data().data());
+        });
+        flow += bench::seconds([&] {
+            host.renderFrame();
+            Image next = toGray(host.image());
+            benchmark::DoNotOptimize(denseFlow(previous, next, FlowMethod::Dis).data().data());
+            previous = std::move(next);
+        });
+    }
+    const double n = double(state.iterations());
+    state.counters["fps_none"] = n / none;
+    state.counters["fps_copy"] = n / copy;
+    state.counters["fps_spectrum"] = n / spectrum;
+    state.counters["fps_flow"] = n / flow;
+    state.counters["copy/none"] = copy / none;  // how many times slower than the program alone
+    state.counters["spectrum/none"] = spectrum / none;
+    state.counters["flow/none"] = flow / none;
+    state.SetLabel(ctx->describe());
+    fs::remove_all(dir);
+}
+BENCHMARK(BM_WorkbenchThroughput)
+    ->ArgNames({"width", "height"})
+    ->Args({640, 360})
+    ->Args({1280, 720})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+
+}  // namespace
+}  // namespace stochtex
