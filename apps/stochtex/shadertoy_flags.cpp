@@ -5,6 +5,9 @@
 #include <regex>
 
 #include "stochtex/analysis/plot.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/report/page.h"
+#include "common.h"
 #include "stochtex/core/error.h"
 
 namespace stochtex::cli {
@@ -19,6 +22,8 @@ void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& f) {
     cmd.add_option("--date", f.date, "iDate at iTime 0: YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS (default 2026-01-01T12:00:00)");
     cmd.add_option("--keys", f.keys, "Key codes held from frame 0 (JavaScript keyCode, e.g. 65 for A), comma-separated")
         ->delimiter(',');
+    cmd.add_option("--first-frame", f.firstFrame, "The frame a study starts at (the frames before it are rendered "
+                                                  "too: buffers with feedback need them); default 0");
 }
 
 ShadertoySettings shadertoySettings(const ShadertoyFlags& f) {
@@ -35,6 +40,8 @@ ShadertoySettings shadertoySettings(const ShadertoyFlags& f) {
     if (!std::regex_match(f.date, m, date)) throw InputError("--date: expected YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS, got \"" + f.date + "\"");
     for (int k = 0; k < 6; ++k) s.date[size_t(k)] = m[k + 1].matched ? std::stoi(m[k + 1].str()) : 0;
     s.keys = f.keys;
+    if (f.firstFrame < 0 || f.firstFrame > 1000000)
+        throw InputError("--first-frame: must be in [0, 1000000], got " + std::to_string(f.firstFrame));
     validateShadertoySettings(s);
     return s;
 }
@@ -60,6 +67,8 @@ Image clampedFrame(const Image& frame) {
     return out;
 }
 
+namespace {
+
 void checkSheet(int frames, int width, int height) {
     // sheet() draws on at most 16384 pixels a side; eight frames a row, their captions below.
     const int columns = std::min(frames, 8), rows = (frames + 7) / 8;
@@ -69,15 +78,76 @@ void checkSheet(int frames, int width, int height) {
                          std::to_string(height) + " make a sheet over 16000 pixels a side; use a smaller --size");
 }
 
-Image sheetOf(const std::vector<Image>& frames, const std::vector<std::string>& captions) {
-    std::vector<std::vector<Image>> rows;
-    std::vector<std::vector<std::string>> text;
-    for (size_t k = 0; k < frames.size(); ++k) {
-        if (k % 8 == 0) rows.emplace_back(), text.emplace_back();
-        rows.back().push_back(clampedFrame(frames[k]));
-        text.back().push_back(captions[k]);
+}  // namespace
+
+FrameOutputs::FrameOutputs(std::string output, bool sheet, int frames, const ShadertoySettings& settings)
+    : output_(std::move(output)), sheet_(sheet), image_(!output_.empty() && isSupportedImagePath(output_)),
+      settings_(settings) {
+    if (frames < 1 || frames > 1000000) throw InputError("--frames: must be in [1, 1000000], got " + std::to_string(frames));
+    if (sheet_ && !image_) throw InputError("--sheet: needs an image output");
+    if (image_) checkImageOutput(output_);
+    if (sheet_) checkSheet(frames, settings.width, settings.height);
+}
+
+ShadertoyFrameSink FrameOutputs::sink() {
+    return [this](int frame, const Image& img) {
+        if (output_.empty()) return;
+        if (!image_) {
+            if (!sequence_)
+                sequence_ = std::make_unique<FrameSequenceWriter>(output_, settings_.width, settings_.height,
+                                                                  settings_.fps, "", Transfer::Linear);
+            sequence_->write(clampedFrame(img));
+            return;
+        }
+        if (!sheet_) frames_.clear();
+        frames_.push_back(img);
+        captions_.push_back("iFrame " + std::to_string(frame));
+    };
+}
+
+std::string FrameOutputs::finish() {
+    if (output_.empty()) return "";
+    if (!image_) return sequence_ ? (isVideoPath(output_) ? sequence_->finish() : (sequence_->finish(), output_)) : "";
+    if (sheet_) {
+        std::vector<std::vector<Image>> rows;
+        std::vector<std::vector<std::string>> text;
+        for (size_t k = 0; k < frames_.size(); ++k) {
+            if (k % 8 == 0) rows.emplace_back(), text.emplace_back();
+            rows.back().push_back(clampedFrame(frames_[k]));
+            text.back().push_back(captions_[k]);
+        }
+        writeImage(output_, sheet(rows, text), kNoTransfer);
+    } else {
+        writeImage(output_, frames_.back(), kNoTransfer);
     }
-    return sheet(rows, text);
+    return output_;
+}
+
+FrameAnalysisOptions frameAnalysisOptions(const std::string& list, const ShadertoySettings& settings, int frames,
+                                          int firstFrame) {
+    FrameAnalysisOptions o;
+    std::string rest = list;
+    while (!rest.empty()) {
+        const size_t comma = rest.find(',');
+        const std::string name = rest.substr(0, comma);
+        const FrameAnalysis* a = findEnum(kFrameAnalysisNames, name);
+        if (!a) throw InputError("--analyse: unknown study \"" + name + "\" (expected spectrum, flow, coherence)");
+        o.analyses.push_back(*a);
+        rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+    }
+    o.region = SourceRegion::centred(settings.width, settings.height);
+    o.time = settings.startTime + firstFrame / settings.fps;
+    o.timeStep = 1.0 / settings.fps;
+    o.frames = frames;
+    o.frameTransfer = Transfer::Linear;  // ShaderToy's frames are display codes already
+    return o;
+}
+
+void writeFrameAnalysis(const std::string& dir, const std::string& name, const FrameAnalysisResult& r) {
+    ensureFolder(dir);
+    writeFigures(dir, r.figures);
+    for (const auto& [file, table] : r.tables) writeText(dir, file, table.csv());
+    writeText(dir, "index.html", htmlPage("Frame studies: " + name, "<h1>Frame studies: " + htmlEscape(name) + "</h1>" + r.html));
 }
 
 }  // namespace stochtex::cli

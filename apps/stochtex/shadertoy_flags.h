@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "stochtex/gpu/shadertoy.h"
+#include "stochtex/report/frame_sequence.h"
+#include "stochtex/studies/frame_analysis.h"
 
 namespace stochtex::cli {
 
@@ -17,6 +19,7 @@ struct ShadertoyFlags {
     std::vector<float> mouse;
     std::string date = "2026-01-01T12:00:00";
     std::vector<int> keys;
+    int firstFrame = 0;  // the first frame a study analyses
 };
 void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& flags);
 // The settings the flags give; InputError naming the flag when unusable.
@@ -33,9 +36,31 @@ void printInspect(const ShadertoyHost& host, const Inspect& inspect);
 
 // A frame for 8-bit outputs: every value clamped to [0, 1] (a shader may write any float).
 Image clampedFrame(const Image& frame);
-// InputError naming --sheet when `frames` frames of this size make no sheet.
-void checkSheet(int frames, int width, int height);
-// The frames as a contact sheet, eight to a row, each captioned.
-Image sheetOf(const std::vector<Image>& frames, const std::vector<std::string>& captions);
+// Where `shadertoy` writes its frames, by the output's form: an image (the
+// last frame, or with `sheet` a contact sheet of all), an MP4 or a folder of
+// frames. Everything is checked on construction, before any work; nothing
+// is created before the first frame.
+class FrameOutputs {
+public:
+    FrameOutputs(std::string output, bool sheet, int frames, const ShadertoySettings& settings);
+    ShadertoyFrameSink sink();
+    // Writes the image or closes the video; the path written ("" for none).
+    std::string finish();
+
+private:
+    std::string output_;
+    bool sheet_, image_;
+    ShadertoySettings settings_;
+    std::unique_ptr<FrameSequenceWriter> sequence_;
+    std::vector<Image> frames_;
+    std::vector<std::string> captions_;
+};
+
+// --analyse LIST over --frames frames from --first-frame, the whole frame
+// as the window; InputError naming --analyse for an unknown study.
+FrameAnalysisOptions frameAnalysisOptions(const std::string& list, const ShadertoySettings& settings, int frames,
+                                          int firstFrame);
+// The report: figures, CSV tables and index.html in dir.
+void writeFrameAnalysis(const std::string& dir, const std::string& name, const FrameAnalysisResult& result);
 
 }  // namespace stochtex::cli

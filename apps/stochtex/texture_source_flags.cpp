@@ -18,25 +18,20 @@ void addShadertoySource(CLI::App& cmd, const SourceStudy& study) {
     struct Args {
         std::string program;
         ShadertoyFlags flags;
-        int firstFrame = 0;
     };
     auto args = std::make_shared<Args>();
     auto* st = cmd.add_subcommand("shadertoy", "A ShaderToy program's Image pass (a folder or manifest, docs/SHADERTOY.md); "
                                                "the window is centred in the frame");
     st->add_option("program", args->program, "The program's folder or manifest")->required();
     addShadertoyFlags(*st, args->flags);
-    st->add_option("--first-frame", args->firstFrame, "The frame the study starts at (the frames before it are "
-                                                     "rendered too: buffers with feedback need them); default 0");
     st->callback([args, study] {
-        if (args->firstFrame < 0 || args->firstFrame > 1000000)
-            throw InputError("--first-frame: must be in [0, 1000000], got " + std::to_string(args->firstFrame));
         const ShadertoySpec spec = loadShadertoy(args->program);
         const ShadertoySettings settings = shadertoySettings(args->flags);
         auto context = GlContext::headless();
         ShadertoyHost host(spec, *context, settings);
         const ShadertoySource source(host);
         study(source, {spec.name + " (ShaderToy program)", false, 0, 0, 0, Transfer::Srgb,
-                       settings.startTime + args->firstFrame / settings.fps});
+                       settings.startTime + args->flags.firstFrame / settings.fps});
     });
 }
 

@@ -326,6 +326,11 @@ case_shadertoy() {
   [ -s "$out/sts/spectrum.csv" ] || fail "spectrum of a shadertoy frame: spectrum.csv not written"
   expect_bad "spectrum window outside the frame" "$out/stw" "--size: size of the window, 128x128 at (-64, -64) from the centre, exceeds the 96x80 frame" -- "$bin" spectrum -o "$out/stw" --size 128 shadertoy "$src/data/shadertoy/swirl" --size 96,80
   expect_ok "shadertoy with a pattern" "$out/stp.png" -- "$bin" shadertoy "$src/data/shadertoy/pattern-zoom" --size 64,36 --time 5 -o "$out/stp.png"
+  expect_ok "shadertoy analysis" "$out/sta/index.html" -- "$bin" shadertoy "$src/data/shadertoy/swirl" --size 96,64 --analyse spectrum,flow,coherence --frames 4 --first-frame 120 -o "$out/sta"
+  for f in spectrum.png flow_arrows.png appearance.png flow.csv coherence.csv; do [ -s "$out/sta/$f" ] || fail "shadertoy analysis: $f not written"; done
+  grep -q "Optical flow (DIS)" "$out/sta/index.html" || fail "shadertoy analysis: index.html lacks the flow section"
+  expect_bad "shadertoy analysis unknown" "$out/stu" "--analyse: unknown study \"fft\"" -- "$bin" shadertoy "$work/st" --analyse fft -o "$out/stu"
+  expect_bad "shadertoy first frame alone" "$out/stff.png" "--first-frame: has no effect without --analyse" -- "$bin" shadertoy "$work/st" --first-frame 3 -o "$out/stff.png"
   expect_bad "shadertoy no frames" "$out/stz" "--frames: must be in [1, 1000000], got 0" -- "$bin" shadertoy "$work/st" --frames 0 -o "$out/stz"
   expect_bad "shadertoy inspect outside" "$out/sti.png" "--inspect: pixel (99, 1) is outside the 32x16 frame" -- "$bin" shadertoy "$work/st" --size 32,16 --inspect image:99,1 -o "$out/sti.png"
   expect_bad "shadertoy date" "$out/std.png" "--date: expected YYYY-MM-DD" -- "$bin" shadertoy "$work/st" --date yesterday -o "$out/std.png"

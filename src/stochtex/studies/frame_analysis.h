@@ -1,0 +1,44 @@
+#pragma once
+// Several frame studies of one texture source on one page (issue "The
+// workbench": `stochtex shadertoy PROG --analyse spectrum,flow,coherence`):
+// the power spectrum of the first frame, the optical flow and the temporal
+// coherence of the frames, each the very study its own command runs
+// (spectrumStudy, flowStudy, temporalCoherenceStudy), over one window and
+// one run of frames.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stochtex/core/enum_names.h"
+#include "stochtex/report/page.h"
+#include "stochtex/report/table.h"
+#include "stochtex/studies/paper.h"
+#include "stochtex/textures/texture_source.h"
+
+namespace stochtex {
+
+enum class FrameAnalysis { Spectrum, Flow, Coherence };
+inline const EnumNames<FrameAnalysis> kFrameAnalysisNames{
+    {"spectrum", FrameAnalysis::Spectrum}, {"flow", FrameAnalysis::Flow}, {"coherence", FrameAnalysis::Coherence}};
+
+struct FrameAnalysisOptions {
+    std::vector<FrameAnalysis> analyses;  // at least one, each once
+    SourceRegion region = SourceRegion::centred(256, 256);
+    double time = 0, timeStep = 1.0 / 30;  // frame k at time + k·timeStep
+    int frames = 8;                        // flow and coherence: 2…10000 frames
+    Transfer frameTransfer = Transfer::Srgb;  // how the frames are shown (Srgb: linear-light colour renders)
+};
+// InputError naming the parameter (analyses, and each study's own checks,
+// with the source's checkWindow at every frame), before any work.
+void validateFrameAnalysis(const FrameAnalysisOptions& options, const TextureSource* source = nullptr);
+
+struct FrameAnalysisResult {
+    std::vector<Figure> figures;                        // every study's, their file names distinct
+    std::vector<std::pair<std::string, Table>> tables;  // CSV file name, table
+    std::string html;                                   // one section per study, for a page
+    std::string markdown;                               // the studies' summaries, for a terminal
+};
+FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalysisOptions& options,
+                                  const StudyProgress& progress = {});
+
+}  // namespace stochtex

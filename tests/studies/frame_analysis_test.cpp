@@ -1,0 +1,76 @@
+// Several frame studies on one page (studies/frame_analysis.h): each study
+// is the one its own command runs, over one window and one run of frames.
+#include "stochtex/studies/frame_analysis.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "stochtex/core/error.h"
+#include "stochtex/studies/flow_study.h"
+#include "stochtex/studies/spectrum_study.h"
+
+namespace stochtex {
+namespace {
+
+FrameAnalysisOptions allThree() {
+    FrameAnalysisOptions o;
+    o.analyses = {FrameAnalysis::Spectrum, FrameAnalysis::Flow, FrameAnalysis::Coherence};
+    o.region = SourceRegion::centred(64, 48);
+    o.time = 0.1;
+    o.timeStep = 0.05;
+    o.frames = 4;
+    return o;
+}
+
+TEST(FrameAnalysis, RunsEachStudyAsItsCommandDoes) {
+    ZoomParams p;
+    p.layers = 4;
+    const ZoomSource source(p, ZoomBase{64, 5, {}});
+    const FrameAnalysisOptions o = allThree();
+    const FrameAnalysisResult r = frameAnalysis(source, o);
+    std::set<std::string> files;
+    for (const Figure& f : r.figures) EXPECT_TRUE(files.insert(f.file).second) << f.file << " twice";
+    EXPECT_TRUE(files.count("spectrum.png") && files.count("flow_arrows.png") && files.count("appearance.png"));
+    ASSERT_EQ(r.tables.size(), 5u);  // spectrum, radial, flow, coherence, coherence_frames
+    EXPECT_EQ(r.tables[2].first, "flow.csv");
+    EXPECT_NE(r.html.find("Power spectrum"), std::string::npos);
+    EXPECT_NE(r.html.find("Temporal coherence"), std::string::npos);
+    // The spectrum section is spectrumStudy's own on the first frame.
+    SpectrumStudyOptions s;
+    s.region = o.region;
+    s.times = {o.time};
+    s.frameTransfer = o.frameTransfer;
+    EXPECT_EQ(r.tables[0].second.csv(), spectrumStudy(source, s).summary.csv());
+    // The flow is DIS over the frames time + k·step.
+    FlowStudyOptions f;
+    f.region = o.region;
+    f.time = o.time;
+    f.timeStep = o.timeStep;
+    f.frames = o.frames;
+    f.method = FlowMethod::Dis;
+    f.frameTransfer = o.frameTransfer;
+    EXPECT_EQ(r.tables[2].second.csv(), flowStudy(source, f).summary.csv());
+}
+
+TEST(FrameAnalysis, RefusesNothingToDoRepeatsAndTheStudiesOwnLimits) {
+    const auto message = [](const FrameAnalysisOptions& o) {
+        try {
+            validateFrameAnalysis(o);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    FrameAnalysisOptions o = allThree();
+    o.analyses.clear();
+    EXPECT_NE(message(o).find("analyses must name at least one"), std::string::npos);
+    o.analyses = {FrameAnalysis::Flow, FrameAnalysis::Flow};
+    EXPECT_NE(message(o).find("names flow twice"), std::string::npos);
+    o = allThree();
+    o.frames = 1;  // a flow needs two frames
+    EXPECT_NE(message(o).find("frames"), std::string::npos) << message(o);
+}
+
+}  // namespace
+}  // namespace stochtex
