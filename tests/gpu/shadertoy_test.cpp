@@ -279,6 +279,34 @@ TEST_F(Shadertoy, ResetClearsEveryMipLevelAndKeepsTheHeldKeys) {
     expectPixel(host.pixel("image", 5, 5), {0, 0, 1, 1}, 0, "frame 0 after a reset");
 }
 
+// The shipped examples, in the style of real programs (feedback buffers,
+// Common files, noise and keyboard channels, a raymarcher, a pattern
+// through stochtex_sample): each compiles, renders frames that are not
+// flat, and renders them again identically.
+TEST_F(Shadertoy, ShippedExamplesRenderDeterministically) {
+    int programs = 0;
+    for (const auto& entry : fs::directory_iterator(STOCHTEX_SHADERTOY_EXAMPLES)) {
+        if (!entry.is_directory()) continue;
+        const ShadertoySpec spec = loadShadertoy(entry.path().string());
+        ShadertoySettings s = small(48, 32);
+        s.startTime = 4.0;
+        std::vector<Image> runs[2];
+        for (auto& frames : runs) {
+            ShadertoyHost host(spec, *context_, s);
+            renderShadertoyFrames(host, 40, [&](int frame, const Image& f) {
+                if (frame % 13 == 0 || frame == 39) frames.push_back(f);
+            });
+        }
+        for (size_t k = 0; k < runs[0].size(); ++k) EXPECT_EQ(runs[0][k].data(), runs[1][k].data()) << spec.name << " frame " << k;
+        const Image& last = runs[0].back();
+        double lo = 1e9, hi = -1e9;
+        for (const float v : last.data()) lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
+        EXPECT_GT(hi - lo, 0.1) << spec.name << ": a flat frame";
+        ++programs;
+    }
+    EXPECT_GE(programs, 4);
+}
+
 // A program's frames through the texture-source interface: a window of the
 // frame at a time, the instance uniform per instance, refusals outside.
 TEST_F(Shadertoy, FramesFeedTheStudiesAsATextureSource) {
