@@ -13,6 +13,8 @@
 #include "stochtex/gpu/export.h"
 #include "stochtex/gpu/gl_objects.h"
 #include "stochtex/gpu/gpu_graph.h"
+#include "stochtex/gpu/render_target.h"
+#include "stochtex/gpu/uploads.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 
@@ -56,6 +58,14 @@ void deleteSampler(GLuint id) { glDeleteSamplers(1, &id); }
 using Sampler = gl::Handle<deleteSampler>;
 
 constexpr int kKeys = 256;
+
+// Lets a texture made without mipmaps (floatTexture, RenderTarget) have
+// them, and builds them from level 0. The channel's sampler chooses the filter.
+void withMipmaps(GLuint texture) {
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 1000);
+    glGenerateMipmap(GL_TEXTURE_2D);
+}
 constexpr int kPatternUnits = 16;  // a pattern's GpuView binds at most these (checkGraphTextureUnits)
 
 // The uniforms every pass declares (ShaderToy's), then the program's own,
@@ -79,25 +89,18 @@ GLint minFilter(ChannelFilter f) {
 }
 
 // A texture of the image's channels (1–4: R, RG, RGB, RGBA as GL reads
-// them), rows flipped when vflip so that the file's top row is at v = 1.
+// them; uploads' floatTexture), rows flipped when vflip so that the file's
+// top row is at v = 1, with its mip chain when a channel reads mipmaps.
 gl::Texture imageTexture(const Image& img, bool vflip, bool mipmaps) {
-    static const GLenum internal[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
-    static const GLenum format[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
-    const int c = img.channels();
     std::vector<float> rows(img.data().size());
-    const size_t stride = size_t(img.width()) * size_t(c);
+    const size_t stride = size_t(img.width()) * size_t(img.channels());
     for (int y = 0; y < img.height(); ++y) {
         // GL's row 0 is v = 0, the bottom: the file's last row when flipped.
         const int from = vflip ? img.height() - 1 - y : y;
         std::copy(img.row(from), img.row(from) + stride, rows.begin() + std::ptrdiff_t(size_t(y) * stride));
     }
-    gl::Texture t = gl::newTexture();
-    glBindTexture(GL_TEXTURE_2D, t.id());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal[c - 1]), img.width(), img.height(), 0, format[c - 1], GL_FLOAT,
-                 rows.data());
-    if (mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
-    else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    gl::Texture t = floatTexture(img.width(), img.height(), img.channels(), rows.data());
+    if (mipmaps) withMipmaps(t.id());
     return t;
 }
 
@@ -140,15 +143,11 @@ struct ShadertoyHost::Impl {
     ShadertoySpec spec;
     ShadertoySettings settings;
     gl::VertexArray vao;
-    struct Target {
-        gl::Texture texture;
-        gl::Framebuffer framebuffer;
-    };
     // Per pass: its program, its uniform locations, two targets (a buffer
     // writes one while it may read the other), which holds the last output.
     struct Pass {
         gl::Program program;
-        std::array<Target, 2> targets;
+        std::vector<RenderTarget> targets;  // two for a buffer, one for the image
         int latest = 0;
         bool renderedThisFrame = false;
         bool mipmaps = false;  // some channel reads it with mipmaps
@@ -164,16 +163,12 @@ struct ShadertoyHost::Impl {
     int frame = 0;
     int instance = 0;
 
-    Target newTarget(bool mipmaps) const {
-        Target t{gl::newTexture(), gl::newFramebuffer()};
+    RenderTarget newTarget(bool mipmaps) const {
         while (glGetError() != GL_NO_ERROR) {
         }
-        glBindTexture(GL_TEXTURE_2D, t.texture.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, settings.width, settings.height, 0, GL_RGBA, GL_FLOAT, nullptr);
-        if (mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
-        else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer.id());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.texture.id(), 0);
+        RenderTarget t(settings.width, settings.height, false);
+        if (mipmaps) withMipmaps(t.texture());
+        glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer());
         if (glGetError() == GL_OUT_OF_MEMORY || glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw InputError::parameter("width", "the " + std::to_string(settings.width) + "x" +
                                                      std::to_string(settings.height) +
@@ -186,12 +181,11 @@ struct ShadertoyHost::Impl {
     void clearTargets() {
         const float zero[4] = {0, 0, 0, 0};
         for (Pass& p : passes)
-            for (Target& t : p.targets) {
-                if (!t.framebuffer) continue;  // the image pass has one target
-                glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer.id());
+            for (const RenderTarget& t : p.targets) {
+                glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer());
                 glClearBufferfv(GL_COLOR, 0, zero);
                 if (p.mipmaps) {
-                    glBindTexture(GL_TEXTURE_2D, t.texture.id());
+                    glBindTexture(GL_TEXTURE_2D, t.texture());
                     glGenerateMipmap(GL_TEXTURE_2D);
                 }
             }
@@ -215,7 +209,7 @@ struct ShadertoyHost::Impl {
                 size = {settings.width, settings.height};
                 // Previous: the other target once the buffer has run this frame.
                 const bool other = ch.frame == ShadertoyChannel::Frame::Previous && b.renderedThisFrame;
-                return b.targets[size_t(other ? 1 - b.latest : b.latest)].texture.id();
+                return b.targets[size_t(other ? 1 - b.latest : b.latest)].texture();
             }
             case ShadertoyChannel::Kind::Keyboard: size = {kKeys, 3}; return keyboard.id();
             case ShadertoyChannel::Kind::Image:
@@ -230,8 +224,7 @@ struct ShadertoyHost::Impl {
         Pass& pass = passes[p];
         const bool buffer = spec.passes[p].name != "image";
         const int write = buffer ? 1 - pass.latest : 0;
-        glBindFramebuffer(GL_FRAMEBUFFER, pass.targets[size_t(write)].framebuffer.id());
-        glViewport(0, 0, settings.width, settings.height);
+        pass.targets[size_t(write)].bind();
         const GLuint prog = pass.program.id();
         if (pattern) pattern->bind(prog);  // units 0–15 and the parameter block
         glUseProgram(prog);
@@ -279,7 +272,7 @@ struct ShadertoyHost::Impl {
         glDrawArrays(GL_TRIANGLES, 0, 3);
         for (GLuint i = 0; i < 4; ++i) glBindSampler(GLuint(channelUnit) + i, 0);
         if (pass.mipmaps) {
-            glBindTexture(GL_TEXTURE_2D, pass.targets[size_t(write)].texture.id());
+            glBindTexture(GL_TEXTURE_2D, pass.targets[size_t(write)].texture());
             glGenerateMipmap(GL_TEXTURE_2D);
         }
         pass.latest = write;
@@ -343,7 +336,7 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
         }
         const int buffer = pass.name == "image" ? -1 : pass.name.back() - 'a';
         p.mipmaps = buffer >= 0 && mipmapped[size_t(buffer)];
-        for (int t = 0; t < (buffer >= 0 ? 2 : 1); ++t) p.targets[size_t(t)] = m.newTarget(p.mipmaps);
+        for (int t = 0; t < (buffer >= 0 ? 2 : 1); ++t) p.targets.push_back(m.newTarget(p.mipmaps));
         for (size_t i = 0; i < 4; ++i) {
             const ShadertoyChannel& ch = pass.channels[i];
             GLuint id = 0;
@@ -407,12 +400,11 @@ void ShadertoyHost::renderFrame() {
 
 namespace {
 
-// RGBA pixels of a framebuffer, GL's rows (bottom first).
-std::vector<float> readRgba(GLuint framebuffer, int x, int y, int width, int height) {
-    std::vector<float> rgba(size_t(width) * size_t(height) * 4);
+// The RGBA of one pixel of a framebuffer (GL's rows: y up).
+std::array<float, 4> readPixelRgba(GLuint framebuffer, int x, int y) {
+    std::array<float, 4> rgba{};
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(x, y, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+    glReadPixels(x, y, 1, 1, GL_RGBA, GL_FLOAT, rgba.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     return rgba;
 }
@@ -420,18 +412,8 @@ std::vector<float> readRgba(GLuint framebuffer, int x, int y, int width, int hei
 }  // namespace
 
 Image ShadertoyHost::image() const {
-    const Impl& m = *impl_;
-    const Impl::Pass& p = m.passes.back();
-    const int w = m.settings.width, h = m.settings.height;
-    const std::vector<float> rgba = readRgba(p.targets[size_t(p.latest)].framebuffer.id(), 0, 0, w, h);
-    Image out(w, h, 3, Image::Uninitialized{});
-    for (int y = 0; y < h; ++y) {
-        const float* src = rgba.data() + size_t(h - 1 - y) * size_t(w) * 4;
-        float* dst = out.row(y);
-        for (int x = 0; x < w; ++x)
-            for (int c = 0; c < 3; ++c) dst[3 * x + c] = src[4 * x + c];
-    }
-    return out;
+    const Impl::Pass& p = impl_->passes.back();
+    return p.targets[size_t(p.latest)].readRgb(RenderTarget::Rows::TopDown);
 }
 
 std::array<float, 4> ShadertoyHost::pixel(const std::string& pass, int x, int y) const {
@@ -439,8 +421,7 @@ std::array<float, 4> ShadertoyHost::pixel(const std::string& pass, int x, int y)
     const Impl& m = *impl_;
     const auto it = std::find_if(m.spec.passes.begin(), m.spec.passes.end(), [&](const ShadertoyPass& p) { return p.name == pass; });
     const Impl::Pass& p = m.passes[size_t(it - m.spec.passes.begin())];
-    const std::vector<float> v = readRgba(p.targets[size_t(p.latest)].framebuffer.id(), x, y, 1, 1);
-    return {v[0], v[1], v[2], v[3]};
+    return readPixelRgba(p.targets[size_t(p.latest)].framebuffer(), x, y);
 }
 
 void ShadertoyHost::checkPixel(const std::string& pass, int x, int y) const {
