@@ -96,6 +96,10 @@ void validateFilterOptions(const FilterOptions& options);
 // The mean and variance of an example's values (blending space): those of
 // its tiled field, whose tiling and blending keeps them.
 std::array<double, 2> exampleMoments(const NoiseExample& example);
+// Mean, variances and covariance of a two-channel field over its whole
+// period (its examples' own: tiling and blending keeps them), the
+// statistics of an infinite footprint.
+FootprintStats fieldStatistics(const TiledField& field);
 
 // H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)) on H's own grid, for each of x and y
 // that is a Gaussianized exemplar (null: that axis as it is): a colormap

@@ -420,14 +420,7 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
     }
     // The covariance of each pair's two examples over the whole period (a lean node's sky).
     std::vector<float> wholeCov;
-    for (const TiledField& pair : graph.leafPairs()) {
-        const auto& a = pair.channel(0).example().values().data();
-        const auto& b = pair.channel(1).example().values().data();
-        double sa = 0, sb = 0, sab = 0;
-        for (size_t i = 0; i < a.size(); ++i) sa += a[i], sb += b[i], sab += double(a[i]) * b[i];
-        const double n = double(a.size());
-        wholeCov.push_back(float(sab / n - sa / n * (sb / n)));
-    }
+    for (const TiledField& pair : graph.leafPairs()) wholeCov.push_back(fieldStatistics(pair).cov);
     if (options.source == StatisticsSource::Point) {  // nothing to prefilter
         std::vector<float> means;
         for (const auto& m : whole) means.push_back(graph.leaf(int(means.size())).example().toOutput(m[0]));
