@@ -50,8 +50,7 @@ void registerShadertoy(CLI::App& app) {
         if (!a.analyse.empty()) {  // the studies' frames through the texture-source interface
             const ShadertoySource source(host);
             const FrameAnalysisOptions o = frameAnalysisOptions(a.analyse, settings, a.frames, a.flags.firstFrame);
-            validateFrameAnalysis(o, &source);
-            const FrameAnalysisResult r = frameAnalysis(source, o, line.callback());
+            const FrameAnalysisResult r = frameAnalysis(source, o, line.callback());  // validates before any frame
             line.finish();
             writeFrameAnalysis(a.output, spec.name, r);
             std::printf("%swrote %zu figures, %zu tables and index.html to %s\n", r.markdown.c_str(), r.figures.size(),

@@ -107,7 +107,11 @@ ShadertoyFrameSink FrameOutputs::sink() {
 
 std::string FrameOutputs::finish() {
     if (output_.empty()) return "";
-    if (!image_) return sequence_ ? (isVideoPath(output_) ? sequence_->finish() : (sequence_->finish(), output_)) : "";
+    if (!image_) {
+        if (!sequence_) return "";
+        const std::string video = sequence_->finish();
+        return isVideoPath(output_) ? video : output_;  // the MP4 moved into place, or the folder of frames
+    }
     if (sheet_) {
         std::vector<std::vector<Image>> rows;
         std::vector<std::vector<std::string>> text;
