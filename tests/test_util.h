@@ -4,14 +4,28 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <string>
 
 #include "stochtex/core/error.h"
+#include "stochtex/image/image.h"
 #include "stochtex/noise/spectrum.h"
 
 namespace stochtex::test {
+
+// Mean over the pixels of the RGB 2-norm ‖a − b‖ (3-channel images of one size).
+inline double meanRgbDistance(const Image& a, const Image& b) {
+    double s = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            double d2 = 0;
+            for (int c = 0; c < 3; ++c) d2 += (double(a.at(x, y, c)) - b.at(x, y, c)) * (double(a.at(x, y, c)) - b.at(x, y, c));
+            s += std::sqrt(d2);
+        }
+    return s / double(a.pixelCount());
+}
 
 // A path under the temp folder unique to this test process, so that
 // parallel ctest runs and other checkouts' tests never share files.

@@ -478,16 +478,19 @@ TEST_F(KernelParity, SrgbTransferPairWithin1e6) {
     });
 }
 
+// A random unit direction above the plane (z ≥ ~0.1 before normalising).
+vec3 randomUpperDirection(Random& r) {
+    const vec3 d(r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(0.1f, 1.0f));
+    return d / length(d);
+}
+
 // The texture-graph operations beyond the tables (kernel/graph_ops.glsl):
 // momentSigma and composeColour within 4 ulps; leanNodeShade, which goes
 // through the LEAN lobe's exp2 and sqrt, within 1e-5 of max(1, |value|) as
 // the lobe itself (LeanLobeAndShadingWithin1e5).
 TEST_F(KernelParity, GraphLeanComposeAndSigmaMatchTheCpu) {
     Random r{23};
-    const auto direction = [&r] {
-        const vec3 d(r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(0.1f, 1.0f));
-        return d / length(d);
-    };
+    const auto direction = [&r] { return randomUpperDirection(r); };
     std::vector<uvec4> in;
     for (int i = 0; i < kItems; ++i) {
         const vec2 var(r.uniform(0.0f, 0.1f), r.uniform(0.0f, 0.1f));
@@ -528,10 +531,7 @@ TEST_F(KernelParity, GraphLeanComposeAndSigmaMatchTheCpu) {
 // plane.
 TEST_F(KernelParity, LeanLobeAndShadingWithin1e5) {
     Random r{12};
-    const auto direction = [&r] {
-        const vec3 d(r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(0.1f, 1.0f));
-        return d / length(d);
-    };
+    const auto direction = [&r] { return randomUpperDirection(r); };
     std::vector<uvec4> in;
     for (int i = 0; i < kItems; ++i) {
         const vec2 var(r.uniform(0.0f, 0.1f), r.uniform(0.0f, 0.1f));

@@ -13,6 +13,7 @@
 #include "stochtex/noise/slopes.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -34,17 +35,7 @@ std::string ridges(const std::string& leanParams = "") {
            leanParams + R"(}}, "output": "shaded"})";
 }
 
-// Mean ‖a − b‖₂ over the pixels (linear RGB).
-double meanError(const Image& a, const Image& b) {
-    double s = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            double d2 = 0;
-            for (int c = 0; c < 3; ++c) d2 += std::pow(double(a.at(x, y, c)) - b.at(x, y, c), 2);
-            s += std::sqrt(d2);
-        }
-    return s / double(a.pixelCount());
-}
+using test::meanRgbDistance;
 
 TEST(GraphOps, LeanNodeShadeIsTheKernelsLobeLit) {
     using namespace kernel;
@@ -121,7 +112,7 @@ TEST(GraphPattern, LeanNodeFilteredFollowsTheReferenceAndNeedsTheCovariance) {
     exact.referenceMaxSamples = reference.referenceMaxSamples = 24;
     Camera zoom;
     zoom.view = {48, 48, 1.0, 13.0, 7.0};
-    EXPECT_LT(meanError(FilteredGraph(g, smooth).render(zoom), g.render(zoom.view)), 0.02);
+    EXPECT_LT(meanRgbDistance(FilteredGraph(g, smooth).render(zoom), g.render(zoom.view)), 0.02);
 
     Camera plane;
     plane.kind = Camera::Kind::Plane;
@@ -129,10 +120,10 @@ TEST(GraphPattern, LeanNodeFilteredFollowsTheReferenceAndNeedsTheCovariance) {
     plane.tiltDeg = 70;
     plane.fovDeg = 50;
     const Image ref = FilteredGraph(g, reference).render(plane);
-    const double none = meanError(FilteredGraph(g, unfiltered).render(plane), ref);
-    const double withCov = meanError(FilteredGraph(g, smooth).render(plane), ref);
-    const double withoutCov = meanError(FilteredGraph(noCov, smooth).render(plane), ref);
-    const double exactStats = meanError(FilteredGraph(g, exact).render(plane), ref);
+    const double none = meanRgbDistance(FilteredGraph(g, unfiltered).render(plane), ref);
+    const double withCov = meanRgbDistance(FilteredGraph(g, smooth).render(plane), ref);
+    const double withoutCov = meanRgbDistance(FilteredGraph(noCov, smooth).render(plane), ref);
+    const double exactStats = meanRgbDistance(FilteredGraph(g, exact).render(plane), ref);
     std::printf("lean node, plane view: none %.4f, estimators %.4f, without covariance %.4f, exact statistics %.4f\n",
                 none, withCov, withoutCov, exactStats);
     EXPECT_LT(withCov, 0.6 * none) << "none " << none << ", estimators " << withCov;

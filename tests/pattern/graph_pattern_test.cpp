@@ -15,6 +15,7 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/kernel/graph_ops.h"
 #include "stochtex/pattern/json_reader.h"
+#include "test_util.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/presets.h"
 
@@ -33,16 +34,7 @@ std::string graph(const std::string& nodes, const std::string& output = "c") {
     return R"({"size": 32, "seed": 9, "nodes": {)" + nodes + R"(}, "output": ")" + output + R"("})";
 }
 
-double meanError(const Image& a, const Image& b) {
-    double s = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            double d2 = 0;
-            for (int c = 0; c < 3; ++c) d2 += std::pow(double(a.at(x, y, c)) - b.at(x, y, c), 2);
-            s += std::sqrt(d2);
-        }
-    return s / double(a.pixelCount());
-}
+using test::meanRgbDistance;
 
 bool identical(const Image& a, const Image& b) {
     return a.data().size() == b.data().size() &&
@@ -196,7 +188,7 @@ TEST(GraphPattern, TransformSeesItsInputThroughTheMappedUv) {
     Camera near, far;
     near.view = {24, 24, 3.0, 10.0, 4.0};
     far.view = {24, 24, 6.0, 20.0, 8.0};
-    const double e = meanError(FilteredGraph(zoomed, o).render(near), FilteredGraph(plain, o).render(far));
+    const double e = meanRgbDistance(FilteredGraph(zoomed, o).render(near), FilteredGraph(plain, o).render(far));
     EXPECT_LT(e, 1e-4);
     // A derivative of a transformed field, and a sum over two transforms, are refused.
     const auto error = [](const std::string& text) -> std::string {
@@ -263,10 +255,10 @@ TEST(GraphPattern, MomentMatchingFiltersFigure14CloserToTheReference) {
         FilterOptions o;
         o.referenceMaxSamples = 32;
         const Image reference = FilteredGraph(g, o.use(parseFilter("reference"))).render(cam);
-        const double none = meanError(FilteredGraph(g, o.use(parseFilter("none"))).render(cam), reference);
+        const double none = meanRgbDistance(FilteredGraph(g, o.use(parseFilter("none"))).render(cam), reference);
         o.use(parseFilter("smooth"));
-        const double meanOnly = meanError(FilteredGraph(g, o, GraphMoments::MeanOnly).render(cam), reference);
-        const double matched = meanError(FilteredGraph(g, o).render(cam), reference);
+        const double meanOnly = meanRgbDistance(FilteredGraph(g, o, GraphMoments::MeanOnly).render(cam), reference);
+        const double matched = meanRgbDistance(FilteredGraph(g, o).render(cam), reference);
         if (footprint == 1) {
             EXPECT_LT(matched, 0.06);
             EXPECT_LT(none, 0.06);
