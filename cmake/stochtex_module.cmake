@@ -18,7 +18,7 @@
 
 # The one-way order of docs/ARCHITECTURE.md: a module depends only on modules
 # before it. Entries without a directory yet are skipped.
-set(STOCHTEX_MODULE_ORDER kernel core image noise filter pattern textures analysis report studies gpu)
+set(STOCHTEX_MODULE_ORDER kernel core image noise filter pattern textures analysis report studies gpu workbench)
 set(STOCHTEX_MODULE_MANIFEST ${CMAKE_BINARY_DIR}/stochtex_modules.cmake)
 
 function(stochtex_module)

@@ -1,51 +1,69 @@
-// stochtex view: an interactive window on a pattern, rendered by the GLSL
-// implementation (view_window.cpp has the controls).
-// --frames N --screenshot FILE renders N frames, saves the last, and exits
-// (how the tests try the window under Xvfb).
+// stochtex view: the workbench window on a pattern, a texture graph or a
+// ShaderToy program (src/stochtex/workbench: panels, view modes, live
+// analyses, reload, screenshots, recording).
+// --frames N --screenshot FILE renders N frames, saves the picture area of
+// the last and exits; --script FILE drives the window as a person would
+// (how the tests try it under Xvfb).
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "common.h"
-#include "view_window.h"
+#include "stochtex/workbench/workbench.h"
 
 namespace stochtex::cli {
 
 void registerView(CLI::App& app) {
     struct Args {
         PatternSource source;
-        ViewWindowOptions window;
+        std::string shadertoy, script;
+        WorkbenchOptions window;
         ResponseFlags response;
         std::vector<int> size{960, 640};
+        bool noPanel = false;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("view", "Interactive window (GLSL): wheel zooms, drag pans, 1/2/3 filter "
-                                           "none/paper/smooth, L colours/LEAN normals, V zoom/plane, Up/Down tilt, D camera/rasterizer "
-                                           "derivatives, Esc quits");
-    ViewWindowOptions& w = args->window;
+    auto* cmd = app.add_subcommand("view", "The workbench window (GLSL): edit a pattern, graph or ShaderToy program "
+                                           "live, watch its spectrum, flow or correlation; F1 in the window lists the keys");
+    WorkbenchOptions& w = args->window;
     addPatternSource(*cmd, args->source);
+    cmd->add_option("--shadertoy", args->shadertoy, "A ShaderToy program: its folder or manifest (docs/SHADERTOY.md)");
     addFilterFlag(*cmd, w.filter, "Starting mode: none | paper | smooth");
     addCameraFlags(*cmd, w.camera, false);
     cmd->add_option("--scale", w.camera.view.scale, "Starting scale (texels per pixel)");
     addAnisoFlag(*cmd, w.filter.aniso);
     addResponseFlags(*cmd, args->response);
-    cmd->add_option("--size", args->size, "Window size: N or W,H")->delimiter(',')->expected(1, 2);
+    cmd->add_option("--size", args->size, "Picture area: N or W,H (the panel adds 380 pixels at the left)")
+        ->delimiter(',')->expected(1, 2);
+    addEnumFlag(*cmd, "--show", w.view, kWorkbenchViewNames, "view", "Where the pattern is seen (default: --view's)");
+    addEnumFlag(*cmd, "--mode", w.mode, kWorkbenchModeNames, "mode", "What the picture shows (M cycles)");
+    addEnumFlag(*cmd, "--analysis", w.analysis, kLiveAnalysisNames, "analysis", "The live analysis (A cycles)");
+    cmd->add_option("--fps", w.shadertoy.fps, "ShaderToy: iFrameRate and the recording's rate (default 60)");
+    cmd->add_flag("--no-panel", args->noPanel, "Start with the panel hidden (Tab shows it)");
+    cmd->add_option("--script", args->script, "Steps to run, a JSON file (docs/WORKBENCH.md)");
     cmd->add_option("--frames", w.frames, "Quit after this many frames (0: when the window closes)")
         ->check(CLI::Range(0, 1000000));
-    cmd->add_option("--screenshot", w.screenshot, "Save the last frame to this PNG/EXR");
+    cmd->add_option("--screenshot", w.screenshot, "Save the picture area of the last frame to this PNG/EXR");
     cmd->callback([args, cmd] {
         applyResponseFlags(*cmd, args->response, args->window.filter);
-        ViewWindowOptions o = args->window;
+        WorkbenchOptions o = args->window;
         if (!o.screenshot.empty()) checkImageOutput(o.screenshot);
         o.camera.view.width = args->size[0];
         o.camera.view.height = args->size.size() > 1 ? args->size[1] : args->size[0];
-        if (std::min(o.camera.view.width, o.camera.view.height) < 16 ||
-            std::max(o.camera.view.width, o.camera.view.height) > 8192)
-            throw InputError("--size must be in [16, 8192] per side");
-        if (!isGpuFilter(o.filter)) throw InputError("--filter: the viewer shows none, paper or smooth");
+        o.panel = !args->noPanel;
+        if (!isGpuFilter(o.filter)) throw InputError("--filter: the window shows none, paper or smooth");
         validateCamera(o.camera);
-        if (o.filter.aniso < 1 || o.filter.aniso > kMaxAnisotropy) throw InputError("--aniso must be in [1, 16]");
-        const PatternSpec spec = loadPatternSource(args->source, FilterOptions{}.use(parseFilter("smooth")));
-        const int frames = runViewWindow(spec, o);
+        if (!cmd->count("--show") && o.camera.kind == Camera::Kind::Plane) o.view = WorkbenchView::Plane;
+        if (!args->script.empty()) o.script = parseWorkbenchScript(readJsonFile(args->script), args->script);
+        const bool program = !args->shadertoy.empty();
+        if (program && (!args->source.file.empty() || !args->source.preset.empty()))
+            throw InputError("--shadertoy: give a program or a pattern, not both");
+        WorkbenchDocument doc = program                       ? WorkbenchDocument::shadertoy(args->shadertoy)
+                                : !args->source.file.empty() ? WorkbenchDocument::patternFile(args->source.file)
+                                : !args->source.preset.empty() ? WorkbenchDocument::preset(args->source.preset)
+                                                                : throw InputError("give a pattern file, --preset NAME or --shadertoy PROGRAM");
+        if (args->source.seed) doc.set("/seed", *args->source.seed);
+        const int frames = runWorkbench(std::move(doc), o);
         if (!o.screenshot.empty()) std::printf("wrote %s after %d frames\n", o.screenshot.c_str(), frames);
     });
 }

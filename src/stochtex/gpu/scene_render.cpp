@@ -11,11 +11,8 @@
 
 namespace stochtex {
 
-Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
-                  float tiling) {
-    if (width < 1 || height < 1 || width > 8192 || height > 8192)
-        throw InputError::parameter("size", "must be in [1, 8192] per side, got " + std::to_string(width) + "x" +
-                                                std::to_string(height));
+void drawScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, const RenderTarget& target,
+               float tiling) {
     if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
         throw InputError::parameter("tiling", "must be a finite number in (0, 1e4], got " + formatValue(tiling));
     for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}  // earlier callers' errors are not ours
@@ -35,31 +32,38 @@ Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& c
         glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<const void*>(size_t(offsets[a]) * sizeof(float)));
     }
-    const RenderTarget target(width, height, true);
-    {
-        // The dark slate background, given as sRGB codes: the target holds linear light.
-        glClearColor(linearFromSrgb(0.08f), linearFromSrgb(0.09f), linearFromSrgb(0.11f), 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        glEnable(GL_DEPTH_TEST);
-        pattern.bind(program.id());
-        auto uniform = [&](const char* name) { return glGetUniformLocation(program.id(), name); };
-        const Mat4 vp = camera.viewProjection(float(width) / float(height));
-        glUniformMatrix4fv(uniform("uViewProjection"), 1, GL_FALSE, vp.data());
-        glUniform1f(uniform("uTiling"), tiling);
-        glUniform1i(uniform("uFiltered"), pattern.filtered());
-        glUniform1i(uniform("uLean"), pattern.responseKind() == ResponseKind::Lean);
-        const float l[3] = {0.45f, 0.8f, 0.4f};
-        const float n = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-        glUniform3f(uniform("uLight"), l[0] / n, l[1] / n, l[2] / n);
-        glUniform3f(uniform("uEye"), camera.eye[0], camera.eye[1], camera.eye[2]);
-        glBindVertexArray(vao.id());
-        glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, nullptr);
-        glDisable(GL_DEPTH_TEST);
-    }
+    target.bind();
+    // The dark slate background, given as sRGB codes: the target holds linear light.
+    glClearColor(linearFromSrgb(0.08f), linearFromSrgb(0.09f), linearFromSrgb(0.11f), 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    pattern.bind(program.id());
+    auto uniform = [&](const char* name) { return glGetUniformLocation(program.id(), name); };
+    const Mat4 vp = camera.viewProjection(float(target.width()) / float(target.height()));
+    glUniformMatrix4fv(uniform("uViewProjection"), 1, GL_FALSE, vp.data());
+    glUniform1f(uniform("uTiling"), tiling);
+    glUniform1i(uniform("uFiltered"), pattern.filtered());
+    glUniform1i(uniform("uLean"), pattern.responseKind() == ResponseKind::Lean);
+    const float l[3] = {0.45f, 0.8f, 0.4f};
+    const float n = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    glUniform3f(uniform("uLight"), l[0] / n, l[1] / n, l[2] / n);
+    glUniform3f(uniform("uEye"), camera.eye[0], camera.eye[1], camera.eye[2]);
+    glBindVertexArray(vao.id());
+    glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_DEPTH_TEST);
     // A draw GL refuses leaves only the clear colour: fail rather than
-    // return an empty picture as a success.
+    // show an empty picture as a success.
     if (const GLenum e = glGetError(); e != GL_NO_ERROR)
-        throw std::runtime_error("renderScene: OpenGL error " + std::to_string(e) + " while drawing the scene");
+        throw std::runtime_error("drawScene: OpenGL error " + std::to_string(e) + " while drawing the scene");
+}
+
+Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
+                  float tiling) {
+    if (width < 1 || height < 1 || width > 8192 || height > 8192)
+        throw InputError::parameter("size", "must be in [1, 8192] per side, got " + std::to_string(width) + "x" +
+                                                std::to_string(height));
+    const RenderTarget target(width, height, true);
+    drawScene(pattern, mesh, camera, target, tiling);
     // GL's row 0 is the bottom of the picture: flip for an image file.
     Image out = target.readRgb(RenderTarget::Rows::TopDown);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

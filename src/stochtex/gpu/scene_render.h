@@ -3,13 +3,20 @@
 // directional light by the view's scene program (mesh.vert + scene.frag),
 // the pattern's (or graph's) textures and uniforms bound by GpuView::bind.
 #include "stochtex/gpu/gpu_view.h"
+#include "stochtex/gpu/render_target.h"
 #include "stochtex/gpu/scene.h"
 #include "stochtex/image/image.h"
 
 namespace stochtex {
 
-// uv × tiling example periods, seen by a perspective camera; 3 channels,
-// row 0 at the top. width, height in [1, 8192]; tiling in (0, 1e4].
+// Draws the mesh, uv × tiling example periods, seen by a perspective
+// camera, into `target` (which needs a depth buffer), over the slate
+// background; rows as drawn (GL row 0 at the bottom). tiling in (0, 1e4].
+void drawScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, const RenderTarget& target,
+               float tiling);
+
+// drawScene into a new target, read back: 3 channels, row 0 at the top.
+// width, height in [1, 8192].
 Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
                   float tiling);
 

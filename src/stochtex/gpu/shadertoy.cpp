@@ -416,6 +416,11 @@ Image ShadertoyHost::image() const {
     return p.targets[size_t(p.latest)].readRgb(RenderTarget::Rows::TopDown);
 }
 
+unsigned ShadertoyHost::frameTexture() const {
+    const Impl::Pass& p = impl_->passes.back();
+    return p.targets[size_t(p.latest)].texture();
+}
+
 std::array<float, 4> ShadertoyHost::pixel(const std::string& pass, int x, int y) const {
     checkPixel(pass, x, y);
     const Impl& m = *impl_;

@@ -69,6 +69,9 @@ public:
     int frame() const;
     // The Image pass's last output, RGB, row 0 at the top.
     Image image() const;
+    // The texture holding it (RGBA32F, GL rows: row 0 at the bottom), for a
+    // window to show without a read-back; valid until the next frame or reset.
+    unsigned frameTexture() const;
     // The RGBA of a pass's last output at pixel (x, y), ShaderToy's
     // fragCoord convention (y up from the bottom row). InputError naming the
     // pass or the pixel when there is none.

@@ -87,12 +87,10 @@ Image PatternSource::render(const SourceRegion& region, double, int instance) co
     return pattern_.render(windowView(view_, region, instance, pattern_.exampleSize()));
 }
 
-Image FilteredPatternSource::render(const SourceRegion& region, double, int instance) const {
+Image CameraSource::render(const SourceRegion& region, double time, int instance) const {
+    checkWindow(region, time);
     Camera c = camera_;
     if (c.kind == Camera::Kind::Plane) {
-        // A perspective frame is not translation invariant: only whole frames.
-        if (region.x0 != 0 || region.y0 != 0)
-            throw InputError("filtered pattern source: a plane camera renders whole frames (region offset must be 0)");
         const auto o = instanceOffset(instance, exampleSize_);
         c.view.width = region.width;
         c.view.height = region.height;
@@ -101,7 +99,13 @@ Image FilteredPatternSource::render(const SourceRegion& region, double, int inst
     } else {
         c.view = windowView(c.view, region, instance, exampleSize_);
     }
-    return filtered_.render(c);
+    return renderer_(c);
+}
+
+void CameraSource::checkWindow(const SourceRegion& region, double) const {
+    // A perspective frame is not translation invariant: only whole frames.
+    if (camera_.kind == Camera::Kind::Plane && (region.x0 != 0 || region.y0 != 0))
+        throw InputError("pattern source: a plane camera renders whole frames (region offset must be 0)");
 }
 
 PhasorNoiseSource::PhasorNoiseSource(const PhasorNoiseParams& params, ColormapTable colormap, const View& view,

@@ -10,7 +10,9 @@
 // window moved by a hashed offset of up to 1024 example periods, which for
 // the tiled-and-blended noise (tiles hashed per grid cell) is another draw of
 // the random tile offsets. Instance 0 is the plain render.
+#include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "stochtex/image/image.h"
@@ -137,19 +139,33 @@ private:
     View view_;
 };
 
-// A filtered pattern through `camera` (its size is ignored). The filtered
-// pattern must outlive the source.
-class FilteredPatternSource : public TextureSource {
+// Any renderer of a camera's view (a FilteredPattern, the GPU's GpuView)
+// as a source: the region is a window of the camera's view (a plane camera
+// renders whole frames only: its region offset must be 0), instance i ≠ 0
+// moves the view by instanceOffset(i). The renderer must outlive the source.
+class CameraSource : public TextureSource {
 public:
-    FilteredPatternSource(const FilteredPattern& filtered, int exampleSize, const Camera& camera)
-        : filtered_(filtered), exampleSize_(exampleSize), camera_(camera) {}
+    using Renderer = std::function<Image(const Camera&)>;
+    CameraSource(Renderer renderer, int exampleSize, const Camera& camera)
+        : renderer_(std::move(renderer)), exampleSize_(exampleSize), camera_(camera) {}
     int channels() const override { return 3; }
     Image render(const SourceRegion& region, double time, int instance) const override;
+    // InputError for a region offset under a plane camera.
+    void checkWindow(const SourceRegion& region, double time) const override;
+    const Camera& camera() const { return camera_; }
 
 private:
-    const FilteredPattern& filtered_;
+    Renderer renderer_;
     int exampleSize_;
     Camera camera_;
+};
+
+// A filtered pattern through `camera` (its size is ignored). The filtered
+// pattern must outlive the source.
+class FilteredPatternSource : public CameraSource {
+public:
+    FilteredPatternSource(const FilteredPattern& filtered, int exampleSize, const Camera& camera)
+        : CameraSource([&filtered](const Camera& c) { return filtered.render(c); }, exampleSize, camera) {}
 };
 
 // Procedural phasor noise (noise/phasor_noise.h) under a phasor colormap H:

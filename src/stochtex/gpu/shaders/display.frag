@@ -1,13 +1,21 @@
-// A render target shown in a window: the target holds linear light with image
-// row 0 in GL row 0 (as `render` reads it back); the window shows GL row 0 at
-// the bottom, so rows are turned over, and its 8-bit buffer gets the sRGB
-// codes a PNG of `render` holds (kernel/colour.glsl).
+// A texture shown in a rectangle of a window (TextureDisplay): the rectangle
+// covers the texture (nearest texel, so at one texel per pixel the window
+// holds the texture exactly). A render target holds linear light with image
+// row 0 in GL row 0 (as `render` reads it back), while the window shows GL
+// row 0 at the bottom: such a texture is turned over (uTurnOver) and gets
+// the sRGB codes a PNG of `render` holds (uEncode, kernel/colour.glsl).
 uniform sampler2D uImage;
+uniform ivec4 uRect;  // x, y (GL window coordinates, bottom left), width, height
+uniform bool uTurnOver;
+uniform bool uEncode;
+uniform float uOpacity;
 layout(location = 0) out vec4 fragColour;
 
 void main() {
     ivec2 size = textureSize(uImage, 0);
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    vec3 c = texelFetch(uImage, ivec2(p.x, size.y - 1 - p.y), 0).rgb;
-    fragColour = vec4(srgbFromLinear3(c), 1.0);
+    vec2 f = (gl_FragCoord.xy - vec2(uRect.xy)) / vec2(uRect.zw);
+    ivec2 p = clamp(ivec2(floor(f * vec2(size))), ivec2(0), size - 1);
+    if (uTurnOver) p.y = size.y - 1 - p.y;
+    vec3 c = texelFetch(uImage, p, 0).rgb;
+    fragColour = vec4(uEncode ? srgbFromLinear3(c) : c, uOpacity);
 }

@@ -1,0 +1,170 @@
+#include "stochtex/workbench/document.h"
+
+#include <system_error>
+
+#include "stochtex/core/atomic_file.h"
+#include "stochtex/core/error.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/presets.h"
+
+namespace stochtex {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A missing file counts as changed once it is back (an editor saving by
+// rename removes it for a moment).
+fs::file_time_type stampOf(const fs::path& p) {
+    std::error_code ec;
+    const auto t = fs::last_write_time(p, ec);
+    return ec ? fs::file_time_type::min() : t;
+}
+
+// Every relative "path" member made absolute against `base`: the pattern's
+// image files (exemplars, colormaps, profiles, graph sources) are relative
+// to the pattern file's folder.
+void absolutePaths(nlohmann::json& j, const fs::path& base) {
+    if (j.is_object()) {
+        for (auto& [key, value] : j.items()) {
+            if (key == "path" && value.is_string()) {
+                const fs::path p = value.get<std::string>();
+                if (p.is_relative()) value = fs::absolute(base / p).lexically_normal().string();
+            } else {
+                absolutePaths(value, base);
+            }
+        }
+    } else if (j.is_array()) {
+        for (auto& value : j) absolutePaths(value, base);
+    }
+}
+
+}  // namespace
+
+WorkbenchDocument WorkbenchDocument::preset(const std::string& name) {
+    WorkbenchDocument d;
+    d.source_ = "preset " + name;
+    d.presetName_ = name;
+    d.json_ = JsonReader::parse(presetText(name), d.source_);
+    d.baseDir_ = ".";
+    d.patternSpec();  // a preset always parses; checked all the same
+    return d;
+}
+
+WorkbenchDocument WorkbenchDocument::patternFile(const std::string& path) {
+    WorkbenchDocument d;
+    d.source_ = path;
+    d.path_ = path;
+    d.json_ = readJsonFile(path);
+    d.baseDir_ = fs::path(path).parent_path();
+    if (d.baseDir_.empty()) d.baseDir_ = ".";
+    d.patternSpec();
+    d.watch({path});
+    return d;
+}
+
+WorkbenchDocument WorkbenchDocument::shadertoy(const std::string& path) {
+    WorkbenchDocument d;
+    d.kind_ = Kind::Shadertoy;
+    d.source_ = path;
+    d.path_ = path;
+    d.shadertoy_ = loadShadertoy(path);
+    std::vector<fs::path> files;
+    if (!fs::is_directory(path)) files.push_back(path);  // the manifest
+    if (!d.shadertoy_.common.empty()) files.push_back(d.shadertoy_.common);
+    for (const ShadertoyPass& pass : d.shadertoy_.passes) {
+        files.push_back(pass.code);
+        for (const ShadertoyChannel& c : pass.channels)
+            if (c.kind == ShadertoyChannel::Kind::Image) files.push_back(c.image);
+    }
+    d.watch(std::move(files));
+    return d;
+}
+
+PatternSpec WorkbenchDocument::patternSpec() const {
+    if (kind_ != Kind::Pattern) throw std::logic_error("WorkbenchDocument::patternSpec: not a pattern");
+    return parsePatternSpec(JsonReader(json_, source_), baseDir_);
+}
+
+void WorkbenchDocument::replace(const nlohmann::json& pattern) {
+    if (kind_ != Kind::Pattern) throw std::logic_error("WorkbenchDocument: a ShaderToy program is edited in its files");
+    nlohmann::json before = std::move(json_);
+    json_ = pattern;
+    try {
+        patternSpec();
+    } catch (...) {
+        json_ = std::move(before);
+        throw;
+    }
+    edited_ = true;
+}
+
+void WorkbenchDocument::set(const std::string& pointer, const nlohmann::json& value) {
+    nlohmann::json next = json_;
+    try {
+        const nlohmann::json::json_pointer p(pointer);
+        if (!p.empty() && !next.contains(p.parent_pointer()))
+            throw InputError(source_ + ": " + pointer + ": no such place in the pattern");
+        next[p] = value;
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(source_ + ": " + pointer + ": not a place in the pattern (" + e.what() + ")");
+    }
+    replace(next);
+}
+
+void WorkbenchDocument::remove(const std::string& pointer) {
+    nlohmann::json next = json_;
+    try {
+        const nlohmann::json::json_pointer p(pointer);
+        if (p.empty() || !next.contains(p)) throw InputError(source_ + ": " + pointer + ": nothing there to remove");
+        nlohmann::json& parent = next[p.parent_pointer()];
+        if (parent.is_array())
+            parent.erase(size_t(std::stoul(p.back())));
+        else
+            parent.erase(p.back());
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(source_ + ": " + pointer + ": not a place in the pattern (" + e.what() + ")");
+    }
+    replace(next);
+}
+
+void WorkbenchDocument::save(const std::string& path) {
+    if (kind_ != Kind::Pattern) throw std::logic_error("WorkbenchDocument::save: a ShaderToy program is its files");
+    nlohmann::json out = json_;
+    fs::path folder = fs::path(path).parent_path();
+    if (folder.empty()) folder = ".";
+    std::error_code ec;
+    if (!fs::equivalent(folder, baseDir_, ec)) absolutePaths(out, baseDir_);
+    writeFileAtomic(path, out.dump(2) + "\n");
+    if (!path_.empty() && fs::equivalent(path, path_, ec)) {
+        edited_ = false;
+        watch(watched_);  // our own write is not a change on disk
+    }
+}
+
+void WorkbenchDocument::watch(std::vector<fs::path> files) {
+    watched_ = std::move(files);
+    stamps_.clear();
+    for (const fs::path& f : watched_) stamps_.push_back(stampOf(f));
+}
+
+bool WorkbenchDocument::changedOnDisk() {
+    bool changed = false;
+    for (size_t i = 0; i < watched_.size(); ++i) {
+        const auto t = stampOf(watched_[i]);
+        if (t != stamps_[i]) {
+            stamps_[i] = t;
+            changed = true;
+        }
+    }
+    return changed;
+}
+
+void WorkbenchDocument::reload() {
+    WorkbenchDocument next = kind_ == Kind::Shadertoy ? shadertoy(path_.string())
+                             : path_.empty()           ? preset(presetName_)
+                                                       : patternFile(path_.string());
+    *this = std::move(next);
+}
+
+}  // namespace stochtex

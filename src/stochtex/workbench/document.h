@@ -1,0 +1,79 @@
+#pragma once
+// What the workbench has open: a pattern (a preset, a pattern file or a
+// texture graph, held as its JSON so that every edit is an edit of the file
+// a user would write, and saving writes it back) or a ShaderToy program (a
+// folder or manifest). Files on disk are watched for live reload.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "stochtex/gpu/shadertoy_spec.h"
+#include "stochtex/pattern/pattern_spec.h"
+
+namespace stochtex {
+
+class WorkbenchDocument {
+public:
+    enum class Kind { Pattern, Shadertoy };
+
+    // An embedded preset (InputError for an unknown name).
+    static WorkbenchDocument preset(const std::string& name);
+    // A pattern or graph file; InputError naming the file if it does not parse.
+    static WorkbenchDocument patternFile(const std::string& path);
+    // A ShaderToy program folder or manifest (loadShadertoy's checks).
+    static WorkbenchDocument shadertoy(const std::string& path);
+
+    Kind kind() const { return kind_; }
+    // "preset NAME" or the path: how messages and the title name it.
+    const std::string& source() const { return source_; }
+    // A pattern's JSON (Kind::Pattern).
+    const nlohmann::json& json() const { return json_; }
+    const std::filesystem::path& baseDir() const { return baseDir_; }
+    // The pattern as parsed now (InputError naming the source and the JSON
+    // pointer of a bad value, as for a file).
+    PatternSpec patternSpec() const;
+    // The program (Kind::Shadertoy), as loaded last.
+    const ShadertoySpec& shadertoySpec() const { return shadertoy_; }
+
+    // Replaces the value at a JSON pointer of the pattern (its parent must
+    // exist; an array index may be one past the end, to append). The edit is
+    // kept only if the pattern still parses: otherwise InputError as
+    // patternSpec() words it, and the document is unchanged.
+    void set(const std::string& pointer, const nlohmann::json& value);
+    // Removes an array element or object member (same rule).
+    void remove(const std::string& pointer);
+    // Replaces the whole pattern (same rule).
+    void replace(const nlohmann::json& pattern);
+    // Edits since loading (or the last save).
+    bool edited() const { return edited_; }
+
+    // Writes the pattern as JSON (atomically); a file's relative paths stay
+    // valid only beside the file, so paths are written absolute when the
+    // target is in another folder. Clears edited() when it is the source file.
+    void save(const std::string& path);
+
+    // The files the document was read from (the pattern file; a program's
+    // manifest, passes, Common and channel images), watched for reload.
+    const std::vector<std::filesystem::path>& watchedFiles() const { return watched_; }
+    // Whether a watched file changed on disk since the last call (or load).
+    bool changedOnDisk();
+    // Reads the document again from disk (edits are dropped). InputError as
+    // when it was opened; the document is unchanged then.
+    void reload();
+
+private:
+    WorkbenchDocument() = default;
+    void watch(std::vector<std::filesystem::path> files);
+    Kind kind_ = Kind::Pattern;
+    std::string source_, presetName_;
+    std::filesystem::path path_, baseDir_;
+    nlohmann::json json_;
+    ShadertoySpec shadertoy_;
+    bool edited_ = false;
+    std::vector<std::filesystem::path> watched_;
+    std::vector<std::filesystem::file_time_type> stamps_;
+};
+
+}  // namespace stochtex

@@ -1,0 +1,335 @@
+#include "stochtex/workbench/editors.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "stochtex/pattern/graph_nodes.h"
+
+namespace stochtex {
+
+using nlohmann::json;
+
+bool colourCodes(const json& value, float rgb[3]) {
+    if (value.is_string()) {
+        const std::string s = value.get<std::string>();
+        unsigned r = 0, g = 0, b = 0;
+        if (s.size() != 7 || s[0] != '#' || std::sscanf(s.c_str() + 1, "%02x%02x%02x", &r, &g, &b) != 3) return false;
+        rgb[0] = float(r) / 255.0f, rgb[1] = float(g) / 255.0f, rgb[2] = float(b) / 255.0f;
+        return true;
+    }
+    if (value.is_array() && value.size() == 3) {
+        for (int k = 0; k < 3; ++k) {
+            if (!value[size_t(k)].is_number()) return false;
+            rgb[k] = value[size_t(k)].get<float>();
+        }
+        return true;
+    }
+    return false;
+}
+
+std::string colourHex(const float rgb[3]) {
+    char s[8];
+    auto code = [](float v) { return unsigned(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    std::snprintf(s, sizeof s, "#%02x%02x%02x", code(rgb[0]), code(rgb[1]), code(rgb[2]));
+    return s;
+}
+
+namespace {
+
+// The widgets of one panel: each reads a member of `object` (at `pointer`)
+// and records an edit when the user changes it.
+class Fields {
+public:
+    Fields(const json& object, std::string pointer, std::vector<JsonEdit>& edits)
+        : object_(object), pointer_(std::move(pointer)), edits_(edits) {}
+
+    void number(const char* key, const char* label, double fallback, double lo, double hi, const char* format = "%.3f",
+                const char* help = nullptr) {
+        float v = float(object_.is_object() ? object_.value(key, fallback) : fallback);
+        const float speed = float((hi - lo) / 1000.0);
+        if (ImGui::DragFloat(label, &v, speed, float(lo), float(hi), format, ImGuiSliderFlags_AlwaysClamp))
+            edit(key, json(double(v)));
+        tooltip(help);
+    }
+    void integer(const char* key, const char* label, long long fallback, long long lo, long long hi,
+                 const char* help = nullptr) {
+        int v = int(object_.is_object() ? object_.value(key, fallback) : fallback);
+        if (ImGui::DragInt(label, &v, 1.0f, int(std::max<long long>(lo, -(1ll << 30))),
+                           int(std::min<long long>(hi, 1ll << 30)), "%d", ImGuiSliderFlags_AlwaysClamp))
+            edit(key, json(v));
+        tooltip(help);
+    }
+    void boolean(const char* key, const char* label, bool fallback, const char* help = nullptr) {
+        bool v = object_.is_object() ? object_.value(key, fallback) : fallback;
+        if (ImGui::Checkbox(label, &v)) edit(key, json(v));
+        tooltip(help);
+    }
+    void choice(const char* key, const char* label, const std::vector<std::string>& choices, const std::string& fallback,
+                const char* help = nullptr) {
+        const std::string now = object_.is_object() && object_.contains(key) && object_[key].is_string()
+                                    ? object_[key].get<std::string>()
+                                    : fallback;
+        if (ImGui::BeginCombo(label, now.c_str())) {
+            for (const std::string& c : choices)
+                if (ImGui::Selectable(c.c_str(), c == now) && c != now) edit(key, json(c));
+            ImGui::EndCombo();
+        }
+        tooltip(help);
+    }
+    void colour(const char* key, const char* label) {
+        float rgb[3] = {0, 0, 0};
+        if (object_.is_object() && object_.contains(key)) colourCodes(object_[key], rgb);
+        if (ImGui::ColorEdit3(label, rgb, ImGuiColorEditFlags_NoInputs)) edit(key, json(colourHex(rgb)));
+    }
+    void point(const char* key, const char* label, double lo = -10, double hi = 10) {
+        if (!object_.is_object() || !object_.contains(key) || !object_[key].is_array() || object_[key].size() != 2)
+            return;
+        float v[2] = {object_[key][0].get<float>(), object_[key][1].get<float>()};
+        if (ImGui::DragFloat2(label, v, 0.005f, float(lo), float(hi), "%.3f"))
+            edit(key, json::array({double(v[0]), double(v[1])}));
+    }
+    void text(const char* key, const char* label) {
+        std::string v = object_.is_object() ? object_.value(key, std::string()) : std::string();
+        char buffer[512];
+        std::snprintf(buffer, sizeof buffer, "%s", v.c_str());
+        if (ImGui::InputText(label, buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue))
+            edit(key, json(std::string(buffer)));
+    }
+    void edit(const std::string& key, json value) { edits_.push_back({pointer_ + "/" + key, std::move(value)}); }
+
+private:
+    static void tooltip(const char* help) {
+        if (help && *help && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", help);
+    }
+    const json& object_;
+    std::string pointer_;
+    std::vector<JsonEdit>& edits_;
+};
+
+// A NOISE's spectrum components (or a spectral_noise node's).
+void componentsEditor(const json& components, const std::string& pointer, std::vector<JsonEdit>& edits) {
+    if (!components.is_array()) return;
+    for (size_t i = 0; i < components.size(); ++i) {
+        const json& c = components[i];
+        const std::string at = pointer + "/" + std::to_string(i);
+        ImGui::PushID(int(i));
+        Fields f(c, at, edits);
+        f.choice("shape", "shape", {"lowpass", "ring", "bilobe"}, "lowpass");
+        const std::string shape = c.value("shape", std::string("lowpass"));
+        if (shape == "lowpass") {
+            f.number("cutoff", "cutoff", 8, 0.0, 2048, "%.2f", "cycles per example period");
+        } else {
+            f.number("frequency", "frequency", 8, 0.0, 2048, "%.2f", "cycles per example period");
+            f.number("bandwidth", "bandwidth", 2, 0.01, 1024, "%.2f");
+            if (shape == "bilobe") f.number("orientation", "orientation", 0, -180, 180, "%.1f°");
+        }
+        f.number("weight", "weight", 1, 0, 100, "%.3f", "powers of the components add");
+        if (components.size() > 1 && ImGui::SmallButton("remove component")) edits.push_back({at, nullptr, true});
+        ImGui::Separator();
+        ImGui::PopID();
+    }
+    if (ImGui::SmallButton("add component"))
+        edits.push_back({pointer + "/" + std::to_string(components.size()),
+                         json{{"shape", "ring"}, {"frequency", 12.0}, {"bandwidth", 3.0}}});
+}
+
+void noiseEditor(const json& noise, const std::string& pointer, std::vector<JsonEdit>& edits) {
+    if (!noise.is_object()) {
+        ImGui::TextDisabled("%s", noise.dump().c_str());
+        return;
+    }
+    Fields f(noise, pointer, edits);
+    if (noise.value("type", std::string()) == "image") {
+        f.text("path", "image");
+        f.boolean("gaussianize", "gaussianize", true, "blend in Gaussian space, keep the histogram");
+        return;
+    }
+    f.integer("size", "size", 256, 8, 4096, "example size (a power of two)");
+    f.number("mean", "mean", 0.5, 0, 1);
+    f.number("stddev", "stddev", 1.0 / 6.0, 0.001, 0.5);
+    componentsEditor(noise.value("components", json::array()), pointer + "/components", edits);
+}
+
+// A painted colormap's shapes, and painting on its canvas.
+void colormapEditor(const json& colormap, const std::string& pointer, const ColormapCanvas& canvas, PaintBrush& brush,
+                    std::vector<JsonEdit>& edits) {
+    if (!colormap.is_object()) return;
+    Fields f(colormap, pointer, edits);
+    const std::string type = colormap.value("type", std::string());
+    f.choice("transfer", "transfer", {"srgb", "linear"}, "srgb", "colours as sRGB codes (colour) or as data");
+    f.integer("resolution", "resolution", 256, 2, 1024, "table entries per side");
+    if (canvas.texture) {
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        // The table's row 0 is y = 0 (the bottom): texture v runs up.
+        ImGui::Image(canvas.texture, ImVec2(canvas.size, canvas.size), ImVec2(0, 1), ImVec2(1, 0));
+        if (type == "painted" && ImGui::IsItemClicked()) {
+            const ImVec2 m = ImGui::GetMousePos();
+            const double x = (m.x - at.x) / canvas.size, y = 1.0 - (m.y - at.y) / canvas.size;
+            const std::string colour = colourHex(brush.colour);
+            const double r = brush.radius;
+            json shape = brush.shape == 0   ? json{{"shape", "disc"}, {"center", {x, y}}, {"radius", r}}
+                         : brush.shape == 1 ? json{{"shape", "ring"}, {"center", {x, y}}, {"inner", 0.6 * r}, {"outer", r}}
+                                            : json{{"shape", "rectangle"}, {"min", {x - r, y - r}}, {"max", {x + r, y + r}}};
+            shape["colour"] = colour;
+            edits.push_back({pointer + "/shapes/" + std::to_string(colormap.value("shapes", json::array()).size()), shape});
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(type == "painted" ? "click: paint the brush's shape here (x right, y up)"
+                                                : "the colormap H (x right, y up)");
+    }
+    if (type == "painted") {
+        ImGui::Combo("brush", &brush.shape, "disc\0ring\0square\0");
+        ImGui::SliderFloat("brush size", &brush.radius, 0.005f, 0.5f, "%.3f");
+        ImGui::ColorEdit3("brush colour", brush.colour, ImGuiColorEditFlags_NoInputs);
+        f.colour("background", "background");
+        const json& shapes = colormap.value("shapes", json::array());
+        for (size_t i = 0; i < shapes.size(); ++i) {
+            const json& s = shapes[i];
+            const std::string at = pointer + "/shapes/" + std::to_string(i);
+            ImGui::PushID(int(i));
+            Fields g(s, at, edits);
+            g.colour("colour", "##colour");
+            ImGui::SameLine();
+            const std::string kind = s.value("shape", std::string());
+            if (ImGui::TreeNode("shape", "%zu: %s", i, kind.c_str())) {
+                g.point("min", "min");
+                g.point("max", "max");
+                g.point("center", "center");
+                g.point("point", "point");
+                if (s.contains("radius")) g.number("radius", "radius", 0.1, 0, 10);
+                if (s.contains("inner")) g.number("inner", "inner", 0.05, 0, 10);
+                if (s.contains("outer")) g.number("outer", "outer", 0.1, 0, 10);
+                if (s.contains("angle")) g.number("angle", "angle", 0, -360, 360, "%.1f°");
+                if (s.contains("width")) g.number("width", "width", 0.1, 0, 10);
+                if (ImGui::SmallButton("remove")) edits.push_back({at, nullptr, true});
+                ImGui::TreePop();
+            }
+            ImGui::PopID();
+        }
+    } else if (type == "phasor") {
+        f.choice("profile", "profile", {"sine", "sawtooth", "square", "image"}, "sine");
+        if (colormap.value("profile", std::string()) == "square") f.number("duty", "duty", 0.5, 0, 1);
+        const json& palette = colormap.value("palette", json::array());
+        for (size_t i = 0; i < palette.size(); ++i) {
+            ImGui::PushID(int(i));
+            Fields g(palette, pointer + "/palette", edits);
+            float rgb[3] = {0, 0, 0};
+            colourCodes(palette[i], rgb);
+            if (ImGui::ColorEdit3("##p", rgb, ImGuiColorEditFlags_NoInputs)) g.edit(std::to_string(i), colourHex(rgb));
+            ImGui::SameLine();
+            ImGui::PopID();
+        }
+        ImGui::NewLine();
+    } else if (type == "image") {
+        f.text("path", "image");
+    }
+}
+
+// One graph node: a widget per parameter of its table entry.
+void nodeEditor(const std::string& id, const json& node, const std::string& pointer, const ColormapCanvas& canvas,
+                PaintBrush& brush, std::vector<JsonEdit>& edits) {
+    const NodeInfo* info = findGraphNode(node.value("type", std::string()));
+    if (!info) return;
+    Fields f(node, pointer, edits);
+    for (const PortInfo& port : info->inputs)
+        ImGui::TextDisabled("%s <- %s", port.name.c_str(), node.value(port.name, std::string("?")).c_str());
+    for (const ParamInfo& p : info->params) {
+        const char* help = p.description.c_str();
+        const json fallback = p.fallback.is_null() ? p.sample : p.fallback;
+        switch (p.type) {
+            case ParamType::Number:
+                f.number(p.name.c_str(), p.name.c_str(), fallback.is_number() ? fallback.get<double>() : p.min, p.min,
+                         p.max, "%.4g", help);
+                break;
+            case ParamType::Integer:
+                f.integer(p.name.c_str(), p.name.c_str(), fallback.is_number() ? fallback.get<long long>() : (long long)p.min,
+                          (long long)p.min, (long long)p.max, help);
+                break;
+            case ParamType::Seed:
+                f.integer(p.name.c_str(), p.name.c_str(), 0, 0, 1ll << 30, help);
+                break;
+            case ParamType::Boolean:
+                f.boolean(p.name.c_str(), p.name.c_str(), fallback.is_boolean() && fallback.get<bool>(), help);
+                break;
+            case ParamType::Choice:
+                f.choice(p.name.c_str(), p.name.c_str(), p.choices, fallback.is_string() ? fallback.get<std::string>() : "",
+                         help);
+                break;
+            case ParamType::Path: f.text(p.name.c_str(), p.name.c_str()); break;
+            case ParamType::Components:
+                if (ImGui::TreeNode(p.name.c_str()))
+                    componentsEditor(node.value(p.name, json::array()), pointer + "/" + p.name, edits), ImGui::TreePop();
+                break;
+            case ParamType::Colormap:
+                if (ImGui::TreeNode(p.name.c_str()))
+                    colormapEditor(node.value(p.name, json::object()), pointer + "/" + p.name, canvas, brush, edits),
+                        ImGui::TreePop();
+                break;
+            case ParamType::Curve: {
+                const json points = node.value(p.name, fallback);
+                if (!points.is_array()) break;
+                ImGui::TextUnformatted(p.name.c_str());
+                for (size_t i = 0; i < points.size(); ++i) {
+                    ImGui::PushID(int(i));
+                    float v[2] = {points[i][0].get<float>(), points[i][1].get<float>()};
+                    if (ImGui::DragFloat2("##pt", v, 0.002f, -10.0f, 10.0f, "%.3f")) {
+                        json next = points;
+                        next[i] = {double(v[0]), double(v[1])};
+                        f.edit(p.name, next);
+                    }
+                    ImGui::PopID();
+                }
+                break;
+            }
+        }
+    }
+    (void)id;
+}
+
+}  // namespace
+
+std::vector<JsonEdit> patternEditor(const json& pattern, const ColormapCanvas& canvas, PaintBrush& brush) {
+    std::vector<JsonEdit> edits;
+    Fields header(pattern, "", edits);
+    if (ImGui::CollapsingHeader("Pattern", ImGuiTreeNodeFlags_DefaultOpen)) {
+        header.integer("seed", "seed", 1, 0, 1ll << 30, "tile offsets and (unless a noise sets its own) the examples");
+        header.number("scale", "scale", 1, 0.01, 64, "%.3f", "example texels per output pixel");
+        header.choice("offsets", "offsets", {"independent", "shared"}, "independent");
+    }
+    if (pattern.contains("nodes") && pattern["nodes"].is_object()) {
+        if (ImGui::CollapsingHeader("Graph nodes", ImGuiTreeNodeFlags_DefaultOpen))
+            for (const auto& [id, node] : pattern["nodes"].items()) {
+                ImGui::PushID(id.c_str());
+                if (ImGui::TreeNode(id.c_str(), "%s (%s)", id.c_str(), node.value("type", std::string("?")).c_str())) {
+                    nodeEditor(id, node, "/nodes/" + id, canvas, brush, edits);
+                    ImGui::TreePop();
+                }
+                ImGui::PopID();
+            }
+        return edits;
+    }
+    for (const char* axis : {"noise_x", "noise_y"})
+        if (pattern.contains(axis) && ImGui::CollapsingHeader(axis)) {
+            ImGui::PushID(axis);
+            noiseEditor(pattern[axis], std::string("/") + axis, edits);
+            ImGui::PopID();
+        }
+    if (pattern.contains("colormap") && ImGui::CollapsingHeader("Colormap", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::PushID("colormap");
+        colormapEditor(pattern["colormap"], "/colormap", canvas, brush, edits);
+        ImGui::PopID();
+    }
+    if (pattern.contains("normal_map") && pattern["normal_map"].is_object() && ImGui::CollapsingHeader("Normal map")) {
+        Fields n(pattern["normal_map"], "/normal_map", edits);
+        n.number("amplitude", "amplitude", 0.25, 0.0001, 100, "%.4f", "RMS slope per axis");
+        n.number("roughness", "roughness", 0.1, 0.001, 10, "%.4f", "base Beckmann roughness");
+        n.number("specular", "specular", 0.05, 0, 1);
+        n.colour("albedo", "albedo");
+    }
+    return edits;
+}
+
+}  // namespace stochtex

@@ -1,0 +1,47 @@
+#pragma once
+// The workbench's editing panels (Dear ImGui) over a pattern's JSON: the
+// noises' spectra, the colormap (a painted layout's shapes and colours, and
+// painting shapes on the colormap's canvas), a texture graph's nodes with
+// one widget per parameter of the node table (pattern/graph_nodes.h), and
+// the header (seed, scale). The panels never change the document: they
+// return the edits made this frame, which the workbench applies (and
+// refuses, with the parser's message, when the pattern would not parse).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace stochtex {
+
+struct JsonEdit {
+    std::string pointer;  // where, as a JSON pointer
+    nlohmann::json value;  // the new value (ignored by a removal)
+    bool remove = false;   // remove the element or member
+};
+
+// The brush of the colormap canvas: a click adds a shape of this kind and
+// colour at the point clicked.
+struct PaintBrush {
+    int shape = 0;  // 0 disc, 1 ring, 2 square
+    float radius = 0.08f;
+    float colour[3] = {0.85f, 0.35f, 0.2f};  // sRGB codes, as a colour picker gives them
+};
+
+// The canvas of a colormap: its table shown at `canvasSize` pixels (x to the
+// right, y up, as the table's domain) from an ImGui texture id; clicks add
+// the brush's shape to a painted colormap at `pointer`.
+struct ColormapCanvas {
+    void* texture = nullptr;  // ImTextureID of the table (display codes), null: none yet
+    float size = 256;
+};
+
+// Every panel of the pattern; `colormapCanvas` shows the output colormap.
+std::vector<JsonEdit> patternEditor(const nlohmann::json& pattern, const ColormapCanvas& canvas, PaintBrush& brush);
+
+// A colour member ("#rrggbb", [r, g, b] codes in [0, 1]) as sRGB codes;
+// false if it is neither.
+bool colourCodes(const nlohmann::json& value, float rgb[3]);
+// sRGB codes as "#rrggbb".
+std::string colourHex(const float rgb[3]);
+
+}  // namespace stochtex

@@ -1,0 +1,101 @@
+#include "stochtex/workbench/live_analysis.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "stochtex/analysis/plot.h"
+#include "stochtex/studies/flow_study.h"
+#include "stochtex/studies/spectrum_study.h"
+
+namespace stochtex {
+
+namespace {
+
+// Frames held in memory as a texture source: time 0 is `first`, time 1
+// `second`; source pixel (0, 0) is a frame's top-left pixel. Static over
+// instances (the studies here take one instance).
+class HeldFrames : public TextureSource {
+public:
+    HeldFrames(const Image& first, const Image& second) : first_(first), second_(second) {}
+    int channels() const override { return first_.channels(); }
+    Image render(const SourceRegion& region, double time, int) const override {
+        const Image& f = time < 0.5 ? first_ : second_;
+        if (region.width != f.width() || region.height != f.height() || region.x0 != 0 || region.y0 != 0)
+            throw std::logic_error("live analysis: held frames are analysed whole");
+        return f;
+    }
+
+private:
+    const Image& first_;
+    const Image& second_;
+};
+
+const Image& figure(const std::vector<Figure>& figures, const std::string& file) {
+    for (const Figure& f : figures)
+        if (f.file == file) return f.image;
+    throw std::logic_error("live analysis: the study made no " + file);
+}
+
+}  // namespace
+
+LiveAnalysisResult liveSpectrum(const Image& frame) {
+    SpectrumStudyOptions o;
+    o.region = {frame.width(), frame.height(), 0, 0};
+    const SpectrumStudyResult s = spectrumStudy(HeldFrames(frame, frame), o);
+    LiveAnalysisResult r;
+    r.image = toRgb(figure(s.figures, "spectrum.png"));
+    const SpectrumGeometry& g = s.geometry;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "peak |f| %.4f cycles/pixel at %.1f°\nanisotropy λ₁/λ₂ %.2f along %.1f°\nmean |f| %.4f\n"
+                  "angular max/min %.2f",
+                  g.peakRadius, g.peakOrientationDeg, g.anisotropy, g.orientationDeg, g.meanRadius, g.angularMaxMin);
+    r.summary = text;
+    for (double p : s.radial.power) r.profile.push_back(float(std::log10(std::max(p, 1e-30))));
+    r.profileLabel = "log10 radial power, |f| 0 to 0.5";
+    return r;
+}
+
+LiveAnalysisResult liveFlow(const Image& previous, const Image& current) {
+    FlowStudyOptions o;
+    o.region = {current.width(), current.height(), 0, 0};
+    o.time = 0;
+    o.timeStep = 1;
+    o.frames = 2;
+    o.method = FlowMethod::Dis;
+    const FlowStudyResult s = flowStudy(HeldFrames(previous, current), o);
+    LiveAnalysisResult r;
+    r.image = toRgb(figure(s.figures, "flow_colour.png"));
+    const FlowSummary& m = s.mean;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "mean vector (%.3f, %.3f) px/frame\nmean |v| %.3f px/frame\noutward fraction %.2f\n"
+                  "expansion rate %.4f /frame",
+                  m.meanU, m.meanV, m.meanMagnitude, m.outwardFraction, m.expansionRate);
+    r.summary = text;
+    return r;
+}
+
+LiveCorrelation::LiveCorrelation(int width, int height, int pointX, int pointY)
+    : width_(width), height_(height), pointX_(pointX), pointY_(pointY),
+      accumulator_(width, height, pointX, pointY, pointY, pointY) {}
+
+void LiveCorrelation::add(const Image& sample) { accumulator_.add(sample.channels() == 1 ? sample : toGray(sample)); }
+
+LiveAnalysisResult LiveCorrelation::result() const {
+    LiveAnalysisResult r;
+    if (count() < 2) {
+        r.image = Image(width_, height_, 3, 0.5f);
+        r.summary = "collecting samples…";
+        return r;
+    }
+    r.image = colourise(accumulator_.correlationWithPoint(), -1, 1, HeatPalette::Diverging);
+    char text[200];
+    std::snprintf(text, sizeof text, "Corr with (%d, %d) over %d samples\nblue −1, white 0, red +1", pointX_, pointY_,
+                  count());
+    r.summary = text;
+    return r;
+}
+
+}  // namespace stochtex

@@ -1,0 +1,69 @@
+#include "stochtex/workbench/script.h"
+
+#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/workbench/live_analysis.h"
+
+namespace stochtex {
+
+std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, const std::string& source) {
+    const JsonReader r(script, source);
+    std::vector<WorkbenchStep> steps;
+    int frame = 0;
+    using A = WorkbenchStep::Action;
+    const size_t n = r.arraySize();
+    if (n > 100000) r.fail("at most 100000 steps");
+    for (size_t i = 0; i < n; ++i) {
+        const JsonReader s = r.at(i);
+        s.expectObject({"frame", "zoom", "at", "pan", "filter", "aniso", "set", "value", "mode", "analysis", "view",
+                        "tilt", "pick", "pause", "screenshot", "save", "record", "stop_recording", "quit"});
+        WorkbenchStep step;
+        if (s.has("frame")) {
+            const int f = s.integer("frame", 0, 0, 1000000);
+            if (f < frame) s.at("frame").fail("frames never go back (the step before runs at frame " +
+                                              std::to_string(frame) + ")");
+            frame = f;
+        }
+        step.frame = frame;
+        int actions = 0;
+        auto point = [&](const JsonReader& p) {
+            if (p.arraySize() != 2) p.fail("needs [x, y] in pixels");
+            step.x = p.at(0).number(-1e6, 1e6);
+            step.y = p.at(1).number(-1e6, 1e6);
+        };
+        if (auto z = s.find("zoom")) {
+            ++actions, step.action = A::Zoom, step.amount = z->number(1.0 / 4096, 4096);
+            if (auto at = s.find("at")) point(*at); else s.fail("zoom needs \"at\": [x, y], the pixel that stays put");
+        }
+        if (auto p = s.find("pan")) ++actions, step.action = A::Pan, point(*p);
+        if (auto p = s.find("pick")) ++actions, step.action = A::Pick, point(*p);
+        if (auto f = s.find("filter")) {
+            ++actions, step.action = A::Filter, step.text = f->choice({"none", "paper", "smooth"});
+        }
+        if (auto a = s.find("aniso")) ++actions, step.action = A::Aniso, step.amount = a->integer(1, kMaxAnisotropy);
+        if (auto t = s.find("tilt")) ++actions, step.action = A::Tilt, step.amount = t->number(0, 89);
+        if (auto set = s.find("set")) {
+            ++actions, step.action = A::Set, step.text = set->string();
+            if (!s.has("value")) s.fail("set needs \"value\"");
+            step.value = s.at("value").value();
+        }
+        if (auto m = s.find("mode")) ++actions, step.action = A::Mode, step.text = enumName(kWorkbenchModeNames, m->choice(kWorkbenchModeNames));
+        if (auto a = s.find("analysis"))
+            ++actions, step.action = A::Analysis, step.text = enumName(kLiveAnalysisNames, a->choice(kLiveAnalysisNames));
+        if (auto v = s.find("view")) ++actions, step.action = A::View, step.text = enumName(kWorkbenchViewNames, v->choice(kWorkbenchViewNames));
+        if (auto p = s.find("pause")) ++actions, step.action = A::Pause, step.amount = s.boolean("pause", true);
+        for (auto [key, action] : {std::pair{"screenshot", A::Screenshot}, {"save", A::Save}, {"record", A::Record}})
+            if (auto f = s.find(key)) {
+                ++actions, step.action = action, step.text = f->string();
+                if (step.text.empty()) f->fail("needs a file name");
+            }
+        if (s.has("stop_recording")) ++actions, step.action = A::StopRecording;
+        if (s.has("quit")) ++actions, step.action = A::Quit;
+        if (actions != 1) s.fail(actions == 0 ? "a step needs one action (zoom, pan, filter, set, screenshot, …)"
+                                              : "one action per step");
+        steps.push_back(std::move(step));
+    }
+    return steps;
+}
+
+}  // namespace stochtex

@@ -1,0 +1,58 @@
+#pragma once
+// Scripted steps for the workbench window: what a person does with the
+// mouse and the panels, as data, so that a test (or a demo) can drive the
+// window under a virtual display. Each step runs before the frame it names
+// is drawn and goes through the same calls as the window's controls.
+//
+//   [{"frame": 2, "zoom": 2, "at": [80, 60]},       // wheel zoom about a pixel
+//    {"frame": 3, "pan": [10, -4]},                   // drag by pixels
+//    {"frame": 4, "filter": "paper"}, {"aniso": 4},   // filter mode, anisotropy
+//    {"frame": 5, "set": "/colormap/background", "value": "#203040"},  // an edit
+//    {"mode": "split"}, {"analysis": "flow"}, {"pick": [40, 30]},
+//    {"view": "plane"}, {"tilt": 60}, {"pause": true},
+//    {"screenshot": "a.png"}, {"save": "edited.json"},
+//    {"record": "clip.mp4"}, {"stop_recording": true}, {"quit": true}]
+//
+// A step without "frame" runs at the frame of the step before it; frames
+// never go back.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "stochtex/core/enum_names.h"
+
+namespace stochtex {
+
+// What the picture area shows (thesis Figure 3.2): the texture, the live
+// analysis, both side by side, the texture's left part and the analysis's
+// right part split at a movable line, or the analysis blended over it.
+enum class WorkbenchMode { Texture, Analysis, SideBySide, Split, Overlay };
+inline const EnumNames<WorkbenchMode> kWorkbenchModeNames{{"texture", WorkbenchMode::Texture},
+                                                          {"analysis", WorkbenchMode::Analysis},
+                                                          {"side-by-side", WorkbenchMode::SideBySide},
+                                                          {"split", WorkbenchMode::Split},
+                                                          {"overlay", WorkbenchMode::Overlay}};
+// How a pattern is seen: the 2D zoom view, the perspective plane, or on a 3D object.
+enum class WorkbenchView { Zoom, Plane, Sphere, Torus };
+inline const EnumNames<WorkbenchView> kWorkbenchViewNames{{"zoom", WorkbenchView::Zoom},
+                                                          {"plane", WorkbenchView::Plane},
+                                                          {"sphere", WorkbenchView::Sphere},
+                                                          {"torus", WorkbenchView::Torus}};
+
+struct WorkbenchStep {
+    enum class Action {
+        Zoom, Pan, Filter, Aniso, Set, Mode, Analysis, View, Tilt, Pick, Pause, Screenshot, Save, Record,
+        StopRecording, Quit
+    };
+    int frame = 0;
+    Action action = Action::Quit;
+    double x = 0, y = 0, amount = 1;  // zoom: factor at (x, y); pan, pick: (x, y); aniso, tilt: amount
+    std::string text;                 // a name (filter, mode, analysis, view), a JSON pointer or a file
+    nlohmann::json value;             // set: the value
+};
+
+// InputError naming the source and the JSON pointer of a bad step.
+std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, const std::string& source);
+
+}  // namespace stochtex

@@ -1,0 +1,805 @@
+#include "stochtex/workbench/workbench.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "stochtex/core/error.h"
+#include "stochtex/gpu/gpu_graph.h"
+#include "stochtex/gpu/render_target.h"
+#include "stochtex/gpu/scene.h"
+#include "stochtex/gpu/scene_render.h"
+#include "stochtex/gpu/texture_display.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/report/frame_sequence.h"
+#include "stochtex/textures/texture_source.h"
+#include "stochtex/workbench/editors.h"
+
+namespace stochtex {
+
+void validateWorkbenchOptions(const WorkbenchOptions& o) {
+    const View& v = o.camera.view;
+    if (std::min(v.width, v.height) < 16 || std::max(v.width, v.height) > 8192)
+        throw InputError::parameter("size", "must be in [16, 8192] per side, got " + std::to_string(v.width) + "x" +
+                                                std::to_string(v.height));
+    if (o.filter.source != StatisticsSource::Point && o.filter.source != StatisticsSource::Estimators)
+        throw InputError::parameter("filter", "the window draws none, paper or smooth, got " + filterName(o.filter));
+    if (o.filter.aniso < 1 || o.filter.aniso > kMaxAnisotropy)
+        throw InputError::parameter("aniso", "must be in [1, 16], got " + std::to_string(o.filter.aniso));
+    if (!(o.camera.tiltDeg >= 0 && o.camera.tiltDeg <= 89))
+        throw InputError::parameter("tilt", "must be in [0, 89] degrees, got " + formatValue(o.camera.tiltDeg));
+    if (!(o.camera.view.scale > 0) || !std::isfinite(o.camera.view.scale))
+        throw InputError::parameter("scale", "must be a finite number > 0, got " + formatValue(o.camera.view.scale));
+    if (o.frames < 0) throw InputError::parameter("frames", "must be ≥ 0, got " + std::to_string(o.frames));
+    validateShadertoySettings(o.shadertoy);
+}
+
+namespace {
+
+// The keys, as the help window lists them.
+struct KeyHelp {
+    const char* keys;
+    const char* what;
+};
+constexpr KeyHelp kPatternKeys[] = {
+    {"wheel", "zoom about the cursor (3D: distance)"},
+    {"left drag", "pan (3D: orbit)"},
+    {"right click", "pick the correlation point"},
+    {"Ctrl + drag", "move the split line"},
+    {"1 / 2 / 3", "filter none / paper / smooth"},
+    {"[ / ]", "anisotropy down / up"},
+    {"L", "colours or LEAN normals (a pattern with a normal map)"},
+    {"V", "view: zoom, plane, sphere, torus"},
+    {"Up / Down", "tilt of the plane"},
+    {"D", "footprints from the camera or the rasterizer"},
+    {"M", "mode: texture, analysis, side by side, split, overlay"},
+    {"A", "analysis: spectrum, flow, correlation"},
+};
+constexpr KeyHelp kCommonKeys[] = {
+    {"Tab", "show or hide the panel"},
+    {"F1", "this help"},
+    {"F2", "screenshot of the picture (PNG, current folder)"},
+    {"F3", "start or stop recording (MP4, current folder)"},
+    {"F4", "pause or run (ShaderToy)"},
+    {"F5", "reload from disk"},
+    {"Ctrl + S", "save the pattern (its file; a preset to NAME.json)"},
+    {"Esc", "quit"},
+};
+
+// ShaderToy's keyboard texture is indexed by JavaScript key codes: GLFW's
+// letters, digits and space are the same; a few others differ.
+int javascriptKeyCode(int glfwKey) {
+    if ((glfwKey >= GLFW_KEY_A && glfwKey <= GLFW_KEY_Z) || (glfwKey >= GLFW_KEY_0 && glfwKey <= GLFW_KEY_9) ||
+        glfwKey == GLFW_KEY_SPACE)
+        return glfwKey;
+    switch (glfwKey) {
+        case GLFW_KEY_LEFT: return 37;
+        case GLFW_KEY_UP: return 38;
+        case GLFW_KEY_RIGHT: return 39;
+        case GLFW_KEY_DOWN: return 40;
+        case GLFW_KEY_ENTER: return 13;
+        case GLFW_KEY_LEFT_SHIFT: return 16;
+        case GLFW_KEY_LEFT_CONTROL: return 17;
+        default: return -1;
+    }
+}
+
+// A file name in the current folder that does not exist yet: stem-N.ext.
+std::string freshName(const std::string& stem, const std::string& ext) {
+    for (int i = 1;; ++i) {
+        const std::string name = stem + "-" + std::to_string(i) + ext;
+        if (!std::filesystem::exists(name)) return name;
+    }
+}
+
+// The rows [0, h) and columns [x0, x0 + w) of an image.
+Image cropColumns(const Image& image, int x0, int w, int h) {
+    Image out(w, h, image.channels(), Image::Uninitialized{});
+    for (int y = 0; y < h; ++y)
+        std::copy_n(image.row(y) + size_t(x0) * size_t(image.channels()), size_t(w) * size_t(image.channels()),
+                    out.row(y));
+    return out;
+}
+
+class Workbench {
+public:
+    Workbench(WorkbenchDocument document, const WorkbenchOptions& options)
+        : doc_(std::move(document)), options_(options), camera_(options.camera), filter_(options.filter),
+          view_(options.view), mode_(options.mode), analysis_(options.analysis), showPanel_(options.panel) {
+        filterName_ = filter_.source == StatisticsSource::Point ? "none" : filterName(FilterOptions{}.use(
+                                                                               {filter_.source, {ResponseKind::PrefilteredColormap,
+                                                                                                 filter_.response.prefilter}}));
+        response_ = filter_.response.kind;
+        const int panel = showPanel_ ? kWorkbenchPanelWidth : 0;
+        context_ = GlContext::window(camera_.view.width + panel, camera_.view.height, "stochtex workbench");
+        window_ = static_cast<GLFWwindow*>(context_->nativeWindow());
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
+        ImGui::StyleColorsDark();
+        loadFont();
+        ImGui_ImplGlfw_InitForOpenGL(window_, true);
+        ImGui_ImplOpenGL3_Init("#version 330");
+        display_ = std::make_unique<TextureDisplay>();
+        loadDocument();
+        // What the first frame needs, built now: a program that does not
+        // compile or a pattern the GPU cannot draw fails the run here.
+        if (isShadertoy())
+            drawProgramFrame(textureRect(camera_.view.width + panel).width, camera_.view.height, false);
+        else
+            renderer();
+    }
+
+    ~Workbench() {
+        stopRecording();
+        renderers_.clear();
+        host_.reset();
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+
+    // DejaVu Sans (fonts-dejavu-core) with the Greek letters, sub- and
+    // superscripts and arrows the studies' numbers use; ImGui's own font
+    // (ASCII) when it is missing.
+    static void loadFont() {
+        const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+        if (!std::filesystem::exists(path)) return;
+        static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070, 0x209F,
+                                         0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+        ImGui::GetIO().Fonts->AddFontFromFileTTF(path, 15.0f, nullptr, ranges);
+    }
+
+    int run() {
+        size_t nextStep = 0;
+        auto lastPoll = std::chrono::steady_clock::now();
+        while (!context_->shouldClose() && !quit_ && (options_.frames == 0 || frame_ < options_.frames)) {
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+            while (nextStep < options_.script.size() && options_.script[nextStep].frame <= frame_)
+                runStep(options_.script[nextStep++]);
+            handleInput();
+            const auto now = std::chrono::steady_clock::now();
+            if (now - lastPoll > std::chrono::milliseconds(500)) {
+                lastPoll = now;
+                if (doc_.changedOnDisk()) reloadDocument();
+            }
+            if (needsRebuild_ && (!ImGui::IsAnyItemActive() || now - lastBuild_ > std::chrono::milliseconds(300)))
+                rebuild();
+            drawPicture();
+            // The picture area as it stands, before the panels are drawn over the window.
+            if (pendingScreenshot_.size() || recorder_ || (!options_.screenshot.empty() && isLastFrame())) {
+                const Image shot = pictureCodes();
+                for (const std::string& f : pendingScreenshot_) writeScreenshot(f, shot);
+                pendingScreenshot_.clear();
+                if (recorder_) recorder_->write(shot);
+                if (!options_.screenshot.empty() && isLastFrame()) writeScreenshot(options_.screenshot, shot);
+            }
+            drawPanels();
+            ImGui::Render();
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, windowWidth_, windowHeight_);
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            ++frame_;
+            updateTitle();
+            context_->swapAndPoll();
+        }
+        return frame_;
+    }
+
+private:
+    bool isLastFrame() const { return options_.frames > 0 && frame_ + 1 == options_.frames; }
+    bool isShadertoy() const { return doc_.kind() == WorkbenchDocument::Kind::Shadertoy; }
+    bool isScene() const { return view_ == WorkbenchView::Sphere || view_ == WorkbenchView::Torus; }
+    int panelWidth() const { return showPanel_ ? kWorkbenchPanelWidth : 0; }
+    bool analysing() const { return mode_ != WorkbenchMode::Texture; }
+
+    // --- the document ---
+
+    void loadDocument() {
+        renderers_.clear();
+        host_.reset();
+        analysisFrame_ = {};
+        previousFrame_ = {};
+        correlation_.reset();
+        if (isShadertoy()) return;  // the host is built at the picture's size
+        spec_ = doc_.patternSpec();
+        hasNormalMap_ = spec_.normalMap.has_value() && !spec_.graph;
+        if (!hasNormalMap_) response_ = ResponseKind::PrefilteredColormap;
+        exampleSize_ = needsGraphEvaluator(spec_) ? GraphPattern::build(spec_).exampleSize() : Pattern::build(spec_).exampleSize();
+        canvas_.upload(encodeTransfer(buildColormap(spec_.colormap).toImage(),
+                                      spec_.colormap.transfer.value_or(Transfer::Srgb)));
+    }
+
+    void rebuild() {
+        needsRebuild_ = false;
+        lastBuild_ = std::chrono::steady_clock::now();
+        try {
+            loadDocument();
+            error_.clear();
+        } catch (const std::exception& e) {
+            error_ = e.what();
+        }
+    }
+
+    void reloadDocument() {
+        try {
+            doc_.reload();
+            loadDocument();
+            error_.clear();
+            notice_ = "reloaded " + doc_.source();
+        } catch (const std::exception& e) {
+            error_ = std::string("reload: ") + e.what();
+        }
+    }
+
+    void applyEdit(const JsonEdit& e) {
+        try {
+            if (e.remove)
+                doc_.remove(e.pointer);
+            else
+                doc_.set(e.pointer, e.value);
+            error_.clear();
+            needsRebuild_ = true;
+        } catch (const InputError& x) {
+            error_ = x.what();
+        }
+    }
+
+    void save(const std::string& path) {
+        doc_.save(path);
+        notice_ = "saved " + path;
+    }
+
+    void saveDefault() {
+        if (isShadertoy()) return;
+        const bool preset = doc_.source().rfind("preset ", 0) == 0;
+        save(preset ? doc_.source().substr(7) + ".json" : doc_.source());
+    }
+
+    // --- drawing ---
+
+    GpuView& renderer() {
+        auto& r = renderers_[{filterName_, response_}];
+        if (!r) {
+            FilterOptions o = filter_;
+            const bool covariance = o.response.covariance;
+            o.use(parseFilter(filterName_));
+            o.response.kind = response_;
+            o.response.covariance = covariance;
+            r = makeGpuView(spec_, *context_, o);
+        }
+        return *r;
+    }
+
+    // The texture's part of the picture area: all of it, or the left half side by side.
+    DisplayRect textureRect() const { return textureRect(windowWidth_); }
+    DisplayRect textureRect(int windowWidth) const {
+        const int w = windowWidth - panelWidth(), h = windowHeight_;
+        const int tw = mode_ == WorkbenchMode::SideBySide ? std::max(1, w / 2) : std::max(1, w);
+        return {panelWidth(), 0, tw, std::max(1, h)};
+    }
+    DisplayRect pictureRect() const {
+        return {panelWidth(), 0, std::max(1, windowWidth_ - panelWidth()), std::max(1, windowHeight_)};
+    }
+
+    void drawPicture() {
+        context_->framebufferSize(windowWidth_, windowHeight_);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, windowWidth_, windowHeight_);
+        glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const DisplayRect tr = textureRect();
+        GLuint texture = 0;
+        TextureDisplay::Look look = TextureDisplay::kRenderTarget;
+        try {
+            if (isShadertoy()) {
+                texture = drawProgramFrame(tr.width, tr.height);
+                look = TextureDisplay::kGlCodes;
+            } else if (error_.empty() || !renderers_.empty() || spec_.colormap.resolution > 0) {
+                texture = drawPatternFrame(tr.width, tr.height);
+            }
+        } catch (const std::exception& e) {
+            error_ = e.what();
+        }
+        if (!texture) return;
+        frameChanged_ = true;
+        if (analysing()) updateAnalysis();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the analysis read back from the frame's own framebuffer
+        const DisplayRect pr = pictureRect();
+        switch (mode_) {
+            case WorkbenchMode::Texture: display_->show(texture, tr, look); break;
+            case WorkbenchMode::Analysis: showAnalysis(pr, 1); break;
+            case WorkbenchMode::SideBySide: {
+                display_->show(texture, tr, look);
+                showAnalysis({tr.x + tr.width, 0, pr.width - tr.width, pr.height}, 1);
+                break;
+            }
+            case WorkbenchMode::Split: {
+                display_->show(texture, tr, look);
+                const int cut = int(std::lround(split_ * pr.width));
+                glEnable(GL_SCISSOR_TEST);
+                glScissor(pr.x + cut, 0, pr.width - cut, pr.height);
+                showAnalysis(pr, 1);
+                glDisable(GL_SCISSOR_TEST);
+                break;
+            }
+            case WorkbenchMode::Overlay:
+                display_->show(texture, tr, look);
+                showAnalysis(pr, overlayOpacity_);
+                break;
+        }
+    }
+
+    void showAnalysis(const DisplayRect& rect, float opacity) {
+        if (analysisImage_.empty()) return;
+        TextureDisplay::Look look = TextureDisplay::kImageCodes;
+        look.opacity = opacity;
+        display_->show(analysisImage_.texture(), rect, look);
+    }
+
+    GLuint drawPatternFrame(int w, int h) {
+        if (!target_ || target_->width() != w || target_->height() != h)
+            target_ = std::make_unique<RenderTarget>(w, h, true);
+        GpuView& r = renderer();
+        if (isScene()) {
+            SceneCamera sc;
+            const float yaw = float(orbitYaw_ * M_PI / 180), pitch = float(orbitPitch_ * M_PI / 180);
+            sc.target = {0, 0, 0};
+            sc.eye = {orbitDistance_ * std::cos(pitch) * std::sin(yaw), orbitDistance_ * std::sin(pitch),
+                      orbitDistance_ * std::cos(pitch) * std::cos(yaw)};
+            drawScene(r, makeObject(view_ == WorkbenchView::Sphere ? "sphere" : "torus"), sc, *target_, 4.0f);
+        } else {
+            camera_.kind = view_ == WorkbenchView::Plane ? Camera::Kind::Plane : Camera::Kind::Zoom;
+            camera_.view.width = w;
+            camera_.view.height = h;
+            target_->bind();
+            r.setDerivatives(derivatives_);
+            r.drawView(camera_);
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return target_->texture();
+    }
+
+    GLuint drawProgramFrame(int w, int h, bool render = true) {
+        if (!host_ || host_->settings().width != w || host_->settings().height != h) {
+            ShadertoySettings s = options_.shadertoy;
+            s.width = w;
+            s.height = h;
+            host_.reset();
+            host_ = std::make_unique<ShadertoyHost>(doc_.shadertoySpec(), *context_, s);
+            lastProgramFrame_ = -1;
+        }
+        if (render && (!paused_ || host_->frame() == 0)) {
+            host_->setMouse(mouse_);
+            host_->renderFrame();
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return host_->frameTexture();
+    }
+
+    // The live analysis of the frame just drawn: spectrum and flow of the
+    // frames shown, correlation over a pattern's instances (a program's frames).
+    void updateAnalysis() {
+        const bool newFrame = !isShadertoy() || host_->frame() != lastProgramFrame_;
+        if (isShadertoy()) lastProgramFrame_ = host_->frame();
+        Image frame = isShadertoy() ? host_->image() : target_->readRgb(RenderTarget::Rows::TopDown);
+        LiveAnalysisResult result;
+        switch (analysis_) {
+            case LiveAnalysisKind::Spectrum:
+                if (!newFrame && !analysisDirty_ && !analysisImage_.empty()) return;
+                result = liveSpectrum(frame);
+                break;
+            case LiveAnalysisKind::Flow:
+                if (!newFrame && !analysisDirty_ && !analysisImage_.empty()) return;
+                if (previousFrame_.width() != frame.width() || previousFrame_.height() != frame.height())
+                    previousFrame_ = frame;
+                result = liveFlow(previousFrame_, frame);
+                previousFrame_ = frame;
+                break;
+            case LiveAnalysisKind::Correlation: result = correlationStep(frame, newFrame); break;
+        }
+        analysisDirty_ = false;
+        analysisImage_.upload(result.image);
+        analysisSummary_ = result.summary;
+        analysisProfile_ = result.profile;
+        analysisProfileLabel_ = result.profileLabel;
+    }
+
+    LiveAnalysisResult correlationStep(const Image& frame, bool newFrame) {
+        const int w = frame.width(), h = frame.height();
+        const int px = std::clamp(pickX_ < 0 ? w / 2 : pickX_, 0, w - 1), py = std::clamp(pickY_ < 0 ? h / 2 : pickY_, 0, h - 1);
+        if (!correlation_ || correlation_->width() != w || correlation_->height() != h || correlation_->pointX() != px ||
+            correlation_->pointY() != py || analysisDirty_)
+            correlation_ = std::make_unique<LiveCorrelation>(w, h, px, py);
+        if (isShadertoy()) {
+            if (newFrame) correlation_->add(frame);  // a program's samples: its frames
+        } else if (!isScene() && correlation_->count() < 4096) {
+            // A pattern's samples: its instances, the view moved by a hashed whole-texel offset.
+            GpuView& r = renderer();
+            Camera c = camera_;
+            const CameraSource source([&r](const Camera& cam) { return r.render(cam); }, exampleSize_, c);
+            for (int k = 0; k < 4; ++k) {
+                const int i = correlation_->count();
+                correlation_->add(source.render({w, h, 0, 0}, 0, i));
+            }
+        }
+        LiveAnalysisResult r = correlation_->result();
+        if (isScene()) r.summary = "correlation over instances: in the zoom and plane views";
+        return r;
+    }
+
+    // The picture area as shown (display codes), row 0 at the top.
+    Image pictureCodes() const {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glReadBuffer(GL_BACK);
+        const Image all = readBoundFramebufferRgb(windowWidth_, windowHeight_, RenderTarget::Rows::TopDown);
+        const DisplayRect pr = pictureRect();
+        return cropColumns(all, pr.x, pr.width, pr.height);
+    }
+
+    void writeScreenshot(const std::string& path, const Image& shot) {
+        writeImage(path, shot, kNoTransfer);  // sRGB codes already
+        notice_ = "wrote " + path;
+    }
+
+    void startRecording(const std::string& path) {
+        stopRecording();
+        const DisplayRect pr = pictureRect();
+        const double fps = isShadertoy() ? options_.shadertoy.fps : 30.0;
+        recorder_ = std::make_unique<FrameSequenceWriter>(path, pr.width, pr.height, fps, "", Transfer::Linear);
+        recordingPath_ = path;
+        notice_ = "recording " + path;
+    }
+    void stopRecording() {
+        if (!recorder_) return;
+        const std::string written = recorder_->finish();
+        recorder_.reset();
+        notice_ = "wrote " + (written.empty() ? recordingPath_ : written);
+    }
+
+    // --- controls: the mouse, the keys and the script act through these ---
+
+    void zoomAt(double factor, double px, double py) {
+        if (isScene()) {
+            orbitDistance_ = float(std::clamp(orbitDistance_ / factor, 1.3, 20.0));
+            return;
+        }
+        View& v = camera_.view;
+        const double next = std::clamp(v.scale / factor, 1.0 / 64.0, 4096.0);
+        v.offsetU += px * (v.scale - next);
+        v.offsetV += py * (v.scale - next);
+        v.scale = next;
+        analysisDirty_ = true;
+    }
+    void pan(double dx, double dy) {
+        if (isScene()) {
+            orbitYaw_ -= dx * 0.4;
+            orbitPitch_ = std::clamp(orbitPitch_ + dy * 0.4, -80.0, 80.0);
+            return;
+        }
+        camera_.view.offsetU -= dx * camera_.view.scale;
+        camera_.view.offsetV -= dy * camera_.view.scale;
+        analysisDirty_ = true;
+    }
+    void setFilter(const std::string& name) {
+        filterName_ = name;
+        analysisDirty_ = true;
+    }
+    void setAniso(int k) {
+        k = std::clamp(k, 1, int(kMaxAnisotropy));
+        if (k == filter_.aniso) return;
+        filter_.aniso = k;
+        renderers_.clear();  // the probes are compiled in
+    }
+    void setView(WorkbenchView v) {
+        view_ = v;
+        analysisDirty_ = true;
+    }
+    void setPick(double x, double y) {
+        pickX_ = int(x);
+        pickY_ = int(y);
+        analysisDirty_ = true;
+    }
+
+    void runStep(const WorkbenchStep& s) {
+        using A = WorkbenchStep::Action;
+        switch (s.action) {
+            case A::Zoom: zoomAt(s.amount, s.x, s.y); break;
+            case A::Pan: pan(s.x, s.y); break;
+            case A::Filter: setFilter(s.text); break;
+            case A::Aniso: setAniso(int(s.amount)); break;
+            case A::Tilt: camera_.tiltDeg = s.amount; break;
+            case A::Set: {
+                // A script's edit that the pattern refuses fails the run: a test must see it.
+                if (s.value.is_null() && s.text.empty()) break;
+                doc_.set(s.text, s.value);
+                loadDocument();
+                break;
+            }
+            case A::Mode: mode_ = parseEnum(kWorkbenchModeNames, s.text, "mode"); analysisDirty_ = true; break;
+            case A::Analysis: analysis_ = parseEnum(kLiveAnalysisNames, s.text, "analysis"); analysisDirty_ = true; break;
+            case A::View: setView(parseEnum(kWorkbenchViewNames, s.text, "view")); break;
+            case A::Pick: setPick(s.x, s.y); break;
+            case A::Pause: paused_ = s.amount != 0; break;
+            case A::Screenshot: pendingScreenshot_.push_back(s.text); break;
+            case A::Save: save(s.text); break;
+            case A::Record: startRecording(s.text); break;
+            case A::StopRecording: stopRecording(); break;
+            case A::Quit: quit_ = true; break;
+        }
+    }
+
+    void handleInput() {
+        ImGuiIO& io = ImGui::GetIO();
+        const DisplayRect pr = pictureRect(), tr = textureRect();
+        const double px = io.MousePos.x - pr.x, py = io.MousePos.y;  // picture pixels, rows down
+        const bool overPicture = px >= 0 && py >= 0 && px < pr.width && py < pr.height;
+        if (!io.WantCaptureMouse && overPicture) {
+            if (io.MouseWheel != 0) zoomAt(std::pow(1.15, io.MouseWheel), std::min(px, double(tr.width)), py);
+            if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+                if (io.KeyCtrl)
+                    split_ = float(std::clamp(px / pr.width, 0.0, 1.0));
+                else if (!isShadertoy())
+                    pan(io.MouseDelta.x, io.MouseDelta.y);
+            }
+            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) setPick(std::min(px, double(tr.width - 1)), py);
+            if (isShadertoy()) {
+                // iMouse: xy where the button is held, zw where it was pressed (negative once released).
+                const float mx = float(std::min(px, double(tr.width - 1))), my = float(tr.height - 1 - py);
+                if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) mouse_ = {mx, my, mx, my};
+                else if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) mouse_[0] = mx, mouse_[1] = my;
+                else if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) mouse_[2] = -std::abs(mouse_[2]);
+            }
+        }
+        if (io.WantCaptureKeyboard) return;
+        auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+        if (pressed(GLFW_KEY_ESCAPE)) quit_ = true;
+        if (pressed(GLFW_KEY_TAB)) showPanel_ = !showPanel_;
+        if (pressed(GLFW_KEY_F1)) showHelp_ = !showHelp_;
+        if (pressed(GLFW_KEY_F2)) pendingScreenshot_.push_back(freshName("stochtex-screenshot", ".png"));
+        if (pressed(GLFW_KEY_F3)) recorder_ ? stopRecording() : startRecording(freshName("stochtex-recording", ".mp4"));
+        if (pressed(GLFW_KEY_F4)) paused_ = !paused_;
+        if (pressed(GLFW_KEY_F5)) reloadDocument();
+        if (io.KeyCtrl && pressed(GLFW_KEY_S)) saveDefault();
+        if (isShadertoy()) {
+            // Every other key goes to the program's keyboard texture.
+            for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
+                const int code = javascriptKeyCode(key);
+                if (code < 0) continue;
+                if (ImGui::IsKeyPressed(key, false)) host_->setKey(code, true);
+                if (ImGui::IsKeyReleased(key)) host_->setKey(code, false);
+            }
+            return;
+        }
+        if (io.KeyCtrl) return;
+        if (pressed(GLFW_KEY_1)) setFilter("none");
+        if (pressed(GLFW_KEY_2)) setFilter("paper");
+        if (pressed(GLFW_KEY_3)) setFilter("smooth");
+        if (pressed(GLFW_KEY_LEFT_BRACKET)) setAniso(filter_.aniso / 2);
+        if (pressed(GLFW_KEY_RIGHT_BRACKET)) setAniso(filter_.aniso * 2);
+        if (pressed(GLFW_KEY_L) && hasNormalMap_)
+            response_ = response_ == ResponseKind::Lean ? ResponseKind::PrefilteredColormap : ResponseKind::Lean;
+        if (pressed(GLFW_KEY_V)) setView(WorkbenchView((int(view_) + 1) % 4));
+        if (pressed(GLFW_KEY_D))
+            derivatives_ = derivatives_ == GpuView::Derivatives::Camera ? GpuView::Derivatives::Rasterizer
+                                                                        : GpuView::Derivatives::Camera;
+        if (ImGui::IsKeyPressed(GLFW_KEY_UP)) camera_.tiltDeg = std::min(89.0, camera_.tiltDeg + 2.0);
+        if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) camera_.tiltDeg = std::max(0.0, camera_.tiltDeg - 2.0);
+        if (pressed(GLFW_KEY_M)) mode_ = WorkbenchMode((int(mode_) + 1) % 5), analysisDirty_ = true;
+        if (pressed(GLFW_KEY_A)) analysis_ = LiveAnalysisKind((int(analysis_) + 1) % 3), analysisDirty_ = true;
+    }
+
+    // --- the panels ---
+
+    template <class E>
+    bool enumCombo(const char* label, E& value, const EnumNames<E>& names) {
+        bool changed = false;
+        if (ImGui::BeginCombo(label, enumName(names, value).c_str())) {
+            for (const auto& [name, v] : names)
+                if (ImGui::Selectable(name.c_str(), v == value)) value = v, changed = true;
+            ImGui::EndCombo();
+        }
+        return changed;
+    }
+
+    void drawPanels() {
+        if (showHelp_) drawHelp();
+        if (!showPanel_) return;
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(float(kWorkbenchPanelWidth), float(windowHeight_)));
+        ImGui::Begin("stochtex", nullptr,
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                         ImGuiWindowFlags_NoTitleBar);
+        ImGui::TextWrapped("%s", doc_.source().c_str());
+        ImGui::TextDisabled("F1: keys   Tab: hide panel");
+        if (!error_.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", error_.c_str());
+        if (!notice_.empty()) ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "%s", notice_.c_str());
+        if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) drawViewControls();
+        if (analysing() && ImGui::CollapsingHeader("Analysis", ImGuiTreeNodeFlags_DefaultOpen)) drawAnalysisPanel();
+        if (!isShadertoy()) {
+            ColormapCanvas canvas;
+            canvas.texture = canvas_.empty() ? nullptr : reinterpret_cast<void*>(uintptr_t(canvas_.texture()));
+            canvas.size = 200;
+            for (const JsonEdit& e : patternEditor(doc_.json(), canvas, brush_)) applyEdit(e);
+            if (ImGui::Button("Save JSON (Ctrl+S)")) saveDefault();
+            ImGui::SameLine();
+            static char path[256] = "edited.json";
+            ImGui::SetNextItemWidth(160);
+            ImGui::InputText("##saveas", path, sizeof path);
+            ImGui::SameLine();
+            if (ImGui::Button("Save as")) save(path);
+        }
+        ImGui::End();
+    }
+
+    void drawViewControls() {
+        enumCombo("mode", mode_, kWorkbenchModeNames);
+        if (mode_ == WorkbenchMode::Split) ImGui::SliderFloat("split", &split_, 0, 1);
+        if (mode_ == WorkbenchMode::Overlay) ImGui::SliderFloat("opacity", &overlayOpacity_, 0, 1);
+        if (analysing() && enumCombo("analysis", analysis_, kLiveAnalysisNames)) analysisDirty_ = true;
+        if (isShadertoy()) {
+            ImGui::Text("frame %d, iTime %.2f s", host_ ? host_->frame() : 0,
+                        host_ ? options_.shadertoy.startTime + host_->frame() / options_.shadertoy.fps : 0.0);
+            ImGui::Checkbox("pause (F4)", &paused_);
+            ImGui::SameLine();
+            if (ImGui::Button("restart")) host_.reset();
+            return;
+        }
+        static const std::vector<std::string> filters{"none", "paper", "smooth"};
+        if (ImGui::BeginCombo("filter", filterName_.c_str())) {
+            for (const std::string& f : filters)
+                if (ImGui::Selectable(f.c_str(), f == filterName_)) setFilter(f);
+            ImGui::EndCombo();
+        }
+        int aniso = filter_.aniso;
+        if (ImGui::SliderInt("aniso", &aniso, 1, kMaxAnisotropy)) setAniso(aniso);
+        if (hasNormalMap_) {
+            bool lean = response_ == ResponseKind::Lean;
+            if (ImGui::Checkbox("LEAN normals (L)", &lean))
+                response_ = lean ? ResponseKind::Lean : ResponseKind::PrefilteredColormap;
+        }
+        WorkbenchView v = view_;
+        if (enumCombo("view", v, kWorkbenchViewNames)) setView(v);
+        if (view_ == WorkbenchView::Plane) {
+            float tilt = float(camera_.tiltDeg);
+            if (ImGui::SliderFloat("tilt", &tilt, 0, 89, "%.1f°")) camera_.tiltDeg = tilt;
+        }
+        if (!isScene()) {
+            float scale = float(camera_.view.scale);
+            if (ImGui::SliderFloat("scale", &scale, 1.0f / 64, 4096, "%.4g texels/px", ImGuiSliderFlags_Logarithmic))
+                zoomAt(camera_.view.scale / scale, textureRect().width / 2.0, textureRect().height / 2.0);
+            bool rasterizer = derivatives_ == GpuView::Derivatives::Rasterizer;
+            if (ImGui::Checkbox("rasterizer derivatives (D)", &rasterizer))
+                derivatives_ = rasterizer ? GpuView::Derivatives::Rasterizer : GpuView::Derivatives::Camera;
+        }
+    }
+
+    void drawAnalysisPanel() {
+        ImGui::TextUnformatted(analysisSummary_.c_str());
+        if (!analysisProfile_.empty())
+            ImGui::PlotLines("##profile", analysisProfile_.data(), int(analysisProfile_.size()), 0,
+                             analysisProfileLabel_.c_str(), FLT_MAX, FLT_MAX, ImVec2(float(kWorkbenchPanelWidth - 30), 80));
+        if (analysis_ == LiveAnalysisKind::Correlation) {
+            ImGui::TextDisabled("right click: pick the point");
+            if (ImGui::Button("restart the samples")) analysisDirty_ = true;
+        }
+    }
+
+    void drawHelp() {
+        ImGui::SetNextWindowPos(ImVec2(float(panelWidth() + 20), 20), ImGuiCond_Appearing);
+        ImGui::Begin("Keys (F1)", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize);
+        if (ImGui::BeginTable("keys", 2)) {
+            auto rows = [](const auto& table) {
+                for (const KeyHelp& k : table) {
+                    ImGui::TableNextRow();
+                    ImGui::TableNextColumn();
+                    ImGui::TextUnformatted(k.keys);
+                    ImGui::TableNextColumn();
+                    ImGui::TextUnformatted(k.what);
+                }
+            };
+            if (!isShadertoy()) rows(kPatternKeys);
+            rows(kCommonKeys);
+            ImGui::EndTable();
+        }
+        if (isShadertoy()) ImGui::TextWrapped("Other keys and the left button go to the program (keyboard texture, iMouse).");
+        ImGui::End();
+    }
+
+    void updateTitle() {
+        const auto now = std::chrono::steady_clock::now();
+        const double dt = std::chrono::duration<double>(now - lastFrameTime_).count();
+        lastFrameTime_ = now;
+        fps_ = fps_ == 0 ? 1.0 / std::max(dt, 1e-6) : 0.9 * fps_ + 0.1 / std::max(dt, 1e-6);
+        char title[400];
+        if (isShadertoy())
+            std::snprintf(title, sizeof title, "stochtex workbench - %s - %s - %.0f fps", doc_.source().c_str(),
+                          enumName(kWorkbenchModeNames, mode_).c_str(), fps_);
+        else
+            std::snprintf(title, sizeof title, "stochtex workbench - %s%s - %s - %s view - scale %.3g - %s - %.0f fps",
+                          doc_.source().c_str(), doc_.edited() ? " (edited)" : "",
+                          filterName_ == "none" ? "unfiltered" : filterName_.c_str(),
+                          enumName(kWorkbenchViewNames, view_).c_str(), camera_.view.scale,
+                          enumName(kWorkbenchModeNames, mode_).c_str(), fps_);
+        context_->setTitle(title);
+    }
+
+    WorkbenchDocument doc_;
+    WorkbenchOptions options_;
+    std::unique_ptr<GlContext> context_;
+    GLFWwindow* window_ = nullptr;
+    std::unique_ptr<TextureDisplay> display_;
+
+    // The pattern and its renderers (one per filter and response, built on first use).
+    PatternSpec spec_;
+    int exampleSize_ = 256;
+    bool hasNormalMap_ = false;
+    std::map<std::pair<std::string, ResponseKind>, std::unique_ptr<GpuView>> renderers_;
+    std::unique_ptr<RenderTarget> target_;
+    std::unique_ptr<ShadertoyHost> host_;
+    DisplayImage canvas_;
+    PaintBrush brush_;
+    bool needsRebuild_ = false;
+    std::chrono::steady_clock::time_point lastBuild_{};
+
+    // What is shown.
+    Camera camera_;
+    FilterOptions filter_;
+    std::string filterName_;
+    ResponseKind response_ = ResponseKind::PrefilteredColormap;
+    GpuView::Derivatives derivatives_ = GpuView::Derivatives::Camera;
+    WorkbenchView view_;
+    WorkbenchMode mode_;
+    LiveAnalysisKind analysis_;
+    float orbitDistance_ = 3.6f;
+    double orbitYaw_ = 0, orbitPitch_ = 25;
+    float split_ = 0.5f, overlayOpacity_ = 0.5f;
+    bool showPanel_ = true, showHelp_ = false, paused_ = false, quit_ = false;
+    std::array<float, 4> mouse_{};
+    int windowWidth_ = 1, windowHeight_ = 1;
+
+    // The live analysis.
+    bool frameChanged_ = false, analysisDirty_ = true;
+    int lastProgramFrame_ = -1;
+    Image analysisFrame_, previousFrame_;
+    DisplayImage analysisImage_;
+    std::string analysisSummary_, analysisProfileLabel_;
+    std::vector<float> analysisProfile_;
+    std::unique_ptr<LiveCorrelation> correlation_;
+    int pickX_ = -1, pickY_ = -1;
+
+    // Output.
+    std::vector<std::string> pendingScreenshot_;
+    std::unique_ptr<FrameSequenceWriter> recorder_;
+    std::string recordingPath_;
+    std::string error_, notice_;
+
+    int frame_ = 0;
+    double fps_ = 0;
+    std::chrono::steady_clock::time_point lastFrameTime_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+int runWorkbench(WorkbenchDocument document, const WorkbenchOptions& options) {
+    validateWorkbenchOptions(options);
+    Workbench bench(std::move(document), options);
+    return bench.run();
+}
+
+}  // namespace stochtex
