@@ -434,6 +434,59 @@ case_view() {
   done
 }
 
+case_workbench() {
+  [ -n "$compare" ] || { fail "workbench: no image comparer given"; return; }
+  local xvfb=(env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 1024x768x24")
+  # A person's session, scripted: zoom about a pixel, switch the filter, edit
+  # a colormap colour, save the pattern. The picture then equals `render` of
+  # the saved file over the same view: the zoom by 2 about (40, 30) from
+  # scale 1.5 leaves scale 0.75 and offset (40, 30) x 0.75.
+  cat >"$work/steps.json" <<'JSON'
+[{"frame": 1, "zoom": 2, "at": [40, 30]},
+ {"frame": 2, "filter": "paper"},
+ {"frame": 3, "set": "/colormap/shapes/0/colour", "value": "#d02020"},
+ {"frame": 4, "save": "WORK/edited.json"}]
+JSON
+  sed -i "s|WORK|$work|" "$work/steps.json"
+  expect_ok "workbench session" "$out/wb.png" -- "${xvfb[@]}" "$bin" view --preset camouflage --size 96,64 --scale 1.5 --frames 6 --script "$work/steps.json" --screenshot "$out/wb.png"
+  [ -s "$work/edited.json" ] || { fail "workbench: the edited pattern was not saved"; return; }
+  grep -q '"#d02020"' "$work/edited.json" || fail "workbench: the saved pattern lacks the edited colour"
+  local view=(--filter paper --scale 0.75 --offset 30,22.5 --size 96,64)
+  expect_ok "render of the saved pattern" "$out/wbr.png" -- "$bin" render "$work/edited.json" "${view[@]}" -o "$out/wbr.png"
+  expect_ok "render of the preset" "$out/wbp.png" -- "$bin" render --preset camouflage "${view[@]}" -o "$out/wbp.png"
+  local d
+  d=$("$compare" "$out/wb.png" "$out/wbr.png") || { fail "workbench: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench picture vs render of the saved pattern: $d (want mean <= 0.5, flipped >= 10)"
+  # The edit shows: the preset's own colours are far from the picture.
+  d=$("$compare" "$out/wb.png" "$out/wbp.png") || { fail "workbench: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 >= 5) }' || fail "workbench: the colour edit does not show: $d vs the preset"
+
+  # A ShaderToy program with the spectrum view: paused after iFrame 120, the
+  # picture is the spectrum study's figure of that frame, as `spectrum` writes
+  # it. (A power spectrum is point-symmetric, so turning it over only mirrors
+  # it: the frame below checks the orientation.)
+  printf '[{"frame": 121, "pause": true}]' >"$work/pause.json"
+  expect_ok "workbench spectrum of a program" "$out/wbs.png" -- "${xvfb[@]}" "$bin" view --shadertoy "$src/data/shadertoy/swirl" --size 96,80 --mode analysis --analysis spectrum --frames 123 --script "$work/pause.json" --screenshot "$out/wbs.png"
+  expect_ok "spectrum study of the same frame" "$out/wbss/spectrum.png" -- "$bin" spectrum -o "$out/wbss" --size 96,80 shadertoy "$src/data/shadertoy/swirl" --size 96,80 --first-frame 120
+  d=$("$compare" "$out/wbs.png" "$out/wbss/spectrum.png") || { fail "workbench spectrum: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5) }' || fail "workbench spectrum vs the study's: $d (want mean <= 0.5)"
+  # The frame itself, in texture mode, is the program's frame as `shadertoy` writes it.
+  expect_ok "workbench program frame" "$out/wbt.png" -- "${xvfb[@]}" "$bin" view --shadertoy "$src/data/shadertoy/swirl" --size 96,80 --frames 123 --script "$work/pause.json" --screenshot "$out/wbt.png"
+  expect_ok "shadertoy frame 120" "$out/wbt_ref.png" -- "$bin" shadertoy "$src/data/shadertoy/swirl" --size 96,80 --frames 121 -o "$out/wbt_ref.png"
+  d=$("$compare" "$out/wbt.png" "$out/wbt_ref.png") || { fail "workbench frame: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench frame vs shadertoy: $d (want mean <= 0.5, flipped >= 10)"
+
+  # Bad input: one message, exit 2, no window output.
+  printf '[{"frame": 1, "zoom": 2}]' >"$work/bad.json"
+  expect_bad "workbench script without at" "$out/wbb.png" "/0: zoom needs \"at\"" -- "$bin" view --preset camouflage --script "$work/bad.json" --screenshot "$out/wbb.png"
+  printf '[{"frame": 1, "set": "/colormap/shapes/0/colour", "value": "red"}]' >"$work/bad2.json"
+  expect_bad "workbench edit the pattern refuses" "$out/wbb.png" "/colormap/shapes/0/colour: invalid colour \"red\"" -- "${xvfb[@]}" "$bin" view --preset camouflage --size 64,48 --frames 3 --script "$work/bad2.json" --screenshot "$out/wbb.png"
+  mkdir -p "$work/broken"
+  printf 'void mainImage(out vec4 c, in vec2 p) {\n  c = vec4(nope);\n}\n' >"$work/broken/image.glsl"
+  expect_bad "workbench program that does not compile" "$out/wbb.png" "image.glsl:2" -- "${xvfb[@]}" "$bin" view --shadertoy "$work/broken" --frames 2 --screenshot "$out/wbb.png"
+  expect_bad "workbench program and pattern" "" "give a program or a pattern, not both" -- "$bin" view --preset camouflage --shadertoy "$src/data/shadertoy/swirl"
+}
+
 case_bake() {
   expect_ok "bake" "$out/bake/stochtex.glsl" -- "$bin" bake --preset weld --filter paper -o "$out/bake"
   # A normal map: slope pyramids with their covariance, the shading in the manifest, no table, the lobe function.

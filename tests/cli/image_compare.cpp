@@ -2,8 +2,8 @@
 // and with the second turned upside down (orientation checks).
 // Usage: stochtex_image_compare A B
 // Prints "mean <m> flipped <f>": mean |Δ| over all pixels and RGB channels,
-// in 8-bit steps (1/255). Exit 0, or 2 when a file cannot be read or the
-// sizes differ.
+// in 8-bit steps (1/255); a gray image is compared as RGB of equal channels.
+// Exit 0, or 2 when a file cannot be read or the sizes differ.
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -29,9 +29,10 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        const stochtex::Image a = stochtex::readImage(argv[1]), b = stochtex::readImage(argv[2]);
-        if (a.width() != b.width() || a.height() != b.height() || a.channels() < 3 || b.channels() < 3) {
-            std::fprintf(stderr, "stochtex_image_compare: %s and %s differ in size or are not RGB\n", argv[1], argv[2]);
+        const stochtex::Image a = stochtex::toRgb(stochtex::readImage(argv[1]));
+        const stochtex::Image b = stochtex::toRgb(stochtex::readImage(argv[2]));
+        if (a.width() != b.width() || a.height() != b.height()) {
+            std::fprintf(stderr, "stochtex_image_compare: %s and %s differ in size\n", argv[1], argv[2]);
             return 2;
         }
         std::printf("mean %.4f flipped %.4f\n", meanAbsDifference(a, b, false), meanAbsDifference(a, b, true));
