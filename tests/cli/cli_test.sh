@@ -476,6 +476,24 @@ JSON
   d=$("$compare" "$out/wbt.png" "$out/wbt_ref.png") || { fail "workbench frame: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench frame vs shadertoy: $d (want mean <= 0.5, flipped >= 10)"
 
+  # A texture graph: a node parameter edited (the panel's widgets come from
+  # the node table; the script edits through the same call), recorded to an
+  # MP4 meanwhile, and the saved graph renders as the window showed it.
+  cat >"$work/graph_steps.json" <<JSON
+[{"frame": 1, "record": "$out/wbg.mp4"},
+ {"frame": 2, "set": "/nodes/du/angle", "value": 45},
+ {"frame": 4, "stop_recording": true}, {"save": "$work/graph.json"}]
+JSON
+  expect_ok "workbench graph edit" "$out/wbg.png" -- "${xvfb[@]}" "$bin" view "$src/data/graphs/derivative-ridges.json" --size 96,64 --filter smooth --frames 5 --script "$work/graph_steps.json" --screenshot "$out/wbg.png"
+  [ -s "$out/wbg.mp4" ] || fail "workbench: the recording was not written"
+  grep -q '"angle": 45' "$work/graph.json" || fail "workbench: the saved graph lacks the edited angle"
+  expect_ok "render of the saved graph" "$out/wbgr.png" -- "$bin" render "$work/graph.json" --filter smooth --size 96,64 -o "$out/wbgr.png"
+  expect_ok "render of the graph as shipped" "$out/wbg0.png" -- "$bin" render "$src/data/graphs/derivative-ridges.json" --filter smooth --size 96,64 -o "$out/wbg0.png"
+  d=$("$compare" "$out/wbg.png" "$out/wbgr.png") || { fail "workbench graph: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench graph vs render of the saved graph: $d (want mean <= 0.5, flipped >= 10)"
+  d=$("$compare" "$out/wbg.png" "$out/wbg0.png") || { fail "workbench graph: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 >= 5) }' || fail "workbench graph: the angle edit does not show: $d"
+
   # Bad input: one message, exit 2, no window output.
   printf '[{"frame": 1, "zoom": 2}]' >"$work/bad.json"
   expect_bad "workbench script without at" "$out/wbb.png" "/0: zoom needs \"at\"" -- "$bin" view --preset camouflage --script "$work/bad.json" --screenshot "$out/wbb.png"

@@ -24,6 +24,7 @@
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
+#include "stochtex/textures/texture_source.h"
 #include "test_util.h"
 
 namespace stochtex {
@@ -102,6 +103,40 @@ TEST(Gpu, HeadlessContextIsCore33OrNewer) {
     const std::string d = context().describe();
     EXPECT_NE(d.find("OpenGL " + numbers), std::string::npos) << d;
     std::printf("[ info ] %s\n", d.c_str());
+}
+
+// The workbench's correlation samples a pattern's instances through the GPU:
+// a CameraSource over a GpuView gives each instance (a window moved by a
+// hashed whole-texel offset) as FilteredPatternSource gives it on the CPU.
+TEST(Gpu, CameraSourceOverTheGpuGivesTheCpuInstances) {
+    const Pattern pattern = Pattern::build(loadPreset("camouflage"));
+    FilterOptions smooth;
+    smooth.use(parseFilter("smooth"));
+    smooth.aniso = 4;
+    for (const Camera::Kind kind : {Camera::Kind::Zoom, Camera::Kind::Plane}) {
+        Camera camera;
+        camera.kind = kind;
+        camera.view.scale = 1.5;
+        camera.tiltDeg = 60;
+        GpuPattern gpu(pattern, context(), smooth);
+        const FilteredPattern cpu(pattern, smooth);
+        const CameraSource onGpu([&gpu](const Camera& c) { return gpu.render(c); }, pattern.exampleSize(), camera);
+        const FilteredPatternSource onCpu(cpu, pattern.exampleSize(), camera);
+        const SourceRegion region{64, 48, 0, 0};
+        for (int instance : {0, 1, 7}) {
+            const Image g = onGpu.render(region, 0, instance), c = onCpu.render(region, 0, instance);
+            const Difference d = compare(g, c);
+            EXPECT_LE(d.mean, 0.5 / 255.0) << int(kind) << " instance " << instance;
+            EXPECT_LE(d.outlierFraction, 0.005) << int(kind) << " instance " << instance;
+            if (instance != 0) {
+                // Another draw, not the plain view.
+                EXPECT_GT(compare(g, onGpu.render(region, 0, 0)).mean, 0.02) << int(kind) << " instance " << instance;
+            }
+        }
+        if (kind == Camera::Kind::Plane) {
+            EXPECT_THROW(onGpu.render({64, 48, 8, 0}, 0, 0), InputError) << "a plane camera renders whole frames";
+        }
+    }
 }
 
 TEST(Gpu, UnfilteredRenderMatchesTheCpuForPresets) {

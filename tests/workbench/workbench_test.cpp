@@ -1,0 +1,241 @@
+// The workbench's parts that need no window: the document (edits, refusals,
+// saving, live reload), the script, and the live analyses.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "stochtex/core/hash.h"
+#include "stochtex/image/colour_space.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/workbench/document.h"
+#include "stochtex/workbench/live_analysis.h"
+#include "stochtex/workbench/script.h"
+#include "test_util.h"
+
+namespace stochtex {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct TempDir {
+    fs::path path = fs::temp_directory_path() / ("stochtex-wb-" + std::to_string(::getpid()) + "-" +
+                                                 std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+    TempDir() { fs::create_directories(path); }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+// A hashed value in [0, 1): fixed noise without a random engine.
+double hashToUnit(uint32_t a, uint32_t b, uint32_t c) { return pcg3d({a, b, c}).x * 0x1p-32; }
+
+void writeText(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+TEST(WorkbenchDocument, EditsAreKeptOnlyWhenThePatternStillParses) {
+    WorkbenchDocument d = WorkbenchDocument::preset("camouflage");
+    EXPECT_FALSE(d.edited());
+    d.set("/colormap/shapes/0/colour", "#d02020");
+    EXPECT_TRUE(d.edited());
+    EXPECT_EQ(d.json()["colormap"]["shapes"][0]["colour"], "#d02020");
+    const PatternSpec spec = d.patternSpec();
+    EXPECT_NEAR(spec.colormap.painted.shapes[0].colour[0], float(0xd0) / 255.0f, 1e-6);  // codes, decoded in the table
+
+    // A refused edit names the pointer as the parser words it, and changes nothing.
+    const json before = d.json();
+    const InputError e = test::inputErrorOf([&] { d.set("/colormap/shapes/0/colour", "red"); });
+    EXPECT_NE(std::string(e.what()).find("preset camouflage: /colormap/shapes/0/colour: invalid colour \"red\""),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(d.json(), before);
+    EXPECT_NE(std::string(test::inputErrorOf([&] { d.set("/noise_x/components/0/cutoff", -3); }).what())
+                  .find("/noise_x/components/0/cutoff"),
+              std::string::npos);
+    EXPECT_NE(std::string(test::inputErrorOf([&] { d.set("/nothing/here", 1); }).what()).find("no such place"),
+              std::string::npos);
+    EXPECT_EQ(d.json(), before);
+
+    // Appending a shape (an index one past the end) and removing it again.
+    const size_t shapes = d.json()["colormap"]["shapes"].size();
+    d.set("/colormap/shapes/" + std::to_string(shapes),
+          json{{"shape", "disc"}, {"center", {0.5, 0.5}}, {"radius", 0.1}, {"colour", "#ffffff"}});
+    EXPECT_EQ(d.json()["colormap"]["shapes"].size(), shapes + 1);
+    EXPECT_EQ(d.patternSpec().colormap.painted.shapes.size(), shapes + 1);
+    d.remove("/colormap/shapes/" + std::to_string(shapes));
+    EXPECT_EQ(d.json(), before);
+    // The last component of a noise cannot go: a noise needs one.
+    EXPECT_THROW(d.remove("/noise_x/components/0"), InputError);
+    EXPECT_EQ(d.json(), before);
+}
+
+TEST(WorkbenchDocument, SavingKeepsImagePathsValidAndReloadFollowsTheFile) {
+    TempDir dir;
+    fs::create_directories(dir.path / "a");
+    fs::create_directories(dir.path / "b");
+    // A pattern whose noise is an image beside it.
+    Image noise(16, 16, 1);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) noise.at(x, y) = float(hashToUnit(uint32_t(x), uint32_t(y), 5));
+    writeImage((dir.path / "a" / "n.png").string(), noise, kNoTransfer);
+    const json pattern = {{"size", 32},
+                          {"noise_x", {{"type", "image"}, {"path", "n.png"}}},
+                          {"noise_y", {{"type", "image"}, {"path", "n.png"}}},
+                          {"colormap", {{"type", "gaussian"}}}};
+    const fs::path file = dir.path / "a" / "p.json";
+    writeText(file, pattern.dump());
+    WorkbenchDocument d = WorkbenchDocument::patternFile(file.string());
+    ASSERT_EQ(d.watchedFiles().size(), 1u);
+    EXPECT_FALSE(d.changedOnDisk());
+
+    d.set("/seed", 9);
+    d.save((dir.path / "b" / "q.json").string());  // another folder: the image path is made absolute
+    const json saved = readJsonFile((dir.path / "b" / "q.json").string());
+    EXPECT_EQ(saved["seed"], 9);
+    EXPECT_EQ(fs::path(saved["noise_x"]["path"].get<std::string>()), fs::absolute(dir.path / "a" / "n.png"));
+    EXPECT_NO_THROW(WorkbenchDocument::patternFile((dir.path / "b" / "q.json").string()).patternSpec());
+    EXPECT_TRUE(d.edited());  // saved elsewhere: the source file is still behind
+    d.save(file.string());
+    EXPECT_FALSE(d.edited());
+    EXPECT_EQ(readJsonFile(file.string())["noise_x"]["path"], "n.png");  // beside it: left relative
+    EXPECT_FALSE(d.changedOnDisk()) << "our own save is not a change on disk";
+
+    // Another program writes the file: seen once, then reloaded.
+    json changed = pattern;
+    changed["seed"] = 42;
+    writeText(file, changed.dump());
+    fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(2));
+    EXPECT_TRUE(d.changedOnDisk());
+    EXPECT_FALSE(d.changedOnDisk());
+    d.reload();
+    EXPECT_EQ(d.json()["seed"], 42);
+    EXPECT_FALSE(d.edited());
+
+    // A broken file on reload: the error names the file, the document stays.
+    writeText(file, "{\"size\": ");
+    EXPECT_THROW(d.reload(), InputError);
+    EXPECT_EQ(d.json()["seed"], 42);
+}
+
+TEST(WorkbenchDocument, AProgramWatchesItsPassFiles) {
+    TempDir dir;
+    writeText(dir.path / "image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(1.0); }\n");
+    writeText(dir.path / "common.glsl", "float f(float x) { return x; }\n");
+    const WorkbenchDocument d = WorkbenchDocument::shadertoy(dir.path.string());
+    EXPECT_EQ(d.kind(), WorkbenchDocument::Kind::Shadertoy);
+    ASSERT_EQ(d.watchedFiles().size(), 2u);
+    EXPECT_THROW(WorkbenchDocument::shadertoy((dir.path / "missing").string()), InputError);
+}
+
+TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {
+    const json script = json::parse(R"([
+        {"frame": 2, "zoom": 2, "at": [10, 20]}, {"filter": "paper"},
+        {"frame": 5, "set": "/seed", "value": 3}, {"mode": "split"}, {"analysis": "flow"},
+        {"view": "torus"}, {"pick": [4, 5]}, {"screenshot": "a.png"}, {"quit": true}])");
+    const std::vector<WorkbenchStep> steps = parseWorkbenchScript(script, "s.json");
+    ASSERT_EQ(steps.size(), 9u);
+    using A = WorkbenchStep::Action;
+    EXPECT_EQ(steps[0].action, A::Zoom);
+    EXPECT_EQ(steps[0].amount, 2);
+    EXPECT_EQ(steps[0].x, 10);
+    EXPECT_EQ(steps[0].y, 20);
+    EXPECT_EQ(steps[1].frame, 2);  // no frame: the step before's
+    EXPECT_EQ(steps[1].text, "paper");
+    EXPECT_EQ(steps[2].frame, 5);
+    EXPECT_EQ(steps[2].value, 3);
+    EXPECT_EQ(steps[3].text, "split");
+    EXPECT_EQ(steps[5].action, A::View);
+    EXPECT_EQ(steps[8].action, A::Quit);
+
+    auto message = [](const char* text) {
+        return std::string(test::inputErrorOf([&] { parseWorkbenchScript(json::parse(text), "s.json"); }).what());
+    };
+    EXPECT_EQ(message(R"([{"frame": 3, "pause": true}, {"frame": 1, "quit": true}])"),
+              "s.json: /1/frame: frames never go back (the step before runs at frame 3)");
+    EXPECT_EQ(message(R"([{"filter": "paper", "mode": "split"}])"), "s.json: /0: one action per step");
+    EXPECT_EQ(message(R"([{"frame": 1}])"), "s.json: /0: a step needs one action (zoom, pan, filter, set, screenshot, …)");
+    EXPECT_NE(message(R"([{"zom": 2}])").find("/0"), std::string::npos);
+    EXPECT_NE(message(R"([{"mode": "quad"}])").find("/0/mode: unknown value \"quad\""), std::string::npos);
+    EXPECT_NE(message(R"([{"filter": "reference"}])").find("/0/filter"), std::string::npos);
+    EXPECT_NE(message(R"({"zoom": 2})").find("expected an array"), std::string::npos);
+}
+
+// Stripes of a known frequency: the spectrum's brightest pixels sit at ±f
+// from the centre, and the summary reads that frequency.
+TEST(LiveAnalysis, SpectrumIsTheStudysFigureOfTheFrame) {
+    const int w = 64, h = 64;
+    Image frame(w, h, 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c)
+                frame.at(x, y, c) = float(0.5 + 0.4 * std::cos(2 * std::numbers::pi * 8.0 * x / w));
+    const LiveAnalysisResult r = liveSpectrum(frame);
+    ASSERT_EQ(r.image.width(), w);
+    ASSERT_EQ(r.image.channels(), 3);
+    float best = -1;
+    int bx = -1, by = -1;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (x != w / 2 && r.image.at(x, y, 0) > best) best = r.image.at(x, y, 0), bx = x, by = y;
+    EXPECT_EQ(std::abs(bx - w / 2), 8);
+    EXPECT_EQ(by, h / 2);
+    EXPECT_NE(r.summary.find("peak |f| 0.1250"), std::string::npos) << r.summary;
+    EXPECT_GE(r.profile.size(), 32u);
+}
+
+TEST(LiveAnalysis, FlowReadsAShiftBetweenFrames) {
+    const int w = 96, h = 80;
+    auto frame = [&](double shift) {
+        Image f(w, h, 3);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const double v = 0.5 + 0.25 * std::sin(0.31 * (x - shift)) * std::cos(0.23 * y) +
+                                 0.15 * std::sin(0.11 * (x - shift) + 0.17 * y);
+                for (int c = 0; c < 3; ++c) f.at(x, y, c) = float(v);
+            }
+        return f;
+    };
+    const LiveAnalysisResult r = liveFlow(frame(0), frame(2));
+    double u = 0, v = 0;
+    ASSERT_EQ(std::sscanf(r.summary.c_str(), "mean vector (%lf, %lf)", &u, &v), 2) << r.summary;
+    EXPECT_NEAR(u, 2.0, 0.3);
+    EXPECT_NEAR(v, 0.0, 0.3);
+    EXPECT_EQ(r.image.width(), w);
+}
+
+// Samples of independent white noise plus a part shared by the left half:
+// the left half correlates with a point in it by ~½, the right half by ~0.
+TEST(LiveAnalysis, CorrelationWithAPointOverSamples) {
+    const int w = 32, h = 16, n = 2000;
+    LiveCorrelation corr(w, h, 4, 8);
+    EXPECT_EQ(corr.result().summary, "collecting samples…");
+    for (int k = 0; k < n; ++k) {
+        Image s(w, h, 1);
+        const float shared = float(hashToUnit(uint32_t(k), 0, 1)) - 0.5f;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const float own = float(hashToUnit(uint32_t(k), uint32_t(y * w + x), 2)) - 0.5f;
+                s.at(x, y) = x < w / 2 ? shared + own : own;
+            }
+        corr.add(s);
+    }
+    EXPECT_EQ(corr.count(), n);
+    const LiveAnalysisResult r = corr.result();
+    // Diverging palette: red for +, white for 0. Mean red-minus-blue per half.
+    auto warmth = [&](int x0, int x1) {
+        double sum = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = x0; x < x1; ++x)
+                if (!(x == 4 && y == 8)) sum += r.image.at(x, y, 0) - r.image.at(x, y, 2);
+        return sum / (double(x1 - x0) * h);
+    };
+    EXPECT_GT(warmth(0, w / 2), 0.2);
+    EXPECT_LT(std::abs(warmth(w / 2, w)), 0.05);
+    EXPECT_NE(r.summary.find("over 2000 samples"), std::string::npos) << r.summary;
+}
+
+}  // namespace
+}  // namespace stochtex
