@@ -154,20 +154,20 @@ void noiseEditor(const json& noise, const std::string& pointer, std::vector<Json
 }
 
 // A painted colormap's shapes, and painting on its canvas.
-void colormapEditor(const json& colormap, const std::string& pointer, const ColormapCanvas& canvas, PaintBrush& brush,
+void colormapEditor(const json& colormap, const std::string& pointer, const EditorPreviews& previews, PaintBrush& brush,
                     std::vector<JsonEdit>& edits) {
     if (!colormap.is_object()) return;
     Fields f(colormap, pointer, edits);
     const std::string type = colormap.value("type", std::string());
     f.choice("transfer", "transfer", {"srgb", "linear"}, "srgb", "colours as sRGB codes (colour) or as data");
     f.integer("resolution", "resolution", 256, 2, 1024, "table entries per side");
-    if (canvas.texture) {
+    if (previews.colormap) {
         const ImVec2 at = ImGui::GetCursorScreenPos();
-        // The table's row 0 is y = 0 (the bottom): texture v runs up.
-        ImGui::Image(canvas.texture, ImVec2(canvas.size, canvas.size), ImVec2(0, 1), ImVec2(1, 0));
+        // The canvas image holds y = 1 in its top row (ColormapTable::toImage).
+        ImGui::Image(previews.colormap, ImVec2(previews.canvasSize, previews.canvasSize));
         if (type == "painted" && ImGui::IsItemClicked()) {
             const ImVec2 m = ImGui::GetMousePos();
-            const double x = (m.x - at.x) / canvas.size, y = 1.0 - (m.y - at.y) / canvas.size;
+            const double x = (m.x - at.x) / previews.canvasSize, y = 1.0 - (m.y - at.y) / previews.canvasSize;
             const std::string colour = colourHex(brush.colour);
             const double r = brush.radius;
             json shape = brush.shape == 0   ? json{{"shape", "disc"}, {"center", {x, y}}, {"radius", r}}
@@ -229,7 +229,7 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Colo
 }
 
 // One graph node: a widget per parameter of its table entry.
-void nodeEditor(const std::string& id, const json& node, const std::string& pointer, const ColormapCanvas& canvas,
+void nodeEditor(const std::string& id, const json& node, const std::string& pointer, const EditorPreviews& previews,
                 PaintBrush& brush, std::vector<JsonEdit>& edits) {
     const NodeInfo* info = findGraphNode(node.value("type", std::string()));
     if (!info) return;
@@ -265,7 +265,7 @@ void nodeEditor(const std::string& id, const json& node, const std::string& poin
                 break;
             case ParamType::Colormap:
                 if (ImGui::TreeNode(p.name.c_str()))
-                    colormapEditor(node.value(p.name, json::object()), pointer + "/" + p.name, canvas, brush, edits),
+                    colormapEditor(node.value(p.name, json::object()), pointer + "/" + p.name, previews, brush, edits),
                         ImGui::TreePop();
                 break;
             case ParamType::Curve: {
@@ -291,7 +291,7 @@ void nodeEditor(const std::string& id, const json& node, const std::string& poin
 
 }  // namespace
 
-std::vector<JsonEdit> patternEditor(const json& pattern, const ColormapCanvas& canvas, PaintBrush& brush) {
+std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& previews, PaintBrush& brush) {
     std::vector<JsonEdit> edits;
     Fields header(pattern, "", edits);
     if (ImGui::CollapsingHeader("Pattern", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -304,22 +304,32 @@ std::vector<JsonEdit> patternEditor(const json& pattern, const ColormapCanvas& c
             for (const auto& [id, node] : pattern["nodes"].items()) {
                 ImGui::PushID(id.c_str());
                 if (ImGui::TreeNode(id.c_str(), "%s (%s)", id.c_str(), node.value("type", std::string("?")).c_str())) {
-                    nodeEditor(id, node, "/nodes/" + id, canvas, brush, edits);
+                    nodeEditor(id, node, "/nodes/" + id, previews, brush, edits);
                     ImGui::TreePop();
                 }
                 ImGui::PopID();
             }
         return edits;
     }
-    for (const char* axis : {"noise_x", "noise_y"})
+    for (int k = 0; k < 2; ++k) {
+        const char* axis = k == 0 ? "noise_x" : "noise_y";
         if (pattern.contains(axis) && ImGui::CollapsingHeader(axis)) {
             ImGui::PushID(axis);
+            if (previews.example[k]) {
+                // The example (as the noise command writes it) and its power spectrum (zero frequency at the centre).
+                ImGui::Image(previews.example[k], ImVec2(128, 128));
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("the example");
+                ImGui::SameLine();
+                ImGui::Image(previews.spectrum[k], ImVec2(128, 128));
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("its power spectrum, zero frequency at the centre");
+            }
             noiseEditor(pattern[axis], std::string("/") + axis, edits);
             ImGui::PopID();
         }
+    }
     if (pattern.contains("colormap") && ImGui::CollapsingHeader("Colormap", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::PushID("colormap");
-        colormapEditor(pattern["colormap"], "/colormap", canvas, brush, edits);
+        colormapEditor(pattern["colormap"], "/colormap", previews, brush, edits);
         ImGui::PopID();
     }
     if (pattern.contains("normal_map") && pattern["normal_map"].is_object() && ImGui::CollapsingHeader("Normal map")) {

@@ -27,16 +27,19 @@ struct PaintBrush {
     float colour[3] = {0.85f, 0.35f, 0.2f};  // sRGB codes, as a colour picker gives them
 };
 
-// The canvas of a colormap: its table shown at `canvasSize` pixels (x to the
-// right, y up, as the table's domain) from an ImGui texture id; clicks add
-// the brush's shape to a painted colormap at `pointer`.
-struct ColormapCanvas {
-    void* texture = nullptr;  // ImTextureID of the table (display codes), null: none yet
-    float size = 256;
+// What the panels show beside the numbers, as ImGui texture ids of images
+// in display codes (null: none): the colormap's table as a canvas (x to the
+// right, y up, as the table's domain; clicks on a painted one add the
+// brush's shape), and each noise's example and power spectrum.
+struct EditorPreviews {
+    void* colormap = nullptr;
+    float canvasSize = 200;
+    void* example[2] = {nullptr, nullptr};
+    void* spectrum[2] = {nullptr, nullptr};
 };
 
-// Every panel of the pattern; `colormapCanvas` shows the output colormap.
-std::vector<JsonEdit> patternEditor(const nlohmann::json& pattern, const ColormapCanvas& canvas, PaintBrush& brush);
+// Every panel of the pattern.
+std::vector<JsonEdit> patternEditor(const nlohmann::json& pattern, const EditorPreviews& previews, PaintBrush& brush);
 
 // A colour member ("#rrggbb", [r, g, b] codes in [0, 1]) as sRGB codes;
 // false if it is neither.

@@ -23,6 +23,7 @@
 #include "stochtex/gpu/scene_render.h"
 #include "stochtex/gpu/texture_display.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/report/frame_sequence.h"
 #include "stochtex/textures/texture_source.h"
@@ -211,6 +212,7 @@ private:
     // --- the document ---
 
     void loadDocument() {
+        drawFailed_ = false;
         renderers_.clear();
         host_.reset();
         analysisFrame_ = {};
@@ -221,8 +223,17 @@ private:
         hasNormalMap_ = spec_.normalMap.has_value() && !spec_.graph;
         if (!hasNormalMap_) response_ = ResponseKind::PrefilteredColormap;
         exampleSize_ = needsGraphEvaluator(spec_) ? GraphPattern::build(spec_).exampleSize() : Pattern::build(spec_).exampleSize();
+        // The colormap canvas: the table with y = 1 in the top row (toImage), as the window shows it.
         canvas_.upload(encodeTransfer(buildColormap(spec_.colormap).toImage(),
                                       spec_.colormap.transfer.value_or(Transfer::Srgb)));
+        for (int k = 0; k < 2; ++k) {
+            example_[k] = {};
+            exampleSpectrum_[k] = {};
+            if (spec_.graph || (k == 1 && spec_.quadraturePair)) continue;
+            const Image example = buildExampleImage(spec_.noise[k], k == 0 ? "noise_x" : "noise_y");
+            example_[k].upload(example);
+            exampleSpectrum_[k].upload(displaySpectrum(powerSpectrum(example)));
+        }
     }
 
     void rebuild() {
@@ -310,11 +321,13 @@ private:
             if (isShadertoy()) {
                 texture = drawProgramFrame(tr.width, tr.height);
                 look = TextureDisplay::kGlCodes;
-            } else if (error_.empty() || !renderers_.empty() || spec_.colormap.resolution > 0) {
+            } else if (!drawFailed_) {
                 texture = drawPatternFrame(tr.width, tr.height);
             }
         } catch (const std::exception& e) {
+            // Shown in the panel; tried again after the next edit or reload, not every frame.
             error_ = e.what();
+            drawFailed_ = true;
         }
         if (!texture) return;
         frameChanged_ = true;
@@ -632,10 +645,11 @@ private:
         if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) drawViewControls();
         if (analysing() && ImGui::CollapsingHeader("Analysis", ImGuiTreeNodeFlags_DefaultOpen)) drawAnalysisPanel();
         if (!isShadertoy()) {
-            ColormapCanvas canvas;
-            canvas.texture = canvas_.empty() ? nullptr : reinterpret_cast<void*>(uintptr_t(canvas_.texture()));
-            canvas.size = 200;
-            for (const JsonEdit& e : patternEditor(doc_.json(), canvas, brush_)) applyEdit(e);
+            auto id = [](const DisplayImage& i) { return i.empty() ? nullptr : reinterpret_cast<void*>(uintptr_t(i.texture())); };
+            EditorPreviews previews;
+            previews.colormap = id(canvas_);
+            for (int k = 0; k < 2; ++k) previews.example[k] = id(example_[k]), previews.spectrum[k] = id(exampleSpectrum_[k]);
+            for (const JsonEdit& e : patternEditor(doc_.json(), previews, brush_)) applyEdit(e);
             if (ImGui::Button("Save JSON (Ctrl+S)")) saveDefault();
             ImGui::SameLine();
             static char path[256] = "edited.json";
@@ -752,9 +766,9 @@ private:
     std::map<std::pair<std::string, ResponseKind>, std::unique_ptr<GpuView>> renderers_;
     std::unique_ptr<RenderTarget> target_;
     std::unique_ptr<ShadertoyHost> host_;
-    DisplayImage canvas_;
+    DisplayImage canvas_, example_[2], exampleSpectrum_[2];
     PaintBrush brush_;
-    bool needsRebuild_ = false;
+    bool needsRebuild_ = false, drawFailed_ = false;
     std::chrono::steady_clock::time_point lastBuild_{};
 
     // What is shown.
