@@ -62,7 +62,10 @@ void registerView(CLI::App& app) {
                                 : !args->source.file.empty() ? WorkbenchDocument::patternFile(args->source.file)
                                 : !args->source.preset.empty() ? WorkbenchDocument::preset(args->source.preset)
                                                                 : throw InputError("give a pattern file, --preset NAME or --shadertoy PROGRAM");
-        if (args->source.seed) doc.set("/seed", *args->source.seed);
+        if (args->source.seed) {
+            if (program) throw InputError("--seed: a ShaderToy program has no pattern seed");
+            doc.set("/seed", *args->source.seed);
+        }
         const int frames = runWorkbench(std::move(doc), o);
         if (!o.screenshot.empty()) std::printf("wrote %s after %d frames\n", o.screenshot.c_str(), frames);
     });

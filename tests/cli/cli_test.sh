@@ -476,6 +476,19 @@ JSON
   d=$("$compare" "$out/wbt.png" "$out/wbt_ref.png") || { fail "workbench frame: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench frame vs shadertoy: $d (want mean <= 0.5, flipped >= 10)"
 
+  # A pattern's spectrum view is the spectrum study of the frame `render --gpu`
+  # writes (an oblique pattern, so a frame analysed upside down would show
+  # its spectrum mirrored); the sphere is the one `scene` draws.
+  expect_ok "workbench spectrum of a pattern" "$out/wbps.png" -- "${xvfb[@]}" "$bin" view --preset oblique-blots --size 128,96 --mode analysis --frames 3 --screenshot "$out/wbps.png"
+  expect_ok "render for the spectrum" "$out/wbps.exr" -- "$bin" render --preset oblique-blots --gpu --filter smooth --size 128,96 -o "$out/wbps.exr"
+  expect_ok "spectrum of the render" "$out/wbpss/spectrum.png" -- "$bin" spectrum -o "$out/wbpss" images "$out/wbps.exr"
+  d=$("$compare" "$out/wbps.png" "$out/wbpss/spectrum.png") || { fail "workbench pattern spectrum: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench pattern spectrum vs the study's: $d (want mean <= 0.5, flipped >= 10)"
+  expect_ok "workbench sphere" "$out/wbsph.png" -- "${xvfb[@]}" "$bin" view --preset marble --show sphere --size 160,120 --frames 3 --screenshot "$out/wbsph.png"
+  expect_ok "scene sphere" "$out/wbsphr.png" -- "$bin" scene --preset marble --object sphere --size 160,120 --filter smooth -o "$out/wbsphr.png"
+  d=$("$compare" "$out/wbsph.png" "$out/wbsphr.png") || { fail "workbench sphere: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench sphere vs scene: $d (want mean <= 0.5, flipped >= 10)"
+
   # A texture graph: a node parameter edited (the panel's widgets come from
   # the node table; the script edits through the same call), recorded to an
   # MP4 meanwhile, and the saved graph renders as the window showed it.
@@ -503,6 +516,9 @@ JSON
   printf 'void mainImage(out vec4 c, in vec2 p) {\n  c = vec4(nope);\n}\n' >"$work/broken/image.glsl"
   expect_bad "workbench program that does not compile" "$out/wbb.png" "image.glsl:2" -- "${xvfb[@]}" "$bin" view --shadertoy "$work/broken" --frames 2 --screenshot "$out/wbb.png"
   expect_bad "workbench program and pattern" "" "give a program or a pattern, not both" -- "$bin" view --preset camouflage --shadertoy "$src/data/shadertoy/swirl"
+  expect_bad "workbench screenshot without frames" "$out/wbb.png" "--frames: frames must be given with a screenshot" -- "$bin" view --preset camouflage --screenshot "$out/wbb.png"
+  printf '[{"frame": 1, "set": "/seed", "value": 3}]' >"$work/bad3.json"
+  expect_bad "workbench edit of a program" "$out/wbb.png" "a ShaderToy program is edited in its files" -- "${xvfb[@]}" "$bin" view --shadertoy "$src/data/shadertoy/swirl" --size 64,48 --frames 3 --script "$work/bad3.json" --screenshot "$out/wbb.png"
 }
 
 case_bake() {

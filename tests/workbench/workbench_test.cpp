@@ -1,6 +1,7 @@
 // The workbench's parts that need no window: the document (edits, refusals,
 // saving, live reload), the script, and the live analyses.
 #include <gtest/gtest.h>
+#include <imgui.h>
 
 #include <chrono>
 #include <cmath>
@@ -13,7 +14,10 @@
 #include "stochtex/image/colour_space.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/graph_nodes.h"
+#include "stochtex/pattern/presets.h"
 #include "stochtex/workbench/document.h"
+#include "stochtex/workbench/editors.h"
 #include "stochtex/workbench/live_analysis.h"
 #include "stochtex/workbench/script.h"
 #include "test_util.h"
@@ -88,7 +92,7 @@ TEST(WorkbenchDocument, SavingKeepsImagePathsValidAndReloadFollowsTheFile) {
     const fs::path file = dir.path / "a" / "p.json";
     writeText(file, pattern.dump());
     WorkbenchDocument d = WorkbenchDocument::patternFile(file.string());
-    ASSERT_EQ(d.watchedFiles().size(), 1u);
+    ASSERT_EQ(d.watchedFiles().size(), 3u);  // the file and its image, named twice
     EXPECT_FALSE(d.changedOnDisk());
 
     d.set("/seed", 9);
@@ -128,6 +132,51 @@ TEST(WorkbenchDocument, AProgramWatchesItsPassFiles) {
     EXPECT_EQ(d.kind(), WorkbenchDocument::Kind::Shadertoy);
     ASSERT_EQ(d.watchedFiles().size(), 2u);
     EXPECT_THROW(WorkbenchDocument::shadertoy((dir.path / "missing").string()), InputError);
+}
+
+// The panels drawn (headless ImGui, no backend) over every preset and the
+// sample graph of every node: no exception from a member's type, balanced
+// ImGui stacks, and no edit made by merely drawing.
+TEST(WorkbenchEditors, EveryPresetAndNodeDrawsWithoutEdits) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(400, 2000);
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    std::vector<json> patterns;
+    for (const std::string& name : presetNames()) patterns.push_back(JsonReader::parse(presetText(name), name));
+    for (const NodeInfo& node : graphNodes()) patterns.push_back(sampleNodeGraph(node, "exemplar.png"));
+    EditorPreviews previews;
+    int dummy = 1;
+    previews.colormap = &dummy;  // any id: nothing is rendered
+    PaintBrush brush;
+    for (const json& pattern : patterns) {
+        int vertices[2] = {0, 0};
+        for (int frame = 0; frame < 4; ++frame) {
+            previews.expandAll = frame >= 2;  // two frames as opened, then everything unfolded
+            io.DeltaTime = 1.0f / 60;
+            ImGui::NewFrame();
+            ImGui::SetNextWindowSize(ImVec2(400, 2000));
+            ImGui::Begin("panel");
+            std::vector<JsonEdit> edits;
+            EXPECT_NO_THROW(edits = patternEditor(pattern, previews, brush)) << pattern.value("name", "?");
+            EXPECT_TRUE(edits.empty()) << pattern.value("name", "?") << ": " << (edits.empty() ? "" : edits[0].pointer);
+            ImGui::End();
+            ImGui::Render();
+            if (frame % 2 == 1) vertices[frame / 2] = ImGui::GetDrawData()->TotalVtxCount;
+        }
+        // Unfolded, every section drew its widgets.
+        EXPECT_GT(vertices[1], vertices[0] + 200) << pattern.value("name", "?");
+        // Fold everything again for the next pattern.
+        ImGui::NewFrame();
+        ImGui::Begin("panel");
+        ImGui::GetStateStorage()->SetAllInt(0);
+        ImGui::End();
+        ImGui::Render();
+    }
+    ImGui::DestroyContext();
 }
 
 TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {

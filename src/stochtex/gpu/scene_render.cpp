@@ -11,18 +11,13 @@
 
 namespace stochtex {
 
-void drawScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, const RenderTarget& target,
-               float tiling) {
-    if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
-        throw InputError::parameter("tiling", "must be a finite number in (0, 1e4], got " + formatValue(tiling));
-    for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}  // earlier callers' errors are not ours
-    const gl::Program program = pattern.sceneProgram();
-    const gl::VertexArray vao = gl::newVertexArray();
-    glBindVertexArray(vao.id());
-    const gl::Buffer vertices = gl::newBuffer(), indices = gl::newBuffer();
-    glBindBuffer(GL_ARRAY_BUFFER, vertices.id());
+SceneRenderer::SceneRenderer(const GpuView& pattern, const Mesh& mesh)
+    : pattern_(pattern), program_(pattern.sceneProgram()), vao_(gl::newVertexArray()), vertices_(gl::newBuffer()),
+      indices_(gl::newBuffer()), indexCount_(GLsizei(mesh.indices.size())) {
+    glBindVertexArray(vao_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(float)), mesh.vertices.data(), GL_STATIC_DRAW);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
                  GL_STATIC_DRAW);
     const GLsizei stride = Mesh::kStride * sizeof(float);
@@ -32,29 +27,38 @@ void drawScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& came
         glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<const void*>(size_t(offsets[a]) * sizeof(float)));
     }
+    glBindVertexArray(0);
+}
+
+void SceneRenderer::draw(const SceneCamera& camera, const RenderTarget& target, float tiling) const {
+    if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
+        throw InputError::parameter("tiling", "must be a finite number in (0, 1e4], got " + formatValue(tiling));
+    for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}  // earlier callers' errors are not ours
     target.bind();
     // The dark slate background, given as sRGB codes: the target holds linear light.
     glClearColor(linearFromSrgb(0.08f), linearFromSrgb(0.09f), linearFromSrgb(0.11f), 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    pattern.bind(program.id());
-    auto uniform = [&](const char* name) { return glGetUniformLocation(program.id(), name); };
+    const GLuint program = program_.id();
+    pattern_.bind(program);
+    auto uniform = [&](const char* name) { return glGetUniformLocation(program, name); };
     const Mat4 vp = camera.viewProjection(float(target.width()) / float(target.height()));
     glUniformMatrix4fv(uniform("uViewProjection"), 1, GL_FALSE, vp.data());
     glUniform1f(uniform("uTiling"), tiling);
-    glUniform1i(uniform("uFiltered"), pattern.filtered());
-    glUniform1i(uniform("uLean"), pattern.responseKind() == ResponseKind::Lean);
+    glUniform1i(uniform("uFiltered"), pattern_.filtered());
+    glUniform1i(uniform("uLean"), pattern_.responseKind() == ResponseKind::Lean);
     const float l[3] = {0.45f, 0.8f, 0.4f};
     const float n = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
     glUniform3f(uniform("uLight"), l[0] / n, l[1] / n, l[2] / n);
     glUniform3f(uniform("uEye"), camera.eye[0], camera.eye[1], camera.eye[2]);
-    glBindVertexArray(vao.id());
-    glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(vao_.id());
+    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
     glDisable(GL_DEPTH_TEST);
     // A draw GL refuses leaves only the clear colour: fail rather than
     // show an empty picture as a success.
     if (const GLenum e = glGetError(); e != GL_NO_ERROR)
-        throw std::runtime_error("drawScene: OpenGL error " + std::to_string(e) + " while drawing the scene");
+        throw std::runtime_error("scene: OpenGL error " + std::to_string(e) + " while drawing the mesh");
 }
 
 Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
@@ -63,7 +67,7 @@ Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& c
         throw InputError::parameter("size", "must be in [1, 8192] per side, got " + std::to_string(width) + "x" +
                                                 std::to_string(height));
     const RenderTarget target(width, height, true);
-    drawScene(pattern, mesh, camera, target, tiling);
+    SceneRenderer(pattern, mesh).draw(camera, target, tiling);
     // GL's row 0 is the bottom of the picture: flip for an image file.
     Image out = target.readRgb(RenderTarget::Rows::TopDown);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

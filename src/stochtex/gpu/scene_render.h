@@ -9,13 +9,26 @@
 
 namespace stochtex {
 
-// Draws the mesh, uv × tiling example periods, seen by a perspective
-// camera, into `target` (which needs a depth buffer), over the slate
-// background; rows as drawn (GL row 0 at the bottom). tiling in (0, 1e4].
-void drawScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, const RenderTarget& target,
-               float tiling);
+// The pattern on one mesh: the view's scene program and the mesh's buffers,
+// built once (needs the context current), so a window draws it every frame
+// without compiling. The view must outlive it.
+class SceneRenderer {
+public:
+    SceneRenderer(const GpuView& pattern, const Mesh& mesh);
+    // Draws the mesh, uv × tiling example periods, seen by a perspective
+    // camera, into `target` (which needs a depth buffer), over the slate
+    // background; rows as drawn (GL row 0 at the bottom). tiling in (0, 1e4].
+    void draw(const SceneCamera& camera, const RenderTarget& target, float tiling) const;
 
-// drawScene into a new target, read back: 3 channels, row 0 at the top.
+private:
+    const GpuView& pattern_;
+    gl::Program program_;
+    gl::VertexArray vao_;
+    gl::Buffer vertices_, indices_;
+    GLsizei indexCount_;
+};
+
+// A SceneRenderer's draw into a new target, read back: 3 channels, row 0 at the top.
 // width, height in [1, 8192].
 Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
                   float tiling);

@@ -25,6 +25,7 @@ public:
     static constexpr Look kRenderTarget{true, true, 1};  // a pattern drawn as `render` draws it
     static constexpr Look kImageCodes{true, false, 1};   // an uploaded Image of display codes
     static constexpr Look kGlCodes{false, false, 1};     // a ShaderToy pass's output
+    static constexpr Look kGlLinear{false, true, 1};     // linear light drawn the GL way up (a mesh)
 
     // Needs a current context.
     TextureDisplay();

@@ -83,6 +83,16 @@ Image resizeSmooth(const Image& image, int width, int height) {
     return out;
 }
 
+Image crop(const Image& image, int x, int y, int width, int height) {
+    if (x < 0 || y < 0 || width < 0 || height < 0 || x + width > image.width() || y + height > image.height())
+        throw std::out_of_range("crop: the region leaves the image");
+    Image out(width, height, image.channels(), Image::Uninitialized{});
+    const size_t c = size_t(image.channels());
+    for (int j = 0; j < height; ++j)
+        std::copy_n(image.row(y + j) + size_t(x) * c, size_t(width) * c, out.row(j));
+    return out;
+}
+
 void paste(Image& dst, const Image& src, int x, int y) {
     if (src.channels() != dst.channels()) throw std::invalid_argument("paste: channel mismatch");
     for (int j = 0; j < src.height(); ++j) {

@@ -77,6 +77,8 @@ Image shiftedPeriodic(const Image& image, int dx, int dy);
 Image resizeNearest(const Image& image, int width, int height);
 // Bilinear (area for shrinking) resize through OpenCV.
 Image resizeSmooth(const Image& image, int width, int height);
+// The width × height pixels from (x, y); std::out_of_range unless inside the image.
+Image crop(const Image& image, int x, int y, int width, int height);
 // Copies src into dst with its top-left corner at (x, y); channels must match.
 void paste(Image& dst, const Image& src, int x, int y);
 // Writes a text label (white on a dark strip) at the bottom-left of a region.

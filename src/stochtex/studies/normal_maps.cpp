@@ -48,13 +48,7 @@ struct Rect {
     int x0, y0, x1, y1;
 };
 
-Image cropped(const Image& img, const Rect& r) {
-    Image out(r.x1 - r.x0, r.y1 - r.y0, img.channels(), Image::Uninitialized{});
-    for (int y = r.y0; y < r.y1; ++y)
-        std::copy(img.row(y) + size_t(r.x0) * size_t(img.channels()), img.row(y) + size_t(r.x1) * size_t(img.channels()),
-                  out.row(y - r.y0));
-    return out;
-}
+Image cropped(const Image& img, const Rect& r) { return crop(img, r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0); }
 
 double meanOf(const Image& img) {
     double s = 0;

@@ -39,6 +39,19 @@ void absolutePaths(nlohmann::json& j, const fs::path& base) {
     }
 }
 
+// The image files a pattern reads: its "path" members, against `base`.
+void imagePaths(const nlohmann::json& j, const fs::path& base, std::vector<fs::path>& out) {
+    if (j.is_object()) {
+        for (const auto& [key, value] : j.items())
+            if (key == "path" && value.is_string())
+                out.push_back(base / fs::path(value.get<std::string>()));
+            else
+                imagePaths(value, base, out);
+    } else if (j.is_array()) {
+        for (const auto& value : j) imagePaths(value, base, out);
+    }
+}
+
 }  // namespace
 
 WorkbenchDocument WorkbenchDocument::preset(const std::string& name) {
@@ -59,7 +72,9 @@ WorkbenchDocument WorkbenchDocument::patternFile(const std::string& path) {
     d.baseDir_ = fs::path(path).parent_path();
     if (d.baseDir_.empty()) d.baseDir_ = ".";
     d.patternSpec();
-    d.watch({path});
+    std::vector<fs::path> files{path};
+    imagePaths(d.json_, d.baseDir_, files);
+    d.watch(std::move(files));
     return d;
 }
 

@@ -54,8 +54,9 @@ public:
     // target is in another folder. Clears edited() when it is the source file.
     void save(const std::string& path);
 
-    // The files the document was read from (the pattern file; a program's
-    // manifest, passes, Common and channel images), watched for reload.
+    // The files the document was read from (the pattern file and the images
+    // it names; a program's manifest, passes, Common and channel images),
+    // watched for reload.
     const std::vector<std::filesystem::path>& watchedFiles() const { return watched_; }
     // Whether a watched file changed on disk since the last call (or load).
     bool changedOnDisk();

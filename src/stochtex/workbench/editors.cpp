@@ -62,6 +62,25 @@ public:
             edit(key, json(v));
         tooltip(help);
     }
+    void seed(const char* key, const char* label, const char* help = nullptr) {
+        uint32_t v = object_.is_object() && object_.contains(key) && object_[key].is_number_unsigned()
+                         ? object_[key].get<uint32_t>()
+                         : 0;
+        if (ImGui::InputScalar(label, ImGuiDataType_U32, &v, nullptr, nullptr, "%u",
+                               ImGuiInputTextFlags_EnterReturnsTrue))
+            edit(key, json(v));
+        tooltip(help);
+    }
+    // A power of two in [lo, hi] (example sizes).
+    void powerOfTwo(const char* key, const char* label, int fallback, int lo, int hi, const char* help = nullptr) {
+        const int now = object_.is_object() ? object_.value(key, fallback) : fallback;
+        if (ImGui::BeginCombo(label, std::to_string(now).c_str())) {
+            for (int v = lo; v <= hi; v *= 2)
+                if (ImGui::Selectable(std::to_string(v).c_str(), v == now) && v != now) edit(key, json(v));
+            ImGui::EndCombo();
+        }
+        tooltip(help);
+    }
     void boolean(const char* key, const char* label, bool fallback, const char* help = nullptr) {
         bool v = object_.is_object() ? object_.value(key, fallback) : fallback;
         if (ImGui::Checkbox(label, &v)) edit(key, json(v));
@@ -109,6 +128,11 @@ private:
     std::vector<JsonEdit>& edits_;
 };
 
+// Opens the next header or tree node when everything is to be shown.
+void expand(const EditorPreviews& previews) {
+    if (previews.expandAll) ImGui::SetNextItemOpen(true);
+}
+
 // A NOISE's spectrum components (or a spectral_noise node's).
 void componentsEditor(const json& components, const std::string& pointer, std::vector<JsonEdit>& edits) {
     if (!components.is_array()) return;
@@ -117,10 +141,21 @@ void componentsEditor(const json& components, const std::string& pointer, std::v
         const std::string at = pointer + "/" + std::to_string(i);
         ImGui::PushID(int(i));
         Fields f(c, at, edits);
-        f.choice("shape", "shape", {"lowpass", "ring", "bilobe"}, "lowpass");
         const std::string shape = c.value("shape", std::string("lowpass"));
+        // Another shape has other members: the component is replaced whole, keeping its weight.
+        if (ImGui::BeginCombo("shape", shape.c_str())) {
+            for (const char* s : {"lowpass", "ring", "bilobe"})
+                if (ImGui::Selectable(s, shape == s) && shape != s) {
+                    json next = std::string(s) == "lowpass" ? json{{"shape", s}, {"cutoff", 8.0}}
+                                                            : json{{"shape", s}, {"frequency", 12.0}, {"bandwidth", 3.0}};
+                    if (std::string(s) == "bilobe") next["orientation"] = 0.0;
+                    if (c.contains("weight")) next["weight"] = c["weight"];
+                    edits.push_back({at, next});
+                }
+            ImGui::EndCombo();
+        }
         if (shape == "lowpass") {
-            f.number("cutoff", "cutoff", 8, 0.0, 2048, "%.2f", "cycles per example period");
+            f.number("cutoff", "cutoff", 8, 1e-3, 2048, "%.2f", "cycles per example period");
         } else {
             f.number("frequency", "frequency", 8, 0.0, 2048, "%.2f", "cycles per example period");
             f.number("bandwidth", "bandwidth", 2, 0.01, 1024, "%.2f");
@@ -147,7 +182,7 @@ void noiseEditor(const json& noise, const std::string& pointer, std::vector<Json
         f.boolean("gaussianize", "gaussianize", true, "blend in Gaussian space, keep the histogram");
         return;
     }
-    f.integer("size", "size", 256, 8, 4096, "example size (a power of two)");
+    f.powerOfTwo("size", "size", 256, 8, 4096, "example size");
     f.number("mean", "mean", 0.5, 0, 1);
     f.number("stddev", "stddev", 1.0 / 6.0, 0.001, 0.5);
     componentsEditor(noise.value("components", json::array()), pointer + "/components", edits);
@@ -161,27 +196,50 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
     const std::string type = colormap.value("type", std::string());
     f.choice("transfer", "transfer", {"srgb", "linear"}, "srgb", "colours as sRGB codes (colour) or as data");
     f.integer("resolution", "resolution", 256, 2, 1024, "table entries per side");
-    if (previews.colormap) {
+    if (previews.colormap && pointer == previews.colormapPointer) {
         const ImVec2 at = ImGui::GetCursorScreenPos();
         // The canvas image holds y = 1 in its top row (ColormapTable::toImage).
         ImGui::Image(previews.colormap, ImVec2(previews.canvasSize, previews.canvasSize));
-        if (type == "painted" && ImGui::IsItemClicked()) {
-            const ImVec2 m = ImGui::GetMousePos();
-            const double x = (m.x - at.x) / previews.canvasSize, y = 1.0 - (m.y - at.y) / previews.canvasSize;
+        const ImVec2 m = ImGui::GetMousePos();
+        const double x = (m.x - at.x) / previews.canvasSize, y = 1.0 - (m.y - at.y) / previews.canvasSize;
+        const json& shapes = colormap.value("shapes", json::array());
+        if (type == "painted" && brush.shape == 3) {
+            if (ImGui::IsItemClicked() && previews.painted) {
+                brush.moving = -1;
+                for (size_t i = previews.painted->shapes.size(); i-- > 0;)
+                    if (previews.painted->shapes[i].contains(x, y)) {
+                        brush.moving = int(i);
+                        break;
+                    }
+            }
+            if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) brush.moving = -1;
+            const ImVec2 d = ImGui::GetIO().MouseDelta;
+            if (brush.moving >= 0 && size_t(brush.moving) < shapes.size() && (d.x != 0 || d.y != 0)) {
+                const double dx = d.x / previews.canvasSize, dy = -d.y / previews.canvasSize;
+                json moved = shapes[size_t(brush.moving)];
+                auto shift = [&](json& p) { p = json::array({p[0].get<double>() + dx, p[1].get<double>() + dy}); };
+                for (const char* key : {"min", "max", "center", "point"})
+                    if (moved.contains(key)) shift(moved[key]);
+                if (moved.contains("points"))
+                    for (json& p : moved["points"]) shift(p);
+                edits.push_back({pointer + "/shapes/" + std::to_string(brush.moving), moved});
+            }
+        } else if (type == "painted" && ImGui::IsItemClicked()) {
             const std::string colour = colourHex(brush.colour);
             const double r = brush.radius;
             json shape = brush.shape == 0   ? json{{"shape", "disc"}, {"center", {x, y}}, {"radius", r}}
                          : brush.shape == 1 ? json{{"shape", "ring"}, {"center", {x, y}}, {"inner", 0.6 * r}, {"outer", r}}
                                             : json{{"shape", "rectangle"}, {"min", {x - r, y - r}}, {"max", {x + r, y + r}}};
             shape["colour"] = colour;
-            edits.push_back({pointer + "/shapes/" + std::to_string(colormap.value("shapes", json::array()).size()), shape});
+            edits.push_back({pointer + "/shapes/" + std::to_string(shapes.size()), shape});
         }
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(type == "painted" ? "click: paint the brush's shape here (x right, y up)"
-                                                : "the colormap H (x right, y up)");
+            ImGui::SetTooltip(type != "painted"    ? "the colormap H (x right, y up)"
+                              : brush.shape == 3 ? "drag a shape to move it (x right, y up)"
+                                                 : "click: paint the brush's shape here (x right, y up)");
     }
     if (type == "painted") {
-        ImGui::Combo("brush", &brush.shape, "disc\0ring\0square\0");
+        ImGui::Combo("brush", &brush.shape, "disc\0ring\0square\0move\0");
         ImGui::SliderFloat("brush size", &brush.radius, 0.005f, 0.5f, "%.3f");
         ImGui::ColorEdit3("brush colour", brush.colour, ImGuiColorEditFlags_NoInputs);
         f.colour("background", "background");
@@ -194,6 +252,7 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
             g.colour("colour", "##colour");
             ImGui::SameLine();
             const std::string kind = s.value("shape", std::string());
+            expand(previews);
             if (ImGui::TreeNode("shape", "%zu: %s", i, kind.c_str())) {
                 g.point("min", "min");
                 g.point("max", "max");
@@ -248,9 +307,7 @@ void nodeEditor(const std::string& id, const json& node, const std::string& poin
                 f.integer(p.name.c_str(), p.name.c_str(), fallback.is_number() ? fallback.get<long long>() : (long long)p.min,
                           (long long)p.min, (long long)p.max, help);
                 break;
-            case ParamType::Seed:
-                f.integer(p.name.c_str(), p.name.c_str(), 0, 0, 1ll << 30, help);
-                break;
+            case ParamType::Seed: f.seed(p.name.c_str(), p.name.c_str(), help); break;
             case ParamType::Boolean:
                 f.boolean(p.name.c_str(), p.name.c_str(), fallback.is_boolean() && fallback.get<bool>(), help);
                 break;
@@ -260,10 +317,12 @@ void nodeEditor(const std::string& id, const json& node, const std::string& poin
                 break;
             case ParamType::Path: f.text(p.name.c_str(), p.name.c_str()); break;
             case ParamType::Components:
+                expand(previews);
                 if (ImGui::TreeNode(p.name.c_str()))
                     componentsEditor(node.value(p.name, json::array()), pointer + "/" + p.name, edits), ImGui::TreePop();
                 break;
             case ParamType::Colormap:
+                expand(previews);
                 if (ImGui::TreeNode(p.name.c_str()))
                     colormapEditor(node.value(p.name, json::object()), pointer + "/" + p.name, previews, brush, edits),
                         ImGui::TreePop();
@@ -294,15 +353,18 @@ void nodeEditor(const std::string& id, const json& node, const std::string& poin
 std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& previews, PaintBrush& brush) {
     std::vector<JsonEdit> edits;
     Fields header(pattern, "", edits);
+    expand(previews);
     if (ImGui::CollapsingHeader("Pattern", ImGuiTreeNodeFlags_DefaultOpen)) {
-        header.integer("seed", "seed", 1, 0, 1ll << 30, "tile offsets and (unless a noise sets its own) the examples");
+        header.seed("seed", "seed", "tile offsets and (unless a noise sets its own) the examples (Enter applies)");
         header.number("scale", "scale", 1, 0.01, 64, "%.3f", "example texels per output pixel");
         header.choice("offsets", "offsets", {"independent", "shared"}, "independent");
     }
     if (pattern.contains("nodes") && pattern["nodes"].is_object()) {
+        expand(previews);
         if (ImGui::CollapsingHeader("Graph nodes", ImGuiTreeNodeFlags_DefaultOpen))
             for (const auto& [id, node] : pattern["nodes"].items()) {
                 ImGui::PushID(id.c_str());
+                expand(previews);
                 if (ImGui::TreeNode(id.c_str(), "%s (%s)", id.c_str(), node.value("type", std::string("?")).c_str())) {
                     nodeEditor(id, node, "/nodes/" + id, previews, brush, edits);
                     ImGui::TreePop();
@@ -313,7 +375,9 @@ std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& p
     }
     for (int k = 0; k < 2; ++k) {
         const char* axis = k == 0 ? "noise_x" : "noise_y";
-        if (pattern.contains(axis) && ImGui::CollapsingHeader(axis)) {
+        if (!pattern.contains(axis)) continue;
+        expand(previews);
+        if (ImGui::CollapsingHeader(axis)) {
             ImGui::PushID(axis);
             if (previews.example[k]) {
                 // The example (as the noise command writes it) and its power spectrum (zero frequency at the centre).
@@ -327,12 +391,15 @@ std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& p
             ImGui::PopID();
         }
     }
+    if (pattern.contains("colormap")) expand(previews);
     if (pattern.contains("colormap") && ImGui::CollapsingHeader("Colormap", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::PushID("colormap");
         colormapEditor(pattern["colormap"], "/colormap", previews, brush, edits);
         ImGui::PopID();
     }
-    if (pattern.contains("normal_map") && pattern["normal_map"].is_object() && ImGui::CollapsingHeader("Normal map")) {
+    const bool normalMap = pattern.contains("normal_map") && pattern["normal_map"].is_object();
+    if (normalMap) expand(previews);
+    if (normalMap && ImGui::CollapsingHeader("Normal map")) {
         Fields n(pattern["normal_map"], "/normal_map", edits);
         n.number("amplitude", "amplitude", 0.25, 0.0001, 100, "%.4f", "RMS slope per axis");
         n.number("roughness", "roughness", 0.1, 0.001, 10, "%.4f", "base Beckmann roughness");

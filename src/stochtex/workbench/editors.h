@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "stochtex/pattern/colormap.h"
+
 namespace stochtex {
 
 struct JsonEdit {
@@ -20,9 +22,11 @@ struct JsonEdit {
 };
 
 // The brush of the colormap canvas: a click adds a shape of this kind and
-// colour at the point clicked.
+// colour at the point clicked; the move tool drags the shape under the
+// cursor (the last one containing it, the one that gives its colour).
 struct PaintBrush {
-    int shape = 0;  // 0 disc, 1 ring, 2 square
+    int shape = 0;  // 0 disc, 1 ring, 2 square, 3 move
+    int moving = -1;  // the shape being dragged by the move tool
     float radius = 0.08f;
     float colour[3] = {0.85f, 0.35f, 0.2f};  // sRGB codes, as a colour picker gives them
 };
@@ -33,7 +37,10 @@ struct PaintBrush {
 // brush's shape), and each noise's example and power spectrum.
 struct EditorPreviews {
     void* colormap = nullptr;
+    std::string colormapPointer = "/colormap";  // the colormap the canvas shows (a graph's output node's)
     float canvasSize = 200;
+    const PaintedColormap* painted = nullptr;  // the output colormap's layout as parsed (for the move tool)
+    bool expandAll = false;  // every header and node open
     void* example[2] = {nullptr, nullptr};
     void* spectrum[2] = {nullptr, nullptr};
 };

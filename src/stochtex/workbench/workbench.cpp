@@ -8,12 +8,14 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <optional>
 
 #include "stochtex/core/error.h"
@@ -45,6 +47,8 @@ void validateWorkbenchOptions(const WorkbenchOptions& o) {
     if (!(o.camera.view.scale > 0) || !std::isfinite(o.camera.view.scale))
         throw InputError::parameter("scale", "must be a finite number > 0, got " + formatValue(o.camera.view.scale));
     if (o.frames < 0) throw InputError::parameter("frames", "must be ≥ 0, got " + std::to_string(o.frames));
+    if (!o.screenshot.empty() && o.frames == 0)
+        throw InputError::parameter("frames", "must be given with a screenshot (it is of the last frame)");
     validateShadertoySettings(o.shadertoy);
 }
 
@@ -106,23 +110,15 @@ std::string freshName(const std::string& stem, const std::string& ext) {
     }
 }
 
-// The rows [0, h) and columns [x0, x0 + w) of an image.
-Image cropColumns(const Image& image, int x0, int w, int h) {
-    Image out(w, h, image.channels(), Image::Uninitialized{});
-    for (int y = 0; y < h; ++y)
-        std::copy_n(image.row(y) + size_t(x0) * size_t(image.channels()), size_t(w) * size_t(image.channels()),
-                    out.row(y));
-    return out;
-}
-
 class Workbench {
 public:
     Workbench(WorkbenchDocument document, const WorkbenchOptions& options)
         : doc_(std::move(document)), options_(options), camera_(options.camera), filter_(options.filter),
           view_(options.view), mode_(options.mode), analysis_(options.analysis), showPanel_(options.panel) {
-        filterName_ = filter_.source == StatisticsSource::Point ? "none" : filterName(FilterOptions{}.use(
-                                                                               {filter_.source, {ResponseKind::PrefilteredColormap,
-                                                                                                 filter_.response.prefilter}}));
+        filterName_ = filter_.source == StatisticsSource::Point
+                          ? "none"
+                          : filterName(FilterOptions{}.use({filter_.source, {ResponseKind::PrefilteredColormap,
+                                                                             filter_.response.prefilter}}));
         response_ = filter_.response.kind;
         const int panel = showPanel_ ? kWorkbenchPanelWidth : 0;
         context_ = GlContext::window(camera_.view.width + panel, camera_.view.height, "stochtex workbench");
@@ -138,14 +134,21 @@ public:
         loadDocument();
         // What the first frame needs, built now: a program that does not
         // compile or a pattern the GPU cannot draw fails the run here.
+        windowWidth_ = camera_.view.width + panel;
+        windowHeight_ = camera_.view.height;
         if (isShadertoy())
-            drawProgramFrame(textureRect(camera_.view.width + panel).width, camera_.view.height, false);
+            buildHost(textureRect().width, textureRect().height);
         else
             renderer();
     }
 
     ~Workbench() {
-        stopRecording();
+        try {
+            stopRecording();
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "stochtex: the recording could not be finished: %s\n", e.what());
+        }
+        scene_.reset();
         renderers_.clear();
         host_.reset();
         ImGui_ImplOpenGL3_Shutdown();
@@ -167,28 +170,33 @@ public:
     int run() {
         size_t nextStep = 0;
         auto lastPoll = std::chrono::steady_clock::now();
+        bool screenshotWritten = false;
         while (!context_->shouldClose() && !quit_ && (options_.frames == 0 || frame_ < options_.frames)) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             while (nextStep < options_.script.size() && options_.script[nextStep].frame <= frame_)
                 runStep(options_.script[nextStep++]);
-            handleInput();
+            guarded([&] { handleInput(); });
             const auto now = std::chrono::steady_clock::now();
             if (now - lastPoll > std::chrono::milliseconds(500)) {
                 lastPoll = now;
                 if (doc_.changedOnDisk()) reloadDocument();
             }
-            if (needsRebuild_ && (!ImGui::IsAnyItemActive() || now - lastBuild_ > std::chrono::milliseconds(300)))
-                rebuild();
+            // While a widget or the canvas is dragged, at most one rebuild every 0.3 s.
+            const bool dragging = ImGui::IsAnyItemActive() || ImGui::IsMouseDown(ImGuiMouseButton_Left);
+            if (needsRebuild_ && (!dragging || now - lastBuild_ > std::chrono::milliseconds(300))) rebuild();
             drawPicture();
-            // The picture area as it stands, before the panels are drawn over the window.
-            if (pendingScreenshot_.size() || recorder_ || (!options_.screenshot.empty() && isLastFrame())) {
+            // The picture area as it stands, before the panels are drawn over
+            // the window; the run's screenshot is its last frame.
+            const bool last = isLastFrame() || quit_ || context_->shouldClose();
+            const bool runShot = !options_.screenshot.empty() && last;
+            if (!pendingScreenshots_.empty() || recorder_ || runShot) {
                 const Image shot = pictureCodes();
-                for (const std::string& f : pendingScreenshot_) writeScreenshot(f, shot);
-                pendingScreenshot_.clear();
-                if (recorder_) recorder_->write(shot);
-                if (!options_.screenshot.empty() && isLastFrame()) writeScreenshot(options_.screenshot, shot);
+                for (const std::string& f : pendingScreenshots_) guarded([&] { writeScreenshot(f, shot); });
+                pendingScreenshots_.clear();
+                guarded([&] { record(shot); });
+                if (runShot) writeScreenshot(options_.screenshot, shot), screenshotWritten = true;
             }
             drawPanels();
             ImGui::Render();
@@ -199,6 +207,8 @@ public:
             updateTitle();
             context_->swapAndPoll();
         }
+        if (!options_.screenshot.empty() && !screenshotWritten)
+            throw InputError("screenshot: the window closed before a frame was drawn");
         return frame_;
     }
 
@@ -209,20 +219,33 @@ private:
     int panelWidth() const { return showPanel_ ? kWorkbenchPanelWidth : 0; }
     bool analysing() const { return mode_ != WorkbenchMode::Texture; }
 
+    // An interactive action: a failure is shown in the panel, the session goes on.
+    template <class F>
+    void guarded(F&& action) {
+        try {
+            action();
+        } catch (const std::exception& e) {
+            error_ = e.what();
+        }
+    }
+
+    // Something the picture shows changed: analyses of the old picture are stale.
+    void viewChanged() { ++viewVersion_; }
+
     // --- the document ---
 
     void loadDocument() {
-        drawFailed_ = false;
+        failedKey_.clear();
+        hostFailed_ = false;
+        scene_.reset();
         renderers_.clear();
         host_.reset();
-        analysisFrame_ = {};
-        previousFrame_ = {};
-        correlation_.reset();
+        exampleSize_ = 0;
+        viewChanged();
         if (isShadertoy()) return;  // the host is built at the picture's size
         spec_ = doc_.patternSpec();
         hasNormalMap_ = spec_.normalMap.has_value() && !spec_.graph;
         if (!hasNormalMap_) response_ = ResponseKind::PrefilteredColormap;
-        exampleSize_ = needsGraphEvaluator(spec_) ? GraphPattern::build(spec_).exampleSize() : Pattern::build(spec_).exampleSize();
         // The colormap canvas: the table with y = 1 in the top row (toImage), as the window shows it.
         canvas_.upload(encodeTransfer(buildColormap(spec_.colormap).toImage(),
                                       spec_.colormap.transfer.value_or(Transfer::Srgb)));
@@ -234,6 +257,14 @@ private:
             example_[k].upload(example);
             exampleSpectrum_[k].upload(displaySpectrum(powerSpectrum(example)));
         }
+    }
+
+    // W of the pattern's example, for the instance offsets (built once per document, when needed).
+    int exampleSize() {
+        if (exampleSize_ == 0)
+            exampleSize_ = needsGraphEvaluator(spec_) ? GraphPattern::build(spec_).exampleSize()
+                                                      : Pattern::build(spec_).exampleSize();
+        return exampleSize_;
     }
 
     void rebuild() {
@@ -258,6 +289,7 @@ private:
         }
     }
 
+    // The panel's edits; the script's too, which then fail the run if refused.
     void applyEdit(const JsonEdit& e) {
         try {
             if (e.remove)
@@ -298,11 +330,10 @@ private:
     }
 
     // The texture's part of the picture area: all of it, or the left half side by side.
-    DisplayRect textureRect() const { return textureRect(windowWidth_); }
-    DisplayRect textureRect(int windowWidth) const {
-        const int w = windowWidth - panelWidth(), h = windowHeight_;
-        const int tw = mode_ == WorkbenchMode::SideBySide ? std::max(1, w / 2) : std::max(1, w);
-        return {panelWidth(), 0, tw, std::max(1, h)};
+    DisplayRect textureRect() const {
+        const int w = windowWidth_ - panelWidth(), h = windowHeight_;
+        const int tw = mode_ == WorkbenchMode::SideBySide ? w / 2 : w;
+        return {panelWidth(), 0, std::max(1, tw), std::max(1, h)};
     }
     DisplayRect pictureRect() const {
         return {panelWidth(), 0, std::max(1, windowWidth_ - panelWidth()), std::max(1, windowHeight_)};
@@ -315,33 +346,37 @@ private:
         glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         const DisplayRect tr = textureRect();
+        if (tr.width != lastTextureSize_[0] || tr.height != lastTextureSize_[1]) {
+            lastTextureSize_ = {tr.width, tr.height};
+            viewChanged();
+        }
         GLuint texture = 0;
         TextureDisplay::Look look = TextureDisplay::kRenderTarget;
-        try {
-            if (isShadertoy()) {
-                texture = drawProgramFrame(tr.width, tr.height);
-                look = TextureDisplay::kGlCodes;
-            } else if (!drawFailed_) {
+        if (isShadertoy()) {
+            texture = drawProgramFrame(tr.width, tr.height);
+            look = TextureDisplay::kGlCodes;
+        } else if (drawKey() != failedKey_) {
+            try {
                 texture = drawPatternFrame(tr.width, tr.height);
+            } catch (const std::exception& e) {
+                // Shown in the panel; tried again when the view or the document changes, not every frame.
+                error_ = e.what();
+                failedKey_ = drawKey();
             }
-        } catch (const std::exception& e) {
-            // Shown in the panel; tried again after the next edit or reload, not every frame.
-            error_ = e.what();
-            drawFailed_ = true;
         }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (!texture) return;
-        frameChanged_ = true;
-        if (analysing()) updateAnalysis();
+        if (isScene()) look = TextureDisplay::kGlLinear;  // a mesh is drawn the GL way up
+        if (analysing()) guarded([&] { updateAnalysis(); });
         glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the analysis read back from the frame's own framebuffer
         const DisplayRect pr = pictureRect();
         switch (mode_) {
             case WorkbenchMode::Texture: display_->show(texture, tr, look); break;
             case WorkbenchMode::Analysis: showAnalysis(pr, 1); break;
-            case WorkbenchMode::SideBySide: {
+            case WorkbenchMode::SideBySide:
                 display_->show(texture, tr, look);
                 showAnalysis({tr.x + tr.width, 0, pr.width - tr.width, pr.height}, 1);
                 break;
-            }
             case WorkbenchMode::Split: {
                 display_->show(texture, tr, look);
                 const int cut = int(std::lround(split_ * pr.width));
@@ -358,6 +393,12 @@ private:
         }
     }
 
+    // What a pattern's frame depends on besides the document: a failed build is not retried until it changes.
+    std::string drawKey() const {
+        return filterName_ + "|" + std::to_string(int(response_)) + "|" + std::to_string(filter_.aniso) + "|" +
+               std::to_string(int(view_));
+    }
+
     void showAnalysis(const DisplayRect& rect, float opacity) {
         if (analysisImage_.empty()) return;
         TextureDisplay::Look look = TextureDisplay::kImageCodes;
@@ -370,12 +411,13 @@ private:
             target_ = std::make_unique<RenderTarget>(w, h, true);
         GpuView& r = renderer();
         if (isScene()) {
-            SceneCamera sc;
-            const float yaw = float(orbitYaw_ * M_PI / 180), pitch = float(orbitPitch_ * M_PI / 180);
-            sc.target = {0, 0, 0};
-            sc.eye = {orbitDistance_ * std::cos(pitch) * std::sin(yaw), orbitDistance_ * std::sin(pitch),
-                      orbitDistance_ * std::cos(pitch) * std::cos(yaw)};
-            drawScene(r, makeObject(view_ == WorkbenchView::Sphere ? "sphere" : "torus"), sc, *target_, 4.0f);
+            const std::string object = view_ == WorkbenchView::Sphere ? "sphere" : "torus";
+            if (!scene_ || sceneView_ != &r || sceneObject_ != object) {
+                scene_ = std::make_unique<SceneRenderer>(r, makeObject(object));
+                sceneView_ = &r;
+                sceneObject_ = object;
+            }
+            scene_->draw(orbit_.camera(), *target_, 4.0f);
         } else {
             camera_.kind = view_ == WorkbenchView::Plane ? Camera::Kind::Plane : Camera::Kind::Zoom;
             camera_.view.width = w;
@@ -384,48 +426,68 @@ private:
             r.setDerivatives(derivatives_);
             r.drawView(camera_);
         }
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return target_->texture();
     }
 
-    GLuint drawProgramFrame(int w, int h, bool render = true) {
+    // A new host at the picture's size, swapped in only once it compiled.
+    void buildHost(int w, int h) {
+        ShadertoySettings s = options_.shadertoy;
+        s.width = w;
+        s.height = h;
+        auto next = std::make_unique<ShadertoyHost>(doc_.shadertoySpec(), *context_, s);
+        host_ = std::move(next);
+        viewChanged();
+    }
+
+    GLuint drawProgramFrame(int w, int h) {
         if (!host_ || host_->settings().width != w || host_->settings().height != h) {
-            ShadertoySettings s = options_.shadertoy;
-            s.width = w;
-            s.height = h;
-            host_.reset();
-            host_ = std::make_unique<ShadertoyHost>(doc_.shadertoySpec(), *context_, s);
-            lastProgramFrame_ = -1;
+            if (hostFailed_ && host_) return host_->frameTexture();  // the last good one, until the next reload
+            if (hostFailed_) return 0;
+            try {
+                buildHost(w, h);
+            } catch (const std::exception& e) {
+                error_ = e.what();
+                hostFailed_ = true;
+                return host_ ? host_->frameTexture() : 0;
+            }
         }
-        if (render && (!paused_ || host_->frame() == 0)) {
+        if (!paused_ || host_->frame() == 0) {
             host_->setMouse(mouse_);
             host_->renderFrame();
         }
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return host_->frameTexture();
     }
 
-    // The live analysis of the frame just drawn: spectrum and flow of the
-    // frames shown, correlation over a pattern's instances (a program's frames).
+    // The live analysis of the frame shown: spectrum and flow of the frames
+    // shown, recomputed when the picture changed; the correlation over a
+    // pattern's instances (a program's frames).
     void updateAnalysis() {
-        const bool newFrame = !isShadertoy() || host_->frame() != lastProgramFrame_;
-        if (isShadertoy()) lastProgramFrame_ = host_->frame();
-        Image frame = isShadertoy() ? host_->image() : target_->readRgb(RenderTarget::Rows::TopDown);
+        const DisplayRect tr = textureRect();
+        if (std::min(tr.width, tr.height) < 16) {
+            analysisSummary_ = "the picture is too small to analyse (16 pixels a side at least)";
+            analysisImage_ = {};
+            return;
+        }
+        const long long version = isShadertoy() ? host_->frame() : viewVersion_;
+        const bool changed = version != analysedVersion_ || host_.get() != analysedHost_;
+        if (!changed && !analysisDirty_ && analysis_ != LiveAnalysisKind::Correlation) return;
+        // Pattern targets hold image row 0 in GL row 0; a mesh and a program's frame the GL way up.
+        const Image frame = isShadertoy() ? host_->image()
+                            : isScene()   ? target_->readRgb(RenderTarget::Rows::TopDown)
+                                          : target_->readRgb(RenderTarget::Rows::AsDrawn);
         LiveAnalysisResult result;
         switch (analysis_) {
-            case LiveAnalysisKind::Spectrum:
-                if (!newFrame && !analysisDirty_ && !analysisImage_.empty()) return;
-                result = liveSpectrum(frame);
-                break;
+            case LiveAnalysisKind::Spectrum: result = liveSpectrum(frame); break;
             case LiveAnalysisKind::Flow:
-                if (!newFrame && !analysisDirty_ && !analysisImage_.empty()) return;
                 if (previousFrame_.width() != frame.width() || previousFrame_.height() != frame.height())
                     previousFrame_ = frame;
                 result = liveFlow(previousFrame_, frame);
                 previousFrame_ = frame;
                 break;
-            case LiveAnalysisKind::Correlation: result = correlationStep(frame, newFrame); break;
+            case LiveAnalysisKind::Correlation: result = correlationStep(frame, changed); break;
         }
+        analysedVersion_ = version;
+        analysedHost_ = host_.get();
         analysisDirty_ = false;
         analysisImage_.upload(result.image);
         analysisSummary_ = result.summary;
@@ -433,28 +495,32 @@ private:
         analysisProfileLabel_ = result.profileLabel;
     }
 
-    LiveAnalysisResult correlationStep(const Image& frame, bool newFrame) {
+    LiveAnalysisResult correlationStep(const Image& frame, bool changed) {
         const int w = frame.width(), h = frame.height();
-        const int px = std::clamp(pickX_ < 0 ? w / 2 : pickX_, 0, w - 1), py = std::clamp(pickY_ < 0 ? h / 2 : pickY_, 0, h - 1);
-        if (!correlation_ || correlation_->width() != w || correlation_->height() != h || correlation_->pointX() != px ||
-            correlation_->pointY() != py || analysisDirty_)
+        const int px = std::clamp(pickX_ < 0 ? w / 2 : pickX_, 0, w - 1);
+        const int py = std::clamp(pickY_ < 0 ? h / 2 : pickY_, 0, h - 1);
+        // A program's samples are its frames; a pattern's are its instances
+        // of one view, so a new view starts them again.
+        const bool restart = analysisDirty_ || (changed && !isShadertoy());
+        if (!correlation_ || restart || correlation_->width() != w || correlation_->height() != h ||
+            correlation_->pointX() != px || correlation_->pointY() != py)
             correlation_ = std::make_unique<LiveCorrelation>(w, h, px, py);
         if (isShadertoy()) {
-            if (newFrame) correlation_->add(frame);  // a program's samples: its frames
-        } else if (!isScene() && correlation_->count() < 4096) {
-            // A pattern's samples: its instances, the view moved by a hashed whole-texel offset.
+            if (changed) correlation_->add(frame);
+        } else if (isScene()) {
+            LiveAnalysisResult r;
+            r.image = Image(w, h, 3, 0.5f);
+            r.summary = "correlation over instances: in the zoom and plane views";
+            return r;
+        } else if (correlation_->count() < kMaxCorrelationSamples) {
+            // Instances through the GPU: the view moved by a hashed whole-texel offset (CameraSource).
             GpuView& r = renderer();
-            Camera c = camera_;
-            const CameraSource source([&r](const Camera& cam) { return r.render(cam); }, exampleSize_, c);
-            for (int k = 0; k < 4; ++k) {
-                const int i = correlation_->count();
-                correlation_->add(source.render({w, h, 0, 0}, 0, i));
-            }
+            const CameraSource source([&r](const Camera& c) { return r.render(c); }, exampleSize(), camera_);
+            for (int k = 0; k < 4; ++k) correlation_->add(source.render({w, h, 0, 0}, 0, correlation_->count()));
         }
-        LiveAnalysisResult r = correlation_->result();
-        if (isScene()) r.summary = "correlation over instances: in the zoom and plane views";
-        return r;
+        return correlation_->result();
     }
+    static constexpr int kMaxCorrelationSamples = 4096;
 
     // The picture area as shown (display codes), row 0 at the top.
     Image pictureCodes() const {
@@ -462,7 +528,7 @@ private:
         glReadBuffer(GL_BACK);
         const Image all = readBoundFramebufferRgb(windowWidth_, windowHeight_, RenderTarget::Rows::TopDown);
         const DisplayRect pr = pictureRect();
-        return cropColumns(all, pr.x, pr.width, pr.height);
+        return crop(all, pr.x, 0, std::min(pr.width, all.width() - pr.x), std::min(pr.height, all.height()));
     }
 
     void writeScreenshot(const std::string& path, const Image& shot) {
@@ -473,15 +539,26 @@ private:
     void startRecording(const std::string& path) {
         stopRecording();
         const DisplayRect pr = pictureRect();
+        // A program's own rate; a pattern's frames at 30 per second.
         const double fps = isShadertoy() ? options_.shadertoy.fps : 30.0;
         recorder_ = std::make_unique<FrameSequenceWriter>(path, pr.width, pr.height, fps, "", Transfer::Linear);
+        recordingSize_ = {pr.width, pr.height};
         recordingPath_ = path;
         notice_ = "recording " + path;
     }
+    void record(const Image& shot) {
+        if (!recorder_) return;
+        if (shot.width() != recordingSize_[0] || shot.height() != recordingSize_[1]) {
+            stopRecording();  // a video keeps one size: the picture area changed
+            notice_ += " (stopped: the picture changed size)";
+            return;
+        }
+        recorder_->write(shot);
+    }
     void stopRecording() {
         if (!recorder_) return;
-        const std::string written = recorder_->finish();
-        recorder_.reset();
+        const std::unique_ptr<FrameSequenceWriter> r = std::move(recorder_);
+        const std::string written = r->finish();
         notice_ = "wrote " + (written.empty() ? recordingPath_ : written);
     }
 
@@ -489,39 +566,53 @@ private:
 
     void zoomAt(double factor, double px, double py) {
         if (isScene()) {
-            orbitDistance_ = float(std::clamp(orbitDistance_ / factor, 1.3, 20.0));
-            return;
+            orbit_.distance = std::clamp(orbit_.distance / factor, 1.3, 20.0);
+        } else {
+            View& v = camera_.view;
+            const double next = std::clamp(v.scale / factor, 1.0 / 64.0, 4096.0);
+            v.offsetU += px * (v.scale - next);
+            v.offsetV += py * (v.scale - next);
+            v.scale = next;
         }
-        View& v = camera_.view;
-        const double next = std::clamp(v.scale / factor, 1.0 / 64.0, 4096.0);
-        v.offsetU += px * (v.scale - next);
-        v.offsetV += py * (v.scale - next);
-        v.scale = next;
-        analysisDirty_ = true;
+        viewChanged();
     }
     void pan(double dx, double dy) {
         if (isScene()) {
-            orbitYaw_ -= dx * 0.4;
-            orbitPitch_ = std::clamp(orbitPitch_ + dy * 0.4, -80.0, 80.0);
-            return;
+            orbit_.yawDeg -= dx * 0.4;
+            orbit_.pitchDeg = std::clamp(orbit_.pitchDeg + dy * 0.4, -80.0, 80.0);
+        } else {
+            camera_.view.offsetU -= dx * camera_.view.scale;
+            camera_.view.offsetV -= dy * camera_.view.scale;
         }
-        camera_.view.offsetU -= dx * camera_.view.scale;
-        camera_.view.offsetV -= dy * camera_.view.scale;
-        analysisDirty_ = true;
+        viewChanged();
     }
     void setFilter(const std::string& name) {
         filterName_ = name;
-        analysisDirty_ = true;
+        viewChanged();
     }
     void setAniso(int k) {
         k = std::clamp(k, 1, int(kMaxAnisotropy));
         if (k == filter_.aniso) return;
         filter_.aniso = k;
+        scene_.reset();
         renderers_.clear();  // the probes are compiled in
+        viewChanged();
+    }
+    void setResponse(ResponseKind kind) {
+        response_ = kind;
+        viewChanged();
+    }
+    void setDerivatives(GpuView::Derivatives d) {
+        derivatives_ = d;
+        viewChanged();
+    }
+    void setTilt(double degrees) {
+        camera_.tiltDeg = std::clamp(degrees, 0.0, 89.0);
+        viewChanged();
     }
     void setView(WorkbenchView v) {
         view_ = v;
-        analysisDirty_ = true;
+        viewChanged();
     }
     void setPick(double x, double y) {
         pickX_ = int(x);
@@ -531,25 +622,28 @@ private:
 
     void runStep(const WorkbenchStep& s) {
         using A = WorkbenchStep::Action;
+        if ((s.action == A::Set || s.action == A::Save) && isShadertoy())
+            throw InputError("script: a ShaderToy program is edited in its files, not by \"set\" or \"save\"");
         switch (s.action) {
             case A::Zoom: zoomAt(s.amount, s.x, s.y); break;
             case A::Pan: pan(s.x, s.y); break;
             case A::Filter: setFilter(s.text); break;
             case A::Aniso: setAniso(int(s.amount)); break;
-            case A::Tilt: camera_.tiltDeg = s.amount; break;
-            case A::Set: {
-                // A script's edit that the pattern refuses fails the run: a test must see it.
-                if (s.value.is_null() && s.text.empty()) break;
-                doc_.set(s.text, s.value);
-                loadDocument();
+            case A::Tilt: setTilt(s.amount); break;
+            case A::Set:
+                // The panel's path: the edit, then the rebuild. A script has no
+                // one to read the panel: a refused edit fails the run.
+                applyEdit({s.text, s.value});
+                if (!error_.empty()) throw InputError(error_);
+                rebuild();
+                if (!error_.empty()) throw InputError(error_);
                 break;
-            }
-            case A::Mode: mode_ = parseEnum(kWorkbenchModeNames, s.text, "mode"); analysisDirty_ = true; break;
-            case A::Analysis: analysis_ = parseEnum(kLiveAnalysisNames, s.text, "analysis"); analysisDirty_ = true; break;
+            case A::Mode: mode_ = parseEnum(kWorkbenchModeNames, s.text, "mode"), analysisDirty_ = true; break;
+            case A::Analysis: analysis_ = parseEnum(kLiveAnalysisNames, s.text, "analysis"), analysisDirty_ = true; break;
             case A::View: setView(parseEnum(kWorkbenchViewNames, s.text, "view")); break;
             case A::Pick: setPick(s.x, s.y); break;
             case A::Pause: paused_ = s.amount != 0; break;
-            case A::Screenshot: pendingScreenshot_.push_back(s.text); break;
+            case A::Screenshot: pendingScreenshots_.push_back(s.text); break;
             case A::Save: save(s.text); break;
             case A::Record: startRecording(s.text); break;
             case A::StopRecording: stopRecording(); break;
@@ -562,21 +656,26 @@ private:
         const DisplayRect pr = pictureRect(), tr = textureRect();
         const double px = io.MousePos.x - pr.x, py = io.MousePos.y;  // picture pixels, rows down
         const bool overPicture = px >= 0 && py >= 0 && px < pr.width && py < pr.height;
+        // A point of the texture: side by side, the analysis half maps onto it.
+        const double tx = px >= tr.width ? px - tr.width : px;
         if (!io.WantCaptureMouse && overPicture) {
-            if (io.MouseWheel != 0) zoomAt(std::pow(1.15, io.MouseWheel), std::min(px, double(tr.width)), py);
+            if (io.MouseWheel != 0) zoomAt(std::pow(1.15, io.MouseWheel), tx, py);
             if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
                 if (io.KeyCtrl)
                     split_ = float(std::clamp(px / pr.width, 0.0, 1.0));
                 else if (!isShadertoy())
                     pan(io.MouseDelta.x, io.MouseDelta.y);
             }
-            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) setPick(std::min(px, double(tr.width - 1)), py);
+            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) setPick(tx, py);
             if (isShadertoy()) {
                 // iMouse: xy where the button is held, zw where it was pressed (negative once released).
-                const float mx = float(std::min(px, double(tr.width - 1))), my = float(tr.height - 1 - py);
-                if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) mouse_ = {mx, my, mx, my};
-                else if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) mouse_[0] = mx, mouse_[1] = my;
-                else if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) mouse_[2] = -std::abs(mouse_[2]);
+                const float mx = float(std::min(tx, double(tr.width - 1))), my = float(tr.height - 1 - py);
+                if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+                    mouse_ = {mx, my, mx, my};
+                else if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
+                    mouse_[0] = mx, mouse_[1] = my;
+                else if (ImGui::IsMouseReleased(ImGuiMouseButton_Left))
+                    mouse_[2] = -std::abs(mouse_[2]);
             }
         }
         if (io.WantCaptureKeyboard) return;
@@ -584,12 +683,13 @@ private:
         if (pressed(GLFW_KEY_ESCAPE)) quit_ = true;
         if (pressed(GLFW_KEY_TAB)) showPanel_ = !showPanel_;
         if (pressed(GLFW_KEY_F1)) showHelp_ = !showHelp_;
-        if (pressed(GLFW_KEY_F2)) pendingScreenshot_.push_back(freshName("stochtex-screenshot", ".png"));
+        if (pressed(GLFW_KEY_F2)) pendingScreenshots_.push_back(freshName("stochtex-screenshot", ".png"));
         if (pressed(GLFW_KEY_F3)) recorder_ ? stopRecording() : startRecording(freshName("stochtex-recording", ".mp4"));
         if (pressed(GLFW_KEY_F4)) paused_ = !paused_;
         if (pressed(GLFW_KEY_F5)) reloadDocument();
         if (io.KeyCtrl && pressed(GLFW_KEY_S)) saveDefault();
         if (isShadertoy()) {
+            if (!host_) return;
             // Every other key goes to the program's keyboard texture.
             for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
                 const int code = javascriptKeyCode(key);
@@ -606,13 +706,13 @@ private:
         if (pressed(GLFW_KEY_LEFT_BRACKET)) setAniso(filter_.aniso / 2);
         if (pressed(GLFW_KEY_RIGHT_BRACKET)) setAniso(filter_.aniso * 2);
         if (pressed(GLFW_KEY_L) && hasNormalMap_)
-            response_ = response_ == ResponseKind::Lean ? ResponseKind::PrefilteredColormap : ResponseKind::Lean;
+            setResponse(response_ == ResponseKind::Lean ? ResponseKind::PrefilteredColormap : ResponseKind::Lean);
         if (pressed(GLFW_KEY_V)) setView(WorkbenchView((int(view_) + 1) % 4));
         if (pressed(GLFW_KEY_D))
-            derivatives_ = derivatives_ == GpuView::Derivatives::Camera ? GpuView::Derivatives::Rasterizer
-                                                                        : GpuView::Derivatives::Camera;
-        if (ImGui::IsKeyPressed(GLFW_KEY_UP)) camera_.tiltDeg = std::min(89.0, camera_.tiltDeg + 2.0);
-        if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) camera_.tiltDeg = std::max(0.0, camera_.tiltDeg - 2.0);
+            setDerivatives(derivatives_ == GpuView::Derivatives::Camera ? GpuView::Derivatives::Rasterizer
+                                                                        : GpuView::Derivatives::Camera);
+        if (ImGui::IsKeyPressed(GLFW_KEY_UP)) setTilt(camera_.tiltDeg + 2.0);
+        if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) setTilt(camera_.tiltDeg - 2.0);
         if (pressed(GLFW_KEY_M)) mode_ = WorkbenchMode((int(mode_) + 1) % 5), analysisDirty_ = true;
         if (pressed(GLFW_KEY_A)) analysis_ = LiveAnalysisKind((int(analysis_) + 1) % 3), analysisDirty_ = true;
     }
@@ -631,6 +731,12 @@ private:
     }
 
     void drawPanels() {
+        if (mode_ == WorkbenchMode::Split) {
+            // The split line, over the picture (after the screenshot was taken).
+            const DisplayRect pr = pictureRect();
+            const float x = float(pr.x) + split_ * float(pr.width);
+            ImGui::GetForegroundDrawList()->AddLine(ImVec2(x, 0), ImVec2(x, float(pr.height)), IM_COL32(255, 255, 255, 160));
+        }
         if (showHelp_) drawHelp();
         if (!showPanel_) return;
         ImGui::SetNextWindowPos(ImVec2(0, 0));
@@ -642,23 +748,37 @@ private:
         ImGui::TextDisabled("F1: keys   Tab: hide panel");
         if (!error_.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", error_.c_str());
         if (!notice_.empty()) ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "%s", notice_.c_str());
+        ImGui::PushID("view");  // the view's controls apart from the pattern's members of the same names
         if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) drawViewControls();
         if (analysing() && ImGui::CollapsingHeader("Analysis", ImGuiTreeNodeFlags_DefaultOpen)) drawAnalysisPanel();
+        ImGui::PopID();
         if (!isShadertoy()) {
             auto id = [](const DisplayImage& i) { return i.empty() ? nullptr : reinterpret_cast<void*>(uintptr_t(i.texture())); };
             EditorPreviews previews;
             previews.colormap = id(canvas_);
+            previews.colormapPointer = outputColormapPointer();
+            if (!spec_.graph && spec_.colormap.source == ColormapSpec::Source::Painted) previews.painted = &spec_.colormap.painted;
             for (int k = 0; k < 2; ++k) previews.example[k] = id(example_[k]), previews.spectrum[k] = id(exampleSpectrum_[k]);
+            ImGui::Checkbox("unfold every section", &expandAll_);
+            previews.expandAll = expandAll_;
             for (const JsonEdit& e : patternEditor(doc_.json(), previews, brush_)) applyEdit(e);
-            if (ImGui::Button("Save JSON (Ctrl+S)")) saveDefault();
+            if (ImGui::Button("Save JSON (Ctrl+S)")) guarded([&] { saveDefault(); });
             ImGui::SameLine();
-            static char path[256] = "edited.json";
             ImGui::SetNextItemWidth(160);
-            ImGui::InputText("##saveas", path, sizeof path);
+            ImGui::InputText("##saveas", saveAs_, sizeof saveAs_);
             ImGui::SameLine();
-            if (ImGui::Button("Save as")) save(path);
+            if (ImGui::Button("Save as")) guarded([&] { save(saveAs_); });
         }
         ImGui::End();
+    }
+
+    // Where the colormap the canvas shows lives in the JSON: the pattern's,
+    // or the output node's of a graph.
+    std::string outputColormapPointer() const {
+        const nlohmann::json& j = doc_.json();
+        if (j.contains("nodes") && j.contains("output") && j["output"].is_string())
+            return "/nodes/" + j["output"].get<std::string>() + "/colormap";
+        return "/colormap";
     }
 
     void drawViewControls() {
@@ -667,11 +787,11 @@ private:
         if (mode_ == WorkbenchMode::Overlay) ImGui::SliderFloat("opacity", &overlayOpacity_, 0, 1);
         if (analysing() && enumCombo("analysis", analysis_, kLiveAnalysisNames)) analysisDirty_ = true;
         if (isShadertoy()) {
-            ImGui::Text("frame %d, iTime %.2f s", host_ ? host_->frame() : 0,
-                        host_ ? options_.shadertoy.startTime + host_->frame() / options_.shadertoy.fps : 0.0);
+            const int frame = host_ ? host_->frame() : 0;
+            ImGui::Text("frame %d, iTime %.2f s", frame, options_.shadertoy.startTime + frame / options_.shadertoy.fps);
             ImGui::Checkbox("pause (F4)", &paused_);
             ImGui::SameLine();
-            if (ImGui::Button("restart")) host_.reset();
+            if (ImGui::Button("restart")) hostFailed_ = false, host_.reset();
             return;
         }
         static const std::vector<std::string> filters{"none", "paper", "smooth"};
@@ -684,22 +804,21 @@ private:
         if (ImGui::SliderInt("aniso", &aniso, 1, kMaxAnisotropy)) setAniso(aniso);
         if (hasNormalMap_) {
             bool lean = response_ == ResponseKind::Lean;
-            if (ImGui::Checkbox("LEAN normals (L)", &lean))
-                response_ = lean ? ResponseKind::Lean : ResponseKind::PrefilteredColormap;
+            if (ImGui::Checkbox("LEAN normals (L)", &lean)) setResponse(lean ? ResponseKind::Lean : ResponseKind::PrefilteredColormap);
         }
         WorkbenchView v = view_;
         if (enumCombo("view", v, kWorkbenchViewNames)) setView(v);
         if (view_ == WorkbenchView::Plane) {
             float tilt = float(camera_.tiltDeg);
-            if (ImGui::SliderFloat("tilt", &tilt, 0, 89, "%.1f°")) camera_.tiltDeg = tilt;
+            if (ImGui::SliderFloat("tilt", &tilt, 0, 89, "%.1f°")) setTilt(tilt);
         }
         if (!isScene()) {
             float scale = float(camera_.view.scale);
-            if (ImGui::SliderFloat("scale", &scale, 1.0f / 64, 4096, "%.4g texels/px", ImGuiSliderFlags_Logarithmic))
+            if (ImGui::SliderFloat("zoom", &scale, 1.0f / 64, 4096, "%.4g texels/px", ImGuiSliderFlags_Logarithmic))
                 zoomAt(camera_.view.scale / scale, textureRect().width / 2.0, textureRect().height / 2.0);
             bool rasterizer = derivatives_ == GpuView::Derivatives::Rasterizer;
             if (ImGui::Checkbox("rasterizer derivatives (D)", &rasterizer))
-                derivatives_ = rasterizer ? GpuView::Derivatives::Rasterizer : GpuView::Derivatives::Camera;
+                setDerivatives(rasterizer ? GpuView::Derivatives::Rasterizer : GpuView::Derivatives::Camera);
         }
     }
 
@@ -753,6 +872,28 @@ private:
         context_->setTitle(title);
     }
 
+    // The eye of the 3D views orbits the object's centre; it starts where
+    // `scene` puts it (SceneCamera's default eye and target).
+    struct Orbit {
+        std::array<float, 3> target = SceneCamera{}.target;
+        double distance = length(SceneCamera{}), yawDeg = 0, pitchDeg = pitch(SceneCamera{});
+        static double length(const SceneCamera& c) {
+            const double x = c.eye[0] - c.target[0], y = c.eye[1] - c.target[1], z = c.eye[2] - c.target[2];
+            return std::sqrt(x * x + y * y + z * z);
+        }
+        static double pitch(const SceneCamera& c) {
+            return std::asin((c.eye[1] - c.target[1]) / length(c)) * 180.0 / std::numbers::pi;
+        }
+        SceneCamera camera() const {
+            SceneCamera c;
+            const double yaw = yawDeg * std::numbers::pi / 180.0, p = pitchDeg * std::numbers::pi / 180.0;
+            c.target = target;
+            c.eye = {float(target[0] + distance * std::cos(p) * std::sin(yaw)), float(target[1] + distance * std::sin(p)),
+                     float(target[2] + distance * std::cos(p) * std::cos(yaw))};
+            return c;
+        }
+    };
+
     WorkbenchDocument doc_;
     WorkbenchOptions options_;
     std::unique_ptr<GlContext> context_;
@@ -761,14 +902,19 @@ private:
 
     // The pattern and its renderers (one per filter and response, built on first use).
     PatternSpec spec_;
-    int exampleSize_ = 256;
+    int exampleSize_ = 0;
     bool hasNormalMap_ = false;
     std::map<std::pair<std::string, ResponseKind>, std::unique_ptr<GpuView>> renderers_;
+    std::unique_ptr<SceneRenderer> scene_;
+    const GpuView* sceneView_ = nullptr;
+    std::string sceneObject_;
     std::unique_ptr<RenderTarget> target_;
     std::unique_ptr<ShadertoyHost> host_;
+    bool hostFailed_ = false;
+    std::string failedKey_;
     DisplayImage canvas_, example_[2], exampleSpectrum_[2];
     PaintBrush brush_;
-    bool needsRebuild_ = false, drawFailed_ = false;
+    bool needsRebuild_ = false;
     std::chrono::steady_clock::time_point lastBuild_{};
 
     // What is shown.
@@ -780,17 +926,19 @@ private:
     WorkbenchView view_;
     WorkbenchMode mode_;
     LiveAnalysisKind analysis_;
-    float orbitDistance_ = 3.6f;
-    double orbitYaw_ = 0, orbitPitch_ = 25;
+    Orbit orbit_;
     float split_ = 0.5f, overlayOpacity_ = 0.5f;
-    bool showPanel_ = true, showHelp_ = false, paused_ = false, quit_ = false;
+    bool showPanel_ = true, showHelp_ = false, paused_ = false, quit_ = false, expandAll_ = false;
     std::array<float, 4> mouse_{};
     int windowWidth_ = 1, windowHeight_ = 1;
+    std::array<int, 2> lastTextureSize_{0, 0};
+    char saveAs_[256] = "edited.json";
 
-    // The live analysis.
-    bool frameChanged_ = false, analysisDirty_ = true;
-    int lastProgramFrame_ = -1;
-    Image analysisFrame_, previousFrame_;
+    // The live analysis: recomputed when the picture changes (viewVersion_) or a program draws a frame.
+    long long viewVersion_ = 0, analysedVersion_ = -1;
+    const ShadertoyHost* analysedHost_ = nullptr;
+    bool analysisDirty_ = true;
+    Image previousFrame_;
     DisplayImage analysisImage_;
     std::string analysisSummary_, analysisProfileLabel_;
     std::vector<float> analysisProfile_;
@@ -798,8 +946,9 @@ private:
     int pickX_ = -1, pickY_ = -1;
 
     // Output.
-    std::vector<std::string> pendingScreenshot_;
+    std::vector<std::string> pendingScreenshots_;
     std::unique_ptr<FrameSequenceWriter> recorder_;
+    std::array<int, 2> recordingSize_{0, 0};
     std::string recordingPath_;
     std::string error_, notice_;
 
