@@ -284,6 +284,7 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"offsets", "--offsets"},
     {"interpolation", "--interpolation"},
     {"instances", "--instances"},
+    {"point", "--point"},
     {"layersList", "--layers-list"},
     {"frames", "--frames"},
     {"from", "--from"},

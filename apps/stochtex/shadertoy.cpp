@@ -1,7 +1,7 @@
 // stochtex shadertoy: a ShaderToy program (a folder or a manifest) rendered
 // headless: its last frame, a contact sheet of its frames, a folder of
 // frames or an MP4; --inspect prints a pass's pixel after the last frame;
-// --analyse runs frame studies (spectrum, flow, coherence) on its frames.
+// --analyse runs frame studies (spectrum, flow, coherence, flicker, statistics) on its frames.
 #include <chrono>
 #include <cstdio>
 
@@ -15,8 +15,9 @@ namespace stochtex::cli {
 
 void registerShadertoy(CLI::App& app) {
     struct Args {
-        std::string program, output, inspect, analyse;
+        std::string program, output, inspect;
         ShadertoyFlags flags;
+        FrameAnalysisFlags analysis;
         int frames = 1;
         bool sheet = false;
     };
@@ -32,24 +33,23 @@ void registerShadertoy(CLI::App& app) {
     cmd->add_flag("--sheet", args->sheet, "An image output shows every frame, as a contact sheet (at most 64)");
     cmd->add_option("--inspect", args->inspect, "PASS:X,Y: print the RGBA of a pass (image, buffer_a, ...) at pixel "
                                                 "(X, Y), y up, after the last frame");
-    cmd->add_option("--analyse", args->analyse, "Studies of the frames, comma-separated: spectrum (the first), flow, "
-                                                "coherence; -o is then the report's folder");
+    addFrameAnalysisFlags(*cmd, args->analysis);
     cmd->callback([args] {
         const Args& a = *args;
         if (a.output.empty() && a.inspect.empty()) throw InputError("-o/--output or --inspect is required");
-        if (a.analyse.empty() && a.flags.firstFrame != 0) throw InputError("--first-frame: has no effect without --analyse");
+        if (a.analysis.list.empty() && a.flags.firstFrame != 0) throw InputError("--first-frame: has no effect without --analyse");
         const Inspect inspect = parseInspect(a.inspect);
         const ShadertoySpec spec = loadShadertoy(a.program);
         const ShadertoySettings settings = shadertoySettings(a.flags);
-        FrameOutputs outputs(a.analyse.empty() ? a.output : "", a.sheet, a.frames, settings);
+        FrameOutputs outputs(a.analysis.list.empty() ? a.output : "", a.sheet, a.frames, settings);
         const auto start = std::chrono::steady_clock::now();
         auto context = GlContext::headless();
         ShadertoyHost host(spec, *context, settings);
         if (!inspect.pass.empty()) host.checkPixel(inspect.pass, inspect.x, inspect.y);
         ProgressLine line("shadertoy");
-        if (!a.analyse.empty()) {  // the studies' frames through the texture-source interface
+        if (!a.analysis.list.empty()) {  // the studies' frames through the texture-source interface
             const ShadertoySource source(host);
-            const FrameAnalysisOptions o = frameAnalysisOptions(a.analyse, settings, a.frames, a.flags.firstFrame);
+            const FrameAnalysisOptions o = frameAnalysisOptions(a.analysis, spec, settings, a.frames, a.flags.firstFrame);
             const FrameAnalysisResult r = frameAnalysis(source, o, line.callback());  // validates before any frame
             line.finish();
             writeFrameAnalysis(a.output, spec.name, r);

@@ -56,10 +56,18 @@ private:
     std::vector<std::string> captions_;
 };
 
-// --analyse LIST over --frames frames from --first-frame, the whole frame
-// as the window; InputError naming --analyse for an unknown study.
-FrameAnalysisOptions frameAnalysisOptions(const std::string& list, const ShadertoySettings& settings, int frames,
-                                          int firstFrame);
+// --analyse LIST (the studies), --instances N and --point X,Y (statistics).
+struct FrameAnalysisFlags {
+    std::string list;
+    int instances = 64;
+    std::vector<int> point;
+};
+void addFrameAnalysisFlags(CLI::App& cmd, FrameAnalysisFlags& flags);
+// The studies over --frames frames from --first-frame, the whole frame as
+// the window; InputError naming the flag: an unknown study, statistics of a
+// program without an instance uniform, --instances or --point without them.
+FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const ShadertoySpec& spec,
+                                          const ShadertoySettings& settings, int frames, int firstFrame);
 // The report: figures, CSV tables and index.html in dir.
 void writeFrameAnalysis(const std::string& dir, const std::string& name, const FrameAnalysisResult& result);
 

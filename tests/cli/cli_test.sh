@@ -329,6 +329,30 @@ case_shadertoy() {
   expect_ok "shadertoy analysis" "$out/sta/index.html" -- "$bin" shadertoy "$src/data/shadertoy/swirl" --size 96,64 --analyse spectrum,flow,coherence --frames 4 --first-frame 120 -o "$out/sta"
   for f in spectrum.png flow_arrows.png appearance.png flow.csv coherence.csv; do [ -s "$out/sta/$f" ] || fail "shadertoy analysis: $f not written"; done
   grep -q "Optical flow (DIS)" "$out/sta/index.html" || fail "shadertoy analysis: index.html lacks the flow section"
+  # Statistics over instances: 8x8 cells of hashed grey per instance (the
+  # instance uniform), blinking every other frame. The correlation with the
+  # centre pixel (32, 24) is 1 on its cell (64 pixels) and ~0 elsewhere;
+  # the blink is flicker no motion explains.
+  mkdir -p "$work/cells"
+  cat >"$work/cells/image.glsl" <<'GLSL'
+float cell(vec2 c) { return fract(sin(dot(c + float(uSeed) * vec2(17.0, 31.0), vec2(12.9898, 78.233))) * 43758.5453); }
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 p = vec2(fragCoord.x, iResolution.y - fragCoord.y);  // rows down, as the studies count them
+    float v = cell(floor(p / 8.0));
+    if (iFrame % 2 == 1) v = 1.0 - v;
+    fragColor = vec4(vec3(v), 1.0);
+}
+GLSL
+  printf '{"name": "cells", "uniforms": {"uSeed": {"type": "int"}}, "instance": "uSeed", "passes": {"image": {"code": "image.glsl"}}}' >"$work/cells/shadertoy.json"
+  expect_ok "shadertoy statistics and flicker" "$out/stc/index.html" -- "$bin" shadertoy "$work/cells" --size 64,48 --analyse statistics,flicker --frames 4 --instances 200 -o "$out/stc"
+  for f in statistics.csv statistics_mean.png statistics_variance.png statistics_correlation.png flicker.csv flicker_pairs.csv flicker.png flicker_map.png; do
+    [ -s "$out/stc/$f" ] || fail "shadertoy statistics and flicker: $f not written"
+  done
+  awk -F, 'NR == 2 { exit !($1 == 200 && $5 == 64) }' "$out/stc/statistics.csv" || fail "shadertoy statistics: want 200 instances and a 64-pixel cell: $(cat "$out/stc/statistics.csv")"
+  awk -F, 'NR == 2 { exit !($4 > 0.2) }' "$out/stc/flicker.csv" || fail "shadertoy flicker: the blink reads no flicker: $(cat "$out/stc/flicker.csv")"
+  expect_bad "statistics without an instance uniform" "$out/stn" "--analyse statistics: counter has no instance uniform" -- "$bin" shadertoy "$work/st" --analyse statistics -o "$out/stn"
+  expect_bad "instances without statistics" "$out/stn" "--instances: has no effect without statistics" -- "$bin" shadertoy "$work/cells" --analyse flicker --instances 8 -o "$out/stn"
+  expect_bad "point outside" "$out/stn" "--point: point (99, 2) lies outside the 64x48 window" -- "$bin" shadertoy "$work/cells" --size 64,48 --analyse statistics --point 99,2 -o "$out/stn"
   expect_bad "shadertoy analysis unknown" "$out/stu" "--analyse: unknown study \"fft\"" -- "$bin" shadertoy "$work/st" --analyse fft -o "$out/stu"
   expect_bad "shadertoy first frame alone" "$out/stff.png" "--first-frame: has no effect without --analyse" -- "$bin" shadertoy "$work/st" --first-frame 3 -o "$out/stff.png"
   expect_bad "shadertoy no frames" "$out/stz" "--frames: must be in [1, 1000000], got 0" -- "$bin" shadertoy "$work/st" --frames 0 -o "$out/stz"

@@ -1,5 +1,7 @@
 #include "stochtex/analysis/zoom_stability.h"
 
+#include "stochtex/analysis/flicker.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -10,23 +12,10 @@ double compensatedZoomDifference(const Image& a, double sa, const Image& b, doub
     if (a.width() != b.width() || a.height() != b.height() || a.channels() != b.channels())
         throw std::invalid_argument("compensatedZoomDifference: frames differ in size");
     const double cx = 0.5 * a.width(), cy = 0.5 * a.height(), k = sa / sb;
-    double sum = 0;
-    size_t count = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            // Position of a's pixel centre in b's pixel coordinates.
-            const double bx = cx + (x + 0.5 - cx) * k - 0.5, by = cy + (y + 0.5 - cy) * k - 0.5;
-            if (bx < 0 || by < 0 || bx > b.width() - 1 || by > b.height() - 1) continue;
-            const int x0 = std::min(int(bx), b.width() - 2), y0 = std::min(int(by), b.height() - 2);
-            const double tx = bx - x0, ty = by - y0;
-            for (int c = 0; c < a.channels(); ++c) {
-                const double top = b.at(x0, y0, c) + tx * (b.at(x0 + 1, y0, c) - b.at(x0, y0, c));
-                const double bottom = b.at(x0, y0 + 1, c) + tx * (b.at(x0 + 1, y0 + 1, c) - b.at(x0, y0 + 1, c));
-                sum += std::abs(a.at(x, y, c) - (top + ty * (bottom - top)));
-            }
-            ++count;
-        }
-    return count ? sum / double(count * size_t(a.channels())) : 0.0;
+    // Position of a's pixel centre in b's pixel coordinates.
+    return warpedDifference(a, b, [&](int x, int y) {
+        return std::array<double, 2>{cx + (x + 0.5 - cx) * k - 0.5, cy + (y + 0.5 - cy) * k - 0.5};
+    });
 }
 
 double zoomSequenceScale(int k, int frames, double from, double to) {

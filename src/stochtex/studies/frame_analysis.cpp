@@ -1,7 +1,13 @@
 #include "stochtex/studies/frame_analysis.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
+#include "stochtex/analysis/correlation_accumulator.h"
+#include "stochtex/analysis/correlation_shape.h"
+#include "stochtex/analysis/flicker.h"
+#include "stochtex/analysis/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/studies/flow_study.h"
 #include "stochtex/studies/spectrum_study.h"
@@ -42,16 +48,143 @@ bool has(const FrameAnalysisOptions& o, FrameAnalysis a) {
     return std::find(o.analyses.begin(), o.analyses.end(), a) != o.analyses.end();
 }
 
+std::array<int, 2> statisticsPoint(const FrameAnalysisOptions& o) {
+    return {o.pointX < 0 ? o.region.width / 2 : o.pointX, o.pointY < 0 ? o.region.height / 2 : o.pointY};
+}
+
+struct Section {
+    std::string title;
+    std::vector<std::pair<std::string, Table>> tables;  // the first is the summary shown
+    std::vector<Figure> figures;
+};
+
+// Frame k → k + 1 of the run, each pair's flicker, the worst pair's map.
+Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& o, const Progress& progress) {
+    Section s{"Flicker: change between frames that the optical flow does not explain", {}, {}};
+    Table perPair, summary;
+    perPair.columns = {{"pair", "frames", ""}, {"residual", "residual", "codes"}, {"contrast", "contrast", "codes"},
+                       {"relative", "residual / contrast", ""}};
+    std::vector<double> pairs, relative;
+    Image previous = source.render(o.region, o.time, 0), worstMap;
+    double worst = -1, sumResidual = 0, sumContrast = 0;
+    int worstPair = 0;
+    for (int k = 1; k < o.frames; ++k) {
+        if (progress) progress(double(k - 1) / (o.frames - 1), "frame " + std::to_string(k + 1));
+        const Image next = source.render(o.region, o.time + k * o.timeStep, 0);
+        Image map;
+        const FlickerMeasure m = flowCompensatedFlicker(previous, next, &map);
+        perPair.add({TableCell(std::to_string(k - 1) + "→" + std::to_string(k)), TableCell::value(m.residual),
+                     TableCell::value(m.contrast), TableCell::value(m.relative)});
+        pairs.push_back(k - 1);
+        relative.push_back(m.relative);
+        sumResidual += m.residual;
+        sumContrast += m.contrast;
+        if (m.residual > worst) worst = m.residual, worstMap = std::move(map), worstPair = k - 1;
+        previous = next;
+    }
+    const int n = o.frames - 1;
+    const double meanContrast = sumContrast / n;
+    summary.columns = {{"pairs", "pairs", ""}, {"residual", "mean residual", "codes"},
+                       {"contrast", "mean contrast", "codes"}, {"relative", "residual / contrast", ""}};
+    summary.add({TableCell::integer(n), TableCell::value(sumResidual / n), TableCell::value(meanContrast),
+                 TableCell::value(meanContrast > 1e-3 ? sumResidual / n / meanContrast : std::nan(""))});
+    s.tables = {{"flicker.csv", summary}, {"flicker_pairs.csv", perPair}};
+    PlotSeries series{"residual / contrast", pairs, relative, {0.8f, 0.2f, 0.1f}};
+    LinePlotOptions po;
+    po.title = "Flicker per pair of frames";
+    po.xLabel = "pair (frame k → k + 1)";
+    po.yLabel = "residual / contrast";
+    s.figures.push_back({"flicker.png", linePlot({series}, po),
+                         "The next frame warped back by the optical flow (DIS) and subtracted: what motion does not "
+                         "explain, relative to the frames' contrast (blur lowers both).",
+                         LineChart{{series}, po}});
+    HeatmapOptions ho;
+    ho.title = "Residual of pair " + std::to_string(worstPair) + "→" + std::to_string(worstPair + 1);
+    ho.vmin = 0;
+    ho.vmax = std::max(1e-6, 4.0 * worst);
+    ho.palette = HeatPalette::Viridis;
+    ho.yUp = false;
+    ho.xMax = o.region.width;
+    ho.yMax = o.region.height;
+    ho.xLabel = "x (pixels)";
+    ho.yLabel = "y (pixels, down)";
+    s.figures.push_back({"flicker_map.png", heatmapPlot(worstMap, ho),
+                         "Where the worst pair flickers: the per-pixel residual (grey: no flow target inside the frame)."});
+    return s;
+}
+
+// Instances 0…N−1 at the first frame's time through the correlation accumulator.
+Section statisticsSection(const TextureSource& source, const FrameAnalysisOptions& o, const Progress& progress) {
+    Section s{"Statistics over instances (the statistical accumulator)", {}, {}};
+    const auto [px, py] = statisticsPoint(o);
+    CorrelationAccumulator acc(o.region.width, o.region.height, px, py, py, py);
+    for (int i = 0; i < o.instances; ++i) {
+        if (progress && i % 8 == 0) progress(double(i) / o.instances, "instance " + std::to_string(i + 1));
+        const Image frame = source.render(o.region, o.time, i);
+        acc.add(frame.channels() == 1 ? frame : toGray(frame));
+    }
+    const Image mean = acc.mean(), variance = acc.variance(), corr = acc.correlationWithPoint();
+    const ChannelStats m = channelStats(mean), v = channelStats(variance);
+    const CorrelationShape shape = correlationShape(corr, px, py);
+    Table summary;
+    summary.columns = {{"instances", "instances", ""},     {"mean", "mean of the mean", "codes"},
+                       {"mean_spread", "spread of the mean", "codes"}, {"variance", "mean variance", "codes²"},
+                       {"area", "Corr ≥ ½ area", "pixels"}, {"elongation", "elongation", ""},
+                       {"anti", "anti-correlation", ""}};
+    summary.add({TableCell::integer(o.instances), TableCell::value(m.mean), TableCell::value(m.stddev),
+                 TableCell::value(v.mean), TableCell::integer(shape.area), TableCell::value(shape.elongation, "%.2f"),
+                 TableCell::value(shape.antiCorrelation, "%.3f")});
+    s.tables = {{"statistics.csv", summary}};
+    auto map = [&](const Image& values, const std::string& title, double lo, double hi, HeatPalette palette) {
+        HeatmapOptions h;
+        h.title = title;
+        h.vmin = lo;
+        h.vmax = hi;
+        h.palette = palette;
+        h.yUp = false;
+        h.xMax = o.region.width;
+        h.yMax = o.region.height;
+        h.xLabel = "x (pixels)";
+        h.yLabel = "y (pixels, down)";
+        return heatmapPlot(values, h);
+    };
+    const double vmax = std::max(1e-6, v.mean + 3 * v.stddev);
+    const std::string n = std::to_string(o.instances) + " instances";
+    s.figures.push_back({"statistics_mean.png", map(mean, "Mean over " + n, 0, 1, HeatPalette::Viridis),
+                         "Per-pixel mean of the gray values: a stationary texture is flat."});
+    s.figures.push_back({"statistics_variance.png", map(variance, "Variance over " + n, 0, vmax, HeatPalette::Viridis),
+                         "Per-pixel variance: a stationary texture is flat."});
+    s.figures.push_back({"statistics_correlation.png",
+                         map(corr, "Corr with (" + std::to_string(px) + ", " + std::to_string(py) + ")", -1, 1,
+                             HeatPalette::Diverging),
+                         "Correlation of every pixel with the point over the instances (thesis eq. 3.1)."});
+    return s;
+}
+
 }  // namespace
 
 void validateFrameAnalysis(const FrameAnalysisOptions& o, const TextureSource* source) {
-    if (o.analyses.empty()) throw InputError::parameter("analyses", "must name at least one of spectrum, flow, coherence");
+    if (o.analyses.empty())
+        throw InputError::parameter("analyses", "must name at least one of " + canonicalNames(kFrameAnalysisNames, ", "));
     for (size_t k = 0; k < o.analyses.size(); ++k)
         if (std::count(o.analyses.begin(), o.analyses.end(), o.analyses[k]) > 1)
             throw InputError::parameter("analyses", "names " + enumName(kFrameAnalysisNames, o.analyses[k]) + " twice");
     if (has(o, FrameAnalysis::Spectrum)) validateSpectrumStudy(spectrumOptions(o), source);
     if (has(o, FrameAnalysis::Flow)) validateFlowStudy(flowOptions(o), source);
     if (has(o, FrameAnalysis::Coherence)) validateTemporalCoherence(coherenceOptions(o), source);
+    if (has(o, FrameAnalysis::Flicker)) validateFlowStudy(flowOptions(o), source);  // the same frames, the same flow
+    if (has(o, FrameAnalysis::Statistics)) {
+        if (o.instances < 2 || o.instances > 100000)
+            throw InputError::parameter("instances", "must be in [2, 100000], got " + std::to_string(o.instances));
+        const auto [px, py] = statisticsPoint(o);
+        if (px >= o.region.width || py >= o.region.height)
+            throw InputError::parameter("point", "(" + std::to_string(px) + ", " + std::to_string(py) +
+                                                     ") lies outside the " + std::to_string(o.region.width) + "x" +
+                                                     std::to_string(o.region.height) + " window");
+        if (o.region.width < 4 || o.region.height < 4 || o.region.width > 1024 || o.region.height > 1024)
+            throw InputError::parameter("size", "statistics need a window of 4…1024 pixels a side");
+        if (source) source->checkWindow(o.region, o.time);
+    }
 }
 
 FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalysisOptions& o, const StudyProgress& progress) {
@@ -84,6 +217,14 @@ FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalys
                 r.tables.push_back({"coherence.csv", c.summary});
                 r.tables.push_back({"coherence_frames.csv", c.perFrame});
                 add("Temporal coherence of the frames", c.summary, c.figures);
+                break;
+            }
+            case FrameAnalysis::Flicker:
+            case FrameAnalysis::Statistics: {
+                const Section s = o.analyses[size_t(k)] == FrameAnalysis::Flicker ? flickerSection(source, o, part)
+                                                                                   : statisticsSection(source, o, part);
+                r.tables.insert(r.tables.end(), s.tables.begin(), s.tables.end());
+                add(s.title, s.tables.front().second, s.figures);
                 break;
             }
         }

@@ -4,7 +4,10 @@
 // the power spectrum of the first frame, the optical flow and the temporal
 // coherence of the frames, each the very study its own command runs
 // (spectrumStudy, flowStudy, temporalCoherenceStudy), over one window and
-// one run of frames.
+// one run of frames; the flow-compensated flicker of the frames
+// (analysis/flicker.h); and the statistics over instances at the first
+// frame's time (thesis §3.3, the statistical accumulator): per-pixel mean
+// and variance and the correlation with a picked point.
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,15 +20,20 @@
 
 namespace stochtex {
 
-enum class FrameAnalysis { Spectrum, Flow, Coherence };
-inline const EnumNames<FrameAnalysis> kFrameAnalysisNames{
-    {"spectrum", FrameAnalysis::Spectrum}, {"flow", FrameAnalysis::Flow}, {"coherence", FrameAnalysis::Coherence}};
+enum class FrameAnalysis { Spectrum, Flow, Coherence, Flicker, Statistics };
+inline const EnumNames<FrameAnalysis> kFrameAnalysisNames{{"spectrum", FrameAnalysis::Spectrum},
+                                                         {"flow", FrameAnalysis::Flow},
+                                                         {"coherence", FrameAnalysis::Coherence},
+                                                         {"flicker", FrameAnalysis::Flicker},
+                                                         {"statistics", FrameAnalysis::Statistics}};
 
 struct FrameAnalysisOptions {
     std::vector<FrameAnalysis> analyses;  // at least one, each once
     SourceRegion region = SourceRegion::centred(256, 256);
     double time = 0, timeStep = 1.0 / 30;  // frame k at time + k·timeStep
-    int frames = 8;                        // flow and coherence: 2…10000 frames
+    int frames = 8;                        // flow, coherence and flicker: 2…10000 frames
+    int instances = 64;                    // statistics: instances 0…N−1, 2…100000
+    int pointX = -1, pointY = -1;          // statistics: the correlation's point in window pixels; −1: the centre
     Transfer frameTransfer = Transfer::Srgb;  // how the frames are shown (Srgb: linear-light colour renders)
 };
 // InputError naming the parameter (analyses, and each study's own checks,
