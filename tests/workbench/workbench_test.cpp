@@ -255,6 +255,29 @@ TEST(LiveAnalysis, FlowReadsAShiftBetweenFrames) {
     EXPECT_EQ(r.image.width(), w);
 }
 
+// The live flicker is the flicker measure's: a still frame reads none, an
+// inverted one reads much.
+TEST(LiveAnalysis, FlickerOfAStillAndOfABlinkingFrame) {
+    const int w = 64, h = 48;
+    Image a(w, h, 3), b(w, h, 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) {
+                a.at(x, y, c) = float(hashToUnit(uint32_t(x / 4), uint32_t(y / 4), 9));
+                b.at(x, y, c) = 1.0f - a.at(x, y, c);
+            }
+    double residual = -1, contrast = -1, relative = -1;
+    const LiveAnalysisResult still = liveFlicker(a, a);
+    ASSERT_EQ(std::sscanf(still.summary.c_str(), "residual %lf (codes)\ncontrast %lf\nresidual / contrast %lf", &residual,
+                          &contrast, &relative), 3) << still.summary;
+    EXPECT_LT(relative, 0.01);
+    const LiveAnalysisResult blink = liveFlicker(a, b);
+    ASSERT_EQ(std::sscanf(blink.summary.c_str(), "residual %lf (codes)\ncontrast %lf\nresidual / contrast %lf", &residual,
+                          &contrast, &relative), 3) << blink.summary;
+    EXPECT_GT(relative, 0.5);
+    EXPECT_EQ(blink.image.width(), w);
+}
+
 // Samples of independent white noise plus a part shared by the left half:
 // the left half correlates with a point in it by ~½, the right half by ~0.
 TEST(LiveAnalysis, CorrelationWithAPointOverSamples) {

@@ -1,9 +1,11 @@
 #include "stochtex/workbench/live_analysis.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
+#include "stochtex/analysis/flicker.h"
 #include "stochtex/analysis/plot.h"
 #include "stochtex/studies/flow_study.h"
 #include "stochtex/studies/spectrum_study.h"
@@ -73,6 +75,18 @@ LiveAnalysisResult liveFlow(const Image& previous, const Image& current) {
                   "mean vector (%.3f, %.3f) px/frame\nmean |v| %.3f px/frame\noutward fraction %.2f\n"
                   "expansion rate %.4f /frame",
                   m.meanU, m.meanV, m.meanMagnitude, m.outwardFraction, m.expansionRate);
+    r.summary = text;
+    return r;
+}
+
+LiveAnalysisResult liveFlicker(const Image& previous, const Image& current) {
+    Image map;
+    const FlickerMeasure m = flowCompensatedFlicker(previous, current, &map);
+    LiveAnalysisResult r;
+    r.image = colourise(map, 0, std::max(1e-6, 4 * m.residual), HeatPalette::Viridis);
+    char text[300];
+    std::snprintf(text, sizeof text, "residual %.4f (codes)\ncontrast %.4f\nresidual / contrast %.3f", m.residual,
+                  m.contrast, m.relative);
     r.summary = text;
     return r;
 }

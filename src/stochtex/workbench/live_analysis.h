@@ -1,7 +1,7 @@
 #pragma once
 // The workbench's live analyses of the frames it shows (thesis ch. 3, GLcv):
 // the power spectrum of the frame, the optical flow from the previous frame
-// to this one, and the correlation of every pixel with a picked point over
+// to this one, the flicker motion does not explain, and the correlation of every pixel with a picked point over
 // samples (a pattern's instances, a program's frames). Spectrum and flow
 // are the studies' own functions (spectrumStudy, flowStudy) fed with the
 // frames through a texture source, so the window shows what the `spectrum`
@@ -16,9 +16,10 @@
 
 namespace stochtex {
 
-enum class LiveAnalysisKind { Spectrum, Flow, Correlation };
+enum class LiveAnalysisKind { Spectrum, Flow, Flicker, Correlation };
 inline const EnumNames<LiveAnalysisKind> kLiveAnalysisNames{{"spectrum", LiveAnalysisKind::Spectrum},
                                                            {"flow", LiveAnalysisKind::Flow},
+                                                           {"flicker", LiveAnalysisKind::Flicker},
                                                            {"correlation", LiveAnalysisKind::Correlation}};
 
 struct LiveAnalysisResult {
@@ -34,6 +35,11 @@ LiveAnalysisResult liveSpectrum(const Image& frame);
 // The flow study (DIS) from `previous` to `current` (same size, ≥ 16 a
 // side): its dense flow colour figure and the motion's numbers.
 LiveAnalysisResult liveFlow(const Image& previous, const Image& current);
+
+// The flicker from `previous` to `current` (analysis/flicker.h): the
+// per-pixel residual after the flow's compensation (viridis, 0 to 4× its
+// mean) and the residual, contrast and their ratio.
+LiveAnalysisResult liveFlicker(const Image& previous, const Image& current);
 
 // The correlation of every pixel with a reference point over the samples
 // added (gray of each), shown blue–white–red over [−1, 1].

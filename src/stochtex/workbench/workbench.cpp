@@ -71,7 +71,7 @@ constexpr KeyHelp kPatternKeys[] = {
     {"Up / Down", "tilt of the plane"},
     {"D", "footprints from the camera or the rasterizer"},
     {"M", "mode: texture, analysis, side by side, split, overlay"},
-    {"A", "analysis: spectrum, flow, correlation"},
+    {"A", "analysis: spectrum, flow, flicker, correlation"},
 };
 constexpr KeyHelp kCommonKeys[] = {
     {"Tab", "show or hide the panel"},
@@ -479,9 +479,11 @@ private:
         switch (analysis_) {
             case LiveAnalysisKind::Spectrum: result = liveSpectrum(frame); break;
             case LiveAnalysisKind::Flow:
+            case LiveAnalysisKind::Flicker:
                 if (previousFrame_.width() != frame.width() || previousFrame_.height() != frame.height())
                     previousFrame_ = frame;
-                result = liveFlow(previousFrame_, frame);
+                result = analysis_ == LiveAnalysisKind::Flow ? liveFlow(previousFrame_, frame)
+                                                             : liveFlicker(previousFrame_, frame);
                 previousFrame_ = frame;
                 break;
             case LiveAnalysisKind::Correlation: result = correlationStep(frame, changed); break;
@@ -714,7 +716,7 @@ private:
         if (ImGui::IsKeyPressed(GLFW_KEY_UP)) setTilt(camera_.tiltDeg + 2.0);
         if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) setTilt(camera_.tiltDeg - 2.0);
         if (pressed(GLFW_KEY_M)) mode_ = WorkbenchMode((int(mode_) + 1) % 5), analysisDirty_ = true;
-        if (pressed(GLFW_KEY_A)) analysis_ = LiveAnalysisKind((int(analysis_) + 1) % 3), analysisDirty_ = true;
+        if (pressed(GLFW_KEY_A)) analysis_ = LiveAnalysisKind((int(analysis_) + 1) % 4), analysisDirty_ = true;
     }
 
     // --- the panels ---
