@@ -12,14 +12,23 @@
 
 namespace stochtex::cli {
 
+std::string shadertoyDateText(const std::array<int, 6>& d) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d:%02d", d[0], d[1], d[2], d[3], d[4], d[5]);
+    return text;
+}
+
 void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& f) {
-    cmd.add_option("--size", f.size, "Frame size, iResolution: N or W,H (default 640,360)")->delimiter(',')->expected(1, 2);
-    cmd.add_option("--time", f.time, "iTime of frame 0, seconds (default 0)");
-    cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate (default 60)");
+    cmd.add_option("--size", f.size, "Frame size, iResolution: N or W,H")
+        ->delimiter(',')
+        ->expected(1, 2)
+        ->default_str(std::to_string(f.size[0]) + "," + std::to_string(f.size[1]));
+    cmd.add_option("--time", f.time, "iTime of frame 0, seconds")->capture_default_str();
+    cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate")->capture_default_str();
     cmd.add_option("--mouse", f.mouse, "iMouse: X,Y (pressed there) or X,Y,CLICK_X,CLICK_Y, pixels, y up")
         ->delimiter(',')
         ->expected(2, 4);
-    cmd.add_option("--date", f.date, "iDate at iTime 0: YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS (default 2026-01-01T12:00:00)");
+    cmd.add_option("--date", f.date, "iDate at iTime 0: YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS")->capture_default_str();
     cmd.add_option("--keys", f.keys, "Key codes held from frame 0 (JavaScript keyCode, e.g. 65 for A), comma-separated")
         ->delimiter(',');
     cmd.add_option("--first-frame", f.firstFrame, "The frame a study starts at (the frames before it are rendered "

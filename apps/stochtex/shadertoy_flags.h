@@ -4,6 +4,7 @@
 // date and keys, to ShadertoySettings; --inspect's PASS:X,Y.
 #include <CLI/CLI.hpp>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -13,11 +14,15 @@
 
 namespace stochtex::cli {
 
+// "YYYY-MM-DDTHH:MM:SS", the form --date takes.
+std::string shadertoyDateText(const std::array<int, 6>& date);
+
+// The flags start at the library's defaults (ShadertoySettings), which the help shows.
 struct ShadertoyFlags {
-    std::vector<int> size{640, 360};
-    double time = 0, fps = 60;
+    std::vector<int> size{ShadertoySettings{}.width, ShadertoySettings{}.height};
+    double time = ShadertoySettings{}.startTime, fps = ShadertoySettings{}.fps;
     std::vector<float> mouse;
-    std::string date = "2026-01-01T12:00:00";
+    std::string date = shadertoyDateText(ShadertoySettings{}.date);
     std::vector<int> keys;
     int firstFrame = 0;  // the first frame a study analyses
 };

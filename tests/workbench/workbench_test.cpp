@@ -306,7 +306,16 @@ TEST(LiveAnalysis, CorrelationWithAPointOverSamples) {
     };
     EXPECT_GT(warmth(0, w / 2), 0.2);
     EXPECT_LT(std::abs(warmth(w / 2, w)), 0.05);
-    EXPECT_NE(r.summary.find("over 2000 samples"), std::string::npos) << r.summary;
+    EXPECT_NE(r.summary.find("2000 samples"), std::string::npos) << r.summary;
+    // The same accumulator's mean and variance: flat for these stationary samples
+    // (the left half's variance is twice the right's: shared plus own noise).
+    const LiveAnalysisResult variance = corr.result(LiveStatistic::Variance);
+    double varianceValue = 0, spread = 0;
+    const size_t at = variance.summary.find("variance ");
+    ASSERT_NE(at, std::string::npos) << variance.summary;
+    ASSERT_EQ(std::sscanf(variance.summary.c_str() + at, "variance %lf (spread %lf)", &varianceValue, &spread), 2);
+    EXPECT_NEAR(varianceValue, 1.5 / 12.0, 0.01);  // uniform noise: 1/12 per part, two parts on half the picture
+    EXPECT_NE(corr.result(LiveStatistic::Mean).image.data(), variance.image.data());
 }
 
 }  // namespace

@@ -97,17 +97,29 @@ LiveCorrelation::LiveCorrelation(int width, int height, int pointX, int pointY)
 
 void LiveCorrelation::add(const Image& sample) { accumulator_.add(sample.channels() == 1 ? sample : toGray(sample)); }
 
-LiveAnalysisResult LiveCorrelation::result() const {
+LiveAnalysisResult LiveCorrelation::result(LiveStatistic shown) const {
     LiveAnalysisResult r;
     if (count() < 2) {
         r.image = Image(width_, height_, 3, 0.5f);
         r.summary = "collecting samples…";
         return r;
     }
-    r.image = colourise(accumulator_.correlationWithPoint(), -1, 1, HeatPalette::Diverging);
-    char text[200];
-    std::snprintf(text, sizeof text, "Corr with (%d, %d) over %d samples\nblue −1, white 0, red +1", pointX_, pointY_,
-                  count());
+    const Image mean = accumulator_.mean(), variance = accumulator_.variance();
+    const ChannelStats m = channelStats(mean), v = channelStats(variance);
+    switch (shown) {
+        case LiveStatistic::Correlation:
+            r.image = colourise(accumulator_.correlationWithPoint(), -1, 1, HeatPalette::Diverging);
+            break;
+        case LiveStatistic::Mean: r.image = colourise(mean, 0, 1, HeatPalette::Viridis); break;
+        case LiveStatistic::Variance:
+            r.image = colourise(variance, 0, std::max(1e-6, v.mean + 3 * v.stddev), HeatPalette::Viridis);
+            break;
+    }
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%d samples\nCorr with (%d, %d): blue −1, white 0, red +1\nmean %.4f (spread %.4f over the "
+                  "picture)\nvariance %.5f (spread %.5f)",
+                  count(), pointX_, pointY_, m.mean, m.stddev, v.mean, v.stddev);
     r.summary = text;
     return r;
 }

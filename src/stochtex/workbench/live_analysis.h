@@ -41,8 +41,16 @@ LiveAnalysisResult liveFlow(const Image& previous, const Image& current);
 // mean) and the residual, contrast and their ratio.
 LiveAnalysisResult liveFlicker(const Image& previous, const Image& current);
 
-// The correlation of every pixel with a reference point over the samples
-// added (gray of each), shown blue–white–red over [−1, 1].
+// What the accumulator over samples shows: every pixel's correlation with
+// the reference point (blue–white–red over [−1, 1]), or its mean or
+// variance (viridis; the mean over [0, 1], the variance up to its mean
+// plus three standard deviations over the picture).
+enum class LiveStatistic { Correlation, Mean, Variance };
+inline const EnumNames<LiveStatistic> kLiveStatisticNames{{"correlation", LiveStatistic::Correlation},
+                                                          {"mean", LiveStatistic::Mean},
+                                                          {"variance", LiveStatistic::Variance}};
+
+// The statistical accumulator over the samples added (gray of each), live.
 class LiveCorrelation {
 public:
     LiveCorrelation(int width, int height, int pointX, int pointY);
@@ -53,7 +61,7 @@ public:
     int pointX() const { return pointX_; }
     int pointY() const { return pointY_; }
     // Needs 2 samples at least (else a gray image and a note).
-    LiveAnalysisResult result() const;
+    LiveAnalysisResult result(LiveStatistic shown = LiveStatistic::Correlation) const;
 
 private:
     int width_, height_, pointX_, pointY_;

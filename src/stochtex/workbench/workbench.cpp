@@ -229,6 +229,14 @@ private:
         }
     }
 
+    // Another statistic of the same samples: shown from the accumulator at once, the samples kept.
+    void showStatisticChanged() {
+        if (!correlation_) return;
+        const LiveAnalysisResult r = correlation_->result(statistic_);
+        analysisImage_.upload(r.image);
+        analysisSummary_ = r.summary;
+    }
+
     // Something the picture shows changed: analyses of the old picture are stale.
     void viewChanged() { ++viewVersion_; }
 
@@ -520,7 +528,7 @@ private:
             const CameraSource source([&r](const Camera& c) { return r.render(c); }, exampleSize(), camera_);
             for (int k = 0; k < 4; ++k) correlation_->add(source.render({w, h, 0, 0}, 0, correlation_->count()));
         }
-        return correlation_->result();
+        return correlation_->result(statistic_);
     }
     static constexpr int kMaxCorrelationSamples = 4096;
 
@@ -830,6 +838,7 @@ private:
             ImGui::PlotLines("##profile", analysisProfile_.data(), int(analysisProfile_.size()), 0,
                              analysisProfileLabel_.c_str(), FLT_MAX, FLT_MAX, ImVec2(float(kWorkbenchPanelWidth - 30), 80));
         if (analysis_ == LiveAnalysisKind::Correlation) {
+            if (enumCombo("show", statistic_, kLiveStatisticNames)) showStatisticChanged();
             ImGui::TextDisabled("right click: pick the point");
             if (ImGui::Button("restart the samples")) analysisDirty_ = true;
         }
@@ -928,6 +937,7 @@ private:
     WorkbenchView view_;
     WorkbenchMode mode_;
     LiveAnalysisKind analysis_;
+    LiveStatistic statistic_ = LiveStatistic::Correlation;
     Orbit orbit_;
     float split_ = 0.5f, overlayOpacity_ = 0.5f;
     bool showPanel_ = true, showHelp_ = false, paused_ = false, quit_ = false, expandAll_ = false;
