@@ -247,10 +247,15 @@ private:
         hostFailed_ = false;
         scene_.reset();
         renderers_.clear();
-        host_.reset();
         exampleSize_ = 0;
         viewChanged();
-        if (isShadertoy()) return;  // the host is built at the picture's size
+        if (isShadertoy()) {
+            // Rebuilt at the picture's size on the next frame; the old one
+            // stays on screen if the program no longer compiles.
+            hostStale_ = true;
+            return;
+        }
+        host_.reset();
         spec_ = doc_.patternSpec();
         hasNormalMap_ = spec_.normalMap.has_value() && !spec_.graph;
         if (!hasNormalMap_) response_ = ResponseKind::PrefilteredColormap;
@@ -444,11 +449,12 @@ private:
         s.height = h;
         auto next = std::make_unique<ShadertoyHost>(doc_.shadertoySpec(), *context_, s);
         host_ = std::move(next);
+        hostStale_ = false;
         viewChanged();
     }
 
     GLuint drawProgramFrame(int w, int h) {
-        if (!host_ || host_->settings().width != w || host_->settings().height != h) {
+        if (!host_ || hostStale_ || host_->settings().width != w || host_->settings().height != h) {
             if (hostFailed_ && host_) return host_->frameTexture();  // the last good one, until the next reload
             if (hostFailed_) return 0;
             try {
@@ -756,8 +762,14 @@ private:
                          ImGuiWindowFlags_NoTitleBar);
         ImGui::TextWrapped("%s", doc_.source().c_str());
         ImGui::TextDisabled("F1: keys   Tab: hide panel");
-        if (!error_.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", error_.c_str());
-        if (!notice_.empty()) ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "%s", notice_.c_str());
+        auto message = [](const std::string& text, const ImVec4& colour) {
+            if (text.empty()) return;
+            ImGui::PushStyleColor(ImGuiCol_Text, colour);
+            ImGui::TextWrapped("%s", text.c_str());
+            ImGui::PopStyleColor();
+        };
+        message(error_, ImVec4(1, 0.45f, 0.4f, 1));
+        message(notice_, ImVec4(0.6f, 0.9f, 0.6f, 1));
         ImGui::PushID("view");  // the view's controls apart from the pattern's members of the same names
         if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) drawViewControls();
         if (analysing() && ImGui::CollapsingHeader("Analysis", ImGuiTreeNodeFlags_DefaultOpen)) drawAnalysisPanel();
@@ -801,7 +813,7 @@ private:
             ImGui::Text("frame %d, iTime %.2f s", frame, options_.shadertoy.startTime + frame / options_.shadertoy.fps);
             ImGui::Checkbox("pause (F4)", &paused_);
             ImGui::SameLine();
-            if (ImGui::Button("restart")) hostFailed_ = false, host_.reset();
+            if (ImGui::Button("restart")) hostFailed_ = false, hostStale_ = true;
             return;
         }
         static const std::vector<std::string> filters{"none", "paper", "smooth"};
@@ -921,7 +933,7 @@ private:
     std::string sceneObject_;
     std::unique_ptr<RenderTarget> target_;
     std::unique_ptr<ShadertoyHost> host_;
-    bool hostFailed_ = false;
+    bool hostFailed_ = false, hostStale_ = false;
     std::string failedKey_;
     DisplayImage canvas_, example_[2], exampleSpectrum_[2];
     PaintBrush brush_;
