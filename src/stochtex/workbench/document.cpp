@@ -21,34 +21,19 @@ fs::file_time_type stampOf(const fs::path& p) {
     return ec ? fs::file_time_type::min() : t;
 }
 
-// Every relative "path" member made absolute against `base`: the pattern's
-// image files (exemplars, colormaps, profiles, graph sources) are relative
-// to the pattern file's folder.
-void absolutePaths(nlohmann::json& j, const fs::path& base) {
+// Calls f on every "path" member (a string) of a pattern: its image files
+// (exemplars, colormaps, profiles, graph sources), relative to the
+// pattern file's folder unless absolute.
+template <class Json, class F>
+void forEachPath(Json& j, F&& f) {
     if (j.is_object()) {
-        for (auto& [key, value] : j.items()) {
-            if (key == "path" && value.is_string()) {
-                const fs::path p = value.get<std::string>();
-                if (p.is_relative()) value = fs::absolute(base / p).lexically_normal().string();
-            } else {
-                absolutePaths(value, base);
-            }
-        }
-    } else if (j.is_array()) {
-        for (auto& value : j) absolutePaths(value, base);
-    }
-}
-
-// The image files a pattern reads: its "path" members, against `base`.
-void imagePaths(const nlohmann::json& j, const fs::path& base, std::vector<fs::path>& out) {
-    if (j.is_object()) {
-        for (const auto& [key, value] : j.items())
+        for (auto& [key, value] : j.items())
             if (key == "path" && value.is_string())
-                out.push_back(base / fs::path(value.get<std::string>()));
+                f(value);
             else
-                imagePaths(value, base, out);
+                forEachPath(value, f);
     } else if (j.is_array()) {
-        for (const auto& value : j) imagePaths(value, base, out);
+        for (auto& value : j) forEachPath(value, f);
     }
 }
 
@@ -73,7 +58,7 @@ WorkbenchDocument WorkbenchDocument::patternFile(const std::string& path) {
     if (d.baseDir_.empty()) d.baseDir_ = ".";
     d.patternSpec();
     std::vector<fs::path> files{path};
-    imagePaths(d.json_, d.baseDir_, files);
+    forEachPath(d.json_, [&](const nlohmann::json& p) { files.push_back(d.baseDir_ / fs::path(p.get<std::string>())); });
     d.watch(std::move(files));
     return d;
 }
@@ -149,7 +134,11 @@ void WorkbenchDocument::save(const std::string& path) {
     fs::path folder = fs::path(path).parent_path();
     if (folder.empty()) folder = ".";
     std::error_code ec;
-    if (!fs::equivalent(folder, baseDir_, ec)) absolutePaths(out, baseDir_);
+    if (!fs::equivalent(folder, baseDir_, ec))
+        forEachPath(out, [&](nlohmann::json& value) {
+            const fs::path p = value.get<std::string>();
+            if (p.is_relative()) value = fs::absolute(baseDir_ / p).lexically_normal().string();
+        });
     writeFileAtomic(path, out.dump(2) + "\n");
     if (!path_.empty() && fs::equivalent(path, path_, ec)) {
         edited_ = false;
