@@ -14,9 +14,12 @@ FlickerMeasure flowCompensatedFlicker(const Image& previous, const Image& next, 
         a, b, [&](int x, int y) { return std::array<double, 2>{x + flow.at(x, y, 0), y + flow.at(x, y, 1)}; },
         residualMap);
     m.contrast = 0.5 * (channelStats(a).stddev + channelStats(b).stddev);
-    // Below a thousandth of the code range there is nothing to see flicker.
-    m.relative = m.contrast > 1e-3 ? m.residual / m.contrast : std::numeric_limits<double>::quiet_NaN();
+    m.relative = relativeFlicker(m.residual, m.contrast);
     return m;
+}
+
+double relativeFlicker(double residual, double contrast) {
+    return contrast > 1e-3 ? residual / contrast : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace stochtex

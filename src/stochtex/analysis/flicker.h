@@ -50,6 +50,10 @@ double warpedDifference(const Image& a, const Image& b, Position&& position, Ima
     return count ? sum / double(count * size_t(a.channels())) : 0.0;
 }
 
+// Below a thousandth of the code range a frame has nothing to see flicker:
+// residual / contrast, or NaN under that contrast.
+double relativeFlicker(double residual, double contrast);
+
 struct FlickerMeasure {
     double residual = 0;  // mean |previous − next warped back by the flow| (gray)
     double contrast = 0;  // mean of the two frames' gray standard deviations

@@ -52,6 +52,22 @@ std::array<int, 2> statisticsPoint(const FrameAnalysisOptions& o) {
     return {o.pointX < 0 ? o.region.width / 2 : o.pointX, o.pointY < 0 ? o.region.height / 2 : o.pointY};
 }
 
+// A map over the study's window as a heat map, axes in window pixels, rows down.
+Image windowMap(const Image& values, const SourceRegion& region, const std::string& title, double lo, double hi,
+                HeatPalette palette) {
+    HeatmapOptions h;
+    h.title = title;
+    h.vmin = lo;
+    h.vmax = hi;
+    h.palette = palette;
+    h.yUp = false;
+    h.xMax = region.width;
+    h.yMax = region.height;
+    h.xLabel = "x (pixels)";
+    h.yLabel = "y (pixels, down)";
+    return heatmapPlot(values, h);
+}
+
 struct Section {
     std::string title;
     std::vector<std::pair<std::string, Table>> tables;  // the first is the summary shown
@@ -87,7 +103,7 @@ Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& 
     summary.columns = {{"pairs", "pairs", ""}, {"residual", "mean residual", "codes"},
                        {"contrast", "mean contrast", "codes"}, {"relative", "residual / contrast", ""}};
     summary.add({TableCell::integer(n), TableCell::value(sumResidual / n), TableCell::value(meanContrast),
-                 TableCell::value(meanContrast > 1e-3 ? sumResidual / n / meanContrast : std::nan(""))});
+                 TableCell::value(relativeFlicker(sumResidual / n, meanContrast))});
     s.tables = {{"flicker.csv", summary}, {"flicker_pairs.csv", perPair}};
     PlotSeries series{"residual / contrast", pairs, relative, {0.8f, 0.2f, 0.1f}};
     LinePlotOptions po;
@@ -98,17 +114,10 @@ Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& 
                          "The next frame warped back by the optical flow (DIS) and subtracted: what motion does not "
                          "explain, relative to the frames' contrast (blur lowers both).",
                          LineChart{{series}, po}});
-    HeatmapOptions ho;
-    ho.title = "Residual of pair " + std::to_string(worstPair) + "→" + std::to_string(worstPair + 1);
-    ho.vmin = 0;
-    ho.vmax = std::max(1e-6, 4.0 * worst);
-    ho.palette = HeatPalette::Viridis;
-    ho.yUp = false;
-    ho.xMax = o.region.width;
-    ho.yMax = o.region.height;
-    ho.xLabel = "x (pixels)";
-    ho.yLabel = "y (pixels, down)";
-    s.figures.push_back({"flicker_map.png", heatmapPlot(worstMap, ho),
+    s.figures.push_back({"flicker_map.png",
+                         windowMap(worstMap, o.region,
+                                   "Residual of pair " + std::to_string(worstPair) + "→" + std::to_string(worstPair + 1),
+                                   0, std::max(1e-6, 4.0 * worst), HeatPalette::Viridis),
                          "Where the worst pair flickers: the per-pixel residual (grey: no flow target inside the frame)."});
     return s;
 }
@@ -136,17 +145,7 @@ Section statisticsSection(const TextureSource& source, const FrameAnalysisOption
                  TableCell::value(shape.antiCorrelation, "%.3f")});
     s.tables = {{"statistics.csv", summary}};
     auto map = [&](const Image& values, const std::string& title, double lo, double hi, HeatPalette palette) {
-        HeatmapOptions h;
-        h.title = title;
-        h.vmin = lo;
-        h.vmax = hi;
-        h.palette = palette;
-        h.yUp = false;
-        h.xMax = o.region.width;
-        h.yMax = o.region.height;
-        h.xLabel = "x (pixels)";
-        h.yLabel = "y (pixels, down)";
-        return heatmapPlot(values, h);
+        return windowMap(values, o.region, title, lo, hi, palette);
     };
     const double vmax = std::max(1e-6, v.mean + 3 * v.stddev);
     const std::string n = std::to_string(o.instances) + " instances";
