@@ -49,7 +49,7 @@ void registerShadertoy(CLI::App& app) {
         ProgressLine line("shadertoy");
         if (!a.analysis.list.empty()) {  // the studies' frames through the texture-source interface
             const ShadertoySource source(host);
-            const FrameAnalysisOptions o = frameAnalysisOptions(a.analysis, spec, settings, a.frames, a.flags.firstFrame);
+            const FrameAnalysisOptions o = frameAnalysisOptions(a.analysis, settings, a.frames, a.flags.firstFrame);
             const FrameAnalysisResult r = frameAnalysis(source, o, line.callback());  // validates before any frame
             line.finish();
             writeFrameAnalysis(a.output, spec.name, r);

@@ -139,14 +139,15 @@ std::string FrameOutputs::finish() {
 void addFrameAnalysisFlags(CLI::App& cmd, FrameAnalysisFlags& f) {
     cmd.add_option("--analyse", f.list, "Studies of the frames, comma-separated: spectrum (the first), flow, coherence, "
                                         "flicker, statistics (over instances); -o is then the report's folder");
-    cmd.add_option("--instances", f.instances, "statistics: instances 0..N-1 through the program's instance uniform "
-                                               "(default 64)");
+    f.instancesOption = cmd.add_option("--instances", f.instances,
+                                       "statistics: instances 0..N-1 through the program's instance uniform")
+                            ->capture_default_str();
     cmd.add_option("--point", f.point, "statistics: the correlation's point X,Y in pixels from the top left "
                                        "(default the centre)")->delimiter(',')->expected(2);
 }
 
-FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const ShadertoySpec& spec,
-                                          const ShadertoySettings& settings, int frames, int firstFrame) {
+FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const ShadertoySettings& settings,
+                                          int frames, int firstFrame) {
     FrameAnalysisOptions o;
     std::string rest = flags.list;
     while (!rest.empty()) {
@@ -160,10 +161,7 @@ FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const
         rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
     }
     const bool statistics = std::count(o.analyses.begin(), o.analyses.end(), FrameAnalysis::Statistics) > 0;
-    if (statistics && spec.instanceUniform.empty())
-        throw InputError("--analyse statistics: " + spec.name +
-                         " has no instance uniform (the manifest's \"instance\"): its instances would all be one");
-    if (!statistics && flags.instances != 64) throw InputError("--instances: has no effect without statistics in --analyse");
+    refuseWithoutEffect(flags.instancesOption, statistics, "without statistics in --analyse");
     if (!statistics && !flags.point.empty()) throw InputError("--point: has no effect without statistics in --analyse");
     o.instances = flags.instances;
     if (!flags.point.empty()) o.pointX = flags.point[0], o.pointY = flags.point[1];

@@ -64,15 +64,17 @@ private:
 // --analyse LIST (the studies), --instances N and --point X,Y (statistics).
 struct FrameAnalysisFlags {
     std::string list;
-    int instances = 64;
+    int instances = FrameAnalysisOptions{}.instances;
     std::vector<int> point;
+    const CLI::Option* instancesOption = nullptr;
 };
 void addFrameAnalysisFlags(CLI::App& cmd, FrameAnalysisFlags& flags);
 // The studies over --frames frames from --first-frame, the whole frame as
-// the window; InputError naming the flag: an unknown study, statistics of a
-// program without an instance uniform, --instances or --point without them.
-FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const ShadertoySpec& spec,
-                                          const ShadertoySettings& settings, int frames, int firstFrame);
+// the window; InputError naming the flag: an unknown study, --instances or
+// --point without statistics (a program without an instance uniform is
+// refused by the study itself, ShadertoySource::checkInstances).
+FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const ShadertoySettings& settings,
+                                          int frames, int firstFrame);
 // The report: figures, CSV tables and index.html in dir.
 void writeFrameAnalysis(const std::string& dir, const std::string& name, const FrameAnalysisResult& result);
 

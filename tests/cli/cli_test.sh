@@ -326,6 +326,8 @@ case_shadertoy() {
   [ -s "$out/sts/spectrum.csv" ] || fail "spectrum of a shadertoy frame: spectrum.csv not written"
   expect_bad "spectrum window outside the frame" "$out/stw" "--size: size of the window, 128x128 at (-64, -64) from the centre, exceeds the 96x80 frame" -- "$bin" spectrum -o "$out/stw" --size 128 shadertoy "$src/data/shadertoy/swirl" --size 96,80
   expect_ok "shadertoy with a pattern" "$out/stp.png" -- "$bin" shadertoy "$src/data/shadertoy/pattern-zoom" --size 64,36 --time 5 -o "$out/stp.png"
+  # A program without an instance uniform has one instance: averaging it with itself is refused.
+  expect_bad "spectrum over instances of a program without them" "$out/sti" "--instances: instances must be 1: swirl has no instance uniform" -- "$bin" spectrum -o "$out/sti" --size 64 --instances 4 shadertoy "$src/data/shadertoy/swirl" --size 96,80
   expect_ok "shadertoy analysis" "$out/sta/index.html" -- "$bin" shadertoy "$src/data/shadertoy/swirl" --size 96,64 --analyse spectrum,flow,coherence --frames 4 --first-frame 120 -o "$out/sta"
   for f in spectrum.png flow_arrows.png appearance.png flow.csv coherence.csv; do [ -s "$out/sta/$f" ] || fail "shadertoy analysis: $f not written"; done
   grep -q "Optical flow (DIS)" "$out/sta/index.html" || fail "shadertoy analysis: index.html lacks the flow section"
@@ -350,7 +352,7 @@ GLSL
   done
   awk -F, 'NR == 2 { exit !($1 == 200 && $5 == 64) }' "$out/stc/statistics.csv" || fail "shadertoy statistics: want 200 instances and a 64-pixel cell: $(cat "$out/stc/statistics.csv")"
   awk -F, 'NR == 2 { exit !($4 > 0.2) }' "$out/stc/flicker.csv" || fail "shadertoy flicker: the blink reads no flicker: $(cat "$out/stc/flicker.csv")"
-  expect_bad "statistics without an instance uniform" "$out/stn" "--analyse statistics: counter has no instance uniform" -- "$bin" shadertoy "$work/st" --analyse statistics -o "$out/stn"
+  expect_bad "statistics without an instance uniform" "$out/stn" "--instances: instances must be 1: counter has no instance uniform" -- "$bin" shadertoy "$work/st" --analyse statistics -o "$out/stn"
   expect_bad "instances without statistics" "$out/stn" "--instances: has no effect without statistics" -- "$bin" shadertoy "$work/cells" --analyse flicker --instances 8 -o "$out/stn"
   expect_bad "point outside" "$out/stn" "--point: point (99, 2) lies outside the 64x48 window" -- "$bin" shadertoy "$work/cells" --size 64,48 --analyse statistics --point 99,2 -o "$out/stn"
   expect_bad "shadertoy analysis unknown" "$out/stu" "--analyse: unknown study \"fft\"" -- "$bin" shadertoy "$work/st" --analyse fft -o "$out/stu"

@@ -146,6 +146,29 @@ TEST(TextureSource, FilteredPatternInstanceZeroIsTheCameraRender) {
     }
 }
 
+TEST(TextureSource, ImageSequenceChecksItsWindowTimeAndInstancesBeforeRendering) {
+    std::vector<Image> frames;
+    for (int k = 0; k < 3; ++k) {
+        Image f(8, 6, 1);
+        for (int y = 0; y < 6; ++y)
+            for (int x = 0; x < 8; ++x) f.at(x, y) = float(k * 100 + y * 8 + x);
+        frames.push_back(std::move(f));
+    }
+    const ImageSequenceSource source(frames);
+    // Frame k at time floor(t); instance i reads image i; windows in the frame's pixels.
+    EXPECT_FLOAT_EQ(source.render({2, 2, 3, 1}, 1.7, 0).at(0, 0), 100 + 8 + 3);
+    EXPECT_FLOAT_EQ(source.render({2, 2, 3, 1}, 0.0, 2).at(1, 1), 200 + 16 + 4);
+    EXPECT_NO_THROW(source.checkWindow({8, 6, 0, 0}, 2.9));
+    EXPECT_NO_THROW(source.checkInstances(3));
+    EXPECT_EQ(test::inputErrorOf([&] { source.checkWindow({8, 6, 1, 0}, 0.0); }).parameter(), "size");
+    EXPECT_EQ(test::inputErrorOf([&] { source.checkWindow({8, 6, 0, 0}, 3.0); }).parameter(), "time");
+    EXPECT_EQ(test::inputErrorOf([&] { source.checkWindow({8, 6, 0, 0}, -0.5); }).parameter(), "time");
+    EXPECT_EQ(test::inputErrorOf([&] { source.checkInstances(4); }).parameter(), "instances");
+    // render throws what the checks throw.
+    EXPECT_EQ(test::inputErrorOf([&] { source.render({8, 6, 0, 1}, 0.0, 0); }).parameter(), "size");
+    EXPECT_EQ(test::inputErrorOf([&] { source.render({8, 6, 0, 0}, 0.0, 3); }).parameter(), "instances");
+}
+
 // --- the zoom studies ---
 
 // As tests/analysis (AnalyticAndMeasuredCorrelationAgreeForEveryVariant):

@@ -488,8 +488,16 @@ void ShadertoySource::checkWindow(const SourceRegion& region, double time) const
                                                 " s) and within 10⁶ frames, got " + formatValue(time));
 }
 
+void ShadertoySource::checkInstances(int count) const {
+    if (count > 1 && host_.spec().instanceUniform.empty())
+        throw InputError::parameter("instances", "must be 1: " + host_.spec().name +
+                                                     " has no instance uniform (the manifest's \"instance\"), so its "
+                                                     "instances would all be one, got " + std::to_string(count));
+}
+
 Image ShadertoySource::render(const SourceRegion& region, double time, int instance) const {
     checkWindow(region, time);
+    checkInstances(instance + 1);
     const int n = frameAt(time);
     if (instance != host_.instance() || n < host_.frame() - 1 || host_.frame() == 0) host_.reset(instance);
     while (host_.frame() <= n) host_.renderFrame();

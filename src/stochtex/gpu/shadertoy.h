@@ -109,6 +109,8 @@ public:
     Image render(const SourceRegion& region, double time, int instance) const override;
     // InputError for a window outside the frame or a time before the start.
     void checkWindow(const SourceRegion& region, double time) const override;
+    // InputError for more than one instance of a program without an instance uniform.
+    void checkInstances(int count) const override;
 
 private:
     int frameAt(double time) const;

@@ -182,7 +182,10 @@ void validateFrameAnalysis(const FrameAnalysisOptions& o, const TextureSource* s
                                                      std::to_string(o.region.height) + " window");
         if (o.region.width < 4 || o.region.height < 4 || o.region.width > 1024 || o.region.height > 1024)
             throw InputError::parameter("size", "statistics need a window of 4…1024 pixels a side");
-        if (source) source->checkWindow(o.region, o.time);
+        if (source) {
+            source->checkWindow(o.region, o.time);
+            source->checkInstances(o.instances);
+        }
     }
 }
 

@@ -24,8 +24,10 @@ void validateSpectrumStudy(const SpectrumStudyOptions& o, const TextureSource* s
     if (o.angularBins < 1 || o.angularBins > 3600) throw InputError::parameter("angularBins", "must be 1…3600");
     if (!(o.rMin >= 0 && o.rMin < o.rMax && o.rMax <= 0.75))
         throw InputError::parameter("rMin", "the annulus needs 0 ≤ rMin < rMax ≤ 0.75 cycles/pixel");
-    if (source)
+    if (source) {
         for (double t : o.times) source->checkWindow(o.region, t);
+        source->checkInstances(o.instances);
+    }
 }
 
 namespace {

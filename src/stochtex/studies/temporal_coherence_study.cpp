@@ -21,8 +21,10 @@ void validateTemporalCoherence(const TemporalCoherenceOptions& o, const TextureS
     if (o.instance < 0) throw InputError::parameter("instance", "must be ≥ 0, got " + std::to_string(o.instance));
     if (o.radialBins < 4 || o.radialBins > 4096)
         throw InputError::parameter("radialBins", "must be in [4, 4096], got " + std::to_string(o.radialBins));
-    if (source)
+    if (source) {
         for (double t : o.times) source->checkWindow(o.region, t);
+        source->checkInstances(o.instance + 1);
+    }
 }
 
 std::vector<double> evenTimes(double start, double step, int count) {

@@ -147,19 +147,31 @@ ImageSequenceSource::ImageSequenceSource(std::vector<Image> frames) : frames_(st
                              "×" + std::to_string(height()) + "×" + std::to_string(channels()));
 }
 
-Image ImageSequenceSource::render(const SourceRegion& region, double time, int instance) const {
-    const double k = instance != 0 ? instance : std::floor(time);
-    if (!(k >= 0 && k < frames()))
-        throw InputError("image sequence: no frame " + std::to_string(k) + " (there are " +
-                         std::to_string(frames()) + ")");
-    const Image& f = frames_[size_t(k)];
+void ImageSequenceSource::checkWindow(const SourceRegion& region, double time) const {
+    if (!(std::isfinite(time) && time >= 0 && time < frames()))
+        throw InputError::parameter("time", "must be in [0, " + std::to_string(frames()) +
+                                                ") for an image sequence (image k at time k), got " + formatValue(time));
     const int x0 = int(std::lround(region.x0)), y0 = int(std::lround(region.y0));
-    if (x0 < 0 || y0 < 0 || region.width < 1 || region.height < 1 || x0 + region.width > f.width() ||
-        y0 + region.height > f.height())
-        throw InputError("image sequence: the window " + std::to_string(region.width) + "×" +
-                         std::to_string(region.height) + " at (" + std::to_string(x0) + ", " + std::to_string(y0) +
-                         ") is not inside the " + std::to_string(f.width()) + "×" + std::to_string(f.height()) +
-                         " frames");
+    if (x0 < 0 || y0 < 0 || region.width < 1 || region.height < 1 || x0 + region.width > width() ||
+        y0 + region.height > height())
+        throw InputError::parameter("size", "of the window, " + std::to_string(region.width) + "x" +
+                                                std::to_string(region.height) + " at (" + std::to_string(x0) + ", " +
+                                                std::to_string(y0) + "), is not inside the " + std::to_string(width()) +
+                                                "x" + std::to_string(height()) + " images");
+}
+
+void ImageSequenceSource::checkInstances(int count) const {
+    if (count > frames())
+        throw InputError::parameter("instances", "must be at most " + std::to_string(frames()) +
+                                                     " (instance i reads image i), got " + std::to_string(count));
+}
+
+Image ImageSequenceSource::render(const SourceRegion& region, double time, int instance) const {
+    checkWindow(region, instance != 0 ? 0.0 : time);
+    if (instance < 0) throw InputError::parameter("instances", "must be ≥ 0, got " + std::to_string(instance));
+    checkInstances(instance + 1);
+    const Image& f = frames_[size_t(instance != 0 ? instance : int(std::floor(time)))];
+    const int x0 = int(std::lround(region.x0)), y0 = int(std::lround(region.y0));
     if (x0 == 0 && y0 == 0 && region.width == f.width() && region.height == f.height()) return f;
     Image out(region.width, region.height, f.channels());
     for (int y = 0; y < region.height; ++y)

@@ -55,6 +55,11 @@ public:
     // time outside the source's range), so that a study checks every frame
     // before it writes anything; render throws the same error.
     virtual void checkWindow(const SourceRegion& /*region*/, double /*time*/) const {}
+    // InputError (parameter "instances") where instances 0…count−1 are not
+    // distinct draws of the source (a program without an instance uniform),
+    // so that a study does not average one frame with itself and call it a
+    // mean over instances.
+    virtual void checkInstances(int /*count*/) const {}
 };
 
 // The zoom texture over a white-noise lattice (size × size, instance i uses
@@ -201,6 +206,10 @@ public:
     int height() const { return frames_.front().height(); }
     int channels() const override { return frames_.front().channels(); }
     Image render(const SourceRegion& region, double time, int instance) const override;
+    // InputError for a window not inside the frames or a time with no frame.
+    void checkWindow(const SourceRegion& region, double time) const override;
+    // Instance i reads frame i: at most frames() instances.
+    void checkInstances(int count) const override;
 
 private:
     std::vector<Image> frames_;
