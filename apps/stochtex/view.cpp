@@ -27,6 +27,8 @@ void registerView(CLI::App& app) {
                                            "live, watch its spectrum, flow or correlation; F1 in the window lists the keys");
     WorkbenchOptions& w = args->window;
     addPatternSource(*cmd, args->source);
+    // The window edits and saves a file, so it reads files only (no inline JSON).
+    cmd->get_option("pattern")->description("A pattern or texture graph: its JSON file (docs/PATTERNS.md, docs/GRAPHS.md)");
     cmd->add_option("--shadertoy", args->shadertoy, "A ShaderToy program: its folder or manifest (docs/SHADERTOY.md)");
     addFilterFlag(*cmd, w.filter, "Starting mode: none | paper | smooth");
     addCameraFlags(*cmd, w.camera, false);
@@ -38,7 +40,7 @@ void registerView(CLI::App& app) {
     addEnumFlag(*cmd, "--show", w.view, kWorkbenchViewNames, "view", "Where the pattern is seen (default: --view's)");
     addEnumFlag(*cmd, "--mode", w.mode, kWorkbenchModeNames, "mode", "What the picture shows (M cycles)");
     addEnumFlag(*cmd, "--analysis", w.analysis, kLiveAnalysisNames, "analysis", "The live analysis (A cycles)");
-    cmd->add_option("--fps", w.shadertoy.fps, "ShaderToy: iFrameRate and the recording's rate")->capture_default_str();
+    cmd->add_option("--fps", w.shadertoy.fps, "Recordings' frame rate (a pattern's frames on the wall clock); a program's iFrameRate")->capture_default_str();
     cmd->add_flag("--no-panel", args->noPanel, "Start with the panel hidden (Tab shows it)");
     cmd->add_option("--script", args->script, "Steps to run, a JSON file (docs/WORKBENCH.md)");
     cmd->add_option("--frames", w.frames, "Quit after this many frames (0: when the window closes)")
@@ -55,6 +57,8 @@ void registerView(CLI::App& app) {
         validateCamera(o.camera);
         if (!cmd->count("--show") && o.camera.kind == Camera::Kind::Plane) o.view = WorkbenchView::Plane;
         if (!args->script.empty()) o.script = parseWorkbenchScript(readJsonFile(args->script), args->script);
+        if (!args->source.file.empty() && args->source.file.front() == '{')
+            throw InputError("pattern: the window edits and saves a file, so it takes a JSON file, not inline JSON");
         const bool program = !args->shadertoy.empty();
         if (program && (!args->source.file.empty() || !args->source.preset.empty()))
             throw InputError("--shadertoy: give a program or a pattern, not both");

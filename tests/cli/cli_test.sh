@@ -536,6 +536,7 @@ JSON
   # Bad input: one message, exit 2, no window output.
   printf '[{"frame": 1, "zoom": 2}]' >"$work/bad.json"
   expect_bad "workbench script without at" "$out/wbb.png" "/0: zoom needs \"at\"" -- "$bin" view --preset camouflage --script "$work/bad.json" --screenshot "$out/wbb.png"
+  expect_bad "workbench inline JSON" "$out/wbb.png" "pattern: the window edits and saves a file" -- "$bin" view '{"noise_x": {}}' --frames 1 --screenshot "$out/wbb.png"
   printf '[{"frame": 1, "set": "/colormap/shapes/0/colour", "value": "red"}]' >"$work/bad2.json"
   expect_bad "workbench edit the pattern refuses" "$out/wbb.png" "/colormap/shapes/0/colour: invalid colour \"red\"" -- "${xvfb[@]}" "$bin" view --preset camouflage --size 64,48 --frames 3 --script "$work/bad2.json" --screenshot "$out/wbb.png"
   mkdir -p "$work/broken"

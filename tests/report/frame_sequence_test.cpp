@@ -102,3 +102,29 @@ TEST_F(FrameSequence, ASetWritesEachSequencesVideoAndFrames) {
     EXPECT_FALSE(fs::exists(dir_ / "other-000.png"));
     EXPECT_FALSE(fs::exists(dir_ / "other.mp4"));
 }
+
+namespace stochtex {
+namespace {
+
+TEST(WallClockFrames, RepeatsSlowFramesSkipsFastOnesAndCutsStalls) {
+    WallClockFrames clock(10, 2.0);  // 10 fps, stalls cut to 2 s
+    EXPECT_EQ(clock.framesAt(0.0), 1);    // frame 0 at t = 0
+    EXPECT_EQ(clock.framesAt(0.05), 0);   // faster than 10 fps: skipped
+    EXPECT_EQ(clock.framesAt(0.10), 1);   // frame 1
+    EXPECT_EQ(clock.framesAt(0.35), 2);   // slower: frames 2 and 3 show it
+    EXPECT_EQ(clock.written(), 4);
+    // A 60 s stall becomes 2 s of video, and the frames after it keep their spacing.
+    EXPECT_EQ(clock.framesAt(60.35), 20);
+    EXPECT_EQ(clock.framesAt(60.40), 0);
+    EXPECT_EQ(clock.framesAt(60.45), 1);
+    EXPECT_EQ(clock.written(), 25);
+    // Whatever the pace, written frames = 1 + floor(recorded seconds · fps).
+    WallClockFrames steady(30);
+    int total = 0;
+    for (int k = 0; k <= 1000; ++k) total += steady.framesAt(k * 0.01373);
+    EXPECT_EQ(total, 1 + int(std::floor(1000 * 0.01373 * 30)));
+    EXPECT_THROW(WallClockFrames(0), InputError);
+}
+
+}  // namespace
+}  // namespace stochtex

@@ -121,4 +121,21 @@ std::vector<std::string> FrameSequenceSet::finish() {
     return paths;
 }
 
+WallClockFrames::WallClockFrames(double fps, double maxGapSeconds) : fps_(fps), maxGap_(maxGapSeconds) {
+    if (!(fps > 0 && fps <= 1000)) throw InputError::parameter("fps", "must be in (0, 1000], got " + formatValue(fps));
+}
+
+int WallClockFrames::framesAt(double seconds) {
+    // Frame k of the video shows what was on screen at time k / fps.
+    long long due = (long long)(std::floor((seconds - cut_) * fps_)) + 1;
+    const long long most = written_ + std::max(1LL, (long long)(maxGap_ * fps_));
+    if (due > most) {
+        cut_ += double(due - most) / fps_;
+        due = most;
+    }
+    const int n = int(std::max(0LL, due - written_));
+    written_ += n;
+    return n;
+}
+
 }  // namespace stochtex

@@ -45,6 +45,25 @@ private:
     std::string previewPath_;
 };
 
+// A real-time recording's timeline: frames shown at wall-clock times are
+// written at a fixed rate, a frame repeated while the source was slower
+// than `fps` and skipped while it was faster, so the video plays what was
+// seen at the pace it was seen. A gap longer than `maxGapSeconds` (a stall)
+// counts as that long, and later frames keep their spacing.
+class WallClockFrames {
+public:
+    explicit WallClockFrames(double fps, double maxGapSeconds = 5.0);
+    // How many copies of the frame shown `seconds` after the start to write
+    // now (0 or more; the first call writes at least one).
+    int framesAt(double seconds);
+    long long written() const { return written_; }
+
+private:
+    double fps_, maxGap_;
+    double cut_ = 0;  // seconds of stalls not recorded
+    long long written_ = 0;
+};
+
 // Several sequences rendered side by side (one per filter of a study), each
 // written as it comes into one folder: sequence i as `<names[i]>.mp4` with
 // its preview (`video`) and as `<names[i]>-NNN.png` for frame NNN

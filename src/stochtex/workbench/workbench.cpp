@@ -555,10 +555,11 @@ private:
     void startRecording(const std::string& path) {
         stopRecording();
         const DisplayRect pr = pictureRect();
-        // A program's own rate; a pattern's frames at 30 per second.
-        const double fps = isShadertoy() ? options_.shadertoy.fps : 30.0;
-        recorder_ = std::make_unique<FrameSequenceWriter>(path, pr.width, pr.height, fps, "", Transfer::Linear);
+        recorder_ = std::make_unique<FrameSequenceWriter>(path, pr.width, pr.height, options_.shadertoy.fps, "",
+                                                          Transfer::Linear);
         recordingSize_ = {pr.width, pr.height};
+        recordingStart_ = std::chrono::steady_clock::now();
+        recordingClock_.emplace(options_.shadertoy.fps);
         recordingPath_ = path;
         notice_ = "recording " + path;
     }
@@ -569,7 +570,15 @@ private:
             notice_ += " (stopped: the picture changed size)";
             return;
         }
-        recorder_->write(shot);
+        // A program's frame is one frame of its own time (iTimeDelta = 1/fps),
+        // so its video plays at the program's speed. A pattern has no clock:
+        // its frames go on the wall clock, so the video plays what the person
+        // saw, at their pace.
+        const int copies =
+            isShadertoy() ? 1
+                          : recordingClock_->framesAt(
+                                std::chrono::duration<double>(std::chrono::steady_clock::now() - recordingStart_).count());
+        for (int k = 0; k < copies; ++k) recorder_->write(shot);
     }
     void stopRecording() {
         if (!recorder_) return;
@@ -953,6 +962,8 @@ private:
     Orbit orbit_;
     float split_ = 0.5f, overlayOpacity_ = 0.5f;
     bool showPanel_ = true, showHelp_ = false, paused_ = false, quit_ = false, expandAll_ = false;
+    std::chrono::steady_clock::time_point recordingStart_;
+    std::optional<WallClockFrames> recordingClock_;
     std::array<float, 4> mouse_{};
     int windowWidth_ = 1, windowHeight_ = 1;
     std::array<int, 2> lastTextureSize_{0, 0};

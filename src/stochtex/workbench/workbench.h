@@ -28,7 +28,8 @@ struct WorkbenchOptions {
     WorkbenchView view = WorkbenchView::Zoom;
     WorkbenchMode mode = WorkbenchMode::Texture;
     LiveAnalysisKind analysis = LiveAnalysisKind::Spectrum;
-    ShadertoySettings shadertoy;  // a program's settings; its size follows the picture area
+    ShadertoySettings shadertoy;  // a program's settings (its size follows the picture area); its fps is
+                                  // also a recording's rate, a pattern's frames placed on the wall clock
     bool panel = true;            // the editing panel at the left (Tab toggles it)
     int frames = 0;               // quit after this many frames (0: when the window closes)
     std::string screenshot;       // the picture area of the last frame, to this file, when not empty
