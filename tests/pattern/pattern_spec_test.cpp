@@ -5,7 +5,9 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/pattern_members.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
@@ -249,4 +251,66 @@ TEST(PatternSpec, SpectralExampleSizesArePowersOfTwo) {
     const std::string e =
         errorOf(withNoiseX(R"({"type": "spectrum", "size": 300, "components": [{"shape": "lowpass", "cutoff": 8}]})"));
     EXPECT_NE(e.find("/noise_x/size: must be a power of two"), std::string::npos) << e;
+}
+
+// The pattern file's numbers are read through their table entries
+// (pattern_members.h), the same ones the workbench's widgets are drawn from:
+// each member accepts its typical value and refuses one just past either
+// end of the entry's range, naming the member's pointer.
+TEST(PatternMembers, TheParserEnforcesEachTableEntrysRange) {
+    namespace m = stochtex::pattern_members;
+    struct Case {
+        const char* preset;
+        const char* pointer;
+        const ParamInfo& member;
+    };
+    const Case cases[] = {
+        {"bands", "/scale", m::kScale},
+        {"bands", "/grid_density", m::kGridDensity},
+        {"bands", "/noise_x/size", m::kNoiseSize},
+        {"bands", "/noise_x/mean", m::kNoiseMean},
+        {"bands", "/noise_x/stddev", m::kNoiseStddev},
+        {"bands", "/noise_x/components/0/cutoff", m::kCutoff},
+        {"bands", "/noise_x/components/0/weight", m::kWeight},
+        {"iso-aniso", "/noise_y/components/0/frequency", m::kFrequency},
+        {"iso-aniso", "/noise_y/components/0/bandwidth", m::kBandwidth},
+        {"iso-aniso", "/noise_y/components/0/orientation", m::kOrientation},
+        {"camouflage", "/colormap/resolution", m::kColormapResolution},
+        {"camouflage", "/colormap/shapes/2/radius", m::kRadius},
+        {"camouflage", "/colormap/shapes/0/angle", m::kAngle},
+        {"concentric", "/colormap/shapes/1/inner", m::kInner},
+        {"concentric", "/colormap/shapes/1/outer", m::kOuter},
+        {"oblique-blots", "/colormap/shapes/2/width", m::kWidth},
+        {"phasor-square", "/colormap/duty", m::kDuty},
+        {"lean-ridges", "/normal_map/amplitude", m::kAmplitude},
+        {"lean-ridges", "/normal_map/roughness", m::kRoughness},
+        {"lean-ridges", "/normal_map/specular", m::kSpecular},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::string(c.preset) + " " + c.pointer);
+        const nlohmann::json base = nlohmann::json::parse(presetText(c.preset));
+        const bool integer = c.member.type == ParamType::Integer;
+        const auto parseWith = [&](double v) {
+            nlohmann::json j = base;
+            j[nlohmann::json::json_pointer(c.pointer)] = integer ? nlohmann::json(std::llround(v)) : nlohmann::json(v);
+            return parsePatternSpec(JsonReader(j, "t.json"), ".");
+        };
+        EXPECT_NO_THROW(parseWith(c.member.typical()));
+        const double step = integer ? 1.0 : std::max(1.0, std::abs(c.member.max)) * 1e-6;
+        for (double outside : {c.member.min - step, c.member.max + step}) {
+            const std::string message = test::inputErrorOf([&] { parseWith(outside); }).what();
+            EXPECT_NE(message.find(std::string(c.pointer) + ": "), std::string::npos) << message;
+        }
+    }
+    // The graph's spectral noise takes the same entries as a pattern's noise.
+    const NodeInfo* noise = findGraphNode("spectral_noise");
+    ASSERT_NE(noise, nullptr);
+    for (const ParamInfo* p : {&m::kNoiseSize, &m::kNoiseMean, &m::kNoiseStddev}) {
+        const auto it = std::find_if(noise->params.begin(), noise->params.end(),
+                                     [&](const ParamInfo& q) { return q.name == p->name; });
+        ASSERT_NE(it, noise->params.end());
+        EXPECT_EQ(it->min, p->min);
+        EXPECT_EQ(it->max, p->max);
+        EXPECT_EQ(it->fallback, p->fallback);
+    }
 }

@@ -1,6 +1,7 @@
 #include "stochtex/pattern/graph_nodes.h"
 
 #include "stochtex/noise/spectrum.h"
+#include "stochtex/pattern/pattern_members.h"
 
 namespace stochtex {
 
@@ -13,21 +14,6 @@ const char* portTypeName(PortType t) {
     return "tiled field";
 }
 
-const char* paramTypeName(ParamType t) {
-    switch (t) {
-        case ParamType::Number: return "number";
-        case ParamType::Integer: return "integer";
-        case ParamType::Boolean: return "boolean";
-        case ParamType::Seed: return "seed";
-        case ParamType::Path: return "path";
-        case ParamType::Components: return "components";
-        case ParamType::Colormap: return "colormap";
-        case ParamType::Curve: return "curve";
-        case ParamType::Choice: break;
-    }
-    return "choice";
-}
-
 const std::vector<NodeInfo>& graphNodes() {
     using json = nlohmann::json;
     static const std::vector<NodeInfo> nodes = {
@@ -35,10 +21,10 @@ const std::vector<NodeInfo>& graphNodes() {
          "A periodic Gaussian example synthesised from a power spectrum (paper §3), tiled and blended",
          {},
          PortType::Field,
-         {{"size", ParamType::Integer, "Example side, texels (a power of two)", 256, 8, kMaxExampleSize},
+         {pattern_members::kNoiseSize,
           {"seed", ParamType::Seed, "Seed of the white noise (default: from the graph seed and the node id)", json()},
-          {"mean", ParamType::Number, "Mean of the example", 0.5, 0, 1},
-          {"stddev", ParamType::Number, "Standard deviation of the example", 1.0 / 6.0, 1e-4, 0.5},
+          pattern_members::kNoiseMean,
+          pattern_members::kNoiseStddev,
           {"quadrature", ParamType::Boolean, "The Hilbert partner of the same white noise (a phase shift of π/2)", false},
           {"components", ParamType::Components, "Spectrum components: lowpass, ring or bilobe (docs/PATTERNS.md)",
            json(), 0, 0, json::parse(R"([{"shape": "lowpass", "cutoff": 8}])")}}},

@@ -19,37 +19,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "stochtex/pattern/param_info.h"
+
 namespace stochtex {
 
 // What flows along an edge: a scalar field, a colour, or a tiled field of
 // K channels (tiled_field) whose channels a channel node reads.
 enum class PortType { Field, Colour, Channels };
 const char* portTypeName(PortType t);
-
-enum class ParamType {
-    Number,      // a finite number in [min, max]
-    Integer,     // an integer in [min, max]
-    Boolean,
-    Seed,        // an integer in [0, 2³² − 1]; unset: derived from the graph's seed and the node's id
-    Path,        // an image file, relative to the graph file's folder
-    Components,  // spectrum components, as a pattern file's noise (docs/PATTERNS.md)
-    Colormap,    // a COLORMAP object, as a pattern file's (docs/PATTERNS.md)
-    Curve,       // [[x, y], ...]: at least 2 points, x strictly increasing in [0, 1]
-    Choice,      // one of ParamInfo::choices (a string)
-};
-const char* paramTypeName(ParamType t);
-
-struct ParamInfo {
-    std::string name;
-    ParamType type;
-    std::string description;
-    nlohmann::json fallback;  // the default; null: required (or, for a seed, derived)
-    double min = 0, max = 0;  // Number and Integer
-    // For a required parameter: a typical value, used where a graph is built
-    // from the table alone (sampleNodeGraph). Null for paths (the caller's).
-    nlohmann::json sample = nullptr;
-    std::vector<std::string> choices = {};  // Choice
-};
 
 struct PortInfo {
     std::string name;

@@ -11,14 +11,12 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/noise/example.h"
 #include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/pattern_members.h"
 #include "stochtex/pattern/texture_graph.h"
 
 namespace stochtex {
 namespace fs = std::filesystem;
-
-namespace {
-constexpr double kMaxFrequency = 1e4;
-}  // namespace
+namespace m = pattern_members;
 
 SpectrumComponent parseSpectrumComponent(const JsonReader& r) {
     r.expectObject({"shape", "frequency", "cutoff", "bandwidth", "orientation", "weight"});
@@ -26,20 +24,20 @@ SpectrumComponent parseSpectrumComponent(const JsonReader& r) {
     const std::string shape = r.at("shape").choice({"lowpass", "ring", "bilobe"});
     if (shape == "lowpass") {
         c.shape = SpectrumShape::LowPass;
-        c.frequency = r.at("cutoff").number(1e-3, kMaxFrequency);
+        c.frequency = readNumber(r, m::kCutoff);
         if (r.has("frequency") || r.has("bandwidth") || r.has("orientation"))
             r.fail("a lowpass component takes only \"cutoff\" and \"weight\"");
     } else {
         c.shape = shape == "ring" ? SpectrumShape::Ring : SpectrumShape::BiLobe;
-        c.frequency = r.at("frequency").number(0.0, kMaxFrequency);
-        c.bandwidth = r.at("bandwidth").number(1e-3, kMaxFrequency);
+        c.frequency = readNumber(r, m::kFrequency);
+        c.bandwidth = readNumber(r, m::kBandwidth);
         if (c.shape == SpectrumShape::BiLobe)
-            c.orientation = r.number("orientation", 0.0, -360.0, 360.0);
+            c.orientation = readNumber(r, m::kOrientation);
         else if (r.has("orientation"))
             r.fail("a ring is isotropic: \"orientation\" applies to bilobe components only");
         if (r.has("cutoff")) r.fail("\"cutoff\" applies to lowpass components only");
     }
-    c.weight = r.number("weight", 1.0, 0.0, 1e6);
+    c.weight = readNumber(r, m::kWeight);
     return c;
 }
 
@@ -71,7 +69,7 @@ Rgb parseColour(const JsonReader& r) {
 
 std::array<double, 2> parsePoint(const JsonReader& r) {
     if (r.arraySize() != 2) r.fail("a point needs 2 coordinates [x, y]");
-    return {r.at(0).number(-10, 10), r.at(1).number(-10, 10)};
+    return {r.at(0).number(m::kCoordinate.min, m::kCoordinate.max), r.at(1).number(m::kCoordinate.min, m::kCoordinate.max)};
 }
 
 PaintedShape parseShape(const JsonReader& r) {
@@ -87,13 +85,13 @@ PaintedShape parseShape(const JsonReader& r) {
         r.expectObject({"shape", "colour", "center", "radius"});
         s.kind = PaintedShape::Kind::Disc;
         s.a = parsePoint(r.at("center"));
-        s.radius = r.at("radius").number(0, 10);
+        s.radius = readNumber(r, m::kRadius);
     } else if (kind == "ring") {
         r.expectObject({"shape", "colour", "center", "inner", "outer"});
         s.kind = PaintedShape::Kind::Ring;
         s.a = parsePoint(r.at("center"));
-        s.innerRadius = r.at("inner").number(0, 10);
-        s.radius = r.at("outer").number(0, 10);
+        s.innerRadius = readNumber(r, m::kInner);
+        s.radius = readNumber(r, m::kOuter);
         if (s.radius < s.innerRadius) r.at("outer").fail("outer radius must be >= inner radius");
     } else if (kind == "halfplane" || kind == "band") {
         if (kind == "halfplane")
@@ -102,8 +100,8 @@ PaintedShape parseShape(const JsonReader& r) {
             r.expectObject({"shape", "colour", "point", "angle", "width"});
         s.kind = kind == "halfplane" ? PaintedShape::Kind::HalfPlane : PaintedShape::Kind::Band;
         s.a = parsePoint(r.at("point"));
-        s.setAngle(r.number("angle", 0.0, -360, 360));
-        if (kind == "band") s.width = r.at("width").number(0, 10);
+        s.setAngle(readNumber(r, m::kAngle));
+        if (kind == "band") s.width = readNumber(r, m::kWidth);
     } else {
         r.expectObject({"shape", "colour", "points"});
         s.kind = PaintedShape::Kind::Polygon;
@@ -155,13 +153,13 @@ NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
     if (type == "spectrum") {
         r.expectObject({"type", "size", "seed", "mean", "stddev", "components", "quadrature"});
         SpectrumSpec& s = spec.spectrum;
-        s.size = r.integer("size", 256, 8, kMaxExampleSize);
+        s.size = readInteger(r, m::kNoiseSize);
         if (auto seed = r.find("seed")) {
             s.seed = seed->uint32();
             spec.explicitSeed = true;
         }
-        s.mean = r.number("mean", 0.5, 0.0, 1.0);
-        s.stddev = r.number("stddev", 1.0 / 6.0, 1e-4, 0.5);
+        s.mean = readNumber(r, m::kNoiseMean);
+        s.stddev = readNumber(r, m::kNoiseStddev);
         s.quadrature = r.boolean("quadrature", false);
         const JsonReader comps = r.at("components");
         const size_t n = comps.arraySize();
@@ -188,7 +186,7 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
         r.expectObject({"type", "resolution", "profile", "duty", "path", "palette", "transfer"});
         spec.source = ColormapSpec::Source::Phasor;
         spec.profile = r.choice("profile", PhasorProfile::Sine, kPhasorProfileNames);
-        spec.duty = r.number("duty", 0.5, 0.0, 1.0);
+        spec.duty = readNumber(r, m::kDuty);
         if (spec.profile == PhasorProfile::Image)
             spec.image = resolveInputPath(r.at("path"), baseDir);
         else if (r.has("path"))
@@ -212,16 +210,16 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
         }
     }
     if (r.has("transfer")) spec.transfer = r.at("transfer").choice(kTransferNames);
-    spec.resolution = r.integer("resolution", 256, 2, kMaxColormapResolution);
+    spec.resolution = readInteger(r, m::kColormapResolution);
     if (spec.source == ColormapSpec::Source::Painted) r.check([&] { spec.painted.validateWork(spec.resolution); });
     return spec;
 }
 
 LeanShading validatedShading(LeanShading s) {
-    if (!(std::isfinite(s.roughness) && s.roughness >= 1e-3 && s.roughness <= 10))
-        throw InputError::parameter("roughness", "must be in [0.001, 10], got " + formatValue(s.roughness));
-    if (!(std::isfinite(s.specular) && s.specular >= 0 && s.specular <= 1e3))
-        throw InputError::parameter("specular", "must be in [0, 1000], got " + formatValue(s.specular));
+    for (const auto& [p, v] : {std::pair{&m::kRoughness, s.roughness}, std::pair{&m::kSpecular, s.specular}})
+        if (!(std::isfinite(v) && v >= p->min && v <= p->max))
+            throw InputError::parameter(p->name, "must be in [" + formatValue(p->min) + ", " + formatValue(p->max) +
+                                                     "], got " + formatValue(v));
     for (const char* name : {"light", "view"}) {
         if (std::string(name) == "view" && !s.view) continue;
         auto& d = std::string(name) == "light" ? s.light : *s.view;
@@ -239,7 +237,7 @@ NormalMapSpec parseNormalMapSpec(const JsonReader& r, const fs::path& baseDir) {
     r.expectObject({"height", "amplitude", "roughness", "light", "view", "albedo", "specular"});
     NormalMapSpec spec;
     spec.height = parseNoiseSpec(r.at("height"), baseDir);
-    spec.amplitude = r.number("amplitude", spec.amplitude, 1e-4, 100.0);
+    spec.amplitude = readNumber(r, m::kAmplitude);
     LeanShading& s = spec.shading;
     // Any number here: validatedShading states the domain (and is what the library checks too).
     s.roughness = r.number("roughness", s.roughness, -1e300, 1e300);
@@ -279,10 +277,10 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
             spec.width = spec.height = size->integer(1, kMaxOutputSide);
         }
     }
-    spec.scale = r.number("scale", 1.0, 1e-6, 1e6);
+    spec.scale = readNumber(r, m::kScale);
     // The output caps (pixel count) are the renderer's: the pattern's own view must pass them.
     r.check([&] { validateView(View{spec.width, spec.height, spec.scale}); });
-    spec.gridDensity = r.number("grid_density", spec.gridDensity, 1e-3, 1e3);
+    spec.gridDensity = readNumber(r, m::kGridDensity);
     if (graph) {
         auto g = std::make_shared<TextureGraph>(parseTextureGraph(r, baseDir));
         spec.colormap = g->node(g->output).colormap;

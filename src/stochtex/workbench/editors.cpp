@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "stochtex/pattern/graph_nodes.h"
+#include "stochtex/pattern/pattern_members.h"
 
 namespace stochtex {
 
@@ -39,6 +40,15 @@ std::string colourHex(const float rgb[3]) {
 
 namespace {
 
+namespace m = pattern_members;
+
+// A new ring or bilobe component at its members' typical values.
+json ringComponent(const std::string& shape) {
+    json c{{"shape", shape}, {m::kFrequency.name, m::kFrequency.typical()}, {m::kBandwidth.name, m::kBandwidth.typical()}};
+    if (shape == "bilobe") c[m::kOrientation.name] = m::kOrientation.typical();
+    return c;
+}
+
 // The widgets of one panel: each reads a member of `object` (at `pointer`)
 // and records an edit when the user changes it.
 class Fields {
@@ -46,21 +56,21 @@ public:
     Fields(const json& object, std::string pointer, std::vector<JsonEdit>& edits)
         : object_(object), pointer_(std::move(pointer)), edits_(edits) {}
 
-    void number(const char* key, const char* label, double fallback, double lo, double hi, const char* format = "%.3f",
-                const char* help = nullptr) {
-        float v = float(object_.is_object() ? object_.value(key, fallback) : fallback);
-        const float speed = float((hi - lo) / 1000.0);
-        if (ImGui::DragFloat(label, &v, speed, float(lo), float(hi), format, ImGuiSliderFlags_AlwaysClamp))
-            edit(key, json(double(v)));
-        tooltip(help);
+    // A number of a parameter table: dragged over [min, dragTop()], typed
+    // (Ctrl+click) up to max; the label is its name, the tooltip its description.
+    void number(const ParamInfo& p, const char* format = "%.4g") {
+        float v = float(object_.is_object() ? object_.value(p.name, p.typical()) : p.typical());
+        const float speed = float((p.dragTop() - p.min) / 1000.0);
+        if (ImGui::DragFloat(p.name.c_str(), &v, speed, float(p.min), float(p.dragTop()), format))
+            edit(p.name, json(std::clamp(double(v), p.min, p.max)));
+        tooltip(p.description.c_str());
     }
-    void integer(const char* key, const char* label, long long fallback, long long lo, long long hi,
-                 const char* help = nullptr) {
-        int v = int(object_.is_object() ? object_.value(key, fallback) : fallback);
-        if (ImGui::DragInt(label, &v, 1.0f, int(std::max<long long>(lo, -(1ll << 30))),
-                           int(std::min<long long>(hi, 1ll << 30)), "%d", ImGuiSliderFlags_AlwaysClamp))
-            edit(key, json(v));
-        tooltip(help);
+    void integer(const ParamInfo& p) {
+        int v = int(object_.is_object() ? object_.value(p.name, (long long)p.typical()) : (long long)p.typical());
+        const int lo = int(std::max(p.min, -double(1 << 30))), top = int(std::min(p.dragTop(), double(1 << 30)));
+        if (ImGui::DragInt(p.name.c_str(), &v, 1.0f, lo, top, "%d"))
+            edit(p.name, json(std::clamp((long long)v, (long long)p.min, (long long)p.max)));
+        tooltip(p.description.c_str());
     }
     void seed(const char* key, const char* label, const char* help = nullptr) {
         uint32_t v = object_.is_object() && object_.contains(key) && object_[key].is_number_unsigned()
@@ -71,15 +81,15 @@ public:
             edit(key, json(v));
         tooltip(help);
     }
-    // A power of two in [lo, hi] (example sizes).
-    void powerOfTwo(const char* key, const char* label, int fallback, int lo, int hi, const char* help = nullptr) {
-        const int now = object_.is_object() ? object_.value(key, fallback) : fallback;
-        if (ImGui::BeginCombo(label, std::to_string(now).c_str())) {
-            for (int v = lo; v <= hi; v *= 2)
-                if (ImGui::Selectable(std::to_string(v).c_str(), v == now) && v != now) edit(key, json(v));
+    // A power of two in the parameter's range (example sizes).
+    void powerOfTwo(const ParamInfo& p) {
+        const int now = object_.is_object() ? object_.value(p.name, int(p.typical())) : int(p.typical());
+        if (ImGui::BeginCombo(p.name.c_str(), std::to_string(now).c_str())) {
+            for (int v = int(p.min); v <= int(p.max); v *= 2)
+                if (ImGui::Selectable(std::to_string(v).c_str(), v == now) && v != now) edit(p.name, json(v));
             ImGui::EndCombo();
         }
-        tooltip(help);
+        tooltip(p.description.c_str());
     }
     void boolean(const char* key, const char* label, bool fallback, const char* help = nullptr) {
         bool v = object_.is_object() ? object_.value(key, fallback) : fallback;
@@ -103,11 +113,13 @@ public:
         if (object_.is_object() && object_.contains(key)) colourCodes(object_[key], rgb);
         if (ImGui::ColorEdit3(label, rgb, ImGuiColorEditFlags_NoInputs)) edit(key, json(colourHex(rgb)));
     }
-    void point(const char* key, const char* label, double lo = -10, double hi = 10) {
+    // An [x, y] point of a painted colormap.
+    void point(const char* key, const char* label) {
         if (!object_.is_object() || !object_.contains(key) || !object_[key].is_array() || object_[key].size() != 2)
             return;
+        const ParamInfo& c = pattern_members::kCoordinate;
         float v[2] = {object_[key][0].get<float>(), object_[key][1].get<float>()};
-        if (ImGui::DragFloat2(label, v, 0.005f, float(lo), float(hi), "%.3f"))
+        if (ImGui::DragFloat2(label, v, 0.005f, float(c.min), float(c.max), "%.3f", ImGuiSliderFlags_AlwaysClamp))
             edit(key, json::array({double(v[0]), double(v[1])}));
     }
     void text(const char* key, const char* label) {
@@ -146,29 +158,27 @@ void componentsEditor(const json& components, const std::string& pointer, std::v
         if (ImGui::BeginCombo("shape", shape.c_str())) {
             for (const char* s : {"lowpass", "ring", "bilobe"})
                 if (ImGui::Selectable(s, shape == s) && shape != s) {
-                    json next = std::string(s) == "lowpass" ? json{{"shape", s}, {"cutoff", 8.0}}
-                                                            : json{{"shape", s}, {"frequency", 12.0}, {"bandwidth", 3.0}};
-                    if (std::string(s) == "bilobe") next["orientation"] = 0.0;
+                    json next = std::string(s) == "lowpass" ? json{{"shape", s}, {m::kCutoff.name, m::kCutoff.typical()}}
+                                                            : ringComponent(s);
                     if (c.contains("weight")) next["weight"] = c["weight"];
                     edits.push_back({at, next});
                 }
             ImGui::EndCombo();
         }
         if (shape == "lowpass") {
-            f.number("cutoff", "cutoff", 8, 1e-3, 2048, "%.2f", "cycles per example period");
+            f.number(m::kCutoff, "%.2f");
         } else {
-            f.number("frequency", "frequency", 8, 0.0, 2048, "%.2f", "cycles per example period");
-            f.number("bandwidth", "bandwidth", 2, 0.01, 1024, "%.2f");
-            if (shape == "bilobe") f.number("orientation", "orientation", 0, -180, 180, "%.1f°");
+            f.number(m::kFrequency, "%.2f");
+            f.number(m::kBandwidth, "%.2f");
+            if (shape == "bilobe") f.number(m::kOrientation, "%.1f°");
         }
-        f.number("weight", "weight", 1, 0, 100, "%.3f", "powers of the components add");
+        f.number(m::kWeight, "%.3f");
         if (components.size() > 1 && ImGui::SmallButton("remove component")) edits.push_back({at, nullptr, true});
         ImGui::Separator();
         ImGui::PopID();
     }
     if (ImGui::SmallButton("add component"))
-        edits.push_back({pointer + "/" + std::to_string(components.size()),
-                         json{{"shape", "ring"}, {"frequency", 12.0}, {"bandwidth", 3.0}}});
+        edits.push_back({pointer + "/" + std::to_string(components.size()), ringComponent("ring")});
 }
 
 void noiseEditor(const json& noise, const std::string& pointer, std::vector<JsonEdit>& edits) {
@@ -182,9 +192,9 @@ void noiseEditor(const json& noise, const std::string& pointer, std::vector<Json
         f.boolean("gaussianize", "gaussianize", true, "blend in Gaussian space, keep the histogram");
         return;
     }
-    f.powerOfTwo("size", "size", 256, 8, 4096, "example size");
-    f.number("mean", "mean", 0.5, 0, 1);
-    f.number("stddev", "stddev", 1.0 / 6.0, 0.001, 0.5);
+    f.powerOfTwo(m::kNoiseSize);
+    f.number(m::kNoiseMean);
+    f.number(m::kNoiseStddev);
     componentsEditor(noise.value("components", json::array()), pointer + "/components", edits);
 }
 
@@ -195,7 +205,7 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
     Fields f(colormap, pointer, edits);
     const std::string type = colormap.value("type", std::string());
     f.choice("transfer", "transfer", {"srgb", "linear"}, "srgb", "colours as sRGB codes (colour) or as data");
-    f.integer("resolution", "resolution", 256, 2, 1024, "table entries per side");
+    f.integer(m::kColormapResolution);
     if (previews.colormap && pointer == previews.colormapPointer) {
         const ImVec2 at = ImGui::GetCursorScreenPos();
         // The canvas image holds y = 1 in its top row (ColormapTable::toImage).
@@ -258,11 +268,9 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
                 g.point("max", "max");
                 g.point("center", "center");
                 g.point("point", "point");
-                if (s.contains("radius")) g.number("radius", "radius", 0.1, 0, 10);
-                if (s.contains("inner")) g.number("inner", "inner", 0.05, 0, 10);
-                if (s.contains("outer")) g.number("outer", "outer", 0.1, 0, 10);
-                if (s.contains("angle")) g.number("angle", "angle", 0, -360, 360, "%.1f°");
-                if (s.contains("width")) g.number("width", "width", 0.1, 0, 10);
+                for (const ParamInfo* p : {&m::kRadius, &m::kInner, &m::kOuter, &m::kWidth})
+                    if (s.contains(p->name)) g.number(*p, "%.3f");
+                if (s.contains("angle")) g.number(m::kAngle, "%.1f°");
                 if (ImGui::SmallButton("remove")) edits.push_back({at, nullptr, true});
                 ImGui::TreePop();
             }
@@ -270,7 +278,7 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
         }
     } else if (type == "phasor") {
         f.choice("profile", "profile", {"sine", "sawtooth", "square", "image"}, "sine");
-        if (colormap.value("profile", std::string()) == "square") f.number("duty", "duty", 0.5, 0, 1);
+        if (colormap.value("profile", std::string()) == "square") f.number(m::kDuty);
         const json& palette = colormap.value("palette", json::array());
         for (size_t i = 0; i < palette.size(); ++i) {
             ImGui::PushID(int(i));
@@ -299,14 +307,8 @@ void nodeEditor(const std::string& id, const json& node, const std::string& poin
         const char* help = p.description.c_str();
         const json fallback = p.fallback.is_null() ? p.sample : p.fallback;
         switch (p.type) {
-            case ParamType::Number:
-                f.number(p.name.c_str(), p.name.c_str(), fallback.is_number() ? fallback.get<double>() : p.min, p.min,
-                         p.max, "%.4g", help);
-                break;
-            case ParamType::Integer:
-                f.integer(p.name.c_str(), p.name.c_str(), fallback.is_number() ? fallback.get<long long>() : (long long)p.min,
-                          (long long)p.min, (long long)p.max, help);
-                break;
+            case ParamType::Number: f.number(p); break;
+            case ParamType::Integer: f.integer(p); break;
             case ParamType::Seed: f.seed(p.name.c_str(), p.name.c_str(), help); break;
             case ParamType::Boolean:
                 f.boolean(p.name.c_str(), p.name.c_str(), fallback.is_boolean() && fallback.get<bool>(), help);
@@ -356,7 +358,7 @@ std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& p
     expand(previews);
     if (ImGui::CollapsingHeader("Pattern", ImGuiTreeNodeFlags_DefaultOpen)) {
         header.seed("seed", "seed", "tile offsets and (unless a noise sets its own) the examples (Enter applies)");
-        header.number("scale", "scale", 1, 0.01, 64, "%.3f", "example texels per output pixel");
+        header.number(m::kScale, "%.3f");
         header.choice("offsets", "offsets", {"independent", "shared"}, "independent");
     }
     if (pattern.contains("nodes") && pattern["nodes"].is_object()) {
@@ -401,9 +403,9 @@ std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& p
     if (normalMap) expand(previews);
     if (normalMap && ImGui::CollapsingHeader("Normal map")) {
         Fields n(pattern["normal_map"], "/normal_map", edits);
-        n.number("amplitude", "amplitude", 0.25, 0.0001, 100, "%.4f", "RMS slope per axis");
-        n.number("roughness", "roughness", 0.1, 0.001, 10, "%.4f", "base Beckmann roughness");
-        n.number("specular", "specular", 0.05, 0, 1);
+        n.number(m::kAmplitude);
+        n.number(m::kRoughness);
+        n.number(m::kSpecular);
         n.colour("albedo", "albedo");
     }
     return edits;

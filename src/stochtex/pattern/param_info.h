@@ -1,0 +1,58 @@
+#pragma once
+// A parameter described once — its JSON name, type, meaning, default and
+// range — so that one entry drives the parsing and validation of a file,
+// the listing of `stochtex nodes`, the workbench's widgets and the
+// per-node benchmarks. Graph nodes (graph_nodes.h) and the members of a
+// pattern file (pattern_members.h) are tables of these.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "stochtex/pattern/json_reader.h"
+
+namespace stochtex {
+
+enum class ParamType {
+    Number,      // a finite number in [min, max]
+    Integer,     // an integer in [min, max]
+    Boolean,
+    Seed,        // an integer in [0, 2³² − 1]; unset: derived from the graph's seed and the node's id
+    Path,        // an image file, relative to the graph file's folder
+    Components,  // spectrum components, as a pattern file's noise (docs/PATTERNS.md)
+    Colormap,    // a COLORMAP object, as a pattern file's (docs/PATTERNS.md)
+    Curve,       // [[x, y], ...]: at least 2 points, x strictly increasing in [0, 1]
+    Choice,      // one of ParamInfo::choices (a string)
+};
+const char* paramTypeName(ParamType t);
+
+struct ParamInfo {
+    std::string name;
+    ParamType type;
+    std::string description;
+    nlohmann::json fallback;  // the default; null: required (or, for a seed, derived)
+    double min = 0, max = 0;  // Number and Integer
+    // For a required parameter: a typical value, used where a graph is built
+    // from the table alone (sampleNodeGraph). Null for paths (the caller's).
+    nlohmann::json sample = nullptr;
+    std::vector<std::string> choices = {};  // Choice
+    // Where a widget's drag ends when max is far beyond the useful values
+    // (frequencies go to 10⁴ cycles, a few hundred are typical); NaN: max.
+    // A typed value may still go up to max.
+    double dragMax = std::nan("");
+
+    bool required() const { return fallback.is_null(); }
+    // The default, or for a required parameter its sample (a number: min).
+    double typical() const;
+    // The top of a widget's drag range: dragMax, or max.
+    double dragTop() const { return std::isnan(dragMax) ? max : dragMax; }
+};
+
+// A Number or Integer parameter of `object`: its member `p.name` within
+// [p.min, p.max], or p's default when absent (InputError at the member when
+// it is out of range, or absent and required).
+double readNumber(const JsonReader& object, const ParamInfo& p);
+int readInteger(const JsonReader& object, const ParamInfo& p);
+
+}  // namespace stochtex
