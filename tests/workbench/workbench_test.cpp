@@ -179,6 +179,110 @@ TEST(WorkbenchEditors, EveryPresetAndNodeDrawsWithoutEdits) {
     ImGui::DestroyContext();
 }
 
+// A panel driven as a person would: the mouse placed and pressed frame by
+// frame (headless ImGui, no backend), the canvas found where it was drawn.
+class DrivenPanel {
+public:
+    DrivenPanel() {
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = ImVec2(400, 2000);
+        unsigned char* pixels = nullptr;
+        int w = 0, h = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    }
+    ~DrivenPanel() { ImGui::DestroyContext(); }
+
+    // One frame with the mouse at `at`, its left button held or not.
+    std::vector<JsonEdit> frame(const json& pattern, const EditorPreviews& previews, PaintBrush& brush, ImVec2 at,
+                                bool down) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.DeltaTime = 1.0f / 60;
+        io.MousePos = at;
+        io.MouseDown[0] = down;
+        ImGui::NewFrame();
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(400, 2000));
+        ImGui::Begin("panel");
+        std::vector<JsonEdit> edits = patternEditor(pattern, previews, brush);
+        ImGui::End();
+        ImGui::Render();
+        return edits;
+    }
+
+    // Where the last frame drew the image of `texture`: its bounding box.
+    static std::pair<ImVec2, ImVec2> imageRect(void* texture) {
+        ImVec2 lo(1e9f, 1e9f), hi(-1e9f, -1e9f);
+        const ImDrawData* data = ImGui::GetDrawData();
+        for (int n = 0; n < data->CmdListsCount; ++n) {
+            const ImDrawList* list = data->CmdLists[n];
+            for (const ImDrawCmd& cmd : list->CmdBuffer) {
+                if (cmd.TextureId != texture) continue;
+                for (unsigned k = 0; k < cmd.ElemCount; ++k) {
+                    const ImVec2 p = list->VtxBuffer[int(cmd.VtxOffset + list->IdxBuffer[int(cmd.IdxOffset + k)])].pos;
+                    lo = ImVec2(std::min(lo.x, p.x), std::min(lo.y, p.y));
+                    hi = ImVec2(std::max(hi.x, p.x), std::max(hi.y, p.y));
+                }
+            }
+        }
+        return {lo, hi};
+    }
+};
+
+// Clicking the painted colormap's canvas adds the brush's shape where the
+// click was (x right, y up), and the document takes the edit; the move tool
+// drags the shape under the cursor by the mouse's motion.
+TEST(WorkbenchEditors, ClickingTheCanvasPaintsAndDraggingMovesAShape) {
+    DrivenPanel panel;
+    WorkbenchDocument doc = WorkbenchDocument::preset("camouflage");
+    const size_t shapes = doc.json()["colormap"]["shapes"].size();
+    ASSERT_EQ(shapes, 4u);
+    EditorPreviews previews;
+    int canvasTexture = 1;
+    previews.colormap = &canvasTexture;
+    PaintBrush brush;
+
+    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, ImVec2(-10, -10), false).empty());
+    const auto [lo, hi] = DrivenPanel::imageRect(&canvasTexture);
+    ASSERT_NEAR(hi.x - lo.x, previews.canvasSize, 0.5f);
+    ASSERT_NEAR(hi.y - lo.y, previews.canvasSize, 0.5f);
+    // The canvas point (0.25, 0.75): a quarter from the left, a quarter from the top.
+    const ImVec2 at(lo.x + 0.25f * previews.canvasSize, lo.y + 0.25f * previews.canvasSize);
+    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, at, false).empty());  // hovering alone edits nothing
+    const std::vector<JsonEdit> painted = panel.frame(doc.json(), previews, brush, at, true);
+    ASSERT_EQ(painted.size(), 1u);
+    EXPECT_EQ(painted[0].pointer, "/colormap/shapes/4");
+    EXPECT_EQ(painted[0].value["shape"], "disc");
+    EXPECT_EQ(painted[0].value["colour"], colourHex(brush.colour));
+    EXPECT_NEAR(painted[0].value["radius"].get<double>(), brush.radius, 1e-6);
+    EXPECT_NEAR(painted[0].value["center"][0].get<double>(), 0.25, 0.5 / previews.canvasSize);
+    EXPECT_NEAR(painted[0].value["center"][1].get<double>(), 0.75, 0.5 / previews.canvasSize);
+    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, at, true).empty());  // held: one shape per click
+    doc.set(painted[0].pointer, painted[0].value);
+    const PatternSpec withDisc = doc.patternSpec();
+    ASSERT_EQ(withDisc.colormap.painted.shapes.size(), 5u);
+    EXPECT_NEAR(withDisc.colormap.painted.shapes[4].a[0], 0.25, 0.5 / previews.canvasSize);
+    panel.frame(doc.json(), previews, brush, at, false);  // released
+
+    // The move tool: press on the disc at (0.9, 0.1) (shape 3, not the new one), drag by (−20, −10) pixels.
+    brush.shape = 3;
+    previews.painted = &withDisc.colormap.painted;
+    const ImVec2 on(lo.x + 0.9f * previews.canvasSize, lo.y + 0.9f * previews.canvasSize);
+    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, on, false).empty());
+    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, on, true).empty());
+    EXPECT_EQ(brush.moving, 3);
+    const std::vector<JsonEdit> moved =
+        panel.frame(doc.json(), previews, brush, ImVec2(on.x - 20, on.y - 10), true);
+    ASSERT_EQ(moved.size(), 1u);
+    EXPECT_EQ(moved[0].pointer, "/colormap/shapes/3");
+    EXPECT_NEAR(moved[0].value["center"][0].get<double>(), 0.9 - 20 / previews.canvasSize, 1e-4);
+    EXPECT_NEAR(moved[0].value["center"][1].get<double>(), 0.1 + 10 / previews.canvasSize, 1e-4);
+    EXPECT_NEAR(moved[0].value["radius"].get<double>(), 0.28, 1e-9);
+    panel.frame(doc.json(), previews, brush, on, false);
+    EXPECT_EQ(brush.moving, -1);  // released: nothing held
+}
+
 TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {
     const json script = json::parse(R"([
         {"frame": 2, "zoom": 2, "at": [10, 20]}, {"filter": "paper"},
