@@ -502,6 +502,17 @@ JSON
   d=$("$compare" "$out/wbt.png" "$out/wbt_ref.png") || { fail "workbench frame: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench frame vs shadertoy: $d (want mean <= 0.5, flipped >= 10)"
 
+  # Side by side halves the program's picture: the program runs on at the new
+  # size instead of starting again (its grey is iFrame; a restart at frame 10
+  # and again at 20 would show iFrame 10, not 30).
+  mkdir -p "$work/iframe"
+  printf 'void mainImage(out vec4 c, in vec2 p) { c = vec4(vec3(float(iFrame) / 255.0), 1.0); }\n' >"$work/iframe/image.glsl"
+  printf '[{"frame": 10, "mode": "side-by-side"}, {"frame": 20, "mode": "texture"}, {"frame": 31, "pause": true}]' >"$work/resize.json"
+  expect_ok "workbench program through a resize" "$out/wbr.png" -- "${xvfb[@]}" "$bin" view --shadertoy "$work/iframe" --size 96,80 --frames 33 --script "$work/resize.json" --screenshot "$out/wbr.png"
+  expect_ok "shadertoy iFrame 30" "$out/wbr_ref.png" -- "$bin" shadertoy "$work/iframe" --size 96,80 --frames 31 -o "$out/wbr_ref.png"
+  d=$("$compare" "$out/wbr.png" "$out/wbr_ref.png") || { fail "workbench resize: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5) }' || fail "workbench program restarted on a resize: $d (want mean <= 0.5)"
+
   # A pattern's spectrum view is the spectrum study of the frame `render --gpu`
   # writes (an oblique pattern, so a frame analysed upside down would show
   # its spectrum mirrored); the sphere is the one `scene` draws.

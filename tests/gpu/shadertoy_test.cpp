@@ -107,6 +107,34 @@ TEST_F(Shadertoy, BufferFeedbackCountsFramesAndFramesReadAsAsked) {
     expectPixel(host.pixel("buffer_a", 0, 0), {1, 0, 0, 0}, 0, "after reset");
 }
 
+// A resized program runs on: the frame count and the buffers' content are
+// kept (the counter's value is uniform, so stretching keeps it exactly), and
+// iResolution is the new size. A refused size changes nothing.
+TEST_F(Shadertoy, ResizingKeepsTheFrameAndTheBuffers) {
+    write("p/a.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        fragColor = texelFetch(iChannel0, ivec2(fragCoord), 0) + vec4(1.0, 0.0, 0.0, 0.0);
+    })");
+    write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        fragColor = vec4(texelFetch(iChannel0, ivec2(fragCoord), 0).x, iResolution.xy, float(iFrame));
+    })");
+    const std::string manifest = write("p/shadertoy.json", R"({"name": "counter", "passes": {
+        "buffer_a": {"code": "a.glsl", "channels": [{"type": "buffer", "buffer": "a"}]},
+        "image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "a"}]}}})");
+    ShadertoyHost host(loadShadertoy(manifest), *context_, small(16, 8));
+    for (int frame = 0; frame < 5; ++frame) host.renderFrame();
+    host.resize(24, 20);
+    EXPECT_EQ(host.frame(), 5);
+    EXPECT_EQ(host.settings().width, 24);
+    EXPECT_EQ(host.image().width(), 24);
+    host.renderFrame();
+    for (const auto& [x, y] : {std::pair{0, 0}, std::pair{23, 19}, std::pair{11, 7}})
+        expectPixel(host.pixel("image", x, y), {6, 24, 20, 5}, 0, "after the resize");
+    EXPECT_NE(error([&] { host.resize(0, 20); }).find("width"), std::string::npos);
+    EXPECT_EQ(host.settings().width, 24);
+    host.renderFrame();
+    expectPixel(host.pixel("image", 23, 19), {7, 24, 20, 6}, 0, "after a refused resize");
+}
+
 // Channel filters and wraps on a 4×1 image of known texels (vflip off):
 // nearest and linear between texels, repeat and clamp outside [0, 1].
 TEST_F(Shadertoy, ChannelFilterAndWrapSampleAsAsked) {

@@ -387,6 +387,42 @@ void ShadertoyHost::reset(int instance) {
     m.clearTargets();
 }
 
+void ShadertoyHost::resize(int width, int height) {
+    Impl& m = *impl_;
+    if (width == m.settings.width && height == m.settings.height) return;
+    ShadertoySettings next = m.settings;
+    next.width = width;
+    next.height = height;
+    validateShadertoySettings(next);
+    checkShadertoyMemory(m.spec, next);
+    const ShadertoySettings before = m.settings;
+    std::vector<std::vector<RenderTarget>> resized;
+    m.settings = next;  // newTarget's size
+    try {
+        for (const Impl::Pass& p : m.passes) {
+            resized.emplace_back();
+            for (size_t t = 0; t < p.targets.size(); ++t) resized.back().push_back(m.newTarget(p.mipmaps));
+        }
+    } catch (...) {
+        m.settings = before;
+        throw;
+    }
+    for (size_t i = 0; i < m.passes.size(); ++i) {
+        Impl::Pass& p = m.passes[i];
+        for (size_t t = 0; t < p.targets.size(); ++t) {
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, p.targets[t].framebuffer());
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resized[i][t].framebuffer());
+            glBlitFramebuffer(0, 0, before.width, before.height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+            if (p.mipmaps) {
+                glBindTexture(GL_TEXTURE_2D, resized[i][t].texture());
+                glGenerateMipmap(GL_TEXTURE_2D);
+            }
+        }
+        p.targets = std::move(resized[i]);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 void ShadertoyHost::renderFrame() {
     Impl& m = *impl_;
     for (Impl::Pass& p : m.passes) p.renderedThisFrame = false;

@@ -63,6 +63,12 @@ public:
     // uniform (ShadertoySpec::instanceUniform) set to `instance`.
     void reset(int instance = 0);
     int instance() const;
+    // Goes on at another size, as a browser's canvas resized on ShaderToy:
+    // the frame count, time, keys, mouse and instance kept, every buffer's
+    // content stretched onto the new size (linear), iResolution the new one.
+    // InputError naming width or height (the settings' checks and the
+    // memory cap), and then nothing changed.
+    void resize(int width, int height);
     // Renders the next frame (every pass in order); frame() then counts it.
     void renderFrame();
     // Frames rendered since reset; the next one is iFrame = frame().

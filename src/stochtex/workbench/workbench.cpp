@@ -454,6 +454,16 @@ private:
     }
 
     GLuint drawProgramFrame(int w, int h) {
+        // A new picture size (Tab, side by side, the window resized): the program runs on at it.
+        if (host_ && !hostStale_ && !hostFailed_ && (host_->settings().width != w || host_->settings().height != h)) {
+            try {
+                host_->resize(w, h);
+                viewChanged();
+            } catch (const std::exception& e) {
+                error_ = e.what();
+                hostFailed_ = true;
+            }
+        }
         if (!host_ || hostStale_ || host_->settings().width != w || host_->settings().height != h) {
             if (hostFailed_ && host_) return host_->frameTexture();  // the last good one, until the next reload
             if (hostFailed_) return 0;
