@@ -134,8 +134,8 @@ public:
         loadDocument();
         // What the first frame needs, built now: a program that does not
         // compile or a pattern the GPU cannot draw fails the run here.
-        windowWidth_ = camera_.view.width + panel;
-        windowHeight_ = camera_.view.height;
+        context_->framebufferSize(windowWidth_, windowHeight_);
+        pixelScale_ = std::max(1, windowWidth_) / float(camera_.view.width + panel);
         if (isShadertoy())
             buildHost(textureRect().width, textureRect().height);
         else
@@ -174,6 +174,8 @@ public:
         while (!context_->shouldClose() && !quit_ && (options_.frames == 0 || frame_ < options_.frames)) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
+            const float scale = ImGui::GetIO().DisplayFramebufferScale.x;
+            pixelScale_ = scale > 0 && std::isfinite(scale) ? scale : 1.0f;
             ImGui::NewFrame();
             while (nextStep < options_.script.size() && options_.script[nextStep].frame <= frame_)
                 runStep(options_.script[nextStep++]);
@@ -216,7 +218,10 @@ private:
     bool isLastFrame() const { return options_.frames > 0 && frame_ + 1 == options_.frames; }
     bool isShadertoy() const { return doc_.kind() == WorkbenchDocument::Kind::Shadertoy; }
     bool isScene() const { return view_ == WorkbenchView::Sphere || view_ == WorkbenchView::Torus; }
-    int panelWidth() const { return showPanel_ ? kWorkbenchPanelWidth : 0; }
+    // The panel's width in framebuffer pixels: ImGui lays it out in window
+    // coordinates, which a HiDPI screen scales by pixelScale_ (GLFW's
+    // framebuffer / window size) into pixels, where the picture is drawn.
+    int panelWidth() const { return showPanel_ ? int(std::lround(kWorkbenchPanelWidth * pixelScale_)) : 0; }
     bool analysing() const { return mode_ != WorkbenchMode::Texture; }
 
     // An interactive action: a failure is shown in the panel, the session goes on.
@@ -689,7 +694,8 @@ private:
     void handleInput() {
         ImGuiIO& io = ImGui::GetIO();
         const DisplayRect pr = pictureRect(), tr = textureRect();
-        const double px = io.MousePos.x - pr.x, py = io.MousePos.y;  // picture pixels, rows down
+        // Picture pixels, rows down (ImGui's mouse is in window coordinates).
+        const double px = io.MousePos.x * pixelScale_ - pr.x, py = io.MousePos.y * pixelScale_;
         const bool overPicture = px >= 0 && py >= 0 && px < pr.width && py < pr.height;
         // A point of the texture: side by side, the analysis half maps onto it.
         const double tx = px >= tr.width ? px - tr.width : px;
@@ -699,7 +705,7 @@ private:
                 if (io.KeyCtrl)
                     split_ = float(std::clamp(px / pr.width, 0.0, 1.0));
                 else if (!isShadertoy())
-                    pan(io.MouseDelta.x, io.MouseDelta.y);
+                    pan(io.MouseDelta.x * pixelScale_, io.MouseDelta.y * pixelScale_);
             }
             if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) setPick(tx, py);
             if (isShadertoy()) {
@@ -769,13 +775,14 @@ private:
         if (mode_ == WorkbenchMode::Split) {
             // The split line, over the picture (after the screenshot was taken).
             const DisplayRect pr = pictureRect();
-            const float x = float(pr.x) + split_ * float(pr.width);
-            ImGui::GetForegroundDrawList()->AddLine(ImVec2(x, 0), ImVec2(x, float(pr.height)), IM_COL32(255, 255, 255, 160));
+            const float x = (float(pr.x) + split_ * float(pr.width)) / pixelScale_;
+            ImGui::GetForegroundDrawList()->AddLine(ImVec2(x, 0), ImVec2(x, float(pr.height) / pixelScale_),
+                                                    IM_COL32(255, 255, 255, 160));
         }
         if (showHelp_) drawHelp();
         if (!showPanel_) return;
         ImGui::SetNextWindowPos(ImVec2(0, 0));
-        ImGui::SetNextWindowSize(ImVec2(float(kWorkbenchPanelWidth), float(windowHeight_)));
+        ImGui::SetNextWindowSize(ImVec2(float(kWorkbenchPanelWidth), float(windowHeight_) / pixelScale_));
         ImGui::Begin("stochtex", nullptr,
                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                          ImGuiWindowFlags_NoTitleBar);
@@ -876,7 +883,7 @@ private:
     }
 
     void drawHelp() {
-        ImGui::SetNextWindowPos(ImVec2(float(panelWidth() + 20), 20), ImGuiCond_Appearing);
+        ImGui::SetNextWindowPos(ImVec2(float(panelWidth()) / pixelScale_ + 20, 20), ImGuiCond_Appearing);
         ImGui::Begin("Keys (F1)", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize);
         if (ImGui::BeginTable("keys", 2)) {
             auto rows = [](const auto& table) {
@@ -975,7 +982,8 @@ private:
     std::chrono::steady_clock::time_point recordingStart_;
     std::optional<WallClockFrames> recordingClock_;
     std::array<float, 4> mouse_{};
-    int windowWidth_ = 1, windowHeight_ = 1;
+    int windowWidth_ = 1, windowHeight_ = 1;  // the framebuffer's pixels
+    float pixelScale_ = 1;                     // framebuffer pixels per window coordinate (HiDPI: 2)
     std::array<int, 2> lastTextureSize_{0, 0};
     char saveAs_[256] = "edited.json";
 
