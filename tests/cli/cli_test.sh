@@ -487,6 +487,24 @@ JSON
   d=$("$compare" "$out/wb.png" "$out/wbp.png") || { fail "workbench: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 >= 5) }' || fail "workbench: the colour edit does not show: $d vs the preset"
 
+  # Undo and redo: a second colour, both edits undone, the first redone: the
+  # picture and the saved file are the first edit's again.
+  cat >"$work/undo.json" <<'JSON'
+[{"frame": 1, "zoom": 2, "at": [40, 30]},
+ {"frame": 2, "filter": "paper"},
+ {"frame": 3, "set": "/colormap/shapes/0/colour", "value": "#d02020"},
+ {"frame": 4, "set": "/colormap/shapes/0/colour", "value": "#2020d0"},
+ {"frame": 5, "undo": true}, {"undo": true}, {"frame": 6, "redo": true},
+ {"frame": 7, "save": "WORK/undone.json"}]
+JSON
+  sed -i "s|WORK|$work|" "$work/undo.json"
+  expect_ok "workbench undo and redo" "$out/wbu.png" -- "${xvfb[@]}" "$bin" view --preset camouflage --size 96,64 --scale 1.5 --frames 9 --script "$work/undo.json" --screenshot "$out/wbu.png"
+  grep -q '"#d02020"' "$work/undone.json" || fail "workbench undo: the saved pattern is not the first edit's"
+  d=$("$compare" "$out/wbu.png" "$out/wbr.png") || { fail "workbench undo: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5) }' || fail "workbench after undo and redo vs render of the first edit: $d (want mean <= 0.5)"
+  printf '[{"frame": 1, "undo": true}]' >"$work/undo0.json"
+  expect_bad "workbench undo with nothing to undo" "$out/wbu0.png" "script: nothing to undo" -- "${xvfb[@]}" "$bin" view --preset camouflage --frames 3 --script "$work/undo0.json" --screenshot "$out/wbu0.png"
+
   # A ShaderToy program with the spectrum view: paused after iFrame 120, the
   # picture is the spectrum study's figure of that frame, as `spectrum` writes
   # it. (A power spectrum is point-symmetric, so turning it over only mirrors
@@ -508,9 +526,9 @@ JSON
   mkdir -p "$work/iframe"
   printf 'void mainImage(out vec4 c, in vec2 p) { c = vec4(vec3(float(iFrame) / 255.0), 1.0); }\n' >"$work/iframe/image.glsl"
   printf '[{"frame": 10, "mode": "side-by-side"}, {"frame": 20, "mode": "texture"}, {"frame": 31, "pause": true}]' >"$work/resize.json"
-  expect_ok "workbench program through a resize" "$out/wbr.png" -- "${xvfb[@]}" "$bin" view --shadertoy "$work/iframe" --size 96,80 --frames 33 --script "$work/resize.json" --screenshot "$out/wbr.png"
-  expect_ok "shadertoy iFrame 30" "$out/wbr_ref.png" -- "$bin" shadertoy "$work/iframe" --size 96,80 --frames 31 -o "$out/wbr_ref.png"
-  d=$("$compare" "$out/wbr.png" "$out/wbr_ref.png") || { fail "workbench resize: compare failed"; return; }
+  expect_ok "workbench program through a resize" "$out/wbrs.png" -- "${xvfb[@]}" "$bin" view --shadertoy "$work/iframe" --size 96,80 --frames 33 --script "$work/resize.json" --screenshot "$out/wbrs.png"
+  expect_ok "shadertoy iFrame 30" "$out/wbrs_ref.png" -- "$bin" shadertoy "$work/iframe" --size 96,80 --frames 31 -o "$out/wbrs_ref.png"
+  d=$("$compare" "$out/wbrs.png" "$out/wbrs_ref.png") || { fail "workbench resize: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 <= 0.5) }' || fail "workbench program restarted on a resize: $d (want mean <= 0.5)"
 
   # A pattern's spectrum view is the spectrum study of the frame `render --gpu`

@@ -76,6 +76,64 @@ TEST(WorkbenchDocument, EditsAreKeptOnlyWhenThePatternStillParses) {
     EXPECT_EQ(d.json(), before);
 }
 
+// Undo and redo move between the marked states; a new edit forgets what
+// was undone; the history is capped; a reload is one more step.
+TEST(WorkbenchDocument, UndoAndRedoMoveBetweenCheckpoints) {
+    WorkbenchDocument doc = WorkbenchDocument::preset("camouflage");
+    const json original = doc.json();
+    const std::string colour = "/colormap/shapes/0/colour";
+    EXPECT_FALSE(doc.canUndo());
+    EXPECT_FALSE(doc.undo());
+    doc.checkpoint();
+    EXPECT_FALSE(doc.canUndo());  // the marked state is the current one: nothing to go back to
+    doc.set(colour, "#d02020");
+    doc.checkpoint();
+    doc.set(colour, "#2020d0");
+    doc.set("/seed", 99);  // the same gesture: one step with the colour
+    EXPECT_TRUE(doc.canUndo());
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.json()[json::json_pointer(colour)], "#d02020");
+    EXPECT_EQ(doc.json()["seed"], original["seed"]);
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.json(), original);
+    EXPECT_FALSE(doc.undo());
+    ASSERT_TRUE(doc.redo());
+    EXPECT_EQ(doc.json()[json::json_pointer(colour)], "#d02020");
+    ASSERT_TRUE(doc.redo());
+    EXPECT_EQ(doc.json()["seed"], 99);
+    EXPECT_FALSE(doc.redo());
+    // A new edit after an undo forgets the undone one.
+    ASSERT_TRUE(doc.undo());
+    doc.checkpoint();
+    doc.set(colour, "#20d020");
+    EXPECT_FALSE(doc.canRedo());
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.json()[json::json_pointer(colour)], "#d02020");
+
+    // At most kUndoDepth states.
+    for (size_t k = 0; k < WorkbenchDocument::kUndoDepth + 10; ++k) {
+        doc.checkpoint();
+        doc.set("/seed", int(k));
+    }
+    size_t undone = 0;
+    while (doc.undo()) ++undone;
+    EXPECT_EQ(undone, WorkbenchDocument::kUndoDepth);
+
+    // A reload keeps the history, and what was on screen is one undo away.
+    TempDir dir;
+    const fs::path file = dir.path / "p.json";
+    writeText(file, presetText("camouflage"));
+    WorkbenchDocument onDisk = WorkbenchDocument::patternFile(file.string());
+    onDisk.checkpoint();
+    onDisk.set(colour, "#d02020");
+    onDisk.reload();
+    EXPECT_EQ(onDisk.json()[json::json_pointer(colour)], original[json::json_pointer(colour)]);
+    ASSERT_TRUE(onDisk.undo());
+    EXPECT_EQ(onDisk.json()[json::json_pointer(colour)], "#d02020");
+    ASSERT_TRUE(onDisk.undo());
+    EXPECT_EQ(onDisk.json(), original);
+}
+
 TEST(WorkbenchDocument, SavingKeepsImagePathsValidAndReloadFollowsTheFile) {
     TempDir dir;
     fs::create_directories(dir.path / "a");

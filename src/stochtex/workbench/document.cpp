@@ -1,5 +1,7 @@
 #include "stochtex/workbench/document.h"
 
+#include <algorithm>
+#include <functional>
 #include <system_error>
 
 #include "stochtex/core/atomic_file.h"
@@ -168,7 +170,60 @@ void WorkbenchDocument::reload() {
     WorkbenchDocument next = kind_ == Kind::Shadertoy ? shadertoy(path_.string())
                              : path_.empty()           ? preset(presetName_)
                                                        : patternFile(path_.string());
+    if (kind_ == Kind::Pattern) {
+        checkpoint();  // what was on screen stays one undo away
+        next.undo_ = std::move(undo_);
+    }
     *this = std::move(next);
+}
+
+void WorkbenchDocument::checkpoint() {
+    if (kind_ != Kind::Pattern) return;
+    if (undo_.empty() || undo_.back() != json_) undo_.push_back(json_);
+    if (undo_.size() > kUndoDepth) undo_.erase(undo_.begin());
+    redo_.clear();
+}
+
+namespace {
+
+// Moves from the current pattern to the nearest different state of `from`,
+// pushing the current one on `to`; false when there is none.
+bool step(std::vector<nlohmann::json>& from, std::vector<nlohmann::json>& to, const nlohmann::json& current,
+          const std::function<void(const nlohmann::json&)>& apply) {
+    while (!from.empty() && from.back() == current) from.pop_back();
+    if (from.empty()) return false;
+    nlohmann::json state = std::move(from.back());
+    from.pop_back();
+    try {
+        apply(state);
+    } catch (...) {
+        from.push_back(std::move(state));  // kept: the file it needs may come back
+        throw;
+    }
+    to.push_back(current);
+    return true;
+}
+
+}  // namespace
+
+bool WorkbenchDocument::undo() {
+    if (kind_ != Kind::Pattern) return false;
+    const nlohmann::json current = json_;
+    return step(undo_, redo_, current, [this](const nlohmann::json& j) { replace(j); });
+}
+
+bool WorkbenchDocument::redo() {
+    if (kind_ != Kind::Pattern) return false;
+    const nlohmann::json current = json_;
+    return step(redo_, undo_, current, [this](const nlohmann::json& j) { replace(j); });
+}
+
+bool WorkbenchDocument::canUndo() const {
+    return std::any_of(undo_.begin(), undo_.end(), [this](const nlohmann::json& j) { return j != json_; });
+}
+
+bool WorkbenchDocument::canRedo() const {
+    return std::any_of(redo_.begin(), redo_.end(), [this](const nlohmann::json& j) { return j != json_; });
 }
 
 }  // namespace stochtex

@@ -49,6 +49,20 @@ public:
     // Edits since loading (or the last save).
     bool edited() const { return edited_; }
 
+    // Undo history of a pattern: checkpoint() marks the pattern as it is now
+    // as a state to come back to (the workbench marks one per gesture, so a
+    // slider dragged over many frames is one step) and forgets what was
+    // undone; undo() and redo() move between the marked states, skipping
+    // any equal to the current pattern, and say whether they moved. A
+    // state that no longer parses (an image it names is gone) is refused
+    // as set() refuses an edit. At most kUndoDepth states are kept.
+    static constexpr size_t kUndoDepth = 256;
+    void checkpoint();
+    bool undo();
+    bool redo();
+    bool canUndo() const;
+    bool canRedo() const;
+
     // Writes the pattern as JSON (atomically); a file's relative paths stay
     // valid only beside the file, so paths are written absolute when the
     // target is in another folder. Clears edited() when it is the source file.
@@ -60,8 +74,9 @@ public:
     const std::vector<std::filesystem::path>& watchedFiles() const { return watched_; }
     // Whether a watched file changed on disk since the last call (or load).
     bool changedOnDisk();
-    // Reads the document again from disk (edits are dropped). InputError as
-    // when it was opened; the document is unchanged then.
+    // Reads the document again from disk (edits are dropped, and undo comes
+    // back to them). InputError as when it was opened; the document is
+    // unchanged then.
     void reload();
 
 private:
@@ -73,6 +88,7 @@ private:
     nlohmann::json json_;
     ShadertoySpec shadertoy_;
     bool edited_ = false;
+    std::vector<nlohmann::json> undo_, redo_;
     std::vector<std::filesystem::path> watched_;
     std::vector<std::filesystem::file_time_type> stamps_;
 };

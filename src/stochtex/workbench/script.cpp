@@ -16,7 +16,7 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
     for (size_t i = 0; i < n; ++i) {
         const JsonReader s = r.at(i);
         s.expectObject({"frame", "zoom", "at", "pan", "filter", "aniso", "set", "value", "mode", "analysis", "view",
-                        "tilt", "pick", "pause", "screenshot", "save", "record", "stop_recording", "quit"});
+                        "tilt", "pick", "pause", "screenshot", "save", "record", "stop_recording", "undo", "redo", "quit"});
         WorkbenchStep step;
         if (s.has("frame")) {
             const int f = s.integer("frame", 0, 0, 1000000);
@@ -57,6 +57,8 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
                 ++actions, step.action = action, step.text = f->string();
                 if (step.text.empty()) f->fail("needs a file name");
             }
+        if (s.has("undo")) ++actions, step.action = A::Undo;
+        if (s.has("redo")) ++actions, step.action = A::Redo;
         if (s.has("stop_recording")) ++actions, step.action = A::StopRecording;
         if (s.has("quit")) ++actions, step.action = A::Quit;
         if (actions != 1) s.fail(actions == 0 ? "a step needs one action (zoom, pan, filter, set, screenshot, …)"

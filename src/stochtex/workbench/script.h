@@ -8,6 +8,7 @@
 //    {"frame": 3, "pan": [10, -4]},                   // drag by pixels
 //    {"frame": 4, "filter": "paper"}, {"aniso": 4},   // filter mode, anisotropy
 //    {"frame": 5, "set": "/colormap/background", "value": "#203040"},  // an edit
+//    {"undo": true}, {"redo": true},                  // Ctrl+Z, Ctrl+Y
 //    {"mode": "split"}, {"analysis": "flow"}, {"pick": [40, 30]},
 //    {"view": "plane"}, {"tilt": 60}, {"pause": true},
 //    {"screenshot": "a.png"}, {"save": "edited.json"},
@@ -42,8 +43,8 @@ inline const EnumNames<WorkbenchView> kWorkbenchViewNames{{"zoom", WorkbenchView
 
 struct WorkbenchStep {
     enum class Action {
-        Zoom, Pan, Filter, Aniso, Set, Mode, Analysis, View, Tilt, Pick, Pause, Screenshot, Save, Record,
-        StopRecording, Quit
+        Zoom, Pan, Filter, Aniso, Set, Undo, Redo, Mode, Analysis, View, Tilt, Pick, Pause, Screenshot, Save,
+        Record, StopRecording, Quit
     };
     int frame = 0;
     Action action = Action::Quit;

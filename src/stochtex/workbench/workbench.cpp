@@ -72,6 +72,7 @@ constexpr KeyHelp kPatternKeys[] = {
     {"D", "footprints from the camera or the rasterizer"},
     {"M", "mode: texture, analysis, side by side, split, overlay"},
     {"A", "analysis: spectrum, flow, flicker, correlation"},
+    {"Ctrl + Z / Ctrl + Y", "undo / redo an edit (a drag is one step)"},
 };
 constexpr KeyHelp kCommonKeys[] = {
     {"Tab", "show or hide the panel"},
@@ -319,6 +320,28 @@ private:
         } catch (const InputError& x) {
             error_ = x.what();
         }
+    }
+
+    // The panel's edits of one frame. A gesture — a slider or a shape
+    // dragged over many frames, or one click — is one undo step: the state
+    // before it is marked when its first edit comes.
+    void applyGesture(const std::vector<JsonEdit>& edits) {
+        if (!edits.empty() && !gestureOpen_) {
+            doc_.checkpoint();
+            gestureOpen_ = true;
+        }
+        for (const JsonEdit& e : edits) applyEdit(e);
+        gestureOpen_ = gestureOpen_ && (ImGui::IsAnyItemActive() || ImGui::IsMouseDown(ImGuiMouseButton_Left));
+    }
+    void undo() {
+        guarded([&] {
+            if (doc_.undo()) needsRebuild_ = true, notice_ = "undone";
+        });
+    }
+    void redo() {
+        guarded([&] {
+            if (doc_.redo()) needsRebuild_ = true, notice_ = "redone";
+        });
     }
 
     void save(const std::string& path) {
@@ -662,8 +685,9 @@ private:
 
     void runStep(const WorkbenchStep& s) {
         using A = WorkbenchStep::Action;
-        if ((s.action == A::Set || s.action == A::Save) && isShadertoy())
-            throw InputError("script: a ShaderToy program is edited in its files, not by \"set\" or \"save\"");
+        if ((s.action == A::Set || s.action == A::Save || s.action == A::Undo || s.action == A::Redo) && isShadertoy())
+            throw InputError("script: a ShaderToy program is edited in its files, not by \"set\", \"undo\", "
+                             "\"redo\" or \"save\"");
         switch (s.action) {
             case A::Zoom: zoomAt(s.amount, s.x, s.y); break;
             case A::Pan: pan(s.x, s.y); break;
@@ -673,6 +697,7 @@ private:
             case A::Set:
                 // The panel's path: the edit, then the rebuild. A script has no
                 // one to read the panel: a refused edit fails the run.
+                doc_.checkpoint();
                 applyEdit({s.text, s.value});
                 if (!error_.empty()) throw InputError(error_);
                 rebuild();
@@ -687,6 +712,13 @@ private:
             case A::Save: save(s.text); break;
             case A::Record: startRecording(s.text); break;
             case A::StopRecording: stopRecording(); break;
+            case A::Undo:
+            case A::Redo:
+                if (!(s.action == A::Undo ? doc_.undo() : doc_.redo()))
+                    throw InputError(std::string("script: nothing to ") + (s.action == A::Undo ? "undo" : "redo"));
+                rebuild();
+                if (!error_.empty()) throw InputError(error_);
+                break;
             case A::Quit: quit_ = true; break;
         }
     }
@@ -729,6 +761,10 @@ private:
         if (pressed(GLFW_KEY_F4)) paused_ = !paused_;
         if (pressed(GLFW_KEY_F5)) reloadDocument();
         if (io.KeyCtrl && pressed(GLFW_KEY_S)) saveDefault();
+        if (io.KeyCtrl && !isShadertoy()) {
+            if (pressed(GLFW_KEY_Z)) io.KeyShift ? redo() : undo();
+            if (pressed(GLFW_KEY_Y)) redo();
+        }
         if (isShadertoy()) {
             if (!host_) return;
             // Every other key goes to the program's keyboard texture.
@@ -809,7 +845,14 @@ private:
             for (int k = 0; k < 2; ++k) previews.example[k] = id(example_[k]), previews.spectrum[k] = id(exampleSpectrum_[k]);
             ImGui::Checkbox("unfold every section", &expandAll_);
             previews.expandAll = expandAll_;
-            for (const JsonEdit& e : patternEditor(doc_.json(), previews, brush_)) applyEdit(e);
+            applyGesture(patternEditor(doc_.json(), previews, brush_));
+            ImGui::BeginDisabled(!doc_.canUndo());
+            if (ImGui::Button("Undo (Ctrl+Z)")) undo();
+            ImGui::EndDisabled();
+            ImGui::SameLine();
+            ImGui::BeginDisabled(!doc_.canRedo());
+            if (ImGui::Button("Redo (Ctrl+Y)")) redo();
+            ImGui::EndDisabled();
             if (ImGui::Button("Save JSON (Ctrl+S)")) guarded([&] { saveDefault(); });
             ImGui::SameLine();
             ImGui::SetNextItemWidth(160);
@@ -964,6 +1007,7 @@ private:
     DisplayImage canvas_, example_[2], exampleSpectrum_[2];
     PaintBrush brush_;
     bool needsRebuild_ = false;
+    bool gestureOpen_ = false;  // the panel's edits since the mouse or a widget was taken up
     std::chrono::steady_clock::time_point lastBuild_{};
 
     // What is shown.
