@@ -114,18 +114,22 @@ TEST(MarbleSource, IsDeterministicForAnyThreadCountAndSeededPerInstance) {
 }
 
 TEST(MarbleSource, StretchFormulaMatchesTheKernelLevel) {
-    // marbleLevel is the kernel's l; its finite difference gives the stretch
-    // the study reports (1 − x ln 2 ∂l/∂x).
+    // marbleLevelSlope is ∂l/∂x of the kernel's l, whose finite difference
+    // it must match (the study's stretch, 1 − x ln 2 ∂l/∂x, rests on it).
     MarbleParams p;
     p.levelAmplitude = 1.5;
     p.levelPeriod = 192;
+    p.levelRate = 0.25;
+    const kernel::Marble m = kernelMarble(p, 0);
+    const auto level = [&](double x, double t) { return double(kernel::marbleLevel(m, kernel::vec2(float(x), 0.0f), float(t))); };
     for (double x : {-100.0, -37.5, 0.0, 12.0, 90.0}) {
-        const double h = 1e-4;
-        const double dl = (marbleLevel(p, x + h, 0) - marbleLevel(p, x - h, 0)) / (2 * h);
-        const double q = 2 * 3.14159265358979 / p.levelPeriod;
-        EXPECT_NEAR(dl, -p.levelAmplitude * q * std::sin(q * x), 1e-6) << x;
+        // h = 0.5: the central difference's truncation, n q³ h² / 6 ≈ 2e-6, and
+        // float rounding of l, 2⁻²³ · 4 / (2h) ≈ 5e-7, both under the tolerance.
+        const double h = 0.5;
+        EXPECT_NEAR((level(x + h, 0) - level(x - h, 0)) / (2 * h), marbleLevelSlope(p, x), 1e-5) << x;
     }
-    EXPECT_DOUBLE_EQ(marbleLevel(p, 0, 2), p.level + p.levelAmplitude);
+    EXPECT_NEAR(level(0, 2), p.level + p.levelAmplitude + 2 * p.levelRate, 1e-6);
+    EXPECT_NEAR(level(96, 0), p.level - p.levelAmplitude, 1e-5);  // half a period: the cosine's trough
 }
 
 TEST(MarbleSource, RefusesParametersAndWindowsOutOfRange) {

@@ -90,8 +90,7 @@ void validateMarbleStudy(const MarbleStudyOptions& o) {
 }
 
 double marbleAnisotropy(const MarbleParams& p, double x, double y) {
-    const double q = 2 * std::numbers::pi / p.levelPeriod;
-    const double dl = -p.levelAmplitude * q * std::sin(q * x);  // ∂l/∂x
+    const double dl = marbleLevelSlope(p, x);
     const double s = 1 - x * std::numbers::ln2 * dl, g = -y * std::numbers::ln2 * dl;
     // Singular values of [[s, 0], [g, 1]]: from the trace and determinant of JᵀJ.
     const double t = s * s + g * g + 1, d = s * s;

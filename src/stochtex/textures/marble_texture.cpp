@@ -23,21 +23,6 @@ void checkRange(const char* name, double v, double lo, double hi) {
                                               formatValue(v));
 }
 
-kernel::Marble kernelMarble(const MarbleParams& p, int instance) {
-    const double a = 2 * std::numbers::pi / p.bandPeriod, angle = p.bandAngle * std::numbers::pi / 180;
-    const int scaling = p.scaling == MarbleScaling::Continuous ? kernel::kMarbleContinuous
-                        : p.scaling == MarbleScaling::Blended  ? kernel::kMarbleBlended
-                                                               : kernel::kMarbleBlendedCorrected;
-    return {kernel::vec2(float(a * std::cos(angle)), float(a * std::sin(angle))),
-            float(p.distortion),
-            float(p.level),
-            float(p.levelAmplitude),
-            float(2 * std::numbers::pi / p.levelPeriod),
-            float(p.levelRate),
-            scaling,
-            deriveSeed(p.seed, uint32_t(instance))};
-}
-
 int kernelLayer(MarbleLayer layer) {
     switch (layer) {
         case MarbleLayer::Marble: return kernel::kMarbleLayerMarble;
@@ -60,8 +45,24 @@ void validateMarbleParams(const MarbleParams& p) {
     checkRange("levelRate", p.levelRate, -100, 100);
 }
 
-double marbleLevel(const MarbleParams& p, double x, double time) {
-    return p.level + p.levelAmplitude * std::cos(2 * std::numbers::pi / p.levelPeriod * x) + p.levelRate * time;
+kernel::Marble kernelMarble(const MarbleParams& p, int instance) {
+    const double a = 2 * std::numbers::pi / p.bandPeriod, angle = p.bandAngle * std::numbers::pi / 180;
+    const int scaling = p.scaling == MarbleScaling::Continuous ? kernel::kMarbleContinuous
+                        : p.scaling == MarbleScaling::Blended  ? kernel::kMarbleBlended
+                                                               : kernel::kMarbleBlendedCorrected;
+    return {kernel::vec2(float(a * std::cos(angle)), float(a * std::sin(angle))),
+            float(p.distortion),
+            float(p.level),
+            float(p.levelAmplitude),
+            float(2 * std::numbers::pi / p.levelPeriod),
+            float(p.levelRate),
+            scaling,
+            deriveSeed(p.seed, uint32_t(instance))};
+}
+
+double marbleLevelSlope(const MarbleParams& p, double x) {
+    const double q = 2 * std::numbers::pi / p.levelPeriod;
+    return -p.levelAmplitude * q * std::sin(q * x);
 }
 
 MarbleSource::MarbleSource(const MarbleParams& params) : params_(params) { validateMarbleParams(params_); }

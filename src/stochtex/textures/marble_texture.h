@@ -9,6 +9,7 @@
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/image/image.h"
+#include "stochtex/kernel/marble.h"
 #include "stochtex/textures/texture_source.h"
 
 namespace stochtex {
@@ -53,8 +54,12 @@ struct MarbleParams {
 // InputError naming the parameter, before any work.
 void validateMarbleParams(const MarbleParams& p);
 
-// The exponent l at pixel x_x (from the origin) and time t, as the kernel computes it.
-double marbleLevel(const MarbleParams& p, double x, double time);
+// The parameters as the kernel takes them (kernel/marble.glsl), for instance i.
+kernel::Marble kernelMarble(const MarbleParams& p, int instance);
+// ∂l/∂x of the kernel's noise-scale exponent l = m + n cos(q x) + r t
+// (kernel::marbleLevel) at pixel x_x: the stretch of the scaling (the
+// marble study's anisotropy). l itself is only the kernel's.
+double marbleLevelSlope(const MarbleParams& p, double x);
 
 // The marble texture as a source (1 channel, values in [0, 1] except where
 // the corrected blend overshoots): instance i = the noises of seed
