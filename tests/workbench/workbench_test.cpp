@@ -15,6 +15,7 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/graph_nodes.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/workbench/document.h"
 #include "stochtex/workbench/editors.h"
@@ -209,7 +210,7 @@ TEST(WorkbenchEditors, EveryPresetAndNodeDrawsWithoutEdits) {
     EditorPreviews previews;
     int dummy = 1;
     previews.colormap = &dummy;  // any id: nothing is rendered
-    PaintBrush brush;
+    EditorState state;
     for (const json& pattern : patterns) {
         int vertices[2] = {0, 0};
         for (int frame = 0; frame < 4; ++frame) {
@@ -219,7 +220,7 @@ TEST(WorkbenchEditors, EveryPresetAndNodeDrawsWithoutEdits) {
             ImGui::SetNextWindowSize(ImVec2(400, 2000));
             ImGui::Begin("panel");
             std::vector<JsonEdit> edits;
-            EXPECT_NO_THROW(edits = patternEditor(pattern, previews, brush)) << pattern.value("name", "?");
+            EXPECT_NO_THROW(edits = patternEditor(pattern, previews, state)) << pattern.value("name", "?");
             EXPECT_TRUE(edits.empty()) << pattern.value("name", "?") << ": " << (edits.empty() ? "" : edits[0].pointer);
             ImGui::End();
             ImGui::Render();
@@ -253,7 +254,7 @@ public:
     ~DrivenPanel() { ImGui::DestroyContext(); }
 
     // One frame with the mouse at `at`, its left button held or not.
-    std::vector<JsonEdit> frame(const json& pattern, const EditorPreviews& previews, PaintBrush& brush, ImVec2 at,
+    std::vector<JsonEdit> frame(const json& pattern, const EditorPreviews& previews, EditorState& state, ImVec2 at,
                                 bool down) {
         ImGuiIO& io = ImGui::GetIO();
         io.DeltaTime = 1.0f / 60;
@@ -263,7 +264,7 @@ public:
         ImGui::SetNextWindowPos(ImVec2(0, 0));
         ImGui::SetNextWindowSize(ImVec2(400, 2000));
         ImGui::Begin("panel");
-        std::vector<JsonEdit> edits = patternEditor(pattern, previews, brush);
+        std::vector<JsonEdit> edits = patternEditor(pattern, previews, state);
         ImGui::End();
         ImGui::Render();
         return edits;
@@ -299,16 +300,17 @@ TEST(WorkbenchEditors, ClickingTheCanvasPaintsAndDraggingMovesAShape) {
     EditorPreviews previews;
     int canvasTexture = 1;
     previews.colormap = &canvasTexture;
-    PaintBrush brush;
+    EditorState state;
+    PaintBrush& brush = state.brush;
 
-    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, ImVec2(-10, -10), false).empty());
+    EXPECT_TRUE(panel.frame(doc.json(), previews, state, ImVec2(-10, -10), false).empty());
     const auto [lo, hi] = DrivenPanel::imageRect(&canvasTexture);
     ASSERT_NEAR(hi.x - lo.x, previews.canvasSize, 0.5f);
     ASSERT_NEAR(hi.y - lo.y, previews.canvasSize, 0.5f);
     // The canvas point (0.25, 0.75): a quarter from the left, a quarter from the top.
     const ImVec2 at(lo.x + 0.25f * previews.canvasSize, lo.y + 0.25f * previews.canvasSize);
-    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, at, false).empty());  // hovering alone edits nothing
-    const std::vector<JsonEdit> painted = panel.frame(doc.json(), previews, brush, at, true);
+    EXPECT_TRUE(panel.frame(doc.json(), previews, state, at, false).empty());  // hovering alone edits nothing
+    const std::vector<JsonEdit> painted = panel.frame(doc.json(), previews, state, at, true);
     ASSERT_EQ(painted.size(), 1u);
     EXPECT_EQ(painted[0].pointer, "/colormap/shapes/4");
     EXPECT_EQ(painted[0].value["shape"], "disc");
@@ -316,29 +318,73 @@ TEST(WorkbenchEditors, ClickingTheCanvasPaintsAndDraggingMovesAShape) {
     EXPECT_NEAR(painted[0].value["radius"].get<double>(), brush.radius, 1e-6);
     EXPECT_NEAR(painted[0].value["center"][0].get<double>(), 0.25, 0.5 / previews.canvasSize);
     EXPECT_NEAR(painted[0].value["center"][1].get<double>(), 0.75, 0.5 / previews.canvasSize);
-    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, at, true).empty());  // held: one shape per click
+    EXPECT_TRUE(panel.frame(doc.json(), previews, state, at, true).empty());  // held: one shape per click
     doc.set(painted[0].pointer, painted[0].value);
     const PatternSpec withDisc = doc.patternSpec();
     ASSERT_EQ(withDisc.colormap.painted.shapes.size(), 5u);
     EXPECT_NEAR(withDisc.colormap.painted.shapes[4].a[0], 0.25, 0.5 / previews.canvasSize);
-    panel.frame(doc.json(), previews, brush, at, false);  // released
+    panel.frame(doc.json(), previews, state, at, false);  // released
 
     // The move tool: press on the disc at (0.9, 0.1) (shape 3, not the new one), drag by (−20, −10) pixels.
     brush.shape = 3;
     previews.painted = &withDisc.colormap.painted;
     const ImVec2 on(lo.x + 0.9f * previews.canvasSize, lo.y + 0.9f * previews.canvasSize);
-    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, on, false).empty());
-    EXPECT_TRUE(panel.frame(doc.json(), previews, brush, on, true).empty());
+    EXPECT_TRUE(panel.frame(doc.json(), previews, state, on, false).empty());
+    EXPECT_TRUE(panel.frame(doc.json(), previews, state, on, true).empty());
     EXPECT_EQ(brush.moving, 3);
     const std::vector<JsonEdit> moved =
-        panel.frame(doc.json(), previews, brush, ImVec2(on.x - 20, on.y - 10), true);
+        panel.frame(doc.json(), previews, state, ImVec2(on.x - 20, on.y - 10), true);
     ASSERT_EQ(moved.size(), 1u);
     EXPECT_EQ(moved[0].pointer, "/colormap/shapes/3");
     EXPECT_NEAR(moved[0].value["center"][0].get<double>(), 0.9 - 20 / previews.canvasSize, 1e-4);
     EXPECT_NEAR(moved[0].value["center"][1].get<double>(), 0.1 + 10 / previews.canvasSize, 1e-4);
     EXPECT_NEAR(moved[0].value["radius"].get<double>(), 0.28, 1e-9);
-    panel.frame(doc.json(), previews, brush, on, false);
+    panel.frame(doc.json(), previews, state, on, false);
     EXPECT_EQ(brush.moving, -1);  // released: nothing held
+}
+
+// The graph panel's structure edits: a node of every type added to a graph
+// (its inputs fed by the first node that fits), taken by the document; the
+// output moved to a new colour node; a node another reads is kept.
+TEST(WorkbenchEditors, EveryNodeTypeCanBeAddedToAGraph) {
+    TempDir dir;
+    const fs::path image = dir.path / "exemplar.png";
+    Image texture(32, 32, 3);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x)
+            for (int c = 0; c < 3; ++c) texture.at(x, y, c) = float(hashToUnit(uint32_t(x), uint32_t(y), uint32_t(c)));
+    writeImage(image.string(), texture);
+    WorkbenchDocument doc = WorkbenchDocument::preset("figure14");
+    const size_t before = doc.json()["nodes"].size();
+    for (const NodeInfo& node : graphNodes()) {  // tiled_field comes before channel, which reads one
+        SCOPED_TRACE(node.name);
+        const JsonEdit e = addGraphNode(doc.json(), node, image.string());
+        EXPECT_EQ(e.pointer, "/nodes/" + node.name + "_1");
+        EXPECT_EQ(e.value["type"], node.name);
+        for (const PortInfo& port : node.inputs) {
+            ASSERT_TRUE(e.value.contains(port.name)) << port.name;
+            const std::vector<std::string> fit = nodesFitting(doc.json(), port.type);
+            const std::string source = e.value[port.name];
+            EXPECT_NE(std::find(fit.begin(), fit.end(), source), fit.end()) << port.name;
+            // A field input is fed by a spectral noise (figure14's height is one).
+            if (port.type == PortType::Field) EXPECT_EQ(doc.json()["nodes"][source]["type"], "spectral_noise");
+        }
+        EXPECT_NO_THROW(doc.set(e.pointer, e.value));
+    }
+    EXPECT_EQ(doc.json()["nodes"].size(), before + graphNodes().size());
+    // A second node of a type takes the next id.
+    EXPECT_EQ(addGraphNode(doc.json(), *findGraphNode("curve"), "").pointer, "/nodes/curve_2");
+    // The output: any colour node; the panel lists them.
+    const std::vector<std::string> colours = nodesFitting(doc.json(), PortType::Colour);
+    EXPECT_NE(std::find(colours.begin(), colours.end(), "mix_1"), colours.end());
+    EXPECT_EQ(std::find(colours.begin(), colours.end(), "height"), colours.end());
+    doc.set("/output", "mix_1");
+    EXPECT_NO_THROW(GraphPattern::build(doc.patternSpec()));  // and it builds, every node wired
+    // A node another reads stays (the parser's message); an unread one goes.
+    EXPECT_THROW(doc.remove("/nodes/height"), InputError);
+    EXPECT_TRUE(doc.json()["nodes"].contains("height"));
+    doc.remove("/nodes/lean_1");
+    EXPECT_FALSE(doc.json()["nodes"].contains("lean_1"));
 }
 
 TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {

@@ -179,15 +179,17 @@ nlohmann::json graphNodesJson() {
     return all;
 }
 
+nlohmann::json nodeWithSampleParams(const NodeInfo& node, const std::string& imagePath) {
+    nlohmann::json j = {{"type", node.name}};
+    for (const ParamInfo& p : node.params)
+        if (p.type == ParamType::Path) j[p.name] = imagePath;
+        else if (p.required() && !p.sample.is_null()) j[p.name] = p.sample;
+    return j;
+}
+
 nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplarPath) {
     using json = nlohmann::json;
-    const auto withParams = [&](const NodeInfo& info) {
-        json j = {{"type", info.name}};
-        for (const ParamInfo& p : info.params)
-            if (p.type == ParamType::Path) j[p.name] = exemplarPath;
-            else if (p.fallback.is_null() && !p.sample.is_null()) j[p.name] = p.sample;
-        return j;
-    };
+    const auto withParams = [&](const NodeInfo& info) { return nodeWithSampleParams(info, exemplarPath); };
     json nodes = json::object();
     json self = withParams(node);
     for (const PortInfo& in : node.inputs) {

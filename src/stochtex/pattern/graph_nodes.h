@@ -70,5 +70,8 @@ nlohmann::json graphNodesJson();
 // tiled field). Used by the per-node benchmarks and the test that every node
 // builds and renders.
 nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplarPath);
+// A node of this type as a graph file holds it, its inputs unset: its
+// type, and each required parameter at its sample (a path: `imagePath`).
+nlohmann::json nodeWithSampleParams(const NodeInfo& node, const std::string& imagePath);
 
 }  // namespace stochtex

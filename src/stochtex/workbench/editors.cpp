@@ -295,14 +295,27 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
     }
 }
 
-// One graph node: a widget per parameter of its table entry.
-void nodeEditor(const std::string& id, const json& node, const std::string& pointer, const EditorPreviews& previews,
-                PaintBrush& brush, std::vector<JsonEdit>& edits) {
+// A choice among node ids (an input's source, the output); an edit when another is picked.
+void nodeChoice(const char* label, const std::string& now, const std::vector<std::string>& ids, const std::string& pointer,
+                const char* help, std::vector<JsonEdit>& edits) {
+    if (ImGui::BeginCombo(label, now.empty() ? "?" : now.c_str())) {
+        for (const std::string& id : ids)
+            if (ImGui::Selectable(id.c_str(), id == now) && id != now) edits.push_back({pointer, json(id)});
+        ImGui::EndCombo();
+    }
+    if (help && *help && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", help);
+}
+
+// One graph node: which node feeds each input, a widget per parameter of
+// its table entry, and removing it.
+void nodeEditor(const json& graph, const std::string& id, const json& node, const std::string& pointer,
+                const EditorPreviews& previews, PaintBrush& brush, std::vector<JsonEdit>& edits) {
     const NodeInfo* info = findGraphNode(node.value("type", std::string()));
     if (!info) return;
     Fields f(node, pointer, edits);
     for (const PortInfo& port : info->inputs)
-        ImGui::TextDisabled("%s <- %s", port.name.c_str(), node.value(port.name, std::string("?")).c_str());
+        nodeChoice(port.name.c_str(), node.value(port.name, std::string()), nodesFitting(graph, port.type, id),
+                   pointer + "/" + port.name, port.description.c_str(), edits);
     for (const ParamInfo& p : info->params) {
         const char* help = p.description.c_str();
         const json fallback = p.fallback.is_null() ? p.sample : p.fallback;
@@ -347,12 +360,60 @@ void nodeEditor(const std::string& id, const json& node, const std::string& poin
             }
         }
     }
-    (void)id;
+    // The parser refuses removing a node another reads, or the output, with its message.
+    if (ImGui::SmallButton("remove node")) edits.push_back({pointer, nullptr, true});
+}
+
+// The graph's structure: its output, and adding a node of any type.
+void graphEditor(const json& graph, NodeAddition& addition, std::vector<JsonEdit>& edits) {
+    const std::vector<NodeInfo>& nodes = graphNodes();
+    nodeChoice("output", graph.value("output", std::string()), nodesFitting(graph, PortType::Colour), "/output",
+               "the node whose colour the pattern shows", edits);
+    addition.type = std::clamp(addition.type, 0, int(nodes.size()) - 1);
+    const NodeInfo& chosen = nodes[size_t(addition.type)];
+    if (ImGui::BeginCombo("new node", chosen.name.c_str())) {
+        for (size_t k = 0; k < nodes.size(); ++k)
+            if (ImGui::Selectable(nodes[k].name.c_str(), int(k) == addition.type)) addition.type = int(k);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", chosen.description.c_str());
+    const bool needsImage = std::any_of(chosen.params.begin(), chosen.params.end(),
+                                        [](const ParamInfo& p) { return p.type == ParamType::Path; });
+    if (needsImage) ImGui::InputText("image", addition.image, sizeof addition.image);
+    if (ImGui::SmallButton("add node")) edits.push_back(addGraphNode(graph, chosen, addition.image));
 }
 
 }  // namespace
 
-std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& previews, PaintBrush& brush) {
+std::vector<std::string> nodesFitting(const json& graph, PortType type, const std::string& except) {
+    std::vector<std::string> ids;
+    if (!graph.contains("nodes") || !graph["nodes"].is_object()) return ids;
+    for (const auto& [id, node] : graph["nodes"].items()) {
+        const NodeInfo* info = node.is_object() ? findGraphNode(node.value("type", std::string())) : nullptr;
+        if (info && info->output == type && id != except) ids.push_back(id);
+    }
+    return ids;
+}
+
+JsonEdit addGraphNode(const json& graph, const NodeInfo& node, const std::string& imagePath) {
+    const json& nodes = graph.contains("nodes") && graph["nodes"].is_object() ? graph["nodes"] : json::object();
+    std::string id;
+    for (int k = 1; id.empty() || nodes.contains(id); ++k) id = node.name + "_" + std::to_string(k);
+    json added = nodeWithSampleParams(node, imagePath);
+    for (const PortInfo& port : node.inputs) {
+        std::vector<std::string> fitting = nodesFitting(graph, port.type);
+        // A spectral noise first: a Gaussian source is a valid input of every
+        // field port (a channel of a Gaussianized exemplar is not, for a linear node).
+        std::stable_partition(fitting.begin(), fitting.end(), [&](const std::string& id) {
+            return nodes[id].value("type", std::string()) == "spectral_noise";
+        });
+        if (!fitting.empty()) added[port.name] = fitting.front();
+    }
+    return {"/nodes/" + id, added};
+}
+
+std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& previews, EditorState& state) {
+    PaintBrush& brush = state.brush;
     std::vector<JsonEdit> edits;
     Fields header(pattern, "", edits);
     expand(previews);
@@ -363,16 +424,18 @@ std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& p
     }
     if (pattern.contains("nodes") && pattern["nodes"].is_object()) {
         expand(previews);
-        if (ImGui::CollapsingHeader("Graph nodes", ImGuiTreeNodeFlags_DefaultOpen))
+        if (ImGui::CollapsingHeader("Graph nodes", ImGuiTreeNodeFlags_DefaultOpen)) {
+            graphEditor(pattern, state.addition, edits);
             for (const auto& [id, node] : pattern["nodes"].items()) {
                 ImGui::PushID(id.c_str());
                 expand(previews);
                 if (ImGui::TreeNode(id.c_str(), "%s (%s)", id.c_str(), node.value("type", std::string("?")).c_str())) {
-                    nodeEditor(id, node, "/nodes/" + id, previews, brush, edits);
+                    nodeEditor(pattern, id, node, "/nodes/" + id, previews, brush, edits);
                     ImGui::TreePop();
                 }
                 ImGui::PopID();
             }
+        }
         return edits;
     }
     for (int k = 0; k < 2; ++k) {

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/graph_nodes.h"
 
 namespace stochtex {
 
@@ -31,6 +32,19 @@ struct PaintBrush {
     float colour[3] = {0.85f, 0.35f, 0.2f};  // sRGB codes, as a colour picker gives them
 };
 
+// The graph panel's "add node" row: the type chosen and the image a node
+// with a path parameter (an exemplar) reads.
+struct NodeAddition {
+    int type = 0;  // index into graphNodes()
+    char image[512] = "";
+};
+
+// What the panels keep between frames.
+struct EditorState {
+    PaintBrush brush;
+    NodeAddition addition;
+};
+
 // What the panels show beside the numbers, as ImGui texture ids of images
 // in display codes (null: none): the colormap's table as a canvas (x to the
 // right, y up, as the table's domain; clicks on a painted one add the
@@ -46,7 +60,16 @@ struct EditorPreviews {
 };
 
 // Every panel of the pattern.
-std::vector<JsonEdit> patternEditor(const nlohmann::json& pattern, const EditorPreviews& previews, PaintBrush& brush);
+std::vector<JsonEdit> patternEditor(const nlohmann::json& pattern, const EditorPreviews& previews, EditorState& state);
+
+// A graph's structure as edits (the parser then refuses a cycle, a missing
+// node, a colour into a field, with its message):
+// the ids of the nodes whose output fits an input of this type, but `except`;
+std::vector<std::string> nodesFitting(const nlohmann::json& graph, PortType type, const std::string& except = "");
+// a new node of type `node` under a fresh id ("TYPE_N"), its required
+// parameters at their samples, each input fed by the first node that fits
+// (a spectral noise first: a Gaussian source suits every field input).
+JsonEdit addGraphNode(const nlohmann::json& graph, const NodeInfo& node, const std::string& imagePath);
 
 // A colour member ("#rrggbb", [r, g, b] codes in [0, 1]) as sRGB codes;
 // false if it is neither.

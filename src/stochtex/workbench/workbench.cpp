@@ -845,7 +845,7 @@ private:
             for (int k = 0; k < 2; ++k) previews.example[k] = id(example_[k]), previews.spectrum[k] = id(exampleSpectrum_[k]);
             ImGui::Checkbox("unfold every section", &expandAll_);
             previews.expandAll = expandAll_;
-            applyGesture(patternEditor(doc_.json(), previews, brush_));
+            applyGesture(patternEditor(doc_.json(), previews, editorState_));
             ImGui::BeginDisabled(!doc_.canUndo());
             if (ImGui::Button("Undo (Ctrl+Z)")) undo();
             ImGui::EndDisabled();
@@ -1005,7 +1005,7 @@ private:
     bool hostFailed_ = false, hostStale_ = false;
     std::string failedKey_;
     DisplayImage canvas_, example_[2], exampleSpectrum_[2];
-    PaintBrush brush_;
+    EditorState editorState_;
     bool needsRebuild_ = false;
     bool gestureOpen_ = false;  // the panel's edits since the mouse or a widget was taken up
     std::chrono::steady_clock::time_point lastBuild_{};
