@@ -598,6 +598,7 @@ private:
         recordingSize_ = {pr.width, pr.height};
         recordingStart_ = std::chrono::steady_clock::now();
         recordingClock_.emplace(options_.shadertoy.fps);
+        recordedProgramFrame_ = -1;
         recordingPath_ = path;
         notice_ = "recording " + path;
     }
@@ -612,10 +613,16 @@ private:
         // so its video plays at the program's speed. A pattern has no clock:
         // its frames go on the wall clock, so the video plays what the person
         // saw, at their pace.
-        const int copies =
-            isShadertoy() ? 1
-                          : recordingClock_->framesAt(
-                                std::chrono::duration<double>(std::chrono::steady_clock::now() - recordingStart_).count());
+        int copies = 0;
+        if (isShadertoy()) {
+            // A paused program adds no frame to its video: one per program frame.
+            const long long programFrame = host_ ? host_->frame() : -1;
+            copies = programFrame != recordedProgramFrame_ ? 1 : 0;
+            recordedProgramFrame_ = programFrame;
+        } else {
+            copies = recordingClock_->framesAt(
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - recordingStart_).count());
+        }
         for (int k = 0; k < copies; ++k) recorder_->write(shot);
     }
     void stopRecording() {
@@ -1025,6 +1032,7 @@ private:
     bool showPanel_ = true, showHelp_ = false, paused_ = false, quit_ = false, expandAll_ = false;
     std::chrono::steady_clock::time_point recordingStart_;
     std::optional<WallClockFrames> recordingClock_;
+    long long recordedProgramFrame_ = -1;
     std::array<float, 4> mouse_{};
     int windowWidth_ = 1, windowHeight_ = 1;  // the framebuffer's pixels
     float pixelScale_ = 1;                     // framebuffer pixels per window coordinate (HiDPI: 2)
