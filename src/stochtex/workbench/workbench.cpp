@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -513,6 +514,14 @@ private:
     // The live analysis of the frame shown: spectrum and flow of the frames
     // shown, recomputed when the picture changed; the correlation over a
     // pattern's instances (a program's frames).
+    //
+    // The spectrum, flow and flicker run beside the window, since a flow of a
+    // large picture takes longer than a frame: the frame read when the
+    // picture changes (and, for flow and flicker, the frame before it) is
+    // queued, the newest replacing an older one still waiting, and the panel
+    // shows the last analysis finished. A frame that is captured (a
+    // screenshot, a recording, a run's last frame) waits for the analysis of
+    // itself, so what is saved is the picture's own.
     void updateAnalysis() {
         const DisplayRect tr = textureRect();
         if (std::min(tr.width, tr.height) < 16) {
@@ -522,27 +531,56 @@ private:
         }
         const long long version = isShadertoy() ? host_->frame() : viewVersion_;
         const bool changed = version != analysedVersion_ || host_.get() != analysedHost_;
-        if (!changed && !analysisDirty_ && analysis_ != LiveAnalysisKind::Correlation) return;
-        // Pattern targets hold image row 0 in GL row 0; a mesh and a program's frame the GL way up.
-        const Image frame = isShadertoy() ? host_->image()
-                            : isScene()   ? target_->readRgb(RenderTarget::Rows::TopDown)
-                                          : target_->readRgb(RenderTarget::Rows::AsDrawn);
-        LiveAnalysisResult result;
-        switch (analysis_) {
-            case LiveAnalysisKind::Spectrum: result = liveSpectrum(frame); break;
-            case LiveAnalysisKind::Flow:
-            case LiveAnalysisKind::Flicker:
-                if (previousFrame_.width() != frame.width() || previousFrame_.height() != frame.height())
+        if (changed || analysisDirty_ || analysis_ == LiveAnalysisKind::Correlation) {
+            // Pattern targets hold image row 0 in GL row 0; a mesh and a program's frame the GL way up.
+            const Image frame = isShadertoy() ? host_->image()
+                                : isScene()   ? target_->readRgb(RenderTarget::Rows::TopDown)
+                                              : target_->readRgb(RenderTarget::Rows::AsDrawn);
+            if (analysis_ == LiveAnalysisKind::Correlation) {
+                const LiveAnalysisResult r = correlationStep(frame, changed);
+                analysisDirty_ = false;
+                showAnalysisResult(r);
+            } else {
+                Image previous;
+                if (analysis_ != LiveAnalysisKind::Spectrum) {
+                    if (previousFrame_.width() != frame.width() || previousFrame_.height() != frame.height())
+                        previousFrame_ = frame;
+                    previous = previousFrame_;
                     previousFrame_ = frame;
-                result = analysis_ == LiveAnalysisKind::Flow ? liveFlow(previousFrame_, frame)
-                                                             : liveFlicker(previousFrame_, frame);
-                previousFrame_ = frame;
-                break;
-            case LiveAnalysisKind::Correlation: result = correlationStep(frame, changed); break;
+                }
+                queuedAnalysis_ = AnalysisRequest{analysis_, frame, std::move(previous)};
+                analysisDirty_ = false;
+            }
+            analysedVersion_ = version;
+            analysedHost_ = host_.get();
         }
-        analysedVersion_ = version;
-        analysedHost_ = host_.get();
-        analysisDirty_ = false;
+        const bool capture = isLastFrame() || quit_ || !pendingScreenshots_.empty() || recorder_;
+        collectAnalysis(capture);
+        if (!analysisJob_.valid() && queuedAnalysis_) {
+            AnalysisRequest request = std::move(*queuedAnalysis_);
+            queuedAnalysis_.reset();
+            runningAnalysis_ = request.kind;
+            analysisJob_ = std::async(std::launch::async, [request = std::move(request)] {
+                switch (request.kind) {
+                    case LiveAnalysisKind::Spectrum: return liveSpectrum(request.frame);
+                    case LiveAnalysisKind::Flow: return liveFlow(request.previous, request.frame);
+                    default: return liveFlicker(request.previous, request.frame);
+                }
+            });
+        }
+        if (capture) collectAnalysis(true);
+    }
+
+    // Shows the running analysis when it is done (or, `wait`, once it is);
+    // one of an analysis since switched away from is dropped.
+    void collectAnalysis(bool wait) {
+        if (!analysisJob_.valid()) return;
+        if (!wait && analysisJob_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+        const LiveAnalysisResult r = analysisJob_.get();  // rethrows the analysis's error
+        if (runningAnalysis_ == analysis_) showAnalysisResult(r);
+    }
+
+    void showAnalysisResult(const LiveAnalysisResult& result) {
         analysisImage_.upload(result.image);
         analysisSummary_ = result.summary;
         analysisProfile_ = result.profile;
@@ -1044,6 +1082,14 @@ private:
     const ShadertoyHost* analysedHost_ = nullptr;
     bool analysisDirty_ = true;
     Image previousFrame_;
+    // The spectrum, flow or flicker running beside the window, and the newest frame waiting for it.
+    struct AnalysisRequest {
+        LiveAnalysisKind kind;
+        Image frame, previous;
+    };
+    std::future<LiveAnalysisResult> analysisJob_;
+    LiveAnalysisKind runningAnalysis_ = LiveAnalysisKind::Spectrum;
+    std::optional<AnalysisRequest> queuedAnalysis_;
     DisplayImage analysisImage_;
     std::string analysisSummary_, analysisProfileLabel_;
     std::vector<float> analysisProfile_;
