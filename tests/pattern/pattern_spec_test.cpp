@@ -258,33 +258,32 @@ TEST(PatternSpec, SpectralExampleSizesArePowersOfTwo) {
 // each member accepts its typical value and refuses one just past either
 // end of the entry's range, naming the member's pointer.
 TEST(PatternMembers, TheParserEnforcesEachTableEntrysRange) {
-    namespace m = stochtex::pattern_members;
     struct Case {
         const char* preset;
         const char* pointer;
         const ParamInfo& member;
     };
     const Case cases[] = {
-        {"bands", "/scale", m::kScale},
-        {"bands", "/grid_density", m::kGridDensity},
-        {"bands", "/noise_x/size", m::kNoiseSize},
-        {"bands", "/noise_x/mean", m::kNoiseMean},
-        {"bands", "/noise_x/stddev", m::kNoiseStddev},
-        {"bands", "/noise_x/components/0/cutoff", m::kCutoff},
-        {"bands", "/noise_x/components/0/weight", m::kWeight},
-        {"iso-aniso", "/noise_y/components/0/frequency", m::kFrequency},
-        {"iso-aniso", "/noise_y/components/0/bandwidth", m::kBandwidth},
-        {"iso-aniso", "/noise_y/components/0/orientation", m::kOrientation},
-        {"camouflage", "/colormap/resolution", m::kColormapResolution},
-        {"camouflage", "/colormap/shapes/2/radius", m::kRadius},
-        {"camouflage", "/colormap/shapes/0/angle", m::kAngle},
-        {"concentric", "/colormap/shapes/1/inner", m::kInner},
-        {"concentric", "/colormap/shapes/1/outer", m::kOuter},
-        {"oblique-blots", "/colormap/shapes/2/width", m::kWidth},
-        {"phasor-square", "/colormap/duty", m::kDuty},
-        {"lean-ridges", "/normal_map/amplitude", m::kAmplitude},
-        {"lean-ridges", "/normal_map/roughness", m::kRoughness},
-        {"lean-ridges", "/normal_map/specular", m::kSpecular},
+        {"bands", "/scale", patternMembers().scale},
+        {"bands", "/grid_density", patternMembers().gridDensity},
+        {"bands", "/noise_x/size", patternMembers().noiseSize},
+        {"bands", "/noise_x/mean", patternMembers().noiseMean},
+        {"bands", "/noise_x/stddev", patternMembers().noiseStddev},
+        {"bands", "/noise_x/components/0/cutoff", patternMembers().cutoff},
+        {"bands", "/noise_x/components/0/weight", patternMembers().weight},
+        {"iso-aniso", "/noise_y/components/0/frequency", patternMembers().frequency},
+        {"iso-aniso", "/noise_y/components/0/bandwidth", patternMembers().bandwidth},
+        {"iso-aniso", "/noise_y/components/0/orientation", patternMembers().orientation},
+        {"camouflage", "/colormap/resolution", patternMembers().colormapResolution},
+        {"camouflage", "/colormap/shapes/2/radius", patternMembers().radius},
+        {"camouflage", "/colormap/shapes/0/angle", patternMembers().angle},
+        {"concentric", "/colormap/shapes/1/inner", patternMembers().inner},
+        {"concentric", "/colormap/shapes/1/outer", patternMembers().outer},
+        {"oblique-blots", "/colormap/shapes/2/width", patternMembers().width},
+        {"phasor-square", "/colormap/duty", patternMembers().duty},
+        {"lean-ridges", "/normal_map/amplitude", patternMembers().amplitude},
+        {"lean-ridges", "/normal_map/roughness", patternMembers().roughness},
+        {"lean-ridges", "/normal_map/specular", patternMembers().specular},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(std::string(c.preset) + " " + c.pointer);
@@ -297,15 +296,18 @@ TEST(PatternMembers, TheParserEnforcesEachTableEntrysRange) {
         };
         EXPECT_NO_THROW(parseWith(c.member.typical()));
         const double step = integer ? 1.0 : std::max(1.0, std::abs(c.member.max)) * 1e-6;
+        // The refusal states the table's range: the parser's range is the entry's.
+        const std::string range = "must be in [" + formatValue(c.member.min) + ", " + formatValue(c.member.max) + "]";
         for (double outside : {c.member.min - step, c.member.max + step}) {
             const std::string message = test::inputErrorOf([&] { parseWith(outside); }).what();
             EXPECT_NE(message.find(std::string(c.pointer) + ": "), std::string::npos) << message;
+            EXPECT_NE(message.find(range), std::string::npos) << message;
         }
     }
     // The graph's spectral noise takes the same entries as a pattern's noise.
     const NodeInfo* noise = findGraphNode("spectral_noise");
     ASSERT_NE(noise, nullptr);
-    for (const ParamInfo* p : {&m::kNoiseSize, &m::kNoiseMean, &m::kNoiseStddev}) {
+    for (const ParamInfo* p : {&patternMembers().noiseSize, &patternMembers().noiseMean, &patternMembers().noiseStddev}) {
         const auto it = std::find_if(noise->params.begin(), noise->params.end(),
                                      [&](const ParamInfo& q) { return q.name == p->name; });
         ASSERT_NE(it, noise->params.end());

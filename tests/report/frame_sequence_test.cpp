@@ -107,23 +107,27 @@ namespace stochtex {
 namespace {
 
 TEST(WallClockFrames, RepeatsSlowFramesSkipsFastOnesAndCutsStalls) {
-    WallClockFrames clock(10, 2.0);  // 10 fps, stalls cut to 2 s
-    EXPECT_EQ(clock.framesAt(0.0), 1);    // frame 0 at t = 0
-    EXPECT_EQ(clock.framesAt(0.05), 0);   // faster than 10 fps: skipped
-    EXPECT_EQ(clock.framesAt(0.10), 1);   // frame 1
-    EXPECT_EQ(clock.framesAt(0.35), 2);   // slower: frames 2 and 3 show it
+    // Pictures A (t = 0), B (0.05), C (0.10), D (0.35), E (60.35), ... at 10 fps;
+    // frame k shows the picture on screen at k / 10.
+    WallClockFrames clock(10, 2.0);
+    EXPECT_EQ(clock.framesBefore(0.0), 0);   // A is held
+    EXPECT_EQ(clock.framesBefore(0.05), 1);  // frame 0 (t = 0) is A
+    EXPECT_EQ(clock.framesBefore(0.10), 0);  // B was on screen at no frame's time: skipped
+    EXPECT_EQ(clock.framesBefore(0.35), 3);  // frames 1, 2, 3 (t = 0.1, 0.2, 0.3) are C
     EXPECT_EQ(clock.written(), 4);
-    // A 60 s stall becomes 2 s of video, and the frames after it keep their spacing.
-    EXPECT_EQ(clock.framesAt(60.35), 20);
-    EXPECT_EQ(clock.framesAt(60.40), 0);
-    EXPECT_EQ(clock.framesAt(60.45), 1);
+    // D stays on screen for 60 s: 2 s of it are written, and the frames after keep their spacing.
+    EXPECT_EQ(clock.framesBefore(60.35), 20);
+    EXPECT_EQ(clock.framesBefore(60.40), 0);
+    EXPECT_EQ(clock.framesBefore(60.45), 1);
     EXPECT_EQ(clock.written(), 25);
-    // Whatever the pace, written frames = 1 + floor(recorded seconds · fps).
+    // Whatever the pace, the frames written before a picture at t are those with k / fps < t.
     WallClockFrames steady(30);
-    int total = 0;
-    for (int k = 0; k <= 1000; ++k) total += steady.framesAt(k * 0.01373);
-    EXPECT_EQ(total, 1 + int(std::floor(1000 * 0.01373 * 30)));
+    long long total = 0;
+    for (int k = 0; k <= 1000; ++k) total += steady.framesBefore(k * 0.01373);
+    EXPECT_EQ(total, (long long)std::ceil(1000 * 0.01373 * 30));
     EXPECT_THROW(WallClockFrames(0), InputError);
+    EXPECT_THROW(WallClockFrames(30, std::nan("")), InputError);
+    EXPECT_THROW(WallClockFrames(30, 1e30), InputError);
 }
 
 }  // namespace

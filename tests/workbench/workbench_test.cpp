@@ -103,8 +103,11 @@ TEST(WorkbenchDocument, UndoAndRedoMoveBetweenCheckpoints) {
     ASSERT_TRUE(doc.redo());
     EXPECT_EQ(doc.json()["seed"], 99);
     EXPECT_FALSE(doc.redo());
-    // A new edit after an undo forgets the undone one.
+    // A refused edit touches no history; a new edit after an undo forgets the undone one.
     ASSERT_TRUE(doc.undo());
+    doc.checkpoint();
+    EXPECT_THROW(doc.set(colour, "red"), InputError);
+    EXPECT_TRUE(doc.canRedo());
     doc.checkpoint();
     doc.set(colour, "#20d020");
     EXPECT_FALSE(doc.canRedo());

@@ -7,18 +7,24 @@
 // offer together.
 #include "stochtex/pattern/param_info.h"
 
-namespace stochtex::pattern_members {
+namespace stochtex {
 
-// The pattern.
-extern const ParamInfo kScale, kGridDensity;
-// A spectrum NOISE.
-extern const ParamInfo kNoiseSize, kNoiseMean, kNoiseStddev;
-// A spectrum component.
-extern const ParamInfo kCutoff, kFrequency, kBandwidth, kOrientation, kWeight;
-// A COLORMAP, and a painted one's shapes ([x, y] points have kCoordinate's range each).
-extern const ParamInfo kColormapResolution, kDuty;
-extern const ParamInfo kCoordinate, kRadius, kInner, kOuter, kWidth, kAngle;
-// A normal map.
-extern const ParamInfo kAmplitude, kRoughness, kSpecular;
+struct PatternMembers {
+    // The pattern.
+    ParamInfo scale, gridDensity;
+    // A spectrum NOISE.
+    ParamInfo noiseSize, noiseMean, noiseStddev;
+    // A spectrum component.
+    ParamInfo cutoff, frequency, bandwidth, orientation, weight;
+    // A COLORMAP, and a painted one's shapes ([x, y] points have coordinate's range each).
+    ParamInfo colormapResolution, duty;
+    ParamInfo coordinate, radius, inner, outer, width, angle;
+    // A normal map.
+    ParamInfo amplitude, roughness, specular;
+};
+// The table, built on first use: the node table copies entries of it,
+// perhaps while another file's statics are being initialised (a benchmark
+// registering one benchmark per node), so it cannot be a set of globals.
+const PatternMembers& patternMembers();
 
-}  // namespace stochtex::pattern_members
+}  // namespace stochtex

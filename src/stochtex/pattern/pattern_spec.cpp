@@ -16,7 +16,6 @@
 
 namespace stochtex {
 namespace fs = std::filesystem;
-namespace m = pattern_members;
 
 SpectrumComponent parseSpectrumComponent(const JsonReader& r) {
     r.expectObject({"shape", "frequency", "cutoff", "bandwidth", "orientation", "weight"});
@@ -24,20 +23,20 @@ SpectrumComponent parseSpectrumComponent(const JsonReader& r) {
     const std::string shape = r.at("shape").choice({"lowpass", "ring", "bilobe"});
     if (shape == "lowpass") {
         c.shape = SpectrumShape::LowPass;
-        c.frequency = readNumber(r, m::kCutoff);
+        c.frequency = readNumber(r, patternMembers().cutoff);
         if (r.has("frequency") || r.has("bandwidth") || r.has("orientation"))
             r.fail("a lowpass component takes only \"cutoff\" and \"weight\"");
     } else {
         c.shape = shape == "ring" ? SpectrumShape::Ring : SpectrumShape::BiLobe;
-        c.frequency = readNumber(r, m::kFrequency);
-        c.bandwidth = readNumber(r, m::kBandwidth);
+        c.frequency = readNumber(r, patternMembers().frequency);
+        c.bandwidth = readNumber(r, patternMembers().bandwidth);
         if (c.shape == SpectrumShape::BiLobe)
-            c.orientation = readNumber(r, m::kOrientation);
+            c.orientation = readNumber(r, patternMembers().orientation);
         else if (r.has("orientation"))
             r.fail("a ring is isotropic: \"orientation\" applies to bilobe components only");
         if (r.has("cutoff")) r.fail("\"cutoff\" applies to lowpass components only");
     }
-    c.weight = readNumber(r, m::kWeight);
+    c.weight = readNumber(r, patternMembers().weight);
     return c;
 }
 
@@ -69,7 +68,8 @@ Rgb parseColour(const JsonReader& r) {
 
 std::array<double, 2> parsePoint(const JsonReader& r) {
     if (r.arraySize() != 2) r.fail("a point needs 2 coordinates [x, y]");
-    return {r.at(0).number(m::kCoordinate.min, m::kCoordinate.max), r.at(1).number(m::kCoordinate.min, m::kCoordinate.max)};
+    const ParamInfo& c = patternMembers().coordinate;
+    return {r.at(0).number(c.min, c.max), r.at(1).number(c.min, c.max)};
 }
 
 PaintedShape parseShape(const JsonReader& r) {
@@ -85,13 +85,13 @@ PaintedShape parseShape(const JsonReader& r) {
         r.expectObject({"shape", "colour", "center", "radius"});
         s.kind = PaintedShape::Kind::Disc;
         s.a = parsePoint(r.at("center"));
-        s.radius = readNumber(r, m::kRadius);
+        s.radius = readNumber(r, patternMembers().radius);
     } else if (kind == "ring") {
         r.expectObject({"shape", "colour", "center", "inner", "outer"});
         s.kind = PaintedShape::Kind::Ring;
         s.a = parsePoint(r.at("center"));
-        s.innerRadius = readNumber(r, m::kInner);
-        s.radius = readNumber(r, m::kOuter);
+        s.innerRadius = readNumber(r, patternMembers().inner);
+        s.radius = readNumber(r, patternMembers().outer);
         if (s.radius < s.innerRadius) r.at("outer").fail("outer radius must be >= inner radius");
     } else if (kind == "halfplane" || kind == "band") {
         if (kind == "halfplane")
@@ -100,8 +100,8 @@ PaintedShape parseShape(const JsonReader& r) {
             r.expectObject({"shape", "colour", "point", "angle", "width"});
         s.kind = kind == "halfplane" ? PaintedShape::Kind::HalfPlane : PaintedShape::Kind::Band;
         s.a = parsePoint(r.at("point"));
-        s.setAngle(readNumber(r, m::kAngle));
-        if (kind == "band") s.width = readNumber(r, m::kWidth);
+        s.setAngle(readNumber(r, patternMembers().angle));
+        if (kind == "band") s.width = readNumber(r, patternMembers().width);
     } else {
         r.expectObject({"shape", "colour", "points"});
         s.kind = PaintedShape::Kind::Polygon;
@@ -153,13 +153,13 @@ NoiseSpec parseNoiseSpec(const JsonReader& r, const fs::path& baseDir) {
     if (type == "spectrum") {
         r.expectObject({"type", "size", "seed", "mean", "stddev", "components", "quadrature"});
         SpectrumSpec& s = spec.spectrum;
-        s.size = readInteger(r, m::kNoiseSize);
+        s.size = readInteger(r, patternMembers().noiseSize);
         if (auto seed = r.find("seed")) {
             s.seed = seed->uint32();
             spec.explicitSeed = true;
         }
-        s.mean = readNumber(r, m::kNoiseMean);
-        s.stddev = readNumber(r, m::kNoiseStddev);
+        s.mean = readNumber(r, patternMembers().noiseMean);
+        s.stddev = readNumber(r, patternMembers().noiseStddev);
         s.quadrature = r.boolean("quadrature", false);
         const JsonReader comps = r.at("components");
         const size_t n = comps.arraySize();
@@ -186,7 +186,7 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
         r.expectObject({"type", "resolution", "profile", "duty", "path", "palette", "transfer"});
         spec.source = ColormapSpec::Source::Phasor;
         spec.profile = r.choice("profile", PhasorProfile::Sine, kPhasorProfileNames);
-        spec.duty = readNumber(r, m::kDuty);
+        spec.duty = readNumber(r, patternMembers().duty);
         if (spec.profile == PhasorProfile::Image)
             spec.image = resolveInputPath(r.at("path"), baseDir);
         else if (r.has("path"))
@@ -210,13 +210,14 @@ ColormapSpec parseColormapSpec(const JsonReader& r, const fs::path& baseDir) {
         }
     }
     if (r.has("transfer")) spec.transfer = r.at("transfer").choice(kTransferNames);
-    spec.resolution = readInteger(r, m::kColormapResolution);
+    spec.resolution = readInteger(r, patternMembers().colormapResolution);
     if (spec.source == ColormapSpec::Source::Painted) r.check([&] { spec.painted.validateWork(spec.resolution); });
     return spec;
 }
 
 LeanShading validatedShading(LeanShading s) {
-    for (const auto& [p, v] : {std::pair{&m::kRoughness, s.roughness}, std::pair{&m::kSpecular, s.specular}})
+    const PatternMembers& m = patternMembers();
+    for (const auto& [p, v] : {std::pair{&m.roughness, s.roughness}, std::pair{&m.specular, s.specular}})
         if (!(std::isfinite(v) && v >= p->min && v <= p->max))
             throw InputError::parameter(p->name, "must be in [" + formatValue(p->min) + ", " + formatValue(p->max) +
                                                      "], got " + formatValue(v));
@@ -237,7 +238,7 @@ NormalMapSpec parseNormalMapSpec(const JsonReader& r, const fs::path& baseDir) {
     r.expectObject({"height", "amplitude", "roughness", "light", "view", "albedo", "specular"});
     NormalMapSpec spec;
     spec.height = parseNoiseSpec(r.at("height"), baseDir);
-    spec.amplitude = readNumber(r, m::kAmplitude);
+    spec.amplitude = readNumber(r, patternMembers().amplitude);
     LeanShading& s = spec.shading;
     // Any number here: validatedShading states the domain (and is what the library checks too).
     s.roughness = r.number("roughness", s.roughness, -1e300, 1e300);
@@ -277,10 +278,10 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
             spec.width = spec.height = size->integer(1, kMaxOutputSide);
         }
     }
-    spec.scale = readNumber(r, m::kScale);
+    spec.scale = readNumber(r, patternMembers().scale);
     // The output caps (pixel count) are the renderer's: the pattern's own view must pass them.
     r.check([&] { validateView(View{spec.width, spec.height, spec.scale}); });
-    spec.gridDensity = readNumber(r, m::kGridDensity);
+    spec.gridDensity = readNumber(r, patternMembers().gridDensity);
     if (graph) {
         auto g = std::make_shared<TextureGraph>(parseTextureGraph(r, baseDir));
         spec.colormap = g->node(g->output).colormap;

@@ -123,12 +123,15 @@ std::vector<std::string> FrameSequenceSet::finish() {
 
 WallClockFrames::WallClockFrames(double fps, double maxGapSeconds) : fps_(fps), maxGap_(maxGapSeconds) {
     if (!(fps > 0 && fps <= 1000)) throw InputError::parameter("fps", "must be in (0, 1000], got " + formatValue(fps));
+    if (!(maxGapSeconds > 0 && maxGapSeconds <= 3600))
+        throw InputError::parameter("maxGapSeconds", "must be in (0, 3600], got " + formatValue(maxGapSeconds));
 }
 
-int WallClockFrames::framesAt(double seconds) {
-    // Frame k of the video shows what was on screen at time k / fps.
-    long long due = (long long)(std::floor((seconds - cut_) * fps_)) + 1;
-    const long long most = written_ + std::max(1LL, (long long)(maxGap_ * fps_));
+int WallClockFrames::framesBefore(double seconds) {
+    // Frames k with k / fps before now showed the picture held until now.
+    const double t = std::clamp(seconds - cut_, 0.0, 1e9);
+    long long due = (long long)(std::ceil(t * fps_));
+    const long long most = written_ + (long long)(std::ceil(maxGap_ * fps_));
     if (due > most) {
         cut_ += double(due - most) / fps_;
         due = most;

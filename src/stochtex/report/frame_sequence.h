@@ -45,17 +45,20 @@ private:
     std::string previewPath_;
 };
 
-// A real-time recording's timeline: frames shown at wall-clock times are
-// written at a fixed rate, a frame repeated while the source was slower
-// than `fps` and skipped while it was faster, so the video plays what was
-// seen at the pace it was seen. A gap longer than `maxGapSeconds` (a stall)
-// counts as that long, and later frames keep their spacing.
+// A real-time recording's timeline: video frame k shows what was on screen
+// at k / fps. Each picture shown is held until the next one comes; then the
+// frames whose times fell while it was on screen are written with it (none
+// when the pictures came faster than fps, several when slower), so the
+// video plays what was seen at the pace it was seen. A gap longer than
+// `maxGapSeconds` (a stall) counts as that long, and later frames keep their
+// spacing.
 class WallClockFrames {
 public:
+    // fps in (0, 1000], maxGapSeconds in (0, 3600] (InputError naming them).
     explicit WallClockFrames(double fps, double maxGapSeconds = 5.0);
-    // How many copies of the frame shown `seconds` after the start to write
-    // now (0 or more; the first call writes at least one).
-    int framesAt(double seconds);
+    // A new picture is shown `seconds` after the first one: how many copies
+    // of the picture held until now to write (0 or more; 0 for the first).
+    int framesBefore(double seconds);
     long long written() const { return written_; }
 
 private:

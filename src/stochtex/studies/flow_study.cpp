@@ -23,6 +23,8 @@ void validateFlowStudy(const FlowStudyOptions& o, const TextureSource* source) {
         throw InputError::parameter("margin", "must leave part of the window, got " + std::to_string(o.margin));
     if (!(o.arrowScale > 0 && o.arrowScale <= 1000))
         throw InputError::parameter("arrowScale", "must be in (0, 1000]");
+    if (o.instance < 0 || o.instance > 1000000)
+        throw InputError::parameter("instance", "must be in [0, 1000000], got " + std::to_string(o.instance));
     if (source) {
         for (int k = 0; k < o.frames; ++k) source->checkWindow(o.region, o.time + k * o.timeStep);
         source->checkInstances(o.instance + 1);

@@ -18,7 +18,8 @@ void validateTemporalCoherence(const TemporalCoherenceOptions& o, const TextureS
         throw InputError::parameter("frames", "must be in [2, 10000], got " + std::to_string(o.times.size()));
     for (double t : o.times)
         if (!std::isfinite(t)) throw InputError::parameter("time", "must be finite, got " + formatValue(t));
-    if (o.instance < 0) throw InputError::parameter("instance", "must be ≥ 0, got " + std::to_string(o.instance));
+    if (o.instance < 0 || o.instance > 1000000)
+        throw InputError::parameter("instance", "must be in [0, 1000000], got " + std::to_string(o.instance));
     if (o.radialBins < 4 || o.radialBins > 4096)
         throw InputError::parameter("radialBins", "must be in [4, 4096], got " + std::to_string(o.radialBins));
     if (source) {

@@ -150,7 +150,8 @@ ImageSequenceSource::ImageSequenceSource(std::vector<Image> frames) : frames_(st
 void ImageSequenceSource::checkWindow(const SourceRegion& region, double time) const {
     if (!(std::isfinite(time) && time >= 0 && time < frames()))
         throw InputError::parameter("time", "must be in [0, " + std::to_string(frames()) +
-                                                ") for an image sequence (image k at time k), got " + formatValue(time));
+                                                ") for an image sequence (image k at time k), got " +
+                                                formatValue(time));
     const int x0 = int(std::lround(region.x0)), y0 = int(std::lround(region.y0));
     if (x0 < 0 || y0 < 0 || region.width < 1 || region.height < 1 || x0 + region.width > width() ||
         y0 + region.height > height())

@@ -88,10 +88,12 @@ PatternSpec WorkbenchDocument::patternSpec() const {
     return parsePatternSpec(JsonReader(json_, source_), baseDir_);
 }
 
-void WorkbenchDocument::replace(const nlohmann::json& pattern) {
+void WorkbenchDocument::replace(const nlohmann::json& pattern) { commit(pattern, true); }
+
+void WorkbenchDocument::commit(nlohmann::json next, bool record) {
     if (kind_ != Kind::Pattern) throw std::logic_error("WorkbenchDocument: a ShaderToy program is edited in its files");
     nlohmann::json before = std::move(json_);
-    json_ = pattern;
+    json_ = std::move(next);
     try {
         patternSpec();
     } catch (...) {
@@ -99,6 +101,12 @@ void WorkbenchDocument::replace(const nlohmann::json& pattern) {
         throw;
     }
     edited_ = true;
+    if (record && stepPending_) {
+        if (undo_.empty() || undo_.back() != before) undo_.push_back(std::move(before));
+        if (undo_.size() > kUndoDepth) undo_.erase(undo_.begin());
+        redo_.clear();
+        stepPending_ = false;
+    }
 }
 
 void WorkbenchDocument::set(const std::string& pointer, const nlohmann::json& value) {
@@ -171,18 +179,15 @@ void WorkbenchDocument::reload() {
                              : path_.empty()           ? preset(presetName_)
                                                        : patternFile(path_.string());
     if (kind_ == Kind::Pattern) {
-        checkpoint();  // what was on screen stays one undo away
+        // What was on screen stays one undo away.
         next.undo_ = std::move(undo_);
+        if (next.undo_.empty() || next.undo_.back() != json_) next.undo_.push_back(json_);
+        if (next.undo_.size() > kUndoDepth) next.undo_.erase(next.undo_.begin());
     }
     *this = std::move(next);
 }
 
-void WorkbenchDocument::checkpoint() {
-    if (kind_ != Kind::Pattern) return;
-    if (undo_.empty() || undo_.back() != json_) undo_.push_back(json_);
-    if (undo_.size() > kUndoDepth) undo_.erase(undo_.begin());
-    redo_.clear();
-}
+void WorkbenchDocument::checkpoint() { stepPending_ = true; }
 
 namespace {
 
@@ -209,13 +214,17 @@ bool step(std::vector<nlohmann::json>& from, std::vector<nlohmann::json>& to, co
 bool WorkbenchDocument::undo() {
     if (kind_ != Kind::Pattern) return false;
     const nlohmann::json current = json_;
-    return step(undo_, redo_, current, [this](const nlohmann::json& j) { replace(j); });
+    const bool moved = step(undo_, redo_, current, [this](const nlohmann::json& j) { commit(j, false); });
+    stepPending_ = true;
+    return moved;
 }
 
 bool WorkbenchDocument::redo() {
     if (kind_ != Kind::Pattern) return false;
     const nlohmann::json current = json_;
-    return step(redo_, undo_, current, [this](const nlohmann::json& j) { replace(j); });
+    const bool moved = step(redo_, undo_, current, [this](const nlohmann::json& j) { commit(j, false); });
+    stepPending_ = true;
+    return moved;
 }
 
 bool WorkbenchDocument::canUndo() const {

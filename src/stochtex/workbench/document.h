@@ -49,13 +49,16 @@ public:
     // Edits since loading (or the last save).
     bool edited() const { return edited_; }
 
-    // Undo history of a pattern: checkpoint() marks the pattern as it is now
-    // as a state to come back to (the workbench marks one per gesture, so a
-    // slider dragged over many frames is one step) and forgets what was
-    // undone; undo() and redo() move between the marked states, skipping
-    // any equal to the current pattern, and say whether they moved. A
-    // state that no longer parses (an image it names is gone) is refused
-    // as set() refuses an edit. At most kUndoDepth states are kept.
+    // Undo history of a pattern. checkpoint() says that the next change
+    // accepted (set, remove, replace) starts a new undo step: the pattern as
+    // it was before it is kept, and what was undone is forgotten. Changes
+    // without a checkpoint between them are one step (the workbench marks
+    // one per gesture, so a slider dragged over many frames is one step); a
+    // refused change touches nothing. undo() and redo() move between the
+    // steps, skipping states equal to the current pattern, and say whether
+    // they moved; the next change after them starts a new step. A state
+    // that no longer parses (an image it names is gone) is refused as set()
+    // refuses an edit. At most kUndoDepth states are kept.
     static constexpr size_t kUndoDepth = 256;
     void checkpoint();
     bool undo();
@@ -89,6 +92,9 @@ private:
     ShadertoySpec shadertoy_;
     bool edited_ = false;
     std::vector<nlohmann::json> undo_, redo_;
+    bool stepPending_ = true;  // the next accepted change starts an undo step
+    // The change itself: kept only if the pattern still parses; `record`: into the undo history.
+    void commit(nlohmann::json next, bool record);
     std::vector<std::filesystem::path> watched_;
     std::vector<std::filesystem::file_time_type> stamps_;
 };

@@ -40,12 +40,12 @@ std::string colourHex(const float rgb[3]) {
 
 namespace {
 
-namespace m = pattern_members;
 
 // A new ring or bilobe component at its members' typical values.
 json ringComponent(const std::string& shape) {
-    json c{{"shape", shape}, {m::kFrequency.name, m::kFrequency.typical()}, {m::kBandwidth.name, m::kBandwidth.typical()}};
-    if (shape == "bilobe") c[m::kOrientation.name] = m::kOrientation.typical();
+    const PatternMembers& m = patternMembers();
+    json c{{"shape", shape}, {m.frequency.name, m.frequency.typical()}, {m.bandwidth.name, m.bandwidth.typical()}};
+    if (shape == "bilobe") c[m.orientation.name] = m.orientation.typical();
     return c;
 }
 
@@ -61,13 +61,16 @@ public:
     void number(const ParamInfo& p, const char* format = "%.4g") {
         float v = float(object_.is_object() ? object_.value(p.name, p.typical()) : p.typical());
         const float speed = float((p.dragTop() - p.min) / 1000.0);
-        if (ImGui::DragFloat(p.name.c_str(), &v, speed, float(p.min), float(p.dragTop()), format))
+        // A value typed past the drag range stays where it is until dragged below it.
+        const float top = std::max(float(p.dragTop()), v);
+        if (ImGui::DragFloat(p.name.c_str(), &v, speed, float(p.min), top, format))
             edit(p.name, json(std::clamp(double(v), p.min, p.max)));
         tooltip(p.description.c_str());
     }
     void integer(const ParamInfo& p) {
         int v = int(object_.is_object() ? object_.value(p.name, (long long)p.typical()) : (long long)p.typical());
-        const int lo = int(std::max(p.min, -double(1 << 30))), top = int(std::min(p.dragTop(), double(1 << 30)));
+        const int lo = int(std::max(p.min, -double(1 << 30)));
+        const int top = std::max(int(std::min(p.dragTop(), double(1 << 30))), v);
         if (ImGui::DragInt(p.name.c_str(), &v, 1.0f, lo, top, "%d"))
             edit(p.name, json(std::clamp((long long)v, (long long)p.min, (long long)p.max)));
         tooltip(p.description.c_str());
@@ -117,7 +120,7 @@ public:
     void point(const char* key, const char* label) {
         if (!object_.is_object() || !object_.contains(key) || !object_[key].is_array() || object_[key].size() != 2)
             return;
-        const ParamInfo& c = pattern_members::kCoordinate;
+        const ParamInfo& c = patternMembers().coordinate;
         float v[2] = {object_[key][0].get<float>(), object_[key][1].get<float>()};
         if (ImGui::DragFloat2(label, v, 0.005f, float(c.min), float(c.max), "%.3f", ImGuiSliderFlags_AlwaysClamp))
             edit(key, json::array({double(v[0]), double(v[1])}));
@@ -158,7 +161,8 @@ void componentsEditor(const json& components, const std::string& pointer, std::v
         if (ImGui::BeginCombo("shape", shape.c_str())) {
             for (const char* s : {"lowpass", "ring", "bilobe"})
                 if (ImGui::Selectable(s, shape == s) && shape != s) {
-                    json next = std::string(s) == "lowpass" ? json{{"shape", s}, {m::kCutoff.name, m::kCutoff.typical()}}
+                    const ParamInfo& cutoff = patternMembers().cutoff;
+                    json next = std::string(s) == "lowpass" ? json{{"shape", s}, {cutoff.name, cutoff.typical()}}
                                                             : ringComponent(s);
                     if (c.contains("weight")) next["weight"] = c["weight"];
                     edits.push_back({at, next});
@@ -166,13 +170,13 @@ void componentsEditor(const json& components, const std::string& pointer, std::v
             ImGui::EndCombo();
         }
         if (shape == "lowpass") {
-            f.number(m::kCutoff, "%.2f");
+            f.number(patternMembers().cutoff, "%.2f");
         } else {
-            f.number(m::kFrequency, "%.2f");
-            f.number(m::kBandwidth, "%.2f");
-            if (shape == "bilobe") f.number(m::kOrientation, "%.1f°");
+            f.number(patternMembers().frequency, "%.2f");
+            f.number(patternMembers().bandwidth, "%.2f");
+            if (shape == "bilobe") f.number(patternMembers().orientation, "%.1f°");
         }
-        f.number(m::kWeight, "%.3f");
+        f.number(patternMembers().weight, "%.3f");
         if (components.size() > 1 && ImGui::SmallButton("remove component")) edits.push_back({at, nullptr, true});
         ImGui::Separator();
         ImGui::PopID();
@@ -192,9 +196,9 @@ void noiseEditor(const json& noise, const std::string& pointer, std::vector<Json
         f.boolean("gaussianize", "gaussianize", true, "blend in Gaussian space, keep the histogram");
         return;
     }
-    f.powerOfTwo(m::kNoiseSize);
-    f.number(m::kNoiseMean);
-    f.number(m::kNoiseStddev);
+    f.powerOfTwo(patternMembers().noiseSize);
+    f.number(patternMembers().noiseMean);
+    f.number(patternMembers().noiseStddev);
     componentsEditor(noise.value("components", json::array()), pointer + "/components", edits);
 }
 
@@ -205,7 +209,7 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
     Fields f(colormap, pointer, edits);
     const std::string type = colormap.value("type", std::string());
     f.choice("transfer", "transfer", {"srgb", "linear"}, "srgb", "colours as sRGB codes (colour) or as data");
-    f.integer(m::kColormapResolution);
+    f.integer(patternMembers().colormapResolution);
     if (previews.colormap && pointer == previews.colormapPointer) {
         const ImVec2 at = ImGui::GetCursorScreenPos();
         // The canvas image holds y = 1 in its top row (ColormapTable::toImage).
@@ -268,9 +272,10 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
                 g.point("max", "max");
                 g.point("center", "center");
                 g.point("point", "point");
-                for (const ParamInfo* p : {&m::kRadius, &m::kInner, &m::kOuter, &m::kWidth})
+                const PatternMembers& m = patternMembers();
+                for (const ParamInfo* p : {&m.radius, &m.inner, &m.outer, &m.width})
                     if (s.contains(p->name)) g.number(*p, "%.3f");
-                if (s.contains("angle")) g.number(m::kAngle, "%.1f°");
+                if (s.contains("angle")) g.number(patternMembers().angle, "%.1f°");
                 if (ImGui::SmallButton("remove")) edits.push_back({at, nullptr, true});
                 ImGui::TreePop();
             }
@@ -278,7 +283,7 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
         }
     } else if (type == "phasor") {
         f.choice("profile", "profile", {"sine", "sawtooth", "square", "image"}, "sine");
-        if (colormap.value("profile", std::string()) == "square") f.number(m::kDuty);
+        if (colormap.value("profile", std::string()) == "square") f.number(patternMembers().duty);
         const json& palette = colormap.value("palette", json::array());
         for (size_t i = 0; i < palette.size(); ++i) {
             ImGui::PushID(int(i));
@@ -296,8 +301,8 @@ void colormapEditor(const json& colormap, const std::string& pointer, const Edit
 }
 
 // A choice among node ids (an input's source, the output); an edit when another is picked.
-void nodeChoice(const char* label, const std::string& now, const std::vector<std::string>& ids, const std::string& pointer,
-                const char* help, std::vector<JsonEdit>& edits) {
+void nodeChoice(const char* label, const std::string& now, const std::vector<std::string>& ids,
+                const std::string& pointer, const char* help, std::vector<JsonEdit>& edits) {
     if (ImGui::BeginCombo(label, now.empty() ? "?" : now.c_str())) {
         for (const std::string& id : ids)
             if (ImGui::Selectable(id.c_str(), id == now) && id != now) edits.push_back({pointer, json(id)});
@@ -419,7 +424,7 @@ std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& p
     expand(previews);
     if (ImGui::CollapsingHeader("Pattern", ImGuiTreeNodeFlags_DefaultOpen)) {
         header.seed("seed", "seed", "tile offsets and (unless a noise sets its own) the examples (Enter applies)");
-        header.number(m::kScale, "%.3f");
+        header.number(patternMembers().scale, "%.3f");
         header.choice("offsets", "offsets", {"independent", "shared"}, "independent");
     }
     if (pattern.contains("nodes") && pattern["nodes"].is_object()) {
@@ -466,9 +471,9 @@ std::vector<JsonEdit> patternEditor(const json& pattern, const EditorPreviews& p
     if (normalMap) expand(previews);
     if (normalMap && ImGui::CollapsingHeader("Normal map")) {
         Fields n(pattern["normal_map"], "/normal_map", edits);
-        n.number(m::kAmplitude);
-        n.number(m::kRoughness);
-        n.number(m::kSpecular);
+        n.number(patternMembers().amplitude);
+        n.number(patternMembers().roughness);
+        n.number(patternMembers().specular);
         n.colour("albedo", "albedo");
     }
     return edits;

@@ -16,7 +16,8 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
     for (size_t i = 0; i < n; ++i) {
         const JsonReader s = r.at(i);
         s.expectObject({"frame", "zoom", "at", "pan", "filter", "aniso", "set", "value", "mode", "analysis", "view",
-                        "tilt", "pick", "pause", "screenshot", "save", "record", "stop_recording", "undo", "redo", "quit"});
+                        "tilt", "pick", "pause", "screenshot", "save", "record", "stop_recording", "undo", "redo",
+                        "quit"});
         WorkbenchStep step;
         if (s.has("frame")) {
             const int f = s.integer("frame", 0, 0, 1000000);
@@ -57,10 +58,13 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
                 ++actions, step.action = action, step.text = f->string();
                 if (step.text.empty()) f->fail("needs a file name");
             }
-        if (s.has("undo")) ++actions, step.action = A::Undo;
-        if (s.has("redo")) ++actions, step.action = A::Redo;
-        if (s.has("stop_recording")) ++actions, step.action = A::StopRecording;
-        if (s.has("quit")) ++actions, step.action = A::Quit;
+        // Steps that take no value are written `true`.
+        for (auto [key, action] : {std::pair{"undo", A::Undo}, {"redo", A::Redo},
+                                   {"stop_recording", A::StopRecording}, {"quit", A::Quit}})
+            if (s.has(key)) {
+                if (!s.boolean(key, false)) s.at(key).fail("is written true");
+                ++actions, step.action = action;
+            }
         if (actions != 1) s.fail(actions == 0 ? "a step needs one action (zoom, pan, filter, set, screenshot, …)"
                                               : "one action per step");
         steps.push_back(std::move(step));

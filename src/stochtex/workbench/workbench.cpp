@@ -137,7 +137,9 @@ public:
         // What the first frame needs, built now: a program that does not
         // compile or a pattern the GPU cannot draw fails the run here.
         context_->framebufferSize(windowWidth_, windowHeight_);
-        pixelScale_ = std::max(1, windowWidth_) / float(camera_.view.width + panel);
+        int coordinatesWide = 0, coordinatesHigh = 0;
+        glfwGetWindowSize(window_, &coordinatesWide, &coordinatesHigh);
+        pixelScale_ = coordinatesWide > 0 ? float(windowWidth_) / float(coordinatesWide) : 1.0f;
         if (isShadertoy())
             buildHost(textureRect().width, textureRect().height);
         else
@@ -335,11 +337,13 @@ private:
         gestureOpen_ = gestureOpen_ && (ImGui::IsAnyItemActive() || ImGui::IsMouseDown(ImGuiMouseButton_Left));
     }
     void undo() {
+        gestureOpen_ = false;  // an edit after it is a step of its own
         guarded([&] {
             if (doc_.undo()) needsRebuild_ = true, notice_ = "undone";
         });
     }
     void redo() {
+        gestureOpen_ = false;
         guarded([&] {
             if (doc_.redo()) needsRebuild_ = true, notice_ = "redone";
         });
@@ -486,7 +490,9 @@ private:
         // A new picture size (Tab, side by side, the window resized): the program runs on at it.
         if (host_ && !hostStale_ && !hostFailed_ && (host_->settings().width != w || host_->settings().height != h)) {
             try {
+                const float sx = float(w) / float(host_->settings().width), sy = float(h) / float(host_->settings().height);
                 host_->resize(w, h);
+                for (int k = 0; k < 4; ++k) mouse_[size_t(k)] *= k % 2 == 0 ? sx : sy;  // iMouse in the new pixels
                 viewChanged();
             } catch (const std::exception& e) {
                 error_ = e.what();
@@ -554,7 +560,8 @@ private:
             analysedVersion_ = version;
             analysedHost_ = host_.get();
         }
-        const bool capture = isLastFrame() || quit_ || !pendingScreenshots_.empty() || recorder_;
+        const bool capture =
+            isLastFrame() || quit_ || context_->shouldClose() || !pendingScreenshots_.empty() || recorder_;
         collectAnalysis(capture);
         if (!analysisJob_.valid() && queuedAnalysis_) {
             AnalysisRequest request = std::move(*queuedAnalysis_);
@@ -634,8 +641,8 @@ private:
         recorder_ = std::make_unique<FrameSequenceWriter>(path, pr.width, pr.height, options_.shadertoy.fps, "",
                                                           Transfer::Linear);
         recordingSize_ = {pr.width, pr.height};
-        recordingStart_ = std::chrono::steady_clock::now();
         recordingClock_.emplace(options_.shadertoy.fps);
+        heldShot_ = {};
         recordedProgramFrame_ = -1;
         recordingPath_ = path;
         notice_ = "recording " + path;
@@ -651,21 +658,31 @@ private:
         // so its video plays at the program's speed. A pattern has no clock:
         // its frames go on the wall clock, so the video plays what the person
         // saw, at their pace.
-        int copies = 0;
         if (isShadertoy()) {
             // A paused program adds no frame to its video: one per program frame.
             const long long programFrame = host_ ? host_->frame() : -1;
-            copies = programFrame != recordedProgramFrame_ ? 1 : 0;
+            if (programFrame != recordedProgramFrame_) recorder_->write(shot);
             recordedProgramFrame_ = programFrame;
-        } else {
-            copies = recordingClock_->framesAt(
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - recordingStart_).count());
+            return;
         }
-        for (int k = 0; k < copies; ++k) recorder_->write(shot);
+        // A pattern's picture is held until the next one: the frames whose
+        // times fell while it was on screen are written with it. The clock
+        // starts at the first picture (the first frame may take a build).
+        if (heldShot_.empty()) {
+            recordingStart_ = std::chrono::steady_clock::now();
+            heldShot_ = shot;
+            return;
+        }
+        const int held = recordingClock_->framesBefore(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - recordingStart_).count());
+        for (int k = 0; k < held; ++k) recorder_->write(heldShot_);
+        heldShot_ = shot;
     }
     void stopRecording() {
         if (!recorder_) return;
         const std::unique_ptr<FrameSequenceWriter> r = std::move(recorder_);
+        if (!heldShot_.empty()) r->write(heldShot_);  // the last picture, one frame
+        heldShot_ = {};
         const std::string written = r->finish();
         notice_ = "wrote " + (written.empty() ? recordingPath_ : written);
     }
@@ -1071,6 +1088,7 @@ private:
     std::chrono::steady_clock::time_point recordingStart_;
     std::optional<WallClockFrames> recordingClock_;
     long long recordedProgramFrame_ = -1;
+    Image heldShot_;  // a pattern recording's last picture, written when the next comes
     std::array<float, 4> mouse_{};
     int windowWidth_ = 1, windowHeight_ = 1;  // the framebuffer's pixels
     float pixelScale_ = 1;                     // framebuffer pixels per window coordinate (HiDPI: 2)
