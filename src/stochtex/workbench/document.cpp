@@ -1,7 +1,6 @@
 #include "stochtex/workbench/document.h"
 
 #include <algorithm>
-#include <functional>
 #include <system_error>
 
 #include "stochtex/core/atomic_file.h"
@@ -102,8 +101,7 @@ void WorkbenchDocument::commit(nlohmann::json next, bool record) {
     }
     edited_ = true;
     if (record && stepPending_) {
-        if (undo_.empty() || undo_.back() != before) undo_.push_back(std::move(before));
-        if (undo_.size() > kUndoDepth) undo_.erase(undo_.begin());
+        remember(std::move(before));
         redo_.clear();
         stepPending_ = false;
     }
@@ -181,51 +179,38 @@ void WorkbenchDocument::reload() {
     if (kind_ == Kind::Pattern) {
         // What was on screen stays one undo away.
         next.undo_ = std::move(undo_);
-        if (next.undo_.empty() || next.undo_.back() != json_) next.undo_.push_back(json_);
-        if (next.undo_.size() > kUndoDepth) next.undo_.erase(next.undo_.begin());
+        next.remember(json_);
     }
     *this = std::move(next);
 }
 
 void WorkbenchDocument::checkpoint() { stepPending_ = true; }
 
-namespace {
+void WorkbenchDocument::remember(nlohmann::json state) {
+    if (undo_.empty() || undo_.back() != state) undo_.push_back(std::move(state));
+    if (undo_.size() > kUndoDepth) undo_.erase(undo_.begin());
+}
 
-// Moves from the current pattern to the nearest different state of `from`,
-// pushing the current one on `to`; false when there is none.
-bool step(std::vector<nlohmann::json>& from, std::vector<nlohmann::json>& to, const nlohmann::json& current,
-          const std::function<void(const nlohmann::json&)>& apply) {
-    while (!from.empty() && from.back() == current) from.pop_back();
+bool WorkbenchDocument::travel(std::vector<nlohmann::json>& from, std::vector<nlohmann::json>& to) {
+    if (kind_ != Kind::Pattern) return false;
+    stepPending_ = true;  // the next change after an undo or redo is a step of its own
+    while (!from.empty() && from.back() == json_) from.pop_back();
     if (from.empty()) return false;
+    nlohmann::json current = json_;
     nlohmann::json state = std::move(from.back());
     from.pop_back();
     try {
-        apply(state);
+        commit(state, false);
     } catch (...) {
         from.push_back(std::move(state));  // kept: the file it needs may come back
         throw;
     }
-    to.push_back(current);
+    to.push_back(std::move(current));
     return true;
 }
 
-}  // namespace
-
-bool WorkbenchDocument::undo() {
-    if (kind_ != Kind::Pattern) return false;
-    const nlohmann::json current = json_;
-    const bool moved = step(undo_, redo_, current, [this](const nlohmann::json& j) { commit(j, false); });
-    stepPending_ = true;
-    return moved;
-}
-
-bool WorkbenchDocument::redo() {
-    if (kind_ != Kind::Pattern) return false;
-    const nlohmann::json current = json_;
-    const bool moved = step(redo_, undo_, current, [this](const nlohmann::json& j) { commit(j, false); });
-    stepPending_ = true;
-    return moved;
-}
+bool WorkbenchDocument::undo() { return travel(undo_, redo_); }
+bool WorkbenchDocument::redo() { return travel(redo_, undo_); }
 
 bool WorkbenchDocument::canUndo() const {
     return std::any_of(undo_.begin(), undo_.end(), [this](const nlohmann::json& j) { return j != json_; });

@@ -95,6 +95,10 @@ private:
     bool stepPending_ = true;  // the next accepted change starts an undo step
     // The change itself: kept only if the pattern still parses; `record`: into the undo history.
     void commit(nlohmann::json next, bool record);
+    // A state to come back to, on top of the undo history (unless equal to the top; at most kUndoDepth).
+    void remember(nlohmann::json state);
+    // Moves to the nearest state of `from` unlike the current one, the current one going on `to`.
+    bool travel(std::vector<nlohmann::json>& from, std::vector<nlohmann::json>& to);
     std::vector<std::filesystem::path> watched_;
     std::vector<std::filesystem::file_time_type> stamps_;
 };
