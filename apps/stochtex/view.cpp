@@ -40,7 +40,9 @@ void registerView(CLI::App& app) {
     addEnumFlag(*cmd, "--show", w.view, kWorkbenchViewNames, "view", "Where the pattern is seen (default: --view's)");
     addEnumFlag(*cmd, "--mode", w.mode, kWorkbenchModeNames, "mode", "What the picture shows (M cycles)");
     addEnumFlag(*cmd, "--analysis", w.analysis, kLiveAnalysisNames, "analysis", "The live analysis (A cycles)");
-    cmd->add_option("--fps", w.shadertoy.fps, "Recordings' frame rate (a pattern's frames on the wall clock); a program's iFrameRate")->capture_default_str();
+    cmd->add_option("--fps", w.shadertoy.fps,
+                    "Recordings' frame rate (a pattern's frames on the wall clock); a program's iFrameRate")
+        ->capture_default_str();
     cmd->add_flag("--no-panel", args->noPanel, "Start with the panel hidden (Tab shows it)");
     cmd->add_option("--script", args->script, "Steps to run, a JSON file (docs/WORKBENCH.md)");
     cmd->add_option("--frames", w.frames, "Quit after this many frames (0: when the window closes)")

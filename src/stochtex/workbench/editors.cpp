@@ -40,7 +40,6 @@ std::string colourHex(const float rgb[3]) {
 
 namespace {
 
-
 // A new ring or bilobe component at its members' typical values.
 json ringComponent(const std::string& shape) {
     const PatternMembers& m = patternMembers();
@@ -401,7 +400,8 @@ std::vector<std::string> nodesFitting(const json& graph, PortType type, const st
 }
 
 JsonEdit addGraphNode(const json& graph, const NodeInfo& node, const std::string& imagePath) {
-    const json& nodes = graph.contains("nodes") && graph["nodes"].is_object() ? graph["nodes"] : json::object();
+    static const json none = json::object();
+    const json& nodes = graph.contains("nodes") && graph["nodes"].is_object() ? graph["nodes"] : none;
     std::string id;
     for (int k = 1; id.empty() || nodes.contains(id); ++k) id = node.name + "_" + std::to_string(k);
     json added = nodeWithSampleParams(node, imagePath);

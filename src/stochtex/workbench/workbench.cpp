@@ -240,10 +240,7 @@ private:
 
     // Another statistic of the same samples: shown from the accumulator at once, the samples kept.
     void showStatisticChanged() {
-        if (!correlation_) return;
-        const LiveAnalysisResult r = correlation_->result(statistic_);
-        analysisImage_.upload(r.image);
-        analysisSummary_ = r.summary;
+        if (correlation_) showAnalysisResult(correlation_->result(statistic_));
     }
 
     // Something the picture shows changed: analyses of the old picture are stale.
