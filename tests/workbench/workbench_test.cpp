@@ -196,51 +196,6 @@ TEST(WorkbenchDocument, AProgramWatchesItsPassFiles) {
     EXPECT_THROW(WorkbenchDocument::shadertoy((dir.path / "missing").string()), InputError);
 }
 
-// The panels drawn (headless ImGui, no backend) over every preset and the
-// sample graph of every node: no exception from a member's type, balanced
-// ImGui stacks, and no edit made by merely drawing.
-TEST(WorkbenchEditors, EveryPresetAndNodeDrawsWithoutEdits) {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(400, 2000);
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    std::vector<json> patterns;
-    for (const std::string& name : presetNames()) patterns.push_back(JsonReader::parse(presetText(name), name));
-    for (const NodeInfo& node : graphNodes()) patterns.push_back(sampleNodeGraph(node, "exemplar.png"));
-    EditorPreviews previews;
-    int dummy = 1;
-    previews.colormap = &dummy;  // any id: nothing is rendered
-    EditorState state;
-    for (const json& pattern : patterns) {
-        int vertices[2] = {0, 0};
-        for (int frame = 0; frame < 4; ++frame) {
-            previews.expandAll = frame >= 2;  // two frames as opened, then everything unfolded
-            io.DeltaTime = 1.0f / 60;
-            ImGui::NewFrame();
-            ImGui::SetNextWindowSize(ImVec2(400, 2000));
-            ImGui::Begin("panel");
-            std::vector<JsonEdit> edits;
-            EXPECT_NO_THROW(edits = patternEditor(pattern, previews, state)) << pattern.value("name", "?");
-            EXPECT_TRUE(edits.empty()) << pattern.value("name", "?") << ": " << (edits.empty() ? "" : edits[0].pointer);
-            ImGui::End();
-            ImGui::Render();
-            if (frame % 2 == 1) vertices[frame / 2] = ImGui::GetDrawData()->TotalVtxCount;
-        }
-        // Unfolded, every section drew its widgets.
-        EXPECT_GT(vertices[1], vertices[0] + 200) << pattern.value("name", "?");
-        // Fold everything again for the next pattern.
-        ImGui::NewFrame();
-        ImGui::Begin("panel");
-        ImGui::GetStateStorage()->SetAllInt(0);
-        ImGui::End();
-        ImGui::Render();
-    }
-    ImGui::DestroyContext();
-}
-
 // A panel driven as a person would: the mouse placed and pressed frame by
 // frame (headless ImGui, no backend), the canvas found where it was drawn.
 class DrivenPanel {
@@ -291,6 +246,39 @@ public:
         return {lo, hi};
     }
 };
+
+// The panels drawn (headless ImGui, no backend) over every preset and the
+// sample graph of every node: no exception from a member's type, balanced
+// ImGui stacks, and no edit made by merely drawing.
+TEST(WorkbenchEditors, EveryPresetAndNodeDrawsWithoutEdits) {
+    DrivenPanel panel;
+    std::vector<json> patterns;
+    for (const std::string& name : presetNames()) patterns.push_back(JsonReader::parse(presetText(name), name));
+    for (const NodeInfo& node : graphNodes()) patterns.push_back(sampleNodeGraph(node, "exemplar.png"));
+    EditorPreviews previews;
+    int dummy = 1;
+    previews.colormap = &dummy;  // any id: nothing is rendered
+    EditorState state;
+    for (const json& pattern : patterns) {
+        int vertices[2] = {0, 0};
+        for (int frame = 0; frame < 4; ++frame) {
+            previews.expandAll = frame >= 2;  // two frames as opened, then everything unfolded
+            std::vector<JsonEdit> edits;
+            EXPECT_NO_THROW(edits = panel.frame(pattern, previews, state, ImVec2(-10, -10), false))
+                << pattern.value("name", "?");
+            EXPECT_TRUE(edits.empty()) << pattern.value("name", "?") << ": " << (edits.empty() ? "" : edits[0].pointer);
+            if (frame % 2 == 1) vertices[frame / 2] = ImGui::GetDrawData()->TotalVtxCount;
+        }
+        // Unfolded, every section drew its widgets.
+        EXPECT_GT(vertices[1], vertices[0] + 200) << pattern.value("name", "?");
+        // Fold everything again for the next pattern.
+        ImGui::NewFrame();
+        ImGui::Begin("panel");
+        ImGui::GetStateStorage()->SetAllInt(0);
+        ImGui::End();
+        ImGui::Render();
+    }
+}
 
 // Clicking the painted colormap's canvas adds the brush's shape where the
 // click was (x right, y up), and the document takes the edit; the move tool
