@@ -6,7 +6,7 @@
 
 #include "common.h"
 
-#include "stochtex/studies/zoom_studies.h"
+#include "stochtex/studies/artifact_report.h"
 
 namespace stochtex::cli {
 

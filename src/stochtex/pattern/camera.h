@@ -15,7 +15,7 @@
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/view.h"
 
 namespace stochtex {
 

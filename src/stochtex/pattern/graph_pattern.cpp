@@ -75,8 +75,6 @@ ColormapTable curveTable(const std::vector<std::array<double, 2>>& points, int r
 
 }  // namespace
 
-bool needsGraphEvaluator(const PatternSpec& spec) { return spec.graph && !foldsIntoPattern(*spec.graph); }
-
 GraphPattern GraphPattern::build(const PatternSpec& spec) {
     if (!spec.graph) throw std::invalid_argument("GraphPattern::build: the pattern is not a graph");
     const TextureGraph& graph = *spec.graph;

@@ -42,10 +42,6 @@
 
 namespace stochtex {
 
-// Whether the pattern file is a texture graph that needs GraphPattern: one
-// with a non-linear node before its output (else it is a Pattern, H∘N).
-bool needsGraphEvaluator(const PatternSpec& spec);
-
 // The examples' tables hold at most this many entries in all (each table is
 // kept twice, for points and in blending space, 16 bytes an entry: 256 MiB).
 constexpr long long kMaxGraphTableEntries = 1ll << 23;

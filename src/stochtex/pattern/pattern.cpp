@@ -8,7 +8,6 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/noise/slopes.h"
-#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/texture_graph.h"
 
 namespace stochtex {
@@ -84,20 +83,6 @@ std::array<float, 2> Pattern::field(double u, double v) const {
 Rgb Pattern::evaluate(double u, double v) const {
     const auto n = field(u, v);
     return colormap_.sample(n[0], n[1]);
-}
-
-void validateView(const View& view) {
-    const std::string size = std::to_string(view.width) + "x" + std::to_string(view.height);
-    if (view.width < 1 || view.height < 1 || view.width > kMaxOutputSide || view.height > kMaxOutputSide)
-        throw InputError::parameter("size", "must be in [1, " + std::to_string(kMaxOutputSide) + "] per side, got " + size);
-    if ((long long)view.width * view.height > kMaxOutputPixels)
-        throw InputError::parameter("size", "must be at most " + std::to_string(kMaxOutputPixels) + " pixels, got " + size);
-    if (!(view.scale > 0) || !std::isfinite(view.scale) || view.scale > 1e6)
-        throw InputError::parameter("scale", "must be a finite number in (0, 1e6], got " + formatValue(view.scale));
-    if (!std::isfinite(view.offsetU) || !std::isfinite(view.offsetV) || std::abs(view.offsetU) > 1e9 ||
-        std::abs(view.offsetV) > 1e9)
-        throw InputError::parameter("offset", "must be finite and at most 1e9 texels, got " + formatValue(view.offsetU) +
-                                                  "," + formatValue(view.offsetV));
 }
 
 // Walks the view's pixels row-parallel. Neighbouring pixels on a scanline

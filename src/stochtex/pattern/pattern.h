@@ -13,16 +13,9 @@
 #include "stochtex/noise/tiling_blending.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/pattern/view.h"
 
 namespace stochtex {
-
-// Maps output pixels to texture space: pixel (px, py) covers example texels
-// offset + (p + ½)·scale, i.e. uv = (offset + (p + ½)·scale) / W.
-struct View {
-    int width = 512, height = 512;
-    double scale = 1.0;              // example texels per output pixel
-    double offsetU = 0, offsetV = 0;  // in example texels
-};
 
 // The normals of a pattern (its "normal_map"): the slope pair of a height
 // example, a Shared two-channel field (noise/slopes.h), and how it is shaded
@@ -83,8 +76,5 @@ private:
     std::optional<NormalMap> normals_;
 };
 
-// Checks a view against the output caps; InputError::parameter naming size,
-// scale or offset otherwise.
-void validateView(const View& view);
 
 }  // namespace stochtex

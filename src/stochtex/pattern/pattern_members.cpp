@@ -4,7 +4,7 @@
 
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/colormap.h"
-#include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/pattern/pattern_file.h"
 
 namespace stochtex {
 

@@ -7,144 +7,26 @@
 // (texture_graph.h),
 // documented in full in docs/PATTERNS.md. Every error names the source and
 // the JSON pointer of the value at fault.
-#include <array>
 #include <cstdint>
 #include <filesystem>
-#include <memory>
-#include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
-#include "stochtex/image/colour_space.h"
-#include "stochtex/noise/example.h"
-#include "stochtex/noise/spectrum.h"
-#include "stochtex/noise/tiling_blending.h"
-#include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/pattern_file.h"
+#include "stochtex/pattern/pattern_parts.h"
 
 namespace stochtex {
 
-// The values image files may hold (8/16-bit PNGs always do; float EXRs may
-// not, and are refused): an exemplar's pixels are noise values, in the
-// colormap's domain [0, 1]; a colormap's are colours, at most the largest
-// half float (the GPU table and the engine export may store halves).
-constexpr double kMinExemplarValue = 0.0, kMaxExemplarValue = 1.0;
-constexpr double kMaxColormapValue = 65504.0;
-
-constexpr int kMaxOutputSide = 16384;
-constexpr long long kMaxOutputPixels = 8192LL * 8192LL;
-
-struct NoiseSpec {
-    enum class Source { Spectrum, Image };
-    Source source = Source::Spectrum;
-    SpectrumSpec spectrum;          // Source::Spectrum
-    bool explicitSeed = false;      // spectrum.seed came from the file
-    std::filesystem::path image;    // Source::Image (resolved against the file's folder)
-    bool gaussianize = true;        // Source::Image: blend T(E), apply T⁻¹ after
-    int channel = -1;               // Source::Image: −1, the gray of its channels; else this channel
-    // Source::Image with a channel: how its codes become values (Srgb: a
-    // colour channel decoded to linear light; unset: Srgb, but Linear for a
-    // float file). The gray of an exemplar is its codes, as data.
-    std::optional<Transfer> transfer;
-};
-
-struct ColormapSpec {
-    enum class Source { Analytic, Phasor, Image, Painted };
-    Source source = Source::Analytic;
-    AnalyticColormap analytic = AnalyticColormap::Gaussian;
-    PhasorProfile profile = PhasorProfile::Sine;
-    double duty = 0.5;
-    std::vector<Rgb> palette;      // Phasor: P's value through these colours (as given, sRGB unless linear)
-    std::filesystem::path image;   // Image; Phasor with profile Image: the W×1 profile
-    PaintedColormap painted;
-    int resolution = 256;
-    // How the colours given (hex, [r, g, b], the analytic H, an image's codes)
-    // become table entries (docs/PATTERNS.md): Srgb decodes them to linear
-    // light, Linear takes them as data. Unset: Srgb, except a float (EXR)
-    // image, whose values are linear already.
-    std::optional<Transfer> transfer;
-};
-
-// How a normal map is lit and shaded (kernel/lean.glsl, docs/MATH.md "LEAN
-// mapping"). Directions are in the texture frame (x along u, y along v, z
-// up out of the plane), unit length, z > 0.
-struct LeanShading {
-    double roughness = 0.1;                      // base Beckmann roughness m (> 0)
-    std::array<double, 3> light{0.0, -0.6, 0.8};  // towards the light
-    // Towards the viewer; unset: from the camera (Camera::viewDirection).
-    std::optional<std::array<double, 3>> view;
-    Rgb albedo{0.18f, 0.18f, 0.18f};             // linear light
-    double specular = 0.05;                      // weight of the lobe's reflection
-};
-
-// Pattern JSON "normal_map": a height example (a noise, before any
-// Gaussianization) whose slopes, scaled to an RMS slope `amplitude`, are
-// the normals; shaded by the lean response.
-struct NormalMapSpec {
-    NoiseSpec height;
-    double amplitude = 0.3;  // RMS slope per axis
-    LeanShading shading;
-};
-
-// Pattern JSON "offsets".
-enum class OffsetMode { Independent, Shared };
-inline const EnumNames<OffsetMode> kOffsetModeNames{{"independent", OffsetMode::Independent},
-                                                    {"shared", OffsetMode::Shared}};
-
-struct TextureGraph;  // texture_graph.h
-
-struct PatternSpec {
-    std::string name = "pattern";
-    uint32_t seed = 1;
-    int width = 512, height = 512;
-    double scale = 1.0;  // example texels per output pixel
-    OffsetMode offsets = OffsetMode::Independent;
-    double gridDensity = kDefaultGridDensity;  // 2√3 triangle-grid cells per uv unit (as a float)
-    NoiseSpec noise[2];
-    bool quadraturePair = false;  // noise_y is "quadrature": the Hilbert pair of noise_x
-    ColormapSpec colormap;
-    std::optional<NormalMapSpec> normalMap;  // the pattern also carries normals
-    // A graph file (texture_graph.h): its nodes give the two examples and the
-    // colormap (`colormap` holds the output node's); noise[] is unused.
-    std::shared_ptr<const TextureGraph> graph;
-};
-
-NoiseSpec parseNoiseSpec(const JsonReader& r, const std::filesystem::path& baseDir);
-// The checks of a spectrum noise read from r (its members size and
-// components): a power-of-two size, weights that do not sum to zero, the
-// synthesis' work budget; failures at r's members.
-void checkSpectrumSpec(const JsonReader& r, const SpectrumSpec& s);
-// One spectrum component object (a NOISE's "components" entry).
-SpectrumComponent parseSpectrumComponent(const JsonReader& r);
-// A path member, relative to baseDir unless absolute; fails if empty.
-std::filesystem::path resolveInputPath(const JsonReader& r, const std::filesystem::path& baseDir);
-ColormapSpec parseColormapSpec(const JsonReader& r, const std::filesystem::path& baseDir);
-NormalMapSpec parseNormalMapSpec(const JsonReader& r, const std::filesystem::path& baseDir);
-// InputError naming the parameter (roughness, amplitude, specular, light,
-// view) if the shading is unusable; directions are normalised.
-LeanShading validatedShading(LeanShading s);
 PatternSpec parsePatternSpec(const JsonReader& r, const std::filesystem::path& baseDir);
-
-// Reads a file (InputError if missing) and parses it as JSON.
-nlohmann::json readJsonFile(const std::string& path);
+// Reads a pattern or graph file (InputError naming it if missing or wrong).
 PatternSpec loadPatternFile(const std::string& path);
 
 // Gives noise without an explicit seed a seed derived from the pattern seed
 // (axis 0 or 1), so one pattern seed controls everything.
 uint32_t noiseSeed(const PatternSpec& spec, int axis);
 
-// The example image (1 channel, W×W, values in [0,1]) as specified,
-// before any Gaussianization.
-Image buildExampleImage(const NoiseSpec& spec, const std::string& context);
-// The example prepared for tiling and blending (Gaussianized if asked).
-NoiseExample buildNoiseExample(const NoiseSpec& spec, const std::string& context);
-// The table H in linear light (or as data, with transfer Linear): the one
-// place colours of a pattern enter.
-ColormapTable buildColormap(const ColormapSpec& spec);
-// A phasor colormap's profile P in the table's space (Source::Phasor only):
-// palette colours decoded, a profile image read and checked (W×1, else an
-// InputError naming the file).
-PhasorColourProfile buildPhasorProfile(const ColormapSpec& spec);
+// Whether the pattern file is a texture graph that needs GraphPattern: one
+// with a non-linear node before its output (else it is a Pattern, H∘N).
+bool needsGraphEvaluator(const PatternSpec& spec);
 
 }  // namespace stochtex

@@ -4,6 +4,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/kernel/lean.h"
+#include "stochtex/pattern/pattern_parts.h"
 
 namespace stochtex {
 

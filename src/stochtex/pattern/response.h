@@ -19,7 +19,7 @@
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/pattern/colormap.h"
-#include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/pattern/pattern_file.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 
 namespace stochtex {

@@ -24,7 +24,7 @@
 
 #include "stochtex/noise/example.h"
 #include "stochtex/pattern/graph_nodes.h"
-#include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/pattern/pattern_parts.h"
 
 namespace stochtex {
 

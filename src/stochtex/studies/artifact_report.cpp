@@ -1,3 +1,5 @@
+#include "stochtex/studies/artifact_report.h"
+
 // The report page of the procedural textures' artifacts (`stochtex
 // analyze`): the zoom texture's sliding, contrast, correlation, spectrum,
 // flow and coherence, the image bases, the marble texture and the stimuli

@@ -1,0 +1,49 @@
+#pragma once
+// The report page of the thesis's studies (`stochtex analyze`): the zoom
+// texture's studies (zoom_studies.h), its frame analyses, the image bases,
+// the marble texture and the perception stimuli, in one page.
+#include <string>
+#include <vector>
+
+#include "stochtex/studies/image_base_study.h"
+#include "stochtex/studies/marble_study.h"
+#include "stochtex/studies/stimuli.h"
+#include "stochtex/studies/zoom_studies.h"
+
+namespace stochtex {
+
+// --- the report page of the three studies (`stochtex analyze`) ---
+
+struct ArtifactReportOptions {
+    CorrelationStudyOptions correlation;  // its zoom texture and base feed every part
+    ContrastStudyOptions contrast;
+    int contrastLayers = 16;              // n of the contrast part (Figure 2.6 uses 16)
+    // The frame analyses of the zoom texture (spectrum over instances,
+    // optical flow, temporal coherence and its curve over n), on frames of
+    // frameSize² centred on the zoom centre.
+    int frameSize = 256;                              // [16, 2048]
+    int spectrumInstances = 16;                       // [1, 100000]
+    std::vector<int> coherenceLayers{2, 3, 4, 6, 8, 12};  // each [1, 64]
+    int coherenceFrames = 32;                         // over two periods of the zoom, [2, 10000]
+    // Image textures as the base (Figures 2.15–2.17; none: the part is left out).
+    std::vector<ImageBase> imageBases;
+    ImageBaseStudyOptions imageBase;
+    // The marble texture (§2.7.2, 2.8; Figures 2.19–2.24) and the perception
+    // stimuli (§2.6.2; Figures 2.13–2.14, with the experiment page).
+    MarbleStudyOptions marble;
+    StimulusSetOptions stimuli;
+};
+// InputError for unusable settings, before any work.
+void validateArtifactReport(const ArtifactReportOptions& options);
+// Runs sliding, contrast, correlation, spectrum, flow, temporal coherence,
+// the image bases, the marble texture and the stimuli, writing each part's
+// files into dir/zoom, dir/contrast, dir/correlation, dir/spectrum, dir/flow,
+// dir/coherence, dir/images, dir/marble (with the sliding videos, MP4 and
+// animated WebP) and dir/stimuli (with experiment.html) as soon as it is
+// done, then dir/index.html with every figure and table, each section naming
+// the thesis figure it reproduces. The page carries no wall-clock time, so
+// two runs write identical files.
+void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& options,
+                         const StudyProgress& progress = {});
+
+}  // namespace stochtex
