@@ -12,7 +12,10 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
+#include <tuple>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,7 @@
 #include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/tiling_blending.h"
 #include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/ops/ops.h"
 
 namespace stochtex {
 namespace {
@@ -49,7 +53,8 @@ GlContext& context() {
 // files `chunks`. Each item reads `inWords` uvec4 words (word(k), wordf(k))
 // and writes `outWords` (emit(k, uvec4), emitf(k, vec4)).
 std::vector<uvec4> runOnGpu(const std::vector<std::string>& chunks, const std::string& body, int inWords, int outWords,
-                            const std::vector<uvec4>& input) {
+                            const std::vector<uvec4>& input,
+                            std::vector<std::pair<std::string, std::string>> generated = {}) {
     const int items = int(input.size()) / inWords;
     const std::string harness =
         "layout(local_size_x = 64) in;\n"
@@ -66,7 +71,8 @@ std::vector<uvec4> runOnGpu(const std::vector<std::string>& chunks, const std::s
         "    if (gItem >= uCount) return;\n" + body + "\n}\n";
     std::vector<std::string> files = chunks;
     files.push_back("parity_harness");
-    const gl::Program program(compileComputeProgram(files, {{"parity_harness", harness}}));
+    generated.emplace_back("parity_harness", harness);
+    const gl::Program program(compileComputeProgram(files, generated));
     const gl::Buffer inputs = gl::newBuffer(), outputs = gl::newBuffer();
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, inputs.id());
     glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(input.size() * sizeof(uvec4)), input.data(), GL_STATIC_DRAW);
@@ -86,17 +92,6 @@ std::vector<uvec4> runOnGpu(const std::vector<std::string>& chunks, const std::s
 
 uvec4 bits(vec4 v) { return uvec4(floatBitsToUint(v.x), floatBitsToUint(v.y), floatBitsToUint(v.z), floatBitsToUint(v.w)); }
 vec4 floats(uvec4 w) { return vec4(uintBitsToFloat(w.x), uintBitsToFloat(w.y), uintBitsToFloat(w.z), uintBitsToFloat(w.w)); }
-
-// Distance in representable floats (0 for +0 vs −0).
-int64_t ulps(float a, float b) {
-    if (a == b) return 0;
-    if (std::isnan(a) || std::isnan(b)) return INT64_MAX;
-    const auto ordered = [](float f) {
-        const int32_t i = std::bit_cast<int32_t>(f);
-        return i < 0 ? int64_t(INT32_MIN) - int64_t(i) : int64_t(i);
-    };
-    return std::abs(ordered(a) - ordered(b));
-}
 
 // Deterministic random inputs (the kernel's own hash, seeded per test).
 struct Random {
@@ -125,15 +120,6 @@ std::string exactWords(const uvec4* g, const uvec4* c, int n) {
             return "word " + std::to_string(k) + " differs: GPU (" + std::to_string(g[k].x) + ", " + std::to_string(g[k].y) +
                    ", " + std::to_string(g[k].z) + ", " + std::to_string(g[k].w) + "), C++ (" + std::to_string(c[k].x) +
                    ", " + std::to_string(c[k].y) + ", " + std::to_string(c[k].z) + ", " + std::to_string(c[k].w) + ")";
-    return "";
-}
-
-std::string closeFloats(vec4 g, vec4 c, int64_t maxUlps, const char* what) {
-    for (int k = 0; k < 4; ++k)
-        if (ulps(g[k], c[k]) > maxUlps)
-            return std::string(what) + "[" + std::to_string(k) + "]: GPU " + std::to_string(g[k]) + ", C++ " +
-                   std::to_string(c[k]) + " (" + std::to_string(ulps(g[k], c[k])) + " ulps > " +
-                   std::to_string(maxUlps) + ")";
     return "";
 }
 
@@ -466,8 +452,8 @@ TEST_F(KernelParity, SrgbTransferPairWithin1e6) {
     compareItems(gpu, 2, [&](int i) {
         const vec4 a = floats(in[size_t(i)]);
         const vec3 e = srgbFromLinear3(vec3(a.x, a.y, a.z));
-        return std::vector<uvec4>{bits(vec4(e.x, e.y, e.z, linearFromSrgb(a.z))),
-                                  bits(vec4(linearFromSrgb(a.x), linearFromSrgb(a.w), 0.0f, 0.0f))};
+        return std::vector<uvec4>{bits(vec4(e.x, e.y, e.z, kernel::linearFromSrgb(a.z))),
+                                  bits(vec4(kernel::linearFromSrgb(a.x), kernel::linearFromSrgb(a.w), 0.0f, 0.0f))};
     }, [](const uvec4* g, const uvec4* c) -> std::string {
         const vec4 g0 = floats(g[0]), c0 = floats(c[0]), g1 = floats(g[1]), c1 = floats(c[1]);
         for (int k = 0; k < 4; ++k) {
@@ -482,45 +468,6 @@ TEST_F(KernelParity, SrgbTransferPairWithin1e6) {
 vec3 randomUpperDirection(Random& r) {
     const vec3 d(r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(0.1f, 1.0f));
     return d / length(d);
-}
-
-// The texture-graph operations beyond the tables (kernel/graph_ops.glsl):
-// momentSigma and composeColour within 4 ulps; leanNodeShade, which goes
-// through the LEAN lobe's exp2 and sqrt, within 1e-5 of max(1, |value|) as
-// the lobe itself (LeanLobeAndShadingWithin1e5).
-TEST_F(KernelParity, GraphLeanComposeAndSigmaMatchTheCpu) {
-    Random r{23};
-    const auto direction = [&r] { return randomUpperDirection(r); };
-    std::vector<uvec4> in;
-    for (int i = 0; i < kItems; ++i) {
-        const vec2 var(r.uniform(0.0f, 0.1f), r.uniform(0.0f, 0.1f));
-        in.push_back(bits(vec4(r.uniform(-0.5f, 0.5f), r.uniform(-0.5f, 0.5f), var.x, var.y)));
-        const vec3 l = direction(), v = direction();
-        in.push_back(bits(vec4(l.x, l.y, l.z, r.uniform(-1.2f, 1.2f) * std::sqrt(var.x * var.y))));
-        in.push_back(bits(vec4(v.x, v.y, v.z, r.uniform(0.02f, 0.5f))));
-        in.push_back(bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f))));
-    }
-    const auto gpu = runOnGpu({"graph_ops"}, R"(
-        vec4 a = wordf(0), b = wordf(1), c = wordf(2), d = wordf(3);
-        emitf(0, vec4(leanNodeShade(a.xy, a.zw, b.w, d.xyz, b.xyz, c.xyz, c.w, d.w), momentSigma(vec2(d.x, a.z - 0.05))));
-        emitf(1, vec4(composeColour(d.x, d.y, d.z), 0.0));)",
-                              4, 2, in);
-    compareItems(gpu, 2, [&](int i) {
-        const vec4 a = floats(in[size_t(4 * i)]), b = floats(in[size_t(4 * i + 1)]), c = floats(in[size_t(4 * i + 2)]),
-                   d = floats(in[size_t(4 * i + 3)]);
-        const vec3 rgb = leanNodeShade(vec2(a.x, a.y), vec2(a.z, a.w), b.w, vec3(d.x, d.y, d.z), vec3(b.x, b.y, b.z),
-                                       vec3(c.x, c.y, c.z), c.w, d.w);
-        return std::vector<uvec4>{bits(vec4(rgb.x, rgb.y, rgb.z, momentSigma(vec2(d.x, a.z - 0.05f)))),
-                                  bits(vec4(composeColour(d.x, d.y, d.z), 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) -> std::string {
-        const vec4 g0 = floats(g[0]), c0 = floats(c[0]), g1 = floats(g[1]), c1 = floats(c[1]);
-        for (int k = 0; k < 3; ++k)
-            if (!(std::abs(g0[k] - c0[k]) <= 1e-5f * std::max(1.0f, std::abs(c0[k]))))
-                return "lean [" + std::to_string(k) + "]: GPU " + std::to_string(g0[k]) + ", C++ " + std::to_string(c0[k]);
-        std::string m = closeLog(g0[3], c0[3], 4, "momentSigma");
-        for (int k = 0; k < 3 && m.empty(); ++k) m = closeLog(g1[k], c1[k], 4, "composeColour");
-        return m;
-    });
 }
 
 // The LEAN lobe and shading (kernel/lean.glsl): exp2 and sqrt are the GPU's
@@ -633,49 +580,147 @@ TEST_F(KernelParity, MarbleLayersWithin1e3AndNoisesWithin1e5) {
     });
 }
 
-// The texture-graph operations (kernel/graph_ops.glsl) on random inputs:
-// within 4 ulps of max(1, |value|), the room a fused multiply-add leaves
-// (E[g²] − E[g]² cancels, so ulps of the result itself would be too strict).
+// What the texture-graph ops share (kernel/graph_ops.glsl) on random
+// inputs: within 4 ulps of max(1, |value|), the room a fused multiply-add
+// leaves (E[g²] − E[g]² cancels, so ulps of the result itself would be too
+// strict).
 TEST_F(KernelParity, GraphOperationsWithin4UlpsOfOne) {
     Random r{17};
     std::vector<uvec4> in;
     for (int i = 0; i < kItems; ++i) {
         const float mean = r.uniform(-1.0f, 2.0f);
         in.push_back(bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(-1.0f, 2.0f))));
-        in.push_back(bits(vec4(r.uniform(-4.0f, 4.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f))));
-        in.push_back(bits(vec4(mean, mean * mean + r.uniform(-0.01f, 0.2f), r.uniform(-1.0f, 2.0f), r.uniform(0.0f, 0.3f))));
-        in.push_back(bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(-0.5f, 1.5f))));
+        in.push_back(bits(vec4(mean, mean * mean + r.uniform(-0.01f, 0.2f), r.uniform(-1.0f, 2.0f), r.uniform(-0.05f, 0.3f))));
     }
     const auto gpu = runOnGpu({"graph_ops"}, R"(
-        vec4 c = wordf(0), p = wordf(1), m = wordf(2), b = wordf(3);
+        vec4 c = wordf(0), m = wordf(1);
         emitf(0, vec4(graphChannel(c.xyz, kGraphChannelRed), graphChannel(c.xyz, kGraphChannelGreen),
                       graphChannel(c.xyz, kGraphChannelBlue), graphChannel(c.xyz, kGraphChannelLuminance)));
         emitf(1, vec4(momentEntry(c.w).xy, matchedMoments(vec3(m.x, m.y, 0.0))));
-        emitf(2, vec4(affineValue(c.w, p.x, p.y), affineMoments(m.xy, p.x, p.y), sumValue(c.w, c.x, p.z, p.w)));
-        emitf(3, vec4(sumMoments(m.xy, m.zw, p.z, p.w), 0.0, 0.0));
-        emitf(4, vec4(mixColour(c.xyz, b.xyz, b.w), 0.0));)",
-                              4, 5, in);
-    compareItems(gpu, 5, [&](int i) {
-        const vec4 c = floats(in[size_t(4 * i)]), p = floats(in[size_t(4 * i + 1)]);
-        const vec4 m = floats(in[size_t(4 * i + 2)]), b = floats(in[size_t(4 * i + 3)]);
+        emitf(2, vec4(momentSigma(m.zw), 0.0, 0.0, 0.0));)",
+                              2, 3, in);
+    compareItems(gpu, 3, [&](int i) {
+        const vec4 c = floats(in[size_t(2 * i)]), m = floats(in[size_t(2 * i + 1)]);
         const vec3 rgb(c.x, c.y, c.z);
         const vec3 entry = momentEntry(c.w);
-        const vec2 matched = matchedMoments(vec3(m.x, m.y, 0.0f)), affine = affineMoments(vec2(m.x, m.y), p.x, p.y);
-        const vec2 sum = sumMoments(vec2(m.x, m.y), vec2(m.z, m.w), p.z, p.w);
+        const vec2 matched = matchedMoments(vec3(m.x, m.y, 0.0f));
         return std::vector<uvec4>{
             bits(vec4(graphChannel(rgb, kGraphChannelRed), graphChannel(rgb, kGraphChannelGreen),
                       graphChannel(rgb, kGraphChannelBlue), graphChannel(rgb, kGraphChannelLuminance))),
-            bits(vec4(entry.x, entry.y, matched.x, matched.y)),
-            bits(vec4(affineValue(c.w, p.x, p.y), affine.x, affine.y, sumValue(c.w, c.x, p.z, p.w))),
-            bits(vec4(sum.x, sum.y, 0.0f, 0.0f)), bits(vec4(mixColour(rgb, vec3(b.x, b.y, b.z), b.w), 0.0f))};
+            bits(vec4(entry.x, entry.y, matched.x, matched.y)), bits(vec4(momentSigma(vec2(m.z, m.w)), 0.0f, 0.0f, 0.0f))};
     }, [](const uvec4* g, const uvec4* c) -> std::string {
-        for (int w = 0; w < 5; ++w)
+        for (int w = 0; w < 3; ++w)
             for (int k = 0; k < 4; ++k) {
                 const std::string m = closeLog(floats(g[w])[k], floats(c[w])[k], 4, "graph op");
                 if (!m.empty()) return "word " + std::to_string(w) + "[" + std::to_string(k) + "] " + m;
             }
         return "";
     });
+}
+
+// A host of the ops for the parity test (pattern/ops/op_host.h): tables
+// that are known functions of where they are read, so that what an op
+// computes around its lookups is compared, on both sides.
+constexpr const char* kTestOpHost = R"(
+struct OpContext {
+    int table;
+    vec3 eye;
+    vec4 light;
+    float slopeCov;
+};
+vec3 opTable(OpContext ctx, vec2 xy) { return vec3(xy.x, xy.y, xy.x * xy.y + float(ctx.table)); }
+vec3 opPrefiltered(OpContext ctx, vec2 xy, vec2 sigma) { return vec3(xy.x + sigma.x, xy.x * xy.x + sigma.y, xy.y); }
+)";
+struct TestOpTables final : OpTableLookup {
+    vec3 point(int table, vec2 xy) const override { return vec3(xy.x, xy.y, xy.x * xy.y + float(table)); }
+    vec3 prefiltered(int, vec2 xy, vec2 sigma) const override { return vec3(xy.x + sigma.x, xy.x * xy.x + sigma.y, xy.y); }
+};
+
+// Every op of the list (pattern/ops/ops.h), both entry points, on random
+// inputs, parameters and contexts: the GLSL the GPU program includes and
+// the C++ the CPU evaluator calls agree within 4 ulps of max(1, |value|),
+// and the lean op, which goes through the LEAN lobe's exp2 and sqrt, within
+// 1e-5 of max(1, |value|) as the lobe itself (LeanLobeAndShadingWithin1e5).
+template <size_t I>
+void checkOpParity() {
+    using Op = std::tuple_element_t<I, OpList::Tuple>;
+    using P = typename Op::Params;
+    constexpr int floatsOfParams = int(sizeof(P) / sizeof(float));
+    constexpr int paramWords = (floatsOfParams + 3) / 4;
+    const bool lean = std::string(Op::kKernel) == "lean_op";
+    SCOPED_TRACE(Op::kKernel);
+    Random r{31 + uint32_t(I)};
+    const auto direction = [&r] { return randomUpperDirection(r); };
+    std::vector<uvec4> in;
+    for (int i = 0; i < kItems; ++i) {
+        // a, b, c: (value or mean, variance, z); the context: eye, light (w 0 or 1), covariance.
+        const float va = r.uniform(0.0f, 0.1f), vb = r.uniform(0.0f, 0.1f);
+        in.push_back(bits(vec4(r.uniform(-0.5f, 1.5f), va, r.uniform(0.0f, 1.0f), r.uniform(-0.5f, 1.5f))));
+        in.push_back(bits(vec4(vb, r.uniform(0.0f, 1.0f), r.uniform(-0.5f, 1.5f), r.uniform(0.0f, 1.0f))));
+        in.push_back(bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(-1.2f, 1.2f) * std::sqrt(va * vb), 0.0f)));
+        const vec3 eye = direction(), light = direction();
+        in.push_back(bits(vec4(eye, r.uniform(0.0f, 1.0f) < 0.5f ? 0.0f : 1.0f)));
+        in.push_back(bits(vec4(light, 0.0f)));
+        // The parameters: a lobe's roughness and weight, a unit light, a covariance flag, or factors.
+        std::vector<float> p(size_t(paramWords) * 4, 0.0f);
+        for (int k = 0; k < floatsOfParams; ++k) p[size_t(k)] = r.uniform(0.05f, 1.0f);
+        if (lean) {
+            const vec3 l = direction();
+            p[2] = l.x, p[3] = l.y, p[4] = l.z;
+            p[5] = r.uniform(0.0f, 1.0f) < 0.5f ? 0.0f : 1.0f;
+        }
+        for (int w = 0; w < paramWords; ++w) in.push_back(bits(vec4(p[size_t(4 * w)], p[size_t(4 * w + 1)], p[size_t(4 * w + 2)], p[size_t(4 * w + 3)])));
+    }
+    const int inWords = 5 + paramWords;
+    std::string params = paramsStructName(Op::kKernel) + "(";
+    for (int k = 0; k < floatsOfParams; ++k)
+        params += (k ? ", " : "") + std::string("wordf(") + std::to_string(5 + k / 4) + ")." + "xyzw"[k % 4];
+    params += ")";
+    const std::string body = R"(
+        vec4 w0 = wordf(0), w1 = wordf(1), w2 = wordf(2), e = wordf(3), l = wordf(4);
+        vec3 a = vec3(w0.x, w0.y, 0.0), b = vec3(w0.w, w1.x, 0.0), c = vec3(w1.y, w1.z, w1.w);
+        OpContext ctx = OpContext(2, e.xyz, vec4(l.xyz, e.w), w2.z);
+        emitf(0, vec4(opPoint()" + params + R"(, a, b, c, ctx), 0.0));
+        emitf(1, vec4(opFiltered()" + params + R"(, a, b, c, ctx), 0.0));)";
+    const auto gpu = runOnGpu({"graph_ops", "lean", "op_test_host", Op::kKernel}, body, inWords, 2, in,
+                              {{"op_test_host", kTestOpHost}});
+    const TestOpTables tables;
+    compareItems(gpu, 2, [&](int i) {
+        const auto word = [&](int k) { return floats(in[size_t(inWords * i + k)]); };
+        const vec4 w0 = word(0), w1 = word(1), w2 = word(2), e = word(3), l = word(4);
+        const vec3 a(w0.x, w0.y, 0.0f), b(w0.w, w1.x, 0.0f), c(w1.y, w1.z, w1.w);
+        OpContext ctx;
+        ctx.table = 2;
+        ctx.eye = vec3(e.x, e.y, e.z);
+        ctx.light = vec4(l.x, l.y, l.z, e.w);
+        ctx.slopeCov = w2.z;
+        ctx.tables = &tables;
+        float f[paramWords * 4];
+        for (int k = 0; k < paramWords; ++k)
+            for (int j = 0; j < 4; ++j) f[4 * k + j] = word(5 + k)[j];
+        P p;
+        std::memcpy(&p, f, sizeof p);
+        return std::vector<uvec4>{bits(vec4(opPoint(p, a, b, c, ctx), 0.0f)), bits(vec4(opFiltered(p, a, b, c, ctx), 0.0f))};
+    }, [lean](const uvec4* g, const uvec4* c) -> std::string {
+        for (int w = 0; w < 2; ++w)
+            for (int k = 0; k < 3; ++k) {
+                const float gv = floats(g[w])[k], cv = floats(c[w])[k];
+                const std::string what = w == 0 ? "opPoint" : "opFiltered";
+                if (lean) {
+                    if (!(std::abs(gv - cv) <= 1e-5f * std::max(1.0f, std::abs(cv))))
+                        return what + " [" + std::to_string(k) + "]: GPU " + std::to_string(gv) + ", C++ " + std::to_string(cv);
+                } else if (const std::string m = closeLog(gv, cv, 4, what.c_str()); !m.empty()) {
+                    return m + " [" + std::to_string(k) + "]";
+                }
+            }
+        return "";
+    });
+}
+
+TEST_F(KernelParity, EveryOpMatchesTheCpu) {
+    []<size_t... I>(std::index_sequence<I...>) {
+        (checkOpParity<I>(), ...);
+    }(std::make_index_sequence<std::tuple_size_v<OpList::Tuple>>{});
 }
 
 // The CPU's periodic grids keep a padded copy and vector loads; held here,

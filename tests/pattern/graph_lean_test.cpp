@@ -37,17 +37,36 @@ std::string ridges(const std::string& leanParams = "") {
 
 using test::meanRgbDistance;
 
-TEST(GraphOps, LeanNodeShadeIsTheKernelsLobeLit) {
+// The lean op (pattern/ops/lean_op.glsl) on moments: slopes (a, b) with
+// their variances, the albedo c, the covariance from the context.
+kernel::vec3 leanOp(kernel::vec2 mean, kernel::vec2 var, float cov, kernel::vec3 albedo, kernel::vec3 light,
+                    kernel::vec3 eye, float roughness, float specular) {
+    using namespace kernel;
+    OpContext ctx;
+    ctx.eye = eye;
+    ctx.slopeCov = cov;
+    const LeanParams p{roughness, specular, light.x, light.y, light.z, 1.0f};
+    return opFiltered(p, vec3(mean.x, var.x, 0.0f), vec3(mean.y, var.y, 0.0f), albedo, ctx);
+}
+
+TEST(GraphOps, LeanOpIsTheKernelsLobeLit) {
     using namespace kernel;
     const vec3 light = normalize(vec3(0.3f, -0.5f, 0.8f)), eye(0.0f, 0.0f, 1.0f), albedo(0.2f, 0.4f, 0.6f);
-    const vec3 got = leanNodeShade(vec2(0.1f, -0.2f), vec2(0.01f, 0.02f), 0.005f, albedo, light, eye, 0.1f, 0.3f);
+    const vec3 got = leanOp(vec2(0.1f, -0.2f), vec2(0.01f, 0.02f), 0.005f, albedo, light, eye, 0.1f, 0.3f);
     const vec3 want = leanShade(leanLobe(vec2(0.1f, -0.2f), vec2(0.01f, 0.02f), 0.005f, 0.1f), light, eye, albedo, 0.3f);
     EXPECT_EQ(got.x, want.x);
     EXPECT_EQ(got.y, want.y);
     EXPECT_EQ(got.z, want.z);
     // A flat facet lit from straight above, seen from above: the albedo plus
     // the lobe's peak D(z) = 1/(π m²) over 4, times the specular weight.
-    const vec3 flat = leanNodeShade(vec2(0.0f), vec2(0.0f), 0.0f, albedo, eye, eye, 0.5f, 1.0f);
+    const vec3 flat = leanOp(vec2(0.0f), vec2(0.0f), 0.0f, albedo, eye, eye, 0.5f, 1.0f);
+    // A host's own light (a scene's, w = 1) replaces the op's.
+    OpContext scene;
+    scene.light = vec4(eye, 1.0f);
+    const LeanParams p{0.5f, 1.0f, light.x, light.y, light.z, 1.0f};
+    const vec3 lit = opPoint(p, vec3(0.0f), vec3(0.0f), albedo, scene);
+    EXPECT_EQ(lit.x, flat.x);
+    EXPECT_EQ(lit.z, flat.z);
     const float peak = 1.0f / (3.14159265f * 0.25f) / 4.0f;
     EXPECT_NEAR(flat.x, 0.2f + peak, 1e-5);
     EXPECT_NEAR(flat.z, 0.6f + peak, 1e-5);
@@ -84,7 +103,7 @@ TEST(GraphPattern, LeanNodeShadesTheHeightsSlopesOnItsTiles) {
         const Rgb a = g.evaluate(u, v, 0, GraphPattern::kFromAbove);  // the height leaf
         EXPECT_EQ(a[0], h);
         const Rgb albedo = g.evaluate(u, v, 3, GraphPattern::kFromAbove);  // the colormap's slot
-        const kernel::vec3 want = kernel::leanNodeShade(slope, kernel::vec2(0.0f), 0.0f,
+        const kernel::vec3 want = leanOp(slope, kernel::vec2(0.0f), 0.0f,
                                                         kernel::vec3(albedo[0], albedo[1], albedo[2]), light,
                                                         kernel::vec3(0.0f, 0.0f, 1.0f), 0.08f, 0.05f);
         const Rgb got = g.evaluate(u, v);

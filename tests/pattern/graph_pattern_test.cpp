@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <cstdio>
 #include <filesystem>
+#include <random>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
@@ -57,19 +59,79 @@ TEST(GraphOps, KernelFunctionsOnKnownInputs) {
     EXPECT_NEAR(m.x, 0.5, 1e-7);
     EXPECT_NEAR(m.y, 0.05, 1e-7);
     EXPECT_EQ(matchedMoments(vec3(0.5f, 0.2f, 0.0f)).y, 0.0f);  // E[g²] < E[g]² by rounding: clamped
-    const vec2 a = affineMoments(vec2(0.5f, 0.04f), -2.0f, 1.0f);
+    // The ops' own entry points (pattern/ops/): values and moments.
+    const OpContext none;
+    const vec3 a = opFiltered(AffineParams{-2.0f, 1.0f}, vec3(0.5f, 0.04f, 0.0f), vec3(0.0f), vec3(0.0f), none);
     EXPECT_NEAR(a.x, 0.0, 1e-7);
     EXPECT_NEAR(a.y, 0.16, 1e-7);
-    EXPECT_NEAR(affineValue(0.25f, -2.0f, 1.0f), 0.5, 1e-7);
-    const vec2 s = sumMoments(vec2(0.2f, 0.01f), vec2(0.6f, 0.04f), 0.5f, 0.5f);
+    EXPECT_NEAR(opPoint(AffineParams{-2.0f, 1.0f}, vec3(0.25f, 0.0f, 0.0f), vec3(0.0f), vec3(0.0f), none).x, 0.5, 1e-7);
+    const vec3 s = opFiltered(SumParams{0.5f, 0.5f}, vec3(0.2f, 0.01f, 0.0f), vec3(0.6f, 0.04f, 0.0f), vec3(0.0f), none);
     EXPECT_NEAR(s.x, 0.4, 1e-7);
     EXPECT_NEAR(s.y, 0.0125, 1e-8);
-    EXPECT_NEAR(sumValue(0.2f, 0.6f, 0.25f, 2.0f), 1.25, 1e-7);
+    EXPECT_NEAR(opPoint(SumParams{0.25f, 2.0f}, vec3(0.2f, 0, 0), vec3(0.6f, 0, 0), vec3(0.0f), none).x, 1.25, 1e-7);
     const vec3 lo(0.1f, 0.2f, 0.3f), hi(0.9f, 0.6f, 0.3f);
-    EXPECT_EQ(mixColour(lo, hi, 0.0f).x, 0.1f);
-    EXPECT_EQ(mixColour(lo, hi, 1.0f).y, 0.6f);
-    EXPECT_NEAR(mixColour(lo, hi, 0.25f).x, 0.3, 1e-7);
-    EXPECT_NEAR(mixColour(lo, hi, 2.0f).x, 1.7, 1e-6);  // not clamped
+    const auto mix = [&](float t) { return opPoint(MixParams{}, lo, hi, vec3(t, 0.0f, 0.0f), none); };
+    EXPECT_EQ(mix(0.0f).x, 0.1f);
+    EXPECT_EQ(mix(1.0f).y, 0.6f);
+    EXPECT_NEAR(mix(0.25f).x, 0.3, 1e-7);
+    EXPECT_NEAR(mix(2.0f).x, 1.7, 1e-6);  // not clamped
+    const vec3 rgb = opFiltered(ComposeParams{}, vec3(0.1f, 0.5f, 0.0f), vec3(0.2f, 0.5f, 0.0f), vec3(0.3f, 0.5f, 0.0f), none);
+    EXPECT_EQ(rgb.x, 0.1f);
+    EXPECT_EQ(rgb.y, 0.2f);
+    EXPECT_EQ(rgb.z, 0.3f);
+    // product: exact moments of the product of independent fields.
+    const vec3 pr = opFiltered(ProductParams{2.0f}, vec3(0.5f, 0.04f, 0.0f), vec3(0.25f, 0.01f, 0.0f), vec3(0.0f), none);
+    EXPECT_NEAR(pr.x, 2.0 * 0.5 * 0.25, 1e-7);
+    EXPECT_NEAR(pr.y, 4.0 * (0.04 * 0.01 + 0.04 * 0.25 * 0.25 + 0.01 * 0.5 * 0.5), 1e-7);
+    EXPECT_NEAR(opPoint(ProductParams{2.0f}, vec3(0.5f, 0, 0), vec3(0.25f, 0, 0), vec3(0.0f), none).x, 0.25, 1e-7);
+}
+
+// The product op's moments are those of s·a·b for independent Gaussian a
+// and b: 400 000 draws (fixed seed) give a mean within 4 standard errors
+// and a variance within 2 %.
+TEST(GraphOps, ProductMomentsAreThoseOfIndependentFields) {
+    using namespace kernel;
+    std::mt19937 rng(7);
+    const double ma = 0.6, sa = 0.15, mb = -0.3, sb = 0.25, scale = 1.5;
+    std::normal_distribution<double> da(ma, sa), db(mb, sb);
+    const int n = 400000;
+    double sum = 0, sumSq = 0;
+    for (int i = 0; i < n; ++i) {
+        const double p = scale * da(rng) * db(rng);
+        sum += p;
+        sumSq += p * p;
+    }
+    const double mean = sum / n, var = sumSq / n - mean * mean;
+    const vec3 m = opFiltered(ProductParams{float(scale)}, vec3(float(ma), float(sa * sa), 0.0f),
+                              vec3(float(mb), float(sb * sb), 0.0f), vec3(0.0f), OpContext{});
+    EXPECT_NEAR(m.x, mean, 4 * std::sqrt(var / n));
+    EXPECT_NEAR(m.y, var, 0.02 * var);
+    EXPECT_EQ(m.z, 0.0f);
+}
+
+// Through a graph: a product of two independent noises, shown by compose
+// (exact on means), filtered from the leaves' exact footprint statistics is
+// the supersampled reference's mean up to the two fields' sample covariance
+// over the footprint, and far closer to it than point sampling.
+TEST(GraphPattern, ProductFiltersTowardsTheReference) {
+    const std::string nodes = R"("a": )" + kNoise + R"(,
+        "b": {"type": "spectral_noise", "size": 64, "seed": 8, "components": [{"shape": "ring", "frequency": 5, "bandwidth": 2}]},
+        "p": {"type": "product", "a": "a", "b": "b", "scale": 2},
+        "c": {"type": "compose", "r": "p", "g": "p", "b": "p"})";
+    const GraphPattern g = GraphPattern::build(parse(graph(nodes)));
+    Camera cam;
+    cam.view = {24, 24, 12.0, 3.0, 41.0};
+    FilterOptions o;
+    o.referenceMaxSamples = 48;
+    const Image reference = FilteredGraph(g, o.use(parseFilter("reference"))).render(cam);
+    const double none = meanRgbDistance(FilteredGraph(g, o.use(parseFilter("none"))).render(cam), reference);
+    const double exact = meanRgbDistance(FilteredGraph(g, o.use(parseFilter("exact"))).render(cam), reference);
+    const double smooth = meanRgbDistance(FilteredGraph(g, o.use(parseFilter("smooth"))).render(cam), reference);
+    std::printf("[ info ] product through compose, 12 texels a pixel: mean |Δ| none %.4f, exact %.4f, smooth %.4f\n",
+                none, exact, smooth);
+    EXPECT_LT(exact, 0.3 * none);
+    EXPECT_LT(smooth, 0.5 * none);
+    EXPECT_LT(exact, 0.025);
 }
 
 // A graph "linear part → colormap" evaluated and filtered per pixel gives

@@ -63,7 +63,7 @@ TEST(TextureGraph, RefusesBadGraphsNamingTheJsonPointer) {
         std::string text, expected;
     } cases[] = {
         {graph(R"("a": {"type": "wavelet"}, )" + cm),
-         "g.json: /nodes/a/type: unknown node type \"wavelet\"; known: spectral_noise, exemplar, tiled_field, channel, derivative, affine, sum, transform, colormap, colormap_field, curve, mix, compose, lean"},
+         "g.json: /nodes/a/type: unknown node type \"wavelet\"; known: spectral_noise, exemplar, tiled_field, channel, derivative, transform, affine, sum, product, colormap, colormap_field, curve, mix, compose, lean"},
         {graph(R"("a": )" + kNoise + R"(, "c": {"type": "colormap", "x": "a", "y": "b", "colormap": {"type": "gaussian"}})"),
          "g.json: /nodes/c/y: no node \"b\""},
         {graph(R"("a": )" + kNoise + R"(, "c": {"type": "colormap", "x": "a", "colormap": {"type": "gaussian"}})"),

@@ -16,15 +16,6 @@ namespace stochtex {
 
 namespace {
 
-// A float as a GLSL literal that reads back as the same float.
-std::string glslFloat(float v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", double(v));
-    std::string s = buffer;
-    if (s.find_first_of(".e") == std::string::npos) s += ".0";
-    return s;
-}
-
 std::string slot(int k) { return "v" + std::to_string(k); }
 
 // A pair's uv (and Jacobian columns) through its transform of uv, written
@@ -46,69 +37,47 @@ constexpr int kMaxUnits = 16;
 
 namespace {
 
+// The host side of the ops' interface (pattern/ops/op_host.h) for this
+// graph: OpContext, and the table lookups over the graph's samplers by the
+// op's table index (a constant in each call, so the branches fold away).
+void writeOpHost(std::ostringstream& o, const GraphPattern& graph) {
+    o << "\nstruct OpContext {\n    int table;\n    vec3 eye;\n    vec4 light;\n    float slopeCov;\n};\n";
+    for (const bool filtered : {false, true}) {
+        o << (filtered ? "vec3 opPrefiltered(OpContext ctx, vec2 xy, vec2 sigma) {\n"
+                       : "vec3 opTable(OpContext ctx, vec2 xy) {\n");
+        for (size_t t = 0; t < graph.tables().size(); ++t)
+            o << "    if (ctx.table == " << t << ") return "
+              << (filtered ? "prefilteredLookup(uGraphPrefiltered" + std::to_string(t) + ", xy, sigma)"
+                           : "tableLookup(uGraphTable" + std::to_string(t) + ", 0, xy)")
+              << ";\n";
+        o << "    return vec3(0.0);\n}\n";
+    }
+    // Each op's kernel file once.
+    std::vector<std::string> stems;
+    for (const GraphPattern::Operation& op : graph.operations())
+        if (std::find(stems.begin(), stems.end(), opKernelStem(op.params)) == stems.end())
+            stems.emplace_back(opKernelStem(op.params));
+    for (const std::string& stem : stems) o << "\n" << shaderText(stem);
+}
+
 // The operations after the leaves, on values (point) or on moments
-// (filtered), in the CPU evaluator's order (pattern/graph_pattern.cpp).
+// (filtered), in the CPU evaluator's order (pattern/graph_pattern.cpp): each
+// op's call with its context — its table, the camera's eye, the scene's
+// light (gLightDirection.w = 1 when it has one) and, filtered, the
+// covariance of the pair its first input is in when that pair estimates it.
 void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filtered, GraphMoments moments) {
     int out = graph.leafCount();
     for (const GraphPattern::Operation& op : graph.operations()) {
-        const std::string a = slot(op.inputs[0]), b = op.inputs[1] >= 0 ? slot(op.inputs[1]) : "",
-                          t = op.inputs[2] >= 0 ? slot(op.inputs[2]) : "";
-        const std::string table = (filtered ? "uGraphPrefiltered" : "uGraphTable") + std::to_string(op.table);
-        const std::string sigmas = "vec2(momentSigma(" + a + ".xy), momentSigma(" + b + ".xy))";
-        const std::string p0 = glslFloat(op.parameters[0]), p1 = glslFloat(op.parameters[1]);
-        o << "    vec3 " << slot(out) << " = ";
-        switch (op.kind) {
-            case NodeKind::Colormap:
-                if (filtered)
-                    o << "prefilteredLookup(" << table << ", vec2(" << a << ".x, " << b << ".x), " << sigmas << ")";
-                else
-                    o << "tableLookup(" << table << ", 0, vec2(" << a << ".x, " << b << ".x))";
-                break;
-            case NodeKind::ColormapField:
-                if (filtered)
-                    o << "vec3(matchedMoments(prefilteredLookup(" << table << ", vec2(" << a << ".x, " << b << ".x), "
-                      << sigmas << ")), 0.0)";
-                else
-                    o << "tableLookup(" << table << ", 0, vec2(" << a << ".x, " << b << ".x))";
-                break;
-            case NodeKind::Curve:
-                if (filtered)
-                    o << "vec3(matchedMoments(prefilteredLookup(" << table << ", vec2(" << a << ".x, 0.5), vec2(momentSigma("
-                      << a << ".xy), 0.0))), 0.0)";
-                else
-                    o << "tableLookup(" << table << ", 0, vec2(" << a << ".x, 0.5))";
-                break;
-            case NodeKind::Affine:
-                if (filtered)
-                    o << "vec3(affineMoments(" << a << ".xy, " << p0 << ", " << p1 << "), 0.0)";
-                else
-                    o << "vec3(affineValue(" << a << ".x, " << p0 << ", " << p1 << "), 0.0, 0.0)";
-                break;
-            case NodeKind::Sum:
-                if (filtered)
-                    o << "vec3(sumMoments(" << a << ".xy, " << b << ".xy, " << p0 << ", " << p1 << "), 0.0)";
-                else
-                    o << "vec3(sumValue(" << a << ".x, " << b << ".x, " << p0 << ", " << p1 << "), 0.0, 0.0)";
-                break;
-            case NodeKind::Mix: o << "mixColour(" << a << ", " << b << ", " << t << ".x)"; break;
-            case NodeKind::Compose: o << "composeColour(" << a << ".x, " << b << ".x, " << t << ".x)"; break;
-            case NodeKind::Lean: {
-                // The scene's light when it has one (gLightDirection.w = 1), else the node's; the camera's eye.
-                const auto& q = op.parameters;
-                const std::string light = "(gLightDirection.w != 0.0 ? gLightDirection.xyz : vec3(" + glslFloat(q[2]) +
-                                          ", " + glslFloat(q[3]) + ", " + glslFloat(q[4]) + "))";
-                const int pair = graph.leafLocation(op.inputs[0])[0];
-                const std::string cov = filtered && q[5] != 0 ? "p" + std::to_string(pair) + ".cov" : "0.0";
-                o << "leanNodeShade(vec2(" << a << ".x, " << b << ".x), " << (filtered ? "vec2(" + a + ".y, " + b + ".y)" : "vec2(0.0)")
-                  << ", " << cov << ", " << t << ", " << light << ", gEyeDirection, " << glslFloat(q[0]) << ", "
-                  << glslFloat(q[1]) << ")";
-                break;
-            }
-            default: throw std::logic_error("graphProgramSource: a source as an operation");
-        }
-        o << ";  // " << op.id << "\n";
+        const auto in = [&](int k) { return op.inputs[size_t(k)] >= 0 ? slot(op.inputs[size_t(k)]) : "vec3(0.0)"; };
+        const int first = op.inputs[0];
+        const int pair = first < graph.leafCount() ? graph.leafLocation(first)[0] : -1;
+        const std::string cov =
+            filtered && pair >= 0 && graph.pairCovariance(pair) ? "p" + std::to_string(pair) + ".cov" : "0.0";
+        const std::string ctx = "OpContext(" + std::to_string(op.table) + ", gEyeDirection, gLightDirection, " + cov + ")";
+        o << "    vec3 " << slot(out) << " = " << opGlslCall(op.params, filtered, in(0), in(1), in(2), ctx) << ";  // "
+          << op.id << "\n";
         // MeanOnly: a table's output field passes on its mean alone (FilteredGraph::fromMoments).
-        const bool fieldTable = op.kind == NodeKind::ColormapField || op.kind == NodeKind::Curve;
+        const bool fieldTable = op.info->output != PortType::Colour && op.table >= 0;
         if (filtered && fieldTable && moments == GraphMoments::MeanOnly) o << "    " << slot(out) << ".y = 0.0;\n";
         ++out;
     }
@@ -130,6 +99,7 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
         o << "uniform sampler2DArray uGraphTable" << t << ", uGraphPrefiltered" << t << ";\n";
     for (size_t p = 0; p < graph.leafPairs().size(); ++p)
         if (graph.pairCovariance(int(p))) o << "uniform sampler2D uGraphCov" << p << ";  // pair " << p << "'s C_l pyramid\n";
+    writeOpHost(o, graph);
 
     o << "\nvec3 unfilteredColour(vec2 uv) {\n";
     // One stencil per pair's uv (pairs under one transform share it).

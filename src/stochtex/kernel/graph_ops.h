@@ -1,7 +1,6 @@
 #pragma once
 // C++ view of kernel/graph_ops.glsl.
 #include "stochtex/kernel/glsl.h"
-#include "stochtex/kernel/lean.h"
 
 namespace stochtex::kernel {
 #include "stochtex/kernel/graph_ops.glsl"

@@ -7,6 +7,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/colour_space.h"
+#include "stochtex/noise/example.h"
 
 namespace stochtex {
 
@@ -234,6 +235,19 @@ ColormapTable PaintedColormap::rasterize(int resolution, int supersampling) cons
         const float inv = 1.0f / float(supersampling * supersampling);
         return Rgb{sum[0] * inv, sum[1] * inv, sum[2] * inv};
     });
+}
+
+ColormapTable foldInverseTransforms(const ColormapTable& h, const NoiseExample* x, const NoiseExample* y) {
+    const bool foldX = x && x->gaussianized(), foldY = y && y->gaussianized();
+    if (!foldX && !foldY) return h;
+    Image t(h.resolutionX(), h.resolutionY(), 3, Image::Uninitialized{});
+    for (int j = 0; j < t.height(); ++j)
+        for (int i = 0; i < t.width(); ++i) {
+            const float a = float(i) / float(t.width() - 1), b = float(j) / float(t.height() - 1);
+            const Rgb c = h.sample(foldX ? x->toOutput(a) : a, foldY ? y->toOutput(b) : b);
+            for (int k = 0; k < 3; ++k) t.at(i, j, k) = c[size_t(k)];
+        }
+    return ColormapTable(t);
 }
 
 }  // namespace stochtex

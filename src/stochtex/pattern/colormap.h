@@ -21,6 +21,8 @@
 
 namespace stochtex {
 
+class NoiseExample;  // noise/example.h
+
 using Rgb = std::array<float, 3>;
 
 class ColormapTable {
@@ -155,5 +157,10 @@ constexpr int kMaxColormapResolution = 4096;
 // Work budget of a painted rasterisation in shape tests, ~2 ns each
 // (2³² ≈ 9 s on one core): 16 shapes at resolution 4096, 4096 at 256.
 constexpr long long kMaxPaintedWork = 1LL << 32;
+
+// H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)) on H's own grid, for each of x and y
+// that is a Gaussianized exemplar (null: that axis as it is): a colormap
+// moved into the blending space, where the statistics are Gaussian.
+ColormapTable foldInverseTransforms(const ColormapTable& h, const NoiseExample* x, const NoiseExample* y);
 
 }  // namespace stochtex

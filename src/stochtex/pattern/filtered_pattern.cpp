@@ -25,19 +25,6 @@ Rgb averageColour(const Pattern& p, const ColormapTable& blendingSpaceColormap) 
 
 }  // namespace
 
-ColormapTable foldInverseTransforms(const ColormapTable& h, const NoiseExample* x, const NoiseExample* y) {
-    const bool foldX = x && x->gaussianized(), foldY = y && y->gaussianized();
-    if (!foldX && !foldY) return h;
-    Image t(h.resolutionX(), h.resolutionY(), 3, Image::Uninitialized{});
-    for (int j = 0; j < t.height(); ++j)
-        for (int i = 0; i < t.width(); ++i) {
-            const float a = float(i) / float(t.width() - 1), b = float(j) / float(t.height() - 1);
-            const Rgb c = h.sample(foldX ? x->toOutput(a) : a, foldY ? y->toOutput(b) : b);
-            for (int k = 0; k < 3; ++k) t.at(i, j, k) = c[size_t(k)];
-        }
-    return ColormapTable(t);
-}
-
 FootprintStats fieldStatistics(const TiledField& f) {
     double mean[2] = {0, 0}, m2[3] = {0, 0, 0};
     const auto& x = f.channel(0).example().values().data();

@@ -101,11 +101,6 @@ std::array<double, 2> exampleMoments(const NoiseExample& example);
 // statistics of an infinite footprint.
 FootprintStats fieldStatistics(const TiledField& field);
 
-// H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)) on H's own grid, for each of x and y
-// that is a Gaussianized exemplar (null: that axis as it is): a colormap
-// moved into the blending space, where the statistics are Gaussian.
-ColormapTable foldInverseTransforms(const ColormapTable& h, const NoiseExample* x, const NoiseExample* y);
-
 class FilteredPattern {
 public:
     FilteredPattern(const Pattern& pattern, const FilterOptions& options);

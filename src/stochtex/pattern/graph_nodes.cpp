@@ -1,22 +1,15 @@
 #include "stochtex/pattern/graph_nodes.h"
 
 #include "stochtex/noise/spectrum.h"
+#include "stochtex/pattern/ops/ops.h"
 #include "stochtex/pattern/pattern_members.h"
 
 namespace stochtex {
 
-const char* portTypeName(PortType t) {
-    switch (t) {
-        case PortType::Field: return "field";
-        case PortType::Colour: return "colour";
-        case PortType::Channels: break;
-    }
-    return "tiled field";
-}
-
 const std::vector<NodeInfo>& graphNodes() {
     using json = nlohmann::json;
-    static const std::vector<NodeInfo> nodes = {
+    static const std::vector<NodeInfo> nodes = [] {
+        std::vector<NodeInfo> n = {
         {"spectral_noise", NodeKind::SpectralNoise, "source",
          "A periodic Gaussian example synthesised from a power spectrum (paper §3), tiled and blended",
          {},
@@ -62,15 +55,6 @@ const std::vector<NodeInfo>& graphNodes() {
          {{"angle", ParamType::Number, "Direction, degrees from +u towards +v", 0, -360, 360},
           {"mean", ParamType::Number, "Mean of the result", 0.5, 0, 1},
           {"stddev", ParamType::Number, "Standard deviation of the result", 1.0 / 6.0, 1e-4, 0.5}}},
-        {"affine", NodeKind::Affine, "linear", "scale · field + offset",
-         {{"input", PortType::Field, "The field"}},
-         PortType::Field,
-         {{"scale", ParamType::Number, "Factor", 1, -100, 100}, {"offset", ParamType::Number, "Added", 0, -100, 100}}},
-        {"sum", NodeKind::Sum, "linear", "weight_a · a + weight_b · b, two fields with examples of one size",
-         {{"a", PortType::Field, "First field"}, {"b", PortType::Field, "Second field"}},
-         PortType::Field,
-         {{"weight_a", ParamType::Number, "Weight of a", 0.5, -100, 100},
-          {"weight_b", ParamType::Number, "Weight of b", 0.5, -100, 100}}},
         {"transform", NodeKind::Transform, "linear",
          "The field seen through a transform of uv: input(scale · R(angle) · uv + offset), tiles and all",
          {{"input", PortType::Field, "The field"}},
@@ -79,54 +63,10 @@ const std::vector<NodeInfo>& graphNodes() {
           {"scale", ParamType::Number, "Scale of uv (2: features half as large)", 1, 1.0 / 64, 64},
           {"offset_u", ParamType::Number, "Offset along u, example periods", 0, -1e4, 1e4},
           {"offset_v", ParamType::Number, "Offset along v, example periods", 0, -1e4, 1e4}}},
-        {"colormap", NodeKind::Colormap, "transfer", "The 2D transfer function H: colour = H(x, y) (paper eq. 1)",
-         {{"x", PortType::Field, "N_x, the colormap's horizontal coordinate"},
-          {"y", PortType::Field, "N_y, the colormap's vertical coordinate"}},
-         PortType::Colour,
-         {{"colormap", ParamType::Colormap, "A COLORMAP: analytic, phasor, image or painted (docs/PATTERNS.md)",
-           json(), 0, 0, json::parse(R"({"type": "gaussian"})")}}},
-        {"colormap_field", NodeKind::ColormapField, "transfer",
-         "A 2D transfer function read as a field: one channel, or the luminance, of H(x, y) (paper Fig. 14)",
-         {{"x", PortType::Field, "The colormap's horizontal coordinate"},
-          {"y", PortType::Field, "The colormap's vertical coordinate"}},
-         PortType::Field,
-         {{"colormap", ParamType::Colormap, "A COLORMAP (docs/PATTERNS.md); \"transfer\": \"linear\" reads its colours as data",
-           json(), 0, 0, json::parse(R"({"type": "phasor", "profile": "sine"})")},
-          {"channel", ParamType::Choice, "The channel of H read: red, green, blue, or luminance (Rec. 709, linear)",
-           "luminance", 0, 0, nullptr, {"red", "green", "blue", "luminance"}}}},
-        {"curve", NodeKind::Curve, "transfer", "A 1D transfer function: the piecewise-linear curve through the points",
-         {{"input", PortType::Field, "The field (read in [0, 1], clamped)"}},
-         PortType::Field,
-         {{"points", ParamType::Curve, "[[x, y], ...]: x strictly increasing in [0, 1], y in [-100, 100]", json(), 0,
-           0, json::parse("[[0, 0], [0.5, 1], [1, 0]]")},
-          {"resolution", ParamType::Integer, "Entries of the table the curve is sampled into", 256, 2, 1024}}},
-        {"mix", NodeKind::Mix, "colour", "a + t·(b − a): two colours mixed by a field (t not clamped)",
-         {{"a", PortType::Colour, "The colour where t = 0"},
-          {"b", PortType::Colour, "The colour where t = 1"},
-          {"t", PortType::Field, "The mixing field"}},
-         PortType::Colour,
-         {}},
-        {"compose", NodeKind::Compose, "colour",
-         "A colour from three fields, (r, g, b) in linear light: with the channels of a tiled field, a colour exemplar "
-         "tiled and blended",
-         {{"r", PortType::Field, "Red"}, {"g", PortType::Field, "Green"}, {"b", PortType::Field, "Blue"}},
-         PortType::Colour,
-         {}},
-        {"lean", NodeKind::Lean, "shading",
-         "LEAN mapping (paper §6.5): the height field's slopes as micro-facet normals; their footprint mean and "
-         "covariance make an anisotropic Beckmann lobe, lit by a directional light",
-         {{"height", PortType::Field, "The height field (linear in the sources: its slopes are exact on its example)"},
-          {"albedo", PortType::Colour, "The diffuse colour (linear light)"}},
-         PortType::Colour,
-         {{"amplitude", ParamType::Number, "RMS slope per axis the height field is scaled to", 0.3, 1e-3, 10},
-          {"roughness", ParamType::Number, "Base Beckmann roughness m of each micro-facet", 0.1, 1e-3, 2},
-          {"specular", ParamType::Number, "Weight of the lobe's reflection", 0.05, 0, 100},
-          {"light_azimuth", ParamType::Number, "Direction towards the light, degrees from +u towards +v (a scene's own "
-           "light replaces it)", -90, -360, 360},
-          {"light_elevation", ParamType::Number, "Elevation of the light above the plane, degrees", 53.13, 1, 90},
-          {"covariance", ParamType::Boolean, "Read the slopes' covariance (false: the variant without it, ĉov := 0)",
-           true}}},
     };
+        for (NodeInfo& op : opNodeInfos()) n.push_back(std::move(op));
+        return n;
+    }();
     return nodes;
 }
 
@@ -134,26 +74,6 @@ const NodeInfo* findGraphNode(const std::string& name) {
     for (const NodeInfo& n : graphNodes())
         if (n.name == name) return &n;
     return nullptr;
-}
-
-bool isLinearNode(NodeKind kind) {
-    switch (kind) {
-        case NodeKind::SpectralNoise:
-        case NodeKind::Exemplar:
-        case NodeKind::TiledField:
-        case NodeKind::Channel:
-        case NodeKind::Derivative:
-        case NodeKind::Affine:
-        case NodeKind::Sum:
-        case NodeKind::Transform: return true;
-        case NodeKind::Colormap:
-        case NodeKind::ColormapField:
-        case NodeKind::Curve:
-        case NodeKind::Mix:
-        case NodeKind::Compose:
-        case NodeKind::Lean: break;
-    }
-    return false;
 }
 
 nlohmann::json graphNodesJson() {

@@ -2,8 +2,11 @@
 // The nodes of texture graphs (texture_graph.h), each described once: its
 // inputs, what it gives, and its parameter table (name, description, type,
 // default, range). The table drives the JSON parsing and validation of a
-// graph, `stochtex nodes`, and the per-node benchmarks; a new node is a new
-// entry here and its operation in texture_graph.cpp.
+// graph, `stochtex nodes`, the workbench's widgets and the per-node
+// benchmarks. The sources and linear operators are entries in
+// graph_nodes.cpp; every node evaluated per pixel is an op
+// (ops/ops.h), whose own file describes it: a new op is its kernel file,
+// its header and one line in ops/ops.h.
 //
 // Sources (spectral noise, exemplar, the channels of a K-channel tiled
 // field) and linear operators of fields (a directional derivative, an affine
@@ -19,43 +22,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include "stochtex/pattern/param_info.h"
+#include "stochtex/pattern/node_info.h"
 
 namespace stochtex {
-
-// What flows along an edge: a scalar field, a colour, or a tiled field of
-// K channels (tiled_field) whose channels a channel node reads.
-enum class PortType { Field, Colour, Channels };
-const char* portTypeName(PortType t);
-
-struct PortInfo {
-    std::string name;
-    PortType type;
-    std::string description;
-};
-
-enum class NodeKind {
-    SpectralNoise, Exemplar, TiledField, Channel, Derivative, Affine, Sum, Transform,
-    Colormap, ColormapField, Curve, Mix, Compose, Lean
-};
-
-struct NodeInfo {
-    std::string name;  // the JSON "type"
-    NodeKind kind;
-    std::string category;  // source, linear, transfer, colour, shading
-    std::string description;
-    std::vector<PortInfo> inputs;
-    PortType output;
-    std::vector<ParamInfo> params;
-};
 
 // Every node, in the order `stochtex nodes` lists them.
 const std::vector<NodeInfo>& graphNodes();
 // The node called `name`, or null.
 const NodeInfo* findGraphNode(const std::string& name);
 // Whether a node's output is linear in its sources' examples (sources and
-// linear operators), so that it folds into an example.
-bool isLinearNode(NodeKind kind);
+// linear operators, affine and sum included), so that it folds into an example.
+inline bool isLinearNode(NodeKind kind) { return kind != NodeKind::Op; }
 
 // The whole table as JSON (for `stochtex nodes --json` and user interfaces):
 // [{type, category, description, inputs: [{name, type, description}],

@@ -11,7 +11,6 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/filter/pyramid.h"
-#include "stochtex/kernel/graph_ops.h"
 #include "stochtex/noise/slopes.h"
 
 namespace stochtex {
@@ -23,54 +22,32 @@ using kernel::vec3;
 
 vec3 toVec(const Rgb& c) { return vec3(c[0], c[1], c[2]); }
 
-// Whether a node gives a colour (else a field), from the node table.
-bool givesColour(NodeKind kind) {
-    for (const NodeInfo& n : graphNodes())
-        if (n.kind == kind) return n.output == PortType::Colour;
-    return false;
-}
 Rgb toRgb(const vec3& c) { return {c.x, c.y, c.z}; }
 
-// A table as an image of its entries, each through `entry` (Rx×Ry×3).
-template <class EntryFn>
-ColormapTable tabulate(int rx, int ry, EntryFn&& entry) {
-    Image t(rx, ry, 3, Image::Uninitialized{});
-    for (int j = 0; j < ry; ++j)
-        for (int i = 0; i < rx; ++i) {
-            const vec3 e = entry(i, j);
-            t.at(i, j, 0) = e.x;
-            t.at(i, j, 1) = e.y;
-            t.at(i, j, 2) = e.z;
-        }
-    return ColormapTable(t);
-}
+// A field (else a colour) is what the operation gives.
+bool givesField(const GraphPattern::Operation& op) { return op.info->output != PortType::Colour; }
 
-// A colormap_field's table from H: (g, g², 0) with g the asked channel.
-ColormapTable fieldTable(const ColormapTable& h, int channel) {
-    return tabulate(h.resolutionX(), h.resolutionY(), [&](int i, int j) {
-        return kernel::momentEntry(kernel::graphChannel(toVec(h.entry(i, j)), channel));
-    });
-}
+// The evaluators' side of the ops' table lookups (ops/op_host.h): the
+// graph's point tables, and in FilteredGraph its prefiltered ones.
+class GraphTables final : public kernel::OpTableLookup {
+public:
+    GraphTables(const std::vector<GraphPattern::Table>& point, const std::vector<PrefilteredColormap>* prefiltered)
+        : point_(point), prefiltered_(prefiltered) {}
+    vec3 point(int table, vec2 xy) const override { return toVec(point_[size_t(table)].point.sample(xy.x, xy.y)); }
+    vec3 prefiltered(int table, vec2 xy, vec2 sigma) const override {
+        if (!prefiltered_) throw std::logic_error("GraphPattern: a prefiltered lookup in the point evaluation");
+        return toVec((*prefiltered_)[size_t(table)].sample(xy.x, xy.y, sigma.x, sigma.y));
+    }
 
-// The piecewise-linear curve through the points at x (clamped to the ends).
-double curveAt(const std::vector<std::array<double, 2>>& points, double x) {
-    if (x <= points.front()[0]) return points.front()[1];
-    for (size_t k = 1; k < points.size(); ++k)
-        if (x <= points[k][0]) {
-            const auto &a = points[k - 1], &b = points[k];
-            return a[1] + (x - a[0]) / (b[0] - a[0]) * (b[1] - a[1]);
-        }
-    return points.back()[1];
-}
+private:
+    const std::vector<GraphPattern::Table>& point_;
+    const std::vector<PrefilteredColormap>* prefiltered_;
+};
 
-// A curve's table: R entries of (f, f², 0) on two identical rows; with a
-// Gaussianized input, f∘T⁻¹ (the blending space's curve).
-ColormapTable curveTable(const std::vector<std::array<double, 2>>& points, int resolution, const NoiseExample* input) {
-    return tabulate(resolution, 2, [&](int i, int) {
-        float x = float(i) / float(resolution - 1);
-        if (input) x = input->toOutput(x);
-        return kernel::momentEntry(float(curveAt(points, x)));
-    });
+// An operation's input slot k, vec3(0) where it has none.
+template <class Slots>
+vec3 input(const Slots& slots, const GraphPattern::Operation& op, int k) {
+    return op.inputs[size_t(k)] >= 0 ? slots[size_t(op.inputs[size_t(k)])] : vec3(0.0f);
 }
 
 }  // namespace
@@ -97,7 +74,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
     GraphPattern p;
     for (const GraphNode& g : graph.nodes) {
         if (!needed.count(g.id) || linear.at(g.id)) continue;
-        const bool lean = g.info->kind == NodeKind::Lean;
+        const bool lean = g.info->op == opIndex<LeanOp>();
         if (g.info->kind == NodeKind::Derivative || lean) {
             const std::string& from = g.inputs.at(lean ? "height" : "input");
             if (!linear.at(from))
@@ -118,7 +95,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
     const size_t fieldLeaves = p.leafIds_.size();
     std::vector<std::string> fieldIds = p.leafIds_;
     for (const GraphNode* g : ops)
-        if (g->info->kind == NodeKind::Lean) {
+        if (g->info->op == opIndex<LeanOp>()) {
             p.leafIds_.push_back(g->id + ".slope_u");
             p.leafIds_.push_back(g->id + ".slope_v");
             fieldIds.push_back(g->inputs.at("height"));
@@ -154,7 +131,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
     }
     std::vector<bool> leanPair;  // per lean node, in order: whether it reads its slopes' covariance
     for (const GraphNode* g : ops) {
-        if (g->info->kind != NodeKind::Lean) continue;
+        if (g->info->op != opIndex<LeanOp>()) continue;
         const size_t k = noises.size();
         const std::string& heightId = g->inputs.at("height");
         const NoiseExample& height = fields[fieldLeaves + (k - fieldLeaves) / 2];
@@ -209,70 +186,25 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
     for (const GraphNode* g : ops) {
         Operation op;
         op.id = g->id;
-        op.kind = g->info->kind;
+        op.info = g->info;
+        const bool lean = g->info->op == opIndex<LeanOp>();
         for (size_t i = 0; i < g->info->inputs.size(); ++i) {
+            if (lean && i == 0) continue;  // its slopes, below
+            op.inputs[i] = slot.at(g->inputs.at(g->info->inputs[i].name));
+        }
+        // A lean node reads its slopes along u and v, then the albedo.
+        if (lean) op.inputs = {slot.at(g->id + ".slope_u"), slot.at(g->id + ".slope_v"), slot.at(g->inputs.at("albedo"))};
+        const size_t tablesBefore = p.tables_.size();
+        OpBuild b{*g, [&](const std::string& port) { return gaussianizedLeaf(g->inputs.at(port)); }, p.tables_};
+        op.params = bindOp(g->info->op, b);
+        op.table = b.table;
+        // Only a table folds T⁻¹ in: an op without one cannot read a Gaussianized exemplar.
+        for (size_t i = 0; i < g->info->inputs.size() && op.table < 0; ++i) {
             const std::string& from = g->inputs.at(g->info->inputs[i].name);
-            if (op.kind == NodeKind::Lean && i == 0) continue;  // its slopes, below
-            op.inputs[i] = slot.at(from);
-            const bool table = op.kind == NodeKind::Colormap || op.kind == NodeKind::ColormapField ||
-                               op.kind == NodeKind::Curve;
-            if (!table && gaussianizedLeaf(from))
+            if (!(lean && i == 0) && gaussianizedLeaf(from))
                 throw InputError(context + ": node \"" + g->id + "\" (" + g->info->name + "): its input \"" + from +
                                  "\" is a Gaussianized exemplar, whose field only a transfer function reads directly; "
                                  "set \"gaussianize\": false on its exemplar or tiled_field to use it here");
-        }
-        const std::string& x = g->info->inputs.empty() ? std::string() : g->inputs.at(g->info->inputs[0].name);
-        const size_t tablesBefore = p.tables_.size();
-        switch (op.kind) {
-            case NodeKind::Colormap:
-            case NodeKind::ColormapField: {
-                const std::string& y = g->inputs.at("y");
-                const ColormapTable h = buildColormap(g->colormap);
-                const ColormapTable blended = foldInverseTransforms(h, gaussianizedLeaf(x), gaussianizedLeaf(y));
-                const int channel = int(g->numbers.count("channel") ? g->numbers.at("channel") : 0);
-                if (op.kind == NodeKind::Colormap)
-                    p.tables_.push_back({h, blended, false});
-                else
-                    p.tables_.push_back({fieldTable(h, channel), fieldTable(blended, channel), true});
-                op.table = int(p.tables_.size()) - 1;
-                break;
-            }
-            case NodeKind::Curve: {
-                const int resolution = int(g->numbers.at("resolution"));
-                p.tables_.push_back({curveTable(g->curve, resolution, nullptr),
-                                     curveTable(g->curve, resolution, gaussianizedLeaf(x)), true});
-                op.table = int(p.tables_.size()) - 1;
-                break;
-            }
-            case NodeKind::Affine:
-                op.parameters = {float(g->numbers.at("scale")), float(g->numbers.at("offset"))};
-                break;
-            case NodeKind::Sum:
-                op.parameters = {float(g->numbers.at("weight_a")), float(g->numbers.at("weight_b"))};
-                break;
-            case NodeKind::Mix:
-            case NodeKind::Compose: break;
-            case NodeKind::Lean: {
-                // Slots: the slopes along u and v, then the albedo.
-                op.inputs = {slot.at(g->id + ".slope_u"), slot.at(g->id + ".slope_v"), slot.at(g->inputs.at("albedo"))};
-                LeanShading shading;
-                const double azimuth = g->numbers.at("light_azimuth") * std::numbers::pi / 180;
-                const double elevation = g->numbers.at("light_elevation") * std::numbers::pi / 180;
-                shading.light = {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
-                                 std::sin(elevation)};
-                shading.roughness = g->numbers.at("roughness");
-                shading.specular = g->numbers.at("specular");
-                shading = validatedShading(shading);
-                op.parameters = {float(shading.roughness), float(shading.specular),   float(shading.light[0]),
-                                 float(shading.light[1]), float(shading.light[2]),   float(g->numbers.at("covariance"))};
-                break;
-            }
-            case NodeKind::SpectralNoise:
-            case NodeKind::Exemplar:
-            case NodeKind::TiledField:
-            case NodeKind::Channel:
-            case NodeKind::Derivative:
-            case NodeKind::Transform: throw std::logic_error("GraphPattern::build: a linear node as an operation");
         }
         if (p.tables_.size() > tablesBefore) {
             const ColormapTable& t = p.tables_.back().point;
@@ -289,32 +221,14 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
 template <class Slots>
 Rgb GraphPattern::run(Slots& slots, int lastSlot, const Direction& eye) const {
     if (lastSlot < leafCount()) return toRgb(slots[size_t(lastSlot)]);
+    const GraphTables tables(tables_, nullptr);
+    kernel::OpContext ctx;
+    ctx.eye = toVec(eye);
+    ctx.tables = &tables;
     size_t out = size_t(leafCount());
     for (const Operation& op : operations_) {
-        const vec3 a = slots[size_t(op.inputs[0])];
-        const vec3 b = op.inputs[1] >= 0 ? slots[size_t(op.inputs[1])] : vec3(0.0f);
-        switch (op.kind) {
-            case NodeKind::Colormap:
-            case NodeKind::ColormapField:
-                slots[out] = toVec(tables_[size_t(op.table)].point.sample(a.x, b.x));
-                break;
-            case NodeKind::Curve: slots[out] = toVec(tables_[size_t(op.table)].point.sample(a.x, 0.5f)); break;
-            case NodeKind::Affine:
-                slots[out] = vec3(kernel::affineValue(a.x, op.parameters[0], op.parameters[1]), 0.0f, 0.0f);
-                break;
-            case NodeKind::Sum:
-                slots[out] = vec3(kernel::sumValue(a.x, b.x, op.parameters[0], op.parameters[1]), 0.0f, 0.0f);
-                break;
-            case NodeKind::Mix: slots[out] = kernel::mixColour(a, b, slots[size_t(op.inputs[2])].x); break;
-            case NodeKind::Compose: slots[out] = kernel::composeColour(a.x, b.x, slots[size_t(op.inputs[2])].x); break;
-            case NodeKind::Lean: {
-                const auto& q = op.parameters;
-                slots[out] = kernel::leanNodeShade(vec2(a.x, b.x), vec2(0.0f), 0.0f, slots[size_t(op.inputs[2])],
-                                                   vec3(q[2], q[3], q[4]), toVec(eye), q[0], q[1]);
-                break;
-            }
-            default: throw std::logic_error("GraphPattern: a source as an operation");
-        }
+        ctx.table = op.table;
+        slots[out] = opPoint(op.params, input(slots, op, 0), input(slots, op, 1), input(slots, op, 2), ctx);
         if (int(out) == lastSlot) break;
         ++out;
     }
@@ -394,7 +308,7 @@ Image GraphPattern::renderNode(const View& view, const std::string& id) const {
     for (size_t k = 0; k < operations_.size(); ++k)
         if (operations_[k].id == id) {
             slot = leafCount() + int(k);
-            field = !givesColour(operations_[k].kind);
+            field = givesField(operations_[k]);
         }
     if (slot < 0) throw InputError("node \"" + id + "\" is neither a leaf nor an operation of the graph's program");
     return renderPixels(view, {}, slot, field);
@@ -450,42 +364,20 @@ Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMome
     // A field's moments in (x, y) of a slot, a colour's mean in all three.
     std::array<vec3, kMaxGraphNodes> slots;
     for (size_t k = 0; k < leafMoments.size(); ++k) slots[k] = vec3(leafMoments[k][0], leafMoments[k][1], 0.0f);
+    const GraphTables tables(graph_.tables(), &tables_);
+    kernel::OpContext ctx;
+    ctx.eye = toVec(eye);
+    ctx.tables = &tables;
     size_t out = leafMoments.size();
-    const auto moments = [](const vec3& s) { return vec2(s.x, s.y); };
-    const auto sigma = [](const vec3& s) { return kernel::momentSigma(vec2(s.x, s.y)); };
     for (const GraphPattern::Operation& op : graph_.operations()) {
-        const vec3 a = slots[size_t(op.inputs[0])];
-        const vec3 b = op.inputs[1] >= 0 ? slots[size_t(op.inputs[1])] : vec3(0.0f);
-        const PrefilteredColormap* table = op.table >= 0 ? &tables_[size_t(op.table)] : nullptr;
-        vec2 field(0.0f);
-        switch (op.kind) {
-            case NodeKind::Colormap: slots[out] = toVec(table->sample(a.x, b.x, sigma(a), sigma(b))); break;
-            case NodeKind::ColormapField:
-                field = kernel::matchedMoments(toVec(table->sample(a.x, b.x, sigma(a), sigma(b))));
-                break;
-            case NodeKind::Curve: field = kernel::matchedMoments(toVec(table->sample(a.x, 0.5f, sigma(a), 0.0f))); break;
-            case NodeKind::Affine: field = kernel::affineMoments(moments(a), op.parameters[0], op.parameters[1]); break;
-            case NodeKind::Sum:
-                field = kernel::sumMoments(moments(a), moments(b), op.parameters[0], op.parameters[1]);
-                break;
-            case NodeKind::Mix: slots[out] = kernel::mixColour(a, b, slots[size_t(op.inputs[2])].x); break;
-            case NodeKind::Compose: slots[out] = kernel::composeColour(a.x, b.x, slots[size_t(op.inputs[2])].x); break;
-            case NodeKind::Lean: {
-                // The slopes' covariance: that of their pair, when the node reads it.
-                const auto& q = op.parameters;
-                const size_t pair = size_t(graph_.leafLocation(op.inputs[0])[0]);
-                const float cov = q[5] != 0 && pair < pairCovariances.size() ? pairCovariances[pair] : 0.0f;
-                slots[out] = kernel::leanNodeShade(vec2(a.x, b.x), vec2(a.y, b.y), cov, slots[size_t(op.inputs[2])],
-                                                   vec3(q[2], q[3], q[4]), toVec(eye), q[0], q[1]);
-                break;
-            }
-            default: throw std::logic_error("FilteredGraph: a source as an operation");
-        }
-        if (!givesColour(op.kind)) {
-            // Only the tables make a field non-Gaussian; MeanOnly drops what they add.
-            const bool dropVariance = moments_ == GraphMoments::MeanOnly && table;
-            slots[out] = vec3(field.x, dropVariance ? 0.0f : field.y, 0.0f);
-        }
+        ctx.table = op.table;
+        // The covariance of the pair of leaves the first input is in (a lean node's slopes).
+        const int first = op.inputs[0];
+        const size_t pair = first < graph_.leafCount() ? size_t(graph_.leafLocation(first)[0]) : pairCovariances.size();
+        ctx.slopeCov = pair < pairCovariances.size() ? pairCovariances[pair] : 0.0f;
+        slots[out] = opFiltered(op.params, input(slots, op, 0), input(slots, op, 1), input(slots, op, 2), ctx);
+        // Only the tables make a field non-Gaussian; MeanOnly drops what they add.
+        if (givesField(op) && op.table >= 0 && moments_ == GraphMoments::MeanOnly) slots[out].y = 0.0f;
         ++out;
     }
     return toRgb(slots[out - 1]);
@@ -571,7 +463,7 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
     // once and translated to each pixel (as FilteredPattern does).
     const bool oneFootprint = camera.kind == Camera::Kind::Zoom && options_.source == StatisticsSource::Estimators;
     const bool shadesLight = std::any_of(graph_.operations().begin(), graph_.operations().end(),
-                                         [](const GraphPattern::Operation& op) { return op.kind == NodeKind::Lean; });
+                                         [](const GraphPattern::Operation& op) { return std::holds_alternative<LeanOp::Params>(op.params); });
     std::vector<Footprint> shapes;
     if (oneFootprint) {
         double u = 0, v = 0;

@@ -36,6 +36,7 @@
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/ops/ops.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 #include "stochtex/pattern/texture_graph.h"
@@ -57,24 +58,17 @@ public:
     // non-linear field, a Gaussianized exemplar read other than by a table).
     static GraphPattern build(const PatternSpec& spec);
 
-    // One operation of the per-pixel program. Slots 0..leafCount()−1 hold
-    // the leaves; operation k writes slot leafCount() + k.
+    // One operation of the per-pixel program: an op (ops/ops.h) on slots.
+    // Slots 0..leafCount()−1 hold the leaves; operation k writes slot
+    // leafCount() + k.
     struct Operation {
-        std::string id;  // the node
-        NodeKind kind;
-        std::array<int, 3> inputs{-1, -1, -1};  // slots, in the node's port order
-        int table = -1;                         // colormap, colormap_field, curve: index into tables()
-        // affine: scale, offset; sum: weight_a, weight_b; lean: roughness,
-        // specular, the light's direction (x, y, z), covariance (1: read it).
-        std::array<float, 6> parameters{};
+        std::string id;                         // the node
+        const NodeInfo* info = nullptr;         // its type
+        std::array<int, 3> inputs{-1, -1, -1};  // slots, in the node's port order (lean: its slopes, then the albedo)
+        int table = -1;                         // the op's table in tables(), −1: none
+        OpParams params;                        // the op and its typed parameters
     };
-    // A table node's table: a colour (colormap) or, for a field, (g, g², 0)
-    // per entry (kernel momentEntry); a curve's has 2 identical rows.
-    struct Table {
-        ColormapTable point;    // what the unfiltered evaluation reads
-        ColormapTable blended;  // the same with the inverse histogram transforms of Gaussianized leaf inputs folded in
-        bool field = false;
-    };
+    using Table = OpTable;
 
     int leafCount() const { return int(leafIds_.size()); }
     const std::vector<std::string>& leafIds() const { return leafIds_; }

@@ -9,6 +9,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/noise/slopes.h"
+#include "stochtex/pattern/ops/colormap_op.h"
 
 namespace stochtex {
 
@@ -189,7 +190,7 @@ TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path&
 
 bool foldsIntoPattern(const TextureGraph& graph) {
     const GraphNode& out = graph.node(graph.output);
-    if (out.info->kind != NodeKind::Colormap) return false;
+    if (out.info->name != ColormapOp::info().name) return false;
     // Every node upstream of the output's inputs must be linear.
     std::vector<std::string> todo{out.inputs.at("x"), out.inputs.at("y")};
     std::set<std::string> seen;
@@ -246,12 +247,7 @@ UvTransform nodeTransform(const TextureGraph& graph, const std::string& id, cons
         case NodeKind::Exemplar:
         case NodeKind::TiledField:
         case NodeKind::Channel: break;
-        case NodeKind::Colormap:
-        case NodeKind::ColormapField:
-        case NodeKind::Curve:
-        case NodeKind::Mix:
-        case NodeKind::Compose:
-        case NodeKind::Lean: throw std::logic_error("graphNodeTransform: node " + id + " is not linear in its sources");
+        case NodeKind::Op: throw std::logic_error("graphNodeTransform: node " + id + " is not linear in its sources");
     }
     memo.emplace(id, r);
     return r;
@@ -376,12 +372,7 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
         // The same example, seen through another uv (graphNodeTransform).
         case NodeKind::Transform: return buildFieldOnce(graph, g.inputs.at("input"), patternSeed, context, cache);
         case NodeKind::TiledField:  // not a field: its channels are
-        case NodeKind::Colormap:
-        case NodeKind::ColormapField:
-        case NodeKind::Curve:
-        case NodeKind::Mix:
-        case NodeKind::Compose:
-        case NodeKind::Lean: break;
+        case NodeKind::Op: break;
     }
     throw std::logic_error("buildGraphField: node " + id + " is not a field linear in its sources");
 }

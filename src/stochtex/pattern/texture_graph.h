@@ -24,6 +24,7 @@
 
 #include "stochtex/noise/example.h"
 #include "stochtex/pattern/graph_nodes.h"
+#include "stochtex/pattern/node_info.h"
 #include "stochtex/pattern/pattern_parts.h"
 
 namespace stochtex {
@@ -33,18 +34,6 @@ constexpr int kMaxGraphNodes = 256;
 // floats): each node's example is built once and kept while the graph is
 // built, and a node's example is up to 4096².
 constexpr long long kMaxGraphExampleTexels = 1ll << 28;
-
-struct GraphNode {
-    std::string id;
-    const NodeInfo* info = nullptr;
-    std::map<std::string, std::string> inputs;  // port → node id
-    std::map<std::string, double> numbers;      // Number, Integer, Boolean (0/1) parameters, defaults filled
-    std::optional<uint32_t> seed;               // the Seed parameter when given
-    NoiseSpec noise;                            // sources: the example's description
-    ColormapSpec colormap;                      // colormap and colormap_field nodes
-    std::vector<std::array<double, 2>> curve;   // curve nodes: the points
-    // Choice parameters: the index of the value in ParamInfo::choices (in numbers).
-};
 
 struct TextureGraph {
     std::vector<GraphNode> nodes;  // every node after its inputs

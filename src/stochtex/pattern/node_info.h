@@ -1,0 +1,62 @@
+#pragma once
+// A graph node type described once (its ports and parameters: NodeInfo) and
+// a node of a graph file as parsed (GraphNode). Plain values only, so that
+// the node table (graph_nodes.h), the parser (texture_graph.h) and each op's
+// own file (ops/) read them without including each other.
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stochtex/pattern/param_info.h"
+#include "stochtex/pattern/pattern_file.h"
+
+namespace stochtex {
+
+// What flows along an edge: a scalar field, a colour, or a tiled field of
+// K channels (tiled_field) whose channels a channel node reads.
+enum class PortType { Field, Colour, Channels };
+inline const char* portTypeName(PortType t) {
+    if (t == PortType::Field) return "field";
+    return t == PortType::Colour ? "colour" : "tiled field";
+}
+
+struct PortInfo {
+    std::string name;
+    PortType type;
+    std::string description;
+};
+
+// What the graph parser does with a node: the sources and linear operators
+// fold into the examples a graph's leaves are tiled from (texture_graph.h);
+// every other node is an op (Op), evaluated per pixel, which NodeInfo::op
+// names. affine and sum are both: linear over fields that fold, ops over
+// the outputs of ops.
+enum class NodeKind { SpectralNoise, Exemplar, TiledField, Channel, Derivative, Transform, Affine, Sum, Op };
+
+struct NodeInfo {
+    std::string name;  // the JSON "type"
+    NodeKind kind;
+    std::string category;  // source, linear, transfer, colour, shading
+    std::string description;
+    std::vector<PortInfo> inputs;
+    PortType output;
+    std::vector<ParamInfo> params;
+    int op = -1;  // an op's index in ops/ops.h's list (OpParams' alternatives); −1: not an op
+};
+
+struct GraphNode {
+    std::string id;
+    const NodeInfo* info = nullptr;
+    std::map<std::string, std::string> inputs;  // port → node id
+    std::map<std::string, double> numbers;      // Number, Integer, Boolean (0/1) parameters, defaults filled
+    std::optional<uint32_t> seed;               // the Seed parameter when given
+    NoiseSpec noise;                            // sources: the example's description
+    ColormapSpec colormap;                      // colormap and colormap_field nodes
+    std::vector<std::array<double, 2>> curve;   // curve nodes: the points
+    // Choice parameters: the index of the value in ParamInfo::choices (in numbers).
+};
+
+}  // namespace stochtex

@@ -1,0 +1,12 @@
+// curve op: a 1D transfer function f of a field (piecewise linear through
+// the node's points, tabulated). Its table holds (f, f², 0) per entry on
+// two identical rows, read at y = 0.5, so a prefiltered lookup with no
+// spread along y gives E[f] and E[f²] (moment matching, docs/MATH.md).
+// Kernel file (ops/op_host.h).
+struct CurveParams {
+    float unused;  // GLSL has no empty struct: f is the op's table
+};
+inline vec3 opPoint(CurveParams p, vec3 a, vec3 b, vec3 c, OpContext ctx) { return opTable(ctx, vec2(a.x, 0.5f)); }
+inline vec3 opFiltered(CurveParams p, vec3 a, vec3 b, vec3 c, OpContext ctx) {
+    return vec3(matchedMoments(opPrefiltered(ctx, vec2(a.x, 0.5f), vec2(momentSigma(vec2(a.x, a.y)), 0.0f))), 0.0f);
+}

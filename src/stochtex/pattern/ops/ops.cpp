@@ -1,0 +1,112 @@
+#include "stochtex/pattern/ops/ops.h"
+
+#include <cstdio>
+#include <cctype>
+#include <cstring>
+#include <string_view>
+#include <iterator>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+
+namespace stochtex {
+
+namespace {
+
+template <size_t I>
+using OpAt = std::tuple_element_t<I, OpList::Tuple>;
+constexpr size_t kOpCount = std::tuple_size_v<OpList::Tuple>;
+
+// The op whose Params is P.
+template <class P, size_t I = 0>
+constexpr size_t indexOfParams() {
+    static_assert(I < kOpCount, "not the Params of a listed op");
+    if constexpr (std::is_same_v<typename OpAt<I>::Params, P>)
+        return I;
+    else
+        return indexOfParams<P, I + 1>();
+}
+
+// The GLSL emitter writes a Params as its struct's constructor from its
+// floats in declaration order: each must be floats only.
+template <size_t... I>
+constexpr bool floatsOnly(std::index_sequence<I...>) {
+    return ((std::is_standard_layout_v<typename OpAt<I>::Params> &&
+             sizeof(typename OpAt<I>::Params) % sizeof(float) == 0 &&
+             alignof(typename OpAt<I>::Params) == alignof(float)) &&
+            ...);
+}
+static_assert(floatsOnly(std::make_index_sequence<kOpCount>{}), "an op's Params holds floats only");
+
+}  // namespace
+
+std::vector<NodeInfo> opNodeInfos() {
+    std::vector<NodeInfo> infos;
+    [&]<size_t... I>(std::index_sequence<I...>) { (infos.push_back(OpAt<I>::info()), ...); }
+    (std::make_index_sequence<kOpCount>{});
+    for (size_t k = 0; k < infos.size(); ++k) infos[k].op = int(k);
+    return infos;
+}
+
+OpParams bindOp(int op, OpBuild& build) {
+    OpParams params;
+    const bool found = [&]<size_t... I>(std::index_sequence<I...>) {
+        return ((size_t(op) == I ? (params.emplace<I>(OpAt<I>::bind(build)), true) : false) || ...);
+    }
+    (std::make_index_sequence<kOpCount>{});
+    if (!found) throw std::invalid_argument("bindOp: no op " + std::to_string(op));
+    return params;
+}
+
+kernel::vec3 opPoint(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kernel::vec3 c, const kernel::OpContext& ctx) {
+    return std::visit([&](const auto& p) { return kernel::opPoint(p, a, b, c, ctx); }, op);
+}
+
+kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kernel::vec3 c,
+                        const kernel::OpContext& ctx) {
+    return std::visit([&](const auto& p) { return kernel::opFiltered(p, a, b, c, ctx); }, op);
+}
+
+const char* opKernelStem(const OpParams& op) {
+    return std::visit([](const auto& p) { return OpAt<indexOfParams<std::decay_t<decltype(p)>>()>::kKernel; }, op);
+}
+
+std::string glslFloat(float v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", double(v));
+    std::string s = buffer;
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
+
+// The GLSL name of an op's Params: "colormap_field_op" → "ColormapFieldParams".
+std::string paramsStructName(std::string_view stem) {
+    std::string name;
+    bool upper = true;
+    for (const char c : stem.substr(0, stem.size() - 3)) {  // without "_op"
+        if (c == '_') {
+            upper = true;
+            continue;
+        }
+        name += upper ? char(std::toupper(static_cast<unsigned char>(c))) : c;
+        upper = false;
+    }
+    return name + "Params";
+}
+
+std::string opGlslCall(const OpParams& op, bool filtered, const std::string& a, const std::string& b,
+                       const std::string& c, const std::string& ctx) {
+    return std::visit(
+        [&](const auto& p) {
+            using P = std::decay_t<decltype(p)>;
+            std::string s =
+                std::string(filtered ? "opFiltered(" : "opPoint(") + paramsStructName(OpAt<indexOfParams<P>()>::kKernel) + "(";
+            float f[sizeof(P) / sizeof(float)];
+            std::memcpy(f, &p, sizeof(P));
+            for (size_t k = 0; k < std::size(f); ++k) s += (k ? ", " : "") + glslFloat(f[k]);
+            return s + "), " + a + ", " + b + ", " + c + ", " + ctx + ")";
+        },
+        op);
+}
+
+}  // namespace stochtex
