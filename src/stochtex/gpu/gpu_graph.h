@@ -4,7 +4,8 @@
 // written out as GLSL that calls the kernel's functions — tiling and
 // blending of each leaf, the footprint statistics of each pair of leaves
 // (filtering.glsl's pairStatistics), table lookups, the prefiltered tables'
-// lookup and kernel/graph_ops.glsl — in the CPU evaluator's order, so that
+// lookup and each op's kernel file (pattern/ops/) through the OpContext and
+// table lookups this chunk declares — in the CPU evaluator's order, so that
 // the GPU's colours are the CPU's within float rounding. Seeds, means and
 // parameters are constants of the program; examples, pyramids and tables
 // are textures.

@@ -3,8 +3,9 @@
 // Figure 14 and §7): the linear part folds into the examples of the graph's
 // leaves — the linear field nodes that a non-linear node reads — tiled and
 // blended on one triangle grid; the non-linear nodes (colormap,
-// colormap_field, curve, mix, and affine or sum over their results) run as a
-// short program of kernel/graph_ops.glsl operations on the leaves' values.
+// colormap_field, curve, product, mix, compose, lean, and affine or sum over
+// their results) run as a short program of ops (ops/ops.h) on the leaves'
+// values.
 // A lean node reads its height's slopes (spectral, as a derivative node's)
 // as two more leaves on the height's tiles, and their covariance.
 //
