@@ -23,6 +23,7 @@
 #include "stochtex/pattern/ops/mix_op.h"
 #include "stochtex/pattern/ops/op_host.h"
 #include "stochtex/pattern/ops/product_op.h"
+#include "stochtex/pattern/ops/square_op.h"
 #include "stochtex/pattern/ops/sum_op.h"
 
 namespace stochtex {
@@ -33,7 +34,8 @@ struct OpTypes {
     using Params = std::variant<typename Ops::Params...>;
 };
 // The list, in the order `stochtex nodes` shows them after the sources and linear nodes.
-using OpList = OpTypes<AffineOp, SumOp, ProductOp, ColormapOp, ColormapFieldOp, CurveOp, MixOp, ComposeOp, LeanOp>;
+using OpList =
+    OpTypes<AffineOp, SumOp, ProductOp, SquareOp, ColormapOp, ColormapFieldOp, CurveOp, MixOp, ComposeOp, LeanOp>;
 
 // One op's typed parameters; the alternative's index is the op (NodeInfo::op).
 using OpParams = OpList::Params;
