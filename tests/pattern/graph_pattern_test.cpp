@@ -109,6 +109,28 @@ TEST(GraphOps, ProductMomentsAreThoseOfIndependentFields) {
     EXPECT_EQ(m.z, 0.0f);
 }
 
+// The square op's moments are those of s·x² for a Gaussian x (400 000
+// draws, fixed seed), and its point value is s·x².
+TEST(GraphOps, SquareMomentsAreThoseOfAGaussianSquared) {
+    using namespace kernel;
+    std::mt19937 rng(11);
+    const double mu = 0.4, sigma = 0.2, scale = 3.0;
+    std::normal_distribution<double> dx(mu, sigma);
+    const int n = 400000;
+    double sum = 0, sumSq = 0;
+    for (int i = 0; i < n; ++i) {
+        const double x = dx(rng), p = scale * x * x;
+        sum += p;
+        sumSq += p * p;
+    }
+    const double mean = sum / n, var = sumSq / n - mean * mean;
+    const vec3 m = opFiltered(SquareParams{float(scale)}, vec3(float(mu), float(sigma * sigma), 0.0f), vec3(0.0f),
+                              vec3(0.0f), OpContext{});
+    EXPECT_NEAR(m.x, mean, 4 * std::sqrt(var / n));
+    EXPECT_NEAR(m.y, var, 0.02 * var);
+    EXPECT_NEAR(opPoint(SquareParams{2.0f}, vec3(0.5f, 0, 0), vec3(0.0f), vec3(0.0f), OpContext{}).x, 0.5, 1e-7);
+}
+
 // Through a graph: a product of two independent noises, shown by compose
 // (exact on means), filtered from the leaves' exact footprint statistics is
 // the supersampled reference's mean up to the two fields' sample covariance
