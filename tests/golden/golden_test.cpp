@@ -1,5 +1,10 @@
-// Golden images: a fresh CPU render of each preset × filter × view against the
-// 64×64 PNG stored in tests/golden/, to catch any change of the pixels.
+// Golden images: a fresh render of each case against the 64×64 PNG stored in
+// tests/golden/, to catch any change of the pixels. The cases: the CPU's
+// colour patterns (preset × filter × view), a texture graph (figure14,
+// through the graph evaluator), the LEAN response of a normal map
+// (lean-ridges), and the GPU path of the three on the headless OpenGL
+// context (Mesa's llvmpipe in CI and here; a GPU's own driver rounds its
+// own way, so these stored images are llvmpipe's).
 //
 // Both sides go through the same 8-bit PNG writer and reader (writeImage /
 // readImage), so an unchanged renderer differs by exactly 0. Tolerance, in
@@ -9,15 +14,15 @@
 // renders are left in <build>/tests/golden-out/ to look at.
 //
 // After an intended change of the pixels, rewrite the stored images with
-//     cmake --build build --target golden-update
-// (= STOCHTEX_UPDATE_GOLDEN=1 build/bin/stochtex_tests --gtest_filter='Golden*'),
-// look at them (git diff shows which changed) and commit them.
+//     make golden-update    (= build/bin/stochtex_golden --update)
+// look at them (git diff shows which changed) and commit them. Compare or
+// update is this binary's own flag, so nothing a test run inherits (an
+// environment variable) can turn a comparison into a rewrite.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -26,8 +31,11 @@
 #include <string>
 #include <vector>
 
+#include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
 
 namespace stochtex {
@@ -47,12 +55,16 @@ constexpr int kSize = 64;
 constexpr long kMaxStep = 2;       // max |Δ|, in 1/255
 constexpr double kMeanStep = 0.2;  // mean |Δ|, in 1/255
 
+bool gUpdate = false;  // --update: rewrite the stored images instead of comparing
+
 struct GoldenCase {
     std::string preset;
     std::string filter;  // as parseFilter reads it
     std::string view;
+    bool lean = false;  // the lean response (the preset's normal map) instead of the colours
+    bool gpu = false;   // the GLSL implementation on the headless context
 
-    std::string name() const { return preset + "-" + filter + "-" + view; }
+    std::string name() const { return preset + "-" + filter + (lean ? "-lean" : "") + "-" + view + (gpu ? "-gpu" : ""); }
 };
 
 // gtest prints a failing case's parameter with this (not as raw bytes).
@@ -63,20 +75,37 @@ std::vector<GoldenCase> goldenCases() {
     for (const char* preset : kPresets)
         for (const char* filter : kFilters)
             for (const char* view : kViews) cases.push_back({preset, filter, view});
+    for (const bool gpu : {false, true})
+        for (const char* filter : {"none", "smooth"})
+            for (const char* view : kViews) {
+                cases.push_back({"figure14", filter, view, false, gpu});
+                cases.push_back({"lean-ridges", filter, view, true, gpu});
+                if (gpu) cases.push_back({"camouflage", filter, view, false, true});
+            }
     return cases;
 }
 
-bool updating() {
-    const char* e = std::getenv("STOCHTEX_UPDATE_GOLDEN");
-    return e != nullptr && std::string(e) == "1";
+// One spec, pattern and graph per preset for the whole process (the update runs every case).
+const PatternSpec& spec(const std::string& preset) {
+    static std::map<std::string, PatternSpec> specs;
+    const auto it = specs.find(preset);
+    return it != specs.end() ? it->second : specs.emplace(preset, loadPreset(preset)).first->second;
 }
-
-// One pattern per preset for the whole process (the update runs every case).
 const Pattern& pattern(const std::string& preset) {
     static std::map<std::string, std::unique_ptr<Pattern>> patterns;
     auto& p = patterns[preset];
-    if (!p) p = std::make_unique<Pattern>(Pattern::build(loadPreset(preset)));
+    if (!p) p = std::make_unique<Pattern>(Pattern::build(spec(preset)));
     return *p;
+}
+const GraphPattern& graph(const std::string& preset) {
+    static std::map<std::string, std::unique_ptr<GraphPattern>> graphs;
+    auto& g = graphs[preset];
+    if (!g) g = std::make_unique<GraphPattern>(GraphPattern::build(spec(preset)));
+    return *g;
+}
+GlContext& context() {
+    static std::unique_ptr<GlContext> ctx = GlContext::headless();
+    return *ctx;
 }
 
 // Zoomed out 4 texels per pixel (the filters differ there), or the ground
@@ -87,11 +116,14 @@ Image render(const GoldenCase& c) {
     camera.view.scale = 4.0;
     FilterOptions options;
     options.use(parseFilter(c.filter));
+    if (c.lean) options.response.kind = ResponseKind::Lean;
     if (c.view == "plane") {
         camera.kind = Camera::Kind::Plane;
         camera.tiltDeg = 70;
         options.aniso = 8;
     }
+    if (c.gpu) return makeGpuView(spec(c.preset), context(), options)->render(camera);
+    if (needsGraphEvaluator(spec(c.preset))) return FilteredGraph(graph(c.preset), options).render(camera);
     return FilteredPattern(pattern(c.preset), options).render(camera);
 }
 
@@ -101,7 +133,7 @@ TEST_P(GoldenImage, MatchesTheStoredRender) {
     const GoldenCase& c = GetParam();
     const fs::path stored = fs::path(STOCHTEX_GOLDEN_DIR) / (c.name() + ".png");
     const Image fresh = render(c);
-    if (updating()) {
+    if (gUpdate) {
         writeImage(stored.string(), fresh);
         std::printf("[ update ] wrote %s\n", stored.c_str());
         return;
@@ -154,10 +186,24 @@ TEST(Golden, StoresExactlyTheImagesOfTheCases) {
     for (const GoldenCase& c : goldenCases()) expected.insert(c.name() + ".png");
     for (const auto& entry : fs::directory_iterator(STOCHTEX_GOLDEN_DIR))
         if (entry.path().extension() == ".png") stored.insert(entry.path().filename().string());
-    if (updating()) return;  // the update writes the images; stale ones are for a person to delete
+    if (gUpdate) return;  // the update writes the images; stale ones are for a person to delete
     for (const std::string& name : stored) EXPECT_TRUE(expected.count(name)) << "stale golden image " << name;
     for (const std::string& name : expected) EXPECT_TRUE(stored.count(name)) << "missing golden image " << name;
 }
 
 }  // namespace
 }  // namespace stochtex
+
+// gtest's own flags, then this binary's: --update rewrites the stored images.
+int main(int argc, char** argv) {
+    testing::InitGoogleTest(&argc, argv);
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--update") {
+            stochtex::gUpdate = true;
+        } else {
+            std::fprintf(stderr, "stochtex_golden: unknown argument %s (only --update and gtest's flags)\n", argv[i]);
+            return 2;
+        }
+    }
+    return RUN_ALL_TESTS();
+}

@@ -160,7 +160,9 @@ TEST(SlopeField, CovarianceEstimateMatchesBruteForceStatistics) {
         err /= count;
         errNoCov /= count;
         EXPECT_LT(err, size.bound) << size.texels << " texels";
-        if (size.texels > 1) EXPECT_LT(err, errNoCov) << size.texels << " texels";
+        if (size.texels > 1) {
+            EXPECT_LT(err, errNoCov) << size.texels << " texels";
+        }
     }
 }
 

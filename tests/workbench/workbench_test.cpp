@@ -358,7 +358,9 @@ TEST(WorkbenchEditors, EveryNodeTypeCanBeAddedToAGraph) {
             const std::string source = e.value[port.name];
             EXPECT_NE(std::find(fit.begin(), fit.end(), source), fit.end()) << port.name;
             // A field input is fed by a spectral noise (figure14's height is one).
-            if (port.type == PortType::Field) EXPECT_EQ(doc.json()["nodes"][source]["type"], "spectral_noise");
+            if (port.type == PortType::Field) {
+                EXPECT_EQ(doc.json()["nodes"][source]["type"], "spectral_noise");
+            }
         }
         EXPECT_NO_THROW(doc.set(e.pointer, e.value));
     }
