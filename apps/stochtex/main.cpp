@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
     // An interrupted command removes its temporary files and dies of the signal.
     stochtex::installTempFileCleanup();
     CLI::App app{"stochtex: colour-mapped noise vector fields and procedural texture analysis"};
+    // Usage lines read "stochtex render ...", whatever path the binary was started by.
+    app.name("stochtex");
     app.require_subcommand(1);
     // --quiet (and --help, --version) may follow the command's name.
     app.fallthrough(true);

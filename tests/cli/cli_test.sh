@@ -57,6 +57,9 @@ case_help() {
   for c in render gallery noise colormap presets nodes zoom correlation contrast analyze stimuli marble spectrum flow coherence fractalize reproduce scene view bake bake-image; do
     "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
   done
+  # Usage names the command as a person types it, not the binary's path.
+  "$bin" render --help | grep -q "^Usage: stochtex render " || fail "render --help: Usage does not read 'stochtex render'"
+  "$bin" --help | grep -q "^Usage: stochtex " || fail "--help: Usage does not read 'stochtex'"
 }
 
 # --- success paths ---
