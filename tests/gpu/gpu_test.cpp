@@ -641,6 +641,29 @@ TEST(Gpu, FilteringRecipesAssembleTheResponseChunk) {
     EXPECT_EQ(recipeFiles(programRecipe("display"), ResponseKind::Lean), programRecipe("display").main);
 }
 
+// What a file needs is read from the file: a kernel file's from its C++
+// header's includes (grid.h includes hash.h; lean_op.h includes op_host.h,
+// which stands for the kernel files it includes, and kernel/lean.h), a
+// GLSL-only chunk's and generated text's from their `#include` lines, which
+// the assembled text keeps only as comments. A cycle is refused.
+TEST(Gpu, ShaderFilesNeedWhatTheirIncludesName) {
+    const auto order = [](const std::vector<std::string>& files,
+                          const std::vector<std::pair<std::string, std::string>>& generated = {}) {
+        return shaderChunks(files, generated);
+    };
+    EXPECT_EQ(order({"grid"}), (std::vector<std::string>{"hash", "grid"}));
+    EXPECT_EQ(order({"camera"}), (std::vector<std::string>{"coords", "camera"}));
+    EXPECT_EQ(order({"lean_op"}), (std::vector<std::string>{"lean", "graph_ops", "op_host", "lean_op"}));
+    EXPECT_EQ(order({"pattern_filtering"}), (std::vector<std::string>{"footprint", "moments", "filtering", "pattern_filtering"}));
+    const std::string generated = "// one op\n#include \"stochtex/pattern/ops/square_op.glsl\"\nvec3 f() { return vec3(0.0); }\n";
+    EXPECT_EQ(order({"made"}, {{"made", generated}}),
+              (std::vector<std::string>{"graph_ops", "op_host", "square_op", "made"}));
+    const std::string text = assembleShader(GlslTarget::Core330, {"made"}, {{"made", generated}});
+    EXPECT_EQ(text.find("\n#include"), std::string::npos) << text;
+    EXPECT_NE(text.find("// #include \"stochtex/pattern/ops/square_op.glsl\""), std::string::npos);
+    EXPECT_THROW(order({"a"}, {{"a", "#include \"b.glsl\"\n"}, {"b", "#include \"a.glsl\"\n"}}), std::invalid_argument);
+}
+
 // Every program of the recipe table, with the chunk of every response kind,
 // compiles as GLSL 3.30 core and GLSL ES 3.00 (WebGL 2), compute programs as
 // GLSL 4.30, checked by the reference compiler; the texture-graph recipes

@@ -390,6 +390,60 @@ TEST_F(KernelParity, PlaneRayIsBitExact) {
     EXPECT_LT(sky, kItems / 2);
 }
 
+// The view mappings (kernel/camera.glsl) run at each host's coordinate
+// precision (kernel/coords.h): float on the GPU, double on the CPU. From the
+// same float inputs the GPU's results are the CPU's within 3 ulps (float) of
+// the sum of the magnitudes of their terms: the float rounding of each
+// operation and nothing else (offsets up to 10⁴ texels, pixels up to 2048,
+// scales 2⁻⁴–2⁶, W 64–1024, transforms with entries in [−2, 2]).
+TEST_F(KernelParity, ViewMappingsMatchTheCpuWithinFloatRounding) {
+    Random r{11};
+    std::vector<uvec4> in(size_t(kItems) * 3);
+    for (size_t i = 0; i < in.size(); i += 3) {
+        in[i] = bits(vec4(std::floor(r.uniform(0.0f, 2048.0f)) + 0.5f, std::floor(r.uniform(0.0f, 2048.0f)) + 0.5f,
+                          r.uniform(-1e4f, 1e4f), r.uniform(-1e4f, 1e4f)));
+        in[i + 1] = bits(vec4(std::exp2(r.uniform(-4.0f, 6.0f)), std::ldexp(1.0f, -int(6 + r.next().x % 5u)),
+                              float(1u + r.next().x % 2048u), float(1u + r.next().x % 2048u)));
+        in[i + 2] = bits(vec4(r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f)));
+    }
+    const auto gpu = runOnGpu({"camera"}, R"(
+        vec4 a = wordf(0), b = wordf(1), m = wordf(2);
+        vec2 uv = zoomUv(a.xy, a.zw, b.x, b.y);
+        emitf(0, vec4(uv, planeCentreTexel(b.zw, a.zw, b.x)));
+        emitf(1, vec4(transformUv(uv, m.xy, m.zw, a.xy * b.y), transformVector(a.zw * b.y, m.xy, m.zw)));)",
+                              3, 2, in);
+    std::array<double, 8> bound{};  // the item's sums of |terms|, one per result
+    compareItems(gpu, 2, [&](int i) {
+        const vec4 a = floats(in[size_t(i) * 3]), b = floats(in[size_t(i) * 3 + 1]), m = floats(in[size_t(i) * 3 + 2]);
+        const coord2 p(a.x, a.y), offset(a.z, a.w), size(b.z, b.w), row0(m.x, m.y), row1(m.z, m.w);
+        const double scale = b.x, invW = b.y;
+        // The transforms take the GPU's uv (float) so that only their own rounding is compared.
+        const vec4 g0 = floats(gpu[size_t(i) * 2]);
+        const coord2 gpuUv(g0.x, g0.y), t = p * invW, v = offset * invW;
+        const coord2 uv = zoomUv(p, offset, scale, invW), centre = planeCentreTexel(size, offset, scale);
+        const coord2 moved = transformUv(gpuUv, row0, row1, t), vector = transformVector(v, row0, row1);
+        for (int k = 0; k < 2; ++k) {
+            bound[size_t(k)] = (std::abs(offset[k]) + std::abs(p[k] * scale)) * invW;
+            bound[size_t(2 + k)] = std::abs(offset[k]) + std::abs(0.5 * size[k] * scale);
+            const coord2 row = k == 0 ? row0 : row1;
+            bound[size_t(4 + k)] = std::abs(row.x * gpuUv.x) + std::abs(row.y * gpuUv.y) + std::abs(t[k]);
+            bound[size_t(6 + k)] = std::abs(row.x * v.x) + std::abs(row.y * v.y);
+        }
+        return std::vector<uvec4>{bits(vec4(float(uv.x), float(uv.y), float(centre.x), float(centre.y))),
+                                  bits(vec4(float(moved.x), float(moved.y), float(vector.x), float(vector.y)))};
+    }, [&](const uvec4* g, const uvec4* c) -> std::string {
+        for (int w = 0; w < 2; ++w)
+            for (int k = 0; k < 4; ++k) {
+                const float gv = floats(g[w])[k], cv = floats(c[w])[k];
+                const double tolerance = 3.0 * std::ldexp(bound[size_t(4 * w + k)], -23);
+                if (!(std::abs(double(gv) - double(cv)) <= tolerance))
+                    return "word " + std::to_string(w) + "[" + std::to_string(k) + "]: GPU " + std::to_string(gv) +
+                           ", C++ " + std::to_string(cv) + " (|Δ| > " + std::to_string(tolerance) + ")";
+            }
+        return "";
+    });
+}
+
 TEST_F(KernelParity, LookupAddressingAndBlendsAreBitExact) {
     // Periodic grids of 1…1024 texels at points of one period moved by a tile
     // offset; tables of 2…1024 entries at x ∈ [−0.2, 1.2] (both clamps).
@@ -622,12 +676,7 @@ TEST_F(KernelParity, GraphOperationsWithin4UlpsOfOne) {
 // that are known functions of where they are read, so that what an op
 // computes around its lookups is compared, on both sides.
 constexpr const char* kTestOpHost = R"(
-struct OpContext {
-    int table;
-    vec3 eye;
-    vec4 light;
-    float slopeCov;
-};
+#include "stochtex/pattern/ops/op_host.glsl"
 vec3 opTable(OpContext ctx, vec2 xy) { return vec3(xy.x, xy.y, xy.x * xy.y + float(ctx.table)); }
 vec3 opPrefiltered(OpContext ctx, vec2 xy, vec2 sigma) { return vec3(xy.x + sigma.x, xy.x * xy.x + sigma.y, xy.y); }
 )";
@@ -682,7 +731,7 @@ void checkOpParity() {
         OpContext ctx = OpContext(2, e.xyz, vec4(l.xyz, e.w), w2.z);
         emitf(0, vec4(opPoint()" + params + R"(, a, b, c, ctx), 0.0));
         emitf(1, vec4(opFiltered()" + params + R"(, a, b, c, ctx), 0.0));)";
-    const auto gpu = runOnGpu({"graph_ops", "lean", "op_test_host", Op::kKernel}, body, inWords, 2, in,
+    const auto gpu = runOnGpu({"op_test_host", Op::kKernel}, body, inWords, 2, in,
                               {{"op_test_host", kTestOpHost}});
     const TestOpTables tables;
     compareItems(gpu, 2, [&](int i) {

@@ -65,8 +65,10 @@ std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments
                        "// defines filteredColour (moment matching through its prefiltered tables). Its seeds\n"
                        "// and means are constants here; of the PatternParameters block it reads\n"
                        "// gridDensity, invExampleSize, maxLod, aniso, smoothTable and tableLevels.\n\n";
-    for (const auto& stem : shaderChunks(recipeFiles(programRecipe("export-graph-include"), ResponseKind::PrefilteredColormap)))
-        text += (stem == kGraphProgramStem ? graphProgramSource(graph, moments) : shaderText(stem)) + "\n";
+    const std::vector<std::pair<std::string, std::string>> program = {{kGraphProgramStem, graphProgramSource(graph, moments)}};
+    for (const auto& stem :
+         shaderChunks(recipeFiles(programRecipe("export-graph-include"), ResponseKind::PrefilteredColormap), program))
+        text += (stem == kGraphProgramStem ? generatedShaderText(program[0].second) : shaderText(stem)) + "\n";
     return text + kSampleFunction;
 }
 

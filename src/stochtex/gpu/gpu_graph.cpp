@@ -18,16 +18,15 @@ namespace {
 
 std::string slot(int k) { return "v" + std::to_string(k); }
 
-// A pair's uv (and Jacobian columns) through its transform of uv, written
-// out with the transform's numbers: "uv" itself when it is the identity.
+// A pair's uv (and Jacobian columns) through its transform of uv: the
+// kernel's transformUv / transformVector (kernel/camera.glsl, which
+// UvTransform calls on the CPU) with the transform's numbers; "uv" itself
+// when it is the identity.
 std::string pairUv(const UvTransform& t, const std::string& v, bool withOffset) {
     if (t.identity()) return v;
-    const auto f = [](double x) { return glslFloat(float(x)); };
-    std::string s = "vec2(" + f(t.m[0]) + " * " + v + ".x + " + f(t.m[1]) + " * " + v + ".y";
-    if (withOffset) s += " + " + f(t.t[0]);
-    s += ", " + f(t.m[2]) + " * " + v + ".x + " + f(t.m[3]) + " * " + v + ".y";
-    if (withOffset) s += " + " + f(t.t[1]);
-    return s + ")";
+    const auto f = [](double x, double y) { return "vec2(" + glslFloat(float(x)) + ", " + glslFloat(float(y)) + ")"; };
+    return (withOffset ? "transformUv(" : "transformVector(") + v + ", " + f(t.m[0], t.m[1]) + ", " + f(t.m[2], t.m[3]) +
+           (withOffset ? ", " + f(t.t[0], t.t[1]) : std::string()) + ")";
 }
 
 // Texture units: a fragment shader has at least 16.
@@ -41,7 +40,13 @@ namespace {
 // graph: OpContext, and the table lookups over the graph's samplers by the
 // op's table index (a constant in each call, so the branches fold away).
 void writeOpHost(std::ostringstream& o, const GraphPattern& graph) {
-    o << "\nstruct OpContext {\n    int table;\n    vec3 eye;\n    vec4 light;\n    float slopeCov;\n};\n";
+    // Each op's kernel file (with ops/op_host.glsl, which declares OpContext
+    // and these two lookups) is assembled before this chunk.
+    std::vector<std::string> stems;
+    for (const GraphPattern::Operation& op : graph.operations())
+        if (std::find(stems.begin(), stems.end(), opKernelStem(op.params)) == stems.end())
+            stems.emplace_back(opKernelStem(op.params));
+    for (const std::string& stem : stems) o << "#include \"stochtex/pattern/ops/" << stem << ".glsl\"\n";
     for (const bool filtered : {false, true}) {
         o << (filtered ? "vec3 opPrefiltered(OpContext ctx, vec2 xy, vec2 sigma) {\n"
                        : "vec3 opTable(OpContext ctx, vec2 xy) {\n");
@@ -52,12 +57,6 @@ void writeOpHost(std::ostringstream& o, const GraphPattern& graph) {
               << ";\n";
         o << "    return vec3(0.0);\n}\n";
     }
-    // Each op's kernel file once.
-    std::vector<std::string> stems;
-    for (const GraphPattern::Operation& op : graph.operations())
-        if (std::find(stems.begin(), stems.end(), opKernelStem(op.params)) == stems.end())
-            stems.emplace_back(opKernelStem(op.params));
-    for (const std::string& stem : stems) o << "\n" << shaderText(stem);
 }
 
 // The operations after the leaves, on values (point) or on moments
@@ -89,7 +88,8 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
 std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) {
     std::ostringstream o;
     o << "// Generated for one texture graph (gpu/gpu_graph.cpp): the pattern's two colour\n"
-         "// functions, its leaves then its operations.\n";
+         "// functions, its leaves then its operations.\n"
+         "#include \"stochtex/kernel/camera.glsl\"\n";  // transformUv
     for (int k = 0; k < graph.leafCount(); ++k) {
         o << "uniform sampler2D uGraphExample" << k << ", uGraphStats" << k << ";  // leaf \""
           << graph.leafIds()[size_t(k)] << "\": example, (E, V) pyramid\n";

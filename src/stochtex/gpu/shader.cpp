@@ -17,15 +17,27 @@ namespace stochtex {
 
 extern const EmbeddedFile kEmbeddedShaders[];
 extern const std::size_t kEmbeddedShadersCount;
+extern const EmbeddedFile kEmbeddedShaderHeaders[];
+extern const std::size_t kEmbeddedShaderHeadersCount;
+
+namespace {
+
+std::map<std::string, std::string> embeddedTexts(const EmbeddedFile* files, std::size_t count) {
+    std::map<std::string, std::string> m;
+    for (std::size_t i = 0; i < count; ++i) m[files[i].name] = files[i].contents;
+    return m;
+}
+
+const std::map<std::string, std::string>& embeddedShaders() {
+    static const std::map<std::string, std::string> shaders = embeddedTexts(kEmbeddedShaders, kEmbeddedShadersCount);
+    return shaders;
+}
+
+}  // namespace
 
 const std::string& shaderSource(const std::string& stem) {
-    static const std::map<std::string, std::string> sources = [] {
-        std::map<std::string, std::string> m;
-        for (std::size_t i = 0; i < kEmbeddedShadersCount; ++i) m[kEmbeddedShaders[i].name] = kEmbeddedShaders[i].contents;
-        return m;
-    }();
-    const auto it = sources.find(stem);
-    if (it == sources.end()) throw std::invalid_argument("no embedded shader \"" + stem + "\"");
+    const auto it = embeddedShaders().find(stem);
+    if (it == embeddedShaders().end()) throw std::invalid_argument("no embedded shader \"" + stem + "\"");
     return it->second;
 }
 
@@ -47,36 +59,95 @@ std::string header(GlslTarget target) {
            "precision highp sampler2D;\nprecision highp sampler2DArray;\n";
 }
 
-// The kernel files (kernel/*.glsl) each chunk calls, in dependency order:
-// they are assembled before it, once each, so a recipe names only what it
-// uses directly.
-const std::map<std::string, std::vector<std::string>>& chunkNeeds() {
-    static const std::map<std::string, std::vector<std::string>> needs = {
-        {"grid", {"hash"}},
-        {"marble", {"hash"}},
-        {"common", {"hash", "grid", "lookup", "pattern_params"}},
-        {"filtering", {"footprint", "moments"}},
-        {"pattern_filtering", {"filtering"}},
-        {"response_prefiltered_colormap", {"sigma_levels"}},
-        {"response_lean", {"lean"}},
-        {"graph_ops", {"lean"}},
-        {"view", {"camera"}},
-        {"display", {"colour"}},
-    };
+// A line `#include "path"`: GLSL has no includes, so the line names a file
+// this one needs (its stem: "stochtex/kernel/grid.h" and "grid.glsl" both
+// name the kernel file grid), and the assembler puts that file first.
+std::string includedStem(std::string_view line) {
+    constexpr std::string_view kInclude = "#include \"";
+    if (!line.starts_with(kInclude)) return {};
+    line.remove_prefix(kInclude.size());
+    const std::size_t close = line.find('"');
+    if (close == std::string_view::npos) return {};
+    std::string_view path = line.substr(0, close);
+    if (const std::size_t slash = path.rfind('/'); slash != std::string_view::npos) path.remove_prefix(slash + 1);
+    return std::string(path.substr(0, path.find('.')));
+}
+
+std::vector<std::string> includedStems(const std::string& text) {
+    std::vector<std::string> stems;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string::npos) end = text.size();
+        if (std::string stem = includedStem(std::string_view(text).substr(pos, end - pos)); !stem.empty())
+            stems.push_back(std::move(stem));
+        pos = end + 1;
+    }
+    return stems;
+}
+
+// The C++ header of a kernel file (kernel/*.h, pattern/ops/*.h), or null.
+const std::string* kernelHeader(const std::string& stem) {
+    static const std::map<std::string, std::string> headers =
+        embeddedTexts(kEmbeddedShaderHeaders, kEmbeddedShaderHeadersCount);
+    const auto it = headers.find(stem);
+    return it == headers.end() ? nullptr : &it->second;
+}
+
+bool isShader(const std::string& stem) { return embeddedShaders().count(stem) != 0; }
+
+using Overrides = std::vector<std::pair<std::string, std::string>>;
+
+const std::string* overrideText(const std::string& stem, const Overrides& overrides) {
+    const auto own = std::find_if(overrides.begin(), overrides.end(), [&](const auto& o) { return o.first == stem; });
+    return own != overrides.end() ? &own->second : nullptr;
+}
+
+const std::string& chunkText(const std::string& stem, const Overrides& overrides) {
+    const std::string* own = overrideText(stem, overrides);
+    return own ? *own : shaderSource(stem);
+}
+
+// The files `stem` needs, from its own `#include` lines (GLSL-only chunks,
+// generated text) and from its C++ header's includes (a kernel file's are
+// in its .h, which includes it inside the kernel's namespace): an included
+// header that is a kernel file's is that file; one without a kernel file
+// (kernel/glsl.h, ops/op_host.h's C++ side) stands for what it includes in
+// turn. Includes of anything else (a system header) are not GLSL's concern.
+void addNeeds(const std::string& text, const std::string& self, const Overrides& overrides,
+              std::vector<std::string>& needs, std::vector<std::string>& seen) {
+    for (const std::string& inc : includedStems(text)) {
+        if (inc == self || std::find(seen.begin(), seen.end(), inc) != seen.end()) continue;
+        seen.push_back(inc);
+        if (isShader(inc) || overrideText(inc, overrides)) needs.push_back(inc);
+        else if (const std::string* header = kernelHeader(inc)) addNeeds(*header, self, overrides, needs, seen);
+    }
+}
+
+std::vector<std::string> chunkNeeds(const std::string& stem, const Overrides& overrides) {
+    std::vector<std::string> needs, seen;
+    // A file not given yet (a recipe's generated chunk, listed without its
+    // text) needs nothing that can be known; assembling it will ask for it.
+    if (isShader(stem) || overrideText(stem, overrides)) addNeeds(chunkText(stem, overrides), stem, overrides, needs, seen);
+    if (const std::string* header = kernelHeader(stem)) addNeeds(*header, stem, overrides, needs, seen);
     return needs;
 }
 
-void expandChunk(const std::string& stem, std::vector<std::string>& out) {
+void expandChunk(const std::string& stem, const Overrides& overrides, std::vector<std::string>& out,
+                 std::vector<std::string>& open) {
     if (std::find(out.begin(), out.end(), stem) != out.end()) return;
-    const auto it = chunkNeeds().find(stem);
-    if (it != chunkNeeds().end())
-        for (const auto& dep : it->second) expandChunk(dep, out);
+    if (std::find(open.begin(), open.end(), stem) != open.end())
+        throw std::invalid_argument("shader files include each other in a cycle through \"" + stem + "\"");
+    open.push_back(stem);
+    for (const auto& dep : chunkNeeds(stem, overrides)) expandChunk(dep, overrides, out, open);
+    open.pop_back();
     out.push_back(stem);
 }
 
 // Kernel files mark each function `inline` for C++ (kernel/glsl.h); GLSL
-// has no such word, so it is dropped from the start of lines.
-std::string glslText(const std::string& text) {
+// has no such word, so it is dropped from the start of lines. An include
+// line becomes a comment (the file it names is already assembled before).
+std::string glslText(const std::string& text, const Overrides& overrides = {}) {
     std::string out;
     out.reserve(text.size());
     std::size_t pos = 0;
@@ -85,6 +156,8 @@ std::string glslText(const std::string& text) {
         end = end == std::string::npos ? text.size() : end + 1;
         std::string_view line(text.data() + pos, end - pos);
         if (line.starts_with("inline ")) line.remove_prefix(7);
+        if (const std::string stem = includedStem(line); isShader(stem) || kernelHeader(stem) || overrideText(stem, overrides))
+            out += "// ";
         out += line;
         pos = end;
     }
@@ -93,13 +166,16 @@ std::string glslText(const std::string& text) {
 
 }  // namespace
 
-std::vector<std::string> shaderChunks(const std::vector<std::string>& files) {
-    std::vector<std::string> out;
-    for (const auto& f : files) expandChunk(f, out);
+std::vector<std::string> shaderChunks(const std::vector<std::string>& files,
+                                      const std::vector<std::pair<std::string, std::string>>& overrides) {
+    std::vector<std::string> out, open;
+    for (const auto& f : files) expandChunk(f, overrides, out, open);
     return out;
 }
 
 std::string shaderText(const std::string& stem) { return glslText(shaderSource(stem)); }
+
+std::string generatedShaderText(const std::string& text) { return glslText(text); }
 
 namespace {
 
@@ -109,12 +185,11 @@ namespace {
 std::string assemble(GlslTarget target, const std::vector<std::string>& requested,
                      const std::vector<std::pair<std::string, std::string>>& overrides,
                      std::vector<int>* starts = nullptr, std::vector<std::string>* expanded = nullptr) {
-    const std::vector<std::string> files = shaderChunks(requested);
+    const std::vector<std::string> files = shaderChunks(requested, overrides);
     std::string out = header(target);
     for (const auto& f : files) {
         // An override replaces an embedded file or adds one of the caller's.
-        const auto own = std::find_if(overrides.begin(), overrides.end(), [&](const auto& o) { return o.first == f; });
-        const std::string text = own != overrides.end() ? own->second : shaderText(f);
+        const std::string text = glslText(chunkText(f, overrides), overrides);
         if (starts) starts->push_back(int(std::count(out.begin(), out.end(), '\n')) + 1);
         out += text;
         if (out.back() != '\n') out += '\n';

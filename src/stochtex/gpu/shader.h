@@ -22,11 +22,19 @@ public:
 const std::string& shaderSource(const std::string& stem);
 std::vector<std::string> shaderNames();
 
-// The files with the kernel files (kernel/*.glsl) they need put before
-// them, once each, in dependency order.
-std::vector<std::string> shaderChunks(const std::vector<std::string>& files);
-// A file's text as GLSL (kernel files lose their C++ `inline` marks).
+// The files with the files they need put before them, once each, in
+// dependency order. What a file needs is read from the file itself: its
+// `#include "…"` lines (GLSL-only chunks, and generated text passed in
+// `overrides`), and for a kernel file (kernel/*.glsl, pattern/ops/*.glsl)
+// the includes of its C++ header, which are what the C++ side compiles
+// against too. A cycle is std::invalid_argument.
+std::vector<std::string> shaderChunks(const std::vector<std::string>& files,
+                                      const std::vector<std::pair<std::string, std::string>>& overrides = {});
+// A file's text as GLSL: kernel files lose their C++ `inline` marks and
+// include lines become comments (their files are assembled before).
 std::string shaderText(const std::string& stem);
+// The same for text that is not embedded (generated chunks).
+std::string generatedShaderText(const std::string& text);
 
 // A user's GLSL file, as (path, text) to pass in `overrides` with its path
 // among the stems: its compile errors then read "path:line". InputError if

@@ -11,7 +11,8 @@
 // k·(d_x, d_y) texels from the point below the view's centre. Differentiating
 // (∂n_x/∂p_x = T/h₂, ∂n_y/∂p_y = −T/h₂, s·d_y − c·q = −1):
 //     ∂texel/∂p_x = scale·(1/q, 0),  ∂texel/∂p_y = scale·(−n_x s/q², 1/q²).
-// Callers add the view's offset in their own precision (the CPU in double).
+// The view's offset is added in the host's coordinate precision
+// (kernel/coords.h: double on the CPU): planeCentreTexel, below.
 
 // q at or below this: the ray misses the ground (sky).
 const float kHorizonSlack = 1e-9f;
@@ -56,4 +57,27 @@ inline vec3 planeViewDirection(vec2 p, vec2 viewSize, float tanHalfFov, float si
     vec3 d = vec3(n.x, -sinTilt - n.y * cosTilt, -cosTilt + n.y * sinTilt);
     float len = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
     return vec3(-d.x / len, -d.y / len, -d.z / len);
+}
+
+// The zoom view (and every unfiltered render): pixel centre p (pixel index
+// + ½) covers texels offset + p·scale, i.e. uv = (offset + p·scale)/W, in
+// the host's coordinate precision (kernel/coords.h).
+inline coord2 zoomUv(coord2 p, coord2 offset, coord scale, coord invExampleSize) {
+    return (offset + p * scale) * invExampleSize;
+}
+
+// The plane view's texels are planeRay's, from the ground point below the
+// view's centre: offset + (view size / 2)·scale.
+inline coord2 planeCentreTexel(coord2 viewSize, coord2 offset, coord scale) {
+    return offset + coord(0.5f) * viewSize * scale;
+}
+
+// A texture graph's transform of uv (a transform node, composed): the
+// matrix rows (m0, m1) and (m2, m3), then the translation; Jacobian
+// columns take the linear part alone (transformVector).
+inline coord2 transformUv(coord2 uv, coord2 row0, coord2 row1, coord2 t) {
+    return coord2(row0.x * uv.x + row0.y * uv.y + t.x, row1.x * uv.x + row1.y * uv.y + t.y);
+}
+inline coord2 transformVector(coord2 v, coord2 row0, coord2 row1) {
+    return coord2(row0.x * v.x + row0.y * v.y, row1.x * v.x + row1.y * v.y);
 }

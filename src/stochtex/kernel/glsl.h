@@ -11,7 +11,10 @@
 //   * no swizzles (glm has none without extensions), no `out`/`inout`
 //     parameters (return a struct), no implicit int↔float conversions;
 //   * no preprocessor lines: the C++ wrapper header includes the kernel
-//     files a file needs, the assembler's chunk table does the same for GLSL;
+//     files a file needs, and the shader assembler reads those includes to
+//     put the same files first in GLSL (gpu/shader.cpp, shaderChunks);
+//   * texture coordinates that the CPU needs in double are `coord` /
+//     `coord2` (kernel/coords.h), float in GLSL;
 //   * sums are written out term by term (dot() may associate differently
 //     on a GPU).
 // Only the names below are visible to kernel code, so nothing of

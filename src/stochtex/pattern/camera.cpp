@@ -28,8 +28,10 @@ bool Camera::planeFootprint(int px, int py, int exampleSize, double& u, double& 
         float(view.scale), float(std::tan(0.5 * fovDeg * std::numbers::pi / 180.0)), float(std::sin(t)),
         float(std::cos(t)));
     if (r.sky) return false;
-    const double tu = view.offsetU + 0.5 * view.width * view.scale + double(r.texels.x);
-    const double tv = view.offsetV + 0.5 * view.height * view.scale + double(r.texels.y);
+    const kernel::coord2 centre = kernel::planeCentreTexel(kernel::coord2(view.width, view.height),
+                                                           kernel::coord2(view.offsetU, view.offsetV), view.scale);
+    const double tu = centre.x + double(r.texels.x);
+    const double tv = centre.y + double(r.texels.y);
     if (!std::isfinite(tu) || !std::isfinite(tv) || std::abs(tu) > 1e12 || std::abs(tv) > 1e12) return false;
     const double invW = 1.0 / exampleSize;
     u = tu * invW;

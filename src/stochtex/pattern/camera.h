@@ -31,8 +31,9 @@ struct Camera {
     bool footprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const {
         if (kind == Kind::Plane) return planeFootprint(px, py, exampleSize, u, v, j);
         const double invW = 1.0 / exampleSize;  // inline: the zoom runs once per pixel of every render
-        u = (view.offsetU + (px + 0.5) * view.scale) * invW;
-        v = (view.offsetV + (py + 0.5) * view.scale) * invW;
+        const std::array<double, 2> uv = pixelUv(view, invW, px, py);
+        u = uv[0];
+        v = uv[1];
         j = Jacobian{view.scale * invW, 0.0, 0.0, view.scale * invW};
         return true;
     }

@@ -279,12 +279,12 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
         view.height,
         [&](int y0, int y1) {
             for (int py = y0; py < y1; ++py) {
-                const double v = (view.offsetV + (py + 0.5) * view.scale) * invW;
+                const double v = pixelUv(view, invW, 0, py)[1];
                 const TriangleGridRow grid(v, gridDensity());
                 const float fv = periodFraction(v);
                 float* row = out.row(py);
                 for (int px = 0; px < view.width; ++px) {
-                    const double u = (view.offsetU + (px + 0.5) * view.scale) * invW;
+                    const double u = pixelUv(view, invW, px, py)[0];
                     Rgb c = untransformed_ ? evaluate(grid.stencil(u), periodFraction(u), fv, lastSlot, kFromAbove)
                                            : evaluate(u, v, lastSlot, kFromAbove);
                     if (gray) c[0] = c[1] = c[2] = std::clamp(c[0], 0.0f, 1.0f);

@@ -96,11 +96,11 @@ void Pattern::forEachPixel(const View& view, PixelFn&& fn) const {
         PixelTiles tiles;
         for (int py = y0; py < y1; ++py) {
             bool valid = false;
-            const double v = (view.offsetV + (py + 0.5) * view.scale) * invW;
+            const double v = pixelUv(view, invW, 0, py)[1];
             const float fv = periodFraction(v);
             const TriangleGridRow grid(v, gridDensity());
             for (int px = 0; px < view.width; ++px) {
-                const double u = (view.offsetU + (px + 0.5) * view.scale) * invW;
+                const double u = pixelUv(view, invW, px, py)[0];
                 const BlendStencil s = grid.stencil(u);
                 if (!valid || !sameTiles(s, tiles.stencil)) {
                     tiles.tiles[0] = nx.tileRows(s, fv);

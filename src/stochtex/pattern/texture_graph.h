@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "stochtex/kernel/camera.h"
 #include "stochtex/noise/example.h"
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/node_info.h"
@@ -52,9 +53,19 @@ struct UvTransform {
     std::array<double, 2> t{0, 0};
     bool identity() const { return m == std::array<double, 4>{1, 0, 0, 1} && t == std::array<double, 2>{0, 0}; }
     bool operator==(const UvTransform&) const = default;
-    std::array<double, 2> apply(double u, double v) const { return {m[0] * u + m[1] * v + t[0], m[2] * u + m[3] * v + t[1]}; }
+    // The kernel's transformUv / transformVector (kernel/camera.glsl), which
+    // the GPU program calls with these numbers.
+    std::array<double, 2> apply(double u, double v) const {
+        const kernel::coord2 r = kernel::transformUv(kernel::coord2(u, v), kernel::coord2(m[0], m[1]),
+                                                     kernel::coord2(m[2], m[3]), kernel::coord2(t[0], t[1]));
+        return {r.x, r.y};
+    }
     // The linear part on a vector (a Jacobian column).
-    std::array<double, 2> linear(double u, double v) const { return {m[0] * u + m[1] * v, m[2] * u + m[3] * v}; }
+    std::array<double, 2> linear(double u, double v) const {
+        const kernel::coord2 r =
+            kernel::transformVector(kernel::coord2(u, v), kernel::coord2(m[0], m[1]), kernel::coord2(m[2], m[3]));
+        return {r.x, r.y};
+    }
 };
 // The transform of a linear field node. InputError naming the node where a
 // derivative reads a transformed field (put the transform after it) or a

@@ -4,18 +4,30 @@
 // unit, below the pattern file's parser and every evaluator, so both can
 // speak of a view without including each other.
 
+#include <array>
+
+#include "stochtex/kernel/camera.h"
+
 namespace stochtex {
 
 constexpr int kMaxOutputSide = 16384;
 constexpr long long kMaxOutputPixels = 8192LL * 8192LL;
 
 // Maps output pixels to texture space: pixel (px, py) covers example texels
-// offset + (p + ½)·scale, i.e. uv = (offset + (p + ½)·scale) / W.
+// offset + (p + ½)·scale, i.e. uv = (offset + (p + ½)·scale) / W (pixelUv).
 struct View {
     int width = 512, height = 512;
     double scale = 1.0;              // example texels per output pixel
     double offsetU = 0, offsetV = 0;  // in example texels
 };
+
+// uv of the centre of pixel (px, py), invW = 1/W: the kernel's zoomUv
+// (kernel/camera.glsl), the mapping the shaders use, in double.
+inline std::array<double, 2> pixelUv(const View& view, double invW, int px, int py) {
+    const kernel::coord2 uv = kernel::zoomUv(kernel::coord2(px + 0.5, py + 0.5),
+                                             kernel::coord2(view.offsetU, view.offsetV), view.scale, invW);
+    return {uv.x, uv.y};
+}
 
 // Checks a view against the output caps; InputError::parameter naming size,
 // scale or offset otherwise.

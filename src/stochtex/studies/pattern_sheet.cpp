@@ -19,8 +19,8 @@ Image colormapUsage(const Pattern& pattern, const View& view, int size) {
     const double invW = 1.0 / pattern.exampleSize();
     for (int py = 0; py < view.height; ++py)
         for (int px = 0; px < view.width; ++px) {
-            const auto n = pattern.field((view.offsetU + (px + 0.5) * view.scale) * invW,
-                                         (view.offsetV + (py + 0.5) * view.scale) * invW);
+            const auto [u, v] = pixelUv(view, invW, px, py);
+            const auto n = pattern.field(u, v);
             const int i = std::clamp(int(n[0] * size), 0, size - 1);
             const int j = std::clamp(int((1.0f - n[1]) * size), 0, size - 1);
             hist[size_t(j) * size_t(size) + size_t(i)] += 1.0;

@@ -125,9 +125,9 @@ Image PhasorNoiseSource::render(const SourceRegion& region, double, int instance
     Image out(region.width, region.height, 3, Image::Uninitialized{});
     parallelRows(region.height, [&](int y0, int y1) {
         for (int py = y0; py < y1; ++py) {
-            const double v = (view.offsetV + (py + 0.5) * view.scale) * invW;
             for (int px = 0; px < region.width; ++px) {
-                const double phase = noise.phase((view.offsetU + (px + 0.5) * view.scale) * invW, v);
+                const auto [u, v] = pixelUv(view, invW, px, py);
+                const double phase = noise.phase(u, v);
                 const Rgb c = colormap_.sample(float(0.5 + 0.25 * std::cos(phase)), float(0.5 + 0.25 * std::sin(phase)));
                 for (int k = 0; k < 3; ++k) out.at(px, py, k) = c[size_t(k)];
             }

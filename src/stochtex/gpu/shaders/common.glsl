@@ -3,6 +3,9 @@
 // offsets and the lookups' addressing and blends are the kernel's
 // (kernel/hash.glsl, grid.glsl, lookup.glsl: the same source the CPU
 // compiles); this file only fetches the texels.
+#include "stochtex/kernel/grid.glsl"
+#include "stochtex/kernel/lookup.glsl"
+#include "stochtex/kernel/pattern_params.glsl"
 
 // The unit directions from the shaded point towards the eye and the light
 // in the texture frame (x along u, y along v, z up), read by responses that

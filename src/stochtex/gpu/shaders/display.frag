@@ -4,6 +4,7 @@
 // row 0 in GL row 0 (as `render` reads it back), while the window shows GL
 // row 0 at the bottom: such a texture is turned over (uTurnOver) and gets
 // the sRGB codes a PNG of `render` holds (uEncode, kernel/colour.glsl).
+#include "stochtex/kernel/colour.glsl"
 uniform sampler2D uImage;
 uniform ivec4 uRect;  // x, y (GL window coordinates, bottom left), width, height
 uniform bool uTurnOver;

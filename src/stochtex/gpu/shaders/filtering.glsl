@@ -6,6 +6,8 @@
 // moments.glsl), which filter/ and pattern/ call on the CPU. The pattern's
 // pair is pattern_filtering.glsl's; a texture graph's pairs are its
 // generated chunk's (gpu/gpu_graph.cpp).
+#include "stochtex/kernel/footprint.glsl"
+#include "stochtex/kernel/moments.glsl"
 
 // One pair of tiled noises whose statistics are estimated together: the
 // pattern's (N_x, N_y), read from uPattern by patternPair(), or a pair of a

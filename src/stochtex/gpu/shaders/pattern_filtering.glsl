@@ -1,6 +1,7 @@
 // The filtered pattern Ŝ = H̄(μ̂, σ̂) (paper §4–5): the statistics of the
 // pattern's pair (N_x, N_y) over a footprint (filtering.glsl) and a response
 // chunk that turns them into the colour (footprintResponse).
+#include "stochtex/gpu/shaders/filtering.glsl"
 uniform sampler2D uStatsX, uStatsY, uCovariance;  // RG32F mip levels: (E_l, V_l) / (E_l, C_l)
 
 NoisePair patternPair() {

@@ -4,6 +4,7 @@
 // statistics are those of the slope pair (GpuPattern uploads its pyramids).
 // Without uLeanCovariance (the "no covariance" variant) ĉov is 0, as on the
 // CPU; uPattern.hasCovariance is then 0 too, so C_l is not fetched.
+#include "stochtex/kernel/lean.glsl"
 uniform vec3 uLeanLight;    // unit, towards the light (texture frame; the scene's own: gLightDirection)
 uniform vec4 uLeanView;     // xyz: a fixed unit direction to the eye; w = 0: the camera's (gEyeDirection)
 uniform vec3 uLeanAlbedo;   // linear

@@ -4,6 +4,7 @@
 // (kernel/sigma_levels.glsl); an axis-aligned Gaussian, so the covariance
 // is not read (Response::needsCovariance() is false, so is
 // uPattern.hasCovariance).
+#include "stochtex/kernel/sigma_levels.glsl"
 uniform sampler2DArray uTable;  // RGB32F, layer kx·levels + ky
 
 vec3 tableLayer(sampler2DArray table, int kx, int ky, vec2 mu) {

@@ -1,7 +1,9 @@
-// The camera (pattern/camera.cpp): pixel centre → uv in example periods.
+// The camera (pattern/camera.cpp): pixel centre → uv in example periods,
+// by the kernel's functions (kernel/camera.glsl), as on the CPU.
 // Zoom: uv = (offset + p·scale)/W. Plane: the ground point seen through p by
 // a pinhole camera tilted by uTilt from looking straight down; `sky` when
 // the ray misses the plane.
+#include "stochtex/kernel/camera.glsl"
 uniform vec2 uOffset;        // texels
 uniform float uScale;        // texels per pixel (at the centre, tilt 0, for the plane)
 uniform bool uPlane;
@@ -19,12 +21,12 @@ vec2 viewUv(vec2 p, out vec2 jx, out vec2 jy, out bool sky) {
     if (!uPlane) {
         jx = vec2(a, 0.0);
         jy = vec2(0.0, a);
-        return (uOffset + p * uScale) * uPattern.invExampleSize;
+        return zoomUv(p, uOffset, uScale, uPattern.invExampleSize);
     }
     PlaneRay r = planeRay(p, uViewSize, uScale, uTanHalfFov, uSinTilt, uCosTilt);
     gEyeDirection = planeViewDirection(p, uViewSize, uTanHalfFov, uSinTilt, uCosTilt);
     sky = r.sky;
     jx = r.jx * uPattern.invExampleSize;
     jy = r.jy * uPattern.invExampleSize;
-    return (uOffset + 0.5 * uViewSize * uScale + r.texels) * uPattern.invExampleSize;
+    return (planeCentreTexel(uViewSize, uOffset, uScale) + r.texels) * uPattern.invExampleSize;
 }

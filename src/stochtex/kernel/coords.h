@@ -1,0 +1,15 @@
+#pragma once
+// Texture coordinates in the host's precision: double on the CPU, where an
+// offset may be 1e9 texels and a pixel's uv must still resolve a texel, and
+// float on the GPU (kernel/coords.glsl), which has no double in GLSL ES.
+// Kernel functions that place pixels in texture space (kernel/camera.glsl:
+// the zoom mapping, the plane's centre, a graph's uv transform) are written
+// once over these names and run at each host's precision.
+#include <glm/vec2.hpp>
+
+namespace stochtex::kernel {
+
+using coord = double;
+using coord2 = glm::dvec2;
+
+}  // namespace stochtex::kernel
