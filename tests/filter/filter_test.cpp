@@ -61,27 +61,27 @@ TEST(Footprint, IsotropicAndAnisotropicProbesFollowTheOpenGlRule) {
     j.dudx = 32.0 / 256;  // 32 texels along x
     j.dvdy = 4.0 / 256;   // 4 texels along y
     const Footprint iso = makeFootprint(0.5, 0.5, j, 256, 8, 1);
-    ASSERT_EQ(iso.count, 1);
-    EXPECT_FLOAT_EQ(iso.probes[0].lod, 5.0f);
+    ASSERT_EQ(iso.count(), 1);
+    EXPECT_FLOAT_EQ(iso.probe(0).lod, 5.0f);
     const Footprint a16 = makeFootprint(0.5, 0.5, j, 256, 8, 16);
-    ASSERT_EQ(a16.count, 8);
-    EXPECT_FLOAT_EQ(a16.probes[0].lod, 2.0f);  // log2(32 / 8)
+    ASSERT_EQ(a16.count(), 8);
+    EXPECT_FLOAT_EQ(a16.probe(0).lod, 2.0f);  // log2(32 / 8)
     double su = 0;
-    for (int k = 0; k < a16.count; ++k) {
-        EXPECT_DOUBLE_EQ(a16.probes[size_t(k)].v, 0.5);
-        EXPECT_FLOAT_EQ(a16.probes[size_t(k)].weight, 1.0f / 8);
-        su += a16.probes[size_t(k)].u;
+    for (int k = 0; k < a16.count(); ++k) {
+        EXPECT_DOUBLE_EQ(a16.probe(k).v, 0.5);
+        EXPECT_FLOAT_EQ(a16.probe(k).weight, 1.0f / 8);
+        su += a16.probe(k).u;
     }
     EXPECT_NEAR(su / 8, 0.5, 1e-12);
-    EXPECT_NEAR(a16.probes[7].u - a16.probes[0].u, j.dudx * 7.0 / 8.0, 1e-12);
+    EXPECT_NEAR(a16.probe(7).u - a16.probe(0).u, j.dudx * 7.0 / 8.0, 1e-12);
     const Footprint a4 = makeFootprint(0.5, 0.5, j, 256, 8, 4);
-    ASSERT_EQ(a4.count, 4);
-    EXPECT_FLOAT_EQ(a4.probes[0].lod, 3.0f);  // log2(32 / 4)
+    ASSERT_EQ(a4.count(), 4);
+    EXPECT_FLOAT_EQ(a4.probe(0).lod, 3.0f);  // log2(32 / 4)
     // Magnification clamps to level 0; huge footprints to the top level.
     j.dudx = j.dvdy = 0.1 / 256;
-    EXPECT_FLOAT_EQ(makeFootprint(0, 0, j, 256, 8, 1).probes[0].lod, 0.0f);
+    EXPECT_FLOAT_EQ(makeFootprint(0, 0, j, 256, 8, 1).probe(0).lod, 0.0f);
     j.dudx = j.dvdy = 10.0;
-    EXPECT_FLOAT_EQ(makeFootprint(0, 0, j, 256, 8, 1).probes[0].lod, 8.0f);
+    EXPECT_FLOAT_EQ(makeFootprint(0, 0, j, 256, 8, 1).probe(0).lod, 8.0f);
 }
 
 TEST(FootprintEstimator, LevelZeroTexelIsTheUnfilteredNoise) {

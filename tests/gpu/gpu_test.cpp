@@ -654,7 +654,9 @@ TEST(Gpu, ShaderFilesNeedWhatTheirIncludesName) {
     EXPECT_EQ(order({"grid"}), (std::vector<std::string>{"hash", "grid"}));
     EXPECT_EQ(order({"camera"}), (std::vector<std::string>{"coords", "camera"}));
     EXPECT_EQ(order({"lean_op"}), (std::vector<std::string>{"lean", "graph_ops", "op_host", "lean_op"}));
-    EXPECT_EQ(order({"pattern_filtering"}), (std::vector<std::string>{"footprint", "moments", "filtering", "pattern_filtering"}));
+    // The host's declarations (filtering) before the kernel's loop that calls them (estimate).
+    EXPECT_EQ(order({"pattern_filtering"}), (std::vector<std::string>{"coords", "footprint", "moments", "texel_stats",
+                                                                       "filtering", "estimate", "pattern_filtering"}));
     const std::string generated = "// one op\n#include \"stochtex/pattern/ops/square_op.glsl\"\nvec3 f() { return vec3(0.0); }\n";
     EXPECT_EQ(order({"made"}, {{"made", generated}}),
               (std::vector<std::string>{"graph_ops", "op_host", "square_op", "made"}));

@@ -16,18 +16,11 @@ Footprint makeFootprint(double u, double v, const Jacobian& j, int exampleSize, 
         !std::isfinite(j.dudy) || !std::isfinite(j.dvdy))
         throw InputError("footprint: non-finite position or Jacobian");
     // The probe layout is the kernel's (kernel/footprint.glsl), as in the
-    // shaders; positions stay in double (uv may be far from the origin).
+    // shaders; the centre stays in double (uv may be far from the origin).
     const kernel::ProbeLayout layout =
         kernel::probeLayout(kernel::vec2(float(j.dudx), float(j.dvdx)), kernel::vec2(float(j.dudy), float(j.dvdy)),
                             float(exampleSize), maxAniso, maxLod);
-    Footprint f;
-    f.count = layout.count;
-    for (int k = 0; k < layout.count; ++k) {
-        const double t = kernel::probePosition(k, layout.count);
-        f.probes[size_t(k)] = Probe{u + t * double(layout.axis.x), v + t * double(layout.axis.y), layout.lod,
-                                    1.0f / float(layout.count)};
-    }
-    return f;
+    return Footprint{u, v, layout};
 }
 
 }  // namespace stochtex

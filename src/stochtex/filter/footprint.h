@@ -24,6 +24,7 @@ struct Jacobian {
     double dudy = 0, dvdy = 0;  // ∂uv/∂y
 };
 
+// One probe: where it sits, its level λ and its weight.
 struct Probe {
     double u, v;
     float lod;     // λ, clamped to [0, maxLod]
@@ -32,22 +33,23 @@ struct Probe {
 
 using kernel::kMaxAnisotropy;  // 16
 
+// A footprint: its centre and the kernel's probe layout (count, λ, major
+// axis), which places the probes (kernel/estimate.glsl reads it as the
+// shaders do).
 struct Footprint {
-    std::array<Probe, kMaxAnisotropy> probes;  // only the first `count` are set
-    int count = 0;
+    double u = 0, v = 0;
+    kernel::ProbeLayout layout{1, 0.0f, kernel::vec2(0.0f)};
 
+    int count() const { return layout.count; }
+    // Probe k (k < count()): at u + t_k·axis, t_k the kernel's probePosition.
+    Probe probe(int k) const {
+        const double t = kernel::probePosition(k, layout.count);
+        return Probe{u + t * double(layout.axis.x), v + t * double(layout.axis.y), layout.lod, 1.0f / float(layout.count)};
+    }
     // The same footprint centred elsewhere. Probes depend on the centre only
     // through a translation, so where J is constant (a zoom) the footprint is
     // built once and moved to every pixel.
-    Footprint translated(double du, double dv) const {
-        Footprint f;  // probes past `count` stay unset: copying all 16 would dominate
-        f.count = count;
-        for (int k = 0; k < count; ++k) {
-            const Probe& p = probes[std::size_t(k)];
-            f.probes[std::size_t(k)] = Probe{p.u + du, p.v + dv, p.lod, p.weight};
-        }
-        return f;
-    }
+    Footprint translated(double du, double dv) const { return Footprint{u + du, v + dv, layout}; }
 };
 
 // maxAniso in [1, 16]; exampleSize = W; maxLod = log2 W.

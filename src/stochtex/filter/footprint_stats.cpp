@@ -29,23 +29,38 @@ FootprintEstimator::FootprintEstimator(const TiledField& field, bool covariance,
             StatsPyramid::covariance(noises_[0].example().values(), noises_[1].example().values()));
 }
 
+namespace {
+
+// The kernel's texel source on the CPU (kernel/estimate.glsl): the
+// estimator's pyramids. Found by argument-dependent lookup from
+// kernel::footprintEstimate.
+struct EstimatorTexels {
+    const FootprintEstimator* estimator;
+};
+[[gnu::always_inline]] inline kernel::ProbeTexels probeTexels(EstimatorTexels s, kernel::coord2 uv,
+                                                              kernel::ProbeLevels levels) {
+    return s.estimator->probeTexels(uv, levels);
+}
+inline kernel::vec3 levelAverages(EstimatorTexels s, int level) { return s.estimator->levelAverages(level); }
+
+}  // namespace
+
 FootprintEstimator::TexelStats FootprintEstimator::texel(double u, double v, int level, VarianceEstimator mode) const {
-    TexelStats t;
-    texels(u, v, &level, 1, mode, &t);
+    kernel::ProbeLevels one{};
+    one.l0 = one.l1 = level;
+    one.w0 = 1.0f;
+    TexelStats t = probeTexels(kernel::coord2(u, v), one).lo;
+    if (mode == VarianceEstimator::DeliotHeitz) t = kernel::deliotHeitzTexel(t, levelAverages(level), bool(covariance_));
     return t;
 }
 
-FootprintStats FootprintEstimator::asFootprint(const TexelStats& t) {
-    FootprintStats out;
-    out.mean = t.mean;
-    out.varX = std::max(t.var[0], 0.0f);
-    out.varY = std::max(t.var[1], 0.0f);
-    out.cov = t.cov;
-    return out;
+kernel::vec3 FootprintEstimator::levelAverages(int level) const {
+    return kernel::vec3(pyramids_[0].averageMoment(level), pyramids_[1].averageMoment(level),
+                        covariance_ ? covariance_->averageMoment(level) : 0.0f);
 }
 
-void FootprintEstimator::texels(double u, double v, const int* levels, int count, VarianceEstimator mode,
-                                TexelStats* out) const {
+kernel::ProbeTexels FootprintEstimator::probeTexels(kernel::coord2 uv, const kernel::ProbeLevels& levels) const {
+    const double u = uv.x, v = uv.y;
     // Probes of neighbouring pixels often share v (a zoom's scanline): the
     // grid row and v's period fraction are then reused (pure memoisation).
     struct RowMemo {
@@ -70,10 +85,12 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
         std::array<TilingBlendingNoise::TileRows, 3> rows;  // noise x, noise y, covariance
     };
     thread_local std::array<Slot, 2> cache;
+    kernel::ProbeTexels out{};
+    const int count = levels.w1 > 0.0f ? 2 : 1;
     for (int k = 0; k < count; ++k) {
-        const int level = levels[k];
-        TexelStats& t = out[k];
-        Slot& slot = cache[size_t(std::min(k, 1))];
+        const int level = k == 0 ? levels.l0 : levels.l1;
+        TexelStats& t = k == 0 ? out.lo : out.hi;
+        Slot& slot = cache[size_t(k)];
         if (slot.owner != id_ || slot.level != level || slot.fv != fv || slot.cell != s.cell ||
             slot.upper != s.upper) {
             for (size_t a = 0; a < 2; ++a)
@@ -87,58 +104,31 @@ void FootprintEstimator::texels(double u, double v, const int* levels, int count
         }
         for (size_t a = 0; a < 2; ++a) {
             const TilingBlendingNoise& noise = noises_[a];
-            const StatsPyramid& pyr = pyramids_[a];
-            const BasicPeriodicGrid<2>& grid = pyr.level(level);
+            const BasicPeriodicGrid<2>& grid = pyramids_[a].level(level);
             // One lookup per tile reads E_l and V_l together.
             const auto e = noise.tileValues<2>(slot.rows[a], fu, grid);
-            // Eq. 8: the same blend as the unfiltered noise, on level l.
-            t.mean[a] = TilingBlendingNoise::mix<2>(s, e, noise.example().mean(), 0);
-            // Eq. 12: tiles assumed uncorrelated, weights constant over P.
-            t.var[a] = mode == VarianceEstimator::DeliotHeitz
-                           ? pyr.averageMoment(level)
-                           : kernel::blendVariance(s.w, TilingBlendingNoise::channel<2>(e, 1));
+            // Eq. 8: the same blend as the unfiltered noise, on level l;
+            // eq. 12: tiles assumed uncorrelated, weights constant over P.
+            t.mean[int(a)] = TilingBlendingNoise::mix<2>(s, e, noise.example().mean(), 0);
+            t.var[int(a)] = kernel::blendVariance(s.w, TilingBlendingNoise::channel<2>(e, 1));
         }
         t.cov = 0.0f;
         if (covariance_) {
-            if (mode == VarianceEstimator::DeliotHeitz) {
-                t.cov = covariance_->averageMoment(level);
-            } else {
-                const BasicPeriodicGrid<2>& grid = covariance_->level(level);
-                const auto c = noises_[0].tileValues<2>(slot.rows[2], fu, grid);
-                t.cov = kernel::blendVariance(s.w, TilingBlendingNoise::channel<2>(c, 1));  // eq. 17
-            }
+            const auto c = noises_[0].tileValues<2>(slot.rows[2], fu, covariance_->level(level));
+            t.cov = kernel::blendVariance(s.w, TilingBlendingNoise::channel<2>(c, 1));  // eq. 17
         }
     }
+    return out;
 }
 
-// flatten: inlining texels() and the lookups into the per-pixel call cuts
-// its instructions by ~12% (measured with callgrind).
+// flatten: inlining the texel fetches and the lookups into the per-pixel
+// call cuts its instructions by ~12% (measured with callgrind).
 __attribute__((flatten)) FootprintStats FootprintEstimator::estimate(const Footprint& f, VarianceEstimator mode) const {
-    const int top = maxLod();
-    // The probe levels, weights and sums are the kernel's (kernel/footprint.glsl,
-    // kernel/moments.glsl), as in the shaders.
-    const kernel::ProbeLevels first = kernel::probeLevels(f.probes[0].lod, top, f.count);
-    if (kernel::isSingleTexel(f.count, first.frac)) {
-        const Probe& p = f.probes[0];
-        return asFootprint(texel(p.u, p.v, first.l0, mode));
-    }
-    kernel::Moments sums{};
-    for (int k = 0; k < f.count; ++k) {
-        const Probe& p = f.probes[size_t(k)];
-        const kernel::ProbeLevels pl = kernel::probeLevels(p.lod, top, f.count);
-        const int levels[2] = {pl.l0, pl.l1};
-        const float weights[2] = {pl.w0, pl.w1};
-        TexelStats t[2];
-        const int used = pl.w1 > 0.0f ? 2 : 1;
-        texels(p.u, p.v, levels, used, mode, t);
-        for (int side = 0; side < used; ++side) {
-            const kernel::vec2 mean(t[side].mean[0], t[side].mean[1]);
-            if (k == 0 && side == 0) sums = kernel::momentsAbout(mean);
-            sums = kernel::momentsAdd(sums, weights[side], mean, kernel::vec2(t[side].var[0], t[side].var[1]),
-                                      t[side].cov);
-        }
-    }
-    const kernel::FootprintMoments r = kernel::momentsResult(sums);
+    // The loop, the Deliot–Heitz substitution and the single-texel rule are
+    // the kernel's (kernel/estimate.glsl), as in the shaders.
+    const kernel::FootprintMoments r =
+        kernel::footprintEstimate(EstimatorTexels{this}, kernel::coord2(f.u, f.v), f.layout, maxLod(),
+                                  mode == VarianceEstimator::DeliotHeitz, bool(covariance_));
     FootprintStats out;
     out.mean = {r.mean.x, r.mean.y};
     out.varX = r.var.x;

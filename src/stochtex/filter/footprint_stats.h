@@ -18,6 +18,7 @@
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint.h"
+#include "stochtex/kernel/estimate.h"
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/noise/tiled_field.h"
 
@@ -53,17 +54,15 @@ public:
     FootprintStats estimate(const Footprint& f, VarianceEstimator mode = VarianceEstimator::Paper) const;
 
     // Statistics of one texel footprint at an integer level (eq. 8, 12, 17).
-    struct TexelStats {
-        std::array<float, 2> mean, var;
-        float cov;
-    };
+    using TexelStats = kernel::TexelStats;
     TexelStats texel(double u, double v, int level, VarianceEstimator mode) const;
-    // One texel footprint as a footprint's statistics (eq. 14–15 reduce to
-    // the texel's own; variances clamped at 0).
-    static FootprintStats asFootprint(const TexelStats& t);
-    // The same at `count` levels of one probe position (stencil and tile
-    // offsets are shared: w_i is taken at the probe centre on every level).
-    void texels(double u, double v, const int* levels, int count, VarianceEstimator mode, TexelStats* out) const;
+    // The texel statistics of a probe at uv on levels.l0 and, when its
+    // weight is > 0, levels.l1 (the stencil and tile offsets are shared: w_i
+    // is taken at the probe centre on every level), with the paper's
+    // variances; the kernel's loop (kernel/estimate.glsl) calls it.
+    kernel::ProbeTexels probeTexels(kernel::coord2 uv, const kernel::ProbeLevels& levels) const;
+    // The level's average within-texel variances and covariance [DH19].
+    kernel::vec3 levelAverages(int level) const;
 
     size_t bytes() const;
 

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <sstream>
 
@@ -59,6 +60,44 @@ void writeOpHost(std::ostringstream& o, const GraphPattern& graph) {
     }
 }
 
+// Pair p's texel source (gpu/shaders/filtering.glsl) with its numbers.
+std::string pairSource(const GraphPattern& graph, int p, int maxLod) {
+    const TiledField& pair = graph.leafPairs()[size_t(p)];
+    return "TexelSource(" + std::to_string(p) + ", vec2(" + glslFloat(pair.channel(0).example().mean()) + ", " +
+           glslFloat(pair.channel(1).example().mean()) + "), uvec2(" + std::to_string(pair.channel(0).offsetSeed()) +
+           "u, " + std::to_string(pair.channel(1).offsetSeed()) + "u), " + (graph.pairCovariance(p) ? "1" : "0") + ", " +
+           std::to_string(maxLod) + ", " + glslFloat(float(pair.exampleSize())) + ")";
+}
+
+// The leaves pair p holds, as (channel x, channel y) (a leaf without a
+// partner fills both channels).
+std::array<int, 2> pairLeaves(const GraphPattern& graph, int p) {
+    std::array<int, 2> leaves{-1, -1};
+    for (int k = 0; k < graph.leafCount(); ++k)
+        if (graph.leafLocation(k)[0] == p) leaves[size_t(graph.leafLocation(k)[1])] = k;
+    if (leaves[1] < 0) leaves[1] = leaves[0];
+    return leaves;
+}
+
+// The texel source's two functions (kernel/estimate.glsl) over the graph's
+// pyramids: a branch per pair (a constant in each call, so they fold
+// away), then the kernel's loop. Deliot–Heitz is refused for graphs on the
+// GPU (graphRecipes), so no averages are read.
+void writeTexelSource(std::ostringstream& o, const GraphPattern& graph) {
+    o << "#include \"stochtex/kernel/estimate.glsl\"\n";
+    o << "ProbeTexels probeTexels(TexelSource s, vec2 uv, ProbeLevels levels) {\n";
+    const int pairs = int(graph.leafPairs().size());
+    for (int p = 0; p < pairs; ++p) {
+        const std::array<int, 2> leaves = pairLeaves(graph, p);
+        const std::string x = "uGraphStats" + std::to_string(leaves[0]), y = "uGraphStats" + std::to_string(leaves[1]);
+        const std::string cov = graph.pairCovariance(p) ? "uGraphCov" + std::to_string(p) : x;
+        o << "    " << (p + 1 < pairs ? "if (s.pair == " + std::to_string(p) + ") " : std::string()) << "return pairProbeTexels("
+          << x << ", " << y << ", " << cov << ", s, uv, levels);\n";
+    }
+    if (pairs == 0) o << "    TexelStats none = TexelStats(vec2(0.0), vec2(0.0), 0.0);\n    return ProbeTexels(none, none);\n";
+    o << "}\nvec3 levelAverages(TexelSource s, int level) { return vec3(0.0); }\n";
+}
+
 // The operations after the leaves, on values (point) or on moments
 // (filtered), in the CPU evaluator's order (pattern/graph_pattern.cpp): each
 // op's call with its context — its table, the camera's eye, the scene's
@@ -100,6 +139,7 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
     for (size_t p = 0; p < graph.leafPairs().size(); ++p)
         if (graph.pairCovariance(int(p))) o << "uniform sampler2D uGraphCov" << p << ";  // pair " << p << "'s C_l pyramid\n";
     writeOpHost(o, graph);
+    writeTexelSource(o, graph);
 
     o << "\nvec3 unfilteredColour(vec2 uv) {\n";
     // One stencil per pair's uv (pairs under one transform share it).
@@ -119,22 +159,14 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
     o << "\nvec3 filteredColour(vec2 uv, vec2 jx, vec2 jy) {\n";
     for (size_t p = 0; p < graph.leafPairs().size(); ++p) {
         const TiledField& pair = graph.leafPairs()[p];
-        // The leaves this pair holds (a leaf without a partner fills both channels).
-        int leaves[2] = {-1, -1};
-        for (int k = 0; k < graph.leafCount(); ++k)
-            if (graph.leafLocation(k)[0] == int(p)) leaves[graph.leafLocation(k)[1]] = k;
-        if (leaves[1] < 0) leaves[1] = leaves[0];
+        const std::array<int, 2> leaves = pairLeaves(graph, int(p));
         int maxLod = 0;
         while ((1 << maxLod) < pair.exampleSize()) ++maxLod;
         const bool covariance = graph.pairCovariance(int(p));
-        o << "    FootprintMoments p" << p << " = pairStatistics(uGraphStats" << leaves[0] << ", uGraphStats" << leaves[1]
-          << ", " << (covariance ? "uGraphCov" + std::to_string(p) : "uGraphStats" + std::to_string(leaves[0]))
-          << ", NoisePair(vec2(" << glslFloat(pair.channel(0).example().mean()) << ", "
-          << glslFloat(pair.channel(1).example().mean()) << "), uvec2(" << pair.channel(0).offsetSeed() << "u, "
-          << pair.channel(1).offsetSeed() << "u), " << (covariance ? 1 : 0) << ", 0, " << maxLod << ", " << glslFloat(float(pair.exampleSize()))
-          << "), " << pairUv(graph.pairTransform(int(p)), "uv", true) << ", "
-          << pairUv(graph.pairTransform(int(p)), "jx", false) << ", " << pairUv(graph.pairTransform(int(p)), "jy", false)
-          << ");\n";
+        o << "    FootprintMoments p" << p << " = jacobianEstimate(" << pairSource(graph, int(p), maxLod) << ", "
+          << pairUv(graph.pairTransform(int(p)), "uv", true) << ", " << pairUv(graph.pairTransform(int(p)), "jx", false)
+          << ", " << pairUv(graph.pairTransform(int(p)), "jy", false) << ", " << glslFloat(float(pair.exampleSize()))
+          << ", uPattern.aniso, " << maxLod << ", false, " << (covariance ? "true" : "false") << ");\n";
         for (int c = 0; c < 2; ++c)
             if (c == 0 || leaves[1] != leaves[0])
                 o << "    vec3 " << slot(leaves[c]) << " = vec3(p" << p << ".mean." << "xy"[c] << ", max(p" << p

@@ -3,3 +3,4 @@
 // assembler puts it before the files whose headers include coords.h).
 #define coord float
 #define coord2 vec2
+#define STOCHTEX_HOST_TYPE(T)

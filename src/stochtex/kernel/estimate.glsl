@@ -1,0 +1,67 @@
+// The footprint estimators' loop (paper §4): a footprint's probes, each
+// split between two pyramid levels (trilinear), their texel statistics
+// (eq. 8, 12, 17) summed by eq. 9, 14–15, 18–19, the Deliot–Heitz
+// substitution and the single-texel rule. Kernel file: GLSL and C++, see
+// kernel/glsl.h; written once over a texel source that each host provides:
+//
+//   struct TexelSource;                                   // the host's: what to read
+//   ProbeTexels probeTexels(TexelSource s, coord2 uv, ProbeLevels l);
+//       // the texel statistics of levels l.l0 and, when l.w1 > 0, l.l1 at uv
+//       // (eq. 8, 12, 17 with the stencil and tile offsets of the unfiltered noise)
+//   vec3 levelAverages(TexelSource s, int level);
+//       // the level's average within-texel variances and covariance [DH19]
+//
+// (TexelStats, ProbeTexels: kernel/texel_stats.glsl.) On the GPU the source
+// is a pair of tiled noises' pyramids (gpu/shaders/filtering.glsl declares
+// it and the two functions, before this file; the pattern's chunk and a
+// graph's generated chunk define them over their samplers); on
+// the CPU it is the FootprintEstimator's pyramids, with its memoised tile
+// lookups (filter/footprint_stats.cpp), and the loop is a template over it.
+
+// μ̂, σ̂², ĉov of the source over the footprint centred at uv with these
+// probes (kernel/footprint.glsl: probeLayout). One loop for every
+// footprint, a single texel included (its statistics are then taken as
+// they are, after the loop: a branch around it would make GPU lanes run
+// both paths).
+STOCHTEX_HOST_TYPE(TexelSource)
+inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayout probes, int maxLod,
+                                          bool deliotHeitz, bool hasCovariance) {
+    ProbeLevels levels = probeLevels(probes.lod, maxLod, probes.count);
+    vec3 averageLo = vec3(0.0f);
+    vec3 averageHi = vec3(0.0f);
+    if (deliotHeitz) {
+        averageLo = levelAverages(src, levels.l0);
+        averageHi = levelAverages(src, levels.l1);
+    }
+    Moments sums = momentsAbout(vec2(0.0f));
+    TexelStats first;
+    first.mean = vec2(0.0f);
+    first.var = vec2(0.0f);
+    first.cov = 0.0f;
+    for (int k = 0; k < probes.count; ++k) {
+        coord2 p = uv + coord(probePosition(k, probes.count)) * coord2(probes.axis);
+        ProbeTexels t = probeTexels(src, p, levels);
+        if (deliotHeitz) {
+            t.lo = deliotHeitzTexel(t.lo, averageLo, hasCovariance);
+            t.hi = deliotHeitzTexel(t.hi, averageHi, hasCovariance);
+        }
+        if (k == 0) {
+            sums = momentsAbout(t.lo.mean);
+            first = t.lo;
+        }
+        sums = momentsAdd(sums, levels.w0, t.lo.mean, t.lo.var, t.lo.cov);
+        if (levels.w1 > 0.0f) sums = momentsAdd(sums, levels.w1, t.hi.mean, t.hi.var, t.hi.cov);
+    }
+    if (isSingleTexel(probes.count, levels.frac)) return texelMoments(first);
+    return momentsResult(sums);
+}
+
+// The same for a pixel's Jacobian columns jx, jy (uv per pixel): the
+// kernel's probe layout with at most `aniso` probes for a W = `texels`
+// example (the CPU builds the layout once per zoom instead:
+// filter/footprint.cpp).
+STOCHTEX_HOST_TYPE(TexelSource)
+inline FootprintMoments jacobianEstimate(TexelSource src, coord2 uv, vec2 jx, vec2 jy, float texels, int aniso,
+                                         int maxLod, bool deliotHeitz, bool hasCovariance) {
+    return footprintEstimate(src, uv, probeLayout(jx, jy, texels, aniso, maxLod), maxLod, deliotHeitz, hasCovariance);
+}
