@@ -54,7 +54,7 @@ void registerBakeImage(CLI::App& app) {
         const auto start = std::chrono::steady_clock::now();
         ProgressLine progress("bake-image");
         progress.update(0.0, "building the pattern and its tables");
-        PatternRenderer renderer(spec, args->options, args->device);
+        const std::unique_ptr<ViewRenderer> renderer = makeRenderer(spec, args->options, args->device);
         const View& v = whole.view;
         const std::unique_ptr<ImageStreamWriter> out = openImageStream(args->output, v.width, v.height, 3, args->bits);
         for (int y0 = 0; y0 < v.height; y0 += args->band) {
@@ -64,7 +64,7 @@ void registerBakeImage(CLI::App& app) {
             const int y1 = y0 + band.view.height;
             const std::string rows =
                 "rows " + std::to_string(y0) + "–" + std::to_string(y1) + " of " + std::to_string(v.height);
-            out->writeRows(renderer.render(
+            out->writeRows(renderer->render(
                 band, progressPart(progress.callback(), double(y0) / v.height, double(y1) / v.height, rows)));
         }
         out->finish();

@@ -1,5 +1,7 @@
 #include "pattern_renderer.h"
 
+#include "stochtex/pattern/cpu_renderer.h"
+
 namespace stochtex::cli {
 
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHelp, bool withDerivatives) {
@@ -19,35 +21,11 @@ void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
     if (flags.gpu && !isGpuFilter(options)) throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
 }
 
-PatternRenderer::PatternRenderer(const PatternSpec& spec, const FilterOptions& options, const DeviceFlags& flags) {
+std::unique_ptr<ViewRenderer> makeRenderer(const PatternSpec& spec, const FilterOptions& options,
+                                           const DeviceFlags& flags) {
     checkDeviceFilter(flags, options);
-    const bool graph = needsGraphEvaluator(spec);
-    if (graph)
-        graph_ = std::make_unique<GraphPattern>(GraphPattern::build(spec));
-    else
-        pattern_ = std::make_unique<Pattern>(Pattern::build(spec));
-    if (!flags.gpu) {
-        if (graph)
-            cpuGraph_ = std::make_unique<FilteredGraph>(*graph_, options);
-        else
-            cpu_ = std::make_unique<FilteredPattern>(*pattern_, options);
-        return;
-    }
-    context_ = GlContext::headless();
-    device_ = context_->describe();
-    if (graph)
-        gpu_ = std::make_unique<GpuGraph>(*graph_, *context_, options);
-    else
-        gpu_ = std::make_unique<GpuPattern>(*pattern_, *context_, options);
-    gpu_->setDerivatives(flags.derivatives);
-    gpu_->setPipeline(flags.pipeline);
-}
-
-PatternRenderer::~PatternRenderer() = default;
-
-Image PatternRenderer::render(const Camera& camera, const Progress& progress) {
-    if (gpu_) return gpu_->render(camera);
-    return cpuGraph_ ? cpuGraph_->render(camera, progress) : cpu_->render(camera, progress);
+    if (!flags.gpu) return makeCpuRenderer(spec, options);
+    return makeGpuRenderer(spec, options, flags.pipeline, flags.derivatives);
 }
 
 }  // namespace stochtex::cli

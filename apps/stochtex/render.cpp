@@ -64,14 +64,14 @@ void registerRender(CLI::App& app) {
         checkDeviceFilter(args->device, args->options);  // before the pattern is built
         ProgressLine progress("render");
         progress.update(0.0, "building the pattern and its tables");
-        PatternRenderer renderer(spec, args->options, args->device);
-        const Image image = renderer.render(camera, progressPart(progress.callback(), 0.0, 1.0, "rendering"));
+        const std::unique_ptr<ViewRenderer> renderer = makeRenderer(spec, args->options, args->device);
+        const Image image = renderer->render(camera, progressPart(progress.callback(), 0.0, 1.0, "rendering"));
         progress.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image, WriteOptions{args->bits});
         std::printf("wrote %s (%dx%d, %s, %s view, filter %s, %s, %.2f s)\n", args->output.c_str(), camera.view.width,
                     camera.view.height, spec.name.c_str(), enumName(Camera::kKindNames, camera.kind).c_str(),
-                    filterName(args->options).c_str(), renderer.device().c_str(), seconds);
+                    filterName(args->options).c_str(), renderer->device().c_str(), seconds);
     });
 }
 

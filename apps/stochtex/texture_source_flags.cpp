@@ -6,6 +6,7 @@
 #include "marble_flags.h"
 #include "shadertoy_flags.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/cpu_renderer.h"
 #include "zoom_flags.h"
 
 namespace stochtex::cli {
@@ -67,9 +68,8 @@ void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
         const PatternSpec spec = loadPatternSource(p->source, p->options);
         Camera camera;
         camera.view = makeView(spec, p->view);
-        const Pattern built = Pattern::build(spec);
-        const FilteredPattern filtered(built, p->options);
-        const FilteredPatternSource source(filtered, built.exampleSize(), camera);
+        const std::unique_ptr<ViewRenderer> renderer = makeCpuRenderer(spec, p->options);
+        const CameraSource source(*renderer, camera);
         study(source, {spec.name + ", filter " + filterName(p->options), false, 0, 0, 0, Transfer::Srgb});
     });
 

@@ -20,6 +20,7 @@
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/cpu_renderer.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/json_reader.h"
@@ -107,7 +108,7 @@ TEST(Gpu, HeadlessContextIsCore33OrNewer) {
 
 // The workbench's correlation samples a pattern's instances through the GPU:
 // a CameraSource over a GpuView gives each instance (a window moved by a
-// hashed whole-texel offset) as FilteredPatternSource gives it on the CPU.
+// hashed whole-texel offset) as CameraSource over the CPU's FilteredPattern gives it.
 TEST(Gpu, CameraSourceOverTheGpuGivesTheCpuInstances) {
     const Pattern pattern = Pattern::build(loadPreset("camouflage"));
     FilterOptions smooth;
@@ -120,8 +121,8 @@ TEST(Gpu, CameraSourceOverTheGpuGivesTheCpuInstances) {
         camera.tiltDeg = 60;
         GpuPattern gpu(pattern, context(), smooth);
         const FilteredPattern cpu(pattern, smooth);
-        const CameraSource onGpu([&gpu](const Camera& c) { return gpu.render(c); }, pattern.exampleSize(), camera);
-        const FilteredPatternSource onCpu(cpu, pattern.exampleSize(), camera);
+        // One interface for both (pattern/view_renderer.h).
+        const CameraSource onGpu(gpu, camera), onCpu(cpu, camera);
         const SourceRegion region{64, 48, 0, 0};
         for (int instance : {0, 1, 7}) {
             const Image g = onGpu.render(region, 0, instance), c = onCpu.render(region, 0, instance);
@@ -136,6 +137,29 @@ TEST(Gpu, CameraSourceOverTheGpuGivesTheCpuInstances) {
         if (kind == Camera::Kind::Plane) {
             EXPECT_THROW(onGpu.render({64, 48, 8, 0}, 0, 0), InputError) << "a plane camera renders whole frames";
         }
+    }
+}
+
+// A pattern file's renderers, plain or graph, CPU or GPU, are one interface
+// (pattern/view_renderer.h): each says where it runs and its W, and the two
+// agree on the same camera as their parity tests require (mean ≤ 0.5/255,
+// at most 0.5% of channels over 2/255).
+TEST(Gpu, CpuAndGpuRenderersOfAPatternFileAreOneInterface) {
+    FilterOptions smooth;
+    smooth.use(parseFilter("smooth"));
+    for (const char* preset : {"camouflage", "figure14"}) {
+        const PatternSpec spec = loadPreset(preset);
+        const std::unique_ptr<ViewRenderer> cpu = makeCpuRenderer(spec, smooth), gpu = makeGpuRenderer(spec, smooth);
+        EXPECT_EQ(cpu->device(), "CPU");
+        EXPECT_NE(gpu->device(), "CPU");
+        EXPECT_EQ(cpu->exampleSize(), gpu->exampleSize()) << preset;
+        Camera camera;
+        camera.view.width = 96;
+        camera.view.height = 64;
+        camera.view.scale = 3;
+        const Difference d = compare(gpu->render(camera), cpu->render(camera));
+        EXPECT_LE(d.mean, 0.5 / 255.0) << preset;
+        EXPECT_LE(d.outlierFraction, 0.005) << preset;
     }
 }
 

@@ -137,10 +137,10 @@ TEST(TextureSource, FilteredPatternInstanceZeroIsTheCameraRender) {
         Camera cam;
         cam.view.width = cam.view.height = 24;
         cam.view.scale = 4;
-        const FilteredPatternSource source(filtered, pattern.exampleSize(), cam);
+        const CameraSource source(filtered, cam);
         EXPECT_TRUE(sameImage(source.render({24, 24, 0, 0}, 0.0, 0), filtered.render(cam)));
         cam.kind = Camera::Kind::Plane;
-        const FilteredPatternSource plane(filtered, pattern.exampleSize(), cam);
+        const CameraSource plane(filtered, cam);
         EXPECT_TRUE(sameImage(plane.render({24, 24, 0, 0}, 0.0, 0), filtered.render(cam)));
         EXPECT_THROW(plane.render({24, 24, 1, 0}, 0.0, 0), InputError);
     }

@@ -212,7 +212,7 @@ struct GpuGraph::Impl {
 };
 
 GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments)
-    : GpuView(context, graphRecipes(graph, options, moments)), impl_(std::make_unique<Impl>()) {
+    : GpuView(context, graphRecipes(graph, options, moments), graph.exampleSize()), impl_(std::make_unique<Impl>()) {
     const bool filtered = options.source == StatisticsSource::Estimators;
     const FilteredGraph f(graph, options, moments);  // the prefiltered tables, the pyramids, the sky
     Impl& m = *impl_;
@@ -266,6 +266,36 @@ std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context
     if (needsGraphEvaluator(spec))
         return std::make_unique<GpuGraph>(GraphPattern::build(spec), context, options);
     return std::make_unique<GpuPattern>(Pattern::build(spec), context, options);
+}
+
+namespace {
+
+// A GpuView with the context it draws in (destroyed after it).
+class HeadlessGpuRenderer final : public ViewRenderer {
+public:
+    HeadlessGpuRenderer(const PatternSpec& spec, const FilterOptions& options, GpuView::Pipeline pipeline,
+                        GpuView::Derivatives derivatives)
+        : context_(GlContext::headless()), view_(makeGpuView(spec, *context_, options)) {
+        view_->setDerivatives(derivatives);
+        view_->setPipeline(pipeline);
+    }
+    Image render(const Camera& camera, const Progress& progress) const override {
+        context_->makeCurrent();
+        return view_->render(camera, progress);
+    }
+    int exampleSize() const override { return view_->exampleSize(); }
+    std::string device() const override { return view_->device(); }
+
+private:
+    std::unique_ptr<GlContext> context_;
+    std::unique_ptr<GpuView> view_;
+};
+
+}  // namespace
+
+std::unique_ptr<ViewRenderer> makeGpuRenderer(const PatternSpec& spec, const FilterOptions& options,
+                                              GpuView::Pipeline pipeline, GpuView::Derivatives derivatives) {
+    return std::make_unique<HeadlessGpuRenderer>(spec, options, pipeline, derivatives);
 }
 
 void GpuGraph::bind(unsigned program) const {

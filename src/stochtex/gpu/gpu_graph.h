@@ -3,9 +3,11 @@
 // graphs"): the graph's program of operations (pattern/graph_pattern.h) is
 // written out as GLSL that calls the kernel's functions — tiling and
 // blending of each leaf, the footprint statistics of each pair of leaves
-// (filtering.glsl's pairStatistics), table lookups, the prefiltered tables'
-// lookup and each op's kernel file (pattern/ops/) through the OpContext and
-// table lookups this chunk declares — in the CPU evaluator's order, so that
+// (the kernel's estimator loop, kernel/estimate.glsl, over the texel source
+// this chunk defines: a branch per pair's pyramids), table lookups, the
+// prefiltered tables' lookup and each op's kernel file (pattern/ops/,
+// included) through the table lookups this chunk defines for
+// ops/op_host.glsl's OpContext — in the CPU evaluator's order, so that
 // the GPU's colours are the CPU's within float rounding. Seeds, means and
 // parameters are constants of the program; examples, pyramids and tables
 // are textures.
@@ -57,5 +59,12 @@ private:
 // The GPU view of a pattern file: GpuPattern, or GpuGraph for a texture
 // graph that is not a pattern H∘N (what it is built from is not kept).
 std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options);
+
+// The same on a headless OpenGL context of its own (GlContext::headless),
+// run as `pipeline` with footprints from `derivatives`: the GPU's
+// ViewRenderer for a pattern file (render --gpu, bake-image --gpu).
+std::unique_ptr<ViewRenderer> makeGpuRenderer(const PatternSpec& spec, const FilterOptions& options,
+                                              GpuView::Pipeline pipeline = GpuView::Pipeline::Fragment,
+                                              GpuView::Derivatives derivatives = GpuView::Derivatives::Camera);
 
 }  // namespace stochtex

@@ -40,7 +40,7 @@ struct GpuPattern::Impl {
 };
 
 GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
-    : GpuView(context, patternRecipes(options)), impl_(std::make_unique<Impl>()) {
+    : GpuView(context, patternRecipes(options), pattern.exampleSize()), impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.options = options;
     const bool filtered = options.source == StatisticsSource::Estimators;

@@ -21,7 +21,8 @@ InputError rasterizerNeedsFragments() {
 
 }  // namespace
 
-GpuView::GpuView(GlContext& context, Recipes recipes) : recipes_(std::move(recipes)) {
+GpuView::GpuView(GlContext& context, Recipes recipes, int exampleSize)
+    : recipes_(std::move(recipes)), exampleSize_(exampleSize), device_(context.describe()) {
     context.makeCurrent();
     hasCompute_ = context.hasCompute();
     program_ = buildProgram(recipes_.fragment, recipes_.response, recipes_.generated);
@@ -46,13 +47,13 @@ void GpuView::setPipeline(Pipeline p) {
     pipeline_ = p;
 }
 
-Image GpuView::render(const View& view) {
+Image GpuView::render(const View& view) const {
     Camera camera;
     camera.view = view;
     return render(camera);
 }
 
-Image GpuView::render(const Camera& camera) {
+Image GpuView::render(const Camera& camera, const Progress&) const {
     validateCamera(camera);
     const View& view = camera.view;
     // Framebuffer row y is image row y: the shader maps fragment y to v the
@@ -69,13 +70,13 @@ void GpuView::setViewUniforms(unsigned program, const Camera& camera) const {
     setCameraUniforms(program, camera, derivatives_ == Derivatives::Rasterizer);
 }
 
-void GpuView::drawView(const Camera& camera) {
+void GpuView::drawView(const Camera& camera) const {
     setViewUniforms(program_.id(), camera);
     glBindVertexArray(vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void GpuView::drawOrDispatch(const Camera& camera) {
+void GpuView::drawOrDispatch(const Camera& camera) const {
     if (pipeline_ == Pipeline::Fragment) return drawView(camera);
     // The kernel writes the texture attached to the bound framebuffer.
     GLint target = 0;
@@ -87,7 +88,7 @@ void GpuView::drawOrDispatch(const Camera& camera) {
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
-double GpuView::secondsPerFrame(const Camera& camera, int frames) {
+double GpuView::secondsPerFrame(const Camera& camera, int frames) const {
     validateCamera(camera);
     if (frames < 1) throw InputError::parameter("frames", "must be >= 1, got " + std::to_string(frames));
     double seconds = 0;

@@ -15,10 +15,11 @@
 #include "stochtex/image/image.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/response.h"
+#include "stochtex/pattern/view_renderer.h"
 
 namespace stochtex {
 
-class GpuView {
+class GpuView : public ViewRenderer {
 public:
     // The recipes of the fragment and the compute program (built on first
     // use) with the response's chunk and the generated chunks by stem.
@@ -46,17 +47,20 @@ public:
     void setPipeline(Pipeline p);
 
     // The camera mapping of the CPU's render (zoom or plane); RGB float.
-    Image render(const Camera& camera);
-    Image render(const View& view);  // zoom
+    // No progress: a GPU frame is one draw.
+    Image render(const Camera& camera, const Progress& progress = {}) const override;
+    Image render(const View& view) const;  // zoom
+    int exampleSize() const override { return exampleSize_; }
+    std::string device() const override { return device_; }
     // Draws the camera's view into the framebuffer bound now (a window's),
     // over the current viewport; no read-back.
-    void drawView(const Camera& camera);
+    void drawView(const Camera& camera) const;
     // Seconds per frame of render()'s work without the read-back: `frames`
     // draws (or dispatches) into render()'s float target after a warm-up of
     // at least 0.3 s, timed from submission to glFinish. Wall clock, not a GL_TIME_ELAPSED
     // query: llvmpipe's queries end before its rasterizer threads do. For
     // throughput benchmarks.
-    double secondsPerFrame(const Camera& camera, int frames);
+    double secondsPerFrame(const Camera& camera, int frames) const;
 
     // Makes `program` current and binds every texture the view's program
     // reads, its parameters' buffer and the sky colour. Also for programs of
@@ -72,13 +76,15 @@ public:
 
 protected:
     // Makes the context current and builds the fragment program.
-    GpuView(GlContext& context, Recipes recipes);
+    GpuView(GlContext& context, Recipes recipes, int exampleSize);
 
 private:
     void setViewUniforms(unsigned program, const Camera& camera) const;
     // drawView, or the compute kernel into the bound framebuffer's texture.
-    void drawOrDispatch(const Camera& camera);
+    void drawOrDispatch(const Camera& camera) const;
     Recipes recipes_;
+    int exampleSize_;
+    std::string device_;
     gl::Program program_, kernelProgram_;
     gl::VertexArray vao_;
     bool hasCompute_ = false;

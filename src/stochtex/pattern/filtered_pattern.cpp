@@ -182,4 +182,6 @@ Image FilteredPattern::render(const Camera& camera, const Progress& progress) co
     return out;
 }
 
+int FilteredPattern::exampleSize() const { return pattern_.exampleSize(); }
+
 }  // namespace stochtex

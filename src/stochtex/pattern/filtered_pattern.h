@@ -32,6 +32,7 @@
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 #include "stochtex/pattern/response.h"
+#include "stochtex/pattern/view_renderer.h"
 
 namespace stochtex {
 
@@ -101,7 +102,7 @@ std::array<double, 2> exampleMoments(const NoiseExample& example);
 // statistics of an infinite footprint.
 FootprintStats fieldStatistics(const TiledField& field);
 
-class FilteredPattern {
+class FilteredPattern final : public ViewRenderer {
 public:
     FilteredPattern(const Pattern& pattern, const FilterOptions& options);
 
@@ -128,7 +129,8 @@ public:
     Rgb shade(bool onPlane, double u, double v, const Jacobian& j,
               const std::array<float, 3>& view = LeanResponse::kFromAbove) const;
     // progress: the fraction of rows done (may be empty).
-    Image render(const Camera& camera, const Progress& progress = {}) const;
+    Image render(const Camera& camera, const Progress& progress = {}) const override;
+    int exampleSize() const override;
 
 private:
     Footprint footprint(double u, double v, const Jacobian& j) const;

@@ -139,7 +139,7 @@ inline const EnumNames<GraphMoments> kGraphMomentsNames{{"matched", GraphMoments
 // mode, anisotropy, variance estimator, reference samples, 8-bit pyramids.
 // The response must be the prefiltered colormap (InputError `response`
 // otherwise: a graph has no normal map).
-class FilteredGraph {
+class FilteredGraph final : public ViewRenderer {
 public:
     using Direction = GraphPattern::Direction;
     FilteredGraph(const GraphPattern& graph, const FilterOptions& options,
@@ -151,7 +151,8 @@ public:
     // eye: the unit direction towards the eye (Camera::viewDirection), which a lean node reads.
     Rgb shade(bool onPlane, double u, double v, const Jacobian& j,
               const Direction& eye = GraphPattern::kFromAbove) const;
-    Image render(const Camera& camera, const Progress& progress = {}) const;
+    Image render(const Camera& camera, const Progress& progress = {}) const override;
+    int exampleSize() const override { return graph_.exampleSize(); }
 
     // The program on the leaves' moments (mean, variance per leaf) and the
     // covariance of each pair's two leaves (a lean node's slopes; none: 0).

@@ -99,7 +99,7 @@ Image CameraSource::render(const SourceRegion& region, double time, int instance
     } else {
         c.view = windowView(c.view, region, instance, exampleSize_);
     }
-    return renderer_(c);
+    return renderer_.render(c);
 }
 
 void CameraSource::checkWindow(const SourceRegion& region, double) const {

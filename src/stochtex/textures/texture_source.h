@@ -18,8 +18,8 @@
 #include "stochtex/image/image.h"
 #include "stochtex/noise/phasor_noise.h"
 #include "stochtex/pattern/camera.h"
-#include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/view_renderer.h"
 #include "stochtex/textures/zoom_statistics.h"
 #include "stochtex/textures/zoom_texture.h"
 
@@ -144,15 +144,15 @@ private:
     View view_;
 };
 
-// Any renderer of a camera's view (a FilteredPattern, the GPU's GpuView)
-// as a source: the region is a window of the camera's view (a plane camera
-// renders whole frames only: its region offset must be 0), instance i ≠ 0
-// moves the view by instanceOffset(i). The renderer must outlive the source.
+// Any renderer of a camera's view (pattern/view_renderer.h: the CPU
+// evaluators, the GPU's GpuView) as a source: the region is a window of the
+// camera's view (a plane camera renders whole frames only: its region offset
+// must be 0), instance i ≠ 0 moves the view by instanceOffset(i). The
+// renderer must outlive the source.
 class CameraSource : public TextureSource {
 public:
-    using Renderer = std::function<Image(const Camera&)>;
-    CameraSource(Renderer renderer, int exampleSize, const Camera& camera)
-        : renderer_(std::move(renderer)), exampleSize_(exampleSize), camera_(camera) {}
+    CameraSource(const ViewRenderer& renderer, const Camera& camera)
+        : renderer_(renderer), exampleSize_(renderer.exampleSize()), camera_(camera) {}
     int channels() const override { return 3; }
     Image render(const SourceRegion& region, double time, int instance) const override;
     // InputError for a region offset under a plane camera.
@@ -160,17 +160,9 @@ public:
     const Camera& camera() const { return camera_; }
 
 private:
-    Renderer renderer_;
+    const ViewRenderer& renderer_;
     int exampleSize_;
     Camera camera_;
-};
-
-// A filtered pattern through `camera` (its size is ignored). The filtered
-// pattern must outlive the source.
-class FilteredPatternSource : public CameraSource {
-public:
-    FilteredPatternSource(const FilteredPattern& filtered, int exampleSize, const Camera& camera)
-        : CameraSource([&filtered](const Camera& c) { return filtered.render(c); }, exampleSize, camera) {}
 };
 
 // Procedural phasor noise (noise/phasor_noise.h) under a phasor colormap H:

@@ -610,8 +610,7 @@ private:
             return r;
         } else if (correlation_->count() < kMaxCorrelationSamples) {
             // Instances through the GPU: the view moved by a hashed whole-texel offset (CameraSource).
-            GpuView& r = renderer();
-            const CameraSource source([&r](const Camera& c) { return r.render(c); }, exampleSize(), camera_);
+            const CameraSource source(renderer(), camera_);
             for (int k = 0; k < 4; ++k) correlation_->add(source.render({w, h, 0, 0}, 0, correlation_->count()));
         }
         return correlation_->result(statistic_);

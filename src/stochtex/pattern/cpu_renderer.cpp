@@ -1,0 +1,35 @@
+#include "stochtex/pattern/cpu_renderer.h"
+
+#include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/pattern.h"
+
+namespace stochtex {
+
+namespace {
+
+// An evaluator and its filtered view, which holds a reference to it: built
+// in place, in that order, and never moved.
+template <class Evaluator, class Filtered>
+class Owning final : public ViewRenderer {
+public:
+    Owning(Evaluator evaluator, const FilterOptions& options)
+        : evaluator_(std::move(evaluator)), filtered_(evaluator_, options) {}
+    Image render(const Camera& camera, const Progress& progress) const override {
+        return filtered_.render(camera, progress);
+    }
+    int exampleSize() const override { return filtered_.exampleSize(); }
+
+private:
+    Evaluator evaluator_;
+    Filtered filtered_;
+};
+
+}  // namespace
+
+std::unique_ptr<ViewRenderer> makeCpuRenderer(const PatternSpec& spec, const FilterOptions& options) {
+    if (needsGraphEvaluator(spec))
+        return std::make_unique<Owning<GraphPattern, FilteredGraph>>(GraphPattern::build(spec), options);
+    return std::make_unique<Owning<Pattern, FilteredPattern>>(Pattern::build(spec), options);
+}
+
+}  // namespace stochtex
