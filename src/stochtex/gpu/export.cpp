@@ -59,13 +59,13 @@ std::string exportedShaderInclude(ResponseKind response) {
     return text;
 }
 
-std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments) {
+std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments, const LevelAverages& levelAverages) {
     std::string text = std::string(kIncludeHeader) +
                        "// This pattern is a texture graph (docs/GRAPHS.md): its program, generated for it,\n"
                        "// defines filteredColour (moment matching through its prefiltered tables). Its seeds\n"
                        "// and means are constants here; of the PatternParameters block it reads\n"
                        "// gridDensity, invExampleSize, maxLod, aniso, smoothTable and tableLevels.\n\n";
-    const std::vector<std::pair<std::string, std::string>> program = {{kGraphProgramStem, graphProgramSource(graph, moments)}};
+    const std::vector<std::pair<std::string, std::string>> program = {{kGraphProgramStem, graphProgramSource(graph, moments, levelAverages)}};
     for (const auto& stem :
          shaderChunks(recipeFiles(programRecipe("export-graph-include"), ResponseKind::PrefilteredColormap), program))
         text += (stem == kGraphProgramStem ? generatedShaderText(program[0].second) : shaderText(stem)) + "\n";
@@ -305,6 +305,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     nlohmann::json m;
     m["version"] = 1;
     m["filter"] = filterName(options);
+    m["estimator"] = enumName(kVarianceEstimatorNames, options.estimator);  // paper, or deliot-heitz (uPattern.deliotHeitz)
     m["response"] = enumName(kResponseKindNames, options.response.kind);
     m["example_size"] = field.exampleSize();
     m["levels"] = est.maxLod() + 1;
@@ -350,13 +351,12 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     if (options.source != StatisticsSource::Estimators)
         throw InputError::parameter("source", "must be estimators to export (filter paper or smooth), got " +
                                                   enumName(kStatisticsSourceNames, options.source));
-    if (options.estimator != VarianceEstimator::Paper)
-        throw InputError::parameter("estimator", "must be paper for a texture graph on the GPU");
     const FilteredGraph f(graph, options);  // validates the options; the pyramids and tables
     makeFolder(dir);
     nlohmann::json m;
     m["version"] = 1;
     m["filter"] = filterName(options);
+    m["estimator"] = enumName(kVarianceEstimatorNames, options.estimator);  // deliot-heitz: level averages in stochtex.glsl
     m["response"] = enumName(kResponseKindNames, options.response.kind);
     // The block members the graph's program reads (the rest: its constants).
     m["example_size"] = graph.exampleSize();
@@ -411,7 +411,7 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     // Every table has the same σ levels (tableLevels); a graph of compose and
     // lean nodes alone has none.
     if (!tables.empty()) m["table"] = tables.front();
-    writeDescription(dir, m, exportedGraphInclude(graph), files, false);
+    writeDescription(dir, m, exportedGraphInclude(graph, GraphMoments::Matched, graphLevelAverages(f, options)), files, false);
 }
 
 void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,

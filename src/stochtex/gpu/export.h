@@ -18,6 +18,7 @@
 //                        and their formats (built from what was written)
 #include <string>
 
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/graph_pattern.h"
 
@@ -49,6 +50,7 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
 // pattern H∘N (needsGraphEvaluator), else exportPattern.
 void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,
                        const ExportOptions& exportOptions = {});
-std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched);
+std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched,
+                                 const LevelAverages& levelAverages = {});
 
 }  // namespace stochtex

@@ -81,9 +81,9 @@ std::array<int, 2> pairLeaves(const GraphPattern& graph, int p) {
 
 // The texel source's two functions (kernel/estimate.glsl) over the graph's
 // pyramids: a branch per pair (a constant in each call, so they fold
-// away), then the kernel's loop. Deliot–Heitz is refused for graphs on the
-// GPU (graphRecipes), so no averages are read.
-void writeTexelSource(std::ostringstream& o, const GraphPattern& graph) {
+// away), then the kernel's loop; each pair's level averages as a constant
+// array when there are any (the Deliot–Heitz estimator).
+void writeTexelSource(std::ostringstream& o, const GraphPattern& graph, const LevelAverages& averages) {
     o << "#include \"stochtex/kernel/estimate.glsl\"\n";
     o << "ProbeTexels probeTexels(TexelSource s, vec2 uv, ProbeLevels levels) {\n";
     const int pairs = int(graph.leafPairs().size());
@@ -95,7 +95,17 @@ void writeTexelSource(std::ostringstream& o, const GraphPattern& graph) {
           << x << ", " << y << ", " << cov << ", s, uv, levels);\n";
     }
     if (pairs == 0) o << "    TexelStats none = TexelStats(vec2(0.0), vec2(0.0), 0.0);\n    return ProbeTexels(none, none);\n";
-    o << "}\nvec3 levelAverages(TexelSource s, int level) { return vec3(0.0); }\n";
+    o << "}\nvec3 levelAverages(TexelSource s, int level) {\n";
+    for (size_t p = 0; p < averages.size(); ++p) {
+        o << "    if (s.pair == " << p << ") {\n        const vec3 a" << p << "[" << averages[p].size() << "] = vec3["
+          << averages[p].size() << "](";
+        for (size_t l = 0; l < averages[p].size(); ++l) {
+            const kernel::vec3 a = averages[p][l];
+            o << (l ? ", " : "") << "vec3(" << glslFloat(a.x) << ", " << glslFloat(a.y) << ", " << glslFloat(a.z) << ")";
+        }
+        o << ");\n        return a" << p << "[level];\n    }\n";
+    }
+    o << "    return vec3(0.0);\n}\n";
 }
 
 // The operations after the leaves, on values (point) or on moments
@@ -124,7 +134,18 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
 
 }  // namespace
 
-std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) {
+LevelAverages graphLevelAverages(const FilteredGraph& filtered, const FilterOptions& options) {
+    LevelAverages out;
+    if (options.source != StatisticsSource::Estimators || options.estimator != VarianceEstimator::DeliotHeitz) return out;
+    for (size_t p = 0; p < filtered.estimatorCount(); ++p) {
+        const FootprintEstimator& e = filtered.estimator(int(p));
+        std::vector<kernel::vec3>& levels = out.emplace_back();
+        for (int l = 0; l <= e.maxLod(); ++l) levels.push_back(e.levelAverages(l));
+    }
+    return out;
+}
+
+std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, const LevelAverages& levelAverages) {
     std::ostringstream o;
     o << "// Generated for one texture graph (gpu/gpu_graph.cpp): the pattern's two colour\n"
          "// functions, its leaves then its operations.\n"
@@ -139,7 +160,7 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
     for (size_t p = 0; p < graph.leafPairs().size(); ++p)
         if (graph.pairCovariance(int(p))) o << "uniform sampler2D uGraphCov" << p << ";  // pair " << p << "'s C_l pyramid\n";
     writeOpHost(o, graph);
-    writeTexelSource(o, graph);
+    writeTexelSource(o, graph, levelAverages);
 
     o << "\nvec3 unfilteredColour(vec2 uv) {\n";
     // One stencil per pair's uv (pairs under one transform share it).
@@ -166,7 +187,8 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments) 
         o << "    FootprintMoments p" << p << " = jacobianEstimate(" << pairSource(graph, int(p), maxLod) << ", "
           << pairUv(graph.pairTransform(int(p)), "uv", true) << ", " << pairUv(graph.pairTransform(int(p)), "jx", false)
           << ", " << pairUv(graph.pairTransform(int(p)), "jy", false) << ", " << glslFloat(float(pair.exampleSize()))
-          << ", uPattern.aniso, " << maxLod << ", false, " << (covariance ? "true" : "false") << ");\n";
+          << ", uPattern.aniso, " << maxLod << ", " << (levelAverages.empty() ? "false" : "true") << ", "
+          << (covariance ? "true" : "false") << ");\n";
         for (int c = 0; c < 2; ++c)
             if (c == 0 || leaves[1] != leaves[0])
                 o << "    vec3 " << slot(leaves[c]) << " = vec3(p" << p << ".mean." << "xy"[c] << ", max(p" << p
@@ -190,16 +212,23 @@ void checkGraphTextureUnits(const GraphPattern& graph, bool filtered) {
 namespace {
 
 // The graph's programs, once the options are ones its GPU program has.
-GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments) {
+// The filtered graph the GPU reads, once the options are ones its GPU
+// program has (checked first: they cost no pyramid).
+std::shared_ptr<const FilteredGraph> gpuFilteredGraph(const GraphPattern& graph, const FilterOptions& options,
+                                                      GraphMoments moments) {
     if (options.source != StatisticsSource::Point && options.source != StatisticsSource::Estimators)
         throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
                                                   enumName(kStatisticsSourceNames, options.source));
-    const bool filtered = options.source == StatisticsSource::Estimators;
-    if (filtered && options.estimator != VarianceEstimator::Paper)
-        throw InputError::parameter("estimator", "must be paper for a texture graph on the GPU");
-    checkGraphTextureUnits(graph, filtered);
-    return {filtered ? "graph-filtered" : "graph", filtered ? "graph-filtered-compute" : "graph-compute", "graph-scene",
-            ResponseKind::PrefilteredColormap, {{kGraphProgramStem, graphProgramSource(graph, moments)}}};
+    checkGraphTextureUnits(graph, options.source == StatisticsSource::Estimators);
+    return std::make_shared<const FilteredGraph>(graph, options, moments);
+}
+
+GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments,
+                              const FilteredGraph& filtered) {
+    const bool estimators = options.source == StatisticsSource::Estimators;
+    return {estimators ? "graph-filtered" : "graph", estimators ? "graph-filtered-compute" : "graph-compute",
+            "graph-scene", ResponseKind::PrefilteredColormap,
+            {{kGraphProgramStem, graphProgramSource(graph, moments, graphLevelAverages(filtered, options))}}};
 }
 
 }  // namespace
@@ -212,9 +241,14 @@ struct GpuGraph::Impl {
 };
 
 GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments)
-    : GpuView(context, graphRecipes(graph, options, moments), graph.exampleSize()), impl_(std::make_unique<Impl>()) {
+    : GpuGraph(graph, context, options, moments, gpuFilteredGraph(graph, options, moments)) {}
+
+GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments,
+                   std::shared_ptr<const FilteredGraph> filteredGraph)
+    : GpuView(context, graphRecipes(graph, options, moments, *filteredGraph), graph.exampleSize()),
+      impl_(std::make_unique<Impl>()) {
     const bool filtered = options.source == StatisticsSource::Estimators;
-    const FilteredGraph f(graph, options, moments);  // the prefiltered tables, the pyramids, the sky
+    const FilteredGraph& f = *filteredGraph;  // the prefiltered tables, the pyramids, the sky
     Impl& m = *impl_;
     m.filtered = filtered;
     m.sky = f.skyColour();

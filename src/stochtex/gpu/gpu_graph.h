@@ -12,6 +12,7 @@
 // parameters are constants of the program; examples, pyramids and tables
 // are textures.
 #include <memory>
+#include <vector>
 #include <string>
 
 #include "stochtex/gpu/gl_context.h"
@@ -28,8 +29,16 @@ namespace stochtex {
 // prefiltered tables), which the pattern's main files call (pattern.frag,
 // filtered.frag, the compute kernels, scene.frag), and the samplers they read
 // (uGraphExampleK, uGraphInverseK, uGraphStatsK per leaf; uGraphTableK,
-// uGraphPrefilteredK per table).
-std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched);
+// uGraphPrefilteredK per table). With `levelAverages` (per leaf pair, per
+// level: graphLevelAverages) the estimators are the Deliot–Heitz baseline,
+// the averages constants of the program; without, the paper's.
+using LevelAverages = std::vector<std::vector<kernel::vec3>>;
+std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched,
+                               const LevelAverages& levelAverages = {});
+// Each leaf pair's level averages [DH19] from the filtered graph's
+// estimators (FootprintEstimator::levelAverages), for graphProgramSource;
+// empty unless `options` choose the Deliot–Heitz estimator.
+LevelAverages graphLevelAverages(const FilteredGraph& filtered, const FilterOptions& options);
 
 // InputError when the graph's program needs more textures than a fragment
 // shader has units (16): the point set, and with `filtered` the pyramids and
@@ -39,7 +48,7 @@ void checkGraphTextureUnits(const GraphPattern& graph, bool filtered);
 class GpuGraph final : public GpuView {
 public:
     // options.source: Point or Estimators (InputError naming `source`
-    // otherwise), the paper estimator only; InputError when the graph needs
+    // otherwise), either variance estimator; InputError when the graph needs
     // more textures than a fragment shader has units (16). Data is copied
     // to the GPU: the graph need not outlive this object.
     GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options,
@@ -52,6 +61,10 @@ public:
     bool filtered() const override;
 
 private:
+    // The filtered graph (pyramids, tables, sky, level averages) is built
+    // before the program, which takes the averages as constants.
+    GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments,
+             std::shared_ptr<const FilteredGraph> filtered);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

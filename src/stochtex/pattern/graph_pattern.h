@@ -161,6 +161,7 @@ public:
     // The estimators of leaf pair k (built for the estimators source only)
     // and the prefiltered table of GraphPattern table k, for the GPU.
     const FootprintEstimator& estimator(int pair) const { return *estimators_.at(size_t(pair)); }
+    size_t estimatorCount() const { return estimators_.size(); }
     const PrefilteredColormap& table(int k) const { return tables_.at(size_t(k)); }
 
 private:
