@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "stochtex/image/image.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/presets.h"
 
@@ -39,6 +40,45 @@ TEST(Colormap, PhasorProfiles) {
     // Point straight above the centre: phase π/2 → 1; straight below → 0.
     EXPECT_NEAR(t.sample(0.5f, 0.9f)[0], 1.0f, 1e-3f);
     EXPECT_NEAR(t.sample(0.5f, 0.1f)[0], 0.0f, 1e-3f);
+}
+
+// A shape that covers the whole domain [0, 1]² gives its colour on every
+// entry, the border and corner entries included: a border entry averages
+// the part of its cell inside the domain, not the half outside it (which
+// read 50 % background on the edges and 75 % at the corners).
+TEST(Colormap, AShapeCoveringTheDomainGivesItsColourOnEveryEntry) {
+    PaintedColormap p;
+    p.background = {0, 0, 0};
+    PaintedShape all;
+    all.kind = PaintedShape::Kind::Rectangle;
+    all.a = {0.0, 0.0};
+    all.b = {1.0, 1.0};
+    all.colour = {0.2f, 0.6f, 1.0f};
+    p.shapes.push_back(all);
+    for (const int supersampling : {1, 4}) {
+        const Image t = p.rasterize(17, supersampling).table();
+        for (int j = 0; j < t.height(); ++j)
+            for (int i = 0; i < t.width(); ++i)
+                for (int k = 0; k < 3; ++k)
+                    ASSERT_NEAR(t.at(i, j, k), all.colour[size_t(k)], 1e-6f)
+                        << i << ", " << j << " supersampling " << supersampling;
+    }
+    // A half plane x ≤ 0.5: the left border column is the shape's colour,
+    // the right one the background's, whatever the supersampling.
+    PaintedColormap half;
+    half.background = {0, 0, 0};
+    PaintedShape left;
+    left.kind = PaintedShape::Kind::HalfPlane;
+    left.a = {0.5, 0.5};
+    left.setAngle(90);
+    left.colour = {1, 1, 1};
+    half.shapes.push_back(left);
+    const Image h = half.rasterize(9, 4).table();
+    for (int j = 0; j < 9; ++j) {
+        EXPECT_EQ(h.at(0, j, 0), 1.0f) << j;
+        EXPECT_EQ(h.at(8, j, 0), 0.0f) << j;
+        EXPECT_NEAR(h.at(4, j, 0), 0.5f, 1e-6f) << j;  // the boundary halves the middle column's cell
+    }
 }
 
 TEST(Colormap, PaintedShapesPutTheRightColourAtKnownPoints) {

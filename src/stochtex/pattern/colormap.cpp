@@ -1,5 +1,7 @@
 #include "stochtex/pattern/colormap.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -222,14 +224,22 @@ ColormapTable PaintedColormap::rasterize(int resolution, int supersampling) cons
     if (supersampling < 1) throw std::invalid_argument("supersampling must be >= 1");
     validateWork(resolution, supersampling);
     const double cell = 1.0 / double(resolution - 1);
+    // The part of the cell centred on a table sample that lies in the
+    // domain [0, 1]: a border entry's cell is half outside it (a corner's
+    // three quarters), where nothing is painted, so averaging the whole cell
+    // would mix in the background that no N inside the domain ever sees.
+    const auto span = [cell](double x) {
+        const double lo = std::max(0.0, x - 0.5 * cell), hi = std::min(1.0, x + 0.5 * cell);
+        return std::array<double, 2>{lo, hi - lo};
+    };
     return tabulate(resolution, [&](double x, double y) {
-        // Average over the cell centred on the table sample.
+        // Average over the cell centred on the table sample, within the domain.
+        const std::array<double, 2> sx = span(x), sy = span(y);
         Rgb sum{0, 0, 0};
         for (int sj = 0; sj < supersampling; ++sj)
             for (int si = 0; si < supersampling; ++si) {
-                const double ox = ((si + 0.5) / supersampling - 0.5) * cell;
-                const double oy = ((sj + 0.5) / supersampling - 0.5) * cell;
-                const Rgb c = evaluate(x + ox, y + oy);
+                const Rgb c = evaluate(sx[0] + (si + 0.5) / supersampling * sx[1],
+                                       sy[0] + (sj + 0.5) / supersampling * sy[1]);
                 for (int k = 0; k < 3; ++k) sum[size_t(k)] += c[size_t(k)];
             }
         const float inv = 1.0f / float(supersampling * supersampling);
