@@ -5,7 +5,6 @@
 #include <sys/resource.h>
 #include <zlib.h>
 
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -97,14 +96,12 @@ TEST_F(ImageRead, ASmallPngDeclaringAHugeImageFailsFromItsHeader) {
     const std::string path = writeFile(dir_, "huge.png", zeroPng(20000, 20000));
     ASSERT_LT(fs::file_size(path), 2u << 20);
     const long before = peakKilobytes();
-    const auto start = std::chrono::steady_clock::now();
     const std::string message = failureOf(path);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_NE(message.find("20000x20000 pixels"), std::string::npos) << message;
     EXPECT_NE(message.find("at most 16777216 pixels (4096x4096)"), std::string::npos) << message;
-    // Reading the 400 kB file is all it may cost: 0.5 s and 50 MB leave a wide
-    // margin over that and are far below what a decode takes (seconds, ≥ 400 MB).
-    EXPECT_LT(seconds, 0.5);
+    // Reading the 400 kB file is all it may cost: 50 MB leave a wide margin
+    // over that and are far below what a decode takes (≥ 400 MB). (Time is
+    // not asserted: unit tests run on shared machines; memory says the same.)
     EXPECT_LT(peakKilobytes() - before, 50 * 1024);
 }
 

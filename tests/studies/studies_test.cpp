@@ -325,7 +325,9 @@ TEST(Studies, Figure4ErrorsShrinkWithExactStatistics) {
     const Figure4Result r = figure4(o);
     ASSERT_EQ(r.columns.size(), 2u);
     for (const auto& c : r.columns) {
-        EXPECT_GE(c.meanErrorExact, 0.0);
+        // Exact statistics through the Gaussian table are not the supersampled
+        // reference (eq. 5 approximates); no error would mean one compared with itself.
+        EXPECT_GT(c.meanErrorExact, 1e-5);
         EXPECT_LT(c.meanErrorExact, 0.1);
         EXPECT_LT(c.meanErrorEstimated, 0.2);
     }
