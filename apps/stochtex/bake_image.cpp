@@ -31,7 +31,7 @@ void registerBakeImage(CLI::App& app) {
     addOutputImageFlag(*cmd, args->output,
                        "Output image: .png (8 or 16 bits, --bits) or .exr (32-bit float, uncompressed, linear values "
                        "as rendered)");
-    addFilterFlag(*cmd, args->options, "none | paper | smooth");
+    addFilterFlag(*cmd, args->options, "none | paper | smooth", gpuFilterNames());
     addAnisoFlag(*cmd, args->options.aniso);
     addResponseFlags(*cmd, args->response);
     const CLI::Option* bits = addBitsFlag(*cmd, args->bits);

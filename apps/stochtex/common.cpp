@@ -170,17 +170,28 @@ void addThreadsFlag(CLI::App& cmd, int& threads) {
 }
 
 void addFilterFlag(CLI::App& cmd, std::function<void(const NamedFilter&)> set, const std::string& shown,
-                   const std::string& help) {
+                   const std::string& help, const EnumNames<NamedFilter>& names) {
     cmd.add_option_function<std::string>(
            "--filter", [set](const std::string& s) { set(parseFilter(s)); }, help)
-        ->check(nameValidator(kFilterNames, "filter"))
+        ->check(nameValidator(names, "filter"))
         ->type_name("ENUM")
         ->default_str(shown);
 }
 
-void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& help) {
+void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& help,
+                   const EnumNames<NamedFilter>& names) {
     addFilterFlag(
-        cmd, [&options](const NamedFilter& f) { options.use(f); }, filterName(options), help);
+        cmd, [&options](const NamedFilter& f) { options.use(f); }, filterName(options), help, names);
+}
+
+const EnumNames<NamedFilter>& gpuFilterNames() {
+    static const EnumNames<NamedFilter> names = [] {
+        EnumNames<NamedFilter> out;
+        for (const auto& entry : kFilterNames)
+            if (isGpuFilter(FilterOptions{}.use(entry.second))) out.push_back(entry);
+        return out;
+    }();
+    return names;
 }
 
 void addResponseFlags(CLI::App& cmd, ResponseFlags& flags) {

@@ -127,11 +127,17 @@ void addThreadsFlag(CLI::App& cmd, int& threads);
 // --filter NAME over kFilterNames: a named pair of statistics source and
 // response, handed to `set` (which may throw InputError for a pair the
 // command cannot use); `shown` is the default the help lists.
+// `names`: the filters the command takes (its help lists them, and any other
+// is refused by name).
 void addFilterFlag(CLI::App& cmd, std::function<void(const NamedFilter&)> set, const std::string& shown,
-                   const std::string& help);
+                   const std::string& help, const EnumNames<NamedFilter>& names = kFilterNames);
 // --filter NAME setting both axes of `options`; the default is the options'
 // own (each command documents why it starts where it does).
-void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& help);
+void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& help,
+                   const EnumNames<NamedFilter>& names = kFilterNames);
+// The named filters the GPU renders (none, paper, smooth): the --filter of
+// the commands that draw with OpenGL only (scene, view, bake-image's bands).
+const EnumNames<NamedFilter>& gpuFilterNames();
 
 // --response NAME (kResponseKindNames) and --no-covariance: the response
 // axis of the filter (pattern/response.h). --filter names a pair with the

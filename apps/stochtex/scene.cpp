@@ -26,7 +26,7 @@ void registerScene(CLI::App& app) {
     addPatternSource(*cmd, args->source);
     addOutputImageFlag(*cmd, args->output);
     cmd->add_option("--object", args->object, "plane | sphere | torus");
-    addFilterFlag(*cmd, args->options, "none | paper | smooth");
+    addFilterFlag(*cmd, args->options, "none | paper | smooth", gpuFilterNames());
     addAnisoFlag(*cmd, args->options.aniso);
     addResponseFlags(*cmd, args->response);
     cmd->add_option("--tiling", args->tiling, "Example periods across the object's uv square");

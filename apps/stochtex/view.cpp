@@ -30,7 +30,7 @@ void registerView(CLI::App& app) {
     // The window edits and saves a file, so it reads files only (no inline JSON).
     cmd->get_option("pattern")->description("A pattern or texture graph: its JSON file (docs/PATTERNS.md, docs/GRAPHS.md)");
     cmd->add_option("--shadertoy", args->shadertoy, "A ShaderToy program: its folder or manifest (docs/SHADERTOY.md)");
-    addFilterFlag(*cmd, w.filter, "Starting mode: none | paper | smooth");
+    addFilterFlag(*cmd, w.filter, "Starting mode: none | paper | smooth", gpuFilterNames());
     addCameraFlags(*cmd, w.camera, false);
     cmd->add_option("--scale", w.camera.view.scale, "Starting scale (texels per pixel)");
     addAnisoFlag(*cmd, w.filter.aniso);

@@ -673,6 +673,9 @@ case_bad_render_flags() {
   expect_bad "missing output dir" "$out/nodir/bad12.png" "does not exist" -- "$bin" render --preset gaussian -o "$out/nodir/bad12.png"
   expect_bad "unknown flag" "$out/bad16.png" "--bogus" -- "$bin" render --preset gaussian -o "$out/bad16.png" --bogus
   expect_bad "bad filter" "$out/bad18.png" '--filter: filter must be none, paper, smooth, exact or reference, got "blurry"' -- "$bin" render --preset gaussian -o "$out/bad18.png" --filter blurry
+  # Commands that draw with OpenGL take (and list) the three filters it renders.
+  expect_bad "scene exact" "$out/bad18b.png" '--filter: filter must be none, paper or smooth, got "exact"' -- "$bin" scene --preset gaussian -o "$out/bad18b.png" --filter exact
+  "$bin" scene --help | grep -q -- "--filter ENUM:{none, paper, smooth}" || fail "scene --help: --filter does not list none, paper, smooth"
   expect_bad "lean without a normal map" "$out/bad24.png" "--response: response lean shades a normal map; the pattern has none" -- "$bin" render --preset weld --response lean -o "$out/bad24.png"
   expect_bad "no-covariance without lean" "$out/bad25.png" "--no-covariance: has no effect without --response lean" -- "$bin" render --preset lean-ridges --no-covariance -o "$out/bad25.png"
   expect_bad "bad response" "$out/bad26.png" '--response: response must be prefiltered-colormap or lean, got "bump"' -- "$bin" render --preset lean-ridges --response bump -o "$out/bad26.png"

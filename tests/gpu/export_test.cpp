@@ -245,6 +245,12 @@ TEST(Export, SeparateProgramRendersWhatRenderGpuRenders) {
         EXPECT_NE(fileTable.find("| `table.exr` | OpenEXR, " + table), std::string::npos) << fileTable;
         EXPECT_NE(readme.find("`stats_x_8.exr` | OpenEXR, 256 × 256, 3 channels (R, G, B) of 32-bit float"),
                   std::string::npos);
+        // Which samplers need a texture: uCovariance is not read (no covariance)
+        // but on a code path; uColormap (the unfiltered path's) may stay unbound.
+        EXPECT_NE(readme.find("| `uCovariance` | `sampler2D` | not read"), std::string::npos) << readme;
+        EXPECT_NE(readme.find("also declares `uColormap` (the unfiltered path's), which `stochtex_sample` never reads"),
+                  std::string::npos)
+            << readme;
         GpuPattern gpu(p, *ctx, o);
         for (double scale : {1.0, 6.0}) {
             const double maxDiff = exportDifference(gpu, *ctx, dir, scale);
@@ -283,6 +289,8 @@ TEST(Export, GraphRendersWhatRenderGpuRenders) {
         }
         EXPECT_EQ(written, 3u * 9u + 2u + 3u);
         EXPECT_NE(readme.find("`uGraphPrefiltered1`"), std::string::npos);
+        // The unfiltered path's samplers are named as ones that may stay unbound.
+        EXPECT_NE(readme.find("also declares `uTable`, `uColormap`, `uGraphExample0`"), std::string::npos) << readme;
         GpuGraph gpu(g, *ctx, o);
         for (double scale : {1.0, 6.0}) {
             const double maxDiff = exportDifference(gpu, *ctx, dir, scale);

@@ -1,8 +1,11 @@
 #include "stochtex/gpu/export.h"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -130,7 +133,7 @@ files (`"pyramid"`: one file per mip level; `"table"`: one file of `layers`
 stacked `width × height` layers).
 All are read with `texelFetch` (no filtering needed); set `GL_TEXTURE_MAX_LEVEL`
 to L so the pyramids are mipmap-complete.
-
+@UNREAD@
 ## Colour space
 
 The tables (`table*.exr`) hold linear-light RGB (`manifest.json`: `"colour_space": "linear"`;
@@ -173,6 +176,10 @@ void main() { colour = stochtex_sample(vUv * 8.0); }
 // The README's row for a sampler of manifest.json's "textures".
 std::string textureRow(const nlohmann::json& t) {
     const std::string uniform = "`" + t["uniform"].get<std::string>() + "`";
+    if (t.contains("read") && !t["read"].get<bool>())
+        return "| " + uniform + " | `sampler2D` | not read (`covariance` is false), but on a code path, so GL wants a " +
+               "`sampler2D` texture on a unit of its own: any will do (`manifest.json` lists `uStatsX`'s files for " +
+               "it, `\"read\": false`) |\n";
     if (t["kind"] == "pyramid") {
         const std::string first = t["files"].front(), last = t["files"].back();
         return "| " + uniform + " | `sampler2D`, RG32F, mip levels 0…" + std::to_string(t["files"].size() - 1) +
@@ -210,9 +217,38 @@ To light it with your own lights and BRDF, call `LeanLobe stochtex_lean_lobe(vec
 
 )";
 
-std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& textures, bool lean) {
+// The samplers `include` declares that manifest.json's textures do not
+// list: the unfiltered path's, which stochtex_sample never calls.
+std::vector<std::string> unlistedSamplers(const std::string& include, const nlohmann::json& textures) {
+    std::vector<std::string> out;
+    const std::regex declaration(R"(\buniform\s+sampler\w+\s+([^;]+);)");
+    for (std::sregex_iterator it(include.begin(), include.end(), declaration), end; it != end; ++it) {
+        std::stringstream names((*it)[1].str());
+        for (std::string name; std::getline(names, name, ',');) {
+            name.erase(0, name.find_first_not_of(" \t"));
+            name.erase(name.find_last_not_of(" \t") + 1);
+            const bool listed = std::any_of(textures.begin(), textures.end(),
+                                            [&](const nlohmann::json& t) { return t["uniform"] == name; });
+            if (!listed) out.push_back(name);
+        }
+    }
+    return out;
+}
+
+std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& textures, bool lean,
+                   const std::string& include) {
     std::string textureRows;
     for (const nlohmann::json& t : textures) textureRows += textureRow(t);
+    std::string unread;
+    const std::vector<std::string> unlisted = unlistedSamplers(include, textures);
+    for (const std::string& name : unlisted) unread += (unread.empty() ? "`" : ", `") + name + "`";
+    if (!unread.empty()) {
+        const bool one = unlisted.size() == 1;
+        unread = "\n`stochtex.glsl` also declares " + unread +
+                 " (the unfiltered path's), which `stochtex_sample` never reads: " + (one ? "it" : "they") +
+                 " may stay unbound (a compiler drops " + (one ? "it" : "them") +
+                 "; a driver that keeps one active wants a texture of its type on its unit).\n";
+    }
     std::string fileRows;
     for (const WrittenFile& f : files) fileRows += "| " + f.names + " | " + f.format + " | " + f.content + " |\n";
     std::string members;
@@ -226,6 +262,7 @@ std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& 
                                                          {"@MEMBERS@", members},
                                                          {"@FILES@", fileRows},
                                                          {"@TEXTURES@", textureRows},
+                                                         {"@UNREAD@", unread},
                                                          {"@LEAN@", lean ? kLeanSection : ""}};
     std::string text = kReadme;
     for (const auto& [key, value] : fills)
@@ -276,7 +313,7 @@ void writeDescription(const std::string& dir, nlohmann::json& m, const std::stri
     files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 source, no `#version` line",
                      "`vec4 stochtex_sample(vec2 uv)` and what it calls"});
     files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
-    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], lean));
+    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], lean, include));
 }
 
 // The lean response's shading: what the uLean* uniforms hold.
@@ -334,7 +371,9 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
         textures.push_back(pyramidTexture("uCovariance", m["stats"]["covariance"], "covariance, R the mean of N_x"));
     } else {
         // Not read (covariance false), but a sampler of uStatsX's type on a unit of its own.
-        textures.push_back(pyramidTexture("uCovariance", m["stats"]["x"], "variance; not read"));
+        nlohmann::json unread = pyramidTexture("uCovariance", m["stats"]["x"], "variance");
+        unread["read"] = false;
+        textures.push_back(unread);
     }
     if (lean) {
         m["lean"] = leanManifest(pattern.normalMap()->shading, options.response.covariance);
