@@ -12,9 +12,8 @@
 // λ is clamped to [0, L] (magnification reads level 0). Each probe is later
 // split between levels ⌊λ⌋ and ⌊λ⌋ + 1 (trilinear), so a footprint is a
 // weighted union of texel footprints, as in paper eq. 9 and 15.
-#include <array>
-#include <cstddef>
 
+#include "stochtex/kernel/estimate.h"
 #include "stochtex/kernel/footprint.h"
 
 namespace stochtex {
@@ -41,10 +40,10 @@ struct Footprint {
     kernel::ProbeLayout layout{1, 0.0f, kernel::vec2(0.0f)};
 
     int count() const { return layout.count; }
-    // Probe k (k < count()): at u + t_k·axis, t_k the kernel's probePosition.
+    // Probe k (k < count()): where the kernel's loop reads it (probeCentre).
     Probe probe(int k) const {
-        const double t = kernel::probePosition(k, layout.count);
-        return Probe{u + t * double(layout.axis.x), v + t * double(layout.axis.y), layout.lod, 1.0f / float(layout.count)};
+        const kernel::coord2 p = kernel::probeCentre(kernel::coord2(u, v), layout, k);
+        return Probe{p.x, p.y, layout.lod, 1.0f / float(layout.count)};
     }
     // The same footprint centred elsewhere. Probes depend on the centre only
     // through a translation, so where J is constant (a zoom) the footprint is

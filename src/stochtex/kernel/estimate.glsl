@@ -18,6 +18,13 @@
 // the CPU it is the FootprintEstimator's pyramids, with its memoised tile
 // lookups (filter/footprint_stats.cpp), and the loop is a template over it.
 
+// Where probe k of a footprint centred at uv sits: uv + t_k·axis, t_k the
+// probe's place along the major axis (probePosition), in the host's
+// coordinate precision.
+inline coord2 probeCentre(coord2 uv, ProbeLayout probes, int k) {
+    return uv + coord(probePosition(k, probes.count)) * coord2(probes.axis);
+}
+
 // μ̂, σ̂², ĉov of the source over the footprint centred at uv with these
 // probes (kernel/footprint.glsl: probeLayout). One loop for every
 // footprint, a single texel included (its statistics are then taken as
@@ -39,7 +46,7 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
     first.var = vec2(0.0f);
     first.cov = 0.0f;
     for (int k = 0; k < probes.count; ++k) {
-        coord2 p = uv + coord(probePosition(k, probes.count)) * coord2(probes.axis);
+        coord2 p = probeCentre(uv, probes, k);
         ProbeTexels t = probeTexels(src, p, levels);
         if (deliotHeitz) {
             t.lo = deliotHeitzTexel(t.lo, averageLo, hasCovariance);
