@@ -11,7 +11,7 @@ packages=(
   libtbb-dev nlohmann-json3-dev libcli11-dev libglm-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri glslang-tools
-  libglfw3-dev libimgui-dev xvfb xauth libpng-dev libwebp-dev
+  libglfw3-dev libimgui-dev xvfb xauth libpng-dev libwebp-dev libgif-dev
   libplplot-dev plplot-driver-cairo libpango1.0-dev libcairo2-dev fonts-dejavu-core libjs-chart.js
   clang-14 libclang-rt-14-dev
   chromium

@@ -8,6 +8,7 @@
 #include "common.h"
 #include "progress.h"
 #include "shadertoy_flags.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/gpu/shadertoy.h"
 #include "stochtex/studies/frame_analysis.h"
 
@@ -25,8 +26,9 @@ void registerShadertoy(CLI::App& app) {
     auto* cmd = app.add_subcommand("shadertoy", "Run a ShaderToy program (Common, Buffer A-D, Image) headless");
     cmd->add_option("program", args->program, "A folder (image.glsl, common.glsl, buffer_a.glsl, ...; shadertoy.json) "
                                               "or a manifest .json (docs/SHADERTOY.md)")->required();
-    cmd->add_option("-o,--output", args->output, "An image (the last frame, or with --sheet all frames), an .mp4, or a "
-                                                 "folder (frame_NNNN.png; with --analyse the report)");
+    cmd->add_option("-o,--output", args->output,
+                    std::string("An image (the last frame, or with --sheet all frames; ") + kImageOutputFormats +
+                        "), or the frames as " + kSequenceOutputHelp + "; with --analyse the report's folder");
     addShadertoyFlags(*cmd, args->flags);
     cmd->add_option("--frames", args->frames, "Frames rendered from frame 0 (iFrame 0 at --time); with --analyse, "
                                               "the frames analysed from --first-frame");

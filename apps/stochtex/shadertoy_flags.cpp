@@ -95,6 +95,14 @@ FrameOutputs::FrameOutputs(std::string output, bool sheet, int frames, const Sha
     if (frames < 1 || frames > 1000000) throw InputError("--frames: must be in [1, 1000000], got " + std::to_string(frames));
     if (sheet_ && !image_) throw InputError("--sheet: needs an image output");
     if (image_) checkImageOutput(output_);
+    // Refused before any frame is rendered: an extension that is neither an
+    // image nor a sequence's (a folder has none).
+    if (!output_.empty() && !image_) try {
+            sequenceFormat(output_);
+        } catch (const InputError&) {
+            throw InputError("-o " + output_ + ": expected an image (" + kImageOutputFormats + ") or " +
+                             kSequenceOutputHelp);
+        }
     if (sheet_) checkSheet(frames, settings.width, settings.height);
 }
 

@@ -1,5 +1,5 @@
 // stochtex zoom: frames of the stationary zoom texture (thesis eq. 2.1) as
-// PNGs plus zoom.mp4 in a folder, or one MP4 when -o ends in .mp4.
+// PNGs plus zoom.mp4 in a folder, or one file by -o's extension (.mp4, .webm, .webp, .gif).
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -24,8 +24,9 @@ void registerZoom(CLI::App& app) {
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("zoom", "Frames of the stationary zoom texture (thesis eq. 2.1, 2.2, 2.5)");
     addOutputFolderFlag(*cmd, args->dir,
-                        "Output: a folder for frame_NNNN.png and zoom.mp4 (an interrupted run leaves the frames "
-                        "written so far), or NAME.mp4 for the video alone");
+                        std::string("Output: a folder for frame_NNNN.png and zoom.mp4 (H.264; an interrupted run "
+                                    "leaves the frames written so far), or one file: ") +
+                            kSequenceOutputHelp);
     cmd->add_option("--frames", args->frames, "Number of frames")->check(CLI::Range(1, 100000));
     cmd->add_option("--fps", args->fps, "Frames per second (time step 1/fps × speed)");
     cmd->add_option("--speed", args->speed, "Time units t per second of video");
@@ -38,7 +39,7 @@ void registerZoom(CLI::App& app) {
         if (!std::isfinite(args->speed)) throw InputError("--speed must be finite");
         const int w = args->size[0], h = args->size.size() > 1 ? args->size[1] : args->size[0];
         if (w < 1 || h < 1 || w > 8192 || h > 8192) throw InputError("--size must be in [1, 8192] per side");
-        if (args->noVideo && isVideoPath(args->dir)) throw InputError("--no-video: -o " + args->dir + " is a video");
+        if (args->noVideo && isVideoPath(args->dir)) throw InputError("--no-video: -o " + args->dir + " is one file of frames, not a folder");
         const ZoomSource source(makeZoomParams(args->zoom), makeZoomBase(args->zoom));
         const double t0 = source.params().time;
         const auto frameTime = [&](int k) { return t0 + k / args->fps * args->speed; };

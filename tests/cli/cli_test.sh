@@ -34,7 +34,7 @@ expect_bad() {
   grep -qF -- "$fragment" "$work/err.txt" || fail "$what: message lacks '$fragment': $(cat "$work/err.txt")"
   [ "$(wc -l <"$work/err.txt")" -le 2 ] || fail "$what: more than one message: $(cat "$work/err.txt")"
   [ ! -e "$file" ] || fail "$what: $file was left behind"
-  if ls -a "$(dirname "$file")" 2>/dev/null | grep -qE '\.tmp(\.mp4)?$'; then fail "$what: temporary file left behind"; fi
+  if ls -a "$(dirname "$file")" 2>/dev/null | grep -qE '\.tmp(\.(mp4|webm|gif))?$'; then fail "$what: temporary file left behind"; fi
 }
 
 out=$work/out
@@ -317,6 +317,15 @@ case_shadertoy() {
   expect_ok "shadertoy sheet" "$out/sts.png" -- "$bin" shadertoy "$work/st" --size 32,16 --frames 5 --sheet -o "$out/sts.png"
   expect_ok "shadertoy video" "$out/st.mp4" -- "$bin" shadertoy "$work/st" --size 32,16 --frames 8 --fps 24 -o "$out/st.mp4"
   expect_ok "shadertoy frames" "$out/stf/frame_0002.png" -- "$bin" shadertoy "$work/st" --size 32,16 --frames 3 -o "$out/stf"
+  # The output's extension says what is written: one file each, no folder.
+  for ext in gif webp webm; do
+    expect_ok "shadertoy -o st.$ext" "$out/st.$ext" -- "$bin" shadertoy "$work/st" --size 32,16 --frames 6 --fps 24 -o "$out/st.$ext"
+    [ -f "$out/st.$ext" ] || fail "shadertoy -o st.$ext: not a file"
+  done
+  head -c 6 "$out/st.gif" | grep -q "GIF89a" || fail "shadertoy -o st.gif: not a GIF89a"
+  head -c 16 "$out/st.webp" | grep -q "WEBPVP8X" || fail "shadertoy -o st.webp: not an extended (animated) WebP"
+  expect_bad "shadertoy unknown extension" "$out/st.avi" "st.avi: expected an image (.png" -- "$bin" shadertoy "$work/st" --size 32,16 --frames 2 -o "$out/st.avi"
+  expect_bad "zoom unknown extension" "$out/z.mov" "cannot write frames as \".mov\"" -- "$bin" zoom --frames 2 --size 16 -o "$out/z.mov"
   "$bin" shadertoy "$work/st" --size 32,16 --frames 7 --inspect buffer_a:3,4 >"$work/inspect.txt" 2>&1 || fail "shadertoy inspect: $(cat "$work/inspect.txt")"
   grep -q "^buffer_a (3, 4) at iFrame 6: 7 0 0 0$" "$work/inspect.txt" || fail "shadertoy inspect: $(cat "$work/inspect.txt")"
   printf 'void mainImage(out vec4 c, in vec2 p) {\n  c = vec4(nope);\n}\n' >"$work/st/broken.glsl"

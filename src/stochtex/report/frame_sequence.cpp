@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <vector>
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 #include <stdexcept>
@@ -12,56 +13,147 @@
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/report/animated_gif.h"
 #include "stochtex/report/animated_preview.h"
 #include "stochtex/report/page.h"
 
 namespace stochtex {
 namespace fs = std::filesystem;
 
-bool isVideoPath(const std::string& path) {
+SequenceFormat sequenceFormat(const std::string& path) {
+    if (path.empty()) throw InputError("output path is empty");
+    if (path.back() == '/') return SequenceFormat::Folder;
     std::string ext = fs::path(path).extension().string();
     for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".mp4";
+    if (ext.empty()) return SequenceFormat::Folder;
+    if (ext == ".mp4") return SequenceFormat::Mp4;
+    if (ext == ".webm") return SequenceFormat::WebM;
+    if (ext == ".webp") return SequenceFormat::AnimatedWebp;
+    if (ext == ".gif") return SequenceFormat::Gif;
+    throw InputError(path + ": cannot write frames as \"" + ext + "\" (expected " + kSequenceOutputHelp + ")");
 }
 
+bool isVideoPath(const std::string& path) { return sequenceFormat(path) != SequenceFormat::Folder; }
+
+namespace {
+
+// A codec OpenCV's FFmpeg backend is asked for by its tag.
+struct VideoCodec {
+    char tag[5];
+    const char* name;
+};
+
+}  // namespace
+
+// The encoder of the one file: a video (MP4, WebM) with its preview, an
+// animated WebP or an animated GIF.
 struct FrameSequenceWriter::Video {
-    // The encoder opens the temporary file by name; its ".mp4" ending picks the container.
-    std::unique_ptr<AtomicFile> file;
+    std::unique_ptr<AtomicFile> file;  // a video's: the encoder opens it by name, its ending picks the container
     cv::VideoWriter writer;
-    std::unique_ptr<AnimatedPreviewWriter> preview;
+    std::unique_ptr<AnimatedPreviewWriter> preview, webp;
+    std::unique_ptr<AnimatedGifWriter> gif;
+
+    // Opens the video; false when this FFmpeg build has none of the codecs.
+    bool openVideo(const std::string& path, SequenceFormat format, int width, int height, double fps) {
+        const std::string suffix = format == SequenceFormat::WebM ? ".tmp.webm" : ".tmp.mp4";
+        file = std::make_unique<AtomicFile>(path, suffix);
+        ::close(file->releaseDescriptor());
+        // H.264 (libx264) and VP9 (libvpx) are what browsers play; MPEG-4
+        // Part 2, FFmpeg's own encoder, is the last resort for an MP4.
+        const std::vector<VideoCodec> codecs = format == SequenceFormat::WebM
+                                                   ? std::vector<VideoCodec>{{"VP90", "VP9"}, {"VP80", "VP8"}}
+                                                   : std::vector<VideoCodec>{{"avc1", "H.264"}, {"mp4v", "MPEG-4 Part 2"}};
+        for (const VideoCodec& c : codecs) {
+            writer.open(file->tempPath(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc(c.tag[0], c.tag[1], c.tag[2], c.tag[3]),
+                        fps, cv::Size(width, height), true);
+            if (!writer.isOpened()) continue;
+            if (&c != &codecs.front())
+                std::fprintf(stderr, "note: %s: no %s encoder in this FFmpeg build; writing %s, which browsers may not play\n",
+                             path.c_str(), codecs.front().name, c.name);
+            return true;
+        }
+        file.reset();
+        return false;
+    }
+
+    void add(const Image& codes) {
+        if (webp) return webp->add(codes);
+        if (gif) return gif->add(codes);
+        if (codes.channels() != 1 && codes.channels() != 3)
+            throw std::invalid_argument("FrameSequenceWriter::write: 1- or 3-channel frames");
+        // 8-bit BGR, what the encoder takes; gray frames as equal channels.
+        cv::Mat m(codes.height(), codes.width(), CV_8UC3);
+        for (int y = 0; y < codes.height(); ++y) {
+            const float* src = codes.row(y);
+            auto* dst = m.ptr<cv::Vec3b>(y);
+            for (int x = 0; x < codes.width(); ++x) {
+                for (int c = 0; c < 3; ++c) {
+                    const float v = codes.channels() == 1 ? src[x] : src[3 * x + (2 - c)];
+                    dst[x][c] = uchar(std::lround(255.0f * std::clamp(v, 0.0f, 1.0f)));
+                }
+            }
+        }
+        writer.write(m);
+        preview->add(codes);
+    }
+
+    std::string finish() {
+        if (webp) return webp->finish();
+        if (gif) return gif->finish();
+        writer.release();
+        preview->finish();
+        file->commit();
+        return file->path();
+    }
 };
 
 FrameSequenceWriter::FrameSequenceWriter(const std::string& output, int width, int height, double fps,
                                          const std::string& videoName, Transfer transfer)
-    : transfer_(transfer), video_(std::make_unique<Video>()) {
-    std::string videoPath;
-    if (isVideoPath(output)) {
-        videoPath = output;
+    : transfer_(transfer) {
+    std::string path;
+    SequenceFormat format = sequenceFormat(output);
+    if (format != SequenceFormat::Folder) {
+        path = output;
     } else {
+        if (!videoName.empty()) {
+            format = sequenceFormat(videoName);
+            if (format != SequenceFormat::Mp4 && format != SequenceFormat::WebM)
+                throw std::invalid_argument("FrameSequenceWriter: the video beside frames is an .mp4 or a .webm");
+            path = (fs::path(output) / videoName).string();
+        }
         dir_ = output;
         ensureFolder(dir_);
-        if (!videoName.empty()) videoPath = (fs::path(dir_) / videoName).string();
     }
-    if (videoPath.empty()) return;
-    video_->file = std::make_unique<AtomicFile>(videoPath, ".tmp.mp4");
-    ::close(video_->file->releaseDescriptor());
-    // MPEG-4 part 2: FFmpeg's own encoder, present in every FFmpeg build.
-    video_->writer.open(video_->file->tempPath(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), fps,
-                        cv::Size(width, height), true);
-    if (video_->writer.isOpened()) {
-        previewPath_ = fs::path(videoPath).replace_extension(".webp").string();
-        video_->preview = std::make_unique<AnimatedPreviewWriter>(previewPath_, width, height, fps);
-        return;
+    if (path.empty()) return;
+    auto video = std::make_unique<Video>();
+    switch (format) {
+        case SequenceFormat::AnimatedWebp:
+            // Full size, near-transparent quality: the clip itself, not a preview.
+            video->webp = std::make_unique<AnimatedPreviewWriter>(path, width, height, fps, std::max(width, height), 90.0f);
+            break;
+        case SequenceFormat::Gif:
+            video->gif = std::make_unique<AnimatedGifWriter>(path, width, height, fps);
+            break;
+        case SequenceFormat::Mp4:
+        case SequenceFormat::WebM:
+            if (!video->openVideo(path, format, width, height, fps)) {
+                if (dir_.empty()) throw InputError(output + ": cannot write this video (OpenCV has no FFmpeg encoder for it here)");
+                std::fprintf(stderr, "note: no video encoder available in this OpenCV build; writing PNG frames only\n");
+                return;
+            }
+            previewPath_ = fs::path(path).replace_extension(".webp").string();
+            video->preview = std::make_unique<AnimatedPreviewWriter>(previewPath_, width, height, fps);
+            break;
+        case SequenceFormat::Folder:
+            break;
     }
-    if (dir_.empty()) throw InputError(output + ": cannot write MP4 (OpenCV has no FFmpeg MP4 encoder here)");
-    std::fprintf(stderr, "note: no MP4 encoder available in this OpenCV build; writing PNG frames only\n");
-    video_->file.reset();
+    video_ = std::move(video);
 }
 
 FrameSequenceWriter::~FrameSequenceWriter() = default;
 
 void FrameSequenceWriter::write(const Image& linearFrame) {
-    // Encoded once for the PNG frame and the video alike.
+    // Encoded once for the PNG frame and the file alike.
     const Image frame = encodeTransfer(linearFrame, transfer_);
     if (!dir_.empty()) {
         char name[32];
@@ -69,31 +161,14 @@ void FrameSequenceWriter::write(const Image& linearFrame) {
         writeImage((fs::path(dir_) / name).string(), frame, kNoTransfer);
     }
     ++count_;
-    if (!video_->file) return;
-    if (frame.channels() != 1 && frame.channels() != 3)
-        throw std::invalid_argument("FrameSequenceWriter::write: 1- or 3-channel frames");
-    // 8-bit BGR, what the encoder takes; gray frames as equal channels.
-    cv::Mat m(frame.height(), frame.width(), CV_8UC3);
-    for (int y = 0; y < frame.height(); ++y) {
-        const float* src = frame.row(y);
-        auto* dst = m.ptr<cv::Vec3b>(y);
-        for (int x = 0; x < frame.width(); ++x) {
-            for (int c = 0; c < 3; ++c) {
-                const float v = frame.channels() == 1 ? src[x] : src[3 * x + (2 - c)];
-                dst[x][c] = uchar(std::lround(255.0f * std::clamp(v, 0.0f, 1.0f)));
-            }
-        }
-    }
-    video_->writer.write(m);
-    video_->preview->add(frame);
+    if (video_) video_->add(frame);
 }
 
 std::string FrameSequenceWriter::finish() {
-    if (!video_->file) return "";
-    video_->writer.release();
-    video_->preview->finish();
-    video_->file->commit();
-    return video_->file->path();
+    if (!video_) return "";
+    const std::string path = video_->finish();
+    video_.reset();
+    return path;
 }
 
 FrameSequenceSet::FrameSequenceSet(const std::string& dir, const std::vector<std::string>& names, int width, int height,

@@ -1,12 +1,18 @@
 #pragma once
-// A frame sequence on disk, by the output path's form:
-// * `NAME.mp4`: one MP4 video (MPEG-4 through OpenCV's videoio / FFmpeg),
-//   written to a temporary file and renamed by finish();
-// * a folder: frame_NNNN.png for every frame, plus `<video name>` (an MP4)
-//   when asked for and an encoder is available.
-// Beside every MP4 goes its animated preview for HTML pages, the same name
-// ending in .webp (report/animated_preview.h).
-// Every frame is checked and encoded as it comes, so memory is one frame.
+// A frame sequence on disk, by the output path's extension (sequenceFormat):
+// * `NAME.mp4`: an H.264 video (OpenCV's videoio → FFmpeg → libx264), what
+//   browsers, repository previews and paper pages play;
+// * `NAME.webm`: a VP9 video (libvpx), the same for a WebM;
+// * `NAME.webp`: an animated WebP at full size (libwebp);
+// * `NAME.gif`: an animated GIF (giflib; 256 colours a frame);
+// * a path without extension, or ending in '/': a folder of frame_NNNN.png,
+//   plus `<video name>` when asked for and an encoder is available.
+// Any other extension is refused. Single files are written to a temporary
+// file and moved into place by finish(). Beside every MP4 or WebM goes its
+// animated preview for HTML pages, the same name ending in .webp
+// (report/animated_preview.h).
+// Every frame is checked and encoded as it comes (an animated WebP keeps its
+// compressed frames until finish()).
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,32 +22,42 @@
 
 namespace stochtex {
 
-// True when the path names an MP4 file (ends in .mp4, any case).
+enum class SequenceFormat { Folder, Mp4, WebM, AnimatedWebp, Gif };
+// The format a path asks for (extension in any case). InputError naming the
+// path for an extension that is none of the above.
+SequenceFormat sequenceFormat(const std::string& path);
+// For --help: the forms of a frame-sequence output and their codecs.
+inline constexpr const char* kSequenceOutputHelp =
+    "a folder of PNG frames (no extension, or ending in /), NAME.mp4 (H.264), NAME.webm (VP9), NAME.webp (animated "
+    "WebP) or NAME.gif (animated GIF, 256 colours a frame)";
+// True when the path names one file of frames (.mp4, .webm, .webp, .gif);
+// false for a folder. InputError for another extension, as sequenceFormat.
 bool isVideoPath(const std::string& path);
 
 class FrameSequenceWriter {
 public:
-    // output: an .mp4 path or a folder (created if missing). videoName: the
-    // MP4 beside the frames in folder mode ("" for PNG frames only). Throws
-    // InputError when an .mp4 is asked for and cannot be opened. transfer: of
+    // output: a file path (sequenceFormat) or a folder (created if missing).
+    // videoName: the video beside the frames in folder mode, NAME.mp4 or
+    // NAME.webm ("" for PNG frames only). Throws InputError when a file is
+    // asked for and cannot be opened. transfer: of
     // the frames' 8-bit codes (PNG and video), as WriteOptions::transfer:
     // Srgb for colour renders, Linear for data such as zoom-texture values.
     FrameSequenceWriter(const std::string& output, int width, int height, double fps, const std::string& videoName,
                         Transfer transfer = Transfer::Srgb);
     ~FrameSequenceWriter();
     void write(const Image& frame);  // 1 (gray) or 3 (RGB) channels, [0, 1], width × height
-    // Closes the MP4 and its preview and moves them into place; returns the
-    // MP4's path, or "" when none was written.
+    // Closes the file (and an MP4's or WebM's preview) and moves it into
+    // place; returns its path, or "" when none was written.
     std::string finish();
     // The animated preview's path ("" without a video).
     const std::string& previewPath() const { return previewPath_; }
 
 private:
     struct Video;
-    std::string dir_;  // "" in video-only mode
+    std::string dir_;  // "" in single-file mode
     int count_ = 0;
     Transfer transfer_;
-    std::unique_ptr<Video> video_;
+    std::unique_ptr<Video> video_;  // the file's encoder (none: PNG frames only)
     std::string previewPath_;
 };
 
