@@ -499,6 +499,20 @@ JSON
   d=$("$compare" "$out/wb.png" "$out/wbp.png") || { fail "workbench: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 >= 5) }' || fail "workbench: the colour edit does not show: $d vs the preset"
 
+  # Keys tapped within one frame are applied (a tap shorter than a frame was
+  # lost before): "1" switches to no filtering, which at scale 8 aliases far
+  # from the default smooth filter.
+  printf '[{"frame": 1, "key": "1"}]' >"$work/keys.json"
+  expect_ok "workbench key tap" "$out/wbk.png" -- "${xvfb[@]}" "$bin" view --preset camouflage --size 96,64 --scale 8 --frames 3 --script "$work/keys.json" --screenshot "$out/wbk.png"
+  expect_ok "render unfiltered" "$out/wbkn.png" -- "$bin" render --preset camouflage --size 96,64 --scale 8 --filter none -o "$out/wbkn.png"
+  expect_ok "render smooth" "$out/wbks.png" -- "$bin" render --preset camouflage --size 96,64 --scale 8 --filter smooth -o "$out/wbks.png"
+  d=$("$compare" "$out/wbk.png" "$out/wbkn.png") || { fail "workbench key: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5) }' || fail "workbench after tapping 1 vs render --filter none: $d (want mean <= 0.5)"
+  d=$("$compare" "$out/wbk.png" "$out/wbks.png") || { fail "workbench key: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 >= 5) }' || fail "workbench after tapping 1 is still the smooth filter's: $d"
+  printf '[{"frame": 1, "key": "ctrl+alt+q"}]' >"$work/badkey.json"
+  expect_bad "workbench unknown key" "$out/wbkb.png" "unknown key \"ctrl+alt+q\"" -- "$bin" view --preset camouflage --frames 3 --script "$work/badkey.json" --screenshot "$out/wbkb.png"
+
   # Undo and redo: a second colour, both edits undone, the first redone: the
   # picture and the saved file are the first edit's again.
   cat >"$work/undo.json" <<'JSON'

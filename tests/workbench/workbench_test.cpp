@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <numbers>
+#include <sstream>
 
 #include "stochtex/core/hash.h"
 #include "stochtex/image/colour_space.h"
@@ -19,6 +21,7 @@
 #include "stochtex/pattern/presets.h"
 #include "stochtex/workbench/document.h"
 #include "stochtex/workbench/editors.h"
+#include "stochtex/workbench/json_layout.h"
 #include "stochtex/workbench/live_analysis.h"
 #include "stochtex/workbench/script.h"
 #include "test_util.h"
@@ -184,6 +187,74 @@ TEST(WorkbenchDocument, SavingKeepsImagePathsValidAndReloadFollowsTheFile) {
     writeText(file, "{\"size\": ");
     EXPECT_THROW(d.reload(), InputError);
     EXPECT_EQ(d.json()["seed"], 42);
+}
+
+// Saving an edit changes the edited line alone: the file's key order,
+// spacing, one-line objects and wrapped lines stay (issue: Save JSON sorted
+// every key, so one number diffed the whole file).
+TEST(WorkbenchDocument, SavingAnEditChangesOnlyItsLine) {
+    TempDir dir;
+    const std::string text = R"({
+  "size": 64,
+  "seed": 7,
+  "colormap": {"type": "painted", "background": "#102030",
+               "shapes": [{"shape": "rectangle", "min": [0.3, -1], "max": [2, 2], "colour": "#c04020"}]},
+  "noise_y": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 12}]},
+  "noise_x": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 8}]}
+}
+)";
+    const fs::path file = dir.path / "p.json";
+    writeText(file, text);
+    WorkbenchDocument d = WorkbenchDocument::patternFile(file.string());
+    auto lines = [](const std::string& t) {
+        std::vector<std::string> out;
+        std::istringstream in(t);
+        for (std::string line; std::getline(in, line);) out.push_back(line);
+        return out;
+    };
+    auto savedText = [&] {
+        std::ifstream in(file);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    d.save(file.string());
+    EXPECT_EQ(savedText(), text) << "an unedited document is written back byte for byte";
+
+    d.set("/noise_x/components/0/cutoff", 9);
+    d.save(file.string());
+    const std::vector<std::string> before = lines(text), after = lines(savedText());
+    ASSERT_EQ(after.size(), before.size());
+    for (size_t k = 0; k < before.size(); ++k)
+        if (k == 6)
+            EXPECT_EQ(after[k], R"(  "noise_x": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 9}]})");
+        else
+            EXPECT_EQ(after[k], before[k]) << "line " << k + 1;
+
+    // A new member goes after the ones the object had, in its layout.
+    d.set("/noise_y/components/0/weight", 2);
+    d.save(file.string());
+    EXPECT_EQ(lines(savedText())[5],
+              R"(  "noise_y": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 12, "weight": 2}]},)");
+    EXPECT_EQ(json::parse(savedText()), d.json());
+}
+
+// Every shipped pattern and graph file is written back byte for byte, and
+// an edit anywhere in it parses back to the edited document.
+TEST(JsonLayout, ShippedFilesRoundTripAndEditsParseBack) {
+    int files = 0;
+    for (const char* folder : {"presets", "graphs"})
+        for (const auto& e : fs::directory_iterator(fs::path(STOCHTEX_DATA_DIR) / folder)) {
+            if (e.path().extension() != ".json") continue;
+            std::ifstream in(e.path());
+            const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            json value = json::parse(text);
+            EXPECT_EQ(layoutLike(value, text), text) << e.path();
+            value["seed"] = 12345;
+            value["added"] = {{"a", {1, 2}}, {"b", "c"}};
+            const std::string edited = layoutLike(value, text);
+            EXPECT_EQ(json::parse(edited), value) << e.path();
+            ++files;
+        }
+    EXPECT_GE(files, 10);
 }
 
 TEST(WorkbenchDocument, AProgramWatchesItsPassFiles) {
@@ -411,6 +482,23 @@ TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {
     EXPECT_NE(message(R"([{"mode": "quad"}])").find("/0/mode: unknown value \"quad\""), std::string::npos);
     EXPECT_NE(message(R"([{"filter": "reference"}])").find("/0/filter"), std::string::npos);
     EXPECT_NE(message(R"({"zoom": 2})").find("expected an array"), std::string::npos);
+}
+
+// A key step names a key as the help does; it becomes GLFW's key and modifiers.
+TEST(WorkbenchScript, KeysAreNamedAsOnTheKeyboard) {
+    const std::vector<WorkbenchStep> steps = parseWorkbenchScript(
+        json::parse(R"([{"key": "V"}, {"key": "f12"}, {"key": "Ctrl+Shift+Z"}, {"key": "]"}, {"key": "7"}])"), "s.json");
+    ASSERT_EQ(steps.size(), 5u);
+    EXPECT_EQ(steps[0].action, WorkbenchStep::Action::Key);
+    EXPECT_EQ(steps[0].key, 86);   // GLFW_KEY_V
+    EXPECT_EQ(steps[1].key, 301);  // GLFW_KEY_F12
+    EXPECT_EQ(steps[2].key, 90);   // GLFW_KEY_Z
+    EXPECT_EQ(steps[2].mods, 0x3);  // GLFW_MOD_SHIFT | GLFW_MOD_CONTROL
+    EXPECT_EQ(steps[3].key, 93);   // GLFW_KEY_RIGHT_BRACKET
+    EXPECT_EQ(steps[4].key, 55);   // GLFW_KEY_7
+    EXPECT_EQ(steps[0].mods, 0);
+    for (const char* bad : {"f13", "f01", "alt+v", "vv", ""})
+        EXPECT_THROW(parseKeyChord(bad), InputError) << bad;
 }
 
 // Stripes of a known frequency: the spectrum's brightest pixels sit at ±f

@@ -255,7 +255,9 @@ NormalMapSpec parseNormalMapSpec(const JsonReader& r, const fs::path& baseDir) {
     return spec;
 }
 
-nlohmann::json readJsonFile(const std::string& path) {
+nlohmann::json readJsonFile(const std::string& path) { return JsonReader::parse(readJsonText(path), path); }
+
+std::string readJsonText(const std::string& path) {
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder, not a JSON file");
     if (!fs::exists(path, ec)) throw InputError(path + ": no such file");
@@ -267,7 +269,7 @@ nlohmann::json readJsonFile(const std::string& path) {
     if (!in) throw InputError(path + ": cannot open file");
     std::stringstream ss;
     ss << in.rdbuf();
-    return JsonReader::parse(ss.str(), path);
+    return ss.str();
 }
 
 Image buildExampleImage(const NoiseSpec& spec, const std::string& context) {

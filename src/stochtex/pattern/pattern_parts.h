@@ -32,6 +32,9 @@ NormalMapSpec parseNormalMapSpec(const JsonReader& r, const std::filesystem::pat
 LeanShading validatedShading(LeanShading s);
 
 // Reads a file (InputError if missing) and parses it as JSON.
+// The text of a JSON file, with readJsonFile's checks before reading (a
+// folder, a missing file, a file too large), not yet parsed.
+std::string readJsonText(const std::string& path);
 nlohmann::json readJsonFile(const std::string& path);
 
 // The example image (1 channel, W×W, values in [0,1]) as specified,

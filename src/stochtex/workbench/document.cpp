@@ -6,7 +6,9 @@
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/pattern_parts.h"
 #include "stochtex/pattern/presets.h"
+#include "stochtex/workbench/json_layout.h"
 
 namespace stochtex {
 
@@ -44,7 +46,8 @@ WorkbenchDocument WorkbenchDocument::preset(const std::string& name) {
     WorkbenchDocument d;
     d.source_ = "preset " + name;
     d.presetName_ = name;
-    d.json_ = JsonReader::parse(presetText(name), d.source_);
+    d.text_ = presetText(name);
+    d.json_ = JsonReader::parse(d.text_, d.source_);
     d.baseDir_ = ".";
     d.patternSpec();  // a preset always parses; checked all the same
     return d;
@@ -54,7 +57,8 @@ WorkbenchDocument WorkbenchDocument::patternFile(const std::string& path) {
     WorkbenchDocument d;
     d.source_ = path;
     d.path_ = path;
-    d.json_ = readJsonFile(path);
+    d.text_ = readJsonText(path);
+    d.json_ = JsonReader::parse(d.text_, path);
     d.baseDir_ = fs::path(path).parent_path();
     if (d.baseDir_.empty()) d.baseDir_ = ".";
     d.patternSpec();
@@ -147,8 +151,11 @@ void WorkbenchDocument::save(const std::string& path) {
             const fs::path p = value.get<std::string>();
             if (p.is_relative()) value = fs::absolute(baseDir_ / p).lexically_normal().string();
         });
-    writeFileAtomic(path, out.dump(2) + "\n");
+    // Laid out as the file was, so that an edit's diff is the edit alone.
+    const std::string text = text_.empty() ? out.dump(2) + "\n" : layoutLike(out, text_);
+    writeFileAtomic(path, text);
     if (!path_.empty() && fs::equivalent(path, path_, ec)) {
+        text_ = text;
         edited_ = false;
         watch(watched_);  // our own write is not a change on disk
     }

@@ -66,7 +66,9 @@ public:
     bool canUndo() const;
     bool canRedo() const;
 
-    // Writes the pattern as JSON (atomically); a file's relative paths stay
+    // Writes the pattern as JSON (atomically), laid out as it was read
+    // (layoutLike: key order, spacing and line breaks kept where the values
+    // did not change); a file's relative paths stay
     // valid only beside the file, so paths are written absolute when the
     // target is in another folder. Clears edited() when it is the source file.
     void save(const std::string& path);
@@ -89,6 +91,7 @@ private:
     std::string source_, presetName_;
     std::filesystem::path path_, baseDir_;
     nlohmann::json json_;
+    std::string text_;  // the pattern's text as read (or last saved to its file): how saving lays it out
     ShadertoySpec shadertoy_;
     bool edited_ = false;
     std::vector<nlohmann::json> undo_, redo_;

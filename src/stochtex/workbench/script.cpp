@@ -1,10 +1,40 @@
 #include "stochtex/workbench/script.h"
 
+#include <GLFW/glfw3.h>
+
+#include <cctype>
+#include <tuple>
+
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/workbench/live_analysis.h"
 
 namespace stochtex {
+
+std::pair<int, int> parseKeyChord(const std::string& text) {
+    std::string rest;
+    for (const char c : text) rest += char(std::tolower(static_cast<unsigned char>(c)));
+    int mods = 0;
+    for (auto [prefix, bit] : {std::pair{"ctrl+", GLFW_MOD_CONTROL}, {"shift+", GLFW_MOD_SHIFT}})
+        if (rest.rfind(prefix, 0) == 0) mods |= bit, rest.erase(0, std::string(prefix).size());
+    if (rest.rfind("shift+", 0) == 0) mods |= GLFW_MOD_SHIFT, rest.erase(0, 6);  // "ctrl+shift+z"
+    int key = -1;
+    if (rest.size() == 1 && std::isalpha(static_cast<unsigned char>(rest[0]))) key = GLFW_KEY_A + (rest[0] - 'a');
+    if (rest.size() == 1 && std::isdigit(static_cast<unsigned char>(rest[0]))) key = GLFW_KEY_0 + (rest[0] - '0');
+    if (rest.size() >= 2 && rest.size() <= 3 && rest[0] == 'f' && std::isdigit(static_cast<unsigned char>(rest[1]))) {
+        const int n = std::stoi(rest.substr(1));
+        if (n >= 1 && n <= 12 && std::to_string(n) == rest.substr(1)) key = GLFW_KEY_F1 + n - 1;
+    }
+    for (auto [name, code] : {std::pair{"tab", GLFW_KEY_TAB}, {"escape", GLFW_KEY_ESCAPE}, {"space", GLFW_KEY_SPACE},
+                              {"enter", GLFW_KEY_ENTER}, {"up", GLFW_KEY_UP}, {"down", GLFW_KEY_DOWN},
+                              {"left", GLFW_KEY_LEFT}, {"right", GLFW_KEY_RIGHT}, {"[", GLFW_KEY_LEFT_BRACKET},
+                              {"]", GLFW_KEY_RIGHT_BRACKET}})
+        if (rest == name) key = code;
+    if (key < 0)
+        throw InputError("unknown key \"" + text + "\" (a letter, a digit, F1-F12, tab, escape, space, enter, "
+                         "up, down, left, right, [ or ], after ctrl+ or shift+)");
+    return {key, mods};
+}
 
 std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, const std::string& source) {
     const JsonReader r(script, source);
@@ -17,7 +47,7 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
         const JsonReader s = r.at(i);
         s.expectObject({"frame", "zoom", "at", "pan", "filter", "aniso", "set", "value", "mode", "analysis", "view",
                         "tilt", "pick", "pause", "screenshot", "save", "record", "stop_recording", "undo", "redo",
-                        "quit"});
+                        "key", "quit"});
         WorkbenchStep step;
         if (s.has("frame")) {
             const int f = s.integer("frame", 0, 0, 1000000);
@@ -52,6 +82,14 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
         if (auto a = s.find("analysis"))
             ++actions, step.action = A::Analysis, step.text = enumName(kLiveAnalysisNames, a->choice(kLiveAnalysisNames));
         if (auto v = s.find("view")) ++actions, step.action = A::View, step.text = enumName(kWorkbenchViewNames, v->choice(kWorkbenchViewNames));
+        if (auto k = s.find("key")) {
+            ++actions, step.action = A::Key, step.text = k->string();
+            try {
+                std::tie(step.key, step.mods) = parseKeyChord(step.text);
+            } catch (const InputError& e) {
+                k->fail(e.what());
+            }
+        }
         if (auto p = s.find("pause")) ++actions, step.action = A::Pause, step.amount = s.boolean("pause", true);
         for (auto [key, action] : {std::pair{"screenshot", A::Screenshot}, {"save", A::Save}, {"record", A::Record}})
             if (auto f = s.find(key)) {

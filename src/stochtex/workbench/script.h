@@ -12,11 +12,14 @@
 //    {"mode": "split"}, {"analysis": "flow"}, {"pick": [40, 30]},
 //    {"view": "plane"}, {"tilt": 60}, {"pause": true},
 //    {"screenshot": "a.png"}, {"save": "edited.json"},
-//    {"record": "clip.mp4"}, {"stop_recording": true}, {"quit": true}]
+//    {"record": "clip.mp4"}, {"stop_recording": true},
+//    {"key": "V"}, {"key": "ctrl+z"},                 // a key tapped within one frame
+//    {"quit": true}]
 //
 // A step without "frame" runs at the frame of the step before it; frames
-// never go back.
+// never go back. A step does one action.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -44,14 +47,20 @@ inline const EnumNames<WorkbenchView> kWorkbenchViewNames{{"zoom", WorkbenchView
 struct WorkbenchStep {
     enum class Action {
         Zoom, Pan, Filter, Aniso, Set, Undo, Redo, Mode, Analysis, View, Tilt, Pick, Pause, Screenshot, Save,
-        Record, StopRecording, Quit
+        Record, StopRecording, Key, Quit
     };
     int frame = 0;
     Action action = Action::Quit;
     double x = 0, y = 0, amount = 1;  // zoom: factor at (x, y); pan, pick: (x, y); aniso, tilt: amount
+    int key = 0, mods = 0;            // key: the GLFW key and modifier bits, pressed and released in one frame
     std::string text;                 // a name (filter, mode, analysis, view), a JSON pointer or a file
     nlohmann::json value;             // set: the value
 };
+
+// A key as a script names it: a letter, a digit, F1–F12, tab, escape,
+// space, enter, up, down, left, right, [ or ], after any of "ctrl+",
+// "shift+" (any case). The GLFW key and modifier bits; InputError otherwise.
+std::pair<int, int> parseKeyChord(const std::string& text);
 
 // InputError naming the source and the JSON pointer of a bad step.
 std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, const std::string& source);

@@ -130,6 +130,13 @@ public:
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
         ImGui::StyleColorsDark();
         loadFont();
+        // Every key event is queued before ImGui sees it (its backend chains
+        // to this callback): ImGui 1.86 keeps only whether a key is down at
+        // each frame, so a tap shorter than a frame was lost at low frame rates.
+        glfwSetWindowUserPointer(window_, this);
+        glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) {
+            static_cast<Workbench*>(glfwGetWindowUserPointer(w))->keyEvents_.push_back({key, action, mods});
+        });
         ImGui_ImplGlfw_InitForOpenGL(window_, true);
         ImGui_ImplOpenGL3_Init("#version 330");
         display_ = std::make_unique<TextureDisplay>();
@@ -777,6 +784,10 @@ private:
                 rebuild();
                 if (!error_.empty()) throw InputError(error_);
                 break;
+            case A::Key:  // a tap within one frame, as the window's callback queues it
+                keyEvents_.push_back({s.key, GLFW_PRESS, s.mods});
+                keyEvents_.push_back({s.key, GLFW_RELEASE, s.mods});
+                break;
             case A::Quit: quit_ = true; break;
         }
     }
@@ -809,8 +820,20 @@ private:
                     mouse_[2] = -std::abs(mouse_[2]);
             }
         }
+        // The key events since the last frame, each applied in order (a
+        // text field being edited takes them all).
+        const std::vector<KeyEvent> events = std::exchange(keyEvents_, {});
         if (io.WantCaptureKeyboard) return;
-        auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+        for (const KeyEvent& e : events) applyKey(e);
+    }
+
+    struct KeyEvent {
+        int key, action, mods;  // GLFW's
+    };
+
+    void applyKey(const KeyEvent& e) {
+        const bool press = e.action == GLFW_PRESS, ctrl = (e.mods & GLFW_MOD_CONTROL) != 0;
+        auto pressed = [&](int key) { return press && e.key == key; };
         if (pressed(GLFW_KEY_ESCAPE)) quit_ = true;
         if (pressed(GLFW_KEY_TAB)) showPanel_ = !showPanel_;
         if (pressed(GLFW_KEY_F1)) showHelp_ = !showHelp_;
@@ -818,23 +841,19 @@ private:
         if (pressed(GLFW_KEY_F3)) recorder_ ? stopRecording() : startRecording(freshName("stochtex-recording", ".mp4"));
         if (pressed(GLFW_KEY_F4)) paused_ = !paused_;
         if (pressed(GLFW_KEY_F5)) reloadDocument();
-        if (io.KeyCtrl && pressed(GLFW_KEY_S)) saveDefault();
-        if (io.KeyCtrl && !isShadertoy()) {
-            if (pressed(GLFW_KEY_Z)) io.KeyShift ? redo() : undo();
+        if (ctrl && pressed(GLFW_KEY_S)) saveDefault();
+        if (ctrl && !isShadertoy()) {
+            if (pressed(GLFW_KEY_Z)) (e.mods & GLFW_MOD_SHIFT) ? redo() : undo();
             if (pressed(GLFW_KEY_Y)) redo();
         }
         if (isShadertoy()) {
-            if (!host_) return;
-            // Every other key goes to the program's keyboard texture.
-            for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
-                const int code = javascriptKeyCode(key);
-                if (code < 0) continue;
-                if (ImGui::IsKeyPressed(key, false)) host_->setKey(code, true);
-                if (ImGui::IsKeyReleased(key)) host_->setKey(code, false);
-            }
+            // Every other key goes to the program's keyboard texture (a
+            // tap: pressed for the next frame, no longer held).
+            const int code = javascriptKeyCode(e.key);
+            if (host_ && code >= 0 && e.action != GLFW_REPEAT) host_->setKey(code, press);
             return;
         }
-        if (io.KeyCtrl) return;
+        if (ctrl) return;
         if (pressed(GLFW_KEY_1)) setFilter("none");
         if (pressed(GLFW_KEY_2)) setFilter("paper");
         if (pressed(GLFW_KEY_3)) setFilter("smooth");
@@ -846,8 +865,10 @@ private:
         if (pressed(GLFW_KEY_D))
             setDerivatives(derivatives_ == GpuView::Derivatives::Camera ? GpuView::Derivatives::Rasterizer
                                                                         : GpuView::Derivatives::Camera);
-        if (ImGui::IsKeyPressed(GLFW_KEY_UP)) setTilt(camera_.tiltDeg + 2.0);
-        if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) setTilt(camera_.tiltDeg - 2.0);
+        // Held arrows repeat.
+        const bool pressOrRepeat = e.action == GLFW_PRESS || e.action == GLFW_REPEAT;
+        if (pressOrRepeat && e.key == GLFW_KEY_UP) setTilt(camera_.tiltDeg + 2.0);
+        if (pressOrRepeat && e.key == GLFW_KEY_DOWN) setTilt(camera_.tiltDeg - 2.0);
         if (pressed(GLFW_KEY_M)) mode_ = WorkbenchMode((int(mode_) + 1) % 5), analysisDirty_ = true;
         if (pressed(GLFW_KEY_A)) analysis_ = LiveAnalysisKind((int(analysis_) + 1) % 4), analysisDirty_ = true;
     }
@@ -1113,6 +1134,7 @@ private:
     // Output.
     std::vector<std::string> pendingScreenshots_;
     std::unique_ptr<FrameSequenceWriter> recorder_;
+    std::vector<KeyEvent> keyEvents_;  // since the last frame: the window's callback and "key" steps
     std::array<int, 2> recordingSize_{0, 0};
     std::string recordingPath_;
     std::string error_, notice_;
