@@ -10,6 +10,7 @@
 #include <unistd.h>  // access
 
 #include "stochtex/core/error.h"
+#include "stochtex/core/names.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
@@ -350,35 +351,7 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
 };
 }  // namespace
 
-size_t editDistance(const std::string& a, const std::string& b) {
-    // Optimal string alignment: Levenshtein plus swapped neighbours ("rednre").
-    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
-    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-    for (size_t i = 1; i <= a.size(); ++i)
-        for (size_t j = 1; j <= b.size(); ++j) {
-            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-        }
-    return d[a.size()][b.size()];
-}
-
 namespace {
-
-// " (did you mean X?)" for the candidate nearest to `given`, when it is near
-// enough to be a typo: at most a third of the name wrong (at least 1, at most
-// 3 edits); "" otherwise.
-std::string nearest(const std::string& given, const std::vector<std::string>& candidates) {
-    std::string best;
-    size_t bestDistance = std::max<size_t>(1, std::min<size_t>(3, given.size() / 3)) + 1;
-    for (const std::string& c : candidates)
-        if (const size_t d = editDistance(given, c); d < bestDistance) {
-            best = c;
-            bestDistance = d;
-        }
-    return best.empty() ? "" : " (did you mean " + best + "?)";
-}
 
 // The option of cmd or of a command above it (--help, --version, --quiet
 // are the top level's) that a command-line word names, or null.
@@ -396,6 +369,19 @@ std::vector<std::string> optionNames(const CLI::App* cmd) {
             for (const std::string& n : o->get_snames()) names.push_back("-" + n);
         }
     return names;
+}
+
+// A suggestion for an unknown option. A one-letter option is no typo of
+// another one-letter option: "-V" suggests the long option it may stand for
+// (--version), when exactly one starts with its letter.
+std::string suggestOption(const std::string& name, const CLI::App* cmd) {
+    const std::vector<std::string> names = optionNames(cmd);
+    if (name.size() != 2) return didYouMean(name, names);
+    std::vector<std::string> longNames;
+    const char letter = char(std::tolower(static_cast<unsigned char>(name[1])));
+    for (const std::string& n : names)
+        if (n.size() > 3 && n[1] == '-' && n[2] == letter) longNames.push_back(n);
+    return longNames.size() == 1 ? " (did you mean " + longNames.front() + "?)" : "";
 }
 
 // "render: ", "reproduce table1: ", or "" at the top level (main says "stochtex").
@@ -424,7 +410,7 @@ std::string explainParseError(const CLI::App& app, const std::vector<std::string
             std::isalpha(static_cast<unsigned char>(word[word[1] == '-' ? 2 : 1]))) {
             const std::string name = word[1] == '-' ? word.substr(0, word.find('=')) : word.substr(0, 2);
             const CLI::Option* option = findOption(cmd, name);
-            if (!option) return commandPath(cmd) + "unknown option " + name + nearest(name, optionNames(cmd));
+            if (!option) return commandPath(cmd) + "unknown option " + name + suggestOption(name, cmd);
             // Its value is the next word unless attached.
             if (option->get_items_expected_max() > 0 && name == word && i + 1 < args.size()) ++i;
             continue;
@@ -438,7 +424,7 @@ std::string explainParseError(const CLI::App& app, const std::vector<std::string
         if (cmd->get_require_subcommand_min() > 0 && cmd->get_subcommands({}).size() > 0) {
             std::vector<std::string> names;
             for (const CLI::App* sub : cmd->get_subcommands({})) names.push_back(sub->get_name());
-            return commandPath(cmd) + "unknown command \"" + word + "\"" + nearest(word, names);
+            return commandPath(cmd) + "unknown command \"" + word + "\"" + didYouMean(word, names);
         }
     }
     return {};

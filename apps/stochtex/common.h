@@ -195,9 +195,6 @@ void tidyDefaults(CLI::App& app);
 // with the command it was given to and the nearest known name; empty when
 // the arguments show no such mistake (CLI11's own message is then right).
 std::string explainParseError(const CLI::App& app, const std::vector<std::string>& args);
-// The edit distance of a and b (insertions, deletions, substitutions and
-// transpositions of neighbours, each 1).
-size_t editDistance(const std::string& a, const std::string& b);
 
 // An InputError as the user reads it: a library parameter error is prefixed
 // with the flag that sets the parameter ("--aniso: aniso must be in [1, 16],

@@ -1,5 +1,6 @@
 // stochtex: command-line entry point. Each command lives in its own file and
-// registers itself here; exit code 0 = success, 2 = bad input, 1 = bug.
+// registers itself here; exit code 0 = success, 2 = bad input or a machine
+// that cannot run the command (no display, no OpenGL 4.3), 1 = bug.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -70,8 +71,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "stochtex: error: %s\n", stochtex::cli::describeInputError(e).c_str());
         return 2;
     } catch (const stochtex::GpuUnavailable& e) {
+        // Not a bug: what the user asked for needs a display or GPU this machine lacks.
         std::fprintf(stderr, "stochtex: error: %s\n", e.what());
-        return 1;
+        return 2;
     } catch (const stochtex::ShaderError& e) {
         std::fprintf(stderr, "stochtex: error: %s\n", e.what());
         return 1;

@@ -65,7 +65,6 @@ void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, Figure4Optio
     }
     if (figure) {
         Figure4Options& f = *figure;
-        const std::string what = figure == &a.figure4 ? "figure 4" : "figure 11";
         if (figure == &a.figure4) sub.add_option("--preset", f.name, "Pattern of Figure 4")->capture_default_str();
         // (figure 4's --footprints would clash with table1's in `reproduce all`)
         if (figure == &a.figure11 && !table)
@@ -73,16 +72,18 @@ void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, Figure4Optio
         sub.add_option("--size", f.size, "Image size per footprint")->capture_default_str();
         sub.add_option("--reference-samples", f.referenceSamples, "Max reference samples per axis");
         // Figures 4 and 11 compare the estimators' statistics with the
-        // reference: --filter chooses only the response.
-        const auto setResponse = [&f, what](const NamedFilter& named) {
-            if (named.source != StatisticsSource::Estimators)
-                throw InputError::parameter("filter", "must be smooth or paper for " + what +
-                                                          " (the estimators through a table), got " +
-                                                          filterName(FilterOptions{}.use(named)));
-            f.response = named.response;
-        };
+        // reference: --filter chooses only the response, among the filters
+        // over the estimators (the validator refuses the others).
+        const auto setResponse = [&f](const NamedFilter& named) { f.response = named.response; };
+        // The names this flag takes, the table's entries over the estimators (help and refusal list only them).
+        static const EnumNames<NamedFilter> estimatorFilters = [] {
+            EnumNames<NamedFilter> out;
+            for (const auto& entry : kFilterNames)
+                if (entry.second.source == StatisticsSource::Estimators) out.push_back(entry);
+            return out;
+        }();
         addFilterFlag(sub, setResponse, filterName(FilterOptions{}.use({StatisticsSource::Estimators, f.response})),
-                      "Table used with the estimators: smooth or paper");
+                      "Table used with the estimators: smooth or paper", estimatorFilters);
     }
 }
 

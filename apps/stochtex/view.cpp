@@ -32,12 +32,16 @@ void registerView(CLI::App& app) {
     cmd->add_option("--shadertoy", args->shadertoy, "A ShaderToy program: its folder or manifest (docs/SHADERTOY.md)");
     addFilterFlag(*cmd, w.filter, "Starting mode: none | paper | smooth", gpuFilterNames());
     addCameraFlags(*cmd, w.camera, false);
+    // One flag for where the pattern is seen: the window's views extend the
+    // cameras' (zoom, plane) with the 3D objects.
+    cmd->remove_option(cmd->get_option("--view"));
+    addEnumFlag(*cmd, "--view", w.view, kWorkbenchViewNames, "view",
+                "Where the pattern is seen: zoom (flat) | plane (perspective ground plane) | sphere | torus (V cycles)");
     cmd->add_option("--scale", w.camera.view.scale, "Starting scale (texels per pixel)");
     addAnisoFlag(*cmd, w.filter.aniso);
     addResponseFlags(*cmd, args->response);
     cmd->add_option("--size", args->size, "Picture area: N or W,H (the panel adds 380 pixels at the left)")
         ->delimiter(',')->expected(1, 2);
-    addEnumFlag(*cmd, "--show", w.view, kWorkbenchViewNames, "view", "Where the pattern is seen (default: --view's)");
     addEnumFlag(*cmd, "--mode", w.mode, kWorkbenchModeNames, "mode", "What the picture shows (M cycles)");
     addEnumFlag(*cmd, "--analysis", w.analysis, kLiveAnalysisNames, "analysis", "The live analysis (A cycles)");
     cmd->add_option("--fps", w.shadertoy.fps,
@@ -57,7 +61,7 @@ void registerView(CLI::App& app) {
         o.panel = !args->noPanel;
         if (!isGpuFilter(o.filter)) throw InputError("--filter: the window shows none, paper or smooth");
         validateCamera(o.camera);
-        if (!cmd->count("--show") && o.camera.kind == Camera::Kind::Plane) o.view = WorkbenchView::Plane;
+        o.camera.kind = o.view == WorkbenchView::Plane ? Camera::Kind::Plane : Camera::Kind::Zoom;
         if (!args->script.empty()) o.script = parseWorkbenchScript(readJsonFile(args->script), args->script);
         if (!args->source.file.empty() && args->source.file.front() == '{')
             throw InputError("pattern: the window edits and saves a file, so it takes a JSON file, not inline JSON");

@@ -421,7 +421,7 @@ case_reproduce_phasor() {
     || fail "figure11.csv: no fade to the profile's mean: $(cat "$out/f11/figure11.csv")"
   expect_bad "figure10 zero frequency" "$out/pbad1" "--frequency: frequency must be in (0, 10000], got 0" -- "$bin" reproduce figure10 -o "$out/pbad1" --frequency 0
   expect_bad "figure10 negative bandwidth" "$out/pbad2" "--bandwidth: bandwidth must be in (0, 10000], got -1" -- "$bin" reproduce figure10 -o "$out/pbad2" --bandwidth -1
-  expect_bad "figure11 estimators only" "$out/pbad3" "--filter: filter must be smooth or paper for figure 11" -- "$bin" reproduce figure11 -o "$out/pbad3" --filter reference
+  expect_bad "figure11 estimators only" "$out/pbad3" "--filter: filter must be paper or smooth, got \"reference\"" -- "$bin" reproduce figure11 -o "$out/pbad3" --filter reference
   expect_bad "figure11 zero footprint" "$out/pbad4" "figure11: footprints must be in [1, 65536], got 0" -- "$bin" reproduce figure11 -o "$out/pbad4" --footprints 0
   # A profile image must be one row (W×1).
   "$bin" noise '{"type":"spectrum","size":16,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/square.png" >/dev/null || fail "noise for the profile"
@@ -565,7 +565,7 @@ JSON
   expect_ok "spectrum of the render" "$out/wbpss/spectrum.png" -- "$bin" spectrum -o "$out/wbpss" images "$out/wbps.exr"
   d=$("$compare" "$out/wbps.png" "$out/wbpss/spectrum.png") || { fail "workbench pattern spectrum: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench pattern spectrum vs the study's: $d (want mean <= 0.5, flipped >= 10)"
-  expect_ok "workbench sphere" "$out/wbsph.png" -- "${xvfb[@]}" "$bin" view --preset marble --show sphere --size 160,120 --frames 3 --screenshot "$out/wbsph.png"
+  expect_ok "workbench sphere" "$out/wbsph.png" -- "${xvfb[@]}" "$bin" view --preset marble --view sphere --size 160,120 --frames 3 --screenshot "$out/wbsph.png"
   expect_ok "scene sphere" "$out/wbsphr.png" -- "$bin" scene --preset marble --object sphere --size 160,120 --filter smooth -o "$out/wbsphr.png"
   d=$("$compare" "$out/wbsph.png" "$out/wbsphr.png") || { fail "workbench sphere: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench sphere vs scene: $d (want mean <= 0.5, flipped >= 10)"
@@ -725,7 +725,7 @@ case_bad_study_flags() {
   expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image file" -- "$bin" contrast -o "$out/zbad4" --base "$work/nothere.png"
   expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: layersList must hold layer counts in [1, 1024], got 0" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
   expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
-  expect_bad "figure 4 without the estimators" "$out/rbad3" "--filter: filter must be smooth or paper for figure 4 (the estimators through a table), got exact" -- "$bin" reproduce figure4 -o "$out/rbad3" --filter exact
+  expect_bad "figure 4 without the estimators" "$out/rbad3" "--filter: filter must be paper or smooth, got \"exact\"" -- "$bin" reproduce figure4 -o "$out/rbad3" --filter exact
   expect_bad "reproduce zero count" "$out/rbad2" "--count: count must be in [1, 1e6], got 0" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
   expect_bad "figure 12 negative roughness" "$out/rbad4" "--roughness: roughness must be in [0.001, 10], got -0.1" -- "$bin" reproduce figure12 -o "$out/rbad4" --roughness -0.1
   expect_bad "figure 12 without a normal map" "$out/rbad5" "camouflage: figure 12 needs a pattern with a normal_map" -- "$bin" reproduce figure12 -o "$out/rbad5" --preset camouflage
@@ -904,6 +904,16 @@ case_typos() {
   grep -q "did you mean" "$work/err.txt" && fail "--frobnicat is near no option, yet: $(cat "$work/err.txt")"
   expect_bad "near option" "$out/t.png" "stochtex: error: render: unknown option --anisoo (did you mean --aniso?)" -- "$bin" render --preset marble -o "$out/t.png" --filter smooth --anisoo 4
   expect_bad "near option with =" "$out/t.png" "unknown option --filtr (did you mean --filter?)" -- "$bin" render --preset marble -o "$out/t.png" --filtr=smooth
+  # Suggestions below the top level too, and for abbreviations; a one-letter
+  # option suggests the long option it may stand for, not another letter.
+  expect_bad "abbreviated subcommand" "" 'reproduce: unknown command "fig11" (did you mean figure11?)' -- "$bin" reproduce fig11 -o "$out/t"
+  expect_bad "mistyped preset" "$out/t.png" 'unknown preset "marbel" (did you mean marble?)' -- "$bin" render --preset marbel -o "$out/t.png"
+  expect_bad "mistyped filter" "$out/t.png" 'got "smoth" (did you mean smooth?)' -- "$bin" render --preset marble --filter smoth -o "$out/t.png"
+  expect_bad "-V" "" "unknown option -V (did you mean --version?)" -- "$bin" -V
+  expect_bad "figure 11 filters" "" 'filter must be paper or smooth, got "exact"' -- "$bin" reproduce figure11 --filter exact -o "$out/t"
+  "$bin" reproduce figure11 --help | grep -q "ENUM:{paper, smooth}" || fail "reproduce figure11 --help lists filters it refuses: $("$bin" reproduce figure11 --help | grep -- --filter)"
+  # No display is not a bug: exit 2 with the reason.
+  expect_bad "view without a display" "" "no display" -- env -u DISPLAY -u WAYLAND_DISPLAY "$bin" view --preset marble --frames 1
   expect_bad "unknown top-level option" "" "stochtex: error: unknown option --frobnicate" -- "$bin" --frobnicate
   # Values are not mistaken for commands or options.
   expect_ok "negative offset and a value like a command" "$out/ok.png" -- "$bin" render --preset marble --size 16 --offset -3,-4 --filter smooth -o "$out/ok.png"

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/core/names.h"
 
 namespace stochtex {
 
@@ -45,11 +46,14 @@ const E* findEnum(const EnumNames<E>& names, const std::string& s) {
 }
 
 // The value named s; for a name not in the table, InputError naming the
-// parameter: "what must be a, b or c, got "s"" (canonical names only).
+// parameter: "what must be a, b or c, got "s"" (canonical names only),
+// with " (did you mean b?)" for a likely typo.
 template <class E>
 E parseEnum(const EnumNames<E>& names, const std::string& s, const std::string& what) {
     if (const E* v = findEnum(names, s)) return *v;
-    throw InputError::parameter(what, "must be " + canonicalNames(names) + ", got \"" + s + "\"");
+    std::vector<std::string> all;
+    for (const auto& [name, value] : names) all.push_back(name);
+    throw InputError::parameter(what, "must be " + canonicalNames(names) + ", got \"" + s + "\"" + didYouMean(s, all));
 }
 
 }  // namespace stochtex

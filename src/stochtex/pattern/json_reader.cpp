@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/core/names.h"
 
 namespace stochtex {
 
@@ -255,7 +256,14 @@ std::string JsonReader::choice(std::initializer_list<const char*> choices) const
 }
 
 void JsonReader::failUnknown(const std::string& value, const std::string& expected) const {
-    fail("unknown value " + quoteShort(value) + " (expected one of: " + expected + ")");
+    // The expected names, ", "-separated, are the candidates for a typo.
+    std::vector<std::string> names;
+    for (size_t at = 0; at < expected.size();) {
+        const size_t comma = std::min(expected.find(", ", at), expected.size());
+        names.push_back(expected.substr(at, comma - at));
+        at = comma + 2;
+    }
+    fail("unknown value " + quoteShort(value) + didYouMean(value, names) + " (expected one of: " + expected + ")");
 }
 
 std::string JsonReader::choice(const std::string& key, const std::string& fallback,

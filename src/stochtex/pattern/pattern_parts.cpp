@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "stochtex/core/error.h"
+#include "stochtex/core/notes.h"
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/noise/example.h"
@@ -296,9 +297,9 @@ Image buildExampleImage(const NoiseSpec& spec, const std::string& context) {
     // ≤ 4096 since the exemplar is). The pattern's scale then counts texels
     // of the resampled example.
     const int size = nextPowerOfTwo(img.width());
-    std::fprintf(stderr, "note: %s: exemplar resampled from %dx%d to %dx%d (periodic bicubic): filtering needs a "
-                         "power-of-two example, and scale counts its texels\n",
-                 spec.image.string().c_str(), img.width(), img.height(), size, size);
+    note(spec.image.string() + ": exemplar resampled from " + std::to_string(img.width()) + "x" +
+         std::to_string(img.height()) + " to " + std::to_string(size) + "x" + std::to_string(size) +
+         " (periodic bicubic): filtering needs a power-of-two example, and scale counts its texels");
     return resamplePeriodic(img, size, float(kMinExemplarValue), float(kMaxExemplarValue));
 }
 

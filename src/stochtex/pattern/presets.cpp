@@ -4,6 +4,7 @@
 
 #include "stochtex/core/embedded_file.h"
 #include "stochtex/core/error.h"
+#include "stochtex/core/names.h"
 
 namespace stochtex {
 
@@ -22,7 +23,7 @@ const char* presetText(const std::string& name) {
         if (name == kEmbeddedPresets[i].name) return kEmbeddedPresets[i].contents;
     std::string list;
     for (const auto& n : presetNames()) list += (list.empty() ? "" : ", ") + n;
-    throw InputError("unknown preset \"" + name + "\" (known presets: " + list + ")");
+    throw InputError("unknown preset \"" + name + "\"" + didYouMean(name, presetNames()) + " (known presets: " + list + ")");
 }
 
 PatternSpec loadPreset(const std::string& name) {

@@ -12,6 +12,7 @@
 
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
+#include "stochtex/core/notes.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/report/animated_gif.h"
 #include "stochtex/report/animated_preview.h"
@@ -68,8 +69,8 @@ struct FrameSequenceWriter::Video {
                         fps, cv::Size(width, height), true);
             if (!writer.isOpened()) continue;
             if (&c != &codecs.front())
-                std::fprintf(stderr, "note: %s: no %s encoder in this FFmpeg build; writing %s, which browsers may not play\n",
-                             path.c_str(), codecs.front().name, c.name);
+                note(path + ": no " + codecs.front().name + " encoder in this FFmpeg build; writing " + c.name +
+                     ", which browsers may not play");
             return true;
         }
         file.reset();
@@ -138,7 +139,7 @@ FrameSequenceWriter::FrameSequenceWriter(const std::string& output, int width, i
         case SequenceFormat::WebM:
             if (!video->openVideo(path, format, width, height, fps)) {
                 if (dir_.empty()) throw InputError(output + ": cannot write this video (OpenCV has no FFmpeg encoder for it here)");
-                std::fprintf(stderr, "note: no video encoder available in this OpenCV build; writing PNG frames only\n");
+                note("no video encoder available in this OpenCV build; writing PNG frames only");
                 return;
             }
             previewPath_ = fs::path(path).replace_extension(".webp").string();

@@ -78,7 +78,7 @@ std::string experimentPage(const StimulusSetOptions& o, const std::vector<Stimul
          "<div id='intro' class='panel'><h1>Do you see a repeating pattern?</h1>"
          "<p>You will see "
       << trials.size() << " noise images, one at a time (about " << std::lround(std::max(1.0, minutes))
-      << " minutes). Each trial: a grey screen for " << o.resetMs << " ms, then an image for " << o.durationMs
+      << (std::lround(std::max(1.0, minutes)) == 1 ? " minute" : " minutes") << "). Each trial: a grey screen for " << o.resetMs << " ms, then an image for " << o.durationMs
       << " ms, then grey again.</p>"
          "<p>Some images contain a square patch of noise that repeats side by side, like tiles; others do not. "
          "After each image, answer: <b>did you see a repeating pattern?</b> Press <b>Y</b> for yes or <b>N</b> for no "
