@@ -6,8 +6,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <vector>
-#include <opencv2/core.hpp>
-#include <opencv2/videoio.hpp>
 #include <stdexcept>
 
 #include "stochtex/core/atomic_file.h"
@@ -17,6 +15,7 @@
 #include "stochtex/report/animated_gif.h"
 #include "stochtex/report/animated_preview.h"
 #include "stochtex/report/page.h"
+#include "stochtex/report/video_encoder.h"
 
 namespace stochtex {
 namespace fs = std::filesystem;
@@ -36,72 +35,35 @@ SequenceFormat sequenceFormat(const std::string& path) {
 
 bool isVideoPath(const std::string& path) { return sequenceFormat(path) != SequenceFormat::Folder; }
 
-namespace {
-
-// A codec OpenCV's FFmpeg backend is asked for by its tag.
-struct VideoCodec {
-    char tag[5];
-    const char* name;
-};
-
-}  // namespace
-
 // The encoder of the one file: a video (MP4, WebM) with its preview, an
 // animated WebP or an animated GIF.
 struct FrameSequenceWriter::Video {
-    std::unique_ptr<AtomicFile> file;  // a video's: the encoder opens it by name, its ending picks the container
-    cv::VideoWriter writer;
+    std::unique_ptr<AtomicFile> file;  // a video's, which FFmpeg opens by name
+    std::unique_ptr<VideoEncoder> video;
     std::unique_ptr<AnimatedPreviewWriter> preview, webp;
     std::unique_ptr<AnimatedGifWriter> gif;
 
-    // Opens the video; false when this FFmpeg build has none of the codecs.
+    // Opens the video; false when this FFmpeg build lacks the codec's encoder.
     bool openVideo(const std::string& path, SequenceFormat format, int width, int height, double fps) {
-        const std::string suffix = format == SequenceFormat::WebM ? ".tmp.webm" : ".tmp.mp4";
-        file = std::make_unique<AtomicFile>(path, suffix);
+        const VideoCodec codec = format == SequenceFormat::WebM ? VideoCodec::Vp9 : VideoCodec::H264;
+        if (!hasVideoEncoder(codec)) return false;
+        file = std::make_unique<AtomicFile>(path);
         ::close(file->releaseDescriptor());
-        // H.264 (libx264) and VP9 (libvpx) are what browsers play; MPEG-4
-        // Part 2, FFmpeg's own encoder, is the last resort for an MP4.
-        const std::vector<VideoCodec> codecs = format == SequenceFormat::WebM
-                                                   ? std::vector<VideoCodec>{{"VP90", "VP9"}, {"VP80", "VP8"}}
-                                                   : std::vector<VideoCodec>{{"avc1", "H.264"}, {"mp4v", "MPEG-4 Part 2"}};
-        for (const VideoCodec& c : codecs) {
-            writer.open(file->tempPath(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc(c.tag[0], c.tag[1], c.tag[2], c.tag[3]),
-                        fps, cv::Size(width, height), true);
-            if (!writer.isOpened()) continue;
-            if (&c != &codecs.front())
-                note(path + ": no " + codecs.front().name + " encoder in this FFmpeg build; writing " + c.name +
-                     ", which browsers may not play");
-            return true;
-        }
-        file.reset();
-        return false;
+        video = std::make_unique<VideoEncoder>(file->tempPath(), codec, width, height, fps);
+        return true;
     }
 
     void add(const Image& codes) {
         if (webp) return webp->add(codes);
         if (gif) return gif->add(codes);
-        if (codes.channels() != 1 && codes.channels() != 3)
-            throw std::invalid_argument("FrameSequenceWriter::write: 1- or 3-channel frames");
-        // 8-bit BGR, what the encoder takes; gray frames as equal channels.
-        cv::Mat m(codes.height(), codes.width(), CV_8UC3);
-        for (int y = 0; y < codes.height(); ++y) {
-            const float* src = codes.row(y);
-            auto* dst = m.ptr<cv::Vec3b>(y);
-            for (int x = 0; x < codes.width(); ++x) {
-                for (int c = 0; c < 3; ++c) {
-                    const float v = codes.channels() == 1 ? src[x] : src[3 * x + (2 - c)];
-                    dst[x][c] = uchar(std::lround(255.0f * std::clamp(v, 0.0f, 1.0f)));
-                }
-            }
-        }
-        writer.write(m);
+        video->add(codes);
         preview->add(codes);
     }
 
     std::string finish() {
         if (webp) return webp->finish();
         if (gif) return gif->finish();
-        writer.release();
+        video->finish();
         preview->finish();
         file->commit();
         return file->path();
@@ -138,8 +100,9 @@ FrameSequenceWriter::FrameSequenceWriter(const std::string& output, int width, i
         case SequenceFormat::Mp4:
         case SequenceFormat::WebM:
             if (!video->openVideo(path, format, width, height, fps)) {
-                if (dir_.empty()) throw InputError(output + ": cannot write this video (OpenCV has no FFmpeg encoder for it here)");
-                note("no video encoder available in this OpenCV build; writing PNG frames only");
+                if (dir_.empty()) throw InputError(output + ": cannot write this video (this FFmpeg build lacks its encoder)");
+                note("no " + std::string(format == SequenceFormat::WebM ? "VP9" : "H.264") +
+                     " encoder in this FFmpeg build; writing PNG frames only");
                 return;
             }
             previewPath_ = fs::path(path).replace_extension(".webp").string();

@@ -1,6 +1,6 @@
 #pragma once
 // A frame sequence on disk, by the output path's extension (sequenceFormat):
-// * `NAME.mp4`: an H.264 video (OpenCV's videoio → FFmpeg → libx264), what
+// * `NAME.mp4`: an H.264 video (report/video_encoder.h: FFmpeg, libx264), what
 //   browsers, repository previews and paper pages play;
 // * `NAME.webm`: a VP9 video (libvpx), the same for a WebM;
 // * `NAME.webp`: an animated WebP at full size (libwebp);
