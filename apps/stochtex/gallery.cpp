@@ -1,6 +1,7 @@
-// stochtex gallery: every preset rendered beside its colormap and its two
-// noises (a graph preset beside its stages), as sheets in one folder with an
-// index.html to browse them.
+// stochtex gallery: every preset (or the pattern and graph files given)
+// rendered beside its colormap and its two noises (a graph beside its
+// stages; a normal map's LEAN shading beside the colours), as sheets in one
+// folder with an index.html to browse them.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/pattern_parts.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/pattern_sheet.h"
@@ -25,18 +27,33 @@ void registerGallery(CLI::App& app) {
         std::string dir;
         int size = 512;
         int threads = 0;
-        std::vector<std::string> only;
+        std::vector<std::string> only, files;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("gallery", "Render every preset with its colormap and noises");
+    auto* cmd = app.add_subcommand("gallery", "Render every preset (or the files given) with its colormap and noises");
+    cmd->add_option("files", args->files, "Pattern or texture graph files (JSON) to show instead of the presets");
     addOutputFolderFlag(*cmd, args->dir, "Output folder (created if missing)");
     cmd->add_option("--size", args->size, "Pattern size in pixels")->check(CLI::Range(64, 4096));
     cmd->add_option("--preset", args->only, "Only these presets (repeatable)");
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         ThreadLimit limit(args->threads);
-        const std::vector<std::string> names = args->only.empty() ? presetNames() : args->only;
-        for (const auto& n : names) (void)presetText(n);  // fail on unknown names before any work
+        // Each entry: a preset's name or a file's path; all parsed before any work.
+        struct Entry {
+            std::string name, description;
+            PatternSpec spec;
+        };
+        std::vector<Entry> entries;
+        if (!args->files.empty() && !args->only.empty()) throw InputError("--preset: give presets or files, not both");
+        for (const std::string& file : args->files) {
+            const nlohmann::json j = readJsonFile(file);
+            entries.push_back({fs::path(file).stem().string(), j.value("description", std::string()), loadPatternFile(file)});
+        }
+        if (args->files.empty())
+            for (const std::string& n : args->only.empty() ? presetNames() : args->only) {
+                const nlohmann::json j = nlohmann::json::parse(presetText(n));
+                entries.push_back({n, j.value("description", std::string()), loadPreset(n)});
+            }
         std::error_code ec;
         fs::create_directories(args->dir, ec);
         if (ec || !fs::is_directory(args->dir)) throw InputError(args->dir + ": cannot create output folder");
@@ -50,28 +67,30 @@ void registerGallery(CLI::App& app) {
                 "where N falls, and the two tiled noises N<sub>x</sub>, N<sub>y</sub> over the same region.</p>\n";
         ProgressLine progress("gallery");
         size_t index = 0;
-        for (const auto& name : names) {
-            progress.update(double(index++) / double(names.size()), name);
-            const PatternSpec spec = loadPreset(name);
+        std::vector<std::string> written;
+        for (const Entry& e : entries) {
+            progress.update(double(index++) / double(entries.size()), e.name);
+            // Two files of one name in different folders get distinct sheets.
+            std::string name = e.name;
+            for (int k = 2; std::find(written.begin(), written.end(), name) != written.end(); ++k)
+                name = e.name + "-" + std::to_string(k);
+            written.push_back(name);
+            const PatternSpec& spec = e.spec;
             // A graph with a non-linear node before its output: its stages instead of H and N.
             const PatternSheet ps = needsGraphEvaluator(spec)
                                         ? graphSheet(GraphPattern::build(spec), *spec.graph, spec.scale, args->size)
                                         : patternSheet(Pattern::build(spec), spec.scale, args->size, name);
-            const Image& img = ps.pattern;
-            const Image& sheet = ps.sheet;
-
-            writeImage((fs::path(args->dir) / (name + ".png")).string(), img);
-            writeImage((fs::path(args->dir) / (name + "-sheet.png")).string(), sheet, kNoTransfer);
-            std::string description;
-            const auto j = nlohmann::json::parse(presetText(name));
-            if (j.contains("description")) description = j["description"].get<std::string>();
-            html << "<figure><img src='" << name << "-sheet.png' alt='" << name << "'><figcaption><b>" << name
-                 << "</b> &mdash; " << htmlEscape(description) << "</figcaption></figure>\n";
+            writeImage((fs::path(args->dir) / (name + ".png")).string(), ps.pattern);
+            writeImage((fs::path(args->dir) / (name + "-sheet.png")).string(), ps.sheet, kNoTransfer);
+            html << "<figure><img src='" << htmlEscape(name) << "-sheet.png' alt='" << htmlEscape(name)
+                 << "'><figcaption><b>" << htmlEscape(name) << "</b> &mdash; " << htmlEscape(e.description)
+                 << "</figcaption></figure>\n";
         }
         html << "</body></html>\n";
         writeFileAtomic((fs::path(args->dir) / "index.html").string(), html.str());
         progress.finish();
-        std::printf("gallery: %zu presets in %s (open %s)\n", names.size(), args->dir.c_str(),
+        std::printf("gallery: %zu %s in %s (open %s)\n", entries.size(), args->files.empty() ? "presets" : "patterns",
+                    args->dir.c_str(),
                     (fs::path(args->dir) / "index.html").string().c_str());
     });
 }

@@ -11,8 +11,23 @@ bin=$2
 src=$3
 compare=${4:-}  # tests/cli/image_compare.cpp: prints "mean M flipped F" in 8-bit steps
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+xvfb_pid=
+trap 'rm -rf "$work"; [ -z "$xvfb_pid" ] || kill "$xvfb_pid" 2>/dev/null' EXIT
 failures=0
+
+# One virtual display for a case's windows, started on first use: xvfb-run
+# per command started and cleaned up a server each time, and its clean-up
+# now and then failed with exit 5 ("problem while cleaning up"), failing a
+# check that had passed. Sets `display` (e.g. ":99").
+display=
+start_xvfb() {
+  [ -n "$display" ] && return
+  Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$work/display.txt" >/dev/null 2>&1 &
+  xvfb_pid=$!
+  for _ in $(seq 100); do [ -s "$work/display.txt" ] && break; sleep 0.1; done
+  display=":$(head -1 "$work/display.txt")"
+  [ "$display" != ":" ] || { echo "FAIL: Xvfb did not start"; exit 1; }
+}
 
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
@@ -106,6 +121,16 @@ case_presets() {
 case_gallery() {
   expect_ok "gallery" "$out/gal/index.html" -- "$bin" gallery -o "$out/gal" --size 64 --preset gaussian --preset woven
   [ -s "$out/gal/woven-sheet.png" ] || fail "gallery sheet missing"
+  # A pattern with a normal map shows its LEAN shading beside the colours: a
+  # sheet one pattern wider (PNG width: bytes 16-19 of the IHDR).
+  expect_ok "gallery lean" "$out/gal/lean-ridges-sheet.png" -- "$bin" gallery -o "$out/gal" --size 64 --preset lean-ridges
+  w=$(od -An -tu1 -j16 -N4 "$out/gal/lean-ridges-sheet.png" | awk '{print $1*16777216+$2*65536+$3*256+$4}')
+  [ "$w" -eq 192 ] || fail "gallery lean-ridges sheet is $w wide, expected 192 (pattern, LEAN shading, H and N)"
+  # The user's own files, a graph among them.
+  expect_ok "gallery of files" "$out/galf/painted-bumps-sheet.png" -- "$bin" gallery -o "$out/galf" --size 64 "$src/data/graphs/painted-bumps.json" "$src/data/presets/woven.json"
+  [ -s "$out/galf/woven-sheet.png" ] || fail "gallery of files: woven sheet missing"
+  grep -q "painted-bumps" "$out/galf/index.html" || fail "gallery of files: index.html lacks painted-bumps"
+  expect_bad "gallery of a missing file" "$out/galm/index.html" "nope.json" -- "$bin" gallery -o "$out/galm" "$work/nope.json"
 }
 
 # Filtered rendering: every mode, both views.
@@ -446,7 +471,8 @@ case_view() {
   # hundred bytes from a module it has unloaded by exit time, which
   # LeakSanitizer cannot suppress by name: leak checks are off for this run
   # only (sanitizer builds; no effect otherwise).
-  expect_ok "view under Xvfb" "$out/view.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
+  start_xvfb
+  expect_ok "view under Xvfb" "$out/view.png" -- env ASAN_OPTIONS=detect_leaks=0 DISPLAY="$display" "$bin" view --preset weld --frames 3 --size 160,120 --screenshot "$out/view.png"
   # The window shows what `render` writes for the same view, the right way
   # up: its screenshot (read back from the window's framebuffer) is within
   # 8-bit rounding of the CPU render (0.5/255 mean: the GPU/CPU parity bound),
@@ -462,7 +488,7 @@ case_view() {
       # Only where they act (render refuses them elsewhere).
       [ "$v" = plane ] && flags+=(--tilt 60)
       [ "$f" = smooth ] && flags+=(--aniso 4)
-      expect_ok "view $p $v $f" "$out/view_${p}_${v}_$f.png" -- env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 640x480x24" "$bin" view "${flags[@]}" --frames 2 --screenshot "$out/view_${p}_${v}_$f.png"
+      expect_ok "view $p $v $f" "$out/view_${p}_${v}_$f.png" -- env ASAN_OPTIONS=detect_leaks=0 DISPLAY="$display" "$bin" view "${flags[@]}" --frames 2 --screenshot "$out/view_${p}_${v}_$f.png"
       expect_ok "render $p $v $f" "$out/render_${p}_${v}_$f.png" -- "$bin" render "${flags[@]}" -o "$out/render_${p}_${v}_$f.png"
       local d
       d=$("$compare" "$out/view_${p}_${v}_$f.png" "$out/render_${p}_${v}_$f.png") || { fail "view $p $v $f: compare failed"; continue; }
@@ -474,7 +500,8 @@ case_view() {
 
 case_workbench() {
   [ -n "$compare" ] || { fail "workbench: no image comparer given"; return; }
-  local xvfb=(env ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -s "-screen 0 1024x768x24")
+  start_xvfb
+  local xvfb=(env ASAN_OPTIONS=detect_leaks=0 DISPLAY="$display")
   # A person's session, scripted: zoom about a pixel, switch the filter, edit
   # a colormap colour, save the pattern. The picture then equals `render` of
   # the saved file over the same view: the zoom by 2 about (40, 30) from

@@ -49,5 +49,27 @@ TEST(Page, ChartsAreInlinedSelfContainedAndDeterministic) {
     EXPECT_EQ(htmlPage("t", htmlFigures("", {figures[1]})).find("<script"), std::string::npos);
 }
 
+// A rate that is constant up to its 6th digit is a flat line in the PNG and
+// in the chart alike: the y axis starts at 0 (Chart.js fitted 0.0338935–
+// 0.0338980 and a constant read as a fall), and ticks read as the PNG's.
+TEST(Page, ChartAxesAreThePngsAndConstantsLookFlat) {
+    PlotSeries rate{"expansion rate", {0, 1, 2, 3}, {0.0338980, 0.0338960, 0.0338950, 0.0338935}, {1, 0, 0}};
+    LinePlotOptions o;
+    const PlotRange r = linePlotRange({rate}, o);
+    EXPECT_EQ(r.y0, 0.0);
+    EXPECT_NEAR(r.y1, 1.05 * 0.0338980, 1e-12);
+    EXPECT_EQ(r.x0, 0.0);
+    EXPECT_EQ(r.x1, 3.0);
+    const std::string body = htmlFigures("", {{"rate.png", Image(4, 4, 3, 1.0f), "Rate.", LineChart{{rate}, o}}});
+    EXPECT_NE(body.find("\"y\":{\"type\":\"linear\",\"title\":{\"display\":false,\"text\":\"\"},\"min\":0.0,"),
+              std::string::npos)
+        << body;
+    EXPECT_NE(htmlPage("t", body).find("callback:function(v,i,t)"), std::string::npos);
+    EXPECT_EQ(tickLabel(0.125), "0.125");
+    EXPECT_EQ(tickLabel(2.5e-4), "2.5×10⁻⁴");
+    EXPECT_EQ(tickLabel(1e-9), "10⁻⁹");
+    EXPECT_EQ(tickLabel(-12345), "−1.2×10⁴");
+}
+
 }  // namespace
 }  // namespace stochtex

@@ -54,6 +54,15 @@ TEST(Table, RendersCsvMarkdownAndHtmlFromTheSameRows) {
     t.add({"a<b", TableCell::value(1.23456, "%.2f"), TableCell::integer(7)});
     t.add({"c", TableCell::value(0.5), "text"});
     EXPECT_EQ(t.csv(), "name,clamped_percent,n\na<b,1.23456,7\nc,0.5,text\n");
+    // Cells that do not apply and percentages near the ends.
+    Table u;
+    u.columns = {{"a", "a", "%"}, {"b", "b", "%"}, {"c", "c", "%"}, {"d", "d", ""}};
+    u.add({TableCell::percent(99.998), TableCell::percent(0.001), TableCell::percent(12.345), TableCell::none()});
+    EXPECT_EQ(u.rows[0][0].text, "> 99.99");
+    EXPECT_EQ(u.rows[0][1].text, "< 0.01");
+    EXPECT_EQ(u.rows[0][2].text, "12.35");  // the double nearest 12.345 is 12.34500000000000064…
+    EXPECT_EQ(u.rows[0][3].text, "—");
+    EXPECT_EQ(u.csv(), "a,b,c,d\n99.998,0.001,12.345,\n");
     EXPECT_EQ(t.markdown(), "**Errors** (2 rows)\n\n| image | clamped (%) | n |\n|---|---|---|\n"
                             "| a<b | 1.23 | 7 |\n| c | 0.5000 | text |\n");
     EXPECT_EQ(t.html(), "<p><b>Errors</b> (2 rows)</p>\n<table><tr><th>image</th><th>clamped (%)</th><th>n</th></tr>"

@@ -565,6 +565,18 @@ TEST(LiveAnalysis, FlickerOfAStillAndOfABlinkingFrame) {
                           &contrast, &relative), 3) << blink.summary;
     EXPECT_GT(relative, 0.5);
     EXPECT_EQ(blink.image.width(), w);
+    // The map's alpha: see-through where nothing flickers (an overlay of a
+    // still pattern shows the pattern, not the colour map's zero), opaque
+    // where the frame blinks.
+    auto meanAlpha = [](const Image& im) {
+        double sum = 0;
+        for (int y = 0; y < im.height(); ++y)
+            for (int x = 0; x < im.width(); ++x) sum += im.at(x, y, 3);
+        return sum / double(im.pixelCount());
+    };
+    ASSERT_EQ(still.image.channels(), 4);
+    EXPECT_LT(meanAlpha(still.image), 0.02);
+    EXPECT_GT(meanAlpha(blink.image), 0.2);
 }
 
 // Samples of independent white noise plus a part shared by the left half:
@@ -595,6 +607,15 @@ TEST(LiveAnalysis, CorrelationWithAPointOverSamples) {
     };
     EXPECT_GT(warmth(0, w / 2), 0.2);
     EXPECT_LT(std::abs(warmth(w / 2, w)), 0.05);
+    // Alpha follows |correlation|: the correlated half shows, the other is nearly see-through.
+    auto alpha = [&](int x0, int x1) {
+        double sum = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = x0; x < x1; ++x) sum += r.image.at(x, y, 3);
+        return sum / (double(x1 - x0) * h);
+    };
+    EXPECT_GT(alpha(0, w / 2), 0.3);
+    EXPECT_LT(alpha(w / 2, w), 0.1);
     EXPECT_NE(r.summary.find("2000 samples"), std::string::npos) << r.summary;
     // The same accumulator's mean and variance: flat for these stationary samples
     // (the left half's variance is twice the right's: shared plus own noise).

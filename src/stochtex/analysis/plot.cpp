@@ -317,7 +317,10 @@ void drawAxes(const Plplot& pl, const PixelBox& box, const Axis& x, const Axis& 
     if (!xLabel.empty()) pl.text(cx, box.y1 + 2.4 * kFontPx, xLabel);
     if (!yLabel.empty()) {
         pl.frame(box, 0, 1, 0, 1);
-        const double disp = (y.labelWidth() + 10.0) / kFontPx + 0.9;  // in character heights
+        // In character heights, to the title's baseline: past the widest tick
+        // label, its gap, and the title's own height (0.9 left the title's
+        // letters over labels like "0.06", figure2_6.png).
+        const double disp = (y.labelWidth() + 10.0) / kFontPx + 1.6;
         plmtex("l", disp, 0.5, 0.5, plText(yLabel).c_str());
     }
 }
@@ -328,7 +331,7 @@ struct Margins {
 };
 Margins axesMargins(const Axis& y, const std::string& title, const std::string& yLabel) {
     Margins m;
-    m.left = y.labelWidth() + 12 + (yLabel.empty() ? 0 : int(kFontPx) + 10);
+    m.left = y.labelWidth() + 12 + (yLabel.empty() ? 0 : int(1.7 * kFontPx) + 10);
     m.top = title.empty() ? 14 : int(kTitlePx) * 2 + 6;
     m.right = 18;  // half of the last x tick label
     m.bottom = int(3.4 * kFontPx);
@@ -608,7 +611,7 @@ std::array<float, 3> seriesColour(size_t i) {
     return palette[i % 10];
 }
 
-Image linePlot(const std::vector<PlotSeries>& series, const LinePlotOptions& o, PlotLayout* layout) {
+PlotRange linePlotRange(const std::vector<PlotSeries>& series, const LinePlotOptions& o) {
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
     for (const auto& s : series)
         for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
@@ -628,10 +631,18 @@ Image linePlot(const std::vector<PlotSeries>& series, const LinePlotOptions& o, 
     if (!(y1 > y0)) y1 = o.logY ? y0 * 10 : y0 + 1.0;
     if (!std::isfinite(o.yMax) && !o.logY) y1 += 0.05 * (y1 - y0);
     // Log axes span whole decades around the data, so PLplot labels at least one.
-    Axis xa{world(x0, o.logX), world(x1, o.logX), o.logX}, ya{world(y0, o.logY), world(y1, o.logY), o.logY};
-    if (o.logX && !std::isfinite(o.xMin) && std::floor(xa.lo) == std::floor(xa.hi)) xa.lo = std::floor(xa.lo);
-    if (o.logY && !std::isfinite(o.yMin)) ya.lo = std::floor(ya.lo + 1e-9);
-    if (o.logY && !std::isfinite(o.yMax)) ya.hi = std::ceil(ya.hi - 1e-9);
+    if (o.logX && !std::isfinite(o.xMin) && std::floor(std::log10(x0)) == std::floor(std::log10(x1)))
+        x0 = std::pow(10.0, std::floor(std::log10(x0)));
+    if (o.logY && !std::isfinite(o.yMin)) y0 = std::pow(10.0, std::floor(std::log10(y0) + 1e-9));
+    if (o.logY && !std::isfinite(o.yMax)) y1 = std::pow(10.0, std::ceil(std::log10(y1) - 1e-9));
+    return {x0, x1, y0, y1};
+}
+
+std::string tickLabel(double v) { return number(v); }
+
+Image linePlot(const std::vector<PlotSeries>& series, const LinePlotOptions& o, PlotLayout* layout) {
+    const PlotRange r = linePlotRange(series, o);
+    Axis xa{world(r.x0, o.logX), world(r.x1, o.logX), o.logX}, ya{world(r.y0, o.logY), world(r.y1, o.logY), o.logY};
 
     ya.tickSpacing = 30;
     ya.length = o.height - 70;  // about the frame's height, for the tick labels' width

@@ -77,6 +77,18 @@ struct LinePlotOptions {
 };
 Image linePlot(const std::vector<PlotSeries>& series, const LinePlotOptions& o, PlotLayout* layout = nullptr);
 
+// The data ranges a line plot's axes show: the options' where set, else the
+// data's, a linear y axis from 0 (so a constant is a flat line, not a fall
+// over its last digits) with 5 % headroom, log axes over whole decades.
+// linePlot draws these and the HTML chart sets them (report/page.h).
+struct PlotRange {
+    double x0, x1, y0, y1;
+};
+PlotRange linePlotRange(const std::vector<PlotSeries>& series, const LinePlotOptions& o);
+// A tick label as the plots write it: 3 significant digits, a power of ten
+// for very large or small magnitudes ("2.5×10⁻⁴"), a real minus sign.
+std::string tickLabel(double v);
+
 // The legend text of each series (empty for unnamed ones): its name, plus a
 // note naming the earlier series it coincides with, if any.
 std::vector<std::string> seriesLabels(const std::vector<PlotSeries>& series);

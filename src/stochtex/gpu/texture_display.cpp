@@ -20,7 +20,8 @@ void TextureDisplay::show(GLuint texture, const DisplayRect& rect, const Look& l
     glUniform1i(uniform("uTurnOver"), look.turnOver);
     glUniform1i(uniform("uEncode"), look.encode);
     glUniform1f(uniform("uOpacity"), look.opacity);
-    const bool blend = look.opacity < 1;
+    glUniform1i(uniform("uAlpha"), look.alpha);
+    const bool blend = look.opacity < 1 || look.alpha;
     if (blend) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -31,8 +32,8 @@ void TextureDisplay::show(GLuint texture, const DisplayRect& rect, const Look& l
 }
 
 void DisplayImage::upload(const Image& image) {
-    const Image rgb = image.channels() == 3 ? image : toRgb(image);
-    texture_ = floatTexture(rgb.width(), rgb.height(), 3, rgb.data().data());
+    const Image rgb = image.channels() == 3 || image.channels() == 4 ? image : toRgb(image);
+    texture_ = floatTexture(rgb.width(), rgb.height(), rgb.channels(), rgb.data().data());
     width_ = rgb.width();
     height_ = rgb.height();
 }

@@ -21,11 +21,12 @@ public:
         bool turnOver = false;  // image row 0 is in GL row 0 (render targets, uploaded images)
         bool encode = false;    // linear light to sRGB codes (render targets)
         float opacity = 1;      // < 1: blended over what the rectangle holds
+        bool alpha = false;     // the texture's alpha (an RGBA upload) scales the opacity, blended
     };
-    static constexpr Look kRenderTarget{true, true, 1};  // a pattern drawn as `render` draws it
-    static constexpr Look kImageCodes{true, false, 1};   // an uploaded Image of display codes
-    static constexpr Look kGlCodes{false, false, 1};     // a ShaderToy pass's output
-    static constexpr Look kGlLinear{false, true, 1};     // linear light drawn the GL way up (a mesh)
+    static constexpr Look kRenderTarget{true, true, 1, false};  // a pattern drawn as `render` draws it
+    static constexpr Look kImageCodes{true, false, 1, false}; // an uploaded Image of display codes
+    static constexpr Look kGlCodes{false, false, 1, false}; // a ShaderToy pass's output
+    static constexpr Look kGlLinear{false, true, 1, false}; // linear light drawn the GL way up (a mesh)
 
     // Needs a current context.
     TextureDisplay();

@@ -89,8 +89,10 @@ std::string chartConfig(const LineChart& c) {
     // labels need, where a right-hand legend in a caption-wide canvas gets
     // truncated labels (seen in headless Chromium).
     opt["plugins"]["legend"] = {{"position", "bottom"}};
-    opt["scales"]["x"] = axis(o.xLabel, o.logX, o.xMin, o.xMax);
-    opt["scales"]["y"] = axis(o.yLabel, o.logY, o.yMin, o.yMax);
+    // The PNG's axis ranges: Chart.js would fit a constant's last digits.
+    const PlotRange r = linePlotRange(c.series, o);
+    opt["scales"]["x"] = axis(o.xLabel, o.logX, r.x0, r.x1);
+    opt["scales"]["y"] = axis(o.yLabel, o.logY, r.y0, r.y1);
     std::string json = cfg.dump();
     // Inside <script>, "</" would end the element early.
     for (size_t p = 0; (p = json.find("</", p)) != std::string::npos; p += 3) json.replace(p, 2, "<\\/");
@@ -150,7 +152,8 @@ std::string htmlPage(const std::string& title, const std::string& body, int maxW
       << "</title><style>body{font-family:sans-serif;max-width:" << maxWidthPx
       << "px;margin:2em auto;color:#222}"
          "figure{display:inline-block;margin:0 1em 1.5em 0;vertical-align:top;max-width:100%}"
-         "img{max-width:100%}figcaption{max-width:"
+         // A thin frame: a white figure (a validity mask that holds everywhere) reads as a picture, not a gap.
+         "img{max-width:100%}figure img{border:1px solid #ccc}figcaption{max-width:"
       << captionWidthPx
       << "px;font-size:90%}table{border-collapse:collapse;margin:.5em 0 1.5em}"
          "td,th{border:1px solid #bbb;padding:.25em .6em;text-align:right}"
@@ -160,7 +163,19 @@ std::string htmlPage(const std::string& title, const std::string& body, int maxW
         if (kEmbeddedChartJsCount != 1) throw std::logic_error("htmlPage: Chart.js is not embedded");
         h << "<script>" << kEmbeddedChartJs[0].contents
           << "</script><script>document.querySelectorAll('script." << kChartClass
-          << "').forEach(function(s){new Chart(s.parentNode.querySelector('canvas'),JSON.parse(s.textContent));});"
+          << "').forEach(function(s){var c=JSON.parse(s.textContent);"
+             // Linear axes' ticks in the PNG's number format (tickLabel):
+             // 3 significant digits, powers of ten outside [0.01, 10⁴), and
+             // 0 for a tick that is zero up to Chart.js's rounding.
+             "['x','y'].forEach(function(k){var a=c.options.scales[k];if(a.type==='linear')a.ticks={callback:"
+             "function(v,i,t){var span=Math.abs(t[t.length-1].value-t[0].value)||1,m=Math.abs(v);"
+             "if(m<1e-9*span)return '0';var sign=v<0?'\u2212':'';"
+             "if(m>=1e4||m<1e-2){var e=Math.floor(Math.log10(m)+1e-9),f=m/Math.pow(10,e),"
+             "sup=String(e).replace(/-/g,'\u207b').replace(/[0-9]/g,function(d){return '\u2070\u00b9\u00b2\u00b3"
+             "\u2074\u2075\u2076\u2077\u2078\u2079'[d];});"
+             "return sign+(Math.abs(f-1)<1e-6?'':parseFloat(f.toPrecision(2))+'\u00d7')+'10'+sup;}"
+             "return sign+parseFloat(m.toPrecision(3));}};});"
+             "new Chart(s.parentNode.querySelector('canvas'),c);});"
              "</script>";
     }
     h << "</body></html>\n";

@@ -1,6 +1,8 @@
 #include "stochtex/report/table.h"
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -17,6 +19,26 @@ TableCell TableCell::value(double v, const char* format) {
 TableCell TableCell::integer(long long v) {
     TableCell c(std::to_string(v));
     c.number = double(v);
+    return c;
+}
+
+TableCell TableCell::none() {
+    TableCell c("—");
+    c.number = std::numeric_limits<double>::quiet_NaN();  // written as an empty CSV field
+    return c;
+}
+
+TableCell TableCell::percent(double v, int decimals) {
+    const double step = std::pow(10.0, -decimals);
+    char b[64];
+    if (v > 0 && v < step)
+        std::snprintf(b, sizeof b, "< %.*f", decimals, step);
+    else if (v < 100 && v > 100 - step)
+        std::snprintf(b, sizeof b, "> %.*f", decimals, 100 - step);
+    else
+        std::snprintf(b, sizeof b, "%.*f", decimals, v);
+    TableCell c(b);
+    c.number = v;
     return c;
 }
 
@@ -40,6 +62,7 @@ std::string Table::csv() const {
     for (const auto& row : rows) {
         for (size_t i = 0; i < row.size(); ++i) {
             o << (i ? "," : "");
+            if (row[i].number && std::isnan(*row[i].number)) continue;  // none(): an empty field
             if (row[i].number) o << *row[i].number;
             else o << row[i].text;
         }

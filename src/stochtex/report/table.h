@@ -24,6 +24,11 @@ struct TableCell {
     // A number shown with a printf format (e.g. "%.4f").
     static TableCell value(double v, const char* format = "%.4f");
     static TableCell integer(long long v);
+    // A cell that does not apply to its row: "—" on pages, empty in CSV.
+    static TableCell none();
+    // A percentage with `decimals` decimals that never rounds to 0 or 100
+    // when it is not (99.998 → "> 99.99", 0.001 → "< 0.01").
+    static TableCell percent(double v, int decimals = 2);
 };
 
 struct Table {

@@ -101,7 +101,13 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
     const double vmax = std::max(1e-3, double(all[all.size() * 995 / 1000]));
 
     const int thumbW = std::min(o.width, 360), thumbH = std::max(1, thumbW * o.height / o.width);
-    const int cropW = thumbW, cropH = std::max(1, cropW * (crop.y1 - crop.y0) / (crop.x1 - crop.x0));
+    // The crop magnified by a whole factor, at least 2, so that its pixels
+    // (where the variants differ) are seen as pixels: at the thumbnails'
+    // width or more (an unmagnified crop made two estimators with errors 2×
+    // apart look the same).
+    const int cropPixelsW = std::max(1, crop.x1 - crop.x0), cropPixelsH = std::max(1, crop.y1 - crop.y0);
+    const int magnify = std::max(2, int(std::lround(double(thumbW) / cropPixelsW)));
+    const int cropW = cropPixelsW * magnify, cropH = cropPixelsH * magnify;
     std::vector<std::vector<Image>> rows(4);
     std::vector<std::vector<std::string>> texts(4);
     std::vector<Figure> images;
@@ -121,7 +127,7 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
         const std::string err = k == 0 ? "" : ", error " + fixed4(res.rows[size_t(k - 1)].meanErrorGlobal) + " / " +
                                                   fixed4(res.rows[size_t(k - 1)].meanErrorCrop) + " (crop)";
         texts[0].push_back(std::string(captions[k]) + err);
-        texts[1].push_back(std::string(captions[k]) + ", mid-distance crop");
+        texts[1].push_back(std::string(captions[k]) + ", mid-distance crop, ×" + std::to_string(magnify));
         images.push_back({"figure12_" + tag + ".png", shown, ""});
         images.push_back({"figure12_" + tag + "_crop.png", std::move(cropShown), ""});
         if (k == 0) continue;

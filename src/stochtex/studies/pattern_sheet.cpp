@@ -2,6 +2,8 @@
 
 #include "stochtex/analysis/plot.h"
 #include "stochtex/image/colour_space.h"
+#include "stochtex/pattern/camera.h"
+#include "stochtex/pattern/filtered_pattern.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,19 +53,30 @@ PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const 
     View half = view;
     half.width = half.height = small;
     half.scale = view.scale * 2.0;
-    Image sheet(big + 2 * small, big, 3);
+    // A normal map's shading, as `render --response lean --filter none` draws it.
+    const int lean = pattern.normalMap() ? big : 0;
+    Image sheet(big + lean + 2 * small, big, 3);
     // The sheet is composed in sRGB codes (report/page.h, Figure): colours are
     // encoded as they go in, the noises are data shown as grey.
     paste(sheet, srgbFromLinear(out.pattern), 0, 0);
-    paste(sheet, resizeSmooth(srgbFromLinear(pattern.colormap().toImage()), small, small), big, 0);
-    paste(sheet, colormapUsage(pattern, view, small), big + small, 0);
-    paste(sheet, toRgb(pattern.renderNoise(0, half)), big, small);
-    paste(sheet, toRgb(pattern.renderNoise(1, half)), big + small, small);
     drawLabel(sheet, 0, big, big, label.c_str());
-    drawLabel(sheet, big, small, small, "colormap H");
-    drawLabel(sheet, big + small, small, small, "H where N falls");
-    drawLabel(sheet, big, big, small, "noise N_x");
-    drawLabel(sheet, big + small, big, small, "noise N_y");
+    if (lean) {
+        FilterOptions shading;
+        shading.use({StatisticsSource::Point, {ResponseKind::Lean}});
+        Camera camera;
+        camera.view = view;
+        paste(sheet, srgbFromLinear(FilteredPattern(pattern, shading).render(camera)), big, 0);
+        drawLabel(sheet, big, big, big, "LEAN shading");
+    }
+    const int right = big + lean;
+    paste(sheet, resizeSmooth(srgbFromLinear(pattern.colormap().toImage()), small, small), right, 0);
+    paste(sheet, colormapUsage(pattern, view, small), right + small, 0);
+    paste(sheet, toRgb(pattern.renderNoise(0, half)), right, small);
+    paste(sheet, toRgb(pattern.renderNoise(1, half)), right + small, small);
+    drawLabel(sheet, right, small, small, "colormap H");
+    drawLabel(sheet, right + small, small, small, "H where N falls");
+    drawLabel(sheet, right, big, small, "noise N_x");
+    drawLabel(sheet, right + small, big, small, "noise N_y");
     out.sheet = std::move(sheet);
     return out;
 }

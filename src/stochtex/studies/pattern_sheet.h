@@ -11,7 +11,10 @@ namespace stochtex {
 
 struct PatternSheet {
     Image pattern;  // size × size, the view at `scale` texels per pixel (linear light)
-    Image sheet;    // pattern | H, H where N falls / N_x, N_y (2·size × size), in sRGB codes
+    // pattern | H, H where N falls / N_x, N_y (2·size × size), in sRGB codes;
+    // a pattern with a normal map shows its LEAN shading (unfiltered, lit as
+    // its normal_map says, seen from above) right of the colours (3·size wide).
+    Image sheet;
 };
 PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const std::string& label);
 

@@ -273,15 +273,15 @@ ContrastStudyResult contrastStudy(const TextureSource& source, const ContrastTar
                          {"non_monotone_percent", "h' < 0 somewhere (polynomial)", "%"},
                          {"mean", "mean", ""},
                          {"stddev", "std", ""}};
-    auto addRow = [&](const std::string& name, const Image& img, double clamped, double invalid) {
+    // Clamping applies to the corrections, the validity condition to the polynomial: elsewhere "—".
+    auto addRow = [&](const std::string& name, const Image& img, TableCell clamped, TableCell invalid) {
         const ChannelStats s = channelStats(img);
-        out.table.add({name, TableCell::value(clamped, "%.2f"), TableCell::value(invalid, "%.2f"),
-                       TableCell::value(s.mean), TableCell::value(s.stddev)});
+        out.table.add({name, std::move(clamped), std::move(invalid), TableCell::value(s.mean), TableCell::value(s.stddev)});
     };
     std::vector<Image> textures{texture}, histograms, curves;
     std::vector<std::string> names{"uncorrected"};
-    if (!targets.reference.empty()) addRow("white noise (base)", targets.reference, 0, 0);
-    addRow("uncorrected", texture, 0, 0);
+    if (!targets.reference.empty()) addRow("white noise (base)", targets.reference, TableCell::none(), TableCell::none());
+    addRow("uncorrected", texture, TableCell::none(), TableCell::none());
     histograms.push_back(histogramPlot(texture, "uncorrected"));
     curves.push_back(linePlot({PlotSeries{"identity", {0, 1}, {0, 1}, {0.3f, 0.3f, 0.3f}}}, curveAxes("no correction")));
     std::vector<Figure> corrected;
@@ -293,7 +293,8 @@ ContrastStudyResult contrastStudy(const TextureSource& source, const ContrastTar
             corrected.push_back({"polynomial_non_monotone.png", r.invalid,
                                  "Pixels where the polynomial's h' < 0 somewhere on [0, 1] (white): eq. 2.17's "
                                  "validity condition fails."});
-        addRow(name, r.image, r.clampedPercent, r.invalidPercent);
+        addRow(name, r.image, TableCell::percent(r.clampedPercent),
+               m == ContrastMethod::Polynomial ? TableCell::percent(r.invalidPercent) : TableCell::none());
         textures.push_back(r.image);
         char clamped[32];
         std::snprintf(clamped, sizeof clamped, "%.1f%% clamped", r.clampedPercent);

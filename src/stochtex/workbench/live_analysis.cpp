@@ -79,11 +79,34 @@ LiveAnalysisResult liveFlow(const Image& previous, const Image& current) {
     return r;
 }
 
+namespace {
+
+// A map of one-channel values as colours over [lo, hi], with an alpha that
+// grows with |value − zero| to 1 at the range's far end: the colour map's
+// zero is see-through in an overlay (a static pattern's flicker map, 0
+// everywhere, tinted the whole picture with the map's dark end).
+Image colouredMap(const Image& values, double lo, double hi, HeatPalette palette, double zero) {
+    const Image rgb = colourise(values, lo, hi, palette);
+    Image out(rgb.width(), rgb.height(), 4, Image::Uninitialized{});
+    const double reach = std::max(hi - zero, zero - lo);
+    for (int y = 0; y < rgb.height(); ++y)
+        for (int x = 0; x < rgb.width(); ++x) {
+            for (int c = 0; c < 3; ++c) out.at(x, y, c) = rgb.at(x, y, c);
+            const double v = values.at(x, y);  // not finite (no flow there): see-through
+            out.at(x, y, 3) = std::isfinite(v) ? float(std::clamp(std::abs(v - zero) / reach, 0.0, 1.0)) : 0.0f;
+        }
+    return out;
+}
+
+}  // namespace
+
 LiveAnalysisResult liveFlicker(const Image& previous, const Image& current) {
     Image map;
     const FlickerMeasure m = flowCompensatedFlicker(previous, current, &map);
     LiveAnalysisResult r;
-    r.image = colourise(map, 0, std::max(1e-6, 4 * m.residual), HeatPalette::Viridis);
+    // The scale's top: 4× the mean residual, and at least 2 codes, so that a
+    // still frame's rounding noise is not stretched over the whole map.
+    r.image = colouredMap(map, 0, std::max(2.0 / 255.0, 4 * m.residual), HeatPalette::Viridis, 0);
     char text[300];
     std::snprintf(text, sizeof text, "residual %.4f (codes)\ncontrast %.4f\nresidual / contrast %.3f", m.residual,
                   m.contrast, m.relative);
@@ -108,11 +131,11 @@ LiveAnalysisResult LiveCorrelation::result(LiveStatistic shown) const {
     const ChannelStats m = channelStats(mean), v = channelStats(variance);
     switch (shown) {
         case LiveStatistic::Correlation:
-            r.image = colourise(accumulator_.correlationWithPoint(), -1, 1, HeatPalette::Diverging);
+            r.image = colouredMap(accumulator_.correlationWithPoint(), -1, 1, HeatPalette::Diverging, 0);
             break;
         case LiveStatistic::Mean: r.image = colourise(mean, 0, 1, HeatPalette::Viridis); break;
         case LiveStatistic::Variance:
-            r.image = colourise(variance, 0, std::max(1e-6, v.mean + 3 * v.stddev), HeatPalette::Viridis);
+            r.image = colouredMap(variance, 0, std::max(1e-6, v.mean + 3 * v.stddev), HeatPalette::Viridis, 0);
             break;
     }
     char text[400];

@@ -23,7 +23,10 @@ inline const EnumNames<LiveAnalysisKind> kLiveAnalysisNames{{"spectrum", LiveAna
                                                            {"correlation", LiveAnalysisKind::Correlation}};
 
 struct LiveAnalysisResult {
-    Image image;          // display codes, RGB, the frame's size, row 0 at the top
+    // Display codes, the frame's size, row 0 at the top: RGB, or RGBA for a
+    // map over the frame whose alpha is the value's strength (0 where the
+    // colour map shows zero), so that an overlay shows the frame there.
+    Image image;
     std::string summary;  // the study's numbers, one line each
     std::vector<float> profile;  // a curve to plot beside it (spectrum: log10 radial power), may be empty
     std::string profileLabel;

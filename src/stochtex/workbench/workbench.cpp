@@ -433,12 +433,17 @@ private:
                 glEnable(GL_SCISSOR_TEST);
                 glScissor(pr.x + cut, 0, pr.width - cut, pr.height);
                 showAnalysis(pr, 1);
+                // The split line, part of the picture (screenshots and
+                // recordings show where the halves meet): two pixels of white.
+                glScissor(pr.x + std::clamp(cut - 1, 0, std::max(0, pr.width - 2)), 0, std::min(2, pr.width), pr.height);
+                glClearColor(1, 1, 1, 1);
+                glClear(GL_COLOR_BUFFER_BIT);
                 glDisable(GL_SCISSOR_TEST);
                 break;
             }
             case WorkbenchMode::Overlay:
                 display_->show(texture, tr, look);
-                showAnalysis(pr, overlayOpacity_);
+                showAnalysis(pr, overlayOpacity_, true);
                 break;
         }
     }
@@ -449,10 +454,12 @@ private:
                std::to_string(int(view_));
     }
 
-    void showAnalysis(const DisplayRect& rect, float opacity) {
+    // overlay: a map's own alpha (LiveAnalysisResult) scales the opacity, so the frame shows where it is zero.
+    void showAnalysis(const DisplayRect& rect, float opacity, bool overlay = false) {
         if (analysisImage_.empty()) return;
         TextureDisplay::Look look = TextureDisplay::kImageCodes;
         look.opacity = opacity;
+        look.alpha = overlay;
         display_->show(analysisImage_.texture(), rect, look);
     }
 
@@ -887,13 +894,6 @@ private:
     }
 
     void drawPanels() {
-        if (mode_ == WorkbenchMode::Split) {
-            // The split line, over the picture (after the screenshot was taken).
-            const DisplayRect pr = pictureRect();
-            const float x = (float(pr.x) + split_ * float(pr.width)) / pixelScale_;
-            ImGui::GetForegroundDrawList()->AddLine(ImVec2(x, 0), ImVec2(x, float(pr.height) / pixelScale_),
-                                                    IM_COL32(255, 255, 255, 160));
-        }
         if (showHelp_) drawHelp();
         if (!showPanel_) return;
         ImGui::SetNextWindowPos(ImVec2(0, 0));

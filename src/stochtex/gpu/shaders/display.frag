@@ -10,6 +10,7 @@ uniform ivec4 uRect;  // x, y (GL window coordinates, bottom left), width, heigh
 uniform bool uTurnOver;
 uniform bool uEncode;
 uniform float uOpacity;
+uniform bool uAlpha;  // the texture's alpha scales the opacity (an overlay whose zero is see-through)
 layout(location = 0) out vec4 fragColour;
 
 void main() {
@@ -17,6 +18,7 @@ void main() {
     vec2 f = (gl_FragCoord.xy - vec2(uRect.xy)) / vec2(uRect.zw);
     ivec2 p = clamp(ivec2(floor(f * vec2(size))), ivec2(0), size - 1);
     if (uTurnOver) p.y = size.y - 1 - p.y;
-    vec3 c = texelFetch(uImage, p, 0).rgb;
-    fragColour = vec4(uEncode ? srgbFromLinear3(c) : c, uOpacity);
+    vec4 t = texelFetch(uImage, p, 0);
+    vec3 c = t.rgb;
+    fragColour = vec4(uEncode ? srgbFromLinear3(c) : c, uAlpha ? t.a * uOpacity : uOpacity);
 }
