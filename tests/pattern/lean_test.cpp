@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "stochtex/core/hash.h"
@@ -245,6 +246,46 @@ TEST(LeanResponse, ZeroFootprintIsTheUnfilteredShading) {
     FootprintStats s;
     s.mean = {0.1f, -0.05f};
     EXPECT_EQ(r.point(0.1f, -0.05f), r.filtered(s));
+}
+
+// Diffuse shading averaged over a large footprint: the reference is the
+// mean of the unfiltered shading n(s)·l over the footprint's slopes, which
+// is not the shading through the mean slope (n·l is concave near the top).
+// With exact footprint statistics (no estimator error) and no specular
+// lobe, the filtered diffuse term integrated over the slopes' distribution
+// (kernel leanDiffuse) meets the supersampled reference within 0.006;
+// through the mean normal alone it stayed 0.04–0.05 too bright at every
+// footprint.
+TEST(LeanResponse, DiffuseConvergesToTheReferenceAtLargeFootprints) {
+    nlohmann::json j = nlohmann::json::parse(R"({
+        "name": "bumps", "seed": 5,
+        "noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]},
+        "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]},
+        "colormap": {"type": "gaussian"},
+        "normal_map": {"height": {"type": "spectrum", "size": 128,
+                                  "components": [{"shape": "bilobe", "frequency": 12, "bandwidth": 3, "orientation": 30}]},
+                       "amplitude": 0.3, "light": [0.3, -0.6, 0.75], "view": [0, 0.4, 1],
+                       "albedo": [1, 1, 1], "specular": 0}})");
+    const Pattern p = Pattern::build(parsePatternSpec(JsonReader(j, "bumps.json"), "."));
+    FilterOptions exact, reference;
+    exact.source = StatisticsSource::Exact;
+    reference.source = StatisticsSource::Reference;
+    exact.response.kind = reference.response.kind = ResponseKind::Lean;
+    exact.referenceMaxSamples = reference.referenceMaxSamples = 64;
+    for (const double scale : {8.0, 32.0}) {
+        Camera cam;
+        cam.view = View{16, 16, scale, 0.0, 0.0};
+        const Image a = FilteredPattern(p, exact).render(cam), b = FilteredPattern(p, reference).render(cam);
+        double bias = 0;
+        for (size_t i = 0; i < a.data().size(); ++i) bias += double(a.data()[i]) - double(b.data()[i]);
+        bias /= double(a.data().size());
+        // Measured (linear light, albedo 1): lit through the mean normal
+        // +0.0395 at 8 and +0.0479 at 32 texels a pixel; a second-order
+        // Taylor term −0.0072 and −0.0126; 3×3 Gauss–Hermite (leanDiffuse)
+        // +0.0044 and +0.0027.
+        std::printf("[ info ] scale %g: mean (filtered − reference) %.5f\n", scale, bias);
+        EXPECT_LT(std::abs(bias), 0.006) << "scale " << scale;
+    }
 }
 
 TEST(LeanResponse, NeedsANormalMapAndAValidRoughness) {

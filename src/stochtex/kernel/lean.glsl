@@ -12,8 +12,9 @@
 // lobe around the point's own slope, the unfiltered shading.
 
 struct LeanLobe {
-    vec2 mean;   // mean slope b
-    vec3 sigma;  // Σ_xx, Σ_yy, Σ_xy, the base roughness included
+    vec2 mean;       // mean slope b
+    vec3 sigma;      // Σ_xx, Σ_yy, Σ_xy, the base roughness included
+    vec3 footprint;  // the footprint's own Σ_xx, Σ_yy, Σ_xy (without the base roughness): the diffuse term's spread
 };
 
 // The lobe of a footprint's slope statistics. The estimated covariance can
@@ -27,7 +28,8 @@ inline LeanLobe leanLobe(vec2 mean, vec2 var, float cov, float roughness) {
     float bound = sqrt(vx * vy);
     LeanLobe l;
     l.mean = mean;
-    l.sigma = vec3(vx + base, vy + base, clamp(cov, -bound, bound));
+    l.footprint = vec3(vx, vy, clamp(cov, -bound, bound));
+    l.sigma = vec3(vx + base, vy + base, l.footprint.z);
     return l;
 }
 
@@ -50,18 +52,49 @@ inline float leanNdf(LeanLobe l, vec3 h) {
     return leanSlopeDensity(l, s) / (c2 * c2);
 }
 
+// The Lambertian term of one slope s: n(s)·l = (l_z − s·l_xy)/√(1 + |s|²),
+// 0 when the facet faces away.
+inline float leanLambert(vec2 s, vec3 l) {
+    return max((l.z - s.x * l.x - s.y * l.y) / sqrt(1.0f + s.x * s.x + s.y * s.y), 0.0f);
+}
+
+// The Lambertian term averaged over the footprint's slopes s ~ N(b,
+// Σ_footprint): 3×3 Gauss–Hermite nodes (b + L·(t_i, t_j), L L^T = Σ,
+// t ∈ {−√3, 0, √3}, weights 1/6, 2/3, 1/6; exact for polynomials of degree
+// 5 in each axis). Lit through the mean normal alone, a filtered pixel
+// stayed brighter than the mean of its points' shading at every footprint
+// (n·l is concave about the light; a second-order Taylor term overshot at
+// RMS slope 0.3). With Σ = 0 it is the point's own shading.
+inline float leanDiffuse(LeanLobe lobe, vec3 l) {
+    vec3 c = lobe.footprint;
+    if (c.x <= 0.0f && c.y <= 0.0f) return leanLambert(lobe.mean, l);  // a point: its own shading, exactly
+    float l11 = sqrt(c.x);
+    float l21 = l11 > 0.0f ? c.z / l11 : 0.0f;
+    float l22 = sqrt(max(c.y - l21 * l21, 0.0f));
+    float sum = 0.0f;
+    for (int i = 0; i < 3; ++i) {
+        float ti = 1.73205081f * float(i - 1);
+        float wi = i == 1 ? 0.66666667f : 0.16666667f;
+        for (int j = 0; j < 3; ++j) {
+            float tj = 1.73205081f * float(j - 1);
+            float wj = j == 1 ? 0.66666667f : 0.16666667f;
+            vec2 s = lobe.mean + vec2(l11 * ti, l21 * ti + l22 * tj);
+            sum += wi * wj * leanLambert(s, l);
+        }
+    }
+    return sum;
+}
+
 // Radiance towards the unit view direction v under a directional light of
 // unit direction l (both with z > 0) and unit irradiance: a Lambertian
-// albedo lit through the mean normal plus the lobe's specular reflection
-// D(h)/(4 v_z) (micro-facet model without Fresnel and shadowing; the
-// geometric normal is z), scaled by `specular`.
+// albedo averaged over the footprint's normals (leanDiffuse) plus the
+// lobe's specular reflection D(h)/(4 v_z) (micro-facet model without
+// Fresnel and shadowing; the geometric normal is z), scaled by `specular`.
 inline vec3 leanShade(LeanLobe lobe, vec3 l, vec3 v, vec3 albedo, float specular) {
     float hx = l.x + v.x;
     float hy = l.y + v.y;
     float hz = l.z + v.z;
     float hn = sqrt(hx * hx + hy * hy + hz * hz);
     float d = leanNdf(lobe, vec3(hx / hn, hy / hn, hz / hn));
-    float nn = sqrt(1.0f + lobe.mean.x * lobe.mean.x + lobe.mean.y * lobe.mean.y);
-    float diffuse = max((l.z - lobe.mean.x * l.x - lobe.mean.y * l.y) / nn, 0.0f);
-    return albedo * diffuse + vec3(specular * d / (4.0f * v.z));
+    return albedo * leanDiffuse(lobe, l) + vec3(specular * d / (4.0f * v.z));
 }
