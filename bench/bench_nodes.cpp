@@ -12,6 +12,9 @@
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/presets.h"
+#include "stochtex/pattern/pattern.h"
+#include "alternate_timing.h"
 
 using namespace stochtex;
 
@@ -52,4 +55,65 @@ const bool kRegistered = [] {
     return true;
 }();
 
+}  // namespace
+
+// A graph that folds into a plain pattern ("linear part → colormap": the
+// camouflage preset written as nodes), rendered by the plain pattern's
+// evaluator (Pattern / FilteredPattern) and by the graph evaluator
+// (GraphPattern / FilteredGraph), alternately in one run, 512². Args:
+// filter (0 none, 1 paper, 2 smooth, 3 smooth on a plane tilted 75°),
+// scale (texels per pixel), K.
+namespace {
+const PatternSpec& camouflageGraph() {
+    static const PatternSpec spec = [] {
+        nlohmann::json g = JsonReader::parse(std::string(presetText("camouflage")), "camouflage");
+        nlohmann::json nodes;
+        nodes["nx"] = {{"type", "spectral_noise"}, {"components", g["noise_x"]["components"]}, {"size", 512}};
+        nodes["ny"] = {{"type", "spectral_noise"}, {"components", g["noise_y"]["components"]}, {"size", 512}};
+        nodes["out"] = {{"type", "colormap"}, {"x", "nx"}, {"y", "ny"}, {"colormap", g["colormap"]}};
+        nlohmann::json graph{{"name", "camouflage-graph"}, {"seed", 6}, {"nodes", nodes}, {"output", "out"}};
+        const nlohmann::json parsed = JsonReader::parse(graph.dump(), "camouflage-graph");
+        return parsePatternSpec(JsonReader(parsed, "camouflage-graph"), ".");
+    }();
+    return spec;
+}
+
+void BM_FoldingGraphVsPattern(benchmark::State& state) {
+    const PatternSpec& spec = camouflageGraph();
+    static const Pattern pattern = Pattern::build(spec);
+    static const GraphPattern graph = GraphPattern::build(spec);
+    Camera cam;
+    cam.view.width = cam.view.height = 512;
+    cam.view.scale = double(state.range(1));
+    bench::AlternateTimes t;
+    if (state.range(0) == 0) {
+        t = bench::timeAlternately(
+            state, [&] { benchmark::DoNotOptimize(pattern.render(cam.view).data().data()); },
+            [&] { benchmark::DoNotOptimize(graph.render(cam.view).data().data()); });
+    } else {
+        FilterOptions o;
+        o.use(parseFilter(state.range(0) == 1 ? "paper" : "smooth"));
+        if (state.range(0) == 3) {  // a perspective plane at 75°: footprints of every size and shape, and sky
+            cam.kind = Camera::Kind::Plane;
+            cam.tiltDeg = 75;
+        }
+        o.aniso = int(state.range(2));
+        const FilteredPattern fp(pattern, o);
+        const FilteredGraph fg(graph, o);
+        t = bench::timeAlternately(
+            state, [&] { benchmark::DoNotOptimize(fp.render(cam).data().data()); },
+            [&] { benchmark::DoNotOptimize(fg.render(cam).data().data()); });
+    }
+    bench::reportAlternateRates(state, 512.0 * 512.0, bench::TexelRate::Mega, {"pattern", t.first},
+                                {"graph", t.second});
+}
+BENCHMARK(BM_FoldingGraphVsPattern)
+    ->ArgNames({"filter", "scale", "K"})
+    ->Args({0, 1, 1})
+    ->Args({1, 16, 1})
+    ->Args({2, 16, 1})
+    ->Args({2, 16, 8})
+    ->Args({3, 1, 8})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 }  // namespace

@@ -183,6 +183,91 @@ TEST(GraphPattern, FoldingGraphEvaluatesAsItsPattern) {
     }
 }
 
+// A program that is a plain pattern's H ∘ N runs without the interpreter
+// (GraphPattern::plainColormap); what it gives is the interpreter's, bit
+// for bit: the render against evaluate(u, v) per pixel, and the filtered
+// shade against the program on the estimators' moments (fromMoments).
+TEST(GraphPattern, PlainProgramShortcutIsTheInterpreterBitForBit) {
+    const PatternSpec s = parse(graph(R"("x": )" + kNoise + R"(, "y": {"type": "spectral_noise", "size": 64,
+        "components": [{"shape": "ring", "frequency": 6, "bandwidth": 2}]},
+        "c": {"type": "colormap", "x": "x", "y": "y", "colormap": {"type": "phasor", "profile": "sine"}})"));
+    const GraphPattern g = GraphPattern::build(s);
+    ASSERT_NE(g.plainColormap(), nullptr);
+    const View view{40, 36, 1.7, 13.25, -40.5};
+    const Image image = g.render(view);
+    const double invW = 1.0 / g.exampleSize();
+    for (int py = 0; py < view.height; ++py)
+        for (int px = 0; px < view.width; ++px) {
+            const auto [u, v] = pixelUv(view, invW, px, py);
+            ASSERT_EQ(g.evaluate(u, v), (Rgb{image.at(px, py, 0), image.at(px, py, 1), image.at(px, py, 2)}))
+                << px << ", " << py;
+        }
+    for (const char* filter : {"smooth", "paper"}) {
+        FilterOptions o;
+        o.use(parseFilter(filter));
+        o.aniso = 4;
+        const FilteredGraph f(g, o);
+        Camera cam;
+        cam.kind = Camera::Kind::Plane;
+        cam.tiltDeg = 70;
+        cam.view = {48, 48, 0.5, 3.5, 1.0};
+        int shaded = 0;
+        for (int py = 0; py < 48; py += 3)
+            for (int px = 0; px < 48; px += 5) {
+                double u = 0, v = 0;
+                Jacobian j;
+                if (!cam.footprint(px, py, g.exampleSize(), u, v, j)) continue;
+                const FootprintEstimator& e = f.estimator(0);
+                const FootprintStats st =
+                    e.estimate(makeFootprint(u, v, j, e.exampleSize(), e.maxLod(), o.aniso), o.estimator);
+                const Rgb interpreted = f.fromMoments({{st.mean[0], std::max(st.varX, 0.0f)}, {st.mean[1], std::max(st.varY, 0.0f)}},
+                                                      {st.cov});
+                ASSERT_EQ(f.shade(true, u, v, j), interpreted) << filter << " at " << px << ", " << py;
+                ++shaded;
+            }
+        EXPECT_GT(shaded, 50);
+    }
+    // A colormap reading one node twice is no plain program: its one leaf is tiled once.
+    EXPECT_EQ(GraphPattern::build(parse(graph(R"("x": )" + kNoise + R"(,
+        "c": {"type": "colormap", "x": "x", "y": "x", "colormap": {"type": "gaussian"}})"))).plainColormap(), nullptr);
+}
+
+// A plain pattern file compiles to the program "two leaves → colormap",
+// which every CPU renderer now runs (makeCpuRenderer): for every preset,
+// filter and view it renders the plain pattern's image (Pattern and
+// FilteredPattern) bit for bit, sky included.
+TEST(GraphPattern, PlainPatternProgramRendersThePatternsImages) {
+    int compared = 0;
+    for (const std::string& name : presetNames()) {
+        const PatternSpec spec = loadPreset(name);
+        if (spec.graph) continue;
+        SCOPED_TRACE(name);
+        const Pattern pattern = Pattern::build(spec);
+        const GraphPattern program = GraphPattern::build(spec);
+        ASSERT_NE(program.plainColormap(), nullptr);
+        for (const char* filter : {"none", "paper", "smooth", "exact", "reference"}) {
+            FilterOptions o;
+            o.use(parseFilter(filter));
+            o.aniso = 4;
+            o.referenceMaxSamples = 6;
+            const FilteredPattern f(pattern, o);
+            const FilteredGraph g(program, o);
+            EXPECT_EQ(f.skyColour(), g.skyColour()) << filter;
+            for (const bool plane : {false, true}) {
+                Camera cam;
+                cam.view = {20, 16, plane ? 0.6 : 5.0, 3.5, -7.25};
+                if (plane) {
+                    cam.kind = Camera::Kind::Plane;
+                    cam.tiltDeg = 80;  // the top rows are sky
+                }
+                EXPECT_TRUE(identical(f.render(cam), g.render(cam))) << filter << (plane ? ", plane" : ", zoom");
+                ++compared;
+            }
+        }
+    }
+    EXPECT_GE(compared, 150);
+}
+
 // Each non-linear node on known inputs: the node's value against its
 // formula applied to the value of its input, pixel by pixel. The image
 // colormap holds R = x, G = y, B = 0.25 as data (a float EXR), so a channel

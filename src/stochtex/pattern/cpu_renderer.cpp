@@ -27,9 +27,9 @@ private:
 }  // namespace
 
 std::unique_ptr<ViewRenderer> makeCpuRenderer(const PatternSpec& spec, const FilterOptions& options) {
-    if (needsGraphEvaluator(spec))
-        return std::make_unique<Owning<GraphPattern, FilteredGraph>>(GraphPattern::build(spec), options);
-    return std::make_unique<Owning<Pattern, FilteredPattern>>(Pattern::build(spec), options);
+    if (options.response.kind == ResponseKind::Lean && !spec.graph)
+        return std::make_unique<Owning<Pattern, FilteredPattern>>(Pattern::build(spec), options);
+    return std::make_unique<Owning<GraphPattern, FilteredGraph>>(GraphPattern::build(spec), options);
 }
 
 }  // namespace stochtex

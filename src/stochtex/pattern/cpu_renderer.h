@@ -1,7 +1,9 @@
 #pragma once
 // The CPU evaluator of a pattern file as a ViewRenderer that owns what it
-// reads: a plain pattern's FilteredPattern, or a texture graph's
-// FilteredGraph where the file is not a pattern H∘N.
+// reads: the file's program (GraphPattern: a graph's, or a plain pattern's
+// "two leaves → colormap") filtered by FilteredGraph; the lean response of a
+// plain pattern's normal map, which its program does not carry yet, by
+// FilteredPattern.
 #include <memory>
 
 #include "stochtex/pattern/filtered_pattern.h"

@@ -50,11 +50,37 @@ vec3 input(const Slots& slots, const GraphPattern::Operation& op, int k) {
     return op.inputs[size_t(k)] >= 0 ? slots[size_t(op.inputs[size_t(k)])] : vec3(0.0f);
 }
 
+// A plain pattern file {noise_x, noise_y, colormap} as the graph it is: its
+// two noises as source nodes, seeded as the file says (noiseSeed), and a
+// colormap node reading them. Its leaves are tiled with the offset seeds of
+// the file's noises 1 and 2 (as every graph's leaves), so the program gives
+// the plain pattern's values.
+TextureGraph plainPatternGraph(const PatternSpec& spec) {
+    TextureGraph graph;
+    const char* ids[2] = {"noise_x", "noise_y"};
+    for (int axis = 0; axis < 2; ++axis) {
+        GraphNode n;
+        n.id = ids[axis];
+        n.noise = spec.noise[axis];
+        n.info = findGraphNode(n.noise.source == NoiseSpec::Source::Spectrum ? "spectral_noise" : "exemplar");
+        n.seed = noiseSeed(spec, axis);
+        graph.nodes.push_back(std::move(n));
+    }
+    GraphNode h;
+    h.id = "colormap";
+    h.info = findGraphNode("colormap");
+    h.inputs = {{"x", ids[0]}, {"y", ids[1]}};
+    h.colormap = spec.colormap;
+    graph.nodes.push_back(std::move(h));
+    graph.output = "colormap";
+    return graph;
+}
+
 }  // namespace
 
 GraphPattern GraphPattern::build(const PatternSpec& spec) {
-    if (!spec.graph) throw std::invalid_argument("GraphPattern::build: the pattern is not a graph");
-    const TextureGraph& graph = *spec.graph;
+    const TextureGraph plain = spec.graph ? TextureGraph{} : plainPatternGraph(spec);
+    const TextureGraph& graph = spec.graph ? *spec.graph : plain;
     const std::string& context = spec.name;
     // Which nodes are linear in the sources (fold into an example).
     std::map<std::string, bool> linear;
@@ -115,6 +141,10 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
     // noise k (deriveSeed(seed, k + 1)); all leaves share the first seed
     // when offsets are shared.
     const std::vector<NoiseExample> fields = buildGraphFields(graph, fieldIds, spec.seed, context);
+    // A plain pattern's two noises are one vector field N on one set of tiles (paper eq. 7).
+    if (!spec.graph && fields[0].size() != fields[1].size())
+        throw InputError(context + ": noise_x is " + std::to_string(fields[0].size()) + " texels wide but noise_y is " +
+                         std::to_string(fields[1].size()) + "; both examples must have the same size");
     const bool shared = spec.offsets == OffsetMode::Shared;
     std::map<std::string, uint32_t> groupSeed;
     const auto seedOf = [&](const std::string& fieldId, size_t leaf) {
@@ -218,7 +248,14 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
     return p;
 }
 
-template <class Slots>
+const ColormapTable* GraphPattern::plainColormap() const {
+    if (operations_.size() != 1 || leafCount() != 2 || pairs_.size() != 1) return nullptr;
+    const Operation& op = operations_.front();
+    if (!std::holds_alternative<ColormapOp::Params>(op.params) || op.inputs[0] != 0 || op.inputs[1] != 1) return nullptr;
+    if (leafLocation(0) != std::array<int, 2>{0, 0} || leafLocation(1) != std::array<int, 2>{0, 1}) return nullptr;
+    return &tables_[size_t(op.table)].point;
+}
+
 Rgb GraphPattern::run(Slots& slots, int lastSlot, const Direction& eye) const {
     if (lastSlot < leafCount()) return toRgb(slots[size_t(lastSlot)]);
     const GraphTables tables(tables_, nullptr);
@@ -228,6 +265,7 @@ Rgb GraphPattern::run(Slots& slots, int lastSlot, const Direction& eye) const {
     size_t out = size_t(leafCount());
     for (const Operation& op : operations_) {
         ctx.table = op.table;
+        ctx.pointTable = op.table >= 0 ? &tables_[size_t(op.table)].point : nullptr;
         slots[out] = opPoint(op.params, input(slots, op, 0), input(slots, op, 1), input(slots, op, 2), ctx);
         if (int(out) == lastSlot) break;
         ++out;
@@ -235,58 +273,87 @@ Rgb GraphPattern::run(Slots& slots, int lastSlot, const Direction& eye) const {
     return toRgb(slots[size_t(lastSlot)]);
 }
 
-Rgb GraphPattern::evaluate(const BlendStencil& s, float fu, float fv, int lastSlot, const Direction& eye) const {
-    std::array<vec3, kMaxGraphNodes> slots;  // leaves, then one per operation (each a node)
+Rgb GraphPattern::evaluate(double u, double v, int lastSlot, const Direction& eye, Slots& slots) const {
+    if (lastSlot < 0) lastSlot = outputSlot();
+    slots.resize(size_t(outputSlot() + 1));
+    const BlendStencil plain = triangleGrid(u, v, gridDensity());
     for (int k = 0; k < leafCount(); ++k) {
+        // Each leaf at its pair's uv (the pair's tiles are its own).
         const TilingBlendingNoise& n = leaf(k);
-        slots[size_t(k)] = vec3(n.example().toOutput(n.blend(s, fu, fv)), 0.0f, 0.0f);
+        float b = 0;
+        if (untransformed_) {
+            b = n.blend(plain, periodFraction(u), periodFraction(v));
+        } else {
+            const auto [pu, pv] = pairTransforms_[size_t(leafLocation(k)[0])].apply(u, v);
+            b = n.blend(triangleGrid(pu, pv, gridDensity()), periodFraction(pu), periodFraction(pv));
+        }
+        slots[size_t(k)] = vec3(n.example().toOutput(b), 0.0f, 0.0f);
     }
     return run(slots, lastSlot, eye);
 }
 
 Rgb GraphPattern::evaluate(double u, double v, int lastSlot, const Direction& eye) const {
-    if (lastSlot < 0) lastSlot = outputSlot();
-    if (untransformed_)
-        return evaluate(triangleGrid(u, v, gridDensity()), periodFraction(u), periodFraction(v), lastSlot, eye);
-    std::array<vec3, kMaxGraphNodes> slots;
-    for (int k = 0; k < leafCount(); ++k) {
-        // Each leaf at its pair's uv (the pair's tiles are its own).
-        const auto [pair, channel] = leafLocation(k);
-        const auto [pu, pv] = pairTransforms_[size_t(pair)].apply(u, v);
-        const TilingBlendingNoise& n = leaf(k);
-        const float b = n.blend(triangleGrid(pu, pv, gridDensity()), periodFraction(pu), periodFraction(pv));
-        slots[size_t(k)] = vec3(n.example().toOutput(b), 0.0f, 0.0f);
-    }
-    return run(slots, lastSlot, eye);
+    Slots slots;
+    return evaluate(u, v, lastSlot, eye, slots);
 }
 
 Rgb GraphPattern::fromLeafValues(const std::vector<float>& values) const {
     if (int(values.size()) != leafCount())
         throw std::invalid_argument("GraphPattern::fromLeafValues: " + std::to_string(values.size()) + " values for " +
                                     std::to_string(leafCount()) + " leaves");
-    std::array<vec3, kMaxGraphNodes> slots;
+    Slots slots(size_t(outputSlot() + 1));
     for (size_t k = 0; k < values.size(); ++k) slots[k] = vec3(values[k], 0.0f, 0.0f);
     return run(slots, outputSlot(), kFromAbove);
 }
 
 Rgb GraphPattern::evaluate(double u, double v) const { return evaluate(u, v, -1, kFromAbove); }
 
+// Walks the view's pixels row-parallel. Untransformed leaves share one
+// stencil per pixel, and neighbouring pixels on a scanline mostly see the
+// same three tiles, so the per-tile work of every leaf (hashing the offsets,
+// locating the rows to read) is redone only when the tiles change, as in
+// Pattern::render.
 Image GraphPattern::renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray) const {
     validateView(view);
     Image out(view.width, view.height, 3, Image::Uninitialized{});
     const double invW = 1.0 / double(exampleSize());
+    std::vector<const TilingBlendingNoise*> leaves;
+    for (int k = 0; k < leafCount(); ++k) leaves.push_back(&leaf(k));
+    const ColormapTable* plain = lastSlot == outputSlot() ? plainColormap() : nullptr;
     parallelRows(
         view.height,
         [&](int y0, int y1) {
+            Slots slots(size_t(outputSlot() + 1));
+            std::vector<TilingBlendingNoise::TileRows> tiles(leaves.size());
+            BlendStencil last{};
             for (int py = y0; py < y1; ++py) {
                 const double v = pixelUv(view, invW, 0, py)[1];
                 const TriangleGridRow grid(v, gridDensity());
                 const float fv = periodFraction(v);
                 float* row = out.row(py);
+                bool valid = false;
                 for (int px = 0; px < view.width; ++px) {
                     const double u = pixelUv(view, invW, px, py)[0];
-                    Rgb c = untransformed_ ? evaluate(grid.stencil(u), periodFraction(u), fv, lastSlot, kFromAbove)
-                                           : evaluate(u, v, lastSlot, kFromAbove);
+                    Rgb c;
+                    if (untransformed_) {
+                        const BlendStencil s = grid.stencil(u);
+                        if (!valid || !sameTiles(s, last)) {
+                            for (size_t k = 0; k < leaves.size(); ++k) tiles[k] = leaves[k]->tileRows(s, fv);
+                            valid = true;
+                        }
+                        last = s;
+                        const float fu = periodFraction(u);
+                        if (plain) {
+                            c = plain->sample(leaves[0]->example().toOutput(leaves[0]->blend(s, tiles[0], fu)),
+                                               leaves[1]->example().toOutput(leaves[1]->blend(s, tiles[1], fu)));
+                        } else {
+                            for (size_t k = 0; k < leaves.size(); ++k)
+                                slots[k] = vec3(leaves[k]->example().toOutput(leaves[k]->blend(s, tiles[k], fu)), 0.0f, 0.0f);
+                            c = run(slots, lastSlot, kFromAbove);
+                        }
+                    } else {
+                        c = evaluate(u, v, lastSlot, kFromAbove, slots);
+                    }
                     if (gray) c[0] = c[1] = c[2] = std::clamp(c[0], 0.0f, 1.0f);
                     std::copy(c.begin(), c.end(), row + size_t(px) * 3);
                 }
@@ -325,18 +392,27 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         if (!isPowerOfTwo(pair.exampleSize()))
             throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
                              std::to_string(pair.exampleSize()));
+    std::vector<std::array<double, 2>> exact;  // each leaf's mean and variance over its example
     std::vector<std::array<float, 2>> whole;
     for (int k = 0; k < graph.leafCount(); ++k) {
-        const std::array<double, 2> m = exampleMoments(graph.leaf(k).example());
-        whole.push_back({float(m[0]), float(m[1])});
+        exact.push_back(exampleMoments(graph.leaf(k).example()));
+        whole.push_back({float(exact.back()[0]), float(exact.back()[1])});
     }
     // The covariance of each pair's two examples over the whole period (a lean node's sky).
     std::vector<float> wholeCov;
     for (const TiledField& pair : graph.leafPairs()) wholeCov.push_back(fieldStatistics(pair).cov);
+    plain_ = graph.plainColormap() && moments == GraphMoments::Matched;
+    // A plain pattern's sky is its average colour E[H(N)] in every mode (H
+    // convolved exactly with the whole examples' Gaussian, in blending
+    // space), where every filtered mode's ground converges far away.
+    const auto plainSky = [&] {
+        return convolveColormapNumerically(graph.tables().front().blended, exact[0][0], exact[1][0],
+                                           std::sqrt(exact[0][1]), std::sqrt(exact[1][1]));
+    };
     if (options.source == StatisticsSource::Point) {  // nothing to prefilter
         std::vector<float> means;
         for (const auto& m : whole) means.push_back(graph.leaf(int(means.size())).example().toOutput(m[0]));
-        sky_ = graph.fromLeafValues(means);
+        sky_ = plain_ ? plainSky() : graph.fromLeafValues(means);
         return;
     }
     for (const GraphPattern::Operation& op : graph.operations()) {
@@ -349,7 +425,7 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         }
         tables_.emplace_back(t, options.response.prefilter);
     }
-    sky_ = fromMoments(whole, wholeCov);
+    sky_ = plain_ ? plainSky() : fromMoments(whole, wholeCov);
     if (options.source == StatisticsSource::Estimators)
         for (size_t k = 0; k < graph.leafPairs().size(); ++k)
             estimators_.push_back(std::make_unique<FootprintEstimator>(graph.leafPairs()[k], graph.pairCovariance(int(k)),
@@ -361,14 +437,22 @@ Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMome
     if (int(leafMoments.size()) != graph_.leafCount())
         throw std::invalid_argument("FilteredGraph::fromMoments: " + std::to_string(leafMoments.size()) +
                                     " leaf moments for " + std::to_string(graph_.leafCount()) + " leaves");
+    Scratch scratch;
+    scratch.slots.resize(size_t(graph_.outputSlot() + 1));
+    for (size_t k = 0; k < leafMoments.size(); ++k) scratch.slots[k] = vec3(leafMoments[k][0], leafMoments[k][1], 0.0f);
+    scratch.covariances = pairCovariances;
+    return runFiltered(scratch, eye);
+}
+
+Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
     // A field's moments in (x, y) of a slot, a colour's mean in all three.
-    std::array<vec3, kMaxGraphNodes> slots;
-    for (size_t k = 0; k < leafMoments.size(); ++k) slots[k] = vec3(leafMoments[k][0], leafMoments[k][1], 0.0f);
+    GraphPattern::Slots& slots = scratch.slots;
+    const std::vector<float>& pairCovariances = scratch.covariances;
     const GraphTables tables(graph_.tables(), &tables_);
     kernel::OpContext ctx;
     ctx.eye = toVec(eye);
     ctx.tables = &tables;
-    size_t out = leafMoments.size();
+    size_t out = size_t(graph_.leafCount());
     for (const GraphPattern::Operation& op : graph_.operations()) {
         ctx.table = op.table;
         // The covariance of the pair of leaves the first input is in (a lean node's slopes).
@@ -383,16 +467,23 @@ Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMome
     return toRgb(slots[out - 1]);
 }
 
-Rgb FilteredGraph::fromPairStats(const std::vector<FootprintStats>& stats, const Direction& eye) const {
-    std::vector<std::array<float, 2>> m(static_cast<size_t>(graph_.leafCount()));
-    std::vector<float> covariances;
-    for (const FootprintStats& s : stats) covariances.push_back(s.cov);
+Rgb FilteredGraph::plainColour(const FootprintStats& s) const {
+    // The colormap op's opFiltered on the pair's moments, without the interpreter.
+    return tables_.front().sample(s.mean[0], s.mean[1], kernel::momentSigma(vec2(s.mean[0], std::max(s.varX, 0.0f))),
+                                  kernel::momentSigma(vec2(s.mean[1], std::max(s.varY, 0.0f))));
+}
+
+Rgb FilteredGraph::fromPairStats(Scratch& scratch, const Direction& eye) const {
+    if (plain_) return plainColour(scratch.stats.front());
+    scratch.slots.resize(size_t(graph_.outputSlot() + 1));
+    scratch.covariances.clear();
+    for (const FootprintStats& s : scratch.stats) scratch.covariances.push_back(s.cov);
     for (int k = 0; k < graph_.leafCount(); ++k) {
         const auto [pair, channel] = graph_.leafLocation(k);
-        const FootprintStats& s = stats[size_t(pair)];
-        m[size_t(k)] = {s.mean[size_t(channel)], std::max(channel == 0 ? s.varX : s.varY, 0.0f)};
+        const FootprintStats& s = scratch.stats[size_t(pair)];
+        scratch.slots[size_t(k)] = vec3(s.mean[size_t(channel)], std::max(channel == 0 ? s.varX : s.varY, 0.0f), 0.0f);
     }
-    return fromMoments(m, covariances, eye);
+    return runFiltered(scratch, eye);
 }
 
 namespace {
@@ -411,43 +502,52 @@ Jacobian transformed(const UvTransform& t, const Jacobian& j) {
 
 }  // namespace
 
-std::vector<Footprint> FilteredGraph::footprints(double u, double v, const Jacobian& j) const {
-    std::vector<Footprint> f;
+void FilteredGraph::footprints(double u, double v, const Jacobian& j, Scratch& scratch) const {
+    scratch.footprints.clear();
     for (size_t k = 0; k < estimators_.size(); ++k) {
         const UvTransform& t = graph_.pairTransform(int(k));
         const auto [pu, pv] = t.apply(u, v);
         const FootprintEstimator& e = *estimators_[k];
-        f.push_back(makeFootprint(pu, pv, transformed(t, j), e.exampleSize(), e.maxLod(), options_.aniso));
+        scratch.footprints.push_back(makeFootprint(pu, pv, transformed(t, j), e.exampleSize(), e.maxLod(), options_.aniso));
     }
-    return f;
 }
 
-Rgb FilteredGraph::shade(const std::vector<Footprint>& footprints, const Direction& eye) const {
-    std::vector<FootprintStats> stats;
-    for (size_t k = 0; k < estimators_.size(); ++k) stats.push_back(estimators_[k]->estimate(footprints[k], options_.estimator));
-    return fromPairStats(stats, eye);
+Rgb FilteredGraph::shade(Scratch& scratch, const Direction& eye) const {
+    scratch.stats.clear();
+    for (size_t k = 0; k < estimators_.size(); ++k)
+        scratch.stats.push_back(estimators_[k]->estimate(scratch.footprints[k], options_.estimator));
+    return fromPairStats(scratch, eye);
 }
 
 Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j, const Direction& eye) const {
+    Scratch scratch;
+    return shade(onPlane, u, v, j, eye, scratch);
+}
+
+Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j, const Direction& eye,
+                         Scratch& scratch) const {
     if (!onPlane) return sky_;
     switch (options_.source) {
-        case StatisticsSource::Point: return graph_.evaluate(u, v, -1, eye);
-        case StatisticsSource::Estimators: return shade(footprints(u, v, j), eye);
+        case StatisticsSource::Point: return graph_.evaluate(u, v, -1, eye, scratch.slots);
+        case StatisticsSource::Estimators:
+            footprints(u, v, j, scratch);
+            return shade(scratch, eye);
         case StatisticsSource::Exact: {
-            std::vector<FootprintStats> stats;
+            scratch.stats.clear();
             for (size_t k = 0; k < graph_.leafPairs().size(); ++k) {
                 const UvTransform& t = graph_.pairTransform(int(k));
                 const auto [pu, pv] = t.apply(u, v);
-                stats.push_back(bruteForceStats(graph_.leafPairs()[k], pu, pv, transformed(t, j), options_.referenceMaxSamples));
+                scratch.stats.push_back(
+                    bruteForceStats(graph_.leafPairs()[k], pu, pv, transformed(t, j), options_.referenceMaxSamples));
             }
-            return fromPairStats(stats, eye);
+            return fromPairStats(scratch, eye);
         }
         case StatisticsSource::Reference: {
             int size = 0;  // the finest leaf sets the sampling
             for (const TiledField& pair : graph_.leafPairs()) size = std::max(size, pair.exampleSize());
             const int n = bruteForceSamples(j, size, options_.referenceMaxSamples);
-            return supersampledAverage(u, v, j, n,
-                                       [&](double pu, double pv) { return graph_.evaluate(pu, pv, -1, eye); });
+            return supersampledAverage(
+                u, v, j, n, [&](double pu, double pv) { return graph_.evaluate(pu, pv, -1, eye, scratch.slots); });
         }
     }
     return sky_;
@@ -475,9 +575,36 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                                            e.maxLod(), options_.aniso));
         }
     }
+    if (oneFootprint && plain_ && graph_.pairTransform(0).identity()) {
+        // A plain program in a zoom: one estimate and one lookup per pixel, as a plain pattern's.
+        const FootprintEstimator& estimator = *estimators_.front();
+        parallelRows(
+            camera.view.height,
+            [&](int y0, int y1) {
+                const Footprint shape = shapes.front();  // this thread's copy (false sharing)
+                for (int py = y0; py < y1; ++py)
+                    for (int px = 0; px < camera.view.width; ++px) {
+                        double u = 0, v = 0;
+                        Jacobian j;
+                        camera.footprint(px, py, w, u, v, j);
+                        const Rgb c = plainColour(estimator.estimate(shape.translated(u, v), options_.estimator));
+                        float* p = out.row(py) + size_t(px) * 3;
+                        p[0] = c[0];
+                        p[1] = c[1];
+                        p[2] = c[2];
+                    }
+            },
+            progress);
+        return out;
+    }
     parallelRows(
         camera.view.height,
         [&](int y0, int y1) {
+            // This thread's own copy of what it reads per pixel: writes of
+            // another thread to memory beside the shared vector's (its own
+            // scratch, allocated next to it) would evict it (false sharing).
+            Scratch scratch;
+            const std::vector<Footprint> zoomShapes = shapes;
             for (int py = y0; py < y1; ++py)
                 for (int px = 0; px < camera.view.width; ++px) {
                     double u = 0, v = 0;
@@ -487,14 +614,14 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                     const Direction eye = shadesLight ? camera.viewDirection(px, py) : GraphPattern::kFromAbove;
                     Rgb c;
                     if (oneFootprint) {
-                        std::vector<Footprint> here;
-                        for (size_t k = 0; k < shapes.size(); ++k) {
+                        scratch.footprints.clear();
+                        for (size_t k = 0; k < zoomShapes.size(); ++k) {
                             const auto [pu, pv] = graph_.pairTransform(int(k)).apply(u, v);
-                            here.push_back(shapes[k].translated(pu, pv));
+                            scratch.footprints.push_back(zoomShapes[k].translated(pu, pv));
                         }
-                        c = shade(here, eye);
+                        c = shade(scratch, eye);
                     } else {
-                        c = shade(onPlane, u, v, j, eye);
+                        c = shade(onPlane, u, v, j, eye, scratch);
                     }
                     std::copy(c.begin(), c.end(), out.row(py) + size_t(px) * 3);
                 }

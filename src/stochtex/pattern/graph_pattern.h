@@ -44,9 +44,12 @@
 
 namespace stochtex {
 
-// The examples' tables hold at most this many entries in all (each table is
-// kept twice, for points and in blending space, 16 bytes an entry: 256 MiB).
-constexpr long long kMaxGraphTableEntries = 1ll << 23;
+// The examples' tables hold at most this many entries in all: one colormap
+// at the largest resolution (kMaxColormapResolution², as a plain pattern's
+// may be). Each table is kept twice, for points and in blending space, 16
+// bytes an entry: 512 MiB.
+constexpr long long kMaxGraphTableEntries = 1ll << 24;
+static_assert(kMaxGraphTableEntries >= (long long)kMaxColormapResolution * kMaxColormapResolution);
 
 class GraphPattern {
 public:
@@ -54,8 +57,10 @@ public:
     using Direction = std::array<float, 3>;
     static constexpr Direction kFromAbove{0.0f, 0.0f, 1.0f};
 
-    // spec.graph must be set (std::invalid_argument otherwise). InputError
-    // naming the node for what only building shows (a linear node over a
+    // Any pattern file: a graph's, or a plain pattern's {noise_x, noise_y,
+    // colormap} as the program "two leaves → colormap" (its normal map is
+    // the lean response's, FilteredPattern). InputError naming the node for
+    // what only building shows (a linear node over a
     // non-linear field, a Gaussianized exemplar read other than by a table).
     static GraphPattern build(const PatternSpec& spec);
 
@@ -92,6 +97,12 @@ public:
     const std::vector<Operation>& operations() const { return operations_; }
     const std::vector<Table>& tables() const { return tables_; }
     int outputSlot() const { return leafCount() + int(operations_.size()) - 1; }
+    // The table of a program that is a plain pattern's H ∘ N: one colormap
+    // op over the two channels of one pair of leaves, in order; else null.
+    // The evaluators run such a program through one table lookup per pixel,
+    // as the interpreter would (bit-identical; tested), at the plain
+    // pattern's speed.
+    const ColormapTable* plainColormap() const;
     double gridDensity() const { return pairs_.front().gridDensity(); }
 
     // S(uv): the leaves at uv (after T⁻¹ for Gaussianized exemplars) through the program.
@@ -110,11 +121,12 @@ public:
     Image renderNode(const View& view, const std::string& id) const;
 
 private:
+    friend class FilteredGraph;
+    using Slots = std::vector<kernel::vec3>;
     // The operations on slots whose leaves are set; returns slot `lastSlot`.
-    template <class Slots>
     Rgb run(Slots& slots, int lastSlot, const Direction& eye) const;
-    // Every leaf seen through no transform: one stencil per pixel, the scanline's grid row.
-    Rgb evaluate(const BlendStencil& s, float fu, float fv, int lastSlot, const Direction& eye) const;
+    // evaluate(u, v, lastSlot, eye) in the caller's slots (no allocation per point).
+    Rgb evaluate(double u, double v, int lastSlot, const Direction& eye, Slots& slots) const;
     Image renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray) const;
     std::vector<std::string> leafIds_;
     std::vector<TiledField> pairs_;
@@ -146,7 +158,8 @@ public:
                   GraphMoments moments = GraphMoments::Matched);
 
     // The colour of sky pixels: the program on the whole examples' moments
-    // (for the point source, which prefilters nothing, on their means).
+    // (for the point source, which prefilters nothing, on their means); a
+    // plain pattern's program: its average colour, as FilteredPattern's.
     const Rgb& skyColour() const { return sky_; }
     // eye: the unit direction towards the eye (Camera::viewDirection), which a lean node reads.
     Rgb shade(bool onPlane, double u, double v, const Jacobian& j,
@@ -165,15 +178,27 @@ public:
     const PrefilteredColormap& table(int k) const { return tables_.at(size_t(k)); }
 
 private:
-    Rgb fromPairStats(const std::vector<FootprintStats>& stats, const Direction& eye) const;  // one per leaf pair
-    std::vector<Footprint> footprints(double u, double v, const Jacobian& j) const;  // one per estimator
-    Rgb shade(const std::vector<Footprint>& footprints, const Direction& eye) const;  // estimators
+    // What one thread reuses from pixel to pixel, so that shading a pixel allocates nothing.
+    struct Scratch {
+        std::vector<Footprint> footprints;    // one per estimator
+        std::vector<FootprintStats> stats;    // one per leaf pair
+        std::vector<float> covariances;       // one per leaf pair
+        GraphPattern::Slots slots;            // the program's values
+    };
+    Rgb shade(bool onPlane, double u, double v, const Jacobian& j, const Direction& eye, Scratch& scratch) const;
+    // The program on the moments in scratch.slots' leaves and scratch.covariances.
+    Rgb runFiltered(Scratch& scratch, const Direction& eye) const;
+    Rgb fromPairStats(Scratch& scratch, const Direction& eye) const;  // scratch.stats: one per leaf pair
+    Rgb plainColour(const FootprintStats& s) const;  // a plain program's colour of its pair's statistics
+    void footprints(double u, double v, const Jacobian& j, Scratch& scratch) const;  // one per estimator
+    Rgb shade(Scratch& scratch, const Direction& eye) const;  // estimators, on scratch.footprints
     const GraphPattern& graph_;
     FilterOptions options_;
     GraphMoments moments_;
     std::vector<std::unique_ptr<FootprintEstimator>> estimators_;  // one per leaf pair
     std::vector<PrefilteredColormap> tables_;                      // per GraphPattern table
     Rgb sky_{};
+    bool plain_ = false;  // the program is a plain pattern's (GraphPattern::plainColormap)
 };
 
 }  // namespace stochtex

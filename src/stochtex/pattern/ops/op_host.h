@@ -53,8 +53,15 @@ struct OpContext {
     vec4 light{0, 0, 0, 0};  // w ≠ 0: the host's own light (a scene's), which replaces an op's; w = 0: none
     float slopeCov = 0;      // covariance of the pair of leaves an op's first input is in (estimated only when read)
     const OpTableLookup* tables = nullptr;
+    const ColormapTable* pointTable = nullptr;
 };
-inline vec3 opTable(OpContext c, vec2 xy) { return c.tables->point(c.table, xy); }
+inline vec3 opTable(OpContext c, vec2 xy) {
+    if (c.pointTable) {
+        const Rgb r = c.pointTable->sample(xy.x, xy.y);
+        return vec3(r[0], r[1], r[2]);
+    }
+    return c.tables->point(c.table, xy);
+}
 inline vec3 opPrefiltered(OpContext c, vec2 xy, vec2 sigma) { return c.tables->prefiltered(c.table, xy, sigma); }
 
 }  // namespace kernel
