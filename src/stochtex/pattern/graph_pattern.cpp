@@ -27,23 +27,6 @@ Rgb toRgb(const vec3& c) { return {c.x, c.y, c.z}; }
 // A field (else a colour) is what the operation gives.
 bool givesField(const GraphPattern::Operation& op) { return op.info->output != PortType::Colour; }
 
-// The evaluators' side of the ops' table lookups (ops/op_host.h): the
-// graph's point tables, and in FilteredGraph its prefiltered ones.
-class GraphTables final : public kernel::OpTableLookup {
-public:
-    GraphTables(const std::vector<GraphPattern::Table>& point, const std::vector<PrefilteredColormap>* prefiltered)
-        : point_(point), prefiltered_(prefiltered) {}
-    vec3 point(int table, vec2 xy) const override { return toVec(point_[size_t(table)].point.sample(xy.x, xy.y)); }
-    vec3 prefiltered(int table, vec2 xy, vec2 sigma) const override {
-        if (!prefiltered_) throw std::logic_error("GraphPattern: a prefiltered lookup in the point evaluation");
-        return toVec((*prefiltered_)[size_t(table)].sample(xy.x, xy.y, sigma.x, sigma.y));
-    }
-
-private:
-    const std::vector<GraphPattern::Table>& point_;
-    const std::vector<PrefilteredColormap>* prefiltered_;
-};
-
 // An operation's input slot k, vec3(0) where it has none.
 template <class Slots>
 vec3 input(const Slots& slots, const GraphPattern::Operation& op, int k) {
@@ -258,10 +241,8 @@ const ColormapTable* GraphPattern::plainColormap() const {
 
 Rgb GraphPattern::run(Slots& slots, int lastSlot, const Direction& eye) const {
     if (lastSlot < leafCount()) return toRgb(slots[size_t(lastSlot)]);
-    const GraphTables tables(tables_, nullptr);
-    kernel::OpContext ctx;
+    kernel::OpContext ctx;  // the op's tables themselves (ops/op_host.h)
     ctx.eye = toVec(eye);
-    ctx.tables = &tables;
     size_t out = size_t(leafCount());
     for (const Operation& op : operations_) {
         ctx.table = op.table;
@@ -448,13 +429,13 @@ Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
     // A field's moments in (x, y) of a slot, a colour's mean in all three.
     GraphPattern::Slots& slots = scratch.slots;
     const std::vector<float>& pairCovariances = scratch.covariances;
-    const GraphTables tables(graph_.tables(), &tables_);
-    kernel::OpContext ctx;
+    kernel::OpContext ctx;  // the op's tables themselves (ops/op_host.h)
     ctx.eye = toVec(eye);
-    ctx.tables = &tables;
     size_t out = size_t(graph_.leafCount());
     for (const GraphPattern::Operation& op : graph_.operations()) {
         ctx.table = op.table;
+        ctx.pointTable = op.table >= 0 ? &graph_.tables()[size_t(op.table)].point : nullptr;
+        ctx.prefilteredTable = op.table >= 0 && size_t(op.table) < tables_.size() ? &tables_[size_t(op.table)] : nullptr;
         // The covariance of the pair of leaves the first input is in (a lean node's slopes).
         const int first = op.inputs[0];
         const size_t pair = first < graph_.leafCount() ? size_t(graph_.leafLocation(first)[0]) : pairCovariances.size();
