@@ -77,7 +77,7 @@ void registerGallery(CLI::App& app) {
             written.push_back(name);
             const PatternSpec& spec = e.spec;
             // A graph with a non-linear node before its output: its stages instead of H and N.
-            const PatternSheet ps = needsGraphEvaluator(spec)
+            const PatternSheet ps = spec.graph && !foldsIntoPattern(*spec.graph)
                                         ? graphSheet(GraphPattern::build(spec), *spec.graph, spec.scale, args->size)
                                         : patternSheet(Pattern::build(spec), spec.scale, args->size, name);
             writeImage((fs::path(args->dir) / (name + ".png")).string(), ps.pattern);

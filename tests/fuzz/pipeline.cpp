@@ -61,13 +61,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         spec.height = fuzz::shrink(spec.height, fuzz::kOutputLimit);
         const View view{spec.width, spec.height, spec.scale};
 
-        if (needsGraphEvaluator(spec)) {
-            const GraphPattern graph = GraphPattern::build(spec);
-            (void)graph.render(view);
-            renderEveryFilter<FilteredGraph>(graph, view);
-            return;
-        }
-        const Pattern pattern = Pattern::build(spec);
+        const GraphPattern program = GraphPattern::build(spec);  // every file's program
+        (void)program.render(view);
+        renderEveryFilter<FilteredGraph>(program, view);
+        if (spec.graph) return;
+        const Pattern pattern = Pattern::build(spec);  // a plain pattern's own evaluator (the lean response's)
         (void)pattern.render(view);
         renderEveryFilter<FilteredPattern>(pattern, view);
     });

@@ -34,8 +34,7 @@
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/image/image_io.h"
-#include "stochtex/pattern/filtered_pattern.h"
-#include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/cpu_renderer.h"
 #include "stochtex/pattern/presets.h"
 
 namespace stochtex {
@@ -85,23 +84,11 @@ std::vector<GoldenCase> goldenCases() {
     return cases;
 }
 
-// One spec, pattern and graph per preset for the whole process (the update runs every case).
+// One spec per preset for the whole process (the update runs every case).
 const PatternSpec& spec(const std::string& preset) {
     static std::map<std::string, PatternSpec> specs;
     const auto it = specs.find(preset);
     return it != specs.end() ? it->second : specs.emplace(preset, loadPreset(preset)).first->second;
-}
-const Pattern& pattern(const std::string& preset) {
-    static std::map<std::string, std::unique_ptr<Pattern>> patterns;
-    auto& p = patterns[preset];
-    if (!p) p = std::make_unique<Pattern>(Pattern::build(spec(preset)));
-    return *p;
-}
-const GraphPattern& graph(const std::string& preset) {
-    static std::map<std::string, std::unique_ptr<GraphPattern>> graphs;
-    auto& g = graphs[preset];
-    if (!g) g = std::make_unique<GraphPattern>(GraphPattern::build(spec(preset)));
-    return *g;
 }
 GlContext& context() {
     static std::unique_ptr<GlContext> ctx = GlContext::headless();
@@ -123,8 +110,7 @@ Image render(const GoldenCase& c) {
         options.aniso = 8;
     }
     if (c.gpu) return makeGpuView(spec(c.preset), context(), options)->render(camera);
-    if (needsGraphEvaluator(spec(c.preset))) return FilteredGraph(graph(c.preset), options).render(camera);
-    return FilteredPattern(pattern(c.preset), options).render(camera);
+    return makeCpuRenderer(spec(c.preset), options)->render(camera);
 }
 
 class GoldenImage : public testing::TestWithParam<GoldenCase> {};

@@ -369,7 +369,8 @@ TEST_F(Shadertoy, FramesFeedTheStudiesAsATextureSource) {
 TEST_F(Shadertoy, PatternIncludeSamplesTheFilteredPattern) {
     for (const std::string preset : {"camouflage", "figure14"}) {
         const PatternSpec spec = loadPreset(preset);
-        const int w = needsGraphEvaluator(spec) ? GraphPattern::build(spec).exampleSize() : Pattern::build(spec).exampleSize();
+        const GraphPattern program = GraphPattern::build(spec);
+        const int w = program.exampleSize();
         const double scale = 3.0;
         write("pat/image.glsl", "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
                                 "    vec2 uv = vec2(fragCoord.x, iResolution.y - fragCoord.y) * " + std::to_string(scale) +
@@ -383,8 +384,7 @@ TEST_F(Shadertoy, PatternIncludeSamplesTheFilteredPattern) {
         cam.view = {48, 32, scale};
         FilterOptions o;
         o.use(parseFilter("smooth"));
-        const Image cpu = needsGraphEvaluator(spec) ? FilteredGraph(GraphPattern::build(spec), o).render(cam)
-                                                    : FilteredPattern(Pattern::build(spec), o).render(cam);
+        const Image cpu = FilteredGraph(program, o).render(cam);
         double mean = 0;
         for (size_t i = 0; i < cpu.data().size(); ++i) mean += std::abs(double(gpu.data()[i]) - cpu.data()[i]);
         mean /= double(cpu.data().size());

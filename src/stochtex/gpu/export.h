@@ -47,7 +47,7 @@ std::string exportedShaderInclude(ResponseKind response = ResponseKind::Prefilte
 void exportGraph(const GraphPattern& graph, const FilterOptions& options, const std::string& dir,
                  const ExportOptions& exportOptions = {});
 // A pattern file's export: exportGraph for a texture graph that is not a
-// pattern H∘N (needsGraphEvaluator), else exportPattern.
+// pattern H∘N (foldsIntoPattern), else exportPattern.
 void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,
                        const ExportOptions& exportOptions = {});
 std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched,

@@ -297,9 +297,9 @@ GpuGraph::~GpuGraph() = default;
 bool GpuGraph::filtered() const { return impl_->filtered; }
 
 std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options) {
-    if (needsGraphEvaluator(spec))
-        return std::make_unique<GpuGraph>(GraphPattern::build(spec), context, options);
-    return std::make_unique<GpuPattern>(Pattern::build(spec), context, options);
+    if (!programRenders(spec, options.response.kind))
+        return std::make_unique<GpuPattern>(Pattern::build(spec), context, options);
+    return std::make_unique<GpuGraph>(GraphPattern::build(spec), context, options);
 }
 
 namespace {

@@ -304,8 +304,9 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
                              " texture units; this GL has " + std::to_string(units));
         m.channelUnit = kPatternUnits;
         m.pattern = makeGpuView(*spec.pattern, context, spec.patternFilter);
-        include = needsGraphEvaluator(*spec.pattern) ? exportedGraphInclude(GraphPattern::build(*spec.pattern))
-                                                     : exportedShaderInclude(spec.patternFilter.response.kind);
+        include = programRenders(*spec.pattern, spec.patternFilter.response.kind)
+                      ? exportedGraphInclude(GraphPattern::build(*spec.pattern))
+                      : exportedShaderInclude(spec.patternFilter.response.kind);
     }
     m.vao = gl::newVertexArray();
     m.keyboard = gl::newTexture();

@@ -27,7 +27,7 @@ private:
 }  // namespace
 
 std::unique_ptr<ViewRenderer> makeCpuRenderer(const PatternSpec& spec, const FilterOptions& options) {
-    if (options.response.kind == ResponseKind::Lean && !spec.graph)
+    if (!programRenders(spec, options.response.kind))
         return std::make_unique<Owning<Pattern, FilteredPattern>>(Pattern::build(spec), options);
     return std::make_unique<Owning<GraphPattern, FilteredGraph>>(GraphPattern::build(spec), options);
 }

@@ -138,6 +138,15 @@ private:
     std::vector<Table> tables_;
 };
 
+// Whether the file's program (GraphPattern) renders it under `response`:
+// every file, but for a plain pattern's normal map under the lean response,
+// which its program does not carry yet (Pattern, FilteredPattern and
+// GpuPattern render that). The one place the CPU renderer, the GPU view and
+// the ShaderToy host choose between them.
+inline bool programRenders(const PatternSpec& spec, ResponseKind response) {
+    return spec.graph || response != ResponseKind::Lean;
+}
+
 // How the moments of a non-linear node's output field are passed on.
 enum class GraphMoments {
     Matched,   // mean and variance (moment matching through the (g, g²) tables)

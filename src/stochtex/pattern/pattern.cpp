@@ -15,7 +15,7 @@ namespace stochtex {
 Pattern Pattern::build(const PatternSpec& spec) {
     std::array<NoiseExample, 2> examples;
     if (spec.graph) {
-        if (needsGraphEvaluator(spec))
+        if (!foldsIntoPattern(*spec.graph))
             throw InputError(spec.name + ": this graph has a non-linear node before its output (\"" + spec.graph->output +
                              "\" reads one), so it is not the pattern H∘N of two fields this needs; such graphs are "
                              "evaluated per pixel, where docs/GRAPHS.md lists");

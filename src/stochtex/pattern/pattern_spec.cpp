@@ -77,6 +77,4 @@ uint32_t noiseSeed(const PatternSpec& spec, int axis) {
     return deriveSeed(spec.seed, 100u + uint32_t(axis));
 }
 
-bool needsGraphEvaluator(const PatternSpec& spec) { return spec.graph && !foldsIntoPattern(*spec.graph); }
-
 }  // namespace stochtex

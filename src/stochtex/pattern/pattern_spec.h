@@ -25,8 +25,5 @@ PatternSpec loadPatternFile(const std::string& path);
 // (axis 0 or 1), so one pattern seed controls everything.
 uint32_t noiseSeed(const PatternSpec& spec, int axis);
 
-// Whether the pattern file is a texture graph that needs GraphPattern: one
-// with a non-linear node before its output (else it is a Pattern, H∘N).
-bool needsGraphEvaluator(const PatternSpec& spec);
 
 }  // namespace stochtex

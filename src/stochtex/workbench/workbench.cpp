@@ -288,8 +288,7 @@ private:
     // W of the pattern's example, for the instance offsets (built once per document, when needed).
     int exampleSize() {
         if (exampleSize_ == 0)
-            exampleSize_ = needsGraphEvaluator(spec_) ? GraphPattern::build(spec_).exampleSize()
-                                                      : Pattern::build(spec_).exampleSize();
+            exampleSize_ = GraphPattern::build(spec_).exampleSize();
         return exampleSize_;
     }
 
