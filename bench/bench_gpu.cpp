@@ -6,6 +6,7 @@
 
 #include "alternate_timing.h"
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/pattern/presets.h"
 
@@ -24,7 +25,7 @@ std::unique_ptr<GlContext> contextOrSkip(benchmark::State& state) {
 
 // Frames per `secondsPerFrame` measurement so that one measurement takes
 // about 0.2 s (1 on llvmpipe, hundreds on a GPU).
-int framesPerMeasurement(GpuPattern& g, const Camera& c) {
+int framesPerMeasurement(GpuView& g, const Camera& c) {
     return std::clamp(int(0.2 / g.secondsPerFrame(c, 1)), 1, 2000);
 }
 
@@ -101,6 +102,37 @@ BENCHMARK(BM_GpuShaderThroughput)
     ->ArgNames({"mode", "size", "pipeline"})
     ->ArgsProduct({{1, 2, 3}, {1024, 2048, 4096}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
+
+// A plain pattern as its program (GpuGraph: the generated GLSL of "two
+// leaves → colormap", what makeGpuView runs since issue 28) beside the
+// hand-written pattern shaders (GpuPattern), the same measure: camouflage on
+// the plane at 55°, 1024², fragment pipeline; mode 0 = unfiltered, 1 =
+// paper, 2 = smooth, 3 = smooth ×8 anisotropic.
+void BM_GpuProgramVsPattern(benchmark::State& state) {
+    const PatternSpec spec = loadPreset("camouflage");
+    const Pattern p = Pattern::build(spec);
+    const GraphPattern program = GraphPattern::build(spec);
+    const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
+    if (!ctx) return;
+    FilterOptions o = GpuPattern::unfiltered();
+    if (state.range(0) > 0) {
+        o.use(parseFilter(state.range(0) == 1 ? "paper" : "smooth"));
+        o.aniso = state.range(0) == 3 ? 8 : 1;
+    }
+    GpuPattern pattern(p, *ctx, o);
+    GpuGraph graph(program, *ctx, o);
+    Camera c;
+    c.kind = Camera::Kind::Plane;
+    c.tiltDeg = 55;
+    c.view.width = c.view.height = 1024;
+    const int fp = framesPerMeasurement(pattern, c), fg = framesPerMeasurement(graph, c);
+    const bench::AlternateTimes t = bench::timeAlternately(
+        state, [&] { return graph.secondsPerFrame(c, fg); }, [&] { return pattern.secondsPerFrame(c, fp); });
+    bench::reportAlternateRates(state, double(c.view.width) * c.view.height, bench::TexelRate::Giga,
+                                {"program", t.first}, {"pattern", t.second});
+    state.SetLabel(ctx->describe());
+}
+BENCHMARK(BM_GpuProgramVsPattern)->ArgName("mode")->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
 // LEAN mapping on the GPU, the same measure: the lean-ridges normal map on
 // the plane (tilt 70°, as Figure 12), filtered (K = 8, with the slopes'
