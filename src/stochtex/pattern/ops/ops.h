@@ -25,6 +25,7 @@
 #include "stochtex/pattern/ops/product_op.h"
 #include "stochtex/pattern/ops/square_op.h"
 #include "stochtex/pattern/ops/sum_op.h"
+#include "stochtex/pattern/ops/threshold_op.h"
 
 namespace stochtex {
 
@@ -35,7 +36,8 @@ struct OpTypes {
 };
 // The list, in the order `stochtex nodes` shows them after the sources and linear nodes.
 using OpList =
-    OpTypes<AffineOp, SumOp, ProductOp, SquareOp, ColormapOp, ColormapFieldOp, CurveOp, MixOp, ComposeOp, LeanOp>;
+    OpTypes<AffineOp, SumOp, ProductOp, SquareOp, ColormapOp, ColormapFieldOp, CurveOp, ThresholdOp, MixOp, ComposeOp,
+            LeanOp>;
 
 // One op's typed parameters; the alternative's index is the op (NodeInfo::op).
 using OpParams = OpList::Params;
