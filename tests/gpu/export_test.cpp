@@ -305,6 +305,29 @@ TEST(Export, GraphRendersWhatRenderGpuRenders) {
     }
 }
 
+// `bake` of a plain pattern file writes its program's export (as
+// makeGpuView renders it): one pair of leaves, one table, the generated
+// program; loaded by the engine-side code it renders what render --gpu does
+// (the table in half floats, the default).
+TEST(Export, PlainPatternFileExportsItsProgram) {
+    auto ctx = GlContext::headless();
+    const PatternSpec spec = loadPreset("camouflage");
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    const fs::path dir = test::scratchPath("stochtex_export_plain_program");
+    fs::remove_all(dir);
+    exportPatternSpec(spec, o, dir.string(), ExportOptions{});
+    EXPECT_NE(readText(dir / "stochtex.glsl").find("vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy)"), std::string::npos);
+    EXPECT_NE(readText(dir / "README.md").find("`uGraphPrefiltered0`"), std::string::npos);
+    const std::unique_ptr<GpuView> gpu = makeGpuView(spec, *ctx, o);
+    for (double scale : {1.0, 6.0}) {
+        const double maxDiff = exportDifference(*gpu, *ctx, dir, scale);
+        std::printf("[ info ] camouflage at scale %g: max |export - render --gpu| %.2e\n", scale, maxDiff);
+        EXPECT_LT(maxDiff, 5e-4) << "scale " << scale;  // half-float table entries (measured 1.1e-4)
+    }
+    fs::remove_all(dir);
+}
+
 // A graph with a lean node: its slope pair's covariance pyramid is exported
 // and listed with its sampler, and the export renders what GpuGraph renders.
 TEST(Export, LeanGraphExportsTheSlopesCovariance) {

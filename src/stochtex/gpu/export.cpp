@@ -455,7 +455,7 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
 
 void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,
                        const ExportOptions& exportOptions) {
-    if (spec.graph && !foldsIntoPattern(*spec.graph))  // non-linear nodes before the output: its own program
+    if (programRenders(spec, options.response.kind))  // the file's program, plain pattern or graph (as makeGpuView)
         exportGraph(GraphPattern::build(spec), options, dir, exportOptions);
     else
         exportPattern(Pattern::build(spec), options, dir, exportOptions);
