@@ -55,7 +55,7 @@ void registerStability(CLI::App& app) {
         refuseUnusedFilterFlags(*cmd, study.filters);
         const PatternSpec spec = loadPatternSource(args->source, study.filters);
         ThreadLimit limit(args->threads);
-        const Pattern pattern = Pattern::build(spec);  // what only building shows, before any output
+        const GraphPattern pattern = GraphPattern::build(spec);  // what only building shows, before any output
         const std::string& dir = args->dir;
         ensureFolder(dir);
         FrameSequenceSet outputs(dir, args->filters, study.size, study.size,

@@ -425,7 +425,7 @@ TEST(Studies, Figures7And8ShareOnePairOfNoises) {
 // (and the ground truth, rendered here independently) gives the per-frame
 // table, and the summary is their mean and maximum.
 TEST(StabilityStudy, TablesMatchTheFramesItRenders) {
-    const Pattern p = Pattern::build(loadPreset("marble"));
+    const GraphPattern p = GraphPattern::build(loadPreset("marble"));
     StabilityStudyOptions o;
     o.filters.resize(2);
     o.filters[0].use(parseFilter("none"));
@@ -443,7 +443,7 @@ TEST(StabilityStudy, TablesMatchTheFramesItRenders) {
         });
     FilterOptions truthOptions = FilterOptions{}.use(parseFilter("reference"));
     truthOptions.referenceMaxSamples = 12;
-    const FilteredPattern truth(p, truthOptions);
+    const FilteredGraph truth(p, truthOptions);
     ASSERT_EQ(r.measurements.size(), 2u);
     ASSERT_EQ(r.summary.rows.size(), 2u);
     ASSERT_EQ(r.perFrame.rows.size(), 2u * 4u);
@@ -498,7 +498,7 @@ TEST(StabilityStudy, TablesMatchTheFramesItRenders) {
 // optimum) both score worse than the reference itself.
 TEST(StabilityStudy, ErrorFlickerRanksFiltersByFidelityNotBlur) {
     for (const char* preset : {"marble", "camouflage"}) {
-        const Pattern p = Pattern::build(loadPreset(preset));
+        const GraphPattern p = GraphPattern::build(loadPreset(preset));
         StabilityStudyOptions o;
         for (const char* f : {"none", "paper", "smooth", "exact", "reference"}) {
             o.filters.emplace_back().use(parseFilter(f));
@@ -522,7 +522,7 @@ TEST(StabilityStudy, ErrorFlickerRanksFiltersByFidelityNotBlur) {
         // Re-measure the reference frames blurred, and a constant grey, against the same truth.
         FilterOptions truthOptions = FilterOptions{}.use(parseFilter("reference"));
         truthOptions.referenceMaxSamples = 32;
-        const FilteredPattern truth(p, truthOptions);
+        const FilteredGraph truth(p, truthOptions);
         ZoomSequenceMeter sharp, blurred, grey;
         for (int k = 0; k < o.frames; ++k) {
             Camera c;

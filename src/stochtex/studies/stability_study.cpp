@@ -30,19 +30,19 @@ void validateStabilityStudy(const StabilityStudyOptions& o) {
         throw InputError::parameter("truthSamples", "must be in [1, 4096], got " + std::to_string(o.truthSamples));
 }
 
-StabilityStudyResult stabilityStudy(const Pattern& pattern, const StabilityStudyOptions& o,
+StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const StabilityStudyOptions& o,
                                     const StudyProgress& progress, const StabilityFrameSink& onFrame) {
     validateStabilityStudy(o);
-    std::vector<std::unique_ptr<FilteredPattern>> filters;
+    std::vector<std::unique_ptr<FilteredGraph>> filters;
     std::vector<std::string> names;
     for (const FilterOptions& f : o.filters) {
-        filters.push_back(std::make_unique<FilteredPattern>(pattern, f));
+        filters.push_back(std::make_unique<FilteredGraph>(pattern, f));
         names.push_back(filterName(f));
     }
     FilterOptions truthOptions = o.filters.front();
     truthOptions.source = StatisticsSource::Reference;
     truthOptions.referenceMaxSamples = o.truthSamples;
-    const FilteredPattern truth(pattern, truthOptions);
+    const FilteredGraph truth(pattern, truthOptions);
     std::vector<ZoomSequenceMeter> meters(filters.size());
     const int renders = int(filters.size()) + 1;
     for (int k = 0; k < o.frames; ++k) {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "stochtex/analysis/zoom_stability.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -49,7 +49,7 @@ void validateStabilityStudy(const StabilityStudyOptions& options);
 // onFrame(filter index, frame index, frame) sees every rendered frame (not
 // the truth's).
 using StabilityFrameSink = std::function<void(size_t, int, const Image&)>;
-StabilityStudyResult stabilityStudy(const Pattern& pattern, const StabilityStudyOptions& options,
+StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const StabilityStudyOptions& options,
                                     const StudyProgress& progress = {}, const StabilityFrameSink& onFrame = {});
 
 }  // namespace stochtex
