@@ -6,23 +6,17 @@
 # the PNG (Chart.js alone fitted the last digits of a constant and showed a
 # fall), and no label may carry Chart.js's float noise (0.000000001).
 # Usage: chart_ticks_test.sh STOCHTEX_BINARY. Exit 77 (ctest: skipped)
-# when Chromium is not installed.
+# when Chromium is not installed (tests/lib/chromium.sh).
 set -u
 bin=$1
-chromium=$(command -v chromium || command -v chromium-browser || true)
-[ -n "$chromium" ] || { echo "chromium not installed: skipped"; exit 77; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/../lib/chromium.sh"
 
 "$bin" flow -o "$work/fl" --frames 4 --size 64 zoom >"$work/out.txt" 2>&1 || fail "flow: $(cat "$work/out.txt")"
 grep -q "stochtex-chart" "$work/fl/index.html" || fail "the flow page has no chart"
 sed 's|</body>|<pre id="ticks"></pre><script>document.getElementById("ticks").textContent=Object.values(Chart.instances).map(function(c){return c.scales.y.ticks.map(function(t){return t.label;}).join(" ");}).join("\\n");</script></body>|' \
   "$work/fl/index.html" >"$work/fl/probe.html"
-timeout 120 "$chromium" --headless --no-sandbox --disable-gpu --user-data-dir="$work/profile" \
-  --virtual-time-budget=3000 --dump-dom "file://$work/fl/probe.html" >"$work/dom.html" 2>"$work/chromium.txt" \
-  || fail "chromium exit $?: $(tail -5 "$work/chromium.txt")"
-ticks=$(sed -n '/<pre id="ticks">/,/<\/pre>/p' "$work/dom.html" | sed -e 's/.*<pre id="ticks">//' -e 's/<\/pre>.*//' | grep -v '<')
+dump_dom "file://$work/fl/probe.html" 3000 "$work/dom.html"
+ticks=$(pre_text ticks "$work/dom.html" | grep -v '<')
 echo "$ticks"
 [ -n "$ticks" ] || fail "no chart drew ticks"
 while read -r line; do

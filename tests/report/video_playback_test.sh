@@ -6,14 +6,10 @@
 # fails here with MEDIA_ERR_SRC_NOT_SUPPORTED. The animated GIF and WebP
 # must decode in an <img> at the written size.
 # Usage: video_playback_test.sh STOCHTEX_BINARY. Exit 77 (ctest: skipped)
-# when Chromium is not installed (scripts/install-deps.sh installs it).
+# when Chromium is not installed (tests/lib/chromium.sh).
 set -u
 bin=$1
-chromium=$(command -v chromium || command -v chromium-browser || true)
-[ -n "$chromium" ] || { echo "chromium not installed: skipped"; exit 77; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/../lib/chromium.sh"
 
 for ext in mp4 webm gif webp; do
   "$bin" zoom --frames 48 --fps 24 --size 96,64 -o "$work/zoom.$ext" >"$work/out.txt" 2>&1 || fail "zoom -o zoom.$ext: $(cat "$work/out.txt")"
@@ -44,11 +40,8 @@ setTimeout(() => {
 }, 1000);
 </script></body></html>
 HTML
-# Chromium as root needs --no-sandbox; its profile goes to the scratch folder.
-timeout 120 "$chromium" --headless --no-sandbox --disable-gpu --user-data-dir="$work/profile" \
-  --autoplay-policy=no-user-gesture-required --virtual-time-budget=3000 --dump-dom "file://$work/page.html" \
-  >"$work/dom.html" 2>"$work/chromium.txt" || fail "chromium exit $?: $(tail -5 "$work/chromium.txt")"
-result=$(sed -n '/<pre id="result">/,/<\/pre>/p' "$work/dom.html" | sed -e 's/.*<pre id="result">//' -e 's/<\/pre>.*//')
+dump_dom "file://$work/page.html" 3000 "$work/dom.html" --autoplay-policy=no-user-gesture-required
+result=$(pre_text result "$work/dom.html")
 echo "$result"
 for id in mp4 webm; do
   line=$(echo "$result" | grep "^$id ")

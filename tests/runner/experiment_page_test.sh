@@ -7,27 +7,19 @@
 # CSV in the DOM must have one row per trial, in the order of stimuli.csv
 # (the seeded order), with the scripted answers.
 # Usage: experiment_page_test.sh STOCHTEX_BINARY. Exit 77 (ctest: skipped)
-# when Chromium is not installed (scripts/install-deps.sh installs it).
+# when Chromium is not installed (tests/lib/chromium.sh).
 set -u
 bin=$1
-chromium=$(command -v chromium || command -v chromium-browser || true)
-[ -n "$chromium" ] || { echo "chromium not installed: skipped"; exit 77; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/../lib/chromium.sh"
 
 "$bin" stimuli -o "$work/exp" --size 16 --tiles 4,8 --correlations 0,0.5,1 --repeats 2 --seed 11 \
   --duration-ms 1000 --reset-ms 1000 >"$work/out.txt" 2>&1 || fail "stimuli: $(cat "$work/out.txt")"
 keys=ynnyyynnnyny  # 12 trials: 2 tile sizes x 3 correlations x 2
-# Chromium as root needs --no-sandbox; its profile goes to the scratch folder.
-timeout 120 "$chromium" --headless --no-sandbox --disable-gpu --user-data-dir="$work/profile" \
-  --virtual-time-budget=60000 --dump-dom "file://$work/exp/experiment.html#auto=$keys" \
-  >"$work/dom.html" 2>"$work/chromium.txt" || fail "chromium exit $?: $(tail -5 "$work/chromium.txt")"
+dump_dom "file://$work/exp/experiment.html#auto=$keys" 60000 "$work/dom.html"
 
 grep -q "data-state=\"done\"" "$work/dom.html" || fail "the page did not reach its end: $(grep -o 'data-state="[a-z]*"' "$work/dom.html")"
 # The <pre id="answers-csv"> block, one line per row.
-sed -n '/<pre id="answers-csv">/,/<\/pre>/p' "$work/dom.html" | sed -e 's/.*<pre id="answers-csv">//' -e 's/<\/pre>.*//' \
-  | grep -v '^$' >"$work/answers.csv"
+pre_text answers-csv "$work/dom.html" | grep -v '^$' >"$work/answers.csv"
 head -1 "$work/answers.csv" | grep -qx "trial,stimulus,w,correlation,alpha,answer,response_time_ms,shown_ms" \
   || fail "CSV header: $(head -1 "$work/answers.csv")"
 rows=$(($(wc -l <"$work/answers.csv") - 1))

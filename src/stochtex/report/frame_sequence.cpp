@@ -49,7 +49,7 @@ struct FrameSequenceWriter::Video {
         if (!hasVideoEncoder(codec)) return false;
         file = std::make_unique<AtomicFile>(path);
         ::close(file->releaseDescriptor());
-        video = std::make_unique<VideoEncoder>(file->tempPath(), codec, width, height, fps);
+        video = std::make_unique<VideoEncoder>(file->tempPath(), codec, width, height, fps, path);
         return true;
     }
 

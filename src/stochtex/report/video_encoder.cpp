@@ -32,7 +32,7 @@ std::string avError(int code) {
 bool hasVideoEncoder(VideoCodec codec) { return avcodec_find_encoder_by_name(encoderName(codec)) != nullptr; }
 
 struct VideoEncoder::State {
-    std::string path;
+    std::string name;  // what errors name
     int width = 0, height = 0;
     AVFormatContext* format = nullptr;
     AVCodecContext* codec = nullptr;
@@ -55,7 +55,7 @@ struct VideoEncoder::State {
     }
 
     [[noreturn]] void fail(const std::string& what, int code) const {
-        throw InputError(path + ": cannot write the video (" + what + (code ? ": " + avError(code) : "") + ")");
+        throw InputError(name + ": cannot write the video (" + what + (code ? ": " + avError(code) : "") + ")");
     }
 
     // Sends a frame (null: end of stream) and writes every packet it gives back.
@@ -74,12 +74,13 @@ struct VideoEncoder::State {
     }
 };
 
-VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int width, int height, double fps)
+VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int width, int height, double fps,
+                           const std::string& name)
     : s_(std::make_unique<State>()) {
     State& s = *s_;
     // FFmpeg's informative lines ("moving the moov atom …") are not the user's concern; errors are reported here.
     av_log_set_level(AV_LOG_ERROR);
-    s.path = path;
+    s.name = name.empty() ? path : name;
     s.width = width;
     s.height = height;
     if (width < 1 || height < 1 || width > 16384 || height > 16384) s.fail("frames of 1 to 16384 pixels a side", 0);

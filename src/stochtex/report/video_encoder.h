@@ -20,9 +20,11 @@ enum class VideoCodec { H264, Vp9 };
 class VideoEncoder {
 public:
     // path: written as it is (the container by `codec`: MP4 for H.264, WebM
-    // for VP9); fps in (0, 1000]. InputError naming the path when FFmpeg
-    // lacks the encoder or the file cannot be opened.
-    VideoEncoder(const std::string& path, VideoCodec codec, int width, int height, double fps);
+    // for VP9); fps in (0, 1000]. InputError naming `name` (the output the
+    // user asked for, where `path` is its temporary file; empty: path) when
+    // FFmpeg lacks the encoder or the file cannot be written.
+    VideoEncoder(const std::string& path, VideoCodec codec, int width, int height, double fps,
+                 const std::string& name = {});
     ~VideoEncoder();
     // Display codes in [0, 1], 1 (gray) or 3 (RGB) channels, width × height.
     void add(const Image& codes);
