@@ -7,6 +7,7 @@
 #include "stochtex/analysis/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/studies/pattern_sheet.h"
 
@@ -222,7 +223,7 @@ Figure4Options figure11Options() {
 
 Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     validateFigure4(o);
-    const Pattern pattern = Pattern::build(o.pattern);
+    const GraphPattern pattern = GraphPattern::build(o.pattern);  // the file's program: a plain pattern or a graph
     struct Column {
         Figure4Column numbers;
         Image reference, exact, estimated, errExact, errEstimated;
@@ -240,14 +241,14 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         fo.referenceMaxSamples = o.referenceSamples;
         // The brute-force renders take nearly all the time, about equally.
         const double referenceShare = o.exactStatistics ? 0.5 : 1.0;
-        c.reference = FilteredPattern(pattern, fo.use(parseFilter("reference")))
+        c.reference = FilteredGraph(pattern, fo.use(parseFilter("reference")))
                           .render(cam, progressPart(part, 0.0, referenceShare, "reference"));
         if (o.exactStatistics)
-            c.exact = FilteredPattern(pattern, fo.use(parseFilter("exact")))
+            c.exact = FilteredGraph(pattern, fo.use(parseFilter("exact")))
                           .render(cam, progressPart(part, 0.5, 1.0, "exact statistics"));
         fo.source = StatisticsSource::Estimators;
         fo.response = o.response;
-        c.estimated = FilteredPattern(pattern, fo).render(cam);
+        c.estimated = FilteredGraph(pattern, fo).render(cam);
         if (o.exactStatistics) c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
         c.errEstimated = errorMap(c.estimated, c.reference, c.numbers.meanErrorEstimated);
         if (o.fadesTo) {
