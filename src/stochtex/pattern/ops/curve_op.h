@@ -37,17 +37,23 @@ struct CurveOp {
             }
         return points.back()[1];
     }
-    // R entries of (f, f², 0) on two rows; with a Gaussianized input, f∘T⁻¹ (the blending space's curve).
-    static Params bind(OpBuild& b) {
-        const int resolution = int(b.node.numbers.at("resolution"));
+    // A 1D function f of a field as the table curveMoments reads: R entries
+    // of (f, f², 0) over [0, 1] on two rows; in blending space, with a
+    // Gaussianized input, f∘T⁻¹.
+    template <class F>
+    static OpTable momentTable(int resolution, const NoiseExample* gaussianized, F&& f) {
         const auto table = [&](const NoiseExample* input) {
             return tabulate(resolution, 2, [&](int i, int) {
                 float x = float(i) / float(resolution - 1);
                 if (input) x = input->toOutput(x);
-                return kernel::momentEntry(float(at(b.node.curve, x)));
+                return kernel::momentEntry(float(f(x)));
             });
         };
-        b.addTable({table(nullptr), table(b.gaussianizedInput("input")), true});
+        return {table(nullptr), table(gaussianized), true};
+    }
+    static Params bind(OpBuild& b) {
+        b.addTable(momentTable(int(b.node.numbers.at("resolution")), b.gaussianizedInput("input"),
+                               [&](float x) { return at(b.node.curve, x); }));
         return {0.0f};
     }
 };

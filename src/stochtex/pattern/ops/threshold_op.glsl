@@ -1,9 +1,8 @@
 // threshold op: a soft threshold of a field, the smoothstep from 0 at
 // edge − width/2 to 1 at edge + width/2. C¹ (no step to alias), so a
 // pattern's blots get edges of a chosen softness. Points are the formula;
-// filtered, the op's table of (s, s², 0) per entry on two identical rows,
-// read at y = 0.5, gives E[s] and E[s²] from one prefiltered lookup (moment
-// matching, as the curve op, docs/MATH.md). Kernel file (ops/op_host.h).
+// filtered, the curve op's moment table of s (curveMoments: E[s] and E[s²]
+// from one prefiltered lookup, docs/MATH.md). Kernel file (ops/op_host.h).
 struct ThresholdParams {
     float edge;
     float width;  // > 0
@@ -15,6 +14,4 @@ inline float thresholdValue(ThresholdParams p, float x) {
 inline vec3 opPoint(ThresholdParams p, vec3 a, vec3 b, vec3 c, OpContext ctx) {
     return vec3(thresholdValue(p, a.x), 0.0f, 0.0f);
 }
-inline vec3 opFiltered(ThresholdParams p, vec3 a, vec3 b, vec3 c, OpContext ctx) {
-    return vec3(matchedMoments(opPrefiltered(ctx, vec2(a.x, 0.5f), vec2(momentSigma(vec2(a.x, a.y)), 0.0f))), 0.0f);
-}
+inline vec3 opFiltered(ThresholdParams p, vec3 a, vec3 b, vec3 c, OpContext ctx) { return curveMoments(ctx, a); }

@@ -1,7 +1,7 @@
 #pragma once
 #include <nlohmann/json.hpp>
 
-#include "stochtex/noise/example.h"
+#include "stochtex/pattern/ops/curve_op.h"
 #include "stochtex/pattern/ops/op_host.h"
 
 STOCHTEX_OP_KERNEL_BEGIN
@@ -24,18 +24,11 @@ struct ThresholdOp {
                  {"width", ParamType::Number, "Width of the soft step, in the field's values", 0.05, 1e-3, 10, nullptr, {}, 1},
                  {"resolution", ParamType::Integer, "Entries of the table the filtered value reads", 256, 2, 1024}}};
     }
-    // R entries of (s, s², 0) over [0, 1] on two rows; with a Gaussianized input, s∘T⁻¹.
+    // The table of s that the filtered value reads (CurveOp::momentTable).
     static Params bind(OpBuild& b) {
         const Params p{b.number("edge"), b.number("width")};
-        const int resolution = int(b.node.numbers.at("resolution"));
-        const auto table = [&](const NoiseExample* input) {
-            return tabulate(resolution, 2, [&](int i, int) {
-                float x = float(i) / float(resolution - 1);
-                if (input) x = input->toOutput(x);
-                return kernel::momentEntry(kernel::thresholdValue(p, x));
-            });
-        };
-        b.addTable({table(nullptr), table(b.gaussianizedInput("input")), true});
+        b.addTable(CurveOp::momentTable(int(b.node.numbers.at("resolution")), b.gaussianizedInput("input"),
+                                        [&](float x) { return kernel::thresholdValue(p, x); }));
         return p;
     }
 };
