@@ -257,13 +257,14 @@ Rgb GraphPattern::run(Slots& slots, int lastSlot, const Direction& eye) const {
 Rgb GraphPattern::evaluate(double u, double v, int lastSlot, const Direction& eye, Slots& slots) const {
     if (lastSlot < 0) lastSlot = outputSlot();
     slots.resize(size_t(outputSlot() + 1));
-    const BlendStencil plain = triangleGrid(u, v, gridDensity());
+    // Untransformed leaves share the stencil at uv.
+    const BlendStencil shared = untransformed_ ? triangleGrid(u, v, gridDensity()) : BlendStencil{};
     for (int k = 0; k < leafCount(); ++k) {
         // Each leaf at its pair's uv (the pair's tiles are its own).
         const TilingBlendingNoise& n = leaf(k);
         float b = 0;
         if (untransformed_) {
-            b = n.blend(plain, periodFraction(u), periodFraction(v));
+            b = n.blend(shared, periodFraction(u), periodFraction(v));
         } else {
             const auto [pu, pv] = pairTransforms_[size_t(leafLocation(k)[0])].apply(u, v);
             b = n.blend(triangleGrid(pu, pv, gridDensity()), periodFraction(pu), periodFraction(pv));
