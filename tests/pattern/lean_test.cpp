@@ -205,9 +205,10 @@ TEST(LeanLobe, IntegratesToOneOverSlopesAndOverTheHemisphere) {
     }
 }
 
-// A pattern with a normal map (docs/PATTERNS.md).
-PatternSpec normalMapSpec(double roughness) {
-    const nlohmann::json j = nlohmann::json::parse(R"({
+// A pattern with a normal map (docs/PATTERNS.md); `normalMap`'s members
+// replace the normal map's own.
+PatternSpec normalMapSpec(const nlohmann::json& normalMap) {
+    nlohmann::json j = nlohmann::json::parse(R"({
         "name": "bumps", "seed": 5,
         "noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]},
         "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]},
@@ -215,10 +216,10 @@ PatternSpec normalMapSpec(double roughness) {
         "normal_map": {"height": {"type": "spectrum", "size": 128,
                                   "components": [{"shape": "bilobe", "frequency": 12, "bandwidth": 3, "orientation": 30}]},
                        "amplitude": 0.25, "light": [0.3, -0.6, 0.75], "view": [0, 0.4, 1]}})");
-    nlohmann::json k = j;
-    k["normal_map"]["roughness"] = roughness;
-    return parsePatternSpec(JsonReader(k, "bumps.json"), ".");
+    j["normal_map"].update(normalMap);
+    return parsePatternSpec(JsonReader(j, "bumps.json"), ".");
 }
+PatternSpec normalMapSpec(double roughness) { return normalMapSpec({{"roughness", roughness}}); }
 
 // With a zero footprint (every magnified pixel reads one level-0 texel,
 // whose variances and covariance are 0) the filtered shading is the
@@ -257,16 +258,8 @@ TEST(LeanResponse, ZeroFootprintIsTheUnfilteredShading) {
 // through the mean normal alone it stayed 0.04–0.05 too bright at every
 // footprint.
 TEST(LeanResponse, DiffuseConvergesToTheReferenceAtLargeFootprints) {
-    nlohmann::json j = nlohmann::json::parse(R"({
-        "name": "bumps", "seed": 5,
-        "noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]},
-        "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]},
-        "colormap": {"type": "gaussian"},
-        "normal_map": {"height": {"type": "spectrum", "size": 128,
-                                  "components": [{"shape": "bilobe", "frequency": 12, "bandwidth": 3, "orientation": 30}]},
-                       "amplitude": 0.3, "light": [0.3, -0.6, 0.75], "view": [0, 0.4, 1],
-                       "albedo": [1, 1, 1], "specular": 0}})");
-    const Pattern p = Pattern::build(parsePatternSpec(JsonReader(j, "bumps.json"), "."));
+    const Pattern p = Pattern::build(
+        normalMapSpec(nlohmann::json::parse(R"({"amplitude": 0.3, "albedo": [1, 1, 1], "specular": 0})")));
     FilterOptions exact, reference;
     exact.source = StatisticsSource::Exact;
     reference.source = StatisticsSource::Reference;
