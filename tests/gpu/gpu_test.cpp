@@ -286,9 +286,11 @@ TEST(Gpu, LeanResponseMatchesTheCpu) {
 // mesh's (the same coverage as a colour pattern's), the highlights are
 // there (the brightest pixel is over 0.3, while the diffuse part alone
 // stays under the albedo, 0.18), and without the covariance the
-// picture changes.
+// picture changes. The file's lean program (makeGpuView: GpuGraph, which
+// shadesLight()) draws what the lean response's own shaders (GpuPattern)
+// draw.
 TEST(Gpu, SceneShadesANormalMapWithTheLeanResponse) {
-    const Pattern lean = Pattern::build(loadPreset("lean-ridges")), colour = Pattern::build(loadPreset("weld"));
+    const PatternSpec lean = loadPreset("lean-ridges"), colour = loadPreset("weld");
     const int w = 160, h = 120;
     FilterOptions o;
     o.response.kind = ResponseKind::Lean;
@@ -296,8 +298,12 @@ TEST(Gpu, SceneShadesANormalMapWithTheLeanResponse) {
     smooth.use(parseFilter("smooth"));
     for (const char* name : {"sphere", "torus"}) {
         const Mesh mesh = makeObject(name);
-        const Image img = renderScene(GpuPattern(lean, context(), o), mesh, SceneCamera{}, w, h, 4.0f);
-        const Image ref = renderScene(GpuPattern(colour, context(), smooth), mesh, SceneCamera{}, w, h, 4.0f);
+        const Image img = renderScene(*makeGpuView(lean, context(), o), mesh, SceneCamera{}, w, h, 4.0f);
+        const Image ref = renderScene(*makeGpuView(colour, context(), smooth), mesh, SceneCamera{}, w, h, 4.0f);
+        const Image own = renderScene(GpuPattern(Pattern::build(lean), context(), o), mesh, SceneCamera{}, w, h, 4.0f);
+        const double apart = test::meanRgbDistance(img, own);
+        std::printf("[ info ] %s: lean program vs lean response's shaders, mean distance %.2e\n", name, apart);
+        EXPECT_LE(apart, 1e-4) << name;
         int coveredLean = 0, coveredColour = 0;
         float brightest = 0;
         bool finite = true;
@@ -319,7 +325,8 @@ TEST(Gpu, SceneShadesANormalMapWithTheLeanResponse) {
         EXPECT_GT(brightest, 0.3f) << name;  // measured 0.42 (sphere), 0.35 (torus)
         FilterOptions noCov = o;
         noCov.response.covariance = false;
-        EXPECT_NE(renderScene(GpuPattern(lean, context(), noCov), mesh, SceneCamera{}, w, h, 4.0f).data(), img.data()) << name;
+        EXPECT_NE(renderScene(*makeGpuView(lean, context(), noCov), mesh, SceneCamera{}, w, h, 4.0f).data(), img.data())
+            << name;
     }
 }
 
@@ -410,42 +417,52 @@ void expectGraphParity(const GraphPattern& g, const Camera& camera, const Filter
 }
 
 // A plain pattern file runs on the GPU as its program (makeGpuView: the
-// generated GLSL of "two leaves → colormap"), against the CPU's program, for
-// every colour preset, unfiltered and both table modes (K = 1 and 8), in a
-// zoom and on a plane, at issue 28's tolerances: mean |Δ| ≤ 0.05/255, no
-// pixel over 1/255 filtered, at most 0.01 % over 2/255 unfiltered (measured
-// on llvmpipe: mean ≤ 3e-5, max ≤ 5.2e-4, i.e. 0.13/255).
+// generated GLSL of "two leaves → colormap", or of its normal map's lean
+// program under the lean response), against the CPU's program, for every
+// plain preset, unfiltered and both table modes (K = 1 and 8), in a zoom and
+// on a plane, at issue 28's tolerances: mean |Δ| ≤ 0.05/255, no pixel over
+// 1/255 filtered, at most 0.01 % over 2/255 unfiltered (measured on
+// llvmpipe: mean ≤ 3e-5, max ≤ 5.2e-4, i.e. 0.13/255; lean: mean ≤ 2e-7,
+// max ≤ 2.1e-4).
 TEST(Gpu, PlainPatternProgramsMatchTheCpu) {
-    int compared = 0;
+    int compared = 0, lean = 0;
     for (const std::string& name : presetNames()) {
         const PatternSpec spec = loadPreset(name);
         if (spec.graph) continue;
-        const GraphPattern g = GraphPattern::build(spec);
-        for (const char* filter : {"none", "paper", "smooth"}) {
-            const bool unfiltered = std::string(filter) == "none";
-            FilterOptions o;
-            o.use(parseFilter(filter));
-            o.aniso = std::string(filter) == "paper" ? 1 : 8;
-            const std::unique_ptr<GpuView> gpu = makeGpuView(spec, context(), o);
-            const FilteredGraph cpu(g, o);
-            Camera zoom, plane;
-            zoom.view = {64, 48, unfiltered ? 1.3 : 6.0, 321.0, -17.5};
-            plane.kind = Camera::Kind::Plane;
-            plane.tiltDeg = 70;
-            plane.view = {64, 48, 1.0};
-            for (const Camera& c : {zoom, plane}) {
-                const std::string what = name + " " + filter + (c.kind == Camera::Kind::Plane ? ", plane" : ", zoom");
-                const Difference d = compare(gpu->render(c), cpu.render(c));
-                EXPECT_LE(d.mean, 0.05 / 255.0) << what;
-                if (unfiltered)
-                    EXPECT_LE(d.outlierFraction, 1e-4) << what << " (max |Δ| " << d.max << ")";
-                else
-                    EXPECT_LE(d.max, 1.0 / 255.0) << what;
-                ++compared;
+        for (const ResponseKind response : {ResponseKind::PrefilteredColormap, ResponseKind::Lean}) {
+            if (response == ResponseKind::Lean && !spec.normalMap) continue;
+            for (const char* filter : {"none", "paper", "smooth"}) {
+                const bool unfiltered = std::string(filter) == "none";
+                FilterOptions o;
+                o.use(parseFilter(filter));
+                o.aniso = std::string(filter) == "paper" ? 1 : 8;
+                o.response.kind = response;
+                const std::unique_ptr<GpuView> gpu = makeGpuView(spec, context(), o);
+                const GraphPattern g = GraphPattern::build(spec, o.response);
+                const FilteredGraph cpu(g, o);  // holds a reference to g
+                Camera zoom, plane;
+                zoom.view = {64, 48, unfiltered ? 1.3 : 6.0, 321.0, -17.5};
+                plane.kind = Camera::Kind::Plane;
+                plane.tiltDeg = 70;
+                plane.view = {64, 48, 1.0};
+                for (const Camera& c : {zoom, plane}) {
+                    const std::string what = name + " " + enumName(kResponseKindNames, response) + " " + filter +
+                                             (c.kind == Camera::Kind::Plane ? ", plane" : ", zoom");
+                    const Difference d = compare(gpu->render(c), cpu.render(c));
+                    std::printf("[ info ] %s: mean |GPU - CPU| %.2e, max %.2e\n", what.c_str(), d.mean, d.max);
+                    EXPECT_LE(d.mean, 0.05 / 255.0) << what;
+                    if (unfiltered)
+                        EXPECT_LE(d.outlierFraction, 1e-4) << what << " (max |Δ| " << d.max << ")";
+                    else
+                        EXPECT_LE(d.max, 1.0 / 255.0) << what;
+                    ++compared;
+                    lean += response == ResponseKind::Lean;
+                }
             }
         }
     }
     EXPECT_GE(compared, 100);
+    EXPECT_GE(lean, 6);
 }
 
 // Every node of the table in its sample graph (graph_nodes.h,

@@ -305,6 +305,51 @@ TEST(GraphPattern, PlainPatternProgramRendersThePatternsImages) {
     EXPECT_GE(compared, 150);
 }
 
+// A plain pattern's normal map under the lean response is the program
+// "height's slopes, albedo → lean" (GraphPattern::build): the lean
+// response's images, for every filter, zoomed and on the plane, lit and
+// seen from the camera or from a fixed view, with the slopes' covariance and
+// without. The light and the view reach the lean node as degrees, and come
+// back as floats within an ulp (measured: bit-identical images and skies).
+TEST(GraphPattern, PlainNormalMapProgramRendersTheLeanResponsesImages) {
+    PatternSpec fixedView = loadPreset("lean-ridges");
+    fixedView.normalMap->shading.view = std::array<double, 3>{0.2, 0.4, 1.0};
+    double worst = 0;
+    int compared = 0;
+    for (const PatternSpec& spec : {loadPreset("lean-ridges"), fixedView}) {
+        const Pattern pattern = Pattern::build(spec);
+        for (const char* filter : {"none", "paper", "smooth", "exact", "reference"})
+            for (const bool covariance : {true, false}) {
+                FilterOptions o;
+                o.use(parseFilter(filter));
+                o.response.kind = ResponseKind::Lean;
+                o.response.covariance = covariance;
+                o.aniso = 4;
+                o.referenceMaxSamples = 6;
+                const GraphPattern program = GraphPattern::build(spec, o.response);
+                ASSERT_EQ(program.leafCount(), 2);
+                const FilteredPattern f(pattern, o);
+                const FilteredGraph g(program, o);
+                for (const bool plane : {false, true}) {
+                    Camera cam;
+                    cam.view = {20, 16, plane ? 0.6 : 5.0, 3.5, -7.25};
+                    if (plane) {
+                        cam.kind = Camera::Kind::Plane;
+                        cam.tiltDeg = 70;  // the horizon not in view: the sky is tested below
+                    }
+                    const Image a = f.render(cam), b = g.render(cam);
+                    const double d = test::maxAbsDifference(a, b);
+                    worst = std::max(worst, d);
+                    EXPECT_LE(d, 2e-6) << filter << (plane ? ", plane" : ", zoom") << (covariance ? "" : ", no covariance");
+                    ++compared;
+                }
+                for (int c = 0; c < 3; ++c) EXPECT_NEAR(f.skyColour()[size_t(c)], g.skyColour()[size_t(c)], 1e-5) << filter;
+            }
+    }
+    std::printf("[ info ] lean program vs lean response: max |difference| %.3g over %d images\n", worst, compared);
+    EXPECT_EQ(compared, 40);
+}
+
 // Each non-linear node on known inputs: the node's value against its
 // formula applied to the value of its input, pixel by pixel. The image
 // colormap holds R = x, G = y, B = 0.25 as data (a float EXR), so a channel
@@ -495,11 +540,11 @@ TEST(GraphPattern, FilteredRendersDoNotDependOnTheThreadCount) {
     EXPECT_TRUE(identical(one, two));
 }
 
-std::string buildError(const std::string& text) {
+std::string buildError(const std::string& text, ResponseKind response = ResponseKind::PrefilteredColormap) {
     try {
-        const GraphPattern g = GraphPattern::build(parse(text));
         FilterOptions o;
-        o.response.kind = ResponseKind::Lean;
+        o.response.kind = response;
+        const GraphPattern g = GraphPattern::build(parse(text), o.response);
         FilteredGraph f(g, o);
     } catch (const InputError& e) {
         return e.what();
@@ -512,8 +557,9 @@ TEST(GraphPattern, RefusesWhatItCannotEvaluateNamingTheNode) {
     std::string e = buildError(graph(curve + R"( "d": {"type": "derivative", "input": "k"},
         "c": {"type": "colormap", "x": "d", "y": "a", "colormap": {"type": "gaussian"}})"));
     EXPECT_NE(e.find("node \"d\" (derivative): its input \"k\" is not linear in the sources"), std::string::npos) << e;
-    e = buildError(graph(curve + R"( "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}})"));
-    EXPECT_NE(e.find("response"), std::string::npos) << e;  // a graph has no normal map to shade
+    e = buildError(graph(curve + R"( "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}})"),
+                   ResponseKind::Lean);
+    EXPECT_NE(e.find("response a texture graph shades through its own nodes"), std::string::npos) << e;
     try {
         (void)Pattern::build(loadPreset("figure14"));
         ADD_FAILURE() << "Pattern::build accepted a graph with a non-linear node before its output";
@@ -531,6 +577,41 @@ TEST(GraphPattern, RefusesWhatItCannotEvaluateNamingTheNode) {
         "c": {"type": "mix", "a": "p", "b": "p", "t": "x"})"));
     EXPECT_NE(e.find("node \"c\" (mix): its input \"x\" is a Gaussianized exemplar"), std::string::npos) << e;
     std::filesystem::remove(file);
+    // A constant is no texture.
+    e = buildError(graph(R"("k": {"type": "colour", "colour": "#ff8000"}, "c": {"type": "mix", "a": "k", "b": "k", "t": "k2"},
+        "k2": {"type": "colormap_field", "x": "n", "y": "n", "colormap": {"type": "gaussian"}}, "n": )" + kNoise, "k"));
+    EXPECT_NE(e.find("the output \"k\" reads no field"), std::string::npos) << e;
+}
+
+// A colour node is its colour, decoded from sRGB components to linear
+// light, wherever and however filtered (its footprint mean is itself); a
+// colour that is none is refused at its JSON pointer.
+TEST(GraphPattern, ColourNodeIsItsLinearColourEverywhere) {
+    const GraphPattern g = GraphPattern::build(parse(graph(R"("a": )" + kNoise + R"(,
+        "k": {"type": "colour", "colour": [1, 0.5, 0]},
+        "c": {"type": "mix", "a": "k", "b": "k", "t": "a"})")));
+    const Rgb expected{1.0f, linearFromSrgb(0.5f), 0.0f};
+    EXPECT_NEAR(expected[1], 0.2140, 1e-4);
+    for (const char* filter : {"none", "smooth", "reference"}) {
+        FilterOptions o;
+        o.use(parseFilter(filter));
+        o.referenceMaxSamples = 4;
+        Camera cam;
+        cam.kind = Camera::Kind::Plane;
+        cam.tiltDeg = 60;
+        cam.view = {16, 12, 1.0};
+        const Image img = FilteredGraph(g, o).render(cam);
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = 0; x < img.width(); ++x)
+                for (int c = 0; c < 3; ++c) ASSERT_NEAR(img.at(x, y, c), expected[size_t(c)], 1e-6) << filter;
+    }
+    try {
+        (void)parse(graph(R"("a": )" + kNoise + R"(, "k": {"type": "colour", "colour": "orange"},
+            "c": {"type": "mix", "a": "k", "b": "k", "t": "a"})"));
+        ADD_FAILURE() << "an invalid colour was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("/nodes/k/colour: invalid colour \"orange\""), std::string::npos) << e.what();
+    }
 }
 
 TEST(GraphPattern, RefusesBadCurvesAndChoicesWithTheirJsonPointer) {

@@ -1,6 +1,7 @@
 #include "stochtex/gpu/export.h"
 
 #include <algorithm>
+#include <charconv>
 #include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -217,6 +218,25 @@ To light it with your own lights and BRDF, call `LeanLobe stochtex_lean_lobe(vec
 
 )";
 
+const char* kProgramLightSection = R"(## Lighting (lean nodes)
+
+The program lights its own colour: a `lean` node (a pattern file's normal
+map under the lean response is one) shades its footprint's slope lobe, an
+anisotropic Beckmann lobe of the mean slope and slope covariance plus the
+base roughness (LEAN mapping, Olano & Baker 2010), under a directional light
+of unit irradiance. Its light, view, albedo, roughness and specular weight
+are constants of `stochtex.glsl` (`manifest.json`'s `graph.lean` lists
+them). Two globals of `stochtex.glsl` light it from your scene instead;
+set them before each `stochtex_sample` (directions in the texture frame:
+x along u, y along v, z up; unit length):
+
+| global | type | meaning |
+| --- | --- | --- |
+| `gLightDirection` | `vec4` | xyz towards your light, w = 1 (w = 0, the default: the node's own light) |
+| `gEyeDirection` | `vec3` | towards the eye at this fragment (default (0, 0, 1), straight down); a node with a fixed view keeps its own |
+
+)";
+
 // The samplers `include` declares that manifest.json's textures do not
 // list: the unfiltered path's, which stochtex_sample never calls.
 std::vector<std::string> unlistedSamplers(const std::string& include, const nlohmann::json& textures) {
@@ -235,7 +255,8 @@ std::vector<std::string> unlistedSamplers(const std::string& include, const nloh
     return out;
 }
 
-std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& textures, bool lean,
+// shading: the section on how the colour is lit ("" when it is not).
+std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& textures, const std::string& shading,
                    const std::string& include) {
     std::string textureRows;
     for (const nlohmann::json& t : textures) textureRows += textureRow(t);
@@ -263,7 +284,7 @@ std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& 
                                                          {"@FILES@", fileRows},
                                                          {"@TEXTURES@", textureRows},
                                                          {"@UNREAD@", unread},
-                                                         {"@LEAN@", lean ? kLeanSection : ""}};
+                                                         {"@LEAN@", shading}};
     std::string text = kReadme;
     for (const auto& [key, value] : fills)
         for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
@@ -305,7 +326,7 @@ void makeFolder(const std::string& dir) {
 
 // manifest.json, stochtex.glsl and README.md, after the data.
 void writeDescription(const std::string& dir, nlohmann::json& m, const std::string& include,
-                      std::vector<WrittenFile>& files, bool lean) {
+                      std::vector<WrittenFile>& files, const std::string& shading) {
     m["colour_space"] = "linear";  // the tables and stochtex_sample: linear light, never sRGB codes
     writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
     files.push_back({"`manifest.json`", "JSON (UTF-8)", "parameters, the textures to bind and the lists of data files"});
@@ -313,7 +334,7 @@ void writeDescription(const std::string& dir, nlohmann::json& m, const std::stri
     files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 source, no `#version` line",
                      "`vec4 stochtex_sample(vec2 uv)` and what it calls"});
     files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
-    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], lean, include));
+    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], shading, include));
 }
 
 // The lean response's shading: what the uLean* uniforms hold.
@@ -382,7 +403,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
         m["table"] = writeTable(f.table(), h.resolutionX(), h.resolutionY(), "table.exr", "uTable",
                                 "the prefiltered table H̄", dir, exportOptions, textures, files);
     }
-    writeDescription(dir, m, exportedShaderInclude(options.response.kind), files, lean);
+    writeDescription(dir, m, exportedShaderInclude(options.response.kind), files, lean ? kLeanSection : "");
 }
 
 void exportGraph(const GraphPattern& graph, const FilterOptions& options, const std::string& dir,
@@ -450,15 +471,30 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     // Every table has the same σ levels (tableLevels); a graph of compose and
     // lean nodes alone has none.
     if (!tables.empty()) m["table"] = tables.front();
-    writeDescription(dir, m, exportedGraphInclude(graph, GraphMoments::Matched, graphLevelAverages(f, options)), files, false);
+    // Each lean node's shading, as the program's constants hold it (each
+    // float as the shortest decimal that reads back as it: 0.08, not 0.0799999982).
+    const auto number = [](float v) {
+        char text[32];
+        const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+        return std::stod(std::string(text, end));
+    };
+    nlohmann::json& lean = m["graph"]["lean"] = nlohmann::json::array();
+    for (const GraphPattern::Operation& op : graph.operations())
+        if (const auto* l = std::get_if<LeanOp::Params>(&op.params))
+            lean.push_back(
+                {{"node", op.id},
+                 {"roughness", number(l->roughness)},
+                 {"specular", number(l->specular)},
+                 {"light", {number(l->lightX), number(l->lightY), number(l->lightZ)}},
+                 {"view", l->viewZ != 0 ? nlohmann::json{number(l->viewX), number(l->viewY), number(l->viewZ)} : nlohmann::json()},
+                 {"covariance", l->covariance != 0}});
+    writeDescription(dir, m, exportedGraphInclude(graph, GraphMoments::Matched, graphLevelAverages(f, options)), files,
+                     graph.shadesLight() ? kProgramLightSection : "");
 }
 
 void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,
                        const ExportOptions& exportOptions) {
-    if (programRenders(spec, options.response.kind))  // the file's program, plain pattern or graph (as makeGpuView)
-        exportGraph(GraphPattern::build(spec), options, dir, exportOptions);
-    else
-        exportPattern(Pattern::build(spec), options, dir, exportOptions);
+    exportGraph(GraphPattern::build(spec, options.response), options, dir, exportOptions);
 }
 
 }  // namespace stochtex

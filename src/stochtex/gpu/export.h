@@ -46,10 +46,8 @@ std::string exportedShaderInclude(ResponseKind response = ResponseKind::Prefilte
 // options.source: Estimators, the paper estimator (InputError otherwise).
 void exportGraph(const GraphPattern& graph, const FilterOptions& options, const std::string& dir,
                  const ExportOptions& exportOptions = {});
-// A pattern file's export: exportGraph of the file's program (a graph's, or
-// a plain pattern's "two leaves → colormap"), what makeGpuView renders; a
-// plain pattern's normal map under the lean response, which its program
-// does not carry yet, by exportPattern (programRenders).
+// A pattern file's export: exportGraph of the file's program under the
+// response (GraphPattern::build), what makeGpuView renders.
 void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,
                        const ExportOptions& exportOptions = {});
 std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched,

@@ -118,7 +118,7 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
     for (const GraphPattern::Operation& op : graph.operations()) {
         const auto in = [&](int k) { return op.inputs[size_t(k)] >= 0 ? slot(op.inputs[size_t(k)]) : "vec3(0.0)"; };
         const int first = op.inputs[0];
-        const int pair = first < graph.leafCount() ? graph.leafLocation(first)[0] : -1;
+        const int pair = first >= 0 && first < graph.leafCount() ? graph.leafLocation(first)[0] : -1;
         const std::string cov =
             filtered && pair >= 0 && graph.pairCovariance(pair) ? "p" + std::to_string(pair) + ".cov" : "0.0";
         const std::string ctx = "OpContext(" + std::to_string(op.table) + ", gEyeDirection, gLightDirection, " + cov + ")";
@@ -228,7 +228,8 @@ GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& op
     const bool estimators = options.source == StatisticsSource::Estimators;
     return {estimators ? "graph-filtered" : "graph", estimators ? "graph-filtered-compute" : "graph-compute",
             "graph-scene", ResponseKind::PrefilteredColormap,
-            {{kGraphProgramStem, graphProgramSource(graph, moments, graphLevelAverages(filtered, options))}}};
+            {{kGraphProgramStem, graphProgramSource(graph, moments, graphLevelAverages(filtered, options))}},
+            graph.shadesLight()};
 }
 
 }  // namespace
@@ -297,9 +298,7 @@ GpuGraph::~GpuGraph() = default;
 bool GpuGraph::filtered() const { return impl_->filtered; }
 
 std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options) {
-    if (!programRenders(spec, options.response.kind))
-        return std::make_unique<GpuPattern>(Pattern::build(spec), context, options);
-    return std::make_unique<GpuGraph>(GraphPattern::build(spec), context, options);
+    return std::make_unique<GpuGraph>(GraphPattern::build(spec, options.response), context, options);
 }
 
 namespace {

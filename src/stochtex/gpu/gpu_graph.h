@@ -69,10 +69,9 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-// The GPU view of a pattern file: GpuGraph running the file's program (a
-// graph's, or a plain pattern's "two leaves → colormap"), or GpuPattern for
-// the lean response of a plain pattern's normal map, which its program does
-// not carry yet (what it is built from is not kept).
+// The GPU view of a pattern file: GpuGraph running the file's program under
+// the options' response (GraphPattern::build; what it is built from is not
+// kept).
 std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options);
 
 // The same on a headless OpenGL context of its own (GlContext::headless),

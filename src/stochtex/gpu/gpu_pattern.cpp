@@ -23,7 +23,7 @@ GpuView::Recipes patternRecipes(const FilterOptions& options) {
                                                   enumName(kStatisticsSourceNames, options.source));
     const bool filtered = options.source == StatisticsSource::Estimators;
     return {filtered ? "filtered" : "unfiltered", filtered ? "filtered-compute" : "unfiltered-compute", "scene",
-            options.response.kind, {}};
+            options.response.kind, {}, options.response.kind == ResponseKind::Lean};
 }
 
 }  // namespace

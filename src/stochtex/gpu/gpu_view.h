@@ -27,6 +27,7 @@ public:
         std::string fragment, compute, scene;
         ResponseKind response = ResponseKind::PrefilteredColormap;
         std::vector<std::pair<std::string, std::string>> generated;
+        bool shadesLight = false;  // shadesLight()
     };
 
     virtual ~GpuView();
@@ -68,8 +69,10 @@ public:
     virtual void bind(unsigned program) const = 0;
     // The estimators and prefiltered tables (else the point values).
     virtual bool filtered() const = 0;
-    // Whose shader chunk the programs assemble.
-    ResponseKind responseKind() const { return recipes_.response; }
+    // Whether the program lights its own colour (the lean response, a
+    // program with a lean op): a scene gives it the light and the eye in the
+    // surface's frame and draws its colour as it is, unlit again.
+    bool shadesLight() const { return recipes_.shadesLight; }
     // The program that draws this view's pattern on a mesh (scene.frag),
     // with the same chunks; needs the context current.
     gl::Program sceneProgram() const;

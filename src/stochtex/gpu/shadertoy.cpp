@@ -304,9 +304,7 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
                              " texture units; this GL has " + std::to_string(units));
         m.channelUnit = kPatternUnits;
         m.pattern = makeGpuView(*spec.pattern, context, spec.patternFilter);
-        include = programRenders(*spec.pattern, spec.patternFilter.response.kind)
-                      ? exportedGraphInclude(GraphPattern::build(*spec.pattern))
-                      : exportedShaderInclude(spec.patternFilter.response.kind);
+        include = exportedGraphInclude(GraphPattern::build(*spec.pattern, spec.patternFilter.response));
     }
     m.vao = gl::newVertexArray();
     m.keyboard = gl::newTexture();

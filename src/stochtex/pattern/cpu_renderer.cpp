@@ -1,7 +1,6 @@
 #include "stochtex/pattern/cpu_renderer.h"
 
 #include "stochtex/pattern/graph_pattern.h"
-#include "stochtex/pattern/pattern.h"
 
 namespace stochtex {
 
@@ -27,9 +26,7 @@ private:
 }  // namespace
 
 std::unique_ptr<ViewRenderer> makeCpuRenderer(const PatternSpec& spec, const FilterOptions& options) {
-    if (!programRenders(spec, options.response.kind))
-        return std::make_unique<Owning<Pattern, FilteredPattern>>(Pattern::build(spec), options);
-    return std::make_unique<Owning<GraphPattern, FilteredGraph>>(GraphPattern::build(spec), options);
+    return std::make_unique<Owning<GraphPattern, FilteredGraph>>(GraphPattern::build(spec, options.response), options);
 }
 
 }  // namespace stochtex

@@ -1,9 +1,8 @@
 #pragma once
 // The CPU evaluator of a pattern file as a ViewRenderer that owns what it
-// reads: the file's program (GraphPattern: a graph's, or a plain pattern's
-// "two leaves → colormap") filtered by FilteredGraph; the lean response of a
-// plain pattern's normal map, which its program does not carry yet, by
-// FilteredPattern.
+// reads: the file's program under the options' response (GraphPattern::build:
+// a graph's, a plain pattern's "two leaves → colormap", or its normal map's
+// lean) filtered by FilteredGraph.
 #include <memory>
 
 #include "stochtex/pattern/filtered_pattern.h"

@@ -135,6 +135,16 @@ nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplar
         nodes["node_channel"] = channel;
         field = "node_channel";
     }
+    if (node.inputs.empty() && node.output == PortType::Colour) {
+        // A constant: mixed with a noise's colours, as a texture needs a field.
+        json noise = withParams(*findGraphNode("spectral_noise"));
+        json colours = withParams(*findGraphNode("colormap"));
+        colours["x"] = colours["y"] = "noise";
+        json mix = withParams(*findGraphNode("mix"));
+        mix["a"] = "node", mix["b"] = "colours", mix["t"] = "noise";
+        nodes["noise"] = noise, nodes["colours"] = colours, nodes["mix"] = mix;
+        output = "mix";
+    }
     if (node.output != PortType::Colour) {
         json colormap = withParams(*findGraphNode("colormap"));
         colormap["x"] = field;

@@ -44,7 +44,8 @@ nlohmann::json graphNodesJson();
 // by a colormap of one and a tiled-field input by a tiled_field, the node
 // with its defaults and samples (a path reads `exemplarPath`), and a
 // colormap reading it when it gives a field (or its first channel, for a
-// tiled field). Used by the per-node benchmarks and the test that every node
+// tiled field), mixed with a noise's colours when it reads no field (a
+// constant colour). Used by the per-node benchmarks and the test that every node
 // builds and renders.
 nlohmann::json sampleNodeGraph(const NodeInfo& node, const std::string& exemplarPath);
 // A node of this type as a graph file holds it, its inputs unset: its

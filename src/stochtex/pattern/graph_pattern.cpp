@@ -12,6 +12,8 @@
 #include "stochtex/core/parallel.h"
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/noise/slopes.h"
+#include "stochtex/pattern/graph_nodes.h"
+#include "stochtex/pattern/pattern_parts.h"
 
 namespace stochtex {
 
@@ -33,12 +35,53 @@ vec3 input(const Slots& slots, const GraphPattern::Operation& op, int k) {
     return op.inputs[size_t(k)] >= 0 ? slots[size_t(op.inputs[size_t(k)])] : vec3(0.0f);
 }
 
+// A plain pattern's normal map under the lean response as the graph it is:
+// its height (as given: a Gaussianized exemplar's slopes would not be its
+// own) on the tiles the file has always given it (deriveSeed(seed, 3)), its
+// albedo as a colour node, and a lean node with the file's shading.
+TextureGraph plainNormalMapGraph(const PatternSpec& spec, const ResponseOptions& response) {
+    if (!spec.normalMap) throw InputError::parameter("response", "lean shades a normal map; the pattern has none");
+    const NormalMapSpec& nm = *spec.normalMap;
+    const LeanShading shading = validatedShading(nm.shading);
+    TextureGraph graph;
+    GraphNode height;
+    height.id = "normal_map/height";
+    height.noise = nm.height;
+    height.noise.gaussianize = false;
+    height.info = findGraphNode(nm.height.source == NoiseSpec::Source::Spectrum ? "spectral_noise" : "exemplar");
+    height.seed = nm.height.explicitSeed ? nm.height.spectrum.seed : deriveSeed(spec.seed, 102u);
+    height.tileSeed = deriveSeed(spec.seed, 3);
+    GraphNode albedo;
+    albedo.id = "normal_map/albedo";
+    albedo.info = findGraphNode("colour");
+    albedo.colour = shading.albedo;
+    GraphNode lean;
+    lean.id = "normal_map";
+    lean.info = findGraphNode("lean");
+    lean.inputs = {{"height", height.id}, {"albedo", albedo.id}};
+    // A direction's azimuth and elevation in degrees (LeanOp::direction's inverse).
+    const auto degrees = [](const std::array<double, 3>& d) {
+        return std::array<double, 2>{std::atan2(d[1], d[0]) * 180 / std::numbers::pi,
+                                     std::asin(std::clamp(d[2], -1.0, 1.0)) * 180 / std::numbers::pi};
+    };
+    const auto light = degrees(shading.light);
+    const auto view = shading.view ? degrees(*shading.view) : std::array<double, 2>{0, 0};
+    lean.numbers = {{"amplitude", nm.amplitude},   {"roughness", shading.roughness},
+                    {"specular", shading.specular}, {"light_azimuth", light[0]},
+                    {"light_elevation", light[1]}, {"view_azimuth", view[0]},
+                    {"view_elevation", view[1]},   {"covariance", response.covariance ? 1 : 0}};
+    graph.nodes = {std::move(height), std::move(albedo), std::move(lean)};
+    graph.output = "normal_map";
+    return graph;
+}
+
 // A plain pattern file {noise_x, noise_y, colormap} as the graph it is: its
 // two noises as source nodes, seeded as the file says (noiseSeed), and a
 // colormap node reading them. Its leaves are tiled with the offset seeds of
 // the file's noises 1 and 2 (as every graph's leaves), so the program gives
-// the plain pattern's values.
-TextureGraph plainPatternGraph(const PatternSpec& spec) {
+// the plain pattern's values. Under the lean response: its normal map's graph.
+TextureGraph plainPatternGraph(const PatternSpec& spec, const ResponseOptions& response) {
+    if (response.kind == ResponseKind::Lean) return plainNormalMapGraph(spec, response);
     TextureGraph graph;
     const char* ids[2] = {"noise_x", "noise_y"};
     for (int axis = 0; axis < 2; ++axis) {
@@ -61,8 +104,12 @@ TextureGraph plainPatternGraph(const PatternSpec& spec) {
 
 }  // namespace
 
-GraphPattern GraphPattern::build(const PatternSpec& spec) {
-    const TextureGraph plain = spec.graph ? TextureGraph{} : plainPatternGraph(spec);
+GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions& response) {
+    if (spec.graph && response.kind != ResponseKind::PrefilteredColormap)
+        throw InputError::parameter("response", "a texture graph shades through its own nodes (a lean node for a "
+                                                "normal map); the " + enumName(kResponseKindNames, response.kind) +
+                                                    " response shades a plain pattern's normal map");
+    const TextureGraph plain = spec.graph ? TextureGraph{} : plainPatternGraph(spec, response);
     const TextureGraph& graph = spec.graph ? *spec.graph : plain;
     const std::string& context = spec.name;
     // Which nodes are linear in the sources (fold into an example).
@@ -99,6 +146,10 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
                 p.leafIds_.push_back(from);
         }
     }
+    if (p.leafIds_.empty() && std::none_of(ops.begin(), ops.end(), [](const GraphNode* g) { return g->info->op == opIndex<LeanOp>(); }))
+        throw InputError(context + ": the output \"" + graph.output +
+                         "\" reads no field, so it is one colour everywhere; a texture graph needs a noise (a "
+                         "spectral_noise, exemplar or tiled_field node) under its output");
     // Each lean node reads its height's slopes: a pair of leaves after the
     // others ("ID.slope_u", "ID.slope_v"), on the height's tiles.
     const size_t fieldLeaves = p.leafIds_.size();
@@ -125,14 +176,16 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
     // when offsets are shared.
     const std::vector<NoiseExample> fields = buildGraphFields(graph, fieldIds, spec.seed, context);
     // A plain pattern's two noises are one vector field N on one set of tiles (paper eq. 7).
-    if (!spec.graph && fields[0].size() != fields[1].size())
+    if (!spec.graph && response.kind != ResponseKind::Lean && fields[0].size() != fields[1].size())
         throw InputError(context + ": noise_x is " + std::to_string(fields[0].size()) + " texels wide but noise_y is " +
                          std::to_string(fields[1].size()) + "; both examples must have the same size");
     const bool shared = spec.offsets == OffsetMode::Shared;
     std::map<std::string, uint32_t> groupSeed;
     const auto seedOf = [&](const std::string& fieldId, size_t leaf) {
         const std::string group = graphTileGroup(graph, fieldId);
-        return groupSeed.emplace(group, deriveSeed(spec.seed, shared ? 1u : uint32_t(leaf + 1))).first->second;
+        const std::optional<uint32_t> fixed = graph.node(group).tileSeed;
+        return groupSeed.emplace(group, fixed ? *fixed : deriveSeed(spec.seed, shared ? 1u : uint32_t(leaf + 1)))
+            .first->second;
     };
     std::vector<NoiseExample> examples;
     std::vector<TilingBlendingNoise> noises;
@@ -229,6 +282,11 @@ GraphPattern GraphPattern::build(const PatternSpec& spec) {
         p.operations_.push_back(std::move(op));
     }
     return p;
+}
+
+bool GraphPattern::shadesLight() const {
+    return std::any_of(operations_.begin(), operations_.end(),
+                       [](const Operation& op) { return std::holds_alternative<LeanOp::Params>(op.params); });
 }
 
 const ColormapTable* GraphPattern::plainColormap() const {
@@ -366,10 +424,6 @@ Image GraphPattern::renderNode(const View& view, const std::string& id) const {
 FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments)
     : graph_(graph), options_(options), moments_(moments) {
     validateFilterOptions(options);
-    if (options.response.kind != ResponseKind::PrefilteredColormap)
-        throw InputError::parameter("response", "a texture graph is filtered through its prefiltered tables; the " +
-                                                    enumName(kResponseKindNames, options.response.kind) +
-                                                    " response needs a pattern's normal map");
     for (const TiledField& pair : graph.leafPairs())
         if (!isPowerOfTwo(pair.exampleSize()))
             throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
@@ -391,10 +445,15 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         return convolveColormapNumerically(graph.tables().front().blended, exact[0][0], exact[1][0],
                                            std::sqrt(exact[0][1]), std::sqrt(exact[1][1]));
     };
+    const bool readsTables = std::any_of(graph.operations().begin(), graph.operations().end(),
+                                         [](const GraphPattern::Operation& op) { return op.table >= 0; });
     if (options.source == StatisticsSource::Point) {  // nothing to prefilter
+        // Without tables the filtered program costs nothing to run on the
+        // whole examples' moments (a lean program: the lean response's sky);
+        // with them, only the means are at hand.
         std::vector<float> means;
         for (const auto& m : whole) means.push_back(graph.leaf(int(means.size())).example().toOutput(m[0]));
-        sky_ = plain_ ? plainSky() : graph.fromLeafValues(means);
+        sky_ = plain_ ? plainSky() : readsTables ? graph.fromLeafValues(means) : fromMoments(whole, wholeCov);
         return;
     }
     for (const GraphPattern::Operation& op : graph.operations()) {
@@ -439,7 +498,8 @@ Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
         ctx.prefilteredTable = op.table >= 0 && size_t(op.table) < tables_.size() ? &tables_[size_t(op.table)] : nullptr;
         // The covariance of the pair of leaves the first input is in (a lean node's slopes).
         const int first = op.inputs[0];
-        const size_t pair = first < graph_.leafCount() ? size_t(graph_.leafLocation(first)[0]) : pairCovariances.size();
+        const size_t pair =
+            first >= 0 && first < graph_.leafCount() ? size_t(graph_.leafLocation(first)[0]) : pairCovariances.size();
         ctx.slopeCov = pair < pairCovariances.size() ? pairCovariances[pair] : 0.0f;
         slots[out] = opFiltered(op.params, input(slots, op, 0), input(slots, op, 1), input(slots, op, 2), ctx);
         // Only the tables make a field non-Gaussian; MeanOnly drops what they add.
@@ -544,8 +604,7 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
     // A zoom has one Jacobian for the whole image: its footprints are built
     // once and translated to each pixel (as FilteredPattern does).
     const bool oneFootprint = camera.kind == Camera::Kind::Zoom && options_.source == StatisticsSource::Estimators;
-    const bool shadesLight = std::any_of(graph_.operations().begin(), graph_.operations().end(),
-                                         [](const GraphPattern::Operation& op) { return std::holds_alternative<LeanOp::Params>(op.params); });
+    const bool shadesLight = graph_.shadesLight();
     std::vector<Footprint> shapes;
     if (oneFootprint) {
         double u = 0, v = 0;

@@ -58,11 +58,15 @@ public:
     static constexpr Direction kFromAbove{0.0f, 0.0f, 1.0f};
 
     // Any pattern file: a graph's, or a plain pattern's {noise_x, noise_y,
-    // colormap} as the program "two leaves → colormap" (its normal map is
-    // the lean response's, FilteredPattern). InputError naming the node for
-    // what only building shows (a linear node over a
-    // non-linear field, a Gaussianized exemplar read other than by a table).
-    static GraphPattern build(const PatternSpec& spec);
+    // colormap} as the program "two leaves → colormap", or under the lean
+    // response its normal map's "height's slopes, albedo → lean" (the
+    // response's covariance switch is the lean node's). The one place a
+    // response picks a program: InputError `response` for lean on a graph
+    // (its lean nodes shade it) or on a plain pattern without a normal map,
+    // InputError naming the node for what only building shows (a linear
+    // node over a non-linear field, a Gaussianized exemplar read other than
+    // by a table, an output that reads no field).
+    static GraphPattern build(const PatternSpec& spec, const ResponseOptions& response = {});
 
     // One operation of the per-pixel program: an op (ops/ops.h) on slots.
     // Slots 0..leafCount()−1 hold the leaves; operation k writes slot
@@ -103,6 +107,10 @@ public:
     // as the interpreter would (bit-identical; tested), at the plain
     // pattern's speed.
     const ColormapTable* plainColormap() const;
+    // Whether an op lights its colour (a lean op): it reads the eye and the
+    // light, so the renders pass each pixel's, and a scene draws its colour
+    // as it is.
+    bool shadesLight() const;
     double gridDensity() const { return pairs_.front().gridDensity(); }
 
     // S(uv): the leaves at uv (after T⁻¹ for Gaussianized exemplars) through the program.
@@ -138,15 +146,6 @@ private:
     std::vector<Table> tables_;
 };
 
-// Whether the file's program (GraphPattern) renders it under `response`:
-// every file, but for a plain pattern's normal map under the lean response,
-// which its program does not carry yet (Pattern, FilteredPattern and
-// GpuPattern render that). The one place the CPU renderer, the GPU view and
-// the ShaderToy host choose between them.
-inline bool programRenders(const PatternSpec& spec, ResponseKind response) {
-    return spec.graph || response != ResponseKind::Lean;
-}
-
 // How the moments of a non-linear node's output field are passed on.
 enum class GraphMoments {
     Matched,   // mean and variance (moment matching through the (g, g²) tables)
@@ -155,11 +154,10 @@ enum class GraphMoments {
 inline const EnumNames<GraphMoments> kGraphMomentsNames{{"matched", GraphMoments::Matched},
                                                         {"mean-only", GraphMoments::MeanOnly}};
 
-// A graph filtered through a camera. The options are FilteredPattern's:
+// A program filtered through a camera. The options are FilteredPattern's:
 // source point / estimators / exact / reference, the prefiltered tables'
 // mode, anisotropy, variance estimator, reference samples, 8-bit pyramids.
-// The response must be the prefiltered colormap (InputError `response`
-// otherwise: a graph has no normal map).
+// The response is the program's last op (GraphPattern::build chose it).
 class FilteredGraph final : public ViewRenderer {
 public:
     using Direction = GraphPattern::Direction;
@@ -167,8 +165,9 @@ public:
                   GraphMoments moments = GraphMoments::Matched);
 
     // The colour of sky pixels: the program on the whole examples' moments
-    // (for the point source, which prefilters nothing, on their means); a
-    // plain pattern's program: its average colour, as FilteredPattern's.
+    // (for the point source, which prefilters no table, on their means when
+    // an op reads a table); a plain pattern's program: its average colour,
+    // as FilteredPattern's.
     const Rgb& skyColour() const { return sky_; }
     // eye: the unit direction towards the eye (Camera::viewDirection), which a lean node reads.
     Rgb shade(bool onPlane, double u, double v, const Jacobian& j,

@@ -53,9 +53,13 @@ struct GraphNode {
     std::map<std::string, std::string> inputs;  // port → node id
     std::map<std::string, double> numbers;      // Number, Integer, Boolean (0/1) parameters, defaults filled
     std::optional<uint32_t> seed;               // the Seed parameter when given
+    // The offset seed of the node's tiles, where a plain pattern's file fixes
+    // it (its normal map's height); no file parameter. Unset: the leaf's.
+    std::optional<uint32_t> tileSeed;
     NoiseSpec noise;                            // sources: the example's description
     ColormapSpec colormap;                      // colormap and colormap_field nodes
     std::vector<std::array<double, 2>> curve;   // curve nodes: the points
+    Rgb colour{0.0f, 0.0f, 0.0f};               // colour nodes: the colour, linear light
     // Choice parameters: the index of the value in ParamInfo::choices (in numbers).
 };
 

@@ -12,6 +12,7 @@ const char* paramTypeName(ParamType t) {
         case ParamType::Components: return "components";
         case ParamType::Colormap: return "colormap";
         case ParamType::Curve: return "curve";
+        case ParamType::Colour: return "colour";
         case ParamType::Choice: break;
     }
     return "choice";

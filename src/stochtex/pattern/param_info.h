@@ -23,6 +23,7 @@ enum class ParamType {
     Components,  // spectrum components, as a pattern file's noise (docs/PATTERNS.md)
     Colormap,    // a COLORMAP object, as a pattern file's (docs/PATTERNS.md)
     Curve,       // [[x, y], ...]: at least 2 points, x strictly increasing in [0, 1]
+    Colour,      // "#rrggbb" or [r, g, b] in [0, 1], sRGB components (decoded to linear light)
     Choice,      // one of ParamInfo::choices (a string)
 };
 const char* paramTypeName(ParamType t);

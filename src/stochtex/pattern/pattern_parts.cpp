@@ -232,6 +232,12 @@ LeanShading validatedShading(LeanShading s) {
     return s;
 }
 
+Rgb parseLinearColour(const JsonReader& r) {
+    Rgb c = parseColour(r);
+    for (float& v : c) v = linearFromSrgb(v);
+    return c;
+}
+
 NormalMapSpec parseNormalMapSpec(const JsonReader& r, const fs::path& baseDir) {
     r.expectObject({"height", "amplitude", "roughness", "light", "view", "albedo", "specular"});
     NormalMapSpec spec;
@@ -248,10 +254,7 @@ NormalMapSpec parseNormalMapSpec(const JsonReader& r, const fs::path& baseDir) {
             auto& out = std::string(name) == "light" ? s.light : *s.view;
             for (size_t k = 0; k < 3; ++k) out[k] = d->at(k).number(-1e3, 1e3);
         }
-    if (r.has("albedo")) {
-        s.albedo = parseColour(r.at("albedo"));  // sRGB components, as every colour of a pattern file
-        for (float& c : s.albedo) c = linearFromSrgb(c);
-    }
+    if (r.has("albedo")) s.albedo = parseLinearColour(r.at("albedo"));
     r.check([&] { s = validatedShading(s); });
     return spec;
 }

@@ -26,6 +26,9 @@ SpectrumComponent parseSpectrumComponent(const JsonReader& r);
 // A path member, relative to baseDir unless absolute; fails if empty.
 std::filesystem::path resolveInputPath(const JsonReader& r, const std::filesystem::path& baseDir);
 ColormapSpec parseColormapSpec(const JsonReader& r, const std::filesystem::path& baseDir);
+// A colour of a pattern file ("#rrggbb" or [r, g, b] in [0, 1], sRGB
+// components) decoded to linear light.
+Rgb parseLinearColour(const JsonReader& r);
 NormalMapSpec parseNormalMapSpec(const JsonReader& r, const std::filesystem::path& baseDir);
 // InputError naming the parameter (roughness, amplitude, specular, light,
 // view) if the shading is unusable; directions are normalised.

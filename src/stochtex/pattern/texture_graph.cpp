@@ -93,6 +93,10 @@ GraphNode parseNode(const JsonReader& n, const std::string& id, const std::files
             }
             case ParamType::Colormap: g.colormap = parseColormapSpec(n.at(p.name), baseDir); break;
             case ParamType::Curve: g.curve = parseCurve(n.at(p.name)); break;
+            case ParamType::Colour:
+                g.colour = n.has(p.name) ? parseLinearColour(n.at(p.name))
+                                         : parseLinearColour(JsonReader(p.fallback, "the default of " + p.name));
+                break;
             case ParamType::Choice: {
                 const std::string value = n.has(p.name) ? n.at(p.name).string() : p.fallback.get<std::string>();
                 const auto it = std::find(p.choices.begin(), p.choices.end(), value);

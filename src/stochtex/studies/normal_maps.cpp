@@ -7,6 +7,7 @@
 #include "stochtex/analysis/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
+#include "stochtex/pattern/cpu_renderer.h"
 #include "stochtex/studies/paper.h"
 
 namespace stochtex {
@@ -60,7 +61,6 @@ double meanOf(const Image& img) {
 
 Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
     validateFigure12(o);
-    const Pattern pattern = Pattern::build(o.pattern);
     Camera cam;
     cam.kind = Camera::Kind::Plane;
     cam.view = View{o.width, o.height, o.scale};
@@ -79,7 +79,8 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
         // The supersampled reference takes nearly all the time.
         const double from = k == 0 ? 0.0 : 0.85 + 0.05 * (k - 1), to = k == 0 ? 0.85 : from + 0.05;
         const FilterOptions fo = leanVariantOptions(order[k], o.aniso, o.referenceSamples);
-        views[k] = FilteredPattern(pattern, fo).render(cam, progressPart(progress, from, to, enumName(kLeanVariantNames, order[k])));
+        // The file's lean program (GraphPattern::build), as `render` draws it.
+        views[k] = makeCpuRenderer(o.pattern, fo)->render(cam, progressPart(progress, from, to, enumName(kLeanVariantNames, order[k])));
     }
     Figure12Result res;
     res.table.columns = {{"variant", "variant", ""},

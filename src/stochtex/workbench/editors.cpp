@@ -110,9 +110,11 @@ public:
         }
         tooltip(help);
     }
-    void colour(const char* key, const char* label) {
+    // fallback: what an absent colour is (null: black).
+    void colour(const char* key, const char* label, const json& fallback = nullptr) {
         float rgb[3] = {0, 0, 0};
         if (object_.is_object() && object_.contains(key)) colourCodes(object_[key], rgb);
+        else if (!fallback.is_null()) colourCodes(fallback, rgb);
         if (ImGui::ColorEdit3(label, rgb, ImGuiColorEditFlags_NoInputs)) edit(key, json(colourHex(rgb)));
     }
     // An [x, y] point of a painted colormap.
@@ -335,6 +337,7 @@ void nodeEditor(const json& graph, const std::string& id, const json& node, cons
                          help);
                 break;
             case ParamType::Path: f.text(p.name.c_str(), p.name.c_str()); break;
+            case ParamType::Colour: f.colour(p.name.c_str(), p.name.c_str(), fallback); break;
             case ParamType::Components:
                 expand(previews);
                 if (ImGui::TreeNode(p.name.c_str()))

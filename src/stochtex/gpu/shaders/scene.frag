@@ -1,8 +1,8 @@
 // The pattern on a lit object (paper Fig. 15): the mesh's uv scaled by
 // uTiling (example periods across the uv square), filtered with the
 // footprint of the rasterizer's derivatives, under one directional light.
-// With the lean response the pattern's normal map is shaded instead (paper
-// §6.5), lit by the same light.
+// A program that lights its own colour (a lean op: the lean response of a
+// normal map, paper §6.5) is drawn as it is, lit by the same light.
 in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vUv;
@@ -12,7 +12,7 @@ uniform vec3 uLight;  // direction towards the light, normalised
 uniform vec3 uEye;
 layout(location = 0) out vec4 fragColour;
 
-uniform bool uLean;  // the response shades the pattern's normal map: it is the whole colour
+uniform bool uLean;  // the program lights its own colour (GpuView::shadesLight): it is the whole colour
 
 // Light and eye in the surface's tangent frame for the lean response: T
 // along ∂p/∂u (from the screen derivatives of position and uv), the normal

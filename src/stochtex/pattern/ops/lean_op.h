@@ -36,20 +36,43 @@ struct LeanOp {
               "Direction towards the light, degrees from +u towards +v (a scene's own light replaces it)", -90, -360,
               360},
              {"light_elevation", ParamType::Number, "Elevation of the light above the plane, degrees", 53.13, 1, 90},
+             {"view_azimuth", ParamType::Number, "A fixed direction towards the viewer, degrees from +u towards +v",
+              -90, -360, 360},
+             {"view_elevation", ParamType::Number,
+              "Its elevation above the plane, degrees; 0: no fixed view, the camera's eye (a lobe seen from where "
+              "each pixel is seen)",
+              0, 0, 90},
              {"covariance", ParamType::Boolean, "Read the slopes' covariance (false: the variant without it, ĉov := 0)",
               true}}};
     }
+    // A unit direction from degrees (azimuth from +u towards +v, elevation above the plane).
+    static std::array<double, 3> direction(double azimuthDegrees, double elevationDegrees) {
+        const double azimuth = azimuthDegrees * std::numbers::pi / 180;
+        const double elevation = elevationDegrees * std::numbers::pi / 180;
+        std::array<double, 3> d{std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                                std::sin(elevation)};
+        for (double& c : d)
+            if (std::abs(c) < 1e-12) c = 0;  // cos(90°) is 6e-17 in double: rounding, not a direction
+        return d;
+    }
     static Params bind(OpBuild& b) {
         LeanShading shading;
-        const double azimuth = b.node.numbers.at("light_azimuth") * std::numbers::pi / 180;
-        const double elevation = b.node.numbers.at("light_elevation") * std::numbers::pi / 180;
-        shading.light = {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
-                         std::sin(elevation)};
+        shading.light = direction(b.node.numbers.at("light_azimuth"), b.node.numbers.at("light_elevation"));
+        if (b.node.numbers.at("view_elevation") != 0)
+            shading.view = direction(b.node.numbers.at("view_azimuth"), b.node.numbers.at("view_elevation"));
         shading.roughness = b.node.numbers.at("roughness");
         shading.specular = b.node.numbers.at("specular");
         shading = validatedShading(shading);
-        return {float(shading.roughness), float(shading.specular), float(shading.light[0]),
-                float(shading.light[1]),  float(shading.light[2]), b.number("covariance")};
+        const std::array<double, 3> view = shading.view.value_or(std::array<double, 3>{0, 0, 0});
+        return {float(shading.roughness),
+                float(shading.specular),
+                float(shading.light[0]),
+                float(shading.light[1]),
+                float(shading.light[2]),
+                b.number("covariance"),
+                float(view[0]),
+                float(view[1]),
+                float(view[2])};
     }
 };
 

@@ -17,6 +17,7 @@
 #include "stochtex/pattern/ops/affine_op.h"
 #include "stochtex/pattern/ops/colormap_field_op.h"
 #include "stochtex/pattern/ops/colormap_op.h"
+#include "stochtex/pattern/ops/colour_op.h"
 #include "stochtex/pattern/ops/compose_op.h"
 #include "stochtex/pattern/ops/curve_op.h"
 #include "stochtex/pattern/ops/lean_op.h"
@@ -36,7 +37,7 @@ struct OpTypes {
 };
 // The list, in the order `stochtex nodes` shows them after the sources and linear nodes.
 using OpList =
-    OpTypes<AffineOp, SumOp, ProductOp, SquareOp, ColormapOp, ColormapFieldOp, CurveOp, ThresholdOp, MixOp, ComposeOp,
+    OpTypes<AffineOp, SumOp, ProductOp, SquareOp, ColormapOp, ColormapFieldOp, CurveOp, ThresholdOp, ColourOp, MixOp, ComposeOp,
             LeanOp>;
 
 // One op's typed parameters; the alternative's index is the op (NodeInfo::op).
