@@ -139,7 +139,6 @@ BENCHMARK(BM_GpuProgramVsPattern)->ArgName("mode")->DenseRange(0, 3)->Unit(bench
 // covariance) beside its unfiltered shading (the base lobe at each pixel's
 // slope), fragment pipeline.
 void BM_GpuLeanThroughput(benchmark::State& state) {
-    const Pattern p = Pattern::build(loadPreset("lean-ridges"));
     const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
     if (!ctx) return;
     FilterOptions o;
@@ -147,7 +146,9 @@ void BM_GpuLeanThroughput(benchmark::State& state) {
     o.aniso = 8;
     FilterOptions u = o;
     u.source = StatisticsSource::Point;
-    GpuPattern filtered(p, *ctx, o), unfiltered(p, *ctx, u);
+    // The file's lean program, as `render --gpu --response lean` runs it.
+    const GraphPattern p = GraphPattern::build(loadPreset("lean-ridges"), o.response);
+    GpuGraph filtered(p, *ctx, o), unfiltered(p, *ctx, u);
     Camera c;
     c.kind = Camera::Kind::Plane;
     c.tiltDeg = 70;

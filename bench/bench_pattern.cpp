@@ -7,6 +7,7 @@
 #include "stochtex/core/parallel.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/presets.h"
 
@@ -111,14 +112,15 @@ BENCHMARK(BM_PlaneFiltered)->ArgName("K")->Arg(1)->Arg(8)->Unit(benchmark::kMill
 // slope), alternately in one run. Args: K, covariance (0: the variant
 // without it, which skips the covariance pyramid).
 void BM_LeanFilteredVsUnfiltered(benchmark::State& state) {
-    static const Pattern p = Pattern::build(loadPreset("lean-ridges"));
     FilterOptions o;
     o.response.kind = ResponseKind::Lean;
     o.response.covariance = state.range(1) != 0;
     o.aniso = int(state.range(0));
     FilterOptions u = o;
     u.source = StatisticsSource::Point;
-    const FilteredPattern filtered(p, o), unfiltered(p, u);
+    // The file's lean program (GraphPattern::build), as `render --response lean` runs it.
+    const GraphPattern p = GraphPattern::build(loadPreset("lean-ridges"), o.response);
+    const FilteredGraph filtered(p, o), unfiltered(p, u);
     Camera cam;
     cam.kind = Camera::Kind::Plane;
     cam.tiltDeg = 70;

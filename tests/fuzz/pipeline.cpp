@@ -46,6 +46,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         }
         if (!fuzz::readsOnlyFuzzImages(spec.colormap)) return;
         fuzz::shrink(spec.colormap);
+        if (spec.normalMap) {
+            if (!fuzz::readsOnlyFuzzImages(spec.normalMap->height)) return;
+            fuzz::shrink(spec.normalMap->height);
+        }
         if (spec.graph) {
             auto graph = std::make_shared<TextureGraph>(*spec.graph);
             for (GraphNode& n : graph->nodes) {
@@ -64,8 +68,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const GraphPattern program = GraphPattern::build(spec);  // every file's program
         (void)program.render(view);
         renderEveryFilter<FilteredGraph>(program, view);
+        if (spec.normalMap) {  // under the lean response: its normal map's program
+            const GraphPattern lean = GraphPattern::build(spec, {ResponseKind::Lean});
+            (void)lean.render(view);
+            renderEveryFilter<FilteredGraph>(lean, view);
+        }
         if (spec.graph) return;
-        const Pattern pattern = Pattern::build(spec);  // a plain pattern's own evaluator (the lean response's)
+        const Pattern pattern = Pattern::build(spec);  // the hand-written colormap evaluator
         (void)pattern.render(view);
         renderEveryFilter<FilteredPattern>(pattern, view);
     });

@@ -360,18 +360,20 @@ TEST(Export, LeanGraphExportsTheSlopesCovariance) {
     fs::remove_all(dir);
 }
 
-// The lean include compiles and links in an engine's own program with its
-// lighting entry point, stochtex_lean_lobe (built by the response chunk's
-// footprintLobe), beside stochtex_sample.
-TEST(Export, LeanIncludeLinksWithTheLobeFunction) {
+// A lean program's include compiles and links in an engine's own program
+// that lights it with its own light and eye (the globals its README names)
+// before stochtex_sample.
+TEST(Export, LeanProgramIncludeLinksLitByTheEnginesLight) {
     auto ctx = GlContext::headless();
     const GLuint vs = compile(GL_VERTEX_SHADER,
                               "#version 330 core\nout vec2 uv;\nvoid main() { uv = vec2(0.5); gl_Position = vec4(0.0); }\n");
-    const GLuint fs_ = compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + exportedShaderInclude(ResponseKind::Lean) +
+    const GraphPattern lean = GraphPattern::build(loadPreset("lean-ridges"), {ResponseKind::Lean});
+    ASSERT_TRUE(lean.shadesLight());
+    const GLuint fs_ = compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + exportedGraphInclude(lean) +
                                                        "in vec2 uv;\nout vec4 colour;\n"
-                                                       "void main() { LeanLobe l = stochtex_lean_lobe(uv);\n"
-                                                       "    colour = stochtex_sample(uv) + "
-                                                       "vec4(leanNdf(l, vec3(0.0, 0.0, 1.0))); }\n");
+                                                       "void main() { gLightDirection = vec4(0.6, 0.0, 0.8, 1.0);\n"
+                                                       "    gEyeDirection = vec3(0.0, 0.0, 1.0);\n"
+                                                       "    colour = stochtex_sample(uv); }\n");
     const GLuint prog = glCreateProgram();
     glAttachShader(prog, vs);
     glAttachShader(prog, fs_);

@@ -72,13 +72,13 @@ TEST(KernelPatternParams, CppOffsetsMatchTheStd140LayoutOfEveryProgram) {
         if (r.kind == ProgramRecipe::Kind::Include) continue;
         if (r.kind == ProgramRecipe::Kind::Compute && !context().hasCompute()) continue;
         // Programs without the pattern (the window's "display") declare no block.
-        const std::vector<std::string> chunks = shaderChunks(recipeFiles(r, ResponseKind::PrefilteredColormap));
+        const std::vector<std::string> chunks = shaderChunks(r.main);
         if (std::find(chunks.begin(), chunks.end(), "pattern_params") == chunks.end()) continue;
         // A texture graph's recipe reads a generated chunk: Figure 14's.
         std::vector<std::pair<std::string, std::string>> generated;
         if (r.name.starts_with("graph"))
             generated = {{kGraphProgramStem, graphProgramSource(GraphPattern::build(loadPreset("figure14")))}};
-        const gl::Program program = buildProgram(r.name, ResponseKind::PrefilteredColormap, generated);
+        const gl::Program program = buildProgram(r.name, generated);
         GLint dataSize = 0;
         const std::map<std::string, GlMember> members = blockMembers(program.id(), dataSize);
         EXPECT_EQ(size_t(dataSize), sizeof(kernel::PatternParams)) << r.name;

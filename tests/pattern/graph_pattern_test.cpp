@@ -305,51 +305,6 @@ TEST(GraphPattern, PlainPatternProgramRendersThePatternsImages) {
     EXPECT_GE(compared, 150);
 }
 
-// A plain pattern's normal map under the lean response is the program
-// "height's slopes, albedo → lean" (GraphPattern::build): the lean
-// response's images, for every filter, zoomed and on the plane, lit and
-// seen from the camera or from a fixed view, with the slopes' covariance and
-// without. The light and the view reach the lean node as degrees, and come
-// back as floats within an ulp (measured: bit-identical images and skies).
-TEST(GraphPattern, PlainNormalMapProgramRendersTheLeanResponsesImages) {
-    PatternSpec fixedView = loadPreset("lean-ridges");
-    fixedView.normalMap->shading.view = std::array<double, 3>{0.2, 0.4, 1.0};
-    double worst = 0;
-    int compared = 0;
-    for (const PatternSpec& spec : {loadPreset("lean-ridges"), fixedView}) {
-        const Pattern pattern = Pattern::build(spec);
-        for (const char* filter : {"none", "paper", "smooth", "exact", "reference"})
-            for (const bool covariance : {true, false}) {
-                FilterOptions o;
-                o.use(parseFilter(filter));
-                o.response.kind = ResponseKind::Lean;
-                o.response.covariance = covariance;
-                o.aniso = 4;
-                o.referenceMaxSamples = 6;
-                const GraphPattern program = GraphPattern::build(spec, o.response);
-                ASSERT_EQ(program.leafCount(), 2);
-                const FilteredPattern f(pattern, o);
-                const FilteredGraph g(program, o);
-                for (const bool plane : {false, true}) {
-                    Camera cam;
-                    cam.view = {20, 16, plane ? 0.6 : 5.0, 3.5, -7.25};
-                    if (plane) {
-                        cam.kind = Camera::Kind::Plane;
-                        cam.tiltDeg = 70;  // the horizon not in view: the sky is tested below
-                    }
-                    const Image a = f.render(cam), b = g.render(cam);
-                    const double d = test::maxAbsDifference(a, b);
-                    worst = std::max(worst, d);
-                    EXPECT_LE(d, 2e-6) << filter << (plane ? ", plane" : ", zoom") << (covariance ? "" : ", no covariance");
-                    ++compared;
-                }
-                for (int c = 0; c < 3; ++c) EXPECT_NEAR(f.skyColour()[size_t(c)], g.skyColour()[size_t(c)], 1e-5) << filter;
-            }
-    }
-    std::printf("[ info ] lean program vs lean response: max |difference| %.3g over %d images\n", worst, compared);
-    EXPECT_EQ(compared, 40);
-}
-
 // Each non-linear node on known inputs: the node's value against its
 // formula applied to the value of its input, pixel by pixel. The image
 // colormap holds R = x, G = y, B = 0.25 as data (a float EXR), so a channel

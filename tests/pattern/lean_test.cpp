@@ -1,6 +1,6 @@
 // LEAN-mapped procedural normal maps (paper §6.5): the slope pair of a height
-// example, the covariance estimator on it, the Beckmann lobe and the lean
-// response's zero-footprint limit.
+// example, the covariance estimator on it, the Beckmann lobe and a file's
+// lean program's zero-footprint and large-footprint limits.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +12,7 @@
 #include "stochtex/kernel/lean.h"
 #include "stochtex/noise/slopes.h"
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
 #include "test_util.h"
 
@@ -221,32 +222,35 @@ PatternSpec normalMapSpec(const nlohmann::json& normalMap) {
 }
 PatternSpec normalMapSpec(double roughness) { return normalMapSpec({{"roughness", roughness}}); }
 
+// A file's normal map under the lean response is its program
+// (GraphPattern::build(spec, response)), filtered as every program is.
+struct LeanRenderer {
+    explicit LeanRenderer(const PatternSpec& spec, bool covariance = true)
+        : program(GraphPattern::build(spec, {ResponseKind::Lean, PrefilterMode::Smooth, covariance})) {}
+    Image render(FilterOptions o, const Camera& cam) const {
+        o.response.kind = ResponseKind::Lean;
+        return FilteredGraph(program, o).render(cam);
+    }
+    GraphPattern program;
+};
+
 // With a zero footprint (every magnified pixel reads one level-0 texel,
 // whose variances and covariance are 0) the filtered shading is the
 // unfiltered shading with the base roughness, exactly; zoomed out, it is
-// not (the lobe widens).
-TEST(LeanResponse, ZeroFootprintIsTheUnfilteredShading) {
-    const Pattern p = Pattern::build(normalMapSpec(0.15));
-    ASSERT_NE(p.normalMap(), nullptr);
-    FilterOptions lean;
-    lean.response.kind = ResponseKind::Lean;
-    FilterOptions point = lean;
+// not.
+TEST(LeanProgram, ZeroFootprintIsTheUnfilteredShading) {
+    const LeanRenderer lean(normalMapSpec(0.15));
+    FilterOptions filtered, point;
     point.source = StatisticsSource::Point;
     Camera cam;
     cam.view = View{48, 40, 0.5, 3.0, 7.0};
-    const Image filtered = FilteredPattern(p, lean).render(cam), unfiltered = FilteredPattern(p, point).render(cam);
-    EXPECT_EQ(filtered.data(), unfiltered.data());
+    const Image near = lean.render(filtered, cam), nearPoint = lean.render(point, cam);
+    EXPECT_EQ(near.data(), nearPoint.data());
     double spread = 0;  // the image is not flat: the test compares shading, not a constant
-    for (size_t i = 3; i < filtered.data().size(); ++i) spread = std::max(spread, double(std::abs(filtered.data()[i] - filtered.data()[0])));
+    for (size_t i = 3; i < near.data().size(); ++i) spread = std::max(spread, double(std::abs(near.data()[i] - near.data()[0])));
     EXPECT_GT(spread, 0.05);
     cam.view.scale = 8;
-    const Image far = FilteredPattern(p, lean).render(cam), farPoint = FilteredPattern(p, point).render(cam);
-    EXPECT_NE(far.data(), farPoint.data());
-    // The response's own point shading is the base lobe around the slope.
-    const LeanResponse r(p.normalMap()->shading, true);
-    FootprintStats s;
-    s.mean = {0.1f, -0.05f};
-    EXPECT_EQ(r.point(0.1f, -0.05f), r.filtered(s));
+    EXPECT_NE(lean.render(filtered, cam).data(), lean.render(point, cam).data());
 }
 
 // Diffuse shading averaged over a large footprint: the reference is the
@@ -257,18 +261,17 @@ TEST(LeanResponse, ZeroFootprintIsTheUnfilteredShading) {
 // (kernel leanDiffuse) meets the supersampled reference within 0.006;
 // through the mean normal alone it stayed 0.04–0.05 too bright at every
 // footprint.
-TEST(LeanResponse, DiffuseConvergesToTheReferenceAtLargeFootprints) {
-    const Pattern p = Pattern::build(
+TEST(LeanProgram, DiffuseConvergesToTheReferenceAtLargeFootprints) {
+    const LeanRenderer lean(
         normalMapSpec(nlohmann::json::parse(R"({"amplitude": 0.3, "albedo": [1, 1, 1], "specular": 0})")));
     FilterOptions exact, reference;
     exact.source = StatisticsSource::Exact;
     reference.source = StatisticsSource::Reference;
-    exact.response.kind = reference.response.kind = ResponseKind::Lean;
     exact.referenceMaxSamples = reference.referenceMaxSamples = 64;
     for (const double scale : {8.0, 32.0}) {
         Camera cam;
         cam.view = View{16, 16, scale, 0.0, 0.0};
-        const Image a = FilteredPattern(p, exact).render(cam), b = FilteredPattern(p, reference).render(cam);
+        const Image a = lean.render(exact, cam), b = lean.render(reference, cam);
         double bias = 0;
         for (size_t i = 0; i < a.data().size(); ++i) bias += double(a.data()[i]) - double(b.data()[i]);
         bias /= double(a.data().size());
@@ -281,21 +284,23 @@ TEST(LeanResponse, DiffuseConvergesToTheReferenceAtLargeFootprints) {
     }
 }
 
-TEST(LeanResponse, NeedsANormalMapAndAValidRoughness) {
+// The lean response needs a normal map and a valid shading; it is a file's
+// program, not the colormap's evaluator's; the slopes' covariance pyramid
+// is built only when the lean node reads it.
+TEST(LeanProgram, NeedsANormalMapAndAValidRoughness) {
     const std::string message = test::inputErrorOf([] { normalMapSpec(-0.1); }).what();
     EXPECT_NE(message.find("/normal_map/roughness: roughness must be in [0.001, 10], got -0.1"), std::string::npos)
         << message;
     PatternSpec colourOnly = normalMapSpec(0.1);
     colourOnly.normalMap.reset();
-    const Pattern p = Pattern::build(colourOnly);
+    EXPECT_EQ(test::inputErrorOf([&] { LeanRenderer{colourOnly}; }).parameter(), "response");
     FilterOptions lean;
     lean.response.kind = ResponseKind::Lean;
-    EXPECT_EQ(test::inputErrorOf([&] { FilteredPattern(p, lean); }).parameter(), "response");
-    // Without the covariance the response does not read it, so no pyramid is built.
-    const Pattern bumps = Pattern::build(normalMapSpec(0.1));
-    EXPECT_NE(FilteredPattern(bumps, lean).estimator().covariancePyramid(), nullptr);
-    lean.response.covariance = false;
-    EXPECT_EQ(FilteredPattern(bumps, lean).estimator().covariancePyramid(), nullptr);
+    const Pattern colours = Pattern::build(normalMapSpec(0.1));
+    EXPECT_EQ(test::inputErrorOf([&] { FilteredPattern(colours, lean); }).parameter(), "response");
+    const LeanRenderer withCovariance(normalMapSpec(0.1)), without(normalMapSpec(0.1), false);
+    EXPECT_NE(FilteredGraph(withCovariance.program, lean).estimator(0).covariancePyramid(), nullptr);
+    EXPECT_EQ(FilteredGraph(without.program, lean).estimator(0).covariancePyramid(), nullptr);
 }
 
 }  // namespace

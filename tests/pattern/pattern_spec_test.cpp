@@ -157,7 +157,7 @@ TEST(Presets, RequiredPresetsExistAndBuild) {
         const PatternSpec s = loadPreset(n);
         EXPECT_EQ(s.name, n);
         EXPECT_EQ(GraphPattern::build(s).exampleSize(), 256) << n;
-        if (!s.graph) EXPECT_EQ(Pattern::build(s).exampleSize(), 256) << n;  // the lean response's evaluator
+        if (!s.graph) EXPECT_EQ(Pattern::build(s).exampleSize(), 256) << n;  // the hand-written colormap evaluator
     }
 }
 

@@ -38,29 +38,10 @@ const char* kSampleFunction =
 
 }  // namespace
 
-std::string exportedShaderInclude(ResponseKind response) {
-    const bool lean = response == ResponseKind::Lean;
-    std::string text = kIncludeHeader;
-    if (lean)
-        text +=
-            "// This pattern is a LEAN-mapped normal map (paper §6.5): stochtex_sample is its\n"
-            "// shading under the uLean* uniforms (README.md). To light it yourself, take the\n"
-            "// footprint's slope lobe, LeanLobe stochtex_lean_lobe(vec2 uv), and shade with\n"
-            "// leanShade(lobe, light, view, albedo, specular) or your own BRDF over leanNdf(lobe, h);\n"
-            "// directions in the texture frame (x along u, y along v, z up).\n";
-    text += "\n";
-    for (const auto& stem : shaderChunks(recipeFiles(programRecipe("export-include"), response)))
-        text += shaderText(stem) + "\n";
-    text += kSampleFunction;
-    if (lean)
-        text +=
-            "// The filtered slopes of the footprint of uv as a Beckmann lobe (mean slope and\n"
-            "// covariance, the base roughness uLeanRoughness included).\n"
-            "LeanLobe stochtex_lean_lobe(vec2 uv) {\n"
-            "    FootprintMoments m = footprintStatistics(uv, dFdx(uv), dFdy(uv));\n"
-            "    return footprintLobe(m.mean, m.var, m.cov);\n"
-            "}\n";
-    return text;
+std::string exportedShaderInclude() {
+    std::string text = std::string(kIncludeHeader) + "\n";
+    for (const auto& stem : shaderChunks(programRecipe("export-include").main)) text += shaderText(stem) + "\n";
+    return text + kSampleFunction;
 }
 
 std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments, const LevelAverages& levelAverages) {
@@ -71,7 +52,7 @@ std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments
                        "// gridDensity, invExampleSize, maxLod, aniso, smoothTable and tableLevels.\n\n";
     const std::vector<std::pair<std::string, std::string>> program = {{kGraphProgramStem, graphProgramSource(graph, moments, levelAverages)}};
     for (const auto& stem :
-         shaderChunks(recipeFiles(programRecipe("export-graph-include"), ResponseKind::PrefilteredColormap), program))
+         shaderChunks(programRecipe("export-graph-include").main, program))
         text += (stem == kGraphProgramStem ? generatedShaderText(program[0].second) : shaderText(stem)) + "\n";
     return text + kSampleFunction;
 }
@@ -192,32 +173,6 @@ std::string textureRow(const nlohmann::json& t) {
            std::to_string(t["height"].get<int>()) + " | layer k = rows `[k·height, (k+1)·height)` of `" +
            t["file"].get<std::string>() + "`; texture row j = that layer's row j |\n";
 }
-const char* kLeanSection = R"(## LEAN shading (normal map)
-
-This export is a procedural normal map (`"response": "lean"`): the pyramids
-hold the statistics of its two slopes ∂z/∂x, ∂z/∂y (tiled with one set of
-offsets, so their covariance is exported too), and there is no table.
-`stochtex_sample` returns the shaded radiance: an anisotropic Beckmann lobe
-of the footprint's mean slope and slope covariance plus the base roughness
-(LEAN mapping, Olano & Baker 2010), lit by a directional light of unit
-irradiance. Set these uniforms from `manifest.json`'s `lean` (directions in
-the texture frame: x along u, y along v, z up; unit length):
-
-| uniform | type | from `manifest.json` |
-| --- | --- | --- |
-| `uLeanLight` | `vec3` | `lean.light`: towards the light |
-| `uLeanView` | `vec4` | `lean.view`: xyz towards the eye, w = 1; w = 0 means straight down (set xyz to your eye direction per fragment and w = 1 for a perspective view) |
-| `uLeanAlbedo` | `vec3` | `lean.albedo`: diffuse reflectance, linear |
-| `uLeanRoughness` | `float` | `lean.roughness`: base Beckmann roughness m |
-| `uLeanSpecular` | `float` | `lean.specular`: weight of the lobe's reflection |
-| `uLeanCovariance` | `bool` | `lean.covariance`: read the slopes' covariance |
-
-To light it with your own lights and BRDF, call `LeanLobe stochtex_lean_lobe(vec2 uv)`
-(mean slope `mean`, covariance `sigma` = (Σxx, Σyy, Σxy)) and evaluate
-`leanNdf(lobe, h)` for a unit half vector h, or `leanShade(lobe, light, view, albedo, specular)`.
-
-)";
-
 const char* kProgramLightSection = R"(## Lighting (lean nodes)
 
 The program lights its own colour: a `lean` node (a pattern file's normal
@@ -337,16 +292,6 @@ void writeDescription(const std::string& dir, nlohmann::json& m, const std::stri
     writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], shading, include));
 }
 
-// The lean response's shading: what the uLean* uniforms hold.
-nlohmann::json leanManifest(const LeanShading& l, bool covariance) {
-    const std::array<double, 3> view = l.view.value_or(std::array<double, 3>{0, 0, 1});
-    return {{"light", l.light},
-            {"view", {view[0], view[1], view[2], l.view ? 1.0 : 0.0}},
-            {"albedo", {l.albedo[0], l.albedo[1], l.albedo[2]}},
-            {"roughness", l.roughness},
-            {"specular", l.specular},
-            {"covariance", covariance}};
-}
 
 }  // namespace
 
@@ -358,8 +303,7 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
     const FilteredPattern f(pattern, options);  // validates the options
     makeFolder(dir);
     const FootprintEstimator& est = f.estimator();
-    const TiledField& field = f.field();  // the colour noises, or the normal map's slopes
-    const bool lean = options.response.kind == ResponseKind::Lean;
+    const TiledField& field = f.field();
     nlohmann::json m;
     m["version"] = 1;
     m["filter"] = filterName(options);
@@ -396,14 +340,10 @@ void exportPattern(const Pattern& pattern, const FilterOptions& options, const s
         unread["read"] = false;
         textures.push_back(unread);
     }
-    if (lean) {
-        m["lean"] = leanManifest(pattern.normalMap()->shading, options.response.covariance);
-    } else {
-        const ColormapTable& h = f.blendingSpaceColormap();
-        m["table"] = writeTable(f.table(), h.resolutionX(), h.resolutionY(), "table.exr", "uTable",
-                                "the prefiltered table H̄", dir, exportOptions, textures, files);
-    }
-    writeDescription(dir, m, exportedShaderInclude(options.response.kind), files, lean ? kLeanSection : "");
+    const ColormapTable& h = f.blendingSpaceColormap();
+    m["table"] = writeTable(f.table(), h.resolutionX(), h.resolutionY(), "table.exr", "uTable", "the prefiltered table H̄",
+                            dir, exportOptions, textures, files);
+    writeDescription(dir, m, exportedShaderInclude(), files, "");
 }
 
 void exportGraph(const GraphPattern& graph, const FilterOptions& options, const std::string& dir,

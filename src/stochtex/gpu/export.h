@@ -31,12 +31,14 @@ struct ExportOptions {
     bool halfTable = true;
 };
 
+// The hand-written pattern shaders' export of a pattern's colours (the
+// colormap response; a file's normal map is its program's: exportGraph).
 // options.source: Estimators (InputError naming `source` otherwise). The folder is created if missing.
 void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
                    const ExportOptions& exportOptions = {});
 
-// The include's text (what stochtex.glsl holds) with the response's chunk.
-std::string exportedShaderInclude(ResponseKind response = ResponseKind::PrefilteredColormap);
+// The include's text (what exportPattern's stochtex.glsl holds).
+std::string exportedShaderInclude();
 
 // A texture graph that is not a pattern H∘N (graph_pattern.h), filtered by
 // moment matching: stats_K_L.exr per leaf K (R = E_L, G = V_L),

@@ -227,7 +227,7 @@ GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& op
                               const FilteredGraph& filtered) {
     const bool estimators = options.source == StatisticsSource::Estimators;
     return {estimators ? "graph-filtered" : "graph", estimators ? "graph-filtered-compute" : "graph-compute",
-            "graph-scene", ResponseKind::PrefilteredColormap,
+            "graph-scene",
             {{kGraphProgramStem, graphProgramSource(graph, moments, graphLevelAverages(filtered, options))}},
             graph.shadesLight()};
 }

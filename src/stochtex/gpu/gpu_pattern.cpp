@@ -23,7 +23,7 @@ GpuView::Recipes patternRecipes(const FilterOptions& options) {
                                                   enumName(kStatisticsSourceNames, options.source));
     const bool filtered = options.source == StatisticsSource::Estimators;
     return {filtered ? "filtered" : "unfiltered", filtered ? "filtered-compute" : "unfiltered-compute", "scene",
-            options.response.kind, {}, options.response.kind == ResponseKind::Lean};
+            {}};
 }
 
 }  // namespace
@@ -36,7 +36,6 @@ struct GpuPattern::Impl {
     FilterOptions options;
     gl::Texture stats[2], covariance, table;
     bool shared = false;
-    std::optional<LeanShading> lean;  // the lean response's shading
 };
 
 GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterOptions& options)
@@ -44,11 +43,11 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
     Impl& m = *impl_;
     m.options = options;
     const bool filtered = options.source == StatisticsSource::Estimators;
-    const FilteredPattern f(pattern, options);  // pyramids, T⁻¹ folded into H, the table, the sky
+    // Pyramids, T⁻¹ folded into H, the table, the sky; refuses the lean
+    // response (a file's normal map is its program's: makeGpuView).
+    const FilteredPattern f(pattern, options);
     m.sky = f.skyColour();
-    // The field the response reads: the colour noises, or the normal map's slopes.
     const TiledField& field = f.field();
-    if (options.response.kind == ResponseKind::Lean) m.lean = pattern.normalMap()->shading;
     kernel::PatternParams p{};
     if (filtered) {
         const FootprintEstimator& est = f.estimator();
@@ -60,13 +59,10 @@ GpuPattern::GpuPattern(const Pattern& pattern, GlContext& context, const FilterO
         // whose response reads the covariance (FilteredPattern).
         m.shared = f.response().needsCovariance() && est.covariancePyramid() != nullptr;
         if (m.shared) m.covariance = pyramidTexture(*est.covariancePyramid());
-        // Only the prefiltered colormap has a table (uTable stays a 1×1 layer otherwise).
         const ColormapTable& h = f.blendingSpaceColormap();
-        const int levels = m.lean ? 1 : int(f.table().sigmas().size());
-        const float none[3] = {0.0f, 0.0f, 0.0f};
-        m.table = m.lean ? tableTexture(1, 1, 1, none)
-                         : tableTexture(h.resolutionX(), h.resolutionY(), levels * levels,
-                                        f.table().atlas(h.resolutionX(), h.resolutionY()).data().data());
+        const int levels = int(f.table().sigmas().size());
+        m.table = tableTexture(h.resolutionX(), h.resolutionY(), levels * levels,
+                               f.table().atlas(h.resolutionX(), h.resolutionY()).data().data());
         p.hasCovariance = m.shared;
         p.deliotHeitz = options.estimator == VarianceEstimator::DeliotHeitz;
         p.maxLod = est.maxLod();
@@ -131,17 +127,6 @@ void GpuPattern::bind(unsigned program) const {
     if (block != GL_INVALID_INDEX) glUniformBlockBinding(program, block, kPatternBlockBinding);
     glBindBufferBase(GL_UNIFORM_BUFFER, kPatternBlockBinding, m.parameters.id());
     glUniform3f(glGetUniformLocation(program, "uSky"), m.sky[0], m.sky[1], m.sky[2]);
-    if (m.lean) {
-        const LeanShading& l = *m.lean;
-        glUniform3f(glGetUniformLocation(program, "uLeanLight"), float(l.light[0]), float(l.light[1]), float(l.light[2]));
-        const std::array<double, 3> view = l.view.value_or(std::array<double, 3>{0, 0, 1});
-        glUniform4f(glGetUniformLocation(program, "uLeanView"), float(view[0]), float(view[1]), float(view[2]),
-                    l.view ? 1.0f : 0.0f);
-        glUniform3f(glGetUniformLocation(program, "uLeanAlbedo"), l.albedo[0], l.albedo[1], l.albedo[2]);
-        glUniform1f(glGetUniformLocation(program, "uLeanRoughness"), float(l.roughness));
-        glUniform1f(glGetUniformLocation(program, "uLeanSpecular"), float(l.specular));
-        glUniform1i(glGetUniformLocation(program, "uLeanCovariance"), m.options.response.covariance ? 1 : 0);
-    }
 }
 
 }  // namespace stochtex

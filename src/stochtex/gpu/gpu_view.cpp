@@ -25,13 +25,13 @@ GpuView::GpuView(GlContext& context, Recipes recipes, int exampleSize)
     : recipes_(std::move(recipes)), exampleSize_(exampleSize), device_(context.describe()) {
     context.makeCurrent();
     hasCompute_ = context.hasCompute();
-    program_ = buildProgram(recipes_.fragment, recipes_.response, recipes_.generated);
+    program_ = buildProgram(recipes_.fragment, recipes_.generated);
     vao_ = gl::newVertexArray();
 }
 
 GpuView::~GpuView() = default;
 
-gl::Program GpuView::sceneProgram() const { return buildProgram(recipes_.scene, recipes_.response, recipes_.generated); }
+gl::Program GpuView::sceneProgram() const { return buildProgram(recipes_.scene, recipes_.generated); }
 
 void GpuView::setDerivatives(Derivatives d) {
     if (d == Derivatives::Rasterizer && pipeline_ == Pipeline::Compute) throw rasterizerNeedsFragments();
@@ -42,7 +42,7 @@ void GpuView::setPipeline(Pipeline p) {
     if (p == Pipeline::Compute) {
         if (!hasCompute_) throw GpuUnavailable("the compute pipeline needs OpenGL 4.3 (compute shaders)");
         if (derivatives_ == Derivatives::Rasterizer) throw rasterizerNeedsFragments();
-        if (!kernelProgram_) kernelProgram_ = buildProgram(recipes_.compute, recipes_.response, recipes_.generated);
+        if (!kernelProgram_) kernelProgram_ = buildProgram(recipes_.compute, recipes_.generated);
     }
     pipeline_ = p;
 }

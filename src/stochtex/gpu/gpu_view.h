@@ -22,10 +22,9 @@ namespace stochtex {
 class GpuView : public ViewRenderer {
 public:
     // The recipes of the fragment and the compute program (built on first
-    // use) with the response's chunk and the generated chunks by stem.
+    // use) and the generated chunks by stem.
     struct Recipes {
         std::string fragment, compute, scene;
-        ResponseKind response = ResponseKind::PrefilteredColormap;
         std::vector<std::pair<std::string, std::string>> generated;
         bool shadesLight = false;  // shadesLight()
     };

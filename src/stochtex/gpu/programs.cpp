@@ -7,20 +7,11 @@
 
 namespace stochtex {
 
-const std::string& responseChunk(ResponseKind kind) {
-    static const std::string prefilteredColormap = "response_prefiltered_colormap", lean = "response_lean";
-    switch (kind) {
-        case ResponseKind::PrefilteredColormap: return prefilteredColormap;
-        case ResponseKind::Lean: return lean;
-    }
-    throw std::invalid_argument("responseChunk: no shader chunk for response kind " + std::to_string(int(kind)));
-}
-
 const std::vector<ProgramRecipe>& programRecipes() {
     using K = ProgramRecipe::Kind;
-    const std::string& R = kResponseSlot;
     // A graph's tables are prefiltered colormaps: their lookup is that response's chunk.
-    const std::string& G = responseChunk(ResponseKind::PrefilteredColormap);
+    const std::string& R = kColormapResponseChunk;
+    const std::string& G = kColormapResponseChunk;
     static const std::vector<ProgramRecipe> recipes = {
         {"unfiltered", K::Graphics, {"fullscreen"}, {"common", "unfiltered", R, "view", "pattern"}},
         {"filtered", K::Graphics, {"fullscreen"}, {"common", "pattern_filtering", R, "view", "filtered"}},
@@ -44,26 +35,18 @@ const std::vector<ProgramRecipe>& programRecipes() {
     return recipes;
 }
 
-std::vector<std::string> recipeFiles(const ProgramRecipe& recipe, ResponseKind response) {
-    std::vector<std::string> files = recipe.main;
-    for (auto& f : files)
-        if (f == kResponseSlot) f = responseChunk(response);
-    return files;
-}
-
 const ProgramRecipe& programRecipe(const std::string& name) {
     for (const auto& r : programRecipes())
         if (r.name == name) return r;
     throw std::invalid_argument("no program recipe \"" + name + "\"");
 }
 
-gl::Program buildProgram(const std::string& name, ResponseKind response,
-                         const std::vector<std::pair<std::string, std::string>>& generated) {
+gl::Program buildProgram(const std::string& name, const std::vector<std::pair<std::string, std::string>>& generated) {
     const ProgramRecipe& r = programRecipe(name);
     switch (r.kind) {
         case ProgramRecipe::Kind::Graphics:
-            return gl::Program(compileProgram(r.vertex, recipeFiles(r, response), generated));
-        case ProgramRecipe::Kind::Compute: return gl::Program(compileComputeProgram(recipeFiles(r, response), generated));
+            return gl::Program(compileProgram(r.vertex, r.main, generated));
+        case ProgramRecipe::Kind::Compute: return gl::Program(compileComputeProgram(r.main, generated));
         case ProgramRecipe::Kind::Include: break;
     }
     throw std::invalid_argument("program recipe \"" + name + "\" is an include, not a program");

@@ -5,15 +5,14 @@
 // only what it uses directly. GpuPattern, the scene, the export and the
 // tests (compilation, glslangValidator) all read this table.
 //
-// A filtering recipe lists kResponseSlot where the response's chunk goes:
-// filtering.glsl declares `vec3 footprintResponse(vec2 mean, vec2 var,
-// float cov)` and the chunk of the pattern's response kind (responseChunk)
-// defines it. A new response is a new chunk and its line in responseChunk.
+// The hand-written pattern recipes read the prefiltered colormap's chunk
+// (response_prefiltered_colormap: footprintResponse and pointResponse,
+// which filtering.glsl and unfiltered.glsl declare); a response that shades
+// more is an op of a file's program (the graph recipes).
 #include <string>
 #include <vector>
 
 #include "stochtex/gpu/gl_objects.h"
-#include "stochtex/pattern/response.h"
 
 namespace stochtex {
 
@@ -35,23 +34,19 @@ struct ProgramRecipe {
 inline constexpr const char* kPatternBlockName = "PatternParameters";
 inline constexpr unsigned kPatternBlockBinding = 0;
 
-inline const std::string kResponseSlot = "response";
 // The stem the texture-graph recipes read for the chunk generated per graph
 // (gpu/gpu_graph.h, graphProgramSource); its text is passed as an override.
 inline const std::string kGraphProgramStem = "graph_program";
-// The shader chunk (stem) of a response kind.
-const std::string& responseChunk(ResponseKind kind);
+// The prefiltered colormap's chunk (stem): the pattern recipes' response,
+// the graph recipes' table lookups.
+inline const std::string kColormapResponseChunk = "response_prefiltered_colormap";
 
 const std::vector<ProgramRecipe>& programRecipes();
 // InputError-free: an unknown name is a programming error (std::invalid_argument).
 const ProgramRecipe& programRecipe(const std::string& name);
-// A recipe's main files with kResponseSlot replaced by the response's chunk.
-std::vector<std::string> recipeFiles(const ProgramRecipe& recipe, ResponseKind response);
-// Compiles and links a Graphics or Compute recipe with the response's chunk
-// (ignored by recipes without the slot; needs a current context;
+// Compiles and links a Graphics or Compute recipe (needs a current context;
 // ShaderError with file:line locations on failure).
 // `generated`: the text of generated chunks by stem (a graph recipe's kGraphProgramStem).
-gl::Program buildProgram(const std::string& name, ResponseKind response = ResponseKind::PrefilteredColormap,
-                         const std::vector<std::pair<std::string, std::string>>& generated = {});
+gl::Program buildProgram(const std::string& name, const std::vector<std::pair<std::string, std::string>>& generated = {});
 
 }  // namespace stochtex

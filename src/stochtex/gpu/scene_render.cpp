@@ -46,7 +46,7 @@ void SceneRenderer::draw(const SceneCamera& camera, const RenderTarget& target, 
     glUniformMatrix4fv(uniform("uViewProjection"), 1, GL_FALSE, vp.data());
     glUniform1f(uniform("uTiling"), tiling);
     glUniform1i(uniform("uFiltered"), pattern_.filtered());
-    glUniform1i(uniform("uLean"), pattern_.shadesLight());
+    glUniform1i(uniform("uShadesLight"), pattern_.shadesLight());
     const float l[3] = {0.45f, 0.8f, 0.4f};
     const float n = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
     glUniform3f(uniform("uLight"), l[0] / n, l[1] / n, l[2] / n);

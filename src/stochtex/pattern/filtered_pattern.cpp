@@ -90,29 +90,20 @@ FilteredPattern::FilteredPattern(const Pattern& pattern, const FilterOptions& op
       field_(&pattern.tiledField()),
       colormap_(foldInverseTransforms(pattern.colormap(), &pattern.example(0), &pattern.example(1))) {
     validateFilterOptions(options);
-    if (options.response.kind == ResponseKind::Lean) {
-        // Built whatever the source: the lean point response is its own, not H.
-        response_ = makeResponse(options.response, colormap_,
-                                 pattern.normalMap() ? &pattern.normalMap()->shading : nullptr);
-        lean_ = static_cast<const LeanResponse*>(response_.get());
-        field_ = &pattern.normalMap()->slopes;
-    }
+    if (options.response.kind != ResponseKind::PrefilteredColormap)
+        throw InputError::parameter("response", "a pattern's colours are filtered through its prefiltered colormap; "
+                                                "the " + enumName(kResponseKindNames, options.response.kind) +
+                                                    " response shades a file's normal map, which its program "
+                                                    "(GraphPattern::build) carries");
     if (!isPowerOfTwo(field_->exampleSize()))
         throw InputError("filtering needs power-of-two example sizes (the MIP pyramids halve them); got " +
                          std::to_string(field_->exampleSize()));
-    sky_ = lean_ ? lean_->filtered(fieldStatistics(*field_)) : averageColour(pattern, colormap_);
+    sky_ = averageColour(pattern, colormap_);
     if (source_ == StatisticsSource::Point) return;  // nothing to prefilter
-    if (!response_) response_ = makeResponse(options.response, colormap_);
+    response_ = makeResponse(options.response, colormap_);
     // The covariance pyramid only for a shared-offset pair whose response reads it.
     estimator_ = std::make_unique<FootprintEstimator>(*field_, field_->shared() && response_->needsCovariance(),
                                                       options.pack8);
-}
-
-Rgb FilteredPattern::point(double u, double v, const Direction& view) const {
-    if (!lean_) return pattern_.evaluate(u, v);
-    const BlendStencil s = triangleGrid(u, v, field_->gridDensity());
-    const float fu = periodFraction(u), fv = periodFraction(v);
-    return lean_->point(field_->channel(0).blend(s, fu, fv), field_->channel(1).blend(s, fu, fv), view);
 }
 
 const PrefilteredColormap& FilteredPattern::table() const {
@@ -125,24 +116,19 @@ Footprint FilteredPattern::footprint(double u, double v, const Jacobian& j) cons
     return makeFootprint(u, v, j, estimator_->exampleSize(), estimator_->maxLod(), options_.aniso);
 }
 
-Rgb FilteredPattern::response(const FootprintStats& s, const Direction& view) const {
-    return lean_ ? lean_->filtered(s, view) : response_->filtered(s);
+Rgb FilteredPattern::shade(const Footprint& f) const {
+    return response_->filtered(estimator_->estimate(f, options_.estimator));
 }
 
-Rgb FilteredPattern::shade(const Footprint& f, const Direction& view) const {
-    return response(estimator_->estimate(f, options_.estimator), view);
-}
-
-Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j, const Direction& view) const {
+Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j) const {
     if (!onPlane) return sky_;
     switch (source_) {
-        case StatisticsSource::Point: return point(u, v, view);
-        case StatisticsSource::Estimators: return shade(footprint(u, v, j), view);
-        case StatisticsSource::Exact:
-            return response(bruteForceStats(*field_, u, v, j, options_.referenceMaxSamples), view);
+        case StatisticsSource::Point: return pattern_.evaluate(u, v);
+        case StatisticsSource::Estimators: return shade(footprint(u, v, j));
+        case StatisticsSource::Exact: return response_->filtered(bruteForceStats(*field_, u, v, j, options_.referenceMaxSamples));
         case StatisticsSource::Reference: {
             const int n = bruteForceSamples(j, field_->exampleSize(), options_.referenceMaxSamples);
-            return supersampledAverage(u, v, j, n, [&](double pu, double pv) { return point(pu, pv, view); });
+            return supersampledAverage(u, v, j, n, [&](double pu, double pv) { return pattern_.evaluate(pu, pv); });
         }
     }
     return sky_;
@@ -150,7 +136,7 @@ Rgb FilteredPattern::shade(bool onPlane, double u, double v, const Jacobian& j, 
 
 Image FilteredPattern::render(const Camera& camera, const Progress& progress) const {
     validateCamera(camera);
-    if (source_ == StatisticsSource::Point && camera.kind == Camera::Kind::Zoom && !lean_)
+    if (source_ == StatisticsSource::Point && camera.kind == Camera::Kind::Zoom)
         return pattern_.render(camera.view);
     Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
     const int w = field_->exampleSize();
@@ -169,9 +155,7 @@ Image FilteredPattern::render(const Camera& camera, const Progress& progress) co
                 double u = 0, v = 0;
                 Jacobian j;
                 const bool onPlane = camera.footprint(px, py, w, u, v, j);
-                // Only the lean response reads where the eye is.
-                const Direction view = lean_ ? camera.viewDirection(px, py) : LeanResponse::kFromAbove;
-                const Rgb c = oneFootprint ? shade(shape.translated(u, v), view) : shade(onPlane, u, v, j, view);
+                const Rgb c = oneFootprint ? shade(shape.translated(u, v)) : shade(onPlane, u, v, j);
                 float* p = out.row(py) + size_t(px) * 3;
                 p[0] = c[0];
                 p[1] = c[1];

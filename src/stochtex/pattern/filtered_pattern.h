@@ -20,9 +20,8 @@
 // H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)), before prefiltering.
 // Sky pixels (plane camera) show the pattern's average, H̄(μ_E, σ_E) (for
 // `none`, which builds no table, H at the examples' means).
-// The lean response filters the pattern's normal map instead: every source
-// then reads the slope pair, and the point response is the unfiltered
-// shading of the point's slope (LeanResponse::point).
+// The lean response is refused: a file's normal map is its program's
+// (GraphPattern::build).
 #include <memory>
 
 #include "stochtex/core/enum_names.h"
@@ -114,8 +113,7 @@ public:
     // The prefiltered colormap response's table (std::logic_error for
     // another response kind).
     const PrefilteredColormap& table() const;
-    // The field whose statistics the response reads: the colour noises, or
-    // the normal map's slopes for the lean response.
+    // The field whose statistics the response reads: the colour noises.
     const TiledField& field() const { return *field_; }
     // H' (T⁻¹ folded in) that the prefiltered table was built from.
     const ColormapTable& blendingSpaceColormap() const { return colormap_; }
@@ -123,26 +121,19 @@ public:
     // The colour of sky pixels (plane camera): the pattern's average colour,
     // the same in every mode.
     const Rgb& skyColour() const { return sky_; }
-    // Filtered colour of one footprint (sky = false gives the average colour);
-    // view: the unit direction towards the eye (Camera::viewDirection), which
-    // only the lean response reads.
-    Rgb shade(bool onPlane, double u, double v, const Jacobian& j,
-              const std::array<float, 3>& view = LeanResponse::kFromAbove) const;
+    // Filtered colour of one footprint (sky = false gives the average colour).
+    Rgb shade(bool onPlane, double u, double v, const Jacobian& j) const;
     // progress: the fraction of rows done (may be empty).
     Image render(const Camera& camera, const Progress& progress = {}) const override;
     int exampleSize() const override;
 
 private:
     Footprint footprint(double u, double v, const Jacobian& j) const;
-    using Direction = std::array<float, 3>;
-    Rgb shade(const Footprint& f, const Direction& view) const;  // estimators
-    Rgb response(const FootprintStats& s, const Direction& view) const;
-    Rgb point(double u, double v, const Direction& view) const;  // the unfiltered response at one point
+    Rgb shade(const Footprint& f) const;  // estimators
     const Pattern& pattern_;
     FilterOptions options_;
     StatisticsSource source_;
     const TiledField* field_;
-    const LeanResponse* lean_ = nullptr;  // response_, when it is the lean response
     std::unique_ptr<FootprintEstimator> estimator_;
     ColormapTable colormap_;
     std::unique_ptr<Response> response_;

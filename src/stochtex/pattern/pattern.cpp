@@ -7,7 +7,6 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
-#include "stochtex/noise/slopes.h"
 #include "stochtex/pattern/texture_graph.h"
 
 namespace stochtex {
@@ -35,28 +34,8 @@ Pattern Pattern::build(const PatternSpec& spec) {
                          std::to_string(examples[1].size()) + "; both examples must have the same size");
     const uint32_t sx = deriveSeed(spec.seed, 1);
     const uint32_t sy = spec.offsets == OffsetMode::Shared ? sx : deriveSeed(spec.seed, 2);
-    Pattern p(std::move(examples), {sx, sy}, buildColormap(spec.colormap), spec.gridDensity,
-              spec.offsets == OffsetMode::Shared ? OffsetSharing::Shared : OffsetSharing::Independent);
-    if (!spec.normalMap) return p;
-    const NormalMapSpec& nm = *spec.normalMap;
-    const uint32_t heightSeed = nm.height.explicitSeed ? nm.height.spectrum.seed : deriveSeed(spec.seed, 102u);
-    return p.withNormalMap(
-        buildNormalMap(nm, heightSeed, deriveSeed(spec.seed, 3), spec.gridDensity, spec.name + ": normal_map/height"));
-}
-
-NormalMap buildNormalMap(const NormalMapSpec& spec, uint32_t heightSeed, uint32_t offsetSeed, double gridDensity,
-                         const std::string& context) {
-    NoiseSpec height = spec.height;
-    height.spectrum.seed = heightSeed;
-    // The heights as given: slopes of a Gaussianized exemplar would not be the exemplar's.
-    return {slopeField(buildExampleImage(height, context), spec.amplitude, offsetSeed, gridDensity),
-            validatedShading(spec.shading)};
-}
-
-Pattern Pattern::withNormalMap(NormalMap normals) const {
-    Pattern p = *this;
-    p.normals_ = std::move(normals);
-    return p;
+    return Pattern(std::move(examples), {sx, sy}, buildColormap(spec.colormap), spec.gridDensity,
+                   spec.offsets == OffsetMode::Shared ? OffsetSharing::Shared : OffsetSharing::Independent);
 }
 
 Pattern::Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> offsetSeeds, ColormapTable colormap,

@@ -1,7 +1,8 @@
 #pragma once
 // A colour-mapped noise vector field S = H ∘ N (paper eq. 1–2), ready to
 // evaluate: two tiled-and-blended noises N = (N_x, N_y) over a shared
-// triangle grid, and a colormap table H.
+// triangle grid, and a colormap table H. A file's normal map is not here:
+// under the lean response the file is its program (GraphPattern::build).
 #include <array>
 #include <memory>
 #include <optional>
@@ -17,16 +18,6 @@
 
 namespace stochtex {
 
-// The normals of a pattern (its "normal_map"): the slope pair of a height
-// example, a Shared two-channel field (noise/slopes.h), and how it is shaded
-// (the lean response).
-struct NormalMap {
-    TiledField slopes;
-    LeanShading shading;
-};
-NormalMap buildNormalMap(const NormalMapSpec& spec, uint32_t heightSeed, uint32_t offsetSeed, double gridDensity,
-                         const std::string& context);
-
 class Pattern {
 public:
     static Pattern build(const PatternSpec& spec);
@@ -38,8 +29,6 @@ public:
     // The same noises N (the same examples, tile offsets and grid) under
     // another colormap: patterns that differ only in H, as paper Figures 7–8.
     Pattern withColormap(ColormapTable colormap) const;
-    // The same pattern carrying normals too.
-    Pattern withNormalMap(NormalMap normals) const;
 
     // N(uv) in output space (after T⁻¹ for Gaussianized exemplars).
     std::array<float, 2> field(double u, double v) const;
@@ -60,8 +49,6 @@ public:
     int exampleSize() const { return field_.exampleSize(); }
     bool sharedOffsets() const { return field_.shared(); }
     double gridDensity() const { return field_.gridDensity(); }
-    // The normals, or null for a colour-only pattern.
-    const NormalMap* normalMap() const { return normals_ ? &*normals_ : nullptr; }
 
 private:
     struct PixelTiles {
@@ -73,7 +60,6 @@ private:
 
     TiledField field_;
     ColormapTable colormap_;
-    std::optional<NormalMap> normals_;
 };
 
 

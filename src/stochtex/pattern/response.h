@@ -4,15 +4,15 @@
 // independent axes — where the statistics come from (StatisticsSource: the
 // pixel centre, the estimators of paper §4, exact footprint statistics, or
 // the supersampled reference which averages the point response) and which
-// response reads them (the prefiltered colormap today; LEAN lobes and
-// phasor profiles next). A response says whether it needs the covariance
+// response reads them (the prefiltered colormap; the lean response is the
+// program's lean op, below). A response says whether it needs the covariance
 // of (N_x, N_y): when it does not, the covariance pyramid is neither built
 // nor fetched, on the CPU or the GPU.
 //
-// A new response kind: a ResponseKind value and its name, a Response class
-// and its case in makeResponse (here), and its GLSL chunk (gpu/programs.cpp,
-// responseChunk), which defines
-// `vec3 footprintResponse(vec2 mean, vec2 var, float cov)`.
+// The lean response is not one of these classes: a pattern file's normal map
+// under it compiles to the program "slopes, albedo → lean op"
+// (GraphPattern::build), as any response that shades more than a colormap
+// would: an op (pattern/ops/ops.h).
 #include <array>
 #include <memory>
 
@@ -77,34 +77,9 @@ private:
     PrefilteredColormap table_;
 };
 
-// LEAN mapping (Olano & Baker 2010, paper §6.5): the statistics are those
-// of the slope pair (N_x, N_y) = (∂z/∂x, ∂z/∂y); their mean and 2×2
-// covariance plus the base roughness make an anisotropic Beckmann lobe
-// (kernel/lean.glsl), lit by a directional light. The slopes of one height
-// field are correlated, so the covariance is read (unless the variant
-// without it is asked for).
-class LeanResponse final : public Response {
-public:
-    using Direction = std::array<float, 3>;
-    static constexpr Direction kFromAbove{0.0f, 0.0f, 1.0f};
-    LeanResponse(const LeanShading& shading, bool covariance);
-    // Seen from `camera` (the unit direction towards the eye, used when the
-    // shading fixes no view direction of its own).
-    Rgb filtered(const FootprintStats& s, const Direction& camera) const;
-    Rgb filtered(const FootprintStats& s) const override { return filtered(s, kFromAbove); }
-    bool needsCovariance() const override { return covariance_; }
-    // The unfiltered shading of one slope: the base lobe around it.
-    Rgb point(float slopeX, float slopeY, const Direction& camera = kFromAbove) const;
-
-private:
-    LeanShading shading_;
-    bool covariance_;
-};
-
-// The response that `options` names, over the colormap h (blending space)
-// or, for Lean, the shading of the pattern's normal map (InputError naming
-// `response` without one): the one place a response kind is built.
-std::unique_ptr<Response> makeResponse(const ResponseOptions& options, const ColormapTable& h,
-                                       const LeanShading* shading = nullptr);
+// The response that `options` names over the colormap h (blending space).
+// The lean response is a file's program's last op (GraphPattern::build):
+// InputError naming `response` for it here.
+std::unique_ptr<Response> makeResponse(const ResponseOptions& options, const ColormapTable& h);
 
 }  // namespace stochtex

@@ -430,7 +430,7 @@ Figure paperFigureSheet(int figure, int size, const StudyProgress& progress) {
     for (size_t i = 0; i < panels.size(); ++i) {
         if (progress) progress(double(i) / double(panels.size()), panels[i].preset);
         const PaperFigurePanel& p = panels[i];
-        rows[i / 2].push_back(patternSheet(p.pattern, p.spec.scale, size, p.preset).sheet);
+        rows[i / 2].push_back(patternSheet(p.pattern, p.spec, p.spec.scale, size, p.preset).sheet);
         captions[i / 2].push_back(p.caption);
     }
     return {f->file, sheet(rows, captions), f->title};

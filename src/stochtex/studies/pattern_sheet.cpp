@@ -43,7 +43,8 @@ Image colormapUsage(const Pattern& pattern, const View& view, int size) {
 
 }  // namespace
 
-PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const std::string& label) {
+PatternSheet patternSheet(const Pattern& pattern, const PatternSpec& file, double scale, int size,
+                          const std::string& label) {
     const int big = size, small = size / 2;
     View view;
     view.width = view.height = big;
@@ -54,18 +55,15 @@ PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const 
     half.width = half.height = small;
     half.scale = view.scale * 2.0;
     // A normal map's shading, as `render --response lean --filter none` draws it.
-    const int lean = pattern.normalMap() ? big : 0;
+    const int lean = file.normalMap ? big : 0;
     Image sheet(big + lean + 2 * small, big, 3);
     // The sheet is composed in sRGB codes (report/page.h, Figure): colours are
     // encoded as they go in, the noises are data shown as grey.
     paste(sheet, srgbFromLinear(out.pattern), 0, 0);
     drawLabel(sheet, 0, big, big, label.c_str());
     if (lean) {
-        FilterOptions shading;
-        shading.use({StatisticsSource::Point, {ResponseKind::Lean}});
-        Camera camera;
-        camera.view = view;
-        paste(sheet, srgbFromLinear(FilteredPattern(pattern, shading).render(camera)), big, 0);
+        const GraphPattern normals = GraphPattern::build(file, {ResponseKind::Lean});
+        paste(sheet, srgbFromLinear(normals.render(view)), big, 0);
         drawLabel(sheet, big, big, big, "LEAN shading");
     }
     const int right = big + lean;

@@ -12,11 +12,14 @@ namespace stochtex {
 struct PatternSheet {
     Image pattern;  // size × size, the view at `scale` texels per pixel (linear light)
     // pattern | H, H where N falls / N_x, N_y (2·size × size), in sRGB codes;
-    // a pattern with a normal map shows its LEAN shading (unfiltered, lit as
-    // its normal_map says, seen from above) right of the colours (3·size wide).
+    // a file with a normal map shows its LEAN shading (its lean program,
+    // unfiltered, lit as its normal_map says, seen from above) right of the
+    // colours (3·size wide).
     Image sheet;
 };
-PatternSheet patternSheet(const Pattern& pattern, double scale, int size, const std::string& label);
+// pattern: built from `file` (Pattern::build, or its noises under another colormap).
+PatternSheet patternSheet(const Pattern& pattern, const PatternSpec& file, double scale, int size,
+                          const std::string& label);
 
 // A graph evaluated per pixel (graph_pattern.h) and its stages: each leaf
 // and operation node over the same region at half the side (fields as

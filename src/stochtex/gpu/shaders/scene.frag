@@ -12,7 +12,7 @@ uniform vec3 uLight;  // direction towards the light, normalised
 uniform vec3 uEye;
 layout(location = 0) out vec4 fragColour;
 
-uniform bool uLean;  // the program lights its own colour (GpuView::shadesLight): it is the whole colour
+uniform bool uShadesLight;  // the program lights its own colour (GpuView::shadesLight): it is the whole colour
 
 // Light and eye in the surface's tangent frame for the lean response: T
 // along ∂p/∂u (from the screen derivatives of position and uv), the normal
@@ -39,7 +39,7 @@ void main() {
     vec3 n = normalize(vNormal);
     vec3 v = normalize(uEye - vWorld);
     if (dot(n, v) < 0.0) n = -n;  // two-sided: whatever the mesh's winding
-    if (uLean) {
+    if (uShadesLight) {
         fragColour = vec4(leanShaded(uv, jx, jy, n, v), 1.0);
         return;
     }
