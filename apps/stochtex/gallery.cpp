@@ -76,10 +76,7 @@ void registerGallery(CLI::App& app) {
                 name = e.name + "-" + std::to_string(k);
             written.push_back(name);
             const PatternSpec& spec = e.spec;
-            // A graph with a non-linear node before its output: its stages instead of H and N.
-            const PatternSheet ps = spec.graph && !foldsIntoPattern(*spec.graph)
-                                        ? graphSheet(GraphPattern::build(spec), *spec.graph, spec.scale, args->size)
-                                        : patternSheet(Pattern::build(spec), spec, spec.scale, args->size, name);
+            const PatternSheet ps = patternSheet(spec, spec.scale, args->size, name);
             writeImage((fs::path(args->dir) / (name + ".png")).string(), ps.pattern);
             writeImage((fs::path(args->dir) / (name + "-sheet.png")).string(), ps.sheet, kNoTransfer);
             html << "<figure><img src='" << htmlEscape(name) << "-sheet.png' alt='" << htmlEscape(name)

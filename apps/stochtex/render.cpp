@@ -58,7 +58,7 @@ void registerRender(CLI::App& app) {
         const PatternSpec spec = loadPatternSource(args->source, args->options);
         Camera camera = args->camera;
         camera.view = makeView(spec, args->view);
-        validateCamera(camera);  // before building anything; FilteredPattern checks the options
+        validateCamera(camera);  // before building anything; the renderer checks the options
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
         checkDeviceFilter(args->device, args->options);  // before the pattern is built

@@ -7,6 +7,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/report/page.h"
@@ -20,6 +21,19 @@
 
 namespace stochtex {
 namespace {
+
+// A preset's program, unfiltered, and a zoom camera on it: the studies' frames
+// of a pattern (CameraSource). Not copied: the renderer reads the program.
+struct UnfilteredProgram {
+    UnfilteredProgram(const std::string& preset, const View& view)
+        : program(GraphPattern::build(loadPreset(preset))), renderer(program, FilterOptions{}.use(parseFilter("none"))) {
+        camera.view = view;
+    }
+    CameraSource source() const { return CameraSource(renderer, camera); }
+    GraphPattern program;
+    FilteredGraph renderer;
+    Camera camera;
+};
 
 bool sameImage(const Image& a, const Image& b) {
     return a.width() == b.width() && a.height() == b.height() && a.channels() == b.channels() && a.data() == b.data();
@@ -111,12 +125,13 @@ TEST(TextureSource, ZoomInstancesAreTheLatticesOfDerivedSeeds) {
     EXPECT_THROW(ZoomSource(p, ZoomBase{1, 1, {}}), InputError);
 }
 
-TEST(TextureSource, PatternInstanceZeroIsThePlainRenderAndRegionsTranslate) {
-    const Pattern pattern = Pattern::build(loadPreset("marble"));
+TEST(TextureSource, ProgramInstanceZeroIsThePlainRenderAndRegionsTranslate) {
     View view;
     view.scale = 1;
     view.width = view.height = 40;
-    const PatternSource source(pattern, view);
+    const UnfilteredProgram marble("marble", view);
+    const GraphPattern& pattern = marble.program;
+    const CameraSource source = marble.source();
     EXPECT_EQ(source.channels(), 3);
     EXPECT_FALSE(source.statistics(0));
     const Image full = pattern.render(view);
@@ -137,12 +152,12 @@ TEST(TextureSource, PatternInstanceZeroIsThePlainRenderAndRegionsTranslate) {
     EXPECT_TRUE(sameImage(source.render({40, 40, 0, 0}, 0.0, 1), pattern.render(moved)));
 }
 
-TEST(TextureSource, FilteredPatternInstanceZeroIsTheCameraRender) {
-    const Pattern pattern = Pattern::build(loadPreset("marble"));
+TEST(TextureSource, FilteredProgramInstanceZeroIsTheCameraRender) {
+    const GraphPattern pattern = GraphPattern::build(loadPreset("marble"));
     for (const char* filter : {"none", "smooth"}) {
         FilterOptions fo;
         fo.use(parseFilter(filter));
-        const FilteredPattern filtered(pattern, fo);
+        const FilteredGraph filtered(pattern, fo);
         Camera cam;
         cam.view.width = cam.view.height = 24;
         cam.view.scale = 4;
@@ -201,10 +216,10 @@ TEST(Studies, MeasuredCorrelationOfTheZoomSourceMatchesItsClosedForm) {
 }
 
 TEST(Studies, CorrelationOfAPatternHasNoClosedFormButMeasures) {
-    const Pattern pattern = Pattern::build(loadPreset("marble"));
     View view;
     view.scale = 1;
-    const PatternSource source(pattern, view);
+    const UnfilteredProgram marble("marble", view);
+    const CameraSource source = marble.source();
     const CorrelationMeasurement m = measureCorrelation(source, {8, 128, 0.0});
     EXPECT_TRUE(m.analyticRadial.empty());
     for (int x = 0; x < 8; ++x) EXPECT_NEAR(m.measuredRadial.at(x, x), 1.0, 1e-5);
@@ -262,8 +277,8 @@ TEST(Studies, ContrastStudyOfTheZoomTexture) {
     ASSERT_TRUE(find(r.figures, "polynomial_non_monotone.png"));
     EXPECT_EQ(find(r.figures, "texture.png")->image.width(), 64);
     // Colour sources and sources without statistics cannot be corrected.
-    const Pattern pattern = Pattern::build(loadPreset("marble"));
-    EXPECT_THROW(contrastStudy(PatternSource(pattern, View{}), {}, o), InputError);
+    const UnfilteredProgram marble("marble", View{});
+    EXPECT_THROW(contrastStudy(marble.source(), {}, o), InputError);
 }
 
 TEST(Studies, SlidingStudyShowsBothScalings) {
@@ -387,37 +402,38 @@ TEST(Studies, Figures7to9AreThreeSheets) {
     EXPECT_THROW(figures7to9(16), InputError);
 }
 
-// Figures 7 and 8 show the effect of the colormap alone: the four panels
-// have one pair of noises (panel a's: the same example objects, tile-offset
+// Figures 7 and 8 show the effect of the colormap alone: the four panels'
+// programs have one pair of noises (panel a's: the same examples, tile-offset
 // seeds and grid, so N_x and N_y render bit-identically) and four different
 // colormaps. Figure 9 compares noises, so its panels' N_x differ.
 TEST(Studies, Figures7And8ShareOnePairOfNoises) {
     View view;
     view.width = view.height = 48;
     view.scale = 3.0;
+    const auto noise = [&](const GraphPattern& g, int axis) { return g.renderNode(view, g.leafIds()[size_t(axis)]).data(); };
     for (const int figure : {7, 8}) {
         const std::vector<PaperFigurePanel> panels = paperFigurePanels(figure);
         ASSERT_EQ(panels.size(), 4u);
-        const Pattern& a = panels[0].pattern;
+        const GraphPattern a = GraphPattern::build(panels[0].spec);
         for (size_t i = 1; i < panels.size(); ++i) {
-            const Pattern& p = panels[i].pattern;
+            const GraphPattern p = GraphPattern::build(panels[i].spec);
             const std::string what = "figure " + std::to_string(figure) + " panel " + panels[i].preset;
+            ASSERT_EQ(p.leafCount(), 2) << what;
             for (int axis = 0; axis < 2; ++axis) {
-                EXPECT_EQ(&p.example(axis), &a.example(axis)) << what << ": one example, not a rebuilt one";
-                EXPECT_EQ(p.noise(axis).offsetSeed(), a.noise(axis).offsetSeed()) << what;
-                EXPECT_EQ(p.renderNoise(axis, view).data(), a.renderNoise(axis, view).data())
-                    << what << " axis " << axis;
+                EXPECT_EQ(p.leaf(axis).offsetSeed(), a.leaf(axis).offsetSeed()) << what;
+                EXPECT_EQ(noise(p, axis), noise(a, axis)) << what << " axis " << axis;
             }
             EXPECT_EQ(p.gridDensity(), a.gridDensity()) << what;
-            EXPECT_NE(p.colormap().table().data(), a.colormap().table().data()) << what << ": its own colormap";
-            EXPECT_EQ(p.colormap().table().data(), buildColormap(loadPreset(panels[i].preset).colormap).table().data())
+            const ColormapTable& h = p.tables().front().point;
+            EXPECT_NE(h.table().data(), a.tables().front().point.table().data()) << what << ": its own colormap";
+            EXPECT_EQ(h.table().data(), buildColormap(loadPreset(panels[i].preset).colormap).table().data())
                 << what << ": the preset's colormap";
         }
     }
     const std::vector<PaperFigurePanel> spectra = paperFigurePanels(9);
+    const GraphPattern first = GraphPattern::build(spectra[0].spec);
     for (size_t i = 1; i < spectra.size(); ++i)
-        EXPECT_NE(spectra[i].pattern.renderNoise(0, view).data(), spectra[0].pattern.renderNoise(0, view).data())
-            << "figure 9 panel " << spectra[i].preset;
+        EXPECT_NE(noise(GraphPattern::build(spectra[i].spec), 0), noise(first, 0)) << "figure 9 panel " << spectra[i].preset;
     EXPECT_EQ(test::inputErrorOf([] { paperFigurePanels(6); }).parameter(), "figure");
 }
 

@@ -47,12 +47,6 @@ Pattern::Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> o
     field_ = TiledField(std::move(noises), gridDensity, sharing);
 }
 
-Pattern Pattern::withColormap(ColormapTable colormap) const {
-    Pattern p = *this;  // the examples are shared, not copied
-    p.colormap_ = std::move(colormap);
-    return p;
-}
-
 std::array<float, 2> Pattern::field(double u, double v) const {
     const BlendStencil s = triangleGrid(u, v, gridDensity());
     const float fu = periodFraction(u), fv = periodFraction(v);

@@ -26,9 +26,6 @@ public:
     Pattern(std::array<NoiseExample, 2> examples, std::array<uint32_t, 2> offsetSeeds, ColormapTable colormap,
             double gridDensity, OffsetSharing sharing);
 
-    // The same noises N (the same examples, tile offsets and grid) under
-    // another colormap: patterns that differ only in H, as paper Figures 7–8.
-    Pattern withColormap(ColormapTable colormap) const;
 
     // N(uv) in output space (after T⁻¹ for Gaussianized exemplars).
     std::array<float, 2> field(double u, double v) const;

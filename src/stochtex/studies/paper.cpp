@@ -99,8 +99,9 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
             progressPart(progress, which, 2, std::string("table1: ") + kTableNoiseNames[which] + " noise");
         const int steps = 1 + int(o.errors.footprints.size());
         if (noise) noise(0.0, "building the 512² examples");
-        const Pattern p = Pattern::build(table1PatternSpec(which, o.seed));
-        res.rows[size_t(which)] = measureEstimatorErrors(p.tiledField(), o.errors, [&](int k) {
+        // The file's program: its one pair of leaves is N.
+        const GraphPattern p = GraphPattern::build(table1PatternSpec(which, o.seed));
+        res.rows[size_t(which)] = measureEstimatorErrors(p.leafPairs().front(), o.errors, [&](int k) {
             if (noise) noise(double(1 + k) / steps, "footprint " + std::to_string(k) + "/" + std::to_string(steps - 1));
         });
         for (const auto& r : res.rows[size_t(which)])
@@ -399,19 +400,15 @@ std::vector<PaperFigurePanel> paperFigurePanels(int figure) {
     for (size_t i = 0; i < 4; ++i) {
         PatternSpec spec = loadPreset(f->presets[i]);
         if (f->sameNoises && i > 0) {
-            // Panel a's spec with this preset's colormap, and panel a's noises
-            // themselves (not rebuilt), so only H differs.
+            // Panel a's spec with this preset's colormap: its program has panel
+            // a's noises (the same seeds and tiles), so only H differs.
             const PaperFigurePanel& a = panels.front();
             ColormapSpec colormap = std::move(spec.colormap);
             spec = a.spec;
             spec.name = f->presets[i];
             spec.colormap = std::move(colormap);
-            Pattern pattern = a.pattern.withColormap(buildColormap(spec.colormap));
-            panels.push_back({f->presets[i], f->captions[i], std::move(spec), std::move(pattern)});
-        } else {
-            Pattern pattern = Pattern::build(spec);
-            panels.push_back({f->presets[i], f->captions[i], std::move(spec), std::move(pattern)});
         }
+        panels.push_back({f->presets[i], f->captions[i], std::move(spec)});
     }
     return panels;
 }
@@ -430,7 +427,7 @@ Figure paperFigureSheet(int figure, int size, const StudyProgress& progress) {
     for (size_t i = 0; i < panels.size(); ++i) {
         if (progress) progress(double(i) / double(panels.size()), panels[i].preset);
         const PaperFigurePanel& p = panels[i];
-        rows[i / 2].push_back(patternSheet(p.pattern, p.spec, p.spec.scale, size, p.preset).sheet);
+        rows[i / 2].push_back(patternSheet(p.spec, p.spec.scale, size, p.preset).sheet);
         captions[i / 2].push_back(p.caption);
     }
     return {f->file, sheet(rows, captions), f->title};

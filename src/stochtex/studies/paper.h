@@ -95,7 +95,6 @@ Figure4Options figure11Options();
 struct PaperFigurePanel {
     std::string preset, caption;
     PatternSpec spec;  // what the panel shows (for 7 and 8: panel a's noises, this preset's colormap)
-    Pattern pattern;
 };
 // Figure 10 (studies/phasor_figures.h) is a sheet of four presets too: the
 // phasor variants, each as it is.

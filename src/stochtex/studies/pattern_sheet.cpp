@@ -4,9 +4,12 @@
 #include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <variant>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
@@ -14,24 +17,22 @@ namespace stochtex {
 
 namespace {
 
-// The colormap (y up) darkened where N rarely falls: shows which part of H
-// the pattern actually uses.
-Image colormapUsage(const Pattern& pattern, const View& view, int size) {
+// The colormap h (y up) darkened where N rarely falls, N being the two
+// leaves' values over the view (renderNode: clamped to [0, 1], where the
+// bins end anyway): shows which part of H the pattern actually uses.
+Image colormapUsage(const Image& nx, const Image& ny, const ColormapTable& h, int size) {
     std::vector<double> hist(size_t(size) * size_t(size), 0.0);
-    const double invW = 1.0 / pattern.exampleSize();
-    for (int py = 0; py < view.height; ++py)
-        for (int px = 0; px < view.width; ++px) {
-            const auto [u, v] = pixelUv(view, invW, px, py);
-            const auto n = pattern.field(u, v);
-            const int i = std::clamp(int(n[0] * size), 0, size - 1);
-            const int j = std::clamp(int((1.0f - n[1]) * size), 0, size - 1);
+    for (int py = 0; py < nx.height(); ++py)
+        for (int px = 0; px < nx.width(); ++px) {
+            const int i = std::clamp(int(nx.at(px, py, 0) * size), 0, size - 1);
+            const int j = std::clamp(int((1.0f - ny.at(px, py, 0)) * size), 0, size - 1);
             hist[size_t(j) * size_t(size) + size_t(i)] += 1.0;
         }
     // Smooth the counts so the density reads as a shape, not as dots.
-    cv::Mat h(size, size, CV_64F, hist.data());
-    cv::GaussianBlur(h, h, cv::Size(0, 0), 1.5);
+    cv::Mat counts(size, size, CV_64F, hist.data());
+    cv::GaussianBlur(counts, counts, cv::Size(0, 0), 1.5);
     const double peak = *std::max_element(hist.begin(), hist.end());
-    Image base = resizeSmooth(srgbFromLinear(pattern.colormap().toImage()), size, size);
+    Image base = resizeSmooth(srgbFromLinear(h.toImage()), size, size);
     for (int j = 0; j < size; ++j)
         for (int i = 0; i < size; ++i) {
             const double d = peak > 0 ? std::sqrt(hist[size_t(j) * size_t(size) + size_t(i)] / peak) : 0.0;
@@ -43,14 +44,24 @@ Image colormapUsage(const Pattern& pattern, const View& view, int size) {
 
 }  // namespace
 
-PatternSheet patternSheet(const Pattern& pattern, const PatternSpec& file, double scale, int size,
-                          const std::string& label) {
+PatternSheet patternSheet(const PatternSpec& file, double scale, int size, const std::string& label) {
+    const GraphPattern program = GraphPattern::build(file);
+    const GraphPattern::Operation& colours = program.operations().back();
+    const bool colormapOfLeaves = std::holds_alternative<ColormapOp::Params>(colours.params) &&
+                                  colours.inputs[0] < program.leafCount() && colours.inputs[1] < program.leafCount();
+    if (!colormapOfLeaves) {
+        if (!file.graph) throw std::logic_error("patternSheet: a plain pattern's program is not a colormap of its leaves");
+        return graphSheet(program, *file.graph, scale, size);
+    }
+    const std::string& nx = program.leafIds()[size_t(colours.inputs[0])];
+    const std::string& ny = program.leafIds()[size_t(colours.inputs[1])];
+    const ColormapTable& h = program.tables()[size_t(colours.table)].point;
     const int big = size, small = size / 2;
     View view;
     view.width = view.height = big;
     view.scale = scale;
     PatternSheet out;
-    out.pattern = pattern.render(view);
+    out.pattern = program.render(view);
     View half = view;
     half.width = half.height = small;
     half.scale = view.scale * 2.0;
@@ -62,15 +73,14 @@ PatternSheet patternSheet(const Pattern& pattern, const PatternSpec& file, doubl
     paste(sheet, srgbFromLinear(out.pattern), 0, 0);
     drawLabel(sheet, 0, big, big, label.c_str());
     if (lean) {
-        const GraphPattern normals = GraphPattern::build(file, {ResponseKind::Lean});
-        paste(sheet, srgbFromLinear(normals.render(view)), big, 0);
+        paste(sheet, srgbFromLinear(GraphPattern::build(file, {ResponseKind::Lean}).render(view)), big, 0);
         drawLabel(sheet, big, big, big, "LEAN shading");
     }
     const int right = big + lean;
-    paste(sheet, resizeSmooth(srgbFromLinear(pattern.colormap().toImage()), small, small), right, 0);
-    paste(sheet, colormapUsage(pattern, view, small), right + small, 0);
-    paste(sheet, toRgb(pattern.renderNoise(0, half)), right, small);
-    paste(sheet, toRgb(pattern.renderNoise(1, half)), right + small, small);
+    paste(sheet, resizeSmooth(srgbFromLinear(h.toImage()), small, small), right, 0);
+    paste(sheet, colormapUsage(program.renderNode(view, nx), program.renderNode(view, ny), h, small), right + small, 0);
+    paste(sheet, program.renderNode(half, nx), right, small);
+    paste(sheet, program.renderNode(half, ny), right + small, small);
     drawLabel(sheet, right, small, small, "colormap H");
     drawLabel(sheet, right + small, small, small, "H where N falls");
     drawLabel(sheet, right, big, small, "noise N_x");

@@ -5,21 +5,21 @@
 
 #include "stochtex/image/image.h"
 #include "stochtex/pattern/graph_pattern.h"
-#include "stochtex/pattern/pattern.h"
 
 namespace stochtex {
 
 struct PatternSheet {
     Image pattern;  // size × size, the view at `scale` texels per pixel (linear light)
-    // pattern | H, H where N falls / N_x, N_y (2·size × size), in sRGB codes;
-    // a file with a normal map shows its LEAN shading (its lean program,
-    // unfiltered, lit as its normal_map says, seen from above) right of the
-    // colours (3·size wide).
+    // A program whose output is a colormap of two leaves (every plain
+    // pattern, a graph whose linear part feeds its colormap): pattern | H,
+    // H where N falls / N_x, N_y (2·size × size), in sRGB codes; a file with
+    // a normal map shows its LEAN shading (its lean program, unfiltered, lit
+    // as its normal_map says, seen from above) right of the colours (3·size
+    // wide). Any other graph: its stages (graphSheet).
     Image sheet;
 };
-// pattern: built from `file` (Pattern::build, or its noises under another colormap).
-PatternSheet patternSheet(const Pattern& pattern, const PatternSpec& file, double scale, int size,
-                          const std::string& label);
+// The file's program (GraphPattern::build) and what makes it.
+PatternSheet patternSheet(const PatternSpec& file, double scale, int size, const std::string& label);
 
 // A graph evaluated per pixel (graph_pattern.h) and its stages: each leaf
 // and operation node over the same region at half the side (fields as

@@ -7,6 +7,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/noise/spectrum.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/studies/paper.h"
 #include "stochtex/textures/texture_source.h"
@@ -94,12 +95,15 @@ Figure10Result figure10(const Figure10Options& o, const Progress& progress) {
         c.orientation = o.field.orientation;
         validateSpectrumWork(n.spectrum);
     }
-    const Pattern pattern = Pattern::build(spec);
-    View view;
-    view.scale = double(pattern.exampleSize()) / double(o.comparisonSize);
+    const GraphPattern program = GraphPattern::build(spec);
+    FilterOptions unfiltered;
+    unfiltered.source = StatisticsSource::Point;
+    const FilteredGraph renderer(program, unfiltered);
+    Camera zoom;
+    zoom.view.scale = double(program.exampleSize()) / double(o.comparisonSize);
     const SourceRegion region{o.comparisonSize, o.comparisonSize, 0, 0};
-    const PatternSource ours(pattern, view);
-    const PhasorNoiseSource procedural(o.field, pattern.colormap(), view, pattern.exampleSize());
+    const CameraSource ours(renderer, zoom);
+    const PhasorNoiseSource procedural(o.field, program.tables().front().point, zoom.view, program.exampleSize());
     const std::array<Image, 2> renders{ours.render(region, 0.0, 0), procedural.render(region, 0.0, 0)};
     if (part) part(0.8, "spectra");
 

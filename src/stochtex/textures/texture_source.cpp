@@ -83,10 +83,6 @@ View windowView(View base, const SourceRegion& region, int instance, int example
 
 }  // namespace
 
-Image PatternSource::render(const SourceRegion& region, double, int instance) const {
-    return pattern_.render(windowView(view_, region, instance, pattern_.exampleSize()));
-}
-
 Image CameraSource::render(const SourceRegion& region, double time, int instance) const {
     checkWindow(region, time);
     Camera c = camera_;

@@ -4,9 +4,9 @@
 // process), and tells its closed-form statistics where it knows them.
 //
 // Adapters: the stationary zoom texture (instance i = white-noise lattice i,
-// analytic statistics from ZoomStatistics), a Pattern (unfiltered), the
-// procedural phasor noise (unfiltered) and a FilteredPattern (any statistics source and response, through its
-// Camera). Patterns are static (t is ignored); their instance i ≠ 0 is the same texture seen through a
+// analytic statistics from ZoomStatistics), the procedural phasor noise
+// (unfiltered) and any ViewRenderer (a file's program under any statistics
+// source and response, on the CPU or the GPU, through its Camera). Patterns are static (t is ignored); their instance i ≠ 0 is the same texture seen through a
 // window moved by a hashed offset of up to 1024 example periods, which for
 // the tiled-and-blended noise (tiles hashed per grid cell) is another draw of
 // the random tile offsets. Instance 0 is the plain render.
@@ -18,7 +18,8 @@
 #include "stochtex/image/image.h"
 #include "stochtex/noise/phasor_noise.h"
 #include "stochtex/pattern/camera.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/view.h"
 #include "stochtex/pattern/view_renderer.h"
 #include "stochtex/textures/zoom_statistics.h"
 #include "stochtex/textures/zoom_texture.h"
@@ -130,19 +131,6 @@ private:
 
 // The window offset (in texels) of pattern instance i: (0, 0) for i = 0.
 std::array<double, 2> instanceOffset(int instance, int exampleSize);
-
-// An unfiltered pattern seen through `view` (its size is ignored: the
-// region's is used). The pattern must outlive the source.
-class PatternSource : public TextureSource {
-public:
-    PatternSource(const Pattern& pattern, const View& view) : pattern_(pattern), view_(view) {}
-    int channels() const override { return 3; }
-    Image render(const SourceRegion& region, double time, int instance) const override;
-
-private:
-    const Pattern& pattern_;
-    View view_;
-};
 
 // Any renderer of a camera's view (pattern/view_renderer.h: the CPU
 // evaluators, the GPU's GpuView) as a source: the region is a window of the
