@@ -616,19 +616,25 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                                            e.maxLod(), options_.aniso));
         }
     }
-    if (oneFootprint && plain_ && graph_.pairTransform(0).identity()) {
-        // A plain program in a zoom: one estimate and one lookup per pixel, as a plain pattern's.
+    if (options_.source == StatisticsSource::Estimators && plain_ && graph_.pairTransform(0).identity()) {
+        // A plain program: one estimate and one lookup per pixel, as a plain
+        // pattern's; in a zoom, of the one footprint translated.
         const FootprintEstimator& estimator = *estimators_.front();
         parallelRows(
             camera.view.height,
             [&](int y0, int y1) {
-                const Footprint shape = shapes.front();  // this thread's copy (false sharing)
+                const Footprint shape = oneFootprint ? shapes.front() : Footprint{};  // this thread's copy (false sharing)
                 for (int py = y0; py < y1; ++py)
                     for (int px = 0; px < camera.view.width; ++px) {
                         double u = 0, v = 0;
                         Jacobian j;
-                        camera.footprint(px, py, w, u, v, j);
-                        const Rgb c = plainColour(estimator.estimate(shape.translated(u, v), options_.estimator));
+                        const bool onPlane = camera.footprint(px, py, w, u, v, j);
+                        const Rgb c = !onPlane ? sky_
+                                      : oneFootprint
+                                          ? plainColour(estimator.estimate(shape.translated(u, v), options_.estimator))
+                                          : plainColour(estimator.estimate(
+                                                makeFootprint(u, v, j, estimator.exampleSize(), estimator.maxLod(), options_.aniso),
+                                                options_.estimator));
                         float* p = out.row(py) + size_t(px) * 3;
                         p[0] = c[0];
                         p[1] = c[1];
