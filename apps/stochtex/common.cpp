@@ -262,7 +262,7 @@ bool isGpuFilter(const FilterOptions& options) {
     return options.source == StatisticsSource::Point || options.source == StatisticsSource::Estimators;
 }
 
-void addPipelineFlag(CLI::App& cmd, GpuPattern::Pipeline& pipeline) {
+void addPipelineFlag(CLI::App& cmd, GpuView::Pipeline& pipeline) {
     addEnumFlag(cmd, "--pipeline", pipeline, kGpuPipelineNames, "pipeline",
                 "--gpu: fragment (full-screen triangle) | compute (GLSL 4.30 kernel; reaches every shader unit of "
                 "compute GPUs, ~27x faster on an H100)");

@@ -10,7 +10,7 @@
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/core/error.h"
-#include "stochtex/gpu/gpu_pattern.h"
+#include "stochtex/gpu/gpu_view.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/report/page.h"
@@ -181,7 +181,7 @@ void refuseUnusedCameraFlags(const CLI::App& cmd, const Camera& camera);
 bool isGpuFilter(const FilterOptions& options);
 
 // --pipeline fragment|compute of the --gpu commands (default fragment).
-void addPipelineFlag(CLI::App& cmd, GpuPattern::Pipeline& pipeline);
+void addPipelineFlag(CLI::App& cmd, GpuView::Pipeline& pipeline);
 
 // Every option of app and its commands shows its default in --help (main
 // sets always_capture_default); a list reads as it is typed ("768,512", not

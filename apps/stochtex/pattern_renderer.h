@@ -13,8 +13,8 @@ namespace stochtex::cli {
 
 struct DeviceFlags {
     bool gpu = false;
-    GpuPattern::Pipeline pipeline = GpuPattern::Pipeline::Fragment;
-    GpuPattern::Derivatives derivatives = GpuPattern::Derivatives::Camera;
+    GpuView::Pipeline pipeline = GpuView::Pipeline::Fragment;
+    GpuView::Derivatives derivatives = GpuView::Derivatives::Camera;
 };
 // --gpu, --pipeline and (withDerivatives) --derivatives.
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHelp, bool withDerivatives);

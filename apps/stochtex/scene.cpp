@@ -5,7 +5,6 @@
 
 #include "common.h"
 #include "stochtex/core/error.h"
-#include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/scene_render.h"
 #include "stochtex/image/image_io.h"

@@ -35,7 +35,7 @@ public:
     void framebufferSize(int& width, int& height) const;
     // The GLFW window (GLFWwindow*), for input callbacks; null if headless.
     void* nativeWindow() const;
-    // OpenGL 4.3 or newer: compute shaders (GpuPattern::Pipeline::Compute).
+    // OpenGL 4.3 or newer: compute shaders (GpuView::Pipeline::Compute).
     bool hasCompute() const;
     // "OpenGL 4.5 (Core Profile) Mesa 22.3.6, llvmpipe (LLVM 15.0.6, 256 bits)"
     std::string describe() const;
