@@ -28,7 +28,7 @@ struct AlternateTimes {
 
 // The seconds of one measurement: a callable returning nothing is timed on
 // the wall clock; one returning a number returns its own seconds (a GPU
-// timer query, `GpuPattern::secondsPerFrame`).
+// timer query, `GpuView::secondsPerFrame`).
 template <class F>
 double measure(F& f) {
     if constexpr (std::is_void_v<std::invoke_result_t<F&>>) {

@@ -7,7 +7,6 @@
 #include "alternate_timing.h"
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_graph.h"
-#include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/pattern/presets.h"
 
 namespace stochtex {
@@ -29,13 +28,20 @@ int framesPerMeasurement(GpuView& g, const Camera& c) {
     return std::clamp(int(0.2 / g.secondsPerFrame(c, 1)), 1, 2000);
 }
 
+// The file's program, unfiltered, as makeGpuView and makeCpuRenderer run it.
+FilterOptions unfilteredOptions() {
+    FilterOptions o;
+    o.source = StatisticsSource::Point;
+    return o;
+}
+
 // Unfiltered camouflage, 1024², GPU and CPU alternately in one run; each GPU
 // frame includes the draw, the wait and the read-back of the float image.
 void BM_GpuVsCpuUnfiltered(benchmark::State& state) {
-    const Pattern p = Pattern::build(loadPreset("camouflage"));
+    const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
     const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
     if (!ctx) return;
-    GpuPattern gpu(p, *ctx);
+    GpuGraph gpu(p, *ctx, unfilteredOptions());
     View v;
     v.width = v.height = int(state.range(0));
     const bench::AlternateTimes t = bench::timeAlternately(
@@ -50,12 +56,12 @@ BENCHMARK(BM_GpuVsCpuUnfiltered)->ArgName("size")->Arg(1024)->Arg(4096)->Unit(be
 // The shader filtered (isotropic paper mode, footprint `scale` texels) vs
 // unfiltered, both on the GPU, alternately in one run, 1024².
 void BM_GpuFilteredVsUnfiltered(benchmark::State& state) {
-    const Pattern p = Pattern::build(loadPreset("camouflage"));
+    const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
     const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
     if (!ctx) return;
     FilterOptions o;
     o.use(parseFilter("paper"));
-    GpuPattern filtered(p, *ctx, o), unfiltered(p, *ctx);
+    GpuGraph filtered(p, *ctx, o), unfiltered(p, *ctx, unfilteredOptions());
     View v;
     v.width = v.height = 1024;
     v.scale = double(state.range(0));
@@ -75,17 +81,17 @@ BENCHMARK(BM_GpuFilteredVsUnfiltered)->ArgName("scale")->Arg(1)->Arg(128)->Unit(
 // unfiltered shader in the same run; pipeline 0 = fragment shader, 1 =
 // compute kernel (OpenGL 4.3); `framesPerMeasurement` frames a measurement.
 void BM_GpuShaderThroughput(benchmark::State& state) {
-    const Pattern p = Pattern::build(loadPreset("camouflage"));
+    const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
     const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
     if (!ctx) return;
     FilterOptions o;
     o.use(parseFilter(state.range(0) == 2 ? "smooth" : "paper"));
     o.aniso = state.range(0) == 3 ? 8 : 1;
-    GpuPattern filtered(p, *ctx, o), unfiltered(p, *ctx);
+    GpuGraph filtered(p, *ctx, o), unfiltered(p, *ctx, unfilteredOptions());
     if (state.range(2) == 1) {
         if (!ctx->hasCompute()) return state.SkipWithError("no OpenGL 4.3 compute shaders");
-        filtered.setPipeline(GpuPattern::Pipeline::Compute);
-        unfiltered.setPipeline(GpuPattern::Pipeline::Compute);
+        filtered.setPipeline(GpuView::Pipeline::Compute);
+        unfiltered.setPipeline(GpuView::Pipeline::Compute);
     }
     Camera c;
     c.kind = Camera::Kind::Plane;
@@ -102,37 +108,6 @@ BENCHMARK(BM_GpuShaderThroughput)
     ->ArgNames({"mode", "size", "pipeline"})
     ->ArgsProduct({{1, 2, 3}, {1024, 2048, 4096}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
-
-// A plain pattern as its program (GpuGraph: the generated GLSL of "two
-// leaves → colormap", what makeGpuView runs since issue 28) beside the
-// hand-written pattern shaders (GpuPattern), the same measure: camouflage on
-// the plane at 55°, 1024², fragment pipeline; mode 0 = unfiltered, 1 =
-// paper, 2 = smooth, 3 = smooth ×8 anisotropic.
-void BM_GpuProgramVsPattern(benchmark::State& state) {
-    const PatternSpec spec = loadPreset("camouflage");
-    const Pattern p = Pattern::build(spec);
-    const GraphPattern program = GraphPattern::build(spec);
-    const std::unique_ptr<GlContext> ctx = contextOrSkip(state);
-    if (!ctx) return;
-    FilterOptions o = GpuPattern::unfiltered();
-    if (state.range(0) > 0) {
-        o.use(parseFilter(state.range(0) == 1 ? "paper" : "smooth"));
-        o.aniso = state.range(0) == 3 ? 8 : 1;
-    }
-    GpuPattern pattern(p, *ctx, o);
-    GpuGraph graph(program, *ctx, o);
-    Camera c;
-    c.kind = Camera::Kind::Plane;
-    c.tiltDeg = 55;
-    c.view.width = c.view.height = 1024;
-    const int fp = framesPerMeasurement(pattern, c), fg = framesPerMeasurement(graph, c);
-    const bench::AlternateTimes t = bench::timeAlternately(
-        state, [&] { return graph.secondsPerFrame(c, fg); }, [&] { return pattern.secondsPerFrame(c, fp); });
-    bench::reportAlternateRates(state, double(c.view.width) * c.view.height, bench::TexelRate::Giga,
-                                {"program", t.first}, {"pattern", t.second});
-    state.SetLabel(ctx->describe());
-}
-BENCHMARK(BM_GpuProgramVsPattern)->ArgName("mode")->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
 // LEAN mapping on the GPU, the same measure: the lean-ridges normal map on
 // the plane (tilt 70°, as Figure 12), filtered (K = 8, with the slopes'

@@ -301,6 +301,10 @@ TEST(LeanProgram, NeedsANormalMapAndAValidRoughness) {
     const LeanRenderer withCovariance(normalMapSpec(0.1)), without(normalMapSpec(0.1), false);
     EXPECT_NE(FilteredGraph(withCovariance.program, lean).estimator(0).covariancePyramid(), nullptr);
     EXPECT_EQ(FilteredGraph(without.program, lean).estimator(0).covariancePyramid(), nullptr);
+    // The lean op reads its slopes' pair's covariance (the CPU evaluator and the GLSL emitter both take it from here).
+    EXPECT_EQ(withCovariance.program.operations().back().covariancePair, withCovariance.program.leafLocation(0)[0]);
+    EXPECT_EQ(without.program.operations().back().covariancePair, -1);
+    EXPECT_EQ(withCovariance.program.operations().front().covariancePair, -1);  // the albedo reads nothing
 }
 
 }  // namespace

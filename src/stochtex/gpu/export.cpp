@@ -38,12 +38,6 @@ const char* kSampleFunction =
 
 }  // namespace
 
-std::string exportedShaderInclude() {
-    std::string text = std::string(kIncludeHeader) + "\n";
-    for (const auto& stem : shaderChunks(programRecipe("export-include").main)) text += shaderText(stem) + "\n";
-    return text + kSampleFunction;
-}
-
 std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments, const LevelAverages& levelAverages) {
     std::string text = std::string(kIncludeHeader) +
                        "// This pattern is a texture graph (docs/GRAPHS.md): its program, generated for it,\n"
@@ -294,57 +288,6 @@ void writeDescription(const std::string& dir, nlohmann::json& m, const std::stri
 
 
 }  // namespace
-
-void exportPattern(const Pattern& pattern, const FilterOptions& options, const std::string& dir,
-                   const ExportOptions& exportOptions) {
-    if (options.source != StatisticsSource::Estimators)
-        throw InputError::parameter("source", "must be estimators to export (filter paper or smooth), got " +
-                                                  enumName(kStatisticsSourceNames, options.source));
-    const FilteredPattern f(pattern, options);  // validates the options
-    makeFolder(dir);
-    const FootprintEstimator& est = f.estimator();
-    const TiledField& field = f.field();
-    nlohmann::json m;
-    m["version"] = 1;
-    m["filter"] = filterName(options);
-    m["estimator"] = enumName(kVarianceEstimatorNames, options.estimator);  // paper, or deliot-heitz (uPattern.deliotHeitz)
-    m["response"] = enumName(kResponseKindNames, options.response.kind);
-    m["example_size"] = field.exampleSize();
-    m["levels"] = est.maxLod() + 1;
-    m["means"] = {field.channel(0).example().mean(), field.channel(1).example().mean()};
-    m["seeds"] = {field.channel(0).offsetSeed(), field.channel(1).offsetSeed()};
-    m["grid_density"] = field.gridDensity();
-    m["covariance"] = est.covariancePyramid() != nullptr;
-    m["aniso"] = options.aniso;
-    nlohmann::json averages = {{"x", nlohmann::json::array()}, {"y", nlohmann::json::array()}, {"cov", nlohmann::json::array()}};
-    for (int l = 0; l <= est.maxLod(); ++l) {
-        averages["x"].push_back(est.pyramid(0).averageMoment(l));
-        averages["y"].push_back(est.pyramid(1).averageMoment(l));
-        averages["cov"].push_back(est.covariancePyramid() ? est.covariancePyramid()->averageMoment(l) : 0.0f);
-    }
-    m["average_moments"] = averages;
-    m["stats"] = {{"x", nlohmann::json::array()}, {"y", nlohmann::json::array()}, {"covariance", nlohmann::json::array()}};
-    std::vector<WrittenFile> files;
-    writeStats(est.pyramid(0), dir, "stats_x", m["stats"]["x"], "variance V_l of N_x", files);
-    writeStats(est.pyramid(1), dir, "stats_y", m["stats"]["y"], "variance V_l of N_y", files);
-    nlohmann::json& textures = m["textures"] = nlohmann::json::array();
-    textures.push_back(pyramidTexture("uStatsX", m["stats"]["x"], "variance"));
-    textures.push_back(pyramidTexture("uStatsY", m["stats"]["y"], "variance"));
-    if (est.covariancePyramid()) {
-        writeStats(*est.covariancePyramid(), dir, "covariance", m["stats"]["covariance"],
-                   "covariance C_l of N_x and N_y (R is E_l of N_x)", files);
-        textures.push_back(pyramidTexture("uCovariance", m["stats"]["covariance"], "covariance, R the mean of N_x"));
-    } else {
-        // Not read (covariance false), but a sampler of uStatsX's type on a unit of its own.
-        nlohmann::json unread = pyramidTexture("uCovariance", m["stats"]["x"], "variance");
-        unread["read"] = false;
-        textures.push_back(unread);
-    }
-    const ColormapTable& h = f.blendingSpaceColormap();
-    m["table"] = writeTable(f.table(), h.resolutionX(), h.resolutionY(), "table.exr", "uTable", "the prefiltered table H̄",
-                            dir, exportOptions, textures, files);
-    writeDescription(dir, m, exportedShaderInclude(), files, "");
-}
 
 void exportGraph(const GraphPattern& graph, const FilterOptions& options, const std::string& dir,
                  const ExportOptions& exportOptions) {

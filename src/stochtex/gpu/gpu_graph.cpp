@@ -112,15 +112,12 @@ void writeTexelSource(std::ostringstream& o, const GraphPattern& graph, const Le
 // (filtered), in the CPU evaluator's order (pattern/graph_pattern.cpp): each
 // op's call with its context — its table, the camera's eye, the scene's
 // light (gLightDirection.w = 1 when it has one) and, filtered, the
-// covariance of the pair its first input is in when that pair estimates it.
+// covariance of its Operation::covariancePair.
 void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filtered, GraphMoments moments) {
     int out = graph.leafCount();
     for (const GraphPattern::Operation& op : graph.operations()) {
         const auto in = [&](int k) { return op.inputs[size_t(k)] >= 0 ? slot(op.inputs[size_t(k)]) : "vec3(0.0)"; };
-        const int first = op.inputs[0];
-        const int pair = first >= 0 && first < graph.leafCount() ? graph.leafLocation(first)[0] : -1;
-        const std::string cov =
-            filtered && pair >= 0 && graph.pairCovariance(pair) ? "p" + std::to_string(pair) + ".cov" : "0.0";
+        const std::string cov = filtered && op.covariancePair >= 0 ? "p" + std::to_string(op.covariancePair) + ".cov" : "0.0";
         const std::string ctx = "OpContext(" + std::to_string(op.table) + ", gEyeDirection, gLightDirection, " + cov + ")";
         o << "    vec3 " << slot(out) << " = " << opGlslCall(op.params, filtered, in(0), in(1), in(2), ctx) << ";  // "
           << op.id << "\n";
@@ -342,8 +339,8 @@ void GpuGraph::bind(unsigned program) const {
     };
     for (const auto& [name, texture] : m.planes) bind(GL_TEXTURE_2D, name, texture.id());
     for (const auto& [name, texture] : m.arrays) bind(GL_TEXTURE_2D_ARRAY, name, texture.id());
-    // Samplers declared but not bound (the filtered set when unfiltered, the
-    // response chunk's): on a unit of their own type, since GL refuses to
+    // Samplers declared but not bound (the filtered set when unfiltered):
+    // on a unit of their own type, since GL refuses to
     // draw when samplers of two types share one.
     for (int k = 0; k < kMaxUnits; ++k) {
         const std::string leaf = std::to_string(k);
@@ -354,8 +351,6 @@ void GpuGraph::bind(unsigned program) const {
         if (std::none_of(m.arrays.begin(), m.arrays.end(), [&](const auto& a) { return a.first == name; }))
             glUniform1i(glGetUniformLocation(program, name.c_str()), int(m.planes.size()));
     }
-    for (const char* name : {"uTable", "uColormap"})
-        glUniform1i(glGetUniformLocation(program, name), int(m.planes.size()));
     const GLuint block = glGetUniformBlockIndex(program, kPatternBlockName);
     if (block != GL_INVALID_INDEX) glUniformBlockBinding(program, block, kPatternBlockBinding);
     glBindBufferBase(GL_UNIFORM_BUFFER, kPatternBlockBinding, m.parameters.id());

@@ -16,7 +16,6 @@
 #include <string>
 
 #include "stochtex/gpu/gl_context.h"
-#include "stochtex/gpu/gpu_pattern.h"
 #include "stochtex/gpu/gpu_view.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/graph_pattern.h"

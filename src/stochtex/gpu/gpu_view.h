@@ -1,5 +1,5 @@
 #pragma once
-// What GpuPattern and GpuGraph share: a program of the recipe table (gpu/
+// A GPU view (GpuGraph, a file's program, is the one today): a program of the recipe table (gpu/
 // programs.h) drawn over a camera's view, as fragments over a full-screen
 // triangle or as a compute kernel, into a float target read back, or into
 // the framebuffer bound now (a window's). A derived class owns the textures

@@ -9,19 +9,13 @@ namespace stochtex {
 
 const std::vector<ProgramRecipe>& programRecipes() {
     using K = ProgramRecipe::Kind;
-    // A graph's tables are prefiltered colormaps: their lookup is that response's chunk.
-    const std::string& R = kColormapResponseChunk;
-    const std::string& G = kColormapResponseChunk;
+    // A file's program: the chunk generated per program (gpu/gpu_graph.h)
+    // defines unfilteredColour and filteredColour by wiring the kernel
+    // functions; the main files draw it (a view, a compute kernel, a mesh)
+    // or make it an include (the export).
+    const std::string& G = kPrefilteredLookupChunk;
     static const std::vector<ProgramRecipe> recipes = {
-        {"unfiltered", K::Graphics, {"fullscreen"}, {"common", "unfiltered", R, "view", "pattern"}},
-        {"filtered", K::Graphics, {"fullscreen"}, {"common", "pattern_filtering", R, "view", "filtered"}},
-        {"unfiltered-compute", K::Compute, {}, {"common", "unfiltered", R, "view", "kernel_unfiltered", "view_kernel"}},
-        {"filtered-compute", K::Compute, {}, {"common", "pattern_filtering", R, "view", "kernel_filtered", "view_kernel"}},
-        {"scene", K::Graphics, {"mesh"}, {"common", "unfiltered", "pattern_filtering", R, "scene"}},
-        {"export-include", K::Include, {}, {"common", "pattern_filtering", R}},
         {"display", K::Graphics, {"fullscreen"}, {"display"}},  // a render target in a window, sRGB-encoded
-        // A texture graph's programs: the chunk generated per graph (gpu/gpu_graph.h) defines
-        // unfilteredColour and filteredColour by wiring the kernel functions; the rest is the pattern's.
         {"graph", K::Graphics, {"fullscreen"}, {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "pattern"}},
         {"graph-filtered", K::Graphics, {"fullscreen"},
          {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "filtered"}},

@@ -2,13 +2,9 @@
 // The shader programs stochtex builds, as one table: a name, its stages and
 // the shader files (stems) each stage is assembled from. The kernel files a
 // stage needs are added by the assembler (shaderChunks), so a recipe names
-// only what it uses directly. GpuPattern, the scene, the export and the
-// tests (compilation, glslangValidator) all read this table.
-//
-// The hand-written pattern recipes read the prefiltered colormap's chunk
-// (response_prefiltered_colormap: footprintResponse and pointResponse,
-// which filtering.glsl and unfiltered.glsl declare); a response that shades
-// more is an op of a file's program (the graph recipes).
+// only what it uses directly. GpuGraph (every file's program), the scene,
+// the export and the tests (compilation, glslangValidator) all read this
+// table.
 #include <string>
 #include <vector>
 
@@ -30,16 +26,15 @@ struct ProgramRecipe {
 
 // The uniform block of the pattern's parameters (kernel::PatternParams) that
 // every recipe's programs declare (gpu/shaders/common.glsl), and the binding
-// point GpuPattern::bind attaches it to.
+// point GpuGraph::bind attaches it to.
 inline constexpr const char* kPatternBlockName = "PatternParameters";
 inline constexpr unsigned kPatternBlockBinding = 0;
 
 // The stem the texture-graph recipes read for the chunk generated per graph
 // (gpu/gpu_graph.h, graphProgramSource); its text is passed as an override.
 inline const std::string kGraphProgramStem = "graph_program";
-// The prefiltered colormap's chunk (stem): the pattern recipes' response,
-// the graph recipes' table lookups.
-inline const std::string kColormapResponseChunk = "response_prefiltered_colormap";
+// The chunk (stem) of the prefiltered tables' lookup, prefilteredLookup.
+inline const std::string kPrefilteredLookupChunk = "prefiltered_lookup";
 
 const std::vector<ProgramRecipe>& programRecipes();
 // InputError-free: an unknown name is a programming error (std::invalid_argument).

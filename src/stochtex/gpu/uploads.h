@@ -1,7 +1,7 @@
 #pragma once
 // What the GPU programs read, uploaded: float textures read with texelFetch,
 // statistics pyramids as mip chains, RGB tables as texture arrays, and the
-// view's uniforms (gpu/shaders/view.glsl). GpuPattern and GpuGraph share them.
+// view's uniforms (gpu/shaders/view.glsl), for GpuGraph and the scene.
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/gpu/gl_objects.h"
 #include "stochtex/pattern/camera.h"

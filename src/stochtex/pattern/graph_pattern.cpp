@@ -260,6 +260,10 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         }
         // A lean node reads its slopes along u and v, then the albedo.
         if (lean) op.inputs = {slot.at(g->id + ".slope_u"), slot.at(g->id + ".slope_v"), slot.at(g->inputs.at("albedo"))};
+        if (const int first = op.inputs[0]; first >= 0 && first < p.leafCount()) {
+            const int pair = p.leafLocation_[size_t(first)][0];
+            if (p.pairCovariance_[size_t(pair)]) op.covariancePair = pair;
+        }
         const size_t tablesBefore = p.tables_.size();
         OpBuild b{*g, [&](const std::string& port) { return gaussianizedLeaf(g->inputs.at(port)); }, p.tables_};
         op.params = bindOp(g->info->op, b);
@@ -496,10 +500,7 @@ Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
         ctx.table = op.table;
         ctx.pointTable = op.table >= 0 ? &graph_.tables()[size_t(op.table)].point : nullptr;
         ctx.prefilteredTable = op.table >= 0 && size_t(op.table) < tables_.size() ? &tables_[size_t(op.table)] : nullptr;
-        // The covariance of the pair of leaves the first input is in (a lean node's slopes).
-        const int first = op.inputs[0];
-        const size_t pair =
-            first >= 0 && first < graph_.leafCount() ? size_t(graph_.leafLocation(first)[0]) : pairCovariances.size();
+        const size_t pair = op.covariancePair >= 0 ? size_t(op.covariancePair) : pairCovariances.size();
         ctx.slopeCov = pair < pairCovariances.size() ? pairCovariances[pair] : 0.0f;
         slots[out] = opFiltered(op.params, input(slots, op, 0), input(slots, op, 1), input(slots, op, 2), ctx);
         // Only the tables make a field non-Gaussian; MeanOnly drops what they add.

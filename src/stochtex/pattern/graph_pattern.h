@@ -76,6 +76,11 @@ public:
         const NodeInfo* info = nullptr;         // its type
         std::array<int, 3> inputs{-1, -1, -1};  // slots, in the node's port order (lean: its slopes, then the albedo)
         int table = -1;                         // the op's table in tables(), −1: none
+        // The leaf pair whose covariance the op reads filtered (OpContext::
+        // slopeCov): its first input's pair, when that pair estimates its
+        // covariance (a lean op's slopes); −1: none (slopeCov = 0). Decided
+        // here once for the CPU evaluator and the GLSL emitter.
+        int covariancePair = -1;
         OpParams params;                        // the op and its typed parameters
     };
     using Table = OpTable;

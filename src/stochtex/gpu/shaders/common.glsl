@@ -64,6 +64,6 @@ vec3 tableLookup(sampler2DArray table, int layer, vec2 xy) {
 }
 
 // The pattern's parameters (kernel/pattern_params.glsl): one std140 block,
-// filled on the CPU from the same struct (GpuPattern::bind, an engine from
+// filled on the CPU from the same struct (GpuGraph::bind, an engine from
 // the export's README).
 layout(std140) uniform PatternParameters { PatternParams uPattern; };
