@@ -28,13 +28,6 @@ inline double meanRgbDistance(const Image& a, const Image& b) {
     return s / double(a.pixelCount());
 }
 
-// The largest |a − b| over the samples (images of one shape).
-inline double maxAbsDifference(const Image& a, const Image& b) {
-    double m = 0;
-    for (size_t i = 0; i < a.data().size(); ++i) m = std::max(m, std::abs(double(a.data()[i]) - double(b.data()[i])));
-    return m;
-}
-
 // A path under the temp folder unique to this test process, so that
 // parallel ctest runs and other checkouts' tests never share files.
 inline std::filesystem::path scratchPath(const std::string& name) {

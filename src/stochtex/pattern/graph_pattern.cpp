@@ -290,7 +290,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
 
 bool GraphPattern::shadesLight() const {
     return std::any_of(operations_.begin(), operations_.end(),
-                       [](const Operation& op) { return std::holds_alternative<LeanOp::Params>(op.params); });
+                       [](const Operation& op) { return opShadesLight(op.params); });
 }
 
 const ColormapTable* GraphPattern::plainColormap() const {

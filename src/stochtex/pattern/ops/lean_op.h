@@ -18,6 +18,7 @@ namespace stochtex {
 struct LeanOp {
     using Params = kernel::LeanParams;
     static constexpr const char* kKernel = "lean_op";
+    static constexpr bool kShadesLight = true;  // reads OpContext's eye and light (ops.h, opShadesLight)
     static NodeInfo info() {
         return {
             "lean",

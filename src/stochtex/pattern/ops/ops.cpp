@@ -67,6 +67,18 @@ kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kern
     return std::visit([&](const auto& p) { return kernel::opFiltered(p, a, b, c, ctx); }, op);
 }
 
+bool opShadesLight(const OpParams& op) {
+    return std::visit(
+        [](const auto& p) {
+            using Op = OpAt<indexOfParams<std::decay_t<decltype(p)>>()>;
+            if constexpr (requires { Op::kShadesLight; })
+                return Op::kShadesLight;
+            else
+                return false;
+        },
+        op);
+}
+
 const char* opKernelStem(const OpParams& op) {
     return std::visit([](const auto& p) { return OpAt<indexOfParams<std::decay_t<decltype(p)>>()>::kKernel; }, op);
 }

@@ -65,6 +65,9 @@ kernel::vec3 opPoint(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kernel:
 kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kernel::vec3 c,
                         const kernel::OpContext& ctx);
 
+// Whether the op lights its colour: it reads OpContext's eye and light (an
+// op declares `static constexpr bool kShadesLight = true`; false otherwise).
+bool opShadesLight(const OpParams& op);
 // The embedded kernel file that defines the op (the GPU program includes it).
 const char* opKernelStem(const OpParams& op);
 // The GLSL call of the op: "opPoint(AffineParams(2.0, 0.5), a, b, c, ctx)"
