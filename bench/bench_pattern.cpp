@@ -6,17 +6,16 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/noise/spectrum.h"
-#include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/graph_pattern.h"
-#include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/presets.h"
 
 using namespace stochtex;
 
 namespace {
 
-const Pattern& camouflage() {
-    static const Pattern p = Pattern::build(loadPreset("camouflage"));
+// The camouflage preset's program: two leaves → colormap.
+const GraphPattern& camouflage() {
+    static const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
     return p;
 }
 
@@ -26,7 +25,7 @@ void BM_RenderUnfiltered(benchmark::State& state) {
     ThreadLimit limit(int(state.range(0)));
     View view;
     view.width = view.height = 1024;
-    const Pattern& p = camouflage();
+    const GraphPattern& p = camouflage();
     for (auto _ : state) {
         Image img = p.render(view);
         benchmark::DoNotOptimize(img.data().data());
@@ -36,13 +35,14 @@ void BM_RenderUnfiltered(benchmark::State& state) {
 }
 BENCHMARK(BM_RenderUnfiltered)->Arg(0)->Arg(1)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// One noise only, to separate tiling-and-blending from colormap cost.
+// One noise only (the program's first leaf, as gray), to separate
+// tiling-and-blending from colormap cost.
 void BM_RenderSingleNoise(benchmark::State& state) {
     View view;
     view.width = view.height = 1024;
-    const Pattern& p = camouflage();
+    const GraphPattern& p = camouflage();
     for (auto _ : state) {
-        Image img = p.renderNoise(0, view);
+        Image img = p.renderNode(view, p.leafIds().front());
         benchmark::DoNotOptimize(img.data().data());
     }
     state.counters["Mtexel/s"] = benchmark::Counter(double(view.width) * view.height * 1e-6,
@@ -50,11 +50,11 @@ void BM_RenderSingleNoise(benchmark::State& state) {
 }
 BENCHMARK(BM_RenderSingleNoise)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Building a pattern: two 256² spectral examples (FFT) + painted colormap.
+// Building a pattern's program: two 256² spectral examples (FFT) + painted colormap.
 void BM_BuildPattern(benchmark::State& state) {
     const PatternSpec spec = loadPreset("camouflage");
     for (auto _ : state) {
-        Pattern p = Pattern::build(spec);
+        GraphPattern p = GraphPattern::build(spec);
         benchmark::DoNotOptimize(&p);
     }
 }
@@ -64,11 +64,11 @@ BENCHMARK(BM_BuildPattern)->Unit(benchmark::kMillisecond);
 // one run so machine drift cancels in the ratio. Args: scale (footprint
 // side in texels), filter mode (1 paper, 2 smooth), anisotropy K.
 void BM_FilteredVsUnfiltered(benchmark::State& state) {
-    const Pattern& p = camouflage();
+    const GraphPattern& p = camouflage();
     FilterOptions o;
     o.use(parseFilter(state.range(1) == 1 ? "paper" : "smooth"));
     o.aniso = int(state.range(2));
-    const FilteredPattern f(p, o);
+    const FilteredGraph f(p, o);
     Camera cam;
     cam.view.width = cam.view.height = 512;
     cam.view.scale = double(state.range(0));
@@ -91,11 +91,11 @@ BENCHMARK(BM_FilteredVsUnfiltered)
 // A perspective plane (tilt 75°): footprints from 1 to thousands of texels,
 // strongly anisotropic near the horizon.
 void BM_PlaneFiltered(benchmark::State& state) {
-    const Pattern& p = camouflage();
+    const GraphPattern& p = camouflage();
     FilterOptions o;
     o.use(parseFilter("smooth"));
     o.aniso = int(state.range(0));
-    const FilteredPattern f(p, o);
+    const FilteredGraph f(p, o);
     Camera cam;
     cam.kind = Camera::Kind::Plane;
     cam.tiltDeg = 75;
@@ -163,7 +163,7 @@ BENCHMARK(BM_BuildPyramids512)->Unit(benchmark::kMillisecond);
 
 // Precomputation of the prefiltered table H̄ from a 256² colormap.
 void BM_BuildPrefilteredTable(benchmark::State& state) {
-    const ColormapTable h = camouflage().colormap();
+    const ColormapTable h = camouflage().tables().front().blended;
     const PrefilterMode mode = state.range(0) == 1 ? PrefilterMode::Paper : PrefilterMode::Smooth;
     size_t bytes = 0;
     for (auto _ : state) {
@@ -179,8 +179,8 @@ BENCHMARK(BM_BuildPrefilteredTable)->ArgName("mode")->Arg(1)->Arg(2)->Unit(bench
 // over 2000 random isotropic footprints of 1–128 texels (counters: mean and
 // max |Δμ̂_x|, |Δσ̂_x| between float and 8-bit pyramids).
 void BM_Pack8Loss(benchmark::State& state) {
-    const Pattern& p = camouflage();
-    const FootprintEstimator full(p.tiledField(), false), packed(p.tiledField(), false, true);
+    const GraphPattern& p = camouflage();
+    const FootprintEstimator full(p.leafPairs().front(), false), packed(p.leafPairs().front(), false, true);
     double dmu = 0, dsigma = 0, maxMu = 0, maxSigma = 0;
     const int count = 2000;
     for (auto _ : state) {

@@ -20,7 +20,7 @@ set(stochtex_sanitized_test_sources
   pattern/hostile_input_test.cpp
   pattern/pattern_test.cpp
   pattern/linear_light_test.cpp
-  pattern/filtered_pattern_test.cpp
+  pattern/filtered_program_test.cpp
   pattern/lean_test.cpp
   pattern/camera_test.cpp
   pattern/texture_graph_test.cpp

@@ -12,10 +12,10 @@
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_view.h"
 #include "stochtex/image/image_io.h"
-#include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/filter_options.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 
 namespace stochtex::cli {
@@ -140,7 +140,7 @@ void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& hel
 const EnumNames<NamedFilter>& gpuFilterNames();
 
 // --response NAME (kResponseKindNames) and --no-covariance: the response
-// axis of the filter (pattern/response.h). --filter names a pair with the
+// axis of the filter (pattern/filter_options.h). --filter names a pair with the
 // prefiltered colormap; --response lean shades the pattern's normal map
 // instead, from the statistics the filter names (none: the point's slope;
 // paper/smooth: the estimators; exact; reference: supersampled shading).

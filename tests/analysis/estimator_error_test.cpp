@@ -7,7 +7,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/texture_graph.h"
 #include "test_util.h"
 
@@ -92,12 +92,12 @@ TEST(EstimatorError, GraphDerivativeFieldIsFilteredLikeAnyExample) {
     const std::string text = R"({"size": 32, "nodes": {)" + std::string(R"("h": {"type": "spectral_noise", "size": 128, "seed": 9, "components": [{"shape": "ring", "frequency": 6, "bandwidth": 3}]},
         "du": {"type": "derivative", "input": "h", "angle": 0}, "dv": {"type": "derivative", "input": "h", "angle": 90},
         "c": {"type": "colormap", "x": "du", "y": "dv", "colormap": {"type": "gaussian"}})") + R"(}, "output": "c"})";
-    const Pattern p = Pattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "g.json"), "g.json"), "."));
+    const GraphPattern p = GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "g.json"), "g.json"), "."));
     EstimatorErrorOptions o;
     o.footprints = {2, 4, 16, 64};
     o.count = 300;
     o.maxSamplesPerAxis = 128;
-    const std::vector<EstimatorError> rows = measureEstimatorErrors(p.tiledField(), o);
+    const std::vector<EstimatorError> rows = measureEstimatorErrors(p.leafPairs().front(), o);
     for (int f : o.footprints) {
         const EstimatorError *paper = nullptr, *dh = nullptr, *global = nullptr;
         for (const EstimatorError& e : rows)

@@ -4,7 +4,7 @@
 
 #include "stochtex/analysis/zoom_stability.h"
 #include "stochtex/core/hash.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
 
 using namespace stochtex;
@@ -33,9 +33,9 @@ TEST(ZoomStability, CompensationCancelsThePureZoom) {
 }
 
 TEST(ZoomStability, FilteringRemovesMostFlicker) {
-    const Pattern p = Pattern::build(loadPreset("marble"));
+    const GraphPattern p = GraphPattern::build(loadPreset("marble"));
     auto run = [&](const char* filter) {
-        const FilteredPattern f(p, FilterOptions{}.use(parseFilter(filter)));
+        const FilteredGraph f(p, FilterOptions{}.use(parseFilter(filter)));
         return measureZoomStability(
                    [&](double s) {
                        Camera c;

@@ -2,19 +2,16 @@
 // (examples at most 32 texels, colormaps and curves at most 32 entries a
 // side), then render 8×8 pixels unfiltered and with every filter, in the zoom
 // view at the pattern's scale and in the plane view with anisotropic probes.
-// A texture graph with non-linear nodes before its output goes through its
-// own evaluator (GraphPattern, FilteredGraph) the same way.
+// Every file is its program (GraphPattern, FilteredGraph); a file with a
+// normal map also under the lean response.
 #include "fuzz_target.h"
 #include "stochtex/pattern/camera.h"
-#include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/graph_pattern.h"
-#include "stochtex/pattern/pattern.h"
 
 namespace {
 
-// Renders through every filter with `Filtered` (FilteredPattern or FilteredGraph over `built`).
-template <class Filtered, class Built>
-void renderEveryFilter(const Built& built, const stochtex::View& view) {
+// Renders the program through every filter.
+void renderEveryFilter(const stochtex::GraphPattern& program, const stochtex::View& view) {
     using namespace stochtex;
     Camera zoom;
     zoom.view = view;
@@ -25,12 +22,12 @@ void renderEveryFilter(const Built& built, const stochtex::View& view) {
         FilterOptions options;
         options.use(filter);
         options.referenceMaxSamples = 8;  // keeps exact and reference at ≤ 64 samples a pixel
-        (void)Filtered(built, options).render(zoom);
+        (void)FilteredGraph(program, options).render(zoom);
     }
     FilterOptions aniso;
     aniso.use(parseFilter("smooth"));
     aniso.aniso = 8;
-    (void)Filtered(built, aniso).render(plane);
+    (void)FilteredGraph(program, aniso).render(plane);
 }
 
 }  // namespace
@@ -67,15 +64,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 
         const GraphPattern program = GraphPattern::build(spec);  // every file's program
         (void)program.render(view);
-        renderEveryFilter<FilteredGraph>(program, view);
+        renderEveryFilter(program, view);
         if (spec.normalMap) {  // under the lean response: its normal map's program
             const GraphPattern lean = GraphPattern::build(spec, {ResponseKind::Lean});
             (void)lean.render(view);
-            renderEveryFilter<FilteredGraph>(lean, view);
+            renderEveryFilter(lean, view);
         }
-        if (spec.graph) return;
-        const Pattern pattern = Pattern::build(spec);  // the hand-written colormap evaluator
-        (void)pattern.render(view);
-        renderEveryFilter<FilteredPattern>(pattern, view);
     });
 }

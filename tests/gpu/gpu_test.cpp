@@ -20,7 +20,7 @@
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/cpu_renderer.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"

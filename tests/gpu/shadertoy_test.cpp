@@ -366,7 +366,7 @@ TEST_F(Shadertoy, FramesFeedTheStudiesAsATextureSource) {
 // A program with a pattern: stochtex_sample(uv) is the filtered pattern
 // (the export's include, the footprint from the fragment's derivatives), as
 // the CPU filters it over the same zoom view; a graph pattern too.
-TEST_F(Shadertoy, PatternIncludeSamplesTheFilteredPattern) {
+TEST_F(Shadertoy, PatternIncludeSamplesTheFilteredProgram) {
     for (const std::string preset : {"camouflage", "figure14"}) {
         const PatternSpec spec = loadPreset(preset);
         const GraphPattern program = GraphPattern::build(spec);

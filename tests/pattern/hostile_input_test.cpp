@@ -15,7 +15,7 @@
 #include "stochtex/noise/gaussianize.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/json_reader.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 #include "test_util.h"

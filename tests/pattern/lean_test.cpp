@@ -11,7 +11,6 @@
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/kernel/lean.h"
 #include "stochtex/noise/slopes.h"
-#include "stochtex/pattern/filtered_pattern.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
 #include "test_util.h"
@@ -284,9 +283,8 @@ TEST(LeanProgram, DiffuseConvergesToTheReferenceAtLargeFootprints) {
     }
 }
 
-// The lean response needs a normal map and a valid shading; it is a file's
-// program, not the colormap's evaluator's; the slopes' covariance pyramid
-// is built only when the lean node reads it.
+// The lean response needs a normal map and a valid shading; the slopes'
+// covariance pyramid is built only when the lean node reads it.
 TEST(LeanProgram, NeedsANormalMapAndAValidRoughness) {
     const std::string message = test::inputErrorOf([] { normalMapSpec(-0.1); }).what();
     EXPECT_NE(message.find("/normal_map/roughness: roughness must be in [0.001, 10], got -0.1"), std::string::npos)
@@ -296,8 +294,6 @@ TEST(LeanProgram, NeedsANormalMapAndAValidRoughness) {
     EXPECT_EQ(test::inputErrorOf([&] { LeanRenderer{colourOnly}; }).parameter(), "response");
     FilterOptions lean;
     lean.response.kind = ResponseKind::Lean;
-    const Pattern colours = Pattern::build(normalMapSpec(0.1));
-    EXPECT_EQ(test::inputErrorOf([&] { FilteredPattern(colours, lean); }).parameter(), "response");
     const LeanRenderer withCovariance(normalMapSpec(0.1)), without(normalMapSpec(0.1), false);
     EXPECT_NE(FilteredGraph(withCovariance.program, lean).estimator(0).covariancePyramid(), nullptr);
     EXPECT_EQ(FilteredGraph(without.program, lean).estimator(0).covariancePyramid(), nullptr);

@@ -8,7 +8,7 @@
 
 #include "stochtex/image/colour_space.h"
 #include "stochtex/image/image_io.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "test_util.h"
 
@@ -37,14 +37,14 @@ class LinearLight : public test::ScratchFolder {};
 // black, half white: linear ½, which the PNG writes as code 188 (an average
 // of sRGB codes, as before, wrote 128).
 TEST_F(LinearLight, HalfBlackHalfWhiteIsLinearHalfAndCode188InThePng) {
-    const Pattern p = Pattern::build(specFromText(patternText(kBlackWhite)));
+    const GraphPattern p = GraphPattern::build(specFromText(patternText(kBlackWhite)));
     Camera cam;
     cam.view.width = cam.view.height = 4;
     cam.view.scale = 4 * 64;  // texels per pixel
     for (const char* filter : {"smooth", "paper", "exact", "reference"}) {
         FilterOptions o;
         o.use(parseFilter(filter));
-        const Image img = FilteredPattern(p, o).render(cam);
+        const Image img = FilteredGraph(p, o).render(cam);
         const std::string file = (dir_ / (std::string(filter) + ".png")).string();
         writeImage(file, img);
         const Image png = readImage(file);

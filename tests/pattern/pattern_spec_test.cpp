@@ -9,7 +9,6 @@
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/pattern_members.h"
 #include "stochtex/pattern/graph_pattern.h"
-#include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/presets.h"
 #include "test_util.h"
@@ -157,7 +156,6 @@ TEST(Presets, RequiredPresetsExistAndBuild) {
         const PatternSpec s = loadPreset(n);
         EXPECT_EQ(s.name, n);
         EXPECT_EQ(GraphPattern::build(s).exampleSize(), 256) << n;
-        if (!s.graph) EXPECT_EQ(Pattern::build(s).exampleSize(), 256) << n;  // the hand-written colormap evaluator
     }
 }
 

@@ -6,7 +6,7 @@
 
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_io.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
 
 using namespace stochtex;
@@ -34,64 +34,69 @@ View smallView() {
 
 }  // namespace
 
-TEST(Pattern, ColormapOfXOnlyIgnoresNy) {
+TEST(PlainProgram, ColormapOfXOnlyIgnoresNy) {
     PatternSpec spec = loadPreset("gaussian");  // H(x, y) = x
     spec.colormap.transfer = Transfer::Linear;    // as data: the pixel is N_x itself
-    const Image a = Pattern::build(spec).render(smallView());
+    const Image a = GraphPattern::build(spec).render(smallView());
     // Change noise_y completely: another spectrum and another example seed.
     spec.noise[1].spectrum.components[0].shape = SpectrumShape::Ring;
     spec.noise[1].spectrum.components[0].frequency = 30;
     spec.noise[1].spectrum.components[0].bandwidth = 4;
     spec.noise[1].explicitSeed = true;
     spec.noise[1].spectrum.seed = 4242;
-    const Pattern p = Pattern::build(spec);
+    const GraphPattern p = GraphPattern::build(spec);
     const Image b = p.render(smallView());
     EXPECT_EQ(a.data(), b.data());
     // And the pixel is N_x itself.
-    const Image nx = p.renderNoise(0, smallView());
+    const Image nx = p.renderNode(smallView(), p.leafIds()[0]);
     for (int y = 0; y < nx.height(); y += 7)
-        for (int x = 0; x < nx.width(); x += 5) EXPECT_NEAR(b.at(x, y, 0), nx.at(x, y), 1e-6f);
+        for (int x = 0; x < nx.width(); x += 5) EXPECT_NEAR(b.at(x, y, 0), nx.at(x, y, 0), 1e-6f);
 }
 
-TEST(Pattern, PixelIsColormapOfField) {
-    const Pattern p = Pattern::build(loadPreset("camouflage"));
+TEST(PlainProgram, PixelIsColormapOfField) {
+    const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
     const View v = smallView();
     const Image img = p.render(v);
     for (int y = 0; y < v.height; y += 9)
         for (int x = 0; x < v.width; x += 11) {
             const double u = (v.offsetU + (x + 0.5) * v.scale) / p.exampleSize();
             const double w = (v.offsetV + (y + 0.5) * v.scale) / p.exampleSize();
-            const auto n = p.field(u, w);
-            const Rgb c = p.colormap().sample(n[0], n[1]);
+            // N(uv): each leaf tiled and blended on the one triangle grid, in output space.
+            const BlendStencil stencil = triangleGrid(u, w, p.gridDensity());
+            float n[2];
+            for (int k = 0; k < 2; ++k)
+                n[k] = p.leaf(k).example().toOutput(p.leaf(k).blend(stencil, periodFraction(u), periodFraction(w)));
+            ASSERT_NE(p.plainColormap(), nullptr);
+            const Rgb c = p.plainColormap()->sample(n[0], n[1]);
             for (int k = 0; k < 3; ++k) EXPECT_EQ(img.at(x, y, k), c[size_t(k)]);
         }
 }
 
-TEST(Pattern, SameSeedIsByteIdenticalForAnyThreadCount) {
+TEST(PlainProgram, SameSeedIsByteIdenticalForAnyThreadCount) {
     const PatternSpec spec = loadPreset("marble");
     View v;
     v.width = v.height = 256;
     std::string one, all;
     {
         ThreadLimit limit(1);
-        one = pngBytes(Pattern::build(spec).render(v), "one");
+        one = pngBytes(GraphPattern::build(spec).render(v), "one");
     }
     {
         ThreadLimit limit(0);
-        all = pngBytes(Pattern::build(spec).render(v), "all");
+        all = pngBytes(GraphPattern::build(spec).render(v), "all");
     }
     {
         ThreadLimit limit(3);
-        EXPECT_EQ(pngBytes(Pattern::build(spec).render(v), "three"), one);
+        EXPECT_EQ(pngBytes(GraphPattern::build(spec).render(v), "three"), one);
     }
     EXPECT_EQ(one, all);
     PatternSpec other = spec;
     other.seed += 1;
-    EXPECT_NE(pngBytes(Pattern::build(other).render(v), "other"), one);
+    EXPECT_NE(pngBytes(GraphPattern::build(other).render(v), "other"), one);
 }
 
-TEST(Pattern, RegionRendersTheSamePixelsAsTheWhole) {
-    const Pattern p = Pattern::build(loadPreset("woven"));
+TEST(PlainProgram, RegionRendersTheSamePixelsAsTheWhole) {
+    const GraphPattern p = GraphPattern::build(loadPreset("woven"));
     View whole;
     whole.width = whole.height = 128;
     whole.scale = 2.0;

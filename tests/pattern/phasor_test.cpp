@@ -10,7 +10,7 @@
 #include "stochtex/image/colour_space.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/noise/spectrum.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/presets.h"
 #include "test_util.h"
@@ -27,13 +27,18 @@ constexpr double kStripesFrequency = 24.0, kStripesOrientation = 30.0;
 struct FieldSamples {
     std::vector<double> u, v, x, y;
 };
-FieldSamples sampleField(const Pattern& p, int count) {
+// N(uv) of a plain program: its two leaves (slots 0 and 1), in output space.
+std::array<float, 2> field(const GraphPattern& p, double u, double v) {
+    return {p.evaluate(u, v, 0, GraphPattern::kFromAbove)[0], p.evaluate(u, v, 1, GraphPattern::kFromAbove)[0]};
+}
+
+FieldSamples sampleField(const GraphPattern& p, int count) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> uni(0.0, 4.0);  // four example periods
     FieldSamples s;
     for (int i = 0; i < count; ++i) {
         const double u = uni(rng), v = uni(rng);
-        const auto n = p.field(u, v);
+        const auto n = field(p, u, v);
         s.u.push_back(u);
         s.v.push_back(v);
         s.x.push_back(n[0]);
@@ -65,9 +70,9 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
 // 1/√n ≈ 0.007, so |corr| < 0.02 holds with margin (measured 0.006).
 TEST(Phasor, QuadraturePartnerIsUncorrelatedAtTheSamePoint) {
     const PatternSpec spec = loadPreset("phasor-stripes");
-    const Pattern p = Pattern::build(spec);
-    const Image& ex = p.example(0).values();
-    const Image& ey = p.example(1).values();
+    const GraphPattern p = GraphPattern::build(spec);
+    const Image& ex = p.leaf(0).example().values();
+    const Image& ey = p.leaf(1).example().values();
     std::vector<double> a(ex.data().begin(), ex.data().end()), b(ey.data().begin(), ey.data().end());
     EXPECT_LT(std::abs(correlation(a, b)), 0.02);
     const FieldSamples s = sampleField(p, 20000);
@@ -76,7 +81,7 @@ TEST(Phasor, QuadraturePartnerIsUncorrelatedAtTheSamePoint) {
     // lobe, N_y follows N_x (cos(θ − π/2) = sin θ): correlation ≥ 0.8 (measured 0.98).
     const double t = kStripesOrientation * kPi / 180.0, q = 0.25 / kStripesFrequency;
     std::vector<double> shifted;
-    for (size_t i = 0; i < s.u.size(); ++i) shifted.push_back(p.field(s.u[i] - q * std::cos(t), s.v[i] + q * std::sin(t))[0]);
+    for (size_t i = 0; i < s.u.size(); ++i) shifted.push_back(field(p, s.u[i] - q * std::cos(t), s.v[i] + q * std::sin(t))[0]);
     EXPECT_GT(correlation(shifted, s.y), 0.8);
 }
 
@@ -86,8 +91,8 @@ TEST(Phasor, QuadraturePartnerIsUncorrelatedAtTheSamePoint) {
 // spectra within 0.1% of the total power (summed absolute difference;
 // measured 0.0035%), and the totals within 0.1%.
 TEST(Phasor, QuadraturePartnerHasTheSameSpectrumMagnitude) {
-    const Pattern p = Pattern::build(loadPreset("phasor-stripes"));
-    const Image px = powerSpectrum(p.example(0).values()), py = powerSpectrum(p.example(1).values());
+    const GraphPattern p = GraphPattern::build(loadPreset("phasor-stripes"));
+    const Image px = powerSpectrum(p.leaf(0).example().values()), py = powerSpectrum(p.leaf(1).example().values());
     double total = 0, totalY = 0, diff = 0;
     for (size_t i = 0; i < px.data().size(); ++i) {
         total += px.data()[i];
@@ -120,12 +125,12 @@ TEST(Phasor, PhaseAdvancesAlongTheLobeAtTheLobeFrequency) {
     for (int seed = 1; seed <= seeds; ++seed) {
         PatternSpec spec = loadPreset("phasor-stripes");
         spec.seed = uint32_t(seed);
-        const Pattern p = Pattern::build(spec);
+        const GraphPattern p = GraphPattern::build(spec);
         const FieldSamples s = sampleField(p, 5000);
         const auto meanAdvance = [&](double su, double sv) {
             double re = 0, im = 0;
             for (size_t i = 0; i < s.u.size(); ++i) {
-                const auto b = p.field(s.u[i] + su, s.v[i] + sv);
+                const auto b = field(p, s.u[i] + su, s.v[i] + sv);
                 const double ax = s.x[i] - 0.5, ay = s.y[i] - 0.5, bx = b[0] - 0.5, by = b[1] - 0.5;
                 re += bx * ax + by * ay;  // b · conj(a)
                 im += by * ax - bx * ay;

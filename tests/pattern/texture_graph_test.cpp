@@ -15,7 +15,6 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/image/image_io.h"
-#include "stochtex/pattern/pattern.h"
 #include "stochtex/pattern/presets.h"
 
 namespace stochtex {
@@ -29,7 +28,7 @@ PatternSpec parse(const std::string& text) {
 std::string errorOf(const std::string& text) {
     try {
         const PatternSpec s = parse(text);
-        (void)Pattern::build(s);
+        (void)GraphPattern::build(s);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -117,7 +116,7 @@ TEST(TextureGraph, GraphOfAPresetRendersByteIdenticalToIt) {
         "c": {"type": "colormap", "x": "nx", "y": "ny", "colormap": )" +
                              nlohmann::json::parse(presetText("camouflage"))["colormap"].dump() + R"(}}, "output": "c"})";
     const View view{96, 64, 1.7, 13.25, -40.5};
-    const Image a = Pattern::build(preset).render(view), b = Pattern::build(parse(text)).render(view);
+    const Image a = GraphPattern::build(preset).render(view), b = GraphPattern::build(parse(text)).render(view);
     ASSERT_EQ(a.data().size(), b.data().size());
     EXPECT_EQ(0, std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)));
 }

@@ -19,7 +19,7 @@
 #include <string>
 
 #include "stochtex/gpu/gpu_graph.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/graph_pattern.h"
 
 namespace stochtex {

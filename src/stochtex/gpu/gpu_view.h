@@ -14,7 +14,7 @@
 #include "stochtex/gpu/gl_objects.h"
 #include "stochtex/image/image.h"
 #include "stochtex/pattern/camera.h"
-#include "stochtex/pattern/response.h"
+#include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/view_renderer.h"
 
 namespace stochtex {

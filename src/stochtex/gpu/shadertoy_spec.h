@@ -49,7 +49,7 @@
 #include <vector>
 
 #include "stochtex/core/enum_names.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/pattern_spec.h"
 
 namespace stochtex {

@@ -5,7 +5,7 @@
 // lean) filtered by FilteredGraph.
 #include <memory>
 
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/view_renderer.h"
 

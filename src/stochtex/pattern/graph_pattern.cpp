@@ -355,8 +355,7 @@ Rgb GraphPattern::evaluate(double u, double v) const { return evaluate(u, v, -1,
 // Walks the view's pixels row-parallel. Untransformed leaves share one
 // stencil per pixel, and neighbouring pixels on a scanline mostly see the
 // same three tiles, so the per-tile work of every leaf (hashing the offsets,
-// locating the rows to read) is redone only when the tiles change, as in
-// Pattern::render.
+// locating the rows to read) is redone only when the tiles change.
 Image GraphPattern::renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray) const {
     validateView(view);
     Image out(view.width, view.height, 3, Image::Uninitialized{});
@@ -603,9 +602,11 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
     Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
     const int w = graph_.exampleSize();
     // A zoom has one Jacobian for the whole image: its footprints are built
-    // once and translated to each pixel (as FilteredPattern does).
+    // once and translated to each pixel.
     const bool oneFootprint = camera.kind == Camera::Kind::Zoom && options_.source == StatisticsSource::Estimators;
     const bool shadesLight = graph_.shadesLight();
+    const bool plainEstimate =
+        options_.source == StatisticsSource::Estimators && plain_ && graph_.pairTransform(0).identity();
     std::vector<Footprint> shapes;
     if (oneFootprint) {
         double u = 0, v = 0;
@@ -616,34 +617,6 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
             shapes.push_back(makeFootprint(0.0, 0.0, transformed(graph_.pairTransform(int(k)), j), e.exampleSize(),
                                            e.maxLod(), options_.aniso));
         }
-    }
-    if (options_.source == StatisticsSource::Estimators && plain_ && graph_.pairTransform(0).identity()) {
-        // A plain program: one estimate and one lookup per pixel, as a plain
-        // pattern's; in a zoom, of the one footprint translated.
-        const FootprintEstimator& estimator = *estimators_.front();
-        parallelRows(
-            camera.view.height,
-            [&](int y0, int y1) {
-                const Footprint shape = oneFootprint ? shapes.front() : Footprint{};  // this thread's copy (false sharing)
-                for (int py = y0; py < y1; ++py)
-                    for (int px = 0; px < camera.view.width; ++px) {
-                        double u = 0, v = 0;
-                        Jacobian j;
-                        const bool onPlane = camera.footprint(px, py, w, u, v, j);
-                        const Rgb c = !onPlane ? sky_
-                                      : oneFootprint
-                                          ? plainColour(estimator.estimate(shape.translated(u, v), options_.estimator))
-                                          : plainColour(estimator.estimate(
-                                                makeFootprint(u, v, j, estimator.exampleSize(), estimator.maxLod(), options_.aniso),
-                                                options_.estimator));
-                        float* p = out.row(py) + size_t(px) * 3;
-                        p[0] = c[0];
-                        p[1] = c[1];
-                        p[2] = c[2];
-                    }
-            },
-            progress);
-        return out;
     }
     parallelRows(
         camera.view.height,
@@ -661,7 +634,17 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                     // Only a lean node reads where the eye is.
                     const Direction eye = shadesLight ? camera.viewDirection(px, py) : GraphPattern::kFromAbove;
                     Rgb c;
-                    if (oneFootprint) {
+                    if (!onPlane) {
+                        c = sky_;
+                    } else if (plainEstimate) {
+                        // A plain program: one estimate and one lookup per
+                        // pixel, as the interpreter's colormap op would
+                        // compute (bit-identical; tested).
+                        const FootprintEstimator& e = *estimators_.front();
+                        const Footprint f = oneFootprint ? zoomShapes.front().translated(u, v)
+                                                         : makeFootprint(u, v, j, e.exampleSize(), e.maxLod(), options_.aniso);
+                        c = plainColour(e.estimate(f, options_.estimator));
+                    } else if (oneFootprint) {
                         scratch.footprints.clear();
                         for (size_t k = 0; k < zoomShapes.size(); ++k) {
                             const auto [pu, pv] = graph_.pairTransform(int(k)).apply(u, v);
@@ -669,7 +652,7 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                         }
                         c = shade(scratch, eye);
                     } else {
-                        c = shade(onPlane, u, v, j, eye, scratch);
+                        c = shade(true, u, v, j, eye, scratch);
                     }
                     std::copy(c.begin(), c.end(), out.row(py) + size_t(px) * 3);
                 }

@@ -21,12 +21,11 @@
 // approximation's error against it is measured by `reproduce figure14`
 // (docs/GRAPHS.md, docs/MATH.md "Filtering a graph by moment matching").
 //
-// A graph "linear part → colormap" evaluated here gives the Pattern's own
-// values in zoom views when its colormap reads two different nodes: its two
-// leaves get the Pattern's tile-offset seeds, and its one colormap operation
-// is H̄(μ̂, σ̂) (tested). The sky differs (FilteredGraph's is the program on
-// the whole examples' moments), and a colormap reading one node twice is one
-// leaf here, where Pattern tiles it twice with two seeds.
+// A plain pattern file {noise_x, noise_y, colormap} is the program "two
+// leaves → colormap" (paper eq. 1–2): its leaves get the pattern's
+// tile-offset seeds and its colormap op is H̄(μ̂, σ̂). A graph whose colormap
+// reads two linear fields under no transform folds to the same program, and
+// both run at the plain speed (plainColormap()).
 #include <array>
 #include <memory>
 #include <string>
@@ -36,11 +35,13 @@
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/colormap.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/ops/ops.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 #include "stochtex/pattern/texture_graph.h"
+#include "stochtex/pattern/view.h"
+#include "stochtex/pattern/view_renderer.h"
 
 namespace stochtex {
 
@@ -159,9 +160,9 @@ enum class GraphMoments {
 inline const EnumNames<GraphMoments> kGraphMomentsNames{{"matched", GraphMoments::Matched},
                                                         {"mean-only", GraphMoments::MeanOnly}};
 
-// A program filtered through a camera. The options are FilteredPattern's:
-// source point / estimators / exact / reference, the prefiltered tables'
-// mode, anisotropy, variance estimator, reference samples, 8-bit pyramids.
+// A program filtered through a camera (pattern/filter_options.h): source
+// point / estimators / exact / reference, the prefiltered tables' mode,
+// anisotropy, variance estimator, reference samples, 8-bit pyramids.
 // The response is the program's last op (GraphPattern::build chose it).
 class FilteredGraph final : public ViewRenderer {
 public:
@@ -171,8 +172,8 @@ public:
 
     // The colour of sky pixels: the program on the whole examples' moments
     // (for the point source, which prefilters no table, on their means when
-    // an op reads a table); a plain pattern's program: its average colour,
-    // as FilteredPattern's.
+    // an op reads a table); a plain pattern's program: its average colour
+    // E[H(N)] in every mode.
     const Rgb& skyColour() const { return sky_; }
     // eye: the unit direction towards the eye (Camera::viewDirection), which a lean node reads.
     Rgb shade(bool onPlane, double u, double v, const Jacobian& j,

@@ -192,27 +192,6 @@ TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path&
     return graph;
 }
 
-bool foldsIntoPattern(const TextureGraph& graph) {
-    const GraphNode& out = graph.node(graph.output);
-    if (out.info->name != ColormapOp::info().name) return false;
-    // Every node upstream of the output's inputs must be linear.
-    std::vector<std::string> todo{out.inputs.at("x"), out.inputs.at("y")};
-    std::set<std::string> seen;
-    while (!todo.empty()) {
-        const std::string id = todo.back();
-        todo.pop_back();
-        if (!seen.insert(id).second) continue;
-        const GraphNode& g = graph.node(id);
-        // A Pattern has one uv for both noises, and tiles them with two
-        // seeds: a transform, or two channels that must share tiles, need
-        // GraphPattern.
-        if (!isLinearNode(g.info->kind) || g.info->kind == NodeKind::Transform || g.info->kind == NodeKind::Channel)
-            return false;
-        for (const auto& [port, from] : g.inputs) todo.push_back(from);
-    }
-    return true;
-}
-
 namespace {
 
 UvTransform nodeTransform(const TextureGraph& graph, const std::string& id, const std::string& context,
@@ -395,19 +374,6 @@ std::vector<NoiseExample> buildGraphFields(const TextureGraph& graph, const std:
     std::vector<NoiseExample> out;
     for (const std::string& id : ids) out.push_back(buildFieldOnce(graph, id, patternSeed, context, cache));
     return out;
-}
-
-GraphFields buildGraphFields(const TextureGraph& graph, uint32_t patternSeed, const std::string& context) {
-    const GraphNode& out = graph.node(graph.output);
-    FieldCache cache;
-    GraphFields f{{buildFieldOnce(graph, out.inputs.at("x"), patternSeed, context, cache),
-                   buildFieldOnce(graph, out.inputs.at("y"), patternSeed, context, cache)},
-                  out.colormap};
-    if (f.examples[0].size() != f.examples[1].size())
-        throw InputError(context + ": node \"" + graph.output + "\" (colormap): x's example is " +
-                         std::to_string(f.examples[0].size()) + " texels wide but y's is " +
-                         std::to_string(f.examples[1].size()) + "; both must have one size");
-    return f;
 }
 
 }  // namespace stochtex

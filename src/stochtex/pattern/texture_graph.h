@@ -12,9 +12,9 @@
 //
 // Evaluation folds the linear part into the examples (a linear map of a
 // tiled field is the tiled field of the mapped example, with the same tiles
-// and blend weights), so a graph "linear part → colormap" becomes the two
-// examples and the colormap of a Pattern, rendered and filtered by every
-// path exactly as a pattern file's (docs/GRAPHS.md).
+// and blend weights), so a graph "linear part → colormap" compiles to a
+// plain pattern file's program, two leaves → colormap (GraphPattern;
+// docs/GRAPHS.md).
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -72,12 +72,6 @@ struct UvTransform {
 // sum reads two fields under different transforms.
 UvTransform graphNodeTransform(const TextureGraph& graph, const std::string& id, const std::string& context);
 
-// Whether the graph is "linear part → colormap": its output is a colormap
-// node whose inputs are linear in the sources and seen through no transform
-// of uv, so that it folds into a Pattern (two examples and H). Other graphs
-// are evaluated by GraphPattern.
-bool foldsIntoPattern(const TextureGraph& graph);
-
 // The tiles a linear field node is tiled with, as a key: the id of its
 // tiled_field when every source it reads is a channel of that one tiled
 // field (all such nodes share the field's tiles), else the node's own id.
@@ -86,16 +80,6 @@ std::string graphTileGroup(const TextureGraph& graph, const std::string& id);
 // The seed of a source node without an explicit one: from the pattern seed
 // and the node's id (so adding or renaming another node changes nothing).
 uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id);
-
-// The two examples the output colormap reads (its x and y inputs, linear
-// nodes folded in) and that colormap. InputError naming the node for what
-// can only be seen while building (examples of different sizes, a linear
-// node over a Gaussianized exemplar, a flat field to differentiate).
-struct GraphFields {
-    std::array<NoiseExample, 2> examples;
-    ColormapSpec colormap;
-};
-GraphFields buildGraphFields(const TextureGraph& graph, uint32_t patternSeed, const std::string& context);
 
 // The example of any linear field node (isLinearNode), linear nodes folded in (1 channel, W×W;
 // a Gaussianized exemplar's values are T(E)). Each node is built once, so a

@@ -1,9 +1,9 @@
 #pragma once
 // What renders a camera's view of a pattern: one interface for the CPU
-// evaluators (FilteredPattern, FilteredGraph; makeCpuRenderer owns one for a
-// pattern file) and the GPU host (GpuView; gpu/gpu_graph.h has
-// makeGpuRenderer), spoken to by the CLI's render and bake-image,
-// CameraSource (the studies' frames) and the workbench.
+// evaluator (FilteredGraph; makeCpuRenderer owns one for a pattern file)
+// and the GPU host (GpuView; gpu/gpu_graph.h has makeGpuRenderer), spoken
+// to by the CLI's render and bake-image, CameraSource (the studies' frames)
+// and the workbench.
 #include <string>
 
 #include "stochtex/core/progress.h"

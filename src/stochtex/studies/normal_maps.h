@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "stochtex/core/progress.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"

@@ -11,8 +11,8 @@
 
 #include "stochtex/analysis/estimator_error.h"
 #include "stochtex/core/progress.h"
-#include "stochtex/pattern/filtered_pattern.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/filter_options.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"

@@ -3,7 +3,7 @@
 #include "stochtex/analysis/plot.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/camera.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/graph_pattern.h"
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 #include <cctype>
 #include <tuple>
 
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/workbench/live_analysis.h"
 

@@ -15,7 +15,7 @@
 
 #include "stochtex/gpu/shadertoy.h"
 #include "stochtex/pattern/camera.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/filter_options.h"
 #include "stochtex/workbench/document.h"
 #include "stochtex/workbench/live_analysis.h"
 #include "stochtex/workbench/script.h"

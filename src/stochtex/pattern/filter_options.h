@@ -1,39 +1,59 @@
 #pragma once
-// Filtered evaluation of a pattern: Ŝ = H̄(μ̂, σ̂) (paper eq. 5–6) and the
-// reference S̄ (eq. 3), for any Camera.
-//
-// Filtering has two axes (pattern/response.h): where the statistics come
-// from (FilterOptions::source) and the response that turns them into a
-// colour (FilterOptions::response). The named filters of the CLI and the
-// papers are shorthands for pairs:
+// How a program is filtered (FilteredGraph, the GPU host, the export):
+// where a pixel's footprint statistics come from and the response that
+// turns them into a colour. The named filters of the CLI and the papers are
+// shorthands for pairs:
 //   none      — point: S = H∘N at the pixel centre (aliases when zoomed out);
 //   paper     — estimators + the section-5 prefiltered table;
 //   smooth    — estimators + the smooth prefiltered table;
 //   exact     — brute-force footprint statistics + the smooth table: isolates
 //               the error of the Gaussian approximation (eq. 5) from the
 //               error of the estimators (paper Fig. 4b);
-//   reference — S̄: the average of H∘N over the footprint parallelogram by an
-//               n×n stratified grid, n = clamp(⌈2·extent in texels⌉, 8,
-//               referenceMaxSamples) (the response gives only the sky).
-// Filtering runs in the blending space: for a Gaussianized exemplar the
-// inverse histogram transform is folded into the colormap,
-// H'(x, y) = H(T_x⁻¹(x), T_y⁻¹(y)), before prefiltering.
-// Sky pixels (plane camera) show the pattern's average, H̄(μ_E, σ_E) (for
-// `none`, which builds no table, H at the examples' means).
-// The lean response is refused: a file's normal map is its program's
-// (GraphPattern::build).
-#include <memory>
+//   reference — S̄: the average of the program's point colour over the
+//               footprint parallelogram by an n×n stratified grid,
+//               n = clamp(⌈2·extent in texels⌉, 8, referenceMaxSamples).
+// The response is the program's last op: a colormap's prefiltered table, or
+// under the lean response a plain file's normal map compiles to a lean op
+// (GraphPattern::build picks the program).
+#include <array>
+#include <string>
 
 #include "stochtex/core/enum_names.h"
-#include "stochtex/core/progress.h"
 #include "stochtex/filter/footprint_stats.h"
-#include "stochtex/pattern/camera.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/colormap.h"
+#include "stochtex/noise/example.h"
+#include "stochtex/noise/tiled_field.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
-#include "stochtex/pattern/response.h"
-#include "stochtex/pattern/view_renderer.h"
 
 namespace stochtex {
+
+// Where a pixel's footprint statistics come from.
+enum class StatisticsSource {
+    Point,       // N at the pixel centre (no filtering: S = H∘N, aliases when zoomed out)
+    Estimators,  // μ̂, Σ̂ from the MIP pyramids (paper §4)
+    Exact,       // brute-force statistics of the footprint (isolates the Gaussian approximation, Fig. 4b)
+    Reference,   // S̄: the point colour averaged over the footprint by supersampling (eq. 3)
+};
+inline const EnumNames<StatisticsSource> kStatisticsSourceNames{{"point", StatisticsSource::Point},
+                                                                {"estimators", StatisticsSource::Estimators},
+                                                                {"exact", StatisticsSource::Exact},
+                                                                {"reference", StatisticsSource::Reference}};
+
+// What a plain pattern file's program ends in.
+enum class ResponseKind {
+    PrefilteredColormap,  // H̄(μ, σ_x, σ_y), paper eq. 5–6 (§5): the colormap op
+    Lean,                 // LEAN-mapped shading of the file's normal map (§6.5): the lean op
+};
+inline const EnumNames<ResponseKind> kResponseKindNames{{"prefiltered-colormap", ResponseKind::PrefilteredColormap},
+                                                        {"lean", ResponseKind::Lean}};
+
+// A response and its parameters, as a value (FilterOptions holds one).
+struct ResponseOptions {
+    ResponseKind kind = ResponseKind::PrefilteredColormap;
+    PrefilterMode prefilter = PrefilterMode::Smooth;  // the prefiltered tables' σ levels
+    bool covariance = true;  // Lean: read ĉov of the slopes (false: the "without covariance" variant, ĉov := 0)
+    bool operator==(const ResponseOptions&) const = default;
+};
 
 // A named filter: a statistics source and a response.
 struct NamedFilter {
@@ -74,10 +94,12 @@ NamedFilter parseFilter(const std::string& name);
 // covariance"), any other pair "SOURCE/RESPONSE" (e.g.
 // "exact/prefiltered-colormap") so that it is never mistaken for a name.
 std::string filterName(const FilterOptions& options);
+// InputError naming `aniso` or `referenceMaxSamples` when out of range.
+void validateFilterOptions(const FilterOptions& options);
 
 // S̄ (paper eq. 3): the average of pointColour over the footprint
 // parallelogram uv + J·(s, t), s, t ∈ [−½, ½], on an n×n grid of cell
-// centres. FilteredPattern and FilteredGraph share it.
+// centres.
 template <class PointColour>
 Rgb supersampledAverage(double u, double v, const Jacobian& j, int n, PointColour&& pointColour) {
     double acc[3] = {0, 0, 0};
@@ -91,8 +113,6 @@ Rgb supersampledAverage(double u, double v, const Jacobian& j, int n, PointColou
     return {float(acc[0] * inv), float(acc[1] * inv), float(acc[2] * inv)};
 }
 
-// InputError naming `aniso` or `referenceMaxSamples` when out of range.
-void validateFilterOptions(const FilterOptions& options);
 // The mean and variance of an example's values (blending space): those of
 // its tiled field, whose tiling and blending keeps them.
 std::array<double, 2> exampleMoments(const NoiseExample& example);
@@ -100,44 +120,5 @@ std::array<double, 2> exampleMoments(const NoiseExample& example);
 // period (its examples' own: tiling and blending keeps them), the
 // statistics of an infinite footprint.
 FootprintStats fieldStatistics(const TiledField& field);
-
-class FilteredPattern final : public ViewRenderer {
-public:
-    FilteredPattern(const Pattern& pattern, const FilterOptions& options);
-
-    const FilterOptions& options() const { return options_; }
-    StatisticsSource source() const { return source_; }
-    // Neither is built for the point source.
-    const FootprintEstimator& estimator() const { return *estimator_; }
-    const Response& response() const { return *response_; }
-    // The prefiltered colormap response's table (std::logic_error for
-    // another response kind).
-    const PrefilteredColormap& table() const;
-    // The field whose statistics the response reads: the colour noises.
-    const TiledField& field() const { return *field_; }
-    // H' (T⁻¹ folded in) that the prefiltered table was built from.
-    const ColormapTable& blendingSpaceColormap() const { return colormap_; }
-
-    // The colour of sky pixels (plane camera): the pattern's average colour,
-    // the same in every mode.
-    const Rgb& skyColour() const { return sky_; }
-    // Filtered colour of one footprint (sky = false gives the average colour).
-    Rgb shade(bool onPlane, double u, double v, const Jacobian& j) const;
-    // progress: the fraction of rows done (may be empty).
-    Image render(const Camera& camera, const Progress& progress = {}) const override;
-    int exampleSize() const override;
-
-private:
-    Footprint footprint(double u, double v, const Jacobian& j) const;
-    Rgb shade(const Footprint& f) const;  // estimators
-    const Pattern& pattern_;
-    FilterOptions options_;
-    StatisticsSource source_;
-    const TiledField* field_;
-    std::unique_ptr<FootprintEstimator> estimator_;
-    ColormapTable colormap_;
-    std::unique_ptr<Response> response_;
-    Rgb sky_{};
-};
 
 }  // namespace stochtex

@@ -8,7 +8,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
-#include "stochtex/pattern/filtered_pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
 #include "test_util.h"
 
@@ -111,20 +111,20 @@ TEST(PrefilteredColormap, SmoothModeInterpolatesBetweenLevelsAndPaperSnaps) {
     EXPECT_EQ(level(std::numeric_limits<float>::infinity()), 5);
 }
 
-TEST(FilteredPattern, LinearColormapReturnsTheEstimatedMean) {
+TEST(FilteredProgram, LinearColormapReturnsTheEstimatedMean) {
     PatternSpec spec = loadPreset("gaussian");
     spec.colormap.transfer = Transfer::Linear;  // H(x, y) = x as data, not decoded
-    const Pattern p = Pattern::build(spec);
+    const GraphPattern p = GraphPattern::build(spec);
     for (const char* mode : {"smooth", "paper"}) {
-        const FilteredPattern f(p, options(mode, 4));
+        const FilteredGraph f(p, options(mode, 4));
         int checked = 0;
         for (int i = 0; i < 1000; ++i) {
             const double u = 0.013 * i, v = 0.0071 * i;
             Jacobian j;
             j.dudx = (1 + i % 8) / 256.0;
             j.dvdy = (1 + (i * 7) % 4) / 256.0;
-            const Footprint fp = makeFootprint(u, v, j, 256, f.estimator().maxLod(), 4);
-            const FootprintStats s = f.estimator().estimate(fp);
+            const Footprint fp = makeFootprint(u, v, j, 256, f.estimator(0).maxLod(), 4);
+            const FootprintStats s = f.estimator(0).estimate(fp);
             const float sigma = std::max(s.sigmaX(), 1.0f / 256);  // paper mode blurs by ≥ 1/256
             // The lookup may read the σ level above σ̂ (at most 2σ̂): stay 4 of
             // those σ away from the borders, where the clamp-to-edge bias of
@@ -139,17 +139,17 @@ TEST(FilteredPattern, LinearColormapReturnsTheEstimatedMean) {
     }
 }
 
-TEST(FilteredPattern, ConstantColormapStaysConstant) {
+TEST(FilteredProgram, ConstantColormapStaysConstant) {
     PatternSpec spec = loadPreset("weld");
     spec.colormap.painted.shapes.clear();
     spec.colormap.painted.background = {0.2f, 0.6f, 0.9f};
     spec.colormap.transfer = Transfer::Linear;  // the colour as given
-    const Pattern p = Pattern::build(spec);
+    const GraphPattern p = GraphPattern::build(spec);
     Camera cam = zoom(48, 7.0);
     cam.kind = Camera::Kind::Plane;
     cam.tiltDeg = 70;
     for (const char* mode : {"paper", "smooth"}) {
-        const Image img = FilteredPattern(p, options(mode, 8)).render(cam);
+        const Image img = FilteredGraph(p, options(mode, 8)).render(cam);
         for (size_t i = 0; i < img.data().size(); i += 3) {
             ASSERT_NEAR(img.data()[i], 0.2f, 1e-6f);
             ASSERT_NEAR(img.data()[i + 2], 0.9f, 1e-6f);
@@ -157,14 +157,14 @@ TEST(FilteredPattern, ConstantColormapStaysConstant) {
     }
 }
 
-TEST(FilteredPattern, OneTexelFootprintReproducesTheUnfilteredPattern) {
-    const Pattern p = Pattern::build(loadPreset("camouflage"));
+TEST(FilteredProgram, OneTexelFootprintReproducesTheUnfilteredPattern) {
+    const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
     const Camera cam = zoom(64, 1.0);
     const Image unfiltered = p.render(cam.view);
-    const Image smooth = FilteredPattern(p, options("smooth")).render(cam);
+    const Image smooth = FilteredGraph(p, options("smooth")).render(cam);
     EXPECT_EQ(smooth.data(), unfiltered.data());  // σ̂ = 0 reads the σ = 0 level: bit-identical
     // Paper mode: the finest level blurs by σ = 1/256, i.e. one colormap entry.
-    const Image paper = FilteredPattern(p, options("paper")).render(cam);
+    const Image paper = FilteredGraph(p, options("paper")).render(cam);
     double diff = 0;
     for (size_t i = 0; i < paper.data().size(); ++i) diff += std::abs(paper.data()[i] - unfiltered.data()[i]);
     diff /= double(paper.data().size());
@@ -172,14 +172,14 @@ TEST(FilteredPattern, OneTexelFootprintReproducesTheUnfilteredPattern) {
     EXPECT_LT(diff, 0.01);
 }
 
-TEST(FilteredPattern, FilteredIsCloserToTheReferenceThanUnfilteredWhenZoomedOut) {
-    const Pattern p = Pattern::build(loadPreset("marble"));
+TEST(FilteredProgram, FilteredIsCloserToTheReferenceThanUnfilteredWhenZoomedOut) {
+    const GraphPattern p = GraphPattern::build(loadPreset("marble"));
     FilterOptions ref = options("reference");
     ref.referenceMaxSamples = 32;
     const Camera cam = zoom(24, 16.0);
-    const Image r = FilteredPattern(p, ref).render(cam);
+    const Image r = FilteredGraph(p, ref).render(cam);
     auto error = [&](const char* m) {
-        const Image img = FilteredPattern(p, options(m)).render(cam);
+        const Image img = FilteredGraph(p, options(m)).render(cam);
         double e = 0;
         for (size_t i = 0; i < img.data().size(); ++i) e += std::abs(img.data()[i] - r.data()[i]);
         return e / double(img.data().size());
@@ -197,9 +197,9 @@ TEST(FilteredPattern, FilteredIsCloserToTheReferenceThanUnfilteredWhenZoomedOut)
 // over ~160 example periods (0.62 of a period apart, beyond the noises'
 // correlation length), within 3/255 (its sampling error is ~0.5/255; the
 // rest is the blended noise's departure from a Gaussian).
-TEST(FilteredPattern, SkyIsThePatternsAverageColourInEveryMode) {
+TEST(FilteredProgram, SkyIsThePatternsAverageColourInEveryMode) {
     for (const char* name : {"camouflage", "marble", "weld"}) {
-        const Pattern p = Pattern::build(loadPreset(name));
+        const GraphPattern p = GraphPattern::build(loadPreset(name));
         View spread;
         spread.width = spread.height = 256;
         spread.scale = 0.618 * p.exampleSize();
@@ -211,10 +211,10 @@ TEST(FilteredPattern, SkyIsThePatternsAverageColourInEveryMode) {
         plane.kind = Camera::Kind::Plane;
         plane.tiltDeg = 80;
         plane.view.width = plane.view.height = 16;
-        const Rgb sky = FilteredPattern(p, options("none")).skyColour();
+        const Rgb sky = FilteredGraph(p, options("none")).skyColour();
         for (const std::string mode : {"none", "paper", "smooth", "exact", "reference"}) {
             const std::string what = std::string(name) + ", " + mode;
-            const FilteredPattern f(p, options(mode));
+            const FilteredGraph f(p, options(mode));
             for (size_t c = 0; c < 3; ++c) {
                 EXPECT_EQ(f.skyColour()[c], sky[c]) << what << " channel " << c;
                 EXPECT_NEAR(f.skyColour()[c], average[c], 3.0 / 255.0) << what << " channel " << c;
@@ -226,14 +226,14 @@ TEST(FilteredPattern, SkyIsThePatternsAverageColourInEveryMode) {
     }
 }
 
-TEST(FilteredPattern, BadInputIsRejected) {
-    const Pattern p = Pattern::build(loadPreset("gaussian"));
-    EXPECT_THROW(FilteredPattern(p, options("smooth", 0)), InputError);
-    EXPECT_THROW(FilteredPattern(p, options("smooth", 17)), InputError);
+TEST(FilteredProgram, BadInputIsRejected) {
+    const GraphPattern p = GraphPattern::build(loadPreset("gaussian"));
+    EXPECT_THROW(FilteredGraph(p, options("smooth", 0)), InputError);
+    EXPECT_THROW(FilteredGraph(p, options("smooth", 17)), InputError);
     Jacobian nan;
     nan.dudx = std::nan("");
     EXPECT_THROW(makeFootprint(0, 0, nan, 256, 8, 1), InputError);
-    const FilteredPattern f(p, options("smooth"));
+    const FilteredGraph f(p, options("smooth"));
     Camera c = zoom(8, 0.0);
     EXPECT_THROW(f.render(c), InputError);
     c = zoom(8, 1.0);
@@ -244,14 +244,14 @@ TEST(FilteredPattern, BadInputIsRejected) {
 
 // The library names its own parameters and the value it got; the CLI adds
 // the flag (tests/cli).
-TEST(FilteredPattern, ErrorsNameTheParameterAndTheValue) {
-    const Pattern p = Pattern::build(loadPreset("gaussian"));
-    const InputError aniso = test::inputErrorOf([&] { FilteredPattern(p, options("smooth", 0)); });
+TEST(FilteredProgram, ErrorsNameTheParameterAndTheValue) {
+    const GraphPattern p = GraphPattern::build(loadPreset("gaussian"));
+    const InputError aniso = test::inputErrorOf([&] { FilteredGraph(p, options("smooth", 0)); });
     EXPECT_EQ(aniso.parameter(), "aniso");
     EXPECT_STREQ(aniso.what(), "aniso must be in [1, 16], got 0");
     FilterOptions o = options("reference");
     o.referenceMaxSamples = 5000;
-    const InputError samples = test::inputErrorOf([&] { FilteredPattern(p, o); });
+    const InputError samples = test::inputErrorOf([&] { FilteredGraph(p, o); });
     EXPECT_EQ(samples.parameter(), "referenceMaxSamples");
     EXPECT_STREQ(samples.what(), "referenceMaxSamples must be in [1, 4096], got 5000");
     const InputError filter = test::inputErrorOf([] { parseFilter("blurry"); });
@@ -262,56 +262,58 @@ TEST(FilteredPattern, ErrorsNameTheParameterAndTheValue) {
     EXPECT_STREQ(k.what(), "maxAniso (K) must be in [1, 16], got 17");
 }
 
-TEST(FilteredPattern, IdenticalForAnyThreadCountAndEstimatorInstance) {
-    const Pattern p = Pattern::build(loadPreset("woven"));
+TEST(FilteredProgram, IdenticalForAnyThreadCountAndEstimatorInstance) {
+    const GraphPattern p = GraphPattern::build(loadPreset("woven"));
     Camera cam = zoom(64, 3.0);
     cam.kind = Camera::Kind::Plane;
     cam.tiltDeg = 65;
     Image one, all;
     {
         ThreadLimit limit(1);
-        one = FilteredPattern(p, options("smooth", 4)).render(cam);
+        one = FilteredGraph(p, options("smooth", 4)).render(cam);
     }
     // A second estimator (possibly at the same address) must not reuse the
     // first one's cached tiles.
-    all = FilteredPattern(p, options("smooth", 4)).render(cam);
+    all = FilteredGraph(p, options("smooth", 4)).render(cam);
     EXPECT_EQ(one.data(), all.data());
-    const Pattern other = Pattern::build(loadPreset("marble"));
-    const Image m1 = FilteredPattern(other, options("smooth", 4)).render(cam);
+    const GraphPattern other = GraphPattern::build(loadPreset("marble"));
+    const Image m1 = FilteredGraph(other, options("smooth", 4)).render(cam);
     EXPECT_NE(m1.data(), all.data());
 }
 
 namespace stochtex {
 namespace {
 
-// The response stage: the prefiltered colormap reads no covariance, so a
-// shared-offset pair (phasor-stripes: a quadrature pair) builds no
-// covariance pyramid; the named filters map to their statistics sources.
-TEST(Response, CovarianceIsBuiltOnlyWhenTheResponseReadsIt) {
-    const Pattern p = Pattern::build(loadPreset("phasor-stripes"));
-    ASSERT_TRUE(p.sharedOffsets());
-    const FilteredPattern f(p, FilterOptions{});  // estimators + the smooth table
-    EXPECT_FALSE(f.response().needsCovariance());
-    EXPECT_EQ(f.estimator().covariancePyramid(), nullptr);
+// The colormap op reads no covariance, so a shared-offset pair
+// (phasor-stripes: a quadrature pair) builds no covariance pyramid.
+TEST(FilteredProgram, CovarianceIsBuiltOnlyWhenAnOpReadsIt) {
+    const GraphPattern p = GraphPattern::build(loadPreset("phasor-stripes"));
+    ASSERT_TRUE(p.leafPairs().front().shared());
+    EXPECT_FALSE(p.pairCovariance(0));
+    const FilteredGraph f(p, FilterOptions{});  // estimators + the smooth table
+    EXPECT_EQ(f.estimator(0).covariancePyramid(), nullptr);
     // The same statistics with the covariance pyramid give the same colour:
-    // the response does not read it.
-    const FootprintEstimator withCov(p.tiledField(), true);
+    // the colormap op does not read it.
+    const FootprintEstimator withCov(p.leafPairs().front(), true);
     ASSERT_NE(withCov.covariancePyramid(), nullptr);
     Jacobian j;
     j.dudx = j.dvdy = 6.0 / p.exampleSize();
     const Footprint fp = makeFootprint(0.3, 0.7, j, p.exampleSize(), withCov.maxLod(), 1);
-    const FootprintStats a = f.estimator().estimate(fp), b = withCov.estimate(fp);
+    const FootprintStats a = f.estimator(0).estimate(fp), b = withCov.estimate(fp);
     // Without the pyramid only the between-texel part of ĉov remains.
     EXPECT_GT(std::abs(b.cov - a.cov), 1e-6f);
     EXPECT_EQ(a.mean, b.mean);
     EXPECT_EQ(a.varX, b.varX);
     EXPECT_EQ(a.varY, b.varY);
-    EXPECT_EQ(f.response().filtered(a), f.response().filtered(b));
+    const auto colour = [&](const FootprintStats& s) {
+        return f.fromMoments({{s.mean[0], s.varX}, {s.mean[1], s.varY}}, {s.cov});
+    };
+    EXPECT_EQ(colour(a), colour(b));
 }
 
 // The pairs written out here from the papers' definitions (pattern/
-// filtered_pattern.h): the CLI's names must keep meaning what they did.
-TEST(Response, NamedFiltersAreASourceAndAResponse) {
+// filter_options.h): the CLI's names must keep meaning what they did.
+TEST(FilterOptions, NamedFiltersAreASourceAndAResponse) {
     const auto pair = [](const char* name) {
         const NamedFilter f = parseFilter(name);
         return std::make_tuple(f.source, f.response.kind, f.response.prefilter);
@@ -341,22 +343,21 @@ TEST(Response, NamedFiltersAreASourceAndAResponse) {
     EXPECT_EQ(filterName(lean), "none/lean without covariance");
 }
 
-// The factory builds the kind the options name, with its parameters: its
-// colours are those of a table built directly in that mode (exactly: the
-// same blurs), and the two modes differ.
-TEST(Response, FactoryBuildsTheNamedKindWithItsParameters) {
-    const ColormapTable h = buildColormap(loadPreset("weld").colormap);
-    FootprintStats s;
-    s.mean = {0.45f, 0.52f};
-    s.varX = 0.0125f * 0.0125f;
-    s.varY = 0.02f * 0.02f;
+// The options' prefilter mode reaches the program's colormap op: its
+// colours are those of a table built directly in that mode from the
+// blending-space colormap (exactly: the same blurs), and the two modes
+// differ.
+TEST(FilteredProgram, ColormapOpReadsTheTableOfTheOptionsMode) {
+    const GraphPattern p = GraphPattern::build(loadPreset("weld"));
+    const float mx = 0.45f, my = 0.52f, sx = 0.0125f, sy = 0.02f;
     Rgb colours[2];
     for (PrefilterMode mode : {PrefilterMode::Paper, PrefilterMode::Smooth}) {
-        const std::unique_ptr<Response> r = makeResponse({ResponseKind::PrefilteredColormap, mode}, h);
-        EXPECT_FALSE(r->needsCovariance());
-        const PrefilteredColormap direct(h, mode);
-        colours[int(mode)] = r->filtered(s);
-        EXPECT_EQ(colours[int(mode)], direct.sample(0.45f, 0.52f, s.sigmaX(), s.sigmaY()));
+        FilterOptions o;
+        o.response.prefilter = mode;
+        const FilteredGraph f(p, o);
+        colours[int(mode)] = f.fromMoments({{mx, sx * sx}, {my, sy * sy}});
+        const PrefilteredColormap direct(p.tables().front().blended, mode);
+        EXPECT_EQ(colours[int(mode)], direct.sample(mx, my, std::sqrt(sx * sx), std::sqrt(sy * sy)));
     }
     EXPECT_NE(colours[0], colours[1]);
 }
