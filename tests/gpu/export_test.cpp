@@ -54,32 +54,19 @@ std::vector<std::uint8_t> parameterBlock(const std::string& readme, const nlohma
     const auto f = [](float v) { return std::bit_cast<std::uint32_t>(v); };
     const auto i = [](int v) { return std::bit_cast<std::uint32_t>(v); };
     std::map<std::string, std::vector<std::uint32_t>> values = {
-        {"meanX", {f(m["means"][0].get<float>())}},
-        {"meanY", {f(m["means"][1].get<float>())}},
         {"gridDensity", {f(m["grid_density"].get<float>())}},
         {"invExampleSize", {f(1.0f / m["example_size"].get<float>())}},
-        {"seedX", {m["seeds"][0].get<std::uint32_t>()}},
-        {"seedY", {m["seeds"][1].get<std::uint32_t>()}},
-        {"gaussianizedX", {0}},
-        {"gaussianizedY", {0}},
-        {"hasCovariance", {i(m["covariance"].get<bool>())}},
-        {"deliotHeitz", {0}},
-        {"maxLod", {i(m["levels"].get<int>() - 1)}},
         {"aniso", {i(m["aniso"].get<int>())}},
         {"smoothTable", {i(m["filter"] == "smooth")}},
         {"tableLevels", {i(m["table"]["levels"].get<int>())}},
         {"spare0", {0}},
         {"spare1", {0}},
+        {"spare2", {0}},
     };
-    std::vector<std::uint32_t>& averages = values["averageMoments"];
-    const nlohmann::json& am = m["average_moments"];
-    for (int l = 0; l < m["levels"].get<int>(); ++l)
-        averages.insert(averages.end(),
-                        {f(am["x"][l].get<float>()), f(am["y"][l].get<float>()), f(am["cov"][l].get<float>()), 0u});
     std::vector<std::uint8_t> block(bytes, 0);
     std::istringstream lines(readme);
     for (std::string line; std::getline(lines, line);) {
-        // A member row: "| 16 | `uint` | `seedX` | ..."; no other table's row starts with a number.
+        // A member row: "| 8 | `int` | `aniso` | ..."; no other table's row starts with a number.
         std::size_t offset = 0;
         char member[64] = {};
         if (std::sscanf(line.c_str(), "| %zu | `%*[^`]` | `%63[^`]`", &offset, member) != 2) continue;

@@ -37,7 +37,7 @@ GLenum glType(const std::string& glsl) {
     return types.at(glsl);
 }
 
-// The block's members by GL name ("uPattern.meanX", "uPattern.averageMoments[0]")
+// The block's members by GL name ("uPattern.aniso")
 // and its data size, in a linked program.
 std::map<std::string, GlMember> blockMembers(GLuint program, GLint& dataSize) {
     const GLuint block = glGetUniformBlockIndex(program, kPatternBlockName);

@@ -42,8 +42,8 @@ std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments
     std::string text = std::string(kIncludeHeader) +
                        "// This pattern is a texture graph (docs/GRAPHS.md): its program, generated for it,\n"
                        "// defines filteredColour (moment matching through its prefiltered tables). Its seeds\n"
-                       "// and means are constants here; of the PatternParameters block it reads\n"
-                       "// gridDensity, invExampleSize, maxLod, aniso, smoothTable and tableLevels.\n\n";
+                       "// and means are constants here; the PatternParameters block holds\n"
+                       "// gridDensity, invExampleSize, aniso, smoothTable and tableLevels.\n\n";
     const std::vector<std::pair<std::string, std::string>> program = {{kGraphProgramStem, graphProgramSource(graph, moments, levelAverages)}};
     for (const auto& stem :
          shaderChunks(programRecipe("export-graph-include").main, program))
@@ -301,16 +301,11 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     m["filter"] = filterName(options);
     m["estimator"] = enumName(kVarianceEstimatorNames, options.estimator);  // deliot-heitz: level averages in stochtex.glsl
     m["response"] = enumName(kResponseKindNames, options.response.kind);
-    // The block members the graph's program reads (the rest: its constants).
+    // The block's members (kPatternParamFields; the program's seeds and means are its constants).
     m["example_size"] = graph.exampleSize();
-    m["levels"] = f.estimator(0).maxLod() + 1;
+    m["levels"] = f.estimator(0).maxLod() + 1;  // of the first leaf's pyramids
     m["grid_density"] = graph.gridDensity();
     m["aniso"] = options.aniso;
-    m["means"] = {0, 0};
-    m["seeds"] = {0, 0};
-    m["covariance"] = false;
-    const nlohmann::json zeros(std::vector<float>(size_t(f.estimator(0).maxLod() + 1), 0.0f));
-    m["average_moments"] = {{"x", zeros}, {"y", zeros}, {"cov", zeros}};
     nlohmann::json& textures = m["textures"] = nlohmann::json::array();
     nlohmann::json& leaves = m["graph"]["leaves"] = nlohmann::json::array();
     std::vector<WrittenFile> files;

@@ -283,7 +283,6 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
                               tableTexture(h.resolutionX(), h.resolutionY(), levels * levels,
                                            f.table(int(t)).atlas(h.resolutionX(), h.resolutionY()).data().data()));
     }
-    if (filtered) p.maxLod = f.estimator(0).maxLod();
     m.parameters = gl::newBuffer();
     glBindBuffer(GL_UNIFORM_BUFFER, m.parameters.id());
     glBufferData(GL_UNIFORM_BUFFER, sizeof p, &p, GL_STATIC_DRAW);

@@ -13,26 +13,17 @@
 // the exported README. A new member fills a spare slot or adds a row of four,
 // and gets a row in that table.
 
-// Pyramid levels the shaders take per-level constants for: examples of at
-// most 2¹⁵ texels a side.
-const int kMaxPyramidLevels = 16;
-
+// What the generated program does not hold as constants: the view's scale,
+// the estimators' probe count and the prefiltered tables' σ levels. A
+// program's seeds, means, Gaussianization and pyramid depths are constants
+// of its generated GLSL (gpu/gpu_graph.cpp).
 struct PatternParams {
-    float meanX;           // μ of noise x's example
-    float meanY;           // μ of noise y's example
     float gridDensity;     // triangle-grid cells per example period
     float invExampleSize;  // 1 / W
-    uint seedX;            // tile-offset seeds
-    uint seedY;
-    int gaussianizedX;     // 1: through T⁻¹ (unfiltered only)
-    int gaussianizedY;
-    int hasCovariance;     // 1: covariances fetched and used
-    int deliotHeitz;       // 1: averageMoments instead of eq. 12
-    int maxLod;            // L = log2 W
     int aniso;             // K
     int smoothTable;       // 1: smooth prefiltered table, 0: paper
     int tableLevels;       // σ levels per axis
-    int spare0;            // unused: completes the row
+    int spare0;            // unused: complete the row
     int spare1;
-    vec4 averageMoments[kMaxPyramidLevels];  // per level l: (V̄_x, V̄_y, C̄, 0)
+    int spare2;
 };

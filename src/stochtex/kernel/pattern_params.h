@@ -27,32 +27,15 @@ struct PatternParamField {
 #member, type, count, offsetof(PatternParams, member), sizeof(PatternParams::member), meaning, manifest \
     }
 inline constexpr PatternParamField kPatternParamFields[] = {
-    STOCHTEX_PATTERN_FIELD(meanX, "float", 1, "μ_x, the mean of noise x's example", "`means[0]`"),
-    STOCHTEX_PATTERN_FIELD(meanY, "float", 1, "μ_y, the mean of noise y's example", "`means[1]`"),
     STOCHTEX_PATTERN_FIELD(gridDensity, "float", 1, "triangle-grid cells per example period", "`grid_density`"),
-    STOCHTEX_PATTERN_FIELD(invExampleSize, "float", 1, "1 / W, W the examples' side in texels", "1 / `example_size`"),
-    STOCHTEX_PATTERN_FIELD(seedX, "uint", 1, "noise x's tile-offset seed", "`seeds[0]`"),
-    STOCHTEX_PATTERN_FIELD(seedY, "uint", 1, "noise y's tile-offset seed", "`seeds[1]`"),
-    STOCHTEX_PATTERN_FIELD(gaussianizedX, "int", 1, "1: noise x goes through its T⁻¹ table (unfiltered rendering only)",
-                           "0 (T⁻¹ is folded into the table)"),
-    STOCHTEX_PATTERN_FIELD(gaussianizedY, "int", 1, "1: noise y goes through its T⁻¹ table (unfiltered rendering only)",
-                           "0"),
-    STOCHTEX_PATTERN_FIELD(
-        hasCovariance, "int", 1,
-        "1: covariances are read from `uCovariance` (a shared-offset pair whose response reads them)",
-        "`covariance` (1 if true)"),
-    STOCHTEX_PATTERN_FIELD(deliotHeitz, "int", 1,
-                           "1: Deliot–Heitz's one variance per level (`averageMoments`) instead of eq. 12", "0"),
-    STOCHTEX_PATTERN_FIELD(maxLod, "int", 1, "L, the pyramids' last level", "`levels` − 1"),
+    STOCHTEX_PATTERN_FIELD(invExampleSize, "float", 1, "1 / W, W the first leaf's side in texels", "1 / `example_size`"),
     STOCHTEX_PATTERN_FIELD(aniso, "int", 1, "K, the most probes per footprint (1..16)", "`aniso`"),
     STOCHTEX_PATTERN_FIELD(smoothTable, "int", 1, "1: the smooth prefiltered table, 0: the paper's",
                            "1 if `filter` is \"smooth\""),
     STOCHTEX_PATTERN_FIELD(tableLevels, "int", 1, "σ levels of the prefiltered table per axis", "`table.levels`"),
     STOCHTEX_PATTERN_FIELD(spare0, "int", 1, "unused", "0"),
     STOCHTEX_PATTERN_FIELD(spare1, "int", 1, "unused", "0"),
-    STOCHTEX_PATTERN_FIELD(averageMoments, "vec4", kMaxPyramidLevels,
-                           "level l's mean variance of noise x, of noise y, mean covariance, 0 (levels past L unused)",
-                           "(`average_moments.x[l]`, `.y[l]`, `.cov[l]`, 0)"),
+    STOCHTEX_PATTERN_FIELD(spare2, "int", 1, "unused", "0"),
 };
 #undef STOCHTEX_PATTERN_FIELD
 
