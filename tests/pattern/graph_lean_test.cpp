@@ -45,7 +45,7 @@ kernel::vec3 leanOp(kernel::vec2 mean, kernel::vec2 var, float cov, kernel::vec3
     OpContext ctx;
     ctx.eye = eye;
     ctx.slopeCov = cov;
-    const LeanParams p{roughness, specular, light.x, light.y, light.z, 1.0f};
+    const LeanParams p{roughness, specular, light.x, light.y, light.z, 1.0f, 0.0f, 0.0f, 0.0f};  // no fixed view
     return opFiltered(p, vec3(mean.x, var.x, 0.0f), vec3(mean.y, var.y, 0.0f), albedo, ctx);
 }
 
@@ -63,7 +63,7 @@ TEST(GraphOps, LeanOpIsTheKernelsLobeLit) {
     // A host's own light (a scene's, w = 1) replaces the op's.
     OpContext scene;
     scene.light = vec4(eye, 1.0f);
-    const LeanParams p{0.5f, 1.0f, light.x, light.y, light.z, 1.0f};
+    const LeanParams p{0.5f, 1.0f, light.x, light.y, light.z, 1.0f, 0.0f, 0.0f, 0.0f};
     const vec3 lit = opPoint(p, vec3(0.0f), vec3(0.0f), albedo, scene);
     EXPECT_EQ(lit.x, flat.x);
     EXPECT_EQ(lit.z, flat.z);

@@ -349,23 +349,13 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     // Every table has the same σ levels (tableLevels); a graph of compose and
     // lean nodes alone has none.
     if (!tables.empty()) m["table"] = tables.front();
-    // Each lean node's shading, as the program's constants hold it (each
-    // float as the shortest decimal that reads back as it: 0.08, not 0.0799999982).
-    const auto number = [](float v) {
-        char text[32];
-        const auto end = std::to_chars(text, text + sizeof text, v).ptr;
-        return std::stod(std::string(text, end));
-    };
-    nlohmann::json& lean = m["graph"]["lean"] = nlohmann::json::array();
+    // What an engine reads of each op beside the GLSL (a lean node's
+    // shading, as the program's constants hold it), by node type: graph.lean.
     for (const GraphPattern::Operation& op : graph.operations())
-        if (const auto* l = std::get_if<LeanOp::Params>(&op.params))
-            lean.push_back(
-                {{"node", op.id},
-                 {"roughness", number(l->roughness)},
-                 {"specular", number(l->specular)},
-                 {"light", {number(l->lightX), number(l->lightY), number(l->lightZ)}},
-                 {"view", l->viewZ != 0 ? nlohmann::json{number(l->viewX), number(l->viewY), number(l->viewZ)} : nlohmann::json()},
-                 {"covariance", l->covariance != 0}});
+        if (nlohmann::json entry = opManifest(op.params); !entry.is_null()) {
+            entry["node"] = op.id;
+            m["graph"][op.info->name].push_back(std::move(entry));
+        }
     writeDescription(dir, m, exportedGraphInclude(graph, GraphMoments::Matched, graphLevelAverages(f, options)), files,
                      graph.shadesLight() ? kProgramLightSection : "");
 }

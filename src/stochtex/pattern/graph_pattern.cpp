@@ -130,37 +130,42 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
     GraphPattern p;
     for (const GraphNode& g : graph.nodes) {
         if (!needed.count(g.id) || linear.at(g.id)) continue;
-        const bool lean = g.info->op == opIndex<LeanOp>();
-        if (g.info->kind == NodeKind::Derivative || lean) {
-            const std::string& from = g.inputs.at(lean ? "height" : "input");
+        if (g.info->op < 0)  // a linear node (derivative, transform, …) over a field that does not fold
+            for (const auto& [port, from] : g.inputs)
+                if (!linear.at(from))
+                    throw InputError(context + ": node \"" + g.id + "\" (" + g.info->name + "): its input \"" + from +
+                                     "\" is not linear in the sources, so it has no example for this node to fold into");
+        const bool slopes = !g.info->slopesOf.empty();
+        if (slopes) {
+            const std::string& from = g.inputs.at(g.info->slopesOf);
             if (!linear.at(from))
                 throw InputError(context + ": node \"" + g.id + "\" (" + g.info->name + "): its input \"" + from +
-                                 "\" is not linear in the sources, so it has no example to " +
-                                 (lean ? "take the slopes of" : "differentiate"));
+                                 "\" is not linear in the sources, so it has no example to take the slopes of");
         }
         ops.push_back(&g);
         for (const PortInfo& port : g.info->inputs) {
-            if (lean && port.name == "height") continue;  // read through its slopes (below)
+            if (port.name == g.info->slopesOf) continue;  // read through its slopes (below)
             const std::string& from = g.inputs.at(port.name);
             if (linear.at(from) && std::find(p.leafIds_.begin(), p.leafIds_.end(), from) == p.leafIds_.end())
                 p.leafIds_.push_back(from);
         }
     }
-    if (p.leafIds_.empty() && std::none_of(ops.begin(), ops.end(), [](const GraphNode* g) { return g->info->op == opIndex<LeanOp>(); }))
+    if (p.leafIds_.empty() && std::none_of(ops.begin(), ops.end(), [](const GraphNode* g) { return !g->info->slopesOf.empty(); }))
         throw InputError(context + ": the output \"" + graph.output +
                          "\" reads no field, so it is one colour everywhere; a texture graph needs a noise (a "
                          "spectral_noise, exemplar or tiled_field node) under its output");
-    // Each lean node reads its height's slopes: a pair of leaves after the
-    // others ("ID.slope_u", "ID.slope_v"), on the height's tiles.
+    // Each node that reads a field's slopes (NodeInfo::slopesOf: a lean
+    // node's height) gets a pair of leaves after the others ("ID.slope_u",
+    // "ID.slope_v"), on the field's tiles.
     const size_t fieldLeaves = p.leafIds_.size();
     std::vector<std::string> fieldIds = p.leafIds_;
     for (const GraphNode* g : ops)
-        if (g->info->op == opIndex<LeanOp>()) {
+        if (!g->info->slopesOf.empty()) {
             p.leafIds_.push_back(g->id + ".slope_u");
             p.leafIds_.push_back(g->id + ".slope_v");
-            fieldIds.push_back(g->inputs.at("height"));
+            fieldIds.push_back(g->inputs.at(g->info->slopesOf));
         }
-    // A lean node's two slope leaves are no nodes of the file: the program's slots can outnumber them.
+    // The slope leaves are no nodes of the file: the program's slots can outnumber them.
     if (p.leafIds_.size() + ops.size() > size_t(kMaxGraphNodes))
         throw InputError(context + ": the graph's program needs " + std::to_string(p.leafIds_.size() + ops.size()) +
                          " values per pixel (each lean node adds two slopes), more than " +
@@ -195,19 +200,19 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         noises.emplace_back(std::make_shared<const NoiseExample>(fields[k]), seedOf(fieldIds[k], k));
         transforms.push_back(graphNodeTransform(graph, fieldIds[k], context));
     }
-    std::vector<bool> leanPair;  // per lean node, in order: whether it reads its slopes' covariance
+    std::vector<bool> slopePairCovariance;  // per slope-reading node, in order: whether it reads the slopes' covariance
     for (const GraphNode* g : ops) {
-        if (g->info->op != opIndex<LeanOp>()) continue;
+        if (g->info->slopesOf.empty()) continue;
         const size_t k = noises.size();
-        const std::string& heightId = g->inputs.at("height");
+        const std::string& heightId = g->inputs.at(g->info->slopesOf);
         const NoiseExample& height = fields[fieldLeaves + (k - fieldLeaves) / 2];
-        const std::string where = context + ": node \"" + g->id + "\" (lean)";
+        const std::string where = context + ": node \"" + g->id + "\" (" + g->info->name + ")";
         if (height.gaussianized())
             throw InputError(where + ": its input \"" + heightId + "\" is a Gaussianized exemplar, whose field is not "
                              "linear in its example; set \"gaussianize\": false on its exemplar or tiled_field to use it here");
         if (!graphNodeTransform(graph, heightId, context).identity())
             throw InputError(where + ": its input \"" + heightId + "\" is seen through a transform of uv, whose slopes "
-                             "would be along turned axes; a lean node needs its height untransformed");
+                             "would be along turned axes; a " + g->info->name + " node needs its " + g->info->slopesOf + " untransformed");
         TiledField slopes;
         try {
             slopes = slopeField(height.values(), g->numbers.at("amplitude"), seedOf(heightId, k), spec.gridDensity);
@@ -219,7 +224,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
             noises.push_back(slopes.channel(c));
             transforms.push_back(UvTransform{});
         }
-        leanPair.push_back(g->numbers.at("covariance") != 0);
+        slopePairCovariance.push_back(g->numbers.at("covariance") != 0);
     }
     const auto addPair = [&](size_t k, bool pair, bool covariance) {
         const TilingBlendingNoise& second = noises[pair ? k + 1 : k];
@@ -239,7 +244,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         addPair(k, pair, false);
         k += pair ? 2 : 1;
     }
-    for (size_t k = fieldLeaves; k < noises.size(); k += 2) addPair(k, true, leanPair[(k - fieldLeaves) / 2]);
+    for (size_t k = fieldLeaves; k < noises.size(); k += 2) addPair(k, true, slopePairCovariance[(k - fieldLeaves) / 2]);
 
     // The program, with its tables.
     const auto gaussianizedLeaf = [&](const std::string& id) -> const NoiseExample* {
@@ -253,13 +258,16 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         Operation op;
         op.id = g->id;
         op.info = g->info;
-        const bool lean = g->info->op == opIndex<LeanOp>();
-        for (size_t i = 0; i < g->info->inputs.size(); ++i) {
-            if (lean && i == 0) continue;  // its slopes, below
-            op.inputs[i] = slot.at(g->inputs.at(g->info->inputs[i].name));
-        }
-        // A lean node reads its slopes along u and v, then the albedo.
-        if (lean) op.inputs = {slot.at(g->id + ".slope_u"), slot.at(g->id + ".slope_v"), slot.at(g->inputs.at("albedo"))};
+        // A node that reads a field's slopes (its first port) reads them along u
+        // and v, then its other ports.
+        const bool slopes = !g->info->slopesOf.empty();
+        if (slopes && (g->info->inputs.empty() || g->info->inputs.front().name != g->info->slopesOf ||
+                       g->info->inputs.size() > op.inputs.size() - 1))
+            throw std::logic_error("GraphPattern::build: node type " + g->info->name +
+                                   " reads the slopes of a port that is not its first, or has too many ports");
+        if (slopes) op.inputs[0] = slot.at(g->id + ".slope_u"), op.inputs[1] = slot.at(g->id + ".slope_v");
+        for (size_t i = slopes ? 1 : 0; i < g->info->inputs.size(); ++i)
+            op.inputs[slopes ? i + 1 : i] = slot.at(g->inputs.at(g->info->inputs[i].name));
         if (const int first = op.inputs[0]; first >= 0 && first < p.leafCount()) {
             const int pair = p.leafLocation_[size_t(first)][0];
             if (p.pairCovariance_[size_t(pair)]) op.covariancePair = pair;
@@ -271,7 +279,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         // Only a table folds T⁻¹ in: an op without one cannot read a Gaussianized exemplar.
         for (size_t i = 0; i < g->info->inputs.size() && op.table < 0; ++i) {
             const std::string& from = g->inputs.at(g->info->inputs[i].name);
-            if (!(lean && i == 0) && gaussianizedLeaf(from))
+            if (!(slopes && i == 0) && gaussianizedLeaf(from))
                 throw InputError(context + ": node \"" + g->id + "\" (" + g->info->name + "): its input \"" + from +
                                  "\" is a Gaussianized exemplar, whose field only a transfer function reads directly; "
                                  "set \"gaussianize\": false on its exemplar or tiled_field to use it here");

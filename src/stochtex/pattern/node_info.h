@@ -45,6 +45,12 @@ struct NodeInfo {
     PortType output;
     std::vector<ParamInfo> params;
     int op = -1;  // an op's index in ops/ops.h's list (OpParams' alternatives); −1: not an op
+    // An op's first input port that it reads through the slopes of its field
+    // (a lean node's height): the program gives it two leaves, the field's
+    // slopes along u and v scaled to the node's "amplitude", on the field's
+    // tiles, with their covariance when its "covariance" is on; the op's
+    // inputs are those two, then its other ports. Empty: none.
+    std::string slopesOf{};
 };
 
 struct GraphNode {

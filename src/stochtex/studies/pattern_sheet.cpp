@@ -46,16 +46,15 @@ Image colormapUsage(const Image& nx, const Image& ny, const ColormapTable& h, in
 
 PatternSheet patternSheet(const PatternSpec& file, double scale, int size, const std::string& label) {
     const GraphPattern program = GraphPattern::build(file);
-    const GraphPattern::Operation& colours = program.operations().back();
-    const bool colormapOfLeaves = std::holds_alternative<ColormapOp::Params>(colours.params) &&
-                                  colours.inputs[0] < program.leafCount() && colours.inputs[1] < program.leafCount();
-    if (!colormapOfLeaves) {
-        if (!file.graph) throw std::logic_error("patternSheet: a plain pattern's program is not a colormap of its leaves");
+    // H ∘ N shows its two noises and its colormap; any other program its nodes.
+    const ColormapTable* colormap = program.plainColormap();
+    if (!colormap) {
+        if (!file.graph) throw std::logic_error("patternSheet: a plain pattern's program is not H ∘ N");
         return graphSheet(program, *file.graph, scale, size);
     }
-    const std::string& nx = program.leafIds()[size_t(colours.inputs[0])];
-    const std::string& ny = program.leafIds()[size_t(colours.inputs[1])];
-    const ColormapTable& h = program.tables()[size_t(colours.table)].point;
+    const std::string& nx = program.leafIds()[0];
+    const std::string& ny = program.leafIds()[1];
+    const ColormapTable& h = *colormap;
     const int big = size, small = size / 2;
     View view;
     view.width = view.height = big;

@@ -2,6 +2,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <nlohmann/json.hpp>
+
 #include "stochtex/kernel/lean.h"
 #include "stochtex/pattern/ops/op_host.h"
 #include "stochtex/pattern/pattern_parts.h"
@@ -44,7 +46,9 @@ struct LeanOp {
               "each pixel is seen)",
               0, 0, 90},
              {"covariance", ParamType::Boolean, "Read the slopes' covariance (false: the variant without it, ĉov := 0)",
-              true}}};
+              true}},
+            -1,
+            "height"};
     }
     // A unit direction from degrees (azimuth from +u towards +v, elevation above the plane).
     static std::array<double, 3> direction(double azimuthDegrees, double elevationDegrees) {
@@ -55,6 +59,15 @@ struct LeanOp {
         for (double& c : d)
             if (std::abs(c) < 1e-12) c = 0;  // cos(90°) is 6e-17 in double: rounding, not a direction
         return d;
+    }
+    // The shading an engine lights the program with (export's manifest.json, `graph.lean`).
+    static nlohmann::json manifest(const Params& l) {
+        const auto n = shortestDecimal;
+        return {{"roughness", n(l.roughness)},
+                {"specular", n(l.specular)},
+                {"light", {n(l.lightX), n(l.lightY), n(l.lightZ)}},
+                {"view", l.viewZ != 0 ? nlohmann::json{n(l.viewX), n(l.viewY), n(l.viewZ)} : nlohmann::json()},
+                {"covariance", l.covariance != 0}};
     }
     static Params bind(OpBuild& b) {
         LeanShading shading;

@@ -114,4 +114,8 @@ struct OpBuild {
     float number(const std::string& name) const { return float(node.numbers.at(name)); }
 };
 
+// A float as the shortest decimal that reads back as it (0.08, not
+// 0.0799999982), for JSON (an op's manifest, ops.h).
+double shortestDecimal(float v);
+
 }  // namespace stochtex

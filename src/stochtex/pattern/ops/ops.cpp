@@ -1,5 +1,6 @@
 #include "stochtex/pattern/ops/ops.h"
 
+#include <charconv>
 #include <cstdio>
 #include <cctype>
 #include <cstring>
@@ -77,6 +78,24 @@ bool opShadesLight(const OpParams& op) {
                 return false;
         },
         op);
+}
+
+nlohmann::json opManifest(const OpParams& op) {
+    return std::visit(
+        [](const auto& p) {
+            using Op = OpAt<indexOfParams<std::decay_t<decltype(p)>>()>;
+            if constexpr (requires { Op::manifest(p); })
+                return Op::manifest(p);
+            else
+                return nlohmann::json();
+        },
+        op);
+}
+
+double shortestDecimal(float v) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+    return std::stod(std::string(text, end));
 }
 
 const char* opKernelStem(const OpParams& op) {

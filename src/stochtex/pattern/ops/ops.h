@@ -14,6 +14,8 @@
 #include <variant>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "stochtex/pattern/ops/affine_op.h"
 #include "stochtex/pattern/ops/colormap_field_op.h"
 #include "stochtex/pattern/ops/colormap_op.h"
@@ -68,6 +70,10 @@ kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kern
 // Whether the op lights its colour: it reads OpContext's eye and light (an
 // op declares `static constexpr bool kShadesLight = true`; false otherwise).
 bool opShadesLight(const OpParams& op);
+// What an engine reads of the op beside the generated GLSL, for an export's
+// manifest.json (an op declares `static nlohmann::json manifest(const
+// Params&)`, e.g. a lean op's light; null otherwise).
+nlohmann::json opManifest(const OpParams& op);
 // The embedded kernel file that defines the op (the GPU program includes it).
 const char* opKernelStem(const OpParams& op);
 // The GLSL call of the op: "opPoint(AffineParams(2.0, 0.5), a, b, c, ctx)"
