@@ -1,69 +1,13 @@
 #include "stochtex/pattern/graph_nodes.h"
 
-#include "stochtex/noise/spectrum.h"
+#include "stochtex/pattern/fields/fields.h"
 #include "stochtex/pattern/ops/ops.h"
-#include "stochtex/pattern/pattern_members.h"
 
 namespace stochtex {
 
 const std::vector<NodeInfo>& graphNodes() {
-    using json = nlohmann::json;
     static const std::vector<NodeInfo> nodes = [] {
-        std::vector<NodeInfo> n = {
-        {"spectral_noise", NodeKind::SpectralNoise, "source",
-         "A periodic Gaussian example synthesised from a power spectrum (paper §3), tiled and blended",
-         {},
-         PortType::Field,
-         {patternMembers().noiseSize,
-          {"seed", ParamType::Seed, "Seed of the white noise (default: from the graph seed and the node id)", json()},
-          patternMembers().noiseMean,
-          patternMembers().noiseStddev,
-          {"quadrature", ParamType::Boolean, "The Hilbert partner of the same white noise (a phase shift of π/2)", false},
-          {"components", ParamType::Components, "Spectrum components: lowpass, ring or bilobe (docs/PATTERNS.md)",
-           json(), 0, 0, json::parse(R"([{"shape": "lowpass", "cutoff": 8}])")}}},
-        {"exemplar", NodeKind::Exemplar, "source", "An image as the example (periodic), tiled and blended",
-         {},
-         PortType::Field,
-         {{"path", ParamType::Path, "The image (1 channel or colour, taken as gray), relative to the graph file", json()},
-          {"gaussianize", ParamType::Boolean,
-           "Blend the histogram-transformed exemplar and map back (paper §5); such a field feeds a transfer "
-           "function directly, not a linear node",
-           true}}},
-        {"tiled_field", NodeKind::TiledField, "source",
-         "An image of K channels (1 to 4) as K examples tiled and blended with the same tiles and weights: a "
-         "noise vector field (paper eq. 7) whose channels keep their correlations; channel nodes read them",
-         {},
-         PortType::Channels,
-         {{"path", ParamType::Path, "The image (1 to 4 channels), relative to the graph file", json()},
-          {"transfer", ParamType::Choice,
-           "How its codes become values: auto (srgb, but linear for a float file such as EXR), srgb (colour channels "
-           "decoded to linear light; alpha stays data) or linear (as data)",
-           "auto", 0, 0, nullptr, {"auto", "srgb", "linear"}},
-          {"gaussianize", ParamType::Boolean,
-           "Blend each channel's histogram-transformed example and map back (paper §5); such a channel feeds a "
-           "transfer function directly, not a linear node",
-           true}}},
-        {"channel", NodeKind::Channel, "linear",
-         "One channel of a tiled field, on the tiles every channel of that field shares",
-         {{"field", PortType::Channels, "The tiled field"}},
-         PortType::Field,
-         {{"index", ParamType::Integer, "The channel, from 0 (red, green, blue, alpha of a colour image)", 0, 0, 3}}},
-        {"derivative", NodeKind::Derivative, "linear",
-         "Directional derivative of a field, exact on its example (spectral), rescaled about a mean",
-         {{"input", PortType::Field, "The field"}},
-         PortType::Field,
-         {{"angle", ParamType::Number, "Direction, degrees from +u towards +v", 0, -360, 360},
-          {"mean", ParamType::Number, "Mean of the result", 0.5, 0, 1},
-          {"stddev", ParamType::Number, "Standard deviation of the result", 1.0 / 6.0, 1e-4, 0.5}}},
-        {"transform", NodeKind::Transform, "linear",
-         "The field seen through a transform of uv: input(scale · R(angle) · uv + offset), tiles and all",
-         {{"input", PortType::Field, "The field"}},
-         PortType::Field,
-         {{"angle", ParamType::Number, "Rotation, degrees from +u towards +v", 0, -360, 360},
-          {"scale", ParamType::Number, "Scale of uv (2: features half as large)", 1, 1.0 / 64, 64},
-          {"offset_u", ParamType::Number, "Offset along u, example periods", 0, -1e4, 1e4},
-          {"offset_v", ParamType::Number, "Offset along v, example periods", 0, -1e4, 1e4}}},
-    };
+        std::vector<NodeInfo> n = fieldNodeInfos();
         for (NodeInfo& op : opNodeInfos()) n.push_back(std::move(op));
         return n;
     }();

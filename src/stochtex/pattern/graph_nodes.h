@@ -3,10 +3,10 @@
 // inputs, what it gives, and its parameter table (name, description, type,
 // default, range). The table drives the JSON parsing and validation of a
 // graph, `stochtex nodes`, the workbench's widgets and the per-node
-// benchmarks. The sources and linear operators are entries in
-// graph_nodes.cpp; every node evaluated per pixel is an op
-// (ops/ops.h), whose own file describes it: a new op is its kernel file,
-// its header and one line in ops/ops.h.
+// benchmarks. Every node type is described by its own file: a source or
+// linear operator by its file in fields/ (a new one: that file and one line
+// in fields/fields.h), a node evaluated per pixel by its op's (a new op: its
+// kernel file, its header and one line in ops/ops.h).
 //
 // Sources (spectral noise, exemplar, the channels of a K-channel tiled
 // field) and linear operators of fields (a directional derivative, an affine
@@ -30,9 +30,6 @@ namespace stochtex {
 const std::vector<NodeInfo>& graphNodes();
 // The node called `name`, or null.
 const NodeInfo* findGraphNode(const std::string& name);
-// Whether a node's output is linear in its sources' examples (sources and
-// linear operators, affine and sum included), so that it folds into an example.
-inline bool isLinearNode(NodeKind kind) { return kind != NodeKind::Op; }
 
 // The whole table as JSON (for `stochtex nodes --json` and user interfaces):
 // [{type, category, description, inputs: [{name, type, description}],

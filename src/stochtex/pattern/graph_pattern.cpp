@@ -115,7 +115,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
     // Which nodes are linear in the sources (fold into an example).
     std::map<std::string, bool> linear;
     for (const GraphNode& g : graph.nodes) {
-        bool l = isLinearNode(g.info->kind);
+        bool l = g.info->linear();
         for (const auto& port : g.inputs) l = l && linear.at(port.second);
         linear[g.id] = l;
     }

@@ -29,16 +29,21 @@ struct PortInfo {
     std::string description;
 };
 
-// What the graph parser does with a node: the sources and linear operators
-// fold into the examples a graph's leaves are tiled from (texture_graph.h);
-// every other node is an op (Op), evaluated per pixel, which NodeInfo::op
-// names. affine and sum are both: linear over fields that fold, ops over
-// the outputs of ops.
-enum class NodeKind { SpectralNoise, Exemplar, TiledField, Channel, Derivative, Transform, Affine, Sum, Op };
+class JsonReader;
+class NoiseExample;
+struct FieldFold;   // fields/field_node.h
+struct FieldSight;  // fields/field_node.h
+struct GraphNode;
+struct UvTransform;
 
+// What the graph parser does with a node: the sources and linear operators
+// fold into the examples a graph's leaves are tiled from (they have `fold`;
+// texture_graph.h); every other node is an op, evaluated per pixel, which
+// `op` names. affine and sum are both: linear over fields that fold, ops
+// over the outputs of ops. A node type declares what it does through these
+// members, so that no code outside its own file asks which type it is.
 struct NodeInfo {
     std::string name;  // the JSON "type"
-    NodeKind kind;
     std::string category;  // source, linear, transfer, colour, shading
     std::string description;
     std::vector<PortInfo> inputs;
@@ -51,6 +56,15 @@ struct NodeInfo {
     // tiles, with their covariance when its "covariance" is on; the op's
     // inputs are those two, then its other ports. Empty: none.
     std::string slopesOf{};
+    // A linear node's example from its inputs' (null: not linear, an op only).
+    NoiseExample (*fold)(const FieldFold&) = nullptr;
+    // The transform of uv a linear node is seen through, from its inputs'
+    // (null: none, as a source's).
+    UvTransform (*seenThrough)(const FieldSight&) = nullptr;
+    // What a source sets up once its parameters are parsed (its NoiseSpec).
+    void (*parsed)(GraphNode&, const JsonReader&) = nullptr;
+    // Whether the node's output folds into an example.
+    bool linear() const { return fold != nullptr; }
 };
 
 struct GraphNode {

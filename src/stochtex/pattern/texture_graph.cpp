@@ -8,7 +8,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
-#include "stochtex/noise/slopes.h"
+#include "stochtex/pattern/fields/field_node.h"
 #include "stochtex/pattern/ops/colormap_op.h"
 
 namespace stochtex {
@@ -110,22 +110,8 @@ GraphNode parseNode(const JsonReader& n, const std::string& id, const std::files
             }
         }
     }
-    // The sources' example descriptions, as a pattern file's noises.
-    if (info.kind == NodeKind::SpectralNoise) {
-        SpectrumSpec& s = g.noise.spectrum;
-        g.noise.source = NoiseSpec::Source::Spectrum;
-        s.size = int(g.numbers["size"]);
-        s.mean = g.numbers["mean"];
-        s.stddev = g.numbers["stddev"];
-        s.quadrature = g.numbers["quadrature"] != 0;
-        g.noise.explicitSeed = g.seed.has_value();
-        checkSpectrumSpec(n, s);
-    } else if (info.kind == NodeKind::Exemplar || info.kind == NodeKind::TiledField) {
-        g.noise.source = NoiseSpec::Source::Image;
-        g.noise.gaussianize = g.numbers["gaussianize"] != 0;
-        if (info.kind == NodeKind::TiledField && g.numbers["transfer"] != 0)  // 0: auto
-            g.noise.transfer = g.numbers["transfer"] == 1 ? Transfer::Srgb : Transfer::Linear;
-    }
+    // A source's example description, as a pattern file's noise.
+    if (info.parsed) info.parsed(g, n);
     return g;
 }
 
@@ -198,40 +184,10 @@ UvTransform nodeTransform(const TextureGraph& graph, const std::string& id, cons
                           std::map<std::string, UvTransform>& memo) {
     if (const auto it = memo.find(id); it != memo.end()) return it->second;
     const GraphNode& g = graph.node(id);
-    const std::string where = context + ": node \"" + id + "\" (" + g.info->name + ")";
-    const auto input = [&](const char* port) { return nodeTransform(graph, g.inputs.at(port), context, memo); };
-    UvTransform r;
-    switch (g.info->kind) {
-        case NodeKind::Transform: {
-            // input(M_in · (A·uv + b) + t_in): A = scale·R(angle), b = offset.
-            const UvTransform in = input("input");
-            const double a = g.numbers.at("angle") * std::numbers::pi / 180, k = g.numbers.at("scale");
-            const double c = k * std::cos(a), s = k * std::sin(a);
-            const std::array<double, 4> m{c, -s, s, c};
-            const std::array<double, 2> b{g.numbers.at("offset_u"), g.numbers.at("offset_v")};
-            r.m = {in.m[0] * m[0] + in.m[1] * m[2], in.m[0] * m[1] + in.m[1] * m[3], in.m[2] * m[0] + in.m[3] * m[2],
-                   in.m[2] * m[1] + in.m[3] * m[3]};
-            const std::array<double, 2> mb = in.linear(b[0], b[1]);
-            r.t = {mb[0] + in.t[0], mb[1] + in.t[1]};
-            break;
-        }
-        case NodeKind::Derivative:
-            if (!input("input").identity())
-                throw InputError(where + ": its input is seen through a transform of uv; put the transform after the "
-                                         "derivative");
-            break;
-        case NodeKind::Affine: r = input("input"); break;
-        case NodeKind::Sum:
-            r = input("a");
-            if (!(input("b") == r))
-                throw InputError(where + ": its inputs are seen through different transforms of uv; a sum needs one");
-            break;
-        case NodeKind::SpectralNoise:
-        case NodeKind::Exemplar:
-        case NodeKind::TiledField:
-        case NodeKind::Channel: break;
-        case NodeKind::Op: throw std::logic_error("graphNodeTransform: node " + id + " is not linear in its sources");
-    }
+    if (!g.info->linear()) throw std::logic_error("graphNodeTransform: node " + id + " is not linear in its sources");
+    const FieldSight sight{g, context + ": node \"" + id + "\" (" + g.info->name + ")",
+                           [&](const std::string& port) { return nodeTransform(graph, g.inputs.at(port), context, memo); }};
+    const UvTransform r = g.info->seenThrough ? g.info->seenThrough(sight) : UvTransform{};
     memo.emplace(id, r);
     return r;
 }
@@ -252,7 +208,7 @@ std::string graphTileGroup(const TextureGraph& graph, const std::string& id) {
         todo.pop_back();
         if (!seen.insert(n).second) continue;
         const GraphNode& g = graph.node(n);
-        if (g.info->kind == NodeKind::TiledField) fields.insert(n);
+        if (g.info->output == PortType::Channels) fields.insert(n);  // a tiled field
         else if (g.info->inputs.empty()) otherSource = true;
         for (const auto& [port, from] : g.inputs) todo.push_back(from);
     }
@@ -302,62 +258,14 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
                              "\"gaussianize\": false on its exemplar or tiled_field to use it here");
         return e;
     };
-    const auto number = [&](const char* name) { return g.numbers.at(name); };
-    switch (g.info->kind) {
-        case NodeKind::SpectralNoise: {
-            NoiseSpec ns = g.noise;
-            ns.spectrum.seed = g.seed ? *g.seed : graphNodeSeed(patternSeed, id);
-            return buildNoiseExample(ns, where);
-        }
-        case NodeKind::Exemplar: return buildNoiseExample(g.noise, where);
-        case NodeKind::Channel: {
-            // The tiled field's image, this channel of it (GraphPattern gives
-            // every channel of one tiled field the same tiles).
-            const GraphNode& field = graph.node(g.inputs.at("field"));
-            NoiseSpec ns = field.noise;
-            ns.channel = int(number("index"));
-            return buildNoiseExample(ns, where + " (channel)");
-        }
-        case NodeKind::Derivative: {
-            const NoiseExample e = linearInput("input");
-            const std::array<Image, 2> slopes = spectralSlopes(e.values());
-            const double a = number("angle") * std::numbers::pi / 180;
-            const float c = float(std::cos(a)), s = float(std::sin(a));
-            Image d(e.size(), e.size(), 1, Image::Uninitialized{});
-            double sumSq = 0;
-            for (size_t i = 0; i < d.data().size(); ++i) {
-                d.data()[i] = c * slopes[0].data()[i] + s * slopes[1].data()[i];
-                sumSq += double(d.data()[i]) * d.data()[i];
-            }
-            const double rms = std::sqrt(sumSq / double(d.data().size()));
-            if (!(rms > 1e-12)) throw InputError(where + " (derivative): the input is flat along this direction");
-            const float gain = float(number("stddev") / rms), mean = float(number("mean"));
-            for (float& v : d.data()) v = mean + gain * v;
-            return NoiseExample(std::move(d));
-        }
-        case NodeKind::Affine: {
-            const NoiseExample e = linearInput("input");
-            Image v = e.values();
-            const float scale = float(number("scale")), offset = float(number("offset"));
-            for (float& x : v.data()) x = scale * x + offset;
-            return NoiseExample(std::move(v));
-        }
-        case NodeKind::Sum: {
-            const NoiseExample a = linearInput("a"), b = linearInput("b");
-            if (a.size() != b.size())
-                throw InputError(where + " (sum): its inputs' examples are " + std::to_string(a.size()) + " and " +
-                                 std::to_string(b.size()) + " texels wide; a sum needs one size");
-            Image v = a.values();
-            const float wa = float(number("weight_a")), wb = float(number("weight_b"));
-            for (size_t i = 0; i < v.data().size(); ++i) v.data()[i] = wa * v.data()[i] + wb * b.values().data()[i];
-            return NoiseExample(std::move(v));
-        }
-        // The same example, seen through another uv (graphNodeTransform).
-        case NodeKind::Transform: return buildFieldOnce(graph, g.inputs.at("input"), patternSeed, context, cache);
-        case NodeKind::TiledField:  // not a field: its channels are
-        case NodeKind::Op: break;
-    }
-    throw std::logic_error("buildGraphField: node " + id + " is not a field linear in its sources");
+    if (!g.info->linear()) throw std::logic_error("buildGraphField: node " + id + " is not a field linear in its sources");
+    const FieldFold fold{g,
+                         where,
+                         [&] { return graphNodeSeed(patternSeed, id); },
+                         linearInput,
+                         [&](const std::string& port) { return buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache); },
+                         [&](const std::string& port) -> const GraphNode& { return graph.node(g.inputs.at(port)); }};
+    return g.info->fold(fold);
 }
 
 }  // namespace

@@ -22,11 +22,11 @@
 #include <string>
 #include <vector>
 
-#include "stochtex/kernel/camera.h"
 #include "stochtex/noise/example.h"
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/node_info.h"
 #include "stochtex/pattern/pattern_parts.h"
+#include "stochtex/pattern/uv_transform.h"
 
 namespace stochtex {
 
@@ -45,28 +45,6 @@ struct TextureGraph {
 // Parses and checks the graph members ("nodes", "output") of a pattern file.
 TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path& baseDir);
 
-// The transform of uv a linear field node is seen through (transform
-// nodes, composed): the field at uv is its example's tiled field at
-// M·uv + t. Identity for every node not downstream of a transform.
-struct UvTransform {
-    std::array<double, 4> m{1, 0, 0, 1};  // row-major: (m0 m1; m2 m3)
-    std::array<double, 2> t{0, 0};
-    bool identity() const { return m == std::array<double, 4>{1, 0, 0, 1} && t == std::array<double, 2>{0, 0}; }
-    bool operator==(const UvTransform&) const = default;
-    // The kernel's transformUv / transformVector (kernel/camera.glsl), which
-    // the GPU program calls with these numbers.
-    std::array<double, 2> apply(double u, double v) const {
-        const kernel::coord2 r = kernel::transformUv(kernel::coord2(u, v), kernel::coord2(m[0], m[1]),
-                                                     kernel::coord2(m[2], m[3]), kernel::coord2(t[0], t[1]));
-        return {r.x, r.y};
-    }
-    // The linear part on a vector (a Jacobian column).
-    std::array<double, 2> linear(double u, double v) const {
-        const kernel::coord2 r =
-            kernel::transformVector(kernel::coord2(u, v), kernel::coord2(m[0], m[1]), kernel::coord2(m[2], m[3]));
-        return {r.x, r.y};
-    }
-};
 // The transform of a linear field node. InputError naming the node where a
 // derivative reads a transformed field (put the transform after it) or a
 // sum reads two fields under different transforms.
@@ -81,7 +59,7 @@ std::string graphTileGroup(const TextureGraph& graph, const std::string& id);
 // and the node's id (so adding or renaming another node changes nothing).
 uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id);
 
-// The example of any linear field node (isLinearNode), linear nodes folded in (1 channel, W×W;
+// The example of any linear field node (NodeInfo::linear), linear nodes folded in (1 channel, W×W;
 // a Gaussianized exemplar's values are T(E)). Each node is built once, so a
 // node feeding many is not rebuilt for each (time linear in the nodes).
 NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,

@@ -15,7 +15,6 @@ struct ColormapFieldOp {
     static constexpr const char* kKernel = "colormap_field_op";
     static NodeInfo info() {
         return {"colormap_field",
-                NodeKind::Op,
                 "transfer",
                 "A 2D transfer function read as a field: one channel, or the luminance, of H(x, y) (paper Fig. 14)",
                 {{"x", PortType::Field, "The colormap's horizontal coordinate"},

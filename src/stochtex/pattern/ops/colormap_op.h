@@ -15,7 +15,6 @@ struct ColormapOp {
     static constexpr const char* kKernel = "colormap_op";
     static NodeInfo info() {
         return {"colormap",
-                NodeKind::Op,
                 "transfer",
                 "The 2D transfer function H: colour = H(x, y) (paper eq. 1)",
                 {{"x", PortType::Field, "N_x, the colormap's horizontal coordinate"},

@@ -16,7 +16,6 @@ struct ColourOp {
     static constexpr const char* kKernel = "colour_op";
     static NodeInfo info() {
         return {"colour",
-                NodeKind::Op,
                 "colour",
                 "A constant colour (an albedo for lean, an end of a mix)",
                 {},

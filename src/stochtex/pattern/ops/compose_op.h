@@ -12,7 +12,6 @@ struct ComposeOp {
     static constexpr const char* kKernel = "compose_op";
     static NodeInfo info() {
         return {"compose",
-                NodeKind::Op,
                 "colour",
                 "A colour from three fields, (r, g, b) in linear light: with the channels of a tiled field, a colour "
                 "exemplar tiled and blended",

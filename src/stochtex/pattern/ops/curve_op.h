@@ -18,7 +18,6 @@ struct CurveOp {
     static constexpr const char* kKernel = "curve_op";
     static NodeInfo info() {
         return {"curve",
-                NodeKind::Op,
                 "transfer",
                 "A 1D transfer function: the piecewise-linear curve through the points",
                 {{"input", PortType::Field, "The field (read in [0, 1], clamped)"}},

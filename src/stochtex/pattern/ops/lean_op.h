@@ -24,7 +24,6 @@ struct LeanOp {
     static NodeInfo info() {
         return {
             "lean",
-            NodeKind::Op,
             "shading",
             "LEAN mapping (paper §6.5): the height field's slopes as micro-facet normals; their footprint mean and "
             "covariance make an anisotropic Beckmann lobe, lit by a directional light",

@@ -12,7 +12,6 @@ struct MixOp {
     static constexpr const char* kKernel = "mix_op";
     static NodeInfo info() {
         return {"mix",
-                NodeKind::Op,
                 "colour",
                 "a + t·(b − a): two colours mixed by a field (t not clamped)",
                 {{"a", PortType::Colour, "The colour where t = 0"},

@@ -12,7 +12,6 @@ struct ProductOp {
     static constexpr const char* kKernel = "product_op";
     static NodeInfo info() {
         return {"product",
-                NodeKind::Op,
                 "transfer",
                 "scale · a · b: one field modulating another (filtered exactly for independent fields)",
                 {{"a", PortType::Field, "First field"}, {"b", PortType::Field, "Second field"}},

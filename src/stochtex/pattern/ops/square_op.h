@@ -12,7 +12,6 @@ struct SquareOp {
     static constexpr const char* kKernel = "square_op";
     static NodeInfo info() {
         return {"square",
-                NodeKind::Op,
                 "transfer",
                 "scale · input²: a field's energy (filtered exactly for a Gaussian input)",
                 {{"input", PortType::Field, "The field"}},

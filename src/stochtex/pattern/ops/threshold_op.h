@@ -15,7 +15,6 @@ struct ThresholdOp {
     static constexpr const char* kKernel = "threshold_op";
     static NodeInfo info() {
         return {"threshold",
-                NodeKind::Op,
                 "transfer",
                 "A soft threshold: 0 below edge − width/2, 1 above edge + width/2, the smoothstep between",
                 {{"input", PortType::Field, "The field"}},

@@ -1,0 +1,38 @@
+#include <cmath>
+#include <numbers>
+
+#include "stochtex/pattern/fields/field_node.h"
+#include "stochtex/pattern/fields/fields.h"
+
+namespace stochtex {
+
+NodeInfo transformNode() {
+    NodeInfo n{"transform",
+               "linear",
+               "The field seen through a transform of uv: input(scale · R(angle) · uv + offset), tiles and all",
+               {{"input", PortType::Field, "The field"}},
+               PortType::Field,
+               {{"angle", ParamType::Number, "Rotation, degrees from +u towards +v", 0, -360, 360},
+                {"scale", ParamType::Number, "Scale of uv (2: features half as large)", 1, 1.0 / 64, 64},
+                {"offset_u", ParamType::Number, "Offset along u, example periods", 0, -1e4, 1e4},
+                {"offset_v", ParamType::Number, "Offset along v, example periods", 0, -1e4, 1e4}}};
+    // The same example, seen through another uv.
+    n.fold = [](const FieldFold& f) { return f.input("input"); };
+    n.seenThrough = [](const FieldSight& s) {
+        // input(M_in · (A·uv + b) + t_in): A = scale·R(angle), b = offset.
+        const UvTransform in = s.input("input");
+        const double a = s.number("angle") * std::numbers::pi / 180, k = s.number("scale");
+        const double c = k * std::cos(a), sn = k * std::sin(a);
+        const std::array<double, 4> m{c, -sn, sn, c};
+        const std::array<double, 2> b{s.number("offset_u"), s.number("offset_v")};
+        UvTransform r;
+        r.m = {in.m[0] * m[0] + in.m[1] * m[2], in.m[0] * m[1] + in.m[1] * m[3], in.m[2] * m[0] + in.m[3] * m[2],
+               in.m[2] * m[1] + in.m[3] * m[3]};
+        const std::array<double, 2> mb = in.linear(b[0], b[1]);
+        r.t = {mb[0] + in.t[0], mb[1] + in.t[1]};
+        return r;
+    };
+    return n;
+}
+
+}  // namespace stochtex
