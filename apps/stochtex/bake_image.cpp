@@ -45,7 +45,7 @@ void registerBakeImage(CLI::App& app) {
         checkBitsApply(bits, args->output);
         checkImageOutput(args->output, args->bits);
         checkImageStreamFormat(args->output);  // .jpg and .tif are written whole, not in bands
-        if (!isGpuFilter(args->options)) throw InputError("--filter: bake-image renders none, paper or smooth");
+        if (!gpuHasSource(args->options.source)) throw InputError("--filter: bake-image renders none, paper or smooth");
         const PatternSpec spec = loadPatternSource(args->source, args->options);
         Camera whole;
         whole.view = makeView(spec, args->view);

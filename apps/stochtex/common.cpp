@@ -189,7 +189,7 @@ const EnumNames<NamedFilter>& gpuFilterNames() {
     static const EnumNames<NamedFilter> names = [] {
         EnumNames<NamedFilter> out;
         for (const auto& entry : kFilterNames)
-            if (isGpuFilter(FilterOptions{}.use(entry.second))) out.push_back(entry);
+            if (gpuHasSource(entry.second.source)) out.push_back(entry);
         return out;
     }();
     return names;
@@ -256,10 +256,6 @@ void refuseUnusedCameraFlags(const CLI::App& cmd, const Camera& camera) {
     refuseWithoutEffect(cmd.get_option_no_throw("--tilt"), plane, "in the zoom view (only --view plane is tilted)");
     refuseWithoutEffect(cmd.get_option_no_throw("--fov"), plane,
                         "in the zoom view (only --view plane has a field of view)");
-}
-
-bool isGpuFilter(const FilterOptions& options) {
-    return options.source == StatisticsSource::Point || options.source == StatisticsSource::Estimators;
 }
 
 void addPipelineFlag(CLI::App& cmd, GpuView::Pipeline& pipeline) {

@@ -176,9 +176,6 @@ void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov = true);
 // --tilt and --fov refused in the zoom view (refuseWithoutEffect).
 void refuseUnusedCameraFlags(const CLI::App& cmd, const Camera& camera);
 
-// What the GLSL implementation renders: the point source (none) or the
-// estimators (paper, smooth).
-bool isGpuFilter(const FilterOptions& options);
 
 // --pipeline fragment|compute of the --gpu commands (default fragment).
 void addPipelineFlag(CLI::App& cmd, GpuView::Pipeline& pipeline);

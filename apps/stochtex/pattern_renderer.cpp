@@ -18,7 +18,7 @@ void refuseUnusedDeviceFlags(const CLI::App& cmd, const DeviceFlags& flags) {
 }
 
 void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
-    if (flags.gpu && !isGpuFilter(options)) throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
+    if (flags.gpu && !gpuHasSource(options.source)) throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
 }
 
 std::unique_ptr<ViewRenderer> makeRenderer(const PatternSpec& spec, const FilterOptions& options,

@@ -59,7 +59,7 @@ void registerView(CLI::App& app) {
         o.camera.view.width = args->size[0];
         o.camera.view.height = args->size.size() > 1 ? args->size[1] : args->size[0];
         o.panel = !args->noPanel;
-        if (!isGpuFilter(o.filter)) throw InputError("--filter: the window shows none, paper or smooth");
+        if (!gpuHasSource(o.filter.source)) throw InputError("--filter: the window shows none, paper or smooth");
         validateCamera(o.camera);
         o.camera.kind = o.view == WorkbenchView::Plane ? Camera::Kind::Plane : Camera::Kind::Zoom;
         if (!args->script.empty()) o.script = parseWorkbenchScript(readJsonFile(args->script), args->script);

@@ -213,7 +213,7 @@ namespace {
 // program has (checked first: they cost no pyramid).
 std::shared_ptr<const FilteredGraph> gpuFilteredGraph(const GraphPattern& graph, const FilterOptions& options,
                                                       GraphMoments moments) {
-    if (options.source != StatisticsSource::Point && options.source != StatisticsSource::Estimators)
+    if (!gpuHasSource(options.source))
         throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
                                                   enumName(kStatisticsSourceNames, options.source));
     checkGraphTextureUnits(graph, options.source == StatisticsSource::Estimators);

@@ -19,6 +19,14 @@
 
 namespace stochtex {
 
+// Whether the GPU programs have this statistics source: the point and the
+// estimators (exact statistics and the reference are the CPU's studies).
+// The one statement of the refusal: the GPU hosts refuse the others with an
+// InputError naming `source`, and the commands offer only these.
+inline bool gpuHasSource(StatisticsSource source) {
+    return source == StatisticsSource::Point || source == StatisticsSource::Estimators;
+}
+
 class GpuView : public ViewRenderer {
 public:
     // The recipes of the fragment and the compute program (built on first

@@ -303,8 +303,10 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
             throw InputError(spec.name + ": a program with a pattern needs " + std::to_string(kPatternUnits + 4) +
                              " texture units; this GL has " + std::to_string(units));
         m.channelUnit = kPatternUnits;
-        m.pattern = makeGpuView(*spec.pattern, context, spec.patternFilter);
-        include = exportedGraphInclude(GraphPattern::build(*spec.pattern, spec.patternFilter.response));
+        // One program for the view's textures and the include's code.
+        const GraphPattern program = GraphPattern::build(*spec.pattern, spec.patternFilter.response);
+        m.pattern = std::make_unique<GpuGraph>(program, context, spec.patternFilter);
+        include = exportedGraphInclude(program);
     }
     m.vao = gl::newVertexArray();
     m.keyboard = gl::newTexture();
