@@ -344,6 +344,7 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"pass", "--inspect"},
     {"pixel", "--inspect"},
     {"key", "--keys"},
+    {"hwPerformance", "--hw-performance"},
 };
 }  // namespace
 

@@ -31,6 +31,10 @@ void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& f) {
     cmd.add_option("--date", f.date, "iDate at iTime 0: YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS")->capture_default_str();
     cmd.add_option("--keys", f.keys, "Key codes held from frame 0 (JavaScript keyCode, e.g. 65 for A), comma-separated")
         ->delimiter(',');
+    cmd.add_option("--hw-performance", f.hwPerformance,
+                   "HW_PERFORMANCE, which shaders test to pick their quality: 1 (ShaderToy on a desktop) or 0 (on a "
+                   "phone)")
+        ->capture_default_str();
     cmd.add_option("--first-frame", f.firstFrame, "The frame a study starts at (the frames before it are rendered "
                                                   "too: buffers with feedback need them); default 0");
 }
@@ -49,6 +53,7 @@ ShadertoySettings shadertoySettings(const ShadertoyFlags& f) {
     if (!std::regex_match(f.date, m, date)) throw InputError("--date: expected YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS, got \"" + f.date + "\"");
     for (int k = 0; k < 6; ++k) s.date[size_t(k)] = m[k + 1].matched ? std::stoi(m[k + 1].str()) : 0;
     s.keys = f.keys;
+    s.hwPerformance = f.hwPerformance;
     if (f.firstFrame < 0 || f.firstFrame > 1000000)
         throw InputError("--first-frame: must be in [0, 1000000], got " + std::to_string(f.firstFrame));
     validateShadertoySettings(s);

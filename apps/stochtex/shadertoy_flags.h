@@ -25,6 +25,7 @@ struct ShadertoyFlags {
     std::string date = shadertoyDateText(ShadertoySettings{}.date);
     std::vector<int> keys;
     int firstFrame = 0;  // the first frame a study analyses
+    int hwPerformance = ShadertoySettings{}.hwPerformance;
 };
 void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& flags);
 // The settings the flags give; InputError naming the flag when unusable.

@@ -159,6 +159,38 @@ TEST_F(Shadertoy, ChannelFilterAndWrapSampleAsAsked) {
     expectPixel(host.pixel("image", 1, 1), {0.25f, 0.125f, 0.0f, 1.0f}, 1e-3f, "filter and wrap");
 }
 
+// Published sources run unchanged: a UTF-8 byte-order mark and CR LF line
+// ends (a macro continued across one), ShaderToy's names from before 2017
+// (iGlobalTime, texture2D), HW_PERFORMANCE (1 as on a desktop, 0 when
+// asked), and a grey channel image read as a browser uploads it, (v, v, v, 1).
+TEST_F(Shadertoy, PublishedSourcesRunUnchanged) {
+    Image grey(4, 1, 1);
+    const float texels[4] = {0.0f, 0.25f, 0.5f, 1.0f};
+    for (int x = 0; x < 4; ++x) grey.at(x, 0) = texels[x];
+    fs::create_directories(dir_ / "p");
+    writeImage((dir_ / "p/grey.exr").string(), grey);
+    write("p/image.glsl", "\xEF\xBB\xBF// saved by a Windows editor\r\n#define HALF \\\r\n    0.5\r\n"
+                          "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\r\n"
+                          "    vec4 g = texture2D(iChannel0, vec2(0.375, 0.5));\r\n"
+                          "    fragColor = vec4(HALF + iGlobalTime, g.g, g.b + g.a, float(HW_PERFORMANCE));\r\n}\r\n");
+    write("p/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [
+        {"type": "image", "path": "grey.exr", "filter": "nearest", "vflip": false}]}}})");
+    ShadertoySettings s = small(4, 4);
+    s.startTime = 2.0;
+    {
+        ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, s);
+        host.renderFrame();
+        // texel 1 (0.25) in green and blue as in red; alpha 1.
+        expectPixel(host.pixel("image", 1, 1), {2.5f, 0.25f, 1.25f, 1.0f}, 1e-6f, "published source");
+    }
+    s.hwPerformance = 0;
+    ShadertoyHost phone(loadShadertoy((dir_ / "p").string()), *context_, s);
+    phone.renderFrame();
+    EXPECT_EQ(phone.pixel("image", 0, 0)[3], 0.0f) << "HW_PERFORMANCE as a phone's";
+    s.hwPerformance = 2;
+    EXPECT_EQ(test::inputErrorOf([&] { validateShadertoySettings(s); }).parameter(), "hwPerformance");
+}
+
 // The keyboard texture: row 0 held, row 1 pressed this frame only, row 2 toggled.
 TEST_F(Shadertoy, KeyboardTextureHoldsPressesAndToggles) {
     write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {

@@ -38,7 +38,8 @@ std::string generatedShaderText(const std::string& text);
 
 // A user's GLSL file, as (path, text) to pass in `overrides` with its path
 // among the stems: its compile errors then read "path:line". InputError if
-// it cannot be read or is not text.
+// it cannot be read or is not text. A UTF-8 byte-order mark is dropped and
+// CR LF (or a lone CR) line ends become LF, as GL compilers need.
 std::pair<std::string, std::string> readShaderFile(const std::string& path);
 
 // The version header, then the files in order (what the driver compiles);

@@ -38,6 +38,9 @@ void validateShadertoySettings(const ShadertoySettings& s) {
     for (const int key : s.keys)
         if (key < 0 || key > 255)
             throw InputError::parameter("key", "key codes are 0–255 (JavaScript keyCode), got " + std::to_string(key));
+    if (s.hwPerformance != 0 && s.hwPerformance != 1)
+        throw InputError::parameter("hwPerformance", "must be 0 (a phone) or 1 (a desktop), got " +
+                                                        std::to_string(s.hwPerformance));
 }
 
 void checkShadertoyMemory(const ShadertoySpec& spec, const ShadertoySettings& s) {
@@ -70,9 +73,14 @@ constexpr int kPatternUnits = 16;  // a pattern's GpuView binds at most these (c
 
 // The uniforms every pass declares (ShaderToy's), then the program's own,
 // and the output; mainImage's wrapper after the user's files.
-std::string prelude(const ShadertoySpec& spec) {
+std::string prelude(const ShadertoySpec& spec, const ShadertoySettings& settings) {
     std::string s =
         "// stochtex ShaderToy host: ShaderToy's uniforms.\n"
+        "#define HW_PERFORMANCE " + std::to_string(settings.hwPerformance) + "\n"
+        // The names of ShaderToy before WebGL 2 (2017), which published
+        // shaders still use, as ShaderToy itself still accepts them.
+        "#define iGlobalTime iTime\n#define texture2D texture\n#define texture2DLod textureLod\n"
+        "#define textureCube texture\n"
         "uniform vec3 iResolution;\nuniform float iTime;\nuniform float iTimeDelta;\nuniform int iFrame;\n"
         "uniform float iFrameRate;\nuniform vec4 iMouse;\nuniform vec4 iDate;\nuniform float iSampleRate;\n"
         "uniform vec3 iChannelResolution[4];\nuniform float iChannelTime[4];\n"
@@ -86,6 +94,20 @@ const char* kMain =
 
 GLint minFilter(ChannelFilter f) {
     return f == ChannelFilter::Nearest ? GL_NEAREST : f == ChannelFilter::Linear ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
+}
+
+// An image as a browser uploads it to WebGL: grey is (v, v, v, 1), grey
+// and alpha (v, v, v, a); colour keeps its channels (RGB reads alpha 1).
+Image asBrowserUploads(const Image& img) {
+    if (img.channels() > 2) return img;
+    Image out(img.width(), img.height(), 4, Image::Uninitialized{});
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const float v = img.at(x, y, 0);
+            out.at(x, y, 0) = out.at(x, y, 1) = out.at(x, y, 2) = v;
+            out.at(x, y, 3) = img.channels() == 2 ? img.at(x, y, 1) : 1.0f;
+        }
+    return out;
 }
 
 // A texture of the image's channels (1–4: R, RG, RGB, RGBA as GL reads
@@ -312,7 +334,7 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
     m.keyboard = gl::newTexture();
     m.uploadKeyboard();
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    std::vector<std::pair<std::string, std::string>> sources{{"shadertoy_prelude", prelude(spec)},
+    std::vector<std::pair<std::string, std::string>> sources{{"shadertoy_prelude", prelude(spec, settings)},
                                                              {"shadertoy_main", kMain},
                                                              {"stochtex_pattern", include}};
     if (!spec.common.empty()) sources.push_back(readShaderFile(spec.common.string()));
@@ -354,7 +376,7 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
                 if (img.channels() < 1 || img.channels() > 4)
                     throw InputError(ch.image.string() + ": a channel image has 1 to 4 channels, got " +
                                      std::to_string(img.channels()));
-                p.inputs[i] = imageTexture(img, ch.vflip, ch.filter == ChannelFilter::Mipmap);
+                p.inputs[i] = imageTexture(asBrowserUploads(img), ch.vflip, ch.filter == ChannelFilter::Mipmap);
                 p.inputSize[i] = {img.width(), img.height()};
             } else if (ch.kind == ShadertoyChannel::Kind::Noise) {
                 p.inputs[i] = imageTexture(noiseImage(ch.noiseSize, ch.rgbaNoise, ch.noiseSeed), false,

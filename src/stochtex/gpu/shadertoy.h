@@ -38,8 +38,11 @@ struct ShadertoySettings {
     std::array<int, 6> date{2026, 1, 1, 12, 0, 0};
     double sampleRate = 44100;  // iSampleRate
     std::vector<int> keys;      // key codes (0–255) held from frame 0, after every reset
+    // HW_PERFORMANCE, which published shaders test to choose their quality:
+    // 1 as ShaderToy on a desktop, 0 as on a phone.
+    int hwPerformance = 1;
 };
-// InputError naming the parameter (width, height, fps, startTime, date, key).
+// InputError naming the parameter (width, height, fps, startTime, date, key, hwPerformance).
 void validateShadertoySettings(const ShadertoySettings& s);
 // A program's targets hold at most this many bytes (RGBA32F, two per buffer).
 constexpr long long kMaxShadertoyBytes = 2ll << 30;
