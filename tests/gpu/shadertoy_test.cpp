@@ -191,6 +191,46 @@ TEST_F(Shadertoy, PublishedSourcesRunUnchanged) {
     EXPECT_EQ(test::inputErrorOf([&] { validateShadertoySettings(s); }).parameter(), "hwPerformance");
 }
 
+// ShaderToy's RGBA noise has the structure published shaders rely on:
+// green is red at (x − 37, y − 17) and alpha is blue there, so the
+// one-fetch 3D value noise (iq's, in countless cloud and terrain shaders)
+// is continuous across its z slices: just below and just above an integer
+// z it gives the same value (within 1e-3 over 256 points; with independent
+// channels it jumps by the difference of two independent uniforms).
+TEST_F(Shadertoy, RgbaNoiseChannelsAreOffsetSoTheSliceTrickIsContinuous) {
+    write("p/image.glsl", R"(float noise3(vec3 x) {
+        vec3 p = floor(x), f = fract(x);
+        f = f * f * (3.0 - 2.0 * f);
+        vec2 uv = (p.xy + vec2(37.0, 17.0) * p.z) + f.xy;
+        vec2 rg = textureLod(iChannel0, (uv + 0.5) / 256.0, 0.0).yx;
+        return mix(rg.x, rg.y, f.z);
+    }
+    void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+        vec2 xy = fragCoord * 1.37 + vec2(0.21, 0.63);
+        ivec2 t = ivec2(fragCoord) * 7;
+        vec4 here = texelFetch(iChannel0, t, 0), there = texelFetch(iChannel0, (t - ivec2(37, 17)) & 255, 0);
+        fragColor = vec4(abs(noise3(vec3(xy, 2.9999)) - noise3(vec3(xy, 3.0001))), here.g - there.r, here.a - there.b,
+                         abs(here.r - here.b));
+    })");
+    write("p/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [
+        {"type": "noise", "kind": "rgba", "size": 256, "filter": "linear"}]}}})");
+    ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, small(16, 16));
+    host.renderFrame();
+    const Image img = host.image();
+    double jump = 0, offsetG = 0, offsetA = 0, redVsBlue = 0;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            jump = std::max(jump, double(img.at(x, y, 0)));
+            offsetG = std::max(offsetG, std::abs(double(img.at(x, y, 1))));
+            offsetA = std::max(offsetA, std::abs(double(img.at(x, y, 2))));
+            redVsBlue += img.at(x, y, 3) / 256.0;
+        }
+    EXPECT_LT(jump, 1e-3) << "the 3D value noise jumps across z = 3";
+    EXPECT_EQ(offsetG, 0.0) << "green is red at (x - 37, y - 17)";
+    EXPECT_EQ(offsetA, 0.0) << "alpha is blue at (x - 37, y - 17)";
+    EXPECT_GT(redVsBlue, 0.2) << "red and blue are independent (mean |r - b| of two uniforms is 1/3)";
+}
+
 // The keyboard texture: row 0 held, row 1 pressed this frame only, row 2 toggled.
 TEST_F(Shadertoy, KeyboardTextureHoldsPressesAndToggles) {
     write("p/image.glsl", R"(void mainImage(out vec4 fragColor, in vec2 fragCoord) {

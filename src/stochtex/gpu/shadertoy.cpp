@@ -126,16 +126,36 @@ gl::Texture imageTexture(const Image& img, bool vflip, bool mipmaps) {
     return t;
 }
 
+// The offset, in texels, between the channels of ShaderToy's RGBA noise
+// textures: green is red at (x − 37, y − 17), alpha blue there, so that
+// the one-fetch 3D value noise published shaders use (the lattice's slice z
+// read at xy + (37, 17)·z, green for z and red for z + 1) is continuous
+// across slices.
+constexpr int kNoiseSliceOffset[2] = {37, 17};
+
 // ShaderToy's noise textures, drawn from the project's hash: every texel's
-// channels uniform in [0, 1), independent (rgba) or one value in all (gray).
+// red and blue uniform in [0, 1) and independent, green and alpha the same
+// values offset by kNoiseSliceOffset (rgba), or one value in all four (gray).
 Image noiseImage(int size, bool rgba, uint32_t seed) {
+    const uint32_t key = deriveSeed(seed, 0x6e6f6973u);
+    const auto texel = [&](int x, int y) {
+        const UInt3 h = pcg3d({uint32_t(x), uint32_t(y), key});
+        return std::array<float, 2>{unitFloat(h.x), unitFloat(h.z)};
+    };
     Image img(size, size, 4, Image::Uninitialized{});
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
-            const UInt3 h = pcg3d({uint32_t(x), uint32_t(y), deriveSeed(seed, 0x6e6f6973u)});
-            const UInt3 g = pcg3d({h.x, h.y, h.z});
-            const float v[4] = {unitFloat(h.x), unitFloat(h.y), unitFloat(h.z), unitFloat(g.x)};
-            for (int c = 0; c < 4; ++c) img.at(x, y, c) = rgba ? v[c] : v[0];
+            const std::array<float, 2> rb = texel(x, y);
+            if (!rgba) {
+                for (int c = 0; c < 4; ++c) img.at(x, y, c) = rb[0];
+                continue;
+            }
+            // size is a power of two: the offset texel wraps by a mask.
+            const std::array<float, 2> ga = texel((x - kNoiseSliceOffset[0]) & (size - 1), (y - kNoiseSliceOffset[1]) & (size - 1));
+            img.at(x, y, 0) = rb[0];
+            img.at(x, y, 1) = ga[0];
+            img.at(x, y, 2) = rb[1];
+            img.at(x, y, 3) = ga[1];
         }
     return img;
 }
