@@ -12,11 +12,11 @@
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_view.h"
 #include "stochtex/image/image_io.h"
-#include "stochtex/report/page.h"
-#include "stochtex/report/table.h"
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/report/page.h"
+#include "stochtex/report/table.h"
 
 namespace stochtex::cli {
 
@@ -175,7 +175,6 @@ void refuseUnusedFilterFlags(const CLI::App& cmd, const std::vector<FilterOption
 void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov = true);
 // --tilt and --fov refused in the zoom view (refuseWithoutEffect).
 void refuseUnusedCameraFlags(const CLI::App& cmd, const Camera& camera);
-
 
 // --pipeline fragment|compute of the --gpu commands (default fragment).
 void addPipelineFlag(CLI::App& cmd, GpuView::Pipeline& pipeline);

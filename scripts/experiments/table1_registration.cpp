@@ -8,15 +8,15 @@
 #include <cstdio>
 #include <cmath>
 #include "stochtex/studies/paper.h"
-#include "stochtex/pattern/pattern.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/filter/footprint.h"
 #include "stochtex/core/hash.h"
 using namespace stochtex;
 int main() {
     for (int which = 0; which < 2; ++which) {
-        const Pattern p = Pattern::build(table1PatternSpec(which, 1));
-        const TiledField& field = p.tiledField();
+        const GraphPattern p = GraphPattern::build(table1PatternSpec(which, 1));  // two leaves → colormap
+        const TiledField& field = p.leafPairs().front();
         const int w = field.exampleSize();
         const FootprintEstimator est(field, false);
         for (int s : {2, 4, 8, 16, 32, 64}) {

@@ -170,8 +170,9 @@ TEST_F(Shadertoy, PublishedSourcesRunUnchanged) {
     fs::create_directories(dir_ / "p");
     writeImage((dir_ / "p/grey.exr").string(), grey);
     write("p/image.glsl", "\xEF\xBB\xBF// saved by a Windows editor\r\n#define HALF \\\r\n    0.5\r\n"
+                          "vec4 fetch(vec2 uv) { return texture2D(iChannel0, uv); }  // a call after `return`\r\n"
                           "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\r\n"
-                          "    vec4 g = texture2D(iChannel0, vec2(0.375, 0.5));\r\n"
+                          "    vec4 g = fetch(vec2(0.375, 0.5));\r\n"
                           "    fragColor = vec4(HALF + iGlobalTime, g.g, g.b + g.a, float(HW_PERFORMANCE));\r\n}\r\n");
     write("p/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [
         {"type": "image", "path": "grey.exr", "filter": "nearest", "vflip": false}]}}})");
@@ -189,6 +190,19 @@ TEST_F(Shadertoy, PublishedSourcesRunUnchanged) {
     EXPECT_EQ(phone.pixel("image", 0, 0)[3], 0.0f) << "HW_PERFORMANCE as a phone's";
     s.hwPerformance = 2;
     EXPECT_EQ(test::inputErrorOf([&] { validateShadertoySettings(s); }).parameter(), "hwPerformance");
+    // A program's own shims of the old names win: no alias collides with them.
+    write("q/image.glsl", R"(#define iGlobalTime (iTime * 2.0)
+        vec4 texture2D(sampler2D s, vec2 uv) { return texture(s, uv) * 2.0; }
+        void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+            fragColor = vec4(iGlobalTime, texture2D(iChannel0, vec2(0.375, 0.5)).g, 0.0, 1.0);
+        })");
+    fs::copy_file(dir_ / "p/grey.exr", dir_ / "q/grey.exr");
+    write("q/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [
+        {"type": "image", "path": "grey.exr", "filter": "nearest", "vflip": false}]}}})");
+    s.hwPerformance = 1;
+    ShadertoyHost shims(loadShadertoy((dir_ / "q").string()), *context_, s);
+    shims.renderFrame();
+    expectPixel(shims.pixel("image", 1, 1), {4.0f, 0.5f, 0.0f, 1.0f}, 1e-6f, "the program's own shims");
 }
 
 // ShaderToy's RGBA noise has the structure published shaders rely on:
@@ -216,14 +230,14 @@ TEST_F(Shadertoy, RgbaNoiseChannelsAreOffsetSoTheSliceTrickIsContinuous) {
         {"type": "noise", "kind": "rgba", "size": 256, "filter": "linear"}]}}})");
     ShadertoyHost host(loadShadertoy((dir_ / "p").string()), *context_, small(16, 16));
     host.renderFrame();
-    const Image img = host.image();
     double jump = 0, offsetG = 0, offsetA = 0, redVsBlue = 0;
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 16; ++x) {
-            jump = std::max(jump, double(img.at(x, y, 0)));
-            offsetG = std::max(offsetG, std::abs(double(img.at(x, y, 1))));
-            offsetA = std::max(offsetA, std::abs(double(img.at(x, y, 2))));
-            redVsBlue += img.at(x, y, 3) / 256.0;
+            const std::array<float, 4> v = host.pixel("image", x, y);  // RGBA (image() reads RGB)
+            jump = std::max(jump, double(v[0]));
+            offsetG = std::max(offsetG, std::abs(double(v[1])));
+            offsetA = std::max(offsetA, std::abs(double(v[2])));
+            redVsBlue += v[3] / 256.0;
         }
     EXPECT_LT(jump, 1e-3) << "the 3D value noise jumps across z = 3";
     EXPECT_EQ(offsetG, 0.0) << "green is red at (x - 37, y - 17)";

@@ -215,7 +215,7 @@ TEST(GraphPattern, PlainFileAndItsGraphSpellingAreOneProgram) {
         ASSERT_NE(spelt.plainColormap(), nullptr);
         const View view{48, 40, 1.7, 13.25, -40.5};
         EXPECT_TRUE(identical(plain.render(view), spelt.render(view)));
-        for (const char* filter : {"none", "smooth", "paper", "reference"})
+        for (const char* filter : {"none", "smooth", "paper", "exact", "reference"})
             for (const bool onPlane : {false, true}) {
                 FilterOptions o;
                 o.use(parseFilter(filter));
@@ -497,6 +497,12 @@ TEST(GraphPattern, RefusesWhatItCannotEvaluateNamingTheNode) {
     std::string e = buildError(graph(curve + R"( "d": {"type": "derivative", "input": "k"},
         "c": {"type": "colormap", "x": "d", "y": "a", "colormap": {"type": "gaussian"}})"));
     EXPECT_NE(e.find("node \"d\" (derivative): its input \"k\" is not linear in the sources"), std::string::npos) << e;
+    e = buildError(graph(curve + R"( "t": {"type": "transform", "input": "k", "scale": 2},
+        "c": {"type": "colormap", "x": "t", "y": "a", "colormap": {"type": "gaussian"}})"));
+    EXPECT_NE(e.find("node \"t\" (transform): its input \"k\" is not linear in the sources, so it has no example for a "
+                     "transform node to read"),
+              std::string::npos)
+        << e;
     e = buildError(graph(curve + R"( "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}})"),
                    ResponseKind::Lean);
     EXPECT_NE(e.find("response a texture graph shades through its own nodes"), std::string::npos) << e;

@@ -177,7 +177,7 @@ TEST(TextureGraph, EveryNodeBuildsAndRendersInItsSampleGraph) {
     for (const NodeInfo& node : graphNodes()) {
         const std::string text = sampleNodeGraph(node, file.string()).dump();
         try {
-            // GraphPattern evaluates any graph (a folding one as its Pattern would).
+            // GraphPattern evaluates any graph (a folding one as the plain program).
             const GraphPattern p = GraphPattern::build(parse(text));
             const Image out = p.render(View{32, 32, 1.0});
             double lo = 1e9, hi = -1e9;

@@ -1,7 +1,6 @@
 #include "stochtex/gpu/export.h"
 
 #include <algorithm>
-#include <charconv>
 #include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -107,8 +106,9 @@ Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
 `manifest.json`'s `"textures"` lists the same: each sampler uniform with its
 files (`"pyramid"`: one file per mip level; `"table"`: one file of `layers`
 stacked `width × height` layers).
-All are read with `texelFetch` (no filtering needed); set `GL_TEXTURE_MAX_LEVEL`
-to L so the pyramids are mipmap-complete.
+All are read with `texelFetch` (no filtering needed); set each pyramid's
+`GL_TEXTURE_MAX_LEVEL` to its last mip level (its row above: levels 0…N) so
+that it is mipmap-complete.
 @UNREAD@
 ## Colour space
 
@@ -152,10 +152,6 @@ void main() { colour = stochtex_sample(vUv * 8.0); }
 // The README's row for a sampler of manifest.json's "textures".
 std::string textureRow(const nlohmann::json& t) {
     const std::string uniform = "`" + t["uniform"].get<std::string>() + "`";
-    if (t.contains("read") && !t["read"].get<bool>())
-        return "| " + uniform + " | `sampler2D` | not read (`covariance` is false), but on a code path, so GL wants a " +
-               "`sampler2D` texture on a unit of its own: any will do (`manifest.json` lists `uStatsX`'s files for " +
-               "it, `\"read\": false`) |\n";
     if (t["kind"] == "pyramid") {
         const std::string first = t["files"].front(), last = t["files"].back();
         return "| " + uniform + " | `sampler2D`, RG32F, mip levels 0…" + std::to_string(t["files"].size() - 1) +
@@ -350,7 +346,9 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     // lean nodes alone has none.
     if (!tables.empty()) m["table"] = tables.front();
     // What an engine reads of each op beside the GLSL (a lean node's
-    // shading, as the program's constants hold it), by node type: graph.lean.
+    // shading, as the program's constants hold it), by node type: graph.lean
+    // (an empty list when the graph has none of that type).
+    for (const std::string& type : opManifestTypes()) m["graph"][type] = nlohmann::json::array();
     for (const GraphPattern::Operation& op : graph.operations())
         if (nlohmann::json entry = opManifest(op.params); !entry.is_null()) {
             entry["node"] = op.id;

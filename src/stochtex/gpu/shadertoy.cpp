@@ -3,9 +3,10 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
-#include <stdexcept>
 #include <cctype>
 #include <cmath>
+#include <regex>
+#include <stdexcept>
 #include <vector>
 
 #include "stochtex/core/error.h"
@@ -71,16 +72,37 @@ void withMipmaps(GLuint texture) {
 }
 constexpr int kPatternUnits = 16;  // a pattern's GpuView binds at most these (checkGraphTextureUnits)
 
+// The names of ShaderToy before WebGL 2 (2017) that published shaders still
+// use, and what they are now. Each is defined only for sources that use it
+// and neither define nor declare it themselves (a shader's own
+// `#define texture2D(s, uv) …` or `vec4 texture2D(…)` shim must not collide).
+std::string legacyAliases(const std::vector<std::string>& texts) {
+    static const std::pair<const char*, const char*> kAliases[] = {
+        {"iGlobalTime", "iTime"}, {"texture2D", "texture"}, {"texture2DLod", "textureLod"}};
+    std::string out;
+    for (const auto& [old, now] : kAliases) {
+        const std::regex used("\\b" + std::string(old) + "\\b");
+        // Its own macro, or a variable or function of a GLSL type by that name.
+        const std::regex own("#\\s*define\\s+" + std::string(old) +
+                             "\\b|\\b(void|float|int|uint|bool|[biu]?vec[234]|mat[234](x[234])?|sampler\\w*)\\s+" +
+                             std::string(old) + "\\s*[(=;,]");
+        bool uses = false, owns = false;
+        for (const std::string& t : texts) {
+            uses = uses || std::regex_search(t, used);
+            owns = owns || std::regex_search(t, own);
+        }
+        if (uses && !owns) out += std::string("#define ") + old + " " + now + "\n";
+    }
+    return out;
+}
+
 // The uniforms every pass declares (ShaderToy's), then the program's own,
-// and the output; mainImage's wrapper after the user's files.
-std::string prelude(const ShadertoySpec& spec, const ShadertoySettings& settings) {
+// and the output; mainImage's wrapper after the user's files. aliases:
+// legacyAliases of the program's sources.
+std::string prelude(const ShadertoySpec& spec, const ShadertoySettings& settings, const std::string& aliases) {
     std::string s =
         "// stochtex ShaderToy host: ShaderToy's uniforms.\n"
-        "#define HW_PERFORMANCE " + std::to_string(settings.hwPerformance) + "\n"
-        // The names of ShaderToy before WebGL 2 (2017), which published
-        // shaders still use, as ShaderToy itself still accepts them.
-        "#define iGlobalTime iTime\n#define texture2D texture\n#define texture2DLod textureLod\n"
-        "#define textureCube texture\n"
+        "#define HW_PERFORMANCE " + std::to_string(settings.hwPerformance) + "\n" + aliases +
         "uniform vec3 iResolution;\nuniform float iTime;\nuniform float iTimeDelta;\nuniform int iFrame;\n"
         "uniform float iFrameRate;\nuniform vec4 iMouse;\nuniform vec4 iDate;\nuniform float iSampleRate;\n"
         "uniform vec3 iChannelResolution[4];\nuniform float iChannelTime[4];\n"
@@ -354,19 +376,27 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
     m.keyboard = gl::newTexture();
     m.uploadKeyboard();
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    std::vector<std::pair<std::string, std::string>> sources{{"shadertoy_prelude", prelude(spec, settings)},
-                                                             {"shadertoy_main", kMain},
-                                                             {"stochtex_pattern", include}};
-    if (!spec.common.empty()) sources.push_back(readShaderFile(spec.common.string()));
+    // The user's files, read once.
+    std::vector<std::pair<std::string, std::string>> userFiles;
+    if (!spec.common.empty()) userFiles.push_back(readShaderFile(spec.common.string()));
+    for (const ShadertoyPass& pass : spec.passes) userFiles.push_back(readShaderFile(pass.code.string()));
+    std::vector<std::string> texts;
+    for (const auto& f : userFiles) texts.push_back(f.second);
+    std::vector<std::pair<std::string, std::string>> sources{
+        {"shadertoy_prelude", prelude(spec, settings, legacyAliases(texts))},
+        {"shadertoy_main", kMain},
+        {"stochtex_pattern", include}};
+    if (!spec.common.empty()) sources.push_back(userFiles.front());
     // Which buffers some channel reads with mipmaps.
     std::array<bool, 4> mipmapped{};
     for (const ShadertoyPass& pass : spec.passes)
         for (const ShadertoyChannel& ch : pass.channels)
             if (ch.kind == ShadertoyChannel::Kind::Buffer && ch.filter == ChannelFilter::Mipmap) mipmapped[size_t(ch.buffer)] = true;
-    for (const ShadertoyPass& pass : spec.passes) {
+    for (size_t k = 0; k < spec.passes.size(); ++k) {
+        const ShadertoyPass& pass = spec.passes[k];
         Impl::Pass p;
         std::vector<std::pair<std::string, std::string>> overrides = sources;
-        overrides.push_back(readShaderFile(pass.code.string()));
+        overrides.push_back(userFiles[k + (spec.common.empty() ? 0 : 1)]);
         std::vector<std::string> files{"shadertoy_prelude"};
         if (spec.pattern) files.insert(files.end(), {"colour", "stochtex_pattern"});
         if (!spec.common.empty()) files.push_back(spec.common.string());

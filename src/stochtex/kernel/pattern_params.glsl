@@ -13,8 +13,9 @@
 // the exported README. A new member fills a spare slot or adds a row of four,
 // and gets a row in that table.
 
-// What the generated program does not hold as constants: the view's scale,
-// the estimators' probe count and the prefiltered tables' σ levels. A
+// What the generated program does not hold as constants: the triangle
+// grid's density and the examples' size, the estimators' probe count and
+// the prefiltered tables' mode and σ levels. A
 // program's seeds, means, Gaussianization and pyramid depths are constants
 // of its generated GLSL (gpu/gpu_graph.cpp).
 struct PatternParams {

@@ -21,8 +21,6 @@
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/pattern/colormap.h"
-#include "stochtex/noise/example.h"
-#include "stochtex/noise/tiled_field.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 
 namespace stochtex {
@@ -112,13 +110,5 @@ Rgb supersampledAverage(double u, double v, const Jacobian& j, int n, PointColou
     const double inv = 1.0 / (double(n) * n);
     return {float(acc[0] * inv), float(acc[1] * inv), float(acc[2] * inv)};
 }
-
-// The mean and variance of an example's values (blending space): those of
-// its tiled field, whose tiling and blending keeps them.
-std::array<double, 2> exampleMoments(const NoiseExample& example);
-// Mean, variances and covariance of a two-channel field over its whole
-// period (its examples' own: tiling and blending keeps them), the
-// statistics of an infinite footprint.
-FootprintStats fieldStatistics(const TiledField& field);
 
 }  // namespace stochtex

@@ -4,8 +4,8 @@
 // default, range). The table drives the JSON parsing and validation of a
 // graph, `stochtex nodes`, the workbench's widgets and the per-node
 // benchmarks. Every node type is described by its own file: a source or
-// linear operator by its file in fields/ (a new one: that file and one line
-// in fields/fields.h), a node evaluated per pixel by its op's (a new op: its
+// linear operator by its file in fields/ (a new one: that file, one line
+// in fields/fields.h and one in pattern/CMakeLists.txt), a node evaluated per pixel by its op's (a new op: its
 // kernel file, its header and one line in ops/ops.h).
 //
 // Sources (spectral noise, exemplar, the channels of a K-channel tiled

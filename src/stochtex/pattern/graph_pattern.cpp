@@ -134,7 +134,8 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
             for (const auto& [port, from] : g.inputs)
                 if (!linear.at(from))
                     throw InputError(context + ": node \"" + g.id + "\" (" + g.info->name + "): its input \"" + from +
-                                     "\" is not linear in the sources, so it has no example for this node to fold into");
+                                     "\" is not linear in the sources, so it has no example for a " + g.info->name +
+                                     " node to read");
         const bool slopes = !g.info->slopesOf.empty();
         if (slopes) {
             const std::string& from = g.inputs.at(g.info->slopesOf);
@@ -304,7 +305,7 @@ bool GraphPattern::shadesLight() const {
 const ColormapTable* GraphPattern::plainColormap() const {
     if (operations_.size() != 1 || leafCount() != 2 || pairs_.size() != 1) return nullptr;
     const Operation& op = operations_.front();
-    if (!std::holds_alternative<ColormapOp::Params>(op.params) || op.inputs[0] != 0 || op.inputs[1] != 1) return nullptr;
+    if (!opIsPlainLookup(op.params) || op.inputs[0] != 0 || op.inputs[1] != 1) return nullptr;
     if (leafLocation(0) != std::array<int, 2>{0, 0} || leafLocation(1) != std::array<int, 2>{0, 1}) return nullptr;
     return &tables_[size_t(op.table)].point;
 }
@@ -431,6 +432,48 @@ Image GraphPattern::renderNode(const View& view, const std::string& id) const {
     if (slot < 0) throw InputError("node \"" + id + "\" is neither a leaf nor an operation of the graph's program");
     return renderPixels(view, {}, slot, field);
 }
+
+namespace {
+
+// Mean, variances and covariance of a two-channel field over its whole
+// period (its examples' own: tiling and blending keeps them), the
+// statistics of an infinite footprint.
+FootprintStats fieldStatistics(const TiledField& f) {
+    double mean[2] = {0, 0}, m2[3] = {0, 0, 0};
+    const auto& x = f.channel(0).example().values().data();
+    const auto& y = f.channel(1).example().values().data();
+    for (size_t i = 0; i < x.size(); ++i) {
+        mean[0] += x[i];
+        mean[1] += y[i];
+    }
+    mean[0] /= double(x.size());
+    mean[1] /= double(x.size());
+    for (size_t i = 0; i < x.size(); ++i) {
+        const double dx = x[i] - mean[0], dy = y[i] - mean[1];
+        m2[0] += dx * dx;
+        m2[1] += dy * dy;
+        m2[2] += dx * dy;
+    }
+    FootprintStats s;
+    s.mean = {float(mean[0]), float(mean[1])};
+    s.varX = float(m2[0] / double(x.size()));
+    s.varY = float(m2[1] / double(x.size()));
+    s.cov = float(m2[2] / double(x.size()));
+    return s;
+}
+
+// The mean and variance of an example's values (blending space): those of
+// its tiled field, whose tiling and blending keeps them.
+std::array<double, 2> exampleMoments(const NoiseExample& example) {
+    const auto& v = example.values().data();
+    double sum = 0, sum2 = 0;
+    for (const float x : v) sum += x;
+    const double mean = sum / double(v.size());
+    for (const float x : v) sum2 += (x - mean) * (x - mean);
+    return {mean, sum2 / double(v.size())};
+}
+
+}  // namespace
 
 FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments)
     : graph_(graph), options_(options), moments_(moments) {

@@ -17,15 +17,16 @@
 // prefiltered table of (g, g²) at the moments of its inputs, and is then
 // treated as Gaussian with that mean and variance by the next table (moment
 // matching); the last colormap is the paper's H̄(μ, σ). The reference is
-// the supersampled average of the point evaluation, as for patterns. The
+// the supersampled average of the point evaluation. The
 // approximation's error against it is measured by `reproduce figure14`
 // (docs/GRAPHS.md, docs/MATH.md "Filtering a graph by moment matching").
 //
 // A plain pattern file {noise_x, noise_y, colormap} is the program "two
 // leaves → colormap" (paper eq. 1–2): its leaves get the pattern's
 // tile-offset seeds and its colormap op is H̄(μ̂, σ̂). A graph whose colormap
-// reads two linear fields under no transform folds to the same program, and
-// both run at the plain speed (plainColormap()).
+// reads two linear fields with examples of one size under no transform
+// folds to the same program, and both run at the plain speed
+// (plainColormap()).
 #include <array>
 #include <memory>
 #include <string>

@@ -63,7 +63,8 @@ struct NodeInfo {
     UvTransform (*seenThrough)(const FieldSight&) = nullptr;
     // What a source sets up once its parameters are parsed (its NoiseSpec).
     void (*parsed)(GraphNode&, const JsonReader&) = nullptr;
-    // Whether the node's output folds into an example.
+    // Whether the node folds into an example over inputs that fold (affine
+    // and sum: only then; over an op's output they are ops).
     bool linear() const { return fold != nullptr; }
 };
 

@@ -1,15 +1,13 @@
 #include "stochtex/pattern/texture_graph.h"
 
 #include <algorithm>
-#include <cmath>
+#include <cctype>
 #include <functional>
-#include <numbers>
 #include <set>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/pattern/fields/field_node.h"
-#include "stochtex/pattern/ops/colormap_op.h"
 
 namespace stochtex {
 

@@ -15,10 +15,8 @@
 // and blend weights), so a graph "linear part → colormap" compiles to a
 // plain pattern file's program, two leaves → colormap (GraphPattern;
 // docs/GRAPHS.md).
-#include <array>
 #include <cstdint>
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <variant>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 

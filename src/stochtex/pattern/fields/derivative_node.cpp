@@ -1,10 +1,11 @@
+#include "stochtex/pattern/fields/fields.h"
+
 #include <cmath>
 #include <numbers>
 
 #include "stochtex/core/error.h"
 #include "stochtex/noise/slopes.h"
 #include "stochtex/pattern/fields/field_node.h"
-#include "stochtex/pattern/fields/fields.h"
 
 namespace stochtex {
 

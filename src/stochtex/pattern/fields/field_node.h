@@ -3,8 +3,8 @@
 // fold itself into an example (NodeInfo::fold) and to say which transform
 // of uv it is seen through (NodeInfo::seenThrough). The graph builder
 // (texture_graph.cpp) fills these; each node's own file (fields/, and the
-// ops affine and sum) reads them. A new linear node is its file in fields/
-// and one line in fields/fields.h.
+// ops affine and sum) reads them. A new linear node is its file in fields/,
+// one line in fields/fields.h and its file in pattern/CMakeLists.txt.
 #include <cstdint>
 #include <functional>
 #include <string>

@@ -1,5 +1,6 @@
-#include "stochtex/pattern/fields/field_node.h"
 #include "stochtex/pattern/fields/fields.h"
+
+#include "stochtex/pattern/fields/field_node.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/pattern_members.h"
 #include "stochtex/pattern/pattern_parts.h"

@@ -1,13 +1,15 @@
+#include "stochtex/pattern/fields/fields.h"
+
 #include <stdexcept>
 
 #include "stochtex/pattern/fields/field_node.h"
-#include "stochtex/pattern/fields/fields.h"
 
 namespace stochtex {
 
 // Not a field itself: its channel nodes are, on the tiles they share
-// (graphTileGroup). Its fold is the node's channel 0, which nothing reads
-// (a tiled field is never a field input).
+// (graphTileGroup). It is linear (it has a fold, so its channels are), but
+// nothing folds it: a tiled field is never a field input, and its fold
+// throws.
 NodeInfo tiledFieldNode() {
     NodeInfo n{"tiled_field",
                "source",

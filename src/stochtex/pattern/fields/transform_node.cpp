@@ -1,8 +1,9 @@
+#include "stochtex/pattern/fields/fields.h"
+
 #include <cmath>
 #include <numbers>
 
 #include "stochtex/pattern/fields/field_node.h"
-#include "stochtex/pattern/fields/fields.h"
 
 namespace stochtex {
 

@@ -13,6 +13,7 @@ namespace stochtex {
 struct ColormapOp {
     using Params = kernel::ColormapParams;
     static constexpr const char* kKernel = "colormap_op";
+    static constexpr bool kPlainLookup = true;  // its table at (x, y): over one pair, H ∘ N (ops.h, opIsPlainLookup)
     static NodeInfo info() {
         return {"colormap",
                 "transfer",

@@ -92,10 +92,33 @@ nlohmann::json opManifest(const OpParams& op) {
         op);
 }
 
+std::vector<std::string> opManifestTypes() {
+    std::vector<std::string> types;
+    [&]<size_t... I>(std::index_sequence<I...>) {
+        ((requires(const typename OpAt<I>::Params& p) { OpAt<I>::manifest(p); } ? types.push_back(OpAt<I>::info().name)
+                                                                                  : void()),
+         ...);
+    }
+    (std::make_index_sequence<kOpCount>{});
+    return types;
+}
+
 double shortestDecimal(float v) {
     char text[32];
     const auto end = std::to_chars(text, text + sizeof text, v).ptr;
     return std::stod(std::string(text, end));
+}
+
+bool opIsPlainLookup(const OpParams& op) {
+    return std::visit(
+        [](const auto& p) {
+            using Op = OpAt<indexOfParams<std::decay_t<decltype(p)>>()>;
+            if constexpr (requires { Op::kPlainLookup; })
+                return Op::kPlainLookup;
+            else
+                return false;
+        },
+        op);
 }
 
 const char* opKernelStem(const OpParams& op) {

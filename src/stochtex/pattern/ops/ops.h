@@ -70,10 +70,19 @@ kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kern
 // Whether the op lights its colour: it reads OpContext's eye and light (an
 // op declares `static constexpr bool kShadesLight = true`; false otherwise).
 bool opShadesLight(const OpParams& op);
+// Whether the op's point value is its table at its two inputs (x, y), and
+// its filtered value the prefiltered table at their moments: over one pair
+// of leaves, the program is a plain pattern's H ∘ N, which the evaluators
+// run through one lookup (GraphPattern::plainColormap; an op declares
+// `static constexpr bool kPlainLookup = true`).
+bool opIsPlainLookup(const OpParams& op);
 // What an engine reads of the op beside the generated GLSL, for an export's
 // manifest.json (an op declares `static nlohmann::json manifest(const
 // Params&)`, e.g. a lean op's light; null otherwise).
 nlohmann::json opManifest(const OpParams& op);
+// The node types of the ops that declare a manifest entry ("lean"): the
+// export's manifest has a list under each, empty or not.
+std::vector<std::string> opManifestTypes();
 // The embedded kernel file that defines the op (the GPU program includes it).
 const char* opKernelStem(const OpParams& op);
 // The GLSL call of the op: "opPoint(AffineParams(2.0, 0.5), a, b, c, ctx)"
