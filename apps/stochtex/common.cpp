@@ -274,6 +274,7 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"aniso", "--aniso"},
     {"response", "--response"},
     {"referenceMaxSamples", "--reference-samples"},
+    {"referenceTolerance", "--reference-tolerance"},
     {"tiltDeg", "--tilt"},
     {"fovDeg", "--fov"},
     {"size", "--size"},

@@ -14,6 +14,9 @@ void registerReproduceFigure14(CLI::App& reproduce, std::shared_ptr<ReproduceArg
     sub->add_option("--pattern", args->figure14Pattern, "A graph file instead of the preset figure14");
     sub->add_option("--size", f.size, "Image size per footprint")->capture_default_str();
     sub->add_option("--reference-samples", f.referenceSamples, "Max reference samples per axis")->capture_default_str();
+    sub->add_option("--reference-tolerance", f.referenceTolerance,
+                    "Samples double until the reference moves less than this (mean RGB distance)")
+        ->capture_default_str();
     sub->add_option("--footprints", f.footprints, "Footprint sides in texels")->delimiter(',');
     addEnumFlag(*sub, "--filter", f.prefilter, kPrefilterModeNames, "prefilter",
                 "Prefiltered tables of the filtered renders: smooth or paper");

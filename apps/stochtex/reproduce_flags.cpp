@@ -71,6 +71,9 @@ void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, Figure4Optio
             sub.add_option("--footprints", f.footprints, "Footprint sides in texels")->delimiter(',');
         sub.add_option("--size", f.size, "Image size per footprint")->capture_default_str();
         sub.add_option("--reference-samples", f.referenceSamples, "Max reference samples per axis");
+        sub.add_option("--reference-tolerance", f.referenceTolerance,
+                       "Samples double until the reference moves less than this (mean RGB distance)")
+            ->capture_default_str();
         // Figures 4 and 11 compare the estimators' statistics with the
         // reference: --filter chooses only the response, among the filters
         // over the estimators (the validator refuses the others).
@@ -129,6 +132,7 @@ void prepareReproduceAll(ReproduceArgs& a) {
     a.figure11.size = a.figure4.size;
     a.figure11.referenceSamples = a.figure4.referenceSamples;
     a.figure11.response = a.figure4.response;
+    a.figure11.referenceTolerance = a.figure4.referenceTolerance;
     // Figure 12's global view is 5/4 of Figure 4's side wide (640 × 400 by
     // default), with at most its reference samples.
     a.figure12.width = std::max(32, a.figure4.size * 5 / 4);
@@ -138,6 +142,7 @@ void prepareReproduceAll(ReproduceArgs& a) {
     // Figure 14 at half Figure 4's side (its reference costs more per pixel).
     a.figure14.size = std::max(16, a.figure4.size / 2);
     a.figure14.referenceSamples = std::min(a.figure14.referenceSamples, a.figure4.referenceSamples);
+    a.figure14.referenceTolerance = a.figure4.referenceTolerance;
     validateFigure14(a.figure14);
 }
 

@@ -426,6 +426,9 @@ case_reproduce() {
   grep -q "figure4/figure4.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 4"
   grep -q "figure11/figure11.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 11"
   grep -q "figure14/figure14_filtering.png" "$out/all/index.html" || fail "reproduce all: index.html lacks figure 14"
+  for part in "Table 1" "Figure 4" "Figures 7–9" "Figure 10" "Figure 11" "Figure 12" "Figure 14"; do
+    grep -q "^$part: [0-9]* s, wrote $out/all/" "$work/out.txt" || fail "reproduce all: no line for $part: $(cat "$work/out.txt")"
+  done
   [ -s "$out/all/figure10/figure10_comparison.png" ] || fail "reproduce all: figure 10's comparison not written"
 }
 
@@ -448,6 +451,8 @@ case_reproduce_phasor() {
   expect_bad "figure10 zero frequency" "$out/pbad1" "--frequency: frequency must be in (0, 10000], got 0" -- "$bin" reproduce figure10 -o "$out/pbad1" --frequency 0
   expect_bad "figure10 negative bandwidth" "$out/pbad2" "--bandwidth: bandwidth must be in (0, 10000], got -1" -- "$bin" reproduce figure10 -o "$out/pbad2" --bandwidth -1
   expect_bad "figure11 estimators only" "$out/pbad3" "--filter: filter must be paper or smooth, got \"reference\"" -- "$bin" reproduce figure11 -o "$out/pbad3" --filter reference
+  expect_bad "figure11 zero tolerance" "$out/pbad5" "--reference-tolerance: referenceTolerance must be in (0, 0.1], got 0" -- "$bin" reproduce figure11 -o "$out/pbad5" --reference-tolerance 0
+  expect_bad "figure14 huge tolerance" "$out/pbad6" "--reference-tolerance: referenceTolerance must be in (0, 0.1], got 0.5" -- "$bin" reproduce figure14 -o "$out/pbad6" --reference-tolerance 0.5
   expect_bad "figure11 zero footprint" "$out/pbad4" "figure11: footprints must be in [1, 65536], got 0" -- "$bin" reproduce figure11 -o "$out/pbad4" --footprints 0
   # A profile image must be one row (W×1).
   "$bin" noise '{"type":"spectrum","size":16,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/square.png" >/dev/null || fail "noise for the profile"

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -188,6 +189,51 @@ TEST(FilteredProgram, FilteredIsCloserToTheReferenceThanUnfilteredWhenZoomedOut)
     EXPECT_LT(smooth, 0.5 * none);
     EXPECT_LT(exact, smooth * 1.5);  // exact statistics are at least about as good
     EXPECT_LT(smooth, 0.05);
+}
+
+// A zoom's reference is rendered as the point image at n times the
+// resolution, box-filtered; it must be the n×n average that shade computes
+// per pixel (the same sample points: equal to float rounding). 70 pixels
+// wide at n = 16 makes two tiles in x, the second partial; the plain
+// program (camouflage) takes the one-lookup path, the graph the interpreter.
+TEST(FilteredProgram, ZoomReferenceIsThePerPixelAverage) {
+    for (const char* preset : {"camouflage", "figure14"}) {
+        const GraphPattern p = GraphPattern::build(loadPreset(preset));
+        FilterOptions ref = options("reference");
+        ref.referenceMaxSamples = 16;
+        Camera cam = zoom(70, 12.0);
+        cam.view.height = 9;
+        const FilteredGraph filtered(p, ref);
+        const Image image = filtered.render(cam);
+        double worst = 0, spread = 0;
+        for (int y = 0; y < cam.view.height; ++y)
+            for (int x = 0; x < cam.view.width; ++x) {
+                double u = 0, v = 0;
+                Jacobian j;
+                ASSERT_TRUE(cam.footprint(x, y, p.exampleSize(), u, v, j));
+                const Rgb want = filtered.shade(true, u, v, j);
+                for (int k = 0; k < 3; ++k) {
+                    const float got = image.row(y)[x * 3 + k];
+                    worst = std::max(worst, double(std::abs(got - want[size_t(k)])));
+                    spread = std::max(spread, double(std::abs(got - image.row(0)[k])));
+                }
+            }
+        EXPECT_LT(worst, 2e-5) << preset;
+        EXPECT_GT(spread, 0.02) << preset << ": the image must vary for the comparison to mean anything";
+    }
+}
+
+// min = max fixes the brute-force samples per axis whatever the footprint;
+// the default minimum keeps the footprint rule (⌈2·side⌉, at least 8).
+TEST(FilterOptions, BruteForceSamplesFollowTheRuleOrAFixedCount) {
+    Jacobian j;
+    j.dudx = j.dvdy = 3.0 / 512;  // a 3-texel footprint
+    EXPECT_EQ(bruteForceSamples(j, 512, 64), 8);
+    EXPECT_EQ(bruteForceSamples(j, 512, 64, 1), 6);
+    EXPECT_EQ(bruteForceSamples(j, 512, 32, 32), 32);
+    EXPECT_EQ(bruteForceSamples(j, 512, 4), 8);  // a cap below the minimum is raised to it, as before
+    j.dudx = j.dvdy = 1e30;                      // no overflow for an absurd footprint
+    EXPECT_EQ(bruteForceSamples(j, 512, 64), 64);
 }
 
 // The plane view's sky is the pattern's average colour in every filter mode

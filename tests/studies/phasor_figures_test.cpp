@@ -101,8 +101,14 @@ TEST(PhasorFigures, Figure11FadesToTheProfilesMean) {
     // Rows: reference, estimated, error (no exact statistics): 3 images per footprint.
     EXPECT_EQ(r.figures.size(), 2u + 3u * 3u);
     EXPECT_EQ(r.figures[0].file, "figure11.png");
-    EXPECT_EQ(r.table.columns.size(), 4u);
+    // Then the reference's samples and its change on doubling them.
+    ASSERT_EQ(r.table.columns.size(), 6u);
     EXPECT_EQ(r.table.columns[3].key, "mean_fade_estimators");
+    EXPECT_EQ(r.table.columns[4].key, "reference_samples");
+    for (const Figure4Column& c : r.columns) {
+        EXPECT_TRUE(c.referenceSamples == 8 || c.referenceSamples == 16) << c.footprint << ": " << c.referenceSamples;
+        EXPECT_EQ(c.exactSamples, 0);  // Figure 11 renders no exact statistics
+    }
 }
 
 }  // namespace

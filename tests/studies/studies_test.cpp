@@ -15,6 +15,7 @@
 #include "stochtex/studies/image_base_study.h"
 #include "stochtex/studies/normal_maps.h"
 #include "stochtex/studies/paper.h"
+#include "stochtex/studies/reference_samples.h"
 #include "stochtex/studies/stability_study.h"
 #include "stochtex/studies/zoom_studies.h"
 #include "test_util.h"
@@ -360,6 +361,41 @@ TEST(Studies, Figure4ErrorsShrinkWithExactStatistics) {
     EXPECT_EQ(r.figures.size(), 2u + 5u * 2u);
     EXPECT_EQ(*r.table.rows[1][0].number, 8);
     EXPECT_EQ(r.table.rows[1][0].text, "8²");
+}
+
+// The figures' references are rendered at the samples chosen by
+// convergence. Expected from elsewhere: the full image at 4× those samples
+// per axis (16× the samples); the chosen image must be within the
+// tolerance of it (the probe's change on one doubling bounds the error of
+// the rest, as the error falls at least 2× per doubling; margin 1.5×).
+TEST(ReferenceSamples, ChosenCountIsWithinTheToleranceOfAFinerReference) {
+    const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
+    Camera cam;
+    cam.view.width = cam.view.height = 40;
+    cam.view.scale = 24;
+    FilterOptions fo;
+    fo.use(parseFilter("reference"));
+    fo.referenceMaxSamples = 64;
+    const double tolerance = 2e-3;
+    const ConvergedSamples chosen = convergedSamples(p, fo, cam, tolerance, GraphMoments::Matched, 16);
+    ASSERT_TRUE(chosen.converged);
+    EXPECT_LT(chosen.change, tolerance);
+    EXPECT_GE(chosen.perAxis, 16);  // 8² samples over 24² texels move the image by ~0.01 (measured)
+    const Image at = FilteredGraph(p, withSamples(fo, chosen.perAxis)).render(cam);
+    const Image finer = FilteredGraph(p, withSamples(fo, 4 * chosen.perAxis)).render(cam);
+    double mean = 0;
+    (void)errorMap(at, finer, mean);
+    EXPECT_LT(mean, 1.5 * tolerance) << chosen.perAxis << " samples per axis";
+    EXPECT_GT(mean, 0.0);
+
+    // An unreachable tolerance stops at the cap, and says so; a cap under 8 is kept.
+    const ConvergedSamples capped = convergedSamples(p, fo, cam, 1e-9, GraphMoments::Matched, 4);
+    EXPECT_FALSE(capped.converged);
+    EXPECT_EQ(capped.perAxis, 64);
+    fo.referenceMaxSamples = 4;
+    EXPECT_EQ(convergedSamples(p, fo, cam, 1e-9, GraphMoments::Matched, 4).perAxis, 4);
+    fo.use(parseFilter("smooth"));
+    EXPECT_THROW(convergedSamples(p, fo, cam, 1e-3), InputError);
 }
 
 // Figure 12 at reduced size (the paper's claims, §6.5): at mid distance our

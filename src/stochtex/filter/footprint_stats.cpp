@@ -145,15 +145,18 @@ size_t FootprintEstimator::bytes() const {
 
 namespace stochtex {
 
-int bruteForceSamples(const Jacobian& j, int exampleSize, int maxPerAxis) {
+int bruteForceSamples(const Jacobian& j, int exampleSize, int maxPerAxis, int minPerAxis) {
     const double side = exampleSize * std::max(std::hypot(j.dudx, j.dvdx), std::hypot(j.dudy, j.dvdy));
-    return std::clamp(int(std::ceil(2.0 * side)), 8, std::max(8, maxPerAxis));
+    const int lo = std::max(1, minPerAxis), hi = std::max(lo, maxPerAxis);
+    // (The side is capped before the cast, so that no Jacobian overflows int.)
+    return std::clamp(int(std::ceil(2.0 * std::min(1e6, side))), lo, hi);
 }
 
-FootprintStats bruteForceStats(const TiledField& field, double u, double v, const Jacobian& j, int maxPerAxis) {
+FootprintStats bruteForceStats(const TiledField& field, double u, double v, const Jacobian& j, int maxPerAxis,
+                               int minPerAxis) {
     const std::array<const TilingBlendingNoise*, 2> noises = {&field.channel(0), &field.channel(1)};
     const double gridDensity = field.gridDensity();
-    const int n = bruteForceSamples(j, field.exampleSize(), maxPerAxis);
+    const int n = bruteForceSamples(j, field.exampleSize(), maxPerAxis, minPerAxis);
     double m[2] = {0, 0}, m2[2] = {0, 0}, mxy = 0;
     for (int b = 0; b < n; ++b)
         for (int a = 0; a < n; ++a) {

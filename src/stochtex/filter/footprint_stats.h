@@ -85,9 +85,12 @@ private:
 namespace stochtex {
 // Exact statistics of N over the parallelogram footprint uv + J·(s, t),
 // s, t ∈ [−½, ½], by dense sampling: an n×n grid of cell centres with
-// n = clamp(⌈2·(largest side in texels)⌉, 8, maxPerAxis) — two samples per
-// texel of the bilinearly interpolated noise. Values are in blending space.
-FootprintStats bruteForceStats(const TiledField& field, double u, double v, const Jacobian& j, int maxPerAxis = 512);
-// Samples per axis bruteForceStats uses for this Jacobian.
-int bruteForceSamples(const Jacobian& j, int exampleSize, int maxPerAxis);
+// n = clamp(⌈2·(largest side in texels)⌉, minPerAxis, maxPerAxis) — two
+// samples per texel of the bilinearly interpolated noise, 8 at least by
+// default. Values are in blending space.
+FootprintStats bruteForceStats(const TiledField& field, double u, double v, const Jacobian& j, int maxPerAxis = 512,
+                               int minPerAxis = 8);
+// Samples per axis bruteForceStats uses for this Jacobian (maxPerAxis is
+// raised to minPerAxis where it is below).
+int bruteForceSamples(const Jacobian& j, int exampleSize, int maxPerAxis, int minPerAxis = 8);
 }  // namespace stochtex

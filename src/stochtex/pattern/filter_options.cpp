@@ -11,6 +11,9 @@ void validateFilterOptions(const FilterOptions& options) {
     if (options.referenceMaxSamples < 1 || options.referenceMaxSamples > 4096)
         throw InputError::parameter("referenceMaxSamples",
                                     "must be in [1, 4096], got " + std::to_string(options.referenceMaxSamples));
+    if (options.referenceMinSamples < 1 || options.referenceMinSamples > 4096)
+        throw InputError::parameter("referenceMinSamples",
+                                    "must be in [1, 4096], got " + std::to_string(options.referenceMinSamples));
 }
 
 NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames, name, "filter"); }

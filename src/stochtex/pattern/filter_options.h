@@ -73,7 +73,11 @@ struct FilterOptions {
     ResponseOptions response;                        // the smooth prefiltered colormap
     int aniso = 1;                                   // K, 1..16
     VarianceEstimator estimator = VarianceEstimator::Paper;
+    // The brute-force sources (exact, reference) sample n×n per pixel,
+    // n = clamp(⌈2·extent in texels⌉, referenceMinSamples, referenceMaxSamples);
+    // min = max fixes n (studies/reference_samples.h chooses it by convergence).
     int referenceMaxSamples = 64;                    // per axis
+    int referenceMinSamples = 8;                     // per axis
     bool pack8 = false;                              // 8-bit pyramids (paper §5)
 
     // Both axes at once, from a named filter.

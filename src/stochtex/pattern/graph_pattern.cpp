@@ -631,14 +631,15 @@ Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j, co
                 const UvTransform& t = graph_.pairTransform(int(k));
                 const auto [pu, pv] = t.apply(u, v);
                 scratch.stats.push_back(
-                    bruteForceStats(graph_.leafPairs()[k], pu, pv, transformed(t, j), options_.referenceMaxSamples));
+                    bruteForceStats(graph_.leafPairs()[k], pu, pv, transformed(t, j), options_.referenceMaxSamples,
+                                    options_.referenceMinSamples));
             }
             return fromPairStats(scratch, eye);
         }
         case StatisticsSource::Reference: {
             int size = 0;  // the finest leaf sets the sampling
             for (const TiledField& pair : graph_.leafPairs()) size = std::max(size, pair.exampleSize());
-            const int n = bruteForceSamples(j, size, options_.referenceMaxSamples);
+            const int n = bruteForceSamples(j, size, options_.referenceMaxSamples, options_.referenceMinSamples);
             return supersampledAverage(
                 u, v, j, n, [&](double pu, double pv) { return graph_.evaluate(pu, pv, -1, eye, scratch.slots); });
         }
@@ -650,6 +651,8 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
     validateCamera(camera);
     if (options_.source == StatisticsSource::Point && camera.kind == Camera::Kind::Zoom)
         return graph_.render(camera.view, progress);
+    if (options_.source == StatisticsSource::Reference && camera.kind == Camera::Kind::Zoom)
+        return renderZoomReference(camera, progress);
     Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
     const int w = graph_.exampleSize();
     // A zoom has one Jacobian for the whole image: its footprints are built
@@ -709,6 +712,60 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                 }
         },
         progress);
+    return out;
+}
+
+}  // namespace stochtex
+
+namespace stochtex {
+
+Image FilteredGraph::renderZoomReference(const Camera& camera, const Progress& progress) const {
+    // A zoom's pixel (px, py) covers the texels offset + [p, p + 1)·scale,
+    // and shade's n×n cell centres in it are offset + (p·n + a + ½)·scale/n:
+    // the centres of the point image at n times the resolution. So the
+    // reference is that image box-filtered, rendered by the point loop
+    // (tile rows shared along a row, a plain program's one lookup) instead of
+    // one program evaluation per sample. Tiles keep the fine image small.
+    const int w = graph_.exampleSize();
+    double u = 0, v = 0;
+    Jacobian j;
+    camera.footprint(0, 0, w, u, v, j);
+    int size = 0;  // the finest leaf sets the sampling, as in shade
+    for (const TiledField& pair : graph_.leafPairs()) size = std::max(size, pair.exampleSize());
+    const int n = bruteForceSamples(j, size, options_.referenceMaxSamples, options_.referenceMinSamples);
+    const View& view = camera.view;
+    const int tile = std::max(1, 1024 / n);  // pixels per tile side: at most 1024² samples a tile
+    const int tilesX = (view.width + tile - 1) / tile, tilesY = (view.height + tile - 1) / tile;
+    Image out(view.width, view.height, 3, Image::Uninitialized{});
+    const double inv = 1.0 / (double(n) * n);
+    for (int ty = 0; ty < tilesY; ++ty) {
+        for (int tx = 0; tx < tilesX; ++tx) {
+            const int x0 = tx * tile, y0 = ty * tile;
+            const int tw = std::min(tile, view.width - x0), th = std::min(tile, view.height - y0);
+            View fine;
+            fine.width = tw * n;
+            fine.height = th * n;
+            fine.scale = view.scale / n;
+            fine.offsetU = view.offsetU + x0 * view.scale;
+            fine.offsetV = view.offsetV + y0 * view.scale;
+            const Image samples = graph_.render(fine);
+            parallelRows(th, [&](int r0, int r1) {
+                for (int py = r0; py < r1; ++py) {
+                    float* row = out.row(y0 + py) + size_t(x0) * 3;
+                    for (int px = 0; px < tw; ++px) {
+                        double acc[3] = {0, 0, 0};
+                        for (int b = 0; b < n; ++b) {
+                            const float* s = samples.row(py * n + b) + size_t(px) * size_t(n) * 3;
+                            for (int a = 0; a < n; ++a)
+                                for (int k = 0; k < 3; ++k) acc[k] += s[a * 3 + k];
+                        }
+                        for (int k = 0; k < 3; ++k) row[px * 3 + k] = float(acc[k] * inv);
+                    }
+                }
+            });
+        }
+        if (progress) progress(double(ty + 1) / tilesY, "");
+    }
     return out;
 }
 

@@ -207,6 +207,9 @@ private:
     Rgb plainColour(const FootprintStats& s) const;  // a plain program's colour of its pair's statistics
     void footprints(double u, double v, const Jacobian& j, Scratch& scratch) const;  // one per estimator
     Rgb shade(Scratch& scratch, const Direction& eye) const;  // estimators, on scratch.footprints
+    // The reference through a zoom: the point image at n times the
+    // resolution, box-filtered (its pixels tile the plane).
+    Image renderZoomReference(const Camera& camera, const Progress& progress) const;
     const GraphPattern& graph_;
     FilterOptions options_;
     GraphMoments moments_;

@@ -10,6 +10,7 @@
 #include "stochtex/pattern/presets.h"
 #include "stochtex/studies/paper.h"
 #include "stochtex/studies/pattern_sheet.h"
+#include "stochtex/studies/reference_samples.h"
 
 namespace stochtex {
 
@@ -24,6 +25,8 @@ void validateFigure14(const Figure14Options& o) {
     if (o.size < 16 || o.size > 2048) throw InputError::parameter("size", "must be in [16, 2048], got " + std::to_string(o.size));
     if (o.referenceSamples < 1 || o.referenceSamples > 4096)
         throw InputError::parameter("referenceSamples", "must be in [1, 4096], got " + std::to_string(o.referenceSamples));
+    if (!(o.referenceTolerance > 0 && o.referenceTolerance <= 0.1))
+        throw InputError::parameter("referenceTolerance", "must be in (0, 0.1], got " + formatValue(o.referenceTolerance));
     if (o.footprints.empty() || o.footprints.size() > 12)
         throw InputError::parameter("footprints", "needs 1 to 12 footprints");
     for (const int f : o.footprints)
@@ -68,13 +71,25 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
         fo.response.prefilter = o.prefilter;
         Column c;
         c.numbers.footprint = s;
-        // The reference and the exact statistics take nearly all the time.
+        // The reference and the exact statistics take nearly all the time,
+        // each at the fewest samples that have converged.
         fo.source = StatisticsSource::Reference;
+        const ConvergedSamples referenceSamples = convergedSamples(graph, fo, cam, o.referenceTolerance);
+        c.numbers.referenceSamples = referenceSamples.perAxis;
+        c.numbers.referenceChange = referenceSamples.change;
+        fo = withSamples(fo, referenceSamples.perAxis);
         c.reference = FilteredGraph(graph, fo).render(cam, progressPart(part, 0.0, 0.5, "reference"));
         double* errors[4] = {&c.numbers.none, &c.numbers.meanOnly, &c.numbers.matchedExact, &c.numbers.matched};
         for (size_t m = 0; m < kMethods.size(); ++m) {
             fo.source = kMethods[m].source;
             const bool exact = kMethods[m].source == StatisticsSource::Exact;
+            if (exact) {
+                fo.referenceMaxSamples = o.referenceSamples;
+                const ConvergedSamples exactSamples = convergedSamples(graph, fo, cam, o.referenceTolerance);
+                c.numbers.exactSamples = exactSamples.perAxis;
+                c.numbers.exactChange = exactSamples.change;
+                fo = withSamples(fo, exactSamples.perAxis);
+            }
             c.images[m] = FilteredGraph(graph, fo, kMethods[m].moments)
                               .render(cam, exact ? progressPart(part, 0.5, 1.0, "exact statistics") : Progress{});
             c.errors[m] = errorMap(c.images[m], c.reference, *errors[m]);
@@ -99,7 +114,12 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
                          {"mean_error_none", "none: mean ‖S − S̄‖₂", ""},
                          {"mean_error_mean_only", "mean-only: mean ‖Ŝ − S̄‖₂", ""},
                          {"mean_error_matched_exact", "matched, exact statistics: mean ‖Ŝ − S̄‖₂", ""},
-                         {"mean_error_matched", "matched, estimators: mean ‖Ŝ − S̄‖₂", ""}};
+                         {"mean_error_matched", "matched, estimators: mean ‖Ŝ − S̄‖₂", ""},
+                         // How good the brute-force images are (studies/reference_samples.h).
+                         {"reference_samples", "S̄: samples per pixel", ""},
+                         {"reference_change", "S̄: change on doubling them", ""},
+                         {"exact_samples", "exact statistics: samples per pixel", ""},
+                         {"exact_change", "exact statistics: change on doubling them", ""}};
     const int thumb = std::min(o.size, 128);
     std::vector<std::vector<Image>> rows(1 + 2 * kMethods.size());
     std::vector<std::vector<std::string>> captions(rows.size());
@@ -114,7 +134,11 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
         first.number = s;
         const double values[4] = {c.numbers.none, c.numbers.meanOnly, c.numbers.matchedExact, c.numbers.matched};
         res.table.add({first, TableCell::value(values[0]), TableCell::value(values[1]), TableCell::value(values[2]),
-                       TableCell::value(values[3])});
+                       TableCell::value(values[3]),
+                       TableCell::integer((long long)c.numbers.referenceSamples * c.numbers.referenceSamples),
+                       TableCell::value(c.numbers.referenceChange, "%.5f"),
+                       TableCell::integer((long long)c.numbers.exactSamples * c.numbers.exactSamples),
+                       TableCell::value(c.numbers.exactChange, "%.5f")});
         res.columns.push_back(c.numbers);
         // Figures hold display codes (report/page.h): renders are encoded, error maps drawn so.
         Image ref = srgbFromLinear(c.reference);

@@ -28,7 +28,11 @@ struct Figure14Options {
     PatternSpec pattern;  // a graph; figure14Options() loads the preset figure14
     std::string name = "figure14";
     int size = 256;             // image side per footprint, [16, 2048]
-    int referenceSamples = 64;  // per axis, [1, 4096]
+    int referenceSamples = 64;  // per axis, [1, 4096]: the cap
+    // The reference and the exact statistics are rendered at the fewest
+    // samples (up to the cap) that move them by less than this when doubled
+    // (studies/reference_samples.h).
+    double referenceTolerance = 5e-4;
     std::vector<int> footprints{1, 2, 4, 8, 16, 32, 64};
     PrefilterMode prefilter = PrefilterMode::Smooth;
 };
@@ -41,6 +45,10 @@ void validateFigure14(const Figure14Options& options);
 struct Figure14Column {
     int footprint = 0;
     double none = 0, meanOnly = 0, matchedExact = 0, matched = 0;
+    // The samples per axis of the reference and the exact statistics, and how
+    // much each moved on doubling them.
+    int referenceSamples = 0, exactSamples = 0;
+    double referenceChange = 0, exactChange = 0;
 };
 struct Figure14Result {
     std::vector<Figure14Column> columns;

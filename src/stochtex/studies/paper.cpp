@@ -10,6 +10,7 @@
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/studies/pattern_sheet.h"
+#include "stochtex/studies/reference_samples.h"
 
 namespace stochtex {
 
@@ -172,6 +173,8 @@ void validateFigure4(const Figure4Options& o) {
     if (o.size < 16 || o.size > 4096) throw InputError(what + ": size must be in [16, 4096], got " + std::to_string(o.size));
     if (o.referenceSamples < 1 || o.referenceSamples > 4096)
         throw InputError(what + ": referenceSamples must be in [1, 4096], got " + std::to_string(o.referenceSamples));
+    if (!(o.referenceTolerance > 0 && o.referenceTolerance <= 0.1))
+        throw InputError::parameter("referenceTolerance", "must be in (0, 0.1], got " + formatValue(o.referenceTolerance));
     if (o.footprints.empty()) throw InputError(what + ": no footprints");
     for (int s : o.footprints)
         if (s < 1 || s > 65536) throw InputError(what + ": footprints must be in [1, 65536], got " + std::to_string(s));
@@ -240,13 +243,24 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         c.numbers.footprint = s;
         FilterOptions fo;
         fo.referenceMaxSamples = o.referenceSamples;
-        // The brute-force renders take nearly all the time, about equally.
+        // The brute-force renders take nearly all the time, about equally;
+        // each at the fewest samples that have converged.
         const double referenceShare = o.exactStatistics ? 0.5 : 1.0;
-        c.reference = FilteredGraph(pattern, fo.use(parseFilter("reference")))
-                          .render(cam, progressPart(part, 0.0, referenceShare, "reference"));
-        if (o.exactStatistics)
-            c.exact = FilteredGraph(pattern, fo.use(parseFilter("exact")))
-                          .render(cam, progressPart(part, 0.5, 1.0, "exact statistics"));
+        fo.use(parseFilter("reference"));
+        const ConvergedSamples referenceSamples = convergedSamples(pattern, fo, cam, o.referenceTolerance);
+        c.numbers.referenceSamples = referenceSamples.perAxis;
+        c.numbers.referenceChange = referenceSamples.change;
+        fo = withSamples(fo, referenceSamples.perAxis);
+        c.reference = FilteredGraph(pattern, fo).render(cam, progressPart(part, 0.0, referenceShare, "reference"));
+        if (o.exactStatistics) {
+            fo.referenceMaxSamples = o.referenceSamples;
+            fo.use(parseFilter("exact"));
+            const ConvergedSamples exactSamples = convergedSamples(pattern, fo, cam, o.referenceTolerance);
+            c.numbers.exactSamples = exactSamples.perAxis;
+            c.numbers.exactChange = exactSamples.change;
+            fo = withSamples(fo, exactSamples.perAxis);
+            c.exact = FilteredGraph(pattern, fo).render(cam, progressPart(part, 0.5, 1.0, "exact statistics"));
+        }
         fo.source = StatisticsSource::Estimators;
         fo.response = o.response;
         c.estimated = FilteredGraph(pattern, fo).render(cam);
@@ -277,6 +291,14 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         res.table.columns.push_back({"mean_fade_reference", "mean ‖S̄ − m‖₂ (m: the profile's mean)", ""});
         res.table.columns.push_back({"mean_fade_estimators", "mean ‖Ŝ(μ̂, Σ̂) − m‖₂", ""});
     }
+    // How good the brute-force images are: their samples, and how far they
+    // moved when the samples doubled (studies/reference_samples.h).
+    res.table.columns.push_back({"reference_samples", "S̄: samples per pixel", ""});
+    res.table.columns.push_back({"reference_change", "S̄: change on doubling them", ""});
+    if (o.exactStatistics) {
+        res.table.columns.push_back({"exact_samples", "exact statistics: samples per pixel", ""});
+        res.table.columns.push_back({"exact_change", "exact statistics: change on doubling them", ""});
+    }
     const int thumb = std::min(o.size, 192);
     // Rows of the sheet: reference, [exact, its error,] estimated, its error.
     std::vector<int> shownRows = o.exactStatistics ? std::vector<int>{0, 1, 2, 3, 4} : std::vector<int>{0, 3, 4};
@@ -296,6 +318,12 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         if (o.fadesTo) {
             cells.push_back(TableCell::value(c.numbers.meanFadeReference));
             cells.push_back(TableCell::value(c.numbers.meanFadeEstimated));
+        }
+        cells.push_back(TableCell::integer((long long)c.numbers.referenceSamples * c.numbers.referenceSamples));
+        cells.push_back(TableCell::value(c.numbers.referenceChange, "%.5f"));
+        if (o.exactStatistics) {
+            cells.push_back(TableCell::integer((long long)c.numbers.exactSamples * c.numbers.exactSamples));
+            cells.push_back(TableCell::value(c.numbers.exactChange, "%.5f"));
         }
         res.table.add(std::move(cells));
         res.columns.push_back(c.numbers);

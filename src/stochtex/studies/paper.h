@@ -48,7 +48,11 @@ struct Figure4Options {
     PatternSpec pattern;  // the paper uses the camouflage preset
     std::string name = "camouflage";
     int size = 512;                // image side per footprint, [16, 4096]
-    int referenceSamples = 64;     // per axis, [1, 4096]
+    int referenceSamples = 64;     // per axis, [1, 4096]: the cap
+    // The reference and the exact statistics are rendered at the fewest
+    // samples (up to the cap) that move them by less than this when doubled
+    // (studies/reference_samples.h): mean ‖·‖₂, linear RGB.
+    double referenceTolerance = 5e-4;
     std::vector<int> footprints{1, 2, 4, 8, 16, 32, 64, 128};
     // The response of the estimated statistics (the exact ones go through
     // the smooth table, as in the paper's Fig. 4b).
@@ -70,6 +74,10 @@ struct Figure4Column {
     double meanErrorExact = 0, meanErrorEstimated = 0;  // mean ‖Ŝ − S̄‖₂ over the pixels (RGB)
     // With fadesTo: mean ‖S̄ − m‖₂ and ‖Ŝ(μ̂, Σ̂) − m‖₂ over the pixels.
     double meanFadeReference = 0, meanFadeEstimated = 0;
+    // The samples per axis the reference (exact statistics) were rendered
+    // with, and how much they moved on doubling them.
+    int referenceSamples = 0, exactSamples = 0;
+    double referenceChange = 0, exactChange = 0;
 };
 struct Figure4Result {
     std::vector<Figure4Column> columns;
