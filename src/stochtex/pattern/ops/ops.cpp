@@ -1,5 +1,6 @@
 #include "stochtex/pattern/ops/ops.h"
 
+#include <array>
 #include <charconv>
 #include <cstdio>
 #include <cctype>
@@ -68,17 +69,31 @@ kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kern
     return std::visit([&](const auto& p) { return kernel::opFiltered(p, a, b, c, ctx); }, op);
 }
 
-bool opShadesLight(const OpParams& op) {
-    return std::visit(
-        [](const auto& p) {
-            using Op = OpAt<indexOfParams<std::decay_t<decltype(p)>>()>;
-            if constexpr (requires { Op::kShadesLight; })
-                return Op::kShadesLight;
-            else
-                return false;
-        },
-        op);
+namespace {
+
+// The ops' yes/no traits, one row per op (the variant's index): each is a
+// `static constexpr bool` an op may declare, false where it does not.
+struct OpTraits {
+    bool shadesLight = false;  // kShadesLight
+    bool plainLookup = false;  // kPlainLookup
+};
+template <size_t I>
+constexpr OpTraits traitsOf() {
+    using Op = OpAt<I>;
+    OpTraits t;
+    if constexpr (requires { Op::kShadesLight; }) t.shadesLight = Op::kShadesLight;
+    if constexpr (requires { Op::kPlainLookup; }) t.plainLookup = Op::kPlainLookup;
+    return t;
 }
+constexpr auto kOpTraits = []<size_t... I>(std::index_sequence<I...>) {
+    return std::array<OpTraits, kOpCount>{traitsOf<I>()...};
+}(std::make_index_sequence<kOpCount>{});
+
+}  // namespace
+
+bool opShadesLight(const OpParams& op) { return kOpTraits[op.index()].shadesLight; }
+
+bool opIsPlainLookup(const OpParams& op) { return kOpTraits[op.index()].plainLookup; }
 
 nlohmann::json opManifest(const OpParams& op) {
     return std::visit(
@@ -107,18 +122,6 @@ double shortestDecimal(float v) {
     char text[32];
     const auto end = std::to_chars(text, text + sizeof text, v).ptr;
     return std::stod(std::string(text, end));
-}
-
-bool opIsPlainLookup(const OpParams& op) {
-    return std::visit(
-        [](const auto& p) {
-            using Op = OpAt<indexOfParams<std::decay_t<decltype(p)>>()>;
-            if constexpr (requires { Op::kPlainLookup; })
-                return Op::kPlainLookup;
-            else
-                return false;
-        },
-        op);
 }
 
 const char* opKernelStem(const OpParams& op) {
