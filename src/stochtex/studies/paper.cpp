@@ -266,6 +266,9 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         c.estimated = FilteredGraph(pattern, fo).render(cam);
         if (o.exactStatistics) c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
         c.errEstimated = errorMap(c.estimated, c.reference, c.numbers.meanErrorEstimated);
+        // Not filtering at all: the pixel centres, what filtering must beat.
+        (void)errorMap(FilteredGraph(pattern, fo.use(parseFilter("none"))).render(cam), c.reference,
+                       c.numbers.meanErrorNone);
         if (o.fadesTo) {
             c.numbers.meanFadeReference = meanDistance(c.reference, *o.fadesTo);
             c.numbers.meanFadeEstimated = meanDistance(c.estimated, *o.fadesTo);
@@ -283,7 +286,7 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
 
     Figure4Result res;
     const std::string title = figureTitle(o.figure);
-    res.table.columns = {{"footprint", "footprint", ""}};
+    res.table.columns = {{"footprint", "footprint", ""}, {"mean_error_none", "mean ‖S − S̄‖₂ (none: pixel centres)", ""}};
     if (o.exactStatistics)
         res.table.columns.push_back({"mean_error_exact_stats", "mean ‖Ŝ(μ, Σ) − S̄‖₂ (exact statistics)", ""});
     res.table.columns.push_back({"mean_error_estimators", "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (estimators)", ""});
@@ -312,7 +315,7 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         const int s = c.numbers.footprint;
         TableCell fp(std::to_string(s) + "²");
         fp.number = s;
-        std::vector<TableCell> cells{fp};
+        std::vector<TableCell> cells{fp, TableCell::value(c.numbers.meanErrorNone)};
         if (o.exactStatistics) cells.push_back(TableCell::value(c.numbers.meanErrorExact));
         cells.push_back(TableCell::value(c.numbers.meanErrorEstimated));
         if (o.fadesTo) {
@@ -343,14 +346,17 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
                                  "error ‖Ŝ − S̄‖₂ (RGB), one scale for every error map")});
     captions.push_back({""});
 
-    PlotSeries a{"exact statistics (eq. 5)", {}, {}, {0.1f, 0.6f, 0.2f}}, b{"estimators (eq. 5, 8, 12)", {}, {}, {0.1f, 0.3f, 0.8f}};
+    PlotSeries a{"exact statistics (eq. 5)", {}, {}, {0.1f, 0.6f, 0.2f}}, b{"estimators (eq. 5, 8, 12)", {}, {}, {0.1f, 0.3f, 0.8f}},
+        none{"none (pixel centres)", {}, {}, {0.6f, 0.6f, 0.6f}};
     for (const auto& c : res.columns) {
+        none.x.push_back(c.footprint);
+        none.y.push_back(c.meanErrorNone);
         a.x.push_back(c.footprint);
         a.y.push_back(c.meanErrorExact);
         b.x.push_back(c.footprint);
         b.y.push_back(c.meanErrorEstimated);
     }
-    std::vector<PlotSeries> series;
+    std::vector<PlotSeries> series{none};
     if (o.exactStatistics) series.push_back(a);
     series.push_back(b);
     LinePlotOptions lo;

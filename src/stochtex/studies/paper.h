@@ -72,6 +72,7 @@ void validateFigure4(const Figure4Options& options);
 struct Figure4Column {
     int footprint = 0;
     double meanErrorExact = 0, meanErrorEstimated = 0;  // mean ‖Ŝ − S̄‖₂ over the pixels (RGB)
+    double meanErrorNone = 0;                           // mean ‖S − S̄‖₂: the pixel centres, unfiltered
     // With fadesTo: mean ‖S̄ − m‖₂ and ‖Ŝ(μ̂, Σ̂) − m‖₂ over the pixels.
     double meanFadeReference = 0, meanFadeEstimated = 0;
     // The samples per axis the reference (exact statistics) were rendered
