@@ -996,7 +996,7 @@ drawn() { sed 's/\r$//' "$1" | grep -q $'\r'; }
 
 case_progress() {
   # Long enough (> 0.5 s) that a terminal gets a progress line.
-  local cmd=("$bin" render --preset marble --size 480 --filter reference --reference-samples 64 --threads 1)
+  local cmd=("$bin" render --preset marble --size 480 --scale 8 --filter reference --reference-samples 64 --threads 1)
   "${cmd[@]}" -o "$out/p1.png" >"$work/o.txt" 2>"$work/e.txt" || fail "render: exit $?"
   [ -s "$work/e.txt" ] && fail "stderr is no terminal, yet: $(cat -A "$work/e.txt")"
   command -v script >/dev/null || { echo "no script(1): terminal checks skipped"; return; }

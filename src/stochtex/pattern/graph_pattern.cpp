@@ -748,7 +748,8 @@ Image FilteredGraph::renderZoomReference(const Camera& camera, const Progress& p
             fine.scale = view.scale / n;
             fine.offsetU = view.offsetU + x0 * view.scale;
             fine.offsetV = view.offsetV + y0 * view.scale;
-            const Image samples = graph_.render(fine);
+            const Image samples =
+                graph_.render(fine, progressPart(progress, ty * tilesX + tx, tilesX * tilesY, "reference"));
             parallelRows(th, [&](int r0, int r1) {
                 for (int py = r0; py < r1; ++py) {
                     float* row = out.row(y0 + py) + size_t(x0) * 3;
@@ -764,7 +765,6 @@ Image FilteredGraph::renderZoomReference(const Camera& camera, const Progress& p
                 }
             });
         }
-        if (progress) progress(double(ty + 1) / tilesY, "");
     }
     return out;
 }
