@@ -25,8 +25,7 @@ void validateFigure14(const Figure14Options& o) {
     if (o.size < 16 || o.size > 2048) throw InputError::parameter("size", "must be in [16, 2048], got " + std::to_string(o.size));
     if (o.referenceSamples < 1 || o.referenceSamples > 4096)
         throw InputError::parameter("referenceSamples", "must be in [1, 4096], got " + std::to_string(o.referenceSamples));
-    if (!(o.referenceTolerance > 0 && o.referenceTolerance <= 0.1))
-        throw InputError::parameter("referenceTolerance", "must be in (0, 0.1], got " + formatValue(o.referenceTolerance));
+    validateReferenceTolerance(o.referenceTolerance);
     if (o.footprints.empty() || o.footprints.size() > 12)
         throw InputError::parameter("footprints", "needs 1 to 12 footprints");
     for (const int f : o.footprints)
@@ -74,10 +73,8 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
         // The reference and the exact statistics take nearly all the time,
         // each at the fewest samples that have converged.
         fo.source = StatisticsSource::Reference;
-        const ConvergedSamples referenceSamples = convergedSamples(graph, fo, cam, o.referenceTolerance);
-        c.numbers.referenceSamples = referenceSamples.perAxis;
-        c.numbers.referenceChange = referenceSamples.change;
-        fo = withSamples(fo, referenceSamples.perAxis);
+        fo = atConvergedSamples(graph, fo, cam, o.referenceTolerance, c.numbers.referenceSamples,
+                                c.numbers.referenceChange);
         c.reference = FilteredGraph(graph, fo).render(cam, progressPart(part, 0.0, 0.5, "reference"));
         double* errors[4] = {&c.numbers.none, &c.numbers.meanOnly, &c.numbers.matchedExact, &c.numbers.matched};
         for (size_t m = 0; m < kMethods.size(); ++m) {
@@ -85,10 +82,8 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
             const bool exact = kMethods[m].source == StatisticsSource::Exact;
             if (exact) {
                 fo.referenceMaxSamples = o.referenceSamples;
-                const ConvergedSamples exactSamples = convergedSamples(graph, fo, cam, o.referenceTolerance);
-                c.numbers.exactSamples = exactSamples.perAxis;
-                c.numbers.exactChange = exactSamples.change;
-                fo = withSamples(fo, exactSamples.perAxis);
+                fo = atConvergedSamples(graph, fo, cam, o.referenceTolerance, c.numbers.exactSamples,
+                                        c.numbers.exactChange);
             }
             c.images[m] = FilteredGraph(graph, fo, kMethods[m].moments)
                               .render(cam, exact ? progressPart(part, 0.5, 1.0, "exact statistics") : Progress{});

@@ -173,8 +173,7 @@ void validateFigure4(const Figure4Options& o) {
     if (o.size < 16 || o.size > 4096) throw InputError(what + ": size must be in [16, 4096], got " + std::to_string(o.size));
     if (o.referenceSamples < 1 || o.referenceSamples > 4096)
         throw InputError(what + ": referenceSamples must be in [1, 4096], got " + std::to_string(o.referenceSamples));
-    if (!(o.referenceTolerance > 0 && o.referenceTolerance <= 0.1))
-        throw InputError::parameter("referenceTolerance", "must be in (0, 0.1], got " + formatValue(o.referenceTolerance));
+    validateReferenceTolerance(o.referenceTolerance);
     if (o.footprints.empty()) throw InputError(what + ": no footprints");
     for (int s : o.footprints)
         if (s < 1 || s > 65536) throw InputError(what + ": footprints must be in [1, 65536], got " + std::to_string(s));
@@ -247,18 +246,14 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         // each at the fewest samples that have converged.
         const double referenceShare = o.exactStatistics ? 0.5 : 1.0;
         fo.use(parseFilter("reference"));
-        const ConvergedSamples referenceSamples = convergedSamples(pattern, fo, cam, o.referenceTolerance);
-        c.numbers.referenceSamples = referenceSamples.perAxis;
-        c.numbers.referenceChange = referenceSamples.change;
-        fo = withSamples(fo, referenceSamples.perAxis);
+        fo = atConvergedSamples(pattern, fo, cam, o.referenceTolerance, c.numbers.referenceSamples,
+                                c.numbers.referenceChange);
         c.reference = FilteredGraph(pattern, fo).render(cam, progressPart(part, 0.0, referenceShare, "reference"));
         if (o.exactStatistics) {
             fo.referenceMaxSamples = o.referenceSamples;
             fo.use(parseFilter("exact"));
-            const ConvergedSamples exactSamples = convergedSamples(pattern, fo, cam, o.referenceTolerance);
-            c.numbers.exactSamples = exactSamples.perAxis;
-            c.numbers.exactChange = exactSamples.change;
-            fo = withSamples(fo, exactSamples.perAxis);
+            fo = atConvergedSamples(pattern, fo, cam, o.referenceTolerance, c.numbers.exactSamples,
+                                    c.numbers.exactChange);
             c.exact = FilteredGraph(pattern, fo).render(cam, progressPart(part, 0.5, 1.0, "exact statistics"));
         }
         fo.source = StatisticsSource::Estimators;

@@ -46,6 +46,19 @@ double meanDistance(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
 
 }  // namespace
 
+FilterOptions atConvergedSamples(const GraphPattern& graph, const FilterOptions& options, const Camera& camera,
+                                 double tolerance, int& perAxis, double& change) {
+    const ConvergedSamples chosen = convergedSamples(graph, options, camera, tolerance);
+    perAxis = chosen.perAxis;
+    change = chosen.change;
+    return withSamples(options, chosen.perAxis);
+}
+
+void validateReferenceTolerance(double tolerance) {
+    if (!(tolerance > 0 && tolerance <= 0.1))
+        throw InputError::parameter("referenceTolerance", "must be in (0, 0.1], got " + formatValue(tolerance));
+}
+
 ConvergedSamples convergedSamples(const GraphPattern& graph, FilterOptions options, const Camera& camera,
                                   double tolerance, GraphMoments moments, int probe) {
     if (options.source != StatisticsSource::Reference && options.source != StatisticsSource::Exact)

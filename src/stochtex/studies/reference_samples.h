@@ -33,4 +33,14 @@ constexpr int kMaxSamplesPerAxis = 4096;
 ConvergedSamples convergedSamples(const GraphPattern& graph, FilterOptions options, const Camera& camera,
                                   double tolerance, GraphMoments moments = GraphMoments::Matched, int probe = 32);
 
+// `options` at the count convergedSamples chooses (referenceMaxSamples is
+// the cap), and that count and its change in perAxis and change: what a
+// figure renders its reference or exact statistics with and prints beside them.
+FilterOptions atConvergedSamples(const GraphPattern& graph, const FilterOptions& options, const Camera& camera,
+                                 double tolerance, int& perAxis, double& change);
+
+// A figure's reference tolerance: InputError naming referenceTolerance
+// outside (0, 0.1].
+void validateReferenceTolerance(double tolerance);
+
 }  // namespace stochtex
