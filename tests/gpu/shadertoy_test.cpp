@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -485,6 +486,25 @@ TEST_F(Shadertoy, BadProgramsAreRefusedNamingTheFileAndLine) {
     const std::string image = write("bad/image.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    c = vec4(1.0);\n    c.x = undefinedThing;\n}\n");
     std::string e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "bad").string()), *context_, small()); });
     EXPECT_NE(e.find(image + ":3"), std::string::npos) << e;
+    EXPECT_NE(e.find("\n    3 | c.x = undefinedThing;"), std::string::npos) << e;  // the line itself
+    // A call matching no overload: the first error alone, not the compiler's list of candidates.
+    const std::string overload = write("overload/image.glsl",
+                                       "void mainImage(out vec4 c, in vec2 p) {\n    c = texture(iChannel0, p, 1.0, 2.0);\n}\n");
+    e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "overload").string()), *context_, small()); });
+    EXPECT_NE(e.find(overload + ":2"), std::string::npos) << e;
+    EXPECT_EQ(e.find("sampler1D"), std::string::npos) << e;  // no candidate overloads
+    EXPECT_LT(std::count(e.begin(), e.end(), '\n'), 3) << e;
+    EXPECT_LT(e.size(), 400u) << e;
+    // ShaderToy features the host lacks are named: a channel read as a cube or volume, a sound pass.
+    write("cube/image.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    c = texture(iChannel0, vec3(p, 1.0));\n}\n");
+    e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "cube").string()), *context_, small()); });
+    EXPECT_NE(e.find("cubemap or volume channel"), std::string::npos) << e;
+    write("sound/image.glsl", "vec2 mainSound(int s, float t) { return vec2(sin(6.2831 * 440.0 * t)); }\n");
+    e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "sound").string()), *context_, small()); });
+    EXPECT_NE(e.find("a sound pass (mainSound) is a ShaderToy feature this host does not run"), std::string::npos) << e;
+    write("nomain/image.glsl", "float f(float x) { return x; }\n");
+    e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "nomain").string()), *context_, small()); });
+    EXPECT_NE(e.find("defines no mainImage"), std::string::npos) << e;
     e = error([&] { (void)loadShadertoy((dir_ / "none").string()); });
     EXPECT_NE(e.find("no such ShaderToy folder or manifest"), std::string::npos) << e;
     write("empty/common.glsl", "\n");
@@ -505,7 +525,8 @@ TEST_F(Shadertoy, BadProgramsAreRefusedNamingTheFileAndLine) {
     e = manifestError(R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "c"}]}}})");
     EXPECT_NE(e.find("/passes/image/channels/0/buffer: the program has no pass \"buffer_c\""), std::string::npos) << e;
     e = manifestError(R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "video"}]}}})");
-    EXPECT_NE(e.find("/passes/image/channels/0/type: unknown value \"video\""), std::string::npos) << e;
+    EXPECT_NE(e.find("/passes/image/channels/0/type: a video channel is a ShaderToy input this host does not support"),
+              std::string::npos) << e;
     e = manifestError(R"({"uniforms": {"iTime": {"type": "float"}}, "passes": {"image": {"code": "image.glsl"}}})");
     EXPECT_NE(e.find("/uniforms/iTime: not a usable uniform name"), std::string::npos) << e;
     e = manifestError(R"({"passes": {"buffer_a": {"code": "image.glsl"}}})");

@@ -182,23 +182,91 @@ Image noiseImage(int size, bool rgba, uint32_t seed) {
     return img;
 }
 
-// The compiler's messages (after ShaderError's first line) on one line:
-// "file:line(col): error: …; …", at most five, so that a command prints one
-// message however many errors a shader has.
-std::string compilerMessages(const std::string& what) {
+// A compiler's log, after ShaderError's first line, as one short message:
+// its first error with its location ("file:line", mapped to the user's
+// files by compileProgram), the source line it names, and how many more
+// errors there are. Mesa follows an error with indented lines of the same
+// location (the 60 candidate overloads of `texture`); they are part of the
+// first error, not errors of their own, and are left out.
+std::string firstCompilerError(const std::string& what,
+                               const std::vector<std::pair<std::string, std::string>>& userFiles) {
+    // Mesa: "file:12(3): error: …"; NVIDIA: "file:12 : error C1008: …".
+    static const std::regex errorLine(R"(^(.+?):(\d+)(?:\((\d+)\))?\s*:\s*error\b[^:]*:(.*)$)");
+    std::vector<std::smatch> errors;
     std::vector<std::string> lines;
-    size_t pos = what.find('\n');
-    while (pos != std::string::npos && pos + 1 < what.size()) {
+    for (size_t pos = what.find('\n'); pos != std::string::npos && pos + 1 < what.size();) {
         const size_t end = what.find('\n', pos + 1);
-        std::string line = what.substr(pos + 1, end == std::string::npos ? std::string::npos : end - pos - 1);
-        while (!line.empty() && std::isspace((unsigned char)line.back())) line.pop_back();
-        if (!line.empty()) lines.push_back(line);
+        lines.push_back(what.substr(pos + 1, end == std::string::npos ? std::string::npos : end - pos - 1));
         pos = end;
     }
-    std::string out;
-    for (size_t k = 0; k < lines.size() && k < 5; ++k) out += (k ? "; " : "") + lines[k];
-    if (lines.size() > 5) out += "; and " + std::to_string(lines.size() - 5) + " more";
-    return out.empty() ? what : out;
+    std::string first, location, file;
+    int line = 0, more = 0;
+    for (const std::string& text : lines) {
+        std::smatch m;
+        if (!std::regex_match(text, m, errorLine)) continue;
+        std::string message = m[4].str();
+        if (message.empty() ||
+            (message.size() > 1 && std::isspace((unsigned char)message[0]) && std::isspace((unsigned char)message[1])))
+            continue;  // a continuation (indented twice or more): a candidate, a note
+        if (!first.empty()) {
+            ++more;
+            continue;
+        }
+        while (!message.empty() && std::isspace((unsigned char)message.front())) message.erase(0, 1);
+        while (!message.empty() && std::isspace((unsigned char)message.back())) message.pop_back();
+        if (message.ends_with("candidates are:")) message.resize(message.size() - 16);
+        while (!message.empty() && (message.back() == ';' || message.back() == ' ')) message.pop_back();
+        file = m[1].str();
+        line = std::stoi(m[2].str());
+        location = file + ":" + m[2].str() + (m[3].matched ? ":" + m[3].str() : "");
+        first = message;
+    }
+    if (first.empty()) {  // no line in a known form: the log as it is, on one line, cut short
+        std::string out;
+        for (const std::string& text : lines) out += (out.empty() ? "" : "; ") + text;
+        return out.size() > 600 ? out.substr(0, 600) + " …" : out.empty() ? what : out;
+    }
+    std::string out = location + ": " + first;
+    // A channel sampled with a 3D coordinate is a cubemap or volume channel on ShaderToy.
+    if (std::regex_search(first, std::regex(R"(texture\w*\(sampler2D, [iu]?vec3)")))
+        out += " (a channel read with a 3D coordinate is a cubemap or volume channel on ShaderToy, which this host "
+               "does not support: its channels are 2D; docs/SHADERTOY.md)";
+    if (more > 0) out += " (and " + std::to_string(more) + " more error" + (more > 1 ? "s" : "") + ")";
+    // The line itself, from the user's file, so the message is read without opening it.
+    for (const auto& [path, text] : userFiles) {
+        if (path != file) continue;
+        size_t begin = 0;
+        for (int k = 1; k < line && begin != std::string::npos; ++k) {
+            begin = text.find('\n', begin);
+            if (begin != std::string::npos) ++begin;
+        }
+        if (begin == std::string::npos || begin >= text.size()) break;
+        std::string source = text.substr(begin, text.find('\n', begin) - begin);
+        while (!source.empty() && std::isspace((unsigned char)source.front())) source.erase(0, 1);
+        if (source.size() > 120) source = source.substr(0, 120) + " …";
+        if (!source.empty()) out += "\n    " + std::to_string(line) + " | " + source;
+    }
+    return out;
+}
+
+// What a pass uses that ShaderToy has and this host does not (a sound,
+// cubemap or VR entry point instead of mainImage), named as such: the
+// compiler would only say that mainImage is missing. Empty when nothing is.
+// `common`: the Common file's text, which may define mainImage for every pass.
+std::string unsupportedFeature(const std::string& path, const std::string& text, const std::string& common) {
+    static const std::regex mainImage(R"(\bvoid\s+mainImage\s*\()");
+    static const std::pair<const char*, const char*> kEntryPoints[] = {
+        {R"(\bmainSound\s*\()", "a sound pass (mainSound)"},
+        {R"(\bmainCubemap\s*\()", "a cubemap pass (Cube A, mainCubemap)"},
+        {R"(\bmainVR\s*\()", "a VR entry point (mainVR) alone"}};
+    if (!std::regex_search(text, mainImage) && !std::regex_search(common, mainImage)) {
+        for (const auto& [pattern, what] : kEntryPoints)
+            if (std::regex_search(text, std::regex(pattern)))
+                return path + ": " + what + " is a ShaderToy feature this host does not run (docs/SHADERTOY.md lists "
+                                          "what it does); a pass defines mainImage(out vec4, in vec2)";
+        return path + ": defines no mainImage(out vec4 fragColor, in vec2 fragCoord), ShaderToy's entry point";
+    }
+    return {};
 }
 
 }  // namespace
@@ -405,7 +473,13 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
         try {
             p.program = gl::Program(compileProgram({"fullscreen"}, files, overrides));
         } catch (const ShaderError& e) {
-            throw InputError(spec.name + ": pass " + pass.name + " does not compile: " + compilerMessages(e.what()));
+            // A feature the host lacks is named as such; otherwise the compiler's first error.
+            const std::string& code = userFiles[k + (spec.common.empty() ? 0 : 1)].second;
+            if (const std::string why = unsupportedFeature(pass.code.string(), code,
+                                                           spec.common.empty() ? "" : userFiles.front().second);
+                !why.empty())
+                throw InputError(spec.name + ": pass " + pass.name + ": " + why);
+            throw InputError(spec.name + ": pass " + pass.name + " does not compile: " + firstCompilerError(e.what(), userFiles));
         }
         const int buffer = pass.name == "image" ? -1 : pass.name.back() - 'a';
         p.mipmaps = buffer >= 0 && mipmapped[size_t(buffer)];

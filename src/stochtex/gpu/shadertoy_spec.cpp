@@ -54,6 +54,13 @@ void requireFile(const fs::path& path, const std::string& what) {
 ShadertoyChannel parseChannel(const JsonReader& c, const fs::path& baseDir) {
     ShadertoyChannel ch;
     if (!c.value().is_object()) c.fail("expected a channel object with a \"type\", or null");
+    // ShaderToy's other inputs, named as such rather than as an unknown value.
+    static const std::set<std::string> unsupported{"cubemap", "volume", "video", "webcam", "music", "musicstream",
+                                                   "mic", "sound"};
+    if (c.has("type") && c.at("type").value().is_string() && unsupported.count(c.at("type").value().get<std::string>()))
+        c.at("type").fail("a " + c.at("type").value().get<std::string>() +
+                          " channel is a ShaderToy input this host does not support yet (it reads buffer, image, "
+                          "keyboard and noise channels; docs/SHADERTOY.md)");
     const std::string type = c.at("type").choice({"buffer", "image", "keyboard", "noise"});
     if (type == "buffer") {
         c.expectObject({"type", "buffer", "frame", "filter", "wrap"});
