@@ -345,6 +345,8 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"pass", "--inspect"},
     {"pixel", "--inspect"},
     {"key", "--keys"},
+    {"input", "--input"},
+    {"event", "--event"},
     {"hwPerformance", "--hw-performance"},
 };
 }  // namespace

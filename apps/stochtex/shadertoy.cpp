@@ -58,7 +58,7 @@ void registerShadertoy(CLI::App& app) {
             std::printf("%swrote %zu figures, %zu tables and index.html to %s\n", r.markdown.c_str(), r.figures.size(),
                         r.tables.size(), a.output.c_str());
         } else {
-            renderShadertoyFrames(host, a.frames, outputs.sink(), line.callback());
+            renderShadertoyFrames(host, a.frames, outputs.sink(), line.callback(), outputs.readBack());
             line.finish();
             const std::string written = outputs.finish();
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -25,12 +25,20 @@ void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& f) {
         ->default_str(std::to_string(f.size[0]) + "," + std::to_string(f.size[1]));
     cmd.add_option("--time", f.time, "iTime of frame 0, seconds")->capture_default_str();
     cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate")->capture_default_str();
-    cmd.add_option("--mouse", f.mouse, "iMouse: X,Y (pressed there) or X,Y,CLICK_X,CLICK_Y, pixels, y up")
+    cmd.add_option("--mouse", f.mouse, "iMouse: X,Y (the button pressed there at frame 0 and held, with ShaderToy's "
+                                       "click semantics) or X,Y,CLICK_X,CLICK_Y (iMouse as given, every frame), "
+                                       "pixels, y up")
         ->delimiter(',')
         ->expected(2, 4);
     cmd.add_option("--date", f.date, "iDate at iTime 0: YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS")->capture_default_str();
     cmd.add_option("--keys", f.keys, "Key codes held from frame 0 (JavaScript keyCode, e.g. 65 for A), comma-separated")
         ->delimiter(',');
+    cmd.add_option("--input", f.inputFile, "A timeline of key and mouse events at frames or times (JSON; "
+                                           "docs/SHADERTOY.md), replayed from frame 0");
+    cmd.add_option("--event", f.events, "One event: FRAME:keydown:CODE, FRAME:keyup:CODE, FRAME:mousedown:X,Y, "
+                                        "FRAME:mousemove:X,Y or FRAME:mouseup; FRAME a frame or a time (1.5s); "
+                                        "repeat the flag for more")
+        ->take_all();
     cmd.add_option("--hw-performance", f.hwPerformance,
                    "HW_PERFORMANCE, which shaders test to pick their quality: 1 (ShaderToy on a desktop) or 0 (on a "
                    "phone)")
@@ -46,8 +54,8 @@ ShadertoySettings shadertoySettings(const ShadertoyFlags& f) {
     s.startTime = f.time;
     s.fps = f.fps;
     if (f.mouse.size() == 3) throw InputError("--mouse: give X,Y or X,Y,CLICK_X,CLICK_Y, got 3 numbers");
-    for (size_t k = 0; k < f.mouse.size(); ++k) s.mouse[k] = f.mouse[k];
-    if (f.mouse.size() == 2) s.mouse[2] = f.mouse[0], s.mouse[3] = f.mouse[1];  // pressed where it is
+    if (f.mouse.size() == 4)
+        for (size_t k = 0; k < 4; ++k) s.mouse[k] = f.mouse[k];
     const std::regex date(R"((\d{4})-(\d{2})-(\d{2})(?:T(\d{2}):(\d{2}):(\d{2}))?)");
     std::smatch m;
     if (!std::regex_match(f.date, m, date)) throw InputError("--date: expected YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS, got \"" + f.date + "\"");
@@ -56,6 +64,16 @@ ShadertoySettings shadertoySettings(const ShadertoyFlags& f) {
     s.hwPerformance = f.hwPerformance;
     if (f.firstFrame < 0 || f.firstFrame > 1000000)
         throw InputError("--first-frame: must be in [0, 1000000], got " + std::to_string(f.firstFrame));
+    validateShadertoySettings(s);
+    // The timeline: the --mouse press, the file's events, the --event ones; in order of frame (stable).
+    if (f.mouse.size() == 2) s.inputs.push_back({0, ShadertoyInput::Kind::MouseDown, 0, f.mouse[0], f.mouse[1]});
+    if (!f.inputFile.empty()) {
+        const std::vector<ShadertoyInput> file = loadShadertoyInputs(f.inputFile, s.fps, s.startTime);
+        s.inputs.insert(s.inputs.end(), file.begin(), file.end());
+    }
+    for (const std::string& e : f.events) s.inputs.push_back(parseShadertoyInputText(e, s.fps, s.startTime));
+    std::stable_sort(s.inputs.begin(), s.inputs.end(),
+                     [](const ShadertoyInput& a, const ShadertoyInput& b) { return a.frame < b.frame; });
     validateShadertoySettings(s);
     return s;
 }
@@ -125,6 +143,11 @@ ShadertoyFrameSink FrameOutputs::sink() {
         frames_.push_back(img);
         captions_.push_back("iFrame " + std::to_string(frame));
     };
+}
+
+FrameReadBack FrameOutputs::readBack() const {
+    if (output_.empty()) return FrameReadBack::None;
+    return image_ && !sheet_ ? FrameReadBack::Last : FrameReadBack::Every;
 }
 
 std::string FrameOutputs::finish() {

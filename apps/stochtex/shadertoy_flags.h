@@ -24,6 +24,8 @@ struct ShadertoyFlags {
     std::vector<float> mouse;
     std::string date = shadertoyDateText(ShadertoySettings{}.date);
     std::vector<int> keys;
+    std::string inputFile;            // --input: a timeline of key and mouse events (gpu/shadertoy_input.h)
+    std::vector<std::string> events;  // --event FRAME:EVENT[:VALUE], repeated
     int firstFrame = 0;  // the first frame a study analyses
     int hwPerformance = ShadertoySettings{}.hwPerformance;
 };
@@ -50,6 +52,9 @@ class FrameOutputs {
 public:
     FrameOutputs(std::string output, bool sheet, int frames, const ShadertoySettings& settings);
     ShadertoyFrameSink sink();
+    // The frames the sink takes: every one for a sheet, a video or a
+    // folder, the last for an image, none without an output.
+    FrameReadBack readBack() const;
     // Writes the image or closes the video; the path written ("" for none).
     std::string finish();
 

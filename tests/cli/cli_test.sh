@@ -354,6 +354,20 @@ case_shadertoy() {
   expect_bad "zoom unknown extension" "$out/z.mov" "cannot write frames as \".mov\"" -- "$bin" zoom --frames 2 --size 16 -o "$out/z.mov"
   "$bin" shadertoy "$work/st" --size 32,16 --frames 7 --inspect buffer_a:3,4 >"$work/inspect.txt" 2>&1 || fail "shadertoy inspect: $(cat "$work/inspect.txt")"
   grep -q "^buffer_a (3, 4) at iFrame 6: 7 0 0 0$" "$work/inspect.txt" || fail "shadertoy inspect: $(cat "$work/inspect.txt")"
+  # Events on a timeline, with ShaderToy's click semantics: a buffer counts "just clicked" frames (w > 0),
+  # held frames (z > 0) and frames with space pressed; --event and --input give the same run.
+  mkdir -p "$work/clicks"
+  printf 'void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(0), 0) + vec4(iMouse.w > 0.0 ? 1.0 : 0.0, iMouse.z > 0.0 ? 1.0 : 0.0, texelFetch(iChannel1, ivec2(32, 1), 0).x, 0.0); }\n' >"$work/clicks/a.glsl"
+  printf 'void mainImage(out vec4 c, in vec2 p) { c = iMouse; }\n' >"$work/clicks/image.glsl"
+  printf '{"passes": {"buffer_a": {"code": "a.glsl", "channels": [{"type": "buffer", "buffer": "a"}, {"type": "keyboard"}]}, "image": {"code": "image.glsl"}}}' >"$work/clicks/shadertoy.json"
+  "$bin" shadertoy "$work/clicks" --size 8,8 --frames 10 --event 2:mousedown:3,4 --event 0.1s:mouseup --event 8:mousedown:1,2 --event 3:keydown:32 --inspect buffer_a:0,0 >"$work/clicks.txt" 2>&1 || fail "shadertoy events: $(cat "$work/clicks.txt")"
+  grep -q "^buffer_a (0, 0) at iFrame 9: 2 6 1 0$" "$work/clicks.txt" || fail "shadertoy events: want 2 clicks, 6 held frames, 1 press: $(cat "$work/clicks.txt")"
+  printf '[{"frame": 2, "mousedown": [3, 4]}, {"frame": 3, "keydown": 32}, {"time": 0.1, "mouseup": true}, {"frame": 8, "mousedown": [1, 2]}]' >"$work/clicks.json"
+  "$bin" shadertoy "$work/clicks" --size 8,8 --frames 10 --input "$work/clicks.json" --inspect buffer_a:0,0 >"$work/clicks2.txt" 2>&1 || fail "shadertoy --input: $(cat "$work/clicks2.txt")"
+  grep -q "^buffer_a (0, 0) at iFrame 9: 2 6 1 0$" "$work/clicks2.txt" || fail "shadertoy --input: $(cat "$work/clicks2.txt")"
+  expect_bad "shadertoy bad event" "$out/ste.png" "--event: event \"2:click:1,1\": expected FRAME:EVENT" -- "$bin" shadertoy "$work/clicks" --event 2:click:1,1 -o "$out/ste.png"
+  printf '[{"frame": 4, "keydown": 32}, {"frame": 2, "keyup": 32}]' >"$work/back.json"
+  expect_bad "shadertoy timeline going back" "$out/ste.png" "back.json: /1: frames never go back" -- "$bin" shadertoy "$work/clicks" --input "$work/back.json" -o "$out/ste.png"
   printf 'void mainImage(out vec4 c, in vec2 p) {\n  c = vec4(nope);\n}\n' >"$work/st/broken.glsl"
   printf '{"passes": {"image": {"code": "broken.glsl"}}}' >"$work/broken.json"
   cp "$work/st/broken.glsl" "$work/broken.glsl"
@@ -589,6 +603,22 @@ JSON
   expect_ok "shadertoy iFrame 30" "$out/wbrs_ref.png" -- "$bin" shadertoy "$work/iframe" --size 96,80 --frames 31 -o "$out/wbrs_ref.png"
   d=$("$compare" "$out/wbrs.png" "$out/wbrs_ref.png") || { fail "workbench resize: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 <= 0.5) }' || fail "workbench program restarted on a resize: $d (want mean <= 0.5)"
+
+  # Mouse steps of a script are the program's iMouse with ShaderToy's click
+  # semantics, as --event gives them: the picture shows the counts of
+  # clicked and held frames, and matches the shadertoy command's frame.
+  mkdir -p "$work/wbclicks"
+  printf 'void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(0), 0) + vec4(iMouse.w > 0.0 ? 1.0 : 0.0, iMouse.z > 0.0 ? 1.0 : 0.0, 0.0, 0.0); }\n' >"$work/wbclicks/a.glsl"
+  printf 'void mainImage(out vec4 c, in vec2 p) { c = vec4(texelFetch(iChannel0, ivec2(0), 0).xy / vec2(4.0, 16.0), 0.5, 1.0); }\n' >"$work/wbclicks/image.glsl"
+  printf '{"passes": {"buffer_a": {"code": "a.glsl", "channels": [{"type": "buffer", "buffer": "a"}]}, "image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "a"}]}}}' >"$work/wbclicks/shadertoy.json"
+  printf '[{"frame": 2, "mousedown": [3, 4]}, {"frame": 4, "mousemove": [5, 6]}, {"frame": 6, "mouseup": true}, {"frame": 8, "mousedown": [1, 2]}, {"frame": 11, "pause": true}]' >"$work/clicks_script.json"
+  expect_ok "workbench program clicked by a script" "$out/wbcl.png" -- "${xvfb[@]}" "$bin" view --shadertoy "$work/wbclicks" --size 96,80 --frames 13 --script "$work/clicks_script.json" --screenshot "$out/wbcl.png"
+  expect_ok "shadertoy clicked by events" "$out/wbcl_ref.png" -- "$bin" shadertoy "$work/wbclicks" --size 96,80 --frames 11 --event 2:mousedown:3,4 --event 4:mousemove:5,6 --event 6:mouseup --event 8:mousedown:1,2 -o "$out/wbcl_ref.png"
+  d=$("$compare" "$out/wbcl.png" "$out/wbcl_ref.png") || { fail "workbench clicks: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5) }' || fail "workbench clicks vs shadertoy events: $d (want mean <= 0.5)"
+  # The counts themselves: clicks on frames 2 and 8, the button held on 2–5 and 8–10.
+  "$bin" shadertoy "$work/wbclicks" --size 8,8 --frames 11 --event 2:mousedown:3,4 --event 6:mouseup --event 8:mousedown:1,2 --inspect buffer_a:0,0 >"$work/wbclicks.txt" 2>&1 || fail "clicks inspect: $(cat "$work/wbclicks.txt")"
+  grep -q "^buffer_a (0, 0) at iFrame 10: 2 7 0 0$" "$work/wbclicks.txt" || fail "clicks inspect: $(cat "$work/wbclicks.txt")"
 
   # A pattern's spectrum view is the spectrum study of the frame `render --gpu`
   # writes (an oblique pattern, so a frame analysed upside down would show

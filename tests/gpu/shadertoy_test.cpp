@@ -367,6 +367,51 @@ TEST_F(Shadertoy, MultiBufferProgramRendersDeterministically) {
     double change = 0;
     for (size_t i = 0; i < runs[0][5].data().size(); ++i) change += std::abs(runs[0][5].data()[i] - runs[0][0].data()[i]);
     EXPECT_GT(change, 1.0);  // the buffers evolve
+    // Read back only the last frame (an image output) or none: the same last frame, the sink called as asked.
+    std::vector<int> taken;
+    ShadertoyHost host(spec, *context_, small(64, 48));
+    renderShadertoyFrames(host, 6, [&](int frame, const Image& f) {
+        taken.push_back(frame);
+        EXPECT_EQ(f.data(), runs[0][5].data());
+    }, {}, FrameReadBack::Last);
+    EXPECT_EQ(taken, std::vector<int>{5});
+    host.reset();
+    renderShadertoyFrames(host, 6, [&](int frame, const Image&) { taken.push_back(frame); }, {}, FrameReadBack::None);
+    EXPECT_EQ(taken, std::vector<int>{5});
+    EXPECT_EQ(host.image().data(), runs[0][5].data());
+}
+
+// A timeline of events plays with ShaderToy's click semantics: a buffer
+// counts the frames whose iMouse.w is positive ("just clicked"), those with
+// z positive (held) and those with space pressed; after a reset the
+// timeline plays again.
+TEST_F(Shadertoy, TimelineEventsFollowShadertoysClickSemantics) {
+    write("t/a.glsl", R"(void mainImage(out vec4 c, in vec2 p) {
+        vec4 prev = texelFetch(iChannel0, ivec2(0), 0);
+        c = prev + vec4(iMouse.w > 0.0 ? 1.0 : 0.0, iMouse.z > 0.0 ? 1.0 : 0.0, texelFetch(iChannel1, ivec2(32, 1), 0).x, 0.0);
+    })");
+    write("t/image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = iMouse; }\n");
+    write("t/shadertoy.json", R"({"passes": {"buffer_a": {"code": "a.glsl", "channels": [{"type": "buffer", "buffer": "a"}, {"type": "keyboard"}]},
+        "image": {"code": "image.glsl"}}})");
+    ShadertoySettings settings = small();
+    using K = ShadertoyInput::Kind;
+    settings.inputs = {{2, K::MouseDown, 0, 10, 5}, {3, K::KeyDown, 32}, {4, K::MouseMove, 0, 12, 6}, {5, K::KeyUp, 32},
+                       {6, K::MouseUp}, {7, K::KeyDown, 32}, {8, K::MouseDown, 0, 3, 4}};
+    ShadertoyHost host(loadShadertoy((dir_ / "t").string()), *context_, settings);
+    for (int run = 0; run < 2; ++run) {
+        for (int k = 0; k < 10; ++k) {
+            host.renderFrame();
+            if (k == 5) expectPixel(host.pixel("image", 1, 1), {12, 6, 10, -5}, 0, "iMouse held after a drag");
+            if (k == 6) expectPixel(host.pixel("image", 1, 1), {12, 6, -10, -5}, 0, "iMouse after the release");
+        }
+        // Clicked on frames 2 and 8; held on 2–5 and 8–9; space pressed on frames 3 and 7.
+        expectPixel(host.pixel("buffer_a", 0, 0), {2, 6, 2, 0}, 0, "counts, run " + std::to_string(run));
+        expectPixel(host.pixel("image", 1, 1), {3, 4, 3, -4}, 0, "iMouse on frame 9");
+        host.reset();
+    }
+    settings.inputs = {{5, K::KeyDown, 32}, {3, K::KeyUp, 32}};
+    EXPECT_NE(error([&] { ShadertoyHost h(loadShadertoy((dir_ / "t").string()), *context_, settings); })
+                  .find("events must come in order of frame"), std::string::npos);
 }
 
 // After a reset, every level of a mipmapped buffer reads 0 until the

@@ -501,6 +501,26 @@ TEST(WorkbenchScript, KeysAreNamedAsOnTheKeyboard) {
         EXPECT_THROW(parseKeyChord(bad), InputError) << bad;
 }
 
+// Mouse steps drive a program's iMouse: a point in its pixels, or a release.
+TEST(WorkbenchScript, MouseStepsTakeAPointOrARelease) {
+    const std::vector<WorkbenchStep> steps = parseWorkbenchScript(
+        json::parse(R"([{"frame": 2, "mousedown": [3, 4]}, {"mousemove": [5, 6]}, {"frame": 4, "mouseup": true}])"), "s.json");
+    ASSERT_EQ(steps.size(), 3u);
+    using A = WorkbenchStep::Action;
+    EXPECT_EQ(steps[0].action, A::MouseDown);
+    EXPECT_EQ(steps[0].x, 3);
+    EXPECT_EQ(steps[0].y, 4);
+    EXPECT_EQ(steps[1].action, A::MouseMove);
+    EXPECT_EQ(steps[1].frame, 2);
+    EXPECT_EQ(steps[2].action, A::MouseUp);
+    EXPECT_EQ(steps[2].frame, 4);
+    auto message = [](const char* text) {
+        return std::string(test::inputErrorOf([&] { parseWorkbenchScript(json::parse(text), "s.json"); }).what());
+    };
+    EXPECT_EQ(message(R"([{"mousedown": [1]}])"), "s.json: /0/mousedown: needs [x, y] in pixels");
+    EXPECT_EQ(message(R"([{"mouseup": false}])"), "s.json: /0/mouseup: is written true");
+}
+
 // Stripes of a known frequency: the spectrum's brightest pixels sit at ±f
 // from the centre, and the summary reads that frequency.
 TEST(LiveAnalysis, SpectrumIsTheStudysFigureOfTheFrame) {

@@ -39,6 +39,13 @@ void validateShadertoySettings(const ShadertoySettings& s) {
     for (const int key : s.keys)
         if (key < 0 || key > 255)
             throw InputError::parameter("key", "key codes are 0–255 (JavaScript keyCode), got " + std::to_string(key));
+    for (size_t k = 0; k < s.inputs.size(); ++k) {
+        validateShadertoyInput(s.inputs[k]);
+        if (k > 0 && s.inputs[k].frame < s.inputs[k - 1].frame)
+            throw InputError::parameter("input", "events must come in order of frame: frame " +
+                                                     std::to_string(s.inputs[k].frame) + " after frame " +
+                                                     std::to_string(s.inputs[k - 1].frame));
+    }
     if (s.hwPerformance != 0 && s.hwPerformance != 1)
         throw InputError::parameter("hwPerformance", "must be 0 (a phone) or 1 (a desktop), got " +
                                                         std::to_string(s.hwPerformance));
@@ -61,7 +68,7 @@ namespace {
 void deleteSampler(GLuint id) { glDeleteSamplers(1, &id); }
 using Sampler = gl::Handle<deleteSampler>;
 
-constexpr int kKeys = 256;
+constexpr int kKeys = ShadertoyInputState::kKeys;
 
 // Lets a texture made without mipmaps (floatTexture, RenderTarget) have
 // them, and builds them from level 0. The channel's sampler chooses the filter.
@@ -291,7 +298,8 @@ struct ShadertoyHost::Impl {
     std::unique_ptr<GpuView> pattern;  // the stochtex_sample include's textures and parameters
     int channelUnit = 0;               // iChannel0's texture unit
     gl::Texture keyboard;
-    std::array<float, kKeys * 3> keys{};  // rows: down, pressed this frame, toggled
+    ShadertoyInputState input;  // the keyboard texture's rows and iMouse
+    size_t nextInput = 0;       // the settings' next event of the timeline
     int frame = 0;
     int instance = 0;
 
@@ -327,7 +335,7 @@ struct ShadertoyHost::Impl {
     void uploadKeyboard() {
         glBindTexture(GL_TEXTURE_2D, keyboard.id());
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, kKeys, 3, 0, GL_RED, GL_FLOAT, keys.data());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, kKeys, 3, 0, GL_RED, GL_FLOAT, input.keyboard().data());
     }
 
     // The texture channel i of pass p reads now, and its size.
@@ -367,7 +375,8 @@ struct ShadertoyHost::Impl {
         glUniform1f(loc("iTimeDelta"), float(1.0 / settings.fps));
         glUniform1i(loc("iFrame"), frame);
         glUniform1f(loc("iFrameRate"), float(settings.fps));
-        glUniform4f(loc("iMouse"), settings.mouse[0], settings.mouse[1], settings.mouse[2], settings.mouse[3]);
+        const std::array<float, 4>& mouse = input.mouse();
+        glUniform4f(loc("iMouse"), mouse[0], mouse[1], mouse[2], mouse[3]);
         const auto& d = settings.date;
         const double seconds = d[3] * 3600.0 + d[4] * 60.0 + d[5] + time();
         glUniform4f(loc("iDate"), float(d[0]), float(d[1] - 1), float(d[2]), float(seconds));
@@ -524,11 +533,8 @@ void ShadertoyHost::reset(int instance) {
     Impl& m = *impl_;
     m.frame = 0;
     m.instance = instance;
-    m.keys.fill(0.0f);
-    for (const int key : m.settings.keys) {  // held from frame 0: down and toggled, pressed on frame 0
-        m.keys[size_t(key)] = m.keys[size_t(kKeys + key)] = 1.0f;
-        m.keys[size_t(2 * kKeys + key)] = 1.0f;
-    }
+    m.input.reset(m.settings.keys, m.settings.mouse);  // held from frame 0: down and toggled, pressed on frame 0
+    m.nextInput = 0;
     m.uploadKeyboard();
     for (Impl::Pass& p : m.passes) p.latest = 0;
     m.clearTargets();
@@ -568,17 +574,19 @@ void ShadertoyHost::resize(int width, int height) {
         p.targets = std::move(resized[i]);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    m.input.scaleMouse(float(width) / float(before.width), float(height) / float(before.height));  // iMouse in the new pixels
 }
 
 void ShadertoyHost::renderFrame() {
     Impl& m = *impl_;
+    for (; m.nextInput < m.settings.inputs.size() && m.settings.inputs[m.nextInput].frame <= m.frame; ++m.nextInput)
+        m.input.apply(m.settings.inputs[m.nextInput]);
+    if (m.input.takeKeyboardChange()) m.uploadKeyboard();
     for (Impl::Pass& p : m.passes) p.renderedThisFrame = false;
     for (size_t p = 0; p < m.passes.size(); ++p) m.run(p);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     ++m.frame;
-    // "Pressed" lasts one frame.
-    std::fill(m.keys.begin() + kKeys, m.keys.begin() + 2 * kKeys, 0.0f);
-    m.uploadKeyboard();
+    m.input.endFrame();  // "pressed" and "just clicked" last one frame
 }
 
 namespace {
@@ -625,29 +633,23 @@ void ShadertoyHost::checkPixel(const std::string& pass, int x, int y) const {
                                                  std::to_string(m.settings.width) + "x" + std::to_string(m.settings.height) + " frame");
 }
 
-void ShadertoyHost::setKey(int keyCode, bool down) {
-    Impl& m = *impl_;
-    if (keyCode < 0 || keyCode >= kKeys)
-        throw InputError::parameter("key", "key codes are 0–255 (JavaScript keyCode), got " + std::to_string(keyCode));
-    float& held = m.keys[size_t(keyCode)];
-    if (down && held == 0.0f) {
-        m.keys[size_t(kKeys + keyCode)] = 1.0f;
-        float& toggled = m.keys[size_t(2 * kKeys + keyCode)];
-        toggled = 1.0f - toggled;
-    }
-    held = down ? 1.0f : 0.0f;
-    m.uploadKeyboard();
+void ShadertoyHost::setKey(int keyCode, bool down) { impl_->input.setKey(keyCode, down); }
+void ShadertoyHost::setMouse(const std::array<float, 4>& mouse) { impl_->input.setMouse(mouse); }
+void ShadertoyHost::apply(const ShadertoyInput& input) {
+    validateShadertoyInput({0, input.kind, input.key, input.x, input.y});
+    impl_->input.apply(input);
 }
+std::array<float, 4> ShadertoyHost::mouse() const { return impl_->input.mouse(); }
 
-void ShadertoyHost::setMouse(const std::array<float, 4>& mouse) { impl_->settings.mouse = mouse; }
-
-void renderShadertoyFrames(ShadertoyHost& host, int frames, const ShadertoyFrameSink& sink, const Progress& progress) {
+void renderShadertoyFrames(ShadertoyHost& host, int frames, const ShadertoyFrameSink& sink, const Progress& progress,
+                           FrameReadBack readBack) {
     if (frames < 1 || frames > 1000000)
         throw InputError::parameter("frames", "must be in [1, 1000000], got " + std::to_string(frames));
     for (int k = 0; k < frames; ++k) {
         const int frame = host.frame();
         host.renderFrame();
-        if (sink) sink(frame, host.image());
+        const bool wanted = readBack == FrameReadBack::Every || (readBack == FrameReadBack::Last && k + 1 == frames);
+        if (sink && wanted) sink(frame, host.image());
         if (progress) progress(double(k + 1) / frames, "frame " + std::to_string(frame));
     }
 }

@@ -22,6 +22,7 @@
 
 #include "stochtex/core/progress.h"
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/shadertoy_input.h"
 #include "stochtex/gpu/shadertoy_spec.h"
 #include "stochtex/image/image.h"
 #include "stochtex/textures/texture_source.h"
@@ -32,17 +33,20 @@ struct ShadertoySettings {
     int width = 640, height = 360;  // iResolution, [1, 8192] each
     double fps = 60;                // iFrameRate; iTimeDelta = 1 / fps
     double startTime = 0;           // iTime of frame 0
-    std::array<float, 4> mouse{};   // iMouse
+    std::array<float, 4> mouse{};   // iMouse from frame 0, as given (ShadertoyInputState::setMouse)
     // iDate at iTime = 0: year, month (1–12), day, hour, minute, second. The
     // seconds then run on with iTime (past midnight without a new day).
     std::array<int, 6> date{2026, 1, 1, 12, 0, 0};
     double sampleRate = 44100;  // iSampleRate
     std::vector<int> keys;      // key codes (0–255) held from frame 0, after every reset
+    // Key and mouse events at given frames (gpu/shadertoy_input.h), in order
+    // of frame; replayed after every reset.
+    std::vector<ShadertoyInput> inputs;
     // HW_PERFORMANCE, which published shaders test to choose their quality:
     // 1 as ShaderToy on a desktop, 0 as on a phone.
     int hwPerformance = 1;
 };
-// InputError naming the parameter (width, height, fps, startTime, date, key, hwPerformance).
+// InputError naming the parameter (width, height, fps, startTime, date, key, input, hwPerformance).
 void validateShadertoySettings(const ShadertoySettings& s);
 // A program's targets hold at most this many bytes (RGBA32F, two per buffer).
 constexpr long long kMaxShadertoyBytes = 2ll << 30;
@@ -67,7 +71,8 @@ public:
     void reset(int instance = 0);
     int instance() const;
     // Goes on at another size, as a browser's canvas resized on ShaderToy:
-    // the frame count, time, keys, mouse and instance kept, every buffer's
+    // the frame count, time, keys and instance kept, the mouse scaled to the
+    // new pixels, every buffer's
     // content stretched onto the new size (linear), iResolution the new one.
     // InputError naming width or height (the settings' checks and the
     // memory cap), and then nothing changed.
@@ -89,20 +94,28 @@ public:
     void checkPixel(const std::string& pass, int x, int y) const;
 
     // The keyboard texture (256 × 3: down, pressed this frame, toggled) and
-    // the mouse for the frames to come.
+    // the mouse for the frames to come: a button pressed, dragged and
+    // released with ShaderToy's click semantics (gpu/shadertoy_input.h), or
+    // iMouse set as it is. The settings' timeline goes on beside them.
     void setKey(int keyCode, bool down);
+    void apply(const ShadertoyInput& input);  // now, whatever its frame
     void setMouse(const std::array<float, 4>& mouse);
+    std::array<float, 4> mouse() const;
 
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
 
-// Renders `frames` frames (≥ 1) on from the host's state, handing each to
-// `sink` with its number (iFrame) as it comes, so memory stays one frame.
+// Renders `frames` frames (≥ 1) on from the host's state, handing the ones
+// `readBack` asks for to `sink` with their number (iFrame) as they come, so
+// memory stays one frame. A frame not handed on is not read back from the
+// GPU (a read-back waits for the frame and copies it: for a simple program
+// at 640×360 on llvmpipe it costs more than rendering).
+enum class FrameReadBack { Every, Last, None };
 using ShadertoyFrameSink = std::function<void(int frame, const Image& image)>;
 void renderShadertoyFrames(ShadertoyHost& host, int frames, const ShadertoyFrameSink& sink,
-                           const Progress& progress = {});
+                           const Progress& progress = {}, FrameReadBack readBack = FrameReadBack::Every);
 
 // A program's frames as a texture source, for the studies (spectrum, flow,
 // temporal coherence, statistics over instances): source pixel (0, 0) is the

@@ -47,7 +47,7 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
         const JsonReader s = r.at(i);
         s.expectObject({"frame", "zoom", "at", "pan", "filter", "aniso", "set", "value", "mode", "analysis", "view",
                         "tilt", "pick", "pause", "screenshot", "save", "record", "stop_recording", "undo", "redo",
-                        "key", "quit"});
+                        "key", "mousedown", "mousemove", "mouseup", "quit"});
         WorkbenchStep step;
         if (s.has("frame")) {
             const int f = s.integer("frame", 0, 0, 1000000);
@@ -67,6 +67,9 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
             if (auto at = s.find("at")) point(*at); else s.fail("zoom needs \"at\": [x, y], the pixel that stays put");
         }
         if (auto p = s.find("pan")) ++actions, step.action = A::Pan, point(*p);
+        // A program's mouse, in its pixels (y up), with ShaderToy's click semantics.
+        if (auto p = s.find("mousedown")) ++actions, step.action = A::MouseDown, point(*p);
+        if (auto p = s.find("mousemove")) ++actions, step.action = A::MouseMove, point(*p);
         if (auto p = s.find("pick")) ++actions, step.action = A::Pick, point(*p);
         if (auto f = s.find("filter")) {
             ++actions, step.action = A::Filter, step.text = f->choice({"none", "paper", "smooth"});
@@ -98,7 +101,7 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
             }
         // Steps that take no value are written `true`.
         for (auto [key, action] : {std::pair{"undo", A::Undo}, {"redo", A::Redo},
-                                   {"stop_recording", A::StopRecording}, {"quit", A::Quit}})
+                                   {"stop_recording", A::StopRecording}, {"mouseup", A::MouseUp}, {"quit", A::Quit}})
             if (s.has(key)) {
                 if (!s.boolean(key, false)) s.at(key).fail("is written true");
                 ++actions, step.action = action;

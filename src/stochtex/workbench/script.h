@@ -14,6 +14,7 @@
 //    {"screenshot": "a.png"}, {"save": "edited.json"},
 //    {"record": "clip.mp4"}, {"stop_recording": true},
 //    {"key": "V"}, {"key": "ctrl+z"},                 // a key tapped within one frame
+//    {"mousedown": [40, 30]}, {"mousemove": [50, 30]}, {"mouseup": true},  // a program's iMouse, its pixels, y up
 //    {"quit": true}]
 //
 // A step without "frame" runs at the frame of the step before it; frames
@@ -47,11 +48,11 @@ inline const EnumNames<WorkbenchView> kWorkbenchViewNames{{"zoom", WorkbenchView
 struct WorkbenchStep {
     enum class Action {
         Zoom, Pan, Filter, Aniso, Set, Undo, Redo, Mode, Analysis, View, Tilt, Pick, Pause, Screenshot, Save,
-        Record, StopRecording, Key, Quit
+        Record, StopRecording, Key, MouseDown, MouseMove, MouseUp, Quit
     };
     int frame = 0;
     Action action = Action::Quit;
-    double x = 0, y = 0, amount = 1;  // zoom: factor at (x, y); pan, pick: (x, y); aniso, tilt: amount
+    double x = 0, y = 0, amount = 1;  // zoom: factor at (x, y); pan, pick, mousedown, mousemove: (x, y); aniso, tilt: amount
     int key = 0, mods = 0;            // key: the GLFW key and modifier bits, pressed and released in one frame
     std::string text;                 // a name (filter, mode, analysis, view), a JSON pointer or a file
     nlohmann::json value;             // set: the value

@@ -500,9 +500,7 @@ private:
         // A new picture size (Tab, side by side, the window resized): the program runs on at it.
         if (host_ && !hostStale_ && !hostFailed_ && (host_->settings().width != w || host_->settings().height != h)) {
             try {
-                const float sx = float(w) / float(host_->settings().width), sy = float(h) / float(host_->settings().height);
-                host_->resize(w, h);
-                for (int k = 0; k < 4; ++k) mouse_[size_t(k)] *= k % 2 == 0 ? sx : sy;  // iMouse in the new pixels
+                host_->resize(w, h);  // iMouse too, in the new pixels
                 viewChanged();
             } catch (const std::exception& e) {
                 error_ = e.what();
@@ -520,8 +518,8 @@ private:
                 return host_ ? host_->frameTexture() : 0;
             }
         }
+        for (const ShadertoyInput& e : std::exchange(pendingInputs_, {})) host_->apply(e);  // paused too: state only
         if (!paused_ || host_->frame() == 0) {
-            host_->setMouse(mouse_);
             host_->renderFrame();
         }
         return host_->frameTexture();
@@ -794,6 +792,17 @@ private:
                 keyEvents_.push_back({s.key, GLFW_PRESS, s.mods});
                 keyEvents_.push_back({s.key, GLFW_RELEASE, s.mods});
                 break;
+            case A::MouseDown:
+            case A::MouseMove:
+            case A::MouseUp:
+                if (!isShadertoy()) throw InputError("script: a mouse step drives a ShaderToy program's iMouse; this is a pattern");
+                // Applied before the program's next frame (its host may not be built yet).
+                pendingInputs_.push_back({0,
+                                          s.action == A::MouseDown   ? ShadertoyInput::Kind::MouseDown
+                                          : s.action == A::MouseMove ? ShadertoyInput::Kind::MouseMove
+                                                                     : ShadertoyInput::Kind::MouseUp,
+                                          0, float(s.x), float(s.y)});
+                break;
             case A::Quit: quit_ = true; break;
         }
     }
@@ -816,14 +825,15 @@ private:
             }
             if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) setPick(tx, py);
             if (isShadertoy()) {
-                // iMouse: xy where the button is held, zw where it was pressed (negative once released).
+                // iMouse with ShaderToy's click semantics (gpu/shadertoy_input.h), in the program's pixels, y up.
                 const float mx = float(std::min(tx, double(tr.width - 1))), my = float(tr.height - 1 - py);
+                using K = ShadertoyInput::Kind;
                 if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-                    mouse_ = {mx, my, mx, my};
+                    pendingInputs_.push_back({0, K::MouseDown, 0, mx, my});
                 else if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
-                    mouse_[0] = mx, mouse_[1] = my;
+                    pendingInputs_.push_back({0, K::MouseMove, 0, mx, my});
                 else if (ImGui::IsMouseReleased(ImGuiMouseButton_Left))
-                    mouse_[2] = -std::abs(mouse_[2]);
+                    pendingInputs_.push_back({0, K::MouseUp, 0, 0, 0});
             }
         }
         // The key events since the last frame, each applied in order (a
@@ -1105,7 +1115,6 @@ private:
     std::optional<WallClockFrames> recordingClock_;
     long long recordedProgramFrame_ = -1;
     Image heldShot_;  // a pattern recording's last picture, written when the next comes
-    std::array<float, 4> mouse_{};
     int windowWidth_ = 1, windowHeight_ = 1;  // the framebuffer's pixels
     float pixelScale_ = 1;                     // framebuffer pixels per window coordinate (HiDPI: 2)
     std::array<int, 2> lastTextureSize_{0, 0};
@@ -1133,6 +1142,7 @@ private:
     // Output.
     std::vector<std::string> pendingScreenshots_;
     std::unique_ptr<FrameSequenceWriter> recorder_;
+    std::vector<ShadertoyInput> pendingInputs_;  // a program's mouse since its last frame: the window's and "mouse" steps
     std::vector<KeyEvent> keyEvents_;  // since the last frame: the window's callback and "key" steps
     std::array<int, 2> recordingSize_{0, 0};
     std::string recordingPath_;
