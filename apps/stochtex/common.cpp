@@ -347,6 +347,7 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"key", "--keys"},
     {"input", "--input"},
     {"event", "--event"},
+    {"output", "--convert"},
     {"hwPerformance", "--hw-performance"},
 };
 }  // namespace

@@ -16,7 +16,7 @@ namespace stochtex::cli {
 
 void registerShadertoy(CLI::App& app) {
     struct Args {
-        std::string program, output, inspect;
+        std::string program, output, inspect, convert, media;
         ShadertoyFlags flags;
         FrameAnalysisFlags analysis;
         int frames = 1;
@@ -24,8 +24,13 @@ void registerShadertoy(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("shadertoy", "Run a ShaderToy program (Common, Buffer A-D, Image) headless");
-    cmd->add_option("program", args->program, "A folder (image.glsl, common.glsl, buffer_a.glsl, ...; shadertoy.json) "
-                                              "or a manifest .json (docs/SHADERTOY.md)")->required();
+    cmd->add_option("program", args->program, "A folder (image.glsl, common.glsl, buffer_a.glsl, ... or ShaderToy's "
+                                              "tab names; shadertoy.json), a manifest .json, or a shader exported "
+                                              "from ShaderToy (.json; docs/SHADERTOY.md)")->required();
+    cmd->add_option("--convert", args->convert, "Write the program as a folder (shadertoy.json and a .glsl file per "
+                                                "pass) instead of running it: a ShaderToy export made editable");
+    cmd->add_option("--media", args->media, "Where a ShaderToy export's textures are found by file name (default: "
+                                            "the export's folder; ShaderToy's noise textures are built in)");
     cmd->add_option("-o,--output", args->output,
                     std::string("An image (the last frame, or with --sheet all frames; ") + kImageOutputFormats +
                         "), or the frames as " + kSequenceOutputHelp + "; with --analyse the report's folder");
@@ -38,10 +43,21 @@ void registerShadertoy(CLI::App& app) {
     addFrameAnalysisFlags(*cmd, args->analysis);
     cmd->callback([args] {
         const Args& a = *args;
-        if (a.output.empty() && a.inspect.empty()) throw InputError("-o/--output or --inspect is required");
+        if (!a.convert.empty()) {
+            if (!a.output.empty() || !a.inspect.empty() || !a.analysis.list.empty())
+                throw InputError("--convert: writes the program and runs nothing; run the folder it writes with -o, "
+                                 "--inspect or --analyse");
+            const ShadertoySpec spec = loadShadertoy(a.program, a.media);
+            const std::string manifest = convertShadertoy(spec, a.convert);
+            std::printf("wrote %s and %zu pass file%s (%s)\n", manifest.c_str(),
+                        spec.passes.size() + (spec.common.empty() ? 0 : 1), spec.passes.size() > 0 ? "s" : "",
+                        spec.name.c_str());
+            return;
+        }
+        if (a.output.empty() && a.inspect.empty()) throw InputError("-o/--output, --inspect or --convert is required");
         if (a.analysis.list.empty() && a.flags.firstFrame != 0) throw InputError("--first-frame: has no effect without --analyse");
         const Inspect inspect = parseInspect(a.inspect);
-        const ShadertoySpec spec = loadShadertoy(a.program);
+        const ShadertoySpec spec = loadShadertoy(a.program, a.media);
         const ShadertoySettings settings = shadertoySettings(a.flags);
         FrameOutputs outputs(a.analysis.list.empty() ? a.output : "", a.sheet, a.frames, settings);
         const auto start = std::chrono::steady_clock::now();

@@ -368,11 +368,20 @@ case_shadertoy() {
   expect_bad "shadertoy bad event" "$out/ste.png" "--event: event \"2:click:1,1\": expected FRAME:EVENT" -- "$bin" shadertoy "$work/clicks" --event 2:click:1,1 -o "$out/ste.png"
   printf '[{"frame": 4, "keydown": 32}, {"frame": 2, "keyup": 32}]' >"$work/back.json"
   expect_bad "shadertoy timeline going back" "$out/ste.png" "back.json: /1: frames never go back" -- "$bin" shadertoy "$work/clicks" --input "$work/back.json" -o "$out/ste.png"
+  # ShaderToy's export format runs as published, and --convert writes it as a folder that runs the same.
+  printf '{"Shader": {"info": {"name": "exported"}, "renderpass": [{"type": "buffer", "name": "Buffer A", "code": "void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(p), 0) + vec4(1.0, 0.5, 0.0, 0.0); }", "inputs": [{"id": "4dXGR8", "ctype": "buffer", "channel": 0}], "outputs": [{"id": "4dXGR8"}]}, {"type": "image", "name": "Image", "code": "void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(p), 0); }", "inputs": [{"id": 257, "src": "/media/previz/buffer00.png", "ctype": "buffer", "channel": 0}], "outputs": [{"id": 37}]}]}}' >"$work/exported.json"
+  "$bin" shadertoy "$work/exported.json" --size 8,8 --frames 4 --inspect image:2,2 >"$work/exp.txt" 2>&1 || fail "shadertoy export: $(cat "$work/exp.txt")"
+  grep -q "^image (2, 2) at iFrame 3: 4 2 0 0$" "$work/exp.txt" || fail "shadertoy export: $(cat "$work/exp.txt")"
+  expect_ok "shadertoy --convert" "$out/conv/shadertoy.json" -- "$bin" shadertoy "$work/exported.json" --convert "$out/conv"
+  "$bin" shadertoy "$out/conv" --size 8,8 --frames 4 --inspect image:2,2 >"$work/conv.txt" 2>&1 || fail "shadertoy converted: $(cat "$work/conv.txt")"
+  grep -q "^image (2, 2) at iFrame 3: 4 2 0 0$" "$work/conv.txt" || fail "shadertoy converted: $(cat "$work/conv.txt")"
+  expect_bad "shadertoy --convert onto its own files" "" "--convert: output $out/conv/" -- "$bin" shadertoy "$work/exported.json" --convert "$out/conv"
+  expect_bad "shadertoy --convert with -o" "$out/conv2.png" "--convert: writes the program and runs nothing" -- "$bin" shadertoy "$work/exported.json" --convert "$out/conv2" -o "$out/conv2.png"
   printf 'void mainImage(out vec4 c, in vec2 p) {\n  c = vec4(nope);\n}\n' >"$work/st/broken.glsl"
   printf '{"passes": {"image": {"code": "broken.glsl"}}}' >"$work/broken.json"
   cp "$work/st/broken.glsl" "$work/broken.glsl"
   expect_bad "shadertoy compile error" "$out/stb.png" "broken.glsl:2" -- "$bin" shadertoy "$work/broken.json" -o "$out/stb.png"
-  expect_bad "shadertoy no output" "" "-o/--output or --inspect is required" -- "$bin" shadertoy "$work/st"
+  expect_bad "shadertoy no output" "" "-o/--output, --inspect or --convert is required" -- "$bin" shadertoy "$work/st"
   expect_bad "shadertoy inspect pass" "" "--inspect: pass \"buffer_c\" names no pass of counter" -- "$bin" shadertoy "$work/st" --inspect buffer_c:1,1
   expect_ok "spectrum of a shadertoy frame" "$out/sts/index.html" -- "$bin" spectrum -o "$out/sts" --size 64 shadertoy "$src/data/shadertoy/swirl" --size 96,80 --first-frame 120
   [ -s "$out/sts/spectrum.csv" ] || fail "spectrum of a shadertoy frame: spectrum.csv not written"

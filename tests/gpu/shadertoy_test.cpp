@@ -414,6 +414,99 @@ TEST_F(Shadertoy, TimelineEventsFollowShadertoysClickSemantics) {
                   .find("events must come in order of frame"), std::string::npos);
 }
 
+// ShaderToy's own export: Common, two buffers and the image, inputs by
+// output id (the export's own, and ShaderToy's old numeric one), a built-in
+// noise texture and the keyboard; it runs as the program it describes, and
+// --convert's folder runs the same.
+TEST_F(Shadertoy, ExportedShaderRunsAndConvertsToAManifest) {
+    const std::string exported = write("export/shader.json", R"({"Shader": {"ver": "0.1", "info": {"id": "abcd12", "name": "Two buffers"},
+      "renderpass": [
+        {"type": "common", "name": "Common", "code": "float twice(float x) { return 2.0 * x; }\r\n", "inputs": [], "outputs": []},
+        {"type": "image", "name": "Image", "code": "void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(p), 0); }",
+         "inputs": [{"id": 258, "src": "/media/previz/buffer01.png", "ctype": "buffer", "channel": 0,
+                     "sampler": {"filter": "linear", "wrap": "clamp", "vflip": "true", "srgb": "false", "internal": "byte"}},
+                    {"id": 33, "src": "/presets/tex00.jpg", "ctype": "keyboard", "channel": "2"}],
+         "outputs": [{"id": 37, "channel": 0}]},
+        {"type": "buffer", "name": "Buffer A",
+         "code": "void mainImage(out vec4 c, in vec2 p) { c = texelFetch(iChannel0, ivec2(p), 0) + vec4(1.0, texelFetch(iChannel1, ivec2(3, 5), 0).g, 0.0, 0.0); }",
+         "inputs": [{"id": "4dXGR8", "filepath": "/media/previz/buffer00.png", "type": "buffer", "channel": 0,
+                     "sampler": {"filter": "linear", "wrap": "clamp", "vflip": "true"}},
+                    {"id": "XdX3Rn", "filepath": "/media/a/f735bee5b64ef98879dc618b016ecf7939a5756040c2cde21ccb15e69a6e1cfb.png",
+                     "type": "texture", "channel": 1, "sampler": {"filter": "nearest", "wrap": "repeat", "vflip": "false"}}],
+         "outputs": [{"id": "4dXGR8", "channel": 0}]},
+        {"type": "buffer", "name": "Buffer B",
+         "code": "void mainImage(out vec4 c, in vec2 p) { c = vec4(twice(texelFetch(iChannel0, ivec2(p), 0).x), 0.0, 0.0, 1.0); }",
+         "inputs": [{"id": "257", "src": "/media/previz/buffer00.png", "ctype": "buffer", "channel": 0}],
+         "outputs": [{"id": "XsXGR8", "channel": 0}]}]}})");
+    const ShadertoySpec spec = loadShadertoy(exported);
+    EXPECT_EQ(spec.name, "Two buffers");
+    ASSERT_EQ(spec.passes.size(), 3u);
+    EXPECT_EQ(spec.passes[0].name, "buffer_a");
+    const ShadertoyChannel& noise = spec.passes[0].channels[1];
+    EXPECT_EQ(noise.kind, ShadertoyChannel::Kind::Noise);
+    EXPECT_TRUE(noise.rgbaNoise);
+    EXPECT_EQ(noise.noiseSize, 256);  // RGBA Noise Medium
+    EXPECT_EQ(noise.filter, ChannelFilter::Nearest);
+    EXPECT_EQ(spec.passes[1].channels[0].buffer, 0);  // "257": Buffer A
+    EXPECT_EQ(spec.passes[2].channels[0].buffer, 1);  // 258, a number: Buffer B
+    EXPECT_EQ(spec.passes[2].channels[2].kind, ShadertoyChannel::Kind::Keyboard);
+    const auto run = [&](const ShadertoySpec& program) {
+        ShadertoyHost host(program, *context_, small());
+        for (int k = 0; k < 3; ++k) host.renderFrame();
+        return std::pair{host.pixel("buffer_a", 1, 1), host.pixel("image", 1, 1)};
+    };
+    const auto [a, image] = run(spec);
+    EXPECT_EQ(a[0], 3.0f);
+    EXPECT_GT(a[1], 0.0f);  // three reads of the noise's green at (3, 5)
+    expectPixel(image, {6, 0, 0, 1}, 0, "image: Buffer B, twice Buffer A's count");
+
+    const std::string manifest = convertShadertoy(spec, (dir_ / "converted").string());
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "converted/buffer_b.glsl"));
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "converted/common.glsl"));
+    const auto [a2, image2] = run(loadShadertoy((dir_ / "converted").string()));
+    EXPECT_EQ(a2, a);
+    EXPECT_EQ(image2, image);
+    // Converting again onto the same files is refused, and nothing is written.
+    EXPECT_NE(error([&] { convertShadertoy(spec, (dir_ / "converted").string()); }).find("exists"), std::string::npos);
+
+    // A compile error names the export and the pass.
+    write("export/bad.json", R"({"renderpass": [{"type": "image", "name": "Image", "code": "void mainImage(out vec4 c, in vec2 p) {\n c = nope;\n}"}]})");
+    std::string e = error([&] { ShadertoyHost h(loadShadertoy((dir_ / "export/bad.json").string()), *context_, small()); });
+    EXPECT_NE(e.find("bad.json (Image):2"), std::string::npos) << e;
+    const auto exportError = [&](const std::string& passes) {
+        write("export/e.json", R"({"Shader": {"renderpass": [)" + passes + "]}}");
+        return error([&] { (void)loadShadertoy((dir_ / "export/e.json").string()); });
+    };
+    const std::string imagePass = R"({"type": "image", "name": "Image", "code": "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }")";
+    e = exportError(imagePass + R"(, "inputs": [{"id": 5, "src": "/media/a/xyz.mp4", "ctype": "video", "channel": 0}]})");
+    EXPECT_NE(e.find("/Shader/renderpass/0/inputs/0/ctype: a video input is a ShaderToy input this host does not support"),
+              std::string::npos) << e;
+    e = exportError(imagePass + "}, " + R"({"type": "sound", "name": "Sound", "code": "vec2 mainSound(int s, float t) { return vec2(0.0); }"})");
+    EXPECT_NE(e.find("/Shader/renderpass/1/type: a sound pass (Sound) is a ShaderToy pass this host does not run"),
+              std::string::npos) << e;
+    e = exportError(imagePass + R"(, "inputs": [{"id": 8, "src": "/media/a/52d2a8f514c4fd2d9866587f4d7b2a5bfa1a11a0e772077d7682deb8b3b517e5.jpg", "ctype": "texture", "channel": 1}]})");
+    EXPECT_NE(e.find("put its file (52d2a8f514c4fd2d9866587f4d7b2a5bfa1a11a0e772077d7682deb8b3b517e5.jpg) in"),
+              std::string::npos) << e;
+    e = exportError(imagePass + R"(, "inputs": [{"id": "XsXGR8", "ctype": "buffer", "channel": 0}]})");
+    EXPECT_NE(e.find("reads buffer_b, which the export lacks"), std::string::npos) << e;
+    e = exportError(R"({"type": "buffer", "name": "Buffer A", "code": ""})");
+    EXPECT_NE(e.find("/Shader/renderpass: needs an Image pass"), std::string::npos) << e;
+}
+
+// A folder saved with ShaderToy's tab names is a program too.
+TEST_F(Shadertoy, FolderWithShadertoysTabNamesLoads) {
+    write("tabs/Common.glsl", "#define ONE 1.0\n");
+    write("tabs/Buffer A.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(ONE); }\n");
+    write("tabs/Image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.5 * ONE); }\n");
+    const ShadertoySpec spec = loadShadertoy((dir_ / "tabs").string());
+    ASSERT_EQ(spec.passes.size(), 2u);
+    EXPECT_EQ(spec.passes[0].name, "buffer_a");
+    EXPECT_EQ(spec.common.filename(), "Common.glsl");
+    ShadertoyHost host(spec, *context_, small());
+    host.renderFrame();
+    expectPixel(host.pixel("image", 0, 0), {0.5f, 0.5f, 0.5f, 0.5f}, 0, "image");
+}
+
 // After a reset, every level of a mipmapped buffer reads 0 until the
 // buffer runs again (no level of the previous run survives); keys held by
 // the settings come back with every reset, so a texture source sees them.

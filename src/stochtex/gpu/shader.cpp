@@ -276,17 +276,21 @@ std::pair<std::string, std::string> readShaderFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!in.good() && !in.eof()) throw InputError(path + ": cannot read shader file");
-    if (text.find('\0') != std::string::npos) throw InputError(path + ": not a text file");
+    return {path, shaderText(text, path)};
+}
+
+std::string shaderText(const std::string& text, const std::string& name) {
+    if (text.find('\0') != std::string::npos) throw InputError(name + ": not a text file");
     // As editors save them: a UTF-8 byte-order mark (Windows editors, exported
     // shaders) is no GLSL token, and CR line ends would split a line
     // continuation; the text GL compiles has neither.
-    if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+    const size_t start = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
     std::string lf;
     lf.reserve(text.size());
-    for (size_t i = 0; i < text.size(); ++i)
+    for (size_t i = start; i < text.size(); ++i)
         if (text[i] != '\r') lf += text[i];
         else if (i + 1 >= text.size() || text[i + 1] != '\n') lf += '\n';  // a lone CR (old Mac) ends a line too
-    return {path, lf};
+    return lf;
 }
 
 std::string assembleShader(GlslTarget target, const std::vector<std::string>& files,

@@ -41,6 +41,9 @@ std::string generatedShaderText(const std::string& text);
 // it cannot be read or is not text. A UTF-8 byte-order mark is dropped and
 // CR LF (or a lone CR) line ends become LF, as GL compilers need.
 std::pair<std::string, std::string> readShaderFile(const std::string& path);
+// The same for a source already in memory (a pass embedded in a ShaderToy
+// export); `name` names it in the error.
+std::string shaderText(const std::string& text, const std::string& name);
 
 // The version header, then the files in order (what the driver compiles);
 // `overrides` as for compileProgram.

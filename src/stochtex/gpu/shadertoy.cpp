@@ -455,8 +455,12 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     // The user's files, read once.
     std::vector<std::pair<std::string, std::string>> userFiles;
-    if (!spec.common.empty()) userFiles.push_back(readShaderFile(spec.common.string()));
-    for (const ShadertoyPass& pass : spec.passes) userFiles.push_back(readShaderFile(pass.code.string()));
+    const auto userFile = [](const std::filesystem::path& path, const std::string& embedded) {
+        return embedded.empty() ? readShaderFile(path.string())
+                                : std::pair{path.string(), shaderText(embedded, path.string())};
+    };
+    if (!spec.common.empty()) userFiles.push_back(userFile(spec.common, spec.commonSource));
+    for (const ShadertoyPass& pass : spec.passes) userFiles.push_back(userFile(pass.code, pass.source));
     std::vector<std::string> texts;
     for (const auto& f : userFiles) texts.push_back(f.second);
     std::vector<std::pair<std::string, std::string>> sources{

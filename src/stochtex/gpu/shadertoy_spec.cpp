@@ -193,26 +193,35 @@ ShadertoySpec parseManifest(const JsonReader& r, const fs::path& baseDir) {
 
 }  // namespace
 
-ShadertoySpec loadShadertoy(const std::string& path) {
+ShadertoySpec loadShadertoy(const std::string& path, const std::string& mediaDir) {
     std::error_code ec;
     const fs::path p(path);
     if (fs::is_directory(p, ec)) {
-        if (fs::is_regular_file(p / "shadertoy.json", ec)) return loadShadertoy((p / "shadertoy.json").string());
+        if (fs::is_regular_file(p / "shadertoy.json", ec)) return loadShadertoy((p / "shadertoy.json").string(), mediaDir);
         ShadertoySpec spec;
         spec.name = p.filename().empty() ? p.parent_path().filename().string() : p.filename().string();
-        if (fs::is_regular_file(p / "common.glsl", ec)) spec.common = p / "common.glsl";
-        for (const char* name : shadertoyPassNames()) {
-            const fs::path code = p / (std::string(name) + ".glsl");
-            if (!fs::is_regular_file(code, ec)) continue;
-            spec.passes.push_back({name, code, {}});
+        // Our names, or ShaderToy's tab names (as a program copied tab by tab is saved).
+        const auto file = [&](const std::string& ours, const std::string& tab) {
+            for (const std::string& name : {ours, tab})
+                if (fs::is_regular_file(p / (name + ".glsl"), ec)) return p / (name + ".glsl");
+            return fs::path();
+        };
+        spec.common = file("common", "Common");
+        static const char* kTabs[] = {"Buffer A", "Buffer B", "Buffer C", "Buffer D", "Image"};
+        for (size_t k = 0; k < 5; ++k) {
+            const fs::path code = file(shadertoyPassNames()[k], kTabs[k]);
+            if (code.empty()) continue;
+            spec.passes.push_back({shadertoyPassNames()[k], code, "", {}});
         }
         if (spec.passes.empty() || spec.passes.back().name != "image")
             throw InputError(path + ": a ShaderToy folder needs image.glsl (and optionally common.glsl, "
-                                    "buffer_a.glsl … buffer_d.glsl, shadertoy.json)");
+                                    "buffer_a.glsl … buffer_d.glsl, shadertoy.json; or ShaderToy's tab names, "
+                                    "Image.glsl, Common.glsl, \"Buffer A.glsl\" …)");
         return spec;
     }
     if (!fs::is_regular_file(p, ec)) throw InputError(path + ": no such ShaderToy folder or manifest");
     const nlohmann::json j = readJsonFile(path);
+    if (isShadertoyExport(j)) return parseShadertoyExport(JsonReader(j, path), p, mediaDir);
     return parseManifest(JsonReader(j, path), p.parent_path());
 }
 

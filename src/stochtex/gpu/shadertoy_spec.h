@@ -44,15 +44,20 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/pattern_spec.h"
 
 namespace stochtex {
+
+class JsonReader;
 
 enum class ChannelFilter { Nearest, Linear, Mipmap };
 inline const EnumNames<ChannelFilter> kChannelFilterNames{
@@ -77,7 +82,8 @@ struct ShadertoyChannel {
 
 struct ShadertoyPass {
     std::string name;  // buffer_a … buffer_d, image
-    std::filesystem::path code;
+    std::filesystem::path code;  // its file; for a pass embedded in a ShaderToy export, its name in messages
+    std::string source;          // the code of an embedded pass (empty: read `code`)
     std::array<ShadertoyChannel, 4> channels{};
 };
 
@@ -95,6 +101,7 @@ inline const EnumNames<ShadertoyUniform::Type> kShadertoyUniformTypeNames{
 struct ShadertoySpec {
     std::string name;
     std::filesystem::path common;       // empty: none
+    std::string commonSource;           // Common's code when embedded in an export (empty: read `common`)
     std::vector<ShadertoyPass> passes;  // the buffers present, in order A–D, then the image pass (last)
     std::vector<ShadertoyUniform> uniforms;
     std::string instanceUniform;  // empty: none
@@ -112,6 +119,37 @@ const std::array<const char*, 5>& shadertoyPassNames();
 // pass, channel type, filter, wrap or uniform type, a channel reading a
 // buffer the program lacks, a pass cycle ("current" reads), a reserved or
 // invalid uniform name.
-ShadertoySpec loadShadertoy(const std::string& path);
+//
+// A .json file that is ShaderToy's own export (isShadertoyExport) is read
+// as one: parseShadertoyExport. A folder may name its files as ShaderToy's
+// tabs do: Image.glsl, Common.glsl, "Buffer A.glsl" … "Buffer D.glsl".
+ShadertoySpec loadShadertoy(const std::string& path, const std::string& mediaDir = "");
+
+// ShaderToy's export format: {"Shader": {"info": {"name": …}, "renderpass":
+// [{"type": "image" | "buffer" | "common", "name": "Buffer A", "code": …,
+// "inputs": [{"id", "src" or "filepath", "ctype" or "type", "channel",
+// "sampler": {"filter", "wrap", "vflip", "srgb"}}], "outputs": [{"id"}]}]}},
+// the inner object alone, or an array of one. Buffer inputs find their
+// buffer by the output id (or ShaderToy's own ids, or the preview's file
+// name); ShaderToy's four noise textures (Gray and RGBA Noise, Small and
+// Medium) become the host's noise channels of the same kind and size; any
+// other texture is read from `mediaDir` (default: the export's folder) by
+// its file name. Pass code stays embedded (ShadertoyPass::source), named
+// "<export> (Buffer A)" in compiler messages. InputError with the JSON
+// pointer: sound and cubemap passes, cubemap, volume, video, music, webcam
+// and mic inputs (named as unsupported), a missing texture file, an sRGB
+// sampler.
+bool isShadertoyExport(const nlohmann::json& j);
+ShadertoySpec parseShadertoyExport(const JsonReader& r, const std::filesystem::path& json,
+                                   const std::filesystem::path& mediaDir);
+// The spec as our manifest (paths relative to `dir`); `codeFiles` gives the
+// file, relative to `dir`, written for an embedded pass ("common" for Common).
+nlohmann::json shadertoyManifest(const ShadertoySpec& spec, const std::filesystem::path& dir,
+                                 const std::map<std::string, std::string>& codeFiles = {});
+// Writes the program as a folder: shadertoy.json and a .glsl file per
+// embedded pass (buffer_a.glsl, …, image.glsl, common.glsl); the manifest's
+// path. InputError naming `output` when the folder is a file or holds any of
+// those files already (nothing is written then).
+std::string convertShadertoy(const ShadertoySpec& spec, const std::string& folder);
 
 }  // namespace stochtex

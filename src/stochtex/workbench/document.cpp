@@ -76,9 +76,10 @@ WorkbenchDocument WorkbenchDocument::shadertoy(const std::string& path) {
     d.shadertoy_ = loadShadertoy(path);
     std::vector<fs::path> files;
     if (!fs::is_directory(path)) files.push_back(path);  // the manifest
-    if (!d.shadertoy_.common.empty()) files.push_back(d.shadertoy_.common);
+    // A pass embedded in a ShaderToy export lives in the export, watched above.
+    if (!d.shadertoy_.common.empty() && d.shadertoy_.commonSource.empty()) files.push_back(d.shadertoy_.common);
     for (const ShadertoyPass& pass : d.shadertoy_.passes) {
-        files.push_back(pass.code);
+        if (pass.source.empty()) files.push_back(pass.code);
         for (const ShadertoyChannel& c : pass.channels)
             if (c.kind == ShadertoyChannel::Kind::Image) files.push_back(c.image);
     }
