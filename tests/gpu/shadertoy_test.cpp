@@ -493,6 +493,46 @@ TEST_F(Shadertoy, ExportedShaderRunsAndConvertsToAManifest) {
     EXPECT_NE(e.find("/Shader/renderpass: needs an Image pass"), std::string::npos) << e;
 }
 
+// A volume channel is a sampler3D of the generated noise: texels as
+// shadertoyNoiseVolume gives them, trilinear between them, repeating at the
+// edge; iChannelResolution holds its depth.
+TEST_F(Shadertoy, VolumeChannelSamplesTheNoiseVolume) {
+    write("vol/image.glsl", R"(void mainImage(out vec4 c, in vec2 p) {
+        int x = int(p.x);
+        if (x == 0) c = texelFetch(iChannel0, ivec3(1, 2, 3), 0);
+        else if (x == 1) c = texture(iChannel0, (vec3(1.0, 2.0, 3.0) + vec3(1.0, 0.5, 0.5)) / 32.0);
+        else if (x == 2) c = texture(iChannel0, (vec3(31.0, 2.0, 3.0) + vec3(1.0, 0.5, 0.5)) / 32.0);
+        else if (x == 3) c = vec4(iChannelResolution[0], 0.0);
+        else c = texelFetch(iChannel1, ivec3(5, 6, 7), 0);
+    })");
+    write("vol/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [
+        {"type": "volume", "kind": "rgba", "filter": "linear"}, {"type": "volume", "kind": "gray", "seed": 4}]}}})");
+    ShadertoyHost host(loadShadertoy((dir_ / "vol").string()), *context_, small(8, 2));
+    host.renderFrame();
+    const std::vector<float> v = shadertoyNoiseVolume(32, true, 0);
+    const auto texel = [&](int x, int y, int z) {
+        std::array<float, 4> t{};
+        for (int c = 0; c < 4; ++c) t[size_t(c)] = v[((size_t(z) * 32 + y) * 32 + x) * 4 + size_t(c)];
+        return t;
+    };
+    const auto mid = [](std::array<float, 4> a, std::array<float, 4> b) {
+        for (int c = 0; c < 4; ++c) a[size_t(c)] = 0.5f * (a[size_t(c)] + b[size_t(c)]);
+        return a;
+    };
+    expectPixel(host.pixel("image", 0, 0), texel(1, 2, 3), 0, "texel (1, 2, 3)");
+    expectPixel(host.pixel("image", 1, 0), mid(texel(1, 2, 3), texel(2, 2, 3)), 2e-3f, "between texels");
+    expectPixel(host.pixel("image", 2, 0), mid(texel(31, 2, 3), texel(0, 2, 3)), 2e-3f, "across the repeat");
+    expectPixel(host.pixel("image", 3, 0), {32, 32, 32, 0}, 0, "iChannelResolution");
+    const float grey = shadertoyNoiseVolume(32, false, 4)[((7 * 32 + 6) * 32 + 5) * 4];
+    expectPixel(host.pixel("image", 4, 0), {grey, grey, grey, grey}, 0, "a gray volume");
+    // The texels are uniform and the channels independent (mean ½, no correlation between red and green).
+    double mean = 0, cross = 0;
+    for (size_t k = 0; k < v.size(); k += 4) mean += v[k], cross += (v[k] - 0.5) * (v[k + 1] - 0.5);
+    const double n = double(v.size() / 4);
+    EXPECT_NEAR(mean / n, 0.5, 0.005);                // σ of the mean: 0.29 / √32768 = 0.0016
+    EXPECT_NEAR(cross / n / (1.0 / 12.0), 0.0, 0.03);  // σ of the correlation: 1 / √32768 = 0.0055
+}
+
 // A folder saved with ShaderToy's tab names is a program too.
 TEST_F(Shadertoy, FolderWithShadertoysTabNamesLoads) {
     write("tabs/Common.glsl", "#define ONE 1.0\n");
@@ -636,7 +676,7 @@ TEST_F(Shadertoy, BadProgramsAreRefusedNamingTheFileAndLine) {
     // ShaderToy features the host lacks are named: a channel read as a cube or volume, a sound pass.
     write("cube/image.glsl", "void mainImage(out vec4 c, in vec2 p) {\n    c = texture(iChannel0, vec3(p, 1.0));\n}\n");
     e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "cube").string()), *context_, small()); });
-    EXPECT_NE(e.find("cubemap or volume channel"), std::string::npos) << e;
+    EXPECT_NE(e.find("a volume or cubemap channel on ShaderToy: give a volume as"), std::string::npos) << e;
     write("sound/image.glsl", "vec2 mainSound(int s, float t) { return vec2(sin(6.2831 * 440.0 * t)); }\n");
     e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "sound").string()), *context_, small()); });
     EXPECT_NE(e.find("a sound pass (mainSound) is a ShaderToy feature this host does not run"), std::string::npos) << e;

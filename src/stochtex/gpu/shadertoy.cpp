@@ -112,12 +112,21 @@ std::string prelude(const ShadertoySpec& spec, const ShadertoySettings& settings
         "#define HW_PERFORMANCE " + std::to_string(settings.hwPerformance) + "\n" + aliases +
         "uniform vec3 iResolution;\nuniform float iTime;\nuniform float iTimeDelta;\nuniform int iFrame;\n"
         "uniform float iFrameRate;\nuniform vec4 iMouse;\nuniform vec4 iDate;\nuniform float iSampleRate;\n"
-        "uniform vec3 iChannelResolution[4];\nuniform float iChannelTime[4];\n"
-        "uniform sampler2D iChannel0;\nuniform sampler2D iChannel1;\nuniform sampler2D iChannel2;\nuniform sampler2D iChannel3;\n";
+        "uniform vec3 iChannelResolution[4];\nuniform float iChannelTime[4];\n";
     for (const ShadertoyUniform& u : spec.uniforms)
         s += "uniform " + enumName(kShadertoyUniformTypeNames, u.type) + " " + u.name + ";\n";
     return s + "out vec4 stochtexFragColour;\n";
 }
+// A pass's iChannel0–3, each of the sampler type its channel needs (a
+// volume's is a sampler3D), as ShaderToy declares them.
+std::string channelDeclarations(const ShadertoyPass& pass) {
+    std::string s;
+    for (size_t i = 0; i < 4; ++i)
+        s += std::string("uniform ") + (pass.channels[i].kind == ShadertoyChannel::Kind::Volume ? "sampler3D" : "sampler2D") +
+             " iChannel" + std::to_string(i) + ";\n";
+    return s;
+}
+
 const char* kMain =
     "void main() {\n    vec4 colour = vec4(0.0);\n    mainImage(colour, gl_FragCoord.xy);\n    stochtexFragColour = colour;\n}\n";
 
@@ -189,6 +198,18 @@ Image noiseImage(int size, bool rgba, uint32_t seed) {
     return img;
 }
 
+// A 3D texture of RGBA floats (x fastest, then y, then z), its mip chain when asked.
+gl::Texture volumeTexture(const std::vector<float>& rgba, int size, bool mipmaps) {
+    gl::Texture t = gl::newTexture();
+    glBindTexture(GL_TEXTURE_3D, t.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, size, size, size, 0, GL_RGBA, GL_FLOAT, rgba.data());
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, mipmaps ? 1000 : 0);
+    if (mipmaps) glGenerateMipmap(GL_TEXTURE_3D);
+    glBindTexture(GL_TEXTURE_3D, 0);
+    return t;
+}
+
 // A compiler's log, after ShaderError's first line, as one short message:
 // its first error with its location ("file:line", mapped to the user's
 // files by compileProgram), the source line it names, and how many more
@@ -236,8 +257,8 @@ std::string firstCompilerError(const std::string& what,
     std::string out = location + ": " + first;
     // A channel sampled with a 3D coordinate is a cubemap or volume channel on ShaderToy.
     if (std::regex_search(first, std::regex(R"(texture\w*\(sampler2D, [iu]?vec3)")))
-        out += " (a channel read with a 3D coordinate is a cubemap or volume channel on ShaderToy, which this host "
-               "does not support: its channels are 2D; docs/SHADERTOY.md)";
+        out += " (a channel read with a 3D coordinate is a volume or cubemap channel on ShaderToy: give a volume as "
+               "{\"type\": \"volume\"} in the manifest; cubemaps are not supported; docs/SHADERTOY.md)";
     if (more > 0) out += " (and " + std::to_string(more) + " more error" + (more > 1 ? "s" : "") + ")";
     // The line itself, from the user's file, so the message is read without opening it.
     for (const auto& [path, text] : userFiles) {
@@ -278,6 +299,29 @@ std::string unsupportedFeature(const std::string& path, const std::string& text,
 
 }  // namespace
 
+std::vector<float> shadertoyNoiseVolume(int size, bool rgba, uint32_t seed) {
+    if (size < 1 || size > 256) throw std::invalid_argument("shadertoyNoiseVolume: size must be in [1, 256]");
+    const uint32_t key = deriveSeed(seed, 0x766f6cu);
+    std::vector<float> out(size_t(size) * size * size * 4);
+    for (int z = 0; z < size; ++z) {
+        const uint32_t slice = deriveSeed(key, uint32_t(z));
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const UInt3 h = pcg3d({uint32_t(x), uint32_t(y), slice});
+                float* v = &out[((size_t(z) * size + y) * size + x) * 4];
+                if (!rgba) {
+                    v[0] = v[1] = v[2] = v[3] = unitFloat(h.x);
+                    continue;
+                }
+                v[0] = unitFloat(h.x);
+                v[1] = unitFloat(h.y);
+                v[2] = unitFloat(h.z);
+                v[3] = unitFloat(pcg3d({h.x, h.y, h.z}).x);
+            }
+    }
+    return out;
+}
+
 struct ShadertoyHost::Impl {
     ShadertoySpec spec;
     ShadertoySettings settings;
@@ -292,7 +336,7 @@ struct ShadertoyHost::Impl {
         bool mipmaps = false;  // some channel reads it with mipmaps
         std::array<Sampler, 4> samplers;
         std::array<gl::Texture, 4> inputs;  // image, keyboard and noise channels' textures
-        std::array<std::array<int, 2>, 4> inputSize{};
+        std::array<std::array<int, 3>, 4> inputSize{};
     };
     std::vector<Pass> passes;
     std::unique_ptr<GpuView> pattern;  // the stochtex_sample include's textures and parameters
@@ -338,24 +382,31 @@ struct ShadertoyHost::Impl {
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, kKeys, 3, 0, GL_RED, GL_FLOAT, input.keyboard().data());
     }
 
-    // The texture channel i of pass p reads now, and its size.
-    GLuint channelTexture(size_t p, size_t i, std::array<int, 2>& size) const {
+    // The texture channel i of pass p reads now, its target and its size
+    // (iChannelResolution: width, height, depth; 0 for none).
+    struct ChannelTexture {
+        GLuint id = 0;
+        GLenum target = GL_TEXTURE_2D;
+        std::array<int, 3> size{};
+    };
+    ChannelTexture channelTexture(size_t p, size_t i) const {
         const ShadertoyChannel& ch = spec.passes[p].channels[i];
         const Pass& pass = passes[p];
         switch (ch.kind) {
-            case ShadertoyChannel::Kind::None: size = {0, 0}; return 0;
+            case ShadertoyChannel::Kind::None: return {};
             case ShadertoyChannel::Kind::Buffer: {
                 const Pass& b = passes[size_t(spec.bufferPass(ch.buffer))];
-                size = {settings.width, settings.height};
                 // Previous: the other target once the buffer has run this frame.
                 const bool other = ch.frame == ShadertoyChannel::Frame::Previous && b.renderedThisFrame;
-                return b.targets[size_t(other ? 1 - b.latest : b.latest)].texture();
+                return {b.targets[size_t(other ? 1 - b.latest : b.latest)].texture(), GL_TEXTURE_2D,
+                        {settings.width, settings.height, 1}};
             }
-            case ShadertoyChannel::Kind::Keyboard: size = {kKeys, 3}; return keyboard.id();
+            case ShadertoyChannel::Kind::Keyboard: return {keyboard.id(), GL_TEXTURE_2D, {kKeys, 3, 1}};
             case ShadertoyChannel::Kind::Image:
-            case ShadertoyChannel::Kind::Noise: size = pass.inputSize[i]; return pass.inputs[i].id();
+            case ShadertoyChannel::Kind::Noise: return {pass.inputs[i].id(), GL_TEXTURE_2D, pass.inputSize[i]};
+            case ShadertoyChannel::Kind::Volume: return {pass.inputs[i].id(), GL_TEXTURE_3D, pass.inputSize[i]};
         }
-        return 0;
+        return {};
     }
 
     double time() const { return settings.startTime + frame / settings.fps; }
@@ -395,17 +446,14 @@ struct ShadertoyHost::Impl {
         }
         float resolutions[12] = {}, times[4] = {t, t, t, t};
         for (size_t i = 0; i < 4; ++i) {
-            std::array<int, 2> size{};
-            const GLuint tex = channelTexture(p, i, size);
+            const ChannelTexture tex = channelTexture(p, i);
             const GLuint unit = GLuint(channelUnit) + GLuint(i);
             glActiveTexture(GL_TEXTURE0 + unit);
-            glBindTexture(GL_TEXTURE_2D, tex);
+            glBindTexture(tex.target, tex.id);
             glBindSampler(unit, pass.samplers[i].id());
             const std::string name = "iChannel" + std::to_string(i);
             glUniform1i(loc(name.c_str()), GLint(unit));
-            resolutions[3 * i] = float(size[0]);
-            resolutions[3 * i + 1] = float(size[1]);
-            resolutions[3 * i + 2] = size[0] > 0 ? 1.0f : 0.0f;
+            for (size_t k = 0; k < 3; ++k) resolutions[3 * i + k] = float(tex.size[k]);
         }
         glUniform3fv(loc("iChannelResolution"), 4, resolutions);
         glUniform1fv(loc("iChannelTime"), 4, times);
@@ -478,7 +526,8 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
         Impl::Pass p;
         std::vector<std::pair<std::string, std::string>> overrides = sources;
         overrides.push_back(userFiles[k + (spec.common.empty() ? 0 : 1)]);
-        std::vector<std::string> files{"shadertoy_prelude"};
+        overrides.push_back({"shadertoy_channels", channelDeclarations(pass)});
+        std::vector<std::string> files{"shadertoy_prelude", "shadertoy_channels"};
         if (spec.pattern) files.insert(files.end(), {"colour", "stochtex_pattern"});
         if (!spec.common.empty()) files.push_back(spec.common.string());
         files.push_back(pass.code.string());
@@ -508,17 +557,22 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
             const GLint wrap = ch.wrap == ChannelWrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
             glSamplerParameteri(id, GL_TEXTURE_WRAP_S, wrap);
             glSamplerParameteri(id, GL_TEXTURE_WRAP_T, wrap);
+            glSamplerParameteri(id, GL_TEXTURE_WRAP_R, wrap);
             if (ch.kind == ShadertoyChannel::Kind::Image) {
                 const Image img = readImage(ch.image.string());
                 if (img.channels() < 1 || img.channels() > 4)
                     throw InputError(ch.image.string() + ": a channel image has 1 to 4 channels, got " +
                                      std::to_string(img.channels()));
                 p.inputs[i] = imageTexture(asBrowserUploads(img), ch.vflip, ch.filter == ChannelFilter::Mipmap);
-                p.inputSize[i] = {img.width(), img.height()};
+                p.inputSize[i] = {img.width(), img.height(), 1};
             } else if (ch.kind == ShadertoyChannel::Kind::Noise) {
                 p.inputs[i] = imageTexture(noiseImage(ch.noiseSize, ch.rgbaNoise, ch.noiseSeed), false,
                                            ch.filter == ChannelFilter::Mipmap);
-                p.inputSize[i] = {ch.noiseSize, ch.noiseSize};
+                p.inputSize[i] = {ch.noiseSize, ch.noiseSize, 1};
+            } else if (ch.kind == ShadertoyChannel::Kind::Volume) {
+                p.inputs[i] = volumeTexture(shadertoyNoiseVolume(ch.noiseSize, ch.rgbaNoise, ch.noiseSeed), ch.noiseSize,
+                                            ch.filter == ChannelFilter::Mipmap);
+                p.inputSize[i] = {ch.noiseSize, ch.noiseSize, ch.noiseSize};
             }
         }
         m.passes.push_back(std::move(p));

@@ -53,6 +53,12 @@ constexpr long long kMaxShadertoyBytes = 2ll << 30;
 // InputError naming `width` when the program's targets at this size would exceed it.
 void checkShadertoyMemory(const ShadertoySpec& spec, const ShadertoySettings& s);
 
+// A volume channel's texels (ShaderToy's "Grey Noise3D" and "RGBA Noise3D"
+// are 32³): size³ RGBA values, x fastest, then y, then z, each uniform in
+// [0, 1) from the project's hash of (x, y, z, seed); rgba: four independent
+// channels, else one value in all four.
+std::vector<float> shadertoyNoiseVolume(int size, bool rgba, uint32_t seed);
+
 class ShadertoyHost {
 public:
     // Compiles every pass and loads its channels (and the program's pattern)

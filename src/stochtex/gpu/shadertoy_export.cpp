@@ -32,6 +32,12 @@ constexpr BuiltinMedia kBuiltinMedia[] = {
     {"f735bee5b64ef98879dc618b016ecf7939a5756040c2cde21ccb15e69a6e1cfb.png", "RGBA Noise Medium", true, 256},
 };
 
+// And its two noise volumes (32³).
+constexpr BuiltinMedia kBuiltinVolumes[] = {
+    {"27012b4eadd0c3ce12498b867058e4f717ce79e5.bin", "Grey Noise3D", false, 32},
+    {"aea6b99da1d53055107966b59ac5444fc8bc7b3ce2d0bbb6a4a3cbae1d97f3aa.bin", "RGBA Noise3D", true, 32},
+};
+
 // The ids ShaderToy gives the buffers' outputs (numbers in older exports).
 const std::map<std::string, int>& knownBufferIds() {
     static const std::map<std::string, int> ids{{"257", 0},    {"258", 1},    {"259", 2},    {"260", 3},
@@ -111,9 +117,21 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
                         "put its file (" + (file.empty() ? "?" : file) + ") in " + x.mediaDir.string() +
                         " (--media DIR names another folder)");
         }
+    } else if (type == "volume") {
+        const std::string file = fileName(src);
+        const auto builtin = std::find_if(std::begin(kBuiltinVolumes), std::end(kBuiltinVolumes),
+                                          [&](const BuiltinMedia& m) { return file == m.file; });
+        if (builtin == std::end(kBuiltinVolumes))
+            in.fail("the volume \"" + src + "\" is not one of ShaderToy's two noise volumes (Grey and RGBA Noise3D), "
+                    "which the host generates; other volumes are not supported");
+        ch.kind = ShadertoyChannel::Kind::Volume;
+        ch.rgbaNoise = builtin->rgba;
+        ch.noiseSize = builtin->size;
+        ch.filter = ChannelFilter::Mipmap;
+        ch.wrap = ChannelWrap::Repeat;
     } else {
         typeReader.fail("a " + type + " input is a ShaderToy input this host does not support yet (it reads buffer, "
-                        "texture and keyboard inputs; docs/SHADERTOY.md)");
+                        "texture, volume and keyboard inputs; docs/SHADERTOY.md)");
     }
     if (const auto sampler = in.find("sampler")) {
         if (const auto f = sampler->find("filter")) ch.filter = f->choice(kChannelFilterNames);
@@ -249,7 +267,10 @@ nlohmann::json shadertoyManifest(const ShadertoySpec& spec, const fs::path& dir,
                     break;
                 case ShadertoyChannel::Kind::Keyboard: c = {{"type", "keyboard"}}; break;
                 case ShadertoyChannel::Kind::Noise:
-                    c = {{"type", "noise"}, {"kind", ch.rgbaNoise ? "rgba" : "gray"}, {"size", ch.noiseSize}};
+                case ShadertoyChannel::Kind::Volume:
+                    c = {{"type", ch.kind == ShadertoyChannel::Kind::Volume ? "volume" : "noise"},
+                         {"kind", ch.rgbaNoise ? "rgba" : "gray"},
+                         {"size", ch.noiseSize}};
                     if (ch.noiseSeed != 0) c["seed"] = ch.noiseSeed;
                     break;
             }

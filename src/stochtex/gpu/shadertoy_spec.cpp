@@ -55,13 +55,13 @@ ShadertoyChannel parseChannel(const JsonReader& c, const fs::path& baseDir) {
     ShadertoyChannel ch;
     if (!c.value().is_object()) c.fail("expected a channel object with a \"type\", or null");
     // ShaderToy's other inputs, named as such rather than as an unknown value.
-    static const std::set<std::string> unsupported{"cubemap", "volume", "video", "webcam", "music", "musicstream",
-                                                   "mic", "sound"};
+    static const std::set<std::string> unsupported{"cubemap", "video", "webcam", "music", "musicstream", "mic",
+                                                   "sound"};
     if (c.has("type") && c.at("type").value().is_string() && unsupported.count(c.at("type").value().get<std::string>()))
         c.at("type").fail("a " + c.at("type").value().get<std::string>() +
                           " channel is a ShaderToy input this host does not support yet (it reads buffer, image, "
-                          "keyboard and noise channels; docs/SHADERTOY.md)");
-    const std::string type = c.at("type").choice({"buffer", "image", "keyboard", "noise"});
+                          "keyboard, noise and volume channels; docs/SHADERTOY.md)");
+    const std::string type = c.at("type").choice({"buffer", "image", "keyboard", "noise", "volume"});
     if (type == "buffer") {
         c.expectObject({"type", "buffer", "frame", "filter", "wrap"});
         ch.kind = ShadertoyChannel::Kind::Buffer;
@@ -83,9 +83,11 @@ ShadertoyChannel parseChannel(const JsonReader& c, const fs::path& baseDir) {
         ch.filter = ChannelFilter::Nearest;
     } else {
         c.expectObject({"type", "kind", "size", "seed", "filter", "wrap"});
-        ch.kind = ShadertoyChannel::Kind::Noise;
+        const bool volume = type == "volume";
+        ch.kind = volume ? ShadertoyChannel::Kind::Volume : ShadertoyChannel::Kind::Noise;
         ch.rgbaNoise = c.choice("kind", std::string("rgba"), {"gray", "rgba"}) == "rgba";
-        ch.noiseSize = c.integer("size", 64, 8, 1024);
+        // ShaderToy's volumes are 32³; its noise images 64² (small) and 256² (medium).
+        ch.noiseSize = volume ? c.integer("size", 32, 4, 128) : c.integer("size", 64, 8, 1024);
         if ((ch.noiseSize & (ch.noiseSize - 1)) != 0) c.at("size").fail("must be a power of two");
         ch.noiseSeed = c.uint32("seed", 0);
         ch.filter = ChannelFilter::Mipmap;
