@@ -533,6 +533,46 @@ TEST_F(Shadertoy, VolumeChannelSamplesTheNoiseVolume) {
     EXPECT_NEAR(cross / n / (1.0 / 12.0), 0.0, 0.03);  // σ of the correlation: 1 / √32768 = 0.0055
 }
 
+// A cubemap channel is a samplerCube: six faces read along ±x, ±y, ±z, or
+// an equirectangular image whose centre column looks along −z and top row up.
+TEST_F(Shadertoy, CubemapChannelFromFacesAndFromAPanorama) {
+    fs::create_directories(dir_ / "cube");
+    std::string faces;
+    for (int f = 0; f < 6; ++f) {
+        Image face(4, 4, 3);
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) face.at(x, y, 0) = float(f) / 5.0f, face.at(x, y, 1) = 0.5f, face.at(x, y, 2) = 1.0f;
+        writeImage((dir_ / ("cube/f" + std::to_string(f) + ".png")).string(), face, kNoTransfer);
+        faces += std::string(f ? ", " : "") + "\"f" + std::to_string(f) + ".png\"";
+    }
+    // The panorama's red is its column (u), green its row (v), 64 × 32.
+    Image pano(64, 32, 3);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 64; ++x) pano.at(x, y, 0) = (x + 0.5f) / 64.0f, pano.at(x, y, 1) = (y + 0.5f) / 32.0f;
+    writeImage((dir_ / "cube/pano.exr").string(), pano);
+    write("cube/image.glsl", R"(const vec3 dirs[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1));
+        void mainImage(out vec4 c, in vec2 p) {
+            int k = int(p.x);
+            c = p.y < 1.0 ? texture(iChannel0, dirs[k]) : vec4(texture(iChannel1, dirs[k]).rgb, iChannelResolution[1].x);
+        })");
+    write("cube/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [
+        {"type": "cubemap", "faces": [)" + faces + R"(]}, {"type": "cubemap", "equirect": "pano.exr", "filter": "linear"}]}}})");
+    ShadertoyHost host(loadShadertoy((dir_ / "cube").string()), *context_, small(6, 2));
+    host.renderFrame();
+    for (int f = 0; f < 6; ++f)
+        expectPixel(host.pixel("image", f, 0), {float(f) / 5.0f, 0.5f, 1.0f, 1.0f}, 2.5e-3f, "face " + std::to_string(f));
+    // u: −z at ½, −x at ¼, +x at ¾, +z at the seam (0 or 1); v: +y at the top (0), −y at the bottom (1), the rest ½.
+    const float uWant[6] = {0.75f, 0.25f, -1, -1, -1, 0.5f}, vWant[6] = {0.5f, 0.5f, 0.0f, 1.0f, 0.5f, 0.5f};
+    for (int f = 0; f < 6; ++f) {
+        const std::array<float, 4> got = host.pixel("image", f, 1);
+        if (uWant[f] >= 0) {
+            EXPECT_NEAR(got[0], uWant[f], 0.03) << "u of face " << f;
+        }
+        EXPECT_NEAR(got[1], vWant[f], 0.04) << "v of face " << f;
+        EXPECT_EQ(got[3], 16.0f);  // a quarter of the panorama's width
+    }
+}
+
 // A folder saved with ShaderToy's tab names is a program too.
 TEST_F(Shadertoy, FolderWithShadertoysTabNamesLoads) {
     write("tabs/Common.glsl", "#define ONE 1.0\n");

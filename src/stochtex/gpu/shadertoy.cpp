@@ -122,7 +122,10 @@ std::string prelude(const ShadertoySpec& spec, const ShadertoySettings& settings
 std::string channelDeclarations(const ShadertoyPass& pass) {
     std::string s;
     for (size_t i = 0; i < 4; ++i)
-        s += std::string("uniform ") + (pass.channels[i].kind == ShadertoyChannel::Kind::Volume ? "sampler3D" : "sampler2D") +
+        s += std::string("uniform ") +
+             (pass.channels[i].kind == ShadertoyChannel::Kind::Volume    ? "sampler3D"
+              : pass.channels[i].kind == ShadertoyChannel::Kind::Cubemap ? "samplerCube"
+                                                                         : "sampler2D") +
              " iChannel" + std::to_string(i) + ";\n";
     return s;
 }
@@ -210,6 +213,95 @@ gl::Texture volumeTexture(const std::vector<float>& rgba, int size, bool mipmaps
     return t;
 }
 
+// The direction of texel centre (s, t) ∈ (0, 1)² of cube face f (+x, −x,
+// +y, −y, +z, −z): GL's cube map selection (OpenGL 4.5 §8.13) inverted, t
+// going down each face as a face image's rows do.
+std::array<double, 3> cubeDirection(int face, double s, double t) {
+    const double a = 2 * s - 1, b = 2 * t - 1;
+    switch (face) {
+        case 0: return {1, -b, -a};
+        case 1: return {-1, -b, a};
+        case 2: return {a, 1, b};
+        case 3: return {a, -1, -b};
+        case 4: return {a, -b, 1};
+        default: return {-a, -b, -1};
+    }
+}
+
+// A cube face resampled from an equirectangular image (bilinear, around in
+// longitude, clamped at the poles): the image's centre column looks along
+// −z, the column a quarter in along −x, three quarters in along +x, its top
+// row up (+y), as panoramas are commonly stored.
+Image equirectangularFace(const Image& pano, int face, int size) {
+    const int c = pano.channels();
+    Image out(size, size, c, Image::Uninitialized{});
+    constexpr double kPi = 3.14159265358979323846;
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
+            const auto d = cubeDirection(face, (i + 0.5) / size, (j + 0.5) / size);
+            const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            const double u = 0.5 + std::atan2(d[0], -d[2]) / (2 * kPi);
+            const double v = std::acos(std::clamp(d[1] / len, -1.0, 1.0)) / kPi;
+            const double x = u * pano.width() - 0.5, y = std::clamp(v * pano.height() - 0.5, 0.0, pano.height() - 1.0);
+            const int x0 = int(std::floor(x)), y0 = int(std::floor(y)), y1 = std::min(y0 + 1, pano.height() - 1);
+            const double fx = x - x0, fy = y - y0;
+            const int xa = ((x0 % pano.width()) + pano.width()) % pano.width(), xb = (xa + 1) % pano.width();
+            for (int k = 0; k < c; ++k)
+                out.at(i, j, k) = float((1 - fy) * ((1 - fx) * pano.at(xa, y0, k) + fx * pano.at(xb, y0, k)) +
+                                        fy * ((1 - fx) * pano.at(xa, y1, k) + fx * pano.at(xb, y1, k)));
+        }
+    return out;
+}
+
+// A cube map of six square faces of one size (+x, −x, +y, −y, +z, −z, row 0
+// of each image at t = 0, as GL's cube faces are laid out), RGBA32F, its mip
+// chain when asked.
+gl::Texture cubeTexture(const std::array<Image, 6>& faces, bool mipmaps) {
+    gl::Texture t = gl::newTexture();
+    glBindTexture(GL_TEXTURE_CUBE_MAP, t.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    static const GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    for (int f = 0; f < 6; ++f) {
+        const Image& img = faces[size_t(f)];
+        glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA32F, img.width(), img.height(), 0,
+                     kFormats[img.channels() - 1], GL_FLOAT, img.data().data());
+    }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, mipmaps ? 1000 : 0);
+    if (mipmaps) glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    return t;
+}
+
+// A cubemap channel's faces: six images as a browser uploads them (square,
+// one size), or an equirectangular image resampled onto faces of a quarter
+// of its width. InputError naming the file.
+std::array<Image, 6> cubemapFaces(const ShadertoyChannel& ch) {
+    constexpr int kMaxFace = 4096;
+    std::array<Image, 6> faces;
+    const auto readChannelImage = [](const std::filesystem::path& path) {
+        const Image img = readImage(path.string());
+        if (img.channels() < 1 || img.channels() > 4)
+            throw InputError(path.string() + ": a channel image has 1 to 4 channels, got " + std::to_string(img.channels()));
+        return asBrowserUploads(img);
+    };
+    if (!ch.image.empty()) {
+        const Image pano = readChannelImage(ch.image);
+        const int size = std::clamp(pano.width() / 4, 1, kMaxFace / 2);
+        for (int f = 0; f < 6; ++f) faces[size_t(f)] = equirectangularFace(pano, f, size);
+        return faces;
+    }
+    for (size_t f = 0; f < 6; ++f) {
+        faces[f] = readChannelImage(ch.faces[f]);
+        if (faces[f].width() != faces[f].height() || faces[f].width() > kMaxFace ||
+            faces[f].width() != faces[0].width() || faces[f].channels() != faces[0].channels())
+            throw InputError(ch.faces[f].string() + ": a cube face is square, at most 4096 pixels, and of the first "
+                             "face's size and channels (" + std::to_string(faces[0].width()) + "x" +
+                             std::to_string(faces[0].width()) + "), got " + std::to_string(faces[f].width()) + "x" +
+                             std::to_string(faces[f].height()));
+    }
+    return faces;
+}
+
 // A compiler's log, after ShaderError's first line, as one short message:
 // its first error with its location ("file:line", mapped to the user's
 // files by compileProgram), the source line it names, and how many more
@@ -258,7 +350,7 @@ std::string firstCompilerError(const std::string& what,
     // A channel sampled with a 3D coordinate is a cubemap or volume channel on ShaderToy.
     if (std::regex_search(first, std::regex(R"(texture\w*\(sampler2D, [iu]?vec3)")))
         out += " (a channel read with a 3D coordinate is a volume or cubemap channel on ShaderToy: give a volume as "
-               "{\"type\": \"volume\"} in the manifest; cubemaps are not supported; docs/SHADERTOY.md)";
+               "{\"type\": \"volume\"}, a cubemap as {\"type\": \"cubemap\"} in the manifest; docs/SHADERTOY.md)";
     if (more > 0) out += " (and " + std::to_string(more) + " more error" + (more > 1 ? "s" : "") + ")";
     // The line itself, from the user's file, so the message is read without opening it.
     for (const auto& [path, text] : userFiles) {
@@ -405,6 +497,7 @@ struct ShadertoyHost::Impl {
             case ShadertoyChannel::Kind::Image:
             case ShadertoyChannel::Kind::Noise: return {pass.inputs[i].id(), GL_TEXTURE_2D, pass.inputSize[i]};
             case ShadertoyChannel::Kind::Volume: return {pass.inputs[i].id(), GL_TEXTURE_3D, pass.inputSize[i]};
+            case ShadertoyChannel::Kind::Cubemap: return {pass.inputs[i].id(), GL_TEXTURE_CUBE_MAP, pass.inputSize[i]};
         }
         return {};
     }
@@ -573,6 +666,10 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
                 p.inputs[i] = volumeTexture(shadertoyNoiseVolume(ch.noiseSize, ch.rgbaNoise, ch.noiseSeed), ch.noiseSize,
                                             ch.filter == ChannelFilter::Mipmap);
                 p.inputSize[i] = {ch.noiseSize, ch.noiseSize, ch.noiseSize};
+            } else if (ch.kind == ShadertoyChannel::Kind::Cubemap) {
+                const std::array<Image, 6> faces = cubemapFaces(ch);
+                p.inputs[i] = cubeTexture(faces, ch.filter == ChannelFilter::Mipmap);
+                p.inputSize[i] = {faces[0].width(), faces[0].height(), 1};
             }
         }
         m.passes.push_back(std::move(p));

@@ -117,6 +117,23 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
                         "put its file (" + (file.empty() ? "?" : file) + ") in " + x.mediaDir.string() +
                         " (--media DIR names another folder)");
         }
+    } else if (type == "cubemap") {
+        // ShaderToy stores a cubemap's faces as FILE.ext, FILE_1.ext … FILE_5.ext (+x, −x, +y, −y, +z, −z).
+        const std::string file = fileName(src);
+        const size_t dot = file.find_last_of('.');
+        if (file.empty() || dot == std::string::npos) in.fail("a cubemap input needs its \"src\" (the first face's file)");
+        ch.kind = ShadertoyChannel::Kind::Cubemap;
+        ch.filter = ChannelFilter::Mipmap;
+        std::string missing;
+        for (int f = 0; f < 6; ++f) {
+            const std::string name = f == 0 ? file : file.substr(0, dot) + "_" + std::to_string(f) + file.substr(dot);
+            ch.faces.push_back(x.mediaDir / name);
+            std::error_code ec;
+            if (!fs::is_regular_file(ch.faces.back(), ec)) missing += (missing.empty() ? "" : ", ") + name;
+        }
+        if (!missing.empty())
+            in.fail("the cubemap \"" + src + "\" is read from its six face files; put " + missing + " in " +
+                    x.mediaDir.string() + " (--media DIR names another folder)");
     } else if (type == "volume") {
         const std::string file = fileName(src);
         const auto builtin = std::find_if(std::begin(kBuiltinVolumes), std::end(kBuiltinVolumes),
@@ -131,7 +148,7 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
         ch.wrap = ChannelWrap::Repeat;
     } else {
         typeReader.fail("a " + type + " input is a ShaderToy input this host does not support yet (it reads buffer, "
-                        "texture, volume and keyboard inputs; docs/SHADERTOY.md)");
+                        "texture, volume, cubemap and keyboard inputs; docs/SHADERTOY.md)");
     }
     if (const auto sampler = in.find("sampler")) {
         if (const auto f = sampler->find("filter")) ch.filter = f->choice(kChannelFilterNames);
@@ -266,6 +283,11 @@ nlohmann::json shadertoyManifest(const ShadertoySpec& spec, const fs::path& dir,
                     c = {{"type", "image"}, {"path", relative(ch.image)}, {"vflip", ch.vflip}};
                     break;
                 case ShadertoyChannel::Kind::Keyboard: c = {{"type", "keyboard"}}; break;
+                case ShadertoyChannel::Kind::Cubemap:
+                    c = {{"type", "cubemap"}};
+                    if (!ch.image.empty()) c["equirect"] = relative(ch.image);
+                    for (const auto& face : ch.faces) c["faces"].push_back(relative(face));
+                    break;
                 case ShadertoyChannel::Kind::Noise:
                 case ShadertoyChannel::Kind::Volume:
                     c = {{"type", ch.kind == ShadertoyChannel::Kind::Volume ? "volume" : "noise"},

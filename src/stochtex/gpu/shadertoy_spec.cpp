@@ -55,13 +55,12 @@ ShadertoyChannel parseChannel(const JsonReader& c, const fs::path& baseDir) {
     ShadertoyChannel ch;
     if (!c.value().is_object()) c.fail("expected a channel object with a \"type\", or null");
     // ShaderToy's other inputs, named as such rather than as an unknown value.
-    static const std::set<std::string> unsupported{"cubemap", "video", "webcam", "music", "musicstream", "mic",
-                                                   "sound"};
+    static const std::set<std::string> unsupported{"video", "webcam", "music", "musicstream", "mic", "sound"};
     if (c.has("type") && c.at("type").value().is_string() && unsupported.count(c.at("type").value().get<std::string>()))
         c.at("type").fail("a " + c.at("type").value().get<std::string>() +
                           " channel is a ShaderToy input this host does not support yet (it reads buffer, image, "
-                          "keyboard, noise and volume channels; docs/SHADERTOY.md)");
-    const std::string type = c.at("type").choice({"buffer", "image", "keyboard", "noise", "volume"});
+                          "keyboard, noise, volume and cubemap channels; docs/SHADERTOY.md)");
+    const std::string type = c.at("type").choice({"buffer", "image", "keyboard", "noise", "volume", "cubemap"});
     if (type == "buffer") {
         c.expectObject({"type", "buffer", "frame", "filter", "wrap"});
         ch.kind = ShadertoyChannel::Kind::Buffer;
@@ -77,6 +76,18 @@ ShadertoyChannel parseChannel(const JsonReader& c, const fs::path& baseDir) {
         ch.vflip = c.boolean("vflip", true);
         ch.filter = ChannelFilter::Mipmap;
         ch.wrap = ChannelWrap::Repeat;
+    } else if (type == "cubemap") {
+        c.expectObject({"type", "faces", "equirect", "filter", "wrap"});
+        ch.kind = ShadertoyChannel::Kind::Cubemap;
+        if (c.has("faces") == c.has("equirect")) c.fail("a cubemap needs \"faces\" (six images) or \"equirect\" (one)");
+        if (c.has("equirect")) {
+            ch.image = resolveInputPath(c.at("equirect"), baseDir);
+        } else {
+            const JsonReader faces = c.at("faces");
+            if (faces.arraySize() != 6) faces.fail("needs six images: +x, -x, +y, -y, +z, -z");
+            for (size_t k = 0; k < 6; ++k) ch.faces.push_back(resolveInputPath(faces.at(k), baseDir));
+        }
+        ch.filter = ChannelFilter::Mipmap;
     } else if (type == "keyboard") {
         c.expectObject({"type", "filter", "wrap"});
         ch.kind = ShadertoyChannel::Kind::Keyboard;

@@ -24,9 +24,11 @@
 //     {"type": "keyboard"}
 //     {"type": "noise", "kind": "gray" | "rgba", "size": 64, "seed": 0}
 //     {"type": "volume", "kind": "gray" | "rgba", "size": 32, "seed": 0}  (a 3D noise texture: iChannelN is a sampler3D)
+//     {"type": "cubemap", "faces": ["px.png", "nx.png", "py.png", "ny.png", "pz.png", "nz.png"]}
+//     {"type": "cubemap", "equirect": "sky.exr"}  (iChannelN is a samplerCube)
 //   each with "filter": "nearest" | "linear" | "mipmap" and
 //   "wrap": "clamp" | "repeat" (ShaderToy's defaults: images, noise and
-//   volumes mipmap and repeat, buffers linear and clamp, the keyboard nearest and
+//   volumes mipmap and repeat, cubemaps mipmap and clamp, buffers linear and clamp, the keyboard nearest and
 //   clamp).
 //   "uniforms" adds the program's own (float, int, vec2, vec3, vec4); the
 //   int uniform named by "instance" is the instance of a texture source
@@ -67,12 +69,13 @@ enum class ChannelWrap { Clamp, Repeat };
 inline const EnumNames<ChannelWrap> kChannelWrapNames{{"clamp", ChannelWrap::Clamp}, {"repeat", ChannelWrap::Repeat}};
 
 struct ShadertoyChannel {
-    enum class Kind { None, Buffer, Image, Keyboard, Noise, Volume };
+    enum class Kind { None, Buffer, Image, Keyboard, Noise, Volume, Cubemap };
     enum class Frame { Latest, Previous, Current };
     Kind kind = Kind::None;
     int buffer = 0;  // Buffer: 0–3 for A–D
     Frame frame = Frame::Latest;
-    std::filesystem::path image;  // Image (resolved)
+    std::filesystem::path image;  // Image (resolved); Cubemap: an equirectangular image, or empty
+    std::vector<std::filesystem::path> faces;  // Cubemap: six images, +x, −x, +y, −y, +z, −z
     bool vflip = true;            // Image: row 0 of the file at the top, as ShaderToy shows it
     bool rgbaNoise = true;        // Noise, Volume: four channels, else gray in all four
     int noiseSize = 64;           // Noise: a power of two in [8, 1024]; Volume: its side, a power of two in [4, 128]

@@ -80,8 +80,10 @@ WorkbenchDocument WorkbenchDocument::shadertoy(const std::string& path) {
     if (!d.shadertoy_.common.empty() && d.shadertoy_.commonSource.empty()) files.push_back(d.shadertoy_.common);
     for (const ShadertoyPass& pass : d.shadertoy_.passes) {
         if (pass.source.empty()) files.push_back(pass.code);
-        for (const ShadertoyChannel& c : pass.channels)
-            if (c.kind == ShadertoyChannel::Kind::Image) files.push_back(c.image);
+        for (const ShadertoyChannel& c : pass.channels) {
+            if (!c.image.empty()) files.push_back(c.image);  // an image channel's, an equirectangular cubemap's
+            for (const auto& face : c.faces) files.push_back(face);
+        }
     }
     d.watch(std::move(files));
     return d;
