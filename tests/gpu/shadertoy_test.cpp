@@ -17,6 +17,7 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
+#include "stochtex/report/frame_sequence.h"
 #include "test_util.h"
 
 namespace stochtex {
@@ -571,6 +572,33 @@ TEST_F(Shadertoy, CubemapChannelFromFacesAndFromAPanorama) {
         EXPECT_NEAR(got[1], vWant[f], 0.04) << "v of face " << f;
         EXPECT_EQ(got[3], 16.0f);  // a quarter of the panorama's width
     }
+}
+
+// A video channel shows the video's frame at the frame's time (OpenCV's
+// decoder), looping after its last frame, with iChannelTime the frame's time
+// in the video; the frames are grey k/7, 8 frames at 10 fps, and the
+// program runs at 20 fps (two of its frames per video frame).
+TEST_F(Shadertoy, VideoChannelPlaysByTimeAndLoops) {
+    fs::create_directories(dir_ / "video");
+    {
+        FrameSequenceWriter writer((dir_ / "video/clip.mp4").string(), 32, 16, 10, "", Transfer::Linear);
+        for (int k = 0; k < 8; ++k) writer.write(Image(32, 16, 3, float(k) / 7.0f));
+        writer.finish();
+    }
+    write("video/image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(texture(iChannel0, vec2(0.5)).rgb, iChannelTime[0]); }\n");
+    write("video/shadertoy.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "video", "path": "clip.mp4"}]}}})");
+    ShadertoySettings settings = small();
+    settings.fps = 20;
+    ShadertoyHost host(loadShadertoy((dir_ / "video").string()), *context_, settings);
+    for (int n = 0; n < 18; ++n) {
+        host.renderFrame();
+        const int shown = (n / 2) % 8;  // t = n / 20 s: video frame ⌊t · 10⌋, looping after 8
+        const float grey = float(shown) / 7.0f;
+        expectPixel(host.pixel("image", 3, 3), {grey, grey, grey, float(shown) / 10.0f}, 0.02f, "frame " + std::to_string(n));
+    }
+    write("video/bad.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "video", "path": "image.glsl"}]}}})");
+    EXPECT_NE(error([&] { ShadertoyHost h(loadShadertoy((dir_ / "video/bad.json").string()), *context_, small()); })
+                  .find("image.glsl: not a video"), std::string::npos);
 }
 
 // A folder saved with ShaderToy's tab names is a program too.

@@ -18,6 +18,7 @@
 #include "stochtex/gpu/uploads.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/image/video_reader.h"
 
 namespace stochtex {
 
@@ -429,6 +430,8 @@ struct ShadertoyHost::Impl {
         std::array<Sampler, 4> samplers;
         std::array<gl::Texture, 4> inputs;  // image, keyboard and noise channels' textures
         std::array<std::array<int, 3>, 4> inputSize{};
+        std::array<std::unique_ptr<VideoReader>, 4> videos;  // video channels' files, the frame shown decoded
+        std::array<int, 4> videoFrame{-1, -1, -1, -1};       // the frame each video channel's texture holds
     };
     std::vector<Pass> passes;
     std::unique_ptr<GpuView> pattern;  // the stochtex_sample include's textures and parameters
@@ -495,6 +498,7 @@ struct ShadertoyHost::Impl {
             }
             case ShadertoyChannel::Kind::Keyboard: return {keyboard.id(), GL_TEXTURE_2D, {kKeys, 3, 1}};
             case ShadertoyChannel::Kind::Image:
+            case ShadertoyChannel::Kind::Video:
             case ShadertoyChannel::Kind::Noise: return {pass.inputs[i].id(), GL_TEXTURE_2D, pass.inputSize[i]};
             case ShadertoyChannel::Kind::Volume: return {pass.inputs[i].id(), GL_TEXTURE_3D, pass.inputSize[i]};
             case ShadertoyChannel::Kind::Cubemap: return {pass.inputs[i].id(), GL_TEXTURE_CUBE_MAP, pass.inputSize[i]};
@@ -503,6 +507,20 @@ struct ShadertoyHost::Impl {
     }
 
     double time() const { return settings.startTime + frame / settings.fps; }
+
+    // Puts the frame of video channel i of pass p at this frame's time in
+    // its texture (decoding on as needed); the video's time shown.
+    double showVideoFrame(size_t p, size_t i) {
+        Pass& pass = passes[p];
+        const ShadertoyChannel& ch = spec.passes[p].channels[i];
+        VideoReader& video = *pass.videos[i];
+        const Image& img = video.frameAt(time(), ch.loop);
+        if (video.frameIndex() != pass.videoFrame[i]) {
+            pass.inputs[i] = imageTexture(img, ch.vflip, ch.filter == ChannelFilter::Mipmap);
+            pass.videoFrame[i] = video.frameIndex();
+        }
+        return video.frameIndex() / video.fps();
+    }
 
     void run(size_t p) {
         Pass& pass = passes[p];
@@ -538,6 +556,8 @@ struct ShadertoyHost::Impl {
             }
         }
         float resolutions[12] = {}, times[4] = {t, t, t, t};
+        for (size_t i = 0; i < 4; ++i)
+            if (pass.videos[i]) times[i] = float(showVideoFrame(p, i));
         for (size_t i = 0; i < 4; ++i) {
             const ChannelTexture tex = channelTexture(p, i);
             const GLuint unit = GLuint(channelUnit) + GLuint(i);
@@ -666,6 +686,9 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
                 p.inputs[i] = volumeTexture(shadertoyNoiseVolume(ch.noiseSize, ch.rgbaNoise, ch.noiseSeed), ch.noiseSize,
                                             ch.filter == ChannelFilter::Mipmap);
                 p.inputSize[i] = {ch.noiseSize, ch.noiseSize, ch.noiseSize};
+            } else if (ch.kind == ShadertoyChannel::Kind::Video) {
+                p.videos[i] = std::make_unique<VideoReader>(ch.image.string());
+                p.inputSize[i] = {p.videos[i]->width(), p.videos[i]->height(), 1};
             } else if (ch.kind == ShadertoyChannel::Kind::Cubemap) {
                 const std::array<Image, 6> faces = cubemapFaces(ch);
                 p.inputs[i] = cubeTexture(faces, ch.filter == ChannelFilter::Mipmap);

@@ -117,6 +117,14 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
                         "put its file (" + (file.empty() ? "?" : file) + ") in " + x.mediaDir.string() +
                         " (--media DIR names another folder)");
         }
+    } else if (type == "video") {
+        const std::string file = fileName(src);
+        ch.kind = ShadertoyChannel::Kind::Video;
+        ch.image = x.mediaDir / file;
+        std::error_code ec;
+        if (file.empty() || !fs::is_regular_file(ch.image, ec))
+            in.fail("the video \"" + src + "\" is read from its file; put " + (file.empty() ? "it" : file) + " in " +
+                    x.mediaDir.string() + " (--media DIR names another folder)");
     } else if (type == "cubemap") {
         // ShaderToy stores a cubemap's faces as FILE.ext, FILE_1.ext … FILE_5.ext (+x, −x, +y, −y, +z, −z).
         const std::string file = fileName(src);
@@ -148,7 +156,7 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
         ch.wrap = ChannelWrap::Repeat;
     } else {
         typeReader.fail("a " + type + " input is a ShaderToy input this host does not support yet (it reads buffer, "
-                        "texture, volume, cubemap and keyboard inputs; docs/SHADERTOY.md)");
+                        "texture, volume, cubemap, video and keyboard inputs; docs/SHADERTOY.md)");
     }
     if (const auto sampler = in.find("sampler")) {
         if (const auto f = sampler->find("filter")) ch.filter = f->choice(kChannelFilterNames);
@@ -281,6 +289,9 @@ nlohmann::json shadertoyManifest(const ShadertoySpec& spec, const fs::path& dir,
                     break;
                 case ShadertoyChannel::Kind::Image:
                     c = {{"type", "image"}, {"path", relative(ch.image)}, {"vflip", ch.vflip}};
+                    break;
+                case ShadertoyChannel::Kind::Video:
+                    c = {{"type", "video"}, {"path", relative(ch.image)}, {"loop", ch.loop}, {"vflip", ch.vflip}};
                     break;
                 case ShadertoyChannel::Kind::Keyboard: c = {{"type", "keyboard"}}; break;
                 case ShadertoyChannel::Kind::Cubemap:

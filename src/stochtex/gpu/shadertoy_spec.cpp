@@ -55,12 +55,12 @@ ShadertoyChannel parseChannel(const JsonReader& c, const fs::path& baseDir) {
     ShadertoyChannel ch;
     if (!c.value().is_object()) c.fail("expected a channel object with a \"type\", or null");
     // ShaderToy's other inputs, named as such rather than as an unknown value.
-    static const std::set<std::string> unsupported{"video", "webcam", "music", "musicstream", "mic", "sound"};
+    static const std::set<std::string> unsupported{"webcam", "music", "musicstream", "mic", "sound"};
     if (c.has("type") && c.at("type").value().is_string() && unsupported.count(c.at("type").value().get<std::string>()))
         c.at("type").fail("a " + c.at("type").value().get<std::string>() +
                           " channel is a ShaderToy input this host does not support yet (it reads buffer, image, "
-                          "keyboard, noise, volume and cubemap channels; docs/SHADERTOY.md)");
-    const std::string type = c.at("type").choice({"buffer", "image", "keyboard", "noise", "volume", "cubemap"});
+                          "keyboard, noise, volume, cubemap and video channels; docs/SHADERTOY.md)");
+    const std::string type = c.at("type").choice({"buffer", "image", "keyboard", "noise", "volume", "cubemap", "video"});
     if (type == "buffer") {
         c.expectObject({"type", "buffer", "frame", "filter", "wrap"});
         ch.kind = ShadertoyChannel::Kind::Buffer;
@@ -76,6 +76,12 @@ ShadertoyChannel parseChannel(const JsonReader& c, const fs::path& baseDir) {
         ch.vflip = c.boolean("vflip", true);
         ch.filter = ChannelFilter::Mipmap;
         ch.wrap = ChannelWrap::Repeat;
+    } else if (type == "video") {
+        c.expectObject({"type", "path", "loop", "vflip", "filter", "wrap"});
+        ch.kind = ShadertoyChannel::Kind::Video;
+        ch.image = resolveInputPath(c.at("path"), baseDir);
+        ch.loop = c.boolean("loop", true);
+        ch.vflip = c.boolean("vflip", true);
     } else if (type == "cubemap") {
         c.expectObject({"type", "faces", "equirect", "filter", "wrap"});
         ch.kind = ShadertoyChannel::Kind::Cubemap;

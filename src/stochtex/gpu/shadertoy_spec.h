@@ -26,9 +26,10 @@
 //     {"type": "volume", "kind": "gray" | "rgba", "size": 32, "seed": 0}  (a 3D noise texture: iChannelN is a sampler3D)
 //     {"type": "cubemap", "faces": ["px.png", "nx.png", "py.png", "ny.png", "pz.png", "nz.png"]}
 //     {"type": "cubemap", "equirect": "sky.exr"}  (iChannelN is a samplerCube)
+//     {"type": "video", "path": "clip.mp4", "loop": true, "vflip": true}  (the frame at iTime)
 //   each with "filter": "nearest" | "linear" | "mipmap" and
 //   "wrap": "clamp" | "repeat" (ShaderToy's defaults: images, noise and
-//   volumes mipmap and repeat, cubemaps mipmap and clamp, buffers linear and clamp, the keyboard nearest and
+//   volumes mipmap and repeat, cubemaps mipmap and clamp, videos linear and clamp, buffers linear and clamp, the keyboard nearest and
 //   clamp).
 //   "uniforms" adds the program's own (float, int, vec2, vec3, vec4); the
 //   int uniform named by "instance" is the instance of a texture source
@@ -69,12 +70,13 @@ enum class ChannelWrap { Clamp, Repeat };
 inline const EnumNames<ChannelWrap> kChannelWrapNames{{"clamp", ChannelWrap::Clamp}, {"repeat", ChannelWrap::Repeat}};
 
 struct ShadertoyChannel {
-    enum class Kind { None, Buffer, Image, Keyboard, Noise, Volume, Cubemap };
+    enum class Kind { None, Buffer, Image, Keyboard, Noise, Volume, Cubemap, Video };
     enum class Frame { Latest, Previous, Current };
     Kind kind = Kind::None;
     int buffer = 0;  // Buffer: 0–3 for A–D
     Frame frame = Frame::Latest;
-    std::filesystem::path image;  // Image (resolved); Cubemap: an equirectangular image, or empty
+    std::filesystem::path image;  // Image, Video (resolved); Cubemap: an equirectangular image, or empty
+    bool loop = true;             // Video: from the start again after the last frame, else held there
     std::vector<std::filesystem::path> faces;  // Cubemap: six images, +x, −x, +y, −y, +z, −z
     bool vflip = true;            // Image: row 0 of the file at the top, as ShaderToy shows it
     bool rgbaNoise = true;        // Noise, Volume: four channels, else gray in all four

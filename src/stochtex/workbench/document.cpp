@@ -81,7 +81,7 @@ WorkbenchDocument WorkbenchDocument::shadertoy(const std::string& path) {
     for (const ShadertoyPass& pass : d.shadertoy_.passes) {
         if (pass.source.empty()) files.push_back(pass.code);
         for (const ShadertoyChannel& c : pass.channels) {
-            if (!c.image.empty()) files.push_back(c.image);  // an image channel's, an equirectangular cubemap's
+            if (!c.image.empty()) files.push_back(c.image);  // an image's, a video's, an equirectangular cubemap's
             for (const auto& face : c.faces) files.push_back(face);
         }
     }
