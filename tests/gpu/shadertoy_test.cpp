@@ -479,8 +479,8 @@ TEST_F(Shadertoy, ExportedShaderRunsAndConvertsToAManifest) {
         return error([&] { (void)loadShadertoy((dir_ / "export/e.json").string()); });
     };
     const std::string imagePass = R"({"type": "image", "name": "Image", "code": "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }")";
-    e = exportError(imagePass + R"(, "inputs": [{"id": 5, "src": "/media/a/xyz.mp4", "ctype": "video", "channel": 0}]})");
-    EXPECT_NE(e.find("/Shader/renderpass/0/inputs/0/ctype: a video input is a ShaderToy input this host does not support"),
+    e = exportError(imagePass + R"(, "inputs": [{"id": 5, "src": "", "ctype": "webcam", "channel": 0}]})");
+    EXPECT_NE(e.find("/Shader/renderpass/0/inputs/0/ctype: a webcam input is a ShaderToy input this host does not support"),
               std::string::npos) << e;
     e = exportError(imagePass + "}, " + R"({"type": "sound", "name": "Sound", "code": "vec2 mainSound(int s, float t) { return vec2(0.0); }"})");
     EXPECT_NE(e.find("/Shader/renderpass/1/type: a sound pass (Sound) is a ShaderToy pass this host does not run"),
@@ -770,8 +770,8 @@ TEST_F(Shadertoy, BadProgramsAreRefusedNamingTheFileAndLine) {
     EXPECT_NE(e.find("/uniforms/uX/type: unknown value \"mat3\""), std::string::npos) << e;
     e = manifestError(R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "buffer", "buffer": "c"}]}}})");
     EXPECT_NE(e.find("/passes/image/channels/0/buffer: the program has no pass \"buffer_c\""), std::string::npos) << e;
-    e = manifestError(R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "video"}]}}})");
-    EXPECT_NE(e.find("/passes/image/channels/0/type: a video channel is a ShaderToy input this host does not support"),
+    e = manifestError(R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "mic"}]}}})");
+    EXPECT_NE(e.find("/passes/image/channels/0/type: a mic channel is a ShaderToy input this host does not support"),
               std::string::npos) << e;
     e = manifestError(R"({"uniforms": {"iTime": {"type": "float"}}, "passes": {"image": {"code": "image.glsl"}}})");
     EXPECT_NE(e.find("/uniforms/iTime: not a usable uniform name"), std::string::npos) << e;

@@ -115,7 +115,7 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
             if (file.empty() || !fs::is_regular_file(ch.image, ec))
                 in.fail("the texture \"" + src + "\" is not one of ShaderToy's noise textures the host generates; "
                         "put its file (" + (file.empty() ? "?" : file) + ") in " + x.mediaDir.string() +
-                        " (--media DIR names another folder)");
+                        " (or give the program another media folder)");
         }
     } else if (type == "video") {
         const std::string file = fileName(src);
@@ -124,7 +124,7 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
         std::error_code ec;
         if (file.empty() || !fs::is_regular_file(ch.image, ec))
             in.fail("the video \"" + src + "\" is read from its file; put " + (file.empty() ? "it" : file) + " in " +
-                    x.mediaDir.string() + " (--media DIR names another folder)");
+                    x.mediaDir.string() + " (or give the program another media folder)");
     } else if (type == "cubemap") {
         // ShaderToy stores a cubemap's faces as FILE.ext, FILE_1.ext … FILE_5.ext (+x, −x, +y, −y, +z, −z).
         const std::string file = fileName(src);
@@ -141,7 +141,7 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
         }
         if (!missing.empty())
             in.fail("the cubemap \"" + src + "\" is read from its six face files; put " + missing + " in " +
-                    x.mediaDir.string() + " (--media DIR names another folder)");
+                    x.mediaDir.string() + " (or give the program another media folder)");
     } else if (type == "volume") {
         const std::string file = fileName(src);
         const auto builtin = std::find_if(std::begin(kBuiltinVolumes), std::end(kBuiltinVolumes),
@@ -323,7 +323,7 @@ nlohmann::json shadertoyManifest(const ShadertoySpec& spec, const fs::path& dir,
 std::string convertShadertoy(const ShadertoySpec& spec, const std::string& folder) {
     std::error_code ec;
     if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
-        throw InputError::parameter("output", "\"" + folder + "\" is a file; --convert writes a folder");
+        throw InputError::parameter("output", "\"" + folder + "\" is a file; a converted program is written as a folder");
     // Every file is named before any is written: a pass's code as <pass>.glsl,
     // Common's as common.glsl, and the manifest; none may be there already.
     std::map<std::string, std::string> codeFiles;
@@ -339,8 +339,8 @@ std::string convertShadertoy(const ShadertoySpec& spec, const std::string& folde
     writes.emplace_back(manifest, shadertoyManifest(spec, folder, codeFiles).dump(2) + "\n");
     for (const auto& [path, text] : writes)
         if (fs::exists(path, ec))
-            throw InputError::parameter("output", path.string() + " exists; --convert writes a new folder or one "
-                                                                  "without the program's files");
+            throw InputError::parameter("output", path.string() + " exists; a converted program is written into a new folder or one "
+                                                                  "without its files");
     fs::create_directories(folder, ec);
     if (ec) throw InputError::parameter("output", "cannot create the folder " + folder + " (" + ec.message() + ")");
     for (const auto& [path, text] : writes) writeFileAtomic(path.string(), text);
