@@ -111,6 +111,10 @@ JsonArgument readJsonArgument(const std::string& arg) {
 
 void checkImageOutput(const std::string& path, int bits) {
     checkImageOutputFormat(path, WriteOptions{bits});
+    checkOutputFile(path);
+}
+
+void checkOutputFile(const std::string& path) {
     const fs::path p(path);
     std::error_code ec;
     const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
@@ -348,6 +352,8 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"input", "--input"},
     {"event", "--event"},
     {"output", "--convert"},
+    {"sound", "--sound"},
+    {"soundSeconds", "--sound-seconds"},
     {"hwPerformance", "--hw-performance"},
 };
 }  // namespace

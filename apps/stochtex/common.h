@@ -60,6 +60,8 @@ std::string readJsonArgumentSource(const std::string& arg);
 // format holds `bits` (checkImageOutputFormat), is not a folder, and is in
 // an existing folder that can be written.
 void checkImageOutput(const std::string& path, int bits = 8);
+// The same without the format: a file that can be written where it is named.
+void checkOutputFile(const std::string& path);
 
 // --seed (or another seed flag): an integer in [0, 4294967295], the range of
 // every seed; anything else is refused with the reason, before conversion.

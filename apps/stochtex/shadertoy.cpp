@@ -10,13 +10,16 @@
 #include "shadertoy_flags.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/gpu/shadertoy.h"
+#include "stochtex/analysis/sound_spectrum.h"
+#include "stochtex/report/wav.h"
 #include "stochtex/studies/frame_analysis.h"
 
 namespace stochtex::cli {
 
 void registerShadertoy(CLI::App& app) {
     struct Args {
-        std::string program, output, inspect, convert, media;
+        std::string program, output, inspect, convert, media, sound;
+        double soundSeconds = 10;
         ShadertoyFlags flags;
         FrameAnalysisFlags analysis;
         int frames = 1;
@@ -34,6 +37,10 @@ void registerShadertoy(CLI::App& app) {
     cmd->add_option("-o,--output", args->output,
                     std::string("An image (the last frame, or with --sheet all frames; ") + kImageOutputFormats +
                         "), or the frames as " + kSequenceOutputHelp + "; with --analyse the report's folder");
+    cmd->add_option("--sound", args->sound, "Write the program's Sound pass (sound.glsl) as a WAV file, 16-bit stereo "
+                                            "at iSampleRate, and print its spectrum's peak");
+    cmd->add_option("--sound-seconds", args->soundSeconds, "Seconds of sound --sound renders (ShaderToy plays at most 180)")
+        ->capture_default_str();
     addShadertoyFlags(*cmd, args->flags);
     cmd->add_option("--frames", args->frames, "Frames rendered from frame 0 (iFrame 0 at --time); with --analyse, "
                                               "the frames analysed from --first-frame");
@@ -54,7 +61,12 @@ void registerShadertoy(CLI::App& app) {
                         spec.name.c_str());
             return;
         }
-        if (a.output.empty() && a.inspect.empty()) throw InputError("-o/--output, --inspect or --convert is required");
+        if (a.output.empty() && a.inspect.empty() && a.sound.empty())
+            throw InputError("-o/--output, --inspect, --sound or --convert is required");
+        if (!a.sound.empty()) {
+            if (!a.sound.ends_with(".wav")) throw InputError("--sound: writes a .wav file, got \"" + a.sound + "\"");
+            checkOutputFile(a.sound);
+        }
         if (a.analysis.list.empty() && a.flags.firstFrame != 0) throw InputError("--first-frame: has no effect without --analyse");
         const Inspect inspect = parseInspect(a.inspect);
         const ShadertoySpec spec = loadShadertoy(a.program, a.media);
@@ -84,6 +96,15 @@ void registerShadertoy(CLI::App& app) {
                             settings.startTime, settings.fps, context->describe().c_str(), seconds);
         }
         if (!inspect.pass.empty()) printInspect(host, inspect);
+        if (!a.sound.empty()) {
+            ProgressLine soundLine("sound");
+            const std::vector<float> samples = host.renderSound(a.soundSeconds, soundLine.callback());
+            soundLine.finish();
+            writeWav(a.sound, samples, 2, int(std::lround(settings.sampleRate)));
+            const SoundSpectrum spectrum = soundSpectrum(samples, 2, settings.sampleRate);
+            std::printf("wrote %s (%g s, %g Hz stereo; rms %.4f, spectrum peak at %.1f Hz)\n", a.sound.c_str(),
+                        a.soundSeconds, settings.sampleRate, spectrum.rms, spectrum.peakFrequency);
+        }
     });
 }
 

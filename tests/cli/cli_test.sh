@@ -377,11 +377,20 @@ case_shadertoy() {
   grep -q "^image (2, 2) at iFrame 3: 4 2 0 0$" "$work/conv.txt" || fail "shadertoy converted: $(cat "$work/conv.txt")"
   expect_bad "shadertoy --convert onto its own files" "" "--convert: output $out/conv/" -- "$bin" shadertoy "$work/exported.json" --convert "$out/conv"
   expect_bad "shadertoy --convert with -o" "$out/conv2.png" "--convert: writes the program and runs nothing" -- "$bin" shadertoy "$work/exported.json" --convert "$out/conv2" -o "$out/conv2.png"
+  # A sound pass written as WAV: a 440 Hz tone reads its peak at 440 Hz.
+  mkdir -p "$work/snd"
+  printf 'void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }\n' >"$work/snd/image.glsl"
+  printf 'vec2 mainSound(int s, float t) { return vec2(0.5 * sin(6.2831853 * 440.0 * t)); }\n' >"$work/snd/sound.glsl"
+  "$bin" shadertoy "$work/snd" --sound "$out/tone.wav" --sound-seconds 2 >"$work/snd.txt" 2>&1 || fail "shadertoy --sound: $(cat "$work/snd.txt")"
+  sed -n 's/.*spectrum peak at \([0-9.]*\) Hz.*/\1/p' "$work/snd.txt" | awk '{ exit !($1 > 439.5 && $1 < 440.5) }' || fail "shadertoy --sound: want a peak at 440 +- 0.5 Hz: $(cat "$work/snd.txt")"
+  [ "$(stat -c %s "$out/tone.wav")" = "$((44 + 2 * 2 * 88200))" ] || fail "shadertoy --sound: tone.wav has $(stat -c %s "$out/tone.wav") bytes, want 352844"
+  expect_bad "shadertoy --sound without a sound pass" "$out/none.wav" "--sound: sound counter has no sound pass" -- "$bin" shadertoy "$work/st" --sound "$out/none.wav"
+  expect_bad "shadertoy --sound not wav" "$out/tone.mp3" "--sound: writes a .wav file" -- "$bin" shadertoy "$work/snd" --sound "$out/tone.mp3"
   printf 'void mainImage(out vec4 c, in vec2 p) {\n  c = vec4(nope);\n}\n' >"$work/st/broken.glsl"
   printf '{"passes": {"image": {"code": "broken.glsl"}}}' >"$work/broken.json"
   cp "$work/st/broken.glsl" "$work/broken.glsl"
   expect_bad "shadertoy compile error" "$out/stb.png" "broken.glsl:2" -- "$bin" shadertoy "$work/broken.json" -o "$out/stb.png"
-  expect_bad "shadertoy no output" "" "-o/--output, --inspect or --convert is required" -- "$bin" shadertoy "$work/st"
+  expect_bad "shadertoy no output" "" "-o/--output, --inspect, --sound or --convert is required" -- "$bin" shadertoy "$work/st"
   expect_bad "shadertoy inspect pass" "" "--inspect: pass \"buffer_c\" names no pass of counter" -- "$bin" shadertoy "$work/st" --inspect buffer_c:1,1
   expect_ok "spectrum of a shadertoy frame" "$out/sts/index.html" -- "$bin" spectrum -o "$out/sts" --size 64 shadertoy "$src/data/shadertoy/swirl" --size 96,80 --first-frame 120
   [ -s "$out/sts/spectrum.csv" ] || fail "spectrum of a shadertoy frame: spectrum.csv not written"

@@ -17,7 +17,9 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
+#include "stochtex/analysis/sound_spectrum.h"
 #include "stochtex/report/frame_sequence.h"
+#include "stochtex/report/wav.h"
 #include "test_util.h"
 
 namespace stochtex {
@@ -482,8 +484,8 @@ TEST_F(Shadertoy, ExportedShaderRunsAndConvertsToAManifest) {
     e = exportError(imagePass + R"(, "inputs": [{"id": 5, "src": "", "ctype": "webcam", "channel": 0}]})");
     EXPECT_NE(e.find("/Shader/renderpass/0/inputs/0/ctype: a webcam input is a ShaderToy input this host does not support"),
               std::string::npos) << e;
-    e = exportError(imagePass + "}, " + R"({"type": "sound", "name": "Sound", "code": "vec2 mainSound(int s, float t) { return vec2(0.0); }"})");
-    EXPECT_NE(e.find("/Shader/renderpass/1/type: a sound pass (Sound) is a ShaderToy pass this host does not run"),
+    e = exportError(imagePass + "}, " + R"({"type": "cubemap", "name": "Cube A", "code": "void mainCubemap(out vec4 c, in vec2 p, in vec3 o, in vec3 d) {}"})");
+    EXPECT_NE(e.find("/Shader/renderpass/1/type: a cubemap pass (Cube A) is a ShaderToy pass this host does not run"),
               std::string::npos) << e;
     e = exportError(imagePass + R"(, "inputs": [{"id": 8, "src": "/media/a/52d2a8f514c4fd2d9866587f4d7b2a5bfa1a11a0e772077d7682deb8b3b517e5.jpg", "ctype": "texture", "channel": 1}]})");
     EXPECT_NE(e.find("put its file (52d2a8f514c4fd2d9866587f4d7b2a5bfa1a11a0e772077d7682deb8b3b517e5.jpg) in"),
@@ -599,6 +601,43 @@ TEST_F(Shadertoy, VideoChannelPlaysByTimeAndLoops) {
     write("video/bad.json", R"({"passes": {"image": {"code": "image.glsl", "channels": [{"type": "video", "path": "image.glsl"}]}}})");
     EXPECT_NE(error([&] { ShadertoyHost h(loadShadertoy((dir_ / "video/bad.json").string()), *context_, small()); })
                   .find("image.glsl: not a video"), std::string::npos);
+}
+
+// A sound pass: sample s of the render is mainSound(s, s / iSampleRate) in
+// ShaderToy's 512 × 512 blocks (exact sample numbers across the first
+// block's end); the older mainSound(time) form plays a 440 Hz tone whose
+// spectrum peaks at 440 Hz; the WAV holds the samples as 16-bit PCM.
+TEST_F(Shadertoy, SoundPassRendersSamplesInOrderAndATone) {
+    write("snd/image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }\n");
+    write("snd/sound.glsl", "vec2 mainSound(int s, float t) { return vec2(float(s % 1000) / 1000.0, -float(s % 777) / 777.0); }\n");
+    ShadertoyHost host(loadShadertoy((dir_ / "snd").string()), *context_, small());
+    const double seconds = 270000.0 / 44100.0;  // past the first block of 262144 samples
+    const std::vector<float> samples = host.renderSound(seconds);
+    ASSERT_EQ(samples.size(), 270000u * 2);
+    for (const int k : {0, 1, 511, 512, 262143, 262144, 262145, 269999}) {
+        EXPECT_NEAR(samples[size_t(k) * 2], float(k % 1000) / 1000.0f, 1e-6f) << "left " << k;
+        EXPECT_NEAR(samples[size_t(k) * 2 + 1], -float(k % 777) / 777.0f, 1e-6f) << "right " << k;
+    }
+    write("tone/image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }\n");
+    write("tone/Sound.glsl", "vec2 mainSound(float time) { return vec2(0.5 * sin(6.2831853 * 440.0 * time)); }\n");
+    ShadertoyHost tone(loadShadertoy((dir_ / "tone").string()), *context_, small());
+    const std::vector<float> a = tone.renderSound(1.0);
+    const SoundSpectrum spectrum = soundSpectrum(a, 2, 44100);
+    EXPECT_NEAR(spectrum.peakFrequency, 440.0, 0.5);
+    EXPECT_NEAR(spectrum.rms, 0.5 / std::sqrt(2.0), 1e-3);
+    const std::string wav = (dir_ / "tone.wav").string();
+    writeWav(wav, a, 2, 44100);
+    std::ifstream in(wav, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_EQ(bytes.size(), 44u + a.size() * 2);
+    EXPECT_EQ(bytes.substr(0, 4), "RIFF");
+    EXPECT_EQ(bytes.substr(8, 8), "WAVEfmt ");
+    const auto sample = [&](size_t i) { return int16_t(uint16_t(uint8_t(bytes[44 + 2 * i])) | uint16_t(uint8_t(bytes[45 + 2 * i])) << 8); };
+    for (const size_t i : {size_t(0), size_t(101), size_t(25)}) EXPECT_NEAR(sample(i * 2), a[i * 2] * 32767.0f, 0.51f) << i;
+    EXPECT_NE(error([&] { (void)host.renderSound(0); }).find("must be in (0, 180] s"), std::string::npos);
+    write("nosound/image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }\n");
+    ShadertoyHost none(loadShadertoy((dir_ / "nosound").string()), *context_, small());
+    EXPECT_NE(error([&] { (void)none.renderSound(1); }).find("has no sound pass"), std::string::npos);
 }
 
 // A folder saved with ShaderToy's tab names is a program too.
@@ -747,7 +786,8 @@ TEST_F(Shadertoy, BadProgramsAreRefusedNamingTheFileAndLine) {
     EXPECT_NE(e.find("a volume or cubemap channel on ShaderToy: give a volume as"), std::string::npos) << e;
     write("sound/image.glsl", "vec2 mainSound(int s, float t) { return vec2(sin(6.2831 * 440.0 * t)); }\n");
     e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "sound").string()), *context_, small()); });
-    EXPECT_NE(e.find("a sound pass (mainSound) is a ShaderToy feature this host does not run"), std::string::npos) << e;
+    EXPECT_NE(e.find("a sound pass's code (mainSound), which belongs in sound.glsl or the manifest's \"sound\" pass, not a picture pass"),
+              std::string::npos) << e;
     write("nomain/image.glsl", "float f(float x) { return x; }\n");
     e = error([&] { ShadertoyHost host(loadShadertoy((dir_ / "nomain").string()), *context_, small()); });
     EXPECT_NE(e.find("defines no mainImage"), std::string::npos) << e;

@@ -131,6 +131,19 @@ std::string channelDeclarations(const ShadertoyPass& pass) {
     return s;
 }
 
+// The Sound pass's wrapper: the texel (x, y) of a 512 × 512 block is sample
+// block + 512 y + x, at time sample / iSampleRate (ShaderToy's layout; it
+// plays left and right from red and green). `withIndex`: the pass's
+// mainSound takes the sample number too (ShaderToy since 2020).
+constexpr int kSoundBlock = 512;
+std::string soundMain(bool withIndex) {
+    return std::string("uniform int stochtexSoundStart;\nvoid main() {\n"
+                       "    int s = stochtexSoundStart + int(gl_FragCoord.y) * 512 + int(gl_FragCoord.x);\n"
+                       "    vec2 v = ") +
+           (withIndex ? "mainSound(s, float(s) / iSampleRate)" : "mainSound(float(s) / iSampleRate)") +
+           ";\n    stochtexFragColour = vec4(v, 0.0, 1.0);\n}\n";
+}
+
 const char* kMain =
     "void main() {\n    vec4 colour = vec4(0.0);\n    mainImage(colour, gl_FragCoord.xy);\n    stochtexFragColour = colour;\n}\n";
 
@@ -377,10 +390,13 @@ std::string firstCompilerError(const std::string& what,
 std::string unsupportedFeature(const std::string& path, const std::string& text, const std::string& common) {
     static const std::regex mainImage(R"(\bvoid\s+mainImage\s*\()");
     static const std::pair<const char*, const char*> kEntryPoints[] = {
-        {R"(\bmainSound\s*\()", "a sound pass (mainSound)"},
+        {R"(\bmainSound\s*\()", "a sound pass's code (mainSound), which belongs in sound.glsl or the manifest's "
+                                  "\"sound\" pass, not"},
         {R"(\bmainCubemap\s*\()", "a cubemap pass (Cube A, mainCubemap)"},
         {R"(\bmainVR\s*\()", "a VR entry point (mainVR) alone"}};
     if (!std::regex_search(text, mainImage) && !std::regex_search(common, mainImage)) {
+        if (std::regex_search(text, std::regex(kEntryPoints[0].first)))
+            return path + ": " + kEntryPoints[0].second + " a picture pass: a picture pass defines mainImage(out vec4, in vec2)";
         for (const auto& [pattern, what] : kEntryPoints)
             if (std::regex_search(text, std::regex(pattern)))
                 return path + ": " + what + " is a ShaderToy feature this host does not run (docs/SHADERTOY.md lists "
@@ -434,6 +450,7 @@ struct ShadertoyHost::Impl {
         std::array<int, 4> videoFrame{-1, -1, -1, -1};       // the frame each video channel's texture holds
     };
     std::vector<Pass> passes;
+    gl::Program sound;  // the Sound pass's program (0: none)
     std::unique_ptr<GpuView> pattern;  // the stochtex_sample include's textures and parameters
     int channelUnit = 0;               // iChannel0's texture unit
     gl::Texture keyboard;
@@ -697,7 +714,56 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
         }
         m.passes.push_back(std::move(p));
     }
+    if (spec.sound) {
+        const auto code = userFile(spec.sound->code, spec.sound->source);
+        const bool withIndex = std::regex_search(code.second, std::regex(R"(\bmainSound\s*\(\s*(in\s+)?int\b)"));
+        std::vector<std::pair<std::string, std::string>> overrides = sources;
+        overrides.push_back(code);
+        overrides.push_back({"shadertoy_channels", channelDeclarations(*spec.sound)});
+        overrides.push_back({"shadertoy_sound_main", soundMain(withIndex)});
+        std::vector<std::string> files{"shadertoy_prelude", "shadertoy_channels"};
+        if (spec.pattern) files.insert(files.end(), {"colour", "stochtex_pattern"});
+        if (!spec.common.empty()) files.push_back(spec.common.string());
+        files.push_back(code.first);
+        files.push_back("shadertoy_sound_main");
+        try {
+            m.sound = gl::Program(compileProgram({"fullscreen"}, files, overrides));
+        } catch (const ShaderError& e) {
+            throw InputError(spec.name + ": the sound pass does not compile: " + firstCompilerError(e.what(), {code}));
+        }
+    }
     reset(0);
+}
+
+std::vector<float> ShadertoyHost::renderSound(double seconds, const Progress& progress) const {
+    const Impl& m = *impl_;
+    if (!m.spec.sound) throw InputError::parameter("sound", m.spec.name + " has no sound pass (sound.glsl)");
+    if (!(std::isfinite(seconds) && seconds > 0 && seconds <= kMaxSoundSeconds))
+        throw InputError::parameter("soundSeconds", "must be in (0, " + formatValue(kMaxSoundSeconds) + "] s, got " +
+                                                        formatValue(seconds));
+    const long long samples = std::llround(seconds * m.settings.sampleRate);
+    const long long perBlock = kSoundBlock * kSoundBlock;
+    std::vector<float> out(size_t(std::max(samples, 1ll)) * 2);
+    RenderTarget target(kSoundBlock, kSoundBlock, false);
+    const GLuint prog = m.sound.id();
+    glUseProgram(prog);
+    glUniform1f(glGetUniformLocation(prog, "iSampleRate"), float(m.settings.sampleRate));
+    glUniform3f(glGetUniformLocation(prog, "iResolution"), float(kSoundBlock), float(kSoundBlock), 1.0f);
+    for (long long start = 0; start < samples; start += perBlock) {
+        target.bind();
+        glUseProgram(prog);
+        glUniform1i(glGetUniformLocation(prog, "stochtexSoundStart"), GLint(start));
+        glBindVertexArray(m.vao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        const Image block = target.readRgb(RenderTarget::Rows::AsDrawn);  // row y: samples start + 512 y …
+        const long long n = std::min(perBlock, samples - start);
+        for (long long k = 0; k < n; ++k)
+            for (int c = 0; c < 2; ++c)  // played as a browser plays it: clamped to [−1, 1]
+                out[size_t(start + k) * 2 + size_t(c)] = std::clamp(block.data()[size_t(k) * 3 + size_t(c)], -1.0f, 1.0f);
+        if (progress) progress(double(start + n) / double(samples), "sound");
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return out;
 }
 
 ShadertoyHost::~ShadertoyHost() = default;

@@ -48,6 +48,8 @@ struct ShadertoySettings {
 };
 // InputError naming the parameter (width, height, fps, startTime, date, key, input, hwPerformance).
 void validateShadertoySettings(const ShadertoySettings& s);
+// ShaderToy plays at most 180 s of a sound pass.
+constexpr double kMaxSoundSeconds = 180;
 // A program's targets hold at most this many bytes (RGBA32F, two per buffer).
 constexpr long long kMaxShadertoyBytes = 2ll << 30;
 // InputError naming `width` when the program's targets at this size would exceed it.
@@ -98,6 +100,13 @@ public:
     std::array<float, 4> pixel(const std::string& pass, int x, int y) const;
     // The same checks, before any frame is rendered.
     void checkPixel(const std::string& pass, int x, int y) const;
+
+    // The Sound pass's samples for `seconds` from time 0 (ShaderToy renders
+    // its sound ahead, apart from the frames): stereo, interleaved left and
+    // right, iSampleRate (the settings' sampleRate) a second, each clamped
+    // to [−1, 1] as a browser plays it. InputError naming `sound` for a
+    // program without one, `soundSeconds` outside (0, kMaxSoundSeconds].
+    std::vector<float> renderSound(double seconds, const Progress& progress = {}) const;
 
     // The keyboard texture (256 × 3: down, pressed this frame, toggled) and
     // the mouse for the frames to come: a button pressed, dragged and

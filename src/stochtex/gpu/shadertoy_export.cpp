@@ -213,6 +213,13 @@ ShadertoySpec parseShadertoyExport(const JsonReader& r, const fs::path& json, co
             spec.commonSource = p.at("code").string();
             continue;
         }
+        if (type == "sound") {
+            if (spec.sound) p.fail("a second Sound pass");
+            if (p.has("inputs") && p.at("inputs").arraySize() > 0)
+                p.at("inputs").fail("a sound pass reading channels is not supported");
+            spec.sound = ShadertoyPass{"sound", json.string() + " (Sound)", p.at("code").string(), {}};
+            continue;
+        }
         int slot = -1;
         if (type == "image") slot = 4;
         else if (type == "buffer") {
@@ -224,7 +231,7 @@ ShadertoySpec parseShadertoyExport(const JsonReader& r, const fs::path& json, co
             if (slot < 0) p.at("name").fail("a buffer pass is named Buffer A to Buffer D");
         } else {
             p.at("type").fail("a " + type + " pass (" + name + ") is a ShaderToy pass this host does not run yet (it "
-                              "runs Common, Buffer A–D and Image; docs/SHADERTOY.md)");
+                              "runs Common, Buffer A–D, Image and Sound; docs/SHADERTOY.md)");
         }
         if (byOrder[size_t(slot)]) p.fail("a second " + (slot == 4 ? std::string("Image") : "Buffer " + std::string(1, char('A' + slot))) + " pass");
         byOrder[size_t(slot)] = i;
@@ -316,6 +323,8 @@ nlohmann::json shadertoyManifest(const ShadertoySpec& spec, const fs::path& dir,
         if (!channels.empty()) p["channels"] = channels;
         passes[pass.name] = p;
     }
+    if (spec.sound)
+        passes["sound"] = {{"code", codeFiles.count("sound") ? codeFiles.at("sound") : relative(spec.sound->code)}};
     m["passes"] = passes;
     return m;
 }
@@ -335,6 +344,7 @@ std::string convertShadertoy(const ShadertoySpec& spec, const std::string& folde
     if (!spec.common.empty() && !spec.commonSource.empty()) add("common", "common.glsl", spec.commonSource);
     for (const ShadertoyPass& pass : spec.passes)
         if (!pass.source.empty()) add(pass.name, pass.name + ".glsl", pass.source);
+    if (spec.sound && !spec.sound->source.empty()) add("sound", "sound.glsl", spec.sound->source);
     const fs::path manifest = fs::path(folder) / "shadertoy.json";
     writes.emplace_back(manifest, shadertoyManifest(spec, folder, codeFiles).dump(2) + "\n");
     for (const auto& [path, text] : writes)

@@ -124,7 +124,7 @@ ShadertoySpec parseManifest(const JsonReader& r, const fs::path& baseDir) {
         requireFile(spec.common, "common file");
     }
     const JsonReader passes = r.at("passes");
-    passes.expectObject({"buffer_a", "buffer_b", "buffer_c", "buffer_d", "image"});
+    passes.expectObject({"buffer_a", "buffer_b", "buffer_c", "buffer_d", "image", "sound"});
     if (!passes.has("image")) passes.fail("needs an \"image\" pass");
     for (const char* name : shadertoyPassNames()) {
         const auto p = passes.find(name);
@@ -141,6 +141,15 @@ ShadertoySpec parseManifest(const JsonReader& r, const fs::path& baseDir) {
                 if (!channels->at(i).value().is_null()) pass.channels[i] = parseChannel(channels->at(i), baseDir);
         }
         spec.passes.push_back(std::move(pass));
+    }
+    if (const auto p = passes.find("sound")) {
+        p->expectObject({"code", "channels"});
+        if (p->has("channels")) p->at("channels").fail("a sound pass reads no channels here (ShaderToy's may)");
+        ShadertoyPass pass;
+        pass.name = "sound";
+        pass.code = resolveInputPath(p->at("code"), baseDir);
+        requireFile(pass.code, "pass file");
+        spec.sound = std::move(pass);
     }
     // Buffers read must exist; a "current" read must run before its reader.
     for (const ShadertoyPass& pass : spec.passes)
@@ -232,6 +241,7 @@ ShadertoySpec loadShadertoy(const std::string& path, const std::string& mediaDir
             if (code.empty()) continue;
             spec.passes.push_back({shadertoyPassNames()[k], code, "", {}});
         }
+        if (const fs::path sound = file("sound", "Sound"); !sound.empty()) spec.sound = ShadertoyPass{"sound", sound, "", {}};
         if (spec.passes.empty() || spec.passes.back().name != "image")
             throw InputError(path + ": a ShaderToy folder needs image.glsl (and optionally common.glsl, "
                                     "buffer_a.glsl … buffer_d.glsl, shadertoy.json; or ShaderToy's tab names, "

@@ -7,14 +7,15 @@
 // (gpu/shadertoy.h) runs it.
 //
 // A program is a folder or a manifest:
-// * a folder holds image.glsl, and optionally common.glsl and
-//   buffer_a.glsl … buffer_d.glsl; its passes read no channels unless the
+// * a folder holds image.glsl, and optionally common.glsl,
+//   buffer_a.glsl … buffer_d.glsl and sound.glsl; its passes read no channels unless the
 //   folder also holds shadertoy.json, which is then the manifest;
 // * a manifest (a .json file) names the files, relative to itself:
 //   { "name": "…",
 //     "common": "common.glsl",
 //     "passes": { "buffer_a": { "code": "a.glsl", "channels": [CHANNEL, …] },
-//                 "image":    { "code": "image.glsl", "channels": [ … ] } },
+//                 "image":    { "code": "image.glsl", "channels": [ … ] },
+//                 "sound":    { "code": "sound.glsl" } },
 //     "uniforms": { "uGain": {"type": "float", "value": 0.5}, … },
 //     "instance": "uInstance",
 //     "pattern": { "preset": "marble" | "file": "p.json", "filter": "smooth" } }
@@ -109,6 +110,10 @@ struct ShadertoySpec {
     std::filesystem::path common;       // empty: none
     std::string commonSource;           // Common's code when embedded in an export (empty: read `common`)
     std::vector<ShadertoyPass> passes;  // the buffers present, in order A–D, then the image pass (last)
+    // The Sound pass (ShaderToy's `vec2 mainSound(int sample, float time)`,
+    // or the older `vec2 mainSound(float time)`), rendered apart from the
+    // frames: ShadertoyHost::renderSound.
+    std::optional<ShadertoyPass> sound;
     std::vector<ShadertoyUniform> uniforms;
     std::string instanceUniform;  // empty: none
     std::optional<PatternSpec> pattern;  // the stochtex_sample include's pattern
