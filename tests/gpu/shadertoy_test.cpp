@@ -484,8 +484,8 @@ TEST_F(Shadertoy, ExportedShaderRunsAndConvertsToAManifest) {
     e = exportError(imagePass + R"(, "inputs": [{"id": 5, "src": "", "ctype": "webcam", "channel": 0}]})");
     EXPECT_NE(e.find("/Shader/renderpass/0/inputs/0/ctype: a webcam input is a ShaderToy input this host does not support"),
               std::string::npos) << e;
-    e = exportError(imagePass + "}, " + R"({"type": "cubemap", "name": "Cube A", "code": "void mainCubemap(out vec4 c, in vec2 p, in vec3 o, in vec3 d) {}"})");
-    EXPECT_NE(e.find("/Shader/renderpass/1/type: a cubemap pass (Cube A) is a ShaderToy pass this host does not run"),
+    e = exportError(imagePass + "}, " + R"({"type": "vr", "name": "VR", "code": ""})");
+    EXPECT_NE(e.find("/Shader/renderpass/1/type: a vr pass (VR) is a ShaderToy pass this host does not run"),
               std::string::npos) << e;
     e = exportError(imagePass + R"(, "inputs": [{"id": 8, "src": "/media/a/52d2a8f514c4fd2d9866587f4d7b2a5bfa1a11a0e772077d7682deb8b3b517e5.jpg", "ctype": "texture", "channel": 1}]})");
     EXPECT_NE(e.find("put its file (52d2a8f514c4fd2d9866587f4d7b2a5bfa1a11a0e772077d7682deb8b3b517e5.jpg) in"),
@@ -638,6 +638,41 @@ TEST_F(Shadertoy, SoundPassRendersSamplesInOrderAndATone) {
     write("nosound/image.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.0); }\n");
     ShadertoyHost none(loadShadertoy((dir_ / "nosound").string()), *context_, small());
     EXPECT_NE(error([&] { (void)none.renderSound(1); }).find("has no sound pass"), std::string::npos);
+}
+
+// Cube A renders a cube map face by face, each fragment given the ray
+// direction that samples it back (so a texel's value written along rayDir
+// is read along rayDir), with feedback from its previous frame like a
+// buffer: after 3 frames each texel holds 3 · (rayDir, 1).
+TEST_F(Shadertoy, CubePassRendersTheDirectionsItIsReadAlongWithFeedback) {
+    write("cubea/cube.glsl", R"(void mainCubemap(out vec4 c, in vec2 fragCoord, in vec3 rayOri, in vec3 rayDir) {
+        c = texture(iChannel0, rayDir) + vec4(rayDir, 1.0) + vec4(0.0 * rayOri, 0.0);
+    })");
+    write("cubea/image.glsl", R"(void mainImage(out vec4 c, in vec2 p) {
+        vec3 d = int(p.x) == 0 ? vec3(1.0, 0.375, -0.375) : int(p.x) == 1 ? vec3(0.375, 0.375, 1.0) : vec3(-0.125, -1.0, 0.625);
+        c = int(p.x) == 3 ? vec4(iChannelResolution[0], 0.0) : texture(iChannel0, d);
+    })");
+    write("cubea/shadertoy.json", R"({"passes": {
+        "cube_a": {"code": "cube.glsl", "size": 8, "channels": [{"type": "cube_a", "filter": "nearest"}]},
+        "image": {"code": "image.glsl", "channels": [{"type": "cube_a", "filter": "nearest"}]}}})");
+    const ShadertoySpec spec = loadShadertoy((dir_ / "cubea").string());
+    ASSERT_EQ(spec.passes.size(), 2u);
+    EXPECT_EQ(spec.passes[0].name, "cube_a");
+    ShadertoyHost host(spec, *context_, small(4, 1));
+    for (int k = 0; k < 3; ++k) host.renderFrame();
+    // Texel centres of faces +x, +z and −y of an 8² face: (a, b) = (±0.375, ±0.375) and (−0.125, 0.625).
+    const float dirs[3][3] = {{1.0f, 0.375f, -0.375f}, {0.375f, 0.375f, 1.0f}, {-0.125f, -1.0f, 0.625f}};
+    for (int k = 0; k < 3; ++k) {
+        const float* d = dirs[k];
+        const float n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        expectPixel(host.pixel("image", k, 0), {3 * d[0] / n, 3 * d[1] / n, 3 * d[2] / n, 3.0f}, 1e-4f,
+                    "direction " + std::to_string(k));
+    }
+    expectPixel(host.pixel("image", 3, 0), {8, 8, 1, 0}, 0, "iChannelResolution");
+    EXPECT_NE(error([&] { host.checkPixel("cube_a", 0, 0); }).find("a cube map, not a frame"), std::string::npos);
+    host.reset();
+    host.renderFrame();
+    EXPECT_NEAR(host.pixel("image", 0, 0)[3], 1.0f, 1e-6f);  // cleared on reset
 }
 
 // A folder saved with ShaderToy's tab names is a program too.

@@ -55,7 +55,9 @@ void validateShadertoySettings(const ShadertoySettings& s) {
 void checkShadertoyMemory(const ShadertoySpec& spec, const ShadertoySettings& s) {
     // Two RGBA32F targets per buffer, one for the image; a third more with mipmaps.
     const double frame = double(s.width) * s.height * 16.0 * 4.0 / 3.0;
-    const double bytes = frame * double(2 * (int(spec.passes.size()) - 1) + 1);
+    const bool cube = spec.bufferPass(4) >= 0;
+    const double cubeBytes = cube ? 2.0 * 6.0 * double(spec.cubeSize) * spec.cubeSize * 16.0 * 4.0 / 3.0 : 0.0;
+    const double bytes = frame * double(2 * (int(spec.passes.size()) - (cube ? 2 : 1)) + 1) + cubeBytes;
     if (bytes > double(kMaxShadertoyBytes))
         throw InputError::parameter("width", "the " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                                                  " frame's buffers would take " + formatValue(bytes / (1 << 20)) +
@@ -124,9 +126,11 @@ std::string channelDeclarations(const ShadertoyPass& pass) {
     std::string s;
     for (size_t i = 0; i < 4; ++i)
         s += std::string("uniform ") +
-             (pass.channels[i].kind == ShadertoyChannel::Kind::Volume    ? "sampler3D"
-              : pass.channels[i].kind == ShadertoyChannel::Kind::Cubemap ? "samplerCube"
-                                                                         : "sampler2D") +
+             (pass.channels[i].kind == ShadertoyChannel::Kind::Volume ? "sampler3D"
+              : pass.channels[i].kind == ShadertoyChannel::Kind::Cubemap ||
+                      pass.channels[i].kind == ShadertoyChannel::Kind::CubePass
+                  ? "samplerCube"
+                  : "sampler2D") +
              " iChannel" + std::to_string(i) + ";\n";
     return s;
 }
@@ -143,6 +147,24 @@ std::string soundMain(bool withIndex) {
            (withIndex ? "mainSound(s, float(s) / iSampleRate)" : "mainSound(float(s) / iSampleRate)") +
            ";\n    stochtexFragColour = vec4(v, 0.0, 1.0);\n}\n";
 }
+
+// Cube A's wrapper: the face drawn (0–5: +x, −x, +y, −y, +z, −z) and the
+// fragment's place on it give the ray's direction as GL's cube map
+// selection reads it back (cubeDirection on the CPU), from the origin.
+const char* kCubeMain =
+    "uniform int stochtexCubeFace;\n"
+    "vec3 stochtexCubeDirection(int face, vec2 st) {\n"
+    "    float a = 2.0 * st.x - 1.0, b = 2.0 * st.y - 1.0;\n"
+    "    if (face == 0) return vec3(1.0, -b, -a);\n"
+    "    if (face == 1) return vec3(-1.0, -b, a);\n"
+    "    if (face == 2) return vec3(a, 1.0, b);\n"
+    "    if (face == 3) return vec3(a, -1.0, -b);\n"
+    "    if (face == 4) return vec3(a, -b, 1.0);\n"
+    "    return vec3(-a, -b, -1.0);\n"
+    "}\n"
+    "void main() {\n    vec4 colour = vec4(0.0);\n"
+    "    vec3 dir = normalize(stochtexCubeDirection(stochtexCubeFace, gl_FragCoord.xy / iResolution.xy));\n"
+    "    mainCubemap(colour, gl_FragCoord.xy, vec3(0.0), dir);\n    stochtexFragColour = colour;\n}\n";
 
 const char* kMain =
     "void main() {\n    vec4 colour = vec4(0.0);\n    mainImage(colour, gl_FragCoord.xy);\n    stochtexFragColour = colour;\n}\n";
@@ -286,6 +308,19 @@ gl::Texture cubeTexture(const std::array<Image, 6>& faces, bool mipmaps) {
     return t;
 }
 
+// Cube A's target: an RGBA32F cube map of size² faces (zeros), mipmaps when read so.
+gl::Texture cubeTarget(int size, bool mipmaps) {
+    gl::Texture t = gl::newTexture();
+    glBindTexture(GL_TEXTURE_CUBE_MAP, t.id());
+    for (int f = 0; f < 6; ++f)
+        glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA32F, size, size, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, mipmaps ? 1000 : 0);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    if (mipmaps) glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    return t;
+}
+
 // A cubemap channel's faces: six images as a browser uploads them (square,
 // one size), or an equirectangular image resampled onto faces of a quarter
 // of its width. InputError naming the file.
@@ -392,11 +427,13 @@ std::string unsupportedFeature(const std::string& path, const std::string& text,
     static const std::pair<const char*, const char*> kEntryPoints[] = {
         {R"(\bmainSound\s*\()", "a sound pass's code (mainSound), which belongs in sound.glsl or the manifest's "
                                   "\"sound\" pass, not"},
-        {R"(\bmainCubemap\s*\()", "a cubemap pass (Cube A, mainCubemap)"},
+        {R"(\bmainCubemap\s*\()", "a cubemap pass's code (mainCubemap), which belongs in cube_a.glsl or the "
+                                    "manifest's \"cube_a\" pass, not"},
         {R"(\bmainVR\s*\()", "a VR entry point (mainVR) alone"}};
     if (!std::regex_search(text, mainImage) && !std::regex_search(common, mainImage)) {
-        if (std::regex_search(text, std::regex(kEntryPoints[0].first)))
-            return path + ": " + kEntryPoints[0].second + " a picture pass: a picture pass defines mainImage(out vec4, in vec2)";
+        for (int k = 0; k < 2; ++k)  // a sound or cube pass's code in a picture pass
+            if (std::regex_search(text, std::regex(kEntryPoints[k].first)))
+                return path + ": " + kEntryPoints[k].second + " a picture pass: a picture pass defines mainImage(out vec4, in vec2)";
         for (const auto& [pattern, what] : kEntryPoints)
             if (std::regex_search(text, std::regex(pattern)))
                 return path + ": " + what + " is a ShaderToy feature this host does not run (docs/SHADERTOY.md lists "
@@ -448,6 +485,10 @@ struct ShadertoyHost::Impl {
         std::array<std::array<int, 3>, 4> inputSize{};
         std::array<std::unique_ptr<VideoReader>, 4> videos;  // video channels' files, the frame shown decoded
         std::array<int, 4> videoFrame{-1, -1, -1, -1};       // the frame each video channel's texture holds
+        // Cube A: two cube maps (RGBA32F faces), drawn face by face through one framebuffer.
+        bool cube = false;
+        std::array<gl::Texture, 2> cubeTargets;
+        gl::Framebuffer cubeFramebuffer;
     };
     std::vector<Pass> passes;
     gl::Program sound;  // the Sound pass's program (0: none)
@@ -476,6 +517,16 @@ struct ShadertoyHost::Impl {
     // that has not run yet sees zeros, not a previous run's levels).
     void clearTargets() {
         const float zero[4] = {0, 0, 0, 0};
+        for (Pass& p : passes)
+            if (p.cube)
+                for (const gl::Texture& t : p.cubeTargets) {
+                    const std::vector<float> zeros(size_t(spec.cubeSize) * spec.cubeSize * 4, 0.0f);
+                    glBindTexture(GL_TEXTURE_CUBE_MAP, t.id());
+                    for (int f = 0; f < 6; ++f)
+                        glTexSubImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, 0, 0, spec.cubeSize, spec.cubeSize,
+                                        GL_RGBA, GL_FLOAT, zeros.data());
+                    if (p.mipmaps) glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+                }
         for (Pass& p : passes)
             for (const RenderTarget& t : p.targets) {
                 glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer());
@@ -519,6 +570,12 @@ struct ShadertoyHost::Impl {
             case ShadertoyChannel::Kind::Noise: return {pass.inputs[i].id(), GL_TEXTURE_2D, pass.inputSize[i]};
             case ShadertoyChannel::Kind::Volume: return {pass.inputs[i].id(), GL_TEXTURE_3D, pass.inputSize[i]};
             case ShadertoyChannel::Kind::Cubemap: return {pass.inputs[i].id(), GL_TEXTURE_CUBE_MAP, pass.inputSize[i]};
+            case ShadertoyChannel::Kind::CubePass: {
+                const Pass& c = passes[size_t(spec.bufferPass(4))];
+                const bool other = ch.frame == ShadertoyChannel::Frame::Previous && c.renderedThisFrame;
+                return {c.cubeTargets[size_t(other ? 1 - c.latest : c.latest)].id(), GL_TEXTURE_CUBE_MAP,
+                        {spec.cubeSize, spec.cubeSize, 1}};
+            }
         }
         return {};
     }
@@ -543,13 +600,19 @@ struct ShadertoyHost::Impl {
         Pass& pass = passes[p];
         const bool buffer = spec.passes[p].name != "image";
         const int write = buffer ? 1 - pass.latest : 0;
-        pass.targets[size_t(write)].bind();
+        if (pass.cube) {
+            glBindFramebuffer(GL_FRAMEBUFFER, pass.cubeFramebuffer.id());
+            glViewport(0, 0, spec.cubeSize, spec.cubeSize);
+        } else {
+            pass.targets[size_t(write)].bind();
+        }
         const GLuint prog = pass.program.id();
         if (pattern) pattern->bind(prog);  // units 0–15 and the parameter block
         glUseProgram(prog);
         const auto loc = [&](const char* name) { return glGetUniformLocation(prog, name); };
         const float t = float(time());
-        glUniform3f(loc("iResolution"), float(settings.width), float(settings.height), 1.0f);
+        if (pass.cube) glUniform3f(loc("iResolution"), float(spec.cubeSize), float(spec.cubeSize), 1.0f);
+        else glUniform3f(loc("iResolution"), float(settings.width), float(settings.height), 1.0f);
         glUniform1f(loc("iTime"), t);
         glUniform1f(loc("iTimeDelta"), float(1.0 / settings.fps));
         glUniform1i(loc("iFrame"), frame);
@@ -588,9 +651,21 @@ struct ShadertoyHost::Impl {
         glUniform3fv(loc("iChannelResolution"), 4, resolutions);
         glUniform1fv(loc("iChannelTime"), 4, times);
         glBindVertexArray(vao.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (pass.cube) {
+            for (int face = 0; face < 6; ++face) {
+                glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face),
+                                       pass.cubeTargets[size_t(write)].id(), 0);
+                glUniform1i(loc("stochtexCubeFace"), face);
+                glDrawArrays(GL_TRIANGLES, 0, 3);
+            }
+        } else {
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
         for (GLuint i = 0; i < 4; ++i) glBindSampler(GLuint(channelUnit) + i, 0);
-        if (pass.mipmaps) {
+        if (pass.mipmaps && pass.cube) {
+            glBindTexture(GL_TEXTURE_CUBE_MAP, pass.cubeTargets[size_t(write)].id());
+            glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+        } else if (pass.mipmaps) {
             glBindTexture(GL_TEXTURE_2D, pass.targets[size_t(write)].texture());
             glGenerateMipmap(GL_TEXTURE_2D);
         }
@@ -644,13 +719,16 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
     std::vector<std::pair<std::string, std::string>> sources{
         {"shadertoy_prelude", prelude(spec, settings, legacyAliases(texts))},
         {"shadertoy_main", kMain},
+        {"shadertoy_cube_main", kCubeMain},
         {"stochtex_pattern", include}};
     if (!spec.common.empty()) sources.push_back(userFiles.front());
     // Which buffers some channel reads with mipmaps.
-    std::array<bool, 4> mipmapped{};
+    std::array<bool, 5> mipmapped{};  // buffers A–D, Cube A
     for (const ShadertoyPass& pass : spec.passes)
         for (const ShadertoyChannel& ch : pass.channels)
-            if (ch.kind == ShadertoyChannel::Kind::Buffer && ch.filter == ChannelFilter::Mipmap) mipmapped[size_t(ch.buffer)] = true;
+            if ((ch.kind == ShadertoyChannel::Kind::Buffer || ch.kind == ShadertoyChannel::Kind::CubePass) &&
+                ch.filter == ChannelFilter::Mipmap)
+                mipmapped[size_t(ch.buffer)] = true;
     for (size_t k = 0; k < spec.passes.size(); ++k) {
         const ShadertoyPass& pass = spec.passes[k];
         Impl::Pass p;
@@ -661,21 +739,32 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
         if (spec.pattern) files.insert(files.end(), {"colour", "stochtex_pattern"});
         if (!spec.common.empty()) files.push_back(spec.common.string());
         files.push_back(pass.code.string());
-        files.push_back("shadertoy_main");
+        files.push_back(pass.name == "cube_a" ? "shadertoy_cube_main" : "shadertoy_main");
         try {
             p.program = gl::Program(compileProgram({"fullscreen"}, files, overrides));
         } catch (const ShaderError& e) {
             // A feature the host lacks is named as such; otherwise the compiler's first error.
             const std::string& code = userFiles[k + (spec.common.empty() ? 0 : 1)].second;
-            if (const std::string why = unsupportedFeature(pass.code.string(), code,
-                                                           spec.common.empty() ? "" : userFiles.front().second);
+            if (pass.name == "cube_a" && !std::regex_search(code, std::regex(R"(\bmainCubemap\s*\()")))
+                throw InputError(spec.name + ": pass cube_a: " + pass.code.string() +
+                                 ": defines no mainCubemap(out vec4 fragColor, in vec2 fragCoord, in vec3 rayOri, in "
+                                 "vec3 rayDir), Cube A's entry point");
+            if (const std::string why = pass.name == "cube_a" ? ""
+                                        : unsupportedFeature(pass.code.string(), code,
+                                                             spec.common.empty() ? "" : userFiles.front().second);
                 !why.empty())
                 throw InputError(spec.name + ": pass " + pass.name + ": " + why);
             throw InputError(spec.name + ": pass " + pass.name + " does not compile: " + firstCompilerError(e.what(), userFiles));
         }
-        const int buffer = pass.name == "image" ? -1 : pass.name.back() - 'a';
+        const int buffer = pass.name == "image" ? -1 : pass.name == "cube_a" ? 4 : pass.name.back() - 'a';
         p.mipmaps = buffer >= 0 && mipmapped[size_t(buffer)];
-        for (int t = 0; t < (buffer >= 0 ? 2 : 1); ++t) p.targets.push_back(m.newTarget(p.mipmaps));
+        p.cube = buffer == 4;
+        if (p.cube) {
+            for (gl::Texture& t : p.cubeTargets) t = cubeTarget(spec.cubeSize, p.mipmaps);
+            p.cubeFramebuffer = gl::newFramebuffer();
+        } else {
+            for (int t = 0; t < (buffer >= 0 ? 2 : 1); ++t) p.targets.push_back(m.newTarget(p.mipmaps));
+        }
         for (size_t i = 0; i < 4; ++i) {
             const ShadertoyChannel& ch = pass.channels[i];
             GLuint id = 0;
@@ -872,6 +961,8 @@ void ShadertoyHost::checkPixel(const std::string& pass, int x, int y) const {
         for (const ShadertoyPass& p : m.spec.passes) names += (names.empty() ? "" : ", ") + p.name;
         throw InputError::parameter("pass", "\"" + pass + "\" names no pass of " + m.spec.name + " (it has " + names + ")");
     }
+    if (pass == "cube_a")
+        throw InputError::parameter("pass", "\"cube_a\" is a cube map, not a frame: inspect a pass that reads it");
     if (x < 0 || y < 0 || x >= m.settings.width || y >= m.settings.height)
         throw InputError::parameter("pixel", "(" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
                                                  std::to_string(m.settings.width) + "x" + std::to_string(m.settings.height) + " frame");

@@ -41,7 +41,8 @@ constexpr BuiltinMedia kBuiltinVolumes[] = {
 // The ids ShaderToy gives the buffers' outputs (numbers in older exports).
 const std::map<std::string, int>& knownBufferIds() {
     static const std::map<std::string, int> ids{{"257", 0},    {"258", 1},    {"259", 2},    {"260", 3},
-                                                {"4dXGR8", 0}, {"XsXGR8", 1}, {"4sXGR8", 2}, {"XdfGR8", 3}};
+                                                {"4dXGR8", 0}, {"XsXGR8", 1}, {"4sXGR8", 2}, {"XdfGR8", 3},
+                                                {"4dX3Rr", 4}};  // Cube A
     return ids;
 }
 
@@ -64,6 +65,11 @@ bool flag(const JsonReader& r) {
 int bufferOfName(const std::string& name) {
     if (name.size() == 8 && name.starts_with("Buffer ") && name[7] >= 'A' && name[7] <= 'D') return name[7] - 'A';
     return -1;
+}
+
+// ShaderToy's tab name of pass slot k (0–3 buffers, 4 Cube A, 5 Image).
+std::string passTitle(int slot) {
+    return slot == 5 ? "Image" : slot == 4 ? "Cube A" : "Buffer " + std::string(1, char('A' + slot));
 }
 
 std::string fileName(const std::string& src) {
@@ -93,7 +99,7 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
         const std::string file = fileName(src);  // "/media/previz/buffer00.png" is Buffer A's preview
         if (buffer < 0 && file.size() == 12 && file.starts_with("buffer0") && file[7] >= '0' && file[7] <= '3')
             buffer = file[7] - '0';
-        if (buffer < 0) in.fail("a buffer input whose id names none of the program's buffers");
+        if (buffer < 0 || buffer > 3) in.fail("a buffer input whose id names none of the program's buffers");
         ch.buffer = buffer;
     } else if (type == "keyboard") {
         ch.kind = ShadertoyChannel::Kind::Keyboard;
@@ -125,6 +131,11 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
         if (file.empty() || !fs::is_regular_file(ch.image, ec))
             in.fail("the video \"" + src + "\" is read from its file; put " + (file.empty() ? "it" : file) + " in " +
                     x.mediaDir.string() + " (or give the program another media folder)");
+    } else if (type == "cubemap" && in.has("id") && x.bufferIds.count(text(in.at("id"))) &&
+               x.bufferIds.at(text(in.at("id"))) == 4) {
+        ch.kind = ShadertoyChannel::Kind::CubePass;  // the Cube A pass's output
+        ch.buffer = 4;
+        ch.filter = ChannelFilter::Mipmap;
     } else if (type == "cubemap") {
         // ShaderToy stores a cubemap's faces as FILE.ext, FILE_1.ext … FILE_5.ext (+x, −x, +y, −y, +z, −z).
         const std::string file = fileName(src);
@@ -202,7 +213,7 @@ ShadertoySpec parseShadertoyExport(const JsonReader& r, const fs::path& json, co
     spec.name = exportName(r);
     if (spec.name.empty()) spec.name = json.stem().string();
     // The buffers first: their output ids name them in the inputs.
-    std::array<std::optional<size_t>, 5> byOrder;  // buffer_a … buffer_d, image: the renderpass index
+    std::array<std::optional<size_t>, 6> byOrder;  // buffer_a … buffer_d, cube_a, image: the renderpass index
     for (size_t i = 0; i < n; ++i) {
         const JsonReader p = passes.at(i);
         const std::string type = p.at("type").string();
@@ -221,32 +232,33 @@ ShadertoySpec parseShadertoyExport(const JsonReader& r, const fs::path& json, co
             continue;
         }
         int slot = -1;
-        if (type == "image") slot = 4;
+        if (type == "image") slot = 5;
+        else if (type == "cubemap") slot = 4;
         else if (type == "buffer") {
             slot = bufferOfName(name);
             if (slot < 0 && p.has("outputs") && p.at("outputs").arraySize() > 0 && p.at("outputs").at(size_t(0)).has("id")) {
                 const auto k = knownBufferIds().find(text(p.at("outputs").at(size_t(0)).at("id")));
-                if (k != knownBufferIds().end()) slot = k->second;
+                if (k != knownBufferIds().end() && k->second < 4) slot = k->second;
             }
             if (slot < 0) p.at("name").fail("a buffer pass is named Buffer A to Buffer D");
         } else {
             p.at("type").fail("a " + type + " pass (" + name + ") is a ShaderToy pass this host does not run yet (it "
-                              "runs Common, Buffer A–D, Image and Sound; docs/SHADERTOY.md)");
+                              "runs Common, Buffer A–D, Cube A, Image and Sound; docs/SHADERTOY.md)");
         }
-        if (byOrder[size_t(slot)]) p.fail("a second " + (slot == 4 ? std::string("Image") : "Buffer " + std::string(1, char('A' + slot))) + " pass");
+        if (byOrder[size_t(slot)]) p.fail("a second " + passTitle(slot) + " pass");
         byOrder[size_t(slot)] = i;
-        if (slot < 4)
+        if (slot < 5)
             if (const auto outs = p.find("outputs"))
                 for (size_t k = 0; k < outs->arraySize(); ++k)
                     if (outs->at(k).has("id")) x.bufferIds[text(outs->at(k).at("id"))] = slot;
     }
-    if (!byOrder[4]) passes.fail("needs an Image pass");
-    for (size_t slot = 0; slot < 5; ++slot) {
+    if (!byOrder[5]) passes.fail("needs an Image pass");
+    for (size_t slot = 0; slot < 6; ++slot) {
         if (!byOrder[slot]) continue;
         const JsonReader p = passes.at(*byOrder[slot]);
         ShadertoyPass pass;
         pass.name = shadertoyPassNames()[slot];
-        const std::string title = slot == 4 ? "Image" : "Buffer " + std::string(1, char('A' + slot));
+        const std::string title = passTitle(int(slot));
         pass.code = json.string() + " (" + title + ")";
         pass.source = p.at("code").string();
         if (const auto inputs = p.find("inputs"))
@@ -266,8 +278,9 @@ ShadertoySpec parseShadertoyExport(const JsonReader& r, const fs::path& json, co
     }
     for (const ShadertoyPass& pass : spec.passes)
         for (const ShadertoyChannel& ch : pass.channels)
-            if (ch.kind == ShadertoyChannel::Kind::Buffer && spec.bufferPass(ch.buffer) < 0)
-                throw InputError(json.string() + ": pass " + pass.name + " reads buffer_" + char('a' + ch.buffer) +
+            if ((ch.kind == ShadertoyChannel::Kind::Buffer || ch.kind == ShadertoyChannel::Kind::CubePass) &&
+                spec.bufferPass(ch.buffer) < 0)
+                throw InputError(json.string() + ": pass " + pass.name + " reads " + shadertoyPassNames()[size_t(ch.buffer)] +
                                  ", which the export lacks");
     return spec;
 }
@@ -301,6 +314,11 @@ nlohmann::json shadertoyManifest(const ShadertoySpec& spec, const fs::path& dir,
                     c = {{"type", "video"}, {"path", relative(ch.image)}, {"loop", ch.loop}, {"vflip", ch.vflip}};
                     break;
                 case ShadertoyChannel::Kind::Keyboard: c = {{"type", "keyboard"}}; break;
+                case ShadertoyChannel::Kind::CubePass:
+                    c = {{"type", "cube_a"}};
+                    if (ch.frame != ShadertoyChannel::Frame::Latest)
+                        c["frame"] = ch.frame == ShadertoyChannel::Frame::Previous ? "previous" : "current";
+                    break;
                 case ShadertoyChannel::Kind::Cubemap:
                     c = {{"type", "cubemap"}};
                     if (!ch.image.empty()) c["equirect"] = relative(ch.image);
@@ -321,6 +339,7 @@ nlohmann::json shadertoyManifest(const ShadertoySpec& spec, const fs::path& dir,
         while (!channels.empty() && channels.back().is_null()) channels.erase(channels.end() - 1);
         json p{{"code", codeFiles.count(pass.name) ? codeFiles.at(pass.name) : relative(pass.code)}};
         if (!channels.empty()) p["channels"] = channels;
+        if (pass.name == "cube_a") p["size"] = spec.cubeSize;
         passes[pass.name] = p;
     }
     if (spec.sound)

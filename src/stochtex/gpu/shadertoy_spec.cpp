@@ -13,8 +13,8 @@ namespace stochtex {
 
 namespace fs = std::filesystem;
 
-const std::array<const char*, 5>& shadertoyPassNames() {
-    static const std::array<const char*, 5> names{"buffer_a", "buffer_b", "buffer_c", "buffer_d", "image"};
+const std::array<const char*, 6>& shadertoyPassNames() {
+    static const std::array<const char*, 6> names{"buffer_a", "buffer_b", "buffer_c", "buffer_d", "cube_a", "image"};
     return names;
 }
 
@@ -26,7 +26,7 @@ int ShadertoySpec::bufferPass(int buffer) const {
 
 namespace {
 
-// The order of a pass in a frame (0–3 buffers, 4 the image).
+// The order of a pass in a frame (0–3 buffers, 4 Cube A, 5 the image).
 int passOrder(const std::string& name) {
     const auto& names = shadertoyPassNames();
     return int(std::find(names.begin(), names.end(), name) - names.begin());
@@ -60,12 +60,14 @@ ShadertoyChannel parseChannel(const JsonReader& c, const fs::path& baseDir) {
         c.at("type").fail("a " + c.at("type").value().get<std::string>() +
                           " channel is a ShaderToy input this host does not support yet (it reads buffer, image, "
                           "keyboard, noise, volume, cubemap and video channels; docs/SHADERTOY.md)");
-    const std::string type = c.at("type").choice({"buffer", "image", "keyboard", "noise", "volume", "cubemap", "video"});
-    if (type == "buffer") {
+    const std::string type =
+        c.at("type").choice({"buffer", "cube_a", "image", "keyboard", "noise", "volume", "cubemap", "video"});
+    if (type == "buffer" || type == "cube_a") {
         c.expectObject({"type", "buffer", "frame", "filter", "wrap"});
-        ch.kind = ShadertoyChannel::Kind::Buffer;
-        const std::string b = c.at("buffer").choice({"a", "b", "c", "d"});
-        ch.buffer = b[0] - 'a';
+        ch.kind = type == "buffer" ? ShadertoyChannel::Kind::Buffer : ShadertoyChannel::Kind::CubePass;
+        if (type == "buffer") ch.buffer = c.at("buffer").choice({"a", "b", "c", "d"})[0] - 'a';
+        else if (c.has("buffer")) c.at("buffer").fail("a cube_a channel reads Cube A; it names no buffer");
+        else ch.buffer = 4;
         const std::string frame = c.choice("frame", std::string("latest"), {"latest", "previous", "current"});
         ch.frame = frame == "latest" ? ShadertoyChannel::Frame::Latest
                    : frame == "previous" ? ShadertoyChannel::Frame::Previous : ShadertoyChannel::Frame::Current;
@@ -124,12 +126,17 @@ ShadertoySpec parseManifest(const JsonReader& r, const fs::path& baseDir) {
         requireFile(spec.common, "common file");
     }
     const JsonReader passes = r.at("passes");
-    passes.expectObject({"buffer_a", "buffer_b", "buffer_c", "buffer_d", "image", "sound"});
+    passes.expectObject({"buffer_a", "buffer_b", "buffer_c", "buffer_d", "cube_a", "image", "sound"});
     if (!passes.has("image")) passes.fail("needs an \"image\" pass");
     for (const char* name : shadertoyPassNames()) {
         const auto p = passes.find(name);
         if (!p) continue;
-        p->expectObject({"code", "channels"});
+        p->expectObject({"code", "channels", "size"});
+        if (p->has("size") && std::string(name) != "cube_a") p->at("size").fail("only Cube A has a size (its faces')");
+        if (p->has("size")) {
+            spec.cubeSize = p->integer("size", 1024, 8, 2048);
+            if ((spec.cubeSize & (spec.cubeSize - 1)) != 0) p->at("size").fail("must be a power of two");
+        }
         ShadertoyPass pass;
         pass.name = name;
         pass.code = resolveInputPath(p->at("code"), baseDir);
@@ -155,10 +162,11 @@ ShadertoySpec parseManifest(const JsonReader& r, const fs::path& baseDir) {
     for (const ShadertoyPass& pass : spec.passes)
         for (size_t i = 0; i < 4; ++i) {
             const ShadertoyChannel& ch = pass.channels[i];
-            if (ch.kind != ShadertoyChannel::Kind::Buffer) continue;
+            if (ch.kind != ShadertoyChannel::Kind::Buffer && ch.kind != ShadertoyChannel::Kind::CubePass) continue;
             const JsonReader at = passes.at(pass.name).at("channels").at(i);
             const std::string buffer = shadertoyPassNames()[size_t(ch.buffer)];
-            if (spec.bufferPass(ch.buffer) < 0) at.at("buffer").fail("the program has no pass \"" + buffer + "\"");
+            if (spec.bufferPass(ch.buffer) < 0)
+                (at.has("buffer") ? at.at("buffer") : at.at("type")).fail("the program has no pass \"" + buffer + "\"");
             if (ch.frame == ShadertoyChannel::Frame::Current && passOrder(buffer) >= passOrder(pass.name))
                 at.at("frame").fail("a pass cycle: \"" + pass.name + "\" reads the current frame of \"" + buffer +
                                     "\", which runs " + (buffer == pass.name ? "as this pass" : "after it") +
@@ -235,8 +243,8 @@ ShadertoySpec loadShadertoy(const std::string& path, const std::string& mediaDir
             return fs::path();
         };
         spec.common = file("common", "Common");
-        static const char* kTabs[] = {"Buffer A", "Buffer B", "Buffer C", "Buffer D", "Image"};
-        for (size_t k = 0; k < 5; ++k) {
+        static const char* kTabs[] = {"Buffer A", "Buffer B", "Buffer C", "Buffer D", "Cube A", "Image"};
+        for (size_t k = 0; k < 6; ++k) {
             const fs::path code = file(shadertoyPassNames()[k], kTabs[k]);
             if (code.empty()) continue;
             spec.passes.push_back({shadertoyPassNames()[k], code, "", {}});

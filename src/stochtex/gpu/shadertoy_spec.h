@@ -14,6 +14,7 @@
 //   { "name": "…",
 //     "common": "common.glsl",
 //     "passes": { "buffer_a": { "code": "a.glsl", "channels": [CHANNEL, …] },
+//                 "cube_a":   { "code": "cube.glsl", "size": 1024, "channels": [ … ] },
 //                 "image":    { "code": "image.glsl", "channels": [ … ] },
 //                 "sound":    { "code": "sound.glsl" } },
 //     "uniforms": { "uGain": {"type": "float", "value": 0.5}, … },
@@ -28,6 +29,7 @@
 //     {"type": "cubemap", "faces": ["px.png", "nx.png", "py.png", "ny.png", "pz.png", "nz.png"]}
 //     {"type": "cubemap", "equirect": "sky.exr"}  (iChannelN is a samplerCube)
 //     {"type": "video", "path": "clip.mp4", "loop": true, "vflip": true}  (the frame at iTime)
+//     {"type": "cube_a", "frame": "latest" | "previous" | "current"}  (the Cube A pass's cube map: a samplerCube)
 //   each with "filter": "nearest" | "linear" | "mipmap" and
 //   "wrap": "clamp" | "repeat" (ShaderToy's defaults: images, noise and
 //   volumes mipmap and repeat, cubemaps mipmap and clamp, videos linear and clamp, buffers linear and clamp, the keyboard nearest and
@@ -41,7 +43,7 @@
 //   fragment's derivatives, filtered ("paper" or "smooth"), linear light
 //   (srgbFromLinear3 turns it into display codes).
 //
-// Passes run in ShaderToy's order, Buffer A to D, then Image. A buffer read
+// Passes run in ShaderToy's order, Buffer A to D, Cube A, then Image. A buffer read
 // as "latest" gives its last output: this frame's when it runs before the
 // reader, the previous frame's otherwise (a pass reading itself: feedback).
 // "previous" always gives the previous frame's; "current" requires the
@@ -71,11 +73,11 @@ enum class ChannelWrap { Clamp, Repeat };
 inline const EnumNames<ChannelWrap> kChannelWrapNames{{"clamp", ChannelWrap::Clamp}, {"repeat", ChannelWrap::Repeat}};
 
 struct ShadertoyChannel {
-    enum class Kind { None, Buffer, Image, Keyboard, Noise, Volume, Cubemap, Video };
+    enum class Kind { None, Buffer, Image, Keyboard, Noise, Volume, Cubemap, Video, CubePass };
     enum class Frame { Latest, Previous, Current };
     Kind kind = Kind::None;
-    int buffer = 0;  // Buffer: 0–3 for A–D
-    Frame frame = Frame::Latest;
+    int buffer = 0;  // Buffer: 0–3 for A–D (CubePass: 4, Cube A)
+    Frame frame = Frame::Latest;  // Buffer, CubePass
     std::filesystem::path image;  // Image, Video (resolved); Cubemap: an equirectangular image, or empty
     bool loop = true;             // Video: from the start again after the last frame, else held there
     std::vector<std::filesystem::path> faces;  // Cubemap: six images, +x, −x, +y, −y, +z, −z
@@ -88,7 +90,7 @@ struct ShadertoyChannel {
 };
 
 struct ShadertoyPass {
-    std::string name;  // buffer_a … buffer_d, image
+    std::string name;  // buffer_a … buffer_d, cube_a, image
     std::filesystem::path code;  // its file; for a pass embedded in a ShaderToy export, its name in messages
     std::string source;          // the code of an embedded pass (empty: read `code`)
     std::array<ShadertoyChannel, 4> channels{};
@@ -109,7 +111,11 @@ struct ShadertoySpec {
     std::string name;
     std::filesystem::path common;       // empty: none
     std::string commonSource;           // Common's code when embedded in an export (empty: read `common`)
-    std::vector<ShadertoyPass> passes;  // the buffers present, in order A–D, then the image pass (last)
+    // The buffers present, in order A–D, Cube A (ShaderToy's `void
+    // mainCubemap(out vec4, in vec2 fragCoord, in vec3 rayOri, in vec3
+    // rayDir)`, rendered to the six faces of a cube map), then the image pass (last).
+    std::vector<ShadertoyPass> passes;
+    int cubeSize = 1024;  // Cube A's face size (ShaderToy's: 1024), a power of two in [8, 2048]
     // The Sound pass (ShaderToy's `vec2 mainSound(int sample, float time)`,
     // or the older `vec2 mainSound(float time)`), rendered apart from the
     // frames: ShadertoyHost::renderSound.
@@ -122,8 +128,9 @@ struct ShadertoySpec {
     int bufferPass(int buffer) const;
 };
 
-// The names of the passes in ShaderToy's order: buffer_a … buffer_d, image.
-const std::array<const char*, 5>& shadertoyPassNames();
+// The names of the passes in ShaderToy's order: buffer_a … buffer_d, cube_a,
+// image (a buffer's index is its channel's `buffer`; Cube A's is 4).
+const std::array<const char*, 6>& shadertoyPassNames();
 
 // Reads a program folder or manifest file. InputError naming the file and,
 // for a manifest, the JSON pointer: a missing or unreadable file, an unknown
