@@ -14,7 +14,7 @@ packages=(
   libglfw3-dev libimgui-dev xvfb xauth libpng-dev libwebp-dev libgif-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libplplot-dev plplot-driver-cairo libpango1.0-dev libcairo2-dev fonts-dejavu-core libjs-chart.js
-  clang-14 libclang-rt-14-dev
+  clang-14 libclang-rt-14-dev clang-format
   chromium
 )
 

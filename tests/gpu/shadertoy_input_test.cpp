@@ -90,8 +90,9 @@ TEST(ShadertoyInput, TimelineReadsFramesAndTimesInOrder) {
         }
         return std::string("(no error)");
     };
-    EXPECT_NE(error(R"([{"frame": 5, "keydown": 1}, {"frame": 3, "keyup": 1}])").find("t.json: /1: frames never go back"),
-              std::string::npos);
+    EXPECT_NE(
+        error(R"([{"frame": 5, "keydown": 1}, {"frame": 3, "keyup": 1}])").find("t.json: /1: frames never go back"),
+        std::string::npos);
     EXPECT_NE(error(R"([{"frame": 5, "keydown": 300}])").find("/0/keydown"), std::string::npos);
     EXPECT_NE(error(R"([{"frame": 5}])").find("a step needs one event"), std::string::npos);
     EXPECT_NE(error(R"([{"frame": 5, "keydown": 1, "mouseup": true}])").find("one event per step"), std::string::npos);

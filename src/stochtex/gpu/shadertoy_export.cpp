@@ -40,9 +40,9 @@ constexpr BuiltinMedia kBuiltinVolumes[] = {
 
 // The ids ShaderToy gives the buffers' outputs (numbers in older exports).
 const std::map<std::string, int>& knownBufferIds() {
-    static const std::map<std::string, int> ids{{"257", 0},    {"258", 1},    {"259", 2},    {"260", 3},
-                                                {"4dXGR8", 0}, {"XsXGR8", 1}, {"4sXGR8", 2}, {"XdfGR8", 3},
-                                                {"4dX3Rr", 4}};  // Cube A
+    static const std::map<std::string, int> ids{{"257", 0},    {"258", 1},    {"259", 2},
+                                                {"260", 3},    {"4dXGR8", 0}, {"XsXGR8", 1},
+                                                {"4sXGR8", 2}, {"XdfGR8", 3}, {"4dX3Rr", 4}};  // Cube A
     return ids;
 }
 
@@ -78,8 +78,8 @@ std::string fileName(const std::string& src) {
 }
 
 struct ExportContext {
-    fs::path json;                     // the export, for messages and embedded passes' names
-    fs::path mediaDir;                 // where media that are not built in are looked for
+    fs::path json;                         // the export, for messages and embedded passes' names
+    fs::path mediaDir;                     // where media that are not built in are looked for
     std::map<std::string, int> bufferIds;  // output id → buffer, from the export's own buffer passes
 };
 
@@ -87,14 +87,18 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
     ShadertoyChannel ch;
     const JsonReader typeReader = in.has("ctype") ? in.at("ctype") : in.at("type");
     const std::string type = typeReader.string();
-    const std::string src = in.has("src") ? in.at("src").string() : in.has("filepath") ? in.at("filepath").string() : "";
+    const std::string src = in.has("src")        ? in.at("src").string()
+                            : in.has("filepath") ? in.at("filepath").string()
+                                                 : "";
     if (type == "buffer") {
         ch.kind = ShadertoyChannel::Kind::Buffer;
         int buffer = -1;
         if (in.has("id")) {
             const std::string id = text(in.at("id"));
-            if (const auto it = x.bufferIds.find(id); it != x.bufferIds.end()) buffer = it->second;
-            else if (const auto k = knownBufferIds().find(id); k != knownBufferIds().end()) buffer = k->second;
+            if (const auto it = x.bufferIds.find(id); it != x.bufferIds.end())
+                buffer = it->second;
+            else if (const auto k = knownBufferIds().find(id); k != knownBufferIds().end())
+                buffer = k->second;
         }
         const std::string file = fileName(src);  // "/media/previz/buffer00.png" is Buffer A's preview
         if (buffer < 0 && file.size() == 12 && file.starts_with("buffer0") && file[7] >= '0' && file[7] <= '3')
@@ -119,8 +123,10 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
             std::error_code ec;
             ch.image = x.mediaDir / file;
             if (file.empty() || !fs::is_regular_file(ch.image, ec))
-                in.fail("the texture \"" + src + "\" is not one of ShaderToy's noise textures the host generates; "
-                        "put its file (" + (file.empty() ? "?" : file) + ") in " + x.mediaDir.string() +
+                in.fail("the texture \"" + src +
+                        "\" is not one of ShaderToy's noise textures the host generates; "
+                        "put its file (" +
+                        (file.empty() ? "?" : file) + ") in " + x.mediaDir.string() +
                         " (or give the program another media folder)");
         }
     } else if (type == "video") {
@@ -140,7 +146,8 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
         // ShaderToy stores a cubemap's faces as FILE.ext, FILE_1.ext … FILE_5.ext (+x, −x, +y, −y, +z, −z).
         const std::string file = fileName(src);
         const size_t dot = file.find_last_of('.');
-        if (file.empty() || dot == std::string::npos) in.fail("a cubemap input needs its \"src\" (the first face's file)");
+        if (file.empty() || dot == std::string::npos)
+            in.fail("a cubemap input needs its \"src\" (the first face's file)");
         ch.kind = ShadertoyChannel::Kind::Cubemap;
         ch.filter = ChannelFilter::Mipmap;
         std::string missing;
@@ -158,7 +165,8 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
         const auto builtin = std::find_if(std::begin(kBuiltinVolumes), std::end(kBuiltinVolumes),
                                           [&](const BuiltinMedia& m) { return file == m.file; });
         if (builtin == std::end(kBuiltinVolumes))
-            in.fail("the volume \"" + src + "\" is not one of ShaderToy's two noise volumes (Grey and RGBA Noise3D), "
+            in.fail("the volume \"" + src +
+                    "\" is not one of ShaderToy's two noise volumes (Grey and RGBA Noise3D), "
                     "which the host generates; other volumes are not supported");
         ch.kind = ShadertoyChannel::Kind::Volume;
         ch.rgbaNoise = builtin->rgba;
@@ -166,7 +174,8 @@ ShadertoyChannel exportChannel(const JsonReader& in, const ExportContext& x) {
         ch.filter = ChannelFilter::Mipmap;
         ch.wrap = ChannelWrap::Repeat;
     } else {
-        typeReader.fail("a " + type + " input is a ShaderToy input this host does not support yet (it reads buffer, "
+        typeReader.fail("a " + type +
+                        " input is a ShaderToy input this host does not support yet (it reads buffer, "
                         "texture, volume, cubemap, video and keyboard inputs; docs/SHADERTOY.md)");
     }
     if (const auto sampler = in.find("sampler")) {
@@ -232,17 +241,21 @@ ShadertoySpec parseShadertoyExport(const JsonReader& r, const fs::path& json, co
             continue;
         }
         int slot = -1;
-        if (type == "image") slot = 5;
-        else if (type == "cubemap") slot = 4;
+        if (type == "image")
+            slot = 5;
+        else if (type == "cubemap")
+            slot = 4;
         else if (type == "buffer") {
             slot = bufferOfName(name);
-            if (slot < 0 && p.has("outputs") && p.at("outputs").arraySize() > 0 && p.at("outputs").at(size_t(0)).has("id")) {
+            if (slot < 0 && p.has("outputs") && p.at("outputs").arraySize() > 0 &&
+                p.at("outputs").at(size_t(0)).has("id")) {
                 const auto k = knownBufferIds().find(text(p.at("outputs").at(size_t(0)).at("id")));
                 if (k != knownBufferIds().end() && k->second < 4) slot = k->second;
             }
             if (slot < 0) p.at("name").fail("a buffer pass is named Buffer A to Buffer D");
         } else {
-            p.at("type").fail("a " + type + " pass (" + name + ") is a ShaderToy pass this host does not run yet (it "
+            p.at("type").fail("a " + type + " pass (" + name +
+                              ") is a ShaderToy pass this host does not run yet (it "
                               "runs Common, Buffer A–D, Cube A, Image and Sound; docs/SHADERTOY.md)");
         }
         if (byOrder[size_t(slot)]) p.fail("a second " + passTitle(slot) + " pass");
@@ -280,8 +293,8 @@ ShadertoySpec parseShadertoyExport(const JsonReader& r, const fs::path& json, co
         for (const ShadertoyChannel& ch : pass.channels)
             if ((ch.kind == ShadertoyChannel::Kind::Buffer || ch.kind == ShadertoyChannel::Kind::CubePass) &&
                 spec.bufferPass(ch.buffer) < 0)
-                throw InputError(json.string() + ": pass " + pass.name + " reads " + shadertoyPassNames()[size_t(ch.buffer)] +
-                                 ", which the export lacks");
+                throw InputError(json.string() + ": pass " + pass.name + " reads " +
+                                 shadertoyPassNames()[size_t(ch.buffer)] + ", which the export lacks");
     return spec;
 }
 
@@ -351,7 +364,8 @@ nlohmann::json shadertoyManifest(const ShadertoySpec& spec, const fs::path& dir,
 std::string convertShadertoy(const ShadertoySpec& spec, const std::string& folder) {
     std::error_code ec;
     if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
-        throw InputError::parameter("output", "\"" + folder + "\" is a file; a converted program is written as a folder");
+        throw InputError::parameter("output",
+                                    "\"" + folder + "\" is a file; a converted program is written as a folder");
     // Every file is named before any is written: a pass's code as <pass>.glsl,
     // Common's as common.glsl, and the manifest; none may be there already.
     std::map<std::string, std::string> codeFiles;
@@ -368,8 +382,10 @@ std::string convertShadertoy(const ShadertoySpec& spec, const std::string& folde
     writes.emplace_back(manifest, shadertoyManifest(spec, folder, codeFiles).dump(2) + "\n");
     for (const auto& [path, text] : writes)
         if (fs::exists(path, ec))
-            throw InputError::parameter("output", path.string() + " exists; a converted program is written into a new folder or one "
-                                                                  "without its files");
+            throw InputError::parameter("output",
+                                        path.string() +
+                                            " exists; a converted program is written into a new folder or one "
+                                            "without its files");
     fs::create_directories(folder, ec);
     if (ec) throw InputError::parameter("output", "cannot create the folder " + folder + " (" + ec.message() + ")");
     for (const auto& [path, text] : writes) writeFileAtomic(path.string(), text);

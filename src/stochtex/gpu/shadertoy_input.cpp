@@ -26,9 +26,10 @@ void validateShadertoyInput(const ShadertoyInput& e) {
     if (key && (e.key < 0 || e.key >= ShadertoyInputState::kKeys))
         throw InputError::parameter("key", "key codes are 0–255 (JavaScript keyCode), got " + std::to_string(e.key));
     if (e.frame < 0 || e.frame > kMaxFrame)
-        throw InputError::parameter("input", "an event's frame must be in [0, 1000000], got " + std::to_string(e.frame));
-    if (isMouse(e.kind) && !(std::isfinite(e.x) && std::isfinite(e.y) && std::abs(e.x) <= kMaxPixels &&
-                             std::abs(e.y) <= kMaxPixels))
+        throw InputError::parameter("input",
+                                    "an event's frame must be in [0, 1000000], got " + std::to_string(e.frame));
+    if (isMouse(e.kind) &&
+        !(std::isfinite(e.x) && std::isfinite(e.y) && std::abs(e.x) <= kMaxPixels && std::abs(e.y) <= kMaxPixels))
         throw InputError::parameter("input", "a mouse position must be finite pixels within ±1e6, got (" +
                                                  formatValue(e.x) + ", " + formatValue(e.y) + ")");
 }
@@ -114,8 +115,9 @@ std::vector<ShadertoyInput> parseShadertoyInputs(const JsonReader& steps, double
                              }
                          }()
                                        : frame;
-        if (at < frame) s.fail("frames never go back: this step is at frame " + std::to_string(at) +
-                               ", after a step at frame " + std::to_string(frame));
+        if (at < frame)
+            s.fail("frames never go back: this step is at frame " + std::to_string(at) + ", after a step at frame " +
+                   std::to_string(frame));
         frame = at;
         ShadertoyInput e;
         e.frame = frame;
@@ -152,9 +154,7 @@ ShadertoyInput parseShadertoyInputText(const std::string& text, double fps, doub
     static const std::regex form(
         R"(((?:\d+)|(?:\d+(?:\.\d*)?|\.\d+)s):(keydown|keyup|mousedown|mousemove|mouseup)(?::([^:]*))?)");
     std::smatch m;
-    const auto bad = [&](const std::string& why) {
-        throw InputError::parameter("event", "\"" + text + "\": " + why);
-    };
+    const auto bad = [&](const std::string& why) { throw InputError::parameter("event", "\"" + text + "\": " + why); };
     if (!std::regex_match(text, m, form))
         bad("expected FRAME:EVENT[:VALUE] (e.g. 12:keydown:32, 0:mousedown:100,50, 1.5s:mouseup), EVENT one of " +
             canonicalNames(kShadertoyInputNames, ", "));

@@ -37,14 +37,14 @@ struct ShadertoyInput {
     enum class Kind { KeyDown, KeyUp, MouseDown, MouseMove, MouseUp };
     int frame = 0;  // happens before this frame (iFrame) renders
     Kind kind = Kind::KeyDown;
-    int key = 0;          // KeyDown, KeyUp: JavaScript keyCode, 0–255
+    int key = 0;         // KeyDown, KeyUp: JavaScript keyCode, 0–255
     float x = 0, y = 0;  // MouseDown, MouseMove: pixels, y up
 };
 inline const EnumNames<ShadertoyInput::Kind> kShadertoyInputNames{{"keydown", ShadertoyInput::Kind::KeyDown},
-                                                                 {"keyup", ShadertoyInput::Kind::KeyUp},
-                                                                 {"mousedown", ShadertoyInput::Kind::MouseDown},
-                                                                 {"mousemove", ShadertoyInput::Kind::MouseMove},
-                                                                 {"mouseup", ShadertoyInput::Kind::MouseUp}};
+                                                                  {"keyup", ShadertoyInput::Kind::KeyUp},
+                                                                  {"mousedown", ShadertoyInput::Kind::MouseDown},
+                                                                  {"mousemove", ShadertoyInput::Kind::MouseMove},
+                                                                  {"mouseup", ShadertoyInput::Kind::MouseUp}};
 
 // InputError naming `input` (or `key`): a key code outside 0–255, a frame
 // outside [0, 10⁶], a position that is not finite or beyond ±10⁶ pixels.

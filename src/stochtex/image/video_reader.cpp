@@ -57,7 +57,10 @@ const Image& VideoReader::frame(int index) {
         ++next_;
     }
     cv::Mat rgb;
-    cv::cvtColor(bgr, rgb, bgr.channels() == 1 ? cv::COLOR_GRAY2RGB : bgr.channels() == 4 ? cv::COLOR_BGRA2RGB : cv::COLOR_BGR2RGB);
+    cv::cvtColor(bgr, rgb,
+                 bgr.channels() == 1   ? cv::COLOR_GRAY2RGB
+                 : bgr.channels() == 4 ? cv::COLOR_BGRA2RGB
+                                       : cv::COLOR_BGR2RGB);
     Image img(rgb.cols, rgb.rows, 3, Image::Uninitialized{});
     const double scale = rgb.depth() == CV_16U ? 1.0 / 65535.0 : 1.0 / 255.0;
     cv::Mat floats(rgb.rows, rgb.cols, CV_32FC3, img.data().data());

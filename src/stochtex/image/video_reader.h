@@ -38,8 +38,8 @@ private:
     std::unique_ptr<Capture> capture_;
     int width_ = 0, height_ = 0, frameCount_ = 0;
     double fps_ = 0;
-    int next_ = 0;     // the index the decoder reads next
-    int current_ = -1; // the index in frame_
+    int next_ = 0;      // the index the decoder reads next
+    int current_ = -1;  // the index in frame_
     bool countKnown_ = false;
     Image frame_;
 };

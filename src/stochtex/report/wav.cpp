@@ -33,13 +33,13 @@ void writeWav(const std::string& path, const std::vector<float>& interleaved, in
     out += "RIFF";
     put32(out, uint32_t(36 + dataBytes));
     out += "WAVEfmt ";
-    put32(out, 16);                                      // the format chunk's size
-    put16(out, 1);                                       // PCM
+    put32(out, 16);  // the format chunk's size
+    put16(out, 1);   // PCM
     put16(out, uint16_t(channels));
     put32(out, uint32_t(sampleRate));
     put32(out, uint32_t(sampleRate) * uint32_t(channels) * 2);  // bytes a second
-    put16(out, uint16_t(channels * 2));                  // bytes an instant
-    put16(out, 16);                                      // bits a sample
+    put16(out, uint16_t(channels * 2));                         // bytes an instant
+    put16(out, 16);                                             // bits a sample
     out += "data";
     put32(out, uint32_t(dataBytes));
     for (size_t i = 0; i < instants * size_t(channels); ++i) {
