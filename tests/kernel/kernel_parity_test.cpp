@@ -23,6 +23,7 @@
 #include "stochtex/gpu/gl_objects.h"
 #include "stochtex/kernel/camera.h"
 #include "stochtex/kernel/colour.h"
+#include "stochtex/kernel/cube_map.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/kernel/footprint.h"
 #include "stochtex/kernel/graph_ops.h"
@@ -388,6 +389,29 @@ TEST_F(KernelParity, PlaneRayIsBitExact) {
     }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 3); });
     EXPECT_GT(sky, kItems / 50);  // the horizon is in the sample
     EXPECT_LT(sky, kItems / 2);
+}
+
+// A cube face's texel directions (Cube A's rays, the panorama resampling):
+// every face, texel centres of faces 1–2048 texels wide, bit-exact.
+TEST_F(KernelParity, CubeFaceDirectionsAreBitExact) {
+    Random r{12};
+    std::vector<uvec4> in(kItems);
+    for (uvec4& v : in) {
+        const uint size = 1u + r.next().x % 2048u;
+        const float s = (float(r.next().x % size) + 0.5f) / float(size), t = (float(r.next().x % size) + 0.5f) / float(size);
+        v = uvec4(r.next().x % 6u, floatBitsToUint(s), floatBitsToUint(t), 0u);
+    }
+    const auto gpu = runOnGpu({"cube_map"}, R"(
+        uvec4 w = word(0);
+        emitf(0, vec4(cubeFaceDirection(int(w.x), uintBitsToFloat(w.y), uintBitsToFloat(w.z)), 0.0));)",
+                              1, 1, in);
+    std::array<int, 6> faces{};
+    compareItems(gpu, 1, [&](int i) {
+        const uvec4 w = in[size_t(i)];
+        ++faces[w.x];
+        return std::vector<uvec4>{bits(vec4(cubeFaceDirection(int(w.x), uintBitsToFloat(w.y), uintBitsToFloat(w.z)), 0.0f))};
+    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 1); });
+    for (const int n : faces) EXPECT_GT(n, kItems / 8);  // every face is in the sample
 }
 
 // The view mappings (kernel/camera.glsl) run at each host's coordinate

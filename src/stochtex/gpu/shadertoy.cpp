@@ -19,6 +19,7 @@
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/image/video_reader.h"
+#include "stochtex/kernel/cube_map.h"
 
 namespace stochtex {
 
@@ -150,20 +151,12 @@ std::string soundMain(bool withIndex) {
 
 // Cube A's wrapper: the face drawn (0–5: +x, −x, +y, −y, +z, −z) and the
 // fragment's place on it give the ray's direction as GL's cube map
-// selection reads it back (cubeDirection on the CPU), from the origin.
+// selection reads it back (kernel/cube_map.glsl), from the origin.
 const char* kCubeMain =
     "uniform int stochtexCubeFace;\n"
-    "vec3 stochtexCubeDirection(int face, vec2 st) {\n"
-    "    float a = 2.0 * st.x - 1.0, b = 2.0 * st.y - 1.0;\n"
-    "    if (face == 0) return vec3(1.0, -b, -a);\n"
-    "    if (face == 1) return vec3(-1.0, -b, a);\n"
-    "    if (face == 2) return vec3(a, 1.0, b);\n"
-    "    if (face == 3) return vec3(a, -1.0, -b);\n"
-    "    if (face == 4) return vec3(a, -b, 1.0);\n"
-    "    return vec3(-a, -b, -1.0);\n"
-    "}\n"
     "void main() {\n    vec4 colour = vec4(0.0);\n"
-    "    vec3 dir = normalize(stochtexCubeDirection(stochtexCubeFace, gl_FragCoord.xy / iResolution.xy));\n"
+    "    vec2 st = gl_FragCoord.xy / iResolution.xy;\n"
+    "    vec3 dir = normalize(cubeFaceDirection(stochtexCubeFace, st.x, st.y));\n"
     "    mainCubemap(colour, gl_FragCoord.xy, vec3(0.0), dir);\n    stochtexFragColour = colour;\n}\n";
 
 const char* kMain =
@@ -249,21 +242,6 @@ gl::Texture volumeTexture(const std::vector<float>& rgba, int size, bool mipmaps
     return t;
 }
 
-// The direction of texel centre (s, t) ∈ (0, 1)² of cube face f (+x, −x,
-// +y, −y, +z, −z): GL's cube map selection (OpenGL 4.5 §8.13) inverted, t
-// going down each face as a face image's rows do.
-std::array<double, 3> cubeDirection(int face, double s, double t) {
-    const double a = 2 * s - 1, b = 2 * t - 1;
-    switch (face) {
-        case 0: return {1, -b, -a};
-        case 1: return {-1, -b, a};
-        case 2: return {a, 1, b};
-        case 3: return {a, -1, -b};
-        case 4: return {a, -b, 1};
-        default: return {-a, -b, -1};
-    }
-}
-
 // A cube face resampled from an equirectangular image (bilinear, around in
 // longitude, clamped at the poles): the image's centre column looks along
 // −z, the column a quarter in along −x, three quarters in along +x, its top
@@ -274,10 +252,11 @@ Image equirectangularFace(const Image& pano, int face, int size) {
     constexpr double kPi = 3.14159265358979323846;
     for (int j = 0; j < size; ++j)
         for (int i = 0; i < size; ++i) {
-            const auto d = cubeDirection(face, (i + 0.5) / size, (j + 0.5) / size);
-            const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            const double u = 0.5 + std::atan2(d[0], -d[2]) / (2 * kPi);
-            const double v = std::acos(std::clamp(d[1] / len, -1.0, 1.0)) / kPi;
+            const kernel::vec3 d = kernel::cubeFaceDirection(face, (float(i) + 0.5f) / float(size),
+                                                             (float(j) + 0.5f) / float(size));
+            const double len = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
+            const double u = 0.5 + std::atan2(double(d.x), -double(d.z)) / (2 * kPi);
+            const double v = std::acos(std::clamp(double(d.y) / len, -1.0, 1.0)) / kPi;
             const double x = u * pano.width() - 0.5, y = std::clamp(v * pano.height() - 0.5, 0.0, pano.height() - 1.0);
             const int x0 = int(std::floor(x)), y0 = int(std::floor(y)), y1 = std::min(y0 + 1, pano.height() - 1);
             const double fx = x - x0, fy = y - y0;
@@ -739,7 +718,8 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
         if (spec.pattern) files.insert(files.end(), {"colour", "stochtex_pattern"});
         if (!spec.common.empty()) files.push_back(spec.common.string());
         files.push_back(pass.code.string());
-        files.push_back(pass.name == "cube_a" ? "shadertoy_cube_main" : "shadertoy_main");
+        if (pass.name == "cube_a") files.insert(files.end(), {"cube_map", "shadertoy_cube_main"});
+        else files.push_back("shadertoy_main");
         try {
             p.program = gl::Program(compileProgram({"fullscreen"}, files, overrides));
         } catch (const ShaderError& e) {
