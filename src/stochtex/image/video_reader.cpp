@@ -73,8 +73,7 @@ const Image& VideoReader::frame(int index) {
 const Image& VideoReader::frameAt(double seconds, bool loop) {
     const double position = std::max(0.0, seconds) * fps_ + 1e-6;  // a frame's own time reads that frame
     int index = position < 1e9 ? int(std::floor(position)) : 0;
-    if (!loop && frameCount_ > 0) index = std::min(index, frameCount_ - 1);
-    if (!loop && countKnown_) index = std::min(index, frameCount_ - 1);
+    if (!loop && frameCount_ > 0) index = std::min(index, frameCount_ - 1);  // a known count is counted too
     return frame(index);
 }
 
