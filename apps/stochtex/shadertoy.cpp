@@ -39,7 +39,7 @@ void registerShadertoy(CLI::App& app) {
                         "), or the frames as " + kSequenceOutputHelp + "; with --analyse the report's folder");
     cmd->add_option("--sound", args->sound, "Write the program's Sound pass (sound.glsl) as a WAV file, 16-bit stereo "
                                             "at iSampleRate, and print its spectrum's peak");
-    cmd->add_option("--sound-seconds", args->soundSeconds, "Seconds of sound --sound renders (ShaderToy plays at most 180)")
+    cmd->add_option("--sound-seconds", args->soundSeconds, "Seconds of sound --sound renders (at most " + formatValue(kMaxSoundSeconds) + ", as ShaderToy plays)")
         ->capture_default_str();
     addShadertoyFlags(*cmd, args->flags);
     cmd->add_option("--frames", args->frames, "Frames rendered from frame 0 (iFrame 0 at --time); with --analyse, "
