@@ -97,6 +97,38 @@ TEST(FootprintEstimator, LevelZeroTexelIsTheUnfilteredNoise) {
     }
 }
 
+// estimate's single-texel shortcut returns what the kernel's loop returns,
+// bit for bit (every level, both variance estimators, with and without the
+// covariance pyramid); footprints with a fractional level or several probes
+// go through the loop itself.
+TEST(FootprintEstimator, SingleTexelShortcutIsTheKernelLoopBitForBit) {
+    const Image e = example(SpectrumShape::LowPass, 6, 0, 0, 4, 128);
+    const auto same = [](const FootprintStats& a, const FootprintStats& b) {
+        return a.mean == b.mean && a.varX == b.varX && a.varY == b.varY && a.cov == b.cov;
+    };
+    for (const bool covariance : {false, true}) {
+        const auto n = noisePair(e, example(SpectrumShape::Ring, 12, 3, 0, 2, 128), 5, covariance ? 5 : 6);
+        const FootprintEstimator est(n, covariance);
+        int shortcuts = 0, covariances = 0;
+        for (const VarianceEstimator mode : {VarianceEstimator::Paper, VarianceEstimator::DeliotHeitz})
+            for (int i = 0; i < 200; ++i) {
+                Jacobian j;  // 2^(i mod 9) texels a pixel (levels 0–7, then clamped at the top), or a fraction
+                j.dudx = j.dvdy = std::ldexp(1.0, i % 9) / 128.0 * (i % 4 == 3 ? 1.37 : 1.0);
+                if (i % 5 == 4) j.dvdx = 0.8 * j.dudx;  // anisotropic: several probes
+                const Footprint f = makeFootprint(0.173 * i - 5.3, 0.061 * i + 2.9, j, 128, est.maxLod(), 8);
+                const kernel::ProbeLevels levels = kernel::probeLevels(f.layout.lod, est.maxLod(), f.layout.count);
+                shortcuts += kernel::isSingleTexel(f.layout.count, levels.frac);
+                const FootprintStats a = est.estimate(f, mode), b = est.kernelEstimate(f, mode);
+                EXPECT_TRUE(same(a, b)) << "footprint " << i << ", level " << f.layout.lod;
+                covariances += a.cov != 0.0f;
+            }
+        EXPECT_GT(shortcuts, 100);  // the shortcut is taken, so the comparison covers it
+        if (covariance) {
+            EXPECT_GT(covariances, 300);  // and reads the covariance pyramid (0 at level 0)
+        }
+    }
+}
+
 TEST(TiledField, SharedOffsetsNeedOneSeedAndCovarianceNeedsSharedOffsets) {
     const Image e = example(SpectrumShape::LowPass, 6, 0, 0, 4, 64);
     const auto noise = [&](uint32_t seed) { return TilingBlendingNoise(std::make_shared<const NoiseExample>(e), seed); };

@@ -124,17 +124,24 @@ kernel::ProbeTexels FootprintEstimator::probeTexels(kernel::coord2 uv, const ker
 // flatten: inlining the texel fetches and the lookups into the per-pixel
 // call cuts its instructions by ~12% (measured with callgrind).
 __attribute__((flatten)) FootprintStats FootprintEstimator::estimate(const Footprint& f, VarianceEstimator mode) const {
+    // The single texel's shortcut skips the loop's sums (10 % of a paper
+    // zoom's render time at scale 8; docs/PERFORMANCE.md).
+    const kernel::ProbeLevels levels = kernel::probeLevels(f.layout.lod, maxLod(), f.layout.count);
+    if (kernel::isSingleTexel(f.layout.count, levels.frac)) {
+        const kernel::FootprintMoments r = kernel::texelMoments(texel(f.u, f.v, levels.l0, mode));
+        return FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov};
+    }
+    return kernelEstimate(f, mode);
+}
+
+__attribute__((flatten)) FootprintStats FootprintEstimator::kernelEstimate(const Footprint& f,
+                                                                           VarianceEstimator mode) const {
     // The loop, the Deliot–Heitz substitution and the single-texel rule are
     // the kernel's (kernel/estimate.glsl), as in the shaders.
     const kernel::FootprintMoments r =
         kernel::footprintEstimate(EstimatorTexels{this}, kernel::coord2(f.u, f.v), f.layout, maxLod(),
                                   mode == VarianceEstimator::DeliotHeitz, bool(covariance_));
-    FootprintStats out;
-    out.mean = {r.mean.x, r.mean.y};
-    out.varX = r.var.x;
-    out.varY = r.var.y;
-    out.cov = r.cov;
-    return out;
+    return FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov};
 }
 
 size_t FootprintEstimator::bytes() const {

@@ -51,7 +51,13 @@ public:
     int exampleSize() const { return size_; }
     int maxLod() const { return pyramids_[0].levels() - 1; }
 
+    // μ̂, σ̂², ĉov over the footprint: the kernel's loop (footprintEstimate),
+    // or for a single texel (one probe at a whole level: every pixel of a
+    // zoom at a power-of-two scale, every magnified pixel) that texel's
+    // statistics directly, which the loop also returns after sums it then
+    // drops. kernelEstimate is the loop alone; a test holds the two bit-exact.
     FootprintStats estimate(const Footprint& f, VarianceEstimator mode = VarianceEstimator::Paper) const;
+    FootprintStats kernelEstimate(const Footprint& f, VarianceEstimator mode = VarianceEstimator::Paper) const;
 
     // Statistics of one texel footprint at an integer level (eq. 8, 12, 17).
     using TexelStats = kernel::TexelStats;

@@ -59,30 +59,26 @@ inline float leanLambert(vec2 s, vec3 l) {
 }
 
 // The Lambertian term averaged over the footprint's slopes s ~ N(b,
-// Σ_footprint): 3×3 Gauss–Hermite nodes (b + L·(t_i, t_j), L L^T = Σ,
-// t ∈ {−√3, 0, √3}, weights 1/6, 2/3, 1/6; exact for polynomials of degree
-// 5 in each axis). Lit through the mean normal alone, a filtered pixel
-// stayed brighter than the mean of its points' shading at every footprint
-// (n·l is concave about the light; a second-order Taylor term overshot at
-// RMS slope 0.3). With Σ = 0 it is the point's own shading.
+// Σ_footprint): five sigma points, b and b ± √3·(L's columns) (L L^T = Σ),
+// weights 1/3 and 1/6 each: exact for every polynomial of degree 3 and for
+// the fourth powers along L's columns. Lit through the mean normal alone, a
+// filtered pixel stayed brighter than the mean of its points' shading at
+// every footprint (n·l is concave about the light; a second-order Taylor
+// term overshot at RMS slope 0.3). Against Monte Carlo the five points err
+// by < 0.001 on average (test LeanLobe.DiffuseQuadrature…); the 3×3
+// Gauss–Hermite nodes used before shaded nine times, a quarter of a filtered
+// LEAN zoom's render time. With Σ = 0 it is the point's own shading.
 inline float leanDiffuse(LeanLobe lobe, vec3 l) {
     vec3 c = lobe.footprint;
     if (c.x <= 0.0f && c.y <= 0.0f) return leanLambert(lobe.mean, l);  // a point: its own shading, exactly
     float l11 = sqrt(c.x);
     float l21 = l11 > 0.0f ? c.z / l11 : 0.0f;
     float l22 = sqrt(max(c.y - l21 * l21, 0.0f));
-    float sum = 0.0f;
-    for (int i = 0; i < 3; ++i) {
-        float ti = 1.73205081f * float(i - 1);
-        float wi = i == 1 ? 0.66666667f : 0.16666667f;
-        for (int j = 0; j < 3; ++j) {
-            float tj = 1.73205081f * float(j - 1);
-            float wj = j == 1 ? 0.66666667f : 0.16666667f;
-            vec2 s = lobe.mean + vec2(l11 * ti, l21 * ti + l22 * tj);
-            sum += wi * wj * leanLambert(s, l);
-        }
-    }
-    return sum;
+    vec2 a = vec2(1.73205081f * l11, 1.73205081f * l21);
+    vec2 b = vec2(0.0f, 1.73205081f * l22);
+    float sides = leanLambert(lobe.mean + a, l) + leanLambert(lobe.mean - a, l) + leanLambert(lobe.mean + b, l) +
+                  leanLambert(lobe.mean - b, l);
+    return 0.33333333f * leanLambert(lobe.mean, l) + 0.16666667f * sides;
 }
 
 // Radiance towards the unit view direction v under a directional light of
