@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <regex>
 
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/report/page.h"
 #include "common.h"

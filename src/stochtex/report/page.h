@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "stochtex/analysis/plot.h"
 #include "stochtex/image/image.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex {
 

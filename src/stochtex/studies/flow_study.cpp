@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 
 namespace stochtex {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "stochtex/analysis/correlation_accumulator.h"
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 
 namespace stochtex {

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "stochtex/analysis/correlation_shape.h"
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/studies/flow_study.h"
 #include "stochtex/studies/spectrum_study.h"

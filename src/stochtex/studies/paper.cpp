@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/graph_pattern.h"

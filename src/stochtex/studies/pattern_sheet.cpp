@@ -1,6 +1,6 @@
 #include "stochtex/studies/pattern_sheet.h"
 
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filter_options.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/noise/spectrum.h"

@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 
 namespace stochtex {

@@ -9,7 +9,7 @@
 
 #include "stochtex/core/embedded_file.h"
 #include "stochtex/core/error.h"
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/noise/tiled_white_noise.h"
 

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "stochtex/analysis/binomial.h"
-#include "stochtex/analysis/plot.h"
 #include "stochtex/core/error.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex {
 

@@ -6,7 +6,7 @@
 
 #include "stochtex/analysis/contrast.h"
 #include "stochtex/analysis/correlation_accumulator.h"
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "stochtex/analysis/flicker.h"
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/studies/flow_study.h"
 #include "stochtex/studies/spectrum_study.h"
 

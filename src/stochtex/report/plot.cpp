@@ -1,4 +1,4 @@
-#include "stochtex/analysis/plot.h"
+#include "stochtex/report/plot.h"
 
 #include <cairo.h>
 #include <pango/pangocairo.h>
