@@ -11,7 +11,7 @@ size_t count(const std::string& s, const std::string& what) {
     return n;
 }
 
-Figure chartFigure() {
+Figure errorsChart() {
     PlotSeries a{"ours", {1, 2, 4}, {0.5, 0.25, 0.125}, {1, 0, 0}},
         b{"theirs", {1, 2, 4}, {0.5, 0.25, 0.125}, {0, 0, 1}};
     LinePlotOptions o;
@@ -29,7 +29,7 @@ TEST(Page, AnimatedPreviewShowsTheWebpAndLinksTheVideo) {
 }
 
 TEST(Page, ChartsAreInlinedSelfContainedAndDeterministic) {
-    const std::vector<Figure> figures{chartFigure(), {"map.png", Image(4, 4, 3, 0.0f), "A map."}};
+    const std::vector<Figure> figures{errorsChart(), {"map.png", Image(4, 4, 3, 0.0f), "A map."}};
     const std::string body = htmlFigures("sub/", figures);
     EXPECT_EQ(count(body, "<canvas>"), 1u);
     EXPECT_EQ(count(body, "<img src='sub/map.png'>"), 1u);

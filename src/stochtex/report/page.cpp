@@ -14,6 +14,11 @@
 
 namespace stochtex {
 
+Figure chartFigure(std::string file, LineChart chart, std::string caption) {
+    Image image = linePlot(chart.series, chart.options);
+    return Figure{std::move(file), std::move(image), std::move(caption), std::move(chart)};
+}
+
 void ensureFolder(const std::string& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);

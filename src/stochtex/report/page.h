@@ -24,6 +24,10 @@ struct Figure {
     std::optional<LineChart> chart = std::nullopt;
 };
 
+// A line plot described once: its PNG (linePlot) and the page's interactive
+// chart both come from `chart`.
+Figure chartFigure(std::string file, LineChart chart, std::string caption);
+
 // Creates dir (and parents); InputError naming it if that fails.
 void ensureFolder(const std::string& dir);
 

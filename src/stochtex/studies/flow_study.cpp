@@ -115,10 +115,9 @@ FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o
         po.title = "Expansion rate per frame pair";
         po.xLabel = "pair k (frames k → k + 1)";
         po.yLabel = "outward motion / distance";
-        r.figures.push_back({"expansion.png", linePlot({s}, po),
+        r.figures.push_back(chartFigure("expansion.png", {{s}, po},
                              "The least-squares rate k of outward motion ≈ k·distance from the centre: positive for "
-                             "content moving outward (a zoom in), 0 for a fixed texture.",
-                             LineChart{{s}, po}});
+                             "content moving outward (a zoom in), 0 for a fixed texture."));
     }
     return r;
 }

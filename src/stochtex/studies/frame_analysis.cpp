@@ -110,10 +110,9 @@ Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& 
     po.title = "Flicker per pair of frames";
     po.xLabel = "pair (frame k → k + 1)";
     po.yLabel = "residual / contrast";
-    s.figures.push_back({"flicker.png", linePlot({series}, po),
+    s.figures.push_back(chartFigure("flicker.png", {{series}, po},
                          "The next frame warped back by the optical flow (DIS) and subtracted: what motion does not "
-                         "explain, relative to the frames' contrast (blur lowers both).",
-                         LineChart{{series}, po}});
+                         "explain, relative to the frames' contrast (blur lowers both)."));
     s.figures.push_back({"flicker_map.png",
                          windowMap(worstMap, o.region,
                                    "Residual of pair " + std::to_string(worstPair) + "→" + std::to_string(worstPair + 1),

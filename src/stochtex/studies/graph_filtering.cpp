@@ -167,9 +167,8 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
     lo.xLabel = "footprint side (texels)";
     lo.yLabel = "mean ‖· − S̄‖₂";
     lo.logX = true;
-    res.figures.push_back({"figure14_errors.png", linePlot(series, lo),
-                           "Mean error against the reference per footprint (log scale in the footprint).",
-                           LineChart{series, lo}});
+    res.figures.push_back(chartFigure("figure14_errors.png", {series, lo},
+                           "Mean error against the reference per footprint (log scale in the footprint)."));
     for (auto& f : images) res.figures.push_back(std::move(f));
     return res;
 }

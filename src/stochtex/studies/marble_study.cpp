@@ -144,14 +144,13 @@ void stretchingPart(const MarbleStudyOptions& o, MarbleStudyResult& r) {
     so.yLabel = "σ₁/σ₂ of ∂u/∂x (clipped at 20)";
     so.logY = true;
     so.bands = {{px - 1, px + 1}};
-    r.figures.push_back({"stretch.png", linePlot(curves, so),
+    r.figures.push_back(chartFigure("stretch.png", {curves, so},
                          "How much the scaling u = x / 2^l(x) stretches the noise: the ratio of the singular values of "
                          "its Jacobian, along the axis y = 0 and along the reference point's row. It is infinite at "
                          "the folds, where 1 − x ln 2 ∂l/∂x = 0 and the texture is mirrored, and grows with |y| where "
                          "l changes (a shear). The shaded band marks the correlation's reference point (x = " +
                              TableCell::value(px, "%.1f").text + ", σ₁/σ₂ = " +
-                             TableCell::value(r.pointAnisotropy, "%.2f").text + ").",
-                         LineChart{curves, so}});
+                             TableCell::value(r.pointAnisotropy, "%.2f").text + ")."));
 }
 
 // Correlation over seeds around the reference point, per layer and scaling.
@@ -308,13 +307,12 @@ void slidingPart(const MarbleStudyOptions& o, const Progress& progress, const Ma
     eo.title = "Expansion rate per frame pair";
     eo.xLabel = "pair k (frames k → k + 1)";
     eo.yLabel = "outward motion / distance";
-    r.figures.push_back({"sliding_expansion.png", linePlot(expansion, eo),
+    r.figures.push_back(chartFigure("sliding_expansion.png", {expansion, eo},
                          "The least-squares rate of outward motion per frame pair. With the continuous scaling the "
                          "scaled noise slides outward at about the scaling's own rate (" +
                              TableCell::value(scalingRate, "%.4f").text +
                              " per frame) and the marble, whose bands stay, more slowly; with the blended scales "
-                             "nothing moves: the two fields cross-fade in place.",
-                         LineChart{expansion, eo}});
+                             "nothing moves: the two fields cross-fade in place."));
 }
 
 }  // namespace

@@ -161,9 +161,8 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
             lo.logX = lo.logY = true;
             const std::string file = std::string("table1_") + (which == 0 ? "low" : "high") + "_" +
                                      (moment == 0 ? "mu" : "sigma") + ".png";
-            res.figures.push_back({file, linePlot(series, lo),
-                                   lo.title + " vs footprint size (log-log), ours and the published Table 1",
-                                   LineChart{series, lo}});
+            res.figures.push_back(chartFigure(file, {series, lo},
+                                   lo.title + " vs footprint size (log-log), ours and the published Table 1"));
         }
     return res;
 }
@@ -369,8 +368,8 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
                            title + " (" + o.name + ", " + std::to_string(o.size) + "² per footprint): rows = " +
                                rowList + "; columns = footprint " + std::to_string(o.footprints.front()) + " … " +
                                std::to_string(o.footprints.back()) + "²."});
-    res.figures.push_back({o.figure + "_errors.png", linePlot(series, lo),
-                           "Mean error per footprint (log scale in the footprint).", LineChart{series, lo}});
+    res.figures.push_back(chartFigure(o.figure + "_errors.png", {series, lo},
+                           "Mean error per footprint (log scale in the footprint)."));
     for (auto& f : images) res.figures.push_back(std::move(f));
     return res;
 }

@@ -87,8 +87,7 @@ SpectrumStudyResult spectrumStudy(const TextureSource& source, const SpectrumStu
     ro.xLabel = "|f| (cycles/pixel)";
     ro.yLabel = "mean power";
     ro.logY = true;
-    r.figures.push_back({"radial.png", linePlot({radial}, ro), "Mean power per ring of frequencies.",
-                         LineChart{{radial}, ro}});
+    r.figures.push_back(chartFigure("radial.png", {{radial}, ro}, "Mean power per ring of frequencies."));
     PlotSeries angular{"P(θ)", r.angular.angleDeg, r.angular.power, {0.8f, 0.2f, 0.1f}};
     LinePlotOptions ao;
     ao.title = "Angular profile";
@@ -98,11 +97,10 @@ SpectrumStudyResult spectrumStudy(const TextureSource& source, const SpectrumStu
     ao.xMax = 180;
     char annulus[96];
     std::snprintf(annulus, sizeof annulus, "%.3f ≤ |f| ≤ %.3f", o.rMin, o.rMax);
-    r.figures.push_back({"angular.png", linePlot({angular}, ao),
+    r.figures.push_back(chartFigure("angular.png", {{angular}, ao},
                          std::string("Mean power per orientation over ") + annulus +
                              ": flat for an isotropic texture; max/min = " + TableCell::value(g.angularMaxMin, "%.2f").text +
-                             ".",
-                         LineChart{{angular}, ao}});
+                             "."));
     r.figures.push_back({"frame.png", encodeTransfer(first, o.frameTransfer), "The first frame analysed."});
     return r;
 }

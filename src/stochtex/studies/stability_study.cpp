@@ -105,16 +105,14 @@ StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const Stability
     fo.xLabel = "scale (texels per pixel)";
     fo.yLabel = "mean |ΔE|";
     fo.logX = true;
-    r.figures.push_back({"error_flicker.png", linePlot(flickerPlot, fo),
+    r.figures.push_back(chartFigure("error_flicker.png", {flickerPlot, fo},
                          "Error flicker per frame: the zoom-compensated change of the error frames (frame − ground "
                          "truth S̄, " + std::to_string(o.truthSamples) + " samples per axis at most). Low only where a "
-                         "filter follows the truth from frame to frame.",
-                         LineChart{flickerPlot, fo}});
+                         "filter follows the truth from frame to frame."));
     LinePlotOptions ao = fo;
     ao.title = "Accuracy: mean |frame − S̄| per frame";
     ao.yLabel = "mean |I − S̄|";
-    r.figures.push_back({"accuracy.png", linePlot(accuracyPlot, ao), "Accuracy per frame: mean |frame − S̄|.",
-                         LineChart{accuracyPlot, ao}});
+    r.figures.push_back(chartFigure("accuracy.png", {accuracyPlot, ao}, "Accuracy per frame: mean |frame − S̄|."));
     return r;
 }
 

@@ -152,17 +152,16 @@ DetectionRates detectionRates(const std::vector<StimulusAnswer>& answers) {
         LinePlotOptions one = lo;
         one.title = "Detection rate, w = " + std::to_string(w) + " pixels";
         const std::vector<PlotSeries> series{rate, low, high};
-        perTile.push_back({"detection_w" + std::to_string(w) + ".png", linePlot(series, one),
-                           "Tile size w = " + std::to_string(w) +
-                               ": fraction of yes over correlation, with the 95 % "
-                               "Wilson interval.",
-                           LineChart{series, one}});
+        perTile.push_back(chartFigure("detection_w" + std::to_string(w) + ".png", {series, one},
+                                      "Tile size w = " + std::to_string(w) +
+                                          ": fraction of yes over correlation, with the 95 % "
+                                          "Wilson interval."));
     }
     lo.title = "Detection rate per tile size";
-    r.figures.push_back({"detection.png", linePlot(overview, lo),
-                         "Fraction of \"yes, a repeating pattern\" over the tile-to-tile correlation, one line per "
-                         "tile size w.",
-                         LineChart{overview, lo}});
+    r.figures.push_back(
+        chartFigure("detection.png", {overview, lo},
+                    "Fraction of \"yes, a repeating pattern\" over the tile-to-tile correlation, one line per "
+                    "tile size w."));
     r.figures.insert(r.figures.end(), perTile.begin(), perTile.end());
     return r;
 }

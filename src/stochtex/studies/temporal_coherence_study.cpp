@@ -105,12 +105,11 @@ TemporalCoherenceResult temporalCoherenceStudy(const TextureSource& source, cons
     po.title = "Appearance over time (1 = the sequence's mean)";
     po.xLabel = "time t";
     po.yLabel = "relative to the mean over time";
-    r.figures.push_back({"appearance.png", linePlot({contrast, scale}, po),
+    r.figures.push_back(chartFigure("appearance.png", {{contrast, scale}, po},
                          "Contrast and dominant scale of each frame relative to their means over the sequence: flat "
                          "lines are a coherent animation (thesis §2.1.1). Scale σ/μ over time " +
                              TableCell::value(c.scaleVariation, "%.4f").text + ", contrast σ/μ " +
-                             TableCell::value(c.contrastVariation, "%.4f").text + ".",
-                         LineChart{{contrast, scale}, po}});
+                             TableCell::value(c.contrastVariation, "%.4f").text + "."));
     // Frames beside their spectra, as Figure 2.4.
     std::vector<std::vector<Image>> rows(2);
     std::vector<std::vector<std::string>> captions(2);
@@ -169,13 +168,12 @@ LayerCoherenceResult layerCoherenceStudy(const ZoomSource& zoom, const LayerCohe
     po.xLabel = "layers n";
     po.yLabel = "variation over time";
     po.yMin = 0;
-    r.figures.push_back({"layers.png", linePlot({scale, contrast, spectrum}, po),
+    r.figures.push_back(chartFigure("layers.png", {{scale, contrast, spectrum}, po},
                          "How much the zoom texture's look moves over time for each layer count n (" +
                              std::to_string(o.frames.times.size()) + " frames of " +
                              std::to_string(o.frames.region.width) + "×" + std::to_string(o.frames.region.height) +
                              "): the thesis sees n = 3 lose coherence (frames lose their high frequencies) where "
-                             "n = 8 keeps it (Figure 2.4).",
-                         LineChart{{scale, contrast, spectrum}, po}});
+                             "n = 8 keeps it (Figure 2.4)."));
     return r;
 }
 

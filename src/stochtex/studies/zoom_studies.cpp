@@ -376,10 +376,9 @@ std::vector<Figure> slidingStudy(const ZoomParams& params, const ZoomBase& base)
     o.title = "Scale of one layer over time";
     o.xLabel = "t";
     o.yLabel = "a₀";
-    out.push_back({"scales.png", linePlot(series, o),
+    out.push_back(chartFigure("scales.png", {series, o},
                    "a₀(t): linear ramps (sliding: screen speed 1/a differs per layer) vs exponential decay (every "
-                   "layer moves at the same relative speed −a'/a = 1).",
-                   LineChart{series, o}});
+                   "layer moves at the same relative speed −a'/a = 1)."));
     return out;
 }
 
