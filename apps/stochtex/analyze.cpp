@@ -12,6 +12,8 @@
 #include "progress.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/core/parallel.h"
+#include "stochtex/report/frame_sequence.h"
+#include "stochtex/studies/artifact_report.h"
 #include "zoom_flags.h"
 
 namespace stochtex::cli {
@@ -48,9 +50,17 @@ void registerAnalyze(CLI::App& app) {
         options.marble.correlationSize = std::max(16, options.marble.size * 3 / 8);
         options.marble.instances = std::max(16, options.correlation.instances);
         options.marble.flowStep = std::max(4, options.marble.size / 16);
+        validateArtifactReport(options);
+        ensureFolder(args->dir + "/marble");
+        FrameSequenceSet videos(args->dir + "/marble", marbleVideoNames(options.marble), options.marble.size,
+                                options.marble.size,
+                                {true, false, std::min(30.0, 1.0 / options.marble.timeStep), Transfer::Linear});
         ProgressLine progress("analyze");
-        writeArtifactReport(args->dir, options, progress.callback());
+        const Report report = artifactReport(options, progress.callback(),
+                                             [&](size_t v, int k, const Image& frame) { videos.write(v, k, frame); });
+        videos.finish();
         progress.finish();
+        writeReport(args->dir, report);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("wrote %s/index.html (%.1f s)\n", args->dir.c_str(), seconds);
     });

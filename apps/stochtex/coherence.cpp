@@ -39,6 +39,7 @@ void registerCoherence(CLI::App& app) {
     addTextureSourceCommands(*cmd, [args, frames, step, layers](const TextureSource& source, const SourceInfo& info) {
         CoherenceReportOptions o = args->study;
         o.frames.frameTransfer = info.transfer;
+        o.sourceName = info.name;
         const std::string onImages = "on image files (each file is a frame)";
         o.frames.region = studyRegion(args->window, info, onImages);
         for (const CLI::Option* f : {frames, step}) refuseWithoutEffect(f, !info.images, onImages);
@@ -52,15 +53,9 @@ void registerCoherence(CLI::App& app) {
         const CoherenceReport r = coherenceReport(source, o, progress.callback());
         progress.finish();
         if (r.layers) std::printf("%s", r.layers->table.markdown().c_str());
-        writeFigures(args->dir, r.figures);
-        writeText(args->dir, "coherence.csv", r.frames.summary.csv());
-        writeText(args->dir, "frames.csv", r.frames.perFrame.csv());
-        if (r.layers) writeText(args->dir, "layers.csv", r.layers->table.csv());
-        writeText(args->dir, "index.html",
-                  htmlPage("Temporal coherence: " + info.name,
-                           "<h1>Temporal coherence: " + htmlEscape(info.name) + "</h1>" + r.html));
-        std::printf("%s\nwrote coherence.csv, frames.csv, the figures and index.html to %s\n",
-                    r.frames.summary.markdown().c_str(), args->dir.c_str());
+        const std::vector<std::string> files = writeReport(args->dir, r.report);
+        std::printf("%s\nwrote %s to %s\n", r.frames.summary.markdown().c_str(), listNames(files).c_str(),
+                    args->dir.c_str());
     });
 }
 

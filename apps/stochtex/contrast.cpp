@@ -18,10 +18,10 @@ void registerContrast(CLI::App& app) {
     addZoomStudyFlags(*cmd, *args, true);
     cmd->callback([args] {
         ThreadLimit limit(args->threads);
-        const ContrastStudyResult r =
-            writeZoomContrastStudy(makeZoomParams(args->zoom), makeZoomBase(args->zoom), args->study, args->dir);
-        std::printf("%s\nwrote figure2_6.png, the corrected textures and contrast.csv to %s\n",
-                    r.table.markdown().c_str(), args->dir.c_str());
+        const ZoomParams zoom = makeZoomParams(args->zoom);
+        const ContrastStudyResult r = zoomContrastStudy(zoom, makeZoomBase(args->zoom), args->study);
+        const std::vector<std::string> files = writeReport(args->dir, contrastReport(r, zoom.layers));
+        std::printf("%s\nwrote %s to %s\n", r.table.markdown().c_str(), listNames(files).c_str(), args->dir.c_str());
     });
 }
 

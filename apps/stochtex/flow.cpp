@@ -60,14 +60,8 @@ void registerFlow(CLI::App& app) {
             flowStudy(source, o, progress.callback(), [&](int k, const Image& frame) { video.write(0, k, frame); });
         progress.finish();
         video.finish();
-        const std::string preview = args->video ? htmlAnimatedPreview("", "frames", "The frames analysed") : "";
-        writeFigures(args->dir, r.figures);
-        writeText(args->dir, "flow.csv", r.summary.csv());
-        writeText(args->dir, "index.html",
-                  htmlPage("Optical flow: " + info.name, "<h1>Optical flow: " + htmlEscape(info.name) + "</h1>" +
-                                                             preview + r.summary.html() + htmlFigures("", r.figures)));
-        std::printf("%s\nwrote %zu figures, flow.csv and index.html to %s\n", r.summary.markdown().c_str(),
-                    r.figures.size(), args->dir.c_str());
+        const std::vector<std::string> files = writeReport(args->dir, flowReport(r, info.name, args->video));
+        std::printf("%s\nwrote %s to %s\n", r.summary.markdown().c_str(), listNames(files).c_str(), args->dir.c_str());
     });
 }
 

@@ -40,14 +40,8 @@ void registerFractalize(CLI::App& app) {
         ProgressLine progress("fractalize");
         const ImageBaseStudyResult r = imageBaseStudy(images, args->study, progress.callback());
         progress.finish();
-        writeFigures(args->dir, r.figures);
-        writeText(args->dir, "fractalize.csv", r.table.csv());
-        writeText(args->dir, "index.html",
-                  htmlPage("Image textures as the zoom texture's base",
-                           "<h1>Image textures as the zoom texture's base (thesis §2.7.1)</h1>" + r.table.html() +
-                               htmlFigures("", r.figures)));
-        std::printf("%s\nwrote figure2_15.png, figure2_17.png, fractalize.csv and index.html to %s\n",
-                    r.table.markdown().c_str(), args->dir.c_str());
+        const std::vector<std::string> files = writeReport(args->dir, imageBaseReport(r));
+        std::printf("%s\nwrote %s to %s\n", r.table.markdown().c_str(), listNames(files).c_str(), args->dir.c_str());
     });
 }
 

@@ -60,16 +60,10 @@ void registerMarble(CLI::App& app) {
             marbleStudy(o, progress.callback(), [&](size_t v, int k, const Image& f) { videos.write(v, k, f); });
         videos.finish();
         progress.finish();
-        writeFigures(args->dir, r.figures);
-        writeText(args->dir, "correlation.csv", r.correlation.csv());
-        writeText(args->dir, "spectra.csv", r.spectra.csv());
-        writeText(args->dir, "sliding.csv", r.sliding.csv());
-        writeText(args->dir, "index.html", htmlPage("The marble texture", "<h1>The marble texture (thesis eq. 2.29)</h1>" +
-                                                                              marbleSectionHtml(r, "", true)));
-        std::printf("%s\n%s\n%s\nwrote %zu figures, %zu videos (MP4 + animated WebP), correlation.csv, spectra.csv, "
-                    "sliding.csv and index.html to %s\n",
-                    r.correlation.markdown().c_str(), r.spectra.markdown().c_str(), r.sliding.markdown().c_str(),
-                    r.figures.size(), r.videos.size(), args->dir.c_str());
+        const std::vector<std::string> files = writeReport(args->dir, marbleReport(r, true));
+        std::printf("%s\n%s\n%s\nwrote %zu videos (MP4 + animated WebP), %s to %s\n", r.correlation.markdown().c_str(),
+                    r.spectra.markdown().c_str(), r.sliding.markdown().c_str(), r.videos.size(),
+                    listNames(files).c_str(), args->dir.c_str());
     });
 }
 

@@ -19,7 +19,10 @@ void registerReproduce(CLI::App& app) {
     table1Cmd->callback([args] {
         prepareReproduce(*args);
         runReproduction(*args, "table1", [&](const Progress& p) {
-            return writeTable1(table1(args->table, p), args->dir) + "\nwrote table1.csv, table1.md and plots to " + args->dir;
+            const Table1Result r = table1(args->table, p);
+            std::string md;
+            for (const Table& t : r.tables) md += "\n" + t.markdown();
+            return writeReproduction(args->dir, table1Report(r), md);
         });
     });
     const auto addFigure = [&](const std::string& figure, const std::string& help, Figure4Options* options) {
@@ -29,8 +32,7 @@ void registerReproduce(CLI::App& app) {
             prepareReproduce(*args);
             runReproduction(*args, figure, [&](const Progress& p) {
                 const Figure4Result r = stochtex::figure4(*options, p);
-                writeFigure4(r, figure, args->dir);
-                return r.table.markdown() + "\nwrote " + figure + ".png, " + figure + ".csv and the images to " + args->dir;
+                return writeReproduction(args->dir, figure4Report(r, figure), r.table.markdown());
             });
         });
     };
@@ -42,8 +44,7 @@ void registerReproduce(CLI::App& app) {
         prepareReproduce(*args);
         runReproduction(*args, "figure10", [&](const Progress& p) {
             const Figure10Result r = figure10(args->figure10, p);
-            writeFigure10(r, args->dir);
-            return r.table.markdown() + "\nwrote figure10.png, figure10_comparison.png and figure10.csv to " + args->dir;
+            return writeReproduction(args->dir, figure10Report(r), r.table.markdown());
         });
     });
     addFigure("figure11", "Figure 11: filtering the phasor sine pattern: reference, estimated, error", &args->figure11);
@@ -54,8 +55,7 @@ void registerReproduce(CLI::App& app) {
         prepareReproduce(*args);
         ensureFolder(args->dir);
         runReproduction(*args, "figures7-9", [&](const Progress& p) {
-            writeFigures(args->dir, figures7to9(args->sheetSize, p));
-            return "wrote figure7.png, figure8.png, figure9.png to " + args->dir;
+            return writeReproduction(args->dir, figures7to9Report(figures7to9(args->sheetSize, p)));
         });
     });
     auto* figure12Cmd = cmd->add_subcommand("figure12", "Figure 12: LEAN-mapped procedural normal map, four variants");
@@ -64,8 +64,7 @@ void registerReproduce(CLI::App& app) {
         prepareFigure12(*args);
         runReproduction(*args, "figure12", [&](const Progress& p) {
             const Figure12Result r = figure12(args->figure12, p);
-            writeFigure12(r, args->dir);
-            return r.table.markdown() + "\nwrote figure12.png, figure12.csv and the images to " + args->dir;
+            return writeReproduction(args->dir, figure12Report(r), r.table.markdown());
         });
     });
     registerReproduceFigure14(*cmd, args);

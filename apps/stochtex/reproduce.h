@@ -45,17 +45,9 @@ void prepareFigure12(ReproduceArgs& args);
 // `reproduce all`: figures 11, 12 and 14 take figure 4's size and reference
 // samples (scaled), then are prepared as above.
 void prepareReproduceAll(ReproduceArgs& args);
-// Writes figure12.png, figure12.csv and the images.
-void writeFigure12(const Figure12Result& r, const std::string& dir);
-
-// Writes table1.csv, table1.md and the plots; returns the tables as Markdown.
-std::string writeTable1(const Table1Result& r, const std::string& dir);
-// Writes <figure>.png, <figure>.csv and the images per footprint (figures 4, 11).
-void writeFigure4(const Figure4Result& r, const std::string& figure, const std::string& dir);
-// Writes figure14.png, figure14_filtering.png, figure14_errors.png, figure14.csv and the images.
-void writeFigure14(const Figure14Result& r, const std::string& dir);
-// Writes figure10.png, figure10_comparison.png and figure10.csv.
-void writeFigure10(const Figure10Result& r, const std::string& dir);
+// Writes a part's report into dir; returns what to print after `text`:
+// "wrote <files> to <dir>".
+std::string writeReproduction(const std::string& dir, const Report& report, const std::string& text = "");
 
 // Runs one reproduction with --threads and a progress line titled
 // "reproduce <name>", then prints the report `run` returns.

@@ -28,9 +28,7 @@ void registerReproduceFigure14(CLI::App& reproduce, std::shared_ptr<ReproduceArg
         validateFigure14(args->figure14);
         runReproduction(*args, "figure14", [&](const Progress& p) {
             const Figure14Result r = figure14(args->figure14, p);
-            writeFigure14(r, args->dir);
-            return r.table.markdown() + "\nwrote figure14.png, figure14_filtering.png, figure14.csv and the images to " +
-                   args->dir;
+            return writeReproduction(args->dir, figure14Report(r), r.table.markdown());
         });
     });
 }

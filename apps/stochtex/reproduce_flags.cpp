@@ -10,34 +10,6 @@
 
 namespace stochtex::cli {
 
-std::string writeTable1(const Table1Result& r, const std::string& dir) {
-    ensureFolder(dir);
-    writeText(dir, "table1.csv", r.data.csv());
-    std::string md;
-    for (const auto& t : r.tables) md += "\n" + t.markdown();
-    writeText(dir, "table1.md", "# Table 1: estimator errors (absolute (relative) mean errors)\n" + md);
-    writeFigures(dir, r.figures);
-    return md;
-}
-
-void writeFigure4(const Figure4Result& r, const std::string& figure, const std::string& dir) {
-    ensureFolder(dir);
-    writeFigures(dir, r.figures);
-    writeText(dir, figure + ".csv", r.table.csv());
-}
-
-void writeFigure10(const Figure10Result& r, const std::string& dir) {
-    ensureFolder(dir);
-    writeFigures(dir, r.figures);
-    writeText(dir, "figure10.csv", r.table.csv());
-}
-
-void writeFigure14(const Figure14Result& r, const std::string& dir) {
-    ensureFolder(dir);
-    writeFigures(dir, r.figures);
-    writeText(dir, "figure14.csv", r.table.csv());
-}
-
 void addFigure10Flags(CLI::App& sub, ReproduceArgs& a) {
     addOutputFolderFlag(sub, a.dir);
     addThreadsFlag(sub, a.threads);
@@ -146,10 +118,9 @@ void prepareReproduceAll(ReproduceArgs& a) {
     validateFigure14(a.figure14);
 }
 
-void writeFigure12(const Figure12Result& r, const std::string& dir) {
-    ensureFolder(dir);
-    writeFigures(dir, r.figures);
-    writeText(dir, "figure12.csv", r.table.csv());
+std::string writeReproduction(const std::string& dir, const Report& report, const std::string& text) {
+    const std::vector<std::string> files = writeReport(dir, report);
+    return text + (text.empty() ? "" : "\n") + "wrote " + listNames(files) + " to " + dir;
 }
 
 void runReproduction(const ReproduceArgs& args, const std::string& name,

@@ -79,10 +79,11 @@ void registerShadertoy(CLI::App& app) {
         ProgressLine line("shadertoy");
         if (!a.analysis.list.empty()) {  // the studies' frames through the texture-source interface
             const ShadertoySource source(host);
-            const FrameAnalysisOptions o = frameAnalysisOptions(a.analysis, settings, a.frames, a.flags.firstFrame);
+            FrameAnalysisOptions o = frameAnalysisOptions(a.analysis, settings, a.frames, a.flags.firstFrame);
+            o.sourceName = spec.name;
             const FrameAnalysisResult r = frameAnalysis(source, o, line.callback());  // validates before any frame
             line.finish();
-            writeFrameAnalysis(a.output, spec.name, r);
+            writeReport(a.output, r.report);
             std::printf("%swrote %zu figures, %zu tables and index.html to %s\n", r.markdown.c_str(), r.figures.size(),
                         r.tables.size(), a.output.c_str());
         } else {

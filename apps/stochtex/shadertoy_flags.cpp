@@ -209,11 +209,4 @@ FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const
     return o;
 }
 
-void writeFrameAnalysis(const std::string& dir, const std::string& name, const FrameAnalysisResult& r) {
-    ensureFolder(dir);
-    writeFigures(dir, r.figures);
-    for (const auto& [file, table] : r.tables) writeText(dir, file, table.csv());
-    writeText(dir, "index.html", htmlPage("Frame studies: " + name, "<h1>Frame studies: " + htmlEscape(name) + "</h1>" + r.html));
-}
-
 }  // namespace stochtex::cli

@@ -82,6 +82,5 @@ void addFrameAnalysisFlags(CLI::App& cmd, FrameAnalysisFlags& flags);
 FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const ShadertoySettings& settings,
                                           int frames, int firstFrame);
 // The report: figures, CSV tables and index.html in dir.
-void writeFrameAnalysis(const std::string& dir, const std::string& name, const FrameAnalysisResult& result);
 
 }  // namespace stochtex::cli

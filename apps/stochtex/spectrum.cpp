@@ -49,15 +49,8 @@ void registerSpectrum(CLI::App& app) {
         ProgressLine progress("spectrum");
         const SpectrumStudyResult r = spectrumStudy(source, o, progress.callback());
         progress.finish();
-        writeFigures(args->dir, r.figures);
-        writeText(args->dir, "spectrum.csv", r.summary.csv());
-        writeText(args->dir, "radial.csv", r.profile.csv());
-        writeText(args->dir, "index.html",
-                  htmlPage("Power spectrum: " + info.name,
-                           "<h1>Power spectrum: " + htmlEscape(info.name) + "</h1>" + r.summary.html() +
-                               htmlFigures("", r.figures)));
-        std::printf("%s\nwrote spectrum.png, radial.png, angular.png, spectrum.csv, radial.csv and index.html to %s\n",
-                    r.summary.markdown().c_str(), args->dir.c_str());
+        const std::vector<std::string> files = writeReport(args->dir, spectrumReport(r, info.name));
+        std::printf("%s\nwrote %s to %s\n", r.summary.markdown().c_str(), listNames(files).c_str(), args->dir.c_str());
     });
 }
 

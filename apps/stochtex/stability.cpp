@@ -69,10 +69,8 @@ void registerStability(CLI::App& app) {
         progress.finish();
         std::printf("%s", r.summary.markdown().c_str());
         for (const std::string& video : outputs.finish()) std::printf("wrote %s\n", video.c_str());
-        writeText(dir, "stability.csv", r.summary.csv());
-        writeText(dir, "stability-frames.csv", r.perFrame.csv());
-        writeFigures(dir, r.figures);
-        std::printf("wrote stability.csv, stability-frames.csv, error_flicker.png and accuracy.png to %s\n", dir.c_str());
+        const std::vector<std::string> files = writeReport(dir, stabilityReport(r, spec.name));
+        std::printf("wrote %s to %s\n", listNames(files).c_str(), dir.c_str());
     });
 }
 

@@ -43,16 +43,9 @@ void registerStimuli(CLI::App& app) {
         if (!args->answers.empty()) {
             for (const CLI::Option* f : setFlags) refuseWithoutEffect(f, false, "with --analyse");
             const DetectionRates r = detectionRates(readStimulusAnswers(args->answers));
-            ensureFolder(args->dir);
-            writeFigures(args->dir, r.figures);
-            writeText(args->dir, "detection.csv", r.table.csv());
-            writeText(args->dir, "detection.md", r.table.markdown());
-            writeText(args->dir, "index.html",
-                      htmlPage("Perception experiment: detection rates",
-                               "<h1>Perception experiment: detection rates</h1><p>Answers: " +
-                                   htmlEscape(args->answers) + "</p>" + r.table.html() + htmlFigures("", r.figures)));
-            std::printf("%s\nwrote detection.csv, detection.md, %zu plots and index.html to %s\n",
-                        r.table.markdown().c_str(), r.figures.size(), args->dir.c_str());
+            const std::vector<std::string> files = writeReport(args->dir, detectionReport(r, args->answers));
+            std::printf("%s\nwrote %s to %s\n", r.table.markdown().c_str(), listNames(files).c_str(),
+                        args->dir.c_str());
             return;
         }
         validateStimulusSet(args->set);
@@ -61,12 +54,10 @@ void registerStimuli(CLI::App& app) {
         ProgressLine progress("stimuli");
         const StimulusSet set = stimulusSet(args->set, progress.callback());
         progress.finish();
-        writeFigures(args->dir, set.images);
-        writeText(args->dir, "stimuli.csv", set.listing.csv());
-        writeText(args->dir, "experiment.html", set.page);
+        writeReport(args->dir, stimulusSetReport(set));
         std::printf(
-            "wrote %zu stimuli (%d px, %zu tile sizes x %zu correlations x %d), stimuli.csv and "
-            "experiment.html to %s\nopen experiment.html in a browser; analyse its answers with "
+            "wrote %zu stimuli (%d px, %zu tile sizes x %zu correlations x %d), stimuli.csv, "
+            "experiment.html and index.html to %s\nopen experiment.html in a browser; analyse its answers with "
             "stochtex stimuli --analyse answers.csv -o FOLDER\n",
             set.images.size(), args->set.size, args->set.tiles.size(), args->set.correlations.size(), args->set.repeats,
             args->dir.c_str());

@@ -147,17 +147,21 @@ TEST(TemporalCoherence, ReportRunsBothStudies) {
     EXPECT_EQ(r.frames.summary.csv(), alone.summary.csv());
     ASSERT_TRUE(r.layers.has_value());
     EXPECT_EQ(r.layers->table.csv(), layerCoherenceStudy(zoom, {o.layers, o.frames}).table.csv());
-    ASSERT_EQ(r.figures.size(), 3u);
-    EXPECT_EQ(r.figures[2].file, "layers.png");
-    EXPECT_NE(r.html.find(r.frames.summary.html()), std::string::npos);
-    EXPECT_NE(r.html.find("<h2>Over the number of layers n"), std::string::npos);
-    EXPECT_NE(r.html.find("layers.png"), std::string::npos);
+    ASSERT_EQ(r.report.sections.size(), 2u);
+    EXPECT_EQ(r.report.sections[0].figures.size(), 2u);
+    ASSERT_EQ(r.report.sections[1].figures.size(), 1u);
+    EXPECT_EQ(r.report.sections[1].figures[0].file, "layers.png");
+    const std::string page = reportPage(r.report);
+    EXPECT_NE(page.find(r.frames.summary.html()), std::string::npos);
+    EXPECT_NE(page.find("<h2>Over the number of layers n"), std::string::npos);
+    EXPECT_NE(page.find("layers.png"), std::string::npos);
+    EXPECT_EQ(page.find(r.frames.perFrame.html()), std::string::npos);  // frames.csv only
 
     o.layers.clear();
     const CoherenceReport single = coherenceReport(zoom, o);
     EXPECT_FALSE(single.layers.has_value());
-    EXPECT_EQ(single.figures.size(), 2u);
-    EXPECT_EQ(single.html.find("layers.png"), std::string::npos);
+    ASSERT_EQ(single.report.sections.size(), 1u);
+    EXPECT_EQ(reportPage(single.report).find("layers.png"), std::string::npos);
 
     o.layers = {0};
     EXPECT_EQ(test::inputErrorOf([&] { validateCoherenceReport(o, zoom); }).parameter(), "layersList");

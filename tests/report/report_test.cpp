@@ -91,7 +91,7 @@ TEST_F(ReportFolder, MergedPartsKeepTheirFilesInTheirFolders) {
     EXPECT_EQ(count(page, "href='spectrum/radial.png'"), 1u);
     EXPECT_EQ(count(page, "href='second/radial.png'"), 1u);
     EXPECT_LT(page.find("<h2>Power spectrum (Figure 2.22)</h2>\n<p>Why.</p><p>Intro.</p>"), page.find("Second part"));
-    EXPECT_LT(page.find("<h2>Second part</h2>"), page.find("<h2>Its own heading</h2>"));
+    EXPECT_LT(page.find("<h2>Second part</h2>"), page.find("<h3>Its own heading</h3>"));
 }
 
 // A chart figure is described once: its PNG is linePlot's image of the

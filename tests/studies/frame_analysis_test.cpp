@@ -34,8 +34,11 @@ TEST(FrameAnalysis, RunsEachStudyAsItsCommandDoes) {
     EXPECT_TRUE(files.count("spectrum.png") && files.count("flow_arrows.png") && files.count("appearance.png"));
     ASSERT_EQ(r.tables.size(), 5u);  // spectrum, radial, flow, coherence, coherence_frames
     EXPECT_EQ(r.tables[2].first, "flow.csv");
-    EXPECT_NE(r.html.find("Power spectrum"), std::string::npos);
-    EXPECT_NE(r.html.find("Temporal coherence"), std::string::npos);
+    const std::string page = reportPage(r.report);
+    EXPECT_NE(page.find("Power spectrum"), std::string::npos);
+    EXPECT_NE(page.find("Temporal coherence"), std::string::npos);
+    ASSERT_EQ(r.report.sections.size(), 3u);  // each study's section writes its own tables
+    EXPECT_EQ(r.report.sections[1].tables.front().file, "flow.csv");
     // The spectrum section is spectrumStudy's own on the first frame.
     SpectrumStudyOptions s;
     s.region = o.region;

@@ -36,14 +36,15 @@ struct ArtifactReportOptions {
 // InputError for unusable settings, before any work.
 void validateArtifactReport(const ArtifactReportOptions& options);
 // Runs sliding, contrast, correlation, spectrum, flow, temporal coherence,
-// the image bases, the marble texture and the stimuli, writing each part's
-// files into dir/zoom, dir/contrast, dir/correlation, dir/spectrum, dir/flow,
-// dir/coherence, dir/images, dir/marble (with the sliding videos, MP4 and
-// animated WebP) and dir/stimuli (with experiment.html) as soon as it is
-// done, then dir/index.html with every figure and table, each section naming
-// the thesis figure it reproduces. The page carries no wall-clock time, so
-// two runs write identical files.
-void writeArtifactReport(const std::string& dir, const ArtifactReportOptions& options,
-                         const StudyProgress& progress = {});
+// the image bases, the marble texture and the stimuli and returns their
+// report: each part's files in its folder (zoom, contrast, correlation,
+// spectrum, flow, coherence, images, marble, stimuli with experiment.html),
+// one page with every figure and table, each section naming the thesis
+// figure it reproduces. marbleFrames receives the marble's sliding
+// sequences (marbleVideoNames), which the caller writes as videos into
+// marble/; the page then shows them. No wall-clock time is in the report,
+// so two runs write identical files.
+Report artifactReport(const ArtifactReportOptions& options, const StudyProgress& progress = {},
+                      const MarbleFrameSink& marbleFrames = {});
 
 }  // namespace stochtex

@@ -122,4 +122,15 @@ FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o
     return r;
 }
 
+Report flowReport(const FlowStudyResult& r, const std::string& sourceName, bool video) {
+    Report report;
+    report.title = "Optical flow: " + sourceName;
+    ReportSection s;
+    s.tables = {{"flow.csv", r.summary}};
+    if (video) s.videos = {{"frames", "The frames analysed"}};
+    s.figures = r.figures;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
 }  // namespace stochtex

@@ -47,5 +47,8 @@ struct FlowStudyResult {
 using FlowFrameSink = std::function<void(int, const Image&)>;
 FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& options,
                           const StudyProgress& progress = {}, const FlowFrameSink& onFrame = {});
+// Its report (flow.csv and the figures), titled by the source's name; with
+// `video`, the preview of the frames' video ("frames", written by the caller).
+Report flowReport(const FlowStudyResult& result, const std::string& sourceName, bool video = false);
 
 }  // namespace stochtex

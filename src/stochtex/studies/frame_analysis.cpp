@@ -191,10 +191,20 @@ void validateFrameAnalysis(const FrameAnalysisOptions& o, const TextureSource* s
 FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalysisOptions& o, const StudyProgress& progress) {
     validateFrameAnalysis(o, &source);
     FrameAnalysisResult r;
+    r.report.title = "Frame studies: " + o.sourceName;
     const int n = int(o.analyses.size());
+    // A study's section: its first table on the page, every table (added to
+    // r.tables before) as its CSV, its figures.
+    size_t written = 0;
     const auto add = [&](const std::string& title, const Table& summary, const std::vector<Figure>& figures) {
         r.figures.insert(r.figures.end(), figures.begin(), figures.end());
-        r.html += "<h2>" + htmlEscape(title) + "</h2>" + summary.html() + htmlFigures("", figures);
+        ReportSection s;
+        s.heading = title;
+        s.figures = figures;
+        for (size_t t = written; t < r.tables.size(); ++t)
+            s.tables.push_back({r.tables[t].first, r.tables[t].second, t == written});
+        written = r.tables.size();
+        r.report.sections.push_back(std::move(s));
         r.markdown += title + "\n" + summary.markdown() + "\n";
     };
     for (int k = 0; k < n; ++k) {

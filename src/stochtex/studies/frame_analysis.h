@@ -35,6 +35,7 @@ struct FrameAnalysisOptions {
     int instances = 64;                    // statistics: instances 0…N−1, 2…100000
     int pointX = -1, pointY = -1;          // statistics: the correlation's point in window pixels; −1: the centre
     Transfer frameTransfer = Transfer::Srgb;  // how the frames are shown (Srgb: linear-light colour renders)
+    std::string sourceName;                   // the report's title names it
 };
 // InputError naming the parameter (analyses, and each study's own checks,
 // with the source's checkWindow at every frame), before any work.
@@ -43,7 +44,7 @@ void validateFrameAnalysis(const FrameAnalysisOptions& options, const TextureSou
 struct FrameAnalysisResult {
     std::vector<Figure> figures;                        // every study's, their file names distinct
     std::vector<std::pair<std::string, Table>> tables;  // CSV file name, table
-    std::string html;                                   // one section per study, for a page
+    Report report;                                      // one section per study: every figure and table
     std::string markdown;                               // the studies' summaries, for a terminal
 };
 FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalysisOptions& options,

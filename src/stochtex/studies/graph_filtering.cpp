@@ -173,4 +173,14 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
     return res;
 }
 
+Report figure14Report(const Figure14Result& r) {
+    Report report;
+    report.title = "Figure 14: a texture graph, filtered by moment matching";
+    ReportSection s;
+    s.tables = {{"figure14.csv", r.table}};
+    s.figures = r.figures;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
 }  // namespace stochtex

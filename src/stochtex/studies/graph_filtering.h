@@ -20,6 +20,7 @@
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 #include "stochtex/report/page.h"
+#include "stochtex/report/report.h"
 #include "stochtex/report/table.h"
 
 namespace stochtex {
@@ -56,5 +57,7 @@ struct Figure14Result {
     std::vector<Figure> figures;  // figure14.png (the stages), figure14_filtering.png, figure14_errors.png, then the images per footprint
 };
 Figure14Result figure14(const Figure14Options& options, const Progress& progress = {});
+// Its report: figure14.csv and the figures.
+Report figure14Report(const Figure14Result& result);
 
 }  // namespace stochtex

@@ -41,5 +41,7 @@ struct ImageBaseStudyResult {
 };
 ImageBaseStudyResult imageBaseStudy(const std::vector<ImageBase>& images, const ImageBaseStudyOptions& options,
                                     const StudyProgress& progress = {});
+// Its report (thesis §2.7.1): fractalize.csv and Figures 2.15 and 2.17.
+Report imageBaseReport(const ImageBaseStudyResult& result);
 
 }  // namespace stochtex

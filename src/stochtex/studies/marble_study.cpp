@@ -335,23 +335,27 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& 
     return r;
 }
 
-std::string marbleSectionHtml(const MarbleStudyResult& r, const std::string& prefix, bool videos) {
-    std::string html = "<h3>Stretching (section 2.7.2, Figures 1.6 and 2.19)</h3>\n";
-    std::vector<Figure> stretching, correlation, spectra, sliding;
-    for (const Figure& f : r.figures) {
-        if (f.file == "stretching.png" || f.file == "stretch.png") stretching.push_back(f);
-        else if (f.file == "correlation.png") correlation.push_back(f);
-        else if (f.file == "spectra.png") spectra.push_back(f);
-        else sliding.push_back(f);
-    }
-    html += htmlFigures(prefix, stretching);
-    html += "<h3>Correlation (Figures 2.19–2.21)</h3>\n" + r.correlation.html() + htmlFigures(prefix, correlation);
-    html += "<h3>Power spectra (Figure 2.22)</h3>\n" + r.spectra.html() + htmlFigures(prefix, spectra);
-    html += "<h3>Sliding and optical flow (section 2.8, Figures 2.23–2.24)</h3>\n" + r.sliding.html();
+Report marbleReport(const MarbleStudyResult& r, bool videos) {
+    Report report;
+    report.title = "The marble texture (thesis eq. 2.29)";
+    ReportSection stretching, correlation, spectra, sliding;
+    stretching.heading = "Stretching (section 2.7.2, Figures 1.6 and 2.19)";
+    correlation.heading = "Correlation (Figures 2.19–2.21)";
+    correlation.tables = {{"correlation.csv", r.correlation}};
+    spectra.heading = "Power spectra (Figure 2.22)";
+    spectra.tables = {{"spectra.csv", r.spectra}};
+    sliding.heading = "Sliding and optical flow (section 2.8, Figures 2.23–2.24)";
+    sliding.tables = {{"sliding.csv", r.sliding}};
     if (videos)
-        for (const std::string& v : r.videos) html += htmlAnimatedPreview(prefix, v, htmlEscape(v)) + "\n";
-    html += htmlFigures(prefix, sliding);
-    return html;
+        for (const std::string& v : r.videos) sliding.videos.push_back({v, htmlEscape(v)});
+    for (const Figure& f : r.figures) {
+        if (f.file == "stretching.png" || f.file == "stretch.png") stretching.figures.push_back(f);
+        else if (f.file == "correlation.png") correlation.figures.push_back(f);
+        else if (f.file == "spectra.png") spectra.figures.push_back(f);
+        else sliding.figures.push_back(f);
+    }
+    report.sections = {stretching, correlation, spectra, sliding};
+    return report;
 }
 
 }  // namespace stochtex

@@ -79,6 +79,6 @@ MarbleStudyResult marbleStudy(const MarbleStudyOptions& options, const StudyProg
 
 // The report's section on the study (figures under `prefix`, e.g. "marble/";
 // `videos` true: an animated <name>.webp per sliding video beside them).
-std::string marbleSectionHtml(const MarbleStudyResult& result, const std::string& prefix, bool videos);
+Report marbleReport(const MarbleStudyResult& result, bool videos);
 
 }  // namespace stochtex

@@ -150,4 +150,14 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
     return res;
 }
 
+Report figure12Report(const Figure12Result& r) {
+    Report report;
+    report.title = "Figure 12: LEAN-mapped procedural normal map";
+    ReportSection s;
+    s.tables = {{"figure12.csv", r.table}};
+    s.figures = r.figures;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
 }  // namespace stochtex

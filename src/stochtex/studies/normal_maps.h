@@ -11,6 +11,7 @@
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
+#include "stochtex/report/report.h"
 #include "stochtex/report/table.h"
 
 namespace stochtex {
@@ -54,5 +55,7 @@ struct Figure12Result {
     std::vector<Figure> figures;    // figure12.png, then each variant's view, crop and error maps
 };
 Figure12Result figure12(const Figure12Options& options, const Progress& progress = {});
+// Its report: figure12.csv and the figures.
+Report figure12Report(const Figure12Result& result);
 
 }  // namespace stochtex

@@ -470,4 +470,44 @@ std::vector<Figure> figures7to9(int size, const StudyProgress& progress) {
     return out;
 }
 
+Report table1Report(const Table1Result& r) {
+    Report report;
+    report.title = "Table 1: estimator errors";
+    ReportSection s;
+    s.html = "<p>Absolute (relative) mean errors of μ̂ and σ̂ against the exact footprint statistics of the tiled "
+             "noise, over random square footprints. Noises: low frequency isotropic = low-pass, cut-off 8 cycles "
+             "per period; high frequency anisotropic = bi-lobe, 32 cycles per period, bandwidth 3, 30°; 512² "
+             "examples.</p>";
+    s.tables.push_back({"table1.csv", r.data, false});
+    std::string md = "# Table 1: estimator errors (absolute (relative) mean errors)\n";
+    for (const Table& t : r.tables) {
+        s.tables.push_back({"", t});
+        md += "\n" + t.markdown();
+    }
+    s.files = {{"table1.md", md}};
+    s.figures = r.figures;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
+Report figure4Report(const Figure4Result& r, const std::string& figure) {
+    Report report;
+    report.title = figure == "figure11" ? "Figure 11: filtering the phasor sine pattern"
+                                        : "Figure 4: filtering approximations against the reference";
+    ReportSection s;
+    s.tables = {{figure + ".csv", r.table}};
+    s.figures = r.figures;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
+Report figures7to9Report(const std::vector<Figure>& sheets) {
+    Report report;
+    report.title = "Figures 7–9: colormap layout, palette, spectra";
+    ReportSection s;
+    s.figures = sheets;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
 }  // namespace stochtex

@@ -15,6 +15,7 @@
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
+#include "stochtex/report/report.h"
 #include "stochtex/report/table.h"
 
 namespace stochtex {
@@ -43,6 +44,9 @@ struct Table1Result {
     std::vector<Figure> figures;  // mean error vs footprint, ours and published
 };
 Table1Result table1(const Table1Options& options, const StudyProgress& progress = {});
+// Its report: the paper's layout and the published numbers on the page,
+// table1.csv (every row), table1.md and the plots.
+Report table1Report(const Table1Result& result);
 
 struct Figure4Options {
     PatternSpec pattern;  // the paper uses the camouflage preset
@@ -86,6 +90,8 @@ struct Figure4Result {
     std::vector<Figure> figures;  // <figure>.png, <figure>_errors.png, then the images per footprint
 };
 Figure4Result figure4(const Figure4Options& options, const StudyProgress& progress = {});
+// Its report: <figure>.csv and the figures (figure: figure4, figure11).
+Report figure4Report(const Figure4Result& result, const std::string& figure);
 
 // Per pixel ‖a − b‖₂ over RGB (a 1-channel image), and its mean.
 Image errorMap(const Image& a, const Image& b, double& mean);
@@ -113,5 +119,6 @@ std::vector<PaperFigurePanel> paperFigurePanels(int figure);
 Figure paperFigureSheet(int figure, int size, const StudyProgress& progress = {});
 void validateFigures7to9(int size);
 std::vector<Figure> figures7to9(int size, const StudyProgress& progress = {});
+Report figures7to9Report(const std::vector<Figure>& sheets);
 
 }  // namespace stochtex

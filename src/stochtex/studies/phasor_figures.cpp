@@ -140,4 +140,14 @@ Figure10Result figure10(const Figure10Options& o, const Progress& progress) {
     return res;
 }
 
+Report figure10Report(const Figure10Result& r) {
+    Report report;
+    report.title = "Figure 10: phasor noise, and procedural phasor noise beside it";
+    ReportSection s;
+    s.tables = {{"figure10.csv", r.table}};
+    s.figures = r.figures;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
 }  // namespace stochtex

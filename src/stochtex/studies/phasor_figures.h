@@ -10,6 +10,7 @@
 #include "stochtex/core/progress.h"
 #include "stochtex/noise/phasor_noise.h"
 #include "stochtex/report/page.h"
+#include "stochtex/report/report.h"
 #include "stochtex/report/table.h"
 
 namespace stochtex {
@@ -42,5 +43,7 @@ struct Figure10Result {
     std::vector<Figure> figures;  // figure10.png (variants), figure10_comparison.png
 };
 Figure10Result figure10(const Figure10Options& options, const Progress& progress = {});
+// Its report: figure10.csv and the figures.
+Report figure10Report(const Figure10Result& result);
 
 }  // namespace stochtex

@@ -105,4 +105,14 @@ SpectrumStudyResult spectrumStudy(const TextureSource& source, const SpectrumStu
     return r;
 }
 
+Report spectrumReport(const SpectrumStudyResult& r, const std::string& sourceName) {
+    Report report;
+    report.title = "Power spectrum: " + sourceName;
+    ReportSection s;
+    s.tables = {{"spectrum.csv", r.summary}, {"radial.csv", r.profile, false}};
+    s.figures = r.figures;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
 }  // namespace stochtex

@@ -41,5 +41,8 @@ struct SpectrumStudyResult {
 };
 SpectrumStudyResult spectrumStudy(const TextureSource& source, const SpectrumStudyOptions& options,
                                   const StudyProgress& progress = {});
+// Its report: the summary (spectrum.csv), the radial profile (radial.csv,
+// not on the page) and the figures, titled by the source's name.
+Report spectrumReport(const SpectrumStudyResult& result, const std::string& sourceName);
 
 }  // namespace stochtex

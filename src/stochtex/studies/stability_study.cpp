@@ -116,4 +116,14 @@ StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const Stability
     return r;
 }
 
+Report stabilityReport(const StabilityStudyResult& r, const std::string& patternName) {
+    Report report;
+    report.title = "Temporal stability under a zoom: " + patternName;
+    ReportSection s;
+    s.tables = {{"stability.csv", r.summary}, {"stability-frames.csv", r.perFrame, false}};
+    s.figures = r.figures;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
 }  // namespace stochtex

@@ -51,5 +51,8 @@ void validateStabilityStudy(const StabilityStudyOptions& options);
 using StabilityFrameSink = std::function<void(size_t, int, const Image&)>;
 StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const StabilityStudyOptions& options,
                                     const StudyProgress& progress = {}, const StabilityFrameSink& onFrame = {});
+// Its report: stability.csv, stability-frames.csv (not on the page) and the
+// plots, titled by the pattern's name.
+Report stabilityReport(const StabilityStudyResult& result, const std::string& patternName);
 
 }  // namespace stochtex

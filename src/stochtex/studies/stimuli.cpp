@@ -92,7 +92,7 @@ std::string experimentPage(const StimulusSetOptions& o, const std::vector<Stimul
          "Download the answers (answers.csv)</a>, or copy them from below.</p><pre id='answers-csv'></pre></div>\n"
          "<script type='application/json' id='experiment-config'>"
       << config.dump() << "</script>\n<script>" << kEmbeddedExperimentJs[0].contents << "</script>\n";
-    return htmlPage("Perception experiment: repeating patterns in noise", h.str());
+    return h.str();
 }
 
 }  // namespace
@@ -252,6 +252,31 @@ StimulusOverview stimulusOverview(const StimulusSetOptions& o) {
                    TableCell::value(o.mean, "%g").text + "): tiled white noise blended with fresh noise by α and "
                "contrast-corrected (eq. 2.24), correlation α²/(α² + (1 − α)²) (eq. 2.28)."};
     return r;
+}
+
+Report stimulusSetReport(const StimulusSet& set) {
+    Report report;
+    report.title = "Perception experiment: the stimuli";
+    ReportSection s;
+    s.html = "<p><a href='experiment.html'>experiment.html</a> runs the experiment in a browser (every stimulus is "
+             "in the file); the stimuli command's analysis turns its answers into detection rates "
+             "(docs/EXPERIMENT.md).</p>";
+    s.tables = {{"stimuli.csv", set.listing, false}};
+    s.figures = set.images;
+    s.files = {{"experiment.html", set.page, kExperimentTitle}};
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
+Report stimulusOverviewReport(const StimulusOverview& overview, const StimulusSet& set) {
+    Report report;
+    report.title = "Perception stimuli (Figures 2.13–2.14)";
+    ReportSection s;
+    s.tables = {{"overview.csv", overview.table}};
+    s.figures = {overview.sheet};
+    s.files = {{"experiment.html", set.page, kExperimentTitle}};
+    report.sections.push_back(std::move(s));
+    return report;
 }
 
 }  // namespace stochtex

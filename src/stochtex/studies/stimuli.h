@@ -74,12 +74,16 @@ struct StimulusSet {
     std::vector<StimulusTrial> trials;  // in presentation order
     std::vector<Figure> images;         // the stimuli, same order, file = trial's stimulus (no caption)
     Table listing;                      // stimuli.csv: one row per trial
-    std::string page;                   // experiment.html: the experiment, images embedded
+    std::string page;                   // experiment.html's body: the experiment, images embedded
 };
 // The grid (w outer, correlation, repeat inner) of stimuli, put in the order
 // stimulusTrialOrder(count, deriveSeed(seed, 0)) gives, and the experiment
 // page that shows them in that order.
 StimulusSet stimulusSet(const StimulusSetOptions& options, const StudyProgress& progress = {});
+// Its report: stimuli.csv, the stimuli (not on the page) and experiment.html
+// (the experiment, one file, linked from the page).
+Report stimulusSetReport(const StimulusSet& set);
+inline constexpr const char* kExperimentTitle = "Perception experiment: repeating patterns in noise";
 
 // For a report (Figures 2.13–2.14): one stimulus per (w, correlation) of
 // the grid, as a sheet (a row per w), and the correlation measured in each
@@ -90,6 +94,9 @@ struct StimulusOverview {
     Figure sheet;   // stimuli.png
 };
 StimulusOverview stimulusOverview(const StimulusSetOptions& options);
+// The overview's report (overview.csv, stimuli.png) with the set's
+// experiment.html beside it.
+Report stimulusOverviewReport(const StimulusOverview& overview, const StimulusSet& set);
 
 // The Pearson correlation between the values one tile (w pixels) apart,
 // over every horizontal and vertical pair inside a 1-channel image.

@@ -166,4 +166,16 @@ DetectionRates detectionRates(const std::vector<StimulusAnswer>& answers) {
     return r;
 }
 
+Report detectionReport(const DetectionRates& r, const std::string& answers) {
+    Report report;
+    report.title = "Perception experiment: detection rates";
+    report.html = "<p>Answers: " + htmlEscape(answers) + "</p>";
+    ReportSection s;
+    s.tables = {{"detection.csv", r.table}};
+    s.figures = r.figures;
+    s.files = {{"detection.md", r.table.markdown()}};
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
 }  // namespace stochtex

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "stochtex/report/page.h"
+#include "stochtex/report/report.h"
 #include "stochtex/report/table.h"
 
 namespace stochtex {
@@ -38,5 +39,8 @@ struct DetectionRates {
     std::vector<Figure> figures;
 };
 DetectionRates detectionRates(const std::vector<StimulusAnswer>& answers);
+// Its report: detection.csv, detection.md and the plots; `answers` names the
+// answers file.
+Report detectionReport(const DetectionRates& rates, const std::string& answers);
 
 }  // namespace stochtex

@@ -190,13 +190,18 @@ CoherenceReport coherenceReport(const TextureSource& source, const CoherenceRepo
     validateCoherenceReport(o, source);
     CoherenceReport r;
     r.frames = temporalCoherenceStudy(source, o.frames, progress);
-    r.figures = r.frames.figures;
-    r.html = r.frames.summary.html() + htmlFigures("", r.frames.figures);
+    r.report.title = "Temporal coherence: " + o.sourceName;
+    ReportSection frames;
+    frames.tables = {{"coherence.csv", r.frames.summary}, {"frames.csv", r.frames.perFrame, false}};
+    frames.figures = r.frames.figures;
+    r.report.sections.push_back(std::move(frames));
     if (o.layers.empty()) return r;
     r.layers = layerCoherenceStudy(dynamic_cast<const ZoomSource&>(source), {o.layers, o.frames}, progress);
-    r.figures.insert(r.figures.end(), r.layers->figures.begin(), r.layers->figures.end());
-    r.html += "<h2>Over the number of layers n (thesis Figure 2.4)</h2>" + r.layers->table.html() +
-              htmlFigures("", r.layers->figures);
+    ReportSection layers;
+    layers.heading = "Over the number of layers n (thesis Figure 2.4)";
+    layers.tables = {{"layers.csv", r.layers->table}};
+    layers.figures = r.layers->figures;
+    r.report.sections.push_back(std::move(layers));
     return r;
 }
 

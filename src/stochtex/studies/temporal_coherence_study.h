@@ -60,6 +60,7 @@ LayerCoherenceResult layerCoherenceStudy(const ZoomSource& zoom, const LayerCohe
 struct CoherenceReportOptions {
     TemporalCoherenceOptions frames;
     std::vector<int> layers;  // layer counts n, 1…64 each (the source is then a ZoomSource); empty: no curve over n
+    std::string sourceName;   // the report's title names it
 };
 // InputError naming the parameter (region, times, …, layersList), with the
 // source's checkWindow at every frame's time; before any work.
@@ -67,8 +68,9 @@ void validateCoherenceReport(const CoherenceReportOptions& options, const Textur
 struct CoherenceReport {
     TemporalCoherenceResult frames;
     std::optional<LayerCoherenceResult> layers;  // with options.layers
-    std::vector<Figure> figures;  // frames' figures, then the layers' (appearance.png, frames.png, layers.png)
-    std::string html;             // the page section: summary, figures, the curve over n (figures beside the page)
+    // coherence.csv, frames.csv (not on the page), the frames' figures; then
+    // the curve over n (layers.csv, appearance.png, frames.png, layers.png).
+    Report report;
 };
 CoherenceReport coherenceReport(const TextureSource& source, const CoherenceReportOptions& options,
                                 const StudyProgress& progress = {});

@@ -382,15 +382,55 @@ std::vector<Figure> slidingStudy(const ZoomParams& params, const ZoomBase& base)
     return out;
 }
 
-ContrastStudyResult writeZoomContrastStudy(const ZoomParams& params, const ZoomBase& base,
-                                           const ContrastStudyOptions& options, const std::string& dir) {
+ContrastStudyResult zoomContrastStudy(const ZoomParams& params, const ZoomBase& base,
+                                      const ContrastStudyOptions& options) {
     validateContrastStudy(options);
     const ZoomSource source(params, base);
-    ensureFolder(dir);
-    ContrastStudyResult r = contrastStudy(source, zoomContrastTargets(source, options.size), options);
-    writeFigures(dir, r.figures);
-    writeText(dir, "contrast.csv", r.table.csv());
-    return r;
+    return contrastStudy(source, zoomContrastTargets(source, options.size), options);
+}
+
+Report contrastReport(const ContrastStudyResult& r, int layers) {
+    Report report;
+    report.title = "Contrast loss and its corrections (section 2.4)";
+    ReportSection s;
+    s.html = "<p>Var I(x) = &sigma;<sub>f</sub>&sup2; &alpha;(x, x) &lt; &sigma;<sub>f</sub>&sup2;: the blend loses "
+             "contrast. Each correction uses the per-pixel analytic variance (n = " +
+             std::to_string(layers) + ").</p>";
+    s.tables = {{"contrast.csv", r.table}};
+    s.figures = r.figures;
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
+Report correlationReport(const CorrelationStudyResult& r, const CorrelationStudyOptions& o) {
+    Report report;
+    report.title = "Correlation (section 2.5)";
+    ReportSection all;
+    all.html = "<p>Mean |analytic &minus; measured| over the plots, and the largest analytic correlation away from the "
+               "diagonal band |x &minus; y| &le; 4 (the interpolation kernel's own correlation). Hashed (random) "
+               "offsets remove the echoes.</p>";
+    all.tables = {{"correlation.csv", r.table}};
+    all.figures = r.figures;
+    all.figuresShown = 1;  // Figure 2.10; every plot is in the folder
+    report.sections.push_back(std::move(all));
+    // The plots of each variant at the first layer count.
+    const std::string firstLayers = std::to_string(o.layers.front());
+    ReportSection first;
+    first.heading = "Each variant at n = " + firstLayers;
+    for (const Figure& f : r.figures)
+        if (f.file.find("_n" + firstLayers + "_") != std::string::npos) first.figures.push_back(f);
+    first.htmlAfter = "<p>All plots for every n are in the folder, with correlation.csv.</p>";
+    report.sections.push_back(std::move(first));
+    return report;
+}
+
+Report slidingReport(const std::vector<Figure>& figures) {
+    Report report;
+    report.title = "Sliding (section 2.2)";
+    ReportSection s;
+    s.figures = figures;
+    report.sections.push_back(std::move(s));
+    return report;
 }
 
 }  // namespace stochtex

@@ -64,6 +64,9 @@ struct CorrelationStudyResult {
     std::vector<Figure> figures;  // figure2_10.png first, then the plots of each cell
 };
 CorrelationStudyResult correlationStudy(const CorrelationStudyOptions& options, const StudyProgress& progress = {});
+// Its report (thesis §2.5): the table (correlation.csv), Figure 2.10, each
+// variant's plots at the first layer count; every plot is written.
+Report correlationReport(const CorrelationStudyResult& result, const CorrelationStudyOptions& options);
 
 // --- contrast corrections, any 1-channel source with analytic statistics ---
 
@@ -86,13 +89,15 @@ ContrastStudyResult contrastStudy(const TextureSource& source, const ContrastTar
                                   const ContrastStudyOptions& options);
 // The zoom texture's targets: its first lattice's μ_f, σ_f² and values.
 ContrastTargets zoomContrastTargets(const ZoomSource& source, int size);
-// The contrast study of the zoom texture (params, base) with its figures and
-// contrast.csv written to dir.
-ContrastStudyResult writeZoomContrastStudy(const ZoomParams& params, const ZoomBase& base,
-                                           const ContrastStudyOptions& options, const std::string& dir);
+// The contrast study of the zoom texture (params, base).
+ContrastStudyResult zoomContrastStudy(const ZoomParams& params, const ZoomBase& base,
+                                      const ContrastStudyOptions& options);
+// Its report (thesis §2.4): contrast.csv and the figures; n: the zoom's layers.
+Report contrastReport(const ContrastStudyResult& result, int layers);
 
 // --- sliding: the same frame pair with eq. 2.2 and eq. 2.5, and a_0(t) ---
 
 std::vector<Figure> slidingStudy(const ZoomParams& params, const ZoomBase& base);
+Report slidingReport(const std::vector<Figure>& figures);  // thesis §2.2
 
 }  // namespace stochtex
