@@ -17,6 +17,18 @@ std::string prefixOf(const std::string& folder) { return folder.empty() ? "" : f
 
 }  // namespace
 
+Report sectionReport(std::string title, std::vector<ReportTable> tables, std::vector<Figure> figures,
+                     std::string html) {
+    Report report;
+    report.title = std::move(title);
+    ReportSection s;
+    s.html = std::move(html);
+    s.tables = std::move(tables);
+    s.figures = std::move(figures);
+    report.sections.push_back(std::move(s));
+    return report;
+}
+
 std::string reportPage(const Report& report) {
     std::string body = "<h1>" + htmlEscape(report.title) + "</h1>" + report.html + "\n";
     for (const ReportSection& s : report.sections) {

@@ -57,6 +57,10 @@ struct Report {
     int maxWidthPx = 1200, captionWidthPx = 560;  // htmlPage's
 };
 
+// A report of one untitled section: the usual shape of one study's.
+Report sectionReport(std::string title, std::vector<ReportTable> tables, std::vector<Figure> figures,
+                     std::string html = "");
+
 // index.html's text: the title, then each section's heading, text, tables
 // and figures (linked in the section's folder).
 std::string reportPage(const Report& report);

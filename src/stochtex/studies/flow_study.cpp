@@ -3,16 +3,16 @@
 #include <cmath>
 #include <string>
 
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex {
 
 void validateFlowStudy(const FlowStudyOptions& o, const TextureSource* source) {
     const SourceRegion& r = o.region;
     if (r.width < 16 || r.height < 16 || r.width > 4096 || r.height > 4096)
-        throw InputError::parameter("size", "must be 16…4096 pixels a side, got " + std::to_string(r.width) + "×" +
-                                                std::to_string(r.height));
+        throw InputError::parameter(
+            "size", "must be 16…4096 pixels a side, got " + std::to_string(r.width) + "×" + std::to_string(r.height));
     if (o.frames < 2 || o.frames > 10000)
         throw InputError::parameter("frames", "must be 2…10000, got " + std::to_string(o.frames));
     if (!std::isfinite(o.time) || !std::isfinite(o.timeStep) || !std::isfinite(o.time + o.timeStep * o.frames))
@@ -21,8 +21,7 @@ void validateFlowStudy(const FlowStudyOptions& o, const TextureSource* source) {
         throw InputError::parameter("step", "must be 1…the window's side, got " + std::to_string(o.step));
     if (o.margin < 0 || 2 * o.margin >= std::min(r.width, r.height))
         throw InputError::parameter("margin", "must leave part of the window, got " + std::to_string(o.margin));
-    if (!(o.arrowScale > 0 && o.arrowScale <= 1000))
-        throw InputError::parameter("arrowScale", "must be in (0, 1000]");
+    if (!(o.arrowScale > 0 && o.arrowScale <= 1000)) throw InputError::parameter("arrowScale", "must be in (0, 1000]");
     if (o.instance < 0 || o.instance > 1000000)
         throw InputError::parameter("instance", "must be in [0, 1000000], got " + std::to_string(o.instance));
     if (source) {
@@ -35,8 +34,8 @@ namespace {
 
 void addSummaryRow(Table& t, const std::string& pair, const FlowSummary& s) {
     t.add({pair, TableCell::integer(s.vectors), TableCell::value(s.meanU), TableCell::value(s.meanV),
-           TableCell::value(s.meanMagnitude), TableCell::value(s.meanRadial), TableCell::value(s.outwardFraction, "%.3f"),
-           TableCell::value(s.expansionRate, "%.5f")});
+           TableCell::value(s.meanMagnitude), TableCell::value(s.meanRadial),
+           TableCell::value(s.outwardFraction, "%.3f"), TableCell::value(s.expansionRate, "%.5f")});
 }
 
 }  // namespace
@@ -66,7 +65,8 @@ FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o
     if (onFrame) onFrame(0, prev);
     std::vector<FlowVector> firstVectors;
     for (int k = 0; k + 1 < o.frames; ++k) {
-        if (progress) progress(double(k) / (o.frames - 1), "pair " + std::to_string(k + 1) + "/" + std::to_string(o.frames - 1));
+        if (progress)
+            progress(double(k) / (o.frames - 1), "pair " + std::to_string(k + 1) + "/" + std::to_string(o.frames - 1));
         Image next = source.render(region, o.time + (k + 1) * o.timeStep, o.instance);
         if (onFrame) onFrame(k + 1, next);
         std::vector<FlowVector> v;
@@ -95,14 +95,17 @@ FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o
 
     const std::string method = enumName(kFlowMethodNames, o.method);
     char numbers[200];
-    std::snprintf(numbers, sizeof numbers, "mean outward motion %.3f px, %.0f%% of moving vectors outward, expansion rate %.4f per frame",
+    std::snprintf(numbers, sizeof numbers,
+                  "mean outward motion %.3f px, %.0f%% of moving vectors outward, expansion rate %.4f per frame",
                   r.pairs[0].meanRadial, 100 * r.pairs[0].outwardFraction, r.pairs[0].expansionRate);
     if (dense)
-        r.figures.push_back({"flow_colour.png", flowColourImage(firstFlow),
-                             "Flow of frames 0→1 (" + method +
-                                 "): direction as hue (right red, up yellow-green, left cyan, down violet), magnitude as "
-                                 "brightness (the largest is full)."});
-    r.figures.push_back({"flow_arrows.png", flowArrowsImage(encodeTransfer(first, o.frameTransfer), firstVectors, o.arrowScale),
+        r.figures.push_back(
+            {"flow_colour.png", flowColourImage(firstFlow),
+             "Flow of frames 0→1 (" + method +
+                 "): direction as hue (right red, up yellow-green, left cyan, down violet), magnitude as "
+                 "brightness (the largest is full)."});
+    r.figures.push_back({"flow_arrows.png",
+                         flowArrowsImage(encodeTransfer(first, o.frameTransfer), firstVectors, o.arrowScale),
                          "Flow vectors of frames 0→1 (" + method + ", every " + std::to_string(o.step) +
                              " px, drawn ×" + TableCell::value(o.arrowScale, "%g").text + "): " + numbers + "."});
     if (r.pairs.size() >= 2) {
@@ -115,21 +118,17 @@ FlowStudyResult flowStudy(const TextureSource& source, const FlowStudyOptions& o
         po.title = "Expansion rate per frame pair";
         po.xLabel = "pair k (frames k → k + 1)";
         po.yLabel = "outward motion / distance";
-        r.figures.push_back(chartFigure("expansion.png", {{s}, po},
-                             "The least-squares rate k of outward motion ≈ k·distance from the centre: positive for "
-                             "content moving outward (a zoom in), 0 for a fixed texture."));
+        r.figures.push_back(
+            chartFigure("expansion.png", {{s}, po},
+                        "The least-squares rate k of outward motion ≈ k·distance from the centre: positive for "
+                        "content moving outward (a zoom in), 0 for a fixed texture."));
     }
     return r;
 }
 
 Report flowReport(const FlowStudyResult& r, const std::string& sourceName, bool video) {
-    Report report;
-    report.title = "Optical flow: " + sourceName;
-    ReportSection s;
-    s.tables = {{"flow.csv", r.summary}};
-    if (video) s.videos = {{"frames", "The frames analysed"}};
-    s.figures = r.figures;
-    report.sections.push_back(std::move(s));
+    Report report = sectionReport("Optical flow: " + sourceName, {{"flow.csv", r.summary}}, r.figures);
+    if (video) report.sections.front().videos = {{"frames", "The frames analysed"}};
     return report;
 }
 

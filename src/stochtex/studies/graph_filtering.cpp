@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <array>
 
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/studies/paper.h"
 #include "stochtex/studies/pattern_sheet.h"
 #include "stochtex/studies/reference_samples.h"
@@ -21,15 +21,19 @@ Figure14Options figure14Options() {
 }
 
 void validateFigure14(const Figure14Options& o) {
-    if (!o.pattern.graph) throw InputError(o.name + ": Figure 14 needs a texture graph (a pattern file with \"nodes\")");
-    if (o.size < 16 || o.size > 2048) throw InputError::parameter("size", "must be in [16, 2048], got " + std::to_string(o.size));
+    if (!o.pattern.graph)
+        throw InputError(o.name + ": Figure 14 needs a texture graph (a pattern file with \"nodes\")");
+    if (o.size < 16 || o.size > 2048)
+        throw InputError::parameter("size", "must be in [16, 2048], got " + std::to_string(o.size));
     if (o.referenceSamples < 1 || o.referenceSamples > 4096)
-        throw InputError::parameter("referenceSamples", "must be in [1, 4096], got " + std::to_string(o.referenceSamples));
+        throw InputError::parameter("referenceSamples",
+                                    "must be in [1, 4096], got " + std::to_string(o.referenceSamples));
     validateReferenceTolerance(o.referenceTolerance);
     if (o.footprints.empty() || o.footprints.size() > 12)
         throw InputError::parameter("footprints", "needs 1 to 12 footprints");
     for (const int f : o.footprints)
-        if (f < 1 || f > 4096) throw InputError::parameter("footprints", "each must be in [1, 4096], got " + std::to_string(f));
+        if (f < 1 || f > 4096)
+            throw InputError::parameter("footprints", "each must be in [1, 4096], got " + std::to_string(f));
 }
 
 namespace {
@@ -100,11 +104,11 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
     const double vmax = std::max(1e-3, double(all[at]));
 
     Figure14Result res;
-    res.figures.push_back(
-        {"figure14.png", graphSheet(graph, *o.pattern.graph, o.pattern.scale, o.size).sheet,
-         "Figure 14 (" + o.name + "): the graph's stages, left to right: its leaves (the linear part folded into "
-         "examples, fields shown as gray) and each operation node, the last being the pattern, " +
-             std::to_string(o.size) + "² pixels each at the pattern's scale."});
+    res.figures.push_back({"figure14.png", graphSheet(graph, *o.pattern.graph, o.pattern.scale, o.size).sheet,
+                           "Figure 14 (" + o.name +
+                               "): the graph's stages, left to right: its leaves (the linear part folded into "
+                               "examples, fields shown as gray) and each operation node, the last being the pattern, " +
+                               std::to_string(o.size) + "² pixels each at the pattern's scale."});
     res.table.columns = {{"footprint", "footprint", ""},
                          {"mean_error_none", "none: mean ‖S − S̄‖₂", ""},
                          {"mean_error_mean_only", "mean-only: mean ‖Ŝ − S̄‖₂", ""},
@@ -152,7 +156,8 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
             series[m].y.push_back(values[m]);
         }
     }
-    rows.push_back({colourLegend(0.0, vmax, HeatPalette::Viridis, "error ‖· − S̄‖₂ (linear RGB), one scale for every map")});
+    rows.push_back(
+        {colourLegend(0.0, vmax, HeatPalette::Viridis, "error ‖· − S̄‖₂ (linear RGB), one scale for every map")});
     captions.push_back({""});
     res.figures.push_back(
         {"figure14_filtering.png", sheet(rows, captions),
@@ -168,19 +173,14 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
     lo.yLabel = "mean ‖· − S̄‖₂";
     lo.logX = true;
     res.figures.push_back(chartFigure("figure14_errors.png", {series, lo},
-                           "Mean error against the reference per footprint (log scale in the footprint)."));
+                                      "Mean error against the reference per footprint (log scale in the footprint)."));
     for (auto& f : images) res.figures.push_back(std::move(f));
     return res;
 }
 
 Report figure14Report(const Figure14Result& r) {
-    Report report;
-    report.title = "Figure 14: a texture graph, filtered by moment matching";
-    ReportSection s;
-    s.tables = {{"figure14.csv", r.table}};
-    s.figures = r.figures;
-    report.sections.push_back(std::move(s));
-    return report;
+    return sectionReport("Figure 14: a texture graph, filtered by moment matching", {{"figure14.csv", r.table}},
+                         r.figures);
 }
 
 }  // namespace stochtex

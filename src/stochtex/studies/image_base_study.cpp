@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "stochtex/analysis/correlation_accumulator.h"
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex {
 
@@ -68,11 +68,14 @@ Image correlationImage(const Image& c, const ImageBaseStudyOptions& o) {
 
 void validateImageBaseStudy(const ImageBaseStudyOptions& o, const std::vector<ImageBase>& images) {
     if (images.empty()) throw InputError::parameter("images", "must name at least one image");
-    if (o.size < 8 || o.size > 1024) throw InputError::parameter("size", "must be in [8, 1024], got " + std::to_string(o.size));
+    if (o.size < 8 || o.size > 1024)
+        throw InputError::parameter("size", "must be in [8, 1024], got " + std::to_string(o.size));
     if (o.instances < 2 || o.instances > 100000)
         throw InputError::parameter("instances", "must be in [2, 100000], got " + std::to_string(o.instances));
-    if (o.referenceX >= o.size) throw InputError::parameter("referenceX", "must be below the size, got " + std::to_string(o.referenceX));
-    if (o.referenceY >= o.size) throw InputError::parameter("referenceY", "must be below the size, got " + std::to_string(o.referenceY));
+    if (o.referenceX >= o.size)
+        throw InputError::parameter("referenceX", "must be below the size, got " + std::to_string(o.referenceX));
+    if (o.referenceY >= o.size)
+        throw InputError::parameter("referenceY", "must be below the size, got " + std::to_string(o.referenceY));
     if (o.echoRadius < 0) throw InputError::parameter("echoRadius", "must be ≥ 0, got " + std::to_string(o.echoRadius));
     validateZoomParams(o.zoom);
     for (const ImageBase& b : images) {
@@ -118,32 +121,32 @@ ImageBaseStudyResult imageBaseStudy(const std::vector<ImageBase>& images, const 
         captions15[1].push_back("correlation, echo " + TableCell::value(e0, "%.2f").text);
         rows17.push_back({shownBase, toRgb(zoomNone.render(frame, o.zoom.time, 0)), correlationImage(cNone, o),
                           toRgb(zoomHashed.render(frame, o.zoom.time, 0)), correlationImage(cHashed, o)});
-        captions17.push_back({b.name, "zoom texture, no offsets", "its correlation, echo " + TableCell::value(e1, "%.2f").text,
-                              "zoom texture, hashed offsets", "its correlation, echo " + TableCell::value(e2, "%.2f").text});
+        captions17.push_back(
+            {b.name, "zoom texture, no offsets", "its correlation, echo " + TableCell::value(e1, "%.2f").text,
+             "zoom texture, hashed offsets", "its correlation, echo " + TableCell::value(e2, "%.2f").text});
     }
-    const std::string scale = "correlation from cyan (−1) through white (0) to black (+1), reference point marked "
-                              "by the green cross; " + std::to_string(o.instances) + " periodic translations of each image.";
+    const std::string scale =
+        "correlation from cyan (−1) through white (0) to black (+1), reference point marked "
+        "by the green cross; " +
+        std::to_string(o.instances) + " periodic translations of each image.";
     r.figures.push_back({"figure2_15.png", sheet(rows15, captions15),
                          "Figure 2.15: the base images (gray by I = 0.21r + 0.72g + 0.07b) and their correlation with "
-                         "a point, " + scale});
-    r.figures.push_back({"figure2_17.png", sheet(rows17, captions17),
-                         "Figure 2.17: each image as the base of the zoom texture (n = " + std::to_string(o.zoom.layers) +
-                             ") without offsets and with hashed offsets, and their correlation with a point, " + scale +
-                             " Strongest echo: the largest correlation more than " + std::to_string(o.echoRadius) +
-                             " pixels from the reference."});
+                         "a point, " +
+                             scale});
+    r.figures.push_back(
+        {"figure2_17.png", sheet(rows17, captions17),
+         "Figure 2.17: each image as the base of the zoom texture (n = " + std::to_string(o.zoom.layers) +
+             ") without offsets and with hashed offsets, and their correlation with a point, " + scale +
+             " Strongest echo: the largest correlation more than " + std::to_string(o.echoRadius) +
+             " pixels from the reference."});
     return r;
 }
 
 Report imageBaseReport(const ImageBaseStudyResult& r) {
-    Report report;
-    report.title = "Image textures as the base (section 2.7.1, Figures 2.15 and 2.17)";
-    ReportSection s;
-    s.html = "<p>Each image's correlation with a point over its periodic translations, then the zoom texture over it "
-             "without and with hashed offsets: regular structures echo (ghosting).</p>";
-    s.tables = {{"fractalize.csv", r.table}};
-    s.figures = r.figures;
-    report.sections.push_back(std::move(s));
-    return report;
+    return sectionReport(
+        "Image textures as the base (section 2.7.1, Figures 2.15 and 2.17)", {{"fractalize.csv", r.table}}, r.figures,
+        "<p>Each image's correlation with a point over its periodic translations, then the zoom texture over it "
+        "without and with hashed offsets: regular structures echo (ghosting).</p>");
 }
 
 }  // namespace stochtex

@@ -1,13 +1,13 @@
 #include "stochtex/studies/normal_maps.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/cpu_renderer.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/studies/paper.h"
 
 namespace stochtex {
@@ -31,15 +31,16 @@ FilterOptions leanVariantOptions(LeanVariant variant, int aniso, int referenceSa
 
 void validateFigure12(const Figure12Options& o) {
     if (o.width < 32 || o.height < 32 || o.width > 4096 || o.height > 4096)
-        throw InputError::parameter("size", "must be in [32, 4096] per side, got " + std::to_string(o.width) + "x" +
-                                                std::to_string(o.height));
+        throw InputError::parameter(
+            "size", "must be in [32, 4096] per side, got " + std::to_string(o.width) + "x" + std::to_string(o.height));
     if (o.referenceSamples < 1 || o.referenceSamples > 4096)
-        throw InputError::parameter("referenceSamples", "must be in [1, 4096], got " + std::to_string(o.referenceSamples));
+        throw InputError::parameter("referenceSamples",
+                                    "must be in [1, 4096], got " + std::to_string(o.referenceSamples));
     const auto& c = o.crop;
     if (!(c[0] >= 0 && c[0] < c[2] && c[2] <= 1 && c[1] >= 0 && c[1] < c[3] && c[3] <= 1))
-        throw InputError::parameter("crop", "must be fractions 0 <= x0 < x1 <= 1, 0 <= y0 < y1 <= 1 of the view, got [" +
-                                                formatValue(c[0]) + ", " + formatValue(c[1]) + ", " + formatValue(c[2]) +
-                                                ", " + formatValue(c[3]) + "]");
+        throw InputError::parameter(
+            "crop", "must be fractions 0 <= x0 < x1 <= 1, 0 <= y0 < y1 <= 1 of the view, got [" + formatValue(c[0]) +
+                        ", " + formatValue(c[1]) + ", " + formatValue(c[2]) + ", " + formatValue(c[3]) + "]");
     if (!o.pattern.normalMap) throw InputError(o.name + ": figure 12 needs a pattern with a normal_map");
 }
 
@@ -80,7 +81,8 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
         const double from = k == 0 ? 0.0 : 0.85 + 0.05 * (k - 1), to = k == 0 ? 0.85 : from + 0.05;
         const FilterOptions fo = leanVariantOptions(order[k], o.aniso, o.referenceSamples);
         // The file's lean program (GraphPattern::build), as `render` draws it.
-        views[k] = makeCpuRenderer(o.pattern, fo)->render(cam, progressPart(progress, from, to, enumName(kLeanVariantNames, order[k])));
+        views[k] = makeCpuRenderer(o.pattern, fo)
+                       ->render(cam, progressPart(progress, from, to, enumName(kLeanVariantNames, order[k])));
     }
     Figure12Result res;
     res.table.columns = {{"variant", "variant", ""},
@@ -125,8 +127,9 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
             std::snprintf(text, sizeof text, "%.4f", v);
             return std::string(text);
         };
-        const std::string err = k == 0 ? "" : ", error " + fixed4(res.rows[size_t(k - 1)].meanErrorGlobal) + " / " +
-                                                  fixed4(res.rows[size_t(k - 1)].meanErrorCrop) + " (crop)";
+        const std::string err = k == 0 ? ""
+                                       : ", error " + fixed4(res.rows[size_t(k - 1)].meanErrorGlobal) + " / " +
+                                             fixed4(res.rows[size_t(k - 1)].meanErrorCrop) + " (crop)";
         texts[0].push_back(std::string(captions[k]) + err);
         texts[1].push_back(std::string(captions[k]) + ", mid-distance crop, ×" + std::to_string(magnify));
         images.push_back({"figure12_" + tag + ".png", shown, ""});
@@ -139,11 +142,13 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
         texts[3].push_back("error (crop), " + std::string(captions[k]));
         images.push_back({"figure12_" + tag + "_error.png", std::move(e), ""});
     }
-    rows.push_back({colourLegend(0.0, vmax, HeatPalette::Viridis, "error ‖Ŝ − S̄‖₂ (RGB, linear), one scale for every map")});
+    rows.push_back(
+        {colourLegend(0.0, vmax, HeatPalette::Viridis, "error ‖Ŝ − S̄‖₂ (RGB, linear), one scale for every map")});
     texts.push_back({""});
     res.figures.push_back({"figure12.png", sheet(rows, texts),
                            "Figure 12 (" + o.name + ", " + std::to_string(o.width) + "×" + std::to_string(o.height) +
-                               ", tilt " + formatValue(o.tiltDeg) + "°): LEAN-mapped procedural normal map; rows = the "
+                               ", tilt " + formatValue(o.tiltDeg) +
+                               "°): LEAN-mapped procedural normal map; rows = the "
                                "global view, the mid-distance crop, their errors against the reference (≤ " +
                                std::to_string(o.referenceSamples) + "² samples per pixel)."});
     for (auto& f : images) res.figures.push_back(std::move(f));
@@ -151,13 +156,7 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
 }
 
 Report figure12Report(const Figure12Result& r) {
-    Report report;
-    report.title = "Figure 12: LEAN-mapped procedural normal map";
-    ReportSection s;
-    s.tables = {{"figure12.csv", r.table}};
-    s.figures = r.figures;
-    report.sections.push_back(std::move(s));
-    return report;
+    return sectionReport("Figure 12: LEAN-mapped procedural normal map", {{"figure12.csv", r.table}}, r.figures);
 }
 
 }  // namespace stochtex

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/studies/pattern_sheet.h"
 #include "stochtex/studies/reference_samples.h"
 
@@ -89,11 +89,16 @@ void validateTable1(const Table1Options& o) { validateEstimatorErrorOptions(o.er
 Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
     validateTable1(o);
     Table1Result res;
-    res.data.columns = {{"noise", "noise", ""},          {"footprint", "footprint", "texels"},
-                        {"estimator", "estimator", ""},  {"mu_abs", "mean |μ̂ − μ|", ""},
-                        {"mu_rel", "mean |μ̂ − μ|/|μ|", ""}, {"sigma_abs", "mean |σ̂ − σ|", ""},
-                        {"sigma_rel", "mean |σ̂ − σ|/σ", ""}, {"mean_mu", "mean μ", ""},
-                        {"mean_sigma", "mean σ", ""},     {"values", "values", ""}};
+    res.data.columns = {{"noise", "noise", ""},
+                        {"footprint", "footprint", "texels"},
+                        {"estimator", "estimator", ""},
+                        {"mu_abs", "mean |μ̂ − μ|", ""},
+                        {"mu_rel", "mean |μ̂ − μ|/|μ|", ""},
+                        {"sigma_abs", "mean |σ̂ − σ|", ""},
+                        {"sigma_rel", "mean |σ̂ − σ|/σ", ""},
+                        {"mean_mu", "mean μ", ""},
+                        {"mean_sigma", "mean σ", ""},
+                        {"values", "values", ""}};
     for (int which = 0; which < 2; ++which) {
         // Steps of one noise: building its examples, then each footprint size.
         const Progress noise =
@@ -159,17 +164,18 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
             lo.xLabel = "footprint side (texels)";
             lo.yLabel = "mean absolute error";
             lo.logX = lo.logY = true;
-            const std::string file = std::string("table1_") + (which == 0 ? "low" : "high") + "_" +
-                                     (moment == 0 ? "mu" : "sigma") + ".png";
-            res.figures.push_back(chartFigure(file, {series, lo},
-                                   lo.title + " vs footprint size (log-log), ours and the published Table 1"));
+            const std::string file =
+                std::string("table1_") + (which == 0 ? "low" : "high") + "_" + (moment == 0 ? "mu" : "sigma") + ".png";
+            res.figures.push_back(chartFigure(
+                file, {series, lo}, lo.title + " vs footprint size (log-log), ours and the published Table 1"));
         }
     return res;
 }
 
 void validateFigure4(const Figure4Options& o) {
     const std::string what = o.figure == "figure4" ? "figure 4" : o.figure;
-    if (o.size < 16 || o.size > 4096) throw InputError(what + ": size must be in [16, 4096], got " + std::to_string(o.size));
+    if (o.size < 16 || o.size > 4096)
+        throw InputError(what + ": size must be in [16, 4096], got " + std::to_string(o.size));
     if (o.referenceSamples < 1 || o.referenceSamples > 4096)
         throw InputError(what + ": referenceSamples must be in [1, 4096], got " + std::to_string(o.referenceSamples));
     validateReferenceTolerance(o.referenceTolerance);
@@ -280,7 +286,8 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
 
     Figure4Result res;
     const std::string title = figureTitle(o.figure);
-    res.table.columns = {{"footprint", "footprint", ""}, {"mean_error_none", "mean ‖S − S̄‖₂ (none: pixel centres)", ""}};
+    res.table.columns = {{"footprint", "footprint", ""},
+                         {"mean_error_none", "mean ‖S − S̄‖₂ (none: pixel centres)", ""}};
     if (o.exactStatistics)
         res.table.columns.push_back({"mean_error_exact_stats", "mean ‖Ŝ(μ, Σ) − S̄‖₂ (exact statistics)", ""});
     res.table.columns.push_back({"mean_error_estimators", "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (estimators)", ""});
@@ -336,11 +343,12 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
             images.push_back({tag + rowFiles[r], std::move(img), ""});
         }
     }
-    rows.push_back({colourLegend(0.0, vmax, HeatPalette::Viridis,
-                                 "error ‖Ŝ − S̄‖₂ (RGB), one scale for every error map")});
+    rows.push_back(
+        {colourLegend(0.0, vmax, HeatPalette::Viridis, "error ‖Ŝ − S̄‖₂ (RGB), one scale for every error map")});
     captions.push_back({""});
 
-    PlotSeries a{"exact statistics (eq. 5)", {}, {}, {0.1f, 0.6f, 0.2f}}, b{"estimators (eq. 5, 8, 12)", {}, {}, {0.1f, 0.3f, 0.8f}},
+    PlotSeries a{"exact statistics (eq. 5)", {}, {}, {0.1f, 0.6f, 0.2f}},
+        b{"estimators (eq. 5, 8, 12)", {}, {}, {0.1f, 0.3f, 0.8f}},
         none{"none (pixel centres)", {}, {}, {0.6f, 0.6f, 0.6f}};
     for (const auto& c : res.columns) {
         none.x.push_back(c.footprint);
@@ -358,18 +366,19 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     lo.xLabel = "footprint side (texels)";
     lo.yLabel = "mean ‖Ŝ − S̄‖₂";
     lo.logX = true;
-    const std::string rowList = o.exactStatistics ? "reference S̄ (≤ " + std::to_string(o.referenceSamples) +
-                                                        "² samples per pixel), Ŝ with exact μ, Σ, its error, Ŝ with the "
-                                                        "estimators, its error"
-                                                  : "reference S̄ (≤ " + std::to_string(o.referenceSamples) +
-                                                        "² samples per pixel), Ŝ(μ̂, Σ̂) with the estimators, the "
-                                                        "error ‖Ŝ − S̄‖₂";
+    const std::string rowList = o.exactStatistics
+                                    ? "reference S̄ (≤ " + std::to_string(o.referenceSamples) +
+                                          "² samples per pixel), Ŝ with exact μ, Σ, its error, Ŝ with the "
+                                          "estimators, its error"
+                                    : "reference S̄ (≤ " + std::to_string(o.referenceSamples) +
+                                          "² samples per pixel), Ŝ(μ̂, Σ̂) with the estimators, the "
+                                          "error ‖Ŝ − S̄‖₂";
     res.figures.push_back({o.figure + ".png", sheet(rows, captions),
                            title + " (" + o.name + ", " + std::to_string(o.size) + "² per footprint): rows = " +
                                rowList + "; columns = footprint " + std::to_string(o.footprints.front()) + " … " +
                                std::to_string(o.footprints.back()) + "²."});
-    res.figures.push_back(chartFigure(o.figure + "_errors.png", {series, lo},
-                           "Mean error per footprint (log scale in the footprint)."));
+    res.figures.push_back(
+        chartFigure(o.figure + "_errors.png", {series, lo}, "Mean error per footprint (log scale in the footprint)."));
     for (auto& f : images) res.figures.push_back(std::move(f));
     return res;
 }
@@ -422,7 +431,8 @@ std::vector<PaperFigurePanel> paperFigurePanels(int figure) {
         if (k.number == figure) f = &k;
     if (!f)
         throw InputError::parameter("figure", "must be in [" + std::to_string(kFirstPaperFigure) + ", " +
-                                                  std::to_string(kLastPaperFigure) + "], got " + std::to_string(figure));
+                                                  std::to_string(kLastPaperFigure) + "], got " +
+                                                  std::to_string(figure));
     std::vector<PaperFigurePanel> panels;
     panels.reserve(4);
     for (size_t i = 0; i < 4; ++i) {
@@ -442,7 +452,8 @@ std::vector<PaperFigurePanel> paperFigurePanels(int figure) {
 }
 
 void validateFigures7to9(int size) {
-    if (size < 64 || size > 2048) throw InputError("figures 7-9: size must be in [64, 2048], got " + std::to_string(size));
+    if (size < 64 || size > 2048)
+        throw InputError("figures 7-9: size must be in [64, 2048], got " + std::to_string(size));
 }
 
 Figure paperFigureSheet(int figure, int size, const StudyProgress& progress) {
@@ -465,8 +476,8 @@ std::vector<Figure> figures7to9(int size, const StudyProgress& progress) {
     validateFigures7to9(size);
     std::vector<Figure> out;
     for (int figure = 7; figure <= 9; ++figure)
-        out.push_back(paperFigureSheet(figure, size,
-                                       progressPart(progress, figure - 7, 3, kFigures[size_t(figure - 7)].title)));
+        out.push_back(
+            paperFigureSheet(figure, size, progressPart(progress, figure - 7, 3, kFigures[size_t(figure - 7)].title)));
     return out;
 }
 
@@ -474,10 +485,11 @@ Report table1Report(const Table1Result& r) {
     Report report;
     report.title = "Table 1: estimator errors";
     ReportSection s;
-    s.html = "<p>Absolute (relative) mean errors of μ̂ and σ̂ against the exact footprint statistics of the tiled "
-             "noise, over random square footprints. Noises: low frequency isotropic = low-pass, cut-off 8 cycles "
-             "per period; high frequency anisotropic = bi-lobe, 32 cycles per period, bandwidth 3, 30°; 512² "
-             "examples.</p>";
+    s.html =
+        "<p>Absolute (relative) mean errors of μ̂ and σ̂ against the exact footprint statistics of the tiled "
+        "noise, over random square footprints. Noises: low frequency isotropic = low-pass, cut-off 8 cycles "
+        "per period; high frequency anisotropic = bi-lobe, 32 cycles per period, bandwidth 3, 30°; 512² "
+        "examples.</p>";
     s.tables.push_back({"table1.csv", r.data, false});
     std::string md = "# Table 1: estimator errors (absolute (relative) mean errors)\n";
     for (const Table& t : r.tables) {
@@ -491,23 +503,13 @@ Report table1Report(const Table1Result& r) {
 }
 
 Report figure4Report(const Figure4Result& r, const std::string& figure) {
-    Report report;
-    report.title = figure == "figure11" ? "Figure 11: filtering the phasor sine pattern"
-                                        : "Figure 4: filtering approximations against the reference";
-    ReportSection s;
-    s.tables = {{figure + ".csv", r.table}};
-    s.figures = r.figures;
-    report.sections.push_back(std::move(s));
-    return report;
+    return sectionReport(figure == "figure11" ? "Figure 11: filtering the phasor sine pattern"
+                                              : "Figure 4: filtering approximations against the reference",
+                         {{figure + ".csv", r.table}}, r.figures);
 }
 
 Report figures7to9Report(const std::vector<Figure>& sheets) {
-    Report report;
-    report.title = "Figures 7–9: colormap layout, palette, spectra";
-    ReportSection s;
-    s.figures = sheets;
-    report.sections.push_back(std::move(s));
-    return report;
+    return sectionReport("Figures 7–9: colormap layout, palette, spectra", {}, sheets);
 }
 
 }  // namespace stochtex

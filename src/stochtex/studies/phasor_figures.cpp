@@ -3,12 +3,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/studies/paper.h"
 #include "stochtex/textures/texture_source.h"
 
@@ -73,7 +73,8 @@ SpectralCentroid centroid(const Image& power, double expectedFrequency, double e
 }  // namespace
 
 void validateFigure10(const Figure10Options& o) {
-    if (o.size < 64 || o.size > 2048) throw InputError::parameter("size", "must be in [64, 2048], got " + std::to_string(o.size));
+    if (o.size < 64 || o.size > 2048)
+        throw InputError::parameter("size", "must be in [64, 2048], got " + std::to_string(o.size));
     if (o.comparisonSize < 32 || o.comparisonSize > 2048)
         throw InputError::parameter("comparisonSize", "must be in [32, 2048], got " + std::to_string(o.comparisonSize));
     validatePhasorNoise(o.field);
@@ -82,7 +83,8 @@ void validateFigure10(const Figure10Options& o) {
 Figure10Result figure10(const Figure10Options& o, const Progress& progress) {
     validateFigure10(o);
     Figure10Result res;
-    res.figures.push_back(paperFigureSheet(10, o.size, progressPart(progress, 0.0, 0.5, "figure10: the four variants")));
+    res.figures.push_back(
+        paperFigureSheet(10, o.size, progressPart(progress, 0.0, 0.5, "figure10: the four variants")));
 
     // Ours: phasor-stripes with the field's bi-lobe; the window is one example
     // period (the frequencies are cycles per period on both sides).
@@ -118,8 +120,8 @@ Figure10Result figure10(const Figure10Options& o, const Progress& progress) {
         const Image power = powerSpectrum(windowedGray(renders[i]));
         res.centroids[i] = centroid(power, o.field.frequency, o.field.orientation);
         const SpectralCentroid& c = res.centroids[i];
-        res.table.add({names[i], TableCell::value(c.frequency), TableCell::value(c.orientation),
-                       TableCell::value(c.spread)});
+        res.table.add(
+            {names[i], TableCell::value(c.frequency), TableCell::value(c.orientation), TableCell::value(c.spread)});
         rows[0].push_back(srgbFromLinear(renders[i]));
         captions[0].push_back(names[i]);
         rows[1].push_back(colourise(displaySpectrum(power), 0.0, 1.0, HeatPalette::Viridis));
@@ -141,13 +143,8 @@ Figure10Result figure10(const Figure10Options& o, const Progress& progress) {
 }
 
 Report figure10Report(const Figure10Result& r) {
-    Report report;
-    report.title = "Figure 10: phasor noise, and procedural phasor noise beside it";
-    ReportSection s;
-    s.tables = {{"figure10.csv", r.table}};
-    s.figures = r.figures;
-    report.sections.push_back(std::move(s));
-    return report;
+    return sectionReport("Figure 10: phasor noise, and procedural phasor noise beside it", {{"figure10.csv", r.table}},
+                         r.figures);
 }
 
 }  // namespace stochtex

@@ -3,16 +3,16 @@
 #include <cmath>
 #include <string>
 
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex {
 
 void validateSpectrumStudy(const SpectrumStudyOptions& o, const TextureSource* source) {
     const SourceRegion& r = o.region;
     if (r.width < 4 || r.height < 4 || r.width > 4096 || r.height > 4096)
-        throw InputError::parameter("size", "must be 4…4096 pixels a side, got " + std::to_string(r.width) + "×" +
-                                                std::to_string(r.height));
+        throw InputError::parameter(
+            "size", "must be 4…4096 pixels a side, got " + std::to_string(r.width) + "×" + std::to_string(r.height));
     if (o.times.empty()) throw InputError::parameter("times", "needs at least one time");
     for (double t : o.times)
         if (!std::isfinite(t)) throw InputError::parameter("times", "must be finite");
@@ -51,7 +51,8 @@ SpectrumStudyResult spectrumStudy(const TextureSource& source, const SpectrumStu
     int done = 0;
     for (double t : o.times)
         for (int i = 0; i < o.instances; ++i) {
-            if (progress) progress(double(done) / total, "frame " + std::to_string(done + 1) + "/" + std::to_string(total));
+            if (progress)
+                progress(double(done) / total, "frame " + std::to_string(done + 1) + "/" + std::to_string(total));
             Image frame = source.render(o.region, t, i);
             acc.add(frame);
             if (done++ == 0) first = std::move(frame);
@@ -70,17 +71,18 @@ SpectrumStudyResult spectrumStudy(const TextureSource& source, const SpectrumStu
                          {"mean_radius", "mean |f|", "cycles/pixel"},
                          {"angular_max_min", "angular max/min", ""}};
     const SpectrumGeometry& g = r.geometry;
-    r.summary.add({TableCell::integer(acc.count()), TableCell::value(g.peakRadius), TableCell::value(g.peakOrientationDeg, "%.1f"),
-                   TableCell::value(g.anisotropy, "%.3f"), TableCell::value(g.orientationDeg, "%.1f"),
-                   TableCell::value(g.meanRadius), TableCell::value(g.angularMaxMin, "%.3f")});
+    r.summary.add({TableCell::integer(acc.count()), TableCell::value(g.peakRadius),
+                   TableCell::value(g.peakOrientationDeg, "%.1f"), TableCell::value(g.anisotropy, "%.3f"),
+                   TableCell::value(g.orientationDeg, "%.1f"), TableCell::value(g.meanRadius),
+                   TableCell::value(g.angularMaxMin, "%.3f")});
     r.profile.columns = {{"radius", "|f|", "cycles/pixel"}, {"power", "P", ""}};
     for (size_t b = 0; b < r.radial.radius.size(); ++b)
         r.profile.add({TableCell::value(r.radial.radius[b]), TableCell::value(r.radial.power[b], "%.6g")});
 
     const std::string frames = std::to_string(acc.count()) + (acc.count() == 1 ? " frame" : " frames");
     r.figures.push_back({"spectrum.png", logSpectrumImage(r.spectrum),
-                         "Power spectrum, log scale over 4 decades, zero frequency at the centre (" + frames +
-                             ", " + enumName(kSpectrumWindowNames, o.window) + " window): " + geometryText(g) + "."});
+                         "Power spectrum, log scale over 4 decades, zero frequency at the centre (" + frames + ", " +
+                             enumName(kSpectrumWindowNames, o.window) + " window): " + geometryText(g) + "."});
     PlotSeries radial{"P(|f|)", r.radial.radius, r.radial.power, {0.1f, 0.3f, 0.8f}};
     LinePlotOptions ro;
     ro.title = "Radial profile";
@@ -97,22 +99,17 @@ SpectrumStudyResult spectrumStudy(const TextureSource& source, const SpectrumStu
     ao.xMax = 180;
     char annulus[96];
     std::snprintf(annulus, sizeof annulus, "%.3f ≤ |f| ≤ %.3f", o.rMin, o.rMax);
-    r.figures.push_back(chartFigure("angular.png", {{angular}, ao},
-                         std::string("Mean power per orientation over ") + annulus +
-                             ": flat for an isotropic texture; max/min = " + TableCell::value(g.angularMaxMin, "%.2f").text +
-                             "."));
+    r.figures.push_back(chartFigure(
+        "angular.png", {{angular}, ao},
+        std::string("Mean power per orientation over ") + annulus +
+            ": flat for an isotropic texture; max/min = " + TableCell::value(g.angularMaxMin, "%.2f").text + "."));
     r.figures.push_back({"frame.png", encodeTransfer(first, o.frameTransfer), "The first frame analysed."});
     return r;
 }
 
 Report spectrumReport(const SpectrumStudyResult& r, const std::string& sourceName) {
-    Report report;
-    report.title = "Power spectrum: " + sourceName;
-    ReportSection s;
-    s.tables = {{"spectrum.csv", r.summary}, {"radial.csv", r.profile, false}};
-    s.figures = r.figures;
-    report.sections.push_back(std::move(s));
-    return report;
+    return sectionReport("Power spectrum: " + sourceName,
+                         {{"spectrum.csv", r.summary}, {"radial.csv", r.profile, false}}, r.figures);
 }
 
 }  // namespace stochtex

@@ -4,8 +4,8 @@
 #include <memory>
 #include <string>
 
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex {
 
@@ -52,9 +52,9 @@ StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const Stability
         // Zoom about a fixed texture point: the view centre stays at texel (0, 0).
         cam.view.offsetU = cam.view.offsetV = -0.5 * o.size * cam.view.scale;
         const auto part = [&](int r, const std::string& what) {
-            return progressPart(progress, k * renders + r, o.frames * renders,
-                                "stability: frame " + std::to_string(k + 1) + "/" + std::to_string(o.frames) + ", " +
-                                    what);
+            return progressPart(
+                progress, k * renders + r, o.frames * renders,
+                "stability: frame " + std::to_string(k + 1) + "/" + std::to_string(o.frames) + ", " + what);
         };
         const Image reference = truth.render(cam, part(0, "ground truth"));
         for (size_t m = 0; m < filters.size(); ++m) {
@@ -71,25 +71,25 @@ StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const Stability
                          {"error_flicker_mean", "error flicker, mean |ΔE|", ""},
                          {"error_flicker_max", "error flicker, max", ""},
                          {"accuracy_mean", "mean |I − S̄|", ""}};
-    r.perFrame.columns = {{"filter", "filter", ""},         {"frame", "frame", ""},
-                          {"scale", "scale", ""},           {"accuracy", "|I − S̄|", ""},
-                          {"image_change", "|ΔI|", ""},     {"error_flicker", "|ΔE|", ""}};
+    r.perFrame.columns = {{"filter", "filter", ""},    {"frame", "frame", ""},       {"scale", "scale", ""},
+                          {"accuracy", "|I − S̄|", ""}, {"image_change", "|ΔI|", ""}, {"error_flicker", "|ΔE|", ""}};
     PlotSeries flickerSeries, accuracySeries;
     std::vector<PlotSeries> flickerPlot, accuracyPlot;
     for (size_t m = 0; m < filters.size(); ++m) {
         StabilityMeasurement s{meters[m].imageChange(), meters[m].errorFlicker(), meters[m].accuracy(),
                                meters[m].meanAccuracy()};
-        r.summary.add({names[m], TableCell::value(s.imageChange.mean, "%.5f"), TableCell::value(s.imageChange.max, "%.5f"),
-                       TableCell::value(s.errorFlicker.mean, "%.5f"), TableCell::value(s.errorFlicker.max, "%.5f"),
-                       TableCell::value(s.meanAccuracy, "%.5f")});
+        r.summary.add({names[m], TableCell::value(s.imageChange.mean, "%.5f"),
+                       TableCell::value(s.imageChange.max, "%.5f"), TableCell::value(s.errorFlicker.mean, "%.5f"),
+                       TableCell::value(s.errorFlicker.max, "%.5f"), TableCell::value(s.meanAccuracy, "%.5f")});
         PlotSeries flicker{names[m], {}, {}, seriesColour(m)}, accuracy{names[m], {}, {}, seriesColour(m)};
         for (int k = 0; k < o.frames; ++k) {
             const double scale = s.imageChange.scales[size_t(k)];
             const bool pair = k > 0;
-            r.perFrame.add({names[m], TableCell::integer(k), TableCell::value(scale, "%g"),
-                            TableCell::value(s.accuracy[size_t(k)], "%.5f"),
-                            pair ? TableCell::value(s.imageChange.differences[size_t(k - 1)], "%.5f") : TableCell(""),
-                            pair ? TableCell::value(s.errorFlicker.differences[size_t(k - 1)], "%.5f") : TableCell("")});
+            r.perFrame.add(
+                {names[m], TableCell::integer(k), TableCell::value(scale, "%g"),
+                 TableCell::value(s.accuracy[size_t(k)], "%.5f"),
+                 pair ? TableCell::value(s.imageChange.differences[size_t(k - 1)], "%.5f") : TableCell(""),
+                 pair ? TableCell::value(s.errorFlicker.differences[size_t(k - 1)], "%.5f") : TableCell("")});
             accuracy.x.push_back(scale);
             accuracy.y.push_back(s.accuracy[size_t(k)]);
             if (!pair) continue;
@@ -105,10 +105,13 @@ StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const Stability
     fo.xLabel = "scale (texels per pixel)";
     fo.yLabel = "mean |ΔE|";
     fo.logX = true;
-    r.figures.push_back(chartFigure("error_flicker.png", {flickerPlot, fo},
-                         "Error flicker per frame: the zoom-compensated change of the error frames (frame − ground "
-                         "truth S̄, " + std::to_string(o.truthSamples) + " samples per axis at most). Low only where a "
-                         "filter follows the truth from frame to frame."));
+    r.figures.push_back(
+        chartFigure("error_flicker.png", {flickerPlot, fo},
+                    "Error flicker per frame: the zoom-compensated change of the error frames (frame − ground "
+                    "truth S̄, " +
+                        std::to_string(o.truthSamples) +
+                        " samples per axis at most). Low only where a "
+                        "filter follows the truth from frame to frame."));
     LinePlotOptions ao = fo;
     ao.title = "Accuracy: mean |frame − S̄| per frame";
     ao.yLabel = "mean |I − S̄|";
@@ -117,13 +120,8 @@ StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const Stability
 }
 
 Report stabilityReport(const StabilityStudyResult& r, const std::string& patternName) {
-    Report report;
-    report.title = "Temporal stability under a zoom: " + patternName;
-    ReportSection s;
-    s.tables = {{"stability.csv", r.summary}, {"stability-frames.csv", r.perFrame, false}};
-    s.figures = r.figures;
-    report.sections.push_back(std::move(s));
-    return report;
+    return sectionReport("Temporal stability under a zoom: " + patternName,
+                         {{"stability.csv", r.summary}, {"stability-frames.csv", r.perFrame, false}}, r.figures);
 }
 
 }  // namespace stochtex

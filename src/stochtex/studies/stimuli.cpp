@@ -9,9 +9,9 @@
 
 #include "stochtex/core/embedded_file.h"
 #include "stochtex/core/error.h"
-#include "stochtex/report/plot.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/noise/tiled_white_noise.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex {
 
@@ -78,7 +78,8 @@ std::string experimentPage(const StimulusSetOptions& o, const std::vector<Stimul
          "<div id='intro' class='panel'><h1>Do you see a repeating pattern?</h1>"
          "<p>You will see "
       << trials.size() << " noise images, one at a time (about " << std::lround(std::max(1.0, minutes))
-      << (std::lround(std::max(1.0, minutes)) == 1 ? " minute" : " minutes") << "). Each trial: a grey screen for " << o.resetMs << " ms, then an image for " << o.durationMs
+      << (std::lround(std::max(1.0, minutes)) == 1 ? " minute" : " minutes") << "). Each trial: a grey screen for "
+      << o.resetMs << " ms, then an image for " << o.durationMs
       << " ms, then grey again.</p>"
          "<p>Some images contain a square patch of noise that repeats side by side, like tiles; others do not. "
          "After each image, answer: <b>did you see a repeating pattern?</b> Press <b>Y</b> for yes or <b>N</b> for no "
@@ -236,8 +237,8 @@ StimulusOverview stimulusOverview(const StimulusSetOptions& o) {
         rows.emplace_back();
         captions.emplace_back();
         for (double c : o.correlations) {
-            const Image s = stimulusImage({o.size, w, c, deriveSeed(o.seed, 1 + index++ * uint32_t(o.repeats)), o.mean,
-                                           o.contrast});
+            const Image s = stimulusImage(
+                {o.size, w, c, deriveSeed(o.seed, 1 + index++ * uint32_t(o.repeats)), o.mean, o.contrast});
             const long long pairs = 2ll * std::max(0, o.size - w) * o.size;
             r.table.add({TableCell::integer(w), TableCell::value(c, "%g"),
                          TableCell::value(blendAlphaForCorrelation(c), "%.4f"),
@@ -248,34 +249,27 @@ StimulusOverview stimulusOverview(const StimulusSetOptions& o) {
     }
     r.sheet = {"stimuli.png", sheet(rows, captions),
                "One stimulus per tile size w (rows) and tile-to-tile correlation (columns), as the experiment "
-               "shows them (display values, " + std::to_string(o.size) + " pixels, mean " +
-                   TableCell::value(o.mean, "%g").text + "): tiled white noise blended with fresh noise by α and "
-               "contrast-corrected (eq. 2.24), correlation α²/(α² + (1 − α)²) (eq. 2.28)."};
+               "shows them (display values, " +
+                   std::to_string(o.size) + " pixels, mean " + TableCell::value(o.mean, "%g").text +
+                   "): tiled white noise blended with fresh noise by α and "
+                   "contrast-corrected (eq. 2.24), correlation α²/(α² + (1 − α)²) (eq. 2.28)."};
     return r;
 }
 
 Report stimulusSetReport(const StimulusSet& set) {
-    Report report;
-    report.title = "Perception experiment: the stimuli";
-    ReportSection s;
-    s.html = "<p><a href='experiment.html'>experiment.html</a> runs the experiment in a browser (every stimulus is "
-             "in the file); the stimuli command's analysis turns its answers into detection rates "
-             "(docs/EXPERIMENT.md).</p>";
-    s.tables = {{"stimuli.csv", set.listing, false}};
-    s.figures = set.images;
-    s.files = {{"experiment.html", set.page, kExperimentTitle}};
-    report.sections.push_back(std::move(s));
+    Report report =
+        sectionReport("Perception experiment: the stimuli", {{"stimuli.csv", set.listing, false}}, set.images,
+                      "<p><a href='experiment.html'>experiment.html</a> runs the experiment in a browser "
+                      "(every stimulus is in the file); the stimuli command's analysis turns its answers "
+                      "into detection rates (docs/EXPERIMENT.md).</p>");
+    report.sections.front().files = {{"experiment.html", set.page, kExperimentTitle}};
     return report;
 }
 
 Report stimulusOverviewReport(const StimulusOverview& overview, const StimulusSet& set) {
-    Report report;
-    report.title = "Perception stimuli (Figures 2.13–2.14)";
-    ReportSection s;
-    s.tables = {{"overview.csv", overview.table}};
-    s.figures = {overview.sheet};
-    s.files = {{"experiment.html", set.page, kExperimentTitle}};
-    report.sections.push_back(std::move(s));
+    Report report =
+        sectionReport("Perception stimuli (Figures 2.13–2.14)", {{"overview.csv", overview.table}}, {overview.sheet});
+    report.sections.front().files = {{"experiment.html", set.page, kExperimentTitle}};
     return report;
 }
 

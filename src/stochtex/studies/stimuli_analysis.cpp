@@ -167,14 +167,9 @@ DetectionRates detectionRates(const std::vector<StimulusAnswer>& answers) {
 }
 
 Report detectionReport(const DetectionRates& r, const std::string& answers) {
-    Report report;
-    report.title = "Perception experiment: detection rates";
-    report.html = "<p>Answers: " + htmlEscape(answers) + "</p>";
-    ReportSection s;
-    s.tables = {{"detection.csv", r.table}};
-    s.figures = r.figures;
-    s.files = {{"detection.md", r.table.markdown()}};
-    report.sections.push_back(std::move(s));
+    Report report = sectionReport("Perception experiment: detection rates", {{"detection.csv", r.table}}, r.figures,
+                                  "<p>Answers: " + htmlEscape(answers) + "</p>");
+    report.sections.front().files = {{"detection.md", r.table.markdown()}};
     return report;
 }
 

@@ -6,9 +6,9 @@
 
 #include "stochtex/analysis/contrast.h"
 #include "stochtex/analysis/correlation_accumulator.h"
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex {
 
@@ -30,7 +30,8 @@ Image gray(Image frame) { return frame.channels() == 1 ? frame : toGray(frame); 
 }  // namespace
 
 CorrelationMeasurement measureCorrelation(const TextureSource& source, const CorrelationMeasureOptions& o) {
-    if (o.size < 4 || o.size > 1024) throw InputError("correlation: size must be in [4, 1024], got " + std::to_string(o.size));
+    if (o.size < 4 || o.size > 1024)
+        throw InputError("correlation: size must be in [4, 1024], got " + std::to_string(o.size));
     if (o.instances < 2) throw InputError("correlation: needs at least 2 instances");
     CorrelationMeasurement m;
     if (const auto stats = source.statistics(o.time)) {
@@ -53,7 +54,7 @@ CorrelationMeasurement measureCorrelation(const TextureSource& source, const Cor
 
 ZoomParams applyVariant(ZoomParams p, ZoomVariant v) {
     p.scaling = v == ZoomVariant::Sliding ? ZoomScaling::Sliding : ZoomScaling::Exponential;
-    p.offsets = v == ZoomVariant::Simple ? ZoomOffsets::Simple
+    p.offsets = v == ZoomVariant::Simple   ? ZoomOffsets::Simple
                 : v == ZoomVariant::Random ? ZoomOffsets::Hashed
                                            : ZoomOffsets::None;
     return p;
@@ -108,7 +109,8 @@ void validateCorrelationStudy(const CorrelationStudyOptions& o) {
     if (o.instances < 2 || o.instances > 1000000)
         throw InputError::parameter("instances", "must be in [2, 1e6], got " + std::to_string(o.instances));
     if (o.size < 4 || o.size > 1024)
-        throw InputError::parameter("size", "must be in [4, 1024] for correlation plots, got " + std::to_string(o.size));
+        throw InputError::parameter("size",
+                                    "must be in [4, 1024] for correlation plots, got " + std::to_string(o.size));
     if (o.layers.empty() || o.variants.empty()) throw InputError("correlation: no variants or layer counts");
     for (int n : o.layers)
         if (n < 1 || n > 1024)
@@ -201,7 +203,8 @@ CorrelationStudyResult correlationStudy(const CorrelationStudyOptions& o, const 
 }
 
 void validateContrastStudy(const ContrastStudyOptions& o) {
-    if (o.size < 8 || o.size > 8192) throw InputError::parameter("size", "must be in [8, 8192], got " + std::to_string(o.size));
+    if (o.size < 8 || o.size > 8192)
+        throw InputError::parameter("size", "must be in [8, 8192], got " + std::to_string(o.size));
 }
 
 ContrastTargets zoomContrastTargets(const ZoomSource& source, int size) {
@@ -260,7 +263,8 @@ ContrastStudyResult contrastStudy(const TextureSource& source, const ContrastTar
     Image varR(o.size, o.size, 1, Image::Uninitialized{});
     parallelRows(o.size, [&](int y0, int y1) {
         for (int py = y0; py < y1; ++py)
-            for (int px = 0; px < o.size; ++px) varR.at(px, py) = float(stats->variance(region.x0 + px, region.y0 + py));
+            for (int px = 0; px < o.size; ++px)
+                varR.at(px, py) = float(stats->variance(region.x0 + px, region.y0 + py));
     });
     const double mu = targets.mean, vf = targets.variance;
     std::vector<float> sorted(varR.data().begin(), varR.data().end());
@@ -276,14 +280,17 @@ ContrastStudyResult contrastStudy(const TextureSource& source, const ContrastTar
     // Clamping applies to the corrections, the validity condition to the polynomial: elsewhere "—".
     auto addRow = [&](const std::string& name, const Image& img, TableCell clamped, TableCell invalid) {
         const ChannelStats s = channelStats(img);
-        out.table.add({name, std::move(clamped), std::move(invalid), TableCell::value(s.mean), TableCell::value(s.stddev)});
+        out.table.add(
+            {name, std::move(clamped), std::move(invalid), TableCell::value(s.mean), TableCell::value(s.stddev)});
     };
     std::vector<Image> textures{texture}, histograms, curves;
     std::vector<std::string> names{"uncorrected"};
-    if (!targets.reference.empty()) addRow("white noise (base)", targets.reference, TableCell::none(), TableCell::none());
+    if (!targets.reference.empty())
+        addRow("white noise (base)", targets.reference, TableCell::none(), TableCell::none());
     addRow("uncorrected", texture, TableCell::none(), TableCell::none());
     histograms.push_back(histogramPlot(texture, "uncorrected"));
-    curves.push_back(linePlot({PlotSeries{"identity", {0, 1}, {0, 1}, {0.3f, 0.3f, 0.3f}}}, curveAxes("no correction")));
+    curves.push_back(
+        linePlot({PlotSeries{"identity", {0, 1}, {0, 1}, {0.3f, 0.3f, 0.3f}}}, curveAxes("no correction")));
     std::vector<Figure> corrected;
     for (ContrastMethod m : {ContrastMethod::Linear, ContrastMethod::Polynomial, ContrastMethod::Sigmoid}) {
         const std::string name = contrastMethodName(m);
@@ -325,7 +332,8 @@ ContrastStudyResult contrastStudy(const TextureSource& source, const ContrastTar
     for (const Image& t : textures) {
         Image small = toRgb(resizeNearest(t, thumb, thumb));
         // Inset: the reference (the raw white noise), as in Figure 2.6.
-        if (!targets.reference.empty()) paste(small, toRgb(resizeNearest(targets.reference, thumb / 4, thumb / 4)), 0, 0);
+        if (!targets.reference.empty())
+            paste(small, toRgb(resizeNearest(targets.reference, thumb / 4, thumb / 4)), 0, 0);
         row1.push_back(small);
     }
     out.figures.push_back({"figure2_6.png", sheet({row1, histograms, curves}, {names, {}, {}}),
@@ -355,12 +363,15 @@ std::vector<Figure> slidingStudy(const ZoomParams& params, const ZoomBase& base)
             names.push_back(c);
         }
     }
-    out.push_back({"frames.png", sheet({row}, {names}),
-                   "The zoom texture (n = " + std::to_string(params.layers) +
-                       ") with sliding scales (eq. 2.2) and with the exponential fix (eq. 2.5), half a time unit apart."});
+    out.push_back(
+        {"frames.png", sheet({row}, {names}),
+         "The zoom texture (n = " + std::to_string(params.layers) +
+             ") with sliding scales (eq. 2.2) and with the exponential fix (eq. 2.5), half a time unit apart."});
     std::vector<PlotSeries> series;
     for (const auto& [name, scaling] : scalings) {
-        PlotSeries s{std::string(name) + ": layer 0 scale a₀(t)", {}, {},
+        PlotSeries s{std::string(name) + ": layer 0 scale a₀(t)",
+                     {},
+                     {},
                      scaling == ZoomScaling::Sliding ? std::array<float, 3>{0.8f, 0.2f, 0.1f}
                                                      : std::array<float, 3>{0.1f, 0.3f, 0.8f}};
         ZoomParams p = params;
@@ -376,9 +387,10 @@ std::vector<Figure> slidingStudy(const ZoomParams& params, const ZoomBase& base)
     o.title = "Scale of one layer over time";
     o.xLabel = "t";
     o.yLabel = "a₀";
-    out.push_back(chartFigure("scales.png", {series, o},
-                   "a₀(t): linear ramps (sliding: screen speed 1/a differs per layer) vs exponential decay (every "
-                   "layer moves at the same relative speed −a'/a = 1)."));
+    out.push_back(
+        chartFigure("scales.png", {series, o},
+                    "a₀(t): linear ramps (sliding: screen speed 1/a differs per layer) vs exponential decay (every "
+                    "layer moves at the same relative speed −a'/a = 1)."));
     return out;
 }
 
@@ -390,25 +402,20 @@ ContrastStudyResult zoomContrastStudy(const ZoomParams& params, const ZoomBase& 
 }
 
 Report contrastReport(const ContrastStudyResult& r, int layers) {
-    Report report;
-    report.title = "Contrast loss and its corrections (section 2.4)";
-    ReportSection s;
-    s.html = "<p>Var I(x) = &sigma;<sub>f</sub>&sup2; &alpha;(x, x) &lt; &sigma;<sub>f</sub>&sup2;: the blend loses "
-             "contrast. Each correction uses the per-pixel analytic variance (n = " +
-             std::to_string(layers) + ").</p>";
-    s.tables = {{"contrast.csv", r.table}};
-    s.figures = r.figures;
-    report.sections.push_back(std::move(s));
-    return report;
+    return sectionReport("Contrast loss and its corrections (section 2.4)", {{"contrast.csv", r.table}}, r.figures,
+                         "<p>Var I(x) = &sigma;<sub>f</sub>&sup2; &alpha;(x, x) &lt; &sigma;<sub>f</sub>&sup2;: the "
+                         "blend loses contrast. Each correction uses the per-pixel analytic variance (n = " +
+                             std::to_string(layers) + ").</p>");
 }
 
 Report correlationReport(const CorrelationStudyResult& r, const CorrelationStudyOptions& o) {
     Report report;
     report.title = "Correlation (section 2.5)";
     ReportSection all;
-    all.html = "<p>Mean |analytic &minus; measured| over the plots, and the largest analytic correlation away from the "
-               "diagonal band |x &minus; y| &le; 4 (the interpolation kernel's own correlation). Hashed (random) "
-               "offsets remove the echoes.</p>";
+    all.html =
+        "<p>Mean |analytic &minus; measured| over the plots, and the largest analytic correlation away from the "
+        "diagonal band |x &minus; y| &le; 4 (the interpolation kernel's own correlation). Hashed (random) "
+        "offsets remove the echoes.</p>";
     all.tables = {{"correlation.csv", r.table}};
     all.figures = r.figures;
     all.figuresShown = 1;  // Figure 2.10; every plot is in the folder
@@ -424,13 +431,6 @@ Report correlationReport(const CorrelationStudyResult& r, const CorrelationStudy
     return report;
 }
 
-Report slidingReport(const std::vector<Figure>& figures) {
-    Report report;
-    report.title = "Sliding (section 2.2)";
-    ReportSection s;
-    s.figures = figures;
-    report.sections.push_back(std::move(s));
-    return report;
-}
+Report slidingReport(const std::vector<Figure>& figures) { return sectionReport("Sliding (section 2.2)", {}, figures); }
 
 }  // namespace stochtex
