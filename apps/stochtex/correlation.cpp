@@ -28,9 +28,9 @@ void registerCorrelation(CLI::App& app) {
         ProgressLine progress("correlation");
         const CorrelationStudyResult r = correlationStudy(o, progress.callback());
         progress.finish();
-        const std::vector<std::string> files = writeReport(args->dir, correlationReport(r, o));
+        writeReport(args->dir, correlationReport(r, o));
         std::printf("%s\nwrote %zu figures, figure2_10.png, correlation.csv and index.html to %s\n",
-                    r.table.markdown().c_str(), files.size() - 2, args->dir.c_str());
+                    r.table.markdown().c_str(), r.figures.size(), args->dir.c_str());
     });
 }
 

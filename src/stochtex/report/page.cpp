@@ -25,8 +25,12 @@ void ensureFolder(const std::string& dir) {
     if (ec || !std::filesystem::is_directory(dir)) throw InputError(dir + ": cannot create output folder");
 }
 
+void writeFigure(const std::string& dir, const Figure& figure) {
+    writeImage((std::filesystem::path(dir) / figure.file).string(), figure.image, kNoTransfer);
+}
+
 void writeFigures(const std::string& dir, const std::vector<Figure>& figures) {
-    for (const auto& f : figures) writeImage((std::filesystem::path(dir) / f.file).string(), f.image, kNoTransfer);
+    for (const auto& f : figures) writeFigure(dir, f);
 }
 
 void writeText(const std::string& dir, const std::string& file, const std::string& text) {

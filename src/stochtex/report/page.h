@@ -31,7 +31,8 @@ Figure chartFigure(std::string file, LineChart chart, std::string caption);
 // Creates dir (and parents); InputError naming it if that fails.
 void ensureFolder(const std::string& dir);
 
-// Writes every figure's image into dir (PNG or EXR by the file's extension).
+// Writes the figure's image into dir (PNG or EXR by the file's extension).
+void writeFigure(const std::string& dir, const Figure& figure);
 void writeFigures(const std::string& dir, const std::vector<Figure>& figures);
 
 // Writes text to dir/file atomically (CSV, Markdown, HTML).

@@ -61,7 +61,7 @@ std::vector<std::string> writeReport(const std::string& folder, const Report& re
         const std::string prefix = prefixOf(s.folder);
         ensureFolder(dir);
         for (const Figure& f : s.figures)
-            if (firstTime(prefix + f.file)) writeFigures(dir, {f});
+            if (firstTime(prefix + f.file)) writeFigure(dir, f);
         for (const ReportTable& t : s.tables)
             if (!t.file.empty() && firstTime(prefix + t.file)) writeText(dir, t.file, t.table.csv());
         for (const ReportFile& f : s.files)
