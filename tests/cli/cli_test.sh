@@ -853,6 +853,32 @@ case_hostile_json() {
   expect_ok "largest seed" "$out/h11.png" -- "$bin" render --preset gaussian --seed 4294967295 --size 16 -o "$out/h11.png"
 }
 
+# --- hostile graphs (issue "Hostile input on the new surfaces", item 1) ---
+# A spectral noise through N transform nodes at scale 64 composes a uv scale
+# of 64^N: it crashed every CPU filter and wrote "inf.0" into the GLSL. Each
+# path now refuses the node where the chain leaves one node's range.
+transform_chain() {  # transform_chain N FILE
+  local i previous=n0
+  {
+    printf '{"name": "chain", "size": 16, "nodes": {"n0": {"type": "spectral_noise", "size": 16, "components": [{"shape": "ring", "frequency": 4, "bandwidth": 1}]}'
+    for i in $(seq "$1"); do printf ', "t%d": {"type": "transform", "input": "%s", "scale": 64}' "$i" "$previous"; previous=t$i; done
+    printf ', "c": {"type": "colormap", "x": "%s", "y": "n0", "colormap": {"type": "gaussian"}}}, "output": "c"}' "$previous"
+  } >"$2"
+}
+case_hostile_graph() {
+  local n f message='chain: node "t2" (transform): /nodes/t2/scale: composed with the transforms it reads, uv is scaled by 4096'
+  transform_chain 1 "$work/t1.json"
+  expect_ok "one transform at scale 64" "$out/t1.png" -- "$bin" render "$work/t1.json" --size 16 --filter smooth -o "$out/t1.png"
+  for n in 5 172; do
+    transform_chain "$n" "$work/t$n.json"
+    for f in none paper smooth exact; do
+      expect_bad "$n transforms, filter $f" "$out/t$n$f.png" "$message" -- timeout 20 "$bin" render "$work/t$n.json" --size 32 --view plane --filter "$f" -o "$out/t$n$f.png"
+    done
+    expect_bad "$n transforms on the GPU" "$out/t${n}g.png" "$message" -- timeout 20 "$bin" render "$work/t$n.json" --size 32 --filter smooth --gpu -o "$out/t${n}g.png"
+    expect_bad "$n transforms baked" "$out/tb$n" "$message" -- timeout 20 "$bin" bake "$work/t$n.json" -o "$out/tb$n"
+  done
+}
+
 # --- work budget: refused in well under a second, naming the parameter ---
 case_work_budget() {
   echo '{"noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "colormap": {"type": "ridged", "resolution": 4096}, "size": 32}' >"$work/fine.json"

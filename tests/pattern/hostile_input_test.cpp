@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "stochtex/core/error.h"
@@ -14,8 +15,10 @@
 #include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/gaussianize.h"
 #include "stochtex/noise/spectrum.h"
+#include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/ops/ops.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 #include "test_util.h"
@@ -222,4 +225,83 @@ TEST(HostileImages, LookupsClampNaNBeforeAnyIntegerConversion) {
     EXPECT_EQ(c, table.layer(0, 0).sample(0.75f, 0.5f));  // σ NaN reads the unblurred layer
     HistogramTransform t = HistogramTransform::fit(test::example(SpectrumShape::LowPass, 4, 1, 0, 1, 16));
     EXPECT_EQ(t.inverse(nan), t.inverse(0.0f));
+}
+
+namespace {
+
+// A spectral noise seen through `count` transform nodes, each with the
+// given members, colour-mapped with the noise itself.
+std::string transformChain(int count, const std::string& members) {
+    std::string nodes =
+        R"("n0": {"type": "spectral_noise", "size": 16, "components": [{"shape": "ring", "frequency": 4, "bandwidth": 1}]})";
+    std::string previous = "n0";
+    for (int i = 1; i <= count; ++i) {
+        std::string id = "t";  // not "t" + to_string(i), on which GCC 12 warns falsely (-Wrestrict)
+        id += std::to_string(i);
+        nodes += R"(, ")" + id + R"(": {"type": "transform", "input": ")" + previous + R"(", )" + members + "}";
+        previous = id;
+    }
+    return R"({"name": "chain", "size": 16, "nodes": {)" + nodes + R"(, "c": {"type": "colormap", "x": ")" + previous +
+           R"(", "y": "n0", "colormap": {"type": "gaussian"}}}, "output": "c"})";
+}
+
+PatternSpec parseSpec(const std::string& text) {
+    const auto j = JsonReader::parse(text, "test.json");
+    return parsePatternSpec(JsonReader(j, "test.json"), ".");
+}
+
+std::string buildError(const std::string& text) {
+    return test::inputErrorOf([&] { (void)GraphPattern::build(parseSpec(text)); }).what();
+}
+
+}  // namespace
+
+// Issue "Hostile input on the new surfaces", item 1: chained transform
+// nodes, each in its documented range, composed a uv scale that overflows
+// float (SIGSEGV in the CPU's lookups, "inf.0" in the generated GLSL). The
+// composition is refused at the node where it leaves what one node may do.
+TEST(HostileGraph, ComposedTransformsBeyondOneNodesRangeAreRefusedAtTheNode) {
+    EXPECT_NO_THROW((void)GraphPattern::build(parseSpec(transformChain(1, R"("scale": 64)"))));
+    EXPECT_NO_THROW(
+        (void)GraphPattern::build(parseSpec(transformChain(6, R"("scale": 2, "angle": 33)"))));  // 64 in all
+    for (int count : {2, 5, 40, 172})
+        EXPECT_EQ(buildError(transformChain(count, R"("scale": 64)")),
+                  "chain: node \"t2\" (transform): /nodes/t2/scale: composed with the transforms it reads, uv is "
+                  "scaled by 4096; a chain of transform nodes may scale it by [1/64, 64] in all")
+            << count;
+    EXPECT_NE(buildError(transformChain(7, R"("scale": 2, "angle": 33)")).find("/nodes/t7/scale: "), std::string::npos);
+    EXPECT_NE(buildError(transformChain(2, R"("scale": 0.015625)")).find("/nodes/t2/scale: "), std::string::npos);
+    // Offsets add up through the scales before them: 2·5000 + 5000 along v.
+    EXPECT_EQ(buildError(transformChain(2, R"("scale": 2, "offset_v": 5000)")),
+              "chain: node \"t2\" (transform): /nodes/t2/offset_v: composed with the transforms it reads, uv is offset "
+              "by 15000 example periods; a chain of transform nodes may offset it by at most 1e4 in all");
+}
+
+// What the bound lets through renders under every filter and both views at
+// the camera's own extremes (scale 1e6 texels per pixel, offset 1e9 texels,
+// a plane tilted 89°) with no undefined behaviour (the sanitizer build runs
+// this) and a finite image.
+TEST(HostileGraph, TheExtremeTransformAtTheExtremeCameraRendersFinite) {
+    const GraphPattern program = GraphPattern::build(
+        parseSpec(transformChain(1, R"("scale": 64, "angle": -360, "offset_u": 1e4, "offset_v": -1e4)")));
+    Camera zoom;
+    zoom.view = View{4, 3, 1e6, 1e9, -1e9};
+    Camera plane = zoom;
+    plane.kind = Camera::Kind::Plane;
+    plane.tiltDeg = 89;
+    for (const Camera& camera : {zoom, plane})
+        for (const auto& [name, filter] : kFilterNames) {
+            FilterOptions options;
+            options.use(filter);
+            options.referenceMaxSamples = 4;
+            const Image image = FilteredGraph(program, options).render(camera);
+            for (const float x : image.data()) ASSERT_TRUE(std::isfinite(x)) << name;
+        }
+}
+
+// GLSL has no literal for a non-finite number: the writer refuses one.
+TEST(HostileGraph, NoNonFiniteLiteralReachesGlsl) {
+    EXPECT_EQ(glslFloat(64.0f), "64.0");
+    EXPECT_THROW((void)glslFloat(std::numeric_limits<float>::infinity()), std::logic_error);
+    EXPECT_THROW((void)glslFloat(std::numeric_limits<float>::quiet_NaN()), std::logic_error);
 }

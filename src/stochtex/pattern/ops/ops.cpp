@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdio>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <string_view>
 #include <iterator>
@@ -129,6 +130,10 @@ const char* opKernelStem(const OpParams& op) {
 }
 
 std::string glslFloat(float v) {
+    // GLSL has no literal for inf or NaN ("inf.0" fails to compile): every
+    // number that reaches the program is bounded where it is parsed, so one
+    // here is a bug, not an input.
+    if (!std::isfinite(v)) throw std::logic_error("glslFloat: non-finite value " + std::to_string(v));
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.9g", double(v));
     std::string s = buffer;
