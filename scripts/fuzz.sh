@@ -18,7 +18,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(pattern_json noise_spec colormap_spec image pipeline)
+[ ${#targets[@]} -eq 0 ] && targets=(pattern_json noise_spec colormap_spec image pipeline graph)
 build=${BUILD_DIR:-build-fuzz}
 cxx=${CXX:-clang++-14}
 
@@ -43,7 +43,7 @@ for t in "${targets[@]}"; do
   IFS=';' read -r -a seeds <"$build/fuzz/$t.corpus"
   log=$build/findings/$t.log
   dict=()
-  [ "$t" != image ] && dict=(-dict=tests/fuzz/json.dict)
+  [ "$t" != image ] && [ "$t" != graph ] && dict=(-dict=tests/fuzz/json.dict)  # those two read no JSON
   # -max_len: a pattern file is a few kB; longer inputs only slow the search.
   # shellcheck disable=SC2086
   "$binary" -max_total_time="$seconds" -seed="${FUZZ_SEED:-1}" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
