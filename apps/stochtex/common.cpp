@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string_view>
 #include <utility>
 
@@ -437,7 +438,35 @@ std::string explainParseError(const CLI::App& app, const std::vector<std::string
     return {};
 }
 
-std::string describeInputError(const InputError& e) {
+namespace {
+
+// Per command, the parameters its options were bound to (bindParameter).
+std::map<const CLI::App*, std::map<std::string, std::string>>& parameterBindings() {
+    static std::map<const CLI::App*, std::map<std::string, std::string>> bindings;
+    return bindings;
+}
+
+}  // namespace
+
+CLI::Option* bindParameter(const CLI::App& cmd, CLI::Option* option, const std::string& parameter) {
+    const std::vector<std::string>& longNames = option->get_lnames();
+    parameterBindings()[&cmd][parameter] = longNames.empty() ? option->get_name() : "--" + longNames.front();
+    return option;
+}
+
+const CLI::App* commandThatRan(const CLI::App& app) {
+    const CLI::App* cmd = &app;
+    while (!cmd->get_subcommands().empty()) cmd = cmd->get_subcommands().front();
+    return cmd;
+}
+
+std::string describeInputError(const InputError& e, const CLI::App* ran) {
+    for (const CLI::App* cmd = ran; cmd; cmd = cmd->get_parent()) {
+        const auto bound = parameterBindings().find(cmd);
+        if (bound == parameterBindings().end()) continue;
+        if (const auto it = bound->second.find(e.parameter()); it != bound->second.end())
+            return it->second + ": " + e.what();
+    }
     for (const auto& [parameter, flag] : kParameterFlags)
         if (e.parameter() == parameter) return std::string(flag) + ": " + e.what();
     return e.what();

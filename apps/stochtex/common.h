@@ -194,10 +194,19 @@ void tidyDefaults(CLI::App& app);
 // the arguments show no such mistake (CLI11's own message is then right).
 std::string explainParseError(const CLI::App& app, const std::vector<std::string>& args);
 
+// Says that `option` sets the library parameter `parameter` in command `cmd`:
+// where commands name one parameter differently (the correlation plots'
+// extent, "plotSize", is --size in `correlation` and --plot-size in
+// `analyze`), the command's own binding names the flag. Returns option.
+CLI::Option* bindParameter(const CLI::App& cmd, CLI::Option* option, const std::string& parameter);
+
 // An InputError as the user reads it: a library parameter error is prefixed
 // with the flag that sets the parameter ("--aniso: aniso must be in [1, 16],
-// got 0"); any other error as it is.
-std::string describeInputError(const InputError& e);
+// got 0") — the binding of `ran` (the command that ran) or of a command above
+// it, else the shared table; any other error as it is.
+std::string describeInputError(const InputError& e, const CLI::App* ran = nullptr);
+// The innermost command the parsed arguments chose (app itself if none).
+const CLI::App* commandThatRan(const CLI::App& app);
 
 // -o,--output FOLDER, required (what: its help text).
 void addOutputFolderFlag(CLI::App& cmd, std::string& dir, const std::string& what = "Output folder");

@@ -68,7 +68,8 @@ int main(int argc, char** argv) {
                      explained.empty() ? e.what() : explained.c_str());
         return 2;
     } catch (const stochtex::InputError& e) {
-        std::fprintf(stderr, "stochtex: error: %s\n", stochtex::cli::describeInputError(e).c_str());
+        std::fprintf(stderr, "stochtex: error: %s\n",
+                     stochtex::cli::describeInputError(e, stochtex::cli::commandThatRan(app)).c_str());
         return 2;
     } catch (const stochtex::GpuUnavailable& e) {
         // Not a bug: what the user asked for needs a display or GPU this machine lacks.

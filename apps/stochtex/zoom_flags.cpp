@@ -58,8 +58,9 @@ void addCorrelationStudyFlags(CLI::App& cmd, CorrelationStudyOptions& study, con
         ->delimiter(',')
         ->default_str("16,8,4,2");
     cmd.add_option("--instances", study.instances, "Instances N of the statistical accumulator")->capture_default_str();
-    cmd.add_option(sizeFlag, study.size, "Extent of the correlation plots in pixels from the zoom centre")
-        ->capture_default_str();
+    bindParameter(cmd, cmd.add_option(sizeFlag, study.size, "Extent of the correlation plots in pixels from the zoom centre")
+                      ->capture_default_str(),
+                  "plotSize");
 }
 
 }  // namespace stochtex::cli

@@ -773,8 +773,8 @@ case_bad_input() {
 }
 
 case_bad_render_flags() {
-  expect_bad "NaN scale" "$out/bad6.png" "--scale: scale must be a finite number in (0, 1e6], got nan" -- "$bin" render --preset gaussian -o "$out/bad6.png" --scale nan
-  expect_bad "negative scale" "$out/bad7.png" "--scale: scale must be a finite number in (0, 1e6], got -2" -- "$bin" render --preset gaussian -o "$out/bad7.png" --scale -2
+  expect_bad "NaN scale" "$out/bad6.png" "--scale: scale must be a number in [1e-6, 1e6], got nan" -- "$bin" render --preset gaussian -o "$out/bad6.png" --scale nan
+  expect_bad "negative scale" "$out/bad7.png" "--scale: scale must be a number in [1e-6, 1e6], got -2" -- "$bin" render --preset gaussian -o "$out/bad7.png" --scale -2
   expect_bad "negative size" "$out/bad8.png" "--size: size must be in [1, 16384] per side, got -5x-5" -- "$bin" render --preset gaussian -o "$out/bad8.png" --size=-5
   expect_bad "size over cap" "$out/bad9.png" "--size: size must be in [1, 16384] per side, got 100000x100000" -- "$bin" render --preset gaussian -o "$out/bad9.png" --size 100000
   expect_bad "NaN offset" "$out/bad10.png" "--offset: offset must be finite and at most 1e9 texels, got nan,0" -- "$bin" render --preset gaussian -o "$out/bad10.png" --offset nan,0
@@ -791,10 +791,11 @@ case_bad_render_flags() {
   expect_bad "aniso zero" "$out/bad19.png" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
   expect_bad "aniso absurd" "$out/bad20.png" "--aniso: aniso must be in [1, 16], got 1000" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
   expect_bad "tilt" "$out/bad21.png" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95
-  expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be a finite number in (0, 1e6], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
+  expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be a number in [1e-6, 1e6], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
   expect_bad "bad view" "$out/bad23.png" '--view: view must be zoom or plane, got "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
   expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper or deliot-heitz, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh
-  expect_bad "stability scale" "$out/sbad1" "--from: from must be a finite scale in (0, 1e6], got 0" -- "$bin" stability --preset gaussian -o "$out/sbad1" --from 0
+  expect_bad "stability scale" "$out/sbad1" "--from: from must be a number in [1e-6, 1e6], got 0" -- "$bin" stability --preset gaussian -o "$out/sbad1" --from 0
+  expect_bad "stability denormal scale" "$out/sbad1b" "--from: from must be a number in [1e-6, 1e6], got 4.94066e-324" -- "$bin" stability --preset gaussian -o "$out/sbad1b" --from 4.9e-324
   expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"
 }
 
@@ -809,7 +810,12 @@ case_bad_study_flags() {
   expect_bad "zoom H <= 0" "$out/zbad2" "--max-scale: maxScale (H) must be a finite number in (0, 1000], got 0" -- "$bin" zoom -o "$out/zbad2" --max-scale 0
   expect_bad "correlation N = 0" "$out/zbad3" "--instances: instances must be in [2, 1e6], got 0" -- "$bin" correlation -o "$out/zbad3" --instances 0
   expect_bad "contrast unreadable base" "$out/zbad4" "nothere.png: no such image file" -- "$bin" contrast -o "$out/zbad4" --base "$work/nothere.png"
+  # A float base far out of range rendered black with exit 0 (its moments overflow float).
+  expect_bad "zoom base holding 1e20" "$out/zbad8" "large_values.exr: base texture: pixel (3, 5) channel 0 is 1e+20; its values must be in [-65504, 65504]" -- "$bin" zoom -o "$out/zbad8" --size 16 --frames 2 --base "$src/tests/fuzz/images/large_values.exr"
   expect_bad "analyze bad variant n" "$out/zbad5" "--layers-list: layersList must hold layer counts in [1, 1024], got 0" -- "$bin" analyze -o "$out/zbad5" --layers-list 0
+  # One library parameter, two flags: each command names its own.
+  expect_bad "analyze plot size 0" "$out/zbad6" "--plot-size: plotSize must be in [4, 1024], got 0" -- "$bin" analyze -o "$out/zbad6" --plot-size 0
+  expect_bad "correlation plot size 0" "$out/zbad7" "--size: plotSize must be in [4, 1024], got 0" -- "$bin" correlation -o "$out/zbad7" --size 0
   expect_bad "reproduce unknown preset" "$out/rbad1" 'unknown preset "nope"' -- "$bin" reproduce figure4 -o "$out/rbad1" --preset nope
   expect_bad "figure 4 without the estimators" "$out/rbad3" "--filter: filter must be paper or smooth, got \"exact\"" -- "$bin" reproduce figure4 -o "$out/rbad3" --filter exact
   expect_bad "reproduce zero count" "$out/rbad2" "--count: count must be in [1, 1e6], got 0" -- "$bin" reproduce table1 -o "$out/rbad2" --count 0
@@ -877,6 +883,14 @@ case_hostile_graph() {
     expect_bad "$n transforms on the GPU" "$out/t${n}g.png" "$message" -- timeout 20 "$bin" render "$work/t$n.json" --size 32 --filter smooth --gpu -o "$out/t${n}g.png"
     expect_bad "$n transforms baked" "$out/tb$n" "$message" -- timeout 20 "$bin" bake "$work/t$n.json" -o "$out/tb$n"
   done
+}
+
+# A #line near 2^31: the driver's log numbers lines past an int ("internal error: stoi", exit 1).
+case_hostile_shadertoy() {
+  mkdir -p "$work/line"
+  printf 'void mainImage(out vec4 c, in vec2 p) {\n#line 2147483640\n c = vec4(1);\n\n\n\n\n\n\n\n\n\n c = vec4(undefinedThing);\n}\n' >"$work/line/image.glsl"
+  expect_bad "#line past an int" "$out/line.png" "line: pass image does not compile" -- "$bin" shadertoy "$work/line" --size 16 -o "$out/line.png"
+  grep -q "undefinedThing" "$work/err.txt" || fail "#line past an int: the compiler's message is lost: $(cat "$work/err.txt")"
 }
 
 # --- work budget: refused in well under a second, naming the parameter ---

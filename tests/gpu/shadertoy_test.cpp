@@ -14,6 +14,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/presets.h"
@@ -856,3 +857,15 @@ TEST_F(Shadertoy, BadProgramsAreRefusedNamingTheFileAndLine) {
 
 }  // namespace
 }  // namespace stochtex
+
+// Issue "Hostile input on the new surfaces", item 6: a `#line` near 2³¹
+// made the driver print line numbers past an int, and std::stoi ended the
+// run as "internal error: stoi". A line an int does not hold is 0 (unknown).
+TEST(ShaderLog, LineNumbersPastAnIntAreUnknownNotAnError) {
+    EXPECT_EQ(stochtex::logLineNumber("12"), 12);
+    EXPECT_EQ(stochtex::logLineNumber("2147483647"), 2147483647);
+    EXPECT_EQ(stochtex::logLineNumber("2147483648"), 0);
+    EXPECT_EQ(stochtex::logLineNumber("99999999999999999999999"), 0);
+    EXPECT_EQ(stochtex::logLineNumber("0"), 0);
+    EXPECT_EQ(stochtex::logLineNumber(""), 0);
+}

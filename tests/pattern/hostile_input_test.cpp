@@ -305,3 +305,24 @@ TEST(HostileGraph, NoNonFiniteLiteralReachesGlsl) {
     EXPECT_THROW((void)glslFloat(std::numeric_limits<float>::infinity()), std::logic_error);
     EXPECT_THROW((void)glslFloat(std::numeric_limits<float>::quiet_NaN()), std::logic_error);
 }
+
+// Item 2: linear nodes multiply their scales; 20 affines at scale 100
+// overflowed float in the folded example and rendered black with exit 0.
+// The fold is refused at the node where the field leaves half float's range.
+TEST(HostileGraph, ALinearChainThatOverflowsIsRefusedAtItsNode) {
+    std::string nodes =
+        R"("n0": {"type": "spectral_noise", "size": 16, "components": [{"shape": "ring", "frequency": 4, "bandwidth": 1}]})";
+    std::string previous = "n0";
+    for (int i = 1; i <= 20; ++i) {
+        std::string id = "a";  // not "a" + to_string(i), on which GCC 12 warns falsely (-Wrestrict)
+        id += std::to_string(i);
+        nodes += R"(, ")" + id + R"(": {"type": "affine", "input": ")" + previous + R"(", "scale": 100})";
+        previous = id;
+    }
+    const std::string text = R"({"name": "chain", "size": 16, "nodes": {)" + nodes +
+                             R"(, "c": {"type": "colormap", "x": ")" + previous +
+                             R"(", "y": "n0", "colormap": {"type": "gaussian"}}}, "output": "c"})";
+    const std::string e = buildError(text);
+    EXPECT_EQ(e.find("chain: node \"a3\" (affine): pixel ("), 0u) << e;  // 100³ · a value near 0.5
+    EXPECT_NE(e.find("; its field's values must be in [-65504, 65504]"), std::string::npos) << e;
+}

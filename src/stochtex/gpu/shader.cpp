@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -34,6 +35,12 @@ const std::map<std::string, std::string>& embeddedShaders() {
 }
 
 }  // namespace
+
+int logLineNumber(const std::string& digits) {
+    int line = 0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), line);
+    return error == std::errc() && end == digits.data() + digits.size() && line > 0 ? line : 0;
+}
 
 const std::string& shaderSource(const std::string& stem) {
     const auto it = embeddedShaders().find(stem);
@@ -206,8 +213,13 @@ std::string mapLocations(const std::string& log, const std::vector<std::string>&
     std::sregex_iterator it(log.begin(), log.end(), loc), end;
     std::size_t last = 0;
     for (; it != end; ++it) {
-        const int line = std::stoi((*it)[1]);
+        const int line = logLineNumber((*it)[1]);
         out += log.substr(last, std::size_t(it->position()) - last);
+        if (line == 0) {  // no line of the text: the location as the driver wrote it
+            out += it->str();
+            last = std::size_t(it->position() + it->length());
+            continue;
+        }
         std::size_t k = 0;
         while (k + 1 < starts.size() && starts[k + 1] <= line) ++k;
         out += line >= starts.front() ? files[k] + ":" + std::to_string(line - starts[k] + 1) : "header:" + std::to_string(line);

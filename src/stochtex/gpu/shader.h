@@ -18,6 +18,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A line number in a driver's log (its digits), or 0 when an int does not
+// hold it: after a `#line` near 2³¹ drivers print numbers past it.
+int logLineNumber(const std::string& digits);
+
 // The embedded shader file with this stem ("common", "pattern", ...).
 const std::string& shaderSource(const std::string& stem);
 std::vector<std::string> shaderNames();

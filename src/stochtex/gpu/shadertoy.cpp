@@ -365,7 +365,7 @@ std::string firstCompilerError(const std::string& what,
         if (message.ends_with("candidates are:")) message.resize(message.size() - 16);
         while (!message.empty() && (message.back() == ';' || message.back() == ' ')) message.pop_back();
         file = m[1].str();
-        line = std::stoi(m[2].str());
+        line = logLineNumber(m[2].str());  // 0 (past an int): no source line is quoted
         location = file + ":" + m[2].str() + (m[3].matched ? ":" + m[3].str() : "");
         first = message;
     }
@@ -382,7 +382,7 @@ std::string firstCompilerError(const std::string& what,
     if (more > 0) out += " (and " + std::to_string(more) + " more error" + (more > 1 ? "s" : "") + ")";
     // The line itself, from the user's file, so the message is read without opening it.
     for (const auto& [path, text] : userFiles) {
-        if (path != file) continue;
+        if (path != file || line == 0) continue;
         size_t begin = 0;
         for (int k = 1; k < line && begin != std::string::npos; ++k) {
             begin = text.find('\n', begin);

@@ -5,6 +5,9 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
+#include <string>
+
+#include "stochtex/core/error.h"
 
 namespace stochtex {
 
@@ -131,6 +134,17 @@ ChannelStats channelStats(const Image& image, int channel) {
     s.mean = sum / double(n);
     s.stddev = std::sqrt(std::max(0.0, sum2 / double(n) - s.mean * s.mean));
     return s;
+}
+
+void checkPixelRange(const Image& img, const std::string& file, double lo, double hi, const std::string& what) {
+    for (int y = 0; y < img.height(); ++y) {
+        const float* row = img.row(y);
+        for (int i = 0; i < img.width() * img.channels(); ++i)
+            if (!(row[i] >= lo && row[i] <= hi))
+                throw InputError(file + ": pixel (" + std::to_string(i / img.channels()) + ", " + std::to_string(y) +
+                                 ") channel " + std::to_string(i % img.channels()) + " is " + formatValue(row[i]) +
+                                 "; " + what + " values must be in [" + formatValue(lo) + ", " + formatValue(hi) + "]");
+    }
 }
 
 }  // namespace stochtex

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <memory>
 #include <new>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -90,5 +91,11 @@ struct ChannelStats {
     double stddev = 0.0;
 };
 ChannelStats channelStats(const Image& image, int channel = 0);
+
+// InputError naming `file` and the first pixel whose value leaves [lo, hi]
+// (NaN and ±inf included): float images (EXR) can hold anything, and a value
+// far out of range overflows the float moments of what is made from them
+// (E² of 1e20 is inf, inf − inf a NaN σ). `what` names the use ("colormap").
+void checkPixelRange(const Image& img, const std::string& file, double lo, double hi, const std::string& what);
 
 }  // namespace stochtex

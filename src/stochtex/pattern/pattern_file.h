@@ -26,6 +26,9 @@ namespace stochtex {
 // half float (the GPU table and the engine export may store halves).
 constexpr double kMinExemplarValue = 0.0, kMaxExemplarValue = 1.0;
 constexpr double kMaxColormapValue = 65504.0;
+// What a graph's linear field may hold (half float's range, as a colormap):
+// its squares and products stay finite in the float pyramids.
+constexpr double kMaxFieldValue = 65504.0;
 
 struct NoiseSpec {
     enum class Source { Spectrum, Image };

@@ -5,6 +5,7 @@
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/pattern_file.h"
+#include "stochtex/pattern/view.h"
 
 namespace stochtex {
 
@@ -14,8 +15,15 @@ const PatternMembers& patternMembers() {
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     static const PatternMembers members = [&] {
         PatternMembers m;
-        m.scale =
-            ParamInfo{"scale", ParamType::Number, "Example texels per output pixel", 1.0, 1e-6, 1e6, nullptr, {}, 64};
+        m.scale = ParamInfo{"scale",
+                            ParamType::Number,
+                            "Example texels per output pixel",
+                            1.0,
+                            kMinViewScale,
+                            kMaxViewScale,
+                            nullptr,
+                            {},
+                            64};
         m.gridDensity = ParamInfo{"grid_density",
                                   ParamType::Number,
                                   "Triangle-grid cells per example period",

@@ -112,20 +112,6 @@ PaintedShape parseShape(const JsonReader& r) {
     return s;
 }
 
-// Refuses an image whose values leave [lo, hi] (NaN and ±inf included), naming
-// the first such pixel: float images (EXR) can hold anything, and a value far
-// out of range overflows the float moments (E² of 1e20 is inf, inf − inf a NaN σ).
-void checkPixelRange(const Image& img, const std::string& file, double lo, double hi, const std::string& what) {
-    for (int y = 0; y < img.height(); ++y) {
-        const float* row = img.row(y);
-        for (int i = 0; i < img.width() * img.channels(); ++i)
-            if (!(row[i] >= lo && row[i] <= hi))
-                throw InputError(file + ": pixel (" + std::to_string(i / img.channels()) + ", " + std::to_string(y) +
-                                 ") channel " + std::to_string(i % img.channels()) + " is " + formatValue(row[i]) +
-                                 "; " + what + " values must be in [" + formatValue(lo) + ", " + formatValue(hi) + "]");
-    }
-}
-
 }  // namespace
 
 void checkSpectrumSpec(const JsonReader& r, const SpectrumSpec& s) {

@@ -263,7 +263,12 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
                          linearInput,
                          [&](const std::string& port) { return buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache); },
                          [&](const std::string& port) -> const GraphNode& { return graph.node(g.inputs.at(port)); }};
-    return g.info->fold(fold);
+    NoiseExample e = g.info->fold(fold);
+    // Linear nodes in a chain multiply their scales (20 affines at scale 100
+    // overflowed float and rendered black, exit 0): refused at the node where
+    // the field leaves the range its float moments hold.
+    checkPixelRange(e.values(), where + " (" + g.info->name + ")", -kMaxFieldValue, kMaxFieldValue, "its field's");
+    return e;
 }
 
 }  // namespace

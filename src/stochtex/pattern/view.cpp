@@ -7,14 +7,18 @@
 
 namespace stochtex {
 
+void checkViewScale(double scale, const char* parameter) {
+    if (!(scale >= kMinViewScale && scale <= kMaxViewScale))  // NaN too
+        throw InputError::parameter(parameter, "must be a number in [1e-6, 1e6], got " + formatValue(scale));
+}
+
 void validateView(const View& view) {
     const std::string size = std::to_string(view.width) + "x" + std::to_string(view.height);
     if (view.width < 1 || view.height < 1 || view.width > kMaxOutputSide || view.height > kMaxOutputSide)
         throw InputError::parameter("size", "must be in [1, " + std::to_string(kMaxOutputSide) + "] per side, got " + size);
     if ((long long)view.width * view.height > kMaxOutputPixels)
         throw InputError::parameter("size", "must be at most " + std::to_string(kMaxOutputPixels) + " pixels, got " + size);
-    if (!(view.scale > 0) || !std::isfinite(view.scale) || view.scale > 1e6)
-        throw InputError::parameter("scale", "must be a finite number in (0, 1e6], got " + formatValue(view.scale));
+    checkViewScale(view.scale, "scale");
     if (!std::isfinite(view.offsetU) || !std::isfinite(view.offsetV) || std::abs(view.offsetU) > 1e9 ||
         std::abs(view.offsetV) > 1e9)
         throw InputError::parameter("offset", "must be finite and at most 1e9 texels, got " + formatValue(view.offsetU) +

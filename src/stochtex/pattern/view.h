@@ -12,6 +12,13 @@ namespace stochtex {
 
 constexpr int kMaxOutputSide = 16384;
 constexpr long long kMaxOutputPixels = 8192LL * 8192LL;
+// The scales (example texels per output pixel) a view may have. Above 1e6 a
+// pixel covers a 4096² example 244 times over; below 1e-6 a 16384-pixel
+// image spans a sixtieth of a texel, and a scale near the smallest double
+// rounds every pixel's uv to the same point (a zero-sized footprint).
+constexpr double kMinViewScale = 1e-6, kMaxViewScale = 1e6;
+// InputError naming `parameter` unless scale is in [kMinViewScale, kMaxViewScale].
+void checkViewScale(double scale, const char* parameter);
 
 // Maps output pixels to texture space: pixel (px, py) covers example texels
 // offset + (p + ½)·scale, i.e. uv = (offset + (p + ½)·scale) / W (pixelUv).

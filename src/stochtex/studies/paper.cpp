@@ -496,7 +496,7 @@ Report table1Report(const Table1Result& r) {
         s.tables.push_back({"", t});
         md += "\n" + t.markdown();
     }
-    s.files = {{"table1.md", md}};
+    s.files = {{"table1.md", md, ""}};
     s.figures = r.figures;
     report.sections.push_back(std::move(s));
     return report;

@@ -9,23 +9,14 @@
 
 namespace stochtex {
 
-namespace {
-
-void checkScale(double s, const char* what) {
-    if (!(s > 0) || !std::isfinite(s) || s > 1e6)
-        throw InputError::parameter(what, "must be a finite scale in (0, 1e6], got " + formatValue(s));
-}
-
-}  // namespace
-
 void validateStabilityStudy(const StabilityStudyOptions& o) {
     if (o.filters.empty()) throw InputError::parameter("filters", "must name at least one filter");
     if (o.frames < 2 || o.frames > 1000)
         throw InputError::parameter("frames", "must be in [2, 1000], got " + std::to_string(o.frames));
     if (o.size < 8 || o.size > 2048)
         throw InputError::parameter("size", "must be in [8, 2048], got " + std::to_string(o.size));
-    checkScale(o.from, "from");
-    checkScale(o.to, "to");
+    checkViewScale(o.from, "from");
+    checkViewScale(o.to, "to");
     if (o.truthSamples < 1 || o.truthSamples > 4096)
         throw InputError::parameter("truthSamples", "must be in [1, 4096], got " + std::to_string(o.truthSamples));
 }

@@ -23,7 +23,7 @@ struct StabilityStudyOptions {
     std::vector<FilterOptions> filters;  // one measurement each
     int frames = 64;                     // [2, 1000]
     int size = 128;                      // frame side in pixels, [8, 2048]
-    double from = 1, to = 128;           // first and last scale (texels per pixel), finite, (0, 1e6]
+    double from = 1, to = 128;           // first and last scale (texels per pixel), in [1e-6, 1e6] (pattern/view.h)
     // The ground truth: the reference S̄ with at most this many samples per
     // axis and pixel ([1, 4096]), twice the stability command's reference.
     int truthSamples = 64;

@@ -109,8 +109,7 @@ void validateCorrelationStudy(const CorrelationStudyOptions& o) {
     if (o.instances < 2 || o.instances > 1000000)
         throw InputError::parameter("instances", "must be in [2, 1e6], got " + std::to_string(o.instances));
     if (o.size < 4 || o.size > 1024)
-        throw InputError::parameter("size",
-                                    "must be in [4, 1024] for correlation plots, got " + std::to_string(o.size));
+        throw InputError::parameter("plotSize", "must be in [4, 1024], got " + std::to_string(o.size));
     if (o.layers.empty() || o.variants.empty()) throw InputError("correlation: no variants or layer counts");
     for (int n : o.layers)
         if (n < 1 || n > 1024)

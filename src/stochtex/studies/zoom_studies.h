@@ -54,7 +54,7 @@ struct CorrelationStudyOptions {
                                       ZoomVariant::Random};
     std::vector<int> layers{16, 8, 4, 2};
     int instances = 512;
-    int size = 128;  // plots cover x, y ∈ [0, size) pixels from the zoom centre
+    int size = 128;  // plots cover x, y ∈ [0, size) pixels from the zoom centre (parameter "plotSize")
 };
 // InputError for unusable settings, before any work.
 void validateCorrelationStudy(const CorrelationStudyOptions& options);

@@ -93,6 +93,11 @@ void LatticeTexture::checkImage(const Image& gray) {
     if (gray.width() < 2 || gray.height() < 2)
         throw InputError("base texture: needs at least 2×2 pixels, got " + std::to_string(gray.width()) + "×" +
                          std::to_string(gray.height()));
+    // A float image (EXR) may hold anything: half float's range keeps the
+    // layers' sums and their moments finite (1e20 squared overflows float and
+    // rendered black).
+    constexpr double kMaxBaseValue = 65504.0;
+    checkPixelRange(gray, "base texture", -kMaxBaseValue, kMaxBaseValue, "its");
 }
 
 LatticeTexture LatticeTexture::fromImage(const Image& gray) {
