@@ -115,17 +115,6 @@ void checkImageOutput(const std::string& path, int bits) {
     checkOutputFile(path);
 }
 
-void checkOutputFile(const std::string& path) {
-    const fs::path p(path);
-    std::error_code ec;
-    const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
-    if (!fs::is_directory(folder, ec)) throw InputError(path + ": directory " + folder.string() + " does not exist");
-    // Checked now, not when the finished image is renamed into place.
-    if (fs::is_directory(p, ec)) throw InputError(path + ": is a folder");
-    if (access(folder.c_str(), W_OK) != 0)
-        throw InputError(path + ": directory " + folder.string() + " is not writable");
-}
-
 namespace {
 // A CLI11 check (run on the text, before conversion) that the value is a seed.
 CLI::Validator seedValidator() {

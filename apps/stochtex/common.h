@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "stochtex/core/atomic_file.h"
 #include "stochtex/core/enum_names.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_view.h"
@@ -60,8 +61,7 @@ std::string readJsonArgumentSource(const std::string& arg);
 // format holds `bits` (checkImageOutputFormat), is not a folder, and is in
 // an existing folder that can be written.
 void checkImageOutput(const std::string& path, int bits = 8);
-// The same without the format: a file that can be written where it is named.
-void checkOutputFile(const std::string& path);
+// The same without the format is the library's checkOutputFile (core/atomic_file.h).
 
 // --seed (or another seed flag): an integer in [0, 4294967295], the range of
 // every seed; anything else is refused with the reason, before conversion.

@@ -893,6 +893,25 @@ case_hostile_shadertoy() {
   grep -q "undefinedThing" "$work/err.txt" || fail "#line past an int: the compiler's message is lost: $(cat "$work/err.txt")"
 }
 
+# --- writes that were lost (issue "Hostile input on the new surfaces", items 4 and 5) ---
+case_lost_writes() {
+  # Over a file-size limit the MP4 writer was killed by SIGXFSZ (or, with the
+  # signal ignored, crashed in a second trailer), leaving its temporary file.
+  expect_bad "MP4 over a file-size limit" "$out/big.mp4" "big.mp4: cannot write the video" -- bash -c 'ulimit -f 40; exec "$0" "$@"' "$bin" zoom -o "$out/big.mp4" --size 256 --frames 30
+  grep -q "File too large" "$work/err.txt" || fail "MP4 over a file-size limit: the reason is lost: $(cat "$work/err.txt")"
+  [ -z "$(ls -A "$out")" ] || fail "MP4 over a file-size limit left: $(ls -A "$out")"
+  expect_bad "PNG over a file-size limit" "$out/big.png" "big.png: write failed: File too large" -- bash -c 'ulimit -f 4; exec "$0" "$@"' "$bin" render --preset camouflage --size 512 -o "$out/big.png"
+  # A rename over a FIFO (or, as root, a device node) replaced it.
+  mkfifo "$work/pipe.png" "$work/pipe.mp4"
+  expect_bad "output is a FIFO" "$out/none.png" "pipe.png: is a FIFO; only a regular file is replaced by an output" -- "$bin" render --preset gaussian --size 16 -o "$work/pipe.png"
+  expect_bad "video output is a FIFO" "$out/none.png" "pipe.mp4: is a FIFO; only a regular file is replaced by an output" -- "$bin" zoom --size 16 --frames 2 -o "$work/pipe.mp4"
+  [ -p "$work/pipe.png" ] && [ -p "$work/pipe.mp4" ] || fail "a FIFO output was replaced"
+  # A scripted screenshot into a folder that does not exist exited 0 and said nothing.
+  printf '[{"frame": 1, "screenshot": "%s/no/such/folder/shot.png"}]' "$work" >"$work/shot.json"
+  expect_bad "workbench screenshot into a missing folder" "$out/wbm.png" "/no/such/folder/shot.png: directory" -- "$bin" view --preset camouflage --frames 3 --script "$work/shot.json" --screenshot "$out/wbm.png"
+  grep -q "does not exist" "$work/err.txt" || fail "workbench screenshot: $(cat "$work/err.txt")"
+}
+
 # --- work budget: refused in well under a second, naming the parameter ---
 case_work_budget() {
   echo '{"noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "colormap": {"type": "ridged", "resolution": 4096}, "size": 32}' >"$work/fine.json"

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/stat.h>
+
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -90,4 +93,76 @@ TEST_F(AtomicFileTest, ATerminatingSignalRemovesLiveTemporaryFilesAndKillsWithTh
         EXPECT_EXIT(interrupted(), testing::KilledBySignal(sig), "");
         EXPECT_EQ(entries(dir_), 0u) << "signal " << sig << " left a file";
     }
+}
+
+// Issue "Hostile input on the new surfaces", item 5: a writer that opens its
+// file by name (FFmpeg) gets it in a folder only this process writes (0700),
+// removed with the file on every path and on a signal.
+TEST_F(AtomicFileTest, APrivateFolderHoldsTheFileAndGoesWithIt) {
+    const fs::path target = dir_ / "clip.mp4";
+    {
+        AtomicFile f(target.string(), "", AtomicFile::Placement::PrivateFolder);
+        const fs::path folder = fs::path(f.tempPath()).parent_path();
+        EXPECT_EQ(folder.parent_path(), dir_);
+        EXPECT_EQ(fs::path(f.tempPath()).filename(), "clip.mp4");
+        EXPECT_EQ(fs::status(folder).permissions() & fs::perms::all, fs::perms::owner_all);
+        f.write("frames");
+        f.commit();
+    }
+    EXPECT_EQ(contents(target), "frames");
+    EXPECT_EQ(entries(dir_), 1u);  // the folder went with the commit
+    { AtomicFile f(target.string(), "", AtomicFile::Placement::PrivateFolder); }
+    EXPECT_EQ(entries(dir_), 1u);  // and without one
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    const auto interrupted = [&] {
+        std::signal(SIGTERM, SIG_DFL);
+        installTempFileCleanup();
+        AtomicFile f((dir_ / "b.mp4").string(), "", AtomicFile::Placement::PrivateFolder);
+        f.write("partial");
+        std::raise(SIGTERM);
+        std::_Exit(0);
+    };
+    EXPECT_EXIT(interrupted(), testing::KilledBySignal(SIGTERM), "");
+    EXPECT_EQ(entries(dir_), 1u) << "the signal left the private folder or its file";
+}
+
+// Run as root, a rename over a device node or a FIFO replaces it: anything
+// but a regular file (or a link, which the rename replaces itself) is refused.
+TEST_F(AtomicFileTest, OnlyARegularFileIsReplaced) {
+    const fs::path fifo = dir_ / "pipe.png";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_STREQ(test::inputErrorOf([&] { AtomicFile f(fifo.string()); }).what(),
+                 (fifo.string() + ": is a FIFO; only a regular file is replaced by an output").c_str());
+    EXPECT_STREQ(test::inputErrorOf([&] { checkOutputFile(fifo.string()); }).what(),
+                 (fifo.string() + ": is a FIFO; only a regular file is replaced by an output").c_str());
+    EXPECT_STREQ(test::inputErrorOf([&] { checkOutputFile("/dev/null"); }).what(),
+                 "/dev/null: is a character device; only a regular file is replaced by an output");
+    EXPECT_TRUE(fs::is_fifo(fifo));
+    // Replaced between the check and the rename: refused at the rename too.
+    AtomicFile f((dir_ / "late.png").string());
+    f.write("bytes");
+    ASSERT_EQ(::mkfifo((dir_ / "late.png").c_str(), 0600), 0);
+    EXPECT_NE(std::string(test::inputErrorOf([&] { f.commit(); }).what()).find("is a FIFO"), std::string::npos);
+    EXPECT_TRUE(fs::is_fifo(dir_ / "late.png"));
+}
+
+// A write past a file-size limit fails (EFBIG) instead of killing the process
+// with SIGXFSZ, which left the temporary file behind.
+TEST_F(AtomicFileTest, AFileSizeLimitIsAnErrorThatLeavesNothing) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    const auto overLimit = [&] {
+        installTempFileCleanup();
+        rlimit limit;
+        limit.rlim_cur = limit.rlim_max = 4096;
+        setrlimit(RLIMIT_FSIZE, &limit);
+        try {
+            AtomicFile f((dir_ / "big.bin").string());
+            f.write(std::string(8192, 'x'));
+            std::_Exit(3);  // not reached: the write fails
+        } catch (const InputError& e) {
+            std::_Exit(std::string(e.what()).find("File too large") != std::string::npos ? 0 : 4);
+        }
+    };
+    EXPECT_EXIT(overLimit(), testing::ExitedWithCode(0), "");
+    EXPECT_EQ(entries(dir_), 0u);
 }

@@ -5,6 +5,9 @@
 #include "stochtex/report/frame_sequence.h"
 
 #include <gif_lib.h>
+extern "C" {
+#include <libavutil/log.h>
+}
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,6 +18,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/report/video_encoder.h"
 #include "test_util.h"
 
 using namespace stochtex;
@@ -256,3 +260,14 @@ TEST(WallClockFrames, RepeatsSlowFramesSkipsFastOnesAndCutsStalls) {
 
 }  // namespace
 }  // namespace stochtex
+
+// Issue "Hostile input on the new surfaces", item 6: FFmpeg's own log lines
+// (a missing encoder printed three before our message) stay out of the
+// terminal; the message of a failure carries FFmpeg's last error instead.
+TEST(VideoEncoder, FfmpegsLogStaysOutOfTheTerminal) {
+    (void)hasVideoEncoder(VideoCodec::H264);  // what every video writer asks first
+    testing::internal::CaptureStderr();
+    av_log(nullptr, AV_LOG_ERROR, "a planted FFmpeg error\n");
+    av_log(nullptr, AV_LOG_WARNING, "a planted FFmpeg warning\n");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}

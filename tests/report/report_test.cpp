@@ -46,7 +46,7 @@ Report spectrumLikeReport() {
     o.title = "Radial profile";
     s.figures = {chartFigure("radial.png", {{{"P", {1, 2, 3}, {3, 2, 1}}}, o}, "Radial."),
                  {"frame.png", Image(8, 4, 3, 0.5f), ""}};
-    s.files = {{"notes.md", "# notes\n"}};
+    s.files = {{"notes.md", "# notes\n", ""}};
     r.sections.push_back(s);
     return r;
 }

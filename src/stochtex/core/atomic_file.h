@@ -18,10 +18,18 @@ namespace stochtex {
 
 class AtomicFile {
 public:
+    // Where the temporary file is made: beside the target, or inside a
+    // folder of its own (0700, `.<name>.<hex>.tmp`, removed with it) for a
+    // writer that opens the file by name rather than through the descriptor
+    // (FFmpeg's muxer, which reopens an MP4 to move its index first): no one
+    // else can plant a link under that name there.
+    enum class Placement { Beside, PrivateFolder };
     // Throws InputError naming `path` when its folder is missing or not
-    // writable. `suffix` ends the temporary name, for writers that choose the
-    // format from it (an MP4 encoder needs ".mp4").
-    explicit AtomicFile(const std::string& path, const std::string& suffix = ".tmp");
+    // writable, or when `path` names something a rename must not replace (a
+    // device, a FIFO, a socket, a folder). `suffix` ends the temporary name,
+    // for writers that choose the format from it (an MP4 encoder needs ".mp4").
+    explicit AtomicFile(const std::string& path, const std::string& suffix = ".tmp",
+                        Placement placement = Placement::Beside);
     ~AtomicFile();  // removes the temporary file unless commit() succeeded
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
@@ -41,16 +49,25 @@ public:
 private:
     std::string path_, temp_;
     int fd_ = -1;
-    int slot_ = -1;  // in the signal-cleanup registry; -1: not registered
+    std::string folder_;  // Placement::PrivateFolder's folder, else empty
+    int slot_ = -1;       // in the signal-cleanup registry; -1: not registered
+    int folderSlot_ = -1;
     bool committed_ = false;
 };
+
+// Checks, before any work, that a file can be written where `path` names it:
+// InputError unless its folder exists and is writable and `path` is absent,
+// a regular file or a link (not a folder, device, FIFO or socket).
+void checkOutputFile(const std::string& path);
 
 // Writes bytes atomically (an AtomicFile written and committed).
 void writeFileAtomic(const std::string& path, const std::string& bytes);
 
 // Installs the SIGINT/SIGTERM/SIGHUP handlers that remove the live temporary
 // files and then re-raise the signal with its default action. Signals the
-// process ignores (e.g. SIGHUP under nohup) stay ignored. Call once, early.
+// process ignores (e.g. SIGHUP under nohup) stay ignored. SIGXFSZ is ignored,
+// so that a write past a file-size limit fails (EFBIG) and is reported like
+// a full disk. Call once, early.
 void installTempFileCleanup();
 
 }  // namespace stochtex

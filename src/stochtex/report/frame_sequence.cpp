@@ -38,7 +38,7 @@ bool isVideoPath(const std::string& path) { return sequenceFormat(path) != Seque
 // The encoder of the one file: a video (MP4, WebM) with its preview, an
 // animated WebP or an animated GIF.
 struct FrameSequenceWriter::Video {
-    std::unique_ptr<AtomicFile> file;  // a video's, which FFmpeg opens by name
+    std::unique_ptr<AtomicFile> file;  // a video's, which FFmpeg opens by name (in a private folder)
     std::unique_ptr<VideoEncoder> video;
     std::unique_ptr<AnimatedPreviewWriter> preview, webp;
     std::unique_ptr<AnimatedGifWriter> gif;
@@ -47,7 +47,9 @@ struct FrameSequenceWriter::Video {
     bool openVideo(const std::string& path, SequenceFormat format, int width, int height, double fps) {
         const VideoCodec codec = format == SequenceFormat::WebM ? VideoCodec::Vp9 : VideoCodec::H264;
         if (!hasVideoEncoder(codec)) return false;
-        file = std::make_unique<AtomicFile>(path);
+        // FFmpeg opens the file by name (and reopens an MP4 to move its index
+        // first): in a folder of its own no one can swap it for a link.
+        file = std::make_unique<AtomicFile>(path, "", AtomicFile::Placement::PrivateFolder);
         ::close(file->releaseDescriptor());
         video = std::make_unique<VideoEncoder>(file->tempPath(), codec, width, height, fps, path);
         return true;

@@ -4,11 +4,16 @@ extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/dict.h>
+#include <libavutil/log.h>
 #include <libavutil/opt.h>
 #include <libswscale/swscale.h>
 }
 
 #include <algorithm>
+#include <cctype>
+#include <cstdarg>
+#include <cstdlib>
+#include <mutex>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -27,9 +32,43 @@ std::string avError(int code) {
     return text;
 }
 
+// FFmpeg's log stays out of the user's terminal: the message of a failure
+// says what failed, with FFmpeg's last error line (a missing encoder printed
+// three lines of log before it). STOCHTEX_FFMPEG_LOG=1 shows the log as
+// FFmpeg prints it, for a bug report.
+std::mutex gLogMutex;
+std::string gLastLogError;
+
+void keepLastError(void* context, int level, const char* format, va_list args) {
+    if (level > AV_LOG_ERROR) return;
+    char line[1024];
+    int printPrefix = 1;
+    av_log_format_line2(context, level, format, args, line, sizeof line, &printPrefix);
+    std::string text = line;
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+    const std::lock_guard<std::mutex> lock(gLogMutex);
+    gLastLogError = text;
+}
+
+void quietFfmpegLog() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        if (std::getenv("STOCHTEX_FFMPEG_LOG")) return av_log_set_level(AV_LOG_INFO);
+        av_log_set_callback(keepLastError);
+    });
+}
+
+std::string lastFfmpegError() {
+    const std::lock_guard<std::mutex> lock(gLogMutex);
+    return gLastLogError;
+}
+
 }  // namespace
 
-bool hasVideoEncoder(VideoCodec codec) { return avcodec_find_encoder_by_name(encoderName(codec)) != nullptr; }
+bool hasVideoEncoder(VideoCodec codec) {
+    quietFfmpegLog();
+    return avcodec_find_encoder_by_name(encoderName(codec)) != nullptr;
+}
 
 struct VideoEncoder::State {
     std::string name;  // what errors name
@@ -41,11 +80,13 @@ struct VideoEncoder::State {
     AVFrame* frame = nullptr;
     AVPacket* packet = nullptr;
     int64_t next = 0;  // the next frame's pts
-    bool headerWritten = false, finished = false;
+    bool finished = false;
     std::vector<uint8_t> rgb;
 
+    // An unfinished file is discarded (its AtomicFile removes it), so no
+    // trailer is written here: after a failed one FFmpeg's muxer state is
+    // gone, and a second av_write_trailer crashed.
     ~State() {
-        if (format && headerWritten && !finished) av_write_trailer(format);
         if (format && format->pb) avio_closep(&format->pb);
         avformat_free_context(format);
         avcodec_free_context(&codec);
@@ -55,7 +96,9 @@ struct VideoEncoder::State {
     }
 
     [[noreturn]] void fail(const std::string& what, int code) const {
-        throw InputError(name + ": cannot write the video (" + what + (code ? ": " + avError(code) : "") + ")");
+        const std::string log = lastFfmpegError();
+        throw InputError(name + ": cannot write the video (" + what + (code ? ": " + avError(code) : "") +
+                         (log.empty() ? "" : "; FFmpeg: " + log) + ")");
     }
 
     // Sends a frame (null: end of stream) and writes every packet it gives back.
@@ -78,8 +121,11 @@ VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int wi
                            const std::string& name)
     : s_(std::make_unique<State>()) {
     State& s = *s_;
-    // FFmpeg's informative lines ("moving the moov atom …") are not the user's concern; errors are reported here.
-    av_log_set_level(AV_LOG_ERROR);
+    quietFfmpegLog();
+    {
+        const std::lock_guard<std::mutex> lock(gLogMutex);
+        gLastLogError.clear();  // this encoder's errors only
+    }
     s.name = name.empty() ? path : name;
     s.width = width;
     s.height = height;
@@ -137,7 +183,6 @@ VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int wi
     const int header = avformat_write_header(s.format, &muxer);
     av_dict_free(&muxer);
     if (header < 0) s.fail("header", header);
-    s.headerWritten = true;
 
     s.scale = sws_getContext(s.codec->width, s.codec->height, AV_PIX_FMT_RGB24, s.codec->width, s.codec->height,
                              AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr,
@@ -186,8 +231,13 @@ void VideoEncoder::finish() {
     State& s = *s_;
     if (s.finished) return;
     s.send(nullptr);
+    s.finished = true;  // whatever happens next, never a second trailer
     if (const int e = av_write_trailer(s.format); e < 0) s.fail("closing", e);
-    s.finished = true;
+    // Every write checked: avio buffers them, keeps the first error in
+    // pb->error, and this FFmpeg's avio_close does not return it (a full disk
+    // left an MP4 without its index and exit 0).
+    avio_flush(s.format->pb);
+    if (s.format->pb->error < 0) s.fail("writing", s.format->pb->error);
     if (const int e = avio_closep(&s.format->pb); e < 0) s.fail("closing", e);
 }
 

@@ -36,7 +36,9 @@ private:
     std::unique_ptr<State> s_;
 };
 
-// Whether this FFmpeg build has the codec's encoder.
+// Whether this FFmpeg build has the codec's encoder. Like the encoder, it
+// keeps FFmpeg's log out of the terminal (its last error joins the message
+// of a failure) unless the environment sets STOCHTEX_FFMPEG_LOG.
 bool hasVideoEncoder(VideoCodec codec);
 
 }  // namespace stochtex

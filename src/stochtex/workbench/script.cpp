@@ -5,6 +5,8 @@
 #include <cctype>
 #include <tuple>
 
+#include "stochtex/core/atomic_file.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/workbench/live_analysis.h"
@@ -98,6 +100,16 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
             if (auto f = s.find(key)) {
                 ++actions, step.action = action, step.text = f->string();
                 if (step.text.empty()) f->fail("needs a file name");
+                // Checked now, not when the step runs: a run that cannot write
+                // what its script asks for fails before its first frame.
+                if (action == A::Screenshot) {
+                    try {
+                        checkOutputFile(step.text);
+                        checkImageOutputFormat(step.text);
+                    } catch (const InputError& e) {
+                        f->fail(e.what());
+                    }
+                }
             }
         // Steps that take no value are written `true`.
         for (auto [key, action] : {std::pair{"undo", A::Undo}, {"redo", A::Redo},

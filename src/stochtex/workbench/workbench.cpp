@@ -204,10 +204,14 @@ public:
             // the window; the run's screenshot is its last frame.
             const bool last = isLastFrame() || quit_ || context_->shouldClose();
             const bool runShot = !options_.screenshot.empty() && last;
-            if (!pendingScreenshots_.empty() || recorder_ || runShot) {
+            if (!pendingScreenshots_.empty() || !scriptScreenshots_.empty() || recorder_ || runShot) {
                 const Image shot = pictureCodes();
                 for (const std::string& f : pendingScreenshots_) guarded([&] { writeScreenshot(f, shot); });
                 pendingScreenshots_.clear();
+                // A script's screenshot that cannot be written fails the run
+                // (exit 2); a key's is reported in the panel.
+                for (const std::string& f : scriptScreenshots_) writeScreenshot(f, shot);
+                scriptScreenshots_.clear();
                 guarded([&] { record(shot); });
                 if (runShot) writeScreenshot(options_.screenshot, shot), screenshotWritten = true;
             }
@@ -569,7 +573,8 @@ private:
             analysedHost_ = host_.get();
         }
         const bool capture =
-            isLastFrame() || quit_ || context_->shouldClose() || !pendingScreenshots_.empty() || recorder_;
+            isLastFrame() || quit_ || context_->shouldClose() || !pendingScreenshots_.empty() ||
+            !scriptScreenshots_.empty() || recorder_;
         collectAnalysis(capture);
         if (!analysisJob_.valid() && queuedAnalysis_) {
             AnalysisRequest request = std::move(*queuedAnalysis_);
@@ -777,7 +782,7 @@ private:
             case A::View: setView(parseEnum(kWorkbenchViewNames, s.text, "view")); break;
             case A::Pick: setPick(s.x, s.y); break;
             case A::Pause: paused_ = s.amount != 0; break;
-            case A::Screenshot: pendingScreenshots_.push_back(s.text); break;
+            case A::Screenshot: scriptScreenshots_.push_back(s.text); break;
             case A::Save: save(s.text); break;
             case A::Record: startRecording(s.text); break;
             case A::StopRecording: stopRecording(); break;
@@ -1140,7 +1145,8 @@ private:
     int pickX_ = -1, pickY_ = -1;
 
     // Output.
-    std::vector<std::string> pendingScreenshots_;
+    std::vector<std::string> pendingScreenshots_;  // F2's
+    std::vector<std::string> scriptScreenshots_;   // the script's
     std::unique_ptr<FrameSequenceWriter> recorder_;
     std::vector<ShadertoyInput> pendingInputs_;  // a program's mouse since its last frame: the window's and "mouse" steps
     std::vector<KeyEvent> keyEvents_;  // since the last frame: the window's callback and "key" steps
