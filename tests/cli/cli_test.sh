@@ -912,6 +912,21 @@ case_lost_writes() {
   grep -q "does not exist" "$work/err.txt" || fail "workbench screenshot: $(cat "$work/err.txt")"
 }
 
+# --- work bombs (issue "Hostile input on the new surfaces", item 3): refused before the work,
+# under a memory limit (ulimit -v, 4 GiB) and a time limit ---
+case_work_bombs() {
+  local i comps='{"shape": "ring", "frequency": 8, "bandwidth": 2}' nodes=''
+  for i in $(seq 15); do comps="$comps, {\"shape\": \"ring\", \"frequency\": $((i + 8)), \"bandwidth\": 2}"; done
+  for i in $(seq 0 15); do nodes="$nodes\"n$i\": {\"type\": \"spectral_noise\", \"size\": 4096, \"components\": [$comps]}, "; done
+  printf '{"name": "bomb", "nodes": {%s"c": {"type": "colormap", "x": "n0", "y": "n15", "colormap": {"type": "gaussian"}}}, "output": "c"}' "$nodes" >"$work/bomb.json"
+  expect_bad "16 noises of 4096² with 16 rings" "$out/bomb.png" "bomb.json: /nodes/n" -- bash -c 'ulimit -v 4194304; exec timeout 20 "$0" "$@"' "$bin" render "$work/bomb.json" --size 16 -o "$out/bomb.png"
+  grep -qE "at most (67108864 in all|536870912 in all)" "$work/err.txt" || fail "graph bomb: $(cat "$work/err.txt")"
+  # Answers naming 200 tile sizes (1.6 GB and 201 plots), /dev/zero (bad_alloc), a file over 16 MiB.
+  { echo "w,correlation,answer"; for i in $(seq 200); do echo "$((i + 1)),0.5,yes"; done; } >"$work/tiles.csv"
+  expect_bad "answers for 200 tile sizes" "$out/ans1" "tiles.csv: answers for 200 tile sizes; at most 32 are analysed" -- bash -c 'ulimit -v 4194304; exec timeout 20 "$0" "$@"' "$bin" stimuli --analyse "$work/tiles.csv" -o "$out/ans1"
+  expect_bad "answers from /dev/zero" "$out/ans2" "/dev/zero: more than 16777216 bytes" -- bash -c 'ulimit -v 4194304; exec timeout 20 "$0" "$@"' "$bin" stimuli --analyse /dev/zero -o "$out/ans2"
+}
+
 # --- work budget: refused in well under a second, naming the parameter ---
 case_work_budget() {
   echo '{"noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "colormap": {"type": "ridged", "resolution": 4096}, "size": 32}' >"$work/fine.json"

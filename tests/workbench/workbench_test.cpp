@@ -75,6 +75,12 @@ TEST(WorkbenchDocument, EditsAreKeptOnlyWhenThePatternStillParses) {
     EXPECT_EQ(d.patternSpec().colormap.painted.shapes.size(), shapes + 1);
     d.remove("/colormap/shapes/" + std::to_string(shapes));
     EXPECT_EQ(d.json(), before);
+    // An index past the end would fill the gap with nulls (400000000 of them
+    // took 14 GB): refused, naming the array's size.
+    EXPECT_EQ(std::string(test::inputErrorOf([&] { d.set("/colormap/shapes/400000000", 1); }).what()),
+              "preset camouflage: /colormap/shapes/400000000: the array holds " + std::to_string(shapes) +
+                  " elements; set one of them, or append at " + std::to_string(shapes) + " (or -)");
+    EXPECT_EQ(d.json(), before);
     // The last component of a noise cannot go: a noise needs one.
     EXPECT_THROW(d.remove("/noise_x/components/0"), InputError);
     EXPECT_EQ(d.json(), before);

@@ -132,6 +132,26 @@ TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path&
         (void)value;
         byId.emplace(id, parseNode(nodes.at(id), id, baseDir));
     }
+    // The spectral noises' memory and synthesis work, before any is built:
+    // each is within its own budget, but 16 of them at 4096² with 16 ring
+    // components took 7 minutes and 6.4 GB for a 16² render.
+    long long texels = 0, work = 0;
+    for (const auto& [id, g] : byId) {
+        if (g.info->inputs.empty() && g.noise.source == NoiseSpec::Source::Spectrum && g.info->linear() &&
+            !g.noise.spectrum.components.empty()) {
+            const long long area = (long long)g.noise.spectrum.size * g.noise.spectrum.size;
+            texels += area;
+            work += area * (long long)g.noise.spectrum.components.size();
+            if (texels > kMaxGraphExampleTexels)
+                nodes.at(id).fail("the graph's spectral noises hold " + std::to_string(texels) +
+                                  " texels up to here; at most " + std::to_string(kMaxGraphExampleTexels) +
+                                  " in all (four of 4096²): use smaller or fewer noises");
+            if (work > kMaxGraphSynthesisWork)
+                nodes.at(id).fail("the graph's spectral noises cost " + std::to_string(work) +
+                                  " component evaluations up to here; at most " +
+                                  std::to_string(kMaxGraphSynthesisWork) + " in all (components × size², summed)");
+        }
+    }
     // Edges: each input names a node whose output has the port's type.
     for (const auto& [id, g] : byId)
         for (const PortInfo& p : g.info->inputs) {

@@ -29,10 +29,15 @@
 namespace stochtex {
 
 constexpr int kMaxGraphNodes = 256;
-// The examples a graph builds hold at most this many texels in all (1 GiB of
-// floats): each node's example is built once and kept while the graph is
-// built, and a node's example is up to 4096².
-constexpr long long kMaxGraphExampleTexels = 1ll << 28;
+// The examples a graph builds hold at most this many texels in all (four of
+// 4096²): each node's example is built once and kept while the graph is
+// built, with the pyramids, tables and synthesis buffers of what is rendered
+// about 24 bytes a texel (2^28 texels took 6.4 GB), so ≈ 1.6 GB at most.
+constexpr long long kMaxGraphExampleTexels = 1ll << 26;
+// The spectral noises of a graph cost at most this many component
+// evaluations in all (components × size², summed; one noise may cost 2^28,
+// noise/spectrum.h): two such noises, ≈ 6 s of synthesis on one core.
+constexpr long long kMaxGraphSynthesisWork = 1ll << 29;
 
 struct TextureGraph {
     std::vector<GraphNode> nodes;  // every node after its inputs

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "stochtex/analysis/binomial.h"
@@ -98,16 +99,27 @@ std::vector<StimulusAnswer> parseStimulusAnswers(const std::string& text, const 
         answers.push_back(a);
     }
     if (answers.empty()) throw InputError(source + ": no answers (only a header line)");
+    std::set<int> tiles;
+    for (const StimulusAnswer& a : answers) tiles.insert(a.tile);
+    if (tiles.size() > size_t(kMaxAnswerTileSizes))
+        throw InputError(source + ": answers for " + std::to_string(tiles.size()) + " tile sizes; at most " +
+                         std::to_string(kMaxAnswerTileSizes) + " are analysed (each is a plot)");
     return answers;
 }
 
 std::vector<StimulusAnswer> readStimulusAnswers(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot read the answers file");
-    std::ostringstream text;
-    text << in.rdbuf();
+    // One byte past the limit tells a file at the limit from a larger one,
+    // without reading the rest (a device may never end).
+    std::string text(kMaxAnswersBytes + 1, '\0');
+    in.read(text.data(), std::streamsize(text.size()));
     if (in.bad()) throw InputError(path + ": cannot read the answers file");
-    return parseStimulusAnswers(text.str(), path);
+    if (size_t(in.gcount()) > kMaxAnswersBytes)
+        throw InputError(path + ": more than " + std::to_string(kMaxAnswersBytes) +
+                         " bytes; an answers file holds one short line a trial");
+    text.resize(size_t(in.gcount()));
+    return parseStimulusAnswers(text, path);
 }
 
 DetectionRates detectionRates(const std::vector<StimulusAnswer>& answers) {

@@ -26,8 +26,15 @@ struct StimulusAnswer {
 // concatenated) are allowed, fields may be "quoted". A bad
 // file is one InputError "SOURCE:LINE: problem" (SOURCE alone for an empty
 // file or one without answers).
+// Answers for more than kMaxAnswerTileSizes tile sizes are refused (each
+// is a plot of the report: 200 of them took 1.6 GB).
+constexpr int kMaxAnswerTileSizes = 32;
 std::vector<StimulusAnswer> parseStimulusAnswers(const std::string& text, const std::string& source);
-// The same from a file (InputError naming it when it cannot be read).
+// The same from a file of at most kMaxAnswersBytes (a trial is one short
+// line: 16 MiB holds 10⁵ participants' sessions of kMaxStimulusTrials);
+// InputError naming it when it cannot be read or is larger (/dev/zero as
+// the file ended in bad_alloc).
+constexpr size_t kMaxAnswersBytes = size_t(16) << 20;
 std::vector<StimulusAnswer> readStimulusAnswers(const std::string& path);
 
 struct DetectionRates {

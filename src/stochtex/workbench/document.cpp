@@ -120,6 +120,17 @@ void WorkbenchDocument::set(const std::string& pointer, const nlohmann::json& va
         const nlohmann::json::json_pointer p(pointer);
         if (!p.empty() && !next.contains(p.parent_pointer()))
             throw InputError(source_ + ": " + pointer + ": no such place in the pattern");
+        // An index past an array's end would fill the gap with nulls
+        // (".../shapes/400000000" took 14 GB): an element is replaced, or
+        // appended at the end ("-" or the array's size).
+        if (!p.empty()) {
+            const nlohmann::json& parent = next[p.parent_pointer()];
+            if (parent.is_array() && p.back() != "-" && !next.contains(p) &&
+                p.back() != std::to_string(parent.size()))
+                throw InputError(source_ + ": " + pointer + ": the array holds " + std::to_string(parent.size()) +
+                                 " elements; set one of them, or append at " + std::to_string(parent.size()) +
+                                 " (or -)");
+        }
         next[p] = value;
     } catch (const nlohmann::json::exception& e) {
         throw InputError(source_ + ": " + pointer + ": not a place in the pattern (" + e.what() + ")");
