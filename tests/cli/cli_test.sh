@@ -891,6 +891,13 @@ case_hostile_shadertoy() {
   printf 'void mainImage(out vec4 c, in vec2 p) {\n#line 2147483640\n c = vec4(1);\n\n\n\n\n\n\n\n\n\n c = vec4(undefinedThing);\n}\n' >"$work/line/image.glsl"
   expect_bad "#line past an int" "$out/line.png" "line: pass image does not compile" -- "$bin" shadertoy "$work/line" --size 16 -o "$out/line.png"
   grep -q "undefinedThing" "$work/err.txt" || fail "#line past an int: the compiler's message is lost: $(cat "$work/err.txt")"
+  # Channels of 4096² images: 20 of them took ~8 GB; budgeted from the headers before any is read.
+  mkdir -p "$work/big"
+  "$bin" noise '{"type":"spectrum","size":4096,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$work/big/big.png" >/dev/null || fail "noise 4096"
+  printf 'void mainImage(out vec4 c, in vec2 p) { c = texture(iChannel0, p / iResolution.xy); }\n' >"$work/big/image.glsl"
+  local big='{"type": "image", "path": "big.png"}'
+  printf '{"passes": {"image": {"code": "image.glsl", "channels": [%s, %s, %s, %s]}}}' "$big" "$big" "$big" "$big" >"$work/big/shadertoy.json"
+  expect_bad "four 4096² image channels" "$out/big.png" "pass image: channel 3: the channels' textures take 1365 MiB up to here; at most 1024 MiB in all" -- bash -c 'ulimit -v 4194304; exec timeout 20 "$0" "$@"' "$bin" shadertoy "$work/big" --size 16 -o "$out/big.png"
 }
 
 # --- writes that were lost (issue "Hostile input on the new surfaces", items 4 and 5) ---

@@ -300,6 +300,44 @@ gl::Texture cubeTarget(int size, bool mipmaps) {
     return t;
 }
 
+// The channels' textures in all, estimated from the images' headers before
+// any is read (20 channels of 4096² images took ~8 GB; ShaderToy's own are
+// at most 1024²), at most 1 GiB (two 4096² images with mipmaps): RGBA
+// floats, a third more with mipmaps; a video is read a frame at a time and
+// not counted. InputError
+// naming the channel where the total passes the budget.
+void checkChannelBudget(const ShadertoySpec& spec) {
+    constexpr long long kTexelBytes = 16, kMaxBytes = 1ll << 30;
+    long long total = 0;
+    for (const ShadertoyPass& pass : spec.passes)
+        for (size_t i = 0; i < pass.channels.size(); ++i) {
+            const ShadertoyChannel& ch = pass.channels[i];
+            long long texels = 0;
+            switch (ch.kind) {
+                case ShadertoyChannel::Kind::Image: {
+                    const auto [w, h] = readImageSize(ch.image.string());
+                    texels = (long long)w * h;
+                    break;
+                }
+                case ShadertoyChannel::Kind::Cubemap: {
+                    const auto [w, h] = readImageSize((ch.image.empty() ? ch.faces.at(0) : ch.image).string());
+                    const long long face = ch.image.empty() ? w : std::clamp(w / 4, 1, 2048);
+                    texels = 6 * face * (ch.image.empty() ? h : face);
+                    break;
+                }
+                case ShadertoyChannel::Kind::Noise: texels = (long long)ch.noiseSize * ch.noiseSize; break;
+                case ShadertoyChannel::Kind::Volume: texels = (long long)ch.noiseSize * ch.noiseSize * ch.noiseSize; break;
+                default: break;  // buffers are the passes' own; the keyboard is 256×3; a video is read a frame at a time
+            }
+            total += texels * kTexelBytes * (ch.filter == ChannelFilter::Mipmap ? 4 : 3) / 3;
+            if (total > kMaxBytes)
+                throw InputError(spec.name + ": pass " + pass.name + ": channel " + std::to_string(i) +
+                                 ": the channels' textures take " + std::to_string(total >> 20) +
+                                 " MiB up to here; at most " + std::to_string(kMaxBytes >> 20) +
+                                 " MiB in all (RGBA floats, 16 bytes a texel)");
+        }
+}
+
 // A cubemap channel's faces: six images as a browser uploads them (square,
 // one size), or an equirectangular image resampled onto faces of a quarter
 // of its width. InputError naming the file.
@@ -708,6 +746,7 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
             if ((ch.kind == ShadertoyChannel::Kind::Buffer || ch.kind == ShadertoyChannel::Kind::CubePass) &&
                 ch.filter == ChannelFilter::Mipmap)
                 mipmapped[size_t(ch.buffer)] = true;
+    checkChannelBudget(spec);
     for (size_t k = 0; k < spec.passes.size(); ++k) {
         const ShadertoyPass& pass = spec.passes[k];
         Impl::Pass p;

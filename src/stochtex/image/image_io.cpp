@@ -4,6 +4,7 @@
 #include <unistd.h>  // close
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <csetjmp>
 #include <cstdint>
@@ -317,8 +318,10 @@ void checkImageOutputFormat(const std::string& path, const WriteOptions& options
                          std::to_string(bits));
 }
 
-Image readImage(const std::string& path) {
-    enableExr();
+namespace {
+
+// The file's bytes, checked as readImage checks them before decoding.
+std::vector<uchar> readImageBytes(const std::string& path) {
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder, not an image file");
     if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such image file");
@@ -332,7 +335,20 @@ Image readImage(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
     if (!in) throw InputError(path + ": cannot read file");
+    return bytes;
+}
 
+}  // namespace
+
+std::array<int, 2> readImageSize(const std::string& path) {
+    const ImageHeader header = readHeader(path, readImageBytes(path));
+    checkImageSize(path, header);
+    return {int(header.width), int(header.height)};
+}
+
+Image readImage(const std::string& path) {
+    enableExr();
+    const std::vector<uchar> bytes = readImageBytes(path);
     const ImageHeader header = readHeader(path, bytes);
     checkImageSize(path, header);
     Image image = header.format == ImageFormat::Png ? decodePng(path, bytes) : decodeWithOpenCv(path, header, bytes);

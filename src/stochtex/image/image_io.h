@@ -18,6 +18,7 @@
 // decoded, so a small file that declares a huge image costs nothing; every
 // problem is one InputError naming the file (no library warning reaches the
 // terminal).
+#include <array>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,9 @@ constexpr long long kMaxImageFileBytes = 512ll << 20;
 // JPEG image, corrupt, empty (0 pixels) or larger than kMaxImagePixels or
 // kMaxImageSide.
 Image readImage(const std::string& path);
+// The width and height from the file's header, checked as readImage checks
+// them, without decoding: what a caller budgets before reading many images.
+std::array<int, 2> readImageSize(const std::string& path);
 
 // Throws InputError for an unsupported extension, a bit depth the format
 // cannot hold, or an unwritable place.
