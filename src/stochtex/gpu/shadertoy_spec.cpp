@@ -262,4 +262,6 @@ ShadertoySpec loadShadertoy(const std::string& path, const std::string& mediaDir
     return parseManifest(JsonReader(j, path), p.parent_path());
 }
 
+ShadertoySpec parseShadertoyManifest(const JsonReader& r, const fs::path& baseDir) { return parseManifest(r, baseDir); }
+
 }  // namespace stochtex

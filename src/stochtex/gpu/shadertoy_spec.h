@@ -158,6 +158,9 @@ ShadertoySpec loadShadertoy(const std::string& path, const std::string& mediaDir
 // and mic inputs (named as unsupported), a missing texture file, an sRGB
 // sampler.
 bool isShadertoyExport(const nlohmann::json& j);
+// Our manifest (shadertoy.json) as loadShadertoy reads it, its paths resolved
+// against `baseDir`.
+ShadertoySpec parseShadertoyManifest(const JsonReader& r, const std::filesystem::path& baseDir);
 ShadertoySpec parseShadertoyExport(const JsonReader& r, const std::filesystem::path& json,
                                    const std::filesystem::path& mediaDir);
 // The spec as our manifest (paths relative to `dir`); `codeFiles` gives the
