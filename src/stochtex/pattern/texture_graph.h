@@ -32,7 +32,8 @@ constexpr int kMaxGraphNodes = 256;
 // The examples a graph builds hold at most this many texels in all (four of
 // 4096²): each node's example is built once and kept while the graph is
 // built, with the pyramids, tables and synthesis buffers of what is rendered
-// about 24 bytes a texel (2^28 texels took 6.4 GB), so ≈ 1.6 GB at most.
+// about 24 bytes a texel (2^28 texels took 6.4 GB, as the hostile-input issue
+// measured it), so ≈ 1.6 GB at most by that rate.
 constexpr long long kMaxGraphExampleTexels = 1ll << 26;
 // The spectral noises of a graph cost at most this many component
 // evaluations in all (components × size², summed; one noise may cost 2^28,
