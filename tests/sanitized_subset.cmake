@@ -5,6 +5,7 @@
 # "Sanitizers"). Paths are relative to tests/.
 set(stochtex_sanitized_test_sources
   core/atomic_file_test.cpp
+  core/watchdog_test.cpp
   core/progress_test.cpp
   image/image_test.cpp
   image/image_read_test.cpp

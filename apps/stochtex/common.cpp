@@ -10,6 +10,7 @@
 
 #include <unistd.h>  // access
 
+#include "stochtex/core/budget.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/names.h"
 #include "stochtex/image/image_io.h"
@@ -459,6 +460,14 @@ std::string describeInputError(const InputError& e, const CLI::App* ran) {
     for (const auto& [parameter, flag] : kParameterFlags)
         if (e.parameter() == parameter) return std::string(flag) + ": " + e.what();
     return e.what();
+}
+
+std::string budgetAdvice() {
+    const double factor = budgetFactor();
+    if (factor >= kMaxBudgetFactor) return " (with --budget 64, the most it allows)";
+    const double more = std::min(factor * 4, kMaxBudgetFactor);
+    return " (--budget " + formatValue(more) + " allows " + formatValue(more) + "× the budgets" +
+           (factor == 1 ? "" : "; now ×" + formatValue(factor)) + ")";
 }
 
 void addOutputFolderFlag(CLI::App& cmd, std::string& dir, const std::string& what) {

@@ -205,6 +205,9 @@ CLI::Option* bindParameter(const CLI::App& cmd, CLI::Option* option, const std::
 // got 0") — the binding of `ran` (the command that ran) or of a command above
 // it, else the shared table; any other error as it is.
 std::string describeInputError(const InputError& e, const CLI::App* ran = nullptr);
+// What follows a budget's refusal (InputError::isOverBudget, a watchdog's
+// overrun): how --budget raises it, e.g. " (--budget 4 allows 4× the budgets)".
+std::string budgetAdvice();
 // The innermost command the parsed arguments chose (app itself if none).
 const CLI::App* commandThatRan(const CLI::App& app);
 

@@ -3,6 +3,7 @@
 // that cannot run the command (no display, no OpenGL 4.3), 1 = bug.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 #include <vector>
@@ -10,7 +11,9 @@
 #include "common.h"
 #include "progress.h"
 #include "stochtex/core/atomic_file.h"
+#include "stochtex/core/budget.h"
 #include "stochtex/core/error.h"
+#include "stochtex/core/watchdog.h"
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/shader.h"
 
@@ -27,6 +30,20 @@ int main(int argc, char** argv) {
     app.add_flag_callback(
         "--quiet,-q", [] { stochtex::cli::setProgressQuiet(true); },
         "No progress line (it is drawn only when stderr is a terminal)");
+    stochtex::cli::bindParameter(
+        app,
+        app.add_option_function<double>(
+            "--budget", [](double factor) { stochtex::setBudgetFactor(factor); },
+            "Multiply every work, memory and time budget by this factor, in [1/64, 64] (README, \"Bad input\")"),
+        "budget");
+    // Past a budget that only a watchdog can enforce (a shader compile, a GPU
+    // frame) the process ends there (core/watchdog.h), with the same advice.
+    stochtex::setOverrunHandler([](const std::string& message) {
+        stochtex::removeLiveTempFiles();
+        std::fprintf(stderr, "stochtex: error: %s%s\n", message.c_str(), stochtex::cli::budgetAdvice().c_str());
+        std::fflush(stderr);
+        std::_Exit(2);
+    });
     // Every option's help shows its default (inherited by the commands).
     app.option_defaults()->always_capture_default();
     stochtex::cli::registerRender(app);
@@ -68,8 +85,9 @@ int main(int argc, char** argv) {
                      explained.empty() ? e.what() : explained.c_str());
         return 2;
     } catch (const stochtex::InputError& e) {
-        std::fprintf(stderr, "stochtex: error: %s\n",
-                     stochtex::cli::describeInputError(e, stochtex::cli::commandThatRan(app)).c_str());
+        std::fprintf(stderr, "stochtex: error: %s%s\n",
+                     stochtex::cli::describeInputError(e, stochtex::cli::commandThatRan(app)).c_str(),
+                     e.isOverBudget() ? stochtex::cli::budgetAdvice().c_str() : "");
         return 2;
     } catch (const stochtex::GpuUnavailable& e) {
         // Not a bug: what the user asked for needs a display or GPU this machine lacks.

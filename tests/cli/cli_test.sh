@@ -900,6 +900,31 @@ case_hostile_shadertoy() {
   expect_bad "four 4096² image channels" "$out/big.png" "pass image: channel 3: the channels' textures take 1365 MiB up to here; at most 1024 MiB in all" -- bash -c 'ulimit -v 4194304; exec timeout 20 "$0" "$@"' "$bin" shadertoy "$work/big" --size 16 -o "$out/big.png"
 }
 
+# --- budgets (README, "Bad input"): --budget scales them; what only a watchdog
+# can bound (a driver's compile or draw, a GPU frame) ends the process with
+# exit 2 and the pass named, in about the budget's time ---
+case_budgets() {
+  expect_bad "a budget factor of 0" "$out/b0.png" "--budget: budget must be in [1/64, 64], got 0" -- "$bin" --budget 0 noise '{"type":"spectrum","size":64,"components":[{"shape":"lowpass","cutoff":4}]}' -o "$out/b0.png"
+  local comps='{"shape": "ring", "frequency": 8, "bandwidth": 2}' i
+  for i in 1 2 3 4; do comps="$comps, {\"shape\": \"ring\", \"frequency\": $((i + 8)), \"bandwidth\": 2}"; done
+  local five="{\"type\": \"spectrum\", \"size\": 1024, \"components\": [$comps]}"
+  expect_bad "5 components of 1024² at 1/64 of the budget" "$out/b1.png" "components × size² must be at most 4194304, got 5 × 1024² = 5242880 (--budget 0.0625 allows 0.0625× the budgets; now ×0.015625)" -- "$bin" noise "$five" --budget 0.015625 -o "$out/b1.png"
+  expect_ok "the same at 1/32 of the budget" "$out/b2.png" -- "$bin" noise "$five" --budget 0.03125 -o "$out/b2.png"
+  # A frame of 60000 iterations a pixel (~6 s at 256² on llvmpipe) under a 1.5 s budget.
+  mkdir -p "$work/loop" "$work/macro" "$work/array"
+  printf 'void mainImage(out vec4 c, in vec2 p) { float s = p.x; for (int i = 0; i < 60000; i++) { s = fract(s * 1.37 + p.y + sin(s)); } c = vec4(s); }\n' >"$work/loop/image.glsl"
+  local start=$SECONDS
+  expect_bad "a frame past its time budget" "$out/loop.png" "loop: pass image of frame 0 ran past the frame's time budget of 1.5 s" -- timeout 60 "$bin" shadertoy "$work/loop" --size 512 --budget 0.05 -o "$out/loop.png"
+  [ $((SECONDS - start)) -le 20 ] || fail "the frame's budget of 1.5 s ended the run after $((SECONDS - start)) s"
+  # Macros that expand to 2^26 terms (38 s and 7 GB in Mesa's preprocessor, then a crash).
+  { echo '#define A0 1.0'; for i in $(seq 26); do echo "#define A$i (A$((i - 1)) + A$((i - 1)))"; done
+    echo 'void mainImage(out vec4 c, in vec2 p) { c = vec4(A26); }'; } >"$work/macro/image.glsl"
+  expect_bad "a macro bomb" "$out/macro.png" "image.glsl + shadertoy_main: the GL driver's compile grew the process's memory by more than its budget of 256 MiB" -- timeout 60 "$bin" shadertoy "$work/macro" --size 16 --budget 0.125 -o "$out/macro.png"
+  # An array of 5·10⁷ floats: llvmpipe generates its code at the first draw (18 GB in 2 minutes).
+  printf 'float big[50000000]; void mainImage(out vec4 c, in vec2 p) { for (int i = 0; i < 100; i++) big[i * int(p.x)] = p.y; c = vec4(big[int(p.x)]); }\n' >"$work/array/image.glsl"
+  expect_bad "a huge array" "$out/array.png" "array: pass image of frame 0, in the GL driver's draw grew the process's memory by more than its budget of 256 MiB" -- timeout 60 "$bin" shadertoy "$work/array" --size 16 --budget 0.125 -o "$out/array.png"
+}
+
 # --- writes that were lost (issue "Hostile input on the new surfaces", items 4 and 5) ---
 case_lost_writes() {
   # Over a file-size limit the MP4 writer was killed by SIGXFSZ (or, with the

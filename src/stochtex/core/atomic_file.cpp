@@ -57,10 +57,7 @@ void unregisterTemp(int slot) {
 // it; the re-raised signal is delivered when the handler returns).
 extern "C" void removeTempFilesAndDie(int sig) {
     const int savedErrno = errno;
-    for (Slot& s : gSlots)
-        if (s.state.load(std::memory_order_acquire) == kLive) unlink(s.path);
-    for (Slot& s : gSlots)
-        if (s.state.load(std::memory_order_acquire) == kLive) rmdir(s.path);
+    removeLiveTempFiles();
     raise(sig);
     errno = savedErrno;
 }
@@ -230,6 +227,13 @@ void installTempFileCleanup() {
         action.sa_flags = SA_RESETHAND;
         sigaction(sig, &action, nullptr);
     }
+}
+
+void removeLiveTempFiles() {
+    for (Slot& s : gSlots)
+        if (s.state.load(std::memory_order_acquire) == kLive) unlink(s.path);
+    for (Slot& s : gSlots)
+        if (s.state.load(std::memory_order_acquire) == kLive) rmdir(s.path);
 }
 
 }  // namespace stochtex

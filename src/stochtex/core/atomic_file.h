@@ -70,4 +70,9 @@ void writeFileAtomic(const std::string& path, const std::string& bytes);
 // a full disk. Call once, early.
 void installTempFileCleanup();
 
+// Removes every live temporary file (and private folder) now. For a process
+// about to end without unwinding (a watchdog's overrun, core/watchdog.h);
+// async-signal-safe (unlink and rmdir only).
+void removeLiveTempFiles();
+
 }  // namespace stochtex

@@ -25,14 +25,26 @@ public:
         return InputError(name, name + " " + problem);
     }
 
+    // A request beyond a work or memory budget (core/budget.h): the input
+    // is valid, but asks for more than the budget allows; whoever runs the
+    // library may say how to raise it. `name`: the parameter, or empty;
+    // `message` is the whole message (it need not start with the name).
+    static InputError overBudget(const std::string& name, const std::string& message) {
+        InputError e(name, message);
+        e.overBudget_ = true;
+        return e;
+    }
+
     // The library's name of the offending parameter; empty for a plain error.
     const std::string& parameter() const { return parameter_; }
+    bool isOverBudget() const { return overBudget_; }
 
 private:
     InputError(std::string name, const std::string& message)
         : std::runtime_error(message), parameter_(std::move(name)) {}
 
     std::string parameter_;
+    bool overBudget_ = false;
 };
 
 // A number as a message shows it: shortest of 6 significant digits, "nan",

@@ -11,8 +11,10 @@
 #include <regex>
 #include <string_view>
 
+#include "stochtex/core/budget.h"
 #include "stochtex/core/embedded_file.h"
 #include "stochtex/core/error.h"
+#include "stochtex/core/watchdog.h"
 
 namespace stochtex {
 
@@ -228,6 +230,16 @@ std::string mapLocations(const std::string& log, const std::vector<std::string>&
     return out + log.substr(last);
 }
 
+// The GL driver's compiler runs inside one call that cannot be interrupted:
+// a shader whose macros expand exponentially or that declares an array of
+// 10⁸ elements takes minutes and gigabytes there (Mesa: 38 s and 7 GB, then
+// a crash). Our own shaders compile in well under a second and 100 MB.
+constexpr double kCompileSeconds = 60;
+constexpr long long kCompileBytes = 2LL << 30;
+Watchdog compileWatchdog(const std::string& what) {
+    return Watchdog(what, budgetedSeconds(kCompileSeconds), budgeted(kCompileBytes));
+}
+
 // A shader's or program's info log: `query` is glGetShaderiv/glGetProgramiv,
 // `read` glGetShaderInfoLog/glGetProgramInfoLog.
 template <class Query, class Read>
@@ -248,14 +260,17 @@ unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
     const GLuint s = glCreateShader(stage);
     const char* p = src.c_str();
     glShaderSource(s, 1, &p, nullptr);
-    glCompileShader(s);
+    std::string names;
+    for (const auto& f : files) names += (names.empty() ? "" : " + ") + f;
+    {
+        const Watchdog watchdog = compileWatchdog("shader " + names + ": the GL driver's compile");
+        glCompileShader(s);
+    }
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
     if (!ok) {
         const std::string log = infoLog(s, glGetShaderiv, glGetShaderInfoLog);
         glDeleteShader(s);
-        std::string names;
-        for (const auto& f : files) names += (names.empty() ? "" : " + ") + f;
         throw ShaderError("shader " + names + " does not compile:\n" + mapLocations(log, expanded, starts));
     }
     return s;
@@ -265,7 +280,11 @@ unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
 unsigned link(std::initializer_list<unsigned> shaders) {
     const GLuint prog = glCreateProgram();
     for (unsigned s : shaders) glAttachShader(prog, s);
-    glLinkProgram(prog);
+    {
+        // Drivers optimise and generate code here: most of the work of a large program.
+        const Watchdog watchdog = compileWatchdog("a shader program: the GL driver's link");
+        glLinkProgram(prog);
+    }
     for (unsigned s : shaders) glDeleteShader(s);
     GLint ok = 0;
     glGetProgramiv(prog, GL_LINK_STATUS, &ok);

@@ -4,13 +4,16 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <regex>
 #include <stdexcept>
 #include <vector>
 
+#include "stochtex/core/budget.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
+#include "stochtex/core/watchdog.h"
 #include "stochtex/gpu/export.h"
 #include "stochtex/gpu/gl_objects.h"
 #include "stochtex/gpu/gpu_graph.h"
@@ -59,11 +62,12 @@ void checkShadertoyMemory(const ShadertoySpec& spec, const ShadertoySettings& s)
     const bool cube = spec.bufferPass(4) >= 0;
     const double cubeBytes = cube ? 2.0 * 6.0 * double(spec.cubeSize) * spec.cubeSize * 16.0 * 4.0 / 3.0 : 0.0;
     const double bytes = frame * double(2 * (int(spec.passes.size()) - (cube ? 2 : 1)) + 1) + cubeBytes;
-    if (bytes > double(kMaxShadertoyBytes))
-        throw InputError::parameter("width", "the " + std::to_string(s.width) + "x" + std::to_string(s.height) +
-                                                 " frame's buffers would take " + formatValue(bytes / (1 << 20)) +
-                                                 " MiB, more than " + std::to_string(kMaxShadertoyBytes >> 20) +
-                                                 " MiB; use a smaller size");
+    const long long budget = budgeted(kMaxShadertoyBytes);
+    if (bytes > double(budget))
+        throw InputError::overBudget("width", "the " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                                  " frame's buffers would take " + formatValue(bytes / (1 << 20)) +
+                                                  " MiB, more than " + std::to_string(budget >> 20) +
+                                                  " MiB; use a smaller size");
 }
 
 namespace {
@@ -307,7 +311,8 @@ gl::Texture cubeTarget(int size, bool mipmaps) {
 // not counted. InputError
 // naming the channel where the total passes the budget.
 void checkChannelBudget(const ShadertoySpec& spec) {
-    constexpr long long kTexelBytes = 16, kMaxBytes = 1ll << 30;
+    constexpr long long kTexelBytes = 16;
+    const long long maxBytes = budgeted(1ll << 30);
     long long total = 0;
     for (const ShadertoyPass& pass : spec.passes)
         for (size_t i = 0; i < pass.channels.size(); ++i) {
@@ -330,11 +335,11 @@ void checkChannelBudget(const ShadertoySpec& spec) {
                 default: break;  // buffers are the passes' own; the keyboard is 256×3; a video is read a frame at a time
             }
             total += texels * kTexelBytes * (ch.filter == ChannelFilter::Mipmap ? 4 : 3) / 3;
-            if (total > kMaxBytes)
-                throw InputError(spec.name + ": pass " + pass.name + ": channel " + std::to_string(i) +
-                                 ": the channels' textures take " + std::to_string(total >> 20) +
-                                 " MiB up to here; at most " + std::to_string(kMaxBytes >> 20) +
-                                 " MiB in all (RGBA floats, 16 bytes a texel)");
+            if (total > maxBytes)
+                throw InputError::overBudget("", spec.name + ": pass " + pass.name + ": channel " + std::to_string(i) +
+                                                     ": the channels' textures take " + std::to_string(total >> 20) +
+                                                     " MiB up to here; at most " + std::to_string(maxBytes >> 20) +
+                                                     " MiB in all (RGBA floats, 16 bytes a texel)");
         }
 }
 
@@ -516,6 +521,22 @@ struct ShadertoyHost::Impl {
     size_t nextInput = 0;       // the settings' next event of the timeline
     int frame = 0;
     int instance = 0;
+
+    // Waits for the passes' fences in order: a pass still running when the
+    // frame's time budget is spent cannot be stopped (a loop that never ends;
+    // a real driver would hang or reset), so the process ends naming it.
+    void awaitFrame(const std::vector<GLsync>& passDone, std::chrono::steady_clock::time_point start) const {
+        const double budget = budgetedSeconds(kFrameSeconds);
+        const auto deadline = start + std::chrono::duration<double>(budget);
+        for (size_t p = 0; p < passDone.size(); ++p) {
+            const auto left = std::chrono::duration_cast<std::chrono::nanoseconds>(deadline - std::chrono::steady_clock::now());
+            const GLenum r = glClientWaitSync(passDone[p], GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(std::max<long long>(left.count(), 0)));
+            if (r == GL_TIMEOUT_EXPIRED)
+                overrun(spec.name + ": pass " + spec.passes[p].name + " of frame " + std::to_string(frame) +
+                        " ran past the frame's time budget of " + formatValue(budget) + " s");
+        }
+        for (GLsync fence : passDone) glDeleteSync(fence);
+    }
 
     RenderTarget newTarget(bool mipmaps) const {
         while (glGetError() != GL_NO_ERROR) {
@@ -858,6 +879,9 @@ std::vector<float> ShadertoyHost::renderSound(double seconds, const Progress& pr
     glUniform1f(glGetUniformLocation(prog, "iSampleRate"), float(m.settings.sampleRate));
     glUniform3f(glGetUniformLocation(prog, "iResolution"), float(kSoundBlock), float(kSoundBlock), 1.0f);
     for (long long start = 0; start < samples; start += perBlock) {
+        // A block is one draw and its read-back: the frame's budget applies to it.
+        const Watchdog watchdog(m.spec.name + ": pass sound, samples from " + std::to_string(start),
+                                budgetedSeconds(kFrameSeconds), budgeted(kMaxShadertoyBytes));
         target.bind();
         glUseProgram(prog);
         glUniform1i(glGetUniformLocation(prog, "stochtexSoundStart"), GLint(start));
@@ -935,8 +959,21 @@ void ShadertoyHost::renderFrame() {
         m.input.apply(m.settings.inputs[m.nextInput]);
     if (m.input.takeKeyboardChange()) m.uploadKeyboard();
     for (Impl::Pass& p : m.passes) p.renderedThisFrame = false;
-    for (size_t p = 0; p < m.passes.size(); ++p) m.run(p);
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<GLsync> passDone(m.passes.size());
+    for (size_t p = 0; p < m.passes.size(); ++p) {
+        {
+            // A CPU's GL (llvmpipe) generates a pass's code at its first draw,
+            // inside the call: an array of 10⁸ elements took 18 GB there.
+            const Watchdog watchdog(m.spec.name + ": pass " + m.spec.passes[p].name + " of frame " +
+                                        std::to_string(m.frame) + ", in the GL driver's draw",
+                                    budgetedSeconds(kFrameSeconds), budgeted(kMaxShadertoyBytes));
+            m.run(p);
+        }
+        passDone[p] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    m.awaitFrame(passDone, start);
     ++m.frame;
     m.input.endFrame();  // "pressed" and "just clicked" last one frame
 }

@@ -50,8 +50,14 @@ struct ShadertoySettings {
 void validateShadertoySettings(const ShadertoySettings& s);
 // ShaderToy plays at most 180 s of a sound pass.
 constexpr double kMaxSoundSeconds = 180;
-// A program's targets hold at most this many bytes (RGBA32F, two per buffer).
+// A program's targets hold at most this many bytes (RGBA32F, two per buffer),
+// times the budget factor (core/budget.h).
 constexpr long long kMaxShadertoyBytes = 2ll << 30;
+// A frame's passes (or a sound block) may run on the GPU for at most this
+// many seconds, times the budget factor; past it the process ends with exit
+// status 2 and the pass named (core/watchdog.h): a frame cannot be stopped.
+// ShaderToy's heaviest programs take a few seconds a frame on a CPU's GL.
+constexpr double kFrameSeconds = 30;
 // InputError naming `width` when the program's targets at this size would exceed it.
 void checkShadertoyMemory(const ShadertoySpec& spec, const ShadertoySettings& s);
 

@@ -6,6 +6,7 @@
 #include <opencv2/core.hpp>
 #include <stdexcept>
 
+#include "stochtex/core/budget.h"
 #include "stochtex/core/error.h"
 #include "stochtex/noise/normal.h"
 
@@ -80,10 +81,11 @@ double spectrumPower(const SpectrumSpec& spec, double fu, double fv) {
 
 void validateSpectrumWork(const SpectrumSpec& spec) {
     const long long n = spec.size, work = (long long)spec.components.size() * n * n;
-    if (work > kMaxSpectrumWork)
-        throw InputError::parameter("components", "× size² must be at most " + std::to_string(kMaxSpectrumWork) +
-                                                      ", got " + std::to_string(spec.components.size()) + " × " +
-                                                      std::to_string(n) + "² = " + std::to_string(work));
+    if (work > budgeted(kMaxSpectrumWork))
+        throw InputError::overBudget("components", "components × size² must be at most " +
+                                                       std::to_string(budgeted(kMaxSpectrumWork)) + ", got " +
+                                                       std::to_string(spec.components.size()) + " × " +
+                                                       std::to_string(n) + "² = " + std::to_string(work));
 }
 
 Image synthesizeExample(const SpectrumSpec& spec) {

@@ -145,6 +145,10 @@ void JsonReader::fail(const std::string& problem) const {
     throw InputError(source_ + ": " + (pointer_.empty() ? std::string("/") : pointer_) + ": " + problem);
 }
 
+void JsonReader::failOverBudget(const std::string& problem) const {
+    throw InputError::overBudget("", source_ + ": " + (pointer_.empty() ? std::string("/") : pointer_) + ": " + problem);
+}
+
 bool JsonReader::has(const std::string& key) const { return value_->is_object() && value_->contains(key); }
 
 JsonReader JsonReader::at(const std::string& key) const {

@@ -40,6 +40,8 @@ public:
     const std::string& source() const { return source_; }
 
     [[noreturn]] void fail(const std::string& problem) const;
+    // The same, for a request beyond a budget (InputError::overBudget).
+    [[noreturn]] void failOverBudget(const std::string& problem) const;
 
     // Runs a library check on values read from this object. A parameter error
     // it raises is re-raised at this object's member of the same name (at the
@@ -51,7 +53,9 @@ public:
             libraryCheck();
         } catch (const InputError& e) {
             if (e.parameter().empty()) throw;
-            (has(e.parameter()) ? at(e.parameter()) : *this).fail(e.what());
+            const JsonReader where = has(e.parameter()) ? at(e.parameter()) : *this;
+            if (e.isOverBudget()) where.failOverBudget(e.what());
+            where.fail(e.what());
         }
     }
 

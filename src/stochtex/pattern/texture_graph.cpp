@@ -5,6 +5,7 @@
 #include <functional>
 #include <set>
 
+#include "stochtex/core/budget.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/pattern/fields/field_node.h"
@@ -142,14 +143,15 @@ TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path&
             const long long area = (long long)g.noise.spectrum.size * g.noise.spectrum.size;
             texels += area;
             work += area * (long long)g.noise.spectrum.components.size();
-            if (texels > kMaxGraphExampleTexels)
-                nodes.at(id).fail("the graph's spectral noises hold " + std::to_string(texels) +
-                                  " texels up to here; at most " + std::to_string(kMaxGraphExampleTexels) +
-                                  " in all (four of 4096²): use smaller or fewer noises");
-            if (work > kMaxGraphSynthesisWork)
-                nodes.at(id).fail("the graph's spectral noises cost " + std::to_string(work) +
-                                  " component evaluations up to here; at most " +
-                                  std::to_string(kMaxGraphSynthesisWork) + " in all (components × size², summed)");
+            if (texels > budgeted(kMaxGraphExampleTexels))
+                nodes.at(id).failOverBudget("the graph's spectral noises hold " + std::to_string(texels) +
+                                            " texels up to here; at most " +
+                                            std::to_string(budgeted(kMaxGraphExampleTexels)) + " in all");
+            if (work > budgeted(kMaxGraphSynthesisWork))
+                nodes.at(id).failOverBudget("the graph's spectral noises cost " + std::to_string(work) +
+                                            " component evaluations up to here; at most " +
+                                            std::to_string(budgeted(kMaxGraphSynthesisWork)) +
+                                            " in all (components × size², summed)");
         }
     }
     // Edges: each input names a node whose output has the port's type.
@@ -256,8 +258,9 @@ NoiseExample buildFieldOnce(const TextureGraph& graph, const std::string& id, ui
     if (const auto it = cache.built.find(id); it != cache.built.end()) return it->second;
     NoiseExample e = buildField(graph, id, patternSeed, context, cache);
     cache.texels += (long long)e.size() * e.size();
-    if (cache.texels > kMaxGraphExampleTexels)
-        throw InputError(context + ": the graph's examples hold more than " + std::to_string(kMaxGraphExampleTexels) +
+    if (cache.texels > budgeted(kMaxGraphExampleTexels))
+        throw InputError::overBudget("", context + ": the graph's examples hold more than " +
+                                     std::to_string(budgeted(kMaxGraphExampleTexels)) +
                          " texels in all (at node \"" + id + "\"); use smaller or fewer examples");
     cache.built.emplace(id, e);
     return e;

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "stochtex/core/budget.h"
 #include "stochtex/core/embedded_file.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
@@ -145,10 +146,10 @@ void validateStimulusSet(const StimulusSetOptions& o) {
     if (trials > kMaxStimulusTrials)
         throw InputError::parameter(
             "repeats", "gives " + std::to_string(trials) + " trials, more than " + std::to_string(kMaxStimulusTrials));
-    if (trials * o.size * o.size > kMaxStimulusPixels)
-        throw InputError::parameter("size", "gives " + std::to_string(trials) + " stimuli of " +
-                                                std::to_string(o.size) + "² pixels, more than " +
-                                                std::to_string(kMaxStimulusPixels) + " pixels in all");
+    if (trials * o.size * o.size > budgeted(kMaxStimulusPixels))
+        throw InputError::overBudget("size", "size gives " + std::to_string(trials) + " stimuli of " +
+                                                 std::to_string(o.size) + "² pixels, more than " +
+                                                 std::to_string(budgeted(kMaxStimulusPixels)) + " pixels in all");
 }
 
 std::vector<int> stimulusTrialOrder(int count, uint32_t seed) {

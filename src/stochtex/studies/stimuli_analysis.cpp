@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "stochtex/analysis/binomial.h"
+#include "stochtex/core/budget.h"
 #include "stochtex/core/error.h"
 #include "stochtex/report/plot.h"
 
@@ -101,9 +102,10 @@ std::vector<StimulusAnswer> parseStimulusAnswers(const std::string& text, const 
     if (answers.empty()) throw InputError(source + ": no answers (only a header line)");
     std::set<int> tiles;
     for (const StimulusAnswer& a : answers) tiles.insert(a.tile);
-    if (tiles.size() > size_t(kMaxAnswerTileSizes))
-        throw InputError(source + ": answers for " + std::to_string(tiles.size()) + " tile sizes; at most " +
-                         std::to_string(kMaxAnswerTileSizes) + " are analysed (each is a plot)");
+    if ((long long)tiles.size() > budgeted(kMaxAnswerTileSizes))
+        throw InputError::overBudget("", source + ": answers for " + std::to_string(tiles.size()) +
+                                             " tile sizes; at most " + std::to_string(budgeted(kMaxAnswerTileSizes)) +
+                                             " are analysed (each is a plot)");
     return answers;
 }
 
