@@ -13,6 +13,7 @@
 #include "alternate_timing.h"
 #include "stochtex/analysis/optical_flow.h"
 #include "stochtex/analysis/power_spectrum.h"
+#include "stochtex/core/watchdog.h"
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/shadertoy.h"
 
@@ -101,6 +102,47 @@ BENCHMARK(BM_WorkbenchThroughput)
     ->Args({1280, 720})
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0);
+
+// What the watchdog around each pass's draw (core/watchdog.h: a thread
+// started and joined) costs a frame: the workbench program's frame (two
+// passes, waited for) beside two watchdogs around nothing, in turn. At small
+// sizes the frame is cheapest, so the share is the largest it gets.
+void BM_ShadertoyWatchdogShare(benchmark::State& state) {
+    std::unique_ptr<GlContext> ctx;
+    try {
+        ctx = GlContext::headless();
+    } catch (const GpuUnavailable& e) {
+        state.SkipWithError(e.what());
+        return;
+    }
+    const fs::path dir = fs::temp_directory_path() / "stochtex_bench_watchdog";
+    ShadertoySettings s;
+    s.width = int(state.range(0));
+    s.height = int(state.range(1));
+    ShadertoyHost host(workbenchProgram(dir), *ctx, s);
+    for (int k = 0; k < 30; ++k) host.renderFrame();
+    const bench::AlternateTimes t = bench::timeAlternately(
+        state,
+        [&] {
+            host.renderFrame();
+            glFinish();
+        },
+        [&] {
+            for (int pass = 0; pass < 2; ++pass) const Watchdog watchdog("nothing", 30, 1LL << 31);
+        });
+    const double n = double(state.iterations());
+    state.counters["frame_us"] = 1e6 * t.first / n;
+    state.counters["watchdogs_us"] = 1e6 * t.second / n;  // the two a frame of this program starts
+    state.counters["watchdogs/frame"] = t.second / t.first;
+    state.SetLabel(ctx->describe());
+    fs::remove_all(dir);
+}
+BENCHMARK(BM_ShadertoyWatchdogShare)
+    ->ArgNames({"width", "height"})
+    ->Args({64, 36})
+    ->Args({640, 360})
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(1.0);
 
 }  // namespace
 }  // namespace stochtex

@@ -38,12 +38,7 @@ int main(int argc, char** argv) {
         "budget");
     // Past a budget that only a watchdog can enforce (a shader compile, a GPU
     // frame) the process ends there (core/watchdog.h), with the same advice.
-    stochtex::setOverrunHandler([](const std::string& message) {
-        stochtex::removeLiveTempFiles();
-        std::fprintf(stderr, "stochtex: error: %s%s\n", message.c_str(), stochtex::cli::budgetAdvice().c_str());
-        std::fflush(stderr);
-        std::_Exit(2);
-    });
+    stochtex::setOverrunAdvice(stochtex::cli::budgetAdvice);
     // Every option's help shows its default (inherited by the commands).
     app.option_defaults()->always_capture_default();
     stochtex::cli::registerRender(app);

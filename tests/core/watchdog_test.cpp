@@ -36,14 +36,31 @@ TEST(Budget, TheFactorScalesEveryBudgetWithinItsRange) {
     setBudgetFactor(1);
 }
 
-TEST(Watchdog, WorkWithinItsBudgetEndsQuietly) {
-    const auto start = std::chrono::steady_clock::now();
-    {
-        const Watchdog watchdog("quick work", 10, 1LL << 30);
-        std::this_thread::sleep_for(std::chrono::milliseconds(30));
-    }
-    // The destructor wakes the thread at once, not after a poll or the budget.
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+TEST(WatchdogDeathTest, WorkWithinItsBudgetEndsQuietly) {
+    // A watch that outlived its work would end the process 0.5 s in, with
+    // status 2; the process lives on to 1.5 s and exits 0 instead.
+    EXPECT_EXIT(
+        {
+            {
+                const Watchdog watchdog("quick work", 0.5, 1LL << 30);
+                std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+            std::exit(0);
+        },
+        testing::ExitedWithCode(0), "");
+}
+
+std::string adviceForTest() { return " (more with --budget)"; }
+
+TEST(WatchdogDeathTest, TheProgramsAdviceEndsTheMessage) {
+    EXPECT_EXIT(
+        {
+            setOverrunAdvice(adviceForTest);
+            const Watchdog watchdog("a sleeping pass", 0.05, 1LL << 30);
+            std::this_thread::sleep_for(std::chrono::seconds(20));
+        },
+        testing::ExitedWithCode(2), "a sleeping pass ran past its time budget of 0.05 s \\(more with --budget\\)\n");
 }
 
 TEST(WatchdogDeathTest, WorkPastItsTimeEndsTheProcessWithStatus2) {

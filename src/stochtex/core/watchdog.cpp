@@ -1,10 +1,14 @@
 #include "stochtex/core/watchdog.h"
 
+#include <pthread.h>
 #include <unistd.h>
 
 #include <atomic>
-#include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <list>
+#include <mutex>
+#include <thread>
 
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
@@ -12,25 +16,21 @@
 namespace stochtex {
 namespace {
 
-[[noreturn]] void endProcess(const std::string& message) {
-    removeLiveTempFiles();
-    std::fprintf(stderr, "stochtex: error: %s\n", message.c_str());
-    std::fflush(stderr);
-    _exit(2);
-}
-
-std::atomic<OverrunHandler> gHandler{nullptr};
+std::atomic<OverrunAdvice> gAdvice{nullptr};
 
 // Often enough that memory growing at GB/s overshoots by a few tens of MB.
 constexpr auto kPollInterval = std::chrono::milliseconds(10);
 
 }  // namespace
 
-void setOverrunHandler(OverrunHandler handler) { gHandler.store(handler); }
+void setOverrunAdvice(OverrunAdvice advice) { gAdvice.store(advice); }
 
 void overrun(const std::string& message) {
-    if (const OverrunHandler handler = gHandler.load()) handler(message);
-    endProcess(message);  // the default, and a handler that returned
+    removeLiveTempFiles();
+    const OverrunAdvice advice = gAdvice.load();
+    std::fprintf(stderr, "stochtex: error: %s%s\n", message.c_str(), advice ? advice().c_str() : "");
+    std::fflush(stderr);
+    _exit(2);
 }
 
 long long residentBytes() {
@@ -42,31 +42,103 @@ long long residentBytes() {
     return read == 2 ? resident * static_cast<long long>(sysconf(_SC_PAGESIZE)) : 0;
 }
 
-Watchdog::Watchdog(std::string what, double seconds, long long bytes) : what_(std::move(what)) {
-    thread_ = std::thread([this, seconds, bytes] { watch(seconds, bytes); });
+// One thread for every watchdog of the process: a thread started and joined
+// around each pass cost a ShaderToy frame 0.35 ms (bench
+// BM_ShadertoyWatchdogShare, 64 × 36), more than its passes took.
+struct Watchdog::Monitor {
+    struct Watch {
+        unsigned long long id;
+        std::string what;
+        std::chrono::steady_clock::time_point start;
+        double seconds;
+        long long bytes;
+        long long startBytes = -1;  // read at the first poll after arming
+    };
+    std::mutex mutex;
+    std::condition_variable armed;
+    std::list<Watch> watches;
+    unsigned long long nextId = 0;
+
+    // Never destroyed (nor is its thread joined): a watch may be armed until
+    // the process ends. A forked child has no thread, so it starts anew.
+    static Monitor& instance() {
+        static std::once_flag once;
+        std::call_once(once, [] { pthread_atfork(nullptr, nullptr, [] { abandoned = current.exchange(nullptr); }); });
+        Monitor* m = current.load();
+        if (!m) {
+            static std::mutex starting;
+            const std::lock_guard lock(starting);
+            m = current.load();
+            if (!m) {
+                m = new Monitor;
+                m->abandoned_ = abandoned.exchange(nullptr);
+                std::thread([m] { m->watch(); }).detach();
+                current.store(m);
+            }
+        }
+        return *m;
+    }
+    static inline std::atomic<Monitor*> current{nullptr};
+    // A parent's, in a forked child: kept reachable (a leak checker would
+    // report it), never used.
+    static inline std::atomic<Monitor*> abandoned{nullptr};
+    Monitor* abandoned_ = nullptr;
+
+    // Polls while a watch is armed and for a second after the last one (a
+    // ShaderToy frame arms one a pass, the next frame's soon after), then
+    // sleeps until one is armed: waking a sleeping thread costs the arming
+    // call several microseconds.
+    static constexpr int kIdlePolls = 100;
+    bool sleeping = false;
+
+    void watch() {
+        std::unique_lock lock(mutex);
+        int idlePolls = 0;
+        for (;;) {
+            if (watches.empty() && idlePolls >= kIdlePolls) {
+                sleeping = true;
+                armed.wait(lock, [this] { return !watches.empty(); });
+                sleeping = false;
+            }
+            armed.wait_for(lock, kPollInterval);
+            if (watches.empty()) {
+                ++idlePolls;
+                continue;
+            }
+            idlePolls = 0;
+            lock.unlock();
+            const long long resident = residentBytes();
+            const auto now = std::chrono::steady_clock::now();
+            lock.lock();
+            for (Watch& w : watches) {
+                if (std::chrono::duration<double>(now - w.start).count() > w.seconds)
+                    overrun(w.what + " ran past its time budget of " + formatValue(w.seconds) + " s");
+                if (w.startBytes < 0) {
+                    w.startBytes = resident;
+                } else if (w.startBytes > 0 && resident - w.startBytes > w.bytes) {
+                    overrun(w.what + " grew the process's memory by more than its budget of " +
+                            formatValue(double(w.bytes) / (1 << 20)) + " MiB");
+                }
+            }
+        }
+    }
+};
+
+Watchdog::Watchdog(std::string what, double seconds, long long bytes) : monitor_(&Monitor::instance()) {
+    const auto start = std::chrono::steady_clock::now();
+    bool wake = false;
+    {
+        const std::lock_guard lock(monitor_->mutex);
+        id_ = monitor_->nextId++;
+        wake = monitor_->sleeping;
+        monitor_->watches.push_back({id_, std::move(what), start, seconds, bytes});
+    }
+    if (wake) monitor_->armed.notify_one();
 }
 
 Watchdog::~Watchdog() {
-    {
-        std::lock_guard lock(mutex_);
-        done_ = true;
-    }
-    wake_.notify_one();
-    thread_.join();
-}
-
-void Watchdog::watch(double seconds, long long bytes) {
-    const auto start = std::chrono::steady_clock::now();
-    const long long startBytes = residentBytes();
-    std::unique_lock lock(mutex_);
-    while (!wake_.wait_for(lock, kPollInterval, [this] { return done_; })) {
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (elapsed > seconds) overrun(what_ + " ran past its time budget of " + formatValue(seconds) + " s");
-        const long long grown = residentBytes() - startBytes;
-        if (startBytes > 0 && grown > bytes)
-            overrun(what_ + " grew the process's memory by more than its budget of " +
-                    formatValue(double(bytes) / (1 << 20)) + " MiB");
-    }
+    const std::lock_guard lock(monitor_->mutex);
+    monitor_->watches.remove_if([this](const Monitor::Watch& w) { return w.id == id_; });
 }
 
 }  // namespace stochtex
