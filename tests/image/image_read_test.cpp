@@ -139,6 +139,36 @@ TEST_F(ImageRead, HugeExrAndJpegHeadersFailBeforeDecoding) {
     EXPECT_NE(failureOf(writeFile(dir_, "huge.jpg", jpeg)).find("30000x20000 pixels"), std::string::npos);
 }
 
+TEST_F(ImageRead, SizesComeFromTheHeaderWhereverItLies) {
+    // A JPEG whose frame header follows 20 APP segments of 64 KiB (past the
+    // first MiB readImageSize reads first): its size, as readImage finds it.
+    std::string jpeg("\xff\xd8", 2);
+    for (int i = 0; i < 20; ++i) jpeg += std::string("\xff\xe1\xff\xff", 4) + std::string(0xffff - 2, 'x');
+    jpeg += std::string("\xff\xc0\x00\x11\x08\x00\x30\x00\x40\x03\x01\x22\x00\x02\x11\x01\x03\x11\x01\xff\xd9", 21);
+    ASSERT_GT(jpeg.size(), size_t(1) << 20);
+    EXPECT_EQ(readImageSize(writeFile(dir_, "late.jpg", jpeg)), (std::array<int, 2>{64, 48}));
+    // An EXR header: a dataWindow of 16², an attribute of 1.5 MiB, and a
+    // second dataWindow of 20000 × 16, the one OpenEXR reads (never the
+    // first, which the first MiB holds).
+    std::string exr("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+    const auto le32 = [&](int32_t v) {
+        for (int i = 0; i < 4; ++i) exr += char((uint32_t(v) >> (8 * i)) & 0xff);
+    };
+    const auto dataWindow = [&](int32_t width) {
+        exr += std::string("dataWindow\0box2i\0", 17);
+        le32(16), le32(0), le32(0), le32(width - 1), le32(15);
+    };
+    dataWindow(16);
+    exr += std::string("padding\0opaque\0", 15);
+    le32(3 << 19);
+    exr += std::string(3 << 19, '\0');
+    dataWindow(20000);
+    exr += '\0';
+    EXPECT_EQ(readImageSize(writeFile(dir_, "late.exr", exr)), (std::array<int, 2>{20000, 16}));
+    // A PNG: its size from its image header.
+    EXPECT_EQ(readImageSize(writeFile(dir_, "size.png", zeroPng(300, 7))), (std::array<int, 2>{300, 7}));
+}
+
 TEST_F(ImageRead, BrokenFilesSayWhatIsWrongAndNothingElse) {
     EXPECT_NE(failureOf(writeFile(dir_, "empty.png", "")).find("the file is empty"), std::string::npos);
     EXPECT_NE(failureOf(writeFile(dir_, "zero.png", zeroPng(0, 0))).find("0x0 pixels (empty)"), std::string::npos);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <set>
 #include <string>
 
@@ -223,6 +224,31 @@ TEST(StimuliAnalysis, BadAnswersNameTheFileAndLine) {
     EXPECT_EQ(message(header + "1,8,0.5,no\n" + header + "1,8,0.5,yes\n"), "(no error)");  // two files concatenated
     EXPECT_EQ(parseStimulusAnswers(header + "1,8,0.5,no\n" + header + "1,8,0.5,yes\n", "a.csv").size(), 2u);
     EXPECT_THROW(readStimulusAnswers("/nonexistent/answers.csv"), InputError);
+}
+
+// Read in blocks: a file longer than a block reads whole, a file at the
+// limit is read and one byte past it refused, naming the file.
+TEST(StimuliAnalysis, AnswersFilesAreReadWholeUpToTheLimit) {
+    const std::string path = testing::TempDir() + "stimuli_answers_limit.csv";
+    const std::string header = "trial,w,correlation,answer\n";
+    const std::string line = "1,8,0.5,yes\n";
+    auto write = [&](const std::string& text) { std::ofstream(path, std::ios::binary) << text; };
+    std::string text = header;
+    while (text.size() + line.size() <= 200000) text += line;  // three blocks and some
+    write(text);
+    EXPECT_EQ(readStimulusAnswers(path).size(), (text.size() - header.size()) / line.size());
+    text.resize(kMaxAnswersBytes, '\n');  // blank lines are skipped
+    write(text);
+    EXPECT_EQ(readStimulusAnswers(path).size(), (200000 - header.size()) / line.size());
+    write(text + "\n");
+    try {
+        readStimulusAnswers(path);
+        ADD_FAILURE() << "a file one byte past the limit was read";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  path + ": more than 16777216 bytes; an answers file holds one short line a trial");
+    }
+    std::remove(path.c_str());
 }
 
 }  // namespace

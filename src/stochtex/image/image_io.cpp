@@ -15,10 +15,10 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
-#include <optional>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <vector>
 
 #include "stochtex/core/error.h"
@@ -82,7 +82,9 @@ ImageHeader pngHeader(const std::string& path, const std::vector<uchar>& b) {
 
 // OpenEXR: magic, version, then attributes `name\0 type\0 size value` up to an
 // empty name; the pixel extent is the dataWindow box2i (xMin, yMin, xMax, yMax).
-ImageHeader exrHeader(const std::string& path, const std::vector<uchar>& b) {
+// `b` may be the file's start only (`whole` false): then a header that has
+// not ended in it is not read, as a later dataWindow would replace this one.
+ImageHeader exrHeader(const std::string& path, const std::vector<uchar>& b, bool whole) {
     size_t at = 8;
     const auto readString = [&](std::string& out) {
         if (at >= b.size()) return false;
@@ -97,7 +99,12 @@ ImageHeader exrHeader(const std::string& path, const std::vector<uchar>& b) {
     // second, huge one through to OpenCV.
     std::string name, type;
     std::optional<ImageHeader> found;
-    while (readString(name) && !name.empty()) {
+    bool ended = false;
+    while (readString(name)) {
+        if (name.empty()) {
+            ended = true;
+            break;
+        }
         if (!readString(type) || at + 4 > b.size()) break;
         const int32_t size = littleEndian32(&b[at]);
         at += 4;
@@ -109,7 +116,7 @@ ImageHeader exrHeader(const std::string& path, const std::vector<uchar>& b) {
         }
         at += size_t(size);
     }
-    if (found) return *found;
+    if (found && (ended || whole)) return *found;
     throw InputError(path + ": corrupt OpenEXR file (no readable dataWindow in its header)");
 }
 
@@ -140,10 +147,10 @@ ImageHeader jpegHeader(const std::string& path, const std::vector<uchar>& b) {
 const uchar kExrMagic[] = {0x76, 0x2F, 0x31, 0x01};
 
 // The format from the file's first bytes (never from its name).
-ImageHeader readHeader(const std::string& path, const std::vector<uchar>& b) {
+ImageHeader readHeader(const std::string& path, const std::vector<uchar>& b, bool whole = true) {
     static const uchar kPng[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
     if (b.size() >= 8 && std::memcmp(b.data(), kPng, 8) == 0) return pngHeader(path, b);
-    if (b.size() >= 8 && std::memcmp(b.data(), kExrMagic, 4) == 0) return exrHeader(path, b);
+    if (b.size() >= 8 && std::memcmp(b.data(), kExrMagic, 4) == 0) return exrHeader(path, b, whole);
     if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return jpegHeader(path, b);
     throw InputError(path + ": not a PNG, OpenEXR or JPEG image");
 }
@@ -313,15 +320,17 @@ void checkImageOutputFormat(const std::string& path, const WriteOptions& options
     const int bits = options.bitDepth;
     const bool ok = *format == OutputFormat::Exr || bits == 8 || (bits == 16 && *format != OutputFormat::Jpeg);
     if (!ok)
-        throw InputError(path + (*format == OutputFormat::Jpeg ? ": JPEG holds 8 bits per channel, got "
-                                                               : ": PNG and TIFF hold 8 or 16 bits per channel, got ") +
+        throw InputError(path +
+                         (*format == OutputFormat::Jpeg ? ": JPEG holds 8 bits per channel, got "
+                                                        : ": PNG and TIFF hold 8 or 16 bits per channel, got ") +
                          std::to_string(bits));
 }
 
 namespace {
 
-// The file's bytes, checked as readImage checks them before decoding.
-std::vector<uchar> readImageBytes(const std::string& path) {
+// The file's bytes (its first `most` only, where it is longer), checked as
+// readImage checks them before decoding.
+std::vector<uchar> readImageBytes(const std::string& path, uintmax_t most = UINTMAX_MAX) {
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder, not an image file");
     if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such image file");
@@ -331,7 +340,7 @@ std::vector<uchar> readImageBytes(const std::string& path) {
     if (fileSize > uintmax_t(kMaxImageFileBytes))
         throw InputError(path + ": the file is larger than " + std::to_string(kMaxImageFileBytes >> 20) +
                          " MiB, more than an image of " + std::to_string(kMaxImagePixels) + " pixels needs");
-    std::vector<uchar> bytes(static_cast<size_t>(fileSize));
+    std::vector<uchar> bytes(static_cast<size_t>(std::min(fileSize, most)));
     std::ifstream in(path, std::ios::binary);
     in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
     if (!in) throw InputError(path + ": cannot read file");
@@ -341,7 +350,19 @@ std::vector<uchar> readImageBytes(const std::string& path) {
 }  // namespace
 
 std::array<int, 2> readImageSize(const std::string& path) {
-    const ImageHeader header = readHeader(path, readImageBytes(path));
+    // A header is near the start: a PNG's in 33 bytes, a JPEG's after its
+    // APP segments (64 KiB each at most), an EXR's after its attributes.
+    // One not found in the first MiB is looked for in the whole file, so
+    // the answer and the message are readImage's.
+    constexpr uintmax_t kHeaderBytes = 1 << 20;
+    const std::vector<uchar> start = readImageBytes(path, kHeaderBytes);
+    std::optional<ImageHeader> found;
+    try {
+        found = readHeader(path, start, start.size() < kHeaderBytes);
+    } catch (const InputError&) {
+        if (start.size() < kHeaderBytes) throw;
+    }
+    const ImageHeader header = found ? *found : readHeader(path, readImageBytes(path));
     checkImageSize(path, header);
     return {int(header.width), int(header.height)};
 }

@@ -16,7 +16,8 @@ namespace {
 
 bool validId(const std::string& id) {
     if (id.empty() || id.size() > 64) return false;
-    return std::all_of(id.begin(), id.end(), [](char c) { return std::isalnum((unsigned char)c) || c == '_' || c == '-'; });
+    return std::all_of(id.begin(), id.end(),
+                       [](char c) { return std::isalnum((unsigned char)c) || c == '_' || c == '-'; });
 }
 
 std::string knownTypes() {
@@ -55,9 +56,10 @@ GraphNode parseNode(const JsonReader& n, const std::string& id, const std::files
     const NodeInfo& info = *g.info;
     for (auto item = n.value().begin(); item != n.value().end(); ++item) {
         const std::string key = item.key();  // a plain variable: lambdas below capture it (clang 14)
-        const bool known = key == "type" ||
-                           std::any_of(info.inputs.begin(), info.inputs.end(), [&](const PortInfo& p) { return p.name == key; }) ||
-                           std::any_of(info.params.begin(), info.params.end(), [&](const ParamInfo& p) { return p.name == key; });
+        const bool known =
+            key == "type" ||
+            std::any_of(info.inputs.begin(), info.inputs.end(), [&](const PortInfo& p) { return p.name == key; }) ||
+            std::any_of(info.params.begin(), info.params.end(), [&](const ParamInfo& p) { return p.name == key; });
         if (known) continue;
         std::string names;
         for (const PortInfo& p : info.inputs) names += (names.empty() ? "" : ", ") + p.name;
@@ -65,16 +67,16 @@ GraphNode parseNode(const JsonReader& n, const std::string& id, const std::files
         n.at(key).fail("a " + type + " node has no port or parameter \"" + key + "\"; it has: " + names);
     }
     for (const PortInfo& p : info.inputs) {
-        if (!n.has(p.name)) n.fail("a " + type + " node needs its input \"" + p.name + "\" (a " + portTypeName(p.type) + ")");
+        if (!n.has(p.name))
+            n.fail("a " + type + " node needs its input \"" + p.name + "\" (a " + portTypeName(p.type) + ")");
         g.inputs[p.name] = n.at(p.name).string();
     }
     for (const ParamInfo& p : info.params) {
         const bool required = p.fallback.is_null();
-        if (required && p.type != ParamType::Seed && !n.has(p.name)) n.fail("a " + type + " node needs \"" + p.name + "\"");
+        if (required && p.type != ParamType::Seed && !n.has(p.name))
+            n.fail("a " + type + " node needs \"" + p.name + "\"");
         switch (p.type) {
-            case ParamType::Number:
-                g.numbers[p.name] = n.number(p.name, p.fallback.get<double>(), p.min, p.max);
-                break;
+            case ParamType::Number: g.numbers[p.name] = n.number(p.name, p.fallback.get<double>(), p.min, p.max); break;
             case ParamType::Integer:
                 g.numbers[p.name] = n.integer(p.name, p.fallback.get<int>(), int(p.min), int(p.max));
                 break;
@@ -87,7 +89,8 @@ GraphNode parseNode(const JsonReader& n, const std::string& id, const std::files
                 const JsonReader comps = n.at(p.name);
                 const size_t count = comps.arraySize();
                 if (count == 0) comps.fail("needs at least one spectrum component");
-                for (size_t i = 0; i < count; ++i) g.noise.spectrum.components.push_back(parseSpectrumComponent(comps.at(i)));
+                for (size_t i = 0; i < count; ++i)
+                    g.noise.spectrum.components.push_back(parseSpectrumComponent(comps.at(i)));
                 break;
             }
             case ParamType::Colormap: g.colormap = parseColormapSpec(n.at(p.name), baseDir); break;
@@ -127,7 +130,8 @@ TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path&
     if (!nodes.value().is_object()) nodes.fail("expected an object of nodes by id");
     if (nodes.value().empty()) nodes.fail("needs at least one node");
     if (nodes.value().size() > size_t(kMaxGraphNodes))
-        nodes.fail("has " + std::to_string(nodes.value().size()) + " nodes, more than " + std::to_string(kMaxGraphNodes));
+        nodes.fail("has " + std::to_string(nodes.value().size()) + " nodes, more than " +
+                   std::to_string(kMaxGraphNodes));
     std::map<std::string, GraphNode> byId;
     for (const auto& [id, value] : nodes.value().items()) {
         (void)value;
@@ -144,14 +148,15 @@ TextureGraph parseTextureGraph(const JsonReader& r, const std::filesystem::path&
             texels += area;
             work += area * (long long)g.noise.spectrum.components.size();
             if (texels > budgeted(kMaxGraphExampleTexels))
-                nodes.at(id).failOverBudget("the graph's spectral noises hold " + std::to_string(texels) +
-                                            " texels up to here; at most " +
-                                            std::to_string(budgeted(kMaxGraphExampleTexels)) + " in all");
+                nodes.at(id).failOverBudget(
+                    "the graph's spectral noises hold " + std::to_string(texels) + " texels up to here; at most " +
+                    std::to_string(budgeted(kMaxGraphExampleTexels)) + " in all: use smaller or fewer noises");
             if (work > budgeted(kMaxGraphSynthesisWork))
                 nodes.at(id).failOverBudget("the graph's spectral noises cost " + std::to_string(work) +
                                             " component evaluations up to here; at most " +
                                             std::to_string(budgeted(kMaxGraphSynthesisWork)) +
-                                            " in all (components × size², summed)");
+                                            " in all (components × size², summed): use fewer "
+                                            "components or smaller noises");
         }
     }
     // Edges: each input names a node whose output has the port's type.
@@ -205,8 +210,9 @@ UvTransform nodeTransform(const TextureGraph& graph, const std::string& id, cons
     if (const auto it = memo.find(id); it != memo.end()) return it->second;
     const GraphNode& g = graph.node(id);
     if (!g.info->linear()) throw std::logic_error("graphNodeTransform: node " + id + " is not linear in its sources");
-    const FieldSight sight{g, context + ": node \"" + id + "\" (" + g.info->name + ")",
-                           [&](const std::string& port) { return nodeTransform(graph, g.inputs.at(port), context, memo); }};
+    const FieldSight sight{g, context + ": node \"" + id + "\" (" + g.info->name + ")", [&](const std::string& port) {
+                               return nodeTransform(graph, g.inputs.at(port), context, memo);
+                           }};
     const UvTransform r = g.info->seenThrough ? g.info->seenThrough(sight) : UvTransform{};
     memo.emplace(id, r);
     return r;
@@ -228,8 +234,10 @@ std::string graphTileGroup(const TextureGraph& graph, const std::string& id) {
         todo.pop_back();
         if (!seen.insert(n).second) continue;
         const GraphNode& g = graph.node(n);
-        if (g.info->output == PortType::Channels) fields.insert(n);  // a tiled field
-        else if (g.info->inputs.empty()) otherSource = true;
+        if (g.info->output == PortType::Channels)
+            fields.insert(n);  // a tiled field
+        else if (g.info->inputs.empty())
+            otherSource = true;
         for (const auto& [port, from] : g.inputs) todo.push_back(from);
     }
     return fields.size() == 1 && !otherSource ? *fields.begin() : id;
@@ -260,8 +268,8 @@ NoiseExample buildFieldOnce(const TextureGraph& graph, const std::string& id, ui
     cache.texels += (long long)e.size() * e.size();
     if (cache.texels > budgeted(kMaxGraphExampleTexels))
         throw InputError::overBudget("", context + ": the graph's examples hold more than " +
-                                     std::to_string(budgeted(kMaxGraphExampleTexels)) +
-                         " texels in all (at node \"" + id + "\"); use smaller or fewer examples");
+                                             std::to_string(budgeted(kMaxGraphExampleTexels)) +
+                                             " texels in all (at node \"" + id + "\"); use smaller or fewer examples");
     cache.built.emplace(id, e);
     return e;
 }
@@ -279,13 +287,15 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
                              "\"gaussianize\": false on its exemplar or tiled_field to use it here");
         return e;
     };
-    if (!g.info->linear()) throw std::logic_error("buildGraphField: node " + id + " is not a field linear in its sources");
-    const FieldFold fold{g,
-                         where,
-                         [&] { return graphNodeSeed(patternSeed, id); },
-                         linearInput,
-                         [&](const std::string& port) { return buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache); },
-                         [&](const std::string& port) -> const GraphNode& { return graph.node(g.inputs.at(port)); }};
+    if (!g.info->linear())
+        throw std::logic_error("buildGraphField: node " + id + " is not a field linear in its sources");
+    const FieldFold fold{
+        g,
+        where,
+        [&] { return graphNodeSeed(patternSeed, id); },
+        linearInput,
+        [&](const std::string& port) { return buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache); },
+        [&](const std::string& port) -> const GraphNode& { return graph.node(g.inputs.at(port)); }};
     NoiseExample e = g.info->fold(fold);
     // Linear nodes in a chain multiply their scales (20 affines at scale 100
     // overflowed float and rendered black, exit 0): refused at the node where

@@ -112,15 +112,18 @@ std::vector<StimulusAnswer> parseStimulusAnswers(const std::string& text, const 
 std::vector<StimulusAnswer> readStimulusAnswers(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot read the answers file");
-    // One byte past the limit tells a file at the limit from a larger one,
-    // without reading the rest (a device may never end).
-    std::string text(kMaxAnswersBytes + 1, '\0');
-    in.read(text.data(), std::streamsize(text.size()));
+    // Read in blocks up to one byte past the limit, which tells a file at the
+    // limit from a larger one without reading the rest (a device may never
+    // end) and without a buffer of the limit's size for a short file.
+    std::string text;
+    std::array<char, 1 << 16> block;
+    while (in.read(block.data(), std::streamsize(block.size())) || in.gcount() > 0) {
+        text.append(block.data(), size_t(in.gcount()));
+        if (text.size() > kMaxAnswersBytes)
+            throw InputError(path + ": more than " + std::to_string(kMaxAnswersBytes) +
+                             " bytes; an answers file holds one short line a trial");
+    }
     if (in.bad()) throw InputError(path + ": cannot read the answers file");
-    if (size_t(in.gcount()) > kMaxAnswersBytes)
-        throw InputError(path + ": more than " + std::to_string(kMaxAnswersBytes) +
-                         " bytes; an answers file holds one short line a trial");
-    text.resize(size_t(in.gcount()));
     return parseStimulusAnswers(text, path);
 }
 
