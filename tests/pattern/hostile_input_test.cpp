@@ -326,3 +326,31 @@ TEST(HostileGraph, ALinearChainThatOverflowsIsRefusedAtItsNode) {
     EXPECT_EQ(e.find("chain: node \"a3\" (affine): pixel ("), 0u) << e;  // 100³ · a value near 0.5
     EXPECT_NE(e.find("; its field's values must be in [-65504, 65504]"), std::string::npos) << e;
 }
+
+// The same through the per-pixel ops, which no fold sees: an affine to
+// values near 200 squared eight times overflowed float and rendered white
+// with exit 0. Refused at the op whose values can leave half float's range;
+// a chain that stays in range (squares of values below 1: half a noise of
+// mean 0.5, whose blends stay within 0.5 ± 1.2) is built.
+TEST(HostileGraph, AnOpChainThatOverflowsIsRefusedAtItsNode) {
+    const auto squares = [](int count, const std::string& affine) {
+        std::string nodes =
+            R"("n0": {"type": "spectral_noise", "size": 16, "components": [{"shape": "ring", "frequency": 4, "bandwidth": 1}]}, )"
+            R"("a": {"type": "affine", "input": "n0", )" +
+            affine + "}";
+        std::string previous = "a";
+        for (int i = 1; i <= count; ++i) {
+            std::string id = "s";
+            id += std::to_string(i);
+            nodes += R"(, ")" + id + R"(": {"type": "square", "input": ")" + previous + R"("})";
+            previous = id;
+        }
+        return R"({"name": "squares", "size": 16, "nodes": {)" + nodes + R"(, "c": {"type": "colormap", "x": ")" +
+               previous + R"(", "y": "n0", "colormap": {"type": "gaussian"}}}, "output": "c"})";
+    };
+    EXPECT_NO_THROW((void)GraphPattern::build(parseSpec(squares(12, R"("scale": 0.5)"))));
+    // Values near 100: squared about 1e4, then 1e8, past 65504.
+    const std::string e = buildError(squares(3, R"("scale": 1, "offset": 100)"));
+    EXPECT_EQ(e.find("squares: node \"s2\" (square): its values may reach "), 0u) << e;
+    EXPECT_NE(e.find("; a node's values must be in [-65504, 65504]"), std::string::npos) << e;
+}

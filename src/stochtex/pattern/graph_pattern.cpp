@@ -66,10 +66,10 @@ TextureGraph plainNormalMapGraph(const PatternSpec& spec, const ResponseOptions&
     };
     const auto light = degrees(shading.light);
     const auto view = shading.view ? degrees(*shading.view) : std::array<double, 2>{0, 0};
-    lean.numbers = {{"amplitude", nm.amplitude},   {"roughness", shading.roughness},
+    lean.numbers = {{"amplitude", nm.amplitude},    {"roughness", shading.roughness},
                     {"specular", shading.specular}, {"light_azimuth", light[0]},
-                    {"light_elevation", light[1]}, {"view_azimuth", view[0]},
-                    {"view_elevation", view[1]},   {"covariance", response.covariance ? 1 : 0}};
+                    {"light_elevation", light[1]},  {"view_azimuth", view[0]},
+                    {"view_elevation", view[1]},    {"covariance", response.covariance ? 1 : 0}};
     graph.nodes = {std::move(height), std::move(albedo), std::move(lean)};
     graph.output = "normal_map";
     return graph;
@@ -106,9 +106,11 @@ TextureGraph plainPatternGraph(const PatternSpec& spec, const ResponseOptions& r
 
 GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions& response) {
     if (spec.graph && response.kind != ResponseKind::PrefilteredColormap)
-        throw InputError::parameter("response", "a texture graph shades through its own nodes (a lean node for a "
-                                                "normal map); the " + enumName(kResponseKindNames, response.kind) +
-                                                    " response shades a plain pattern's normal map");
+        throw InputError::parameter("response",
+                                    "a texture graph shades through its own nodes (a lean node for a "
+                                    "normal map); the " +
+                                        enumName(kResponseKindNames, response.kind) +
+                                        " response shades a plain pattern's normal map");
     const TextureGraph plain = spec.graph ? TextureGraph{} : plainPatternGraph(spec, response);
     const TextureGraph& graph = spec.graph ? *spec.graph : plain;
     const std::string& context = spec.name;
@@ -151,7 +153,8 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
                 p.leafIds_.push_back(from);
         }
     }
-    if (p.leafIds_.empty() && std::none_of(ops.begin(), ops.end(), [](const GraphNode* g) { return !g->info->slopesOf.empty(); }))
+    if (p.leafIds_.empty() &&
+        std::none_of(ops.begin(), ops.end(), [](const GraphNode* g) { return !g->info->slopesOf.empty(); }))
         throw InputError(context + ": the output \"" + graph.output +
                          "\" reads no field, so it is one colour everywhere; a texture graph needs a noise (a "
                          "spectral_noise, exemplar or tiled_field node) under its output");
@@ -209,11 +212,15 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         const NoiseExample& height = fields[fieldLeaves + (k - fieldLeaves) / 2];
         const std::string where = context + ": node \"" + g->id + "\" (" + g->info->name + ")";
         if (height.gaussianized())
-            throw InputError(where + ": its input \"" + heightId + "\" is a Gaussianized exemplar, whose field is not "
-                             "linear in its example; set \"gaussianize\": false on its exemplar or tiled_field to use it here");
+            throw InputError(
+                where + ": its input \"" + heightId +
+                "\" is a Gaussianized exemplar, whose field is not "
+                "linear in its example; set \"gaussianize\": false on its exemplar or tiled_field to use it here");
         if (!graphNodeTransform(graph, heightId, context).identity())
-            throw InputError(where + ": its input \"" + heightId + "\" is seen through a transform of uv, whose slopes "
-                             "would be along turned axes; a " + g->info->name + " node needs its " + g->info->slopesOf + " untransformed");
+            throw InputError(where + ": its input \"" + heightId +
+                             "\" is seen through a transform of uv, whose slopes "
+                             "would be along turned axes; a " +
+                             g->info->name + " node needs its " + g->info->slopesOf + " untransformed");
         TiledField slopes;
         try {
             slopes = slopeField(height.values(), g->numbers.at("amplitude"), seedOf(heightId, k), spec.gridDensity);
@@ -240,12 +247,13 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
     };
     for (size_t k = 0; k < fieldLeaves;) {
         // Consecutive leaves of one size seen through one transform share a field.
-        const bool pair = k + 1 < fieldLeaves && examples[k + 1].size() == examples[k].size() &&
-                          transforms[k + 1] == transforms[k];
+        const bool pair =
+            k + 1 < fieldLeaves && examples[k + 1].size() == examples[k].size() && transforms[k + 1] == transforms[k];
         addPair(k, pair, false);
         k += pair ? 2 : 1;
     }
-    for (size_t k = fieldLeaves; k < noises.size(); k += 2) addPair(k, true, slopePairCovariance[(k - fieldLeaves) / 2]);
+    for (size_t k = fieldLeaves; k < noises.size(); k += 2)
+        addPair(k, true, slopePairCovariance[(k - fieldLeaves) / 2]);
 
     // The program, with its tables.
     const auto gaussianizedLeaf = [&](const std::string& id) -> const NoiseExample* {
@@ -289,12 +297,59 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
             const ColormapTable& t = p.tables_.back().point;
             tableEntries += (long long)t.resolutionX() * t.resolutionY();
             if (tableEntries > kMaxGraphTableEntries)
-                throw InputError(context + ": node \"" + g->id + "\" (" + g->info->name + "): the graph's tables hold more than " +
-                                 std::to_string(kMaxGraphTableEntries) + " entries in all; use lower resolutions or fewer tables");
+                throw InputError(context + ": node \"" + g->id + "\" (" + g->info->name +
+                                 "): the graph's tables hold more than " + std::to_string(kMaxGraphTableEntries) +
+                                 " entries in all; use lower resolutions or fewer tables");
         }
         p.operations_.push_back(std::move(op));
     }
+    checkProgramRange(p, examples, context);
     return p;
+}
+
+// The linear nodes' fold checks each example's values; the ops compose them
+// per pixel (squares of squares, products of affines), where a value past
+// float renders as inf or NaN: black or white with exit 0. Each slot's range
+// follows from its inputs' by the op at their corners (exact for the
+// multilinear and convex ops, affine, sum, product, square, mix; the others
+// are bounded by their tables), from the leaves' ranges: a blend of three
+// tiles lies within √3 of the largest deviation from the example's mean.
+void GraphPattern::checkProgramRange(const GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                     const std::string& context) {
+    std::vector<vec3> lo, hi;
+    for (const NoiseExample& e : examples) {
+        float deviation = 0;
+        for (float v : e.values().data()) deviation = std::max(deviation, std::abs(v - e.mean()));
+        const float reach = std::sqrt(3.0f) * deviation;
+        lo.push_back(vec3(e.toOutput(e.mean() - reach), 0.0f, 0.0f));
+        hi.push_back(vec3(e.toOutput(e.mean() + reach), 0.0f, 0.0f));
+    }
+    kernel::OpContext ctx;
+    for (const Operation& op : p.operations_) {
+        ctx.table = op.table;
+        ctx.pointTable = op.table >= 0 ? &p.tables_[size_t(op.table)].point : nullptr;
+        vec3 outLo(INFINITY), outHi(-INFINITY);
+        bool finite = true;
+        for (int corner = 0; corner < 8; ++corner) {
+            std::array<vec3, 3> in{};
+            for (size_t i = 0; i < 3; ++i)
+                if (const int s = op.inputs[i]; s >= 0) in[i] = (corner >> i & 1) ? hi[size_t(s)] : lo[size_t(s)];
+            const vec3 v = opPoint(op.params, in[0], in[1], in[2], ctx);
+            for (int c = 0; c < 3; ++c) {
+                finite = finite && std::isfinite(v[c]);
+                outLo[c] = std::min(outLo[c], v[c]);
+                outHi[c] = std::max(outHi[c], v[c]);
+            }
+        }
+        const float reach = std::max({-outLo.x, -outLo.y, -outLo.z, outHi.x, outHi.y, outHi.z});
+        if (!finite || reach > kMaxFieldValue)
+            throw InputError(context + ": node \"" + op.id + "\" (" + op.info->name + "): its values may reach " +
+                             (finite ? formatValue(reach) : std::string("beyond float")) +
+                             " from its inputs' ranges; a node's values must be in [-" + formatValue(kMaxFieldValue) +
+                             ", " + formatValue(kMaxFieldValue) + "] (lower the scales that lead to it)");
+        lo.push_back(outLo);
+        hi.push_back(outHi);
+    }
 }
 
 bool GraphPattern::shadesLight() const {
@@ -397,10 +452,11 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
                         const float fu = periodFraction(u);
                         if (plain) {
                             c = plain->sample(leaves[0]->example().toOutput(leaves[0]->blend(s, tiles[0], fu)),
-                                               leaves[1]->example().toOutput(leaves[1]->blend(s, tiles[1], fu)));
+                                              leaves[1]->example().toOutput(leaves[1]->blend(s, tiles[1], fu)));
                         } else {
                             for (size_t k = 0; k < leaves.size(); ++k)
-                                slots[k] = vec3(leaves[k]->example().toOutput(leaves[k]->blend(s, tiles[k], fu)), 0.0f, 0.0f);
+                                slots[k] =
+                                    vec3(leaves[k]->example().toOutput(leaves[k]->blend(s, tiles[k], fu)), 0.0f, 0.0f);
                             c = run(slots, lastSlot, kFromAbove);
                         }
                     } else {
@@ -523,12 +579,12 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
     sky_ = plain_ ? plainSky() : fromMoments(whole, wholeCov);
     if (options.source == StatisticsSource::Estimators)
         for (size_t k = 0; k < graph.leafPairs().size(); ++k)
-            estimators_.push_back(std::make_unique<FootprintEstimator>(graph.leafPairs()[k], graph.pairCovariance(int(k)),
-                                                                       options.pack8));
+            estimators_.push_back(std::make_unique<FootprintEstimator>(graph.leafPairs()[k],
+                                                                       graph.pairCovariance(int(k)), options.pack8));
 }
 
 Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMoments,
-                                const std::vector<float>& pairCovariances, const Direction& eye) const {
+                               const std::vector<float>& pairCovariances, const Direction& eye) const {
     if (int(leafMoments.size()) != graph_.leafCount())
         throw std::invalid_argument("FilteredGraph::fromMoments: " + std::to_string(leafMoments.size()) +
                                     " leaf moments for " + std::to_string(graph_.leafCount()) + " leaves");
@@ -549,7 +605,8 @@ Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
     for (const GraphPattern::Operation& op : graph_.operations()) {
         ctx.table = op.table;
         ctx.pointTable = op.table >= 0 ? &graph_.tables()[size_t(op.table)].point : nullptr;
-        ctx.prefilteredTable = op.table >= 0 && size_t(op.table) < tables_.size() ? &tables_[size_t(op.table)] : nullptr;
+        ctx.prefilteredTable =
+            op.table >= 0 && size_t(op.table) < tables_.size() ? &tables_[size_t(op.table)] : nullptr;
         const size_t pair = op.covariancePair >= 0 ? size_t(op.covariancePair) : pairCovariances.size();
         ctx.slopeCov = pair < pairCovariances.size() ? pairCovariances[pair] : 0.0f;
         slots[out] = opFiltered(op.params, input(slots, op, 0), input(slots, op, 1), input(slots, op, 2), ctx);
@@ -601,7 +658,8 @@ void FilteredGraph::footprints(double u, double v, const Jacobian& j, Scratch& s
         const UvTransform& t = graph_.pairTransform(int(k));
         const auto [pu, pv] = t.apply(u, v);
         const FootprintEstimator& e = *estimators_[k];
-        scratch.footprints.push_back(makeFootprint(pu, pv, transformed(t, j), e.exampleSize(), e.maxLod(), options_.aniso));
+        scratch.footprints.push_back(
+            makeFootprint(pu, pv, transformed(t, j), e.exampleSize(), e.maxLod(), options_.aniso));
     }
 }
 
@@ -622,17 +680,14 @@ Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j, co
     if (!onPlane) return sky_;
     switch (options_.source) {
         case StatisticsSource::Point: return graph_.evaluate(u, v, -1, eye, scratch.slots);
-        case StatisticsSource::Estimators:
-            footprints(u, v, j, scratch);
-            return shade(scratch, eye);
+        case StatisticsSource::Estimators: footprints(u, v, j, scratch); return shade(scratch, eye);
         case StatisticsSource::Exact: {
             scratch.stats.clear();
             for (size_t k = 0; k < graph_.leafPairs().size(); ++k) {
                 const UvTransform& t = graph_.pairTransform(int(k));
                 const auto [pu, pv] = t.apply(u, v);
-                scratch.stats.push_back(
-                    bruteForceStats(graph_.leafPairs()[k], pu, pv, transformed(t, j), options_.referenceMaxSamples,
-                                    options_.referenceMinSamples));
+                scratch.stats.push_back(bruteForceStats(graph_.leafPairs()[k], pu, pv, transformed(t, j),
+                                                        options_.referenceMaxSamples, options_.referenceMinSamples));
             }
             return fromPairStats(scratch, eye);
         }
@@ -695,8 +750,9 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                         // pixel, as the interpreter's colormap op would
                         // compute (bit-identical; tested).
                         const FootprintEstimator& e = *estimators_.front();
-                        const Footprint f = oneFootprint ? zoomShapes.front().translated(u, v)
-                                                         : makeFootprint(u, v, j, e.exampleSize(), e.maxLod(), options_.aniso);
+                        const Footprint f = oneFootprint
+                                                ? zoomShapes.front().translated(u, v)
+                                                : makeFootprint(u, v, j, e.exampleSize(), e.maxLod(), options_.aniso);
                         c = plainColour(e.estimate(f, options_.estimator));
                     } else if (oneFootprint) {
                         scratch.footprints.clear();

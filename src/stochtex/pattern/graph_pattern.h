@@ -83,7 +83,7 @@ public:
         // covariance (a lean op's slopes); −1: none (slopeCov = 0). Decided
         // here once for the CPU evaluator and the GLSL emitter.
         int covariancePair = -1;
-        OpParams params;                        // the op and its typed parameters
+        OpParams params;  // the op and its typed parameters
     };
     using Table = OpTable;
 
@@ -137,6 +137,10 @@ public:
 
 private:
     friend class FilteredGraph;
+    // InputError naming the first operation whose values can leave
+    // [−kMaxFieldValue, kMaxFieldValue] over the leaves' ranges.
+    static void checkProgramRange(const GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                  const std::string& context);
     using Slots = std::vector<kernel::vec3>;
     // The operations on slots whose leaves are set; returns slot `lastSlot`.
     Rgb run(Slots& slots, int lastSlot, const Direction& eye) const;
@@ -184,7 +188,8 @@ public:
 
     // The program on the leaves' moments (mean, variance per leaf) and the
     // covariance of each pair's two leaves (a lean node's slopes; none: 0).
-    Rgb fromMoments(const std::vector<std::array<float, 2>>& leafMoments, const std::vector<float>& pairCovariances = {},
+    Rgb fromMoments(const std::vector<std::array<float, 2>>& leafMoments,
+                    const std::vector<float>& pairCovariances = {},
                     const Direction& eye = GraphPattern::kFromAbove) const;
     // The estimators of leaf pair k (built for the estimators source only)
     // and the prefiltered table of GraphPattern table k, for the GPU.
@@ -195,10 +200,10 @@ public:
 private:
     // What one thread reuses from pixel to pixel, so that shading a pixel allocates nothing.
     struct Scratch {
-        std::vector<Footprint> footprints;    // one per estimator
-        std::vector<FootprintStats> stats;    // one per leaf pair
-        std::vector<float> covariances;       // one per leaf pair
-        GraphPattern::Slots slots;            // the program's values
+        std::vector<Footprint> footprints;  // one per estimator
+        std::vector<FootprintStats> stats;  // one per leaf pair
+        std::vector<float> covariances;     // one per leaf pair
+        GraphPattern::Slots slots;          // the program's values
     };
     Rgb shade(bool onPlane, double u, double v, const Jacobian& j, const Direction& eye, Scratch& scratch) const;
     // The program on the moments in scratch.slots' leaves and scratch.covariances.
