@@ -64,6 +64,9 @@ TEST(WatchdogDeathTest, TheProgramsAdviceEndsTheMessage) {
 }
 
 TEST(WatchdogDeathTest, WorkPastItsTimeEndsTheProcessWithStatus2) {
+    // The parent's watching thread started here is not in the forked child
+    // the death test runs in: the child's watch must start its own.
+    { const Watchdog parent("the parent's work", 10, 1LL << 30); }
     EXPECT_EXIT(
         {
             const Watchdog watchdog("a sleeping pass", 0.05, 1LL << 30);
