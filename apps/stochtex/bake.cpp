@@ -7,6 +7,12 @@
 #include "stochtex/gpu/export.h"
 
 namespace stochtex::cli {
+namespace {
+
+enum class TablePrecision { Half, Float };
+const EnumNames<TablePrecision> kTablePrecisionNames{{"half", TablePrecision::Half}, {"float", TablePrecision::Float}};
+
+}  // namespace
 
 void registerBake(CLI::App& app) {
     struct Args {
@@ -14,26 +20,24 @@ void registerBake(CLI::App& app) {
         FilterOptions options;
         ResponseFlags response;
         std::string dir;
-        std::string precision = "half";
+        TablePrecision precision = TablePrecision::Half;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("bake", "Export a filtered pattern for engines: EXR data, manifest.json, "
-                                           "stochtex.glsl (vec4 stochtex_sample(vec2 uv)) and a README");
+    auto* cmd = app.add_subcommand("bake",
+                                   "Export a filtered pattern for engines: EXR data, manifest.json, "
+                                   "stochtex.glsl (vec4 stochtex_sample(vec2 uv)) and a README");
     addPatternSource(*cmd, args->source);
     addOutputFolderFlag(*cmd, args->dir, "Output folder");
     addFilterFlag(*cmd, args->options,
                   "Table: smooth | paper (σ ≤ 0.125: distant areas drift ~4/255 for the presets, docs/PATTERNS.md)");
     addAnisoFlag(*cmd, args->options.aniso);
     addResponseFlags(*cmd, args->response);
-    cmd->add_option("--table-precision", args->precision,
-                    "half (default: half the size, error <= 0.06/255) | float (bit-exact with render --gpu)");
+    addEnumFlag(*cmd, "--table-precision", args->precision, kTablePrecisionNames, "tablePrecision",
+                "half (half the size, error <= 0.06/255) | float (bit-exact with render --gpu)");
     cmd->callback([args, cmd] {
         applyResponseFlags(*cmd, args->response, args->options);
         ExportOptions e;
-        if (args->precision == "float")
-            e.halfTable = false;
-        else if (args->precision != "half")
-            throw InputError("--table-precision: unknown \"" + args->precision + "\" (expected half or float)");
+        e.halfTable = args->precision == TablePrecision::Half;
         const PatternSpec spec = loadPatternSource(args->source, args->options);
         exportPatternSpec(spec, args->options, args->dir, e);
         std::printf("exported %s (filter %s) to %s: manifest.json, stochtex.glsl, README.md and the data\n",

@@ -24,8 +24,9 @@ void registerBakeImage(CLI::App& app) {
         int bits = 8, band = 256, threads = 0;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("bake-image", "Render a large PNG or EXR in bands of rows with bounded memory "
-                                                 "(e.g. --size 8192), on the CPU or with --gpu");
+    auto* cmd = app.add_subcommand("bake-image",
+                                   "Render a large PNG or EXR in bands of rows with bounded memory "
+                                   "(e.g. --size 8192), on the CPU or with --gpu");
     addPatternSource(*cmd, args->source);
     addViewFlags(*cmd, args->view);
     addOutputImageFlag(*cmd, args->output,
@@ -45,7 +46,8 @@ void registerBakeImage(CLI::App& app) {
         checkBitsApply(bits, args->output);
         checkImageOutput(args->output, args->bits);
         checkImageStreamFormat(args->output);  // .jpg and .tif are written whole, not in bands
-        if (!gpuHasSource(args->options.source)) throw InputError("--filter: bake-image renders none, paper or smooth");
+        if (!gpuHasSource(args->options.source))
+            refuseOption(*cmd, "--filter", "bake-image renders none, paper or smooth");
         const PatternSpec spec = loadPatternSource(args->source, args->options);
         Camera whole;
         whole.view = makeView(spec, args->view);

@@ -155,9 +155,27 @@ void checkBitsApply(const CLI::Option* bits, const std::string& output) {
 
 void refuseWithoutEffect(const CLI::Option* option, bool hasEffect, const std::string& why) {
     if (!option || option->count() == 0 || hasEffect) return;
-    const std::string flag =
-        option->get_lnames().empty() ? "-" + option->get_snames().front() : "--" + option->get_lnames().front();
-    throw InputError(flag + ": has no effect " + why);
+    refuseOption(option, "has no effect " + why);
+}
+
+std::string optionFlag(const CLI::Option* option) {
+    return option->get_lnames().empty() ? "-" + option->get_snames().front() : "--" + option->get_lnames().front();
+}
+
+void refuseOption(const CLI::Option* option, const std::string& message) {
+    throw InputError(optionFlag(option) + ": " + message);
+}
+
+void refuseOption(const CLI::App& cmd, const std::string& name, const std::string& message) {
+    refuseOption(cmd.get_option(name), message);
+}
+
+std::array<int, 2> sizeFlagValue(const CLI::Option* option, const std::vector<int>& size, int maxSide) {
+    const int w = size.at(0), h = size.size() > 1 ? size[1] : size[0];
+    if (w < 1 || h < 1 || w > maxSide || h > maxSide)
+        refuseOption(option, "size must be in [1, " + std::to_string(maxSide) + "] per side, got " + std::to_string(w) +
+                                 "x" + std::to_string(h));
+    return {w, h};
 }
 
 void addThreadsFlag(CLI::App& cmd, int& threads) {
@@ -243,7 +261,8 @@ void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov) {
                 "zoom (flat, --scale texels per pixel) | plane (perspective ground plane)");
     cmd.add_option("--tilt", camera.tiltDeg, "Plane view: tilt from looking straight down, degrees [0, 89]")
         ->capture_default_str();
-    if (withFov) cmd.add_option("--fov", camera.fovDeg, "Plane view: vertical field of view, degrees")->capture_default_str();
+    if (withFov)
+        cmd.add_option("--fov", camera.fovDeg, "Plane view: vertical field of view, degrees")->capture_default_str();
 }
 
 void refuseUnusedCameraFlags(const CLI::App& cmd, const Camera& camera) {

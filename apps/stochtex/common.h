@@ -2,6 +2,7 @@
 // Pieces shared by the CLI commands: the pattern source (file or preset),
 // the view flags, inline-or-file JSON arguments, output checks.
 #include <CLI/CLI.hpp>
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -40,9 +41,9 @@ PatternSpec loadPatternSource(const PatternSource& src, const FilterOptions& opt
 PatternSpec loadPatternSource(const PatternSource& src, const std::vector<FilterOptions>& filters);
 
 struct ViewFlags {
-    std::vector<int> size;          // N or W,H
+    std::vector<int> size;  // N or W,H
     std::optional<double> scale;
-    std::vector<double> offset;     // X,Y in texels
+    std::vector<double> offset;  // X,Y in texels
 };
 void addViewFlags(CLI::App& cmd, ViewFlags& flags);
 View makeView(const PatternSpec& spec, const ViewFlags& flags);
@@ -79,6 +80,18 @@ void checkBitsApply(const CLI::Option* bits, const std::string& output);
 // refused rather than silently ignored: InputError "FLAG: has no effect
 // WHY" when `option` was given and !hasEffect (main exits 2).
 void refuseWithoutEffect(const CLI::Option* option, bool hasEffect, const std::string& why);
+// What the user gives `option` by: its first long name, else its short one ("--size", "-o").
+std::string optionFlag(const CLI::Option* option);
+// Refuses an option's value: InputError "FLAG: MESSAGE" (main exits 2), the
+// flag named by the option itself, so no message spells a flag by hand and a
+// renamed flag renames its errors (tests/lint/no_hand_built_flag_errors.sh).
+[[noreturn]] void refuseOption(const CLI::Option* option, const std::string& message);
+// The same for cmd's option `name` ("--size"), which must exist (CLI11's
+// OptionNotFound otherwise: a bug, exit 1).
+[[noreturn]] void refuseOption(const CLI::App& cmd, const std::string& name, const std::string& message);
+// An "N or W,H" size flag's value as {width, height}, each side in
+// [1, maxSide]; refused through `option` otherwise.
+std::array<int, 2> sizeFlagValue(const CLI::Option* option, const std::vector<int>& size, int maxSide);
 
 // CLI11's transformer over an enum's name table (the table the library, the
 // JSON reader and the bake manifest use). It reads the name with parseEnum,

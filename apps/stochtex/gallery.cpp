@@ -36,7 +36,7 @@ void registerGallery(CLI::App& app) {
     cmd->add_option("--size", args->size, "Pattern size in pixels")->check(CLI::Range(64, 4096));
     cmd->add_option("--preset", args->only, "Only these presets (repeatable)");
     addThreadsFlag(*cmd, args->threads);
-    cmd->callback([args] {
+    cmd->callback([args, cmd] {
         ThreadLimit limit(args->threads);
         // Each entry: a preset's name or a file's path; all parsed before any work.
         struct Entry {
@@ -44,10 +44,12 @@ void registerGallery(CLI::App& app) {
             PatternSpec spec;
         };
         std::vector<Entry> entries;
-        if (!args->files.empty() && !args->only.empty()) throw InputError("--preset: give presets or files, not both");
+        if (!args->files.empty() && !args->only.empty())
+            refuseOption(*cmd, "--preset", "give presets or files, not both");
         for (const std::string& file : args->files) {
             const nlohmann::json j = readJsonFile(file);
-            entries.push_back({fs::path(file).stem().string(), j.value("description", std::string()), loadPatternFile(file)});
+            entries.push_back(
+                {fs::path(file).stem().string(), j.value("description", std::string()), loadPatternFile(file)});
         }
         if (args->files.empty())
             for (const std::string& n : args->only.empty() ? presetNames() : args->only) {
@@ -87,8 +89,7 @@ void registerGallery(CLI::App& app) {
         writeFileAtomic((fs::path(args->dir) / "index.html").string(), html.str());
         progress.finish();
         std::printf("gallery: %zu %s in %s (open %s)\n", entries.size(), args->files.empty() ? "presets" : "patterns",
-                    args->dir.c_str(),
-                    (fs::path(args->dir) / "index.html").string().c_str());
+                    args->dir.c_str(), (fs::path(args->dir) / "index.html").string().c_str());
     });
 }
 

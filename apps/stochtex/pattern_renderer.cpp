@@ -5,7 +5,7 @@
 namespace stochtex::cli {
 
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHelp, bool withDerivatives) {
-    cmd.add_flag("--gpu", flags.gpu, gpuHelp);
+    flags.gpuOption = cmd.add_flag("--gpu", flags.gpu, gpuHelp);
     addPipelineFlag(cmd, flags.pipeline);
     if (withDerivatives)
         addEnumFlag(cmd, "--derivatives", flags.derivatives, kGpuDerivativesNames, "derivatives",
@@ -18,7 +18,8 @@ void refuseUnusedDeviceFlags(const CLI::App& cmd, const DeviceFlags& flags) {
 }
 
 void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
-    if (flags.gpu && !gpuHasSource(options.source)) throw InputError("--gpu: the GPU renders --filter none, paper or smooth");
+    if (flags.gpu && !gpuHasSource(options.source))
+        refuseOption(flags.gpuOption, "the GPU renders --filter none, paper or smooth");
 }
 
 std::unique_ptr<ViewRenderer> makeRenderer(const PatternSpec& spec, const FilterOptions& options,

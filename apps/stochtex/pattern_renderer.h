@@ -15,6 +15,7 @@ struct DeviceFlags {
     bool gpu = false;
     GpuView::Pipeline pipeline = GpuView::Pipeline::Fragment;
     GpuView::Derivatives derivatives = GpuView::Derivatives::Camera;
+    const CLI::Option* gpuOption = nullptr;  // the flag that sets gpu, which its errors name
 };
 // --gpu, --pipeline and (withDerivatives) --derivatives.
 void addDeviceFlags(CLI::App& cmd, DeviceFlags& flags, const std::string& gpuHelp, bool withDerivatives);

@@ -29,13 +29,13 @@ void registerScene(CLI::App& app) {
     addAnisoFlag(*cmd, args->options.aniso);
     addResponseFlags(*cmd, args->response);
     cmd->add_option("--tiling", args->tiling, "Example periods across the object's uv square");
-    cmd->add_option("--size", args->size, "Image size: N or W,H")->delimiter(',')->expected(1, 2);
-    cmd->callback([args, cmd] {
+    const CLI::Option* size =
+        cmd->add_option("--size", args->size, "Image size: N or W,H")->delimiter(',')->expected(1, 2);
+    cmd->callback([args, cmd, size] {
         applyResponseFlags(*cmd, args->response, args->options);
         refuseUnusedFilterFlags(*cmd, args->options);
         checkImageOutput(args->output);
-        const int w = args->size[0], h = args->size.size() > 1 ? args->size[1] : args->size[0];
-        if (w < 1 || h < 1 || w > 8192 || h > 8192) throw InputError("--size must be in [1, 8192] per side");
+        const auto [w, h] = sizeFlagValue(size, args->size, 8192);
         const FilterOptions& options = args->options;
         const Mesh mesh = makeObject(args->object);
         const PatternSpec spec = loadPatternSource(args->source, args->options);

@@ -8,9 +8,9 @@
 #include "common.h"
 #include "progress.h"
 #include "shadertoy_flags.h"
-#include "stochtex/image/image_io.h"
-#include "stochtex/gpu/shadertoy.h"
 #include "stochtex/analysis/sound_spectrum.h"
+#include "stochtex/gpu/shadertoy.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/report/wav.h"
 #include "stochtex/studies/frame_analysis.h"
 
@@ -27,33 +27,43 @@ void registerShadertoy(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("shadertoy", "Run a ShaderToy program (Common, Buffer A-D, Image) headless");
-    cmd->add_option("program", args->program, "A folder (image.glsl, common.glsl, buffer_a.glsl, ... or ShaderToy's "
-                                              "tab names; shadertoy.json), a manifest .json, or a shader exported "
-                                              "from ShaderToy (.json; docs/SHADERTOY.md)")->required();
-    cmd->add_option("--convert", args->convert, "Write the program as a folder (shadertoy.json and a .glsl file per "
-                                                "pass) instead of running it: a ShaderToy export made editable");
-    cmd->add_option("--media", args->media, "Where a ShaderToy export's textures are found by file name (default: "
-                                            "the export's folder; ShaderToy's noise textures are built in)");
+    cmd->add_option("program", args->program,
+                    "A folder (image.glsl, common.glsl, buffer_a.glsl, ... or ShaderToy's "
+                    "tab names; shadertoy.json), a manifest .json, or a shader exported "
+                    "from ShaderToy (.json; docs/SHADERTOY.md)")
+        ->required();
+    cmd->add_option("--convert", args->convert,
+                    "Write the program as a folder (shadertoy.json and a .glsl file per "
+                    "pass) instead of running it: a ShaderToy export made editable");
+    cmd->add_option("--media", args->media,
+                    "Where a ShaderToy export's textures are found by file name (default: "
+                    "the export's folder; ShaderToy's noise textures are built in)");
     cmd->add_option("-o,--output", args->output,
                     std::string("An image (the last frame, or with --sheet all frames; ") + kImageOutputFormats +
                         "), or the frames as " + kSequenceOutputHelp + "; with --analyse the report's folder");
-    cmd->add_option("--sound", args->sound, "Write the program's Sound pass (sound.glsl) as a WAV file, 16-bit stereo "
-                                            "at iSampleRate, and print its spectrum's peak");
-    cmd->add_option("--sound-seconds", args->soundSeconds, "Seconds of sound --sound renders (at most " + formatValue(kMaxSoundSeconds) + ", as ShaderToy plays)")
+    cmd->add_option("--sound", args->sound,
+                    "Write the program's Sound pass (sound.glsl) as a WAV file, 16-bit stereo "
+                    "at iSampleRate, and print its spectrum's peak");
+    cmd->add_option(
+           "--sound-seconds", args->soundSeconds,
+           "Seconds of sound --sound renders (at most " + formatValue(kMaxSoundSeconds) + ", as ShaderToy plays)")
         ->capture_default_str();
     addShadertoyFlags(*cmd, args->flags);
-    cmd->add_option("--frames", args->frames, "Frames rendered from frame 0 (iFrame 0 at --time); with --analyse, "
-                                              "the frames analysed from --first-frame");
+    cmd->add_option("--frames", args->frames,
+                    "Frames rendered from frame 0 (iFrame 0 at --time); with --analyse, "
+                    "the frames analysed from --first-frame");
     cmd->add_flag("--sheet", args->sheet, "An image output shows every frame, as a contact sheet (at most 64)");
-    cmd->add_option("--inspect", args->inspect, "PASS:X,Y: print the RGBA of a pass (image, buffer_a, ...) at pixel "
-                                                "(X, Y), y up, after the last frame");
+    cmd->add_option("--inspect", args->inspect,
+                    "PASS:X,Y: print the RGBA of a pass (image, buffer_a, ...) at pixel "
+                    "(X, Y), y up, after the last frame");
     addFrameAnalysisFlags(*cmd, args->analysis);
-    cmd->callback([args] {
+    cmd->callback([args, cmd] {
         const Args& a = *args;
         if (!a.convert.empty()) {
             if (!a.output.empty() || !a.inspect.empty() || !a.analysis.list.empty())
-                throw InputError("--convert: writes the program and runs nothing; run the folder it writes with -o, "
-                                 "--inspect or --analyse");
+                refuseOption(*cmd, "--convert",
+                             "writes the program and runs nothing; run the folder it writes with -o, --inspect or "
+                             "--analyse");
             const ShadertoySpec spec = loadShadertoy(a.program, a.media);
             const std::string manifest = convertShadertoy(spec, a.convert);
             std::printf("wrote %s and %zu pass file%s (%s)\n", manifest.c_str(),
@@ -62,16 +72,18 @@ void registerShadertoy(CLI::App& app) {
             return;
         }
         if (a.output.empty() && a.inspect.empty() && a.sound.empty())
-            throw InputError("-o/--output, --inspect, --sound or --convert is required");
+            throw InputError("nothing to do: give -o/--output, --inspect, --sound or --convert");
         if (!a.sound.empty()) {
-            if (!a.sound.ends_with(".wav")) throw InputError("--sound: writes a .wav file, got \"" + a.sound + "\"");
+            if (!a.sound.ends_with(".wav"))
+                refuseOption(*cmd, "--sound", "writes a .wav file, got \"" + a.sound + "\"");
             checkOutputFile(a.sound);
         }
-        if (a.analysis.list.empty() && a.flags.firstFrame != 0) throw InputError("--first-frame: has no effect without --analyse");
-        const Inspect inspect = parseInspect(a.inspect);
+        if (a.analysis.list.empty() && a.flags.firstFrame != 0)
+            refuseOption(*cmd, "--first-frame", "has no effect without --analyse");
+        const Inspect inspect = parseInspect(*cmd, a.inspect);
         const ShadertoySpec spec = loadShadertoy(a.program, a.media);
-        const ShadertoySettings settings = shadertoySettings(a.flags);
-        FrameOutputs outputs(a.analysis.list.empty() ? a.output : "", a.sheet, a.frames, settings);
+        const ShadertoySettings settings = shadertoySettings(*cmd, a.flags);
+        FrameOutputs outputs(*cmd, a.analysis.list.empty() ? a.output : "", a.sheet, a.frames, settings);
         const auto start = std::chrono::steady_clock::now();
         auto context = GlContext::headless();
         ShadertoyHost host(spec, *context, settings);
@@ -79,7 +91,7 @@ void registerShadertoy(CLI::App& app) {
         ProgressLine line("shadertoy");
         if (!a.analysis.list.empty()) {  // the studies' frames through the texture-source interface
             const ShadertoySource source(host);
-            FrameAnalysisOptions o = frameAnalysisOptions(a.analysis, settings, a.frames, a.flags.firstFrame);
+            FrameAnalysisOptions o = frameAnalysisOptions(*cmd, a.analysis, settings, a.frames, a.flags.firstFrame);
             o.sourceName = spec.name;
             const FrameAnalysisResult r = frameAnalysis(source, o, line.callback());  // validates before any frame
             line.finish();

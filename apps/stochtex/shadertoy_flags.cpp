@@ -4,11 +4,11 @@
 #include <cstdio>
 #include <regex>
 
-#include "stochtex/report/plot.h"
-#include "stochtex/image/image_io.h"
-#include "stochtex/report/page.h"
 #include "common.h"
 #include "stochtex/core/error.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/report/page.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex::cli {
 
@@ -24,46 +24,52 @@ void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& f) {
         ->expected(1, 2)
         ->default_str(std::to_string(f.size[0]) + "," + std::to_string(f.size[1]));
     cmd.add_option("--time", f.time, "iTime of frame 0, seconds")->capture_default_str();
-    cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate")->capture_default_str();
-    cmd.add_option("--mouse", f.mouse, "iMouse: X,Y (the button pressed there at frame 0 and held, with ShaderToy's "
-                                       "click semantics) or X,Y,CLICK_X,CLICK_Y (iMouse as given, every frame), "
-                                       "pixels, y up")
+    cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate")
+        ->capture_default_str();
+    cmd.add_option("--mouse", f.mouse,
+                   "iMouse: X,Y (the button pressed there at frame 0 and held, with ShaderToy's "
+                   "click semantics) or X,Y,CLICK_X,CLICK_Y (iMouse as given, every frame), "
+                   "pixels, y up")
         ->delimiter(',')
         ->expected(2, 4);
     cmd.add_option("--date", f.date, "iDate at iTime 0: YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS")->capture_default_str();
     cmd.add_option("--keys", f.keys, "Key codes held from frame 0 (JavaScript keyCode, e.g. 65 for A), comma-separated")
         ->delimiter(',');
-    cmd.add_option("--input", f.inputFile, "A timeline of key and mouse events at frames or times (JSON; "
-                                           "docs/SHADERTOY.md), replayed from frame 0");
-    cmd.add_option("--event", f.events, "One event: FRAME:keydown:CODE, FRAME:keyup:CODE, FRAME:mousedown:X,Y, "
-                                        "FRAME:mousemove:X,Y or FRAME:mouseup; FRAME a frame or a time (1.5s); "
-                                        "repeat the flag for more")
+    cmd.add_option("--input", f.inputFile,
+                   "A timeline of key and mouse events at frames or times (JSON; "
+                   "docs/SHADERTOY.md), replayed from frame 0");
+    cmd.add_option("--event", f.events,
+                   "One event: FRAME:keydown:CODE, FRAME:keyup:CODE, FRAME:mousedown:X,Y, "
+                   "FRAME:mousemove:X,Y or FRAME:mouseup; FRAME a frame or a time (1.5s); "
+                   "repeat the flag for more")
         ->take_all();
     cmd.add_option("--hw-performance", f.hwPerformance,
                    "HW_PERFORMANCE, which shaders test to pick their quality: 1 (ShaderToy on a desktop) or 0 (on a "
                    "phone)")
         ->capture_default_str();
-    cmd.add_option("--first-frame", f.firstFrame, "The frame a study starts at (the frames before it are rendered "
-                                                  "too: buffers with feedback need them); default 0");
+    cmd.add_option("--first-frame", f.firstFrame,
+                   "The frame a study starts at (the frames before it are rendered "
+                   "too: buffers with feedback need them); default 0");
 }
 
-ShadertoySettings shadertoySettings(const ShadertoyFlags& f) {
+ShadertoySettings shadertoySettings(const CLI::App& cmd, const ShadertoyFlags& f) {
     ShadertoySettings s;
     s.width = f.size[0];
     s.height = f.size.size() > 1 ? f.size[1] : f.size[0];
     s.startTime = f.time;
     s.fps = f.fps;
-    if (f.mouse.size() == 3) throw InputError("--mouse: give X,Y or X,Y,CLICK_X,CLICK_Y, got 3 numbers");
+    if (f.mouse.size() == 3) refuseOption(cmd, "--mouse", "give X,Y or X,Y,CLICK_X,CLICK_Y, got 3 numbers");
     if (f.mouse.size() == 4)
         for (size_t k = 0; k < 4; ++k) s.mouse[k] = f.mouse[k];
     const std::regex date(R"((\d{4})-(\d{2})-(\d{2})(?:T(\d{2}):(\d{2}):(\d{2}))?)");
     std::smatch m;
-    if (!std::regex_match(f.date, m, date)) throw InputError("--date: expected YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS, got \"" + f.date + "\"");
+    if (!std::regex_match(f.date, m, date))
+        refuseOption(cmd, "--date", "expected YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS, got \"" + f.date + "\"");
     for (int k = 0; k < 6; ++k) s.date[size_t(k)] = m[k + 1].matched ? std::stoi(m[k + 1].str()) : 0;
     s.keys = f.keys;
     s.hwPerformance = f.hwPerformance;
     if (f.firstFrame < 0 || f.firstFrame > 1000000)
-        throw InputError("--first-frame: must be in [0, 1000000], got " + std::to_string(f.firstFrame));
+        refuseOption(cmd, "--first-frame", "must be in [0, 1000000], got " + std::to_string(f.firstFrame));
     validateShadertoySettings(s);
     // The timeline: the --mouse press, the file's events, the --event ones; in order of frame (stable).
     if (f.mouse.size() == 2) s.inputs.push_back({0, ShadertoyInput::Kind::MouseDown, 0, f.mouse[0], f.mouse[1]});
@@ -78,12 +84,12 @@ ShadertoySettings shadertoySettings(const ShadertoyFlags& f) {
     return s;
 }
 
-Inspect parseInspect(const std::string& text) {
+Inspect parseInspect(const CLI::App& cmd, const std::string& text) {
     if (text.empty()) return {};
     const std::regex form(R"(([a-z_]+):(\d{1,5}),(\d{1,5}))");
     std::smatch m;
     if (!std::regex_match(text, m, form))
-        throw InputError("--inspect: expected PASS:X,Y (e.g. buffer_a:10,20), got \"" + text + "\"");
+        refuseOption(cmd, "--inspect", "expected PASS:X,Y (e.g. buffer_a:10,20), got \"" + text + "\"");
     return {m[1].str(), std::stoi(m[2].str()), std::stoi(m[3].str())};
 }
 
@@ -101,32 +107,37 @@ Image clampedFrame(const Image& frame) {
 
 namespace {
 
-void checkSheet(int frames, int width, int height) {
+void checkSheet(const CLI::App& cmd, int frames, int width, int height) {
     // sheet() draws on at most 16384 pixels a side; eight frames a row, their captions below.
     const int columns = std::min(frames, 8), rows = (frames + 7) / 8;
-    if (frames < 1 || frames > 64) throw InputError("--sheet: shows 1 to 64 frames, got " + std::to_string(frames));
+    if (frames < 1 || frames > 64) refuseOption(cmd, "--sheet", "shows 1 to 64 frames, got " + std::to_string(frames));
     if ((long long)columns * (width + 16) > 16000 || (long long)rows * (height + 64) > 16000)
-        throw InputError("--sheet: " + std::to_string(frames) + " frames of " + std::to_string(width) + "x" +
-                         std::to_string(height) + " make a sheet over 16000 pixels a side; use a smaller --size");
+        refuseOption(cmd, "--sheet",
+                     std::to_string(frames) + " frames of " + std::to_string(width) + "x" + std::to_string(height) +
+                         " make a sheet over 16000 pixels a side; use a smaller --size");
 }
 
 }  // namespace
 
-FrameOutputs::FrameOutputs(std::string output, bool sheet, int frames, const ShadertoySettings& settings)
-    : output_(std::move(output)), sheet_(sheet), image_(!output_.empty() && isSupportedImagePath(output_)),
+FrameOutputs::FrameOutputs(const CLI::App& cmd, std::string output, bool sheet, int frames,
+                           const ShadertoySettings& settings)
+    : output_(std::move(output)),
+      sheet_(sheet),
+      image_(!output_.empty() && isSupportedImagePath(output_)),
       settings_(settings) {
-    if (frames < 1 || frames > 1000000) throw InputError("--frames: must be in [1, 1000000], got " + std::to_string(frames));
-    if (sheet_ && !image_) throw InputError("--sheet: needs an image output");
+    if (frames < 1 || frames > 1000000)
+        refuseOption(cmd, "--frames", "must be in [1, 1000000], got " + std::to_string(frames));
+    if (sheet_ && !image_) refuseOption(cmd, "--sheet", "needs an image output");
     if (image_) checkImageOutput(output_);
     // Refused before any frame is rendered: an extension that is neither an
     // image nor a sequence's (a folder has none).
     if (!output_.empty() && !image_) try {
             sequenceFormat(output_);
         } catch (const InputError&) {
-            throw InputError("-o " + output_ + ": expected an image (" + kImageOutputFormats + ") or " +
-                             kSequenceOutputHelp);
+            refuseOption(cmd, "--output",
+                         output_ + ": expected an image (" + kImageOutputFormats + ") or " + kSequenceOutputHelp);
         }
-    if (sheet_) checkSheet(frames, settings.width, settings.height);
+    if (sheet_) checkSheet(cmd, frames, settings.width, settings.height);
 }
 
 ShadertoyFrameSink FrameOutputs::sink() {
@@ -173,17 +184,21 @@ std::string FrameOutputs::finish() {
 }
 
 void addFrameAnalysisFlags(CLI::App& cmd, FrameAnalysisFlags& f) {
-    cmd.add_option("--analyse", f.list, "Studies of the frames, comma-separated: spectrum (the first), flow, coherence, "
-                                        "flicker, statistics (over instances); -o is then the report's folder");
+    cmd.add_option("--analyse", f.list,
+                   "Studies of the frames, comma-separated: spectrum (the first), flow, coherence, "
+                   "flicker, statistics (over instances); -o is then the report's folder");
     f.instancesOption = cmd.add_option("--instances", f.instances,
                                        "statistics: instances 0..N-1 through the program's instance uniform")
                             ->capture_default_str();
-    cmd.add_option("--point", f.point, "statistics: the correlation's point X,Y in pixels from the top left "
-                                       "(default the centre)")->delimiter(',')->expected(2);
+    cmd.add_option("--point", f.point,
+                   "statistics: the correlation's point X,Y in pixels from the top left "
+                   "(default the centre)")
+        ->delimiter(',')
+        ->expected(2);
 }
 
-FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const ShadertoySettings& settings,
-                                          int frames, int firstFrame) {
+FrameAnalysisOptions frameAnalysisOptions(const CLI::App& cmd, const FrameAnalysisFlags& flags,
+                                          const ShadertoySettings& settings, int frames, int firstFrame) {
     FrameAnalysisOptions o;
     std::string rest = flags.list;
     while (!rest.empty()) {
@@ -191,14 +206,14 @@ FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const
         const std::string name = rest.substr(0, comma);
         const FrameAnalysis* a = findEnum(kFrameAnalysisNames, name);
         if (!a)
-            throw InputError("--analyse: unknown study \"" + name + "\" (expected " +
-                             canonicalNames(kFrameAnalysisNames, ", ") + ")");
+            refuseOption(cmd, "--analyse",
+                         "unknown study \"" + name + "\" (expected " + canonicalNames(kFrameAnalysisNames, ", ") + ")");
         o.analyses.push_back(*a);
         rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
     }
     const bool statistics = std::count(o.analyses.begin(), o.analyses.end(), FrameAnalysis::Statistics) > 0;
     refuseWithoutEffect(flags.instancesOption, statistics, "without statistics in --analyse");
-    if (!statistics && !flags.point.empty()) throw InputError("--point: has no effect without statistics in --analyse");
+    refuseWithoutEffect(cmd.get_option("--point"), statistics, "without statistics in --analyse");
     o.instances = flags.instances;
     if (!flags.point.empty()) o.pointX = flags.point[0], o.pointY = flags.point[1];
     o.region = SourceRegion::centred(settings.width, settings.height);

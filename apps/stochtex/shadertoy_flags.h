@@ -26,19 +26,19 @@ struct ShadertoyFlags {
     std::vector<int> keys;
     std::string inputFile;            // --input: a timeline of key and mouse events (gpu/shadertoy_input.h)
     std::vector<std::string> events;  // --event FRAME:EVENT[:VALUE], repeated
-    int firstFrame = 0;  // the first frame a study analyses
+    int firstFrame = 0;               // the first frame a study analyses
     int hwPerformance = ShadertoySettings{}.hwPerformance;
 };
 void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& flags);
 // The settings the flags give; InputError naming the flag when unusable.
-ShadertoySettings shadertoySettings(const ShadertoyFlags& flags);
+ShadertoySettings shadertoySettings(const CLI::App& cmd, const ShadertoyFlags& flags);
 
 struct Inspect {
     std::string pass;  // empty: nothing to inspect
     int x = 0, y = 0;
 };
 // "PASS:X,Y" (empty: none); InputError naming --inspect otherwise.
-Inspect parseInspect(const std::string& text);
+Inspect parseInspect(const CLI::App& cmd, const std::string& text);
 // Prints "PASS (X, Y) at iFrame N: r g b a".
 void printInspect(const ShadertoyHost& host, const Inspect& inspect);
 
@@ -50,7 +50,8 @@ Image clampedFrame(const Image& frame);
 // is created before the first frame.
 class FrameOutputs {
 public:
-    FrameOutputs(std::string output, bool sheet, int frames, const ShadertoySettings& settings);
+    // cmd: the command with --output, --frames and --sheet, which its errors name.
+    FrameOutputs(const CLI::App& cmd, std::string output, bool sheet, int frames, const ShadertoySettings& settings);
     ShadertoyFrameSink sink();
     // The frames the sink takes: every one for a sheet, a video or a
     // folder, the last for an image, none without an output.
@@ -79,8 +80,8 @@ void addFrameAnalysisFlags(CLI::App& cmd, FrameAnalysisFlags& flags);
 // the window; InputError naming the flag: an unknown study, --instances or
 // --point without statistics (a program without an instance uniform is
 // refused by the study itself, ShadertoySource::checkInstances).
-FrameAnalysisOptions frameAnalysisOptions(const FrameAnalysisFlags& flags, const ShadertoySettings& settings,
-                                          int frames, int firstFrame);
+FrameAnalysisOptions frameAnalysisOptions(const CLI::App& cmd, const FrameAnalysisFlags& flags,
+                                          const ShadertoySettings& settings, int frames, int firstFrame);
 // The report: figures, CSV tables and index.html in dir.
 
 }  // namespace stochtex::cli

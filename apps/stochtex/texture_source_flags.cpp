@@ -21,13 +21,14 @@ void addShadertoySource(CLI::App& cmd, const SourceStudy& study) {
         ShadertoyFlags flags;
     };
     auto args = std::make_shared<Args>();
-    auto* st = cmd.add_subcommand("shadertoy", "A ShaderToy program's Image pass (a folder or manifest, docs/SHADERTOY.md); "
-                                               "the window is centred in the frame");
+    auto* st = cmd.add_subcommand("shadertoy",
+                                  "A ShaderToy program's Image pass (a folder or manifest, docs/SHADERTOY.md); "
+                                  "the window is centred in the frame");
     st->add_option("program", args->program, "The program's folder or manifest")->required();
     addShadertoyFlags(*st, args->flags);
-    st->callback([args, study] {
+    st->callback([args, study, st] {
         const ShadertoySpec spec = loadShadertoy(args->program);
-        const ShadertoySettings settings = shadertoySettings(args->flags);
+        const ShadertoySettings settings = shadertoySettings(*st, args->flags);
         auto context = GlContext::headless();
         ShadertoyHost host(spec, *context, settings);
         const ShadertoySource source(host);
@@ -58,8 +59,9 @@ void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
     };
     auto p = std::make_shared<PatternArgs>();
     p->options.use(parseFilter("none"));
-    auto* pattern = cmd.add_subcommand("pattern", "A pattern seen in the zoom view; instance i moves the window "
-                                                  "(another draw of the tile offsets)");
+    auto* pattern = cmd.add_subcommand("pattern",
+                                       "A pattern seen in the zoom view; instance i moves the window "
+                                       "(another draw of the tile offsets)");
     addPatternSource(*pattern, p->source);
     addViewFlags(*pattern, p->view);
     addFilterFlag(*pattern, p->options, "none | paper | smooth | exact | reference");
@@ -74,13 +76,14 @@ void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
     });
 
     auto zoom = std::make_shared<ZoomFlags>();
-    auto* z = cmd.add_subcommand("zoom", "The stationary zoom texture (thesis eq. 2.1); instance i = white-noise "
-                                         "lattice i");
+    auto* z = cmd.add_subcommand("zoom",
+                                 "The stationary zoom texture (thesis eq. 2.1); instance i = white-noise "
+                                 "lattice i");
     addZoomFlags(*z, *zoom);
     z->callback([zoom, study] {
         const ZoomSource source(makeZoomParams(*zoom), makeZoomBase(*zoom));
-        study(source, {"zoom texture, n = " + std::to_string(source.params().layers), false, 0, 0, 0,
-                       Transfer::Linear, source.params().time});
+        study(source, {"zoom texture, n = " + std::to_string(source.params().layers), false, 0, 0, 0, Transfer::Linear,
+                       source.params().time});
     });
 
     auto marble = std::make_shared<MarbleParams>();

@@ -23,25 +23,29 @@ void registerView(CLI::App& app) {
         bool noPanel = false;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("view", "The workbench window (GLSL): edit a pattern, graph or ShaderToy program "
-                                           "live, watch its spectrum, flow or correlation; F1 in the window lists the keys");
+    auto* cmd = app.add_subcommand("view",
+                                   "The workbench window (GLSL): edit a pattern, graph or ShaderToy program "
+                                   "live, watch its spectrum, flow or correlation; F1 in the window lists the keys");
     WorkbenchOptions& w = args->window;
     addPatternSource(*cmd, args->source);
     // The window edits and saves a file, so it reads files only (no inline JSON).
-    cmd->get_option("pattern")->description("A pattern or texture graph: its JSON file (docs/PATTERNS.md, docs/GRAPHS.md)");
+    cmd->get_option("pattern")->description(
+        "A pattern or texture graph: its JSON file (docs/PATTERNS.md, docs/GRAPHS.md)");
     cmd->add_option("--shadertoy", args->shadertoy, "A ShaderToy program: its folder or manifest (docs/SHADERTOY.md)");
     addFilterFlag(*cmd, w.filter, "Starting mode: none | paper | smooth", gpuFilterNames());
     addCameraFlags(*cmd, w.camera, false);
     // One flag for where the pattern is seen: the window's views extend the
     // cameras' (zoom, plane) with the 3D objects.
     cmd->remove_option(cmd->get_option("--view"));
-    addEnumFlag(*cmd, "--view", w.view, kWorkbenchViewNames, "view",
-                "Where the pattern is seen: zoom (flat) | plane (perspective ground plane) | sphere | torus (V cycles)");
+    addEnumFlag(
+        *cmd, "--view", w.view, kWorkbenchViewNames, "view",
+        "Where the pattern is seen: zoom (flat) | plane (perspective ground plane) | sphere | torus (V cycles)");
     cmd->add_option("--scale", w.camera.view.scale, "Starting scale (texels per pixel)");
     addAnisoFlag(*cmd, w.filter.aniso);
     addResponseFlags(*cmd, args->response);
     cmd->add_option("--size", args->size, "Picture area: N or W,H (the panel adds 380 pixels at the left)")
-        ->delimiter(',')->expected(1, 2);
+        ->delimiter(',')
+        ->expected(1, 2);
     addEnumFlag(*cmd, "--mode", w.mode, kWorkbenchModeNames, "mode", "What the picture shows (M cycles)");
     addEnumFlag(*cmd, "--analysis", w.analysis, kLiveAnalysisNames, "analysis", "The live analysis (A cycles)");
     cmd->add_option("--fps", w.shadertoy.fps,
@@ -59,7 +63,7 @@ void registerView(CLI::App& app) {
         o.camera.view.width = args->size[0];
         o.camera.view.height = args->size.size() > 1 ? args->size[1] : args->size[0];
         o.panel = !args->noPanel;
-        if (!gpuHasSource(o.filter.source)) throw InputError("--filter: the window shows none, paper or smooth");
+        if (!gpuHasSource(o.filter.source)) refuseOption(*cmd, "--filter", "the window shows none, paper or smooth");
         validateCamera(o.camera);
         o.camera.kind = o.view == WorkbenchView::Plane ? Camera::Kind::Plane : Camera::Kind::Zoom;
         if (!args->script.empty()) o.script = parseWorkbenchScript(readJsonFile(args->script), args->script);
@@ -67,13 +71,14 @@ void registerView(CLI::App& app) {
             throw InputError("pattern: the window edits and saves a file, so it takes a JSON file, not inline JSON");
         const bool program = !args->shadertoy.empty();
         if (program && (!args->source.file.empty() || !args->source.preset.empty()))
-            throw InputError("--shadertoy: give a program or a pattern, not both");
-        WorkbenchDocument doc = program                       ? WorkbenchDocument::shadertoy(args->shadertoy)
+            refuseOption(*cmd, "--shadertoy", "give a program or a pattern, not both");
+        WorkbenchDocument doc = program                      ? WorkbenchDocument::shadertoy(args->shadertoy)
                                 : !args->source.file.empty() ? WorkbenchDocument::patternFile(args->source.file)
-                                : !args->source.preset.empty() ? WorkbenchDocument::preset(args->source.preset)
-                                                                : throw InputError("give a pattern file, --preset NAME or --shadertoy PROGRAM");
+                                : !args->source.preset.empty()
+                                    ? WorkbenchDocument::preset(args->source.preset)
+                                    : throw InputError("give a pattern file, --preset NAME or --shadertoy PROGRAM");
         if (args->source.seed) {
-            if (program) throw InputError("--seed: a ShaderToy program has no pattern seed");
+            if (program) refuseOption(*cmd, "--seed", "a ShaderToy program has no pattern seed");
             doc.set("/seed", *args->source.seed);
         }
         const int frames = runWorkbench(std::move(doc), o);

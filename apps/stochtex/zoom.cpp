@@ -28,18 +28,20 @@ void registerZoom(CLI::App& app) {
                                     "leaves the frames written so far), or one file: ") +
                             kSequenceOutputHelp);
     cmd->add_option("--frames", args->frames, "Number of frames")->check(CLI::Range(1, 100000));
-    cmd->add_option("--fps", args->fps, "Frames per second (time step 1/fps × speed)");
-    cmd->add_option("--speed", args->speed, "Time units t per second of video");
-    cmd->add_option("--size", args->size, "Frame size: N or W,H")->delimiter(',')->expected(1, 2);
-    cmd->add_flag("--no-video", args->noVideo, "Write PNG frames only (into a folder)");
+    const CLI::Option* fps = cmd->add_option("--fps", args->fps, "Frames per second (time step 1/fps × speed)");
+    const CLI::Option* speed = cmd->add_option("--speed", args->speed, "Time units t per second of video");
+    const CLI::Option* size =
+        cmd->add_option("--size", args->size, "Frame size: N or W,H")->delimiter(',')->expected(1, 2);
+    const CLI::Option* noVideo = cmd->add_flag("--no-video", args->noVideo, "Write PNG frames only (into a folder)");
     addZoomFlags(*cmd, args->zoom);
     addThreadsFlag(*cmd, args->threads);
-    cmd->callback([args] {
-        if (!(args->fps > 0) || !std::isfinite(args->fps) || args->fps > 1000) throw InputError("--fps must be in (0, 1000]");
-        if (!std::isfinite(args->speed)) throw InputError("--speed must be finite");
-        const int w = args->size[0], h = args->size.size() > 1 ? args->size[1] : args->size[0];
-        if (w < 1 || h < 1 || w > 8192 || h > 8192) throw InputError("--size must be in [1, 8192] per side");
-        if (args->noVideo && isVideoPath(args->dir)) throw InputError("--no-video: -o " + args->dir + " is one file of frames, not a folder");
+    cmd->callback([args, cmd, fps, speed, size, noVideo] {
+        if (!(args->fps > 0) || !std::isfinite(args->fps) || args->fps > 1000)
+            refuseOption(fps, "fps must be in (0, 1000], got " + formatValue(args->fps));
+        if (!std::isfinite(args->speed)) refuseOption(speed, "speed must be finite, got " + formatValue(args->speed));
+        const auto [w, h] = sizeFlagValue(size, args->size, 8192);
+        if (args->noVideo && isVideoPath(args->dir))
+            refuseOption(noVideo, "-o " + args->dir + " is one file of frames, not a folder");
         const ZoomSource source(makeZoomParams(args->zoom), makeZoomBase(args->zoom));
         const double t0 = source.params().time;
         const auto frameTime = [&](int k) { return t0 + k / args->fps * args->speed; };
@@ -53,10 +55,10 @@ void registerZoom(CLI::App& app) {
             // Shortest round-trip digits: 1e9 + 1/60 must not print as 1e+09.
             char t[32];
             *std::to_chars(t, t + sizeof t - 1, last.time).ptr = '\0';
-            throw InputError(
-                "--time, --speed, --fps, --frames: the last frame would be at t = --time + (frames − 1) / "
-                "fps × speed = " +
-                std::string(t) + ", out of range: " + e.what());
+            refuseOption(cmd->get_option("--time"),
+                         "with --speed, --fps and --frames, the last frame would be at t = --time + (frames − 1) / "
+                         "fps × speed = " +
+                             std::string(t) + ", out of range: " + e.what());
         }
         ThreadLimit limit(args->threads);
         // Zoom-texture values are data (thesis eq. 2.1), written as they are.

@@ -390,7 +390,7 @@ case_shadertoy() {
   printf '{"passes": {"image": {"code": "broken.glsl"}}}' >"$work/broken.json"
   cp "$work/st/broken.glsl" "$work/broken.glsl"
   expect_bad "shadertoy compile error" "$out/stb.png" "broken.glsl:2" -- "$bin" shadertoy "$work/broken.json" -o "$out/stb.png"
-  expect_bad "shadertoy no output" "" "-o/--output, --inspect, --sound or --convert is required" -- "$bin" shadertoy "$work/st"
+  expect_bad "shadertoy no output" "" "nothing to do: give -o/--output, --inspect, --sound or --convert" -- "$bin" shadertoy "$work/st"
   expect_bad "shadertoy inspect pass" "" "--inspect: pass \"buffer_c\" names no pass of counter" -- "$bin" shadertoy "$work/st" --inspect buffer_c:1,1
   expect_ok "spectrum of a shadertoy frame" "$out/sts/index.html" -- "$bin" spectrum -o "$out/sts" --size 64 shadertoy "$src/data/shadertoy/swirl" --size 96,80 --first-frame 120
   [ -s "$out/sts/spectrum.csv" ] || fail "spectrum of a shadertoy frame: spectrum.csv not written"
@@ -833,7 +833,7 @@ case_bad_gpu_flags() {
 case_bad_export_flags() {
   expect_bad "scene unknown object" "$out/sbad.png" '--object: object must be plane, sphere or torus, got "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
   expect_bad "bake unfiltered" "$out/bbad" "--filter: source must be estimators to export (filter paper or smooth), got point" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
-  expect_bad "bake bad precision" "$out/bbad2" '--table-precision: unknown "double"' -- "$bin" bake --preset weld --table-precision double -o "$out/bbad2"
+  expect_bad "bake bad precision" "$out/bbad2" '--table-precision: tablePrecision must be half or float, got "double"' -- "$bin" bake --preset weld --table-precision double -o "$out/bbad2"
 }
 
 # --- hostile JSON and flag values: refused up front, naming the input ---
