@@ -883,6 +883,14 @@ case_hostile_graph() {
     expect_bad "$n transforms on the GPU" "$out/t${n}g.png" "$message" -- timeout 20 "$bin" render "$work/t$n.json" --size 32 --filter smooth --gpu -o "$out/t${n}g.png"
     expect_bad "$n transforms baked" "$out/tb$n" "$message" -- timeout 20 "$bin" bake "$work/t$n.json" -o "$out/tb$n"
   done
+  # A noise near 100 squared eight times (1e4, then 1e8 past half float, 1e32 past float): per pixel (a white image, exit 0, before the ops' range check).
+  local nodes='"n": {"type": "spectral_noise", "size": 16, "components": [{"shape": "ring", "frequency": 4, "bandwidth": 1}]}, "a": {"type": "affine", "input": "n", "scale": 1, "offset": 100}' previous=a i
+  for i in 1 2 3 4 5 6 7 8; do nodes="$nodes, \"s$i\": {\"type\": \"square\", \"input\": \"$previous\"}"; previous=s$i; done
+  echo "{\"name\": \"squares\", \"size\": 16, \"nodes\": {$nodes, \"c\": {\"type\": \"colormap\", \"x\": \"$previous\", \"y\": \"n\", \"colormap\": {\"type\": \"gaussian\"}}}, \"output\": \"c\"}" >"$work/squares.json"
+  for f in none smooth; do
+    expect_bad "squares past float, filter $f" "$out/sq$f.png" 'squares: node "s2" (square): its values may reach ' -- timeout 20 "$bin" render "$work/squares.json" --size 16 --filter "$f" -o "$out/sq$f.png"
+  done
+  expect_bad "squares past float on the GPU" "$out/sqg.png" 'squares: node "s2" (square)' -- timeout 20 "$bin" render "$work/squares.json" --size 16 --gpu -o "$out/sqg.png"
 }
 
 # A #line near 2^31: the driver's log numbers lines past an int ("internal error: stoi", exit 1).
