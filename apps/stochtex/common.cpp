@@ -227,8 +227,7 @@ void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterO
 
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso) {
     aniso = kDefaultAniso;
-    return cmd.add_option("--aniso", aniso, "Anisotropic probes K (1 = isotropic trilinear, up to 16)")
-        ->capture_default_str();
+    return addParameterOption(cmd, anisoParam(), aniso);
 }
 
 void refuseUnusedFilterFlags(const CLI::App& cmd, const FilterOptions& options) {
@@ -259,10 +258,8 @@ void refuseUnusedFilterFlags(const CLI::App& cmd, const std::vector<FilterOption
 void addCameraFlags(CLI::App& cmd, Camera& camera, bool withFov) {
     addEnumFlag(cmd, "--view", camera.kind, Camera::kKindNames, "view",
                 "zoom (flat, --scale texels per pixel) | plane (perspective ground plane)");
-    cmd.add_option("--tilt", camera.tiltDeg, "Plane view: tilt from looking straight down, degrees [0, 89]")
-        ->capture_default_str();
-    if (withFov)
-        cmd.add_option("--fov", camera.fovDeg, "Plane view: vertical field of view, degrees")->capture_default_str();
+    addParameterOption(cmd, cameraTiltParam(), camera.tiltDeg);
+    if (withFov) addParameterOption(cmd, cameraFovParam(), camera.fovDeg);
 }
 
 void refuseUnusedCameraFlags(const CLI::App& cmd, const Camera& camera) {
@@ -285,12 +282,8 @@ namespace {
 constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"filter", "--filter"},
     {"source", "--filter"},
-    {"aniso", "--aniso"},
     {"response", "--response"},
-    {"referenceMaxSamples", "--reference-samples"},
     {"referenceTolerance", "--reference-tolerance"},
-    {"tiltDeg", "--tilt"},
-    {"fovDeg", "--fov"},
     {"size", "--size"},
     {"scale", "--scale"},
     {"offset", "--offset"},

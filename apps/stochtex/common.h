@@ -16,6 +16,7 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
@@ -168,13 +169,7 @@ void addResponseFlags(CLI::App& cmd, ResponseFlags& flags);
 // axes); --no-covariance without the lean response is refused.
 void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterOptions& options);
 
-// The default of --aniso in every command. 8 probes: an isotropic footprint
-// (the zoom view) takes one probe whatever K is, so only oblique views pay,
-// and they need it (with K = 1, `render --view plane --filter smooth` blurs
-// the distance, as a texture without anisotropic filtering does); 8 is also
-// what engines commonly set for anisotropic filtering.
-constexpr int kDefaultAniso = 8;
-// --aniso K, 1..16 (the library checks the range), set to kDefaultAniso.
+// --aniso K (anisoParam(): 1..16, the library checks the range), set to its default, 8.
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso);
 // The checks of the filter-dependent flags: --aniso (and --estimator, --pack8:
 // the estimators' only) need paper or smooth, --reference-samples needs
@@ -212,6 +207,16 @@ std::string explainParseError(const CLI::App& app, const std::vector<std::string
 // extent, "plotSize", is --size in `correlation` and --plot-size in
 // `analyze`), the command's own binding names the flag. Returns option.
 CLI::Option* bindParameter(const CLI::App& cmd, CLI::Option* option, const std::string& parameter);
+
+// The option a library parameter's entry describes (ParamInfo: the flag, the
+// help and the range it shows), bound to the parameter so that the
+// library's errors about it name the flag; its default shown is `value`'s.
+template <class T>
+CLI::Option* addParameterOption(CLI::App& cmd, const ParamInfo& p, T& value) {
+    const std::string range = "[" + formatValue(p.min) + ", " + formatValue(p.max) + "]";
+    CLI::Option* option = cmd.add_option("--" + p.flag, value, p.description + ", in " + range);
+    return bindParameter(cmd, option->capture_default_str(), p.name);
+}
 
 // An InputError as the user reads it: a library parameter error is prefixed
 // with the flag that sets the parameter ("--aniso: aniso must be in [1, 16],

@@ -24,7 +24,8 @@ void registerRender(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     args->options.use(parseFilter("none"));  // render shows S itself unless asked
-    auto* cmd = app.add_subcommand("render", "Render a pattern to PNG, EXR, JPEG or TIFF, unfiltered, filtered or as the reference");
+    auto* cmd = app.add_subcommand(
+        "render", "Render a pattern to PNG, EXR, JPEG or TIFF, unfiltered, filtered or as the reference");
     addPatternSource(*cmd, args->source);
     addViewFlags(*cmd, args->view);
     addOutputImageFlag(*cmd, args->output);
@@ -38,9 +39,7 @@ void registerRender(CLI::App& app) {
     addEnumFlag(*cmd, "--estimator", args->options.estimator, kVarianceEstimatorNames, "estimator",
                 "Variance estimator: paper | deliot-heitz (one variance per LOD)");
     addCameraFlags(*cmd, args->camera);
-    cmd->add_option("--reference-samples", args->options.referenceMaxSamples,
-                    "Max samples per axis and pixel for --filter reference/exact (n = clamp(2·extent, 8, this))")
-        ->capture_default_str();
+    addParameterOption(*cmd, referenceMaxSamplesParam(), args->options.referenceMaxSamples);
     cmd->add_flag("--pack8", args->options.pack8,
                   "Store the mean/variance pyramids in 8 bits (paper §5: RGBA8 = E_x, E_y, 16V_x, 16V_y)");
     const CLI::Option* bits = addBitsFlag(*cmd, args->bits);

@@ -84,8 +84,8 @@ void addFigure12Flags(CLI::App& sub, ReproduceArgs& a) {
                                  "Width of the global view (height: 5/8 of it)")
         ->default_str(std::to_string(f.width));
     sub.add_option("--reference-samples", f.referenceSamples, "Max reference samples per axis")->capture_default_str();
-    sub.add_option("--tilt", f.tiltDeg, "Camera tilt from straight down, degrees")->capture_default_str();
-    sub.add_option("--aniso", f.aniso, "Max anisotropic probes K")->capture_default_str();
+    addParameterOption(sub, cameraTiltParam(), f.tiltDeg);
+    addParameterOption(sub, anisoParam(), f.aniso);
     sub.add_option("--roughness", a.roughness, "Base Beckmann roughness (default: the preset's)");
 }
 

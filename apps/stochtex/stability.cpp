@@ -25,9 +25,10 @@ void registerStability(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     args->options.referenceMaxSamples = 32;  // a sequence of references: fewer samples than a still
-    auto* cmd = app.add_subcommand("stability",
-                                   "Zoom-out sequence per filter mode: error flicker (the change of frame − S̄ from frame "
-                                   "to frame, zoom undone), accuracy and image change");
+    auto* cmd =
+        app.add_subcommand("stability",
+                           "Zoom-out sequence per filter mode: error flicker (the change of frame − S̄ from frame "
+                           "to frame, zoom undone), accuracy and image change");
     addPatternSource(*cmd, args->source);
     addOutputFolderFlag(*cmd, args->dir, "Output folder for stability.csv (and frames)");
     cmd->add_option("--filters", args->filters, "Filter modes to compare")
@@ -40,8 +41,7 @@ void registerStability(CLI::App& app) {
     cmd->add_option("--from", args->study.from, "First scale (texels per pixel)");
     cmd->add_option("--to", args->study.to, "Last scale");
     addAnisoFlag(*cmd, args->options.aniso);
-    cmd->add_option("--reference-samples", args->options.referenceMaxSamples, "Max samples per axis for the reference")
-        ->capture_default_str();
+    addParameterOption(*cmd, referenceMaxSamplesParam(), args->options.referenceMaxSamples);
     cmd->add_option("--truth-samples", args->study.truthSamples,
                     "Max samples per axis of the ground truth S̄ that errors are measured against")
         ->capture_default_str();

@@ -791,6 +791,10 @@ case_bad_render_flags() {
   expect_bad "aniso zero" "$out/bad19.png" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
   expect_bad "aniso absurd" "$out/bad20.png" "--aniso: aniso must be in [1, 16], got 1000" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
   expect_bad "tilt" "$out/bad21.png" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95
+  # One entry (pattern/camera.h cameraTiltParam) gives every command's --tilt its range, help and error prefix.
+  expect_bad "figure12 tilt" "$out/bad21f" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" reproduce figure12 --tilt 95 -o "$out/bad21f"
+  expect_bad "figure12 aniso" "$out/bad21g" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" reproduce figure12 --aniso 0 -o "$out/bad21g"
+  "$bin" render --help | grep -q -- "--tilt FLOAT=60 .*degrees, in \[0, 89\]" || fail "render --help does not show --tilt's range from its entry"
   expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be a number in [1e-6, 1e6], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
   expect_bad "bad view" "$out/bad23.png" '--view: view must be zoom or plane, got "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
   expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper or deliot-heitz, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh

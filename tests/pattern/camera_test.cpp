@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "stochtex/pattern/camera.h"
+#include "stochtex/pattern/filter_options.h"
+#include "stochtex/pattern/param_info.h"
 #include "test_util.h"
 
 namespace stochtex {
@@ -40,7 +42,8 @@ TEST(Camera, PlaneJacobianIsTheDerivativeOfItsUv) {
                         !c.footprint(px, py + 1, w, uy, vy, jy))
                         continue;
                     if (std::abs(jy.dvdy - j0.dvdy) > 0.05 * j0.dvdy) continue;
-                    const double norm = std::sqrt(j0.dudx * j0.dudx + j0.dvdx * j0.dvdx + j0.dudy * j0.dudy + j0.dvdy * j0.dvdy);
+                    const double norm =
+                        std::sqrt(j0.dudx * j0.dudx + j0.dvdx * j0.dvdx + j0.dudy * j0.dudy + j0.dvdy * j0.dvdy);
                     EXPECT_NEAR(ux - u0, 0.5 * (j0.dudx + jx.dudx), 1e-3 * norm);
                     EXPECT_NEAR(vx - v0, 0.5 * (j0.dvdx + jx.dvdx), 1e-3 * norm);
                     EXPECT_NEAR(uy - u0, 0.5 * (j0.dudy + jy.dudy), 1e-3 * norm);
@@ -86,6 +89,34 @@ TEST(Camera, PlaneSkyAboveTheHorizonAndStretchedFootprintsBelow) {
     EXPECT_GT(lastGround, 10);  // the horizon is well inside the image
     ASSERT_TRUE(c.footprint(100, lastGround + 5, 256, u, v, j));
     EXPECT_GT(j.dvdy / j.dudx, 10 * nearStretch);
+}
+
+// The tilt and the field of view are described once (ParamInfo): the range
+// validateCamera checks is the entry's, and the entry names the CLI's flag.
+TEST(Camera, TheParameterEntriesAreTheRangesChecked) {
+    EXPECT_EQ(cameraTiltParam().name, "tiltDeg");
+    EXPECT_EQ(cameraTiltParam().flag, "tilt");
+    EXPECT_EQ(cameraFovParam().flag, "fov");
+    EXPECT_EQ(cameraTiltParam().fallback.get<double>(), Camera{}.tiltDeg);
+    for (const ParamInfo* p : {&cameraTiltParam(), &cameraFovParam()}) {
+        const bool tilt = p == &cameraTiltParam();
+        for (const double v :
+             {p->min, p->max, std::nextafter(p->min, -1e9), std::nextafter(p->max, 1e9), std::nan("")}) {
+            Camera c = plane(tilt ? v : 30, tilt ? 60 : v, 1.0);
+            const bool inside = v >= p->min && v <= p->max;
+            if (inside) {
+                EXPECT_NO_THROW(validateCamera(c)) << p->name << " " << v;
+            } else {
+                const InputError e = test::inputErrorOf([&] { validateCamera(c); });
+                EXPECT_EQ(e.parameter(), p->name) << v;
+            }
+        }
+    }
+    const InputError e = test::inputErrorOf([] { checkInteger(anisoParam(), 17); });
+    EXPECT_EQ(e.parameter(), "aniso");
+    EXPECT_STREQ(e.what(), "aniso must be in [1, 16], got 17");
+    EXPECT_EQ(anisoParam().flag, "aniso");
+    EXPECT_EQ(referenceMaxSamplesParam().flag, "reference-samples");
 }
 
 TEST(Camera, ErrorsNameTheParameterAndTheValue) {

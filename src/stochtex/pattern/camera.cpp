@@ -5,6 +5,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/kernel/camera.h"
+#include "stochtex/pattern/param_info.h"
 
 namespace stochtex {
 
@@ -23,10 +24,10 @@ std::array<float, 3> Camera::viewDirection(int px, int py) const {
 
 bool Camera::planeFootprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const {
     const double t = tiltDeg * std::numbers::pi / 180.0;
-    const kernel::PlaneRay r = kernel::planeRay(
-        kernel::vec2(float(px) + 0.5f, float(py) + 0.5f), kernel::vec2(float(view.width), float(view.height)),
-        float(view.scale), float(std::tan(0.5 * fovDeg * std::numbers::pi / 180.0)), float(std::sin(t)),
-        float(std::cos(t)));
+    const kernel::PlaneRay r = kernel::planeRay(kernel::vec2(float(px) + 0.5f, float(py) + 0.5f),
+                                                kernel::vec2(float(view.width), float(view.height)), float(view.scale),
+                                                float(std::tan(0.5 * fovDeg * std::numbers::pi / 180.0)),
+                                                float(std::sin(t)), float(std::cos(t)));
     if (r.sky) return false;
     const kernel::coord2 centre = kernel::planeCentreTexel(kernel::coord2(view.width, view.height),
                                                            kernel::coord2(view.offsetU, view.offsetV), view.scale);
@@ -40,13 +41,39 @@ bool Camera::planeFootprint(int px, int py, int exampleSize, double& u, double& 
     return true;
 }
 
+const ParamInfo& cameraTiltParam() {
+    static const ParamInfo p{"tiltDeg",
+                             ParamType::Number,
+                             "Plane view: tilt from looking straight down, degrees",
+                             Camera{}.tiltDeg,
+                             0,
+                             89,
+                             nullptr,
+                             {},
+                             std::nan(""),
+                             "tilt"};
+    return p;
+}
+
+const ParamInfo& cameraFovParam() {
+    static const ParamInfo p{"fovDeg",
+                             ParamType::Number,
+                             "Plane view: vertical field of view, degrees",
+                             Camera{}.fovDeg,
+                             1,
+                             150,
+                             nullptr,
+                             {},
+                             std::nan(""),
+                             "fov"};
+    return p;
+}
+
 void validateCamera(const Camera& c) {
     validateView(c.view);
     if (c.kind == Camera::Kind::Plane) {
-        if (!std::isfinite(c.tiltDeg) || c.tiltDeg < 0 || c.tiltDeg > 89)
-            throw InputError::parameter("tiltDeg", "must be in [0, 89] degrees, got " + formatValue(c.tiltDeg));
-        if (!std::isfinite(c.fovDeg) || c.fovDeg < 1 || c.fovDeg > 150)
-            throw InputError::parameter("fovDeg", "must be in [1, 150] degrees, got " + formatValue(c.fovDeg));
+        checkNumber(cameraTiltParam(), c.tiltDeg, " degrees");
+        checkNumber(cameraFovParam(), c.fovDeg, " degrees");
     }
 }
 

@@ -12,6 +12,7 @@
 //           exact derivative of the ray–plane intersection (camera.cpp).
 //           Pixels whose ray misses the plane are "sky".
 #include <array>
+#include <string>
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint.h"
@@ -19,13 +20,15 @@
 
 namespace stochtex {
 
+struct ParamInfo;
+
 struct Camera {
     enum class Kind { Zoom, Plane };
     static inline const EnumNames<Kind> kKindNames{{"zoom", Kind::Zoom}, {"plane", Kind::Plane}};
     Kind kind = Kind::Zoom;
-    View view;             // size, scale (texels per pixel), offset (texels)
-    double tiltDeg = 60;   // plane only, in [0, 89]
-    double fovDeg = 60;    // plane only
+    View view;            // size, scale (texels per pixel), offset (texels)
+    double tiltDeg = 60;  // plane only, in [0, 89]
+    double fovDeg = 60;   // plane only
 
     // Returns false for a sky pixel. exampleSize = W of the pattern.
     bool footprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const {
@@ -48,6 +51,10 @@ private:
     bool planeFootprint(int px, int py, int exampleSize, double& u, double& v, Jacobian& j) const;
 };
 
+// The plane view's tilt and field of view, each described once: the range
+// validateCamera checks, the flag and help the CLI sets it by.
+const ParamInfo& cameraTiltParam();
+const ParamInfo& cameraFovParam();
 // InputError naming the parameter (tiltDeg, fovDeg, the view's) if the camera is unusable.
 void validateCamera(const Camera& c);
 

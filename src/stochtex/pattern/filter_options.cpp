@@ -1,16 +1,44 @@
 #include "stochtex/pattern/filter_options.h"
 
+#include <cmath>
+
 #include "stochtex/core/error.h"
+#include "stochtex/pattern/param_info.h"
 
 namespace stochtex {
 
+const ParamInfo& anisoParam() {
+    static const ParamInfo p{"aniso",
+                             ParamType::Integer,
+                             "Anisotropic probes K (1 = isotropic trilinear)",
+                             kDefaultAniso,
+                             1,
+                             kMaxAnisotropy,
+                             nullptr,
+                             {},
+                             std::nan(""),
+                             "aniso"};
+    return p;
+}
+
+const ParamInfo& referenceMaxSamplesParam() {
+    static const ParamInfo p{
+        "referenceMaxSamples",
+        ParamType::Integer,
+        "Max samples per axis and pixel of the exact and reference filters (n = clamp(2·extent, 8, this))",
+        FilterOptions{}.referenceMaxSamples,
+        1,
+        4096,
+        nullptr,
+        {},
+        std::nan(""),
+        "reference-samples"};
+    return p;
+}
+
 void validateFilterOptions(const FilterOptions& options) {
-    if (options.aniso < 1 || options.aniso > kMaxAnisotropy)
-        throw InputError::parameter("aniso", "must be in [1, " + std::to_string(kMaxAnisotropy) + "], got " +
-                                                 std::to_string(options.aniso));
-    if (options.referenceMaxSamples < 1 || options.referenceMaxSamples > 4096)
-        throw InputError::parameter("referenceMaxSamples",
-                                    "must be in [1, 4096], got " + std::to_string(options.referenceMaxSamples));
+    checkInteger(anisoParam(), options.aniso);
+    checkInteger(referenceMaxSamplesParam(), options.referenceMaxSamples);
     if (options.referenceMinSamples < 1 || options.referenceMinSamples > 4096)
         throw InputError::parameter("referenceMinSamples",
                                     "must be in [1, 4096], got " + std::to_string(options.referenceMinSamples));

@@ -68,17 +68,27 @@ inline const EnumNames<NamedFilter> kFilterNames{
     {"exact", {StatisticsSource::Exact, {ResponseKind::PrefilteredColormap, PrefilterMode::Smooth}}},
     {"reference", {StatisticsSource::Reference, {ResponseKind::PrefilteredColormap, PrefilterMode::Smooth}}}};
 
+struct ParamInfo;
+
+// The anisotropic probes a user's render starts with (the CLI's --aniso,
+// the workbench): 8. An isotropic footprint (the zoom view) takes one probe
+// whatever K is, so only oblique views pay, and they need it (with K = 1,
+// `render --view plane --filter smooth` blurs the distance, as a texture
+// without anisotropic filtering does); 8 is also what engines commonly set.
+// FilterOptions keeps 1, the paper's isotropic estimators, for the studies.
+constexpr int kDefaultAniso = 8;
+
 struct FilterOptions {
     StatisticsSource source = StatisticsSource::Estimators;
-    ResponseOptions response;                        // the smooth prefiltered colormap
-    int aniso = 1;                                   // K, 1..16
+    ResponseOptions response;  // the smooth prefiltered colormap
+    int aniso = 1;             // K, 1..16
     VarianceEstimator estimator = VarianceEstimator::Paper;
     // The brute-force sources (exact, reference) sample n×n per pixel,
     // n = clamp(⌈2·extent in texels⌉, referenceMinSamples, referenceMaxSamples);
     // min = max fixes n (studies/reference_samples.h chooses it by convergence).
-    int referenceMaxSamples = 64;                    // per axis
-    int referenceMinSamples = 8;                     // per axis
-    bool pack8 = false;                              // 8-bit pyramids (paper §5)
+    int referenceMaxSamples = 64;  // per axis
+    int referenceMinSamples = 8;   // per axis
+    bool pack8 = false;            // 8-bit pyramids (paper §5)
 
     // Both axes at once, from a named filter.
     FilterOptions& use(const NamedFilter& f) {
@@ -96,6 +106,11 @@ NamedFilter parseFilter(const std::string& name);
 // covariance"), any other pair "SOURCE/RESPONSE" (e.g.
 // "exact/prefiltered-colormap") so that it is never mistaken for a name.
 std::string filterName(const FilterOptions& options);
+// The anisotropic probes K and the reference's samples per axis, each
+// described once: the range validateFilterOptions checks, the flag and help
+// the CLI sets it by.
+const ParamInfo& anisoParam();
+const ParamInfo& referenceMaxSamplesParam();
 // InputError naming `aniso` or `referenceMaxSamples` when out of range.
 void validateFilterOptions(const FilterOptions& options);
 

@@ -1,5 +1,9 @@
 #include "stochtex/pattern/param_info.h"
 
+#include <cmath>
+
+#include "stochtex/core/error.h"
+
 namespace stochtex {
 
 const char* paramTypeName(ParamType t) {
@@ -27,6 +31,20 @@ double ParamInfo::typical() const {
 double readNumber(const JsonReader& object, const ParamInfo& p) {
     if (p.required()) return object.at(p.name).number(p.min, p.max);
     return object.number(p.name, p.fallback.get<double>(), p.min, p.max);
+}
+
+double checkNumber(const ParamInfo& p, double value, const std::string& unit) {
+    if (!(std::isfinite(value) && value >= p.min && value <= p.max))
+        throw InputError::parameter(p.name, "must be in [" + formatValue(p.min) + ", " + formatValue(p.max) + "]" +
+                                                unit + ", got " + formatValue(value));
+    return value;
+}
+
+int checkInteger(const ParamInfo& p, long long value) {
+    if (value < (long long)p.min || value > (long long)p.max)
+        throw InputError::parameter(p.name, "must be in [" + std::to_string((long long)p.min) + ", " +
+                                                std::to_string((long long)p.max) + "], got " + std::to_string(value));
+    return int(value);
 }
 
 int readInteger(const JsonReader& object, const ParamInfo& p) {

@@ -15,8 +15,8 @@
 namespace stochtex {
 
 enum class ParamType {
-    Number,      // a finite number in [min, max]
-    Integer,     // an integer in [min, max]
+    Number,   // a finite number in [min, max]
+    Integer,  // an integer in [min, max]
     Boolean,
     Seed,        // an integer in [0, 2³² − 1]; unset: derived from the graph's seed and the node's id
     Path,        // an image file, relative to the graph file's folder
@@ -42,6 +42,10 @@ struct ParamInfo {
     // (frequencies go to 10⁴ cycles, a few hundred are typical); NaN: max.
     // A typed value may still go up to max.
     double dragMax = std::nan("");
+    // The CLI's flag for it, without the dashes ("tilt" for --tilt), where a
+    // command sets it from one (apps/stochtex: addParameterOption); empty
+    // for a parameter only files set.
+    std::string flag = {};
 
     bool required() const { return fallback.is_null(); }
     // The default, or for a required parameter its sample (a number: min).
@@ -55,5 +59,12 @@ struct ParamInfo {
 // it is out of range, or absent and required).
 double readNumber(const JsonReader& object, const ParamInfo& p);
 int readInteger(const JsonReader& object, const ParamInfo& p);
+
+// A value set other than from a file (an option struct's member), checked
+// against its entry: InputError::parameter(p.name, "must be in [min, max]
+// UNIT, got VALUE") when it is outside or not finite; `unit` (" degrees")
+// follows the range.
+double checkNumber(const ParamInfo& p, double value, const std::string& unit = "");
+int checkInteger(const ParamInfo& p, long long value);
 
 }  // namespace stochtex

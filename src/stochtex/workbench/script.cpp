@@ -7,8 +7,10 @@
 
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/image/image_io.h"
+#include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/workbench/live_analysis.h"
 
 namespace stochtex {
@@ -27,13 +29,20 @@ std::pair<int, int> parseKeyChord(const std::string& text) {
         const int n = std::stoi(rest.substr(1));
         if (n >= 1 && n <= 12 && std::to_string(n) == rest.substr(1)) key = GLFW_KEY_F1 + n - 1;
     }
-    for (auto [name, code] : {std::pair{"tab", GLFW_KEY_TAB}, {"escape", GLFW_KEY_ESCAPE}, {"space", GLFW_KEY_SPACE},
-                              {"enter", GLFW_KEY_ENTER}, {"up", GLFW_KEY_UP}, {"down", GLFW_KEY_DOWN},
-                              {"left", GLFW_KEY_LEFT}, {"right", GLFW_KEY_RIGHT}, {"[", GLFW_KEY_LEFT_BRACKET},
+    for (auto [name, code] : {std::pair{"tab", GLFW_KEY_TAB},
+                              {"escape", GLFW_KEY_ESCAPE},
+                              {"space", GLFW_KEY_SPACE},
+                              {"enter", GLFW_KEY_ENTER},
+                              {"up", GLFW_KEY_UP},
+                              {"down", GLFW_KEY_DOWN},
+                              {"left", GLFW_KEY_LEFT},
+                              {"right", GLFW_KEY_RIGHT},
+                              {"[", GLFW_KEY_LEFT_BRACKET},
                               {"]", GLFW_KEY_RIGHT_BRACKET}})
         if (rest == name) key = code;
     if (key < 0)
-        throw InputError("unknown key \"" + text + "\" (a letter, a digit, F1-F12, tab, escape, space, enter, "
+        throw InputError("unknown key \"" + text +
+                         "\" (a letter, a digit, F1-F12, tab, escape, space, enter, "
                          "up, down, left, right, [ or ], after ctrl+ or shift+)");
     return {key, mods};
 }
@@ -47,14 +56,16 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
     if (n > 100000) r.fail("at most 100000 steps");
     for (size_t i = 0; i < n; ++i) {
         const JsonReader s = r.at(i);
-        s.expectObject({"frame", "zoom", "at", "pan", "filter", "aniso", "set", "value", "mode", "analysis", "view",
-                        "tilt", "pick", "pause", "screenshot", "save", "record", "stop_recording", "undo", "redo",
-                        "key", "mousedown", "mousemove", "mouseup", "quit"});
+        s.expectObject({"frame",  "zoom",           "at",   "pan",  "filter", "aniso",     "set",        "value",
+                        "mode",   "analysis",       "view", "tilt", "pick",   "pause",     "screenshot", "save",
+                        "record", "stop_recording", "undo", "redo", "key",    "mousedown", "mousemove",  "mouseup",
+                        "quit"});
         WorkbenchStep step;
         if (s.has("frame")) {
             const int f = s.integer("frame", 0, 0, 1000000);
-            if (f < frame) s.at("frame").fail("frames never go back (the step before runs at frame " +
-                                              std::to_string(frame) + ")");
+            if (f < frame)
+                s.at("frame").fail("frames never go back (the step before runs at frame " + std::to_string(frame) +
+                                   ")");
             frame = f;
         }
         step.frame = frame;
@@ -66,7 +77,10 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
         };
         if (auto z = s.find("zoom")) {
             ++actions, step.action = A::Zoom, step.amount = z->number(1.0 / 4096, 4096);
-            if (auto at = s.find("at")) point(*at); else s.fail("zoom needs \"at\": [x, y], the pixel that stays put");
+            if (auto at = s.find("at"))
+                point(*at);
+            else
+                s.fail("zoom needs \"at\": [x, y], the pixel that stays put");
         }
         if (auto p = s.find("pan")) ++actions, step.action = A::Pan, point(*p);
         // A program's mouse, in its pixels (y up), with ShaderToy's click semantics.
@@ -76,17 +90,22 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
         if (auto f = s.find("filter")) {
             ++actions, step.action = A::Filter, step.text = f->choice({"none", "paper", "smooth"});
         }
-        if (auto a = s.find("aniso")) ++actions, step.action = A::Aniso, step.amount = a->integer(1, kMaxAnisotropy);
-        if (auto t = s.find("tilt")) ++actions, step.action = A::Tilt, step.amount = t->number(0, 89);
+        if (auto a = s.find("aniso"))
+            ++actions, step.action = A::Aniso, step.amount = a->integer(int(anisoParam().min), int(anisoParam().max));
+        if (auto t = s.find("tilt"))
+            ++actions, step.action = A::Tilt, step.amount = t->number(cameraTiltParam().min, cameraTiltParam().max);
         if (auto set = s.find("set")) {
             ++actions, step.action = A::Set, step.text = set->string();
             if (!s.has("value")) s.fail("set needs \"value\"");
             step.value = s.at("value").value();
         }
-        if (auto m = s.find("mode")) ++actions, step.action = A::Mode, step.text = enumName(kWorkbenchModeNames, m->choice(kWorkbenchModeNames));
+        if (auto m = s.find("mode"))
+            ++actions, step.action = A::Mode, step.text = enumName(kWorkbenchModeNames, m->choice(kWorkbenchModeNames));
         if (auto a = s.find("analysis"))
-            ++actions, step.action = A::Analysis, step.text = enumName(kLiveAnalysisNames, a->choice(kLiveAnalysisNames));
-        if (auto v = s.find("view")) ++actions, step.action = A::View, step.text = enumName(kWorkbenchViewNames, v->choice(kWorkbenchViewNames));
+            ++actions, step.action = A::Analysis,
+                       step.text = enumName(kLiveAnalysisNames, a->choice(kLiveAnalysisNames));
+        if (auto v = s.find("view"))
+            ++actions, step.action = A::View, step.text = enumName(kWorkbenchViewNames, v->choice(kWorkbenchViewNames));
         if (auto k = s.find("key")) {
             ++actions, step.action = A::Key, step.text = k->string();
             try {
@@ -112,14 +131,18 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
                 }
             }
         // Steps that take no value are written `true`.
-        for (auto [key, action] : {std::pair{"undo", A::Undo}, {"redo", A::Redo},
-                                   {"stop_recording", A::StopRecording}, {"mouseup", A::MouseUp}, {"quit", A::Quit}})
+        for (auto [key, action] : {std::pair{"undo", A::Undo},
+                                   {"redo", A::Redo},
+                                   {"stop_recording", A::StopRecording},
+                                   {"mouseup", A::MouseUp},
+                                   {"quit", A::Quit}})
             if (s.has(key)) {
                 if (!s.boolean(key, false)) s.at(key).fail("is written true");
                 ++actions, step.action = action;
             }
-        if (actions != 1) s.fail(actions == 0 ? "a step needs one action (zoom, pan, filter, set, screenshot, …)"
-                                              : "one action per step");
+        if (actions != 1)
+            s.fail(actions == 0 ? "a step needs one action (zoom, pan, filter, set, screenshot, …)"
+                                : "one action per step");
         steps.push_back(std::move(step));
     }
     return steps;

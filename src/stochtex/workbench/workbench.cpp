@@ -28,6 +28,7 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/frame_sequence.h"
 #include "stochtex/textures/texture_source.h"
 #include "stochtex/workbench/editors.h"
@@ -41,10 +42,8 @@ void validateWorkbenchOptions(const WorkbenchOptions& o) {
                                                 std::to_string(v.height));
     if (o.filter.source != StatisticsSource::Point && o.filter.source != StatisticsSource::Estimators)
         throw InputError::parameter("filter", "the window draws none, paper or smooth, got " + filterName(o.filter));
-    if (o.filter.aniso < 1 || o.filter.aniso > kMaxAnisotropy)
-        throw InputError::parameter("aniso", "must be in [1, 16], got " + std::to_string(o.filter.aniso));
-    if (!(o.camera.tiltDeg >= 0 && o.camera.tiltDeg <= 89))
-        throw InputError::parameter("tilt", "must be in [0, 89] degrees, got " + formatValue(o.camera.tiltDeg));
+    checkInteger(anisoParam(), o.filter.aniso);
+    checkNumber(cameraTiltParam(), o.camera.tiltDeg, " degrees");
     if (!(o.camera.view.scale > 0) || !std::isfinite(o.camera.view.scale))
         throw InputError::parameter("scale", "must be a finite number > 0, got " + formatValue(o.camera.view.scale));
     if (o.frames < 0) throw InputError::parameter("frames", "must be ≥ 0, got " + std::to_string(o.frames));
@@ -985,7 +984,7 @@ private:
             ImGui::EndCombo();
         }
         int aniso = filter_.aniso;
-        if (ImGui::SliderInt("aniso", &aniso, 1, kMaxAnisotropy)) setAniso(aniso);
+        if (ImGui::SliderInt("aniso", &aniso, int(anisoParam().min), int(anisoParam().max))) setAniso(aniso);
         if (hasNormalMap_) {
             bool lean = response_ == ResponseKind::Lean;
             if (ImGui::Checkbox("LEAN normals (L)", &lean)) setResponse(lean ? ResponseKind::Lean : ResponseKind::PrefilteredColormap);
@@ -994,7 +993,7 @@ private:
         if (enumCombo("view", v, kWorkbenchViewNames)) setView(v);
         if (view_ == WorkbenchView::Plane) {
             float tilt = float(camera_.tiltDeg);
-            if (ImGui::SliderFloat("tilt", &tilt, 0, 89, "%.1f°")) setTilt(tilt);
+            if (ImGui::SliderFloat("tilt", &tilt, float(cameraTiltParam().min), float(cameraTiltParam().max), "%.1f°")) setTilt(tilt);
         }
         if (!isScene()) {
             float scale = float(camera_.view.scale);
