@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "alternate_timing.h"
+#include "gl_bench.h"
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/pattern/presets.h"
@@ -12,15 +13,7 @@
 namespace stochtex {
 namespace {
 
-// A headless context, or the benchmark skipped with the reason.
-std::unique_ptr<GlContext> contextOrSkip(benchmark::State& state) {
-    try {
-        return GlContext::headless();
-    } catch (const GpuUnavailable& e) {
-        state.SkipWithError(e.what());
-        return nullptr;
-    }
-}
+using bench::contextOrSkip;
 
 // Frames per `secondsPerFrame` measurement so that one measurement takes
 // about 0.2 s (1 on llvmpipe, hundreds on a GPU).

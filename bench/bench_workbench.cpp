@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "alternate_timing.h"
+#include "gl_bench.h"
 #include "stochtex/analysis/optical_flow.h"
 #include "stochtex/analysis/power_spectrum.h"
 #include "stochtex/core/watchdog.h"
@@ -49,20 +50,30 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     return loadShadertoy(dir.string());
 }
 
-void BM_WorkbenchThroughput(benchmark::State& state) {
-    std::unique_ptr<GlContext> ctx;
-    try {
-        ctx = GlContext::headless();
-    } catch (const GpuUnavailable& e) {
-        state.SkipWithError(e.what());
-        return;
+// The program on a host of the benchmark's size (its arguments width,
+// height) past its empty first frames, in a folder removed at the end; no
+// host where there is no OpenGL (the benchmark skipped).
+struct WorkbenchRun {
+    WorkbenchRun(benchmark::State& state, const std::string& folder)
+        : dir(fs::temp_directory_path() / folder), context(bench::contextOrSkip(state)) {
+        if (!context) return;
+        ShadertoySettings s;
+        s.width = int(state.range(0));
+        s.height = int(state.range(1));
+        host = std::make_unique<ShadertoyHost>(workbenchProgram(dir), *context, s);
+        for (int k = 0; k < 30; ++k) host->renderFrame();
+        state.SetLabel(context->describe());
     }
-    const fs::path dir = fs::temp_directory_path() / "stochtex_bench_workbench";
-    ShadertoySettings s;
-    s.width = int(state.range(0));
-    s.height = int(state.range(1));
-    ShadertoyHost host(workbenchProgram(dir), *ctx, s);
-    for (int k = 0; k < 30; ++k) host.renderFrame();  // past the empty first frames
+    ~WorkbenchRun() { fs::remove_all(dir); }
+    fs::path dir;
+    std::unique_ptr<GlContext> context;
+    std::unique_ptr<ShadertoyHost> host;
+};
+
+void BM_WorkbenchThroughput(benchmark::State& state) {
+    const WorkbenchRun run(state, "stochtex_bench_workbench");
+    if (!run.host) return;
+    ShadertoyHost& host = *run.host;
     Image previous = toGray(host.image());
     double none = 0, copy = 0, spectrum = 0, flow = 0;
     for (auto _ : state) {
@@ -93,8 +104,6 @@ void BM_WorkbenchThroughput(benchmark::State& state) {
     state.counters["copy/none"] = copy / none;  // how many times slower than the program alone
     state.counters["spectrum/none"] = spectrum / none;
     state.counters["flow/none"] = flow / none;
-    state.SetLabel(ctx->describe());
-    fs::remove_all(dir);
 }
 BENCHMARK(BM_WorkbenchThroughput)
     ->ArgNames({"width", "height"})
@@ -103,24 +112,15 @@ BENCHMARK(BM_WorkbenchThroughput)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0);
 
-// What the watchdog around each pass's draw (core/watchdog.h: a thread
-// started and joined) costs a frame: the workbench program's frame (two
-// passes, waited for) beside two watchdogs around nothing, in turn. At small
-// sizes the frame is cheapest, so the share is the largest it gets.
+// What the watchdog around each pass's draw (core/watchdog.h: a watch armed
+// and disarmed; it was a thread started and joined, 0.35 ms a frame at
+// 64 × 36) costs a frame: the workbench program's frame (two passes, waited
+// for) beside two watchdogs around nothing, in turn. At small sizes the
+// frame is cheapest, so the share is the largest it gets.
 void BM_ShadertoyWatchdogShare(benchmark::State& state) {
-    std::unique_ptr<GlContext> ctx;
-    try {
-        ctx = GlContext::headless();
-    } catch (const GpuUnavailable& e) {
-        state.SkipWithError(e.what());
-        return;
-    }
-    const fs::path dir = fs::temp_directory_path() / "stochtex_bench_watchdog";
-    ShadertoySettings s;
-    s.width = int(state.range(0));
-    s.height = int(state.range(1));
-    ShadertoyHost host(workbenchProgram(dir), *ctx, s);
-    for (int k = 0; k < 30; ++k) host.renderFrame();
+    const WorkbenchRun run(state, "stochtex_bench_watchdog");
+    if (!run.host) return;
+    ShadertoyHost& host = *run.host;
     const bench::AlternateTimes t = bench::timeAlternately(
         state,
         [&] {
@@ -134,8 +134,6 @@ void BM_ShadertoyWatchdogShare(benchmark::State& state) {
     state.counters["frame_us"] = 1e6 * t.first / n;
     state.counters["watchdogs_us"] = 1e6 * t.second / n;  // the two a frame of this program starts
     state.counters["watchdogs/frame"] = t.second / t.first;
-    state.SetLabel(ctx->describe());
-    fs::remove_all(dir);
 }
 BENCHMARK(BM_ShadertoyWatchdogShare)
     ->ArgNames({"width", "height"})

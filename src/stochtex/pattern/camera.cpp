@@ -42,30 +42,15 @@ bool Camera::planeFootprint(int px, int py, int exampleSize, double& u, double& 
 }
 
 const ParamInfo& cameraTiltParam() {
-    static const ParamInfo p{"tiltDeg",
-                             ParamType::Number,
-                             "Plane view: tilt from looking straight down, degrees",
-                             Camera{}.tiltDeg,
-                             0,
-                             89,
-                             nullptr,
-                             {},
-                             std::nan(""),
-                             "tilt"};
+    static const ParamInfo p =
+        optionParam("tiltDeg", ParamType::Number, "Plane view: tilt from looking straight down, degrees",
+                    Camera{}.tiltDeg, 0, 89, "tilt");
     return p;
 }
 
 const ParamInfo& cameraFovParam() {
-    static const ParamInfo p{"fovDeg",
-                             ParamType::Number,
-                             "Plane view: vertical field of view, degrees",
-                             Camera{}.fovDeg,
-                             1,
-                             150,
-                             nullptr,
-                             {},
-                             std::nan(""),
-                             "fov"};
+    static const ParamInfo p = optionParam("fovDeg", ParamType::Number, "Plane view: vertical field of view, degrees",
+                                           Camera{}.fovDeg, 1, 150, "fov");
     return p;
 }
 

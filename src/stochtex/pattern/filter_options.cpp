@@ -1,38 +1,22 @@
 #include "stochtex/pattern/filter_options.h"
 
-#include <cmath>
-
 #include "stochtex/core/error.h"
 #include "stochtex/pattern/param_info.h"
 
 namespace stochtex {
 
 const ParamInfo& anisoParam() {
-    static const ParamInfo p{"aniso",
-                             ParamType::Integer,
-                             "Anisotropic probes K (1 = isotropic trilinear)",
-                             kDefaultAniso,
-                             1,
-                             kMaxAnisotropy,
-                             nullptr,
-                             {},
-                             std::nan(""),
-                             "aniso"};
+    static const ParamInfo p =
+        optionParam("aniso", ParamType::Integer, "Anisotropic probes K (1 = isotropic trilinear)", kDefaultAniso, 1,
+                    kMaxAnisotropy, "aniso");
     return p;
 }
 
 const ParamInfo& referenceMaxSamplesParam() {
-    static const ParamInfo p{
-        "referenceMaxSamples",
-        ParamType::Integer,
-        "Max samples per axis and pixel of the exact and reference filters (n = clamp(2·extent, 8, this))",
-        FilterOptions{}.referenceMaxSamples,
-        1,
-        4096,
-        nullptr,
-        {},
-        std::nan(""),
-        "reference-samples"};
+    static const ParamInfo p =
+        optionParam("referenceMaxSamples", ParamType::Integer,
+                    "Max samples per axis and pixel of the exact and reference filters (n = clamp(2·extent, 8, this))",
+                    FilterOptions{}.referenceMaxSamples, 1, 4096, "reference-samples");
     return p;
 }
 

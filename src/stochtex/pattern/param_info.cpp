@@ -33,6 +33,13 @@ double readNumber(const JsonReader& object, const ParamInfo& p) {
     return object.number(p.name, p.fallback.get<double>(), p.min, p.max);
 }
 
+ParamInfo optionParam(std::string name, ParamType type, std::string description, double fallback, double min,
+                      double max, std::string flag) {
+    ParamInfo p{std::move(name), type, std::move(description), fallback, min, max};
+    p.flag = std::move(flag);
+    return p;
+}
+
 double checkNumber(const ParamInfo& p, double value, const std::string& unit) {
     if (!(std::isfinite(value) && value >= p.min && value <= p.max))
         throw InputError::parameter(p.name, "must be in [" + formatValue(p.min) + ", " + formatValue(p.max) + "]" +

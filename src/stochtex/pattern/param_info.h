@@ -60,6 +60,11 @@ struct ParamInfo {
 double readNumber(const JsonReader& object, const ParamInfo& p);
 int readInteger(const JsonReader& object, const ParamInfo& p);
 
+// The entry of a number an option struct holds and a CLI flag sets
+// (`flag` without its dashes): no sample, choices or drag range.
+ParamInfo optionParam(std::string name, ParamType type, std::string description, double fallback, double min,
+                      double max, std::string flag);
+
 // A value set other than from a file (an option struct's member), checked
 // against its entry: InputError::parameter(p.name, "must be in [min, max]
 // UNIT, got VALUE") when it is outside or not finite; `unit` (" degrees")
