@@ -10,9 +10,12 @@ root=$1
 [ -d "$root" ] || { echo "no such folder: $root"; exit 2; }
 found=$(find "$root" \( -name '*.cpp' -o -name '*.h' \) -print0 | sort -z | xargs -0 perl -0777 -ne '
   my $text = $_;
-  $text =~ s{//[^\n]*}{}g;                                      # line comments, kept as empty lines
-  $text =~ s{/\*.*?\*/}{ my $c = $&; $c =~ tr/\n//cd; $c }gse;  # block comments, their newlines kept
-  while ($text =~ /InputError\s*\(\s*(?:std::string\s*\(\s*)?"(-[^"]*)"/g) {
+  # Comments go (their newlines kept), string literals stay: one pass, so
+  # "data/*.png" or "http://" in a string opens no comment.
+  $text =~ s{("(?:\\.|[^"\\\n])*")|//[^\n]*|/\*.*?\*/}{ defined $1 ? $1 : ($& =~ tr/\n//cdr) }gse;
+  # InputError(...), InputError{...} and InputError::overBudget(NAME, ...)
+  # whose text starts with a flag.
+  while ($text =~ /InputError\s*(?:::overBudget\s*\(\s*"[^"]*"\s*,|[({])\s*(?:std::string\s*\(\s*)?(?:"|R"\()(-[^"]*)"/g) {
     my ($flag, $line) = ($1, 1 + (substr($text, 0, $-[0]) =~ tr/\n//));
     (my $file = $ARGV) =~ s{^\Q'"$root"'\E/}{};
     print "$file:$line: \"$flag\"\n";

@@ -354,3 +354,18 @@ TEST(HostileGraph, AnOpChainThatOverflowsIsRefusedAtItsNode) {
     EXPECT_EQ(e.find("squares: node \"s2\" (square): its values may reach "), 0u) << e;
     EXPECT_NE(e.find("; a node's values must be in [-65504, 65504]"), std::string::npos) << e;
 }
+
+// A table op's values peak where its entries do, not at its inputs' ends: a
+// curve up to 100 and down again is 0 at both ends of a noise's range, so
+// its ends alone would let two squares (1e4, then 1e8) through.
+TEST(HostileGraph, ATableOpsRangeIsItsEntries) {
+    const std::string text =
+        R"({"name": "peak", "size": 16, "nodes": {)"
+        R"("n": {"type": "spectral_noise", "size": 16, "components": [{"shape": "ring", "frequency": 4, "bandwidth": 1}]}, )"
+        R"("k": {"type": "curve", "input": "n", "points": [[0, 0], [0.5, 100], [1, 0]]}, )"
+        R"("q1": {"type": "square", "input": "k"}, "q2": {"type": "square", "input": "q1"}, )"
+        R"("c": {"type": "colormap", "x": "q2", "y": "n", "colormap": {"type": "gaussian"}}}, "output": "c"})";
+    const std::string e = buildError(text);
+    EXPECT_EQ(e.find("peak: node \"q2\" (square): its values may reach 9.8"), 0u)
+        << e;  // 99.2⁴: the table's highest entry
+}

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <list>
 #include <mutex>
-#include <thread>
+#include <stdexcept>
 
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
@@ -63,7 +63,11 @@ struct Watchdog::Monitor {
     // the process ends. A forked child has no thread, so it starts anew.
     static Monitor& instance() {
         static std::once_flag once;
-        std::call_once(once, [] { pthread_atfork(nullptr, nullptr, [] { abandoned = current.exchange(nullptr); }); });
+        std::call_once(once, [] {
+            pthread_atfork(nullptr, nullptr, [] {
+                if (Monitor* parents = current.exchange(nullptr)) abandoned = parents;
+            });
+        });
         Monitor* m = current.load();
         if (!m) {
             static std::mutex starting;
@@ -72,7 +76,19 @@ struct Watchdog::Monitor {
             if (!m) {
                 m = new Monitor;
                 m->abandoned_ = abandoned.exchange(nullptr);
-                std::thread([m] { m->watch(); }).detach();
+                // A plain pthread: std::thread's start-up state would live on
+                // the heap, reachable only from this thread's stack, which a
+                // forked child does not have (a leak report at its exit).
+                pthread_t thread;
+                if (pthread_create(
+                        &thread, nullptr,
+                        [](void* monitor) -> void* {
+                            static_cast<Monitor*>(monitor)->watch();
+                            return nullptr;
+                        },
+                        m) != 0)
+                    throw std::runtime_error("Watchdog: cannot start its thread");
+                pthread_detach(thread);
                 current.store(m);
             }
         }
@@ -94,6 +110,7 @@ struct Watchdog::Monitor {
     void watch() {
         std::unique_lock lock(mutex);
         int idlePolls = 0;
+        unsigned long long seen = nextId;  // watches armed up to here
         for (;;) {
             if (watches.empty() && idlePolls >= kIdlePolls) {
                 sleeping = true;
@@ -101,11 +118,11 @@ struct Watchdog::Monitor {
                 sleeping = false;
             }
             armed.wait_for(lock, kPollInterval);
-            if (watches.empty()) {
-                ++idlePolls;
-                continue;
-            }
-            idlePolls = 0;
+            // Idle: nothing armed since the last poll (a pass's watch may come
+            // and go between two polls).
+            idlePolls = watches.empty() && nextId == seen ? idlePolls + 1 : 0;
+            seen = nextId;
+            if (watches.empty()) continue;
             lock.unlock();
             const long long resident = residentBytes();
             const auto now = std::chrono::steady_clock::now();
@@ -137,6 +154,9 @@ Watchdog::Watchdog(std::string what, double seconds, long long bytes) : monitor_
 }
 
 Watchdog::~Watchdog() {
+    // Armed before a fork, destroyed in the child: the parent's monitor is
+    // abandoned there (its mutex may have been held at the fork).
+    if (monitor_ != Monitor::current.load()) return;
     const std::lock_guard lock(monitor_->mutex);
     monitor_->watches.remove_if([this](const Monitor::Watch& w) { return w.id == id_; });
 }

@@ -310,10 +310,12 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
 // The linear nodes' fold checks each example's values; the ops compose them
 // per pixel (squares of squares, products of affines), where a value past
 // float renders as inf or NaN: black or white with exit 0. Each slot's range
-// follows from its inputs' by the op at their corners (exact for the
-// multilinear and convex ops, affine, sum, product, square, mix; the others
-// are bounded by their tables), from the leaves' ranges: a blend of three
-// tiles lies within √3 of the largest deviation from the example's mean.
+// follows from its inputs' by the op at their ends and their points nearest 0
+// (exact for affine, sum, product, square, mix, threshold, compose), a table
+// op's also from its entries (curve, colormap), from the leaves' ranges: a
+// blend of three tiles lies within √3 of the largest deviation from the
+// example's mean. The lean op's specular peak may lie inside its inputs'
+// ranges; its colour feeds no field op.
 void GraphPattern::checkProgramRange(const GraphPattern& p, const std::vector<NoiseExample>& examples,
                                      const std::string& context) {
     std::vector<vec3> lo, hi;
@@ -330,16 +332,33 @@ void GraphPattern::checkProgramRange(const GraphPattern& p, const std::vector<No
         ctx.pointTable = op.table >= 0 ? &p.tables_[size_t(op.table)].point : nullptr;
         vec3 outLo(INFINITY), outHi(-INFINITY);
         bool finite = true;
-        for (int corner = 0; corner < 8; ++corner) {
-            std::array<vec3, 3> in{};
-            for (size_t i = 0; i < 3; ++i)
-                if (const int s = op.inputs[i]; s >= 0) in[i] = (corner >> i & 1) ? hi[size_t(s)] : lo[size_t(s)];
-            const vec3 v = opPoint(op.params, in[0], in[1], in[2], ctx);
+        const auto include = [&](const vec3& v) {
             for (int c = 0; c < 3; ++c) {
                 finite = finite && std::isfinite(v[c]);
                 outLo[c] = std::min(outLo[c], v[c]);
                 outHi[c] = std::max(outHi[c], v[c]);
             }
+        };
+        // Each input at its low end, its high end and its point nearest 0
+        // (a square's minimum lies there when its range spans 0).
+        for (int k = 0; k < 27; ++k) {
+            std::array<vec3, 3> in{};
+            for (size_t i = 0, digit = size_t(k); i < 3; ++i, digit /= 3)
+                if (const int s = op.inputs[i]; s >= 0) {
+                    const vec3 l = lo[size_t(s)], h = hi[size_t(s)];
+                    in[i] = digit % 3 == 0 ? l : digit % 3 == 1 ? h : glm::clamp(vec3(0.0f), l, h);
+                }
+            include(opPoint(op.params, in[0], in[1], in[2], ctx));
+        }
+        // A table op's values are its entries, wherever they peak (a curve
+        // up and down again between its inputs' ends).
+        if (op.table >= 0) {
+            const ColormapTable& t = p.tables_[size_t(op.table)].point;
+            for (int j = 0; j < t.resolutionY(); ++j)
+                for (int i = 0; i < t.resolutionX(); ++i) {
+                    const Rgb e = t.entry(i, j);
+                    include(vec3(e[0], e[1], e[2]));
+                }
         }
         const float reach = std::max({-outLo.x, -outLo.y, -outLo.z, outHi.x, outHi.y, outHi.z});
         if (!finite || reach > kMaxFieldValue)

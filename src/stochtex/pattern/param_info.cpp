@@ -35,7 +35,10 @@ double readNumber(const JsonReader& object, const ParamInfo& p) {
 
 ParamInfo optionParam(std::string name, ParamType type, std::string description, double fallback, double min,
                       double max, std::string flag) {
-    ParamInfo p{std::move(name), type, std::move(description), fallback, min, max};
+    // An integer's default as a JSON integer, as a file would give it.
+    const nlohmann::json value =
+        type == ParamType::Integer ? nlohmann::json((long long)fallback) : nlohmann::json(fallback);
+    ParamInfo p{std::move(name), type, std::move(description), value, min, max};
     p.flag = std::move(flag);
     return p;
 }
