@@ -128,8 +128,10 @@ void addNeeds(const std::string& text, const std::string& self, const Overrides&
     for (const std::string& inc : includedStems(text)) {
         if (inc == self || std::find(seen.begin(), seen.end(), inc) != seen.end()) continue;
         seen.push_back(inc);
-        if (isShader(inc) || overrideText(inc, overrides)) needs.push_back(inc);
-        else if (const std::string* header = kernelHeader(inc)) addNeeds(*header, self, overrides, needs, seen);
+        if (isShader(inc) || overrideText(inc, overrides))
+            needs.push_back(inc);
+        else if (const std::string* header = kernelHeader(inc))
+            addNeeds(*header, self, overrides, needs, seen);
     }
 }
 
@@ -137,7 +139,8 @@ std::vector<std::string> chunkNeeds(const std::string& stem, const Overrides& ov
     std::vector<std::string> needs, seen;
     // A file not given yet (a recipe's generated chunk, listed without its
     // text) needs nothing that can be known; assembling it will ask for it.
-    if (isShader(stem) || overrideText(stem, overrides)) addNeeds(chunkText(stem, overrides), stem, overrides, needs, seen);
+    if (isShader(stem) || overrideText(stem, overrides))
+        addNeeds(chunkText(stem, overrides), stem, overrides, needs, seen);
     if (const std::string* header = kernelHeader(stem)) addNeeds(*header, stem, overrides, needs, seen);
     return needs;
 }
@@ -165,7 +168,8 @@ std::string glslText(const std::string& text, const Overrides& overrides = {}) {
         end = end == std::string::npos ? text.size() : end + 1;
         std::string_view line(text.data() + pos, end - pos);
         if (line.starts_with("inline ")) line.remove_prefix(7);
-        if (const std::string stem = includedStem(line); isShader(stem) || kernelHeader(stem) || overrideText(stem, overrides))
+        if (const std::string stem = includedStem(line);
+            isShader(stem) || kernelHeader(stem) || overrideText(stem, overrides))
             out += "// ";
         out += line;
         pos = end;
@@ -209,7 +213,8 @@ std::string assemble(GlslTarget target, const std::vector<std::string>& requeste
 
 // Driver logs locate errors as "0:12(3)" (Mesa) or "0(12)" (NVIDIA): the
 // line is in the assembled text. Rewrite each as "file:line".
-std::string mapLocations(const std::string& log, const std::vector<std::string>& files, const std::vector<int>& starts) {
+std::string mapLocations(const std::string& log, const std::vector<std::string>& files,
+                         const std::vector<int>& starts) {
     std::string out;
     const std::regex loc(R"(\b0[:(](\d+))");
     std::sregex_iterator it(log.begin(), log.end(), loc), end;
@@ -224,7 +229,8 @@ std::string mapLocations(const std::string& log, const std::vector<std::string>&
         }
         std::size_t k = 0;
         while (k + 1 < starts.size() && starts[k + 1] <= line) ++k;
-        out += line >= starts.front() ? files[k] + ":" + std::to_string(line - starts[k] + 1) : "header:" + std::to_string(line);
+        out += line >= starts.front() ? files[k] + ":" + std::to_string(line - starts[k] + 1)
+                                      : "header:" + std::to_string(line);
         last = std::size_t(it->position() + it->length());
     }
     return out + log.substr(last);
@@ -251,6 +257,13 @@ std::string infoLog(GLuint object, Query query, Read read) {
     return log.c_str();
 }
 
+// "a.glsl + b": a stage's files as messages name them.
+std::string fileNames(const std::vector<std::string>& files) {
+    std::string names;
+    for (const auto& f : files) names += (names.empty() ? "" : " + ") + f;
+    return names;
+}
+
 unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
                       const std::vector<std::pair<std::string, std::string>>& overrides,
                       GlslTarget target = GlslTarget::Core330) {
@@ -260,8 +273,7 @@ unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
     const GLuint s = glCreateShader(stage);
     const char* p = src.c_str();
     glShaderSource(s, 1, &p, nullptr);
-    std::string names;
-    for (const auto& f : files) names += (names.empty() ? "" : " + ") + f;
+    const std::string names = fileNames(files);
     {
         const Watchdog watchdog = compileWatchdog("shader " + names + ": the GL driver's compile");
         glCompileShader(s);
@@ -277,12 +289,15 @@ unsigned compileStage(GLenum stage, const std::vector<std::string>& files,
 }
 
 // Links the stages (deleting them); ShaderError with the log on failure.
-unsigned link(std::initializer_list<unsigned> shaders) {
+// `names`: the program's own files (its fragment or compute stage), as the
+// watchdog names them.
+unsigned link(const std::string& names, std::initializer_list<unsigned> shaders) {
     const GLuint prog = glCreateProgram();
     for (unsigned s : shaders) glAttachShader(prog, s);
     {
-        // Drivers optimise and generate code here: most of the work of a large program.
-        const Watchdog watchdog = compileWatchdog("a shader program: the GL driver's link");
+        // Drivers optimise and generate code here (llvmpipe on some CPUs;
+        // others at the first draw): most of the work of a large program.
+        const Watchdog watchdog = compileWatchdog("shader " + names + ": the GL driver's link");
         glLinkProgram(prog);
     }
     for (unsigned s : shaders) glDeleteShader(s);
@@ -319,8 +334,10 @@ std::string shaderText(const std::string& text, const std::string& name) {
     std::string lf;
     lf.reserve(text.size());
     for (size_t i = start; i < text.size(); ++i)
-        if (text[i] != '\r') lf += text[i];
-        else if (i + 1 >= text.size() || text[i + 1] != '\n') lf += '\n';  // a lone CR (old Mac) ends a line too
+        if (text[i] != '\r')
+            lf += text[i];
+        else if (i + 1 >= text.size() || text[i + 1] != '\n')
+            lf += '\n';  // a lone CR (old Mac) ends a line too
     return lf;
 }
 
@@ -339,12 +356,12 @@ unsigned compileProgram(const std::vector<std::string>& vertexFiles, const std::
         glDeleteShader(vs);
         throw;
     }
-    return link({vs, fs});
+    return link(fileNames(fragmentFiles), {vs, fs});
 }
 
 unsigned compileComputeProgram(const std::vector<std::string>& files,
                                const std::vector<std::pair<std::string, std::string>>& overrides) {
-    return link({compileStage(GL_COMPUTE_SHADER, files, overrides, GlslTarget::Core430)});
+    return link(fileNames(files), {compileStage(GL_COMPUTE_SHADER, files, overrides, GlslTarget::Core430)});
 }
 
 }  // namespace stochtex
