@@ -10,8 +10,8 @@
 
 #include "common.h"
 #include "progress.h"
-#include "stochtex/image/image_io.h"
 #include "stochtex/core/parallel.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/report/frame_sequence.h"
 #include "stochtex/studies/artifact_report.h"
 #include "zoom_flags.h"
@@ -20,20 +20,20 @@ namespace stochtex::cli {
 
 void registerAnalyze(CLI::App& app) {
     auto args = std::make_shared<ZoomStudyArgs<ArtifactReportOptions>>();
-    auto* cmd = app.add_subcommand("analyze", "Report page (index.html) on the zoom texture's artifacts: sliding, "
-                                              "contrast loss and corrections, correlation plots, spectrum, optical "
-                                              "flow, temporal coherence, the marble texture, perception stimuli");
+    auto* cmd = app.add_subcommand("analyze",
+                                   "Report page (index.html) on the zoom texture's artifacts: sliding, "
+                                   "contrast loss and corrections, correlation plots, spectrum, optical "
+                                   "flow, temporal coherence, the marble texture, perception stimuli");
     addOutputFolderFlag(*cmd, args->dir, "Output folder (index.html and the figures)");
     addCorrelationStudyFlags(*cmd, args->study.correlation, "--plot-size", false);
-    cmd->add_option("--size", args->study.contrast.size, "Size of the contrast-correction textures")
-        ->capture_default_str();
-    cmd->add_option("--frame-size", args->study.frameSize, "Frame side of the spectrum, flow and coherence parts")
-        ->capture_default_str();
+    addParameterOptions(*cmd, contrastStudyMembers(), args->study.contrast);
+    addMemberOption(*cmd, optionMember(artifactReportMembers(), "frameSize"), args->study);
     cmd->add_option("--coherence-layers", args->study.coherenceLayers, "Layer counts n of the temporal-coherence curve")
         ->delimiter(',');
     auto images = std::make_shared<std::vector<std::string>>();
-    cmd->add_option("--images", *images, "Image textures for the image-base part (Figures 2.15, 2.17; e.g. "
-                                         "data/textures/*.png)");
+    cmd->add_option("--images", *images,
+                    "Image textures for the image-base part (Figures 2.15, 2.17; e.g. "
+                    "data/textures/*.png)");
     addZoomStudyFlags(*cmd, *args, false);
     cmd->callback([args, images] {
         ThreadLimit limit(args->threads);

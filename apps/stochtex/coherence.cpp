@@ -22,19 +22,20 @@ void registerCoherence(CLI::App& app) {
         int threads = 0;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("coherence", "Temporal coherence: per-frame mean, contrast, dominant scale and "
-                                                "spectrum, and their change over time: coherence [flags] "
-                                                "images|pattern|zoom|marble|shadertoy ...");
+    auto* cmd = app.add_subcommand("coherence",
+                                   "Temporal coherence: per-frame mean, contrast, dominant scale and "
+                                   "spectrum, and their change over time: coherence [flags] "
+                                   "images|pattern|zoom|marble|shadertoy ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
     addWindowSizeFlag(*cmd, args->window, "Frame size");
-    const CLI::Option* frames = cmd->add_option("--frames", args->frames, "Frames, from the source's time on")->capture_default_str();
+    const CLI::Option* frames =
+        cmd->add_option("--frames", args->frames, "Frames, from the source's time on")->capture_default_str();
     const CLI::Option* step = cmd->add_option("--step", args->step, "Time between frames")->capture_default_str();
     const CLI::Option* layers =
         cmd->add_option("--layers-list", args->study.layers, "zoom: measure each layer count n (the curve over n)")
             ->delimiter(',');
-    cmd->add_option("--radial-bins", args->study.frames.radialBins, "Bins of the radial spectra")
-        ->capture_default_str();
+    addMemberOption(*cmd, optionMember(temporalCoherenceMembers(), "radialBins"), args->study.frames);
     addThreadsFlag(*cmd, args->threads);
     addTextureSourceCommands(*cmd, [args, frames, step, layers](const TextureSource& source, const SourceInfo& info) {
         CoherenceReportOptions o = args->study;

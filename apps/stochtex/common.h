@@ -5,8 +5,10 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "stochtex/core/atomic_file.h"
@@ -216,6 +218,18 @@ CLI::Option* addParameterOption(CLI::App& cmd, const ParamInfo& p, T& value) {
     const std::string range = "[" + formatValue(p.min) + ", " + formatValue(p.max) + "]";
     CLI::Option* option = cmd.add_option("--" + p.flag, value, p.description + ", in " + range);
     return bindParameter(cmd, option->capture_default_str(), p.name);
+}
+
+// The option of one member of an option struct (OptionMember), setting o's member.
+template <class Options>
+CLI::Option* addMemberOption(CLI::App& cmd, const OptionMember<Options>& m, Options& o) {
+    return std::visit([&](auto p) { return addParameterOption(cmd, m.info, o.*p); }, m.member);
+}
+
+// An option for each member `members` describes, in the table's order.
+template <class Options>
+void addParameterOptions(CLI::App& cmd, std::span<const OptionMember<Options>> members, Options& o) {
+    for (const OptionMember<Options>& m : members) addMemberOption(cmd, m, o);
 }
 
 // An InputError as the user reads it: a library parameter error is prefixed

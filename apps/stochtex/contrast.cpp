@@ -11,10 +11,11 @@ namespace stochtex::cli {
 void registerContrast(CLI::App& app) {
     auto args = std::make_shared<ZoomStudyArgs<ContrastStudyOptions>>();
     args->zoom.params.layers = 16;  // Figure 2.6
-    auto* cmd = app.add_subcommand("contrast", "Contrast corrections of the zoom texture with their histograms, "
-                                               "curves and clamped-pixel percentages");
+    auto* cmd = app.add_subcommand("contrast",
+                                   "Contrast corrections of the zoom texture with their histograms, "
+                                   "curves and clamped-pixel percentages");
     addOutputFolderFlag(*cmd, args->dir);
-    cmd->add_option("--size", args->study.size, "Texture size in pixels")->capture_default_str();
+    addParameterOptions(*cmd, contrastStudyMembers(), args->study);
     addZoomStudyFlags(*cmd, *args, true);
     cmd->callback([args] {
         ThreadLimit limit(args->threads);

@@ -21,19 +21,22 @@ void registerFlow(CLI::App& app) {
         bool video = false;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("flow", "Optical flow between consecutive frames (Farnebäck, DIS or Lucas–Kanade): "
-                                           "HSV colours, arrows, outward motion: flow [flags] images|pattern|zoom|marble|shadertoy ...");
+    auto* cmd = app.add_subcommand(
+        "flow",
+        "Optical flow between consecutive frames (Farnebäck, DIS or Lucas–Kanade): "
+        "HSV colours, arrows, outward motion: flow [flags] images|pattern|zoom|marble|shadertoy ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
     addWindowSizeFlag(*cmd, args->window, "Window size");
-    const CLI::Option* frames = cmd->add_option("--frames", args->study.frames, "Frames (image files: all)")->capture_default_str();
-    const CLI::Option* dt =
-        cmd->add_option("--dt", args->study.timeStep, "Time between frames (image files: one file per frame)")->capture_default_str();
+    const auto& members = flowStudyMembers();
+    const CLI::Option* frames = addMemberOption(*cmd, optionMember(members, "frames"), args->study);
+    const CLI::Option* dt = addMemberOption(*cmd, optionMember(members, "timeStep"), args->study);
     addEnumFlag(*cmd, "--method", args->study.method, kFlowMethodNames, "method",
                 "farneback | dis (dense) | lucas-kanade (sparse, on the grid)");
-    cmd->add_option("--step", args->study.step, "Grid of the vectors, pixels")->capture_default_str();
-    cmd->add_option("--arrow-scale", args->study.arrowScale, "Arrows drawn this many times their length")->capture_default_str();
-    cmd->add_flag("--video", args->video, "Also write the frames as frames.mp4 and an animated frames.webp shown in index.html");
+    addMemberOption(*cmd, optionMember(members, "step"), args->study);
+    addMemberOption(*cmd, optionMember(members, "arrowScale"), args->study);
+    cmd->add_flag("--video", args->video,
+                  "Also write the frames as frames.mp4 and an animated frames.webp shown in index.html");
     addThreadsFlag(*cmd, args->threads);
     addTextureSourceCommands(*cmd, [args, frames, dt](const TextureSource& source, const SourceInfo& info) {
         FlowStudyOptions o = args->study;

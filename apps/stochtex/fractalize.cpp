@@ -21,15 +21,15 @@ void registerFractalize(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     args->study.zoom.layers = 8;  // Figure 2.17
-    auto* cmd = app.add_subcommand("fractalize", "Image textures as the zoom texture's base (thesis Figures 2.15-2.17): "
-                                                 "correlation maps of each image and of the zoom texture over it "
-                                                 "(e.g. data/textures/*.png)");
+    auto* cmd = app.add_subcommand("fractalize",
+                                   "Image textures as the zoom texture's base (thesis Figures 2.15-2.17): "
+                                   "correlation maps of each image and of the zoom texture over it "
+                                   "(e.g. data/textures/*.png)");
     cmd->add_option("images", args->files, "Image files (colour: gray by 0.21r + 0.72g + 0.07b)")->required();
     addOutputFolderFlag(*cmd, args->dir);
-    cmd->add_option("--layers", args->study.zoom.layers, "Layers n of the zoom texture")->capture_default_str();
-    cmd->add_option("--max-scale", args->study.zoom.maxScale, "Maximum scale H")->capture_default_str();
-    cmd->add_option("--size", args->study.size, "Frame and correlation-map side in pixels")->capture_default_str();
-    cmd->add_option("--instances", args->study.instances, "Translations of each image averaged")->capture_default_str();
+    for (const char* name : {"layers", "maxScale"})
+        addMemberOption(*cmd, optionMember(zoomParamsMembers(), name), args->study.zoom);
+    addParameterOptions(*cmd, imageBaseStudyMembers(), args->study);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args] {
         std::vector<ImageBase> images;

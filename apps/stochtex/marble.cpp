@@ -1,7 +1,7 @@
 // stochtex marble: the marble texture's artifacts (thesis §2.7.2, §2.8), continuous
 // scaling vs the fix: stretching, correlation, spectra, sliding (with videos).
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 
 #include "common.h"
@@ -22,28 +22,25 @@ void registerMarble(CLI::App& app) {
     };
     auto args = std::make_shared<Args>();
     MarbleStudyOptions& s = args->study;
-    auto* cmd = app.add_subcommand("marble", "The marble texture (thesis eq. 2.29): stretching, correlation, spectra "
-                                             "and sliding, continuous scaling vs the blended fix; videos of the sliding");
+    auto* cmd = app.add_subcommand("marble",
+                                   "The marble texture (thesis eq. 2.29): stretching, correlation, spectra "
+                                   "and sliding, continuous scaling vs the blended fix; videos of the sliding");
     addOutputFolderFlag(*cmd, args->dir);
     addMarbleFlags(*cmd, s.marble, false);
     cmd->add_option("--scalings", s.scalings, "Scalings compared: continuous, blended, blended-corrected")
         ->delimiter(',')
         ->transform(enumTransformer(kMarbleScalingNames, "scalings"))
         ->default_str("continuous,blended-corrected");
-    cmd->add_option("--size", s.size, "Frames of N×N pixels centred on the origin")->capture_default_str();
-    cmd->add_option("--correlation-size", s.correlationSize, "Correlation window around the point, pixels")
-        ->capture_default_str();
-    cmd->add_option("--point", args->point, "Correlation reference X,Y in pixels from the origin (default: x = "
-                                            "-period/4 of l, where the scaling shears the noise most, y halfway "
-                                            "to the edge)")
+    const auto& members = marbleStudyMembers();
+    for (const char* name : {"size", "correlationSize"}) addMemberOption(*cmd, optionMember(members, name), s);
+    cmd->add_option("--point", args->point,
+                    "Correlation reference X,Y in pixels from the origin (default: x = "
+                    "-period/4 of l, where the scaling shears the noise most, y halfway "
+                    "to the edge)")
         ->delimiter(',')
         ->expected(2);
-    cmd->add_option("--instances", s.instances, "Seeds per correlation map")->capture_default_str();
-    cmd->add_option("--spectrum-instances", s.spectrumInstances, "Seeds per spectrum")->capture_default_str();
-    cmd->add_option("--slide-rate", s.slideRate, "Sliding: r in l = m + r t")->capture_default_str();
-    cmd->add_option("--frames", s.frames, "Sliding frames")->capture_default_str();
-    cmd->add_option("--dt", s.timeStep, "Time between sliding frames")->capture_default_str();
-    cmd->add_option("--step", s.flowStep, "Pixels between flow vectors")->capture_default_str();
+    for (const char* name : {"instances", "spectrumInstances", "slideRate", "frames", "timeStep", "flowStep"})
+        addMemberOption(*cmd, optionMember(members, name), s);
     addEnumFlag(*cmd, "--method", s.flowMethod, kFlowMethodNames, "method",
                 "Optical flow: dis (default: exact on the smooth noise), farneback or lucas-kanade");
     addThreadsFlag(*cmd, args->threads);

@@ -12,8 +12,7 @@ void registerReproduceFigure14(CLI::App& reproduce, std::shared_ptr<ReproduceArg
     addThreadsFlag(*sub, args->threads);
     Figure14Options& f = args->figure14;
     sub->add_option("--pattern", args->figure14Pattern, "A graph file instead of the preset figure14");
-    sub->add_option("--size", f.size, "Image size per footprint")->capture_default_str();
-    sub->add_option("--reference-samples", f.referenceSamples, "Max reference samples per axis")->capture_default_str();
+    addParameterOptions(*sub, figure14Members(), f);
     sub->add_option("--reference-tolerance", f.referenceTolerance,
                     "Samples double until the reference moves less than this (mean RGB distance)")
         ->capture_default_str();

@@ -14,15 +14,15 @@ void addFigure10Flags(CLI::App& sub, ReproduceArgs& a) {
     addOutputFolderFlag(sub, a.dir);
     addThreadsFlag(sub, a.threads);
     Figure10Options& f = a.figure10;
-    sub.add_option("--size", f.size, "Pattern size in the variants' sheet")->capture_default_str();
-    sub.add_option("--comparison-size", f.comparisonSize, "Side of each comparison panel (one example period)")
-        ->capture_default_str();
+    addParameterOptions(sub, figure10Members(), f);
     sub.add_option("--frequency", f.field.frequency, "Frequency of both phasor fields, cycles per period")
         ->capture_default_str();
     sub.add_option("--bandwidth", f.field.bandwidth, "Spectral bandwidth of both fields, cycles per period")
         ->capture_default_str();
-    sub.add_option("--orientation", f.field.orientation, "Wave direction of both fields, degrees")->capture_default_str();
-    sub.add_option("--density", f.field.density, "Gabor kernels per cell of the procedural noise")->capture_default_str();
+    sub.add_option("--orientation", f.field.orientation, "Wave direction of both fields, degrees")
+        ->capture_default_str();
+    sub.add_option("--density", f.field.density, "Gabor kernels per cell of the procedural noise")
+        ->capture_default_str();
     addSeedFlag(sub, "--seed", f.field.seed, "Seed of the procedural noise's kernels");
 }
 
@@ -41,8 +41,7 @@ void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, Figure4Optio
         // (figure 4's --footprints would clash with table1's in `reproduce all`)
         if (figure == &a.figure11 && !table)
             sub.add_option("--footprints", f.footprints, "Footprint sides in texels")->delimiter(',');
-        sub.add_option("--size", f.size, "Image size per footprint")->capture_default_str();
-        sub.add_option("--reference-samples", f.referenceSamples, "Max reference samples per axis");
+        addParameterOptions(sub, figure4Members(), f);
         sub.add_option("--reference-tolerance", f.referenceTolerance,
                        "Samples double until the reference moves less than this (mean RGB distance)")
             ->capture_default_str();
@@ -80,10 +79,10 @@ void addFigure12Flags(CLI::App& sub, ReproduceArgs& a) {
     addThreadsFlag(sub, a.threads);
     Figure12Options& f = a.figure12;
     sub.add_option("--preset", f.name, "Pattern with a normal map")->capture_default_str();
-    sub.add_option_function<int>("--size", [&f](int w) { f.width = w, f.height = w * 5 / 8; },
-                                 "Width of the global view (height: 5/8 of it)")
+    sub.add_option_function<int>(
+           "--size", [&f](int w) { f.width = w, f.height = w * 5 / 8; }, "Width of the global view (height: 5/8 of it)")
         ->default_str(std::to_string(f.width));
-    sub.add_option("--reference-samples", f.referenceSamples, "Max reference samples per axis")->capture_default_str();
+    addParameterOptions(sub, figure12Members(), f);
     addParameterOption(sub, cameraTiltParam(), f.tiltDeg);
     addParameterOption(sub, anisoParam(), f.aniso);
     sub.add_option("--roughness", a.roughness, "Base Beckmann roughness (default: the preset's)");

@@ -18,18 +18,19 @@ void registerSpectrum(CLI::App& app) {
         int threads = 0;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("spectrum", "Power spectrum (centred, log scale), radial and angular profiles and "
-                                               "anisotropy of images, a pattern, the zoom or marble texture, or a ShaderToy program: "
-                                               "spectrum [flags] images|pattern|zoom|marble|shadertoy ...");
+    auto* cmd =
+        app.add_subcommand("spectrum",
+                           "Power spectrum (centred, log scale), radial and angular profiles and "
+                           "anisotropy of images, a pattern, the zoom or marble texture, or a ShaderToy program: "
+                           "spectrum [flags] images|pattern|zoom|marble|shadertoy ...");
     cmd->fallthrough();
     addOutputFolderFlag(*cmd, args->dir);
     addWindowSizeFlag(*cmd, args->window, "Window size");
-    const CLI::Option* instances = cmd->add_option("--instances", args->study.instances, "Instances averaged (patterns: moved windows; zoom: "
-                                                         "white-noise lattices)")
-        ->capture_default_str();
+    const auto& members = spectrumStudyMembers();
+    const CLI::Option* instances = addMemberOption(*cmd, optionMember(members, "instances"), args->study);
     addEnumFlag(*cmd, "--window", args->study.window, kSpectrumWindowNames, "window",
                 "Taper before the DFT: hann (frames) | none (periodic images)");
-    cmd->add_option("--radial-bins", args->study.radialBins, "Bins of the radial profile")->capture_default_str();
+    addMemberOption(*cmd, optionMember(members, "radialBins"), args->study);
     addThreadsFlag(*cmd, args->threads);
     addTextureSourceCommands(*cmd, [args, instances](const TextureSource& source, const SourceInfo& info) {
         SpectrumStudyOptions o = args->study;

@@ -36,15 +36,9 @@ void registerStability(CLI::App& app) {
         ->check(nameValidator(kFilterNames, "filter"))
         ->type_name("ENUM")
         ->default_str("none,paper,smooth,exact,reference");
-    cmd->add_option("--frames", args->study.frames, "Number of frames")->check(CLI::Range(2, 1000));
-    cmd->add_option("--size", args->study.size, "Frame size in pixels")->check(CLI::Range(8, 2048));
-    cmd->add_option("--from", args->study.from, "First scale (texels per pixel)");
-    cmd->add_option("--to", args->study.to, "Last scale");
+    addParameterOptions(*cmd, stabilityStudyMembers(), args->study);
     addAnisoFlag(*cmd, args->options.aniso);
     addParameterOption(*cmd, referenceMaxSamplesParam(), args->options.referenceMaxSamples);
-    cmd->add_option("--truth-samples", args->study.truthSamples,
-                    "Max samples per axis of the ground truth S̄ that errors are measured against")
-        ->capture_default_str();
     cmd->add_flag("--write-frames", args->writeFrames, "Also write every frame as PNG");
     cmd->add_flag("--video", args->video, "Also write each filter's sequence as <filter>.mp4 (30 fps)");
     addThreadsFlag(*cmd, args->threads);

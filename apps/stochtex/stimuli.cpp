@@ -23,20 +23,26 @@ void registerStimuli(CLI::App& app) {
                                    "tile-to-tile correlation, the experiment page (experiment.html), or "
                                    "with --analyse the detection rates of its answers");
     addOutputFolderFlag(*cmd, args->dir);
+    const auto& members = stimulusSetMembers();
+    const auto member = [&](const char* name) { return addMemberOption(*cmd, optionMember(members, name), args->set); };
     std::vector<CLI::Option*> setFlags{
-        cmd->add_option("--size", args->set.size, "Stimulus side, pixels (shown 1:1)")->capture_default_str(),
+        member("size"),
         cmd->add_option("--tiles", args->set.tiles, "Tile sizes w, pixels, each dividing --size")->delimiter(','),
         cmd->add_option("--correlations", args->set.correlations, "Tile-to-tile correlations in [0, 1] (eq. 2.28)")
             ->delimiter(','),
-        cmd->add_option("--repeats", args->set.repeats, "Stimuli per (w, correlation)")->capture_default_str(),
+        member("repeats"),
         addSeedFlag(*cmd, "--seed", args->set.seed, "Seed of the images and of the trial order"),
-        cmd->add_option("--duration-ms", args->set.durationMs, "Time a stimulus is shown, ms")->capture_default_str(),
-        cmd->add_option("--reset-ms", args->set.resetMs, "Mean-grey screen before each stimulus, ms")
-            ->capture_default_str(),
-        cmd->add_option("--mean", args->set.mean, "Mean display value of stimuli and screen, (0, 1)")
-            ->capture_default_str(),
-        cmd->add_option("--contrast", args->set.contrast, "Noise amplitude, fraction of the largest that never clips")
-            ->capture_default_str()};
+        member("durationMs"),
+        member("resetMs"),
+        bindParameter(*cmd,
+                      cmd->add_option("--mean", args->set.mean, "Mean display value of stimuli and screen, (0, 1)")
+                          ->capture_default_str(),
+                      "mean"),
+        bindParameter(*cmd,
+                      cmd->add_option("--contrast", args->set.contrast,
+                                      "Noise amplitude, fraction of the largest that never clips, (0, 1]")
+                          ->capture_default_str(),
+                      "contrast")};
     cmd->add_option("--analyse,--analyze", args->answers, "Answers CSV of experiment.html: write detection rates");
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args, setFlags] {

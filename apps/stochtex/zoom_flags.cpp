@@ -6,18 +6,16 @@ namespace stochtex::cli {
 
 void addZoomFlags(CLI::App& cmd, ZoomFlags& f, bool withLayers) {
     ZoomParams& p = f.params;
-    if (withLayers) cmd.add_option("--layers", p.layers, "Number of layers n (eq. 2.1)")->capture_default_str();
-    cmd.add_option("--max-scale", p.maxScale, "Maximum scale H")->capture_default_str();
-    cmd.add_option("--time", p.time, "Time t (first frame)")->capture_default_str();
-    cmd.add_option("--envelope-sigma", p.envelopeSigma, "Width of the Gaussian envelope A around a = 1")
-        ->capture_default_str();
+    for (const OptionMember<ZoomParams>& m : zoomParamsMembers())
+        if (withLayers || m.info.name != "layers") addMemberOption(cmd, m, p);
     addEnumFlag(cmd, "--scaling", p.scaling, kZoomScalingNames, "scaling",
                 "sliding (eq. 2.2) or exponential (eq. 2.5, no sliding)");
     addEnumFlag(cmd, "--offsets", p.offsets, kZoomOffsetsNames, "offsets",
                 "Layer offsets: none, simple, hashed (pcg3d) or sin-hash (eq. 2.23)");
     addEnumFlag(cmd, "--interpolation", p.interpolation, kLatticeInterpolationNames, "interpolation",
                 "Base lattice reconstruction: nearest or linear");
-    cmd.add_option("--base", f.base, "Base texture: 'white' (white noise) or an image file (colour: gray by 0.21r + 0.72g + 0.07b)")
+    cmd.add_option("--base", f.base,
+                   "Base texture: 'white' (white noise) or an image file (colour: gray by 0.21r + 0.72g + 0.07b)")
         ->capture_default_str();
     cmd.add_option("--base-size", f.baseSize, "Period of the white-noise lattice")
         ->check(CLI::Range(2, 16384))
@@ -57,10 +55,12 @@ void addCorrelationStudyFlags(CLI::App& cmd, CorrelationStudyOptions& study, con
     cmd.add_option("--layers-list", study.layers, "Layer counts n of the correlation grid, e.g. 16,8,4,2")
         ->delimiter(',')
         ->default_str("16,8,4,2");
-    cmd.add_option("--instances", study.instances, "Instances N of the statistical accumulator")->capture_default_str();
-    bindParameter(cmd, cmd.add_option(sizeFlag, study.size, "Extent of the correlation plots in pixels from the zoom centre")
-                      ->capture_default_str(),
-                  "plotSize");
+    const auto& members = correlationStudyMembers();
+    addMemberOption(cmd, optionMember(members, "instances"), study);
+    // The plots' extent: --size in `correlation`, --plot-size in `analyze`.
+    ParamInfo plotSize = optionMember(members, "plotSize").info;
+    plotSize.flag = sizeFlag.substr(2);
+    addParameterOption(cmd, plotSize, study.size);
 }
 
 }  // namespace stochtex::cli

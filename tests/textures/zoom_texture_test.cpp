@@ -29,7 +29,8 @@ TEST(ZoomTexture, LayersFollowEquations22And25WithANormalisedEnvelope) {
             for (size_t i = 0; i < layers.size(); ++i) {
                 sum += layers[i].weight;
                 const double phase = double(i) * 2.0 / 8.0;
-                const double m = std::fmod(std::fmod(s == ZoomScaling::Sliding ? phase - t : t - phase, 2.0) + 2.0, 2.0);
+                const double m =
+                    std::fmod(std::fmod(s == ZoomScaling::Sliding ? phase - t : t - phase, 2.0) + 2.0, 2.0);
                 EXPECT_NEAR(layers[i].scale, s == ZoomScaling::Sliding ? m : 2.0 * std::exp(-m), 1e-12);
             }
             EXPECT_NEAR(sum, 1.0, 1e-12);
@@ -121,12 +122,12 @@ TEST(ZoomTexture, ErrorsNameTheParameterAndTheValue) {
     p.layers = 0;
     InputError e = test::inputErrorOf([&] { validateZoomParams(p); });
     EXPECT_EQ(e.parameter(), "layers");
-    EXPECT_STREQ(e.what(), "layers (n) must be in [1, 1024], got 0");
+    EXPECT_STREQ(e.what(), "layers must be in [1, 1024], got 0");
     p = ZoomParams{};
     p.envelopeSigma = -0.25;
     e = test::inputErrorOf([&] { validateZoomParams(p); });
     EXPECT_EQ(e.parameter(), "envelopeSigma");
-    EXPECT_STREQ(e.what(), "envelopeSigma (s) must be a finite number > 0, got -0.25");
+    EXPECT_STREQ(e.what(), "envelopeSigma must be in [1e-06, 1e+06], got -0.25");
     e = test::inputErrorOf([] { parseZoomOffsets("random"); });
     EXPECT_EQ(e.parameter(), "offsets");
     EXPECT_STREQ(e.what(), "offsets must be none, simple, hashed or sin-hash, got \"random\"");

@@ -57,6 +57,19 @@ int checkInteger(const ParamInfo& p, long long value) {
     return int(value);
 }
 
+std::string kebabCase(std::string_view name) {
+    std::string flag;
+    for (const char c : name) {
+        if (c >= 'A' && c <= 'Z') {
+            flag += '-';
+            flag += char(c - 'A' + 'a');
+        } else {
+            flag += c;
+        }
+    }
+    return flag;
+}
+
 int readInteger(const JsonReader& object, const ParamInfo& p) {
     if (p.required()) return object.at(p.name).integer(int(p.min), int(p.max));
     return object.integer(p.name, p.fallback.get<int>(), int(p.min), int(p.max));

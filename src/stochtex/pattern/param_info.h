@@ -5,7 +5,12 @@
 // per-node benchmarks. Graph nodes (graph_nodes.h) and the members of a
 // pattern file (pattern_members.h) are tables of these.
 #include <cmath>
+#include <span>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -71,5 +76,53 @@ ParamInfo optionParam(std::string name, ParamType type, std::string description,
 // follows the range.
 double checkNumber(const ParamInfo& p, double value, const std::string& unit = "");
 int checkInteger(const ParamInfo& p, long long value);
+
+// A camelCase parameter name as a flag: "truthSamples" → "truth-samples".
+std::string kebabCase(std::string_view name);
+
+// A number member of an option struct described by its entry. One table of
+// these per struct, beside the study or tool that reads it, states each
+// number once — name, meaning, range, flag — for the library's check
+// (checkMembers) and the CLI's options (apps/stochtex:
+// addParameterOptions). The default is the struct's own initialiser, so
+// it is not written twice; the flag is the name in kebab case unless given.
+template <class Options>
+struct OptionMember {
+    ParamInfo info;
+    std::variant<int Options::*, double Options::*> member;
+
+    template <class T>
+    requires std::is_same_v<T, int> || std::is_same_v<T, double> OptionMember(std::string name, std::string description,
+                                                                              double min, double max, T Options::*m,
+                                                                              std::string flag = {})
+        : info(optionParam(name, std::is_same_v<T, int> ? ParamType::Integer : ParamType::Number,
+                           std::move(description), double(Options{}.*m), min, max,
+                           flag.empty() ? kebabCase(name) : std::move(flag))),
+          member(m) {}
+};
+
+// Each member of `o` that `members` describes within its entry's range
+// (InputError at the first that is not: checkNumber, checkInteger).
+template <class Options>
+void checkMembers(const Options& o, std::span<const OptionMember<Options>> members) {
+    for (const OptionMember<Options>& m : members)
+        std::visit(
+            [&](auto p) {
+                if constexpr (std::is_same_v<decltype(p), int Options::*>)
+                    checkInteger(m.info, o.*p);
+                else
+                    checkNumber(m.info, o.*p);
+            },
+            m.member);
+}
+
+// The entry of the member called `name` (logic_error when there is none: a
+// caller's typo, not the user's).
+template <class Options>
+const OptionMember<Options>& optionMember(std::span<const OptionMember<Options>> members, std::string_view name) {
+    for (const OptionMember<Options>& m : members)
+        if (m.info.name == name) return m;
+    throw std::logic_error("no option member " + std::string(name));
+}
 
 }  // namespace stochtex

@@ -2,9 +2,11 @@
 // The report page of the thesis's studies (`stochtex analyze`): the zoom
 // texture's studies (zoom_studies.h), its frame analyses, the image bases,
 // the marble texture and the perception stimuli, in one page.
+#include <span>
 #include <string>
 #include <vector>
 
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/studies/image_base_study.h"
 #include "stochtex/studies/marble_study.h"
 #include "stochtex/studies/stimuli.h"
@@ -17,14 +19,15 @@ namespace stochtex {
 struct ArtifactReportOptions {
     CorrelationStudyOptions correlation;  // its zoom texture and base feed every part
     ContrastStudyOptions contrast;
-    int contrastLayers = 16;              // n of the contrast part (Figure 2.6 uses 16)
+    int contrastLayers = 16;  // n of the contrast part (Figure 2.6 uses 16)
     // The frame analyses of the zoom texture (spectrum over instances,
     // optical flow, temporal coherence and its curve over n), on frames of
     // frameSize² centred on the zoom centre.
-    int frameSize = 256;                              // [16, 2048]
-    int spectrumInstances = 16;                       // [1, 100000]
+    // The numbers' ranges: artifactReportMembers().
+    int frameSize = 256;
+    int spectrumInstances = 16;
     std::vector<int> coherenceLayers{2, 3, 4, 6, 8, 12};  // each [1, 64]
-    int coherenceFrames = 32;                         // over two periods of the zoom, [2, 10000]
+    int coherenceFrames = 32;
     // Image textures as the base (Figures 2.15–2.17; none: the part is left out).
     std::vector<ImageBase> imageBases;
     ImageBaseStudyOptions imageBase;
@@ -33,6 +36,8 @@ struct ArtifactReportOptions {
     MarbleStudyOptions marble;
     StimulusSetOptions stimuli;
 };
+// The entries of ArtifactReportOptions' own numbers (its check; the CLI's flags).
+std::span<const OptionMember<ArtifactReportOptions>> artifactReportMembers();
 // InputError for unusable settings, before any work.
 void validateArtifactReport(const ArtifactReportOptions& options);
 // Runs sliding, contrast, correlation, spectrum, flow, temporal coherence,

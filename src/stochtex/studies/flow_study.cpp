@@ -8,22 +8,30 @@
 
 namespace stochtex {
 
+std::span<const OptionMember<FlowStudyOptions>> flowStudyMembers() {
+    using O = FlowStudyOptions;
+    static const OptionMember<O> members[] = {
+        {"frames", "Frames (image files: all)", 2, 10000, &O::frames},
+        {"timeStep", "Time between frames (image files: one file per frame)", -1e6, 1e6, &O::timeStep, "dt"},
+        {"step", "Grid of the vectors, pixels (at most the window's side)", 1, 4096, &O::step},
+        {"arrowScale", "Arrows drawn this many times their length", 1e-3, 1000, &O::arrowScale},
+        {"instance", "The source's instance", 0, 1000000, &O::instance},
+    };
+    return members;
+}
+
 void validateFlowStudy(const FlowStudyOptions& o, const TextureSource* source) {
     const SourceRegion& r = o.region;
     if (r.width < 16 || r.height < 16 || r.width > 4096 || r.height > 4096)
         throw InputError::parameter(
             "size", "must be 16…4096 pixels a side, got " + std::to_string(r.width) + "×" + std::to_string(r.height));
-    if (o.frames < 2 || o.frames > 10000)
-        throw InputError::parameter("frames", "must be 2…10000, got " + std::to_string(o.frames));
-    if (!std::isfinite(o.time) || !std::isfinite(o.timeStep) || !std::isfinite(o.time + o.timeStep * o.frames))
+    checkMembers(o, flowStudyMembers());
+    if (!std::isfinite(o.time) || !std::isfinite(o.time + o.timeStep * o.frames))
         throw InputError::parameter("time", "the frame times must be finite");
-    if (o.step < 1 || o.step > std::min(r.width, r.height))
-        throw InputError::parameter("step", "must be 1…the window's side, got " + std::to_string(o.step));
+    if (o.step > std::min(r.width, r.height))
+        throw InputError::parameter("step", "must be at most the window's side, got " + std::to_string(o.step));
     if (o.margin < 0 || 2 * o.margin >= std::min(r.width, r.height))
         throw InputError::parameter("margin", "must leave part of the window, got " + std::to_string(o.margin));
-    if (!(o.arrowScale > 0 && o.arrowScale <= 1000)) throw InputError::parameter("arrowScale", "must be in (0, 1000]");
-    if (o.instance < 0 || o.instance > 1000000)
-        throw InputError::parameter("instance", "must be in [0, 1000000], got " + std::to_string(o.instance));
     if (source) {
         for (int k = 0; k < o.frames; ++k) source->checkWindow(o.region, o.time + k * o.timeStep);
         source->checkInstances(o.instance + 1);

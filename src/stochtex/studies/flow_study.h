@@ -7,10 +7,12 @@
 // expansion rate over the pairs.
 #include <functional>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "stochtex/analysis/optical_flow.h"
 #include "stochtex/image/colour_space.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -20,8 +22,8 @@ namespace stochtex {
 
 struct FlowStudyOptions {
     SourceRegion region = SourceRegion::centred(256, 256);  // 16…4096 pixels a side
-    double time = 0, timeStep = 1.0 / 30;  // frame k at time + k·timeStep
-    int frames = 2;                        // 2…10000
+    double time = 0, timeStep = 1.0 / 30;                   // frame k at time + k·timeStep
+    int frames = 2;
     int instance = 0;
     FlowMethod method = FlowMethod::Farneback;
     int step = 16;    // vectors on a grid of `step` pixels…
@@ -30,9 +32,11 @@ struct FlowStudyOptions {
     // origin (0, 0) where the window holds it (the zoom centre), else the
     // window's centre.
     double centreX = std::numeric_limits<double>::quiet_NaN(), centreY = std::numeric_limits<double>::quiet_NaN();
-    double arrowScale = 4;  // arrows drawn this many times their length
+    double arrowScale = 4;                      // arrows drawn this many times their length
     Transfer frameTransfer = Transfer::Linear;  // as SpectrumStudyOptions::frameTransfer
 };
+// The entries of FlowStudyOptions' numbers (its check; the CLI's flags).
+std::span<const OptionMember<FlowStudyOptions>> flowStudyMembers();
 // InputError naming the parameter; with a source, also its checkWindow at
 // every frame's time. Before any work.
 void validateFlowStudy(const FlowStudyOptions& options, const TextureSource* source = nullptr);

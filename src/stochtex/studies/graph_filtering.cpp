@@ -20,14 +20,19 @@ Figure14Options figure14Options() {
     return o;
 }
 
+std::span<const OptionMember<Figure14Options>> figure14Members() {
+    using O = Figure14Options;
+    static const OptionMember<O> members[] = {
+        {"size", "Image size per footprint", 16, 2048, &O::size},
+        {"referenceSamples", "Max reference samples per axis", 1, 4096, &O::referenceSamples},
+    };
+    return members;
+}
+
 void validateFigure14(const Figure14Options& o) {
     if (!o.pattern.graph)
         throw InputError(o.name + ": Figure 14 needs a texture graph (a pattern file with \"nodes\")");
-    if (o.size < 16 || o.size > 2048)
-        throw InputError::parameter("size", "must be in [16, 2048], got " + std::to_string(o.size));
-    if (o.referenceSamples < 1 || o.referenceSamples > 4096)
-        throw InputError::parameter("referenceSamples",
-                                    "must be in [1, 4096], got " + std::to_string(o.referenceSamples));
+    checkMembers(o, figure14Members());
     validateReferenceTolerance(o.referenceTolerance);
     if (o.footprints.empty() || o.footprints.size() > 12)
         throw InputError::parameter("footprints", "needs 1 to 12 footprints");

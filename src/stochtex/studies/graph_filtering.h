@@ -13,10 +13,12 @@
 //   matched, exact statistics — moment matching on the leaves' exact
 //               footprint statistics: the error of the approximation itself;
 //   matched   — moment matching on the estimators' statistics (real time).
+#include <span>
 #include <string>
 #include <vector>
 
 #include "stochtex/core/progress.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 #include "stochtex/report/page.h"
@@ -28,8 +30,8 @@ namespace stochtex {
 struct Figure14Options {
     PatternSpec pattern;  // a graph; figure14Options() loads the preset figure14
     std::string name = "figure14";
-    int size = 256;             // image side per footprint, [16, 2048]
-    int referenceSamples = 64;  // per axis, [1, 4096]: the cap
+    int size = 256;             // image side per footprint (ranges: figure14Members())
+    int referenceSamples = 64;  // per axis: the cap
     // The reference and the exact statistics are rendered at the fewest
     // samples (up to the cap) that move them by less than this when doubled
     // (studies/reference_samples.h).
@@ -39,6 +41,8 @@ struct Figure14Options {
 };
 // The defaults with the preset figure14.
 Figure14Options figure14Options();
+// The entries of Figure14Options' numbers (its check; the CLI's flags).
+std::span<const OptionMember<Figure14Options>> figure14Members();
 // InputError for unusable options (sizes, footprints, a pattern that is not a graph).
 void validateFigure14(const Figure14Options& options);
 
@@ -54,7 +58,8 @@ struct Figure14Column {
 struct Figure14Result {
     std::vector<Figure14Column> columns;
     Table table;                  // figure14.csv
-    std::vector<Figure> figures;  // figure14.png (the stages), figure14_filtering.png, figure14_errors.png, then the images per footprint
+    std::vector<Figure> figures;  // figure14.png (the stages), figure14_filtering.png, figure14_errors.png, then the
+                                  // images per footprint
 };
 Figure14Result figure14(const Figure14Options& options, const Progress& progress = {});
 // Its report: figure14.csv and the figures.

@@ -66,12 +66,18 @@ Image correlationImage(const Image& c, const ImageBaseStudyOptions& o) {
 
 }  // namespace
 
+std::span<const OptionMember<ImageBaseStudyOptions>> imageBaseStudyMembers() {
+    using O = ImageBaseStudyOptions;
+    static const OptionMember<O> members[] = {
+        {"size", "Frame and correlation-map side in pixels", 8, 1024, &O::size},
+        {"instances", "Translations of each image averaged", 2, 100000, &O::instances},
+    };
+    return members;
+}
+
 void validateImageBaseStudy(const ImageBaseStudyOptions& o, const std::vector<ImageBase>& images) {
     if (images.empty()) throw InputError::parameter("images", "must name at least one image");
-    if (o.size < 8 || o.size > 1024)
-        throw InputError::parameter("size", "must be in [8, 1024], got " + std::to_string(o.size));
-    if (o.instances < 2 || o.instances > 100000)
-        throw InputError::parameter("instances", "must be in [2, 100000], got " + std::to_string(o.instances));
+    checkMembers(o, imageBaseStudyMembers());
     if (o.referenceX >= o.size)
         throw InputError::parameter("referenceX", "must be below the size, got " + std::to_string(o.referenceX));
     if (o.referenceY >= o.size)

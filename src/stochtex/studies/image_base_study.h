@@ -5,9 +5,11 @@
 // zoom texture over it without offsets and with hashed offsets, each with
 // its correlation map. Textures with regular structure keep echoes of it
 // (ghosting) that the offsets cannot remove; stochastic ones keep their look.
+#include <span>
 #include <string>
 #include <vector>
 
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -21,14 +23,16 @@ struct ImageBase {
 };
 
 struct ImageBaseStudyOptions {
-    ZoomParams zoom;       // the layers (Figure 2.17: 8) and scales; offsets are set per variant
-    int size = 128;        // frame and correlation-map side, [8, 1024]
-    int instances = 256;   // translations of the image averaged, [2, 100000]
+    ZoomParams zoom;      // the layers (Figure 2.17: 8) and scales; offsets are set per variant
+    int size = 128;       // frame and correlation-map side (ranges: imageBaseStudyMembers())
+    int instances = 256;  // translations of the image averaged
     // The reference point of the correlation maps, in frame pixels (Figure
     // 2.15 takes it in the bottom-right quadrant); negative: 3/4 of the size.
     int referenceX = -1, referenceY = -1;
-    int echoRadius = 4;    // the echo figure ignores correlations within this many pixels of the reference
+    int echoRadius = 4;  // the echo figure ignores correlations within this many pixels of the reference
 };
+// The entries of ImageBaseStudyOptions' numbers (its check; the CLI's flags).
+std::span<const OptionMember<ImageBaseStudyOptions>> imageBaseStudyMembers();
 // InputError naming the parameter (size, instances, referenceX, …).
 void validateImageBaseStudy(const ImageBaseStudyOptions& options, const std::vector<ImageBase>& images);
 

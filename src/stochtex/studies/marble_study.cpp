@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "stochtex/analysis/correlation_shape.h"
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/studies/flow_study.h"
 #include "stochtex/studies/spectrum_study.h"
 #include "stochtex/studies/zoom_studies.h"
@@ -16,12 +16,6 @@
 namespace stochtex {
 
 namespace {
-
-void checkInt(const char* name, int v, int lo, int hi) {
-    if (v < lo || v > hi)
-        throw InputError::parameter(name, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
-                                              std::to_string(v));
-}
 
 MarbleParams panel(const MarbleStudyOptions& o, MarbleScaling scaling, MarbleLayer layer) {
     MarbleParams p = o.marble;
@@ -65,11 +59,26 @@ Image correlationPanel(const Image& c, const std::string& title, double x0, doub
 
 }  // namespace
 
+std::span<const OptionMember<MarbleStudyOptions>> marbleStudyMembers() {
+    using O = MarbleStudyOptions;
+    static const OptionMember<O> members[] = {
+        {"size", "Frames of N×N pixels centred on the origin", 32, 1024, &O::size},
+        {"correlationSize", "Correlation window around the point, pixels (at most the size)", 16, 512,
+         &O::correlationSize},
+        {"instances", "Seeds per correlation map", 16, 100000, &O::instances},
+        {"spectrumInstances", "Seeds per spectrum", 1, 1000, &O::spectrumInstances},
+        {"slideRate", "Sliding: r in l = m + r t", -100, 100, &O::slideRate},
+        {"frames", "Sliding frames", 2, 2000, &O::frames},
+        {"timeStep", "Time between sliding frames", 1e-4, 10, &O::timeStep, "dt"},
+        {"flowStep", "Pixels between flow vectors (at most half the size)", 4, 512, &O::flowStep, "step"},
+    };
+    return members;
+}
+
 void validateMarbleStudy(const MarbleStudyOptions& o) {
     validateMarbleParams(o.marble);
     if (o.scalings.empty()) throw InputError::parameter("scalings", "must name at least one scaling");
-    checkInt("size", o.size, 32, 1024);
-    checkInt("correlationSize", o.correlationSize, 16, 512);
+    checkMembers(o, marbleStudyMembers());
     if (o.correlationSize > o.size)
         throw InputError::parameter("correlationSize", "must not exceed size (" + std::to_string(o.size) + "), got " +
                                                            std::to_string(o.correlationSize));
@@ -77,16 +86,14 @@ void validateMarbleStudy(const MarbleStudyOptions& o) {
         throw InputError::parameter("pointX", "must be within 2¹⁹ pixels of the origin, got " + formatValue(o.pointX));
     if (!std::isnan(o.pointY) && !(std::abs(o.pointY) <= 1 << 19))
         throw InputError::parameter("pointY", "must be within 2¹⁹ pixels of the origin, got " + formatValue(o.pointY));
-    checkInt("instances", o.instances, 16, 100000);
-    checkInt("spectrumInstances", o.spectrumInstances, 1, 1000);
-    checkInt("frames", o.frames, 2, 2000);
-    if (!(std::abs(o.slideRate) <= 100)) throw InputError::parameter("slideRate", "must be in [-100, 100]");
-    if (!(o.timeStep > 0 && o.timeStep <= 10)) throw InputError::parameter("timeStep", "must be in (0, 10]");
-    checkInt("flowStep", o.flowStep, 4, o.size / 2);
+    if (o.flowStep > o.size / 2)
+        throw InputError::parameter("flowStep", "must be at most half the size (" + std::to_string(o.size / 2) +
+                                                    "), got " + std::to_string(o.flowStep));
     // The sliding law must keep l in the kernel's range over every frame.
     const double end = o.marble.level + o.slideRate * o.timeStep * (o.frames - 1);
     if (end < -8 || end > 40)
-        throw InputError::parameter("slideRate", "takes l to " + formatValue(end) + " by the last frame, outside [-8, 40]");
+        throw InputError::parameter("slideRate",
+                                    "takes l to " + formatValue(end) + " by the last frame, outside [-8, 40]");
 }
 
 double marbleAnisotropy(const MarbleParams& p, double x, double y) {
@@ -144,21 +151,24 @@ void stretchingPart(const MarbleStudyOptions& o, MarbleStudyResult& r) {
     so.yLabel = "σ₁/σ₂ of ∂u/∂x (clipped at 20)";
     so.logY = true;
     so.bands = {{px - 1, px + 1}};
-    r.figures.push_back(chartFigure("stretch.png", {curves, so},
-                         "How much the scaling u = x / 2^l(x) stretches the noise: the ratio of the singular values of "
-                         "its Jacobian, along the axis y = 0 and along the reference point's row. It is infinite at "
-                         "the folds, where 1 − x ln 2 ∂l/∂x = 0 and the texture is mirrored, and grows with |y| where "
-                         "l changes (a shear). The shaded band marks the correlation's reference point (x = " +
-                             TableCell::value(px, "%.1f").text + ", σ₁/σ₂ = " +
-                             TableCell::value(r.pointAnisotropy, "%.2f").text + ")."));
+    r.figures.push_back(
+        chartFigure("stretch.png", {curves, so},
+                    "How much the scaling u = x / 2^l(x) stretches the noise: the ratio of the singular values of "
+                    "its Jacobian, along the axis y = 0 and along the reference point's row. It is infinite at "
+                    "the folds, where 1 − x ln 2 ∂l/∂x = 0 and the texture is mirrored, and grows with |y| where "
+                    "l changes (a shear). The shaded band marks the correlation's reference point (x = " +
+                        TableCell::value(px, "%.1f").text +
+                        ", σ₁/σ₂ = " + TableCell::value(r.pointAnisotropy, "%.2f").text + ")."));
 }
 
 // Correlation over seeds around the reference point, per layer and scaling.
 void correlationPart(const MarbleStudyOptions& o, const Progress& progress, MarbleStudyResult& r) {
     r.correlation.title = "Correlation around the reference point";
-    r.correlation.note = "over " + std::to_string(o.instances) + " seeds; the correlated region is Corr ≥ 0.5 connected "
+    r.correlation.note = "over " + std::to_string(o.instances) +
+                         " seeds; the correlated region is Corr ≥ 0.5 connected "
                          "to the point; the anti-correlation is the lowest 5×5 mean of the map. Each value has a "
-                         "standard error of about 1/√N = " + TableCell::value(1 / std::sqrt(double(o.instances)), "%.3f").text +
+                         "standard error of about 1/√N = " +
+                         TableCell::value(1 / std::sqrt(double(o.instances)), "%.3f").text +
                          ", which the scaling-only maps keep whole (a cell is one value, so the 5×5 mean does not "
                          "reduce it): their anti-correlation is that error, the base noise's is its lobes. The "
                          "continuous scaling's anisotropy σ₁/σ₂ at the point is " +
@@ -232,18 +242,18 @@ void spectraPart(const MarbleStudyOptions& o, const Progress& progress, MarbleSt
         rows.emplace_back();
         captions.emplace_back();
         for (MarbleLayer layer : {MarbleLayer::Marble, MarbleLayer::ScaledNoise}) {
-            const SpectrumStudyResult sp = spectrumStudy(
-                MarbleSource(panel(o, s, layer)), so,
-                progressPart(progress, double(done) / (2 * o.scalings.size()),
-                             double(done + 1) / (2 * o.scalings.size()), layerName(layer)));
+            const SpectrumStudyResult sp =
+                spectrumStudy(MarbleSource(panel(o, s, layer)), so,
+                              progressPart(progress, double(done) / (2 * o.scalings.size()),
+                                           double(done + 1) / (2 * o.scalings.size()), layerName(layer)));
             ++done;
             const SpectrumGeometry& g = sp.geometry;
             r.spectra.add({layerName(layer), scalingName(s), TableCell::value(g.anisotropy, "%.3f"),
                            TableCell::value(g.orientationDeg, "%.1f"), TableCell::value(g.angularMaxMin, "%.3f"),
                            TableCell::value(g.meanRadius)});
             rows.back().push_back(logSpectrumImage(sp.spectrum));
-            captions.back().push_back(layerName(layer) + ", " + scalingName(s) + ": λ₁/λ₂ = " +
-                                      TableCell::value(g.anisotropy, "%.2f").text);
+            captions.back().push_back(layerName(layer) + ", " + scalingName(s) +
+                                      ": λ₁/λ₂ = " + TableCell::value(g.anisotropy, "%.2f").text);
         }
     }
     r.figures.push_back({"spectra.png", sheet(rows, captions),
@@ -256,8 +266,9 @@ void spectraPart(const MarbleStudyOptions& o, const Progress& progress, MarbleSt
 void slidingPart(const MarbleStudyOptions& o, const Progress& progress, const MarbleFrameSink& onFrame,
                  MarbleStudyResult& r) {
     r.sliding.title = "Sliding: optical flow while l grows with time";
-    r.sliding.note = "l = m + r t, r = " + formatValue(o.slideRate) + " per time unit, Δt = " + formatValue(o.timeStep) +
-                     ", " + enumName(kFlowMethodNames, o.flowMethod) +
+    r.sliding.note = "l = m + r t, r = " + formatValue(o.slideRate) +
+                     " per time unit, Δt = " + formatValue(o.timeStep) + ", " +
+                     enumName(kFlowMethodNames, o.flowMethod) +
                      " flow averaged over the frame pairs; a texture scaled about the origin moves outward at the rate "
                      "2^(rΔt) − 1 (the scaled noise); the marble's bands do not move";
     r.sliding.columns = {{"layer", "layer", ""},
@@ -307,12 +318,13 @@ void slidingPart(const MarbleStudyOptions& o, const Progress& progress, const Ma
     eo.title = "Expansion rate per frame pair";
     eo.xLabel = "pair k (frames k → k + 1)";
     eo.yLabel = "outward motion / distance";
-    r.figures.push_back(chartFigure("sliding_expansion.png", {expansion, eo},
-                         "The least-squares rate of outward motion per frame pair. With the continuous scaling the "
-                         "scaled noise slides outward at about the scaling's own rate (" +
-                             TableCell::value(scalingRate, "%.4f").text +
-                             " per frame) and the marble, whose bands stay, more slowly; with the blended scales "
-                             "nothing moves: the two fields cross-fade in place."));
+    r.figures.push_back(
+        chartFigure("sliding_expansion.png", {expansion, eo},
+                    "The least-squares rate of outward motion per frame pair. With the continuous scaling the "
+                    "scaled noise slides outward at about the scaling's own rate (" +
+                        TableCell::value(scalingRate, "%.4f").text +
+                        " per frame) and the marble, whose bands stay, more slowly; with the blended scales "
+                        "nothing moves: the two fields cross-fade in place."));
 }
 
 }  // namespace
@@ -323,7 +335,8 @@ std::vector<std::string> marbleVideoNames(const MarbleStudyOptions& o) {
     return names;
 }
 
-MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& progress, const MarbleFrameSink& onFrame) {
+MarbleStudyResult marbleStudy(const MarbleStudyOptions& o, const StudyProgress& progress,
+                              const MarbleFrameSink& onFrame) {
     validateMarbleStudy(o);
     MarbleStudyResult r;
     r.videos = marbleVideoNames(o);
@@ -349,10 +362,14 @@ Report marbleReport(const MarbleStudyResult& r, bool videos) {
     if (videos)
         for (const std::string& v : r.videos) sliding.videos.push_back({v, htmlEscape(v)});
     for (const Figure& f : r.figures) {
-        if (f.file == "stretching.png" || f.file == "stretch.png") stretching.figures.push_back(f);
-        else if (f.file == "correlation.png") correlation.figures.push_back(f);
-        else if (f.file == "spectra.png") spectra.figures.push_back(f);
-        else sliding.figures.push_back(f);
+        if (f.file == "stretching.png" || f.file == "stretch.png")
+            stretching.figures.push_back(f);
+        else if (f.file == "correlation.png")
+            correlation.figures.push_back(f);
+        else if (f.file == "spectra.png")
+            spectra.figures.push_back(f);
+        else
+            sliding.figures.push_back(f);
     }
     report.sections = {stretching, correlation, spectra, sliding};
     return report;

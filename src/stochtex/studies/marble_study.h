@@ -14,10 +14,12 @@
 //     motion the fix removes (Figures 2.23–2.24).
 #include <functional>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "stochtex/analysis/optical_flow.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -28,19 +30,19 @@ namespace stochtex {
 struct MarbleStudyOptions {
     MarbleParams marble;  // the texture; each panel sets the scaling and the layer, sliding its own law of l
     std::vector<MarbleScaling> scalings{MarbleScaling::Continuous, MarbleScaling::BlendedCorrected};
-    int size = 256;  // frames of size × size pixels centred on the origin (32…1024)
+    int size = 256;  // frames of size × size pixels centred on the origin (ranges: marbleStudyMembers())
     // Correlation: a correlationSize² window centred on the reference point,
     // in pixels from the origin. NaN: x = −period/4 of l, where l changes
     // fastest along x, and y halfway from the axis to the frames' edge (less
     // the window): where the scaling x / 2^l(x) shears the noise's cells
     // into long slanted ones (marbleAnisotropy).
-    int correlationSize = 96;  // 16…512
+    int correlationSize = 96;
     double pointX = std::numeric_limits<double>::quiet_NaN(), pointY = std::numeric_limits<double>::quiet_NaN();
-    int instances = 256;         // seeds per correlation map (16…100000)
-    int spectrumInstances = 8;   // seeds per spectrum (1…1000)
+    int instances = 256;        // seeds per correlation map
+    int spectrumInstances = 8;  // seeds per spectrum
     // Sliding: l = m + r t with r = slideRate (n = 0), frames at kΔt.
     double slideRate = 1;
-    int frames = 48;  // 2…2000
+    int frames = 48;
     double timeStep = 1.0 / 24;
     int flowStep = 16;  // pixels between the flow vectors
     // DIS: Farnebäck's small polynomial windows underestimate the motion of
@@ -48,6 +50,8 @@ struct MarbleStudyOptions {
     // DIS and Lucas–Kanade recover the scaling's rate within a few percent.
     FlowMethod flowMethod = FlowMethod::Dis;
 };
+// The entries of MarbleStudyOptions' numbers (its check; the CLI's flags).
+std::span<const OptionMember<MarbleStudyOptions>> marbleStudyMembers();
 // InputError naming the parameter, before any work.
 void validateMarbleStudy(const MarbleStudyOptions& options);
 
@@ -61,10 +65,11 @@ double marbleAnisotropy(const MarbleParams& params, double x, double y);
 
 struct MarbleStudyResult {
     double pointX = 0, pointY = 0;  // the correlation reference used
-    double pointAnisotropy = 1;      // marbleAnisotropy there
-    Table correlation;  // correlation.csv: layer × scaling, the maps' shapes
-    Table spectra;      // spectra.csv: layer × scaling, anisotropy
-    Table sliding;      // sliding.csv: layer (marble, scaled noise) × scaling, the mean flow figures beside the scaling's own rate
+    double pointAnisotropy = 1;     // marbleAnisotropy there
+    Table correlation;              // correlation.csv: layer × scaling, the maps' shapes
+    Table spectra;                  // spectra.csv: layer × scaling, anisotropy
+    Table sliding;  // sliding.csv: layer (marble, scaled noise) × scaling, the mean flow figures beside the scaling's
+                    // own rate
     std::vector<Figure> figures;
     std::vector<std::string> videos;  // marbleVideoNames
 };

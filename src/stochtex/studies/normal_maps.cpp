@@ -29,13 +29,19 @@ FilterOptions leanVariantOptions(LeanVariant variant, int aniso, int referenceSa
     return o;
 }
 
+std::span<const OptionMember<Figure12Options>> figure12Members() {
+    using O = Figure12Options;
+    static const OptionMember<O> members[] = {
+        {"referenceSamples", "Max reference samples per axis", 1, 4096, &O::referenceSamples},
+    };
+    return members;
+}
+
 void validateFigure12(const Figure12Options& o) {
     if (o.width < 32 || o.height < 32 || o.width > 4096 || o.height > 4096)
         throw InputError::parameter(
             "size", "must be in [32, 4096] per side, got " + std::to_string(o.width) + "x" + std::to_string(o.height));
-    if (o.referenceSamples < 1 || o.referenceSamples > 4096)
-        throw InputError::parameter("referenceSamples",
-                                    "must be in [1, 4096], got " + std::to_string(o.referenceSamples));
+    checkMembers(o, figure12Members());
     const auto& c = o.crop;
     if (!(c[0] >= 0 && c[0] < c[2] && c[2] <= 1 && c[1] >= 0 && c[1] < c[3] && c[3] <= 1))
         throw InputError::parameter(

@@ -4,11 +4,13 @@
 // supersampled reference, as data (tables and images; writing them is the
 // caller's).
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "stochtex/core/progress.h"
 #include "stochtex/pattern/filter_options.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/report.h"
@@ -18,10 +20,10 @@ namespace stochtex {
 
 // The variants of Figure 12, each a FilterOptions value over the lean response.
 enum class LeanVariant {
-    Reference,    // S̄: the unfiltered shading (base lobe at each point's slope) supersampled over the footprint
-    Ours,         // μ̂, σ̂², ĉov of the slopes (eq. 9, 14, 18) in the lobe
-    NoCovariance, // the same without ĉov (the slopes treated as independent, Fig. 12d)
-    DeliotHeitz,  // one constant variance per LOD and no covariance [DH19] (Fig. 12a)
+    Reference,     // S̄: the unfiltered shading (base lobe at each point's slope) supersampled over the footprint
+    Ours,          // μ̂, σ̂², ĉov of the slopes (eq. 9, 14, 18) in the lobe
+    NoCovariance,  // the same without ĉov (the slopes treated as independent, Fig. 12d)
+    DeliotHeitz,   // one constant variance per LOD and no covariance [DH19] (Fig. 12a)
 };
 inline const EnumNames<LeanVariant> kLeanVariantNames{{"reference", LeanVariant::Reference},
                                                       {"ours", LeanVariant::Ours},
@@ -37,10 +39,12 @@ struct Figure12Options {
     double scale = 0.5;             // camera: texels per pixel at the view's centre at tilt 0
     double tiltDeg = 70, fovDeg = 50;
     int aniso = 8;
-    int referenceSamples = 48;      // per axis, [1, 4096]
+    int referenceSamples = 48;  // per axis (range: figure12Members())
     // The mid-distance crop, as fractions of the global view [x0, y0, x1, y1].
     std::array<double, 4> crop{0.3, 0.42, 0.7, 0.62};
 };
+// The entries of Figure12Options' numbers that have one (its check; the CLI's flags).
+std::span<const OptionMember<Figure12Options>> figure12Members();
 // InputError naming the parameter (size, referenceSamples, crop, …) or, for
 // a pattern without a normal map, the pattern.
 void validateFigure12(const Figure12Options& options);

@@ -172,12 +172,18 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
     return res;
 }
 
+std::span<const OptionMember<Figure4Options>> figure4Members() {
+    using O = Figure4Options;
+    static const OptionMember<O> members[] = {
+        {"size", "Image size per footprint", 16, 4096, &O::size},
+        {"referenceSamples", "Max reference samples per axis", 1, 4096, &O::referenceSamples},
+    };
+    return members;
+}
+
 void validateFigure4(const Figure4Options& o) {
     const std::string what = o.figure == "figure4" ? "figure 4" : o.figure;
-    if (o.size < 16 || o.size > 4096)
-        throw InputError(what + ": size must be in [16, 4096], got " + std::to_string(o.size));
-    if (o.referenceSamples < 1 || o.referenceSamples > 4096)
-        throw InputError(what + ": referenceSamples must be in [1, 4096], got " + std::to_string(o.referenceSamples));
+    checkMembers(o, figure4Members());
     validateReferenceTolerance(o.referenceTolerance);
     if (o.footprints.empty()) throw InputError(what + ": no footprints");
     for (int s : o.footprints)

@@ -6,6 +6,7 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "stochtex/core/progress.h"
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/report.h"
@@ -39,8 +41,8 @@ void validateTable1(const Table1Options& options);
 
 struct Table1Result {
     std::array<std::vector<EstimatorError>, 2> rows;  // low, high; ordered as measureEstimatorErrors
-    Table data;                 // one row per noise × footprint × estimator (table1.csv)
-    std::vector<Table> tables;  // the paper's layout: one per estimator, then the published numbers
+    Table data;                                       // one row per noise × footprint × estimator (table1.csv)
+    std::vector<Table> tables;    // the paper's layout: one per estimator, then the published numbers
     std::vector<Figure> figures;  // mean error vs footprint, ours and published
 };
 Table1Result table1(const Table1Options& options, const StudyProgress& progress = {});
@@ -51,8 +53,8 @@ Report table1Report(const Table1Result& result);
 struct Figure4Options {
     PatternSpec pattern;  // the paper uses the camouflage preset
     std::string name = "camouflage";
-    int size = 512;                // image side per footprint, [16, 4096]
-    int referenceSamples = 64;     // per axis, [1, 4096]: the cap
+    int size = 512;             // image side per footprint (ranges: figure4Members())
+    int referenceSamples = 64;  // per axis: the cap
     // The reference and the exact statistics are rendered at the fewest
     // samples (up to the cap) that move them by less than this when doubled
     // (studies/reference_samples.h): mean ‖·‖₂, linear RGB.
@@ -71,6 +73,8 @@ struct Figure4Options {
     // phasor profile's mean): the mean distances of S̄ and Ŝ to it per footprint.
     std::optional<Rgb> fadesTo;
 };
+// The entries of Figure4Options' numbers (its check; the CLI's flags).
+std::span<const OptionMember<Figure4Options>> figure4Members();
 void validateFigure4(const Figure4Options& options);
 
 struct Figure4Column {

@@ -72,11 +72,17 @@ SpectralCentroid centroid(const Image& power, double expectedFrequency, double e
 
 }  // namespace
 
+std::span<const OptionMember<Figure10Options>> figure10Members() {
+    using O = Figure10Options;
+    static const OptionMember<O> members[] = {
+        {"size", "Pattern size in the variants' sheet", 64, 2048, &O::size},
+        {"comparisonSize", "Side of each comparison panel (one example period)", 32, 2048, &O::comparisonSize},
+    };
+    return members;
+}
+
 void validateFigure10(const Figure10Options& o) {
-    if (o.size < 64 || o.size > 2048)
-        throw InputError::parameter("size", "must be in [64, 2048], got " + std::to_string(o.size));
-    if (o.comparisonSize < 32 || o.comparisonSize > 2048)
-        throw InputError::parameter("comparisonSize", "must be in [32, 2048], got " + std::to_string(o.comparisonSize));
+    checkMembers(o, figure10Members());
     validatePhasorNoise(o.field);
 }
 

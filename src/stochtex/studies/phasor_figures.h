@@ -5,10 +5,12 @@
 // profile and their power spectra. (Figure 11, the filtering of the phasor
 // sine pattern, is figure4() with figure11Options(), studies/paper.h.)
 #include <array>
+#include <span>
 #include <vector>
 
 #include "stochtex/core/progress.h"
 #include "stochtex/noise/phasor_noise.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/report.h"
 #include "stochtex/report/table.h"
@@ -16,13 +18,15 @@
 namespace stochtex {
 
 struct Figure10Options {
-    int size = 384;              // pattern side in the variants' sheet, [64, 2048]
-    int comparisonSize = 256;    // side of each comparison panel and spectrum, [32, 2048]
+    int size = 384;            // pattern side in the variants' sheet (ranges: figure10Members())
+    int comparisonSize = 256;  // side of each comparison panel and spectrum
     // Both fields of the comparison: the bi-lobe of phasor-stripes takes
     // frequency, bandwidth and orientation from here (defaults: its own),
     // the procedural noise all of it (with its kernel density and seed).
     PhasorNoiseParams field{24.0, 2.5, 30.0, 8.0, 1};
 };
+// The entries of Figure10Options' sizes (its check; the CLI's flags).
+std::span<const OptionMember<Figure10Options>> figure10Members();
 // InputError (a parameter named) for unusable options: sizes, and the
 // field's frequency (> 0), bandwidth (> 0), orientation, density.
 void validateFigure10(const Figure10Options& options);

@@ -8,6 +8,19 @@
 
 namespace stochtex {
 
+std::span<const OptionMember<SpectrumStudyOptions>> spectrumStudyMembers() {
+    using O = SpectrumStudyOptions;
+    static const OptionMember<O> members[] = {
+        {"instances", "Instances averaged (patterns: moved windows; zoom: white-noise lattices)", 1, 100000,
+         &O::instances},
+        {"radialBins", "Bins of the radial profile", 1, 4096, &O::radialBins},
+        {"angularBins", "Bins of the angular profile", 1, 3600, &O::angularBins},
+        {"rMin", "Inner radius of the angular profile's annulus, cycles/pixel", 0, 0.75, &O::rMin},
+        {"rMax", "Outer radius of the angular profile's annulus, cycles/pixel", 0, 0.75, &O::rMax},
+    };
+    return members;
+}
+
 void validateSpectrumStudy(const SpectrumStudyOptions& o, const TextureSource* source) {
     const SourceRegion& r = o.region;
     if (r.width < 4 || r.height < 4 || r.width > 4096 || r.height > 4096)
@@ -16,14 +29,12 @@ void validateSpectrumStudy(const SpectrumStudyOptions& o, const TextureSource* s
     if (o.times.empty()) throw InputError::parameter("times", "needs at least one time");
     for (double t : o.times)
         if (!std::isfinite(t)) throw InputError::parameter("times", "must be finite");
-    if (o.instances < 1 || double(o.instances) * double(o.times.size()) > 100000)
-        throw InputError::parameter("instances", "must be ≥ 1, with at most 100000 frames in all, got " +
+    checkMembers(o, spectrumStudyMembers());
+    if (double(o.instances) * double(o.times.size()) > 100000)
+        throw InputError::parameter("instances", "must leave at most 100000 frames in all, got " +
                                                      std::to_string(o.instances) + " × " +
                                                      std::to_string(o.times.size()) + " times");
-    if (o.radialBins < 1 || o.radialBins > 4096) throw InputError::parameter("radialBins", "must be 1…4096");
-    if (o.angularBins < 1 || o.angularBins > 3600) throw InputError::parameter("angularBins", "must be 1…3600");
-    if (!(o.rMin >= 0 && o.rMin < o.rMax && o.rMax <= 0.75))
-        throw InputError::parameter("rMin", "the annulus needs 0 ≤ rMin < rMax ≤ 0.75 cycles/pixel");
+    if (!(o.rMin < o.rMax)) throw InputError::parameter("rMin", "the annulus needs rMin < rMax");
     if (source) {
         for (double t : o.times) source->checkWindow(o.region, t);
         source->checkInstances(o.instances);

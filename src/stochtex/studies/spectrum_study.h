@@ -3,10 +3,12 @@
 // frames of a window at some times and instances, their mean periodogram
 // (analysis/power_spectrum.h), its radial and angular profiles and the
 // figures of its shape, as a table and figures for a report.
+#include <span>
 #include <vector>
 
 #include "stochtex/analysis/power_spectrum.h"
 #include "stochtex/image/colour_space.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -16,8 +18,8 @@ namespace stochtex {
 
 struct SpectrumStudyOptions {
     SourceRegion region = SourceRegion::centred(256, 256);  // 4…4096 pixels a side
-    std::vector<double> times{0.0};  // every time is averaged…
-    int instances = 1;               // …with instances 0…N−1 at each (1…100000 frames in all)
+    std::vector<double> times{0.0};                         // every time is averaged…
+    int instances = 1;  // …with instances 0…N−1 at each (at most 100000 frames in all)
     SpectrumWindow window = SpectrumWindow::Hann;
     int radialBins = 64;
     int angularBins = 36;
@@ -26,6 +28,8 @@ struct SpectrumStudyOptions {
     // image files' codes), Srgb encoded (linear-light colour renders).
     Transfer frameTransfer = Transfer::Linear;
 };
+// The entries of SpectrumStudyOptions' numbers (its check; the CLI's flags).
+std::span<const OptionMember<SpectrumStudyOptions>> spectrumStudyMembers();
 // InputError naming the parameter, before any work; with a source, also its
 // checkWindow at every time.
 void validateSpectrumStudy(const SpectrumStudyOptions& options, const TextureSource* source = nullptr);
@@ -35,8 +39,8 @@ struct SpectrumStudyResult {
     RadialProfile radial;
     AngularProfile angular;
     SpectrumGeometry geometry;
-    Table summary;   // spectrum.csv: one row of the shape figures
-    Table profile;   // radial.csv: radius, power
+    Table summary;                // spectrum.csv: one row of the shape figures
+    Table profile;                // radial.csv: radius, power
     std::vector<Figure> figures;  // spectrum.png, radial.png, angular.png, frame.png
 };
 SpectrumStudyResult spectrumStudy(const TextureSource& source, const SpectrumStudyOptions& options,

@@ -9,16 +9,22 @@
 
 namespace stochtex {
 
+std::span<const OptionMember<StabilityStudyOptions>> stabilityStudyMembers() {
+    using O = StabilityStudyOptions;
+    static const OptionMember<O> members[] = {
+        {"frames", "Number of frames", 2, 1000, &O::frames},
+        {"size", "Frame side in pixels", 8, 2048, &O::size},
+        {"from", "First scale (texels per pixel)", kMinViewScale, kMaxViewScale, &O::from},
+        {"to", "Last scale", kMinViewScale, kMaxViewScale, &O::to},
+        {"truthSamples", "Max samples per axis of the ground truth S̄ that errors are measured against", 1, 4096,
+         &O::truthSamples},
+    };
+    return members;
+}
+
 void validateStabilityStudy(const StabilityStudyOptions& o) {
     if (o.filters.empty()) throw InputError::parameter("filters", "must name at least one filter");
-    if (o.frames < 2 || o.frames > 1000)
-        throw InputError::parameter("frames", "must be in [2, 1000], got " + std::to_string(o.frames));
-    if (o.size < 8 || o.size > 2048)
-        throw InputError::parameter("size", "must be in [8, 2048], got " + std::to_string(o.size));
-    checkViewScale(o.from, "from");
-    checkViewScale(o.to, "to");
-    if (o.truthSamples < 1 || o.truthSamples > 4096)
-        throw InputError::parameter("truthSamples", "must be in [1, 4096], got " + std::to_string(o.truthSamples));
+    checkMembers(o, stabilityStudyMembers());
 }
 
 StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const StabilityStudyOptions& o,

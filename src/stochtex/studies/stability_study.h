@@ -9,10 +9,12 @@
 // mean |frame − truth|. Frames are rendered one index at a time for every
 // filter, so memory stays at two frames per filter.
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "stochtex/analysis/zoom_stability.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -21,24 +23,28 @@ namespace stochtex {
 
 struct StabilityStudyOptions {
     std::vector<FilterOptions> filters;  // one measurement each
-    int frames = 64;                     // [2, 1000]
-    int size = 128;                      // frame side in pixels, [8, 2048]
-    double from = 1, to = 128;           // first and last scale (texels per pixel), in [1e-6, 1e6] (pattern/view.h)
+    // The numbers, their meanings and ranges: stabilityStudyMembers().
+    int frames = 64;
+    int size = 128;
+    double from = 1, to = 128;
     // The ground truth: the reference S̄ with at most this many samples per
-    // axis and pixel ([1, 4096]), twice the stability command's reference.
+    // axis and pixel, twice the stability command's reference.
     int truthSamples = 64;
 };
+// The entries of StabilityStudyOptions' numbers (checked by
+// validateStabilityStudy; the CLI's flags).
+std::span<const OptionMember<StabilityStudyOptions>> stabilityStudyMembers();
 
 struct StabilityMeasurement {
-    ZoomStability imageChange;   // consecutive frames, zoom undone
-    ZoomStability errorFlicker;  // consecutive error frames (frame − truth), zoom undone
+    ZoomStability imageChange;     // consecutive frames, zoom undone
+    ZoomStability errorFlicker;    // consecutive error frames (frame − truth), zoom undone
     std::vector<double> accuracy;  // per frame: mean |frame − truth|
     double meanAccuracy = 0;
 };
 
 struct StabilityStudyResult {
     std::vector<StabilityMeasurement> measurements;  // per filter, in order
-    Table summary;   // filter; image change, error flicker (mean, max); accuracy (mean)
+    Table summary;                                   // filter; image change, error flicker (mean, max); accuracy (mean)
     Table perFrame;  // filter, frame, scale, accuracy; image change and error flicker from the previous frame
     std::vector<Figure> figures;  // error flicker and accuracy per frame, per filter (line plots)
 };

@@ -120,9 +120,19 @@ Image stimulusImage(const StimulusOptions& o) {
     return image;
 }
 
+std::span<const OptionMember<StimulusSetOptions>> stimulusSetMembers() {
+    using O = StimulusSetOptions;
+    static const OptionMember<O> members[] = {
+        {"size", "Stimulus side, pixels (shown 1:1)", 8, 2048, &O::size},
+        {"repeats", "Stimuli per (w, correlation)", 1, 1000, &O::repeats},
+        {"durationMs", "Time a stimulus is shown, ms", 1, 60000, &O::durationMs},
+        {"resetMs", "Mean-grey screen before each stimulus, ms", 0, 60000, &O::resetMs},
+    };
+    return members;
+}
+
 void validateStimulusSet(const StimulusSetOptions& o) {
-    if (o.size < 8 || o.size > 2048)
-        throw InputError::parameter("size", "must be in [8, 2048], got " + std::to_string(o.size));
+    checkMembers(o, stimulusSetMembers());
     if (o.tiles.empty()) throw InputError::parameter("tiles", "must hold at least one tile size");
     for (int w : o.tiles) checkTile(w, o.size, "tiles");
     if (std::set<int>(o.tiles.begin(), o.tiles.end()).size() != o.tiles.size())
@@ -135,13 +145,7 @@ void validateStimulusSet(const StimulusSetOptions& o) {
     for (double c : o.correlations) names.insert(correlationName(c));
     if (names.size() != o.correlations.size())
         throw InputError::parameter("correlations", "must not repeat a correlation");
-    if (o.repeats < 1 || o.repeats > 1000)
-        throw InputError::parameter("repeats", "must be in [1, 1000], got " + std::to_string(o.repeats));
     checkMeanContrast(o.mean, o.contrast);
-    if (o.durationMs < 1 || o.durationMs > 60000)
-        throw InputError::parameter("durationMs", "must be in [1, 60000] ms, got " + std::to_string(o.durationMs));
-    if (o.resetMs < 0 || o.resetMs > 60000)
-        throw InputError::parameter("resetMs", "must be in [0, 60000] ms, got " + std::to_string(o.resetMs));
     const long long trials = (long long)o.tiles.size() * (long long)o.correlations.size() * o.repeats;
     if (trials > kMaxStimulusTrials)
         throw InputError::parameter(

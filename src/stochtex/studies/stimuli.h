@@ -11,10 +11,12 @@
 // mean grey code of the stimulus and of the screen between stimuli, and the
 // luminance the viewer sees depends on the monitor's calibration.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "stochtex/image/image.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -42,18 +44,20 @@ double stimulusAmplitude(double mean, double contrast);
 Image stimulusImage(const StimulusOptions& options);
 
 struct StimulusSetOptions {
-    int size = 256;                                           // [8, 2048]; small keeps the page small
-    std::vector<int> tiles{8, 16, 32};                        // each in [1, size], dividing size
+    int size = 256;                     // small keeps the page small (ranges: stimulusSetMembers())
+    std::vector<int> tiles{8, 16, 32};  // each in [1, size], dividing size
     std::vector<double> correlations{0, 0.25, 0.5, 0.75, 1};  // each in [0, 1]
-    int repeats = 4;                                          // stimuli per (w, correlation), [1, 1000]
+    int repeats = 4;                                          // stimuli per (w, correlation)
     uint32_t seed = 0;                                        // images and trial order
     double mean = 0.5, contrast = 1.0;                        // as StimulusOptions
-    int durationMs = 1000;                                    // stimulus shown, [1, 60000]
-    int resetMs = 1000;                                       // mean grey before each stimulus, [0, 60000]
+    int durationMs = 1000;                                    // stimulus shown
+    int resetMs = 1000;                                       // mean grey before each stimulus
 };
 // InputError naming the parameter (size, tiles, correlations, repeats, mean,
 // contrast, durationMs, resetMs), and the whole set's work (at most
 // kMaxStimulusTrials trials, kMaxStimulusPixels pixels), before any work.
+// The entries of StimulusSetOptions' size, repeats and times (its check; the CLI's flags).
+std::span<const OptionMember<StimulusSetOptions>> stimulusSetMembers();
 constexpr int kMaxStimulusTrials = 5000;
 constexpr long long kMaxStimulusPixels = 1ll << 27;
 void validateStimulusSet(const StimulusSetOptions& options);
@@ -90,8 +94,8 @@ inline constexpr const char* kExperimentTitle = "Perception experiment: repeatin
 // between pixels one tile apart (horizontal and vertical pairs) beside the
 // asked one, so eq. 2.28 is checked on the very images shown.
 struct StimulusOverview {
-    Table table;    // overview.csv: w, correlation, α, measured, pairs
-    Figure sheet;   // stimuli.png
+    Table table;   // overview.csv: w, correlation, α, measured, pairs
+    Figure sheet;  // stimuli.png
 };
 StimulusOverview stimulusOverview(const StimulusSetOptions& options);
 // The overview's report (overview.csv, stimuli.png) with the set's

@@ -4,24 +4,30 @@
 #include <cmath>
 #include <string>
 
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
+#include "stochtex/report/plot.h"
 
 namespace stochtex {
+
+std::span<const OptionMember<TemporalCoherenceOptions>> temporalCoherenceMembers() {
+    using O = TemporalCoherenceOptions;
+    static const OptionMember<O> members[] = {
+        {"instance", "The source's instance", 0, 1000000, &O::instance},
+        {"radialBins", "Bins of the radial spectra", 4, 4096, &O::radialBins},
+    };
+    return members;
+}
 
 void validateTemporalCoherence(const TemporalCoherenceOptions& o, const TextureSource* source) {
     const SourceRegion& r = o.region;
     if (r.width < 8 || r.height < 8 || r.width > 2048 || r.height > 2048)
-        throw InputError::parameter("size", "must be in [8, 2048] per side, got " + std::to_string(r.width) + "x" +
-                                                std::to_string(r.height));
+        throw InputError::parameter(
+            "size", "must be in [8, 2048] per side, got " + std::to_string(r.width) + "x" + std::to_string(r.height));
     if (o.times.size() < 2 || o.times.size() > 10000)
         throw InputError::parameter("frames", "must be in [2, 10000], got " + std::to_string(o.times.size()));
     for (double t : o.times)
         if (!std::isfinite(t)) throw InputError::parameter("time", "must be finite, got " + formatValue(t));
-    if (o.instance < 0 || o.instance > 1000000)
-        throw InputError::parameter("instance", "must be in [0, 1000000], got " + std::to_string(o.instance));
-    if (o.radialBins < 4 || o.radialBins > 4096)
-        throw InputError::parameter("radialBins", "must be in [4, 4096], got " + std::to_string(o.radialBins));
+    checkMembers(o, temporalCoherenceMembers());
     if (source) {
         for (double t : o.times) source->checkWindow(o.region, t);
         source->checkInstances(o.instance + 1);
@@ -89,7 +95,9 @@ TemporalCoherenceResult temporalCoherenceStudy(const TextureSource& source, cons
     std::vector<TableCell> row{TableCell::integer((long long)c.frames.size())};
     for (TableCell& cell : coherenceCells(c)) row.push_back(std::move(cell));
     r.summary.add(std::move(row));
-    r.perFrame.columns = {{"time", "t", ""}, {"mean", "mean", ""}, {"contrast", "contrast σ", ""},
+    r.perFrame.columns = {{"time", "t", ""},
+                          {"mean", "mean", ""},
+                          {"contrast", "contrast σ", ""},
                           {"mean_frequency", "dominant scale: mean |f|", "cycles/pixel"}};
     PlotSeries contrast{"contrast σ / mean σ", {}, {}, seriesColour(0)},
         scale{"mean |f| / its mean (dominant scale)", {}, {}, seriesColour(1)};
@@ -105,11 +113,12 @@ TemporalCoherenceResult temporalCoherenceStudy(const TextureSource& source, cons
     po.title = "Appearance over time (1 = the sequence's mean)";
     po.xLabel = "time t";
     po.yLabel = "relative to the mean over time";
-    r.figures.push_back(chartFigure("appearance.png", {{contrast, scale}, po},
-                         "Contrast and dominant scale of each frame relative to their means over the sequence: flat "
-                         "lines are a coherent animation (thesis §2.1.1). Scale σ/μ over time " +
-                             TableCell::value(c.scaleVariation, "%.4f").text + ", contrast σ/μ " +
-                             TableCell::value(c.contrastVariation, "%.4f").text + "."));
+    r.figures.push_back(
+        chartFigure("appearance.png", {{contrast, scale}, po},
+                    "Contrast and dominant scale of each frame relative to their means over the sequence: flat "
+                    "lines are a coherent animation (thesis §2.1.1). Scale σ/μ over time " +
+                        TableCell::value(c.scaleVariation, "%.4f").text + ", contrast σ/μ " +
+                        TableCell::value(c.contrastVariation, "%.4f").text + "."));
     // Frames beside their spectra, as Figure 2.4.
     std::vector<std::vector<Image>> rows(2);
     std::vector<std::vector<std::string>> captions(2);
@@ -133,7 +142,8 @@ void validateLayerCoherence(const LayerCoherenceOptions& o) {
     validateTemporalCoherence(o.frames);
     if (o.layers.empty()) throw InputError::parameter("layersList", "must name at least one layer count");
     for (int n : o.layers)
-        if (n < 1 || n > 64) throw InputError::parameter("layersList", "must be in [1, 64] each, got " + std::to_string(n));
+        if (n < 1 || n > 64)
+            throw InputError::parameter("layersList", "must be in [1, 64] each, got " + std::to_string(n));
 }
 
 LayerCoherenceResult layerCoherenceStudy(const ZoomSource& zoom, const LayerCoherenceOptions& o,
@@ -149,8 +159,8 @@ LayerCoherenceResult layerCoherenceStudy(const ZoomSource& zoom, const LayerCohe
         ZoomParams params = zoom.params();
         params.layers = o.layers[i];
         const ZoomSource source(params, zoom.base());
-        const Progress part = progressPart(progress, int(i), int(o.layers.size()),
-                                           "n = " + std::to_string(params.layers));
+        const Progress part =
+            progressPart(progress, int(i), int(o.layers.size()), "n = " + std::to_string(params.layers));
         r.perLayers.push_back(measure(source, o.frames, part, nullptr, nullptr, 0));
         const TemporalCoherence& c = r.perLayers.back();
         std::vector<TableCell> row{TableCell::integer(params.layers)};
@@ -168,12 +178,13 @@ LayerCoherenceResult layerCoherenceStudy(const ZoomSource& zoom, const LayerCohe
     po.xLabel = "layers n";
     po.yLabel = "variation over time";
     po.yMin = 0;
-    r.figures.push_back(chartFigure("layers.png", {{scale, contrast, spectrum}, po},
-                         "How much the zoom texture's look moves over time for each layer count n (" +
-                             std::to_string(o.frames.times.size()) + " frames of " +
-                             std::to_string(o.frames.region.width) + "×" + std::to_string(o.frames.region.height) +
-                             "): the thesis sees n = 3 lose coherence (frames lose their high frequencies) where "
-                             "n = 8 keeps it (Figure 2.4)."));
+    r.figures.push_back(
+        chartFigure("layers.png", {{scale, contrast, spectrum}, po},
+                    "How much the zoom texture's look moves over time for each layer count n (" +
+                        std::to_string(o.frames.times.size()) + " frames of " + std::to_string(o.frames.region.width) +
+                        "×" + std::to_string(o.frames.region.height) +
+                        "): the thesis sees n = 3 lose coherence (frames lose their high frequencies) where "
+                        "n = 8 keeps it (Figure 2.4)."));
     return r;
 }
 

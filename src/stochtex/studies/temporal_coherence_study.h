@@ -4,11 +4,13 @@
 // observation that the zoom texture needs enough layers to keep its look —
 // n = 3 loses coherence where n = 8 keeps it — as a measured curve over n.
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "stochtex/analysis/temporal_coherence.h"
 #include "stochtex/image/colour_space.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -18,12 +20,14 @@ namespace stochtex {
 
 struct TemporalCoherenceOptions {
     SourceRegion region = SourceRegion::centred(256, 256);  // 8…2048 pixels a side
-    std::vector<double> times;  // the frames, in order: 2…10000 finite times
-    int instance = 0;           // one realisation (averaging would hide what is measured)
+    std::vector<double> times;                              // the frames, in order: 2…10000 finite times
+    int instance = 0;                                       // one realisation (averaging would hide what is measured)
     int radialBins = 32;
     SpectrumWindow window = SpectrumWindow::Hann;
     Transfer frameTransfer = Transfer::Linear;  // how the frames are shown (Srgb: linear-light colour)
 };
+// The entries of TemporalCoherenceOptions' numbers (its check; the CLI's flags).
+std::span<const OptionMember<TemporalCoherenceOptions>> temporalCoherenceMembers();
 // InputError naming the parameter (region, times, instance, radialBins).
 // With a source, also its checkWindow at every frame's time.
 void validateTemporalCoherence(const TemporalCoherenceOptions& options, const TextureSource* source = nullptr);
@@ -34,7 +38,8 @@ struct TemporalCoherenceResult {
     TemporalCoherence coherence;
     Table summary;   // one row: the changes and variations
     Table perFrame;  // time, mean, contrast, mean frequency
-    std::vector<Figure> figures;  // appearance.png (contrast and dominant scale over time), frames.png (frames and spectra)
+    std::vector<Figure>
+        figures;  // appearance.png (contrast and dominant scale over time), frames.png (frames and spectra)
 };
 TemporalCoherenceResult temporalCoherenceStudy(const TextureSource& source, const TemporalCoherenceOptions& options,
                                                const StudyProgress& progress = {});

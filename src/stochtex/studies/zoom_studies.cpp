@@ -104,12 +104,18 @@ Image difference(const Image& a, const Image& b) {
 
 }  // namespace
 
+std::span<const OptionMember<CorrelationStudyOptions>> correlationStudyMembers() {
+    using O = CorrelationStudyOptions;
+    static const OptionMember<O> members[] = {
+        {"instances", "Instances N of the statistical accumulator", 2, 1000000, &O::instances},
+        {"plotSize", "Extent of the correlation plots in pixels from the zoom centre", 4, 1024, &O::size},
+    };
+    return members;
+}
+
 void validateCorrelationStudy(const CorrelationStudyOptions& o) {
     ZoomSource(o.zoom, o.base);
-    if (o.instances < 2 || o.instances > 1000000)
-        throw InputError::parameter("instances", "must be in [2, 1e6], got " + std::to_string(o.instances));
-    if (o.size < 4 || o.size > 1024)
-        throw InputError::parameter("plotSize", "must be in [4, 1024], got " + std::to_string(o.size));
+    checkMembers(o, correlationStudyMembers());
     if (o.layers.empty() || o.variants.empty()) throw InputError("correlation: no variants or layer counts");
     for (int n : o.layers)
         if (n < 1 || n > 1024)
@@ -201,10 +207,15 @@ CorrelationStudyResult correlationStudy(const CorrelationStudyOptions& o, const 
     return out;
 }
 
-void validateContrastStudy(const ContrastStudyOptions& o) {
-    if (o.size < 8 || o.size > 8192)
-        throw InputError::parameter("size", "must be in [8, 8192], got " + std::to_string(o.size));
+std::span<const OptionMember<ContrastStudyOptions>> contrastStudyMembers() {
+    using O = ContrastStudyOptions;
+    static const OptionMember<O> members[] = {
+        {"size", "Image size in pixels, centred on the zoom centre", 8, 8192, &O::size},
+    };
+    return members;
 }
+
+void validateContrastStudy(const ContrastStudyOptions& o) { checkMembers(o, contrastStudyMembers()); }
 
 ContrastTargets zoomContrastTargets(const ZoomSource& source, int size) {
     const LatticeTexture& base = source.firstLattice();

@@ -5,10 +5,12 @@
 // Figures 2.8–2.10). The frame analyses take any TextureSource; the variant
 // grids build ZoomSources.
 #include <array>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -19,17 +21,17 @@ namespace stochtex {
 // --- correlation over instances, any 1-channel source (colour: its gray) ---
 
 struct CorrelationMeasureOptions {
-    int size = 128;        // frames cover the source pixels x, y ∈ [0, size) (moved by x0, y0)
-    int instances = 512;   // N
+    int size = 128;       // frames cover the source pixels x, y ∈ [0, size) (moved by x0, y0)
+    int instances = 512;  // N
     double time = 0;
-    double x0 = 0, y0 = 0;        // the window's first pixel in the source
+    double x0 = 0, y0 = 0;         // the window's first pixel in the source
     int pointX = -1, pointY = -1;  // the point map's reference in window pixels; −1: size/2
 };
 struct CorrelationMeasurement {
     // Row 0 is the source's row y = 0; the point map's reference is (size/2, size/2).
-    Image measuredRadial;     // (x, y) = Corr[I(x, 0), I(y, 0)]
-    Image measuredNonRadial;  // (x, y) = Corr[I(x, 0), I(x, y)]
-    Image measuredPoint;      // Corr with the reference point (default (size/2, size/2))
+    Image measuredRadial;                     // (x, y) = Corr[I(x, 0), I(y, 0)]
+    Image measuredNonRadial;                  // (x, y) = Corr[I(x, 0), I(x, y)]
+    Image measuredPoint;                      // Corr with the reference point (default (size/2, size/2))
     Image analyticRadial, analyticNonRadial;  // empty when the source has no closed form
 };
 CorrelationMeasurement measureCorrelation(const TextureSource& source, const CorrelationMeasureOptions& options);
@@ -41,9 +43,9 @@ CorrelationMeasurement measureCorrelation(const TextureSource& source, const Cor
 // offsets, and with hashed ("random") offsets.
 enum class ZoomVariant { Sliding, Fixed, Simple, Random };
 inline const EnumNames<ZoomVariant> kZoomVariantNames{{"sliding", ZoomVariant::Sliding},
-                                                     {"fixed", ZoomVariant::Fixed},
-                                                     {"simple", ZoomVariant::Simple},
-                                                     {"random", ZoomVariant::Random}};
+                                                      {"fixed", ZoomVariant::Fixed},
+                                                      {"simple", ZoomVariant::Simple},
+                                                      {"random", ZoomVariant::Random}};
 // params with the variant's scaling and offsets.
 ZoomParams applyVariant(ZoomParams params, ZoomVariant v);
 
@@ -56,6 +58,8 @@ struct CorrelationStudyOptions {
     int instances = 512;
     int size = 128;  // plots cover x, y ∈ [0, size) pixels from the zoom centre (parameter "plotSize")
 };
+// The entries of CorrelationStudyOptions' numbers (its check; the CLI's flags).
+std::span<const OptionMember<CorrelationStudyOptions>> correlationStudyMembers();
 // InputError for unusable settings, before any work.
 void validateCorrelationStudy(const CorrelationStudyOptions& options);
 
@@ -75,9 +79,10 @@ struct ContrastTargets {
     Image reference;  // shown as an inset and as a table row (the unblended base); may be empty
 };
 struct ContrastStudyOptions {
-    int size = 512;  // [8, 8192], centred on the source's origin
+    int size = 512;  // centred on the source's origin
     double time = 0;
 };
+std::span<const OptionMember<ContrastStudyOptions>> contrastStudyMembers();
 void validateContrastStudy(const ContrastStudyOptions& options);
 
 struct ContrastStudyResult {

@@ -17,12 +17,6 @@ namespace {
 constexpr double kMaxCoordinate = 1 << 20;  // pixels from the origin
 constexpr double kMinLevel = -8, kMaxLevel = 40;
 
-void checkRange(const char* name, double v, double lo, double hi) {
-    if (!(v >= lo && v <= hi))
-        throw InputError::parameter(name, "must be in [" + formatValue(lo) + ", " + formatValue(hi) + "], got " +
-                                              formatValue(v));
-}
-
 int kernelLayer(MarbleLayer layer) {
     switch (layer) {
         case MarbleLayer::Marble: return kernel::kMarbleLayerMarble;
@@ -35,15 +29,21 @@ int kernelLayer(MarbleLayer layer) {
 
 }  // namespace
 
-void validateMarbleParams(const MarbleParams& p) {
-    checkRange("bandPeriod", p.bandPeriod, 1, 1e6);
-    checkRange("bandAngle", p.bandAngle, -360, 360);
-    checkRange("distortion", p.distortion, -1000, 1000);
-    checkRange("level", p.level, -4, 20);
-    checkRange("levelAmplitude", p.levelAmplitude, -8, 8);
-    checkRange("levelPeriod", p.levelPeriod, 1, 1e9);
-    checkRange("levelRate", p.levelRate, -100, 100);
+std::span<const OptionMember<MarbleParams>> marbleParamsMembers() {
+    using O = MarbleParams;
+    static const OptionMember<O> members[] = {
+        {"bandPeriod", "Pixels between two bands, 2π/|a|", 1, 1e6, &O::bandPeriod},
+        {"bandAngle", "Direction of a, degrees from the x axis (0: vertical veins)", -360, 360, &O::bandAngle},
+        {"distortion", "b: band phase, radians, per unit of noise", -1000, 1000, &O::distortion},
+        {"level", "m: noise cells of 2^m pixels", -4, 20, &O::level},
+        {"levelAmplitude", "n in l = m + n cos(q x) + r t (stretching)", -8, 8, &O::levelAmplitude},
+        {"levelPeriod", "2π/q, pixels along x of one cycle of l", 1, 1e9, &O::levelPeriod},
+        {"levelRate", "r, change of l per unit of time (sliding)", -100, 100, &O::levelRate},
+    };
+    return members;
 }
+
+void validateMarbleParams(const MarbleParams& p) { checkMembers(p, marbleParamsMembers()); }
 
 kernel::Marble kernelMarble(const MarbleParams& p, int instance) {
     const double a = 2 * std::numbers::pi / p.bandPeriod, angle = p.bandAngle * std::numbers::pi / 180;
@@ -79,9 +79,11 @@ void MarbleSource::checkWindow(const SourceRegion& region, double time) const {
     const double low = p.level - std::abs(p.levelAmplitude) + p.levelRate * time;
     const double high = p.level + std::abs(p.levelAmplitude) + p.levelRate * time;
     if (low < kMinLevel || high > kMaxLevel)
-        throw InputError("marble texture: at time " + formatValue(time) + " the noise scale exponent l = m + n cos(q x) + "
-                         "r t spans [" + formatValue(low) + ", " + formatValue(high) + "], outside [" +
-                         formatValue(kMinLevel) + ", " + formatValue(kMaxLevel) + "]");
+        throw InputError("marble texture: at time " + formatValue(time) +
+                         " the noise scale exponent l = m + n cos(q x) + "
+                         "r t spans [" +
+                         formatValue(low) + ", " + formatValue(high) + "], outside [" + formatValue(kMinLevel) + ", " +
+                         formatValue(kMaxLevel) + "]");
 }
 
 Image MarbleSource::render(const SourceRegion& region, double time, int instance) const {
@@ -94,7 +96,8 @@ Image MarbleSource::render(const SourceRegion& region, double time, int instance
         for (int py = y0; py < y1; ++py) {
             const float y = float(region.y0 + py + 0.5);
             for (int px = 0; px < region.width; ++px)
-                out.at(px, py) = kernel::marbleValue(m, layer, kernel::vec2(float(region.x0 + px + 0.5), y), float(time));
+                out.at(px, py) =
+                    kernel::marbleValue(m, layer, kernel::vec2(float(region.x0 + px + 0.5), y), float(time));
         }
     });
     return out;

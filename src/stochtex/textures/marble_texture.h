@@ -6,10 +6,12 @@
 // shader computes the same texture; this file holds its parameters in the
 // units a user thinks in and renders windows of it for the studies.
 #include <cstdint>
+#include <span>
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/image/image.h"
 #include "stochtex/kernel/marble.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/textures/texture_source.h"
 
 namespace stochtex {
@@ -39,18 +41,20 @@ inline const EnumNames<MarbleLayer> kMarbleLayerNames{{"marble", MarbleLayer::Ma
 // I(x) = ½ + ½ sin(a·x + b noise(x / 2^l)), l = m + n cos(q x_x) + r t, with
 // x in pixels from the source's origin (the centre of a centred window).
 struct MarbleParams {
-    double bandPeriod = 64;       // 2π/|a|, pixels between two bands
-    double bandAngle = 0;         // direction of a, degrees from the x axis (0: vertical veins)
-    double distortion = 6;        // b, radians of band phase per unit of noise
-    double level = 5;             // m: noise cells of 2^m pixels
-    double levelAmplitude = 1;    // n
-    double levelPeriod = 128;     // 2π/q, pixels (along x) of one cycle of l
-    double levelRate = 0;         // r, change of l per unit of time (sliding)
+    double bandPeriod = 64;     // 2π/|a|, pixels between two bands
+    double bandAngle = 0;       // direction of a, degrees from the x axis (0: vertical veins)
+    double distortion = 6;      // b, radians of band phase per unit of noise
+    double level = 5;           // m: noise cells of 2^m pixels
+    double levelAmplitude = 1;  // n
+    double levelPeriod = 128;   // 2π/q, pixels (along x) of one cycle of l
+    double levelRate = 0;       // r, change of l per unit of time (sliding)
     MarbleScaling scaling = MarbleScaling::Continuous;
     MarbleLayer layer = MarbleLayer::Marble;
-    uint32_t seed = 1;            // instance i draws its noise with deriveSeed(seed, i)
+    uint32_t seed = 1;  // instance i draws its noise with deriveSeed(seed, i)
 };
 
+// The entries of MarbleParams' numbers (validateMarbleParams; the CLI's flags).
+std::span<const OptionMember<MarbleParams>> marbleParamsMembers();
 // InputError naming the parameter, before any work.
 void validateMarbleParams(const MarbleParams& p);
 

@@ -9,16 +9,18 @@
 
 namespace stochtex {
 
-void validateZoomParams(const ZoomParams& p) {
-    if (p.layers < 1 || p.layers > 1024)
-        throw InputError::parameter("layers", "(n) must be in [1, 1024], got " + std::to_string(p.layers));
-    if (!(p.maxScale > 0) || !std::isfinite(p.maxScale) || p.maxScale > 1e3)
-        throw InputError::parameter("maxScale", "(H) must be a finite number in (0, 1000], got " + formatValue(p.maxScale));
-    if (!(p.envelopeSigma > 0) || !std::isfinite(p.envelopeSigma))
-        throw InputError::parameter("envelopeSigma", "(s) must be a finite number > 0, got " + formatValue(p.envelopeSigma));
-    if (!std::isfinite(p.time) || std::abs(p.time) > 1e9)
-        throw InputError::parameter("time", "(t) must be finite with |t| ≤ 1e9, got " + formatValue(p.time));
+std::span<const OptionMember<ZoomParams>> zoomParamsMembers() {
+    using O = ZoomParams;
+    static const OptionMember<O> members[] = {
+        {"layers", "Number of layers n (eq. 2.1)", 1, 1024, &O::layers},
+        {"maxScale", "Maximum scale H", 1e-3, 1e3, &O::maxScale},
+        {"time", "Time t (first frame)", -1e9, 1e9, &O::time},
+        {"envelopeSigma", "Width s of the Gaussian envelope A around a = 1", 1e-6, 1e6, &O::envelopeSigma},
+    };
+    return members;
 }
+
+void validateZoomParams(const ZoomParams& p) { checkMembers(p, zoomParamsMembers()); }
 
 namespace {
 
@@ -38,7 +40,7 @@ std::vector<ZoomLayer> zoomLayers(const ZoomParams& p, int baseWidth, int baseHe
     for (int i = 0; i < n; ++i) {
         ZoomLayer& l = layers[size_t(i)];
         const double phase = double(i) * h / double(n);
-        l.scale = p.scaling == ZoomScaling::Sliding ? positiveMod(phase - p.time, h)             // eq. 2.2
+        l.scale = p.scaling == ZoomScaling::Sliding ? positiveMod(phase - p.time, h)                  // eq. 2.2
                                                     : h * std::exp(-positiveMod(p.time - phase, h));  // eq. 2.5
         const double d = l.scale - 1.0;
         l.weight = std::exp(-d * d / (2.0 * p.envelopeSigma * p.envelopeSigma));
@@ -143,10 +145,11 @@ float LatticeTexture::sample(double x, double y, LatticeInterpolation mode) cons
     return top + ty * (bottom - top);
 }
 
-double evaluateZoom(const LatticeTexture& f, const std::vector<ZoomLayer>& layers, LatticeInterpolation mode,
-                    double x, double y) {
+double evaluateZoom(const LatticeTexture& f, const std::vector<ZoomLayer>& layers, LatticeInterpolation mode, double x,
+                    double y) {
     double sum = 0;
-    for (const ZoomLayer& l : layers) sum += l.weight * f.sample(l.scale * x + l.offsetX, l.scale * y + l.offsetY, mode);
+    for (const ZoomLayer& l : layers)
+        sum += l.weight * f.sample(l.scale * x + l.offsetX, l.scale * y + l.offsetY, mode);
     return sum;
 }
 

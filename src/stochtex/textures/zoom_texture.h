@@ -19,11 +19,13 @@
 // GPU); "sin-hash": rand(i) = fract(4567.89 sin(765.43 i (1, −13.17) + (1, 1)))
 // exactly as eq. 2.23 writes it.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/image/image.h"
+#include "stochtex/pattern/param_info.h"
 
 namespace stochtex {
 
@@ -40,17 +42,19 @@ inline const EnumNames<LatticeInterpolation> kLatticeInterpolationNames{{"neares
                                                                         {"linear", LatticeInterpolation::Linear}};
 
 struct ZoomParams {
-    int layers = 8;                 // n
-    double maxScale = 2.0;          // H
-    double time = 0.0;              // t
-    double envelopeSigma = 0.3;     // s: width of the envelope A around a = 1
+    int layers = 8;              // n
+    double maxScale = 2.0;       // H
+    double time = 0.0;           // t
+    double envelopeSigma = 0.3;  // s: width of the envelope A around a = 1
     ZoomScaling scaling = ZoomScaling::Exponential;
     ZoomOffsets offsets = ZoomOffsets::None;
     LatticeInterpolation interpolation = LatticeInterpolation::Linear;
-    uint32_t offsetSeed = 1;        // hashed offsets only
+    uint32_t offsetSeed = 1;  // hashed offsets only
 };
 
-// InputError naming the offending parameter (n < 1, H ≤ 0, s ≤ 0, NaN time).
+// The entries of ZoomParams' numbers: n, H, t, s (validateZoomParams; the CLI's flags).
+std::span<const OptionMember<ZoomParams>> zoomParamsMembers();
+// InputError naming the offending parameter (n, H, s or t outside its entry's range).
 void validateZoomParams(const ZoomParams& p);
 
 // One layer of eq. 2.1 at time t.
@@ -105,8 +109,8 @@ struct ZoomRegion {
 };
 
 // I(x) at one point.
-double evaluateZoom(const LatticeTexture& f, const std::vector<ZoomLayer>& layers, LatticeInterpolation mode,
-                    double x, double y);
+double evaluateZoom(const LatticeTexture& f, const std::vector<ZoomLayer>& layers, LatticeInterpolation mode, double x,
+                    double y);
 // The texture over a region, 1 channel, multi-threaded (rows in parallel;
 // the result does not depend on the thread count).
 Image renderZoom(const LatticeTexture& f, const ZoomParams& p, const ZoomRegion& region);
