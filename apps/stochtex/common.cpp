@@ -316,7 +316,6 @@ constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
     {"scalings", "--scalings"},
     {"pointX", "--point"},
     {"pointY", "--point"},
-    {"flowStep", "--step"},
     {"width", "--size"},
     {"height", "--size"},
     {"fps", "--fps"},

@@ -24,8 +24,11 @@ void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& f) {
         ->expected(1, 2)
         ->default_str(std::to_string(f.size[0]) + "," + std::to_string(f.size[1]));
     cmd.add_option("--time", f.time, "iTime of frame 0, seconds")->capture_default_str();
-    cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate")
-        ->capture_default_str();
+    // The frame analyses' time step is 1/fps: their errors about it name --fps.
+    bindParameter(cmd,
+                  cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate")
+                      ->capture_default_str(),
+                  "timeStep");
     cmd.add_option("--mouse", f.mouse,
                    "iMouse: X,Y (the button pressed there at frame 0 and held, with ShaderToy's "
                    "click semantics) or X,Y,CLICK_X,CLICK_Y (iMouse as given, every frame), "

@@ -1,17 +1,22 @@
-// The option structs' tables (OptionMember, pattern/param_info.h): each
-// entry's default is its struct's own initialiser, its flag the name in
-// kebab case unless it says otherwise, and the struct's check refuses a
-// value just outside the entry's range, naming the entry, while the range's
-// ends pass.
+// The option structs' tables (OptionMember, pattern/param_info.h): the
+// flag is the name in kebab case unless the entry says otherwise, and the
+// struct's own validator refuses a value just outside the entry's range,
+// naming the entry, while the range's ends pass (where no cross-check of
+// the struct bounds them further).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
+#include "stochtex/pattern/presets.h"
 #include "stochtex/studies/artifact_report.h"
 #include "stochtex/studies/flow_study.h"
+#include "stochtex/studies/graph_filtering.h"
 #include "stochtex/studies/image_base_study.h"
 #include "stochtex/studies/marble_study.h"
+#include "stochtex/studies/normal_maps.h"
+#include "stochtex/studies/paper.h"
+#include "stochtex/studies/phasor_figures.h"
 #include "stochtex/studies/spectrum_study.h"
 #include "stochtex/studies/stability_study.h"
 #include "stochtex/studies/stimuli.h"
@@ -30,11 +35,14 @@ TEST(OptionMembers, KebabCaseIsTheFlagOfACamelCaseName) {
     EXPECT_EQ(kebabCase("levelAmplitude"), "level-amplitude");
 }
 
-// Every member of `members` through `check` (the struct's validator) on a
-// valid struct `valid`: its ends pass, the next values outside and NaN (for
-// a number) are refused with the member's name.
+// Every member of `members` through `check`, the struct's own validator,
+// from a valid struct `valid`: the next value outside either end (the next
+// float, or ±1 for an integer) and NaN (a number) are refused naming the
+// member; both ends pass `check` too where `endsPass` (else only the member's
+// own check: the struct's cross-checks bound them further, said per table).
 template <class Options, class Check>
-void expectRangesChecked(std::span<const OptionMember<Options>> members, const Options& valid, Check check) {
+void expectRangesChecked(std::span<const OptionMember<Options>> members, const Options& valid, Check check,
+                         bool endsPass = true) {
     ASSERT_FALSE(members.empty());
     EXPECT_NO_THROW(check(valid));
     for (const OptionMember<Options>& m : members) {
@@ -44,9 +52,7 @@ void expectRangesChecked(std::span<const OptionMember<Options>> members, const O
         EXPECT_LT(p.min, p.max);
         std::visit(
             [&](auto member) {
-                using T = std::remove_reference_t<decltype(Options{}.*member)>;
-                EXPECT_EQ(p.typical(), double(Options{}.*member));  // the default is the struct's
-                EXPECT_EQ(p.type, (std::is_same_v<T, int> ? ParamType::Integer : ParamType::Number));
+                using T = std::remove_cvref_t<decltype(valid.*member)>;
                 const auto with = [&](double v) {
                     Options o = valid;
                     o.*member = T(v);
@@ -58,10 +64,16 @@ void expectRangesChecked(std::span<const OptionMember<Options>> members, const O
                     const InputError e = test::inputErrorOf([&] { check(with(v)); });
                     EXPECT_EQ(e.parameter(), p.name) << v;
                 }
-                if constexpr (std::is_same_v<T, double>)
-                    EXPECT_EQ(test::inputErrorOf([&] { check(with(std::nan(""))); }).parameter(), p.name);
-                // Both ends pass the member's own check (others may bound it further).
-                for (const double v : {p.min, p.max}) EXPECT_NO_THROW(checkMembers(with(v), members)) << v;
+                if constexpr (std::is_same_v<T, double>) {
+                    const InputError e = test::inputErrorOf([&] { check(with(std::nan(""))); });
+                    EXPECT_EQ(e.parameter(), p.name);
+                }
+                for (const double v : {p.min, p.max}) {
+                    if (endsPass) {
+                        EXPECT_NO_THROW(check(with(v))) << v;
+                    }
+                    EXPECT_NO_THROW(checkMembers(with(v), members)) << v;
+                }
             },
             m.member);
     }
@@ -73,25 +85,39 @@ TEST(OptionMembers, EveryStudysNumbersAreCheckedByTheirEntries) {
     expectRangesChecked(stabilityStudyMembers(), stability, [](const auto& o) { validateStabilityStudy(o); });
     FlowStudyOptions flow;
     flow.region = SourceRegion::centred(4096, 4096);  // the widest window: step may reach its entry's max
-    expectRangesChecked(flowStudyMembers(), flow, [](const auto& o) { checkMembers(o, flowStudyMembers()); });
-    expectRangesChecked(spectrumStudyMembers(), SpectrumStudyOptions{},
-                        [](const auto& o) { checkMembers(o, spectrumStudyMembers()); });
+    expectRangesChecked(flowStudyMembers(), flow, [](const auto& o) { validateFlowStudy(o); });
+    // rMin at its top (0.75) is not below rMax.
+    expectRangesChecked(
+        spectrumStudyMembers(), SpectrumStudyOptions{}, [](const auto& o) { validateSpectrumStudy(o); }, false);
     expectRangesChecked(contrastStudyMembers(), ContrastStudyOptions{},
                         [](const auto& o) { validateContrastStudy(o); });
     expectRangesChecked(correlationStudyMembers(), CorrelationStudyOptions{},
                         [](const auto& o) { validateCorrelationStudy(o); });
+    // The study also needs images: the entries alone.
     expectRangesChecked(imageBaseStudyMembers(), ImageBaseStudyOptions{},
                         [](const auto& o) { checkMembers(o, imageBaseStudyMembers()); });
-    expectRangesChecked(marbleStudyMembers(), MarbleStudyOptions{},
-                        [](const auto& o) { checkMembers(o, marbleStudyMembers()); });
-    expectRangesChecked(stimulusSetMembers(), StimulusSetOptions{},
-                        [](const auto& o) { checkMembers(o, stimulusSetMembers()); });
-    expectRangesChecked(temporalCoherenceMembers(), TemporalCoherenceOptions{},
-                        [](const auto& o) { checkMembers(o, temporalCoherenceMembers()); });
+    // A size of 32 is below the default correlation window (96).
+    expectRangesChecked(
+        marbleStudyMembers(), MarbleStudyOptions{}, [](const auto& o) { validateMarbleStudy(o); }, false);
+    // A size of 8 is not divided by the default tiles (16, 32).
+    expectRangesChecked(
+        stimulusSetMembers(), StimulusSetOptions{}, [](const auto& o) { validateStimulusSet(o); }, false);
+    TemporalCoherenceOptions coherence;
+    coherence.times = {0.0, 1.0};
+    expectRangesChecked(temporalCoherenceMembers(), coherence, [](const auto& o) { validateTemporalCoherence(o); });
     expectRangesChecked(artifactReportMembers(), ArtifactReportOptions{},
-                        [](const auto& o) { checkMembers(o, artifactReportMembers()); });
+                        [](const auto& o) { validateArtifactReport(o); });
     expectRangesChecked(zoomParamsMembers(), ZoomParams{}, [](const auto& o) { validateZoomParams(o); });
     expectRangesChecked(marbleParamsMembers(), MarbleParams{}, [](const auto& o) { validateMarbleParams(o); });
+}
+
+TEST(OptionMembers, EveryPaperFiguresNumbersAreCheckedByTheirEntries) {
+    expectRangesChecked(figure4Members(), Figure4Options{}, [](const auto& o) { validateFigure4(o); });
+    expectRangesChecked(figure10Members(), Figure10Options{}, [](const auto& o) { validateFigure10(o); });
+    Figure12Options figure12;
+    figure12.pattern = loadPreset(figure12.name);
+    expectRangesChecked(figure12Members(), figure12, [](const auto& o) { validateFigure12(o); });
+    expectRangesChecked(figure14Members(), figure14Options(), [](const auto& o) { validateFigure14(o); });
 }
 
 // The flags that differ from the names, and the validators that still bound

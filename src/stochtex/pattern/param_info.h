@@ -96,9 +96,16 @@ struct OptionMember {
                                                                               double min, double max, T Options::*m,
                                                                               std::string flag = {})
         : info(optionParam(name, std::is_same_v<T, int> ? ParamType::Integer : ParamType::Number,
-                           std::move(description), double(Options{}.*m), min, max,
+                           std::move(description), double(defaults().*m), min, max,
                            flag.empty() ? kebabCase(name) : std::move(flag))),
           member(m) {}
+
+private:
+    // One default-constructed struct for every entry of the table.
+    static const Options& defaults() {
+        static const Options d{};
+        return d;
+    }
 };
 
 // Each member of `o` that `members` describes within its entry's range

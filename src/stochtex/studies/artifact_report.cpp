@@ -56,7 +56,7 @@ LayerCoherenceOptions coherenceOptions(const ArtifactReportOptions& o) {
 std::span<const OptionMember<ArtifactReportOptions>> artifactReportMembers() {
     using O = ArtifactReportOptions;
     static const OptionMember<O> members[] = {
-        {"frameSize", "Frame side of the spectrum, flow and coherence parts", 16, 2048, &O::frameSize},
+        {"frameSize", "Frame side of the spectrum, flow and coherence parts", 32, 2048, &O::frameSize},
         {"spectrumInstances", "Instances averaged by the spectrum part", 1, 100000, &O::spectrumInstances},
         {"coherenceFrames", "Frames of the temporal-coherence part, over two periods of the zoom", 2, 10000,
          &O::coherenceFrames},

@@ -12,7 +12,7 @@ std::span<const OptionMember<FlowStudyOptions>> flowStudyMembers() {
     using O = FlowStudyOptions;
     static const OptionMember<O> members[] = {
         {"frames", "Frames (image files: all)", 2, 10000, &O::frames},
-        {"timeStep", "Time between frames (image files: one file per frame)", -1e6, 1e6, &O::timeStep, "dt"},
+        {"timeStep", "Time between frames (image files: one file per frame)", -1e9, 1e9, &O::timeStep, "dt"},
         {"step", "Grid of the vectors, pixels (at most the window's side)", 1, 4096, &O::step},
         {"arrowScale", "Arrows drawn this many times their length", 1e-3, 1000, &O::arrowScale},
         {"instance", "The source's instance", 0, 1000000, &O::instance},

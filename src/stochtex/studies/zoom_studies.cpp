@@ -210,7 +210,7 @@ CorrelationStudyResult correlationStudy(const CorrelationStudyOptions& o, const 
 std::span<const OptionMember<ContrastStudyOptions>> contrastStudyMembers() {
     using O = ContrastStudyOptions;
     static const OptionMember<O> members[] = {
-        {"size", "Image size in pixels, centred on the zoom centre", 8, 8192, &O::size},
+        {"size", "Side of the contrast-correction textures in pixels, centred on the zoom centre", 8, 8192, &O::size},
     };
     return members;
 }
