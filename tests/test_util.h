@@ -29,9 +29,14 @@ inline double meanRgbDistance(const Image& a, const Image& b) {
 }
 
 // A path under the temp folder unique to this test process, so that
-// parallel ctest runs and other checkouts' tests never share files.
+// parallel ctest runs and other checkouts' tests never share files. A death
+// test in the "threadsafe" style re-executes the test binary, whose child
+// runs the test again from its fixture: it takes its parent's paths, so that
+// what the child leaves is where the parent looks (and removes).
 inline std::filesystem::path scratchPath(const std::string& name) {
-    return std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+    const bool deathTestChild = !GTEST_FLAG_GET(internal_run_death_test).empty();
+    return std::filesystem::temp_directory_path() /
+           (name + "_" + std::to_string(deathTestChild ? ::getppid() : ::getpid()));
 }
 
 // A fixture with a fresh folder of its own (named after the suite and the
