@@ -34,22 +34,25 @@ inline LeanLobe leanLobe(vec2 mean, vec2 var, float cov, float roughness) {
 }
 
 // The lobe's density of slopes at s (a 2D Gaussian: it integrates to 1
-// over the slope plane). exp(−q/2) is written exp2(−q/2·log2 e).
+// over the slope plane). exp(−q/2) is written exp2(−q/2·log2 e); one
+// division, for 1/det (a pixel's shading is mostly divisions and roots).
 inline float leanSlopeDensity(LeanLobe l, vec2 s) {
-    float det = l.sigma.x * l.sigma.y - l.sigma.z * l.sigma.z;
+    float invDet = 1.0f / (l.sigma.x * l.sigma.y - l.sigma.z * l.sigma.z);
     float dx = s.x - l.mean.x;
     float dy = s.y - l.mean.y;
-    float q = (dx * dx * l.sigma.y - 2.0f * dx * dy * l.sigma.z + dy * dy * l.sigma.x) / det;
-    return exp2(-0.72134752f * q) / (6.28318531f * sqrt(det));
+    float q = (dx * dx * l.sigma.y - 2.0f * dx * dy * l.sigma.z + dy * dy * l.sigma.x) * invDet;
+    return exp2(-0.72134752f * q) * (0.15915494f * sqrt(invDet));
 }
 
-// The micro-facet normal distribution of the lobe at the unit half vector
-// h: D(h) = P(s_h)/h_z⁴ with s_h = −(h_x, h_y)/h_z, the slope whose normal
-// is h (the Jacobian from slopes to directions; ∫ D(h) h_z dω = 1).
+// The micro-facet normal distribution of the lobe at the half vector h
+// (h_z > 0, any length): D = P(s_h)/ĥ_z⁴ with s_h = −(h_x, h_y)/h_z, the
+// slope whose normal is ĥ = h/|h| (the Jacobian from slopes to directions;
+// ∫ D ĥ_z dω = 1). Neither s_h nor 1/ĥ_z² = |h|²/h_z² needs h normalised.
 inline float leanNdf(LeanLobe l, vec3 h) {
-    vec2 s = vec2(-h.x / h.z, -h.y / h.z);
-    float c2 = h.z * h.z;
-    return leanSlopeDensity(l, s) / (c2 * c2);
+    float r = 1.0f / h.z;
+    vec2 s = vec2(-h.x * r, -h.y * r);
+    float secant2 = (h.x * h.x + h.y * h.y + h.z * h.z) * (r * r);
+    return leanSlopeDensity(l, s) * (secant2 * secant2);
 }
 
 // The Lambertian term of one slope s: n(s)·l = (l_z − s·l_xy)/√(1 + |s|²),
@@ -87,10 +90,6 @@ inline float leanDiffuse(LeanLobe lobe, vec3 l) {
 // lobe's specular reflection D(h)/(4 v_z) (micro-facet model without
 // Fresnel and shadowing; the geometric normal is z), scaled by `specular`.
 inline vec3 leanShade(LeanLobe lobe, vec3 l, vec3 v, vec3 albedo, float specular) {
-    float hx = l.x + v.x;
-    float hy = l.y + v.y;
-    float hz = l.z + v.z;
-    float hn = sqrt(hx * hx + hy * hy + hz * hz);
-    float d = leanNdf(lobe, vec3(hx / hn, hy / hn, hz / hn));
+    float d = leanNdf(lobe, l + v);
     return albedo * leanDiffuse(lobe, l) + vec3(specular * d / (4.0f * v.z));
 }
