@@ -4,10 +4,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <algorithm>
 #include <string>
 
 #include "stochtex/core/error.h"
@@ -22,7 +22,8 @@ inline double meanRgbDistance(const Image& a, const Image& b) {
     for (int y = 0; y < a.height(); ++y)
         for (int x = 0; x < a.width(); ++x) {
             double d2 = 0;
-            for (int c = 0; c < 3; ++c) d2 += (double(a.at(x, y, c)) - b.at(x, y, c)) * (double(a.at(x, y, c)) - b.at(x, y, c));
+            for (int c = 0; c < 3; ++c)
+                d2 += (double(a.at(x, y, c)) - b.at(x, y, c)) * (double(a.at(x, y, c)) - b.at(x, y, c));
             s += std::sqrt(d2);
         }
     return s / double(a.pixelCount());

@@ -773,8 +773,8 @@ case_bad_input() {
 }
 
 case_bad_render_flags() {
-  expect_bad "NaN scale" "$out/bad6.png" "--scale: scale must be a number in [1e-6, 1e6], got nan" -- "$bin" render --preset gaussian -o "$out/bad6.png" --scale nan
-  expect_bad "negative scale" "$out/bad7.png" "--scale: scale must be a number in [1e-6, 1e6], got -2" -- "$bin" render --preset gaussian -o "$out/bad7.png" --scale -2
+  expect_bad "NaN scale" "$out/bad6.png" "--scale: scale must be in [1e-06, 1e+06], got nan" -- "$bin" render --preset gaussian -o "$out/bad6.png" --scale nan
+  expect_bad "negative scale" "$out/bad7.png" "--scale: scale must be in [1e-06, 1e+06], got -2" -- "$bin" render --preset gaussian -o "$out/bad7.png" --scale -2
   expect_bad "negative size" "$out/bad8.png" "--size: size must be in [1, 16384] per side, got -5x-5" -- "$bin" render --preset gaussian -o "$out/bad8.png" --size=-5
   expect_bad "size over cap" "$out/bad9.png" "--size: size must be in [1, 16384] per side, got 100000x100000" -- "$bin" render --preset gaussian -o "$out/bad9.png" --size 100000
   expect_bad "NaN offset" "$out/bad10.png" "--offset: offset must be finite and at most 1e9 texels, got nan,0" -- "$bin" render --preset gaussian -o "$out/bad10.png" --offset nan,0
@@ -795,7 +795,7 @@ case_bad_render_flags() {
   expect_bad "figure12 tilt" "$out/bad21f" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" reproduce figure12 --tilt 95 -o "$out/bad21f"
   expect_bad "figure12 aniso" "$out/bad21g" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" reproduce figure12 --aniso 0 -o "$out/bad21g"
   "$bin" render --help | grep -q -- "--tilt FLOAT=60 .*degrees, in \[0, 89\]" || fail "render --help does not show --tilt's range from its entry"
-  expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be a number in [1e-6, 1e6], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
+  expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be in [1e-06, 1e+06], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
   expect_bad "bad view" "$out/bad23.png" '--view: view must be zoom or plane, got "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
   expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper or deliot-heitz, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh
   expect_bad "stability scale" "$out/sbad1" "--from: from must be in [1e-06, 1e+06], got 0" -- "$bin" stability --preset gaussian -o "$out/sbad1" --from 0

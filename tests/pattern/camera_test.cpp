@@ -131,7 +131,7 @@ TEST(Camera, ErrorsNameTheParameterAndTheValue) {
     c = plane(30, 60, std::nan(""));
     e = test::inputErrorOf([&] { validateCamera(c); });
     EXPECT_EQ(e.parameter(), "scale");
-    EXPECT_STREQ(e.what(), "scale must be a number in [1e-6, 1e6], got nan");
+    EXPECT_STREQ(e.what(), "scale must be in [1e-06, 1e+06], got nan");
     c = plane(30, 60, 1.0);
     c.view.width = 0;
     e = test::inputErrorOf([&] { validateCamera(c); });

@@ -15,15 +15,8 @@ const PatternMembers& patternMembers() {
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     static const PatternMembers members = [&] {
         PatternMembers m;
-        m.scale = ParamInfo{"scale",
-                            ParamType::Number,
-                            "Example texels per output pixel",
-                            1.0,
-                            kMinViewScale,
-                            kMaxViewScale,
-                            nullptr,
-                            {},
-                            64};
+        m.scale = viewScaleParam();
+        m.scale.dragMax = 64;
         m.gridDensity = ParamInfo{"grid_density",
                                   ParamType::Number,
                                   "Triangle-grid cells per example period",

@@ -4,25 +4,29 @@
 #include <string>
 
 #include "stochtex/core/error.h"
+#include "stochtex/pattern/param_info.h"
 
 namespace stochtex {
 
-void checkViewScale(double scale, const char* parameter) {
-    if (!(scale >= kMinViewScale && scale <= kMaxViewScale))  // NaN too
-        throw InputError::parameter(parameter, "must be a number in [1e-6, 1e6], got " + formatValue(scale));
+const ParamInfo& viewScaleParam() {
+    static const ParamInfo p = optionParam("scale", ParamType::Number, "Example texels per output pixel", 1.0,
+                                           kMinViewScale, kMaxViewScale, "scale");
+    return p;
 }
 
 void validateView(const View& view) {
     const std::string size = std::to_string(view.width) + "x" + std::to_string(view.height);
     if (view.width < 1 || view.height < 1 || view.width > kMaxOutputSide || view.height > kMaxOutputSide)
-        throw InputError::parameter("size", "must be in [1, " + std::to_string(kMaxOutputSide) + "] per side, got " + size);
+        throw InputError::parameter("size",
+                                    "must be in [1, " + std::to_string(kMaxOutputSide) + "] per side, got " + size);
     if ((long long)view.width * view.height > kMaxOutputPixels)
-        throw InputError::parameter("size", "must be at most " + std::to_string(kMaxOutputPixels) + " pixels, got " + size);
-    checkViewScale(view.scale, "scale");
+        throw InputError::parameter("size",
+                                    "must be at most " + std::to_string(kMaxOutputPixels) + " pixels, got " + size);
+    checkNumber(viewScaleParam(), view.scale);
     if (!std::isfinite(view.offsetU) || !std::isfinite(view.offsetV) || std::abs(view.offsetU) > 1e9 ||
         std::abs(view.offsetV) > 1e9)
-        throw InputError::parameter("offset", "must be finite and at most 1e9 texels, got " + formatValue(view.offsetU) +
-                                                  "," + formatValue(view.offsetV));
+        throw InputError::parameter("offset", "must be finite and at most 1e9 texels, got " +
+                                                  formatValue(view.offsetU) + "," + formatValue(view.offsetV));
 }
 
 }  // namespace stochtex

@@ -17,14 +17,17 @@ constexpr long long kMaxOutputPixels = 8192LL * 8192LL;
 // image spans a sixtieth of a texel, and a scale near the smallest double
 // rounds every pixel's uv to the same point (a zero-sized footprint).
 constexpr double kMinViewScale = 1e-6, kMaxViewScale = 1e6;
-// InputError naming `parameter` unless scale is in [kMinViewScale, kMaxViewScale].
-void checkViewScale(double scale, const char* parameter);
+struct ParamInfo;
+// A view's scale as a parameter (flag --scale): the range above, default 1.
+// validateView checks by it; the pattern file's "scale" is it with a drag
+// range (patternMembers).
+const ParamInfo& viewScaleParam();
 
 // Maps output pixels to texture space: pixel (px, py) covers example texels
 // offset + (p + ½)·scale, i.e. uv = (offset + (p + ½)·scale) / W (pixelUv).
 struct View {
     int width = 512, height = 512;
-    double scale = 1.0;              // example texels per output pixel
+    double scale = 1.0;               // example texels per output pixel
     double offsetU = 0, offsetV = 0;  // in example texels
 };
 
