@@ -42,21 +42,7 @@ void registerAnalyze(CLI::App& app) {
         options.correlation.zoom = makeZoomParams(args->zoom);
         options.correlation.base = makeZoomBase(args->zoom);
         for (const std::string& f : *images) options.imageBases.push_back({f, readImage(f)});
-        options.imageBase.zoom = options.correlation.zoom;
-        options.imageBase.zoom.layers = 8;  // Figure 2.17
-        // The image-base and marble parts at the frame size and instance count
-        // of the others, within their own entries' ranges (a --frame-size or
-        // --instances past a part's range sets that part at its end).
-        const auto within = [](int v, const auto& members, const char* name) {
-            const ParamInfo& p = optionMember(members, name).info;
-            return std::clamp(v, int(p.min), int(p.max));
-        };
-        options.imageBase.instances = within(options.correlation.instances, imageBaseStudyMembers(), "instances");
-        const auto& marble = marbleStudyMembers();
-        options.marble.size = within(options.frameSize, marble, "size");
-        options.marble.correlationSize = within(options.marble.size * 3 / 8, marble, "correlationSize");
-        options.marble.instances = within(options.correlation.instances, marble, "instances");
-        options.marble.flowStep = within(options.marble.size / 16, marble, "flowStep");
+        options = withDerivedParts(std::move(options));
         validateArtifactReport(options);
         ensureFolder(args->dir + "/marble");
         FrameSequenceSet videos(args->dir + "/marble", marbleVideoNames(options.marble), options.marble.size,

@@ -120,6 +120,39 @@ TEST(OptionMembers, EveryPaperFiguresNumbersAreCheckedByTheirEntries) {
     expectRangesChecked(figure14Members(), figure14Options(), [](const auto& o) { validateFigure14(o); });
 }
 
+// The report's parts that follow the others: at the frame size and instance
+// count within their own ranges, so that every --frame-size and --instances
+// the report's entries allow gives a report that validates.
+TEST(OptionMembers, TheReportsDerivedPartsStayWithinTheirEntries) {
+    ArtifactReportOptions o;
+    o.frameSize = 256;
+    o.correlation.instances = 40;
+    o.correlation.zoom.layers = 5;
+    ArtifactReportOptions d = withDerivedParts(o);
+    EXPECT_EQ(d.marble.size, 256);
+    EXPECT_EQ(d.marble.correlationSize, 96);
+    EXPECT_EQ(d.marble.flowStep, 16);
+    EXPECT_EQ(d.marble.instances, 40);
+    EXPECT_EQ(d.imageBase.instances, 40);
+    EXPECT_EQ(d.imageBase.zoom.layers, 8);  // Figure 2.17, whatever the correlation's
+    EXPECT_NO_THROW(validateArtifactReport(d));
+    // Past a part's range: that part at its end, still a valid report.
+    o.frameSize = int(optionMember(artifactReportMembers(), "frameSize").info.max);  // 2048
+    o.correlation.instances = 2;
+    d = withDerivedParts(o);
+    EXPECT_EQ(d.marble.size, int(optionMember(marbleStudyMembers(), "size").info.max));
+    EXPECT_EQ(d.marble.correlationSize, 384);
+    EXPECT_EQ(d.marble.flowStep, 64);
+    EXPECT_EQ(d.marble.instances, int(optionMember(marbleStudyMembers(), "instances").info.min));
+    EXPECT_EQ(d.imageBase.instances, 2);
+    EXPECT_NO_THROW(validateArtifactReport(d));
+    o.frameSize = int(optionMember(artifactReportMembers(), "frameSize").info.min);  // 32
+    d = withDerivedParts(o);
+    EXPECT_EQ(d.marble.size, 32);
+    EXPECT_EQ(d.marble.correlationSize, 16);  // 12, raised to the entry's least
+    EXPECT_EQ(d.marble.flowStep, 4);          // 2, likewise
+}
+
 // The flags that differ from the names, and the validators that still bound
 // a member by another (what one entry cannot say).
 TEST(OptionMembers, FlagsAndCrossChecks) {

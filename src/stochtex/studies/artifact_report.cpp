@@ -64,6 +64,22 @@ std::span<const OptionMember<ArtifactReportOptions>> artifactReportMembers() {
     return members;
 }
 
+ArtifactReportOptions withDerivedParts(ArtifactReportOptions o) {
+    const auto within = [](int v, const auto& members, const char* name) {
+        const ParamInfo& p = optionMember(members, name).info;
+        return std::clamp(v, int(p.min), int(p.max));
+    };
+    o.imageBase.zoom = o.correlation.zoom;
+    o.imageBase.zoom.layers = 8;  // Figure 2.17
+    o.imageBase.instances = within(o.correlation.instances, imageBaseStudyMembers(), "instances");
+    const auto& marble = marbleStudyMembers();
+    o.marble.size = within(o.frameSize, marble, "size");
+    o.marble.correlationSize = within(o.marble.size * 3 / 8, marble, "correlationSize");
+    o.marble.instances = within(o.correlation.instances, marble, "instances");
+    o.marble.flowStep = within(o.marble.size / 16, marble, "flowStep");
+    return o;
+}
+
 void validateArtifactReport(const ArtifactReportOptions& options) {
     validateCorrelationStudy(options.correlation);
     validateContrastStudy(options.contrast);

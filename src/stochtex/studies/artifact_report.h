@@ -38,6 +38,13 @@ struct ArtifactReportOptions {
 };
 // The entries of ArtifactReportOptions' own numbers (its check; the CLI's flags).
 std::span<const OptionMember<ArtifactReportOptions>> artifactReportMembers();
+// The options with the parts that follow the others set from them: the
+// image-base part on the correlation's zoom texture with 8 layers (Figure
+// 2.17) and its instance count; the marble at frameSize (its correlation
+// window 3/8 of it, its flow step 1/16) and the same instance count. Each
+// within its own entry's range: a frame size or an instance count past a
+// part's range sets that part at its end.
+ArtifactReportOptions withDerivedParts(ArtifactReportOptions options);
 // InputError for unusable settings, before any work.
 void validateArtifactReport(const ArtifactReportOptions& options);
 // Runs sliding, contrast, correlation, spectrum, flow, temporal coherence,
