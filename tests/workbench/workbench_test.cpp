@@ -15,14 +15,15 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/image/image_io.h"
-#include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/workbench/document.h"
 #include "stochtex/workbench/editors.h"
 #include "stochtex/workbench/json_layout.h"
 #include "stochtex/workbench/live_analysis.h"
+#include "stochtex/workbench/previews.h"
 #include "stochtex/workbench/script.h"
 #include "test_util.h"
 
@@ -33,8 +34,9 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 struct TempDir {
-    fs::path path = fs::temp_directory_path() / ("stochtex-wb-" + std::to_string(::getpid()) + "-" +
-                                                 std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+    fs::path path =
+        fs::temp_directory_path() / ("stochtex-wb-" + std::to_string(::getpid()) + "-" +
+                                     std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
     TempDir() { fs::create_directories(path); }
     ~TempDir() { fs::remove_all(path); }
 };
@@ -88,6 +90,75 @@ TEST(WorkbenchDocument, EditsAreKeptOnlyWhenThePatternStillParses) {
 
 // Undo and redo move between the marked states; a new edit forgets what
 // was undone; the history is capped; a reload is one more step.
+// Issue 31 item 1: an edit is parsed once (to check it) and that parse is
+// what the workbench builds from; the revision counts accepted changes only.
+TEST(WorkbenchDocument, AnEditIsParsedOnceAndCountedByTheRevision) {
+    WorkbenchDocument d = WorkbenchDocument::preset("camouflage");
+    const uint64_t r0 = d.revision();
+    const PatternSpec* spec = &d.patternSpec();
+    EXPECT_EQ(&d.patternSpec(), spec);  // the kept parse, not a new one per call
+    d.set("/colormap/shapes/0/colour", "#d02020");
+    EXPECT_EQ(d.revision(), r0 + 1);
+    EXPECT_NEAR(d.patternSpec().colormap.painted.shapes[0].colour[0], float(0xd0) / 255.0f, 1e-6);
+    const PatternSpec edited = d.patternSpec();
+    EXPECT_THROW(d.set("/colormap/shapes/0/colour", "red"), InputError);
+    EXPECT_EQ(d.revision(), r0 + 1);  // refused: neither the revision nor the parse moved
+    EXPECT_TRUE(d.patternSpec().colormap == edited.colormap);
+    d.checkpoint();
+    d.set("/noise_x/components/0/cutoff", 5);
+    EXPECT_EQ(d.revision(), r0 + 2);
+    ASSERT_TRUE(d.undo());
+    EXPECT_EQ(d.revision(), r0 + 3);
+    EXPECT_TRUE(d.patternSpec().noise[0] == edited.noise[0]);  // the undone state's parse
+    d.reload();
+    EXPECT_EQ(d.revision(), r0 + 4);
+    EXPECT_TRUE(d.patternSpec().colormap == WorkbenchDocument::preset("camouflage").patternSpec().colormap);
+}
+
+// Issue 31 item 1: a colormap edit does not synthesise the noises again and
+// a noise edit does not rasterise the colormap; the previews are those of a
+// fresh build either way.
+TEST(PreviewCache, AnEditRebuildsOnlyThePartItChanged) {
+    WorkbenchDocument d = WorkbenchDocument::preset("camouflage");
+    PreviewCache cache;
+    cache.update(d.patternSpec());
+    EXPECT_EQ(cache.colormapBuilds(), 1);
+    EXPECT_EQ(cache.exampleBuilds(), 2);
+    cache.update(d.patternSpec());  // nothing changed: nothing built
+    EXPECT_EQ(cache.colormapBuilds(), 1);
+    EXPECT_EQ(cache.exampleBuilds(), 2);
+
+    d.set("/colormap/shapes/0/colour", "#d02020");
+    const PatternPreviews& afterColormap = cache.update(d.patternSpec());
+    EXPECT_EQ(cache.colormapBuilds(), 2);
+    EXPECT_EQ(cache.exampleBuilds(), 2);
+    PreviewCache fresh;
+    EXPECT_EQ(afterColormap.colormap.data(), fresh.update(d.patternSpec()).colormap.data());
+
+    d.set("/noise_y/components/0/cutoff", 5);
+    const PatternPreviews& afterNoise = cache.update(d.patternSpec());
+    EXPECT_EQ(cache.colormapBuilds(), 2);
+    EXPECT_EQ(cache.exampleBuilds(), 3);  // N_y only
+    PreviewCache fresh2;
+    const PatternPreviews& rebuilt = fresh2.update(d.patternSpec());
+    const GraphPattern program = GraphPattern::build(d.patternSpec());
+    for (size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(afterNoise.examples[k].data(), rebuilt.examples[k].data()) << k;
+        EXPECT_EQ(afterNoise.spectra[k].data(), rebuilt.spectra[k].data()) << k;
+        // The example the program renders with (its seed from the pattern's).
+        EXPECT_EQ(afterNoise.examples[k].data(), program.leafPairs()[0].channel(int(k)).example().values().data()) << k;
+    }
+    // The pattern seed reaches the noises without a seed of their own.
+    d.set("/seed", 99);
+    cache.update(d.patternSpec());
+    EXPECT_EQ(cache.exampleBuilds(), 5);
+    EXPECT_EQ(cache.colormapBuilds(), 2);
+    cache.clear();  // a reload: everything again
+    cache.update(d.patternSpec());
+    EXPECT_EQ(cache.exampleBuilds(), 7);
+    EXPECT_EQ(cache.colormapBuilds(), 3);
+}
+
 TEST(WorkbenchDocument, UndoAndRedoMoveBetweenCheckpoints) {
     WorkbenchDocument doc = WorkbenchDocument::preset("camouflage");
     const json original = doc.json();
@@ -231,7 +302,8 @@ TEST(WorkbenchDocument, SavingAnEditChangesOnlyItsLine) {
     ASSERT_EQ(after.size(), before.size());
     for (size_t k = 0; k < before.size(); ++k)
         if (k == 6)
-            EXPECT_EQ(after[k], R"(  "noise_x": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 9}]})");
+            EXPECT_EQ(after[k],
+                      R"(  "noise_x": {"type": "spectrum", "components": [{"shape": "lowpass", "cutoff": 9}]})");
         else
             EXPECT_EQ(after[k], before[k]) << "line " << k + 1;
 
@@ -400,8 +472,7 @@ TEST(WorkbenchEditors, ClickingTheCanvasPaintsAndDraggingMovesAShape) {
     EXPECT_TRUE(panel.frame(doc.json(), previews, state, on, false).empty());
     EXPECT_TRUE(panel.frame(doc.json(), previews, state, on, true).empty());
     EXPECT_EQ(brush.moving, 3);
-    const std::vector<JsonEdit> moved =
-        panel.frame(doc.json(), previews, state, ImVec2(on.x - 20, on.y - 10), true);
+    const std::vector<JsonEdit> moved = panel.frame(doc.json(), previews, state, ImVec2(on.x - 20, on.y - 10), true);
     ASSERT_EQ(moved.size(), 1u);
     EXPECT_EQ(moved[0].pointer, "/colormap/shapes/3");
     EXPECT_NEAR(moved[0].value["center"][0].get<double>(), 0.9 - 20 / previews.canvasSize, 1e-4);
@@ -483,7 +554,8 @@ TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {
     EXPECT_EQ(message(R"([{"frame": 3, "pause": true}, {"frame": 1, "quit": true}])"),
               "s.json: /1/frame: frames never go back (the step before runs at frame 3)");
     EXPECT_EQ(message(R"([{"filter": "paper", "mode": "split"}])"), "s.json: /0: one action per step");
-    EXPECT_EQ(message(R"([{"frame": 1}])"), "s.json: /0: a step needs one action (zoom, pan, filter, set, screenshot, …)");
+    EXPECT_EQ(message(R"([{"frame": 1}])"),
+              "s.json: /0: a step needs one action (zoom, pan, filter, set, screenshot, …)");
     EXPECT_NE(message(R"([{"zom": 2}])").find("/0"), std::string::npos);
     EXPECT_NE(message(R"([{"mode": "quad"}])").find("/0/mode: unknown value \"quad\""), std::string::npos);
     EXPECT_NE(message(R"([{"filter": "reference"}])").find("/0/filter"), std::string::npos);
@@ -493,24 +565,25 @@ TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {
 // A key step names a key as the help does; it becomes GLFW's key and modifiers.
 TEST(WorkbenchScript, KeysAreNamedAsOnTheKeyboard) {
     const std::vector<WorkbenchStep> steps = parseWorkbenchScript(
-        json::parse(R"([{"key": "V"}, {"key": "f12"}, {"key": "Ctrl+Shift+Z"}, {"key": "]"}, {"key": "7"}])"), "s.json");
+        json::parse(R"([{"key": "V"}, {"key": "f12"}, {"key": "Ctrl+Shift+Z"}, {"key": "]"}, {"key": "7"}])"),
+        "s.json");
     ASSERT_EQ(steps.size(), 5u);
     EXPECT_EQ(steps[0].action, WorkbenchStep::Action::Key);
-    EXPECT_EQ(steps[0].key, 86);   // GLFW_KEY_V
-    EXPECT_EQ(steps[1].key, 301);  // GLFW_KEY_F12
-    EXPECT_EQ(steps[2].key, 90);   // GLFW_KEY_Z
+    EXPECT_EQ(steps[0].key, 86);    // GLFW_KEY_V
+    EXPECT_EQ(steps[1].key, 301);   // GLFW_KEY_F12
+    EXPECT_EQ(steps[2].key, 90);    // GLFW_KEY_Z
     EXPECT_EQ(steps[2].mods, 0x3);  // GLFW_MOD_SHIFT | GLFW_MOD_CONTROL
-    EXPECT_EQ(steps[3].key, 93);   // GLFW_KEY_RIGHT_BRACKET
-    EXPECT_EQ(steps[4].key, 55);   // GLFW_KEY_7
+    EXPECT_EQ(steps[3].key, 93);    // GLFW_KEY_RIGHT_BRACKET
+    EXPECT_EQ(steps[4].key, 55);    // GLFW_KEY_7
     EXPECT_EQ(steps[0].mods, 0);
-    for (const char* bad : {"f13", "f01", "alt+v", "vv", ""})
-        EXPECT_THROW(parseKeyChord(bad), InputError) << bad;
+    for (const char* bad : {"f13", "f01", "alt+v", "vv", ""}) EXPECT_THROW(parseKeyChord(bad), InputError) << bad;
 }
 
 // Mouse steps drive a program's iMouse: a point in its pixels, or a release.
 TEST(WorkbenchScript, MouseStepsTakeAPointOrARelease) {
     const std::vector<WorkbenchStep> steps = parseWorkbenchScript(
-        json::parse(R"([{"frame": 2, "mousedown": [3, 4]}, {"mousemove": [5, 6]}, {"frame": 4, "mouseup": true}])"), "s.json");
+        json::parse(R"([{"frame": 2, "mousedown": [3, 4]}, {"mousemove": [5, 6]}, {"frame": 4, "mouseup": true}])"),
+        "s.json");
     ASSERT_EQ(steps.size(), 3u);
     using A = WorkbenchStep::Action;
     EXPECT_EQ(steps[0].action, A::MouseDown);
@@ -583,12 +656,16 @@ TEST(LiveAnalysis, FlickerOfAStillAndOfABlinkingFrame) {
             }
     double residual = -1, contrast = -1, relative = -1;
     const LiveAnalysisResult still = liveFlicker(a, a);
-    ASSERT_EQ(std::sscanf(still.summary.c_str(), "residual %lf (codes)\ncontrast %lf\nresidual / contrast %lf", &residual,
-                          &contrast, &relative), 3) << still.summary;
+    ASSERT_EQ(std::sscanf(still.summary.c_str(), "residual %lf (codes)\ncontrast %lf\nresidual / contrast %lf",
+                          &residual, &contrast, &relative),
+              3)
+        << still.summary;
     EXPECT_LT(relative, 0.01);
     const LiveAnalysisResult blink = liveFlicker(a, b);
-    ASSERT_EQ(std::sscanf(blink.summary.c_str(), "residual %lf (codes)\ncontrast %lf\nresidual / contrast %lf", &residual,
-                          &contrast, &relative), 3) << blink.summary;
+    ASSERT_EQ(std::sscanf(blink.summary.c_str(), "residual %lf (codes)\ncontrast %lf\nresidual / contrast %lf",
+                          &residual, &contrast, &relative),
+              3)
+        << blink.summary;
     EXPECT_GT(relative, 0.5);
     EXPECT_EQ(blink.image.width(), w);
     // The map's alpha: see-through where nothing flickers (an overlay of a

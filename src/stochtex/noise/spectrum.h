@@ -25,14 +25,16 @@ enum class SpectrumShape {
 
 struct SpectrumComponent {
     SpectrumShape shape = SpectrumShape::LowPass;
-    double frequency = 8.0;     // cut-off (low-pass) or centre frequency f0
-    double bandwidth = 2.0;     // standard deviation b of the band (ring, bi-lobe)
-    double orientation = 0.0;   // θ in degrees (bi-lobe only)
-    double weight = 1.0;        // relative power of this component
+    double frequency = 8.0;    // cut-off (low-pass) or centre frequency f0
+    double bandwidth = 2.0;    // standard deviation b of the band (ring, bi-lobe)
+    double orientation = 0.0;  // θ in degrees (bi-lobe only)
+    double weight = 1.0;       // relative power of this component
+
+    bool operator==(const SpectrumComponent&) const = default;
 };
 
 struct SpectrumSpec {
-    int size = 256;                    // W
+    int size = 256;  // W
     uint32_t seed = 0;
     double mean = 0.5;
     double stddev = 1.0 / 6.0;
@@ -40,6 +42,8 @@ struct SpectrumSpec {
     // Hilbert transform along the first bi-lobe's orientation (or +u): the
     // quadrature partner of the same seed, used for phasor fields.
     bool quadrature = false;
+
+    bool operator==(const SpectrumSpec&) const = default;
 };
 
 constexpr int kMaxExampleSize = 4096;

@@ -131,15 +131,17 @@ struct PaintedShape {
     // kept as its sine and cosine: set it with setAngle.
     double sinAngle = 0, cosAngle = 1;
     void setAngle(double degrees);
-    double width = 0;               // band width
+    double width = 0;                           // band width
     std::vector<std::array<double, 2>> points;  // polygon vertices (even-odd rule)
 
     bool contains(double x, double y) const;
+    bool operator==(const PaintedShape&) const = default;
 };
 
 struct PaintedColormap {
     Rgb background{0, 0, 0};
     std::vector<PaintedShape> shapes;
+    bool operator==(const PaintedColormap&) const = default;
 
     // Exact colour at (x, y).
     Rgb evaluate(double x, double y) const;

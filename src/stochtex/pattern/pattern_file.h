@@ -33,15 +33,18 @@ constexpr double kMaxFieldValue = 65504.0;
 struct NoiseSpec {
     enum class Source { Spectrum, Image };
     Source source = Source::Spectrum;
-    SpectrumSpec spectrum;          // Source::Spectrum
-    bool explicitSeed = false;      // spectrum.seed came from the file
-    std::filesystem::path image;    // Source::Image (resolved against the file's folder)
-    bool gaussianize = true;        // Source::Image: blend T(E), apply T⁻¹ after
-    int channel = -1;               // Source::Image: −1, the gray of its channels; else this channel
+    SpectrumSpec spectrum;        // Source::Spectrum
+    bool explicitSeed = false;    // spectrum.seed came from the file
+    std::filesystem::path image;  // Source::Image (resolved against the file's folder)
+    bool gaussianize = true;      // Source::Image: blend T(E), apply T⁻¹ after
+    int channel = -1;             // Source::Image: −1, the gray of its channels; else this channel
     // Source::Image with a channel: how its codes become values (Srgb: a
     // colour channel decoded to linear light; unset: Srgb, but Linear for a
     // float file). The gray of an exemplar is its codes, as data.
     std::optional<Transfer> transfer;
+
+    // Equal specs build the same example (the workbench's previews reuse it).
+    bool operator==(const NoiseSpec&) const = default;
 };
 
 struct ColormapSpec {
@@ -50,8 +53,8 @@ struct ColormapSpec {
     AnalyticColormap analytic = AnalyticColormap::Gaussian;
     PhasorProfile profile = PhasorProfile::Sine;
     double duty = 0.5;
-    std::vector<Rgb> palette;      // Phasor: P's value through these colours (as given, sRGB unless linear)
-    std::filesystem::path image;   // Image; Phasor with profile Image: the W×1 profile
+    std::vector<Rgb> palette;     // Phasor: P's value through these colours (as given, sRGB unless linear)
+    std::filesystem::path image;  // Image; Phasor with profile Image: the W×1 profile
     PaintedColormap painted;
     int resolution = 256;
     // How the colours given (hex, [r, g, b], the analytic H, an image's codes)
@@ -59,18 +62,21 @@ struct ColormapSpec {
     // light, Linear takes them as data. Unset: Srgb, except a float (EXR)
     // image, whose values are linear already.
     std::optional<Transfer> transfer;
+
+    // Equal specs build the same table (the workbench's previews reuse it).
+    bool operator==(const ColormapSpec&) const = default;
 };
 
 // How a normal map is lit and shaded (kernel/lean.glsl, docs/MATH.md "LEAN
 // mapping"). Directions are in the texture frame (x along u, y along v, z
 // up out of the plane), unit length, z > 0.
 struct LeanShading {
-    double roughness = 0.1;                      // base Beckmann roughness m (> 0)
+    double roughness = 0.1;                       // base Beckmann roughness m (> 0)
     std::array<double, 3> light{0.0, -0.6, 0.8};  // towards the light
     // Towards the viewer; unset: from the camera (Camera::viewDirection).
     std::optional<std::array<double, 3>> view;
-    Rgb albedo{0.18f, 0.18f, 0.18f};             // linear light
-    double specular = 0.05;                      // weight of the lobe's reflection
+    Rgb albedo{0.18f, 0.18f, 0.18f};  // linear light
+    double specular = 0.05;           // weight of the lobe's reflection
 };
 
 // Pattern JSON "normal_map": a height example (a noise, before any

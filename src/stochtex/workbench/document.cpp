@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <system_error>
+#include <utility>
 
 #include "stochtex/core/atomic_file.h"
 #include "stochtex/core/error.h"
@@ -49,7 +50,7 @@ WorkbenchDocument WorkbenchDocument::preset(const std::string& name) {
     d.text_ = presetText(name);
     d.json_ = JsonReader::parse(d.text_, d.source_);
     d.baseDir_ = ".";
-    d.patternSpec();  // a preset always parses; checked all the same
+    d.spec_ = d.parse(d.json_);  // a preset always parses; checked all the same
     return d;
 }
 
@@ -61,9 +62,10 @@ WorkbenchDocument WorkbenchDocument::patternFile(const std::string& path) {
     d.json_ = JsonReader::parse(d.text_, path);
     d.baseDir_ = fs::path(path).parent_path();
     if (d.baseDir_.empty()) d.baseDir_ = ".";
-    d.patternSpec();
+    d.spec_ = d.parse(d.json_);
     std::vector<fs::path> files{path};
-    forEachPath(d.json_, [&](const nlohmann::json& p) { files.push_back(d.baseDir_ / fs::path(p.get<std::string>())); });
+    forEachPath(d.json_,
+                [&](const nlohmann::json& p) { files.push_back(d.baseDir_ / fs::path(p.get<std::string>())); });
     d.watch(std::move(files));
     return d;
 }
@@ -89,23 +91,22 @@ WorkbenchDocument WorkbenchDocument::shadertoy(const std::string& path) {
     return d;
 }
 
-PatternSpec WorkbenchDocument::patternSpec() const {
+const PatternSpec& WorkbenchDocument::patternSpec() const {
     if (kind_ != Kind::Pattern) throw std::logic_error("WorkbenchDocument::patternSpec: not a pattern");
-    return parsePatternSpec(JsonReader(json_, source_), baseDir_);
+    return spec_;
+}
+
+PatternSpec WorkbenchDocument::parse(const nlohmann::json& pattern) const {
+    return parsePatternSpec(JsonReader(pattern, source_), baseDir_);
 }
 
 void WorkbenchDocument::replace(const nlohmann::json& pattern) { commit(pattern, true); }
 
 void WorkbenchDocument::commit(nlohmann::json next, bool record) {
     if (kind_ != Kind::Pattern) throw std::logic_error("WorkbenchDocument: a ShaderToy program is edited in its files");
-    nlohmann::json before = std::move(json_);
-    json_ = std::move(next);
-    try {
-        patternSpec();
-    } catch (...) {
-        json_ = std::move(before);
-        throw;
-    }
+    spec_ = parse(next);  // throws, and nothing changed, when it does not parse
+    nlohmann::json before = std::exchange(json_, std::move(next));
+    ++revision_;
     edited_ = true;
     if (record && stepPending_) {
         remember(std::move(before));
@@ -125,8 +126,7 @@ void WorkbenchDocument::set(const std::string& pointer, const nlohmann::json& va
         // appended at the end ("-" or the array's size).
         if (!p.empty()) {
             const nlohmann::json& parent = next[p.parent_pointer()];
-            if (parent.is_array() && p.back() != "-" && !next.contains(p) &&
-                p.back() != std::to_string(parent.size()))
+            if (parent.is_array() && p.back() != "-" && !next.contains(p) && p.back() != std::to_string(parent.size()))
                 throw InputError(source_ + ": " + pointer + ": the array holds " + std::to_string(parent.size()) +
                                  " elements; set one of them, or append at " + std::to_string(parent.size()) +
                                  " (or -)");
@@ -195,13 +195,14 @@ bool WorkbenchDocument::changedOnDisk() {
 
 void WorkbenchDocument::reload() {
     WorkbenchDocument next = kind_ == Kind::Shadertoy ? shadertoy(path_.string())
-                             : path_.empty()           ? preset(presetName_)
-                                                       : patternFile(path_.string());
+                             : path_.empty()          ? preset(presetName_)
+                                                      : patternFile(path_.string());
     if (kind_ == Kind::Pattern) {
         // What was on screen stays one undo away.
         next.undo_ = std::move(undo_);
         next.remember(json_);
     }
+    next.revision_ = revision_ + 1;
     *this = std::move(next);
 }
 

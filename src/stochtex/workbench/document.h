@@ -3,6 +3,7 @@
 // texture graph, held as its JSON so that every edit is an edit of the file
 // a user would write, and saving writes it back) or a ShaderToy program (a
 // folder or manifest). Files on disk are watched for live reload.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -31,9 +32,15 @@ public:
     // A pattern's JSON (Kind::Pattern).
     const nlohmann::json& json() const { return json_; }
     const std::filesystem::path& baseDir() const { return baseDir_; }
-    // The pattern as parsed now (InputError naming the source and the JSON
+    // The pattern as parsed when its JSON last changed: each accepted change
+    // is parsed once, to check it, and that parse is kept (a change that does
+    // not parse is refused: InputError naming the source and the JSON
     // pointer of a bad value, as for a file).
-    PatternSpec patternSpec() const;
+    const PatternSpec& patternSpec() const;
+    // Counts the changes of the pattern accepted (edits, undo, redo,
+    // replace, reload): what is built from patternSpec() is stale when it
+    // differs from the revision it was built at.
+    uint64_t revision() const { return revision_; }
     // The program (Kind::Shadertoy), as loaded last.
     const ShadertoySpec& shadertoySpec() const { return shadertoy_; }
 
@@ -91,6 +98,9 @@ private:
     std::string source_, presetName_;
     std::filesystem::path path_, baseDir_;
     nlohmann::json json_;
+    PatternSpec spec_;  // json_ parsed (Kind::Pattern)
+    uint64_t revision_ = 0;
+    PatternSpec parse(const nlohmann::json& pattern) const;
     std::string text_;  // the pattern's text as read (or last saved to its file): how saving lays it out
     ShadertoySpec shadertoy_;
     bool edited_ = false;

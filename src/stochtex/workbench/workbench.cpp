@@ -32,14 +32,15 @@
 #include "stochtex/report/frame_sequence.h"
 #include "stochtex/textures/texture_source.h"
 #include "stochtex/workbench/editors.h"
+#include "stochtex/workbench/previews.h"
 
 namespace stochtex {
 
 void validateWorkbenchOptions(const WorkbenchOptions& o) {
     const View& v = o.camera.view;
     if (std::min(v.width, v.height) < 16 || std::max(v.width, v.height) > 8192)
-        throw InputError::parameter("size", "must be in [16, 8192] per side, got " + std::to_string(v.width) + "x" +
-                                                std::to_string(v.height));
+        throw InputError::parameter(
+            "size", "must be in [16, 8192] per side, got " + std::to_string(v.width) + "x" + std::to_string(v.height));
     if (o.filter.source != StatisticsSource::Point && o.filter.source != StatisticsSource::Estimators)
         throw InputError::parameter("filter", "the window draws none, paper or smooth, got " + filterName(o.filter));
     checkInteger(anisoParam(), o.filter.aniso);
@@ -114,12 +115,18 @@ std::string freshName(const std::string& stem, const std::string& ext) {
 class Workbench {
 public:
     Workbench(WorkbenchDocument document, const WorkbenchOptions& options)
-        : doc_(std::move(document)), options_(options), camera_(options.camera), filter_(options.filter),
-          view_(options.view), mode_(options.mode), analysis_(options.analysis), showPanel_(options.panel) {
+        : doc_(std::move(document)),
+          options_(options),
+          camera_(options.camera),
+          filter_(options.filter),
+          view_(options.view),
+          mode_(options.mode),
+          analysis_(options.analysis),
+          showPanel_(options.panel) {
         filterName_ = filter_.source == StatisticsSource::Point
                           ? "none"
-                          : filterName(FilterOptions{}.use({filter_.source, {ResponseKind::PrefilteredColormap,
-                                                                             filter_.response.prefilter}}));
+                          : filterName(FilterOptions{}.use(
+                                {filter_.source, {ResponseKind::PrefilteredColormap, filter_.response.prefilter}}));
         response_ = filter_.response.kind;
         const int panel = showPanel_ ? kWorkbenchPanelWidth : 0;
         context_ = GlContext::window(camera_.view.width + panel, camera_.view.height, "stochtex workbench");
@@ -172,8 +179,8 @@ public:
     static void loadFont() {
         const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
         if (!std::filesystem::exists(path)) return;
-        static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070, 0x209F,
-                                         0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+        static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2027, 0x2070,
+                                         0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
         ImGui::GetIO().Fonts->AddFontFromFileTTF(path, 15.0f, nullptr, ranges);
     }
 
@@ -275,23 +282,21 @@ private:
         spec_ = doc_.patternSpec();
         hasNormalMap_ = spec_.normalMap.has_value() && !spec_.graph;
         if (!hasNormalMap_) response_ = ResponseKind::PrefilteredColormap;
-        // The colormap canvas: the table with y = 1 in the top row (toImage), as the window shows it.
-        canvas_.upload(encodeTransfer(buildColormap(spec_.colormap).toImage(),
-                                      spec_.colormap.transfer.value_or(Transfer::Srgb)));
-        for (int k = 0; k < 2; ++k) {
+        // The colormap canvas and the examples, rebuilt where their specs changed.
+        const PatternPreviews& previews = previews_.update(spec_);
+        canvas_.upload(previews.colormap);
+        for (size_t k = 0; k < 2; ++k) {
             example_[k] = {};
             exampleSpectrum_[k] = {};
-            if (spec_.graph || (k == 1 && spec_.quadraturePair)) continue;
-            const Image example = buildExampleImage(spec_.noise[k], k == 0 ? "noise_x" : "noise_y");
-            example_[k].upload(example);
-            exampleSpectrum_[k].upload(displaySpectrum(powerSpectrum(example)));
+            if (previews.examples[k].empty()) continue;
+            example_[k].upload(previews.examples[k]);
+            exampleSpectrum_[k].upload(previews.spectra[k]);
         }
     }
 
     // W of the pattern's example, for the instance offsets (built once per document, when needed).
     int exampleSize() {
-        if (exampleSize_ == 0)
-            exampleSize_ = GraphPattern::build(spec_).exampleSize();
+        if (exampleSize_ == 0) exampleSize_ = GraphPattern::build(spec_).exampleSize();
         return exampleSize_;
     }
 
@@ -309,6 +314,7 @@ private:
     void reloadDocument() {
         try {
             doc_.reload();
+            previews_.clear();
             loadDocument();
             error_.clear();
             notice_ = "reloaded " + doc_.source();
@@ -437,7 +443,8 @@ private:
                 showAnalysis(pr, 1);
                 // The split line, part of the picture (screenshots and
                 // recordings show where the halves meet): two pixels of white.
-                glScissor(pr.x + std::clamp(cut - 1, 0, std::max(0, pr.width - 2)), 0, std::min(2, pr.width), pr.height);
+                glScissor(pr.x + std::clamp(cut - 1, 0, std::max(0, pr.width - 2)), 0, std::min(2, pr.width),
+                          pr.height);
                 glClearColor(1, 1, 1, 1);
                 glClear(GL_COLOR_BUFFER_BIT);
                 glDisable(GL_SCISSOR_TEST);
@@ -571,9 +578,8 @@ private:
             analysedVersion_ = version;
             analysedHost_ = host_.get();
         }
-        const bool capture =
-            isLastFrame() || quit_ || context_->shouldClose() || !pendingScreenshots_.empty() ||
-            !scriptScreenshots_.empty() || recorder_;
+        const bool capture = isLastFrame() || quit_ || context_->shouldClose() || !pendingScreenshots_.empty() ||
+                             !scriptScreenshots_.empty() || recorder_;
         collectAnalysis(capture);
         if (!analysisJob_.valid() && queuedAnalysis_) {
             AnalysisRequest request = std::move(*queuedAnalysis_);
@@ -759,8 +765,9 @@ private:
     void runStep(const WorkbenchStep& s) {
         using A = WorkbenchStep::Action;
         if ((s.action == A::Set || s.action == A::Save || s.action == A::Undo || s.action == A::Redo) && isShadertoy())
-            throw InputError("script: a ShaderToy program is edited in its files, not by \"set\", \"undo\", "
-                             "\"redo\" or \"save\"");
+            throw InputError(
+                "script: a ShaderToy program is edited in its files, not by \"set\", \"undo\", "
+                "\"redo\" or \"save\"");
         switch (s.action) {
             case A::Zoom: zoomAt(s.amount, s.x, s.y); break;
             case A::Pan: pan(s.x, s.y); break;
@@ -777,7 +784,9 @@ private:
                 if (!error_.empty()) throw InputError(error_);
                 break;
             case A::Mode: mode_ = parseEnum(kWorkbenchModeNames, s.text, "mode"), analysisDirty_ = true; break;
-            case A::Analysis: analysis_ = parseEnum(kLiveAnalysisNames, s.text, "analysis"), analysisDirty_ = true; break;
+            case A::Analysis:
+                analysis_ = parseEnum(kLiveAnalysisNames, s.text, "analysis"), analysisDirty_ = true;
+                break;
             case A::View: setView(parseEnum(kWorkbenchViewNames, s.text, "view")); break;
             case A::Pick: setPick(s.x, s.y); break;
             case A::Pause: paused_ = s.amount != 0; break;
@@ -799,7 +808,8 @@ private:
             case A::MouseDown:
             case A::MouseMove:
             case A::MouseUp:
-                if (!isShadertoy()) throw InputError("script: a mouse step drives a ShaderToy program's iMouse; this is a pattern");
+                if (!isShadertoy())
+                    throw InputError("script: a mouse step drives a ShaderToy program's iMouse; this is a pattern");
                 // Applied before the program's next frame (its host may not be built yet).
                 pendingInputs_.push_back({0,
                                           s.action == A::MouseDown   ? ShadertoyInput::Kind::MouseDown
@@ -929,12 +939,16 @@ private:
         if (analysing() && ImGui::CollapsingHeader("Analysis", ImGuiTreeNodeFlags_DefaultOpen)) drawAnalysisPanel();
         ImGui::PopID();
         if (!isShadertoy()) {
-            auto id = [](const DisplayImage& i) { return i.empty() ? nullptr : reinterpret_cast<void*>(uintptr_t(i.texture())); };
+            auto id = [](const DisplayImage& i) {
+                return i.empty() ? nullptr : reinterpret_cast<void*>(uintptr_t(i.texture()));
+            };
             EditorPreviews previews;
             previews.colormap = id(canvas_);
             previews.colormapPointer = outputColormapPointer();
-            if (!spec_.graph && spec_.colormap.source == ColormapSpec::Source::Painted) previews.painted = &spec_.colormap.painted;
-            for (int k = 0; k < 2; ++k) previews.example[k] = id(example_[k]), previews.spectrum[k] = id(exampleSpectrum_[k]);
+            if (!spec_.graph && spec_.colormap.source == ColormapSpec::Source::Painted)
+                previews.painted = &spec_.colormap.painted;
+            for (int k = 0; k < 2; ++k)
+                previews.example[k] = id(example_[k]), previews.spectrum[k] = id(exampleSpectrum_[k]);
             ImGui::Checkbox("unfold every section", &expandAll_);
             previews.expandAll = expandAll_;
             applyGesture(patternEditor(doc_.json(), previews, editorState_));
@@ -987,13 +1001,15 @@ private:
         if (ImGui::SliderInt("aniso", &aniso, int(anisoParam().min), int(anisoParam().max))) setAniso(aniso);
         if (hasNormalMap_) {
             bool lean = response_ == ResponseKind::Lean;
-            if (ImGui::Checkbox("LEAN normals (L)", &lean)) setResponse(lean ? ResponseKind::Lean : ResponseKind::PrefilteredColormap);
+            if (ImGui::Checkbox("LEAN normals (L)", &lean))
+                setResponse(lean ? ResponseKind::Lean : ResponseKind::PrefilteredColormap);
         }
         WorkbenchView v = view_;
         if (enumCombo("view", v, kWorkbenchViewNames)) setView(v);
         if (view_ == WorkbenchView::Plane) {
             float tilt = float(camera_.tiltDeg);
-            if (ImGui::SliderFloat("tilt", &tilt, float(cameraTiltParam().min), float(cameraTiltParam().max), "%.1f°")) setTilt(tilt);
+            if (ImGui::SliderFloat("tilt", &tilt, float(cameraTiltParam().min), float(cameraTiltParam().max), "%.1f°"))
+                setTilt(tilt);
         }
         if (!isScene()) {
             float scale = float(camera_.view.scale);
@@ -1009,7 +1025,8 @@ private:
         ImGui::TextUnformatted(analysisSummary_.c_str());
         if (!analysisProfile_.empty())
             ImGui::PlotLines("##profile", analysisProfile_.data(), int(analysisProfile_.size()), 0,
-                             analysisProfileLabel_.c_str(), FLT_MAX, FLT_MAX, ImVec2(float(kWorkbenchPanelWidth - 30), 80));
+                             analysisProfileLabel_.c_str(), FLT_MAX, FLT_MAX,
+                             ImVec2(float(kWorkbenchPanelWidth - 30), 80));
         if (analysis_ == LiveAnalysisKind::Correlation) {
             if (enumCombo("show", statistic_, kLiveStatisticNames)) showStatisticChanged();
             ImGui::TextDisabled("right click: pick the point");
@@ -1034,7 +1051,8 @@ private:
             rows(kCommonKeys);
             ImGui::EndTable();
         }
-        if (isShadertoy()) ImGui::TextWrapped("Other keys and the left button go to the program (keyboard texture, iMouse).");
+        if (isShadertoy())
+            ImGui::TextWrapped("Other keys and the left button go to the program (keyboard texture, iMouse).");
         ImGui::End();
     }
 
@@ -1072,7 +1090,8 @@ private:
             SceneCamera c;
             const double yaw = yawDeg * std::numbers::pi / 180.0, p = pitchDeg * std::numbers::pi / 180.0;
             c.target = target;
-            c.eye = {float(target[0] + distance * std::cos(p) * std::sin(yaw)), float(target[1] + distance * std::sin(p)),
+            c.eye = {float(target[0] + distance * std::cos(p) * std::sin(yaw)),
+                     float(target[1] + distance * std::sin(p)),
                      float(target[2] + distance * std::cos(p) * std::cos(yaw))};
             return c;
         }
@@ -1086,6 +1105,7 @@ private:
 
     // The pattern and its renderers (one per filter and response, built on first use).
     PatternSpec spec_;
+    PreviewCache previews_;  // the canvas's and the examples' images, kept across edits of other parts
     int exampleSize_ = 0;
     bool hasNormalMap_ = false;
     std::map<std::pair<std::string, ResponseKind>, std::unique_ptr<GpuView>> renderers_;
@@ -1118,9 +1138,9 @@ private:
     std::chrono::steady_clock::time_point recordingStart_;
     std::optional<WallClockFrames> recordingClock_;
     long long recordedProgramFrame_ = -1;
-    Image heldShot_;  // a pattern recording's last picture, written when the next comes
+    Image heldShot_;                          // a pattern recording's last picture, written when the next comes
     int windowWidth_ = 1, windowHeight_ = 1;  // the framebuffer's pixels
-    float pixelScale_ = 1;                     // framebuffer pixels per window coordinate (HiDPI: 2)
+    float pixelScale_ = 1;                    // framebuffer pixels per window coordinate (HiDPI: 2)
     std::array<int, 2> lastTextureSize_{0, 0};
     char saveAs_[256] = "edited.json";
 
@@ -1147,7 +1167,8 @@ private:
     std::vector<std::string> pendingScreenshots_;  // F2's
     std::vector<std::string> scriptScreenshots_;   // the script's
     std::unique_ptr<FrameSequenceWriter> recorder_;
-    std::vector<ShadertoyInput> pendingInputs_;  // a program's mouse since its last frame: the window's and "mouse" steps
+    std::vector<ShadertoyInput>
+        pendingInputs_;                // a program's mouse since its last frame: the window's and "mouse" steps
     std::vector<KeyEvent> keyEvents_;  // since the last frame: the window's callback and "key" steps
     std::array<int, 2> recordingSize_{0, 0};
     std::string recordingPath_;
