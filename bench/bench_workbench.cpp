@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 #include <epoxy/gl.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -16,7 +17,12 @@
 #include "stochtex/analysis/power_spectrum.h"
 #include "stochtex/core/watchdog.h"
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/shadertoy.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/workbench/document.h"
+#include "stochtex/workbench/previews.h"
 
 namespace stochtex {
 namespace {
@@ -141,6 +147,62 @@ BENCHMARK(BM_ShadertoyWatchdogShare)
     ->Args({640, 360})
     ->Unit(benchmark::kMicrosecond)
     ->MinTime(1.0);
+
+// Issue 31 item 2: an edit's latency to its first frame, as the window runs
+// it (docs/WORKBENCH.md): the edit (checked by its one parse), the panels'
+// previews, the GPU program of the new pattern and one 256² filtered frame
+// read back. Edit 0: a colormap colour (camouflage); 1: a noise's cut-off
+// (camouflage); 2: a graph node's parameter (figure14's derivative angle).
+// Each iteration toggles the value, so every edit is a change. Beside it,
+// alternately, the same edit as the workbench did it before the preview
+// cache: every preview rebuilt and the pattern parsed a second time.
+void BM_WorkbenchEditLatency(benchmark::State& state) {
+    const std::unique_ptr<GlContext> context = bench::contextOrSkip(state);
+    if (!context) return;
+    const int edit = int(state.range(0));
+    WorkbenchDocument doc = WorkbenchDocument::preset(edit == 2 ? "figure14" : "camouflage");
+    const char* pointer = edit == 0   ? "/colormap/shapes/0/colour"
+                          : edit == 1 ? "/noise_y/components/0/cutoff"
+                                      : "/nodes/du/angle";
+    const nlohmann::json values[2] = {edit == 0   ? nlohmann::json("#d02020")
+                                      : edit == 1 ? nlohmann::json(5)
+                                                  : nlohmann::json(5),
+                                      doc.json().at(nlohmann::json::json_pointer(pointer))};
+    FilterOptions options;
+    options.use(parseFilter("paper"));
+    View view;
+    view.width = view.height = 256;
+    PreviewCache kept;
+    kept.update(doc.patternSpec());
+    int toggle = 0;
+    double phases[4] = {0, 0, 0, 0};  // edit, previews, program, frame (the kept path)
+    const auto editToFrame = [&](bool before) {
+        const auto t0 = std::chrono::steady_clock::now();
+        doc.set(pointer, values[toggle++ % 2]);
+        const auto t1 = std::chrono::steady_clock::now();
+        PreviewCache fresh;
+        if (before) parsePatternSpec(JsonReader(doc.json(), doc.source()), doc.baseDir());
+        benchmark::DoNotOptimize((before ? fresh : kept).update(doc.patternSpec()).colormap.data().data());
+        const auto t2 = std::chrono::steady_clock::now();
+        const std::unique_ptr<GpuView> program = makeGpuView(doc.patternSpec(), *context, options);
+        const auto t3 = std::chrono::steady_clock::now();
+        benchmark::DoNotOptimize(program->render(view).data().data());
+        const auto t4 = std::chrono::steady_clock::now();
+        if (!before) {
+            const std::chrono::steady_clock::time_point t[] = {t0, t1, t2, t3, t4};
+            for (int k = 0; k < 4; ++k) phases[k] += std::chrono::duration<double>(t[k + 1] - t[k]).count();
+        }
+    };
+    const bench::AlternateTimes t = bench::timeAlternately(
+        state, [&] { editToFrame(false); }, [&] { editToFrame(true); });
+    const double n = double(state.iterations());
+    state.counters["ms"] = 1e3 * t.first / n;
+    state.counters["before_ms"] = 1e3 * t.second / n;
+    const char* names[4] = {"edit_ms", "previews_ms", "program_ms", "frame_ms"};
+    for (int k = 0; k < 4; ++k) state.counters[names[k]] = 1e3 * phases[k] / n;
+    state.SetLabel(context->describe());
+}
+BENCHMARK(BM_WorkbenchEditLatency)->ArgName("edit")->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace stochtex

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <cmath>
 #include <stdexcept>
 
 #include "stochtex/core/error.h"
@@ -65,11 +65,11 @@ std::vector<std::vector<Tap>> blurTaps(int n, double sigma, int out) {
         std::vector<double> w;
         double sum = 0;
         for (int j = lo; j <= hi; ++j) {
-            const double rising = j == 0 ? node(0, P)
-                                         : (1.0 - j + c) * (node(j, P) - node(j - 1, P)) - s * (node(j, Q) - node(j - 1, Q));
-            const double falling = j == n - 1 ? 1.0 - node(j, P)
-                                              : (1.0 + j - c) * (node(j + 1, P) - node(j, P)) +
-                                                    s * (node(j + 1, Q) - node(j, Q));
+            const double rising =
+                j == 0 ? node(0, P) : (1.0 - j + c) * (node(j, P) - node(j - 1, P)) - s * (node(j, Q) - node(j - 1, Q));
+            const double falling =
+                j == n - 1 ? 1.0 - node(j, P)
+                           : (1.0 + j - c) * (node(j + 1, P) - node(j, P)) + s * (node(j + 1, Q) - node(j, Q));
             w.push_back(rising + falling);
             sum += w.back();
         }
@@ -241,24 +241,31 @@ Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const {
         const Rgb c = layer(kx, ky).sample(mx, my);
         return kernel::vec3(c[0], c[1], c[2]);
     };
-    const kernel::vec3 c = kernel::layerMix(at(b.k0.x, b.k0.y), at(b.k1.x, b.k0.y), at(b.k0.x, b.k1.y),
-                                            at(b.k1.x, b.k1.y), b.f);
+    const kernel::vec3 c =
+        kernel::layerMix(at(b.k0.x, b.k0.y), at(b.k1.x, b.k0.y), at(b.k0.x, b.k1.y), at(b.k1.x, b.k1.y), b.f);
     return {c.x, c.y, c.z};
 }
 
 Image PrefilteredColormap::atlas(int rx, int ry) const {
     const int n = int(sigmas_.size());
     Image out(rx, ry * n * n, 3, Image::Uninitialized{});
-    for (int kx = 0; kx < n; ++kx)
-        for (int ky = 0; ky < n; ++ky) {
-            const ColormapTable& l = layer(kx, ky);
-            const bool full = l.resolutionX() == rx && l.resolutionY() == ry;
-            for (int j = 0; j < ry; ++j)
+    // One layer per task, written a row at a time (tens of MB per table: a
+    // workbench edit of the colormap waits for it).
+    parallelRows(n * n, [&](int l0, int l1) {
+        for (int l = l0; l < l1; ++l) {
+            const ColormapTable& t = layer(l / n, l % n);
+            const bool full = t.resolutionX() == rx && t.resolutionY() == ry;
+            for (int j = 0; j < ry; ++j) {
+                float* row = out.row(l * ry + j);
                 for (int i = 0; i < rx; ++i) {
-                    const Rgb c = full ? l.entry(i, j) : l.sample(float(i) / float(rx - 1), float(j) / float(ry - 1));
-                    for (int k = 0; k < 3; ++k) out.at(i, (kx * n + ky) * ry + j, k) = c[size_t(k)];
+                    const Rgb c = full ? t.entry(i, j) : t.sample(float(i) / float(rx - 1), float(j) / float(ry - 1));
+                    row[3 * i] = c[0];
+                    row[3 * i + 1] = c[1];
+                    row[3 * i + 2] = c[2];
                 }
+            }
         }
+    });
     return out;
 }
 
