@@ -153,7 +153,8 @@ BENCHMARK(BM_ShadertoyWatchdogShare)
 // previews, the GPU program of the new pattern and one 256² filtered frame
 // read back. Edit 0: a colormap colour (camouflage); 1: a noise's cut-off
 // (camouflage); 2: a graph node's parameter (figure14's derivative angle).
-// Each iteration toggles the value, so every edit is a change. Beside it,
+// Every call changes the value, and each path's call a value its own last
+// call did not see. Beside it,
 // alternately, the same edit as the workbench did it before the preview
 // cache: every preview rebuilt and the pattern parsed a second time.
 void BM_WorkbenchEditLatency(benchmark::State& state) {
@@ -164,10 +165,11 @@ void BM_WorkbenchEditLatency(benchmark::State& state) {
     const char* pointer = edit == 0   ? "/colormap/shapes/0/colour"
                           : edit == 1 ? "/noise_y/components/0/cutoff"
                                       : "/nodes/du/angle";
-    const nlohmann::json values[2] = {edit == 0   ? nlohmann::json("#d02020")
-                                      : edit == 1 ? nlohmann::json(5)
-                                                  : nlohmann::json(5),
-                                      doc.json().at(nlohmann::json::json_pointer(pointer))};
+    // Three values in turn: the two paths alternate, so with two the kept
+    // cache would see the same spec at every call of its path.
+    const nlohmann::json original = doc.json().at(nlohmann::json::json_pointer(pointer));
+    const nlohmann::json values[3] = {edit == 0 ? nlohmann::json("#d02020") : nlohmann::json(5),
+                                      edit == 0 ? nlohmann::json("#20d020") : nlohmann::json(7), original};
     FilterOptions options;
     options.use(parseFilter("paper"));
     View view;
@@ -178,7 +180,7 @@ void BM_WorkbenchEditLatency(benchmark::State& state) {
     double phases[4] = {0, 0, 0, 0};  // edit, previews, program, frame (the kept path)
     const auto editToFrame = [&](bool before) {
         const auto t0 = std::chrono::steady_clock::now();
-        doc.set(pointer, values[toggle++ % 2]);
+        doc.set(pointer, values[toggle++ % 3]);
         const auto t1 = std::chrono::steady_clock::now();
         PreviewCache fresh;
         if (before) parsePatternSpec(JsonReader(doc.json(), doc.source()), doc.baseDir());

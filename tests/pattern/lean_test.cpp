@@ -95,8 +95,9 @@ TEST(SlopeField, IsASharedPairScaledToTheRmsSlope) {
     // Ridges across 30°: the slopes lie along (cos 30°, −sin 30°), so they
     // are anti-correlated (−1 for a single wave direction).
     EXPECT_LT(c / std::sqrt(v[0] * v[1]), -0.7);
-    EXPECT_EQ(test::inputErrorOf([&] { slopeField(example(SpectrumShape::LowPass, 4, 0, 0, 1, 32), -1, 1, 1); }).parameter(),
-              "amplitude");
+    EXPECT_EQ(
+        test::inputErrorOf([&] { slopeField(example(SpectrumShape::LowPass, 4, 0, 0, 1, 32), -1, 1, 1); }).parameter(),
+        "amplitude");
 }
 
 // The covariance estimator (eq. 16–19) against brute-force statistics on
@@ -179,8 +180,9 @@ TEST(LeanLobe, IntegratesToOneOverSlopesAndOverTheHemisphere) {
         vec2 mean, var;
         float cov, roughness;
     };
-    for (const Case c : {Case{vec2(0.0f), vec2(0.0f), 0.0f, 0.2f}, Case{vec2(0.1f, -0.2f), vec2(0.02f, 0.05f), -0.025f, 0.1f},
-                         Case{vec2(-0.3f, 0.05f), vec2(0.01f, 0.003f), 0.004f, 0.3f}}) {
+    for (const Case c :
+         {Case{vec2(0.0f), vec2(0.0f), 0.0f, 0.2f}, Case{vec2(0.1f, -0.2f), vec2(0.02f, 0.05f), -0.025f, 0.1f},
+          Case{vec2(-0.3f, 0.05f), vec2(0.01f, 0.003f), 0.004f, 0.3f}}) {
         const LeanLobe l = leanLobe(c.mean, c.var, c.cov, c.roughness);
         const double sx = std::sqrt(l.sigma.x), sy = std::sqrt(l.sigma.y);
         const int n = 600;
@@ -197,12 +199,20 @@ TEST(LeanLobe, IntegratesToOneOverSlopesAndOverTheHemisphere) {
         double hemi = 0;
         for (int p = 0; p < np; ++p)
             for (int t = 0; t < nt; ++t) {
-                const double theta = (t + 0.5) / nt * (0.5 * std::numbers::pi), phi = (p + 0.5) / np * 2 * std::numbers::pi;
+                const double theta = (t + 0.5) / nt * (0.5 * std::numbers::pi),
+                             phi = (p + 0.5) / np * 2 * std::numbers::pi;
                 const vec3 h(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
                              float(std::cos(theta)));
                 hemi += leanNdf(l, h) * std::cos(theta) * std::sin(theta);
             }
         EXPECT_NEAR(hemi * (0.5 * std::numbers::pi / nt) * (2 * std::numbers::pi / np), 1.0, 1e-3);
+        // D takes the half vector at any length (leanShade passes l + v
+        // unnormalised): the same density within float rounding.
+        for (const vec3 h : {vec3(0.1f, -0.2f, 0.97f), vec3(-0.5f, 0.3f, 0.8f), vec3(0.02f, 0.6f, 0.35f)}) {
+            const float unit = leanNdf(l, h / std::sqrt(h.x * h.x + h.y * h.y + h.z * h.z));
+            for (const float k : {0.3f, 1.7f, 2.0f})
+                EXPECT_NEAR(leanNdf(l, k * h), unit, 1e-5f * std::max(1.0f, unit)) << k;
+        }
     }
 }
 
@@ -288,7 +298,8 @@ TEST(LeanProgram, ZeroFootprintIsTheUnfilteredShading) {
     const Image near = lean.render(filtered, cam), nearPoint = lean.render(point, cam);
     EXPECT_EQ(near.data(), nearPoint.data());
     double spread = 0;  // the image is not flat: the test compares shading, not a constant
-    for (size_t i = 3; i < near.data().size(); ++i) spread = std::max(spread, double(std::abs(near.data()[i] - near.data()[0])));
+    for (size_t i = 3; i < near.data().size(); ++i)
+        spread = std::max(spread, double(std::abs(near.data()[i] - near.data()[0])));
     EXPECT_GT(spread, 0.05);
     cam.view.scale = 8;
     EXPECT_NE(lean.render(filtered, cam).data(), lean.render(point, cam).data());

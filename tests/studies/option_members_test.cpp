@@ -151,6 +151,7 @@ TEST(OptionMembers, TheReportsDerivedPartsStayWithinTheirEntries) {
     EXPECT_EQ(d.marble.size, 32);
     EXPECT_EQ(d.marble.correlationSize, 16);  // 12, raised to the entry's least
     EXPECT_EQ(d.marble.flowStep, 4);          // 2, likewise
+    EXPECT_NO_THROW(validateArtifactReport(d));
 }
 
 // The flags that differ from the names, and the validators that still bound

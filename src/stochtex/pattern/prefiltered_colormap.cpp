@@ -249,8 +249,8 @@ Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const {
 Image PrefilteredColormap::atlas(int rx, int ry) const {
     const int n = int(sigmas_.size());
     Image out(rx, ry * n * n, 3, Image::Uninitialized{});
-    // One layer per task, written a row at a time (tens of MB per table: a
-    // workbench edit of the colormap waits for it).
+    // The layers shared among the worker threads, each written a row at a
+    // time (tens of MB per table: a workbench edit of the colormap waits).
     parallelRows(n * n, [&](int l0, int l1) {
         for (int l = l0; l < l1; ++l) {
             const ColormapTable& t = layer(l / n, l % n);

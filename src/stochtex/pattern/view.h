@@ -18,9 +18,10 @@ constexpr long long kMaxOutputPixels = 8192LL * 8192LL;
 // rounds every pixel's uv to the same point (a zero-sized footprint).
 constexpr double kMinViewScale = 1e-6, kMaxViewScale = 1e6;
 struct ParamInfo;
-// A view's scale as a parameter (flag --scale): the range above, default 1.
+// A view's scale as a parameter entry: the range above, default 1.
 // validateView checks by it; the pattern file's "scale" is it with a drag
-// range (patternMembers).
+// range (patternMembers). (The commands' --scale, "default: the pattern's",
+// is still declared by hand.)
 const ParamInfo& viewScaleParam();
 
 // Maps output pixels to texture space: pixel (px, py) covers example texels

@@ -38,8 +38,8 @@ public:
     // pointer of a bad value, as for a file).
     const PatternSpec& patternSpec() const;
     // Counts the changes of the pattern accepted (edits, undo, redo,
-    // replace, reload): what is built from patternSpec() is stale when it
-    // differs from the revision it was built at.
+    // replace, reload; an edit to an equal value counts too): a value built
+    // from patternSpec() at one revision is stale at another.
     uint64_t revision() const { return revision_; }
     // The program (Kind::Shadertoy), as loaded last.
     const ShadertoySpec& shadertoySpec() const { return shadertoy_; }

@@ -26,7 +26,7 @@ const PatternPreviews& PreviewCache::update(const PatternSpec& spec) {
         // The example the renderer builds: with the seed the pattern gives it
         // (noiseSeed: the pattern seed's, unless the noise has its own).
         NoiseSpec noise = spec.noise[size_t(k)];
-        noise.spectrum.seed = noiseSeed(spec, k);
+        if (noise.source == NoiseSpec::Source::Spectrum) noise.spectrum.seed = noiseSeed(spec, k);
         if (noiseKeys_[size_t(k)] == noise) continue;
         noiseKeys_[size_t(k)].reset();  // stays unset if the build throws
         Image example = buildExampleImage(noise, k == 0 ? "noise_x" : "noise_y");
