@@ -88,9 +88,10 @@ TEST(WorkbenchDocument, EditsAreKeptOnlyWhenThePatternStillParses) {
     EXPECT_EQ(d.json(), before);
 }
 
-// Issue 31 item 1: an edit is parsed once (to check it) and that parse is
-// what the workbench builds from; the revision counts accepted changes only.
-TEST(WorkbenchDocument, AnEditIsParsedOnceAndCountedByTheRevision) {
+// Issue 31 item 1: the parse that checked a change is the one patternSpec()
+// gives (the workbench builds from it, no second parse), and the revision
+// counts accepted changes only: a refused edit moves neither.
+TEST(WorkbenchDocument, TheKeptParseAndTheRevisionFollowAcceptedChangesOnly) {
     WorkbenchDocument d = WorkbenchDocument::preset("camouflage");
     const uint64_t r0 = d.revision();
     d.set("/colormap/shapes/0/colour", "#d02020");
