@@ -20,6 +20,7 @@
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/shadertoy.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/workbench/document.h"
 #include "stochtex/workbench/previews.h"
@@ -154,9 +155,10 @@ BENCHMARK(BM_ShadertoyWatchdogShare)
 // read back. Edit 0: a colormap colour (camouflage); 1: a noise's cut-off
 // (camouflage); 2: a graph node's parameter (figure14's derivative angle).
 // Every call changes the value, and each path's call a value its own last
-// call did not see. Beside it,
-// alternately, the same edit as the workbench did it before the preview
-// cache: every preview rebuilt and the pattern parsed a second time.
+// call did not see. The kept path builds with the workbench's caches
+// (PreviewCache, PartCache: a generation per edit); beside it, alternately,
+// the same edit as the workbench did it before them: every preview and every
+// part of the program rebuilt and the pattern parsed a second time.
 void BM_WorkbenchEditLatency(benchmark::State& state) {
     const std::unique_ptr<GlContext> context = bench::contextOrSkip(state);
     if (!context) return;
@@ -166,7 +168,9 @@ void BM_WorkbenchEditLatency(benchmark::State& state) {
                           : edit == 1 ? "/noise_y/components/0/cutoff"
                                       : "/nodes/du/angle";
     // Three values in turn: the two paths alternate, so with two the kept
-    // cache would see the same spec at every call of its path.
+    // caches would see the same spec at every call of their path; with
+    // three, each kept call's value was last seen three of its revisions
+    // ago, beyond the two whose parts PartCache keeps.
     const nlohmann::json original = doc.json().at(nlohmann::json::json_pointer(pointer));
     const nlohmann::json values[3] = {edit == 0 ? nlohmann::json("#d02020") : nlohmann::json(5),
                                       edit == 0 ? nlohmann::json("#20d020") : nlohmann::json(7), original};
@@ -175,7 +179,9 @@ void BM_WorkbenchEditLatency(benchmark::State& state) {
     View view;
     view.width = view.height = 256;
     PreviewCache kept;
-    kept.update(doc.patternSpec());
+    PartCache parts;
+    kept.update(doc.patternSpec(), &parts);
+    makeGpuView(doc.patternSpec(), *context, options, &parts);
     int toggle = 0;
     double phases[4] = {0, 0, 0, 0};  // edit, previews, program, frame (the kept path)
     const auto editToFrame = [&](bool before) {
@@ -184,9 +190,12 @@ void BM_WorkbenchEditLatency(benchmark::State& state) {
         const auto t1 = std::chrono::steady_clock::now();
         PreviewCache fresh;
         if (before) parsePatternSpec(JsonReader(doc.json(), doc.source()), doc.baseDir());
-        benchmark::DoNotOptimize((before ? fresh : kept).update(doc.patternSpec()).colormap.data().data());
+        if (!before) parts.beginGeneration();  // as the workbench does per revision
+        benchmark::DoNotOptimize(
+            (before ? fresh : kept).update(doc.patternSpec(), before ? nullptr : &parts).colormap.data().data());
         const auto t2 = std::chrono::steady_clock::now();
-        const std::unique_ptr<GpuView> program = makeGpuView(doc.patternSpec(), *context, options);
+        const std::unique_ptr<GpuView> program =
+            makeGpuView(doc.patternSpec(), *context, options, before ? nullptr : &parts);
         const auto t3 = std::chrono::steady_clock::now();
         benchmark::DoNotOptimize(program->render(view).data().data());
         const auto t4 = std::chrono::steady_clock::now();

@@ -28,4 +28,5 @@ set(stochtex_sanitized_test_sources
   pattern/graph_pattern_test.cpp
   pattern/graph_lean_test.cpp
   pattern/graph_tiled_field_test.cpp
+  pattern/part_cache_test.cpp
   textures/marble_texture_test.cpp)

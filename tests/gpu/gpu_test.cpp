@@ -23,6 +23,7 @@
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/textures/texture_source.h"
 #include "test_util.h"
@@ -212,6 +213,32 @@ TEST(Gpu, FilteredRenderMatchesTheCpu) {
     v.width = v.height = 96;
     v.scale = 5.0;
     expectParity(p, v, "woven smooth K=8 deliot-heitz", o);
+}
+
+// A view built with a PartCache (the workbench's) draws what one built
+// without does, bit for bit, and a colormap edit uploads only the new
+// prefiltered table: the examples' and the pyramids' textures are the kept ones.
+TEST(Gpu, AViewBuiltFromKeptPartsDrawsTheSameAndAnEditUploadsOnlyWhatItChanged) {
+    nlohmann::json j = JsonReader::parse(presetText("camouflage"), "camouflage");
+    j["size"] = 128;
+    const auto spec = [&] { return parsePatternSpec(JsonReader(j, "camouflage"), "."); };
+    FilterOptions o;
+    o.use(parseFilter("paper"));
+    View v;
+    v.width = 96;
+    v.height = 64;
+    v.scale = 3.0;
+    PartCache parts;
+    const Image first = makeGpuView(spec(), context(), o, &parts)->render(v);
+    EXPECT_TRUE(first.data() == makeGpuView(spec(), context(), o)->render(v).data());
+    const int uploads = parts.builds().attachments;
+    EXPECT_EQ(uploads, 5);  // two examples, two pyramids, one prefiltered table
+    parts.beginGeneration();
+    j["colormap"]["shapes"][0]["colour"] = "#d02020";
+    const Image edited = makeGpuView(spec(), context(), o, &parts)->render(v);
+    EXPECT_EQ(parts.builds().attachments, uploads + 1);
+    EXPECT_TRUE(edited.data() == makeGpuView(spec(), context(), o)->render(v).data());
+    EXPECT_FALSE(edited.data() == first.data());
 }
 
 // The perspective plane: footprints grow and turn anisotropic towards the

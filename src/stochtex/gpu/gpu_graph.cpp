@@ -12,6 +12,7 @@
 #include "stochtex/gpu/shader.h"
 #include "stochtex/gpu/uploads.h"
 #include "stochtex/kernel/pattern_params.h"
+#include "stochtex/pattern/part_cache.h"
 
 namespace stochtex {
 
@@ -26,8 +27,8 @@ std::string slot(int k) { return "v" + std::to_string(k); }
 std::string pairUv(const UvTransform& t, const std::string& v, bool withOffset) {
     if (t.identity()) return v;
     const auto f = [](double x, double y) { return "vec2(" + glslFloat(float(x)) + ", " + glslFloat(float(y)) + ")"; };
-    return (withOffset ? "transformUv(" : "transformVector(") + v + ", " + f(t.m[0], t.m[1]) + ", " + f(t.m[2], t.m[3]) +
-           (withOffset ? ", " + f(t.t[0], t.t[1]) : std::string()) + ")";
+    return (withOffset ? "transformUv(" : "transformVector(") + v + ", " + f(t.m[0], t.m[1]) + ", " +
+           f(t.m[2], t.m[3]) + (withOffset ? ", " + f(t.t[0], t.t[1]) : std::string()) + ")";
 }
 
 // Texture units: a fragment shader has at least 16.
@@ -65,8 +66,8 @@ std::string pairSource(const GraphPattern& graph, int p, int maxLod) {
     const TiledField& pair = graph.leafPairs()[size_t(p)];
     return "TexelSource(" + std::to_string(p) + ", vec2(" + glslFloat(pair.channel(0).example().mean()) + ", " +
            glslFloat(pair.channel(1).example().mean()) + "), uvec2(" + std::to_string(pair.channel(0).offsetSeed()) +
-           "u, " + std::to_string(pair.channel(1).offsetSeed()) + "u), " + (graph.pairCovariance(p) ? "1" : "0") + ", " +
-           std::to_string(maxLod) + ", " + glslFloat(float(pair.exampleSize())) + ")";
+           "u, " + std::to_string(pair.channel(1).offsetSeed()) + "u), " + (graph.pairCovariance(p) ? "1" : "0") +
+           ", " + std::to_string(maxLod) + ", " + glslFloat(float(pair.exampleSize())) + ")";
 }
 
 // The leaves pair p holds, as (channel x, channel y) (a leaf without a
@@ -91,17 +92,19 @@ void writeTexelSource(std::ostringstream& o, const GraphPattern& graph, const Le
         const std::array<int, 2> leaves = pairLeaves(graph, p);
         const std::string x = "uGraphStats" + std::to_string(leaves[0]), y = "uGraphStats" + std::to_string(leaves[1]);
         const std::string cov = graph.pairCovariance(p) ? "uGraphCov" + std::to_string(p) : x;
-        o << "    " << (p + 1 < pairs ? "if (s.pair == " + std::to_string(p) + ") " : std::string()) << "return pairProbeTexels("
-          << x << ", " << y << ", " << cov << ", s, uv, levels);\n";
+        o << "    " << (p + 1 < pairs ? "if (s.pair == " + std::to_string(p) + ") " : std::string())
+          << "return pairProbeTexels(" << x << ", " << y << ", " << cov << ", s, uv, levels);\n";
     }
-    if (pairs == 0) o << "    TexelStats none = TexelStats(vec2(0.0), vec2(0.0), 0.0);\n    return ProbeTexels(none, none);\n";
+    if (pairs == 0)
+        o << "    TexelStats none = TexelStats(vec2(0.0), vec2(0.0), 0.0);\n    return ProbeTexels(none, none);\n";
     o << "}\nvec3 levelAverages(TexelSource s, int level) {\n";
     for (size_t p = 0; p < averages.size(); ++p) {
         o << "    if (s.pair == " << p << ") {\n        const vec3 a" << p << "[" << averages[p].size() << "] = vec3["
           << averages[p].size() << "](";
         for (size_t l = 0; l < averages[p].size(); ++l) {
             const kernel::vec3 a = averages[p][l];
-            o << (l ? ", " : "") << "vec3(" << glslFloat(a.x) << ", " << glslFloat(a.y) << ", " << glslFloat(a.z) << ")";
+            o << (l ? ", " : "") << "vec3(" << glslFloat(a.x) << ", " << glslFloat(a.y) << ", " << glslFloat(a.z)
+              << ")";
         }
         o << ");\n        return a" << p << "[level];\n    }\n";
     }
@@ -117,8 +120,10 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
     int out = graph.leafCount();
     for (const GraphPattern::Operation& op : graph.operations()) {
         const auto in = [&](int k) { return op.inputs[size_t(k)] >= 0 ? slot(op.inputs[size_t(k)]) : "vec3(0.0)"; };
-        const std::string cov = filtered && op.covariancePair >= 0 ? "p" + std::to_string(op.covariancePair) + ".cov" : "0.0";
-        const std::string ctx = "OpContext(" + std::to_string(op.table) + ", gEyeDirection, gLightDirection, " + cov + ")";
+        const std::string cov =
+            filtered && op.covariancePair >= 0 ? "p" + std::to_string(op.covariancePair) + ".cov" : "0.0";
+        const std::string ctx =
+            "OpContext(" + std::to_string(op.table) + ", gEyeDirection, gLightDirection, " + cov + ")";
         o << "    vec3 " << slot(out) << " = " << opGlslCall(op.params, filtered, in(0), in(1), in(2), ctx) << ";  // "
           << op.id << "\n";
         // MeanOnly: a table's output field passes on its mean alone (FilteredGraph::fromMoments).
@@ -133,7 +138,8 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
 
 LevelAverages graphLevelAverages(const FilteredGraph& filtered, const FilterOptions& options) {
     LevelAverages out;
-    if (options.source != StatisticsSource::Estimators || options.estimator != VarianceEstimator::DeliotHeitz) return out;
+    if (options.source != StatisticsSource::Estimators || options.estimator != VarianceEstimator::DeliotHeitz)
+        return out;
     for (size_t p = 0; p < filtered.estimatorCount(); ++p) {
         const FootprintEstimator& e = filtered.estimator(int(p));
         std::vector<kernel::vec3>& levels = out.emplace_back();
@@ -155,7 +161,8 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
     for (size_t t = 0; t < graph.tables().size(); ++t)
         o << "uniform sampler2DArray uGraphTable" << t << ", uGraphPrefiltered" << t << ";\n";
     for (size_t p = 0; p < graph.leafPairs().size(); ++p)
-        if (graph.pairCovariance(int(p))) o << "uniform sampler2D uGraphCov" << p << ";  // pair " << p << "'s C_l pyramid\n";
+        if (graph.pairCovariance(int(p)))
+            o << "uniform sampler2D uGraphCov" << p << ";  // pair " << p << "'s C_l pyramid\n";
     writeOpHost(o, graph);
     writeTexelSource(o, graph, levelAverages);
 
@@ -167,8 +174,8 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
     for (int k = 0; k < graph.leafCount(); ++k) {
         const TilingBlendingNoise& n = graph.leaf(k);
         const int p = graph.leafLocation(k)[0];
-        o << "    vec3 " << slot(k) << " = vec3(tilingBlending(uGraphExample" << k << ", " << glslFloat(n.example().mean())
-          << ", " << n.offsetSeed() << "u, s" << p << ", fu" << p << "), 0.0, 0.0);\n";
+        o << "    vec3 " << slot(k) << " = vec3(tilingBlending(uGraphExample" << k << ", "
+          << glslFloat(n.example().mean()) << ", " << n.offsetSeed() << "u, s" << p << ", fu" << p << "), 0.0, 0.0);\n";
         if (n.example().gaussianized())
             o << "    " << slot(k) << ".x = inverseTransform(uGraphInverse" << k << ", " << slot(k) << ".x);\n";
     }
@@ -188,15 +195,17 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
           << (covariance ? "true" : "false") << ");\n";
         for (int c = 0; c < 2; ++c)
             if (c == 0 || leaves[1] != leaves[0])
-                o << "    vec3 " << slot(leaves[c]) << " = vec3(p" << p << ".mean." << "xy"[c] << ", max(p" << p
-                  << ".var." << "xy"[c] << ", 0.0), 0.0);\n";
+                o << "    vec3 " << slot(leaves[c]) << " = vec3(p" << p << ".mean."
+                  << "xy"[c] << ", max(p" << p << ".var."
+                  << "xy"[c] << ", 0.0), 0.0);\n";
     }
     writeOperations(o, graph, true, moments);
     return o.str();
 }
 
 void checkGraphTextureUnits(const GraphPattern& graph, bool filtered) {
-    // The point set (examples, T⁻¹ LUTs, tables) always, the filtered set (pyramids, prefiltered tables) when filtering.
+    // The point set (examples, T⁻¹ LUTs, tables) always, the filtered set (pyramids, prefiltered tables) when
+    // filtering.
     int units = (int(graph.tables().size()) + graph.leafCount()) * (filtered ? 2 : 1);
     for (int k = 0; k < graph.leafCount(); ++k) units += graph.leaf(k).example().gaussianized();
     for (size_t p = 0; p < graph.leafPairs().size(); ++p) units += filtered && graph.pairCovariance(int(p));
@@ -212,18 +221,19 @@ namespace {
 // The filtered graph the GPU reads, once the options are ones its GPU
 // program has (checked first: they cost no pyramid).
 std::shared_ptr<const FilteredGraph> gpuFilteredGraph(const GraphPattern& graph, const FilterOptions& options,
-                                                      GraphMoments moments) {
+                                                      GraphMoments moments, PartCache* parts) {
     if (!gpuHasSource(options.source))
         throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
                                                   enumName(kStatisticsSourceNames, options.source));
     checkGraphTextureUnits(graph, options.source == StatisticsSource::Estimators);
-    return std::make_shared<const FilteredGraph>(graph, options, moments);
+    return std::make_shared<const FilteredGraph>(graph, options, moments, parts);
 }
 
 GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments,
                               const FilteredGraph& filtered) {
     const bool estimators = options.source == StatisticsSource::Estimators;
-    return {estimators ? "graph-filtered" : "graph", estimators ? "graph-filtered-compute" : "graph-compute",
+    return {estimators ? "graph-filtered" : "graph",
+            estimators ? "graph-filtered-compute" : "graph-compute",
             "graph-scene",
             {{kGraphProgramStem, graphProgramSource(graph, moments, graphLevelAverages(filtered, options))}},
             graph.shadesLight()};
@@ -233,16 +243,18 @@ GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& op
 
 struct GpuGraph::Impl {
     bool filtered = false;
-    std::vector<std::pair<std::string, gl::Texture>> planes, arrays;  // sampler name → texture
+    // Sampler name → texture; shared with a PartCache where the view was built with one.
+    std::vector<std::pair<std::string, std::shared_ptr<const gl::Texture>>> planes, arrays;
     gl::Buffer parameters;
     Rgb sky{};
 };
 
-GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments)
-    : GpuGraph(graph, context, options, moments, gpuFilteredGraph(graph, options, moments)) {}
+GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments,
+                   PartCache* parts)
+    : GpuGraph(graph, context, options, moments, gpuFilteredGraph(graph, options, moments, parts), parts) {}
 
 GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments,
-                   std::shared_ptr<const FilteredGraph> filteredGraph)
+                   std::shared_ptr<const FilteredGraph> filteredGraph, PartCache* parts)
     : GpuView(context, graphRecipes(graph, options, moments, *filteredGraph), graph.exampleSize()),
       impl_(std::make_unique<Impl>()) {
     const bool filtered = options.source == StatisticsSource::Estimators;
@@ -256,32 +268,53 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
     p.aniso = options.aniso;
     p.smoothTable = options.response.prefilter == PrefilterMode::Smooth;
     p.tableLevels = int(PrefilteredColormap::sigmaLevels(options.response.prefilter).size());
+    // The texture of a part of the program: with `parts`, the one uploaded
+    // when the part was built (an edit uploads only what it changed).
+    const auto texture = [&](const std::shared_ptr<const void>& part, const std::string& what,
+                             const std::function<gl::Texture()>& upload) -> std::shared_ptr<const gl::Texture> {
+        const auto make = [&] { return std::make_shared<gl::Texture>(upload()); };
+        if (!parts) return make();
+        return std::static_pointer_cast<const gl::Texture>(parts->attachment(part, what, make));
+    };
     for (int k = 0; k < graph.leafCount(); ++k) {
         const std::string leaf = std::to_string(k);
-        const NoiseExample& e = graph.leaf(k).example();
-        const Image& v = e.grid().values();
-        m.planes.emplace_back("uGraphExample" + leaf, floatTexture(v.width(), v.height(), 1, v.data().data()));
-        if (e.gaussianized()) {
-            const std::vector<float>& lut = e.transform()->inverseLut();
-            m.planes.emplace_back("uGraphInverse" + leaf, floatTexture(int(lut.size()), 1, 1, lut.data()));
-        }
+        const std::shared_ptr<const NoiseExample>& e = graph.leaf(k).sharedExample();
+        m.planes.emplace_back("uGraphExample" + leaf, texture(e, "values", [&] {
+                                  const Image& v = e->grid().values();
+                                  return floatTexture(v.width(), v.height(), 1, v.data().data());
+                              }));
+        if (e->gaussianized())
+            m.planes.emplace_back("uGraphInverse" + leaf, texture(e, "inverse", [&] {
+                                      const std::vector<float>& lut = e->transform()->inverseLut();
+                                      return floatTexture(int(lut.size()), 1, 1, lut.data());
+                                  }));
         if (!filtered) continue;
         const auto [pair, channel] = graph.leafLocation(k);
-        m.planes.emplace_back("uGraphStats" + leaf, pyramidTexture(f.estimator(pair).pyramid(channel)));
+        m.planes.emplace_back("uGraphStats" + leaf,
+                              texture(f.sharedEstimator(pair), "pyramid " + std::to_string(channel),
+                                      [&] { return pyramidTexture(f.estimator(pair).pyramid(channel)); }));
     }
     for (size_t p = 0; p < graph.leafPairs().size(); ++p)
         if (filtered && graph.pairCovariance(int(p)))
-            m.planes.emplace_back("uGraphCov" + std::to_string(p), pyramidTexture(*f.estimator(int(p)).covariancePyramid()));
+            m.planes.emplace_back("uGraphCov" + std::to_string(p),
+                                  texture(f.sharedEstimator(int(p)), "covariance",
+                                          [&] { return pyramidTexture(*f.estimator(int(p)).covariancePyramid()); }));
     for (size_t t = 0; t < graph.tables().size(); ++t) {
         const std::string table = std::to_string(t);
         const Image point = graph.tables()[t].point.table();
-        m.arrays.emplace_back("uGraphTable" + table, tableTexture(point.width(), point.height(), 1, point.data().data()));
+        m.arrays.emplace_back("uGraphTable" + table, std::make_shared<const gl::Texture>(tableTexture(
+                                                         point.width(), point.height(), 1, point.data().data())));
         if (!filtered) continue;
+        // The prefiltered table's layers at the table's resolution (atlas), made for the upload alone.
         const ColormapTable& h = graph.tables()[t].blended;
-        const int levels = int(f.table(int(t)).sigmas().size());
-        m.arrays.emplace_back("uGraphPrefiltered" + table,
-                              tableTexture(h.resolutionX(), h.resolutionY(), levels * levels,
-                                           f.table(int(t)).atlas(h.resolutionX(), h.resolutionY()).data().data()));
+        const int rx = h.resolutionX(), ry = h.resolutionY();
+        const int layers = int(f.table(int(t)).sigmas().size() * f.table(int(t)).sigmas().size());
+        m.arrays.emplace_back(
+            "uGraphPrefiltered" + table,
+            texture(f.sharedTable(int(t)), "atlas " + std::to_string(rx) + "x" + std::to_string(ry), [&] {
+                const Image atlas = f.table(int(t)).atlas(rx, ry);
+                return tableTexture(rx, ry, layers, atlas.data().data());
+            }));
     }
     m.parameters = gl::newBuffer();
     glBindBuffer(GL_UNIFORM_BUFFER, m.parameters.id());
@@ -293,8 +326,10 @@ GpuGraph::~GpuGraph() = default;
 
 bool GpuGraph::filtered() const { return impl_->filtered; }
 
-std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options) {
-    return std::make_unique<GpuGraph>(GraphPattern::build(spec, options.response), context, options);
+std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options,
+                                     PartCache* parts) {
+    return std::make_unique<GpuGraph>(GraphPattern::build(spec, options.response, parts), context, options,
+                                      GraphMoments::Matched, parts);
 }
 
 namespace {
@@ -336,8 +371,8 @@ void GpuGraph::bind(unsigned program) const {
         glBindTexture(target, texture);
         glUniform1i(glGetUniformLocation(program, name.c_str()), unit++);
     };
-    for (const auto& [name, texture] : m.planes) bind(GL_TEXTURE_2D, name, texture.id());
-    for (const auto& [name, texture] : m.arrays) bind(GL_TEXTURE_2D_ARRAY, name, texture.id());
+    for (const auto& [name, texture] : m.planes) bind(GL_TEXTURE_2D, name, texture->id());
+    for (const auto& [name, texture] : m.arrays) bind(GL_TEXTURE_2D_ARRAY, name, texture->id());
     // Samplers declared but not bound (the filtered set when unfiltered):
     // on a unit of their own type, since GL refuses to
     // draw when samplers of two types share one.

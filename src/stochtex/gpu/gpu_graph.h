@@ -12,8 +12,8 @@
 // parameters are constants of the program; examples, pyramids and tables
 // are textures.
 #include <memory>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_view.h"
@@ -50,8 +50,10 @@ public:
     // otherwise), either variance estimator; InputError when the graph needs
     // more textures than a fragment shader has units (16). Data is copied
     // to the GPU: the graph need not outlive this object.
+    // With `parts`, the estimators, prefiltered tables and atlases built
+    // before from the same inputs are taken from it (PartCache).
     GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options,
-             GraphMoments moments = GraphMoments::Matched);
+             GraphMoments moments = GraphMoments::Matched, PartCache* parts = nullptr);
     ~GpuGraph() override;
 
     // Binds the graph's textures (the point set, and the filtered set when
@@ -63,15 +65,17 @@ private:
     // The filtered graph (pyramids, tables, sky, level averages) is built
     // before the program, which takes the averages as constants.
     GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOptions& options, GraphMoments moments,
-             std::shared_ptr<const FilteredGraph> filtered);
+             std::shared_ptr<const FilteredGraph> filtered, PartCache* parts);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
 
 // The GPU view of a pattern file: GpuGraph running the file's program under
 // the options' response (GraphPattern::build; what it is built from is not
-// kept).
-std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options);
+// kept). With `parts`, every part built before from the same inputs is taken
+// from it, and the new ones kept there (the workbench's edits).
+std::unique_ptr<GpuView> makeGpuView(const PatternSpec& spec, GlContext& context, const FilterOptions& options,
+                                     PartCache* parts = nullptr);
 
 // The same on a headless OpenGL context of its own (GlContext::headless),
 // run as `pipeline` with footprints from `derivatives`: the GPU's

@@ -79,6 +79,8 @@ public:
         : example_(std::move(example)), seed_(offsetSeed) {}
 
     const NoiseExample& example() const { return *example_; }
+    // The example as held, shared: what a kept part built from it holds (PartCache).
+    const std::shared_ptr<const NoiseExample>& sharedExample() const { return example_; }
     uint32_t offsetSeed() const { return seed_; }
 
     // What a pixel needs from its three tiles that stays fixed along a
@@ -115,7 +117,8 @@ public:
         const float size = g.sizeF();
         const float tu = kernel::texelOfPoint(fu, size);
         std::array<std::array<float, C>, 3> out;
-        for (size_t i = 0; i < 3; ++i) out[i] = g.sampleTexels(t.rows[i], kernel::periodicTexel(tu, t.offsetTexels[i], size));
+        for (size_t i = 0; i < 3; ++i)
+            out[i] = g.sampleTexels(t.rows[i], kernel::periodicTexel(tu, t.offsetTexels[i], size));
         return out;
     }
 

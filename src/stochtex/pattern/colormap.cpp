@@ -30,6 +30,14 @@ static Image flipRows(const Image& image) {
     return out;
 }
 
+bool ColormapTable::operator==(const ColormapTable& other) const {
+    if (width_ != other.width_ || height_ != other.height_) return false;
+    for (size_t k = 0; k < rgba_.size(); ++k)
+        for (int c = 0; c < 3; ++c)
+            if (rgba_[k][c] != other.rgba_[k][c]) return false;
+    return true;
+}
+
 Image ColormapTable::table() const {
     Image out(width_, height_, 3, Image::Uninitialized{});
     for (size_t i = 0; i < rgba_.size(); ++i)
@@ -187,8 +195,7 @@ bool PaintedShape::contains(double x, double y) const {
             for (size_t i = 0, j = n - 1; i < n; j = i++) {
                 const auto& p = points[i];
                 const auto& q = points[j];
-                if ((p[1] > y) != (q[1] > y) && x < (q[0] - p[0]) * (y - p[1]) / (q[1] - p[1]) + p[0])
-                    inside = !inside;
+                if ((p[1] > y) != (q[1] > y) && x < (q[0] - p[0]) * (y - p[1]) / (q[1] - p[1]) + p[0]) inside = !inside;
             }
             return inside;
         }
@@ -238,8 +245,8 @@ ColormapTable PaintedColormap::rasterize(int resolution, int supersampling) cons
         Rgb sum{0, 0, 0};
         for (int sj = 0; sj < supersampling; ++sj)
             for (int si = 0; si < supersampling; ++si) {
-                const Rgb c = evaluate(sx[0] + (si + 0.5) / supersampling * sx[1],
-                                       sy[0] + (sj + 0.5) / supersampling * sy[1]);
+                const Rgb c =
+                    evaluate(sx[0] + (si + 0.5) / supersampling * sx[1], sy[0] + (sj + 0.5) / supersampling * sy[1]);
                 for (int k = 0; k < 3; ++k) sum[size_t(k)] += c[size_t(k)];
             }
         const float inv = 1.0f / float(supersampling * supersampling);

@@ -55,6 +55,8 @@ public:
     }
 
     size_t bytes() const { return rgba_.size() * sizeof(Texel); }
+    // The same resolution and entries (RGB; the unused alpha is not compared).
+    bool operator==(const ColormapTable& other) const;
 
     // The table as an image with y up (row 0 = y = 1), for writing to disk.
     Image toImage() const;

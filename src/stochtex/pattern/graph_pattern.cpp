@@ -13,6 +13,7 @@
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/noise/slopes.h"
 #include "stochtex/pattern/graph_nodes.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/pattern_parts.h"
 
 namespace stochtex {
@@ -104,7 +105,7 @@ TextureGraph plainPatternGraph(const PatternSpec& spec, const ResponseOptions& r
 
 }  // namespace
 
-GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions& response) {
+GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions& response, PartCache* parts) {
     if (spec.graph && response.kind != ResponseKind::PrefilteredColormap)
         throw InputError::parameter("response",
                                     "a texture graph shades through its own nodes (a lean node for a "
@@ -183,11 +184,13 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
     // the offset seed of the group's first leaf k, seeded as a pattern's
     // noise k (deriveSeed(seed, k + 1)); all leaves share the first seed
     // when offsets are shared.
-    const std::vector<NoiseExample> fields = buildGraphFields(graph, fieldIds, spec.seed, context);
+    const std::vector<std::shared_ptr<const NoiseExample>> fields =
+        buildGraphFields(graph, fieldIds, spec.seed, context, parts);
     // A plain pattern's two noises are one vector field N on one set of tiles (paper eq. 7).
-    if (!spec.graph && response.kind != ResponseKind::Lean && fields[0].size() != fields[1].size())
-        throw InputError(context + ": noise_x is " + std::to_string(fields[0].size()) + " texels wide but noise_y is " +
-                         std::to_string(fields[1].size()) + "; both examples must have the same size");
+    if (!spec.graph && response.kind != ResponseKind::Lean && fields[0]->size() != fields[1]->size())
+        throw InputError(context + ": noise_x is " + std::to_string(fields[0]->size()) +
+                         " texels wide but noise_y is " + std::to_string(fields[1]->size()) +
+                         "; both examples must have the same size");
     const bool shared = spec.offsets == OffsetMode::Shared;
     std::map<std::string, uint32_t> groupSeed;
     const auto seedOf = [&](const std::string& fieldId, size_t leaf) {
@@ -200,8 +203,8 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
     std::vector<TilingBlendingNoise> noises;
     std::vector<UvTransform> transforms;
     for (size_t k = 0; k < fieldLeaves; ++k) {
-        examples.push_back(fields[k]);
-        noises.emplace_back(std::make_shared<const NoiseExample>(fields[k]), seedOf(fieldIds[k], k));
+        examples.push_back(*fields[k]);
+        noises.emplace_back(fields[k], seedOf(fieldIds[k], k));
         transforms.push_back(graphNodeTransform(graph, fieldIds[k], context));
     }
     std::vector<bool> slopePairCovariance;  // per slope-reading node, in order: whether it reads the slopes' covariance
@@ -209,7 +212,8 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         if (g->info->slopesOf.empty()) continue;
         const size_t k = noises.size();
         const std::string& heightId = g->inputs.at(g->info->slopesOf);
-        const NoiseExample& height = fields[fieldLeaves + (k - fieldLeaves) / 2];
+        const std::shared_ptr<const NoiseExample>& heightExample = fields[fieldLeaves + (k - fieldLeaves) / 2];
+        const NoiseExample& height = *heightExample;
         const std::string where = context + ": node \"" + g->id + "\" (" + g->info->name + ")";
         if (height.gaussianized())
             throw InputError(
@@ -223,7 +227,10 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
                              g->info->name + " node needs its " + g->info->slopesOf + " untransformed");
         TiledField slopes;
         try {
-            slopes = slopeField(height.values(), g->numbers.at("amplitude"), seedOf(heightId, k), spec.gridDensity);
+            const double amplitude = g->numbers.at("amplitude");
+            const uint32_t seed = seedOf(heightId, k);
+            const auto build = [&] { return slopeField(height.values(), amplitude, seed, spec.gridDensity); };
+            slopes = parts ? parts->slopes(heightExample, amplitude, seed, spec.gridDensity, build) : build();
         } catch (const InputError& e) {
             throw InputError(where + ": " + e.what());
         }
@@ -282,7 +289,8 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
             if (p.pairCovariance_[size_t(pair)]) op.covariancePair = pair;
         }
         const size_t tablesBefore = p.tables_.size();
-        OpBuild b{*g, [&](const std::string& port) { return gaussianizedLeaf(g->inputs.at(port)); }, p.tables_};
+        OpBuild b{*g, [&](const std::string& port) { return gaussianizedLeaf(g->inputs.at(port)); }, p.tables_, -1,
+                  parts};
         op.params = bindOp(g->info->op, b);
         op.table = b.table;
         // Only a table folds T⁻¹ in: an op without one cannot read a Gaussianized exemplar.
@@ -550,7 +558,8 @@ std::array<double, 2> exampleMoments(const NoiseExample& example) {
 
 }  // namespace
 
-FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments)
+FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments,
+                             PartCache* parts)
     : graph_(graph), options_(options), moments_(moments) {
     validateFilterOptions(options);
     for (const TiledField& pair : graph.leafPairs())
@@ -593,13 +602,16 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         } catch (const InputError& e) {
             throw InputError("node \"" + op.id + "\": " + e.what());
         }
-        tables_.emplace_back(t, options.response.prefilter);
+        tables_.push_back(parts ? parts->prefiltered(t, options.response.prefilter)
+                                : std::make_shared<const PrefilteredColormap>(t, options.response.prefilter));
     }
     sky_ = plain_ ? plainSky() : fromMoments(whole, wholeCov);
     if (options.source == StatisticsSource::Estimators)
         for (size_t k = 0; k < graph.leafPairs().size(); ++k)
-            estimators_.push_back(std::make_unique<FootprintEstimator>(graph.leafPairs()[k],
-                                                                       graph.pairCovariance(int(k)), options.pack8));
+            estimators_.push_back(
+                parts ? parts->estimator(graph.leafPairs()[k], graph.pairCovariance(int(k)), options.pack8)
+                      : std::make_shared<const FootprintEstimator>(graph.leafPairs()[k], graph.pairCovariance(int(k)),
+                                                                   options.pack8));
 }
 
 Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMoments,
@@ -625,7 +637,7 @@ Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
         ctx.table = op.table;
         ctx.pointTable = op.table >= 0 ? &graph_.tables()[size_t(op.table)].point : nullptr;
         ctx.prefilteredTable =
-            op.table >= 0 && size_t(op.table) < tables_.size() ? &tables_[size_t(op.table)] : nullptr;
+            op.table >= 0 && size_t(op.table) < tables_.size() ? tables_[size_t(op.table)].get() : nullptr;
         const size_t pair = op.covariancePair >= 0 ? size_t(op.covariancePair) : pairCovariances.size();
         ctx.slopeCov = pair < pairCovariances.size() ? pairCovariances[pair] : 0.0f;
         slots[out] = opFiltered(op.params, input(slots, op, 0), input(slots, op, 1), input(slots, op, 2), ctx);
@@ -638,8 +650,8 @@ Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
 
 Rgb FilteredGraph::plainColour(const FootprintStats& s) const {
     // The colormap op's opFiltered on the pair's moments, without the interpreter.
-    return tables_.front().sample(s.mean[0], s.mean[1], kernel::momentSigma(vec2(s.mean[0], std::max(s.varX, 0.0f))),
-                                  kernel::momentSigma(vec2(s.mean[1], std::max(s.varY, 0.0f))));
+    return tables_.front()->sample(s.mean[0], s.mean[1], kernel::momentSigma(vec2(s.mean[0], std::max(s.varX, 0.0f))),
+                                   kernel::momentSigma(vec2(s.mean[1], std::max(s.varY, 0.0f))));
 }
 
 Rgb FilteredGraph::fromPairStats(Scratch& scratch, const Direction& eye) const {

@@ -46,6 +46,8 @@
 
 namespace stochtex {
 
+class PartCache;  // pattern/part_cache.h
+
 // The examples' tables hold at most this many entries in all: one colormap
 // at the largest resolution (kMaxColormapResolution², as a plain pattern's
 // may be). Each table is kept twice, for points and in blending space, 16
@@ -68,7 +70,10 @@ public:
     // InputError naming the node for what only building shows (a linear
     // node over a non-linear field, a Gaussianized exemplar read other than
     // by a table, an output that reads no field).
-    static GraphPattern build(const PatternSpec& spec, const ResponseOptions& response = {});
+    // With `parts`, the parts of the program built before from the same
+    // inputs are taken from it, and the new ones kept there (PartCache).
+    static GraphPattern build(const PatternSpec& spec, const ResponseOptions& response = {},
+                              PartCache* parts = nullptr);
 
     // One operation of the per-pixel program: an op (ops/ops.h) on slots.
     // Slots 0..leafCount()−1 hold the leaves; operation k writes slot
@@ -172,8 +177,10 @@ inline const EnumNames<GraphMoments> kGraphMomentsNames{{"matched", GraphMoments
 class FilteredGraph final : public ViewRenderer {
 public:
     using Direction = GraphPattern::Direction;
-    FilteredGraph(const GraphPattern& graph, const FilterOptions& options,
-                  GraphMoments moments = GraphMoments::Matched);
+    // With `parts`, the estimators and prefiltered tables built before from
+    // the same inputs are taken from it, and the new ones kept there.
+    FilteredGraph(const GraphPattern& graph, const FilterOptions& options, GraphMoments moments = GraphMoments::Matched,
+                  PartCache* parts = nullptr);
 
     // The colour of sky pixels: the program on the whole examples' moments
     // (for the point source, which prefilters no table, on their means when
@@ -194,8 +201,12 @@ public:
     // The estimators of leaf pair k (built for the estimators source only)
     // and the prefiltered table of GraphPattern table k, for the GPU.
     const FootprintEstimator& estimator(int pair) const { return *estimators_.at(size_t(pair)); }
+    const std::shared_ptr<const FootprintEstimator>& sharedEstimator(int pair) const {
+        return estimators_.at(size_t(pair));
+    }
     size_t estimatorCount() const { return estimators_.size(); }
-    const PrefilteredColormap& table(int k) const { return tables_.at(size_t(k)); }
+    const PrefilteredColormap& table(int k) const { return *tables_.at(size_t(k)); }
+    const std::shared_ptr<const PrefilteredColormap>& sharedTable(int k) const { return tables_.at(size_t(k)); }
 
 private:
     // What one thread reuses from pixel to pixel, so that shading a pixel allocates nothing.
@@ -218,8 +229,9 @@ private:
     const GraphPattern& graph_;
     FilterOptions options_;
     GraphMoments moments_;
-    std::vector<std::unique_ptr<FootprintEstimator>> estimators_;  // one per leaf pair
-    std::vector<PrefilteredColormap> tables_;                      // per GraphPattern table
+    // Shared with a PartCache and the other renderers built from it.
+    std::vector<std::shared_ptr<const FootprintEstimator>> estimators_;  // one per leaf pair
+    std::vector<std::shared_ptr<const PrefilteredColormap>> tables_;     // per GraphPattern table
     Rgb sky_{};
     bool plain_ = false;  // the program is a plain pattern's (GraphPattern::plainColormap)
 };

@@ -43,7 +43,7 @@ struct UvTransform;
 // over the outputs of ops. A node type declares what it does through these
 // members, so that no code outside its own file asks which type it is.
 struct NodeInfo {
-    std::string name;  // the JSON "type"
+    std::string name;      // the JSON "type"
     std::string category;  // source, linear, transfer, colour, shading
     std::string description;
     std::vector<PortInfo> inputs;
@@ -77,11 +77,14 @@ struct GraphNode {
     // The offset seed of the node's tiles, where a plain pattern's file fixes
     // it (its normal map's height); no file parameter. Unset: the leaf's.
     std::optional<uint32_t> tileSeed;
-    NoiseSpec noise;                            // sources: the example's description
-    ColormapSpec colormap;                      // colormap and colormap_field nodes
-    std::vector<std::array<double, 2>> curve;   // curve nodes: the points
-    Rgb colour{0.0f, 0.0f, 0.0f};               // colour nodes: the colour, linear light
+    NoiseSpec noise;                           // sources: the example's description
+    ColormapSpec colormap;                     // colormap and colormap_field nodes
+    std::vector<std::array<double, 2>> curve;  // curve nodes: the points
+    Rgb colour{0.0f, 0.0f, 0.0f};              // colour nodes: the colour, linear light
     // Choice parameters: the index of the value in ParamInfo::choices (in numbers).
+
+    // Equal nodes over equal inputs build the same field (PartCache's key).
+    bool operator==(const GraphNode&) const = default;
 };
 
 }  // namespace stochtex

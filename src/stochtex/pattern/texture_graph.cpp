@@ -9,6 +9,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/pattern/fields/field_node.h"
+#include "stochtex/pattern/part_cache.h"
 
 namespace stochtex {
 
@@ -252,11 +253,23 @@ uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id) {
 
 namespace {
 
-// Examples built so far, by node id, and their texels in all.
+// Examples built so far, by node id, and the texels of every node counted
+// (built, or kept in a PartCache), in all.
 struct FieldCache {
     std::map<std::string, NoiseExample> built;
+    std::map<std::string, long long> counted;
     long long texels = 0;
 };
+
+// Counts node `id`'s texels once against the graph's examples' budget.
+void countTexels(FieldCache& cache, const std::string& id, long long texels, const std::string& context) {
+    if (!cache.counted.emplace(id, texels).second) return;
+    cache.texels += texels;
+    if (cache.texels > budgeted(kMaxGraphExampleTexels))
+        throw InputError::overBudget("", context + ": the graph's examples hold more than " +
+                                             std::to_string(budgeted(kMaxGraphExampleTexels)) +
+                                             " texels in all (at node \"" + id + "\"); use smaller or fewer examples");
+}
 
 NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
                         const std::string& context, FieldCache& cache);
@@ -265,11 +278,7 @@ NoiseExample buildFieldOnce(const TextureGraph& graph, const std::string& id, ui
                             const std::string& context, FieldCache& cache) {
     if (const auto it = cache.built.find(id); it != cache.built.end()) return it->second;
     NoiseExample e = buildField(graph, id, patternSeed, context, cache);
-    cache.texels += (long long)e.size() * e.size();
-    if (cache.texels > budgeted(kMaxGraphExampleTexels))
-        throw InputError::overBudget("", context + ": the graph's examples hold more than " +
-                                             std::to_string(budgeted(kMaxGraphExampleTexels)) +
-                                             " texels in all (at node \"" + id + "\"); use smaller or fewer examples");
+    countTexels(cache, id, (long long)e.size() * e.size(), context);
     cache.built.emplace(id, e);
     return e;
 }
@@ -312,11 +321,38 @@ NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, u
     return buildFieldOnce(graph, id, patternSeed, context, cache);
 }
 
-std::vector<NoiseExample> buildGraphFields(const TextureGraph& graph, const std::vector<std::string>& ids,
-                                           uint32_t patternSeed, const std::string& context) {
+std::vector<std::shared_ptr<const NoiseExample>> buildGraphFields(const TextureGraph& graph,
+                                                                  const std::vector<std::string>& ids,
+                                                                  uint32_t patternSeed, const std::string& context,
+                                                                  PartCache* parts) {
     FieldCache cache;
-    std::vector<NoiseExample> out;
-    for (const std::string& id : ids) out.push_back(buildFieldOnce(graph, id, patternSeed, context, cache));
+    std::vector<std::shared_ptr<const NoiseExample>> out;
+    for (const std::string& id : ids) {
+        if (!parts) {
+            out.push_back(std::make_shared<const NoiseExample>(buildFieldOnce(graph, id, patternSeed, context, cache)));
+            continue;
+        }
+        // The field's key: itself and every node upstream (all linear), in id order.
+        PartCache::FieldKey key{{}, patternSeed, context};
+        std::set<std::string> upstream;
+        for (std::vector<std::string> todo{id}; !todo.empty();) {
+            const std::string n = todo.back();
+            todo.pop_back();
+            if (!upstream.insert(n).second) continue;
+            for (const auto& [port, from] : graph.node(n).inputs) todo.push_back(from);
+        }
+        for (const std::string& n : upstream) key.nodes.push_back(graph.node(n));
+        const PartCache::Field f = parts->field(key, [&] {
+            PartCache::Field built{
+                std::make_shared<const NoiseExample>(buildFieldOnce(graph, id, patternSeed, context, cache)), {}};
+            for (const std::string& n : upstream)
+                if (const auto it = cache.counted.find(n); it != cache.counted.end())
+                    built.texels.emplace_back(n, it->second);
+            return built;
+        });
+        for (const auto& [node, texels] : f.texels) countTexels(cache, node, texels, context);
+        out.push_back(f.example);
+    }
     return out;
 }
 

@@ -17,6 +17,7 @@
 // docs/GRAPHS.md).
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@
 #include "stochtex/pattern/uv_transform.h"
 
 namespace stochtex {
+
+class PartCache;  // pattern/part_cache.h
 
 constexpr int kMaxGraphNodes = 256;
 // The examples a graph builds hold at most this many texels in all (four of
@@ -68,8 +71,12 @@ uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id);
 // node feeding many is not rebuilt for each (time linear in the nodes).
 NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
                              const std::string& context);
-// The examples of several linear field nodes, each node built once for all.
-std::vector<NoiseExample> buildGraphFields(const TextureGraph& graph, const std::vector<std::string>& ids,
-                                           uint32_t patternSeed, const std::string& context);
+// The examples of several linear field nodes, each node built once for all;
+// with `parts`, a field whose nodes are those of a kept one is not built
+// again (its nodes' texels still count against the examples' budget).
+std::vector<std::shared_ptr<const NoiseExample>> buildGraphFields(const TextureGraph& graph,
+                                                                  const std::vector<std::string>& ids,
+                                                                  uint32_t patternSeed, const std::string& context,
+                                                                  PartCache* parts = nullptr);
 
 }  // namespace stochtex

@@ -3,14 +3,15 @@
 #include "stochtex/image/colour_space.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/pattern_parts.h"
 
 namespace stochtex {
 
-const PatternPreviews& PreviewCache::update(const PatternSpec& spec) {
+const PatternPreviews& PreviewCache::update(const PatternSpec& spec, PartCache* parts) {
     if (colormapKey_ != spec.colormap) {
-        previews_.colormap =
-            encodeTransfer(buildColormap(spec.colormap).toImage(), spec.colormap.transfer.value_or(Transfer::Srgb));
+        const ColormapTable table = parts ? *parts->colormap(spec.colormap) : buildColormap(spec.colormap);
+        previews_.colormap = encodeTransfer(table.toImage(), spec.colormap.transfer.value_or(Transfer::Srgb));
         colormapKey_ = spec.colormap;
         ++colormapBuilds_;
     }

@@ -12,6 +12,8 @@
 
 namespace stochtex {
 
+class PartCache;  // pattern/part_cache.h
+
 struct PatternPreviews {
     Image colormap;                 // the table with y = 1 in the top row, encoded for display
     std::array<Image, 2> examples;  // N_x, N_y (empty: a graph's, or N_y of a quadrature pair)
@@ -21,8 +23,9 @@ struct PatternPreviews {
 class PreviewCache {
 public:
     // The previews of `spec`, each part kept from the last call where its
-    // spec is equal (InputError as building the part words it).
-    const PatternPreviews& update(const PatternSpec& spec);
+    // spec is equal (InputError as building the part words it); with
+    // `parts`, the colormap's table is the one the program is built with.
+    const PatternPreviews& update(const PatternSpec& spec, PartCache* parts = nullptr);
     // Forgets every part: after a reload, the files the specs name may have changed.
     void clear();
     // Parts built so far: what an edit rebuilt (the tests').

@@ -29,6 +29,7 @@
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/param_info.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/report/frame_sequence.h"
 #include "stochtex/textures/texture_source.h"
 #include "stochtex/workbench/editors.h"
@@ -279,11 +280,12 @@ private:
             return;
         }
         host_.reset();
+        parts_.beginGeneration();  // the parts of the last two revisions stay: an undo rebuilds nothing
         spec_ = doc_.patternSpec();
         hasNormalMap_ = spec_.normalMap.has_value() && !spec_.graph;
         if (!hasNormalMap_) response_ = ResponseKind::PrefilteredColormap;
         // The colormap canvas and the examples, rebuilt where their specs changed.
-        const PatternPreviews& previews = previews_.update(spec_);
+        const PatternPreviews& previews = previews_.update(spec_, &parts_);
         canvas_.upload(previews.colormap);
         for (size_t k = 0; k < 2; ++k) {
             example_[k] = {};
@@ -296,7 +298,7 @@ private:
 
     // W of the pattern's example, for the instance offsets (built once per document, when needed).
     int exampleSize() {
-        if (exampleSize_ == 0) exampleSize_ = GraphPattern::build(spec_).exampleSize();
+        if (exampleSize_ == 0) exampleSize_ = GraphPattern::build(spec_, {}, &parts_).exampleSize();
         return exampleSize_;
     }
 
@@ -315,6 +317,7 @@ private:
         try {
             doc_.reload();
             previews_.clear();
+            parts_.clear();
             loadDocument();
             error_.clear();
             notice_ = "reloaded " + doc_.source();
@@ -382,7 +385,7 @@ private:
             o.use(parseFilter(filterName_));
             o.response.kind = response_;
             o.response.covariance = covariance;
-            r = makeGpuView(spec_, *context_, o);
+            r = makeGpuView(spec_, *context_, o, &parts_);
         }
         return *r;
     }
@@ -1106,6 +1109,7 @@ private:
     // The pattern and its renderers (one per filter and response, built on first use).
     PatternSpec spec_;
     PreviewCache previews_;  // the canvas's and the examples' images, kept across edits of other parts
+    PartCache parts_;        // the program's parts, kept across edits of other parts
     int exampleSize_ = 0;
     bool hasNormalMap_ = false;
     std::map<std::pair<std::string, ResponseKind>, std::unique_ptr<GpuView>> renderers_;

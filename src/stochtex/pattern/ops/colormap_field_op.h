@@ -34,7 +34,7 @@ struct ColormapFieldOp {
     }
     // The table (g, g², 0) of H's channel, and of H with the Gaussianized inputs' T⁻¹ folded in.
     static Params bind(OpBuild& b) {
-        const ColormapTable h = buildColormap(b.node.colormap);
+        const ColormapTable h = b.colormap(b.node.colormap);
         const ColormapTable blended = foldInverseTransforms(h, b.gaussianizedInput("x"), b.gaussianizedInput("y"));
         const int channel = int(b.node.numbers.at("channel"));
         const auto field = [channel](const ColormapTable& t) {

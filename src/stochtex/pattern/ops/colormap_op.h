@@ -26,7 +26,7 @@ struct ColormapOp {
     }
     // H, and H with the Gaussianized inputs' T⁻¹ folded in (what the prefiltered table is built from).
     static Params bind(OpBuild& b) {
-        const ColormapTable h = buildColormap(b.node.colormap);
+        const ColormapTable h = b.colormap(b.node.colormap);
         b.addTable({h, foldInverseTransforms(h, b.gaussianizedInput("x"), b.gaussianizedInput("y")), false});
         return {0.0f};
     }

@@ -32,12 +32,16 @@
 // An op's header includes its kernel file between these: inside the
 // kernel's namespace, where GLSL's fixed signature names parameters that an
 // op may not use.
-#define STOCHTEX_OP_KERNEL_BEGIN                                                                                 \
-    namespace stochtex::kernel {                                                                                 \
+#define STOCHTEX_OP_KERNEL_BEGIN \
+    namespace stochtex::kernel { \
     _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wunused-parameter\"")
-#define STOCHTEX_OP_KERNEL_END _Pragma("GCC diagnostic pop") }
+#define STOCHTEX_OP_KERNEL_END    \
+    _Pragma("GCC diagnostic pop") \
+    }
 
 namespace stochtex {
+
+class PartCache;  // pattern/part_cache.h
 
 namespace kernel {
 
@@ -105,7 +109,11 @@ struct OpBuild {
     // leaf), or null: only a table op may read one, through its table.
     std::function<const NoiseExample*(const std::string& port)> gaussianizedInput;
     std::vector<OpTable>& tables;
-    int table = -1;  // the table the op added
+    int table = -1;              // the table the op added
+    PartCache* parts = nullptr;  // where the build keeps its parts (GraphPattern::build), or none
+
+    // The table of a colormap spec: the kept one, or built (buildColormap).
+    ColormapTable colormap(const ColormapSpec& spec) const;
 
     void addTable(OpTable t) {
         tables.push_back(std::move(t));

@@ -1,16 +1,19 @@
 #include "stochtex/pattern/ops/ops.h"
 
 #include <array>
-#include <charconv>
-#include <cstdio>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
-#include <string_view>
 #include <iterator>
 #include <stdexcept>
+#include <string_view>
 #include <type_traits>
 #include <utility>
+
+#include "stochtex/pattern/part_cache.h"
+#include "stochtex/pattern/pattern_parts.h"
 
 namespace stochtex {
 
@@ -88,7 +91,8 @@ constexpr OpTraits traitsOf() {
 }
 constexpr auto kOpTraits = []<size_t... I>(std::index_sequence<I...>) {
     return std::array<OpTraits, kOpCount>{traitsOf<I>()...};
-}(std::make_index_sequence<kOpCount>{});
+}
+(std::make_index_sequence<kOpCount>{});
 
 }  // namespace
 
@@ -112,11 +116,15 @@ std::vector<std::string> opManifestTypes() {
     std::vector<std::string> types;
     [&]<size_t... I>(std::index_sequence<I...>) {
         ((requires(const typename OpAt<I>::Params& p) { OpAt<I>::manifest(p); } ? types.push_back(OpAt<I>::info().name)
-                                                                                  : void()),
+                                                                                : void()),
          ...);
     }
     (std::make_index_sequence<kOpCount>{});
     return types;
+}
+
+ColormapTable OpBuild::colormap(const ColormapSpec& spec) const {
+    return parts ? *parts->colormap(spec) : buildColormap(spec);
 }
 
 double shortestDecimal(float v) {
@@ -161,8 +169,8 @@ std::string opGlslCall(const OpParams& op, bool filtered, const std::string& a, 
     return std::visit(
         [&](const auto& p) {
             using P = std::decay_t<decltype(p)>;
-            std::string s =
-                std::string(filtered ? "opFiltered(" : "opPoint(") + paramsStructName(OpAt<indexOfParams<P>()>::kKernel) + "(";
+            std::string s = std::string(filtered ? "opFiltered(" : "opPoint(") +
+                            paramsStructName(OpAt<indexOfParams<P>()>::kKernel) + "(";
             float f[sizeof(P) / sizeof(float)];
             std::memcpy(f, &p, sizeof(P));
             for (size_t k = 0; k < std::size(f); ++k) s += (k ? ", " : "") + glslFloat(f[k]);

@@ -1,0 +1,128 @@
+// PartCache (pattern/part_cache.h): a build after an edit remakes only the
+// parts the edit changed, and renders what a build without the cache does,
+// bit for bit.
+#include "stochtex/pattern/part_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
+#include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/presets.h"
+
+namespace stochtex {
+namespace {
+
+// A preset at 64² examples (which parts are rebuilt does not depend on the size), edited.
+PatternSpec preset(const std::string& name, const std::function<void(nlohmann::json&)>& edit = {}) {
+    nlohmann::json j = JsonReader::parse(presetText(name), name);
+    j["size"] = 64;
+    if (edit) edit(j);
+    return parsePatternSpec(JsonReader(j, name), ".");
+}
+
+void setColour(nlohmann::json& j) { j["colormap"]["shapes"][0]["colour"] = "#d02020"; }
+void setCutoff(nlohmann::json& j) { j["noise_y"]["components"][0]["cutoff"] = 5; }
+
+// A filtered render through the estimators and the prefiltered table, built with `parts` (or none).
+Image render(const PatternSpec& spec, PartCache* parts, ResponseKind response = ResponseKind::PrefilteredColormap) {
+    FilterOptions o;
+    o.use(parseFilter("paper"));
+    o.response.kind = response;
+    const GraphPattern graph = GraphPattern::build(spec, o.response, parts);
+    const FilteredGraph filtered(graph, o, GraphMoments::Matched, parts);
+    Camera camera;
+    camera.view.width = 40;
+    camera.view.height = 32;
+    camera.view.scale = 2.7;  // a footprint of several texels: the estimators and the table's blurred layers
+    return filtered.render(camera);
+}
+
+// The same pixels, bit for bit.
+void expectSameImage(const Image& a, const Image& b) {
+    ASSERT_EQ(a.width(), b.width());
+    ASSERT_EQ(a.height(), b.height());
+    EXPECT_TRUE(a.data() == b.data());
+}
+
+TEST(PartCache, AColormapEditBuildsNoNoiseAndNoPyramid) {
+    PartCache parts;
+    expectSameImage(render(preset("camouflage"), &parts), render(preset("camouflage"), nullptr));
+    const PartCache::Builds first = parts.builds();
+    EXPECT_EQ(first.fields, 2);
+    EXPECT_EQ(first.colormaps, 1);
+    EXPECT_EQ(first.estimators, 1);
+    EXPECT_EQ(first.prefiltered, 1);
+
+    parts.beginGeneration();
+    const PatternSpec edited = preset("camouflage", setColour);
+    expectSameImage(render(edited, &parts), render(edited, nullptr));
+    const PartCache::Builds b = parts.builds();
+    EXPECT_EQ(b.fields, first.fields);          // no noise synthesised
+    EXPECT_EQ(b.estimators, first.estimators);  // no pyramid
+    EXPECT_EQ(b.colormaps, first.colormaps + 1);
+    EXPECT_EQ(b.prefiltered, first.prefiltered + 1);
+}
+
+TEST(PartCache, ANoiseEditBuildsThatNoiseAlone) {
+    PartCache parts;
+    render(preset("camouflage"), &parts);
+    const PartCache::Builds first = parts.builds();
+    parts.beginGeneration();
+    const PatternSpec edited = preset("camouflage", setCutoff);
+    expectSameImage(render(edited, &parts), render(edited, nullptr));
+    const PartCache::Builds b = parts.builds();
+    EXPECT_EQ(b.fields, first.fields + 1);  // noise_y; noise_x kept
+    EXPECT_EQ(b.estimators, first.estimators + 1);
+    EXPECT_EQ(b.colormaps, first.colormaps);      // no table rasterised
+    EXPECT_EQ(b.prefiltered, first.prefiltered);  // nor prefiltered
+}
+
+TEST(PartCache, AnUndoBuildsNothingAndOldPartsAreDropped) {
+    PartCache parts;
+    const PatternSpec original = preset("camouflage");
+    render(original, &parts);
+    parts.beginGeneration();
+    render(preset("camouflage", setColour), &parts);
+    const PartCache::Builds edited = parts.builds();
+    const size_t kept = parts.size();
+    // The previous revision's parts are kept: undoing the edit builds nothing.
+    parts.beginGeneration();
+    expectSameImage(render(original, &parts), render(original, nullptr));
+    EXPECT_EQ(parts.builds().colormaps, edited.colormaps);
+    EXPECT_EQ(parts.builds().prefiltered, edited.prefiltered);
+    EXPECT_EQ(parts.size(), kept);
+    // Two generations on without the edited colormap, its table and prefiltered table are gone.
+    parts.beginGeneration();
+    render(original, &parts);
+    parts.beginGeneration();
+    EXPECT_EQ(parts.size(), kept - 2);
+    render(preset("camouflage", setColour), &parts);
+    EXPECT_EQ(parts.builds().colormaps, edited.colormaps + 1);
+    parts.clear();
+    EXPECT_EQ(parts.size(), 0u);
+}
+
+TEST(PartCache, ALeanShadingEditKeepsTheSlopesAndANewAmplitudeRebuildsThem) {
+    // lean-ridges under the lean response: its height's slope field is a
+    // kept part. The albedo is shading, not slopes; the amplitude scales them.
+    PartCache parts;
+    render(preset("lean-ridges"), &parts, ResponseKind::Lean);
+    const PartCache::Builds first = parts.builds();
+    EXPECT_EQ(first.slopes, 1);
+    parts.beginGeneration();
+    const PatternSpec albedo = preset("lean-ridges", [](nlohmann::json& j) { j["normal_map"]["albedo"] = "#a05050"; });
+    expectSameImage(render(albedo, &parts, ResponseKind::Lean), render(albedo, nullptr, ResponseKind::Lean));
+    EXPECT_EQ(parts.builds().slopes, first.slopes);
+    EXPECT_EQ(parts.builds().fields, first.fields);
+    parts.beginGeneration();
+    const PatternSpec amplitude = preset("lean-ridges", [](nlohmann::json& j) { j["normal_map"]["amplitude"] = 0.5; });
+    expectSameImage(render(amplitude, &parts, ResponseKind::Lean), render(amplitude, nullptr, ResponseKind::Lean));
+    EXPECT_EQ(parts.builds().slopes, first.slopes + 1);
+    EXPECT_EQ(parts.builds().fields, first.fields);  // the height is the same field
+}
+
+}  // namespace
+}  // namespace stochtex
