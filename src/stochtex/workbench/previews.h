@@ -26,6 +26,7 @@ public:
     // spec is equal (InputError as building the part words it); with
     // `parts`, the colormap's table is the one the program is built with.
     const PatternPreviews& update(const PatternSpec& spec, PartCache* parts = nullptr);
+    const PatternPreviews& previews() const { return previews_; }
     // Forgets every part: after a reload, the files the specs name may have changed.
     void clear();
     // Parts built so far: what an edit rebuilt (the tests').

@@ -45,17 +45,56 @@ inline const EnumNames<WorkbenchView> kWorkbenchViewNames{{"zoom", WorkbenchView
                                                           {"sphere", WorkbenchView::Sphere},
                                                           {"torus", WorkbenchView::Torus}};
 
-struct WorkbenchStep {
+// One thing done to the workbench: what a key, the mouse, a panel's control
+// or a script step asks for, applied by one function (WorkbenchModel::apply).
+struct WorkbenchCommand {
     enum class Action {
-        Zoom, Pan, Filter, Aniso, Set, Undo, Redo, Mode, Analysis, View, Tilt, Pick, Pause, Screenshot, Save,
-        Record, StopRecording, Key, MouseDown, MouseMove, MouseUp, Quit
+        Zoom,
+        Pan,
+        Filter,
+        Aniso,
+        Set,
+        Undo,
+        Redo,
+        Mode,
+        Analysis,
+        View,
+        Tilt,
+        Pick,
+        Pause,
+        Screenshot,
+        Save,
+        Record,
+        StopRecording,
+        Key,
+        MouseDown,
+        MouseMove,
+        MouseUp,
+        Quit,
+        // The window's alone (no script step names them; a script taps their keys):
+        Response,
+        Derivatives,
+        Split,
+        Opacity,
+        Statistic,
+        Reload,
+        SaveDefault,
+        Panel,
+        Help,
+        ToggleRecording,
+        RestartProgram
     };
-    int frame = 0;
     Action action = Action::Quit;
-    double x = 0, y = 0, amount = 1;  // zoom: factor at (x, y); pan, pick, mousedown, mousemove: (x, y); aniso, tilt: amount
-    int key = 0, mods = 0;            // key: the GLFW key and modifier bits, pressed and released in one frame
-    std::string text;                 // a name (filter, mode, analysis, view), a JSON pointer or a file
-    nlohmann::json value;             // set: the value
+    double x = 0, y = 0,
+           amount = 1;      // zoom: factor at (x, y); pan, pick, mousedown, mousemove: (x, y); aniso, tilt: amount
+    int key = 0, mods = 0;  // key: the GLFW key and modifier bits, pressed and released in one frame
+    std::string text;       // a name (filter, mode, analysis, view, response, …), a JSON pointer or a file
+    nlohmann::json value;   // set: the value
+};
+
+// A command of a script, run before the frame it names is drawn.
+struct WorkbenchStep : WorkbenchCommand {
+    int frame = 0;
 };
 
 // A key as a script names it: a letter, a digit, F1–F12, tab, escape,

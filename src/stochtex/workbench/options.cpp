@@ -1,0 +1,28 @@
+#include "stochtex/workbench/options.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "stochtex/core/error.h"
+#include "stochtex/pattern/param_info.h"
+
+namespace stochtex {
+
+void validateWorkbenchOptions(const WorkbenchOptions& o) {
+    const View& v = o.camera.view;
+    if (std::min(v.width, v.height) < 16 || std::max(v.width, v.height) > 8192)
+        throw InputError::parameter(
+            "size", "must be in [16, 8192] per side, got " + std::to_string(v.width) + "x" + std::to_string(v.height));
+    if (o.filter.source != StatisticsSource::Point && o.filter.source != StatisticsSource::Estimators)
+        throw InputError::parameter("filter", "the window draws none, paper or smooth, got " + filterName(o.filter));
+    checkInteger(anisoParam(), o.filter.aniso);
+    checkNumber(cameraTiltParam(), o.camera.tiltDeg, " degrees");
+    if (!(o.camera.view.scale > 0) || !std::isfinite(o.camera.view.scale))
+        throw InputError::parameter("scale", "must be a finite number > 0, got " + formatValue(o.camera.view.scale));
+    if (o.frames < 0) throw InputError::parameter("frames", "must be ≥ 0, got " + std::to_string(o.frames));
+    if (!o.screenshot.empty() && o.frames == 0)
+        throw InputError::parameter("frames", "must be given with a screenshot (it is of the last frame)");
+    validateShadertoySettings(o.shadertoy);
+}
+
+}  // namespace stochtex
