@@ -9,8 +9,10 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 
 #include "stochtex/core/error.h"
+#include "stochtex/pattern/presets.h"
 #include "stochtex/workbench/analysis_runner.h"
 #include "stochtex/workbench/recorder.h"
 #include "test_util.h"
@@ -194,6 +196,37 @@ TEST(WorkbenchModel, AProgramTakesItsKeysAndMouseAndRefusesEdits) {
     EXPECT_THROW(m.apply(set("/x", 1), true), InputError);
     tap(m, GLFW_KEY_F4);
     EXPECT_TRUE(m.shown().paused);
+}
+
+class WorkbenchModelFiles : public test::ScratchFolder {};
+
+TEST_F(WorkbenchModelFiles, AFileChangedOnDiskIsReloadedAndItsPartsBuiltAgain) {
+    const std::filesystem::path file = dir_ / "p.json";
+    nlohmann::json j = nlohmann::json::parse(presetText("camouflage"));
+    j["size"] = 64;
+    std::ofstream(file) << j.dump();
+    WorkbenchModel m(WorkbenchDocument::patternFile(file.string()), options());
+    const auto start = std::chrono::steady_clock::now();
+    m.watchFiles(start);
+    EXPECT_EQ(m.buildCount(), 1);  // nothing changed
+    j["colormap"]["background"] = "#203040";
+    std::ofstream(file) << j.dump();
+    std::filesystem::last_write_time(file, std::filesystem::last_write_time(file) + std::chrono::seconds(2));
+    m.watchFiles(start + std::chrono::milliseconds(100));  // looked at twice a second: not yet
+    EXPECT_EQ(m.buildCount(), 1);
+    m.watchFiles(start + std::chrono::seconds(1));
+    EXPECT_EQ(m.buildCount(), 2);
+    EXPECT_EQ(m.notice(), "reloaded " + m.document().source());
+    EXPECT_EQ(m.document().json().at("colormap").at("background"), "#203040");
+    // What was kept went with the old files: both noises, whose specs did
+    // not change, are synthesised again.
+    EXPECT_EQ(m.previewCache().exampleBuilds(), 4);
+    // A file that no longer parses: the error is shown, the last build stays.
+    std::ofstream(file) << "{ not json";
+    std::filesystem::last_write_time(file, std::filesystem::last_write_time(file) + std::chrono::seconds(4));
+    m.watchFiles(start + std::chrono::seconds(2));
+    EXPECT_EQ(m.error().rfind("reload: ", 0), 0u) << m.error();
+    EXPECT_EQ(m.buildCount(), 2);
 }
 
 class WorkbenchRecorderTest : public test::ScratchFolder {};
