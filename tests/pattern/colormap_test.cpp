@@ -5,9 +5,46 @@
 
 #include "stochtex/image/image.h"
 #include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/prefiltered_colormap.h"
 #include "stochtex/pattern/presets.h"
 
 using namespace stochtex;
+
+// The GPU's prefiltered table is every layer resampled to the table's
+// resolution: each entry exactly the layer's bilinear sample there (the
+// separable resampling does the same float operations), for layers stored
+// at the full resolution and coarser, in both modes, and at another size.
+TEST(PrefilteredColormap, TheAtlasIsEachLayerSampledBilinearlyBitForBit) {
+    Image table(97, 61, 3);
+    for (int y = 0; y < table.height(); ++y)
+        for (int x = 0; x < table.width(); ++x)
+            for (int c = 0; c < 3; ++c)
+                table.at(x, y, c) = float(0.5 + 0.5 * std::sin(0.37 * x + 0.91 * y + 2.1 * c) * std::cos(0.05 * x * y));
+    const ColormapTable h(table);
+    for (PrefilterMode mode : {PrefilterMode::Paper, PrefilterMode::Smooth}) {
+        const PrefilteredColormap p(h, mode);
+        const int n = int(p.sigmas().size());
+        for (const auto& [rx, ry] : {std::pair{97, 61}, std::pair{40, 24}}) {
+            const Image atlas = p.atlas(rx, ry);
+            ASSERT_EQ(atlas.width(), rx);
+            ASSERT_EQ(atlas.height(), ry * n * n);
+            int coarser = 0, mismatches = 0;
+            for (int l = 0; l < n * n; ++l) {
+                const ColormapTable& t = p.layer(l / n, l % n);
+                const bool full = t.resolutionX() == rx && t.resolutionY() == ry;
+                coarser += !full;
+                for (int j = 0; j < ry; ++j)
+                    for (int i = 0; i < rx; ++i) {
+                        const Rgb want =
+                            full ? t.entry(i, j) : t.sample(float(i) / float(rx - 1), float(j) / float(ry - 1));
+                        for (int c = 0; c < 3; ++c) mismatches += atlas.at(i, l * ry + j, c) != want[size_t(c)];
+                    }
+            }
+            EXPECT_EQ(mismatches, 0) << "mode " << int(mode) << " at " << rx << "x" << ry;
+            EXPECT_GT(coarser, 0);  // the resampling is exercised
+        }
+    }
+}
 
 TEST(Colormap, GaussianIsIdentityInXEverywhere) {
     const ColormapTable t = makeAnalyticColormap(AnalyticColormap::Gaussian, 256);
@@ -121,15 +158,15 @@ TEST(Colormap, PaintedShapesPutTheRightColourAtKnownPoints) {
     add(tri, {0, 1, 1});
 
     const std::vector<std::pair<std::array<double, 2>, Rgb>> probes = {
-        {{0.2, 0.5}, {1, 0, 0}},        // half-plane
-        {{0.8, 0.5}, {0.1f, 0.1f, 0.1f}},  // background
-        {{0.3, 0.22}, {0, 1, 0}},       // band over the half-plane
-        {{0.8, 0.17}, {0, 1, 0}},       // band on the background side
-        {{0.75, 0.9}, {0, 0, 1}},       // ring
+        {{0.2, 0.5}, {1, 0, 0}},             // half-plane
+        {{0.8, 0.5}, {0.1f, 0.1f, 0.1f}},    // background
+        {{0.3, 0.22}, {0, 1, 0}},            // band over the half-plane
+        {{0.8, 0.17}, {0, 1, 0}},            // band on the background side
+        {{0.75, 0.9}, {0, 0, 1}},            // ring
         {{0.75, 0.75}, {0.1f, 0.1f, 0.1f}},  // ring hole
-        {{0.25, 0.8}, {1, 1, 0}},       // disc
-        {{0.95, 0.05}, {1, 0, 1}},      // rectangle over band? (y=0.05 is outside band)
-        {{0.7, 0.43}, {0, 1, 1}},       // polygon
+        {{0.25, 0.8}, {1, 1, 0}},            // disc
+        {{0.95, 0.05}, {1, 0, 1}},           // rectangle over band? (y=0.05 is outside band)
+        {{0.7, 0.43}, {0, 1, 1}},            // polygon
         {{0.62, 0.48}, {0.1f, 0.1f, 0.1f}},  // beside the polygon
     };
     const ColormapTable table = p.rasterize(256, 4);
