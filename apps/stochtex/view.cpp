@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "common.h"
+#include "stochtex/pattern/view.h"
 #include "stochtex/workbench/workbench.h"
 
 namespace stochtex::cli {
@@ -40,7 +41,7 @@ void registerView(CLI::App& app) {
     addEnumFlag(
         *cmd, "--view", w.view, kWorkbenchViewNames, "view",
         "Where the pattern is seen: zoom (flat) | plane (perspective ground plane) | sphere | torus (V cycles)");
-    cmd->add_option("--scale", w.camera.view.scale, "Starting scale (texels per pixel)");
+    addParameterOption(*cmd, viewScaleParam(), w.camera.view.scale);  // the starting scale
     addAnisoFlag(*cmd, w.filter.aniso);
     addResponseFlags(*cmd, args->response);
     cmd->add_option("--size", args->size, "Picture area: N or W,H (the panel adds 380 pixels at the left)")

@@ -1,10 +1,10 @@
 #include "stochtex/workbench/options.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "stochtex/core/error.h"
 #include "stochtex/pattern/param_info.h"
+#include "stochtex/pattern/view.h"
 
 namespace stochtex {
 
@@ -17,8 +17,7 @@ void validateWorkbenchOptions(const WorkbenchOptions& o) {
         throw InputError::parameter("filter", "the window draws none, paper or smooth, got " + filterName(o.filter));
     checkInteger(anisoParam(), o.filter.aniso);
     checkNumber(cameraTiltParam(), o.camera.tiltDeg, " degrees");
-    if (!(o.camera.view.scale > 0) || !std::isfinite(o.camera.view.scale))
-        throw InputError::parameter("scale", "must be a finite number > 0, got " + formatValue(o.camera.view.scale));
+    checkNumber(viewScaleParam(), o.camera.view.scale);
     if (o.frames < 0) throw InputError::parameter("frames", "must be ≥ 0, got " + std::to_string(o.frames));
     if (!o.screenshot.empty() && o.frames == 0)
         throw InputError::parameter("frames", "must be given with a screenshot (it is of the last frame)");
