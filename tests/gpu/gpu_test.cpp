@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "stochtex/gpu/gl_context.h"
-#include "stochtex/gpu/scene_render.h"
 #include "stochtex/core/error.h"
-#include "stochtex/gpu/programs.h"
+#include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_graph.h"
+#include "stochtex/gpu/programs.h"
+#include "stochtex/gpu/scene_render.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/cpu_renderer.h"
@@ -216,8 +216,9 @@ TEST(Gpu, FilteredRenderMatchesTheCpu) {
 }
 
 // A view built with a PartCache (the workbench's) draws what one built
-// without does, bit for bit, and a colormap edit uploads only the new
-// prefiltered table: the examples' and the pyramids' textures are the kept ones.
+// without does, bit for bit, and a colormap edit makes one new kept texture,
+// its prefiltered table: the examples' and the pyramids' are the kept ones
+// (the 256² point table is uploaded with every view, not kept).
 TEST(Gpu, AViewBuiltFromKeptPartsDrawsTheSameAndAnEditUploadsOnlyWhatItChanged) {
     nlohmann::json j = JsonReader::parse(presetText("camouflage"), "camouflage");
     j["size"] = 128;
@@ -356,7 +357,8 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     Image ex(64, 64, 1);
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x)
-            ex.at(x, y) = (std::sin(x * 0.3) * std::cos(y * 0.2) > 0 ? 0.8f : 0.2f) + 0.05f * float((x * 7 + y * 13) % 10) / 10.0f;
+            ex.at(x, y) = (std::sin(x * 0.3) * std::cos(y * 0.2) > 0 ? 0.8f : 0.2f) +
+                          0.05f * float((x * 7 + y * 13) % 10) / 10.0f;
     writeImage((dir / "bimodal.png").string(), ex, kNoTransfer);  // noise values: data
     const std::string text = R"({"name": "exemplar", "seed": 3,
         "noise_x": {"type": "image", "path": "bimodal.png", "gaussianize": true},
@@ -538,10 +540,12 @@ TEST(Gpu, TextureGraphWithEveryOperationMatchesTheCpu) {
     Image img(64, 64, 1);
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x)
-            img.at(x, y) = float(0.5 + 0.3 * std::sin(0.2 * x + 0.1 * y) * std::cos(0.15 * y) + 0.1 * std::sin(0.7 * x));
+            img.at(x, y) =
+                float(0.5 + 0.3 * std::sin(0.2 * x + 0.1 * y) * std::cos(0.15 * y) + 0.1 * std::sin(0.7 * x));
     writeImage(file.string(), img, WriteOptions{.transfer = Transfer::Linear});
     const std::string text = R"({"name": "every", "seed": 12, "offsets": "independent", "nodes": {
-        "e": {"type": "exemplar", "path": ")" + file.string() + R"("},
+        "e": {"type": "exemplar", "path": ")" +
+                             file.string() + R"("},
         "n": {"type": "spectral_noise", "size": 128, "components": [{"shape": "lowpass", "cutoff": 5}]},
         "n2": {"type": "spectral_noise", "size": 128, "components": [{"shape": "ring", "frequency": 9, "bandwidth": 3}]},
         "f": {"type": "colormap_field", "x": "e", "y": "n", "colormap": {"type": "phasor", "profile": "sine", "transfer": "linear"}},
@@ -552,7 +556,8 @@ TEST(Gpu, TextureGraphWithEveryOperationMatchesTheCpu) {
         "ca": {"type": "colormap", "x": "af", "y": "n2t", "colormap": {"type": "phasor", "profile": "sine", "palette": ["#203060", "#f0c040"]}},
         "cb": {"type": "colormap", "x": "k", "y": "f", "colormap": {"type": "gaussian"}},
         "c": {"type": "mix", "a": "ca", "b": "cb", "t": "af"}}, "output": "c"})";
-    const GraphPattern g = GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "every"), "every"), "."));
+    const GraphPattern g =
+        GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "every"), "every"), "."));
     ASSERT_EQ(g.leafCount(), 3);
     ASSERT_EQ(g.leafPairs().size(), 3u);  // the 64² exemplar, the 128² noise, the transformed 128² noise
     ASSERT_FALSE(g.pairTransform(2).identity());
@@ -565,8 +570,8 @@ TEST(Gpu, TextureGraphWithEveryOperationMatchesTheCpu) {
     for (const double scale : {3.0, 20.0}) {
         c.view.scale = scale;
         expectGraphParity(g, c, o, "every operation, smooth, scale " + std::to_string(int(scale)), 1e-4, 0.005);
-        expectGraphParity(g, c, o, "every operation, smooth mean-only, scale " + std::to_string(int(scale)), 1e-4, 0.005,
-                          GraphMoments::MeanOnly);
+        expectGraphParity(g, c, o, "every operation, smooth mean-only, scale " + std::to_string(int(scale)), 1e-4,
+                          0.005, GraphMoments::MeanOnly);
     }
     // The Deliot–Heitz estimator too (each pair's level averages are
     // constants of the program). At 20 texels a pixel its picture is
@@ -578,15 +583,18 @@ TEST(Gpu, TextureGraphWithEveryOperationMatchesTheCpu) {
     const Image paper = FilteredGraph(g, o).render(c), baseline = FilteredGraph(g, dh).render(c);
     EXPECT_GT(compare(paper, baseline).mean, 4e-4);
     // More textures than a fragment shader has units: one message, before any GL work.
-    std::string many = R"({"nodes": {"a": {"type": "spectral_noise", "size": 16, "components": [{"shape": "lowpass", "cutoff": 2}]})";
+    std::string many =
+        R"({"nodes": {"a": {"type": "spectral_noise", "size": 16, "components": [{"shape": "lowpass", "cutoff": 2}]})";
     std::string chain = "a";
     for (int k = 0; k < 9; ++k) {
         const std::string id = "t" + std::to_string(k);
         many += ", \"" + id + "\": {\"type\": \"curve\", \"input\": \"" + chain + "\", \"points\": [[0, 1], [1, 0]]}";
         chain = id;
     }
-    many += R"(, "c": {"type": "colormap", "x": ")" + chain + R"(", "y": "a", "colormap": {"type": "gaussian"}}}, "output": "c"})";
-    const GraphPattern big = GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(many, "many"), "many"), "."));
+    many += R"(, "c": {"type": "colormap", "x": ")" + chain +
+            R"(", "y": "a", "colormap": {"type": "gaussian"}}}, "output": "c"})";
+    const GraphPattern big =
+        GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(many, "many"), "many"), "."));
     EXPECT_NO_THROW({ const GpuGraph unfiltered(big, context(), unfilteredOptions()); });  // 1 leaf + 10 tables
     const std::string e = test::inputErrorOf([&] { const GpuGraph filtered(big, context(), o); }).what();
     EXPECT_NE(e.find("reads 22 textures filtered, more than the 16 units"), std::string::npos) << e;
@@ -607,7 +615,8 @@ TEST(Gpu, LeanAndTiledFieldNodesMatchTheCpuInAPlaneView) {
             for (int c = 0; c < 3; ++c) img.at(x, y, c) = float(0.5 + 0.4 * std::sin(0.2 * x * (c + 1) + 0.3 * y));
     writeImage(file.string(), img);
     const std::string text = R"({"name": "lean-tiled", "seed": 6, "nodes": {
-        "t": {"type": "tiled_field", "path": ")" + file.string() + R"(", "gaussianize": false},
+        "t": {"type": "tiled_field", "path": ")" +
+                             file.string() + R"(", "gaussianize": false},
         "r": {"type": "channel", "field": "t", "index": 0},
         "g": {"type": "channel", "field": "t", "index": 1},
         "b": {"type": "channel", "field": "t", "index": 2},
@@ -665,46 +674,49 @@ TEST(Gpu, SceneRendersObjectsInEveryFilterMode) {
         double saturation, silhouette;
     };
     for (const Case c : {Case{"weld", 0.1, 0.02}, Case{"figure14", 0.08, 0.06}})
-    for (const char* name : {"sphere", "torus", "plane"}) {
-        const char* preset = c.preset;
-        std::map<std::string, double> coverage;
-        for (const std::string mode : {"none", "paper", "smooth"}) {
-            const std::string what = std::string(preset) + " on a " + name + ", filter " + mode;
-            FilterOptions o;
-            o.use(parseFilter(mode));
-            const std::unique_ptr<GpuView> gpu = makeGpuView(loadPreset(preset), context(), o);
-            const Image img = renderScene(*gpu, makeObject(name), SceneCamera{}, w, h, 4.0f);
-            ASSERT_EQ(img.width(), w);
-            ASSERT_EQ(img.height(), h);
-            int covered = 0;
-            double saturation = 0;
-            for (int y = 0; y < h; ++y)
-                for (int x = 0; x < w; ++x) {
-                    const float r = img.at(x, y, 0), g = img.at(x, y, 1), b = img.at(x, y, 2);
-                    // Off the clear colour (sRGB codes 0.08, 0.09, 0.11, linear in the target) by more than 8-bit noise.
-                    if (std::abs(r - linearFromSrgb(0.08f)) + std::abs(g - linearFromSrgb(0.09f)) +
-                            std::abs(b - linearFromSrgb(0.11f)) >
-                        0.02f) {
-                        ++covered;
-                        saturation += std::max({r, g, b}) - std::min({r, g, b});
+        for (const char* name : {"sphere", "torus", "plane"}) {
+            const char* preset = c.preset;
+            std::map<std::string, double> coverage;
+            for (const std::string mode : {"none", "paper", "smooth"}) {
+                const std::string what = std::string(preset) + " on a " + name + ", filter " + mode;
+                FilterOptions o;
+                o.use(parseFilter(mode));
+                const std::unique_ptr<GpuView> gpu = makeGpuView(loadPreset(preset), context(), o);
+                const Image img = renderScene(*gpu, makeObject(name), SceneCamera{}, w, h, 4.0f);
+                ASSERT_EQ(img.width(), w);
+                ASSERT_EQ(img.height(), h);
+                int covered = 0;
+                double saturation = 0;
+                for (int y = 0; y < h; ++y)
+                    for (int x = 0; x < w; ++x) {
+                        const float r = img.at(x, y, 0), g = img.at(x, y, 1), b = img.at(x, y, 2);
+                        // Off the clear colour (sRGB codes 0.08, 0.09, 0.11, linear in the target) by more than 8-bit
+                        // noise.
+                        if (std::abs(r - linearFromSrgb(0.08f)) + std::abs(g - linearFromSrgb(0.09f)) +
+                                std::abs(b - linearFromSrgb(0.11f)) >
+                            0.02f) {
+                            ++covered;
+                            saturation += std::max({r, g, b}) - std::min({r, g, b});
+                        }
                     }
-                }
-            coverage[mode] = covered / double(w * h);
-            // Each object fills between a tenth and 95% of the frame.
-            EXPECT_GT(coverage[mode], 0.1) << what;
-            EXPECT_LT(coverage[mode], 0.95) << what;
-            EXPECT_GT(saturation / std::max(covered, 1), c.saturation) << what << ": the pattern's colours should show";
-            EXPECT_EQ(renderScene(*gpu, makeObject(name), SceneCamera{}, w, h, 4.0f).data(), img.data()) << what;
+                coverage[mode] = covered / double(w * h);
+                // Each object fills between a tenth and 95% of the frame.
+                EXPECT_GT(coverage[mode], 0.1) << what;
+                EXPECT_LT(coverage[mode], 0.95) << what;
+                EXPECT_GT(saturation / std::max(covered, 1), c.saturation)
+                    << what << ": the pattern's colours should show";
+                EXPECT_EQ(renderScene(*gpu, makeObject(name), SceneCamera{}, w, h, 4.0f).data(), img.data()) << what;
+            }
+            // One silhouette: the modes differ only in a few pixels (weld: 2% of
+            // the frame, dark pattern texels that shade close to the clear colour).
+            EXPECT_NEAR(coverage["none"], coverage["smooth"], c.silhouette) << preset << " on a " << name;
+            EXPECT_NEAR(coverage["paper"], coverage["smooth"], c.silhouette) << preset << " on a " << name;
         }
-        // One silhouette: the modes differ only in a few pixels (weld: 2% of
-        // the frame, dark pattern texels that shade close to the clear colour).
-        EXPECT_NEAR(coverage["none"], coverage["smooth"], c.silhouette) << preset << " on a " << name;
-        EXPECT_NEAR(coverage["paper"], coverage["smooth"], c.silhouette) << preset << " on a " << name;
-    }
     const std::unique_ptr<GpuView> gpu = makeGpuView(loadPreset("weld"), context(), FilterOptions{});
     EXPECT_EQ(test::inputErrorOf([] { makeObject("cube"); }).parameter(), "object");
-    EXPECT_EQ(test::inputErrorOf([&] { renderScene(*gpu, makeObject("sphere"), SceneCamera{}, 16, 16, -1.0f); }).parameter(),
-              "tiling");
+    EXPECT_EQ(
+        test::inputErrorOf([&] { renderScene(*gpu, makeObject("sphere"), SceneCamera{}, 16, 16, -1.0f); }).parameter(),
+        "tiling");
 }
 
 TEST(Gpu, BrokenShaderReportsFileAndLine) {
@@ -753,10 +765,13 @@ TEST(Gpu, ShaderFilesNeedWhatTheirIncludesName) {
     EXPECT_EQ(order({"camera"}), (std::vector<std::string>{"coords", "camera"}));
     EXPECT_EQ(order({"lean_op"}), (std::vector<std::string>{"lean", "graph_ops", "op_host", "lean_op"}));
     // The host's declarations (filtering) before the kernel's loop that calls them (estimate).
-    const std::string host = "#include \"stochtex/gpu/shaders/filtering.glsl\"\n#include \"stochtex/kernel/estimate.glsl\"\n";
-    EXPECT_EQ(order({"host"}, {{"host", host}}), (std::vector<std::string>{"coords", "footprint", "moments", "texel_stats",
-                                                                            "filtering", "estimate", "host"}));
-    const std::string generated = "// one op\n#include \"stochtex/pattern/ops/square_op.glsl\"\nvec3 f() { return vec3(0.0); }\n";
+    const std::string host =
+        "#include \"stochtex/gpu/shaders/filtering.glsl\"\n#include \"stochtex/kernel/estimate.glsl\"\n";
+    EXPECT_EQ(
+        order({"host"}, {{"host", host}}),
+        (std::vector<std::string>{"coords", "footprint", "moments", "texel_stats", "filtering", "estimate", "host"}));
+    const std::string generated =
+        "// one op\n#include \"stochtex/pattern/ops/square_op.glsl\"\nvec3 f() { return vec3(0.0); }\n";
     EXPECT_EQ(order({"made"}, {{"made", generated}}),
               (std::vector<std::string>{"graph_ops", "op_host", "square_op", "made"}));
     const std::string text = assembleShader(GlslTarget::Core330, {"made"}, {{"made", generated}});

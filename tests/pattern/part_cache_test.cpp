@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 
+#include "stochtex/core/error.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
@@ -122,6 +123,42 @@ TEST(PartCache, ALeanShadingEditKeepsTheSlopesAndANewAmplitudeRebuildsThem) {
     expectSameImage(render(amplitude, &parts, ResponseKind::Lean), render(amplitude, nullptr, ResponseKind::Lean));
     EXPECT_EQ(parts.builds().slopes, first.slopes + 1);
     EXPECT_EQ(parts.builds().fields, first.fields);  // the height is the same field
+}
+
+TEST(PartCache, AGraphEditRebuildsTheNodeItChangedAndWhatIsDownstreamOnly) {
+    // figure14: height → du, dv (derivatives) → direction → colour. Every
+    // linear node is a kept part, so an edit of du's angle rebuilds du alone
+    // (not the height it reads, nor dv), and an edit of the height's
+    // cut-off rebuilds the height and both derivatives.
+    const auto graph = [](const std::function<void(nlohmann::json&)>& edit) {
+        nlohmann::json j = JsonReader::parse(presetText("figure14"), "figure14");
+        j["nodes"]["height"]["size"] = 64;
+        if (edit) edit(j);
+        return parsePatternSpec(JsonReader(j, "figure14"), ".");
+    };
+    PartCache parts;
+    render(graph({}), &parts);
+    const int first = parts.builds().fields;
+    EXPECT_EQ(first, 3);  // height, du, dv
+    parts.beginGeneration();
+    const PatternSpec angle = graph([](nlohmann::json& j) { j["nodes"]["du"]["angle"] = 30; });
+    expectSameImage(render(angle, &parts), render(angle, nullptr));
+    EXPECT_EQ(parts.builds().fields, first + 1);
+    parts.beginGeneration();
+    const PatternSpec cutoff = graph([](nlohmann::json& j) { j["nodes"]["height"]["components"][0]["cutoff"] = 9; });
+    expectSameImage(render(cutoff, &parts), render(cutoff, nullptr));
+    EXPECT_EQ(parts.builds().fields, first + 4);
+}
+
+TEST(PartCache, ABuildThatFailsKeepsNothingOfThePartThatFailed) {
+    PartCache parts;
+    ColormapSpec missing;
+    missing.source = ColormapSpec::Source::Image;
+    missing.image = "/nonexistent/colormap.png";
+    EXPECT_THROW(parts.colormap(missing), InputError);
+    EXPECT_EQ(parts.size(), 0u);
+    EXPECT_EQ(parts.builds().colormaps, 0);
+    EXPECT_THROW(parts.colormap(missing), InputError);  // tried again, not a kept failure
 }
 
 }  // namespace

@@ -289,7 +289,8 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
                                       return floatTexture(int(lut.size()), 1, 1, lut.data());
                                   }));
         if (!filtered) continue;
-        const auto [pair, channel] = graph.leafLocation(k);
+        // Not a structured binding: the lambda below captures them (clang 14, the fuzz build, cannot).
+        const int pair = graph.leafLocation(k)[0], channel = graph.leafLocation(k)[1];
         m.planes.emplace_back("uGraphStats" + leaf,
                               texture(f.sharedEstimator(pair), "pyramid " + std::to_string(channel),
                                       [&] { return pyramidTexture(f.estimator(pair).pyramid(channel)); }));

@@ -58,7 +58,6 @@ void PartCache::beginGeneration() {
     const auto drop = [&](auto& entries) {
         std::erase_if(entries, [&](const auto& e) { return e.used + 2 < generation_; });
     };
-    // The parts that hold others first, so those are unshared when theirs are judged.
     drop(attachments_);
     drop(estimators_);
     drop(slopes_);

@@ -17,10 +17,13 @@
 // equal inputs is the same part, so a build with the cache renders what one
 // without it does, bit for bit (tested).
 //
-// Memory: a part that no build used in the current or the previous
-// generation is dropped when the next generation begins (the workbench
-// begins one per document revision), so at most two revisions' parts are
-// kept. Not thread-safe: one build at a time.
+// Memory: a part that no build used in the last two generations is dropped
+// when the next begins (the workbench begins one per document revision), so
+// after a build the parts of at most three revisions are kept — its own and
+// the two before, so that an undo, or a redo after it, rebuilds nothing.
+// Not thread-safe: one build at a time. A device's attachments belong to the
+// context that made them: one GL context (or contexts sharing objects) per
+// cache.
 #include <cstdint>
 #include <functional>
 #include <memory>

@@ -254,11 +254,12 @@ uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id) {
 namespace {
 
 // Examples built so far, by node id, and the texels of every node counted
-// (built, or kept in a PartCache), in all.
+// (built, or kept in a PartCache), in all; the PartCache, if any.
 struct FieldCache {
-    std::map<std::string, NoiseExample> built;
+    std::map<std::string, std::shared_ptr<const NoiseExample>> built;
     std::map<std::string, long long> counted;
     long long texels = 0;
+    PartCache* parts = nullptr;
 };
 
 // Counts node `id`'s texels once against the graph's examples' budget.
@@ -274,11 +275,42 @@ void countTexels(FieldCache& cache, const std::string& id, long long texels, con
 NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
                         const std::string& context, FieldCache& cache);
 
-NoiseExample buildFieldOnce(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
-                            const std::string& context, FieldCache& cache) {
+// Node `id`'s example, built once per build; with a PartCache, every linear
+// node is a kept part (keyed by itself and the nodes upstream, in id order,
+// which it folds), so an edit rebuilds the nodes it changed and those
+// downstream of them, and the texels of a kept node's subgraph still count.
+std::shared_ptr<const NoiseExample> buildFieldOnce(const TextureGraph& graph, const std::string& id,
+                                                   uint32_t patternSeed, const std::string& context,
+                                                   FieldCache& cache) {
     if (const auto it = cache.built.find(id); it != cache.built.end()) return it->second;
-    NoiseExample e = buildField(graph, id, patternSeed, context, cache);
-    countTexels(cache, id, (long long)e.size() * e.size(), context);
+    const auto build = [&] {
+        auto e = std::make_shared<const NoiseExample>(buildField(graph, id, patternSeed, context, cache));
+        countTexels(cache, id, (long long)e->size() * e->size(), context);
+        return e;
+    };
+    std::shared_ptr<const NoiseExample> e;
+    if (!cache.parts) {
+        e = build();
+    } else {
+        PartCache::FieldKey key{{}, patternSeed, context};
+        std::set<std::string> upstream;
+        for (std::vector<std::string> todo{id}; !todo.empty();) {
+            const std::string n = todo.back();
+            todo.pop_back();
+            if (!upstream.insert(n).second) continue;
+            for (const auto& [port, from] : graph.node(n).inputs) todo.push_back(from);
+        }
+        for (const std::string& n : upstream) key.nodes.push_back(graph.node(n));
+        const PartCache::Field f = cache.parts->field(key, [&] {
+            PartCache::Field built{build(), {}};
+            for (const std::string& n : upstream)
+                if (const auto it = cache.counted.find(n); it != cache.counted.end())
+                    built.texels.emplace_back(n, it->second);
+            return built;
+        });
+        for (const auto& [node, texels] : f.texels) countTexels(cache, node, texels, context);
+        e = f.example;
+    }
     cache.built.emplace(id, e);
     return e;
 }
@@ -289,7 +321,7 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
     const std::string where = context + ": node \"" + id + "\"";
     // A linear node's input: its example values, which must be the field's own.
     const auto linearInput = [&](const std::string& port) {
-        NoiseExample e = buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache);
+        NoiseExample e = *buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache);
         if (e.gaussianized())
             throw InputError(where + " (" + g.info->name + "): its input \"" + g.inputs.at(port) +
                              "\" is a Gaussianized exemplar, whose field is not linear in its example; set "
@@ -303,7 +335,7 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
         where,
         [&] { return graphNodeSeed(patternSeed, id); },
         linearInput,
-        [&](const std::string& port) { return buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache); },
+        [&](const std::string& port) { return *buildFieldOnce(graph, g.inputs.at(port), patternSeed, context, cache); },
         [&](const std::string& port) -> const GraphNode& { return graph.node(g.inputs.at(port)); }};
     NoiseExample e = g.info->fold(fold);
     // Linear nodes in a chain multiply their scales (20 affines at scale 100
@@ -318,7 +350,7 @@ NoiseExample buildField(const TextureGraph& graph, const std::string& id, uint32
 NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
                              const std::string& context) {
     FieldCache cache;
-    return buildFieldOnce(graph, id, patternSeed, context, cache);
+    return *buildFieldOnce(graph, id, patternSeed, context, cache);
 }
 
 std::vector<std::shared_ptr<const NoiseExample>> buildGraphFields(const TextureGraph& graph,
@@ -326,33 +358,9 @@ std::vector<std::shared_ptr<const NoiseExample>> buildGraphFields(const TextureG
                                                                   uint32_t patternSeed, const std::string& context,
                                                                   PartCache* parts) {
     FieldCache cache;
+    cache.parts = parts;
     std::vector<std::shared_ptr<const NoiseExample>> out;
-    for (const std::string& id : ids) {
-        if (!parts) {
-            out.push_back(std::make_shared<const NoiseExample>(buildFieldOnce(graph, id, patternSeed, context, cache)));
-            continue;
-        }
-        // The field's key: itself and every node upstream (all linear), in id order.
-        PartCache::FieldKey key{{}, patternSeed, context};
-        std::set<std::string> upstream;
-        for (std::vector<std::string> todo{id}; !todo.empty();) {
-            const std::string n = todo.back();
-            todo.pop_back();
-            if (!upstream.insert(n).second) continue;
-            for (const auto& [port, from] : graph.node(n).inputs) todo.push_back(from);
-        }
-        for (const std::string& n : upstream) key.nodes.push_back(graph.node(n));
-        const PartCache::Field f = parts->field(key, [&] {
-            PartCache::Field built{
-                std::make_shared<const NoiseExample>(buildFieldOnce(graph, id, patternSeed, context, cache)), {}};
-            for (const std::string& n : upstream)
-                if (const auto it = cache.counted.find(n); it != cache.counted.end())
-                    built.texels.emplace_back(n, it->second);
-            return built;
-        });
-        for (const auto& [node, texels] : f.texels) countTexels(cache, node, texels, context);
-        out.push_back(f.example);
-    }
+    for (const std::string& id : ids) out.push_back(buildFieldOnce(graph, id, patternSeed, context, cache));
     return out;
 }
 

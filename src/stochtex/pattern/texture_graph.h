@@ -72,8 +72,9 @@ uint32_t graphNodeSeed(uint32_t patternSeed, const std::string& id);
 NoiseExample buildGraphField(const TextureGraph& graph, const std::string& id, uint32_t patternSeed,
                              const std::string& context);
 // The examples of several linear field nodes, each node built once for all;
-// with `parts`, a field whose nodes are those of a kept one is not built
-// again (its nodes' texels still count against the examples' budget).
+// with `parts`, every linear node is a kept part: a node whose nodes
+// upstream are those of a kept one is not built again (their texels still
+// count against the examples' budget).
 std::vector<std::shared_ptr<const NoiseExample>> buildGraphFields(const TextureGraph& graph,
                                                                   const std::vector<std::string>& ids,
                                                                   uint32_t patternSeed, const std::string& context,

@@ -98,20 +98,20 @@ void WorkbenchModel::guarded(F&& action) {
 
 void WorkbenchModel::build() {
     needsRebuild_ = false;
-    lastBuild_ = std::chrono::steady_clock::now();
     ++builds_;
     viewChanged();
     if (isShadertoy()) {
         // Rebuilt at the picture's size on the next frame; the old one
         // stays on screen if the program no longer compiles.
         programRestart_ = true;
-        return;
+    } else {
+        parts_.beginGeneration();  // the parts of the revisions before stay: an undo rebuilds nothing
+        spec_ = doc_.patternSpec();
+        hasNormalMap_ = spec_.normalMap.has_value() && !spec_.graph;
+        if (!hasNormalMap_) shown_.response = ResponseKind::PrefilteredColormap;
+        previews_.update(spec_, &parts_);  // the colormap canvas and the examples, where their specs changed
     }
-    parts_.beginGeneration();  // the parts of the last two revisions stay: an undo rebuilds nothing
-    const PatternSpec& spec = doc_.patternSpec();
-    hasNormalMap_ = spec.normalMap.has_value() && !spec.graph;
-    if (!hasNormalMap_) shown_.response = ResponseKind::PrefilteredColormap;
-    previews_.update(spec, &parts_);  // the colormap canvas and the examples, where their specs changed
+    lastBuild_ = std::chrono::steady_clock::now();  // a drag's next rebuild waits 0.3 s from here
 }
 
 void WorkbenchModel::rebuild() {
@@ -146,7 +146,7 @@ void WorkbenchModel::reload() {
     }
 }
 
-void WorkbenchModel::applyEdit(const JsonEdit& e) {
+bool WorkbenchModel::applyEdit(const JsonEdit& e) {
     try {
         if (e.remove)
             doc_.remove(e.pointer);
@@ -154,8 +154,10 @@ void WorkbenchModel::applyEdit(const JsonEdit& e) {
             doc_.set(e.pointer, e.value);
         error_.clear();
         needsRebuild_ = true;
+        return true;
     } catch (const InputError& x) {
         error_ = x.what();
+        return false;
     }
 }
 
@@ -179,11 +181,29 @@ void WorkbenchModel::saveDefault() {
     save(preset ? doc_.source().substr(7) + ".json" : doc_.source());
 }
 
-void WorkbenchModel::setPictureSize(int width, int height) { pictureSize_ = {std::max(1, width), std::max(1, height)}; }
+void WorkbenchModel::setWindow(int width, int height, float pixelScale) {
+    window_ = {std::max(1, width), std::max(1, height)};
+    pixelScale_ = pixelScale > 0 && std::isfinite(pixelScale) ? pixelScale : 1.0f;
+}
+
+int WorkbenchModel::panelWidth() const {
+    return shown_.panel ? int(std::lround(kWorkbenchPanelWidth * pixelScale_)) : 0;
+}
+
+DisplayRect WorkbenchModel::pictureRect() const {
+    return {panelWidth(), 0, std::max(1, window_[0] - panelWidth()), window_[1]};
+}
+
+DisplayRect WorkbenchModel::textureRect() const {
+    const int w = window_[0] - panelWidth();
+    const int tw = shown_.mode == WorkbenchMode::SideBySide ? w / 2 : w;
+    return {panelWidth(), 0, std::max(1, tw), window_[1]};
+}
 
 void WorkbenchModel::startRecording(const std::string& path) {
     stopRecording();
-    recorder_.start(path, pictureSize_[0], pictureSize_[1], fps_);
+    const DisplayRect picture = pictureRect();  // as the panel and mode are now
+    recorder_.start(path, picture.width, picture.height, fps_);
     notice_ = "recording " + path;
 }
 
@@ -274,8 +294,10 @@ void WorkbenchModel::apply(const WorkbenchCommand& c, bool scripted) {
             // The panel's path: the edit, then the rebuild.
             doc_.checkpoint();
             gestureOpen_ = false;
-            applyEdit({c.text, c.value});
-            checked();
+            if (!applyEdit({c.text, c.value})) {
+                checked();
+                break;  // refused: shown, nothing to build
+            }
             rebuild();
             checked();
             break;
@@ -284,8 +306,7 @@ void WorkbenchModel::apply(const WorkbenchCommand& c, bool scripted) {
             gestureOpen_ = false;  // an edit after it is a step of its own
             const bool undo = c.action == A::Undo;
             bool moved = false;
-            guarded([&] { moved = undo ? doc_.undo() : doc_.redo(); });
-            checked();
+            run([&] { moved = undo ? doc_.undo() : doc_.redo(); });
             if (!moved) {
                 if (scripted) throw InputError(std::string("script: nothing to ") + (undo ? "undo" : "redo"));
                 break;

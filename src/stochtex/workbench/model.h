@@ -16,6 +16,7 @@
 #include "stochtex/gpu/gpu_view.h"
 #include "stochtex/gpu/scene.h"
 #include "stochtex/gpu/shadertoy_input.h"
+#include "stochtex/gpu/texture_display.h"
 #include "stochtex/pattern/part_cache.h"
 #include "stochtex/workbench/document.h"
 #include "stochtex/workbench/editors.h"
@@ -65,8 +66,9 @@ public:
     // --- the document and what is built from it ---
     const WorkbenchDocument& document() const { return doc_; }
     bool isShadertoy() const { return doc_.kind() == WorkbenchDocument::Kind::Shadertoy; }
-    // The revision built last (a pattern's): its spec, previews and kept parts.
-    const PatternSpec& spec() const { return doc_.patternSpec(); }
+    // The revision built last (a pattern's): its spec, previews and kept
+    // parts (the document may be ahead of it while an edit waits).
+    const PatternSpec& spec() const { return spec_; }
     const PatternPreviews& previews() const { return previews_.previews(); }
     const PreviewCache& previewCache() const { return previews_; }
     PartCache& parts() { return parts_; }
@@ -94,9 +96,16 @@ public:
     void apply(const WorkbenchCommand& command, bool scripted = false);
     // A key pressed, held or released, as the commands the help window lists for it.
     void applyKeyEvent(const KeyEvent& e);
-    // The picture's size in pixels (the window sets it each frame): a
-    // recording's size, the zoom's centre.
-    void setPictureSize(int width, int height);
+    // The window's framebuffer in pixels and its pixels per window
+    // coordinate (HiDPI: 2), set by the window each frame; with the panel
+    // shown (kWorkbenchPanelWidth coordinates at the left) and the mode,
+    // they give the picture area and the texture's part of it (all of it,
+    // or the left half side by side), as now — a recording's size.
+    void setWindow(int width, int height, float pixelScale);
+    int panelWidth() const;
+    DisplayRect pictureRect() const;
+    DisplayRect textureRect() const;
+    float pixelScale() const { return pixelScale_; }
 
     // --- what is shown ---
     const WorkbenchShown& shown() const { return shown_; }
@@ -125,13 +134,12 @@ public:
     // The program is to be built again (the panel's restart, a reload).
     bool takeProgramRestart() { return std::exchange(programRestart_, false); }
     WorkbenchRecorder& recorder() { return recorder_; }
-    double recordingFps() const { return fps_; }
 
 private:
     void build();  // rebuild()'s work, which throws
     void zoomAt(double factor, double px, double py);
     void pan(double dx, double dy);
-    void applyEdit(const JsonEdit& e);
+    bool applyEdit(const JsonEdit& e);  // false: refused (shown)
     void reload();
     void save(const std::string& path);
     void saveDefault();
@@ -141,6 +149,7 @@ private:
     void guarded(F&& action);
 
     WorkbenchDocument doc_;
+    PatternSpec spec_;
     PreviewCache previews_;
     PartCache parts_;
     bool hasNormalMap_ = false;
@@ -149,7 +158,8 @@ private:
     std::chrono::steady_clock::time_point lastBuild_{}, lastWatch_{};
 
     WorkbenchShown shown_;
-    std::array<int, 2> pictureSize_{1, 1};
+    std::array<int, 2> window_{1, 1};
+    float pixelScale_ = 1;
     long long viewVersion_ = 0;
     bool analysisRestart_ = true;
     std::string error_, notice_;

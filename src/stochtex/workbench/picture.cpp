@@ -45,6 +45,7 @@ void WorkbenchPicture::followBuilds() {
 
 void WorkbenchPicture::prepare(const DisplayRect& texture) {
     followBuilds();
+    model_.takeProgramRestart();  // the host is built here, at the picture's size
     if (model_.isShadertoy())
         buildHost(texture.width, texture.height);
     else

@@ -49,7 +49,6 @@ public:
     const std::string& analysisSummary() const { return summary_; }
     const std::vector<float>& analysisProfile() const { return profile_; }
     const std::string& analysisProfileLabel() const { return profileLabel_; }
-    int correlationSamples() const { return analyses_.correlationSamples(); }
 
 private:
     void followBuilds();

@@ -25,7 +25,6 @@ public:
     // width × height pictures at `fps` (InputError as FrameSequenceWriter words it).
     void start(const std::string& path, int width, int height, double fps);
     bool recording() const { return writer_ != nullptr; }
-    const std::string& path() const { return path_; }
     // A program's picture: written when `programFrame` is one not written yet.
     // A pattern's picture, shown `seconds` after any fixed origin.
     // Either returns false and stops (the file written) when the picture's

@@ -56,8 +56,9 @@ public:
         context_->framebufferSize(windowWidth_, windowHeight_);
         int coordinatesWide = 0, coordinatesHigh = 0;
         glfwGetWindowSize(window_, &coordinatesWide, &coordinatesHigh);
-        pixelScale_ = coordinatesWide > 0 ? float(windowWidth_) / float(coordinatesWide) : 1.0f;
-        picture_->prepare(textureRect());
+        model_->setWindow(windowWidth_, windowHeight_,
+                          coordinatesWide > 0 ? float(windowWidth_) / float(coordinatesWide) : 1.0f);
+        picture_->prepare(model_->textureRect());
     }
 
     ~Workbench() {
@@ -76,15 +77,12 @@ public:
         while (!context_->shouldClose() && !m.shown().quit && (options_.frames == 0 || frame_ < options_.frames)) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
-            const float scale = ImGui::GetIO().DisplayFramebufferScale.x;
-            pixelScale_ = scale > 0 && std::isfinite(scale) ? scale : 1.0f;
             ImGui::NewFrame();
             context_->framebufferSize(windowWidth_, windowHeight_);
-            const DisplayRect pr = pictureRect();
-            m.setPictureSize(pr.width, pr.height);
+            m.setWindow(windowWidth_, windowHeight_, ImGui::GetIO().DisplayFramebufferScale.x);
             while (nextStep < options_.script.size() && options_.script[nextStep].frame <= frame_)
                 m.apply(options_.script[nextStep++], true);
-            handleInput();
+            guarded([&] { handleInput(); });
             const auto now = std::chrono::steady_clock::now();
             m.watchFiles(now);
             // While a widget or the canvas is dragged, at most one rebuild every 0.3 s.
@@ -99,7 +97,8 @@ public:
             glViewport(0, 0, windowWidth_, windowHeight_);
             glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
             glClear(GL_COLOR_BUFFER_BIT);
-            picture_->draw(textureRect(), pr, capture || last);
+            const DisplayRect pr = m.pictureRect();  // as the steps and keys left the panel and mode
+            picture_->draw(m.textureRect(), pr, capture || last);
             if (capture) {
                 const Image shot = picture_->codes(pr, windowWidth_, windowHeight_);
                 for (const std::string& f : m.takeScreenshots()) guarded([&] { writeScreenshot(f, shot); });
@@ -109,7 +108,7 @@ public:
                 guarded([&] { record(shot); });
                 if (runShot) writeScreenshot(options_.screenshot, shot), screenshotWritten = true;
             }
-            panels_.draw(m, *picture_, pixelScale_, windowHeight_, textureRect());
+            panels_.draw(m, *picture_, m.pixelScale(), windowHeight_, m.textureRect());
             ImGui::Render();
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, windowWidth_, windowHeight_);
@@ -145,28 +144,15 @@ private:
         }
     }
 
-    // The panel's width in framebuffer pixels: ImGui lays it out in window
-    // coordinates, which a HiDPI screen scales by pixelScale_ (GLFW's
-    // framebuffer / window size) into pixels, where the picture is drawn.
-    int panelWidth() const { return model_->shown().panel ? int(std::lround(kWorkbenchPanelWidth * pixelScale_)) : 0; }
-    // The texture's part of the picture area: all of it, or the left half side by side.
-    DisplayRect textureRect() const {
-        const int w = windowWidth_ - panelWidth(), h = windowHeight_;
-        const int tw = model_->shown().mode == WorkbenchMode::SideBySide ? w / 2 : w;
-        return {panelWidth(), 0, std::max(1, tw), std::max(1, h)};
-    }
-    DisplayRect pictureRect() const {
-        return {panelWidth(), 0, std::max(1, windowWidth_ - panelWidth()), std::max(1, windowHeight_)};
-    }
-
     // The mouse and the keys since the last frame, as commands.
     void handleInput() {
         using A = WorkbenchCommand::Action;
         WorkbenchModel& m = *model_;
         ImGuiIO& io = ImGui::GetIO();
-        const DisplayRect pr = pictureRect(), tr = textureRect();
+        const DisplayRect pr = model_->pictureRect(), tr = model_->textureRect();
         // Picture pixels, rows down (ImGui's mouse is in window coordinates).
-        const double px = io.MousePos.x * pixelScale_ - pr.x, py = io.MousePos.y * pixelScale_;
+        const float pixelScale = m.pixelScale();
+        const double px = io.MousePos.x * pixelScale - pr.x, py = io.MousePos.y * pixelScale;
         // A point of the texture: side by side, the analysis half maps onto it.
         const double tx = px >= tr.width ? px - tr.width : px;
         const auto at = [](A action, double x, double y, double amount = 1) {
@@ -180,7 +166,7 @@ private:
                 if (io.KeyCtrl)
                     m.apply(at(A::Split, 0, 0, std::clamp(px / pr.width, 0.0, 1.0)));
                 else if (!m.isShadertoy())
-                    m.apply(at(A::Pan, io.MouseDelta.x * pixelScale_, io.MouseDelta.y * pixelScale_));
+                    m.apply(at(A::Pan, io.MouseDelta.x * pixelScale, io.MouseDelta.y * pixelScale));
             }
             if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) m.apply(at(A::Pick, tx, py));
             if (m.isShadertoy()) {
@@ -245,7 +231,6 @@ private:
     WorkbenchPanels panels_;
     std::vector<KeyEvent> keyEvents_;         // since the last frame: the window's callback
     int windowWidth_ = 1, windowHeight_ = 1;  // the framebuffer's pixels
-    float pixelScale_ = 1;                    // framebuffer pixels per window coordinate (HiDPI: 2)
     int frame_ = 0;
     double fps_ = 0;
     std::chrono::steady_clock::time_point lastFrameTime_ = std::chrono::steady_clock::now();
