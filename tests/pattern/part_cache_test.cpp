@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 
+#include "stochtex/core/budget.h"
 #include "stochtex/core/error.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
@@ -148,6 +149,33 @@ TEST(PartCache, AGraphEditRebuildsTheNodeItChangedAndWhatIsDownstreamOnly) {
     const PatternSpec cutoff = graph([](nlohmann::json& j) { j["nodes"]["height"]["components"][0]["cutoff"] = 9; });
     expectSameImage(render(cutoff, &parts), render(cutoff, nullptr));
     EXPECT_EQ(parts.builds().fields, first + 4);
+}
+
+TEST(PartCache, KeptFieldsStillCountAgainstTheExamplesBudget) {
+    // figure14 with a 1024² height: three fields of 2^20 texels, within the
+    // default budget (2^26) but not a 64th of it. Built with the cache at
+    // the default, then again (every field kept) at a 64th: refused as a
+    // build without the cache is, naming the budget.
+    nlohmann::json j = JsonReader::parse(presetText("figure14"), "figure14");
+    j["nodes"]["height"]["size"] = 1024;
+    const PatternSpec spec = parsePatternSpec(JsonReader(j, "figure14"), ".");
+    struct RestoreBudget {
+        ~RestoreBudget() { setBudgetFactor(1); }
+    } restore;
+    PartCache parts;
+    GraphPattern::build(spec, {}, &parts);
+    EXPECT_EQ(parts.builds().fields, 3);
+    setBudgetFactor(1.0 / 64);
+    for (PartCache* cache : {&parts, static_cast<PartCache*>(nullptr)}) {
+        try {
+            GraphPattern::build(spec, {}, cache);
+            ADD_FAILURE() << "a graph over a 64th of the budget was built " << (cache ? "from kept fields" : "");
+        } catch (const InputError& e) {
+            EXPECT_TRUE(e.isOverBudget()) << e.what();
+            EXPECT_NE(std::string(e.what()).find("texels in all"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_EQ(parts.builds().fields, 3);  // the kept ones were found, and refused
 }
 
 TEST(PartCache, ABuildThatFailsKeepsNothingOfThePartThatFailed) {
