@@ -190,6 +190,8 @@ void addFilterFlag(CLI::App& cmd, std::function<void(const NamedFilter&)> set, c
         ->check(nameValidator(names, "filter"))
         ->type_name("ENUM")
         ->default_str(shown);
+    // A filter names a statistics source: the library's errors about it are the flag's.
+    bindParameter(cmd, cmd.get_option("--filter"), "source");
 }
 
 void addFilterFlag(CLI::App& cmd, FilterOptions& options, const std::string& help,
@@ -274,64 +276,6 @@ void addPipelineFlag(CLI::App& cmd, GpuView::Pipeline& pipeline) {
                 "--gpu: fragment (full-screen triangle) | compute (GLSL 4.30 kernel; reaches every shader unit of "
                 "compute GPUs, ~27x faster on an H100)");
 }
-
-// Library parameter → the flag that sets it. One table for every command:
-// where two commands set a parameter from differently named flags, the
-// command checks that flag itself (as correlation does for --layers-list).
-namespace {
-constexpr std::pair<std::string_view, std::string_view> kParameterFlags[] = {
-    {"filter", "--filter"},
-    {"source", "--filter"},
-    {"response", "--response"},
-    {"referenceTolerance", "--reference-tolerance"},
-    {"size", "--size"},
-    {"scale", "--scale"},
-    {"offset", "--offset"},
-    {"object", "--object"},
-    {"tiling", "--tiling"},
-    {"derivatives", "--derivatives"},
-    {"count", "--count"},
-    {"footprints", "--footprints"},
-    {"time", "--time"},
-    {"scaling", "--scaling"},
-    {"offsets", "--offsets"},
-    {"interpolation", "--interpolation"},
-    {"instances", "--instances"},
-    {"point", "--point"},
-    {"layersList", "--layers-list"},
-    {"frames", "--frames"},
-    {"filters", "--filters"},
-    {"coherenceLayers", "--coherence-layers"},
-    {"images", "images"},
-    {"roughness", "--roughness"},
-    {"frequency", "--frequency"},
-    {"bandwidth", "--bandwidth"},
-    {"orientation", "--orientation"},
-    {"density", "--density"},
-    {"window", "--window"},
-    {"method", "--method"},
-    {"step", "--step"},
-    {"tiles", "--tiles"},
-    {"correlations", "--correlations"},
-    {"scalings", "--scalings"},
-    {"pointX", "--point"},
-    {"pointY", "--point"},
-    {"width", "--size"},
-    {"height", "--size"},
-    {"fps", "--fps"},
-    {"startTime", "--time"},
-    {"date", "--date"},
-    {"pass", "--inspect"},
-    {"pixel", "--inspect"},
-    {"key", "--keys"},
-    {"input", "--input"},
-    {"event", "--event"},
-    {"output", "--convert"},
-    {"sound", "--sound"},
-    {"soundSeconds", "--sound-seconds"},
-    {"hwPerformance", "--hw-performance"},
-};
-}  // namespace
 
 namespace {
 
@@ -428,6 +372,26 @@ CLI::Option* bindParameter(const CLI::App& cmd, CLI::Option* option, const std::
     return option;
 }
 
+namespace {
+
+// The option of cmd itself that sets `parameter`: the one bound to it, else
+// the one named after it (kebabCase: --radial-bins sets radialBins, as
+// OptionMember names its flags; a positional by the parameter's own name);
+// empty when cmd has neither.
+std::string flagOf(const CLI::App& cmd, const std::string& parameter) {
+    if (const auto bound = parameterBindings().find(&cmd); bound != parameterBindings().end())
+        if (const auto it = bound->second.find(parameter); it != bound->second.end()) return it->second;
+    const std::string named = kebabCase(parameter);
+    for (const CLI::Option* o : cmd.get_options()) {
+        const std::vector<std::string>& longNames = o->get_lnames();
+        if (std::find(longNames.begin(), longNames.end(), named) != longNames.end()) return "--" + named;
+        if (longNames.empty() && o->get_positional() && o->get_name(true) == parameter) return parameter;
+    }
+    return {};
+}
+
+}  // namespace
+
 const CLI::App* commandThatRan(const CLI::App& app) {
     const CLI::App* cmd = &app;
     while (!cmd->get_subcommands().empty()) cmd = cmd->get_subcommands().front();
@@ -435,14 +399,10 @@ const CLI::App* commandThatRan(const CLI::App& app) {
 }
 
 std::string describeInputError(const InputError& e, const CLI::App* ran) {
+    if (e.parameter().empty()) return e.what();
     for (const CLI::App* cmd = ran; cmd; cmd = cmd->get_parent()) {
-        const auto bound = parameterBindings().find(cmd);
-        if (bound == parameterBindings().end()) continue;
-        if (const auto it = bound->second.find(e.parameter()); it != bound->second.end())
-            return it->second + ": " + e.what();
+        if (const std::string flag = flagOf(*cmd, e.parameter()); !flag.empty()) return flag + ": " + e.what();
     }
-    for (const auto& [parameter, flag] : kParameterFlags)
-        if (e.parameter() == parameter) return std::string(flag) + ": " + e.what();
     return e.what();
 }
 

@@ -130,13 +130,22 @@ CLI::Validator nameValidator(const EnumNames<E>& names, const std::string& param
                           "{" + canonicalNames(names, ", ") + "}");
 }
 
+// Says that `option` sets the library parameter `parameter` in command
+// `cmd`, for the library's errors about it (describeInputError). A flag
+// named after its parameter in kebab case (--radial-bins: radialBins) needs
+// no binding; the others are bound where they are declared: the correlation
+// plots' extent, "plotSize", is --size in `correlation` (--plot-size in
+// `analyze`), --filter sets the statistics source. Returns option.
+CLI::Option* bindParameter(const CLI::App& cmd, CLI::Option* option, const std::string& parameter);
+
 // A flag whose value is one name of the table; the default shown is the value's.
 template <class E>
 CLI::Option* addEnumFlag(CLI::App& cmd, const std::string& flag, E& value, const EnumNames<E>& names,
                          const std::string& parameter, const std::string& help) {
-    return cmd.add_option(flag, value, help)
-        ->transform(enumTransformer(names, parameter))
-        ->default_str(enumName(names, value));
+    CLI::Option* option = cmd.add_option(flag, value, help)
+                              ->transform(enumTransformer(names, parameter))
+                              ->default_str(enumName(names, value));
+    return bindParameter(cmd, option, parameter);
 }
 
 // --threads,-j N: default 0 = all cores.
@@ -204,12 +213,6 @@ void tidyDefaults(CLI::App& app);
 // the arguments show no such mistake (CLI11's own message is then right).
 std::string explainParseError(const CLI::App& app, const std::vector<std::string>& args);
 
-// Says that `option` sets the library parameter `parameter` in command `cmd`:
-// where commands name one parameter differently (the correlation plots'
-// extent, "plotSize", is --size in `correlation` and --plot-size in
-// `analyze`), the command's own binding names the flag. Returns option.
-CLI::Option* bindParameter(const CLI::App& cmd, CLI::Option* option, const std::string& parameter);
-
 // The option a library parameter's entry describes (ParamInfo: the flag, the
 // help and the range it shows), bound to the parameter so that the
 // library's errors about it name the flag; its default shown is `value`'s.
@@ -234,8 +237,9 @@ void addParameterOptions(CLI::App& cmd, std::span<const OptionMember<Options>> m
 
 // An InputError as the user reads it: a library parameter error is prefixed
 // with the flag that sets the parameter ("--aniso: aniso must be in [1, 16],
-// got 0") — the binding of `ran` (the command that ran) or of a command above
-// it, else the shared table; any other error as it is.
+// got 0") in `ran` (the command that ran) or the nearest command above it
+// — the option bound to the parameter (bindParameter) or named after it;
+// one no command sets, and any other error, as it is.
 std::string describeInputError(const InputError& e, const CLI::App* ran = nullptr);
 // What follows a budget's refusal (InputError::isOverBudget, a watchdog's
 // overrun): how --budget raises it, e.g. " (--budget 4 allows 4× the budgets)".

@@ -33,12 +33,14 @@ void registerMarble(CLI::App& app) {
         ->default_str("continuous,blended-corrected");
     const auto& members = marbleStudyMembers();
     for (const char* name : {"size", "correlationSize"}) addMemberOption(*cmd, optionMember(members, name), s);
-    cmd->add_option("--point", args->point,
-                    "Correlation reference X,Y in pixels from the origin (default: x = "
-                    "-period/4 of l, where the scaling shears the noise most, y halfway "
-                    "to the edge)")
-        ->delimiter(',')
-        ->expected(2);
+    CLI::Option* point = cmd->add_option("--point", args->point,
+                                         "Correlation reference X,Y in pixels from the origin (default: x = "
+                                         "-period/4 of l, where the scaling shears the noise most, y halfway "
+                                         "to the edge)")
+                             ->delimiter(',')
+                             ->expected(2);
+    bindParameter(*cmd, point, "pointX");
+    bindParameter(*cmd, point, "pointY");
     for (const char* name : {"instances", "spectrumInstances", "slideRate", "frames", "timeStep", "flowStep"})
         addMemberOption(*cmd, optionMember(members, name), s);
     addEnumFlag(*cmd, "--method", s.flowMethod, kFlowMethodNames, "method",

@@ -32,9 +32,11 @@ void registerShadertoy(CLI::App& app) {
                     "tab names; shadertoy.json), a manifest .json, or a shader exported "
                     "from ShaderToy (.json; docs/SHADERTOY.md)")
         ->required();
-    cmd->add_option("--convert", args->convert,
-                    "Write the program as a folder (shadertoy.json and a .glsl file per "
-                    "pass) instead of running it: a ShaderToy export made editable");
+    bindParameter(*cmd,
+                  cmd->add_option("--convert", args->convert,
+                                  "Write the program as a folder (shadertoy.json and a .glsl file per "
+                                  "pass) instead of running it: a ShaderToy export made editable"),
+                  "output");
     cmd->add_option("--media", args->media,
                     "Where a ShaderToy export's textures are found by file name (default: "
                     "the export's folder; ShaderToy's noise textures are built in)");
@@ -53,9 +55,11 @@ void registerShadertoy(CLI::App& app) {
                     "Frames rendered from frame 0 (iFrame 0 at --time); with --analyse, "
                     "the frames analysed from --first-frame");
     cmd->add_flag("--sheet", args->sheet, "An image output shows every frame, as a contact sheet (at most 64)");
-    cmd->add_option("--inspect", args->inspect,
-                    "PASS:X,Y: print the RGBA of a pass (image, buffer_a, ...) at pixel "
-                    "(X, Y), y up, after the last frame");
+    CLI::Option* inspect = cmd->add_option("--inspect", args->inspect,
+                                           "PASS:X,Y: print the RGBA of a pass (image, buffer_a, ...) at pixel "
+                                           "(X, Y), y up, after the last frame");
+    bindParameter(*cmd, inspect, "pass");
+    bindParameter(*cmd, inspect, "pixel");
     addFrameAnalysisFlags(*cmd, args->analysis);
     cmd->callback([args, cmd] {
         const Args& a = *args;

@@ -19,11 +19,14 @@ std::string shadertoyDateText(const std::array<int, 6>& d) {
 }
 
 void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& f) {
-    cmd.add_option("--size", f.size, "Frame size, iResolution: N or W,H")
-        ->delimiter(',')
-        ->expected(1, 2)
-        ->default_str(std::to_string(f.size[0]) + "," + std::to_string(f.size[1]));
-    cmd.add_option("--time", f.time, "iTime of frame 0, seconds")->capture_default_str();
+    CLI::Option* size = cmd.add_option("--size", f.size, "Frame size, iResolution: N or W,H")
+                            ->delimiter(',')
+                            ->expected(1, 2)
+                            ->default_str(std::to_string(f.size[0]) + "," + std::to_string(f.size[1]));
+    bindParameter(cmd, size, "width");
+    bindParameter(cmd, size, "height");
+    bindParameter(cmd, cmd.add_option("--time", f.time, "iTime of frame 0, seconds")->capture_default_str(),
+                  "startTime");
     // The frame analyses' time step is 1/fps: their errors about it name --fps.
     bindParameter(cmd,
                   cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate")
@@ -187,9 +190,11 @@ std::string FrameOutputs::finish() {
 }
 
 void addFrameAnalysisFlags(CLI::App& cmd, FrameAnalysisFlags& f) {
-    cmd.add_option("--analyse", f.list,
-                   "Studies of the frames, comma-separated: spectrum (the first), flow, coherence, "
-                   "flicker, statistics (over instances); -o is then the report's folder");
+    bindParameter(cmd,
+                  cmd.add_option("--analyse", f.list,
+                                 "Studies of the frames, comma-separated: spectrum (the first), flow, coherence, "
+                                 "flicker, statistics (over instances); -o is then the report's folder"),
+                  "analyses");
     f.instancesOption = cmd.add_option("--instances", f.instances,
                                        "statistics: instances 0..N-1 through the program's instance uniform")
                             ->capture_default_str();

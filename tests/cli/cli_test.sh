@@ -287,6 +287,8 @@ case_marble() {
   expect_bad "marble bad scaling" "$out/mb3" "--scalings" -- "$bin" marble -o "$out/mb3" --scalings stretchy
   expect_bad "marble correlation window" "$out/mb4" "--correlation-size: correlationSize must not exceed size (64), got 96" -- "$bin" marble -o "$out/mb4" --size 64
   expect_bad "marble band period" "$out/mb5" "--band-period: bandPeriod must be in [1, 1e+06], got 0" -- "$bin" marble -o "$out/mb5" --band-period 0
+  # --point sets two parameters; the binding names the flag for both.
+  expect_bad "marble point far away" "$out/mb7" "--point: pointY must be within 2¹⁹ pixels of the origin, got 1e+07" -- "$bin" marble -o "$out/mb7" --point 0,1e7
   expect_bad "marble source time" "$out/mb6" "marble texture: at time 1 the noise scale exponent l = m + n cos(q x) + r t spans [119, 121]" -- "$bin" flow -o "$out/mb6" --size 48 --frames 2 --dt 1 --step 8 marble --level-rate 100 --level 20
 }
 
@@ -429,6 +431,12 @@ GLSL
   expect_bad "shadertoy first frame alone" "$out/stff.png" "--first-frame: has no effect without --analyse" -- "$bin" shadertoy "$work/st" --first-frame 3 -o "$out/stff.png"
   expect_bad "shadertoy no frames" "$out/stz" "--frames: must be in [1, 1000000], got 0" -- "$bin" shadertoy "$work/st" --frames 0 -o "$out/stz"
   expect_bad "shadertoy inspect outside" "$out/sti.png" "--inspect: pixel (99, 1) is outside the 32x16 frame" -- "$bin" shadertoy "$work/st" --size 32,16 --inspect image:99,1 -o "$out/sti.png"
+  # Flags that set a parameter of another name (bindParameter): --size sets
+  # width and height, --time startTime.
+  expect_bad "shadertoy height 0" "$out/sth.png" "--size: height must be in [1, 8192], got 0" -- "$bin" shadertoy "$work/st" --size 32,0 -o "$out/sth.png"
+  expect_bad "shadertoy negative time" "$out/stt.png" "--time: startTime must be in [0, 1e6] s, got -1" -- "$bin" shadertoy "$work/st" --time -1 -o "$out/stt.png"
+  expect_bad "shadertoy key code" "$out/stk.png" "--keys: keys must be key codes 0–255 (JavaScript keyCode), got 300" -- "$bin" shadertoy "$work/st" --keys 65,300 -o "$out/stk.png"
+  expect_bad "shadertoy analysis twice" "$out/sta2" "--analyse: analyses names flow twice" -- "$bin" shadertoy "$work/st" --analyse flow,flow -o "$out/sta2"
   expect_bad "shadertoy date" "$out/std.png" "--date: expected YYYY-MM-DD" -- "$bin" shadertoy "$work/st" --date yesterday -o "$out/std.png"
 }
 

@@ -43,7 +43,7 @@ void validateShadertoySettings(const ShadertoySettings& s) {
                                             "month, hour 0–23, minute and second 0–59)");
     for (const int key : s.keys)
         if (key < 0 || key > 255)
-            throw InputError::parameter("key", "key codes are 0–255 (JavaScript keyCode), got " + std::to_string(key));
+            throw InputError::parameter("keys", "must be key codes 0–255 (JavaScript keyCode), got " + std::to_string(key));
     for (size_t k = 0; k < s.inputs.size(); ++k) {
         validateShadertoyInput(s.inputs[k]);
         if (k > 0 && s.inputs[k].frame < s.inputs[k - 1].frame)

@@ -24,7 +24,7 @@ bool isMouse(ShadertoyInput::Kind k) {
 void validateShadertoyInput(const ShadertoyInput& e) {
     const bool key = e.kind == ShadertoyInput::Kind::KeyDown || e.kind == ShadertoyInput::Kind::KeyUp;
     if (key && (e.key < 0 || e.key >= ShadertoyInputState::kKeys))
-        throw InputError::parameter("key", "key codes are 0–255 (JavaScript keyCode), got " + std::to_string(e.key));
+        throw InputError::parameter("input", "key codes are 0–255 (JavaScript keyCode), got " + std::to_string(e.key));
     if (e.frame < 0 || e.frame > kMaxFrame)
         throw InputError::parameter("input",
                                     "an event's frame must be in [0, 1000000], got " + std::to_string(e.frame));
