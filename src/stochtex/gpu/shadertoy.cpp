@@ -18,8 +18,8 @@
 #include "stochtex/gpu/gl_objects.h"
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/render_target.h"
-#include "stochtex/gpu/uploads.h"
 #include "stochtex/gpu/shader.h"
+#include "stochtex/gpu/uploads.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/image/video_reader.h"
 #include "stochtex/kernel/cube_map.h"
@@ -27,7 +27,8 @@
 namespace stochtex {
 
 void validateShadertoySettings(const ShadertoySettings& s) {
-    if (s.width < 1 || s.width > 8192) throw InputError::parameter("width", "must be in [1, 8192], got " + std::to_string(s.width));
+    if (s.width < 1 || s.width > 8192)
+        throw InputError::parameter("width", "must be in [1, 8192], got " + std::to_string(s.width));
     if (s.height < 1 || s.height > 8192)
         throw InputError::parameter("height", "must be in [1, 8192], got " + std::to_string(s.height));
     if (!(std::isfinite(s.fps) && s.fps > 0 && s.fps <= 1000))
@@ -39,11 +40,13 @@ void validateShadertoySettings(const ShadertoySettings& s) {
     const int days[12] = {31, leap ? 29 : 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
     if (d[0] < 1 || d[0] > 9999 || d[1] < 1 || d[1] > 12 || d[2] < 1 || d[2] > days[d[1] - 1] || d[3] < 0 ||
         d[3] > 23 || d[4] < 0 || d[4] > 59 || d[5] < 0 || d[5] > 59)
-        throw InputError::parameter("date", "must be a calendar date and time (year 1–9999, month 1–12, a day of that "
-                                            "month, hour 0–23, minute and second 0–59)");
+        throw InputError::parameter("date",
+                                    "must be a calendar date and time (year 1–9999, month 1–12, a day of that "
+                                    "month, hour 0–23, minute and second 0–59)");
     for (const int key : s.keys)
         if (key < 0 || key > 255)
-            throw InputError::parameter("keys", "must be key codes 0–255 (JavaScript keyCode), got " + std::to_string(key));
+            throw InputError::parameter("keys",
+                                        "must be key codes 0–255 (JavaScript keyCode), got " + std::to_string(key));
     for (size_t k = 0; k < s.inputs.size(); ++k) {
         validateShadertoyInput(s.inputs[k]);
         if (k > 0 && s.inputs[k].frame < s.inputs[k - 1].frame)
@@ -52,8 +55,8 @@ void validateShadertoySettings(const ShadertoySettings& s) {
                                                      std::to_string(s.inputs[k - 1].frame));
     }
     if (s.hwPerformance != 0 && s.hwPerformance != 1)
-        throw InputError::parameter("hwPerformance", "must be 0 (a phone) or 1 (a desktop), got " +
-                                                        std::to_string(s.hwPerformance));
+        throw InputError::parameter("hwPerformance",
+                                    "must be 0 (a phone) or 1 (a desktop), got " + std::to_string(s.hwPerformance));
 }
 
 void checkShadertoyMemory(const ShadertoySpec& spec, const ShadertoySettings& s) {
@@ -117,7 +120,8 @@ std::string legacyAliases(const std::vector<std::string>& texts) {
 std::string prelude(const ShadertoySpec& spec, const ShadertoySettings& settings, const std::string& aliases) {
     std::string s =
         "// stochtex ShaderToy host: ShaderToy's uniforms.\n"
-        "#define HW_PERFORMANCE " + std::to_string(settings.hwPerformance) + "\n" + aliases +
+        "#define HW_PERFORMANCE " +
+        std::to_string(settings.hwPerformance) + "\n" + aliases +
         "uniform vec3 iResolution;\nuniform float iTime;\nuniform float iTimeDelta;\nuniform int iFrame;\n"
         "uniform float iFrameRate;\nuniform vec4 iMouse;\nuniform vec4 iDate;\nuniform float iSampleRate;\n"
         "uniform vec3 iChannelResolution[4];\nuniform float iChannelTime[4];\n";
@@ -146,9 +150,10 @@ std::string channelDeclarations(const ShadertoyPass& pass) {
 // mainSound takes the sample number too (ShaderToy since 2020).
 constexpr int kSoundBlock = 512;
 std::string soundMain(bool withIndex) {
-    return std::string("uniform int stochtexSoundStart;\nvoid main() {\n"
-                       "    int s = stochtexSoundStart + int(gl_FragCoord.y) * 512 + int(gl_FragCoord.x);\n"
-                       "    vec2 v = ") +
+    return std::string(
+               "uniform int stochtexSoundStart;\nvoid main() {\n"
+               "    int s = stochtexSoundStart + int(gl_FragCoord.y) * 512 + int(gl_FragCoord.x);\n"
+               "    vec2 v = ") +
            (withIndex ? "mainSound(s, float(s) / iSampleRate)" : "mainSound(float(s) / iSampleRate)") +
            ";\n    stochtexFragColour = vec4(v, 0.0, 1.0);\n}\n";
 }
@@ -164,7 +169,8 @@ const char* kCubeMain =
     "    mainCubemap(colour, gl_FragCoord.xy, vec3(0.0), dir);\n    stochtexFragColour = colour;\n}\n";
 
 const char* kMain =
-    "void main() {\n    vec4 colour = vec4(0.0);\n    mainImage(colour, gl_FragCoord.xy);\n    stochtexFragColour = colour;\n}\n";
+    "void main() {\n    vec4 colour = vec4(0.0);\n    mainImage(colour, gl_FragCoord.xy);\n    stochtexFragColour = "
+    "colour;\n}\n";
 
 GLint minFilter(ChannelFilter f) {
     return f == ChannelFilter::Nearest ? GL_NEAREST : f == ChannelFilter::Linear ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
@@ -225,7 +231,8 @@ Image noiseImage(int size, bool rgba, uint32_t seed) {
                 continue;
             }
             // size is a power of two: the offset texel wraps by a mask.
-            const std::array<float, 2> ga = texel((x - kNoiseSliceOffset[0]) & (size - 1), (y - kNoiseSliceOffset[1]) & (size - 1));
+            const std::array<float, 2> ga =
+                texel((x - kNoiseSliceOffset[0]) & (size - 1), (y - kNoiseSliceOffset[1]) & (size - 1));
             img.at(x, y, 0) = rb[0];
             img.at(x, y, 1) = ga[0];
             img.at(x, y, 2) = rb[1];
@@ -256,8 +263,8 @@ Image equirectangularFace(const Image& pano, int face, int size) {
     constexpr double kPi = 3.14159265358979323846;
     for (int j = 0; j < size; ++j)
         for (int i = 0; i < size; ++i) {
-            const kernel::vec3 d = kernel::cubeFaceDirection(face, (float(i) + 0.5f) / float(size),
-                                                             (float(j) + 0.5f) / float(size));
+            const kernel::vec3 d =
+                kernel::cubeFaceDirection(face, (float(i) + 0.5f) / float(size), (float(j) + 0.5f) / float(size));
             const double len = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
             const double u = 0.5 + std::atan2(double(d.x), -double(d.z)) / (2 * kPi);
             const double v = std::acos(std::clamp(double(d.y) / len, -1.0, 1.0)) / kPi;
@@ -296,7 +303,8 @@ gl::Texture cubeTarget(int size, bool mipmaps) {
     gl::Texture t = gl::newTexture();
     glBindTexture(GL_TEXTURE_CUBE_MAP, t.id());
     for (int f = 0; f < 6; ++f)
-        glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA32F, size, size, 0, GL_RGBA, GL_FLOAT, nullptr);
+        glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA32F, size, size, 0, GL_RGBA, GL_FLOAT,
+                     nullptr);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, mipmaps ? 1000 : 0);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     if (mipmaps) glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
@@ -331,8 +339,11 @@ void checkChannelBudget(const ShadertoySpec& spec) {
                     break;
                 }
                 case ShadertoyChannel::Kind::Noise: texels = (long long)ch.noiseSize * ch.noiseSize; break;
-                case ShadertoyChannel::Kind::Volume: texels = (long long)ch.noiseSize * ch.noiseSize * ch.noiseSize; break;
-                default: break;  // buffers are the passes' own; the keyboard is 256×3; a video is read a frame at a time
+                case ShadertoyChannel::Kind::Volume:
+                    texels = (long long)ch.noiseSize * ch.noiseSize * ch.noiseSize;
+                    break;
+                default:
+                    break;  // buffers are the passes' own; the keyboard is 256×3; a video is read a frame at a time
             }
             total += texels * kTexelBytes * (ch.filter == ChannelFilter::Mipmap ? 4 : 3) / 3;
             if (total > maxBytes)
@@ -352,7 +363,8 @@ std::array<Image, 6> cubemapFaces(const ShadertoyChannel& ch) {
     const auto readChannelImage = [](const std::filesystem::path& path) {
         const Image img = readImage(path.string());
         if (img.channels() < 1 || img.channels() > 4)
-            throw InputError(path.string() + ": a channel image has 1 to 4 channels, got " + std::to_string(img.channels()));
+            throw InputError(path.string() + ": a channel image has 1 to 4 channels, got " +
+                             std::to_string(img.channels()));
         return asBrowserUploads(img);
     };
     if (!ch.image.empty()) {
@@ -365,10 +377,11 @@ std::array<Image, 6> cubemapFaces(const ShadertoyChannel& ch) {
         faces[f] = readChannelImage(ch.faces[f]);
         if (faces[f].width() != faces[f].height() || faces[f].width() > kMaxFace ||
             faces[f].width() != faces[0].width() || faces[f].channels() != faces[0].channels())
-            throw InputError(ch.faces[f].string() + ": a cube face is square, at most 4096 pixels, and of the first "
-                             "face's size and channels (" + std::to_string(faces[0].width()) + "x" +
-                             std::to_string(faces[0].width()) + "), got " + std::to_string(faces[f].width()) + "x" +
-                             std::to_string(faces[f].height()));
+            throw InputError(ch.faces[f].string() +
+                             ": a cube face is square, at most 4096 pixels, and of the first "
+                             "face's size and channels (" +
+                             std::to_string(faces[0].width()) + "x" + std::to_string(faces[0].width()) + "), got " +
+                             std::to_string(faces[f].width()) + "x" + std::to_string(faces[f].height()));
     }
     return faces;
 }
@@ -420,8 +433,9 @@ std::string firstCompilerError(const std::string& what,
     std::string out = location + ": " + first;
     // A channel sampled with a 3D coordinate is a cubemap or volume channel on ShaderToy.
     if (std::regex_search(first, std::regex(R"(texture\w*\(sampler2D, [iu]?vec3)")))
-        out += " (a channel read with a 3D coordinate is a volume or cubemap channel on ShaderToy: give a volume as "
-               "{\"type\": \"volume\"}, a cubemap as {\"type\": \"cubemap\"} in the manifest; docs/SHADERTOY.md)";
+        out +=
+            " (a channel read with a 3D coordinate is a volume or cubemap channel on ShaderToy: give a volume as "
+            "{\"type\": \"volume\"}, a cubemap as {\"type\": \"cubemap\"} in the manifest; docs/SHADERTOY.md)";
     if (more > 0) out += " (and " + std::to_string(more) + " more error" + (more > 1 ? "s" : "") + ")";
     // The line itself, from the user's file, so the message is read without opening it.
     for (const auto& [path, text] : userFiles) {
@@ -447,19 +461,23 @@ std::string firstCompilerError(const std::string& what,
 std::string unsupportedFeature(const std::string& path, const std::string& text, const std::string& common) {
     static const std::regex mainImage(R"(\bvoid\s+mainImage\s*\()");
     static const std::pair<const char*, const char*> kEntryPoints[] = {
-        {R"(\bmainSound\s*\()", "a sound pass's code (mainSound), which belongs in sound.glsl or the manifest's "
-                                  "\"sound\" pass, not"},
-        {R"(\bmainCubemap\s*\()", "a cubemap pass's code (mainCubemap), which belongs in cube_a.glsl or the "
-                                    "manifest's \"cube_a\" pass, not"},
+        {R"(\bmainSound\s*\()",
+         "a sound pass's code (mainSound), which belongs in sound.glsl or the manifest's "
+         "\"sound\" pass, not"},
+        {R"(\bmainCubemap\s*\()",
+         "a cubemap pass's code (mainCubemap), which belongs in cube_a.glsl or the "
+         "manifest's \"cube_a\" pass, not"},
         {R"(\bmainVR\s*\()", "a VR entry point (mainVR) alone"}};
     if (!std::regex_search(text, mainImage) && !std::regex_search(common, mainImage)) {
         for (int k = 0; k < 2; ++k)  // a sound or cube pass's code in a picture pass
             if (std::regex_search(text, std::regex(kEntryPoints[k].first)))
-                return path + ": " + kEntryPoints[k].second + " a picture pass: a picture pass defines mainImage(out vec4, in vec2)";
+                return path + ": " + kEntryPoints[k].second +
+                       " a picture pass: a picture pass defines mainImage(out vec4, in vec2)";
         for (const auto& [pattern, what] : kEntryPoints)
             if (std::regex_search(text, std::regex(pattern)))
-                return path + ": " + what + " is a ShaderToy feature this host does not run (docs/SHADERTOY.md lists "
-                                          "what it does); a pass defines mainImage(out vec4, in vec2)";
+                return path + ": " + what +
+                       " is a ShaderToy feature this host does not run (docs/SHADERTOY.md lists "
+                       "what it does); a pass defines mainImage(out vec4, in vec2)";
         return path + ": defines no mainImage(out vec4 fragColor, in vec2 fragCoord), ShaderToy's entry point";
     }
     return {};
@@ -513,7 +531,7 @@ struct ShadertoyHost::Impl {
         gl::Framebuffer cubeFramebuffer;
     };
     std::vector<Pass> passes;
-    gl::Program sound;  // the Sound pass's program (0: none)
+    gl::Program sound;                 // the Sound pass's program (0: none)
     std::unique_ptr<GpuView> pattern;  // the stochtex_sample include's textures and parameters
     int channelUnit = 0;               // iChannel0's texture unit
     gl::Texture keyboard;
@@ -529,8 +547,10 @@ struct ShadertoyHost::Impl {
         const double budget = budgetedSeconds(kFrameSeconds);
         const auto deadline = start + std::chrono::duration<double>(budget);
         for (size_t p = 0; p < passDone.size(); ++p) {
-            const auto left = std::chrono::duration_cast<std::chrono::nanoseconds>(deadline - std::chrono::steady_clock::now());
-            const GLenum r = glClientWaitSync(passDone[p], GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(std::max<long long>(left.count(), 0)));
+            const auto left =
+                std::chrono::duration_cast<std::chrono::nanoseconds>(deadline - std::chrono::steady_clock::now());
+            const GLenum r = glClientWaitSync(passDone[p], GL_SYNC_FLUSH_COMMANDS_BIT,
+                                              GLuint64(std::max<long long>(left.count(), 0)));
             if (r == GL_TIMEOUT_EXPIRED)
                 overrun(spec.name + ": pass " + spec.passes[p].name + " of frame " + std::to_string(frame) +
                         " ran past the frame's time budget of " + formatValue(budget) + " s");
@@ -539,8 +559,7 @@ struct ShadertoyHost::Impl {
     }
 
     RenderTarget newTarget(bool mipmaps) const {
-        while (glGetError() != GL_NO_ERROR) {
-        }
+        while (glGetError() != GL_NO_ERROR) {}
         RenderTarget t(settings.width, settings.height, false);
         if (mipmaps) withMipmaps(t.texture());
         glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer());
@@ -561,8 +580,8 @@ struct ShadertoyHost::Impl {
                     const std::vector<float> zeros(size_t(spec.cubeSize) * spec.cubeSize * 4, 0.0f);
                     glBindTexture(GL_TEXTURE_CUBE_MAP, t.id());
                     for (int f = 0; f < 6; ++f)
-                        glTexSubImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, 0, 0, spec.cubeSize, spec.cubeSize,
-                                        GL_RGBA, GL_FLOAT, zeros.data());
+                        glTexSubImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, 0, 0, spec.cubeSize,
+                                        spec.cubeSize, GL_RGBA, GL_FLOAT, zeros.data());
                     if (p.mipmaps) glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
                 }
         for (Pass& p : passes)
@@ -599,7 +618,8 @@ struct ShadertoyHost::Impl {
                 const Pass& b = passes[size_t(spec.bufferPass(ch.buffer))];
                 // Previous: the other target once the buffer has run this frame.
                 const bool other = ch.frame == ShadertoyChannel::Frame::Previous && b.renderedThisFrame;
-                return {b.targets[size_t(other ? 1 - b.latest : b.latest)].texture(), GL_TEXTURE_2D,
+                return {b.targets[size_t(other ? 1 - b.latest : b.latest)].texture(),
+                        GL_TEXTURE_2D,
                         {settings.width, settings.height, 1}};
             }
             case ShadertoyChannel::Kind::Keyboard: return {keyboard.id(), GL_TEXTURE_2D, {kKeys, 3, 1}};
@@ -611,7 +631,8 @@ struct ShadertoyHost::Impl {
             case ShadertoyChannel::Kind::CubePass: {
                 const Pass& c = passes[size_t(spec.bufferPass(4))];
                 const bool other = ch.frame == ShadertoyChannel::Frame::Previous && c.renderedThisFrame;
-                return {c.cubeTargets[size_t(other ? 1 - c.latest : c.latest)].id(), GL_TEXTURE_CUBE_MAP,
+                return {c.cubeTargets[size_t(other ? 1 - c.latest : c.latest)].id(),
+                        GL_TEXTURE_CUBE_MAP,
                         {spec.cubeSize, spec.cubeSize, 1}};
             }
         }
@@ -649,8 +670,10 @@ struct ShadertoyHost::Impl {
         glUseProgram(prog);
         const auto loc = [&](const char* name) { return glGetUniformLocation(prog, name); };
         const float t = float(time());
-        if (pass.cube) glUniform3f(loc("iResolution"), float(spec.cubeSize), float(spec.cubeSize), 1.0f);
-        else glUniform3f(loc("iResolution"), float(settings.width), float(settings.height), 1.0f);
+        if (pass.cube)
+            glUniform3f(loc("iResolution"), float(spec.cubeSize), float(spec.cubeSize), 1.0f);
+        else
+            glUniform3f(loc("iResolution"), float(settings.width), float(settings.height), 1.0f);
         glUniform1f(loc("iTime"), t);
         glUniform1f(loc("iTimeDelta"), float(1.0 / settings.fps));
         glUniform1i(loc("iFrame"), frame);
@@ -670,7 +693,9 @@ struct ShadertoyHost::Impl {
                 case ShadertoyUniform::Type::Int: glUniform1i(l, int(value)); break;
                 case ShadertoyUniform::Type::Vec2: glUniform2f(l, float(v[0]), float(v[1])); break;
                 case ShadertoyUniform::Type::Vec3: glUniform3f(l, float(v[0]), float(v[1]), float(v[2])); break;
-                case ShadertoyUniform::Type::Vec4: glUniform4f(l, float(v[0]), float(v[1]), float(v[2]), float(v[3])); break;
+                case ShadertoyUniform::Type::Vec4:
+                    glUniform4f(l, float(v[0]), float(v[1]), float(v[2]), float(v[3]));
+                    break;
             }
         }
         float resolutions[12] = {}, times[4] = {t, t, t, t};
@@ -691,7 +716,8 @@ struct ShadertoyHost::Impl {
         glBindVertexArray(vao.id());
         if (pass.cube) {
             for (int face = 0; face < 6; ++face) {
-                glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face),
+                glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                       GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face),
                                        pass.cubeTargets[size_t(write)].id(), 0);
                 glUniform1i(loc("stochtexCubeFace"), face);
                 glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -718,7 +744,8 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
     checkShadertoyMemory(spec, settings);
     for (const ShadertoyPass& pass : spec.passes)  // a spec built in code, not by loadShadertoy
         for (const ShadertoyChannel& ch : pass.channels)
-            if (ch.kind == ShadertoyChannel::Kind::Buffer && (ch.buffer < 0 || ch.buffer > 3 || spec.bufferPass(ch.buffer) < 0))
+            if (ch.kind == ShadertoyChannel::Kind::Buffer &&
+                (ch.buffer < 0 || ch.buffer > 3 || spec.bufferPass(ch.buffer) < 0))
                 throw std::invalid_argument("ShadertoyHost: pass " + pass.name + " reads a buffer the program lacks");
     if (spec.passes.empty() || spec.passes.back().name != "image")
         throw std::invalid_argument("ShadertoyHost: the program's last pass must be the image pass");
@@ -778,8 +805,10 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
         if (spec.pattern) files.insert(files.end(), {"colour", "stochtex_pattern"});
         if (!spec.common.empty()) files.push_back(spec.common.string());
         files.push_back(pass.code.string());
-        if (pass.name == "cube_a") files.insert(files.end(), {"cube_map", "shadertoy_cube_main"});
-        else files.push_back("shadertoy_main");
+        if (pass.name == "cube_a")
+            files.insert(files.end(), {"cube_map", "shadertoy_cube_main"});
+        else
+            files.push_back("shadertoy_main");
         try {
             p.program = gl::Program(compileProgram({"fullscreen"}, files, overrides));
         } catch (const ShaderError& e) {
@@ -789,12 +818,14 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
                 throw InputError(spec.name + ": pass cube_a: " + pass.code.string() +
                                  ": defines no mainCubemap(out vec4 fragColor, in vec2 fragCoord, in vec3 rayOri, in "
                                  "vec3 rayDir), Cube A's entry point");
-            if (const std::string why = pass.name == "cube_a" ? ""
-                                        : unsupportedFeature(pass.code.string(), code,
-                                                             spec.common.empty() ? "" : userFiles.front().second);
+            if (const std::string why = pass.name == "cube_a"
+                                            ? ""
+                                            : unsupportedFeature(pass.code.string(), code,
+                                                                 spec.common.empty() ? "" : userFiles.front().second);
                 !why.empty())
                 throw InputError(spec.name + ": pass " + pass.name + ": " + why);
-            throw InputError(spec.name + ": pass " + pass.name + " does not compile: " + firstCompilerError(e.what(), userFiles));
+            throw InputError(spec.name + ": pass " + pass.name +
+                             " does not compile: " + firstCompilerError(e.what(), userFiles));
         }
         const int buffer = pass.name == "image" ? -1 : pass.name == "cube_a" ? 4 : pass.name.back() - 'a';
         p.mipmaps = buffer >= 0 && mipmapped[size_t(buffer)];
@@ -812,7 +843,8 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
             p.samplers[i] = Sampler(id);
             // Mipmaps on a texture without them (keyboard) read level 0 only.
             glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, minFilter(ch.filter));
-            glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, ch.filter == ChannelFilter::Nearest ? GL_NEAREST : GL_LINEAR);
+            glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER,
+                                ch.filter == ChannelFilter::Nearest ? GL_NEAREST : GL_LINEAR);
             const GLint wrap = ch.wrap == ChannelWrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
             glSamplerParameteri(id, GL_TEXTURE_WRAP_S, wrap);
             glSamplerParameteri(id, GL_TEXTURE_WRAP_T, wrap);
@@ -829,8 +861,8 @@ ShadertoyHost::ShadertoyHost(const ShadertoySpec& spec, GlContext& context, cons
                                            ch.filter == ChannelFilter::Mipmap);
                 p.inputSize[i] = {ch.noiseSize, ch.noiseSize, 1};
             } else if (ch.kind == ShadertoyChannel::Kind::Volume) {
-                p.inputs[i] = volumeTexture(shadertoyNoiseVolume(ch.noiseSize, ch.rgbaNoise, ch.noiseSeed), ch.noiseSize,
-                                            ch.filter == ChannelFilter::Mipmap);
+                p.inputs[i] = volumeTexture(shadertoyNoiseVolume(ch.noiseSize, ch.rgbaNoise, ch.noiseSeed),
+                                            ch.noiseSize, ch.filter == ChannelFilter::Mipmap);
                 p.inputSize[i] = {ch.noiseSize, ch.noiseSize, ch.noiseSize};
             } else if (ch.kind == ShadertoyChannel::Kind::Video) {
                 p.videos[i] = std::make_unique<VideoReader>(ch.image.string());
@@ -868,8 +900,8 @@ std::vector<float> ShadertoyHost::renderSound(double seconds, const Progress& pr
     const Impl& m = *impl_;
     if (!m.spec.sound) throw InputError::parameter("sound", m.spec.name + " has no sound pass (sound.glsl)");
     if (!(std::isfinite(seconds) && seconds > 0 && seconds <= kMaxSoundSeconds))
-        throw InputError::parameter("soundSeconds", "must be in (0, " + formatValue(kMaxSoundSeconds) + "] s, got " +
-                                                        formatValue(seconds));
+        throw InputError::parameter(
+            "soundSeconds", "must be in (0, " + formatValue(kMaxSoundSeconds) + "] s, got " + formatValue(seconds));
     const long long samples = std::llround(seconds * m.settings.sampleRate);
     const long long perBlock = kSoundBlock * kSoundBlock;
     std::vector<float> out(size_t(std::max(samples, 1ll)) * 2);
@@ -891,7 +923,8 @@ std::vector<float> ShadertoyHost::renderSound(double seconds, const Progress& pr
         const long long n = std::min(perBlock, samples - start);
         for (long long k = 0; k < n; ++k)
             for (int c = 0; c < 2; ++c)  // played as a browser plays it: clamped to [−1, 1]
-                out[size_t(start + k) * 2 + size_t(c)] = std::clamp(block.data()[size_t(k) * 3 + size_t(c)], -1.0f, 1.0f);
+                out[size_t(start + k) * 2 + size_t(c)] =
+                    std::clamp(block.data()[size_t(k) * 3 + size_t(c)], -1.0f, 1.0f);
         if (progress) progress(double(start + n) / double(samples), "sound");
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -950,7 +983,8 @@ void ShadertoyHost::resize(int width, int height) {
         p.targets = std::move(resized[i]);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    m.input.scaleMouse(float(width) / float(before.width), float(height) / float(before.height));  // iMouse in the new pixels
+    m.input.scaleMouse(float(width) / float(before.width),
+                       float(height) / float(before.height));  // iMouse in the new pixels
 }
 
 void ShadertoyHost::renderFrame() {
@@ -1004,24 +1038,28 @@ unsigned ShadertoyHost::frameTexture() const {
 std::array<float, 4> ShadertoyHost::pixel(const std::string& pass, int x, int y) const {
     checkPixel(pass, x, y);
     const Impl& m = *impl_;
-    const auto it = std::find_if(m.spec.passes.begin(), m.spec.passes.end(), [&](const ShadertoyPass& p) { return p.name == pass; });
+    const auto it = std::find_if(m.spec.passes.begin(), m.spec.passes.end(),
+                                 [&](const ShadertoyPass& p) { return p.name == pass; });
     const Impl::Pass& p = m.passes[size_t(it - m.spec.passes.begin())];
     return readPixelRgba(p.targets[size_t(p.latest)].framebuffer(), x, y);
 }
 
 void ShadertoyHost::checkPixel(const std::string& pass, int x, int y) const {
     const Impl& m = *impl_;
-    const auto it = std::find_if(m.spec.passes.begin(), m.spec.passes.end(), [&](const ShadertoyPass& p) { return p.name == pass; });
+    const auto it = std::find_if(m.spec.passes.begin(), m.spec.passes.end(),
+                                 [&](const ShadertoyPass& p) { return p.name == pass; });
     if (it == m.spec.passes.end()) {
         std::string names;
         for (const ShadertoyPass& p : m.spec.passes) names += (names.empty() ? "" : ", ") + p.name;
-        throw InputError::parameter("pass", "\"" + pass + "\" names no pass of " + m.spec.name + " (it has " + names + ")");
+        throw InputError::parameter("pass",
+                                    "\"" + pass + "\" names no pass of " + m.spec.name + " (it has " + names + ")");
     }
     if (pass == "cube_a")
         throw InputError::parameter("pass", "\"cube_a\" is a cube map, not a frame: inspect a pass that reads it");
     if (x < 0 || y < 0 || x >= m.settings.width || y >= m.settings.height)
         throw InputError::parameter("pixel", "(" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
-                                                 std::to_string(m.settings.width) + "x" + std::to_string(m.settings.height) + " frame");
+                                                 std::to_string(m.settings.width) + "x" +
+                                                 std::to_string(m.settings.height) + " frame");
 }
 
 void ShadertoyHost::setKey(int keyCode, bool down) { impl_->input.setKey(keyCode, down); }
@@ -1056,8 +1094,8 @@ void ShadertoySource::checkWindow(const SourceRegion& region, double time) const
     const double x0 = std::floor(region.x0) + s.width / 2, y0 = std::floor(region.y0) + s.height / 2;
     if (x0 < 0 || y0 < 0 || x0 + region.width > s.width || y0 + region.height > s.height)
         throw InputError::parameter("size", "of the window, " + std::to_string(region.width) + "x" +
-                                                std::to_string(region.height) + " at (" + formatValue(region.x0) + ", " +
-                                                formatValue(region.y0) + ") from the centre, exceeds the " +
+                                                std::to_string(region.height) + " at (" + formatValue(region.x0) +
+                                                ", " + formatValue(region.y0) + ") from the centre, exceeds the " +
                                                 std::to_string(s.width) + "x" + std::to_string(s.height) + " frame");
     if (!(std::isfinite(time) && frameAt(time) >= 0 && frameAt(time) <= 1000000))
         throw InputError::parameter("time", "must be at or after the program's start (" + formatValue(s.startTime) +
@@ -1068,7 +1106,8 @@ void ShadertoySource::checkInstances(int count) const {
     if (count > 1 && host_.spec().instanceUniform.empty())
         throw InputError::parameter("instances", "must be 1: " + host_.spec().name +
                                                      " has no instance uniform (the manifest's \"instance\"), so its "
-                                                     "instances would all be one, got " + std::to_string(count));
+                                                     "instances would all be one, got " +
+                                                     std::to_string(count));
 }
 
 Image ShadertoySource::render(const SourceRegion& region, double time, int instance) const {
