@@ -5,6 +5,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/pattern_members.h"
 #include "stochtex/pattern/presets.h"
 
 namespace stochtex::cli {
@@ -22,8 +23,8 @@ void registerColormap(CLI::App& app) {
     auto* preset = cmd->add_option("--preset,-p", args->preset, "Take the colormap of this preset pattern");
     spec->excludes(preset);
     addOutputImageFlag(*cmd, args->output);
-    cmd->add_option("--resolution", args->resolution, "Table resolution (analytic and painted colormaps)")
-        ->check(CLI::Range(2, kMaxColormapResolution));
+    // The file's member: its entry gives the flag's range and help, and checks the value.
+    addParameterOption(*cmd, patternMembers().colormapResolution, args->resolution);
     cmd->callback([args] {
         checkImageOutput(args->output);
         ColormapSpec cm;
@@ -35,7 +36,7 @@ void registerColormap(CLI::App& app) {
         } else {
             throw InputError("give a colormap spec or --preset NAME");
         }
-        if (args->resolution) cm.resolution = *args->resolution;
+        if (args->resolution) cm.resolution = checkInteger(patternMembers().colormapResolution, *args->resolution);
         const ColormapTable table = buildColormap(cm);
         // A data colormap is written as data; colours as sRGB codes (PNG) or linear (EXR).
         writeImage(args->output, table.toImage(), WriteOptions{.transfer = cm.transfer.value_or(Transfer::Srgb)});

@@ -54,8 +54,7 @@ void registerView(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("--no-panel", args->noPanel, "Start with the panel hidden (Tab shows it)");
     cmd->add_option("--script", args->script, "Steps to run, a JSON file (docs/WORKBENCH.md)");
-    cmd->add_option("--frames", w.frames, "Quit after this many frames (0: when the window closes)")
-        ->check(CLI::Range(0, 1000000));
+    addMemberOption(*cmd, optionMember(workbenchOptionsMembers(), "frames"), w);
     cmd->add_option("--screenshot", w.screenshot, "Save the picture area of the last frame to this PNG/EXR");
     cmd->callback([args, cmd] {
         applyResponseFlags(*cmd, args->response, args->window.filter);

@@ -17,9 +17,7 @@ void addZoomFlags(CLI::App& cmd, ZoomFlags& f, bool withLayers) {
     cmd.add_option("--base", f.base,
                    "Base texture: 'white' (white noise) or an image file (colour: gray by 0.21r + 0.72g + 0.07b)")
         ->capture_default_str();
-    cmd.add_option("--base-size", f.baseSize, "Period of the white-noise lattice")
-        ->check(CLI::Range(2, 16384))
-        ->capture_default_str();
+    addParameterOptions(cmd, zoomBaseMembers(), f.lattice);
     cmd.add_option("--seed", f.seed, "Seed of the white noise (instance k uses a seed derived from it)")
         ->capture_default_str();
 }
@@ -32,10 +30,12 @@ ZoomParams makeZoomParams(const ZoomFlags& f) {
 }
 
 ZoomBase makeZoomBase(const ZoomFlags& f) {
-    ZoomBase b;
-    b.size = f.baseSize;
+    ZoomBase b = f.lattice;
     b.seed = f.seed;
-    if (f.base == "white") return b;
+    if (f.base == "white") {
+        validateZoomBase(b);
+        return b;
+    }
     b.image = toGray(readImage(f.base));
     try {
         LatticeTexture::checkImage(b.image);

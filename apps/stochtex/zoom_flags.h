@@ -13,7 +13,7 @@ namespace stochtex::cli {
 struct ZoomFlags {
     ZoomParams params;           // the defaults of ZoomParams are the flags' defaults
     std::string base = "white";  // "white" or an image path
-    int baseSize = 512;          // white-noise lattice period
+    ZoomBase lattice;            // the white-noise lattice's period (its defaults are the flags')
     uint32_t seed = 1;
 };
 void addZoomFlags(CLI::App& cmd, ZoomFlags& f, bool withLayers = true);

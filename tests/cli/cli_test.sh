@@ -680,6 +680,7 @@ JSON
   # Bad input: one message, exit 2, no window output.
   printf '[{"frame": 1, "zoom": 2}]' >"$work/bad.json"
   expect_bad "workbench script without at" "$out/wbb.png" "/0: zoom needs \"at\"" -- "$bin" view --preset camouflage --script "$work/bad.json" --screenshot "$out/wbb.png"
+  expect_bad "workbench negative frames" "$out/wbf.png" "--frames: frames must be in [0, 1000000], got -1" -- "$bin" view --preset camouflage --frames -1 --screenshot "$out/wbf.png"
   expect_bad "workbench inline JSON" "$out/wbb.png" "pattern: the window edits and saves a file" -- "$bin" view '{"noise_x": {}}' --frames 1 --screenshot "$out/wbb.png"
   printf '[{"frame": 1, "set": "/colormap/shapes/0/colour", "value": "red"}]' >"$work/bad2.json"
   expect_bad "workbench edit the pattern refuses" "$out/wbb.png" "/colormap/shapes/0/colour: invalid colour \"red\"" -- "${xvfb[@]}" "$bin" view --preset camouflage --size 64,48 --frames 3 --script "$work/bad2.json" --screenshot "$out/wbb.png"
@@ -818,6 +819,10 @@ case_bad_spec() {
 }
 
 case_bad_study_flags() {
+  # Flags described by the library's entries: the range in --help is the one checked.
+  expect_bad "zoom base lattice of 1" "$out/zbad0" "--base-size: baseSize must be in [2, 16384], got 1" -- "$bin" zoom -o "$out/zbad0" --base-size 1
+  "$bin" zoom --help | grep -qF -- "--base-size INT=512         Period of the white-noise lattice, in [2, 16384]" || fail "zoom --help: --base-size lacks its entry's range"
+  expect_bad "colormap resolution 1" "$out/cres.png" "--resolution: resolution must be in [2, 4096], got 1" -- "$bin" colormap --preset marble --resolution 1 -o "$out/cres.png"
   expect_bad "zoom n = 0" "$out/zbad1" "--layers: layers must be in [1, 1024], got 0" -- "$bin" zoom -o "$out/zbad1" --layers 0
   expect_bad "zoom H <= 0" "$out/zbad2" "--max-scale: maxScale must be in [0.001, 1000], got 0" -- "$bin" zoom -o "$out/zbad2" --max-scale 0
   expect_bad "correlation N = 0" "$out/zbad3" "--instances: instances must be in [2, 1000000], got 0" -- "$bin" correlation -o "$out/zbad3" --instances 0

@@ -123,7 +123,11 @@ TEST(TextureSource, ZoomInstancesAreTheLatticesOfDerivedSeeds) {
     EXPECT_DOUBLE_EQ(stats->variance(1.5, 2.5), source.firstLattice().variance() * zs.varianceFactor(1.5, 2.5));
     EXPECT_DOUBLE_EQ(stats->correlation(0, 0, 3, 0), zs.correlation(0, 0, 3, 0));
     EXPECT_NEAR(stats->correlation(2, 2, 2, 2), 1.0, 1e-12);
-    EXPECT_THROW(ZoomSource(p, ZoomBase{1, 1, {}}), InputError);
+    // The period is checked by its entry, under the name the CLI's --base-size is bound by.
+    const InputError small = test::inputErrorOf([&] { ZoomSource(p, ZoomBase{1, 1, {}}); });
+    EXPECT_EQ(small.parameter(), "baseSize");
+    EXPECT_STREQ(small.what(), "baseSize must be in [2, 16384], got 1");
+    EXPECT_EQ(test::inputErrorOf([&] { ZoomSource(p, ZoomBase{16385, 1, {}}); }).parameter(), "baseSize");
 }
 
 TEST(TextureSource, ProgramInstanceZeroIsThePlainRenderAndRegionsTranslate) {

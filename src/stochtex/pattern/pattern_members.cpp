@@ -71,6 +71,7 @@ const PatternMembers& patternMembers() {
         m.colormapResolution = ParamInfo{
             "resolution", ParamType::Integer, "Table entries per side", 256, 2, kMaxColormapResolution, nullptr, {},
             1024};
+        m.colormapResolution.flag = "resolution";  // `colormap --resolution`
         m.duty = ParamInfo{"duty", ParamType::Number, "The part of a period a square profile is high", 0.5, 0, 1};
         m.coordinate = ParamInfo{"coordinate",
                                  ParamType::Number,

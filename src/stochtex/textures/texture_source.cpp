@@ -9,11 +9,20 @@
 
 namespace stochtex {
 
+std::span<const OptionMember<ZoomBase>> zoomBaseMembers() {
+    static const OptionMember<ZoomBase> members[] = {
+        {"baseSize", "Period of the white-noise lattice", 2, 16384, &ZoomBase::size},
+    };
+    return members;
+}
+
+void validateZoomBase(const ZoomBase& base) {
+    if (base.image.empty()) checkMembers(base, zoomBaseMembers());
+}
+
 ZoomSource::ZoomSource(const ZoomParams& params, ZoomBase base) : params_(params), base_(std::move(base)) {
     validateZoomParams(params_);
-    if (base_.image.empty() && (base_.size < 2 || base_.size > 16384))
-        throw InputError("zoom base: the white-noise lattice size must be in [2, 16384], got " +
-                         std::to_string(base_.size));
+    validateZoomBase(base_);
     first_ = lattice(0);
 }
 
@@ -124,7 +133,8 @@ Image PhasorNoiseSource::render(const SourceRegion& region, double, int instance
             for (int px = 0; px < region.width; ++px) {
                 const auto [u, v] = pixelUv(view, invW, px, py);
                 const double phase = noise.phase(u, v);
-                const Rgb c = colormap_.sample(float(0.5 + 0.25 * std::cos(phase)), float(0.5 + 0.25 * std::sin(phase)));
+                const Rgb c =
+                    colormap_.sample(float(0.5 + 0.25 * std::cos(phase)), float(0.5 + 0.25 * std::sin(phase)));
                 for (int k = 0; k < 3; ++k) out.at(px, py, k) = c[size_t(k)];
             }
         }
@@ -135,12 +145,11 @@ Image PhasorNoiseSource::render(const SourceRegion& region, double, int instance
 ImageSequenceSource::ImageSequenceSource(std::vector<Image> frames) : frames_(std::move(frames)) {
     if (frames_.empty()) throw InputError("image sequence: no image");
     for (size_t k = 1; k < frames_.size(); ++k)
-        if (frames_[k].width() != width() || frames_[k].height() != height() ||
-            frames_[k].channels() != channels())
+        if (frames_[k].width() != width() || frames_[k].height() != height() || frames_[k].channels() != channels())
             throw InputError("image sequence: image " + std::to_string(k + 1) + " is " +
                              std::to_string(frames_[k].width()) + "×" + std::to_string(frames_[k].height()) + "×" +
-                             std::to_string(frames_[k].channels()) + ", the first is " + std::to_string(width()) +
-                             "×" + std::to_string(height()) + "×" + std::to_string(channels()));
+                             std::to_string(frames_[k].channels()) + ", the first is " + std::to_string(width()) + "×" +
+                             std::to_string(height()) + "×" + std::to_string(channels()));
 }
 
 void ImageSequenceSource::checkWindow(const SourceRegion& region, double time) const {

@@ -6,12 +6,13 @@
 // Adapters: the stationary zoom texture (instance i = white-noise lattice i,
 // analytic statistics from ZoomStatistics), the procedural phasor noise
 // (unfiltered) and any ViewRenderer (a file's program under any statistics
-// source and response, on the CPU or the GPU, through its Camera). Patterns are static (t is ignored); their instance i ≠ 0 is the same texture seen through a
-// window moved by a hashed offset of up to 1024 example periods, which for
-// the tiled-and-blended noise (tiles hashed per grid cell) is another draw of
-// the random tile offsets. Instance 0 is the plain render.
+// source and response, on the CPU or the GPU, through its Camera). Patterns are static (t is ignored); their instance i
+// ≠ 0 is the same texture seen through a window moved by a hashed offset of up to 1024 example periods, which for the
+// tiled-and-blended noise (tiles hashed per grid cell) is another draw of the random tile offsets. Instance 0 is the
+// plain render.
 #include <functional>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "stochtex/noise/phasor_noise.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/colormap.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/pattern/view.h"
 #include "stochtex/pattern/view_renderer.h"
 #include "stochtex/textures/zoom_statistics.h"
@@ -68,10 +70,15 @@ public:
 // image moved periodically by imageInstanceOffset(i), so that statistics over
 // instances are those of the image's translations, thesis §2.7.1).
 struct ZoomBase {
-    int size = 512;
+    int size = 512;  // the white-noise lattice's period
     uint32_t seed = 1;
     Image image;  // empty: white noise
 };
+// The entry of its lattice's period ("baseSize": it sits beside the frame's
+// size wherever both are set), the check of a white-noise base and the CLI's flag.
+std::span<const OptionMember<ZoomBase>> zoomBaseMembers();
+// InputError for a white-noise base whose period is out of its range.
+void validateZoomBase(const ZoomBase& base);
 
 class ZoomSource : public TextureSource {
 public:

@@ -8,6 +8,14 @@
 
 namespace stochtex {
 
+std::span<const OptionMember<WorkbenchOptions>> workbenchOptionsMembers() {
+    using O = WorkbenchOptions;
+    static const OptionMember<O> members[] = {
+        {"frames", "Quit after this many frames (0: when the window closes)", 0, 1e6, &O::frames},
+    };
+    return members;
+}
+
 void validateWorkbenchOptions(const WorkbenchOptions& o) {
     const View& v = o.camera.view;
     if (std::min(v.width, v.height) < 16 || std::max(v.width, v.height) > 8192)
@@ -18,7 +26,7 @@ void validateWorkbenchOptions(const WorkbenchOptions& o) {
     checkInteger(anisoParam(), o.filter.aniso);
     checkNumber(cameraTiltParam(), o.camera.tiltDeg, " degrees");
     checkNumber(viewScaleParam(), o.camera.view.scale);
-    if (o.frames < 0) throw InputError::parameter("frames", "must be ≥ 0, got " + std::to_string(o.frames));
+    checkMembers(o, workbenchOptionsMembers());
     if (!o.screenshot.empty() && o.frames == 0)
         throw InputError::parameter("frames", "must be given with a screenshot (it is of the last frame)");
     validateShadertoySettings(o.shadertoy);

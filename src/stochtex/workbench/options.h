@@ -3,12 +3,14 @@
 // model's first state): the camera, filter, view, mode and analysis, a
 // program's settings, the panel, the frames to run, the screenshot and the
 // script.
+#include <span>
 #include <string>
 #include <vector>
 
 #include "stochtex/gpu/shadertoy.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filter_options.h"
+#include "stochtex/pattern/param_info.h"
 #include "stochtex/workbench/live_analysis.h"
 #include "stochtex/workbench/script.h"
 
@@ -31,6 +33,8 @@ struct WorkbenchOptions {
 // InputError naming the parameter: sizes, aniso, camera, a filter the GPU
 // does not draw.
 void validateWorkbenchOptions(const WorkbenchOptions& options);
+// The entries of its numbers (frames): its check, the CLI's flags.
+std::span<const OptionMember<WorkbenchOptions>> workbenchOptionsMembers();
 
 // Width of the editing panel, pixels: the window is this much wider than
 // the picture area while the panel shows.
