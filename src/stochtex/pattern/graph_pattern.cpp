@@ -230,7 +230,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
             const double amplitude = g->numbers.at("amplitude");
             const uint32_t seed = seedOf(heightId, k);
             const auto build = [&] { return slopeField(height.values(), amplitude, seed, spec.gridDensity); };
-            slopes = parts ? parts->slopes(heightExample, amplitude, seed, spec.gridDensity, build) : build();
+            slopes = slopesPart(parts, heightExample, amplitude, seed, spec.gridDensity, build);
         } catch (const InputError& e) {
             throw InputError(where + ": " + e.what());
         }
@@ -602,16 +602,13 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         } catch (const InputError& e) {
             throw InputError("node \"" + op.id + "\": " + e.what());
         }
-        tables_.push_back(parts ? parts->prefiltered(t, options.response.prefilter)
-                                : std::make_shared<const PrefilteredColormap>(t, options.response.prefilter));
+        tables_.push_back(prefilteredPart(parts, t, options.response.prefilter));
     }
     sky_ = plain_ ? plainSky() : fromMoments(whole, wholeCov);
     if (options.source == StatisticsSource::Estimators)
         for (size_t k = 0; k < graph.leafPairs().size(); ++k)
             estimators_.push_back(
-                parts ? parts->estimator(graph.leafPairs()[k], graph.pairCovariance(int(k)), options.pack8)
-                      : std::make_shared<const FootprintEstimator>(graph.leafPairs()[k], graph.pairCovariance(int(k)),
-                                                                   options.pack8));
+                estimatorPart(parts, graph.leafPairs()[k], graph.pairCovariance(int(k)), options.pack8));
 }
 
 Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMoments,

@@ -6,6 +6,21 @@
 
 namespace stochtex {
 
+namespace {
+
+// How each part is built: by the cache on a miss, and where there is no cache.
+std::shared_ptr<const ColormapTable> makeColormap(const ColormapSpec& spec) {
+    return std::make_shared<const ColormapTable>(buildColormap(spec));
+}
+std::shared_ptr<const FootprintEstimator> makeEstimator(const TiledField& field, bool covariance, bool pack8) {
+    return std::make_shared<const FootprintEstimator>(field, covariance, pack8);
+}
+std::shared_ptr<const PrefilteredColormap> makePrefiltered(const ColormapTable& blended, PrefilterMode mode) {
+    return std::make_shared<const PrefilteredColormap>(blended, mode);
+}
+
+}  // namespace
+
 template <class Key, class Value, class Build>
 Value PartCache::find(Entries<Key, Value>& entries, const Key& key, int& count, Build&& build) {
     for (Entry<Key, Value>& e : entries)
@@ -29,8 +44,7 @@ TiledField PartCache::slopes(const std::shared_ptr<const NoiseExample>& height, 
 }
 
 std::shared_ptr<const ColormapTable> PartCache::colormap(const ColormapSpec& spec) {
-    return find(colormaps_, spec, builds_.colormaps,
-                [&] { return std::make_shared<const ColormapTable>(buildColormap(spec)); });
+    return find(colormaps_, spec, builds_.colormaps, [&] { return makeColormap(spec); });
 }
 
 std::shared_ptr<const FootprintEstimator> PartCache::estimator(const TiledField& field, bool covariance, bool pack8) {
@@ -39,13 +53,12 @@ std::shared_ptr<const FootprintEstimator> PartCache::estimator(const TiledField&
         key.examples.push_back(field.channel(k).sharedExample());
         key.seeds.push_back(field.channel(k).offsetSeed());
     }
-    return find(estimators_, key, builds_.estimators,
-                [&] { return std::make_shared<const FootprintEstimator>(field, covariance, pack8); });
+    return find(estimators_, key, builds_.estimators, [&] { return makeEstimator(field, covariance, pack8); });
 }
 
 std::shared_ptr<const PrefilteredColormap> PartCache::prefiltered(const ColormapTable& blended, PrefilterMode mode) {
     return find(prefiltered_, PrefilteredKey{blended, mode}, builds_.prefiltered,
-                [&] { return std::make_shared<const PrefilteredColormap>(blended, mode); });
+                [&] { return makePrefiltered(blended, mode); });
 }
 
 std::shared_ptr<void> PartCache::attachment(const std::shared_ptr<const void>& part, const std::string& what,
@@ -78,6 +91,25 @@ void PartCache::clear() {
 size_t PartCache::size() const {
     return fields_.size() + slopes_.size() + colormaps_.size() + estimators_.size() + prefiltered_.size() +
            attachments_.size();
+}
+
+TiledField slopesPart(PartCache* parts, const std::shared_ptr<const NoiseExample>& height, double amplitude,
+                      uint32_t seed, double gridDensity, const std::function<TiledField()>& build) {
+    return parts ? parts->slopes(height, amplitude, seed, gridDensity, build) : build();
+}
+
+std::shared_ptr<const ColormapTable> colormapPart(PartCache* parts, const ColormapSpec& spec) {
+    return parts ? parts->colormap(spec) : makeColormap(spec);
+}
+
+std::shared_ptr<const FootprintEstimator> estimatorPart(PartCache* parts, const TiledField& field, bool covariance,
+                                                        bool pack8) {
+    return parts ? parts->estimator(field, covariance, pack8) : makeEstimator(field, covariance, pack8);
+}
+
+std::shared_ptr<const PrefilteredColormap> prefilteredPart(PartCache* parts, const ColormapTable& blended,
+                                                           PrefilterMode mode) {
+    return parts ? parts->prefiltered(blended, mode) : makePrefiltered(blended, mode);
 }
 
 }  // namespace stochtex

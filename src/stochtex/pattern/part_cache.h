@@ -133,4 +133,15 @@ private:
     Entries<AttachmentKey, std::shared_ptr<void>> attachments_;
 };
 
+// A part from `parts`, or built now where there is none (a build that keeps
+// nothing): callers that may run either way ask through these, so that how
+// each part is built is written once (part_cache.cpp).
+TiledField slopesPart(PartCache* parts, const std::shared_ptr<const NoiseExample>& height, double amplitude,
+                      uint32_t seed, double gridDensity, const std::function<TiledField()>& build);
+std::shared_ptr<const ColormapTable> colormapPart(PartCache* parts, const ColormapSpec& spec);
+std::shared_ptr<const FootprintEstimator> estimatorPart(PartCache* parts, const TiledField& field, bool covariance,
+                                                        bool pack8);
+std::shared_ptr<const PrefilteredColormap> prefilteredPart(PartCache* parts, const ColormapTable& blended,
+                                                           PrefilterMode mode);
+
 }  // namespace stochtex

@@ -10,7 +10,7 @@ namespace stochtex {
 
 const PatternPreviews& PreviewCache::update(const PatternSpec& spec, PartCache* parts) {
     if (colormapKey_ != spec.colormap) {
-        const ColormapTable table = parts ? *parts->colormap(spec.colormap) : buildColormap(spec.colormap);
+        const ColormapTable table = *colormapPart(parts, spec.colormap);
         previews_.colormap = encodeTransfer(table.toImage(), spec.colormap.transfer.value_or(Transfer::Srgb));
         colormapKey_ = spec.colormap;
         ++colormapBuilds_;

@@ -123,9 +123,7 @@ std::vector<std::string> opManifestTypes() {
     return types;
 }
 
-ColormapTable OpBuild::colormap(const ColormapSpec& spec) const {
-    return parts ? *parts->colormap(spec) : buildColormap(spec);
-}
+ColormapTable OpBuild::colormap(const ColormapSpec& spec) const { return *colormapPart(parts, spec); }
 
 double shortestDecimal(float v) {
     char text[32];
