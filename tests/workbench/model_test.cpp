@@ -22,16 +22,8 @@ namespace {
 
 using A = WorkbenchCommand::Action;
 
-WorkbenchCommand command(A action, std::string text = {}, double amount = 1) {
-    WorkbenchCommand c;
-    c.action = action;
-    c.text = std::move(text);
-    c.amount = amount;
-    return c;
-}
-
 WorkbenchCommand set(const std::string& pointer, const nlohmann::json& value) {
-    WorkbenchCommand c = command(A::Set, pointer);
+    WorkbenchCommand c = WorkbenchCommand::of(A::Set, 1, pointer);
     c.value = value;
     return c;
 }
@@ -81,16 +73,16 @@ TEST(WorkbenchModel, UndoRedoAndAGestureThatIsOneStep) {
     m.rebuild();
     EXPECT_FALSE(m.rebuildDue(now, false));
     EXPECT_EQ(m.document().json().at(nlohmann::json::json_pointer(kColour)), "#303030");
-    m.apply(command(A::Undo), true);
+    m.apply(WorkbenchCommand::of(A::Undo), true);
     EXPECT_EQ(m.document().json(), original);
     EXPECT_EQ(m.notice(), "undone");
-    m.apply(command(A::Redo), true);
+    m.apply(WorkbenchCommand::of(A::Redo), true);
     EXPECT_EQ(m.document().json().at(nlohmann::json::json_pointer(kColour)), "#303030");
     // Ctrl+Z is the same command.
     tap(m, GLFW_KEY_Z, GLFW_MOD_CONTROL);
     EXPECT_EQ(m.document().json(), original);
-    EXPECT_THROW(m.apply(command(A::Undo), true), InputError);  // nothing left: a script's step fails
-    m.apply(command(A::Undo));                                  // the window's is a no-op
+    EXPECT_THROW(m.apply(WorkbenchCommand::of(A::Undo), true), InputError);  // nothing left: a script's step fails
+    m.apply(WorkbenchCommand::of(A::Undo));                                  // the window's is a no-op
     EXPECT_TRUE(m.error().empty());
 }
 
@@ -107,7 +99,7 @@ TEST(WorkbenchModel, AScriptsRefusalFailsTheRunAndTheWindowsIsShown) {
     m.applyGesture({{kColour, "not a colour"}}, false);
     EXPECT_NE(m.error().find("colour"), std::string::npos) << m.error();
     EXPECT_EQ(m.document().json(), original);
-    WorkbenchCommand mouse = command(A::MouseDown);
+    WorkbenchCommand mouse = WorkbenchCommand::of(A::MouseDown);
     EXPECT_THROW(m.apply(mouse, true), InputError);  // a pattern has no iMouse
 }
 
@@ -154,7 +146,7 @@ TEST(WorkbenchModel, KeysAreTheCommandsTheHelpLists) {
     tap(m, GLFW_KEY_ESCAPE);
     EXPECT_TRUE(m.shown().quit);
     // A script's key step is the same tap.
-    WorkbenchCommand key = command(A::Key);
+    WorkbenchCommand key = WorkbenchCommand::of(A::Key);
     key.key = GLFW_KEY_2;
     m.apply(key, true);
     EXPECT_EQ(m.shown().filterName, "paper");
@@ -163,17 +155,13 @@ TEST(WorkbenchModel, KeysAreTheCommandsTheHelpLists) {
 TEST(WorkbenchModel, ZoomKeepsThePointUnderTheCursorAndPanMovesByPixels) {
     WorkbenchModel m(WorkbenchDocument::preset("camouflage"), options());
     const View before = m.shown().camera.view;
-    WorkbenchCommand zoom = command(A::Zoom, "", 2.0);
-    zoom.x = 30, zoom.y = 20;
-    m.apply(zoom);
+    m.apply(WorkbenchCommand::at(A::Zoom, 30, 20, 2.0));
     const View& after = m.shown().camera.view;
     EXPECT_DOUBLE_EQ(after.scale, before.scale / 2);
     EXPECT_NEAR(after.offsetU + 30 * after.scale, before.offsetU + 30 * before.scale, 1e-12);
     EXPECT_NEAR(after.offsetV + 20 * after.scale, before.offsetV + 20 * before.scale, 1e-12);
-    WorkbenchCommand pan = command(A::Pan);
-    pan.x = 4, pan.y = -2;
     const double u = after.offsetU, v = after.offsetV;
-    m.apply(pan);
+    m.apply(WorkbenchCommand::at(A::Pan, 4, -2));
     EXPECT_NEAR(m.shown().camera.view.offsetU, u - 4 * after.scale, 1e-12);
     EXPECT_NEAR(m.shown().camera.view.offsetV, v + 2 * after.scale, 1e-12);
 }
@@ -186,9 +174,7 @@ TEST(WorkbenchModel, AProgramTakesItsKeysAndMouseAndRefusesEdits) {
     ASSERT_EQ(keys.size(), 2u);
     EXPECT_EQ(keys[0], std::make_pair(int('W'), true));
     EXPECT_EQ(keys[1], std::make_pair(int('W'), false));
-    WorkbenchCommand down = command(A::MouseDown);
-    down.x = 10, down.y = 5;
-    m.apply(down, true);
+    m.apply(WorkbenchCommand::at(A::MouseDown, 10, 5), true);
     const auto inputs = m.takeProgramInputs();
     ASSERT_EQ(inputs.size(), 1u);
     EXPECT_EQ(inputs[0].kind, ShadertoyInput::Kind::MouseDown);

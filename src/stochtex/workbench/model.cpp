@@ -13,6 +13,14 @@
 
 namespace stochtex {
 
+Camera WorkbenchShown::viewCamera(int width, int height) const {
+    Camera c = camera;
+    c.kind = view == WorkbenchView::Plane ? Camera::Kind::Plane : Camera::Kind::Zoom;
+    c.view.width = width;
+    c.view.height = height;
+    return c;
+}
+
 namespace {
 
 double orbitLength(const SceneCamera& c) {
@@ -355,11 +363,7 @@ void WorkbenchModel::applyKeyEvent(const KeyEvent& e) {
     const bool press = e.action == GLFW_PRESS, ctrl = (e.mods & GLFW_MOD_CONTROL) != 0;
     const auto pressed = [&](int key) { return press && e.key == key; };
     const auto command = [&](A action, double amount = 0, std::string text = {}) {
-        WorkbenchCommand c;
-        c.action = action;
-        c.amount = amount;
-        c.text = std::move(text);
-        apply(c);
+        apply(WorkbenchCommand::of(action, amount, std::move(text)));
     };
     const WorkbenchShown& s = shown_;
     if (pressed(GLFW_KEY_ESCAPE)) command(A::Quit);

@@ -51,6 +51,10 @@ struct WorkbenchShown {
     float overlayOpacity = 0.5f;  // overlay mode: the analysis's opacity
     int pickX = -1, pickY = -1;   // the correlation's point, picture pixels (−1: the centre)
     bool panel = true, help = false, paused = false, quit = false;
+
+    // The camera of the flat (zoom) or plane view drawn at width × height
+    // pixels: the picture's, and the correlation's instances of it.
+    Camera viewCamera(int width, int height) const;
 };
 
 // A key as GLFW reports it.

@@ -44,14 +44,6 @@ constexpr KeyHelp kCommonKeys[] = {
     {"Esc", "quit"},
 };
 
-WorkbenchCommand command(A action, double amount = 0, std::string text = {}) {
-    WorkbenchCommand c;
-    c.action = action;
-    c.amount = amount;
-    c.text = std::move(text);
-    return c;
-}
-
 // A combo over an enum's names: the name chosen, or "" when none was.
 template <class E>
 std::string enumCombo(const char* label, E value, const EnumNames<E>& names) {
@@ -118,73 +110,75 @@ void WorkbenchPanels::drawEditors(WorkbenchModel& model, const WorkbenchPicture&
     const std::vector<JsonEdit> edits = patternEditor(model.document().json(), previews, editorState_);
     model.applyGesture(edits, ImGui::IsAnyItemActive() || ImGui::IsMouseDown(ImGuiMouseButton_Left));
     ImGui::BeginDisabled(!model.document().canUndo());
-    if (ImGui::Button("Undo (Ctrl+Z)")) model.apply(command(A::Undo));
+    if (ImGui::Button("Undo (Ctrl+Z)")) model.apply(WorkbenchCommand::of(A::Undo));
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(!model.document().canRedo());
-    if (ImGui::Button("Redo (Ctrl+Y)")) model.apply(command(A::Redo));
+    if (ImGui::Button("Redo (Ctrl+Y)")) model.apply(WorkbenchCommand::of(A::Redo));
     ImGui::EndDisabled();
-    if (ImGui::Button("Save JSON (Ctrl+S)")) model.apply(command(A::SaveDefault));
+    if (ImGui::Button("Save JSON (Ctrl+S)")) model.apply(WorkbenchCommand::of(A::SaveDefault));
     ImGui::SameLine();
     ImGui::SetNextItemWidth(160);
     ImGui::InputText("##saveas", saveAs_, sizeof saveAs_);
     ImGui::SameLine();
-    if (ImGui::Button("Save as")) model.apply(command(A::Save, 0, saveAs_));
+    if (ImGui::Button("Save as")) model.apply(WorkbenchCommand::of(A::Save, 0, saveAs_));
 }
 
 void WorkbenchPanels::drawViewControls(WorkbenchModel& model, const WorkbenchPicture& picture,
                                        const DisplayRect& texture) {
     const WorkbenchShown& s = model.shown();
-    if (auto m = enumCombo("mode", s.mode, kWorkbenchModeNames); !m.empty()) model.apply(command(A::Mode, 0, m));
+    if (auto m = enumCombo("mode", s.mode, kWorkbenchModeNames); !m.empty())
+        model.apply(WorkbenchCommand::of(A::Mode, 0, m));
     float split = s.split, opacity = s.overlayOpacity;
     if (s.mode == WorkbenchMode::Split && ImGui::SliderFloat("split", &split, 0, 1))
-        model.apply(command(A::Split, split));
+        model.apply(WorkbenchCommand::of(A::Split, split));
     if (s.mode == WorkbenchMode::Overlay && ImGui::SliderFloat("opacity", &opacity, 0, 1))
-        model.apply(command(A::Opacity, opacity));
+        model.apply(WorkbenchCommand::of(A::Opacity, opacity));
     if (model.analysing())
         if (auto a = enumCombo("analysis", s.analysis, kLiveAnalysisNames); !a.empty())
-            model.apply(command(A::Analysis, 0, a));
+            model.apply(WorkbenchCommand::of(A::Analysis, 0, a));
     if (model.isShadertoy()) {
         const int frame = picture.host() ? picture.host()->frame() : 0;
         const ShadertoySettings& settings = picture.host() ? picture.host()->settings() : ShadertoySettings{};
         ImGui::Text("frame %d, iTime %.2f s", frame, settings.startTime + frame / settings.fps);
         bool paused = s.paused;
-        if (ImGui::Checkbox("pause (F4)", &paused)) model.apply(command(A::Pause, paused));
+        if (ImGui::Checkbox("pause (F4)", &paused)) model.apply(WorkbenchCommand::of(A::Pause, paused));
         ImGui::SameLine();
-        if (ImGui::Button("restart")) model.apply(command(A::RestartProgram));
+        if (ImGui::Button("restart")) model.apply(WorkbenchCommand::of(A::RestartProgram));
         return;
     }
     if (ImGui::BeginCombo("filter", s.filterName.c_str())) {
         for (const char* f : {"none", "paper", "smooth"})
-            if (ImGui::Selectable(f, f == s.filterName)) model.apply(command(A::Filter, 0, f));
+            if (ImGui::Selectable(f, f == s.filterName)) model.apply(WorkbenchCommand::of(A::Filter, 0, f));
         ImGui::EndCombo();
     }
     int aniso = s.filter.aniso;
     if (ImGui::SliderInt("aniso", &aniso, int(anisoParam().min), int(anisoParam().max)))
-        model.apply(command(A::Aniso, aniso));
+        model.apply(WorkbenchCommand::of(A::Aniso, aniso));
     if (model.hasNormalMap()) {
         bool lean = s.response == ResponseKind::Lean;
         if (ImGui::Checkbox("LEAN normals (L)", &lean))
-            model.apply(
-                command(A::Response, 0,
-                        enumName(kResponseKindNames, lean ? ResponseKind::Lean : ResponseKind::PrefilteredColormap)));
+            model.apply(WorkbenchCommand::of(
+                A::Response, 0,
+                enumName(kResponseKindNames, lean ? ResponseKind::Lean : ResponseKind::PrefilteredColormap)));
     }
-    if (auto v = enumCombo("view", s.view, kWorkbenchViewNames); !v.empty()) model.apply(command(A::View, 0, v));
+    if (auto v = enumCombo("view", s.view, kWorkbenchViewNames); !v.empty())
+        model.apply(WorkbenchCommand::of(A::View, 0, v));
     if (s.view == WorkbenchView::Plane) {
         float tilt = float(s.camera.tiltDeg);
         if (ImGui::SliderFloat("tilt", &tilt, float(cameraTiltParam().min), float(cameraTiltParam().max), "%.1f°"))
-            model.apply(command(A::Tilt, tilt));
+            model.apply(WorkbenchCommand::of(A::Tilt, tilt));
     }
     if (!model.isScene()) {
         float scale = float(s.camera.view.scale);
         if (ImGui::SliderFloat("zoom", &scale, 1.0f / 64, 4096, "%.4g texels/px", ImGuiSliderFlags_Logarithmic)) {
-            WorkbenchCommand zoom = command(A::Zoom, s.camera.view.scale / scale);
+            WorkbenchCommand zoom = WorkbenchCommand::of(A::Zoom, s.camera.view.scale / scale);
             zoom.x = texture.width / 2.0, zoom.y = texture.height / 2.0;  // about the texture's centre
             model.apply(zoom);
         }
         bool rasterizer = s.derivatives == GpuView::Derivatives::Rasterizer;
         if (ImGui::Checkbox("rasterizer derivatives (D)", &rasterizer))
-            model.apply(command(A::Derivatives, rasterizer));
+            model.apply(WorkbenchCommand::of(A::Derivatives, rasterizer));
     }
 }
 
@@ -197,11 +191,11 @@ void WorkbenchPanels::drawAnalysis(WorkbenchModel& model, const WorkbenchPicture
     const WorkbenchShown& s = model.shown();
     if (s.analysis == LiveAnalysisKind::Correlation) {
         if (auto v = enumCombo("show", s.statistic, kLiveStatisticNames); !v.empty())
-            model.apply(command(A::Statistic, 0, v));
+            model.apply(WorkbenchCommand::of(A::Statistic, 0, v));
         ImGui::TextDisabled("right click: pick the point");
         // The same analysis again: its samples start over.
         if (ImGui::Button("restart the samples"))
-            model.apply(command(A::Analysis, 0, enumName(kLiveAnalysisNames, s.analysis)));
+            model.apply(WorkbenchCommand::of(A::Analysis, 0, enumName(kLiveAnalysisNames, s.analysis)));
     }
 }
 
@@ -227,7 +221,7 @@ void WorkbenchPanels::drawHelp(WorkbenchModel& model) {
     if (model.isShadertoy())
         ImGui::TextWrapped("Other keys and the left button go to the program (keyboard texture, iMouse).");
     ImGui::End();
-    if (!open) model.apply(command(A::Help));
+    if (!open) model.apply(WorkbenchCommand::of(A::Help));
 }
 
 }  // namespace stochtex

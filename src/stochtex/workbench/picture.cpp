@@ -153,13 +153,9 @@ GLuint WorkbenchPicture::drawPattern(int w, int h) {
         }
         scene_->draw(s.orbit.camera(), *target_, 4.0f);
     } else {
-        Camera camera = s.camera;
-        camera.kind = s.view == WorkbenchView::Plane ? Camera::Kind::Plane : Camera::Kind::Zoom;
-        camera.view.width = w;
-        camera.view.height = h;
         target_->bind();
         r.setDerivatives(s.derivatives);
-        r.drawView(camera);
+        r.drawView(s.viewCamera(w, h));
     }
     return target_->texture();
 }
@@ -251,11 +247,7 @@ LiveAnalysisResult WorkbenchPicture::correlationStep(const Image& frame, bool ch
         if (changed) c.add(frame);
     } else if (c.count() < kMaxCorrelationSamples) {
         // Instances through the GPU: the view moved by a hashed whole-texel offset (CameraSource).
-        Camera camera = s.camera;
-        camera.kind = s.view == WorkbenchView::Plane ? Camera::Kind::Plane : Camera::Kind::Zoom;
-        camera.view.width = w;
-        camera.view.height = h;
-        const CameraSource source(renderer(), camera);
+        const CameraSource source(renderer(), s.viewCamera(w, h));
         for (int k = 0; k < 4; ++k) c.add(source.render({w, h, 0, 0}, 0, c.count()));
     }
     return c.result(s.statistic);

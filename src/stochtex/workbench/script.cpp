@@ -15,6 +15,21 @@
 
 namespace stochtex {
 
+WorkbenchCommand WorkbenchCommand::of(Action action, double amount, std::string text) {
+    WorkbenchCommand c;
+    c.action = action;
+    c.amount = amount;
+    c.text = std::move(text);
+    return c;
+}
+
+WorkbenchCommand WorkbenchCommand::at(Action action, double x, double y, double amount) {
+    WorkbenchCommand c = of(action, amount);
+    c.x = x;
+    c.y = y;
+    return c;
+}
+
 std::pair<int, int> parseKeyChord(const std::string& text) {
     std::string rest;
     for (const char c : text) rest += char(std::tolower(static_cast<unsigned char>(c)));

@@ -90,6 +90,13 @@ struct WorkbenchCommand {
     int key = 0, mods = 0;  // key: the GLFW key and modifier bits, pressed and released in one frame
     std::string text;       // a name (filter, mode, analysis, view, response, …), a JSON pointer or a file
     nlohmann::json value;   // set: the value
+
+    // A command of `action` with the amount and the name it takes (the
+    // panel's widgets, the keys, a script's steps).
+    static WorkbenchCommand of(Action action, double amount = 1, std::string text = {});
+    // One at a point (x, y): zoom (amount: its factor), pan (x, y: the move
+    // in pixels), split (amount), pick, the mouse.
+    static WorkbenchCommand at(Action action, double x, double y, double amount = 1);
 };
 
 // A command of a script, run before the frame it names is drawn.

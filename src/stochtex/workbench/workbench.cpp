@@ -155,29 +155,24 @@ private:
         const double px = io.MousePos.x * pixelScale - pr.x, py = io.MousePos.y * pixelScale;
         // A point of the texture: side by side, the analysis half maps onto it.
         const double tx = px >= tr.width ? px - tr.width : px;
-        const auto at = [](A action, double x, double y, double amount = 1) {
-            WorkbenchCommand c;
-            c.action = action, c.x = x, c.y = y, c.amount = amount;
-            return c;
-        };
         if (!io.WantCaptureMouse && px >= 0 && py >= 0 && px < pr.width && py < pr.height) {
-            if (io.MouseWheel != 0) m.apply(at(A::Zoom, tx, py, std::pow(1.15, io.MouseWheel)));
+            if (io.MouseWheel != 0) m.apply(WorkbenchCommand::at(A::Zoom, tx, py, std::pow(1.15, io.MouseWheel)));
             if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
                 if (io.KeyCtrl)
-                    m.apply(at(A::Split, 0, 0, std::clamp(px / pr.width, 0.0, 1.0)));
+                    m.apply(WorkbenchCommand::of(A::Split, std::clamp(px / pr.width, 0.0, 1.0)));
                 else if (!m.isShadertoy())
-                    m.apply(at(A::Pan, io.MouseDelta.x * pixelScale, io.MouseDelta.y * pixelScale));
+                    m.apply(WorkbenchCommand::at(A::Pan, io.MouseDelta.x * pixelScale, io.MouseDelta.y * pixelScale));
             }
-            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) m.apply(at(A::Pick, tx, py));
+            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) m.apply(WorkbenchCommand::at(A::Pick, tx, py));
             if (m.isShadertoy()) {
                 // iMouse with ShaderToy's click semantics (gpu/shadertoy_input.h), in the program's pixels, y up.
                 const double mx = std::min(tx, double(tr.width - 1)), my = tr.height - 1 - py;
                 if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-                    m.apply(at(A::MouseDown, mx, my));
+                    m.apply(WorkbenchCommand::at(A::MouseDown, mx, my));
                 else if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
-                    m.apply(at(A::MouseMove, mx, my));
+                    m.apply(WorkbenchCommand::at(A::MouseMove, mx, my));
                 else if (ImGui::IsMouseReleased(ImGuiMouseButton_Left))
-                    m.apply(at(A::MouseUp, 0, 0));
+                    m.apply(WorkbenchCommand::of(A::MouseUp));
             }
         }
         // The key events since the last frame, each applied in order (a
