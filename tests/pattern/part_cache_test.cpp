@@ -189,5 +189,37 @@ TEST(PartCache, ABuildThatFailsKeepsNothingOfThePartThatFailed) {
     EXPECT_THROW(parts.colormap(missing), InputError);  // tried again, not a kept failure
 }
 
+// What a device made of a part (the GPU view's textures) lives as long as the
+// part is used: kept while a build of the last two generations asked for it,
+// destroyed (its deleter run: glDelete* for a texture) when the next begins
+// without it, or on clear().
+TEST(PartCache, AnAttachmentIsDestroyedTwoGenerationsAfterItsLastUse) {
+    PartCache parts;
+    const auto part = std::make_shared<const int>(7);
+    int made = 0, destroyed = 0;
+    const auto make = [&] {
+        ++made;
+        return std::shared_ptr<void>(new int(made), [&](void* p) {
+            delete static_cast<int*>(p);
+            ++destroyed;
+        });
+    };
+    const std::shared_ptr<void> first = parts.attachment(part, "texture", make);
+    EXPECT_EQ(parts.attachment(part, "texture", make), first);  // found, not made again
+    EXPECT_NE(parts.attachment(part, "pyramid", make), first);  // another thing made of the part
+    EXPECT_EQ(made, 2);
+    parts.beginGeneration();
+    EXPECT_EQ(parts.attachment(part, "texture", make), first);  // used in this generation
+    parts.beginGeneration();
+    parts.beginGeneration();  // "pyramid": last used three generations ago
+    EXPECT_EQ(destroyed, 1);
+    EXPECT_EQ(parts.size(), 1u);
+    parts.beginGeneration();  // "texture" too, but `first` still holds it
+    EXPECT_EQ(parts.size(), 0u);
+    EXPECT_EQ(destroyed, 1);
+    EXPECT_EQ(made, 2);
+    EXPECT_EQ(*static_cast<int*>(first.get()), 1);
+}
+
 }  // namespace
 }  // namespace stochtex
