@@ -31,6 +31,7 @@ void registerBake(CLI::App& app) {
     addFilterFlag(*cmd, args->options,
                   "Table: smooth | paper (σ ≤ 0.125: distant areas drift ~4/255 for the presets, docs/PATTERNS.md)");
     addAnisoFlag(*cmd, args->options.aniso);
+    addEstimatorFlag(*cmd, args->options);
     addResponseFlags(*cmd, args->response);
     addEnumFlag(*cmd, "--table-precision", args->precision, kTablePrecisionNames, "tablePrecision",
                 "half (half the size, error <= 0.06/255) | float (bit-exact with render --gpu)");

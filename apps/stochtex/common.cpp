@@ -227,6 +227,13 @@ void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterO
     if (flags.noCovariance) options.response.covariance = false;
 }
 
+CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options) {
+    return addEnumFlag(cmd, "--estimator", options.estimator, kVarianceEstimatorNames, "estimator",
+                       "Footprint estimator: paper | deliot-heitz (one variance per LOD) | sub-probes (the paper's, "
+                       "each probe as 2x2 one level finer: 4x the fetches, about a third of its sigma error at 2-8 "
+                       "texels, docs/RESULTS.md)");
+}
+
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso) {
     aniso = kDefaultAniso;
     return addParameterOption(cmd, anisoParam(), aniso);

@@ -180,6 +180,9 @@ void addResponseFlags(CLI::App& cmd, ResponseFlags& flags);
 // axes); --no-covariance without the lean response is refused.
 void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterOptions& options);
 
+// --estimator NAME (kVarianceEstimatorNames): the footprint estimator of
+// paper and smooth (refused with the other filters: refuseUnusedFilterFlags).
+CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options);
 // --aniso K (anisoParam(): 1..16, the library checks the range), set to its default, 8.
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso);
 // The checks of the filter-dependent flags: --aniso (and --estimator, --pack8:

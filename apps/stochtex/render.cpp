@@ -36,8 +36,7 @@ void registerRender(CLI::App& app) {
                   "reference (supersampled S̄)");
     addAnisoFlag(*cmd, args->options.aniso);
     addResponseFlags(*cmd, args->response);
-    addEnumFlag(*cmd, "--estimator", args->options.estimator, kVarianceEstimatorNames, "estimator",
-                "Variance estimator: paper | deliot-heitz (one variance per LOD)");
+    addEstimatorFlag(*cmd, args->options);
     addCameraFlags(*cmd, args->camera);
     addParameterOption(*cmd, referenceMaxSamplesParam(), args->options.referenceMaxSamples);
     cmd->add_flag("--pack8", args->options.pack8,

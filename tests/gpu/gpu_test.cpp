@@ -213,6 +213,12 @@ TEST(Gpu, FilteredRenderMatchesTheCpu) {
     v.width = v.height = 96;
     v.scale = 5.0;
     expectParity(p, v, "woven smooth K=8 deliot-heitz", o);
+    // The sub-probes of every probe: isotropic (K = 1) and several probes (K = 8).
+    o.estimator = VarianceEstimator::SubProbes;
+    expectParity(p, v, "woven smooth K=8 sub-probes", o);
+    o.aniso = 1;
+    v.scale = 2.5;
+    expectParity(p, v, "woven smooth K=1 sub-probes", o);
 }
 
 // A view built with a PartCache (the workbench's) draws what one built
@@ -442,6 +448,8 @@ TEST(Gpu, LeanProgramMatchesTheCpu) {
     parity(c, "plane K = 8, no covariance");
     o.estimator = VarianceEstimator::DeliotHeitz;
     parity(c, "plane K = 8, Deliot-Heitz");
+    o.estimator = VarianceEstimator::SubProbes;
+    parity(c, "plane K = 8, sub-probes");
     // Unfiltered: the base lobe around each pixel's own slope, zoomed and on the plane.
     o.source = StatisticsSource::Point;
     o.aniso = 1;

@@ -327,19 +327,21 @@ TEST(Studies, Table1ReducedRowsTablesAndPlots) {
     o.errors.count = 30;
     const Table1Result r = table1(o);
     for (const auto& rows : r.rows) {
-        ASSERT_EQ(rows.size(), 6u);  // 2 sizes × (paper, deliot-heitz, global)
+        ASSERT_EQ(rows.size(), 8u);  // 2 sizes × (paper, deliot-heitz, sub-probes, global)
         // As ReducedTable1HasSaneNumbers: at 2×2 the estimators beat the global statistics.
-        EXPECT_LT(rows[0].muAbs, 0.5 * rows[2].muAbs);
-        EXPECT_LT(rows[0].sigmaAbs, 0.5 * rows[2].sigmaAbs);
+        EXPECT_EQ(rows[3].estimator, "global");
+        EXPECT_LT(rows[0].muAbs, 0.5 * rows[3].muAbs);
+        EXPECT_LT(rows[0].sigmaAbs, 0.5 * rows[3].sigmaAbs);
         for (const auto& e : rows) EXPECT_EQ(e.values, 60);
     }
-    ASSERT_EQ(r.data.rows.size(), 12u);
-    EXPECT_EQ(r.data.rows[6][0].text, "high");
+    ASSERT_EQ(r.data.rows.size(), 16u);
+    EXPECT_EQ(r.data.rows[8][0].text, "high");
+    EXPECT_EQ(r.data.rows[2][2].text, "sub-probes");
     EXPECT_EQ(*r.data.rows[0][3].number, r.rows[0][0].muAbs);
-    ASSERT_EQ(r.tables.size(), 4u);  // paper, deliot-heitz, global, published
+    ASSERT_EQ(r.tables.size(), 5u);  // paper, deliot-heitz, sub-probes, global, published
     EXPECT_EQ(r.tables[0].rows.size(), 2u);
     EXPECT_EQ(r.tables[0].rows[1][0].text, "16×16");
-    EXPECT_EQ(r.tables[3].rows.size(), 7u);
+    EXPECT_EQ(r.tables[4].rows.size(), 7u);
     EXPECT_EQ(r.figures.size(), 4u);
     o.errors.count = 0;
     EXPECT_THROW(table1(o), InputError);

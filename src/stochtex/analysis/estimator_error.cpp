@@ -40,15 +40,19 @@ std::vector<EstimatorError> measureEstimatorErrors(const TiledField& field, cons
             globalSigma[a] = std::sqrt(std::max(0.0f, top.var[a]));
         }
     }
-    const char* names[3] = {"paper", "deliot-heitz", "global"};
+    // Every estimator of kVarianceEstimatorNames, then "global".
+    std::vector<std::string> names;
+    for (const auto& [name, mode] : kVarianceEstimatorNames) names.push_back(name);
+    names.push_back("global");
+    const size_t estimators = names.size();
     std::vector<EstimatorError> rows;
     int sizeIndex = 0;
     for (int s : options.footprints) {
         // Per footprint and estimator: |Δμ|, |Δμ|/μ, |Δσ|, |Δσ|/σ summed over
         // the two components, plus the references.
         struct Sample {
-            double e[3][4];
-            double mu, sigma;
+            std::vector<std::array<double, 4>> e;  // per estimator
+            double mu = 0, sigma = 0;
         };
         std::vector<Sample> samples(static_cast<size_t>(options.count));
         const double side = double(s) / w;
@@ -60,17 +64,22 @@ std::vector<EstimatorError> measureEstimatorErrors(const TiledField& field, cons
                 const double u = 64.0 * unitFloat(h.x), v = 64.0 * unitFloat(h.y);
                 const FootprintStats exact = bruteForceStats(field, u, v, j, options.maxSamplesPerAxis);
                 const Footprint f = makeFootprint(u, v, j, w, estimator.maxLod(), 1);
-                const FootprintStats paper = estimator.estimate(f, VarianceEstimator::Paper);
-                const FootprintStats dh = estimator.estimate(f, VarianceEstimator::DeliotHeitz);
+                std::vector<FootprintStats> estimates;
+                for (const auto& [name, mode] : kVarianceEstimatorNames)
+                    estimates.push_back(estimator.estimate(f, mode));
                 Sample& out = samples[size_t(k)];
-                out = Sample{};
+                out = Sample{std::vector<std::array<double, 4>>(estimators), 0, 0};
                 const double refMu[2] = {exact.mean[0], exact.mean[1]};
                 const double refSigma[2] = {exact.sigmaX(), exact.sigmaY()};
                 for (int a = 0; a < 2; ++a) {
-                    const double estMu[3] = {paper.mean[size_t(a)], dh.mean[size_t(a)], globalMean[size_t(a)]};
-                    const double estSigma[3] = {a == 0 ? paper.sigmaX() : paper.sigmaY(),
-                                                a == 0 ? dh.sigmaX() : dh.sigmaY(), globalSigma[size_t(a)]};
-                    for (int e = 0; e < 3; ++e) {
+                    std::vector<double> estMu, estSigma;
+                    for (const FootprintStats& e : estimates) {
+                        estMu.push_back(e.mean[size_t(a)]);
+                        estSigma.push_back(a == 0 ? e.sigmaX() : e.sigmaY());
+                    }
+                    estMu.push_back(globalMean[size_t(a)]);
+                    estSigma.push_back(globalSigma[size_t(a)]);
+                    for (size_t e = 0; e < estimators; ++e) {
                         const double dm = std::abs(estMu[e] - refMu[a]), ds = std::abs(estSigma[e] - refSigma[a]);
                         out.e[e][0] += dm;
                         out.e[e][1] += refMu[a] != 0 ? dm / std::abs(refMu[a]) : 0.0;
@@ -83,7 +92,7 @@ std::vector<EstimatorError> measureEstimatorErrors(const TiledField& field, cons
             }
         });
         const double n = 2.0 * options.count;
-        for (int e = 0; e < 3; ++e) {
+        for (size_t e = 0; e < estimators; ++e) {
             EstimatorError r;
             r.footprint = s;
             r.estimator = names[e];

@@ -16,9 +16,11 @@ static std::atomic<uint64_t> nextEstimatorId{1};
 FootprintEstimator::FootprintEstimator(const TiledField& field, bool covariance, bool pack8)
     : density_(field.gridDensity()), size_(field.exampleSize()), id_(nextEstimatorId++) {
     if (field.channelCount() != 2)
-        throw InputError::parameter("field", "must have 2 channels (N_x, N_y), got " + std::to_string(field.channelCount()));
+        throw InputError::parameter("field",
+                                    "must have 2 channels (N_x, N_y), got " + std::to_string(field.channelCount()));
     if (covariance && !field.shared())
-        throw InputError::parameter("covariance", "needs a field with shared offsets (tiles of N_x and N_y independent)");
+        throw InputError::parameter("covariance",
+                                    "needs a field with shared offsets (tiles of N_x and N_y independent)");
     noises_ = {field.channel(0), field.channel(1)};
     for (size_t a = 0; a < 2; ++a) {
         pyramids_[a] = StatsPyramid(noises_[a].example().values());
@@ -50,7 +52,8 @@ FootprintEstimator::TexelStats FootprintEstimator::texel(double u, double v, int
     one.l0 = one.l1 = level;
     one.w0 = 1.0f;
     TexelStats t = probeTexels(kernel::coord2(u, v), one).lo;
-    if (mode == VarianceEstimator::DeliotHeitz) t = kernel::deliotHeitzTexel(t, levelAverages(level), bool(covariance_));
+    if (mode == VarianceEstimator::DeliotHeitz)
+        t = kernel::deliotHeitzTexel(t, levelAverages(level), bool(covariance_));
     return t;
 }
 
@@ -69,7 +72,8 @@ kernel::ProbeTexels FootprintEstimator::probeTexels(kernel::coord2 uv, const ker
         float fv = 0;
     };
     thread_local RowMemo memo;
-    if (!(memo.v == v && memo.density == density_)) memo = RowMemo{v, density_, TriangleGridRow(v, density_), periodFraction(v)};
+    if (!(memo.v == v && memo.density == density_))
+        memo = RowMemo{v, density_, TriangleGridRow(v, density_), periodFraction(v)};
     const BlendStencil s = memo.row.stencil(u);
     const float fu = periodFraction(u), fv = memo.fv;
     // Neighbouring pixels mostly see the same tiles on the same scanline:
@@ -91,8 +95,7 @@ kernel::ProbeTexels FootprintEstimator::probeTexels(kernel::coord2 uv, const ker
         const int level = k == 0 ? levels.l0 : levels.l1;
         TexelStats& t = k == 0 ? out.lo : out.hi;
         Slot& slot = cache[size_t(k)];
-        if (slot.owner != id_ || slot.level != level || slot.fv != fv || slot.cell != s.cell ||
-            slot.upper != s.upper) {
+        if (slot.owner != id_ || slot.level != level || slot.fv != fv || slot.cell != s.cell || slot.upper != s.upper) {
             for (size_t a = 0; a < 2; ++a)
                 slot.rows[a] = noises_[a].tileRows(noises_[a].offsets(s), fv, pyramids_[a].level(level));
             if (covariance_) slot.rows[2] = noises_[0].tileRows(noises_[0].offsets(s), fv, covariance_->level(level));
@@ -127,7 +130,8 @@ __attribute__((flatten)) FootprintStats FootprintEstimator::estimate(const Footp
     // The single texel's shortcut skips the loop's sums (10 % of a paper
     // zoom's render time at scale 8; docs/PERFORMANCE.md).
     const kernel::ProbeLevels levels = kernel::probeLevels(f.layout.lod, maxLod(), f.layout.count);
-    if (kernel::isSingleTexel(f.layout.count, levels.frac)) {
+    if (kernel::isSingleTexel(f.layout.count, levels.frac) &&
+        kernel::subProbesPerSide(f.layout, subProbesOf(mode)) == 1) {
         const kernel::FootprintMoments r = kernel::texelMoments(texel(f.u, f.v, levels.l0, mode));
         return FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov};
     }
@@ -140,7 +144,7 @@ __attribute__((flatten)) FootprintStats FootprintEstimator::kernelEstimate(const
     // the kernel's (kernel/estimate.glsl), as in the shaders.
     const kernel::FootprintMoments r =
         kernel::footprintEstimate(EstimatorTexels{this}, kernel::coord2(f.u, f.v), f.layout, maxLod(),
-                                  mode == VarianceEstimator::DeliotHeitz, bool(covariance_));
+                                  mode == VarianceEstimator::DeliotHeitz, bool(covariance_), subProbesOf(mode));
     return FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov};
 }
 

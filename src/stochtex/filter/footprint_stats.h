@@ -18,8 +18,8 @@
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint.h"
-#include "stochtex/kernel/estimate.h"
 #include "stochtex/filter/pyramid.h"
+#include "stochtex/kernel/estimate.h"
 #include "stochtex/noise/tiled_field.h"
 
 namespace stochtex {
@@ -35,9 +35,14 @@ struct FootprintStats {
 enum class VarianceEstimator {
     Paper,        // eq. 12/14/15: per-texel variances from the V_l pyramid
     DeliotHeitz,  // one constant within-texel variance per LOD [DH19]
+    SubProbes,    // the paper's, each probe as 2×2 probes one level finer (kernel/estimate.glsl; 4× the fetches)
 };
 inline const EnumNames<VarianceEstimator> kVarianceEstimatorNames{{"paper", VarianceEstimator::Paper},
-                                                                  {"deliot-heitz", VarianceEstimator::DeliotHeitz}};
+                                                                  {"deliot-heitz", VarianceEstimator::DeliotHeitz},
+                                                                  {"sub-probes", VarianceEstimator::SubProbes}};
+// The sub-probes per side of a probe that an estimator reads (the kernel's
+// subProbes: 2 for SubProbes, else 1).
+inline int subProbesOf(VarianceEstimator e) { return e == VarianceEstimator::SubProbes ? 2 : 1; }
 
 class FootprintEstimator {
 public:

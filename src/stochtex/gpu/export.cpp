@@ -37,15 +37,15 @@ const char* kSampleFunction =
 
 }  // namespace
 
-std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments, const LevelAverages& levelAverages) {
+std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments, const GraphEstimator& estimator) {
     std::string text = std::string(kIncludeHeader) +
                        "// This pattern is a texture graph (docs/GRAPHS.md): its program, generated for it,\n"
                        "// defines filteredColour (moment matching through its prefiltered tables). Its seeds\n"
                        "// and means are constants here; the PatternParameters block holds\n"
                        "// gridDensity, invExampleSize, aniso, smoothTable and tableLevels.\n\n";
-    const std::vector<std::pair<std::string, std::string>> program = {{kGraphProgramStem, graphProgramSource(graph, moments, levelAverages)}};
-    for (const auto& stem :
-         shaderChunks(programRecipe("export-graph-include").main, program))
+    const std::vector<std::pair<std::string, std::string>> program = {
+        {kGraphProgramStem, graphProgramSource(graph, moments, estimator)}};
+    for (const auto& stem : shaderChunks(programRecipe("export-graph-include").main, program))
         text += (stem == kGraphProgramStem ? generatedShaderText(program[0].second) : shaderText(stem)) + "\n";
     return text + kSampleFunction;
 }
@@ -241,20 +241,26 @@ std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& 
 // "textures" entry for `uniform`.
 nlohmann::json writeTable(const PrefilteredColormap& table, int rx, int ry, const std::string& file,
                           const std::string& uniform, const std::string& what, const std::string& dir,
-                          const ExportOptions& exportOptions, nlohmann::json& textures, std::vector<WrittenFile>& files) {
+                          const ExportOptions& exportOptions, nlohmann::json& textures,
+                          std::vector<WrittenFile>& files) {
     const int n = int(table.sigmas().size());
     const Image atlas = table.atlas(rx, ry);
     WriteOptions w;
     w.exrHalf = exportOptions.halfTable;
     writeImage((fs::path(dir) / file).string(), atlas, w);
     const std::string precision = exportOptions.halfTable ? "half" : "float";
-    textures.push_back({{"uniform", uniform}, {"kind", "table"}, {"file", file}, {"layers", n * n},
-                        {"width", rx}, {"height", ry}, {"precision", precision}});
+    textures.push_back({{"uniform", uniform},
+                        {"kind", "table"},
+                        {"file", file},
+                        {"layers", n * n},
+                        {"width", rx},
+                        {"height", ry},
+                        {"precision", precision}});
     files.push_back({"`" + file + "`", exrFormat(atlas, w),
                      what + ": " + std::to_string(n * n) + " layers of " + std::to_string(rx) + " × " +
                          std::to_string(ry) + " RGB colours stacked vertically (T⁻¹ folded in), no alpha; " +
                          kTableColourSpace});
-    return {{"file", file}, {"levels", n}, {"width", rx}, {"height", ry}, {"sigmas", table.sigmas()},
+    return {{"file", file},          {"levels", n}, {"width", rx}, {"height", ry}, {"sigmas", table.sigmas()},
             {"precision", precision}};
 }
 
@@ -274,14 +280,14 @@ void writeDescription(const std::string& dir, nlohmann::json& m, const std::stri
                       std::vector<WrittenFile>& files, const std::string& shading) {
     m["colour_space"] = "linear";  // the tables and stochtex_sample: linear light, never sRGB codes
     writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
-    files.push_back({"`manifest.json`", "JSON (UTF-8)", "parameters, the textures to bind and the lists of data files"});
+    files.push_back(
+        {"`manifest.json`", "JSON (UTF-8)", "parameters, the textures to bind and the lists of data files"});
     writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), include);
     files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 source, no `#version` line",
                      "`vec4 stochtex_sample(vec2 uv)` and what it calls"});
     files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
     writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], shading, include));
 }
-
 
 }  // namespace
 
@@ -295,7 +301,8 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     nlohmann::json m;
     m["version"] = 1;
     m["filter"] = filterName(options);
-    m["estimator"] = enumName(kVarianceEstimatorNames, options.estimator);  // deliot-heitz: level averages in stochtex.glsl
+    m["estimator"] =
+        enumName(kVarianceEstimatorNames, options.estimator);  // deliot-heitz: level averages in stochtex.glsl
     m["response"] = enumName(kResponseKindNames, options.response.kind);
     // The block's members (kPatternParamFields; the program's seeds and means are its constants).
     m["example_size"] = graph.exampleSize();
@@ -319,10 +326,12 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     for (size_t p = 0; p < graph.leafPairs().size(); ++p) {
         if (!graph.pairCovariance(int(p))) continue;
         nlohmann::json list = nlohmann::json::array();
-        writeStats(*f.estimator(int(p)).covariancePyramid(), dir, "covariance_" + std::to_string(p), list,
-                   "covariance C_l of leaf pair " + std::to_string(p) + " (a lean node's slopes; R is E_l of the first)",
-                   files);
-        textures.push_back(pyramidTexture("uGraphCov" + std::to_string(p), list, "covariance, R the mean of the first leaf"));
+        writeStats(
+            *f.estimator(int(p)).covariancePyramid(), dir, "covariance_" + std::to_string(p), list,
+            "covariance C_l of leaf pair " + std::to_string(p) + " (a lean node's slopes; R is E_l of the first)",
+            files);
+        textures.push_back(
+            pyramidTexture("uGraphCov" + std::to_string(p), list, "covariance, R the mean of the first leaf"));
         covariances.push_back({{"pair", p}, {"files", list}});
     }
     nlohmann::json& tables = m["graph"]["tables"] = nlohmann::json::array();
@@ -338,8 +347,7 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
         precision.halfTable = exportOptions.halfTable && !graph.tables()[t].field;
         tables.push_back(writeTable(f.table(int(t)), h.resolutionX(), h.resolutionY(), file,
                                     "uGraphPrefiltered" + std::to_string(t),
-                                    "the prefiltered table of node \"" + node + "\"", dir, precision, textures,
-                                    files));
+                                    "the prefiltered table of node \"" + node + "\"", dir, precision, textures, files));
         tables.back()["node"] = node;
     }
     // Every table has the same σ levels (tableLevels); a graph of compose and
@@ -354,7 +362,7 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
             entry["node"] = op.id;
             m["graph"][op.info->name].push_back(std::move(entry));
         }
-    writeDescription(dir, m, exportedGraphInclude(graph, GraphMoments::Matched, graphLevelAverages(f, options)), files,
+    writeDescription(dir, m, exportedGraphInclude(graph, GraphMoments::Matched, graphEstimator(f, options)), files,
                      graph.shadesLight() ? kProgramLightSection : "");
 }
 

@@ -43,6 +43,6 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
 void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,
                        const ExportOptions& exportOptions = {});
 std::string exportedGraphInclude(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched,
-                                 const LevelAverages& levelAverages = {});
+                                 const GraphEstimator& estimator = {});
 
 }  // namespace stochtex

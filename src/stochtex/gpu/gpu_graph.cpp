@@ -136,19 +136,20 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
 
 }  // namespace
 
-LevelAverages graphLevelAverages(const FilteredGraph& filtered, const FilterOptions& options) {
-    LevelAverages out;
-    if (options.source != StatisticsSource::Estimators || options.estimator != VarianceEstimator::DeliotHeitz)
-        return out;
-    for (size_t p = 0; p < filtered.estimatorCount(); ++p) {
-        const FootprintEstimator& e = filtered.estimator(int(p));
-        std::vector<kernel::vec3>& levels = out.emplace_back();
-        for (int l = 0; l <= e.maxLod(); ++l) levels.push_back(e.levelAverages(l));
-    }
+GraphEstimator graphEstimator(const FilteredGraph& filtered, const FilterOptions& options) {
+    GraphEstimator out;
+    if (options.source != StatisticsSource::Estimators) return out;
+    out.subProbes = subProbesOf(options.estimator);
+    if (options.estimator == VarianceEstimator::DeliotHeitz)
+        for (size_t p = 0; p < filtered.estimatorCount(); ++p) {
+            const FootprintEstimator& e = filtered.estimator(int(p));
+            std::vector<kernel::vec3>& levels = out.levelAverages.emplace_back();
+            for (int l = 0; l <= e.maxLod(); ++l) levels.push_back(e.levelAverages(l));
+        }
     return out;
 }
 
-std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, const LevelAverages& levelAverages) {
+std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, const GraphEstimator& estimator) {
     std::ostringstream o;
     o << "// Generated for one texture graph (gpu/gpu_graph.cpp): the pattern's two colour\n"
          "// functions, its leaves then its operations.\n"
@@ -164,7 +165,7 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
         if (graph.pairCovariance(int(p)))
             o << "uniform sampler2D uGraphCov" << p << ";  // pair " << p << "'s C_l pyramid\n";
     writeOpHost(o, graph);
-    writeTexelSource(o, graph, levelAverages);
+    writeTexelSource(o, graph, estimator.levelAverages);
 
     o << "\nvec3 unfilteredColour(vec2 uv) {\n";
     // One stencil per pair's uv (pairs under one transform share it).
@@ -191,8 +192,8 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
         o << "    FootprintMoments p" << p << " = jacobianEstimate(" << pairSource(graph, int(p), maxLod) << ", "
           << pairUv(graph.pairTransform(int(p)), "uv", true) << ", " << pairUv(graph.pairTransform(int(p)), "jx", false)
           << ", " << pairUv(graph.pairTransform(int(p)), "jy", false) << ", " << glslFloat(float(pair.exampleSize()))
-          << ", uPattern.aniso, " << maxLod << ", " << (levelAverages.empty() ? "false" : "true") << ", "
-          << (covariance ? "true" : "false") << ");\n";
+          << ", uPattern.aniso, " << maxLod << ", " << (estimator.levelAverages.empty() ? "false" : "true") << ", "
+          << (covariance ? "true" : "false") << ", " << estimator.subProbes << ");\n";
         for (int c = 0; c < 2; ++c)
             if (c == 0 || leaves[1] != leaves[0])
                 o << "    vec3 " << slot(leaves[c]) << " = vec3(p" << p << ".mean."
@@ -235,7 +236,7 @@ GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& op
     return {estimators ? "graph-filtered" : "graph",
             estimators ? "graph-filtered-compute" : "graph-compute",
             "graph-scene",
-            {{kGraphProgramStem, graphProgramSource(graph, moments, graphLevelAverages(filtered, options))}},
+            {{kGraphProgramStem, graphProgramSource(graph, moments, graphEstimator(filtered, options))}},
             graph.shadesLight()};
 }
 

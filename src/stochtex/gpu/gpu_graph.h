@@ -28,16 +28,21 @@ namespace stochtex {
 // prefiltered tables), which the pattern's main files call (pattern.frag,
 // filtered.frag, the compute kernels, scene.frag), and the samplers they read
 // (uGraphExampleK, uGraphInverseK, uGraphStatsK per leaf; uGraphTableK,
-// uGraphPrefilteredK per table). With `levelAverages` (per leaf pair, per
-// level: graphLevelAverages) the estimators are the Deliot–Heitz baseline,
-// the averages constants of the program; without, the paper's.
+// uGraphPrefilteredK per table), with the footprint estimator `estimator`
+// says (the paper's by default).
 using LevelAverages = std::vector<std::vector<kernel::vec3>>;
+struct GraphEstimator {
+    // Per leaf pair, per level (FootprintEstimator::levelAverages): the
+    // Deliot–Heitz baseline, the averages constants of the program; empty:
+    // the texels' own variances.
+    LevelAverages levelAverages;
+    int subProbes = 1;  // per side of each probe (the sub-probes estimator: subProbesOf)
+};
 std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched,
-                               const LevelAverages& levelAverages = {});
-// Each leaf pair's level averages [DH19] from the filtered graph's
-// estimators (FootprintEstimator::levelAverages), for graphProgramSource;
-// empty unless `options` choose the Deliot–Heitz estimator.
-LevelAverages graphLevelAverages(const FilteredGraph& filtered, const FilterOptions& options);
+                               const GraphEstimator& estimator = {});
+// The estimator `options` choose, for graphProgramSource: the level averages
+// [DH19] from the filtered graph's estimators when it is Deliot–Heitz.
+GraphEstimator graphEstimator(const FilteredGraph& filtered, const FilterOptions& options);
 
 // InputError when the graph's program needs more textures than a fragment
 // shader has units (16): the point set, and with `filtered` the pyramids and

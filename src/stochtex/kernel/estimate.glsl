@@ -25,15 +25,34 @@ inline coord2 probeCentre(coord2 uv, ProbeLayout probes, int k) {
     return uv + coord(probePosition(k, probes.count)) * coord2(probes.axis);
 }
 
+// The sub-probes of a probe (the sub-probes estimator, docs/MATH.md): an
+// s×s grid over the probe's square — |axis|/N along the major axis, as much
+// across it — each read one level finer per halving (λ − log2 s, at least
+// 0) with 1/s² of the probe's weight. Eq. 14–15 sum them as they sum
+// probes, so the spread of the sub-probes' means, which eq. 12 leaves out
+// (the tiles' values are coherent over a footprint smaller than their
+// wavelength), enters σ̂². A magnified probe (λ = 0) is not split.
+inline int subProbesPerSide(ProbeLayout probes, int subProbes) {
+    return probes.lod > 0.0f ? max(subProbes, 1) : 1;
+}
+inline vec2 subProbeOffset(ProbeLayout probes, int side, int i, int j) {
+    vec2 along = probes.axis / float(probes.count);
+    vec2 across = vec2(-along.y, along.x);
+    return (float(i) + 0.5f - 0.5f * float(side)) / float(side) * along +
+           (float(j) + 0.5f - 0.5f * float(side)) / float(side) * across;
+}
+
 // μ̂, σ̂², ĉov of the source over the footprint centred at uv with these
-// probes (kernel/footprint.glsl: probeLayout). One loop for every
-// footprint, a single texel included (its statistics are then taken as
-// they are, after the loop: a branch around it would make GPU lanes run
-// both paths).
+// probes (kernel/footprint.glsl: probeLayout), each split into subProbes²
+// (1: the paper's estimator). One loop for every footprint, a single texel
+// included (its statistics are then taken as they are, after the loop: a
+// branch around it would make GPU lanes run both paths).
 STOCHTEX_HOST_TYPE(TexelSource)
 inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayout probes, int maxLod,
-                                          bool deliotHeitz, bool hasCovariance) {
-    ProbeLevels levels = probeLevels(probes.lod, maxLod, probes.count);
+                                          bool deliotHeitz, bool hasCovariance, int subProbes) {
+    int side = subProbesPerSide(probes, subProbes);
+    float lod = side > 1 ? max(probes.lod - log2Split(float(side)), 0.0f) : probes.lod;
+    ProbeLevels levels = probeLevels(lod, maxLod, probes.count * side * side);
     vec3 averageLo = vec3(0.0f);
     vec3 averageHi = vec3(0.0f);
     if (deliotHeitz) {
@@ -46,20 +65,23 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
     first.var = vec2(0.0f);
     first.cov = 0.0f;
     for (int k = 0; k < probes.count; ++k) {
-        coord2 p = probeCentre(uv, probes, k);
-        ProbeTexels t = probeTexels(src, p, levels);
-        if (deliotHeitz) {
-            t.lo = deliotHeitzTexel(t.lo, averageLo, hasCovariance);
-            t.hi = deliotHeitzTexel(t.hi, averageHi, hasCovariance);
+        coord2 centre = probeCentre(uv, probes, k);
+        for (int s = 0; s < side * side; ++s) {
+            coord2 p = side > 1 ? centre + coord2(subProbeOffset(probes, side, s % side, s / side)) : centre;
+            ProbeTexels t = probeTexels(src, p, levels);
+            if (deliotHeitz) {
+                t.lo = deliotHeitzTexel(t.lo, averageLo, hasCovariance);
+                t.hi = deliotHeitzTexel(t.hi, averageHi, hasCovariance);
+            }
+            if (k == 0 && s == 0) {
+                sums = momentsAbout(t.lo.mean);
+                first = t.lo;
+            }
+            sums = momentsAdd(sums, levels.w0, t.lo.mean, t.lo.var, t.lo.cov);
+            if (levels.w1 > 0.0f) sums = momentsAdd(sums, levels.w1, t.hi.mean, t.hi.var, t.hi.cov);
         }
-        if (k == 0) {
-            sums = momentsAbout(t.lo.mean);
-            first = t.lo;
-        }
-        sums = momentsAdd(sums, levels.w0, t.lo.mean, t.lo.var, t.lo.cov);
-        if (levels.w1 > 0.0f) sums = momentsAdd(sums, levels.w1, t.hi.mean, t.hi.var, t.hi.cov);
     }
-    if (isSingleTexel(probes.count, levels.frac)) return texelMoments(first);
+    if (isSingleTexel(probes.count * side * side, levels.frac)) return texelMoments(first);
     return momentsResult(sums);
 }
 
@@ -69,6 +91,7 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
 // filter/footprint.cpp).
 STOCHTEX_HOST_TYPE(TexelSource)
 inline FootprintMoments jacobianEstimate(TexelSource src, coord2 uv, vec2 jx, vec2 jy, float texels, int aniso,
-                                         int maxLod, bool deliotHeitz, bool hasCovariance) {
-    return footprintEstimate(src, uv, probeLayout(jx, jy, texels, aniso, maxLod), maxLod, deliotHeitz, hasCovariance);
+                                         int maxLod, bool deliotHeitz, bool hasCovariance, int subProbes) {
+    return footprintEstimate(src, uv, probeLayout(jx, jy, texels, aniso, maxLod), maxLod, deliotHeitz, hasCovariance,
+                             subProbes);
 }

@@ -33,7 +33,8 @@ const PublishedRow kPublished[] = {
     {64, {0.0851, 0.1801, 0.0355, 0.3194, 0.0017, 0.0033, 0.0441, 0.2493}},
     {128, {0.0619, 0.1310, 0.0344, 0.2444, 0.0005, 0.0009, 0.0342, 0.1882}},
 };
-const char* kEstimators[3] = {"paper", "deliot-heitz", "global"};
+// measureEstimatorErrors' rows: kVarianceEstimatorNames, then "global".
+const char* kEstimators[4] = {"paper", "deliot-heitz", "sub-probes", "global"};
 
 // "abs (rel)" as the paper prints its cells.
 TableCell errorCell(double a, double r) {
@@ -140,7 +141,8 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
     for (int which = 0; which < 2; ++which)
         for (int moment = 0; moment < 2; ++moment) {
             std::vector<PlotSeries> series;
-            const std::array<float, 3> colours[3] = {{0.1f, 0.3f, 0.8f}, {0.85f, 0.45f, 0.1f}, {0.5f, 0.5f, 0.5f}};
+            const std::array<float, 3> colours[4] = {
+                {0.1f, 0.3f, 0.8f}, {0.85f, 0.45f, 0.1f}, {0.75f, 0.15f, 0.55f}, {0.5f, 0.5f, 0.5f}};
             int c = 0;
             for (const char* est : kEstimators) {
                 PlotSeries s{std::string("ours, ") + est, {}, {}, colours[c++]};
