@@ -152,6 +152,18 @@ TEST(WorkbenchModel, KeysAreTheCommandsTheHelpLists) {
     EXPECT_EQ(m.shown().filterName, "paper");
 }
 
+// The estimator control changes the filter the picture's view is built
+// with, and asks for a new view (a new program: its loop's sub-probes).
+TEST(WorkbenchModel, TheEstimatorStepSetsTheFiltersEstimator) {
+    WorkbenchModel m(WorkbenchDocument::preset("camouflage"), options());
+    EXPECT_EQ(m.shown().filter.estimator, VarianceEstimator::Paper);
+    const long long before = m.viewVersion();
+    m.apply(WorkbenchCommand::of(A::Estimator, 0, "sub-probes"), true);
+    EXPECT_EQ(m.shown().filter.estimator, VarianceEstimator::SubProbes);
+    EXPECT_GT(m.viewVersion(), before);
+    EXPECT_THROW(m.apply(WorkbenchCommand::of(A::Estimator, 0, "dh"), true), InputError);
+}
+
 TEST(WorkbenchModel, ZoomKeepsThePointUnderTheCursorAndPanMovesByPixels) {
     WorkbenchModel m(WorkbenchDocument::preset("camouflage"), options());
     const View before = m.shown().camera.view;

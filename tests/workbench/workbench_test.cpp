@@ -539,9 +539,10 @@ TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {
     const json script = json::parse(R"([
         {"frame": 2, "zoom": 2, "at": [10, 20]}, {"filter": "paper"},
         {"frame": 5, "set": "/seed", "value": 3}, {"mode": "split"}, {"analysis": "flow"},
-        {"view": "torus"}, {"pick": [4, 5]}, {"screenshot": "a.png"}, {"quit": true}])");
+        {"view": "torus"}, {"pick": [4, 5]}, {"screenshot": "a.png"}, {"quit": true},
+        {"estimator": "sub-probes"}])");
     const std::vector<WorkbenchStep> steps = parseWorkbenchScript(script, "s.json");
-    ASSERT_EQ(steps.size(), 9u);
+    ASSERT_EQ(steps.size(), 10u);
     using A = WorkbenchStep::Action;
     EXPECT_EQ(steps[0].action, A::Zoom);
     EXPECT_EQ(steps[0].amount, 2);
@@ -554,6 +555,8 @@ TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {
     EXPECT_EQ(steps[3].text, "split");
     EXPECT_EQ(steps[5].action, A::View);
     EXPECT_EQ(steps[8].action, A::Quit);
+    EXPECT_EQ(steps[9].action, A::Estimator);
+    EXPECT_EQ(steps[9].text, "sub-probes");
 
     auto message = [](const char* text) {
         return std::string(test::inputErrorOf([&] { parseWorkbenchScript(json::parse(text), "s.json"); }).what());
@@ -566,6 +569,7 @@ TEST(WorkbenchScript, StepsKeepTheirFrameAndNameOneAction) {
     EXPECT_NE(message(R"([{"zom": 2}])").find("/0"), std::string::npos);
     EXPECT_NE(message(R"([{"mode": "quad"}])").find("/0/mode: unknown value \"quad\""), std::string::npos);
     EXPECT_NE(message(R"([{"filter": "reference"}])").find("/0/filter"), std::string::npos);
+    EXPECT_NE(message(R"([{"estimator": "dh"}])").find("/0/estimator"), std::string::npos);
     EXPECT_NE(message(R"({"zoom": 2})").find("expected an array"), std::string::npos);
 }
 

@@ -276,6 +276,9 @@ void WorkbenchModel::apply(const WorkbenchCommand& c, bool scripted) {
             if (k != s.filter.aniso) s.filter.aniso = k, viewChanged();
             break;
         }
+        case A::Estimator:
+            s.filter.estimator = parseEnum(kVarianceEstimatorNames, c.text, "estimator"), viewChanged();
+            break;
         case A::Response:
             s.response = parseEnum(kResponseKindNames, c.text, "response");
             if (s.response == ResponseKind::Lean && !hasNormalMap_) s.response = ResponseKind::PrefilteredColormap;

@@ -155,6 +155,9 @@ void WorkbenchPanels::drawViewControls(WorkbenchModel& model, const WorkbenchPic
     int aniso = s.filter.aniso;
     if (ImGui::SliderInt("aniso", &aniso, int(anisoParam().min), int(anisoParam().max)))
         model.apply(WorkbenchCommand::of(A::Aniso, aniso));
+    if (s.filterName != "none")
+        if (auto e = enumCombo("estimator", s.filter.estimator, kVarianceEstimatorNames); !e.empty())
+            model.apply(WorkbenchCommand::of(A::Estimator, 0, e));
     if (model.hasNormalMap()) {
         bool lean = s.response == ResponseKind::Lean;
         if (ImGui::Checkbox("LEAN normals (L)", &lean))

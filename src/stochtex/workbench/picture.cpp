@@ -54,7 +54,7 @@ void WorkbenchPicture::prepare(const DisplayRect& texture) {
 
 GpuView& WorkbenchPicture::renderer() {
     const WorkbenchShown& s = model_.shown();
-    auto& r = renderers_[{s.filterName, s.response, s.filter.aniso}];
+    auto& r = renderers_[{s.filterName, s.response, s.filter.aniso, s.filter.estimator}];
     if (!r) {
         FilterOptions o = s.filter;
         const bool covariance = o.response.covariance;
@@ -78,7 +78,8 @@ void WorkbenchPicture::draw(const DisplayRect& tr, const DisplayRect& pr, bool c
     TextureDisplay::Look look = TextureDisplay::kRenderTarget;
     // What a pattern's frame depends on besides the document.
     const std::string key = s.filterName + "|" + std::to_string(int(s.response)) + "|" +
-                            std::to_string(s.filter.aniso) + "|" + std::to_string(int(s.view));
+                            std::to_string(s.filter.aniso) + "|" + std::to_string(int(s.filter.estimator)) + "|" +
+                            std::to_string(int(s.view));
     if (model_.isShadertoy()) {
         texture = drawProgram(tr.width, tr.height);
         look = TextureDisplay::kGlCodes;

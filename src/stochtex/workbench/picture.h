@@ -69,7 +69,7 @@ private:
 
     // The pattern's views (one per filter, response and anisotropy: the
     // probes are compiled in), its scene and the target they draw into.
-    std::map<std::tuple<std::string, ResponseKind, int>, std::unique_ptr<GpuView>> renderers_;
+    std::map<std::tuple<std::string, ResponseKind, int, VarianceEstimator>, std::unique_ptr<GpuView>> renderers_;
     std::unique_ptr<SceneRenderer> scene_;
     const GpuView* sceneView_ = nullptr;
     std::string sceneObject_;

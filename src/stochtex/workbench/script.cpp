@@ -71,10 +71,10 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
     if (n > 100000) r.fail("at most 100000 steps");
     for (size_t i = 0; i < n; ++i) {
         const JsonReader s = r.at(i);
-        s.expectObject({"frame",  "zoom",           "at",   "pan",  "filter", "aniso",     "set",        "value",
-                        "mode",   "analysis",       "view", "tilt", "pick",   "pause",     "screenshot", "save",
-                        "record", "stop_recording", "undo", "redo", "key",    "mousedown", "mousemove",  "mouseup",
-                        "quit"});
+        s.expectObject(
+            {"frame",          "zoom",     "at",   "pan",  "filter",    "aniso",     "estimator",  "set",  "value",
+             "mode",           "analysis", "view", "tilt", "pick",      "pause",     "screenshot", "save", "record",
+             "stop_recording", "undo",     "redo", "key",  "mousedown", "mousemove", "mouseup",    "quit"});
         WorkbenchStep step;
         if (s.has("frame")) {
             const int f = s.integer("frame", 0, 0, 1000000);
@@ -107,6 +107,9 @@ std::vector<WorkbenchStep> parseWorkbenchScript(const nlohmann::json& script, co
         }
         if (auto a = s.find("aniso"))
             ++actions, step.action = A::Aniso, step.amount = a->integer(int(anisoParam().min), int(anisoParam().max));
+        if (auto e = s.find("estimator"))
+            ++actions, step.action = A::Estimator,
+                       step.text = enumName(kVarianceEstimatorNames, e->choice(kVarianceEstimatorNames));
         if (auto t = s.find("tilt"))
             ++actions, step.action = A::Tilt, step.amount = t->number(cameraTiltParam().min, cameraTiltParam().max);
         if (auto set = s.find("set")) {

@@ -7,6 +7,7 @@
 //   [{"frame": 2, "zoom": 2, "at": [80, 60]},       // wheel zoom about a pixel
 //    {"frame": 3, "pan": [10, -4]},                   // drag by pixels
 //    {"frame": 4, "filter": "paper"}, {"aniso": 4},   // filter mode, anisotropy
+//    {"estimator": "sub-probes"},                     // the footprint estimator
 //    {"frame": 5, "set": "/colormap/background", "value": "#203040"},  // an edit
 //    {"undo": true}, {"redo": true},                  // Ctrl+Z, Ctrl+Y
 //    {"mode": "split"}, {"analysis": "flow"}, {"pick": [40, 30]},
@@ -53,6 +54,7 @@ struct WorkbenchCommand {
         Pan,
         Filter,
         Aniso,
+        Estimator,
         Set,
         Undo,
         Redo,
