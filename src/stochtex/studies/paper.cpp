@@ -274,6 +274,13 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         c.estimated = FilteredGraph(pattern, fo).render(cam);
         if (o.exactStatistics) c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
         c.errEstimated = errorMap(c.estimated, c.reference, c.numbers.meanErrorEstimated);
+        // The same with the other estimators (issue 32: a column each).
+        for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
+            FilterOptions other = fo;
+            other.estimator = kVarianceEstimatorNames[e].second;
+            (void)errorMap(FilteredGraph(pattern, other).render(cam), c.reference,
+                           c.numbers.meanErrorOtherEstimators.emplace_back());
+        }
         // Not filtering at all: the pixel centres, what filtering must beat.
         (void)errorMap(FilteredGraph(pattern, fo.use(parseFilter("none"))).render(cam), c.reference,
                        c.numbers.meanErrorNone);
@@ -299,6 +306,12 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     if (o.exactStatistics)
         res.table.columns.push_back({"mean_error_exact_stats", "mean ‖Ŝ(μ, Σ) − S̄‖₂ (exact statistics)", ""});
     res.table.columns.push_back({"mean_error_estimators", "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (estimators)", ""});
+    for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
+        const std::string& name = kVarianceEstimatorNames[e].first;
+        std::string key = "mean_error_" + name;
+        std::replace(key.begin(), key.end(), '-', '_');
+        res.table.columns.push_back({key, "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (" + name + " estimator)", ""});
+    }
     if (o.fadesTo) {
         res.table.columns.push_back({"mean_fade_reference", "mean ‖S̄ − m‖₂ (m: the profile's mean)", ""});
         res.table.columns.push_back({"mean_fade_estimators", "mean ‖Ŝ(μ̂, Σ̂) − m‖₂", ""});
@@ -327,6 +340,7 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         std::vector<TableCell> cells{fp, TableCell::value(c.numbers.meanErrorNone)};
         if (o.exactStatistics) cells.push_back(TableCell::value(c.numbers.meanErrorExact));
         cells.push_back(TableCell::value(c.numbers.meanErrorEstimated));
+        for (const double error : c.numbers.meanErrorOtherEstimators) cells.push_back(TableCell::value(error));
         if (o.fadesTo) {
             cells.push_back(TableCell::value(c.numbers.meanFadeReference));
             cells.push_back(TableCell::value(c.numbers.meanFadeEstimated));
