@@ -381,18 +381,34 @@ CLI::Option* bindParameter(const CLI::App& cmd, CLI::Option* option, const std::
 
 namespace {
 
-// The option of cmd itself that sets `parameter`: the one bound to it, else
-// the one named after it (kebabCase: --radial-bins sets radialBins, as
-// OptionMember names its flags; a positional by the parameter's own name);
-// empty when cmd has neither.
-std::string flagOf(const CLI::App& cmd, const std::string& parameter) {
-    if (const auto bound = parameterBindings().find(&cmd); bound != parameterBindings().end())
-        if (const auto it = bound->second.find(parameter); it != bound->second.end()) return it->second;
+// The flag of cmd itself bound to `parameter` where it was declared, or "".
+std::string boundFlag(const CLI::App& cmd, const std::string& parameter) {
+    const auto bound = parameterBindings().find(&cmd);
+    if (bound == parameterBindings().end()) return {};
+    const auto it = bound->second.find(parameter);
+    return it == bound->second.end() ? std::string() : it->second;
+}
+
+// The option of cmd itself named after `parameter` (kebabCase: --radial-bins
+// sets radialBins, as OptionMember names its flags; a positional by the
+// parameter's own name), unless a declaration bound it to other parameters
+// (ShaderToy's --size sets width and height, not a study window's size);
+// "" when there is none.
+std::string namedFlag(const CLI::App& cmd, const std::string& parameter) {
+    const auto bound = parameterBindings().find(&cmd);
+    const auto boundElsewhere = [&](const std::string& flag) {
+        if (bound == parameterBindings().end()) return false;
+        for (const auto& [p, f] : bound->second)
+            if (f == flag) return true;
+        return false;
+    };
     const std::string named = kebabCase(parameter);
     for (const CLI::Option* o : cmd.get_options()) {
         const std::vector<std::string>& longNames = o->get_lnames();
-        if (std::find(longNames.begin(), longNames.end(), named) != longNames.end()) return "--" + named;
-        if (longNames.empty() && o->get_positional() && o->get_name(true) == parameter) return parameter;
+        if (std::find(longNames.begin(), longNames.end(), named) != longNames.end())
+            return boundElsewhere("--" + named) ? std::string() : "--" + named;
+        if (longNames.empty() && o->get_positional() && o->get_name(true) == parameter)
+            return boundElsewhere(parameter) ? std::string() : parameter;
     }
     return {};
 }
@@ -407,9 +423,12 @@ const CLI::App* commandThatRan(const CLI::App& app) {
 
 std::string describeInputError(const InputError& e, const CLI::App* ran) {
     if (e.parameter().empty()) return e.what();
-    for (const CLI::App* cmd = ran; cmd; cmd = cmd->get_parent()) {
-        if (const std::string flag = flagOf(*cmd, e.parameter()); !flag.empty()) return flag + ": " + e.what();
-    }
+    // A declaration's binding outranks a name, wherever in the chain: flow's
+    // --dt sets timeStep even under a ShaderToy source that has a --fps.
+    for (const CLI::App* cmd = ran; cmd; cmd = cmd->get_parent())
+        if (const std::string flag = boundFlag(*cmd, e.parameter()); !flag.empty()) return flag + ": " + e.what();
+    for (const CLI::App* cmd = ran; cmd; cmd = cmd->get_parent())
+        if (const std::string flag = namedFlag(*cmd, e.parameter()); !flag.empty()) return flag + ": " + e.what();
     return e.what();
 }
 

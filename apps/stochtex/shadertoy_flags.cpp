@@ -27,11 +27,8 @@ void addShadertoyFlags(CLI::App& cmd, ShadertoyFlags& f) {
     bindParameter(cmd, size, "height");
     bindParameter(cmd, cmd.add_option("--time", f.time, "iTime of frame 0, seconds")->capture_default_str(),
                   "startTime");
-    // The frame analyses' time step is 1/fps: their errors about it name --fps.
-    bindParameter(cmd,
-                  cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate")
-                      ->capture_default_str(),
-                  "timeStep");
+    cmd.add_option("--fps", f.fps, "Frames per second: iFrameRate, iTimeDelta = 1/fps, video rate")
+        ->capture_default_str();
     cmd.add_option("--mouse", f.mouse,
                    "iMouse: X,Y (the button pressed there at frame 0 and held, with ShaderToy's "
                    "click semantics) or X,Y,CLICK_X,CLICK_Y (iMouse as given, every frame), "
@@ -190,6 +187,11 @@ std::string FrameOutputs::finish() {
 }
 
 void addFrameAnalysisFlags(CLI::App& cmd, FrameAnalysisFlags& f) {
+    // The analyses' time step is 1/fps (addShadertoyFlags' --fps, added
+    // before): their errors about it name --fps. Only here: a program as a
+    // study's source (flow ... shadertoy) takes its time step from the
+    // study's own --dt.
+    if (CLI::Option* fps = cmd.get_option_no_throw("--fps")) bindParameter(cmd, fps, "timeStep");
     bindParameter(cmd,
                   cmd.add_option("--analyse", f.list,
                                  "Studies of the frames, comma-separated: spectrum (the first), flow, coherence, "

@@ -396,6 +396,8 @@ case_shadertoy() {
   expect_bad "shadertoy inspect pass" "" "--inspect: pass \"buffer_c\" names no pass of counter" -- "$bin" shadertoy "$work/st" --inspect buffer_c:1,1
   expect_ok "spectrum of a shadertoy frame" "$out/sts/index.html" -- "$bin" spectrum -o "$out/sts" --size 64 shadertoy "$src/data/shadertoy/swirl" --size 96,80 --first-frame 120
   [ -s "$out/sts/spectrum.csv" ] || fail "spectrum of a shadertoy frame: spectrum.csv not written"
+  # A program as a study's source: the study's --dt sets the time step, not the program's --fps.
+  expect_bad "flow time step of a program source" "$out/stdt" "--dt: timeStep must be in [-1e+09, 1e+09], got 2e+09" -- "$bin" flow -o "$out/stdt" --size 32 --dt 2e9 shadertoy "$src/data/shadertoy/swirl" --size 64,48
   expect_bad "spectrum window outside the frame" "$out/stw" "--size: size of the window, 128x128 at (-64, -64) from the centre, exceeds the 96x80 frame" -- "$bin" spectrum -o "$out/stw" --size 128 shadertoy "$src/data/shadertoy/swirl" --size 96,80
   expect_ok "shadertoy with a pattern" "$out/stp.png" -- "$bin" shadertoy "$src/data/shadertoy/pattern-zoom" --size 64,36 --time 5 -o "$out/stp.png"
   # A program without an instance uniform has one instance: averaging it with itself is refused.

@@ -109,21 +109,33 @@ TEST(FootprintEstimator, SingleTexelShortcutIsTheKernelLoopBitForBit) {
     for (const bool covariance : {false, true}) {
         const auto n = noisePair(e, example(SpectrumShape::Ring, 12, 3, 0, 2, 128), 5, covariance ? 5 : 6);
         const FootprintEstimator est(n, covariance);
-        int shortcuts = 0, covariances = 0;
+        int covariances = 0;
         for (const VarianceEstimator mode :
-             {VarianceEstimator::Paper, VarianceEstimator::DeliotHeitz, VarianceEstimator::SubProbes})
+             {VarianceEstimator::Paper, VarianceEstimator::DeliotHeitz, VarianceEstimator::SubProbes}) {
+            int shortcuts = 0;
             for (int i = 0; i < 200; ++i) {
                 Jacobian j;  // 2^(i mod 9) texels a pixel (levels 0–7, then clamped at the top), or a fraction
                 j.dudx = j.dvdy = std::ldexp(1.0, i % 9) / 128.0 * (i % 4 == 3 ? 1.37 : 1.0);
                 if (i % 5 == 4) j.dvdx = 0.8 * j.dudx;  // anisotropic: several probes
                 const Footprint f = makeFootprint(0.173 * i - 5.3, 0.061 * i + 2.9, j, 128, est.maxLod(), 8);
                 const kernel::ProbeLevels levels = kernel::probeLevels(f.layout.lod, est.maxLod(), f.layout.count);
-                shortcuts += kernel::isSingleTexel(f.layout.count, levels.frac);
+                // The shortcut's own condition (sub-probes: only a magnified pixel or one at the top level).
+                const bool shortcut = kernel::isSingleTexel(f.layout.count, levels.frac) &&
+                                      kernel::subProbesPerSide(f.layout, subProbesOf(mode), est.maxLod()) == 1;
+                shortcuts += shortcut;
                 const FootprintStats a = est.estimate(f, mode), b = est.kernelEstimate(f, mode);
                 EXPECT_TRUE(same(a, b)) << "footprint " << i << ", level " << f.layout.lod;
                 covariances += a.cov != 0.0f;
+                // At the top level a footprint covers the example: sub-probes read its whole statistics too.
+                if (mode == VarianceEstimator::SubProbes && f.layout.count == 1 &&
+                    f.layout.lod == float(est.maxLod())) {
+                    EXPECT_TRUE(same(a, est.estimate(f, VarianceEstimator::Paper))) << "footprint " << i;
+                }
             }
-        EXPECT_GT(shortcuts, 150);  // the shortcut is taken, so the comparison covers it
+            // The shortcut is taken, so the comparison covers it.
+            EXPECT_GT(shortcuts, mode == VarianceEstimator::SubProbes ? 20 : 50)
+                << enumName(kVarianceEstimatorNames, mode);
+        }
         if (covariance) {
             EXPECT_GT(covariances, 300);  // and reads the covariance pyramid (0 at level 0)
         }

@@ -131,7 +131,7 @@ __attribute__((flatten)) FootprintStats FootprintEstimator::estimate(const Footp
     // zoom's render time at scale 8; docs/PERFORMANCE.md).
     const kernel::ProbeLevels levels = kernel::probeLevels(f.layout.lod, maxLod(), f.layout.count);
     if (kernel::isSingleTexel(f.layout.count, levels.frac) &&
-        kernel::subProbesPerSide(f.layout, subProbesOf(mode)) == 1) {
+        kernel::subProbesPerSide(f.layout, subProbesOf(mode), maxLod()) == 1) {
         const kernel::FootprintMoments r = kernel::texelMoments(texel(f.u, f.v, levels.l0, mode));
         return FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov};
     }

@@ -58,7 +58,8 @@ public:
 
     // μ̂, σ̂², ĉov over the footprint: the kernel's loop (footprintEstimate),
     // or for a single texel (one probe at a whole level: every pixel of a
-    // zoom at a power-of-two scale, every magnified pixel) that texel's
+    // zoom at a power-of-two scale, every magnified pixel; with sub-probes,
+    // only a magnified pixel or one at the top level) that texel's
     // statistics directly, which the loop also returns after sums it then
     // drops. kernelEstimate is the loop alone; a test holds the two bit-exact.
     FootprintStats estimate(const Footprint& f, VarianceEstimator mode = VarianceEstimator::Paper) const;

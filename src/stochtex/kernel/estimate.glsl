@@ -31,9 +31,12 @@ inline coord2 probeCentre(coord2 uv, ProbeLayout probes, int k) {
 // 0) with 1/s² of the probe's weight. Eq. 14–15 sum them as they sum
 // probes, so the spread of the sub-probes' means, which eq. 12 leaves out
 // (the tiles' values are coherent over a footprint smaller than their
-// wavelength), enters σ̂². A magnified probe (λ = 0) is not split.
-inline int subProbesPerSide(ProbeLayout probes, int subProbes) {
-    return probes.lod > 0.0f ? max(subProbes, 1) : 1;
+// wavelength), enters σ̂². A magnified probe (λ = 0) is not split, nor one
+// at the top level (λ = L: the footprint covers the example, whose whole
+// statistics it reads; split, its sub-probes would sample level L − 1 at
+// points periods apart and add noise where the pattern should be flat).
+inline int subProbesPerSide(ProbeLayout probes, int subProbes, int maxLod) {
+    return probes.lod > 0.0f && probes.lod < float(maxLod) ? max(subProbes, 1) : 1;
 }
 inline vec2 subProbeOffset(ProbeLayout probes, int side, int i, int j) {
     vec2 along = probes.axis / float(probes.count);
@@ -50,7 +53,7 @@ inline vec2 subProbeOffset(ProbeLayout probes, int side, int i, int j) {
 STOCHTEX_HOST_TYPE(TexelSource)
 inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayout probes, int maxLod,
                                           bool deliotHeitz, bool hasCovariance, int subProbes) {
-    int side = subProbesPerSide(probes, subProbes);
+    int side = subProbesPerSide(probes, subProbes, maxLod);
     float lod = side > 1 ? max(probes.lod - log2Split(float(side)), 0.0f) : probes.lod;
     ProbeLevels levels = probeLevels(lod, maxLod, probes.count * side * side);
     vec3 averageLo = vec3(0.0f);
