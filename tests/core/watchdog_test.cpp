@@ -42,6 +42,13 @@ TEST(WatchdogDeathTest, WorkWithinItsBudgetEndsQuietly) {
     // parent's watching thread, started here, is not in the child: under the
     // sanitizers, its exit must find nothing of it leaked.
     { const Watchdog parent("the parent's work", 10, 1LL << 30); }
+    // Let the parent's new thread finish starting before the fork: GCC 12's
+    // ASan takes its allocator's lock in a starting thread (its stack
+    // bounds: calloc) and does not hold it across fork, so a fork in that
+    // moment left the child's allocator locked, and the child hung at its
+    // exit's leak check (seen once in a CI run; gdb of the child: its monitor
+    // thread in ThreadStart -> calloc, its main thread in LockAllocator).
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
     EXPECT_EXIT(
         {
             {
@@ -70,6 +77,7 @@ TEST(WatchdogDeathTest, WorkPastItsTimeEndsTheProcessWithStatus2) {
     // The parent's watching thread started here is not in the forked child
     // the death test runs in: the child's watch must start its own.
     { const Watchdog parent("the parent's work", 10, 1LL << 30); }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // its start-up done (above)
     EXPECT_EXIT(
         {
             const Watchdog watchdog("a sleeping pass", 0.05, 1LL << 30);
