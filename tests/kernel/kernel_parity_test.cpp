@@ -14,17 +14,17 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <string>
 #include <tuple>
 #include <utility>
-#include <string>
 #include <vector>
 
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gl_objects.h"
+#include "stochtex/gpu/shader.h"
 #include "stochtex/kernel/camera.h"
 #include "stochtex/kernel/colour.h"
 #include "stochtex/kernel/cube_map.h"
-#include "stochtex/gpu/shader.h"
 #include "stochtex/kernel/footprint.h"
 #include "stochtex/kernel/graph_ops.h"
 #include "stochtex/kernel/grid.h"
@@ -63,13 +63,18 @@ std::vector<uvec4> runOnGpu(const std::vector<std::string>& chunks, const std::s
         "layout(std430, binding = 1) writeonly buffer Outputs { uvec4 outputWords[]; };\n"
         "uniform uint uCount;\n"
         "uint gItem;\n"
-        "uvec4 word(int k) { return inputWords[gItem * " + std::to_string(inWords) + "u + uint(k)]; }\n"
+        "uvec4 word(int k) { return inputWords[gItem * " +
+        std::to_string(inWords) +
+        "u + uint(k)]; }\n"
         "vec4 wordf(int k) { return uintBitsToFloat(word(k)); }\n"
-        "void emit(int k, uvec4 v) { outputWords[gItem * " + std::to_string(outWords) + "u + uint(k)] = v; }\n"
+        "void emit(int k, uvec4 v) { outputWords[gItem * " +
+        std::to_string(outWords) +
+        "u + uint(k)] = v; }\n"
         "void emitf(int k, vec4 v) { emit(k, floatBitsToUint(v)); }\n"
         "void main() {\n"
         "    gItem = gl_GlobalInvocationID.x;\n"
-        "    if (gItem >= uCount) return;\n" + body + "\n}\n";
+        "    if (gItem >= uCount) return;\n" +
+        body + "\n}\n";
     std::vector<std::string> files = chunks;
     files.push_back("parity_harness");
     generated.emplace_back("parity_harness", harness);
@@ -91,8 +96,12 @@ std::vector<uvec4> runOnGpu(const std::vector<std::string>& chunks, const std::s
     return output;
 }
 
-uvec4 bits(vec4 v) { return uvec4(floatBitsToUint(v.x), floatBitsToUint(v.y), floatBitsToUint(v.z), floatBitsToUint(v.w)); }
-vec4 floats(uvec4 w) { return vec4(uintBitsToFloat(w.x), uintBitsToFloat(w.y), uintBitsToFloat(w.z), uintBitsToFloat(w.w)); }
+uvec4 bits(vec4 v) {
+    return uvec4(floatBitsToUint(v.x), floatBitsToUint(v.y), floatBitsToUint(v.z), floatBitsToUint(v.w));
+}
+vec4 floats(uvec4 w) {
+    return vec4(uintBitsToFloat(w.x), uintBitsToFloat(w.y), uintBitsToFloat(w.z), uintBitsToFloat(w.w));
+}
 
 // Deterministic random inputs (the kernel's own hash, seeded per test).
 struct Random {
@@ -118,9 +127,10 @@ void compareItems(const std::vector<uvec4>& gpu, int outWords, const std::functi
 std::string exactWords(const uvec4* g, const uvec4* c, int n) {
     for (int k = 0; k < n; ++k)
         if (g[k] != c[k])
-            return "word " + std::to_string(k) + " differs: GPU (" + std::to_string(g[k].x) + ", " + std::to_string(g[k].y) +
-                   ", " + std::to_string(g[k].z) + ", " + std::to_string(g[k].w) + "), C++ (" + std::to_string(c[k].x) +
-                   ", " + std::to_string(c[k].y) + ", " + std::to_string(c[k].z) + ", " + std::to_string(c[k].w) + ")";
+            return "word " + std::to_string(k) + " differs: GPU (" + std::to_string(g[k].x) + ", " +
+                   std::to_string(g[k].y) + ", " + std::to_string(g[k].z) + ", " + std::to_string(g[k].w) + "), C++ (" +
+                   std::to_string(c[k].x) + ", " + std::to_string(c[k].y) + ", " + std::to_string(c[k].z) + ", " +
+                   std::to_string(c[k].w) + ")";
     return "";
 }
 
@@ -130,8 +140,8 @@ std::string exactWords(const uvec4* g, const uvec4* c, int n) {
 std::string closeLog(float g, float c, int units, const char* what) {
     const double tolerance = units * std::ldexp(std::max(1.0, double(std::abs(c))), -23);
     if (std::abs(double(g) - double(c)) <= tolerance) return "";
-    return std::string(what) + ": GPU " + std::to_string(g) + ", C++ " + std::to_string(c) + " (|Δ| = " +
-           std::to_string(std::abs(double(g) - double(c))) + " > " + std::to_string(tolerance) + ")";
+    return std::string(what) + ": GPU " + std::to_string(g) + ", C++ " + std::to_string(c) +
+           " (|Δ| = " + std::to_string(std::abs(double(g) - double(c))) + " > " + std::to_string(tolerance) + ")";
 }
 
 class KernelParity : public ::testing::Test {
@@ -151,11 +161,14 @@ TEST_F(KernelParity, Pcg3dUnitFloatAndDeriveSeedAreBitExact) {
         emit(0, uvec4(h, deriveSeed(a.x, a.w)));
         emitf(1, vec4(unitFloat(a.x), unitFloat(a.w), 0.0, 0.0));)",
                               1, 2, in);
-    compareItems(gpu, 2, [&](int i) {
-        const uvec4 a = in[size_t(i)];
-        return std::vector<uvec4>{uvec4(pcg3d(uvec3(a.x, a.y, a.z)), deriveSeed(a.x, a.w)),
-                                  bits(vec4(unitFloat(a.x), unitFloat(a.w), 0.0f, 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 2); });
+    compareItems(
+        gpu, 2,
+        [&](int i) {
+            const uvec4 a = in[size_t(i)];
+            return std::vector<uvec4>{uvec4(pcg3d(uvec3(a.x, a.y, a.z)), deriveSeed(a.x, a.w)),
+                                      bits(vec4(unitFloat(a.x), unitFloat(a.w), 0.0f, 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 2); });
 }
 
 TEST_F(KernelParity, TriangleGridStencilVerticesAndOffsetsAreBitExact) {
@@ -172,14 +185,17 @@ TEST_F(KernelParity, TriangleGridStencilVerticesAndOffsetsAreBitExact) {
         emit(2, uvec4(stencilVertex(s, 0), stencilVertex(s, 1)));
         emitf(3, vec4(tileOffset(stencilVertex(s, 2), 77u), tileOffset(s.cell, word(0).x)));)",
                               1, 4, in);
-    compareItems(gpu, 4, [&](int i) {
-        const vec4 a = floats(in[size_t(i)]);
-        const Stencil s = triangleGrid(vec2(a.x, a.y), a.z);
-        return std::vector<uvec4>{
-            uvec4(s.cell.x, s.cell.y, uint(s.upper), 0u), bits(vec4(s.w, 0.0f)),
-            uvec4(stencilVertex(s, 0), stencilVertex(s, 1)),
-            bits(vec4(tileOffset(stencilVertex(s, 2), 77u), tileOffset(s.cell, in[size_t(i)].x)))};
-    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 4); });
+    compareItems(
+        gpu, 4,
+        [&](int i) {
+            const vec4 a = floats(in[size_t(i)]);
+            const Stencil s = triangleGrid(vec2(a.x, a.y), a.z);
+            return std::vector<uvec4>{
+                uvec4(s.cell.x, s.cell.y, uint(s.upper), 0u), bits(vec4(s.w, 0.0f)),
+                uvec4(stencilVertex(s, 0), stencilVertex(s, 1)),
+                bits(vec4(tileOffset(stencilVertex(s, 2), 77u), tileOffset(s.cell, in[size_t(i)].x)))};
+        },
+        [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 4); });
 }
 
 TEST_F(KernelParity, BlendMeanAndVarianceAreBitExact) {
@@ -195,12 +211,16 @@ TEST_F(KernelParity, BlendMeanAndVarianceAreBitExact) {
         vec4 w = wordf(0), e = wordf(1), v = wordf(2);
         emitf(0, vec4(blendMean(w.w, w.xyz, e.xyz), blendVariance(w.xyz, v.xyz), 0.0, 0.0));)",
                               3, 1, in);
-    compareItems(gpu, 1, [&](int i) {
-        const vec4 w = floats(in[size_t(i) * 3]), e = floats(in[size_t(i) * 3 + 1]), v = floats(in[size_t(i) * 3 + 2]);
-        const vec3 w3(w.x, w.y, w.z);
-        return std::vector<uvec4>{
-            bits(vec4(blendMean(w.w, w3, vec3(e.x, e.y, e.z)), blendVariance(w3, vec3(v.x, v.y, v.z)), 0.0f, 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 1); });
+    compareItems(
+        gpu, 1,
+        [&](int i) {
+            const vec4 w = floats(in[size_t(i) * 3]), e = floats(in[size_t(i) * 3 + 1]),
+                       v = floats(in[size_t(i) * 3 + 2]);
+            const vec3 w3(w.x, w.y, w.z);
+            return std::vector<uvec4>{bits(
+                vec4(blendMean(w.w, w3, vec3(e.x, e.y, e.z)), blendVariance(w3, vec3(v.x, v.y, v.z)), 0.0f, 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 1); });
 }
 
 // Random Jacobians: 2⁻¹² to 2⁴ uv per pixel (a thousandth of a texel to
@@ -231,34 +251,41 @@ TEST_F(KernelParity, ProbeLayoutCountsAndAxesAreExactLodsWithinFourUlpsOfOne) {
         emit(0, uvec4(uint(l.count), 0u, 0u, 0u));
         emitf(1, vec4(l.lod, l.axis, 0.0));)",
                               2, 2, in);
-    compareItems(gpu, 2, [&](int i) {
-        const vec4 j = floats(in[size_t(i) * 2]);
-        const uvec4 p = in[size_t(i) * 2 + 1];
-        const ProbeLayout l = probeLayout(vec2(j.x, j.y), vec2(j.z, j.w), 256.0f, int(p.x), int(p.y));
-        return std::vector<uvec4>{uvec4(uint(l.count), 0u, 0u, 0u), bits(vec4(l.lod, l.axis, 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) {
-        std::string m = exactWords(g, c, 1);
-        if (m.empty() && (g[1].y != c[1].y || g[1].z != c[1].z)) m = "axis differs";
-        if (m.empty()) m = closeLog(floats(g[1]).x, floats(c[1]).x, 4, "lod");
-        return m;
-    });
+    compareItems(
+        gpu, 2,
+        [&](int i) {
+            const vec4 j = floats(in[size_t(i) * 2]);
+            const uvec4 p = in[size_t(i) * 2 + 1];
+            const ProbeLayout l = probeLayout(vec2(j.x, j.y), vec2(j.z, j.w), 256.0f, int(p.x), int(p.y));
+            return std::vector<uvec4>{uvec4(uint(l.count), 0u, 0u, 0u), bits(vec4(l.lod, l.axis, 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) {
+            std::string m = exactWords(g, c, 1);
+            if (m.empty() && (g[1].y != c[1].y || g[1].z != c[1].z)) m = "axis differs";
+            if (m.empty()) m = closeLog(floats(g[1]).x, floats(c[1]).x, 4, "lod");
+            return m;
+        });
 }
 
 TEST_F(KernelParity, Log2SplitHasAnExactIntegerPart) {
     Random r{5};
     std::vector<uvec4> in(kItems);
-    for (auto& w : in) w = bits(vec4(std::exp2(r.uniform(-40.0f, 40.0f)), std::exp2(float(int(r.uniform(-20.0f, 20.0f)))), 0, 0));
-    const auto gpu = runOnGpu({"footprint"}, "vec4 a = wordf(0); emitf(0, vec4(log2Split(a.x), log2Split(a.y), 0.0, 0.0));",
-                              1, 1, in);
-    compareItems(gpu, 1, [&](int i) {
-        const vec4 a = floats(in[size_t(i)]);
-        return std::vector<uvec4>{bits(vec4(log2Split(a.x), log2Split(a.y), 0.0f, 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) {
-        const vec4 gf = floats(g[0]), cf = floats(c[0]);
-        if (std::floor(gf.x) != std::floor(cf.x)) return std::string("integer part differs");
-        if (gf.y != cf.y) return std::string("a power of two is not exact");  // log2 of a mantissa of 1 is 0
-        return closeLog(gf.x, cf.x, 4, "log2Split");
-    });
+    for (auto& w : in)
+        w = bits(vec4(std::exp2(r.uniform(-40.0f, 40.0f)), std::exp2(float(int(r.uniform(-20.0f, 20.0f)))), 0, 0));
+    const auto gpu = runOnGpu({"footprint"},
+                              "vec4 a = wordf(0); emitf(0, vec4(log2Split(a.x), log2Split(a.y), 0.0, 0.0));", 1, 1, in);
+    compareItems(
+        gpu, 1,
+        [&](int i) {
+            const vec4 a = floats(in[size_t(i)]);
+            return std::vector<uvec4>{bits(vec4(log2Split(a.x), log2Split(a.y), 0.0f, 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) {
+            const vec4 gf = floats(g[0]), cf = floats(c[0]);
+            if (std::floor(gf.x) != std::floor(cf.x)) return std::string("integer part differs");
+            if (gf.y != cf.y) return std::string("a power of two is not exact");  // log2 of a mantissa of 1 is 0
+            return closeLog(gf.x, cf.x, 4, "log2Split");
+        });
 }
 
 TEST_F(KernelParity, ProbePositionsAndLevelsAreBitExact) {
@@ -275,12 +302,15 @@ TEST_F(KernelParity, ProbePositionsAndLevelsAreBitExact) {
         emit(0, uvec4(uint(l.l0), uint(l.l1), uint(isSingleTexel(int(a.x), l.frac)), 0u));
         emitf(1, vec4(l.frac, l.w0, l.w1, probePosition(int(a.y), int(a.x))));)",
                               1, 2, in);
-    compareItems(gpu, 2, [&](int i) {
-        const uvec4 a = in[size_t(i)];
-        const ProbeLevels l = probeLevels(uintBitsToFloat(a.z), int(a.w), int(a.x));
-        return std::vector<uvec4>{uvec4(uint(l.l0), uint(l.l1), uint(isSingleTexel(int(a.x), l.frac)), 0u),
-                                  bits(vec4(l.frac, l.w0, l.w1, probePosition(int(a.y), int(a.x))))};
-    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 2); });
+    compareItems(
+        gpu, 2,
+        [&](int i) {
+            const uvec4 a = in[size_t(i)];
+            const ProbeLevels l = probeLevels(uintBitsToFloat(a.z), int(a.w), int(a.x));
+            return std::vector<uvec4>{uvec4(uint(l.l0), uint(l.l1), uint(isSingleTexel(int(a.x), l.frac)), 0u),
+                                      bits(vec4(l.frac, l.w0, l.w1, probePosition(int(a.y), int(a.x))))};
+        },
+        [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 2); });
 }
 
 TEST_F(KernelParity, FootprintSumsAreBitExact) {
@@ -292,8 +322,8 @@ TEST_F(KernelParity, FootprintSumsAreBitExact) {
         const uint n = 1u + r.next().x % kTexels;
         in[i] = uvec4(n, 0u, 0u, 0u);
         for (uint k = 0; k < kTexels; ++k) {
-            in[i + 1 + 2 * k] = bits(vec4(r.uniform(0.3f, 0.7f), r.uniform(0.3f, 0.7f), r.uniform(0.0f, 0.02f),
-                                          r.uniform(0.0f, 0.02f)));
+            in[i + 1 + 2 * k] = bits(
+                vec4(r.uniform(0.3f, 0.7f), r.uniform(0.3f, 0.7f), r.uniform(0.0f, 0.02f), r.uniform(0.0f, 0.02f)));
             in[i + 2 + 2 * k] = bits(vec4(r.uniform(-0.01f, 0.01f), 1.0f / float(n), 0.0f, 0.0f));
         }
     }
@@ -316,11 +346,14 @@ TEST_F(KernelParity, FootprintSumsAreBitExact) {
         emitf(0, vec4(r.mean, r.var));
         emitf(1, vec4(r.cov, 0.0, 0.0, 0.0));)",
                               1 + 2 * kTexels, 2, in);
-    compareItems(gpu, 2, [&](int i) {
-        const size_t base = size_t(i) * (1 + 2 * kTexels);
-        const FootprintMoments m = run(in[base].x, [&](int k) { return floats(in[base + 1 + size_t(k)]); });
-        return std::vector<uvec4>{bits(vec4(m.mean, m.var)), bits(vec4(m.cov, 0.0f, 0.0f, 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 2); });
+    compareItems(
+        gpu, 2,
+        [&](int i) {
+            const size_t base = size_t(i) * (1 + 2 * kTexels);
+            const FootprintMoments m = run(in[base].x, [&](int k) { return floats(in[base + 1 + size_t(k)]); });
+            return std::vector<uvec4>{bits(vec4(m.mean, m.var)), bits(vec4(m.cov, 0.0f, 0.0f, 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 2); });
 }
 
 TEST_F(KernelParity, SigmaLevelsPaperExactSmoothWithinFourUlpsOfOneAndLayerMixExact) {
@@ -341,25 +374,74 @@ TEST_F(KernelParity, SigmaLevelsPaperExactSmoothWithinFourUlpsOfOneAndLayerMixEx
         vec3 c = layerMix(vec3(a.z), vec3(a.w), vec3(a.x), vec3(a.y), a.zw);
         emitf(3, vec4(c, sigmaLevelCoordinate(a.x, false, levels)));)",
                               2, 4, in);
-    compareItems(gpu, 4, [&](int i) {
-        const vec4 a = floats(in[size_t(i) * 2]);
-        const int levels = int(in[size_t(i) * 2 + 1].x);
-        const LayerBlend p = layerBlend(vec2(a.x, a.y), true, levels), s = layerBlend(vec2(a.x, a.y), false, levels);
-        const vec3 c = layerMix(vec3(a.z), vec3(a.w), vec3(a.x), vec3(a.y), vec2(a.z, a.w));
-        return std::vector<uvec4>{uvec4(uvec2(p.k0), uvec2(p.k1)), uvec4(uvec2(s.k0), uvec2(s.k1)),
-                                  bits(vec4(p.f, s.f)), bits(vec4(c, sigmaLevelCoordinate(a.x, false, levels)))};
-    }, [](const uvec4* g, const uvec4* c) {
-        std::string m = exactWords(g, c, 1);  // paper: exact layers and weights
-        if (m.empty() && (g[2].x != c[2].x || g[2].y != c[2].y)) m = "paper weights differ";
-        if (m.empty() && (g[3].x != c[3].x || g[3].y != c[3].y || g[3].z != c[3].z)) m = "layerMix differs";
-        if (m.empty()) {  // smooth: log2 of σ·256 (coordinates ≥ 1); the layer may differ only at a whole coordinate
-            const vec4 gf = floats(g[2]), cf = floats(c[2]);
-            m = closeLog(floats(g[3]).w, floats(c[3]).w, 4, "smooth coordinate");
-            if (m.empty() && g[1] != c[1] && std::abs((float(g[1].x) + gf.z) - (float(c[1].x) + cf.z)) > 1e-6f)
-                m = "smooth layers differ away from a whole coordinate";
-        }
-        return m;
-    });
+    compareItems(
+        gpu, 4,
+        [&](int i) {
+            const vec4 a = floats(in[size_t(i) * 2]);
+            const int levels = int(in[size_t(i) * 2 + 1].x);
+            const LayerBlend p = layerBlend(vec2(a.x, a.y), true, levels),
+                             s = layerBlend(vec2(a.x, a.y), false, levels);
+            const vec3 c = layerMix(vec3(a.z), vec3(a.w), vec3(a.x), vec3(a.y), vec2(a.z, a.w));
+            return std::vector<uvec4>{uvec4(uvec2(p.k0), uvec2(p.k1)), uvec4(uvec2(s.k0), uvec2(s.k1)),
+                                      bits(vec4(p.f, s.f)), bits(vec4(c, sigmaLevelCoordinate(a.x, false, levels)))};
+        },
+        [](const uvec4* g, const uvec4* c) {
+            std::string m = exactWords(g, c, 1);  // paper: exact layers and weights
+            if (m.empty() && (g[2].x != c[2].x || g[2].y != c[2].y)) m = "paper weights differ";
+            if (m.empty() && (g[3].x != c[3].x || g[3].y != c[3].y || g[3].z != c[3].z)) m = "layerMix differs";
+            if (m.empty()) {  // smooth: log2 of σ·256 (coordinates ≥ 1); the layer may differ only at a whole
+                              // coordinate
+                const vec4 gf = floats(g[2]), cf = floats(c[2]);
+                m = closeLog(floats(g[3]).w, floats(c[3]).w, 4, "smooth coordinate");
+                if (m.empty() && g[1] != c[1] && std::abs((float(g[1].x) + gf.z) - (float(c[1].x) + cf.z)) > 1e-6f)
+                    m = "smooth layers differ away from a whole coordinate";
+            }
+            return m;
+        });
+}
+
+TEST_F(KernelParity, BetaLevelCoordinatesWithinFourUlpsOfOneAndTheirLayersAway) {
+    // Means across [−0.1, 1.1] (past the ends: the top level), deviations
+    // 2⁻¹⁴…2 (some 0), paper and smooth, each axis Beta or not. One sqrt, two
+    // divisions (GLSL rounds each within 3 ulps): coordinates within 4 ulps
+    // of max(1, c); the layers may differ only at a whole coordinate.
+    Random r{19};
+    std::vector<uvec4> in(static_cast<size_t>(kItems) * 2);
+    for (size_t i = 0; i < in.size(); i += 2) {
+        in[i] = bits(vec4(r.uniform(-0.1f, 1.1f), r.uniform(-0.1f, 1.1f), std::exp2(r.uniform(-14.0f, 1.0f)),
+                          i % 14 == 0 ? 0.0f : std::exp2(r.uniform(-14.0f, 1.0f))));
+        in[i + 1] = uvec4(6u + r.next().x % 5u, r.next().x % 2u, r.next().x % 2u, r.next().x % 2u);
+    }
+    const auto gpu = runOnGpu({"sigma_levels"}, R"(
+        vec4 a = wordf(0);
+        uvec4 w = word(1);
+        int levels = int(w.x);
+        bool paper = w.y != 0u;
+        LayerBlend b = tableLayerBlend(a.xy, a.zw, ivec2(w.zw), paper, levels);
+        emit(0, uvec4(b.k0, b.k1));
+        emitf(1, vec4(b.f, betaLevelCoordinate(a.x, a.z, paper, levels), betaLevelCoordinate(a.y, a.w, paper, levels)));)",
+                              2, 2, in);
+    compareItems(
+        gpu, 2,
+        [&](int i) {
+            const vec4 a = floats(in[size_t(i) * 2]);
+            const uvec4 w = in[size_t(i) * 2 + 1];
+            const int levels = int(w.x);
+            const bool paper = w.y != 0u;
+            const LayerBlend b = tableLayerBlend(vec2(a.x, a.y), vec2(a.z, a.w), ivec2(w.z, w.w), paper, levels);
+            return std::vector<uvec4>{uvec4(uvec2(b.k0), uvec2(b.k1)),
+                                      bits(vec4(b.f, betaLevelCoordinate(a.x, a.z, paper, levels),
+                                                betaLevelCoordinate(a.y, a.w, paper, levels)))};
+        },
+        [](const uvec4* g, const uvec4* c) {
+            const vec4 gf = floats(g[1]), cf = floats(c[1]);
+            std::string m = closeLog(gf.z, cf.z, 4, "x coordinate");
+            if (m.empty()) m = closeLog(gf.w, cf.w, 4, "y coordinate");
+            for (int k = 0; k < 2 && m.empty(); ++k)
+                if (std::abs((float(g[0][k]) + gf[k]) - (float(c[0][k]) + cf[k])) > 1e-5f)
+                    m = "layer blend of axis " + std::to_string(k) + " differs";
+            return m;
+        });
 }
 
 TEST_F(KernelParity, PlaneRayIsBitExact) {
@@ -381,12 +463,16 @@ TEST_F(KernelParity, PlaneRayIsBitExact) {
         emitf(2, vec4(r.jy, 0.0, 0.0));)",
                               2, 3, in);
     int sky = 0;
-    compareItems(gpu, 3, [&](int i) {
-        const vec4 a = floats(in[size_t(i) * 2]), b = floats(in[size_t(i) * 2 + 1]);
-        const PlaneRay r = planeRay(vec2(a.x, a.y), vec2(a.z, a.w), b.x, b.y, b.z, b.w);
-        sky += r.sky;
-        return std::vector<uvec4>{uvec4(uint(r.sky), 0u, 0u, 0u), bits(vec4(r.texels, r.jx)), bits(vec4(r.jy, 0.0f, 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 3); });
+    compareItems(
+        gpu, 3,
+        [&](int i) {
+            const vec4 a = floats(in[size_t(i) * 2]), b = floats(in[size_t(i) * 2 + 1]);
+            const PlaneRay r = planeRay(vec2(a.x, a.y), vec2(a.z, a.w), b.x, b.y, b.z, b.w);
+            sky += r.sky;
+            return std::vector<uvec4>{uvec4(uint(r.sky), 0u, 0u, 0u), bits(vec4(r.texels, r.jx)),
+                                      bits(vec4(r.jy, 0.0f, 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 3); });
     EXPECT_GT(sky, kItems / 50);  // the horizon is in the sample
     EXPECT_LT(sky, kItems / 2);
 }
@@ -398,7 +484,8 @@ TEST_F(KernelParity, CubeFaceDirectionsAreBitExact) {
     std::vector<uvec4> in(kItems);
     for (uvec4& v : in) {
         const uint size = 1u + r.next().x % 2048u;
-        const float s = (float(r.next().x % size) + 0.5f) / float(size), t = (float(r.next().x % size) + 0.5f) / float(size);
+        const float s = (float(r.next().x % size) + 0.5f) / float(size),
+                    t = (float(r.next().x % size) + 0.5f) / float(size);
         v = uvec4(r.next().x % 6u, floatBitsToUint(s), floatBitsToUint(t), 0u);
     }
     const auto gpu = runOnGpu({"cube_map"}, R"(
@@ -406,11 +493,15 @@ TEST_F(KernelParity, CubeFaceDirectionsAreBitExact) {
         emitf(0, vec4(cubeFaceDirection(int(w.x), uintBitsToFloat(w.y), uintBitsToFloat(w.z)), 0.0));)",
                               1, 1, in);
     std::array<int, 6> faces{};
-    compareItems(gpu, 1, [&](int i) {
-        const uvec4 w = in[size_t(i)];
-        ++faces[w.x];
-        return std::vector<uvec4>{bits(vec4(cubeFaceDirection(int(w.x), uintBitsToFloat(w.y), uintBitsToFloat(w.z)), 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 1); });
+    compareItems(
+        gpu, 1,
+        [&](int i) {
+            const uvec4 w = in[size_t(i)];
+            ++faces[w.x];
+            return std::vector<uvec4>{
+                bits(vec4(cubeFaceDirection(int(w.x), uintBitsToFloat(w.y), uintBitsToFloat(w.z)), 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 1); });
     for (const int n : faces) EXPECT_GT(n, kItems / 8);  // every face is in the sample
 }
 
@@ -428,7 +519,8 @@ TEST_F(KernelParity, ViewMappingsMatchTheCpuWithinFloatRounding) {
                           r.uniform(-1e4f, 1e4f), r.uniform(-1e4f, 1e4f)));
         in[i + 1] = bits(vec4(std::exp2(r.uniform(-4.0f, 6.0f)), std::ldexp(1.0f, -int(6 + r.next().x % 5u)),
                               float(1u + r.next().x % 2048u), float(1u + r.next().x % 2048u)));
-        in[i + 2] = bits(vec4(r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f)));
+        in[i + 2] =
+            bits(vec4(r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f), r.uniform(-2.0f, 2.0f)));
     }
     const auto gpu = runOnGpu({"camera"}, R"(
         vec4 a = wordf(0), b = wordf(1), m = wordf(2);
@@ -437,35 +529,39 @@ TEST_F(KernelParity, ViewMappingsMatchTheCpuWithinFloatRounding) {
         emitf(1, vec4(transformUv(uv, m.xy, m.zw, a.xy * b.y), transformVector(a.zw * b.y, m.xy, m.zw)));)",
                               3, 2, in);
     std::array<double, 8> bound{};  // the item's sums of |terms|, one per result
-    compareItems(gpu, 2, [&](int i) {
-        const vec4 a = floats(in[size_t(i) * 3]), b = floats(in[size_t(i) * 3 + 1]), m = floats(in[size_t(i) * 3 + 2]);
-        const coord2 p(a.x, a.y), offset(a.z, a.w), size(b.z, b.w), row0(m.x, m.y), row1(m.z, m.w);
-        const double scale = b.x, invW = b.y;
-        // The transforms take the GPU's uv (float) so that only their own rounding is compared.
-        const vec4 g0 = floats(gpu[size_t(i) * 2]);
-        const coord2 gpuUv(g0.x, g0.y), t = p * invW, v = offset * invW;
-        const coord2 uv = zoomUv(p, offset, scale, invW), centre = planeCentreTexel(size, offset, scale);
-        const coord2 moved = transformUv(gpuUv, row0, row1, t), vector = transformVector(v, row0, row1);
-        for (int k = 0; k < 2; ++k) {
-            bound[size_t(k)] = (std::abs(offset[k]) + std::abs(p[k] * scale)) * invW;
-            bound[size_t(2 + k)] = std::abs(offset[k]) + std::abs(0.5 * size[k] * scale);
-            const coord2 row = k == 0 ? row0 : row1;
-            bound[size_t(4 + k)] = std::abs(row.x * gpuUv.x) + std::abs(row.y * gpuUv.y) + std::abs(t[k]);
-            bound[size_t(6 + k)] = std::abs(row.x * v.x) + std::abs(row.y * v.y);
-        }
-        return std::vector<uvec4>{bits(vec4(float(uv.x), float(uv.y), float(centre.x), float(centre.y))),
-                                  bits(vec4(float(moved.x), float(moved.y), float(vector.x), float(vector.y)))};
-    }, [&](const uvec4* g, const uvec4* c) -> std::string {
-        for (int w = 0; w < 2; ++w)
-            for (int k = 0; k < 4; ++k) {
-                const float gv = floats(g[w])[k], cv = floats(c[w])[k];
-                const double tolerance = 3.0 * std::ldexp(bound[size_t(4 * w + k)], -23);
-                if (!(std::abs(double(gv) - double(cv)) <= tolerance))
-                    return "word " + std::to_string(w) + "[" + std::to_string(k) + "]: GPU " + std::to_string(gv) +
-                           ", C++ " + std::to_string(cv) + " (|Δ| > " + std::to_string(tolerance) + ")";
+    compareItems(
+        gpu, 2,
+        [&](int i) {
+            const vec4 a = floats(in[size_t(i) * 3]), b = floats(in[size_t(i) * 3 + 1]),
+                       m = floats(in[size_t(i) * 3 + 2]);
+            const coord2 p(a.x, a.y), offset(a.z, a.w), size(b.z, b.w), row0(m.x, m.y), row1(m.z, m.w);
+            const double scale = b.x, invW = b.y;
+            // The transforms take the GPU's uv (float) so that only their own rounding is compared.
+            const vec4 g0 = floats(gpu[size_t(i) * 2]);
+            const coord2 gpuUv(g0.x, g0.y), t = p * invW, v = offset * invW;
+            const coord2 uv = zoomUv(p, offset, scale, invW), centre = planeCentreTexel(size, offset, scale);
+            const coord2 moved = transformUv(gpuUv, row0, row1, t), vector = transformVector(v, row0, row1);
+            for (int k = 0; k < 2; ++k) {
+                bound[size_t(k)] = (std::abs(offset[k]) + std::abs(p[k] * scale)) * invW;
+                bound[size_t(2 + k)] = std::abs(offset[k]) + std::abs(0.5 * size[k] * scale);
+                const coord2 row = k == 0 ? row0 : row1;
+                bound[size_t(4 + k)] = std::abs(row.x * gpuUv.x) + std::abs(row.y * gpuUv.y) + std::abs(t[k]);
+                bound[size_t(6 + k)] = std::abs(row.x * v.x) + std::abs(row.y * v.y);
             }
-        return "";
-    });
+            return std::vector<uvec4>{bits(vec4(float(uv.x), float(uv.y), float(centre.x), float(centre.y))),
+                                      bits(vec4(float(moved.x), float(moved.y), float(vector.x), float(vector.y)))};
+        },
+        [&](const uvec4* g, const uvec4* c) -> std::string {
+            for (int w = 0; w < 2; ++w)
+                for (int k = 0; k < 4; ++k) {
+                    const float gv = floats(g[w])[k], cv = floats(c[w])[k];
+                    const double tolerance = 3.0 * std::ldexp(bound[size_t(4 * w + k)], -23);
+                    if (!(std::abs(double(gv) - double(cv)) <= tolerance))
+                        return "word " + std::to_string(w) + "[" + std::to_string(k) + "]: GPU " + std::to_string(gv) +
+                               ", C++ " + std::to_string(cv) + " (|Δ| > " + std::to_string(tolerance) + ")";
+                }
+            return "";
+        });
 }
 
 TEST_F(KernelParity, LookupAddressingAndBlendsAreBitExact) {
@@ -477,9 +573,11 @@ TEST_F(KernelParity, LookupAddressingAndBlendsAreBitExact) {
     for (size_t i = 0; i < in.size(); i += kIn) {
         in[i] = bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f)));
         in[i + 1] = uvec4(1u << (r.next().x % 11u), 2u + r.next().x % 1023u, 2u + r.next().x % 1023u, 0u);
-        in[i + 2] = bits(vec4(r.uniform(-0.2f, 1.2f), r.uniform(-0.2f, 1.2f), r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f)));
+        in[i + 2] =
+            bits(vec4(r.uniform(-0.2f, 1.2f), r.uniform(-0.2f, 1.2f), r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f)));
         for (size_t k = 3; k < 7; ++k)
-            in[i + k] = bits(vec4(r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(0.0f, 8.0f)));
+            in[i + k] = bits(
+                vec4(r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(-1.0f, 1.0f), r.uniform(0.0f, 8.0f)));
         in[i + 7] = bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), 0.0f));
     }
     const auto gpu = runOnGpu({"lookup"}, R"(
@@ -495,22 +593,26 @@ TEST_F(KernelParity, LookupAddressingAndBlendsAreBitExact) {
         emitf(4, blendRowsFirst(wordf(3), wordf(4), wordf(5), wordf(6), f.xy));
         emitf(5, vec4(blendEntries(c.z, c.w, f.z), 0.0, 0.0, 0.0));)",
                               kIn, 6, in);
-    compareItems(gpu, 6, [&](int i) {
-        const uvec4* item = &in[size_t(i) * kIn];
-        const vec4 a = floats(item[0]), c = floats(item[2]), f = floats(item[7]);
-        const uvec4 n = item[1];
-        const float w = float(n.x);
-        const vec2 t(periodicTexel(texelOfPoint(a.x, w), a.z * w, w), periodicTexel(texelOfPoint(a.y, w), a.w * w, w));
-        const PeriodicTaps k = periodicTaps(t, int(n.x));
-        const TableTap tx = tableTap(c.x, int(n.y)), ty = tableTap(c.y, int(n.z));
-        const vec4 e[4] = {floats(item[3]), floats(item[4]), floats(item[5]), floats(item[6])};
-        return std::vector<uvec4>{
-            bits(vec4(t, k.f)), uvec4(uvec2(k.left), uvec2(k.right)),
-            uvec4(uint(tx.i), uint(ty.i), floatBitsToUint(tx.t), floatBitsToUint(ty.t)),
-            bits(blendColumnsFirst(e[0], e[1], e[2], e[3], vec2(f.x, f.y))),
-            bits(blendRowsFirst(e[0], e[1], e[2], e[3], vec2(f.x, f.y))),
-            bits(vec4(blendEntries(c.z, c.w, f.z), 0.0f, 0.0f, 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 6); });
+    compareItems(
+        gpu, 6,
+        [&](int i) {
+            const uvec4* item = &in[size_t(i) * kIn];
+            const vec4 a = floats(item[0]), c = floats(item[2]), f = floats(item[7]);
+            const uvec4 n = item[1];
+            const float w = float(n.x);
+            const vec2 t(periodicTexel(texelOfPoint(a.x, w), a.z * w, w),
+                         periodicTexel(texelOfPoint(a.y, w), a.w * w, w));
+            const PeriodicTaps k = periodicTaps(t, int(n.x));
+            const TableTap tx = tableTap(c.x, int(n.y)), ty = tableTap(c.y, int(n.z));
+            const vec4 e[4] = {floats(item[3]), floats(item[4]), floats(item[5]), floats(item[6])};
+            return std::vector<uvec4>{bits(vec4(t, k.f)),
+                                      uvec4(uvec2(k.left), uvec2(k.right)),
+                                      uvec4(uint(tx.i), uint(ty.i), floatBitsToUint(tx.t), floatBitsToUint(ty.t)),
+                                      bits(blendColumnsFirst(e[0], e[1], e[2], e[3], vec2(f.x, f.y))),
+                                      bits(blendRowsFirst(e[0], e[1], e[2], e[3], vec2(f.x, f.y))),
+                                      bits(vec4(blendEntries(c.z, c.w, f.z), 0.0f, 0.0f, 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) { return exactWords(g, c, 6); });
 }
 
 // The sRGB pair (the window's encode): pow is the GPU's own approximation, so
@@ -520,26 +622,34 @@ TEST_F(KernelParity, SrgbTransferPairWithin1e6) {
     Random r{11};
     std::vector<uvec4> in(kItems);
     for (auto& w : in)
-        w = bits(vec4(r.uniform(-0.1f, 1.1f), r.uniform(0.0f, 0.0031308f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 0.04045f)));
+        w = bits(vec4(r.uniform(-0.1f, 1.1f), r.uniform(0.0f, 0.0031308f), r.uniform(0.0f, 1.0f),
+                      r.uniform(0.0f, 0.04045f)));
     const auto gpu = runOnGpu({"colour"}, R"(
         vec4 a = wordf(0);
         vec3 e = srgbFromLinear3(vec3(a.x, a.y, a.z));
         emitf(0, vec4(e.x, e.y, e.z, linearFromSrgb(a.z)));
         emitf(1, vec4(linearFromSrgb(a.x), linearFromSrgb(a.w), 0.0, 0.0));)",
                               1, 2, in);
-    compareItems(gpu, 2, [&](int i) {
-        const vec4 a = floats(in[size_t(i)]);
-        const vec3 e = srgbFromLinear3(vec3(a.x, a.y, a.z));
-        return std::vector<uvec4>{bits(vec4(e.x, e.y, e.z, kernel::linearFromSrgb(a.z))),
-                                  bits(vec4(kernel::linearFromSrgb(a.x), kernel::linearFromSrgb(a.w), 0.0f, 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) -> std::string {
-        const vec4 g0 = floats(g[0]), c0 = floats(c[0]), g1 = floats(g[1]), c1 = floats(c[1]);
-        for (int k = 0; k < 4; ++k) {
-            if (std::abs(g0[k] - c0[k]) > 1e-6f) return "word 0[" + std::to_string(k) + "]: GPU " + std::to_string(g0[k]) + ", C++ " + std::to_string(c0[k]);
-            if (std::abs(g1[k] - c1[k]) > 1e-6f) return "word 1[" + std::to_string(k) + "]: GPU " + std::to_string(g1[k]) + ", C++ " + std::to_string(c1[k]);
-        }
-        return "";
-    });
+    compareItems(
+        gpu, 2,
+        [&](int i) {
+            const vec4 a = floats(in[size_t(i)]);
+            const vec3 e = srgbFromLinear3(vec3(a.x, a.y, a.z));
+            return std::vector<uvec4>{bits(vec4(e.x, e.y, e.z, kernel::linearFromSrgb(a.z))),
+                                      bits(vec4(kernel::linearFromSrgb(a.x), kernel::linearFromSrgb(a.w), 0.0f, 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) -> std::string {
+            const vec4 g0 = floats(g[0]), c0 = floats(c[0]), g1 = floats(g[1]), c1 = floats(c[1]);
+            for (int k = 0; k < 4; ++k) {
+                if (std::abs(g0[k] - c0[k]) > 1e-6f)
+                    return "word 0[" + std::to_string(k) + "]: GPU " + std::to_string(g0[k]) + ", C++ " +
+                           std::to_string(c0[k]);
+                if (std::abs(g1[k] - c1[k]) > 1e-6f)
+                    return "word 1[" + std::to_string(k) + "]: GPU " + std::to_string(g1[k]) + ", C++ " +
+                           std::to_string(c1[k]);
+            }
+            return "";
+        });
 }
 
 // A random unit direction above the plane (z ≥ ~0.1 before normalising).
@@ -563,7 +673,8 @@ TEST_F(KernelParity, LeanLobeAndShadingWithin1e5) {
         const float cov = r.uniform(-1.2f, 1.2f) * std::sqrt(var.x * var.y);
         const vec2 mean(r.uniform(-0.5f, 0.5f), r.uniform(-0.5f, 0.5f));
         in.push_back(bits(vec4(mean.x, mean.y, var.x, var.y)));
-        in.push_back(bits(vec4(cov, r.uniform(0.02f, 0.5f), mean.x + r.uniform(-0.5f, 0.5f), mean.y + r.uniform(-0.5f, 0.5f))));
+        in.push_back(
+            bits(vec4(cov, r.uniform(0.02f, 0.5f), mean.x + r.uniform(-0.5f, 0.5f), mean.y + r.uniform(-0.5f, 0.5f))));
         const vec3 l = direction(), v = direction();
         in.push_back(bits(vec4(l.x, l.y, l.z, r.uniform(0.0f, 1.0f))));
         in.push_back(bits(vec4(v.x, v.y, v.z, r.uniform(0.0f, 1.0f))));
@@ -574,19 +685,23 @@ TEST_F(KernelParity, LeanLobeAndShadingWithin1e5) {
         vec3 rgb = leanShade(lobe, c.xyz, d.xyz, vec3(d.w), c.w);
         emitf(0, vec4(leanSlopeDensity(lobe, b.zw), rgb));)",
                               4, 1, in);
-    compareItems(gpu, 1, [&](int i) {
-        const vec4 a = floats(in[size_t(4 * i)]), b = floats(in[size_t(4 * i + 1)]), c = floats(in[size_t(4 * i + 2)]),
-                   d = floats(in[size_t(4 * i + 3)]);
-        const LeanLobe lobe = leanLobe(vec2(a.x, a.y), vec2(a.z, a.w), b.x, b.y);
-        const vec3 rgb = leanShade(lobe, vec3(c.x, c.y, c.z), vec3(d.x, d.y, d.z), vec3(d.w), c.w);
-        return std::vector<uvec4>{bits(vec4(leanSlopeDensity(lobe, vec2(b.z, b.w)), rgb.x, rgb.y, rgb.z))};
-    }, [](const uvec4* g, const uvec4* c) -> std::string {
-        const vec4 gv = floats(g[0]), cv = floats(c[0]);
-        for (int k = 0; k < 4; ++k)
-            if (!(std::abs(gv[k] - cv[k]) <= 1e-5f * std::max(1.0f, std::abs(cv[k]))))
-                return "[" + std::to_string(k) + "]: GPU " + std::to_string(gv[k]) + ", C++ " + std::to_string(cv[k]);
-        return "";
-    });
+    compareItems(
+        gpu, 1,
+        [&](int i) {
+            const vec4 a = floats(in[size_t(4 * i)]), b = floats(in[size_t(4 * i + 1)]),
+                       c = floats(in[size_t(4 * i + 2)]), d = floats(in[size_t(4 * i + 3)]);
+            const LeanLobe lobe = leanLobe(vec2(a.x, a.y), vec2(a.z, a.w), b.x, b.y);
+            const vec3 rgb = leanShade(lobe, vec3(c.x, c.y, c.z), vec3(d.x, d.y, d.z), vec3(d.w), c.w);
+            return std::vector<uvec4>{bits(vec4(leanSlopeDensity(lobe, vec2(b.z, b.w)), rgb.x, rgb.y, rgb.z))};
+        },
+        [](const uvec4* g, const uvec4* c) -> std::string {
+            const vec4 gv = floats(g[0]), cv = floats(c[0]);
+            for (int k = 0; k < 4; ++k)
+                if (!(std::abs(gv[k] - cv[k]) <= 1e-5f * std::max(1.0f, std::abs(cv[k]))))
+                    return "[" + std::to_string(k) + "]: GPU " + std::to_string(gv[k]) + ", C++ " +
+                           std::to_string(cv[k]);
+            return "";
+        });
 }
 
 // The marble texture and its noises (kernel/marble.glsl): cos, sin and exp2
@@ -594,9 +709,9 @@ TEST_F(KernelParity, LeanLobeAndShadingWithin1e5) {
 // at a given point), 1e-4 (the scaled layers: a rounding δl of l, a few
 // 10⁻⁷, moves the noise coordinate p = x / 2^l by |p| ln 2 δl ≤ 3·10⁻⁵
 // here, the noise by ≤ 3 times that) and 1e-3 for the marble, whose band
-// phase multiplies the noise's error by b ≤ 10 (a display code is 3.9e-3). Cell noise is piecewise constant: points within
-// 10⁻⁴ + 10⁻⁵|p| of a cell edge at either scale read are left out, since there one
-// rounding of exp2 picks the neighbouring cell on one side only.
+// phase multiplies the noise's error by b ≤ 10 (a display code is 3.9e-3). Cell noise is piecewise constant: points
+// within 10⁻⁴ + 10⁻⁵|p| of a cell edge at either scale read are left out, since there one rounding of exp2 picks the
+// neighbouring cell on one side only.
 TEST_F(KernelParity, MarbleLayersWithin1e3AndNoisesWithin1e5) {
     Random r{13};
     std::vector<uvec4> in;
@@ -607,8 +722,14 @@ TEST_F(KernelParity, MarbleLayersWithin1e3AndNoisesWithin1e5) {
         const float rate = r.uniform(-1.0f, 1.0f), frequency = r.uniform(0.0f, 0.05f);
         const int scaling = int(r.next().x % 3u);
         const uint seed = r.next().x;
-        const Marble m{vec2(r.uniform(-0.2f, 0.2f), r.uniform(-0.2f, 0.2f)), r.uniform(0.0f, 10.0f), level, amplitude,
-                       frequency, rate, scaling, seed};
+        const Marble m{vec2(r.uniform(-0.2f, 0.2f), r.uniform(-0.2f, 0.2f)),
+                       r.uniform(0.0f, 10.0f),
+                       level,
+                       amplitude,
+                       frequency,
+                       rate,
+                       scaling,
+                       seed};
         const double l = double(marbleLevel(m, x, t)), k = std::floor(l);
         bool edge = false;
         const auto cellEdge = [&](double level, uint cellSeed) {
@@ -635,27 +756,32 @@ TEST_F(KernelParity, MarbleLayersWithin1e3AndNoisesWithin1e5) {
                       marbleValue(m, kMarbleLayerScalingOnly, x, a.z), marbleValue(m, kMarbleLayerBaseNoise, x, a.z)));
         emitf(1, vec4(gradientNoise(x * 0.03125, c.w), cellNoise(x * 0.03125, c.w), marbleLevel(m, x, a.z), 0.0));)",
                               3, 2, in);
-    compareItems(gpu, 2, [&](int i) {
-        const vec4 a = floats(in[size_t(3 * i)]), b = floats(in[size_t(3 * i + 1)]);
-        const uvec4 c = in[size_t(3 * i + 2)];
-        const Marble m{vec2(a.w, b.x), b.y, b.z, b.w, uintBitsToFloat(c.x), uintBitsToFloat(c.y), int(c.z), c.w};
-        const vec2 x(a.x, a.y);
-        return std::vector<uvec4>{
-            bits(vec4(marbleValue(m, kMarbleLayerMarble, x, a.z), marbleValue(m, kMarbleLayerScaledNoise, x, a.z),
-                      marbleValue(m, kMarbleLayerScalingOnly, x, a.z), marbleValue(m, kMarbleLayerBaseNoise, x, a.z))),
-            bits(vec4(gradientNoise(x * 0.03125f, c.w), cellNoise(x * 0.03125f, c.w), marbleLevel(m, x, a.z), 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) -> std::string {
-        const vec4 layers = floats(g[0]) - floats(c[0]), noises = floats(g[1]) - floats(c[1]);
-        for (int k = 0; k < 4; ++k) {
-            if (!(std::abs(layers[k]) <= (k == 0 ? 1e-3f : 1e-4f)))
-                return "layer " + std::to_string(k) + ": GPU " + std::to_string(floats(g[0])[k]) + ", C++ " +
-                       std::to_string(floats(c[0])[k]);
-            if (!(std::abs(noises[k]) <= 1e-5f))
-                return "noise " + std::to_string(k) + ": GPU " + std::to_string(floats(g[1])[k]) + ", C++ " +
-                       std::to_string(floats(c[1])[k]);
-        }
-        return "";
-    });
+    compareItems(
+        gpu, 2,
+        [&](int i) {
+            const vec4 a = floats(in[size_t(3 * i)]), b = floats(in[size_t(3 * i + 1)]);
+            const uvec4 c = in[size_t(3 * i + 2)];
+            const Marble m{vec2(a.w, b.x), b.y, b.z, b.w, uintBitsToFloat(c.x), uintBitsToFloat(c.y), int(c.z), c.w};
+            const vec2 x(a.x, a.y);
+            return std::vector<uvec4>{
+                bits(vec4(marbleValue(m, kMarbleLayerMarble, x, a.z), marbleValue(m, kMarbleLayerScaledNoise, x, a.z),
+                          marbleValue(m, kMarbleLayerScalingOnly, x, a.z),
+                          marbleValue(m, kMarbleLayerBaseNoise, x, a.z))),
+                bits(vec4(gradientNoise(x * 0.03125f, c.w), cellNoise(x * 0.03125f, c.w), marbleLevel(m, x, a.z),
+                          0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) -> std::string {
+            const vec4 layers = floats(g[0]) - floats(c[0]), noises = floats(g[1]) - floats(c[1]);
+            for (int k = 0; k < 4; ++k) {
+                if (!(std::abs(layers[k]) <= (k == 0 ? 1e-3f : 1e-4f)))
+                    return "layer " + std::to_string(k) + ": GPU " + std::to_string(floats(g[0])[k]) + ", C++ " +
+                           std::to_string(floats(c[0])[k]);
+                if (!(std::abs(noises[k]) <= 1e-5f))
+                    return "noise " + std::to_string(k) + ": GPU " + std::to_string(floats(g[1])[k]) + ", C++ " +
+                           std::to_string(floats(c[1])[k]);
+            }
+            return "";
+        });
 }
 
 // What the texture-graph ops share (kernel/graph_ops.glsl) on random
@@ -667,8 +793,10 @@ TEST_F(KernelParity, GraphOperationsWithin4UlpsOfOne) {
     std::vector<uvec4> in;
     for (int i = 0; i < kItems; ++i) {
         const float mean = r.uniform(-1.0f, 2.0f);
-        in.push_back(bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(-1.0f, 2.0f))));
-        in.push_back(bits(vec4(mean, mean * mean + r.uniform(-0.01f, 0.2f), r.uniform(-1.0f, 2.0f), r.uniform(-0.05f, 0.3f))));
+        in.push_back(
+            bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(-1.0f, 2.0f))));
+        in.push_back(
+            bits(vec4(mean, mean * mean + r.uniform(-0.01f, 0.2f), r.uniform(-1.0f, 2.0f), r.uniform(-0.05f, 0.3f))));
     }
     const auto gpu = runOnGpu({"graph_ops"}, R"(
         vec4 c = wordf(0), m = wordf(1);
@@ -677,23 +805,27 @@ TEST_F(KernelParity, GraphOperationsWithin4UlpsOfOne) {
         emitf(1, vec4(momentEntry(c.w).xy, matchedMoments(vec3(m.x, m.y, 0.0))));
         emitf(2, vec4(momentSigma(m.zw), 0.0, 0.0, 0.0));)",
                               2, 3, in);
-    compareItems(gpu, 3, [&](int i) {
-        const vec4 c = floats(in[size_t(2 * i)]), m = floats(in[size_t(2 * i + 1)]);
-        const vec3 rgb(c.x, c.y, c.z);
-        const vec3 entry = momentEntry(c.w);
-        const vec2 matched = matchedMoments(vec3(m.x, m.y, 0.0f));
-        return std::vector<uvec4>{
-            bits(vec4(graphChannel(rgb, kGraphChannelRed), graphChannel(rgb, kGraphChannelGreen),
-                      graphChannel(rgb, kGraphChannelBlue), graphChannel(rgb, kGraphChannelLuminance))),
-            bits(vec4(entry.x, entry.y, matched.x, matched.y)), bits(vec4(momentSigma(vec2(m.z, m.w)), 0.0f, 0.0f, 0.0f))};
-    }, [](const uvec4* g, const uvec4* c) -> std::string {
-        for (int w = 0; w < 3; ++w)
-            for (int k = 0; k < 4; ++k) {
-                const std::string m = closeLog(floats(g[w])[k], floats(c[w])[k], 4, "graph op");
-                if (!m.empty()) return "word " + std::to_string(w) + "[" + std::to_string(k) + "] " + m;
-            }
-        return "";
-    });
+    compareItems(
+        gpu, 3,
+        [&](int i) {
+            const vec4 c = floats(in[size_t(2 * i)]), m = floats(in[size_t(2 * i + 1)]);
+            const vec3 rgb(c.x, c.y, c.z);
+            const vec3 entry = momentEntry(c.w);
+            const vec2 matched = matchedMoments(vec3(m.x, m.y, 0.0f));
+            return std::vector<uvec4>{
+                bits(vec4(graphChannel(rgb, kGraphChannelRed), graphChannel(rgb, kGraphChannelGreen),
+                          graphChannel(rgb, kGraphChannelBlue), graphChannel(rgb, kGraphChannelLuminance))),
+                bits(vec4(entry.x, entry.y, matched.x, matched.y)),
+                bits(vec4(momentSigma(vec2(m.z, m.w)), 0.0f, 0.0f, 0.0f))};
+        },
+        [](const uvec4* g, const uvec4* c) -> std::string {
+            for (int w = 0; w < 3; ++w)
+                for (int k = 0; k < 4; ++k) {
+                    const std::string m = closeLog(floats(g[w])[k], floats(c[w])[k], 4, "graph op");
+                    if (!m.empty()) return "word " + std::to_string(w) + "[" + std::to_string(k) + "] " + m;
+                }
+            return "";
+        });
 }
 
 // A host of the ops for the parity test (pattern/ops/op_host.h): tables
@@ -706,7 +838,9 @@ vec3 opPrefiltered(OpContext ctx, vec2 xy, vec2 sigma) { return vec3(xy.x + sigm
 )";
 struct TestOpTables final : OpTableLookup {
     vec3 point(int table, vec2 xy) const override { return vec3(xy.x, xy.y, xy.x * xy.y + float(table)); }
-    vec3 prefiltered(int, vec2 xy, vec2 sigma) const override { return vec3(xy.x + sigma.x, xy.x * xy.x + sigma.y, xy.y); }
+    vec3 prefiltered(int, vec2 xy, vec2 sigma) const override {
+        return vec3(xy.x + sigma.x, xy.x * xy.x + sigma.y, xy.y);
+    }
 };
 
 // Every op of the list (pattern/ops/ops.h), both entry points, on random
@@ -730,7 +864,8 @@ void checkOpParity() {
         const float va = r.uniform(0.0f, 0.1f), vb = r.uniform(0.0f, 0.1f);
         in.push_back(bits(vec4(r.uniform(-0.5f, 1.5f), va, r.uniform(0.0f, 1.0f), r.uniform(-0.5f, 1.5f))));
         in.push_back(bits(vec4(vb, r.uniform(0.0f, 1.0f), r.uniform(-0.5f, 1.5f), r.uniform(0.0f, 1.0f))));
-        in.push_back(bits(vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(-1.2f, 1.2f) * std::sqrt(va * vb), 0.0f)));
+        in.push_back(bits(
+            vec4(r.uniform(0.0f, 1.0f), r.uniform(0.0f, 1.0f), r.uniform(-1.2f, 1.2f) * std::sqrt(va * vb), 0.0f)));
         const vec3 eye = direction(), light = direction();
         in.push_back(bits(vec4(eye, r.uniform(0.0f, 1.0f) < 0.5f ? 0.0f : 1.0f)));
         in.push_back(bits(vec4(light, 0.0f)));
@@ -742,7 +877,9 @@ void checkOpParity() {
             p[2] = l.x, p[3] = l.y, p[4] = l.z;
             p[5] = r.uniform(0.0f, 1.0f) < 0.5f ? 0.0f : 1.0f;
         }
-        for (int w = 0; w < paramWords; ++w) in.push_back(bits(vec4(p[size_t(4 * w)], p[size_t(4 * w + 1)], p[size_t(4 * w + 2)], p[size_t(4 * w + 3)])));
+        for (int w = 0; w < paramWords; ++w)
+            in.push_back(
+                bits(vec4(p[size_t(4 * w)], p[size_t(4 * w + 1)], p[size_t(4 * w + 2)], p[size_t(4 * w + 3)])));
     }
     const int inWords = 5 + paramWords;
     std::string params = paramsStructName(Op::kKernel) + "(";
@@ -753,47 +890,52 @@ void checkOpParity() {
         vec4 w0 = wordf(0), w1 = wordf(1), w2 = wordf(2), e = wordf(3), l = wordf(4);
         vec3 a = vec3(w0.x, w0.y, 0.0), b = vec3(w0.w, w1.x, 0.0), c = vec3(w1.y, w1.z, w1.w);
         OpContext ctx = OpContext(2, e.xyz, vec4(l.xyz, e.w), w2.z);
-        emitf(0, vec4(opPoint()" + params + R"(, a, b, c, ctx), 0.0));
-        emitf(1, vec4(opFiltered()" + params + R"(, a, b, c, ctx), 0.0));)";
-    const auto gpu = runOnGpu({"op_test_host", Op::kKernel}, body, inWords, 2, in,
-                              {{"op_test_host", kTestOpHost}});
+        emitf(0, vec4(opPoint()" +
+                             params + R"(, a, b, c, ctx), 0.0));
+        emitf(1, vec4(opFiltered()" +
+                             params + R"(, a, b, c, ctx), 0.0));)";
+    const auto gpu = runOnGpu({"op_test_host", Op::kKernel}, body, inWords, 2, in, {{"op_test_host", kTestOpHost}});
     const TestOpTables tables;
-    compareItems(gpu, 2, [&](int i) {
-        const auto word = [&](int k) { return floats(in[size_t(inWords * i + k)]); };
-        const vec4 w0 = word(0), w1 = word(1), w2 = word(2), e = word(3), l = word(4);
-        const vec3 a(w0.x, w0.y, 0.0f), b(w0.w, w1.x, 0.0f), c(w1.y, w1.z, w1.w);
-        OpContext ctx;
-        ctx.table = 2;
-        ctx.eye = vec3(e.x, e.y, e.z);
-        ctx.light = vec4(l.x, l.y, l.z, e.w);
-        ctx.slopeCov = w2.z;
-        ctx.tables = &tables;
-        float f[paramWords * 4];
-        for (int k = 0; k < paramWords; ++k)
-            for (int j = 0; j < 4; ++j) f[4 * k + j] = word(5 + k)[j];
-        P p;
-        std::memcpy(&p, f, sizeof p);
-        return std::vector<uvec4>{bits(vec4(opPoint(p, a, b, c, ctx), 0.0f)), bits(vec4(opFiltered(p, a, b, c, ctx), 0.0f))};
-    }, [lean](const uvec4* g, const uvec4* c) -> std::string {
-        for (int w = 0; w < 2; ++w)
-            for (int k = 0; k < 3; ++k) {
-                const float gv = floats(g[w])[k], cv = floats(c[w])[k];
-                const std::string what = w == 0 ? "opPoint" : "opFiltered";
-                if (lean) {
-                    if (!(std::abs(gv - cv) <= 1e-5f * std::max(1.0f, std::abs(cv))))
-                        return what + " [" + std::to_string(k) + "]: GPU " + std::to_string(gv) + ", C++ " + std::to_string(cv);
-                } else if (const std::string m = closeLog(gv, cv, 4, what.c_str()); !m.empty()) {
-                    return m + " [" + std::to_string(k) + "]";
+    compareItems(
+        gpu, 2,
+        [&](int i) {
+            const auto word = [&](int k) { return floats(in[size_t(inWords * i + k)]); };
+            const vec4 w0 = word(0), w1 = word(1), w2 = word(2), e = word(3), l = word(4);
+            const vec3 a(w0.x, w0.y, 0.0f), b(w0.w, w1.x, 0.0f), c(w1.y, w1.z, w1.w);
+            OpContext ctx;
+            ctx.table = 2;
+            ctx.eye = vec3(e.x, e.y, e.z);
+            ctx.light = vec4(l.x, l.y, l.z, e.w);
+            ctx.slopeCov = w2.z;
+            ctx.tables = &tables;
+            float f[paramWords * 4];
+            for (int k = 0; k < paramWords; ++k)
+                for (int j = 0; j < 4; ++j) f[4 * k + j] = word(5 + k)[j];
+            P p;
+            std::memcpy(&p, f, sizeof p);
+            return std::vector<uvec4>{bits(vec4(opPoint(p, a, b, c, ctx), 0.0f)),
+                                      bits(vec4(opFiltered(p, a, b, c, ctx), 0.0f))};
+        },
+        [lean](const uvec4* g, const uvec4* c) -> std::string {
+            for (int w = 0; w < 2; ++w)
+                for (int k = 0; k < 3; ++k) {
+                    const float gv = floats(g[w])[k], cv = floats(c[w])[k];
+                    const std::string what = w == 0 ? "opPoint" : "opFiltered";
+                    if (lean) {
+                        if (!(std::abs(gv - cv) <= 1e-5f * std::max(1.0f, std::abs(cv))))
+                            return what + " [" + std::to_string(k) + "]: GPU " + std::to_string(gv) + ", C++ " +
+                                   std::to_string(cv);
+                    } else if (const std::string m = closeLog(gv, cv, 4, what.c_str()); !m.empty()) {
+                        return m + " [" + std::to_string(k) + "]";
+                    }
                 }
-            }
-        return "";
-    });
+            return "";
+        });
 }
 
 TEST_F(KernelParity, EveryOpMatchesTheCpu) {
-    []<size_t... I>(std::index_sequence<I...>) {
-        (checkOpParity<I>(), ...);
-    }(std::make_index_sequence<std::tuple_size_v<OpList::Tuple>>{});
+    []<size_t... I>(std::index_sequence<I...>) { (checkOpParity<I>(), ...); }
+    (std::make_index_sequence<std::tuple_size_v<OpList::Tuple>>{});
 }
 
 // The CPU's periodic grids keep a padded copy and vector loads; held here,
@@ -820,7 +962,8 @@ TEST(KernelCpuPath, PeriodicGridsFollowTheKernelLookup) {
             const PeriodicTaps k = periodicTaps(t, w);
             const auto texel = [&](int x, int y) { return vec4(img.at(x, y), 0.0f, 0.0f, 0.0f); };
             return blendColumnsFirst(texel(k.left.x, k.left.y), texel(k.right.x, k.left.y), texel(k.left.x, k.right.y),
-                                     texel(k.right.x, k.right.y), k.f).x;
+                                     texel(k.right.x, k.right.y), k.f)
+                .x;
         };
         int mismatches = 0;
         for (int i = 0; i < kItems / 4; ++i) {
@@ -836,7 +979,8 @@ TEST(KernelCpuPath, PeriodicGridsFollowTheKernelLookup) {
             mismatches += pair.sample(p.x, p.y)[1] != kernelLookup(second, p, vec2(0.0f));
             if (w < 2) continue;
             const auto tiles = noise.tileValues<1>(noise.tileRows(offsets, p.y, example->grid()), p.x, example->grid());
-            for (size_t t = 0; t < 3; ++t) mismatches += tiles[t][0] != kernelLookup(values, p, vec2(offsets[t].x, offsets[t].y));
+            for (size_t t = 0; t < 3; ++t)
+                mismatches += tiles[t][0] != kernelLookup(values, p, vec2(offsets[t].x, offsets[t].y));
             mismatches += example->grid().sampleBilinear(p.x, p.y) != kernelLookup(values, p, vec2(0.0f));
         }
         EXPECT_EQ(mismatches, 0) << "W = " << w;

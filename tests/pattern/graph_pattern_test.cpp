@@ -7,9 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -19,8 +20,8 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/kernel/graph_ops.h"
 #include "stochtex/pattern/json_reader.h"
-#include "test_util.h"
 #include "stochtex/pattern/presets.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -66,7 +67,8 @@ TEST(GraphOps, KernelFunctionsOnKnownInputs) {
     EXPECT_NEAR(a.x, 0.0, 1e-7);
     EXPECT_NEAR(a.y, 0.16, 1e-7);
     EXPECT_NEAR(opPoint(AffineParams{-2.0f, 1.0f}, vec3(0.25f, 0.0f, 0.0f), vec3(0.0f), vec3(0.0f), none).x, 0.5, 1e-7);
-    const vec3 s = opFiltered(SumParams{0.5f, 0.5f}, vec3(0.2f, 0.01f, 0.0f), vec3(0.6f, 0.04f, 0.0f), vec3(0.0f), none);
+    const vec3 s =
+        opFiltered(SumParams{0.5f, 0.5f}, vec3(0.2f, 0.01f, 0.0f), vec3(0.6f, 0.04f, 0.0f), vec3(0.0f), none);
     EXPECT_NEAR(s.x, 0.4, 1e-7);
     EXPECT_NEAR(s.y, 0.0125, 1e-8);
     EXPECT_NEAR(opPoint(SumParams{0.25f, 2.0f}, vec3(0.2f, 0, 0), vec3(0.6f, 0, 0), vec3(0.0f), none).x, 1.25, 1e-7);
@@ -76,12 +78,14 @@ TEST(GraphOps, KernelFunctionsOnKnownInputs) {
     EXPECT_EQ(mix(1.0f).y, 0.6f);
     EXPECT_NEAR(mix(0.25f).x, 0.3, 1e-7);
     EXPECT_NEAR(mix(2.0f).x, 1.7, 1e-6);  // not clamped
-    const vec3 rgb = opFiltered(ComposeParams{}, vec3(0.1f, 0.5f, 0.0f), vec3(0.2f, 0.5f, 0.0f), vec3(0.3f, 0.5f, 0.0f), none);
+    const vec3 rgb =
+        opFiltered(ComposeParams{}, vec3(0.1f, 0.5f, 0.0f), vec3(0.2f, 0.5f, 0.0f), vec3(0.3f, 0.5f, 0.0f), none);
     EXPECT_EQ(rgb.x, 0.1f);
     EXPECT_EQ(rgb.y, 0.2f);
     EXPECT_EQ(rgb.z, 0.3f);
     // product: exact moments of the product of independent fields.
-    const vec3 pr = opFiltered(ProductParams{2.0f}, vec3(0.5f, 0.04f, 0.0f), vec3(0.25f, 0.01f, 0.0f), vec3(0.0f), none);
+    const vec3 pr =
+        opFiltered(ProductParams{2.0f}, vec3(0.5f, 0.04f, 0.0f), vec3(0.25f, 0.01f, 0.0f), vec3(0.0f), none);
     EXPECT_NEAR(pr.x, 2.0 * 0.5 * 0.25, 1e-7);
     EXPECT_NEAR(pr.y, 4.0 * (0.04 * 0.01 + 0.04 * 0.25 * 0.25 + 0.01 * 0.5 * 0.5), 1e-7);
     EXPECT_NEAR(opPoint(ProductParams{2.0f}, vec3(0.5f, 0, 0), vec3(0.25f, 0, 0), vec3(0.0f), none).x, 0.25, 1e-7);
@@ -204,13 +208,18 @@ TEST(GraphPattern, PlainFileAndItsGraphSpellingAreOneProgram) {
         SCOPED_TRACE(offsets);
         const std::string head = R"({"seed": 4, "offsets": ")" + std::string(offsets) + R"(", )";
         const GraphPattern plain = GraphPattern::build(parse(head + R"(
-            "noise_x": {"type": "spectrum", "size": 64, )" + noiseX + R"(},
-            "noise_y": {"type": "spectrum", "size": 64, )" + noiseY + R"(},
+            "noise_x": {"type": "spectrum", "size": 64, )" + noiseX +
+                                                             R"(},
+            "noise_y": {"type": "spectrum", "size": 64, )" + noiseY +
+                                                             R"(},
             "colormap": )" + colormap + "}"));
         const GraphPattern spelt = GraphPattern::build(parse(head + R"("nodes": {
-            "a": {"type": "spectral_noise", "size": 64, )" + noiseX + R"(},
-            "b": {"type": "spectral_noise", "size": 64, )" + noiseY + R"(},
-            "c": {"type": "colormap", "x": "a", "y": "b", "colormap": )" + colormap + R"(}}, "output": "c"})"));
+            "a": {"type": "spectral_noise", "size": 64, )" + noiseX +
+                                                             R"(},
+            "b": {"type": "spectral_noise", "size": 64, )" + noiseY +
+                                                             R"(},
+            "c": {"type": "colormap", "x": "a", "y": "b", "colormap": )" +
+                                                             colormap + R"(}}, "output": "c"})"));
         ASSERT_NE(plain.plainColormap(), nullptr);
         ASSERT_NE(spelt.plainColormap(), nullptr);
         const View view{48, 40, 1.7, 13.25, -40.5};
@@ -231,10 +240,14 @@ TEST(GraphPattern, PlainFileAndItsGraphSpellingAreOneProgram) {
                 EXPECT_EQ(a.skyColour(), b.skyColour()) << filter;
                 EXPECT_TRUE(identical(a.render(cam), b.render(cam))) << filter << (onPlane ? ", plane" : ", zoom");
             }
-        const GraphPattern derivative = GraphPattern::build(parse(head + R"("nodes": {
-            "h": )" + kNoise + R"(, "n": {"type": "spectral_noise", "size": 64, "components": [{"shape": "ring", "frequency": 6, "bandwidth": 2}]},
+        const GraphPattern derivative = GraphPattern::build(parse(
+            head + R"("nodes": {
+            "h": )" +
+            kNoise +
+            R"(, "n": {"type": "spectral_noise", "size": 64, "components": [{"shape": "ring", "frequency": 6, "bandwidth": 2}]},
             "d": {"type": "derivative", "input": "h", "angle": 30},
-            "c": {"type": "colormap", "x": "d", "y": "n", "colormap": )" + colormap + R"(}}, "output": "c"})"));
+            "c": {"type": "colormap", "x": "d", "y": "n", "colormap": )" +
+            colormap + R"(}}, "output": "c"})"));
         ASSERT_NE(derivative.plainColormap(), nullptr);
         EXPECT_EQ(derivative.leafIds()[0], "d");
     }
@@ -277,8 +290,8 @@ TEST(GraphPattern, PlainProgramShortcutIsTheInterpreterBitForBit) {
                 const FootprintEstimator& e = f.estimator(0);
                 const FootprintStats st =
                     e.estimate(makeFootprint(u, v, j, e.exampleSize(), e.maxLod(), o.aniso), o.estimator);
-                const Rgb interpreted = f.fromMoments({{st.mean[0], std::max(st.varX, 0.0f)}, {st.mean[1], std::max(st.varY, 0.0f)}},
-                                                      {st.cov});
+                const Rgb interpreted = f.fromMoments(
+                    {{st.mean[0], std::max(st.varX, 0.0f)}, {st.mean[1], std::max(st.varY, 0.0f)}}, {st.cov});
                 ASSERT_EQ(f.shade(true, u, v, j), interpreted) << filter << " at " << px << ", " << py;
                 ++shaded;
             }
@@ -286,7 +299,9 @@ TEST(GraphPattern, PlainProgramShortcutIsTheInterpreterBitForBit) {
     }
     // A colormap reading one node twice is no plain program: its one leaf is tiled once.
     EXPECT_EQ(GraphPattern::build(parse(graph(R"("x": )" + kNoise + R"(,
-        "c": {"type": "colormap", "x": "x", "y": "x", "colormap": {"type": "gaussian"}})"))).plainColormap(), nullptr);
+        "c": {"type": "colormap", "x": "x", "y": "x", "colormap": {"type": "gaussian"}})")))
+                  .plainColormap(),
+              nullptr);
 }
 
 // Each non-linear node on known inputs: the node's value against its
@@ -308,9 +323,12 @@ TEST(GraphPattern, EachOperationComputesItsFormulaOnItsInputs) {
         "b": {"type": "spectral_noise", "size": 64, "seed": 8, "stddev": 0.1, "components": [{"shape": "lowpass", "cutoff": 3}]},
         "up": {"type": "curve", "input": "a", "points": [[0, 0], [1, 1]]},
         "down": {"type": "curve", "input": "a", "points": [[0, 0.9], [0.5, 0.1], [1, 0.3]], "resolution": 1024},
-        "lum": {"type": "colormap_field", "x": "a", "y": "b", "colormap": )" + image + R"(},
-        "green": {"type": "colormap_field", "x": "a", "y": "b", "channel": "green", "colormap": )" + image + R"(},
-        "blue": {"type": "colormap_field", "x": "a", "y": "b", "channel": "blue", "colormap": )" + image + R"(},
+        "lum": {"type": "colormap_field", "x": "a", "y": "b", "colormap": )" +
+                              image + R"(},
+        "green": {"type": "colormap_field", "x": "a", "y": "b", "channel": "green", "colormap": )" +
+                              image + R"(},
+        "blue": {"type": "colormap_field", "x": "a", "y": "b", "channel": "blue", "colormap": )" +
+                              image + R"(},
         "ax": {"type": "affine", "input": "lum", "scale": -2, "offset": 1.5},
         "sm": {"type": "sum", "a": "ax", "b": "down", "weight_a": 0.25, "weight_b": 0.5},
         "red": {"type": "colormap", "x": "sm", "y": "green", "colormap": {"type": "painted", "background": [1, 0, 0], "shapes": []}},
@@ -331,7 +349,8 @@ TEST(GraphPattern, EachOperationComputesItsFormulaOnItsInputs) {
             ASSERT_GT(vb, 0.0);
             ASSERT_LT(vb, 1.0);
             EXPECT_NEAR(up.at(x, y, 0), va, 1e-6);
-            // 1024 entries: the table's linear interpolation is exact between its kinks, off by ≤ 1.6/1023·½ near x = ½.
+            // 1024 entries: the table's linear interpolation is exact between its kinks, off by ≤ 1.6/1023·½ near x =
+            // ½.
             EXPECT_NEAR(down.at(x, y, 0), curve(va), std::abs(va - 0.5) < 1e-3 ? 8e-4 : 1e-5);
             // The channels of H(a, b) = (a, b, 0.25), and its Rec. 709 luminance.
             EXPECT_NEAR(green.at(x, y, 0), vb, 1e-6);
@@ -355,14 +374,20 @@ TEST(GraphPattern, EachOperationComputesItsFormulaOnItsInputs) {
 // transformed point (the leaf keeps its example and tile seed), and filtered:
 // a zoom at scale k through a ×2 transform is the untransformed zoom at 2k.
 TEST(GraphPattern, TransformSeesItsInputThroughTheMappedUv) {
-    const std::string head = R"("n": {"type": "spectral_noise", "size": 64, "seed": 4, "components": [{"shape": "bilobe", "frequency": 6, "bandwidth": 2, "orientation": 20}]},
+    const std::string head =
+        R"("n": {"type": "spectral_noise", "size": 64, "seed": 4, "components": [{"shape": "bilobe", "frequency": 6, "bandwidth": 2, "orientation": 20}]},
         "k": {"type": "curve", "input": "f", "points": [[0, 0], [0.5, 1], [1, 0.2]]},
         "c": {"type": "colormap", "x": "k", "y": "f", "colormap": {"type": "phasor", "profile": "sine"}})";
     const GraphPattern plain = GraphPattern::build(parse(graph(head + R"(, "f": {"type": "affine", "input": "n"})")));
-    const GraphPattern turned = GraphPattern::build(parse(graph(head + R"(, "f": {"type": "transform", "input": "n", "angle": 90, "scale": 2, "offset_u": 0.25, "offset_v": -3})")));
+    const GraphPattern turned = GraphPattern::build(parse(graph(
+        head +
+        R"(, "f": {"type": "transform", "input": "n", "angle": 90, "scale": 2, "offset_u": 0.25, "offset_v": -3})")));
     // A transformed leaf is no plain program: the plain loop reads one pair through no transform.
-    EXPECT_EQ(GraphPattern::build(parse(graph(R"("n": )" + kNoise + R"(, "f": {"type": "transform", "input": "n", "scale": 2},
-        "c": {"type": "colormap", "x": "f", "y": "n", "colormap": {"type": "gaussian"}})"))).plainColormap(), nullptr);
+    EXPECT_EQ(
+        GraphPattern::build(parse(graph(R"("n": )" + kNoise + R"(, "f": {"type": "transform", "input": "n", "scale": 2},
+        "c": {"type": "colormap", "x": "f", "y": "n", "colormap": {"type": "gaussian"}})")))
+            .plainColormap(),
+        nullptr);
     ASSERT_FALSE(turned.pairTransform(0).identity());
     double worst = 0;
     for (int i = 0; i < 200; ++i) {
@@ -373,7 +398,8 @@ TEST(GraphPattern, TransformSeesItsInputThroughTheMappedUv) {
     }
     EXPECT_LT(worst, 1e-5);
     // Filtered: scale only, so the views are the same region of the input.
-    const GraphPattern zoomed = GraphPattern::build(parse(graph(head + R"(, "f": {"type": "transform", "input": "n", "scale": 2})")));
+    const GraphPattern zoomed =
+        GraphPattern::build(parse(graph(head + R"(, "f": {"type": "transform", "input": "n", "scale": 2})")));
     FilterOptions o;
     o.use(parseFilter("smooth"));
     Camera near, far;
@@ -404,40 +430,65 @@ TEST(GraphPattern, TransformSeesItsInputThroughTheMappedUv) {
 // E[X²] = μ² + σ² = 0.265625; σ = 0.125 is one of the table's σ levels, so
 // only the curve and the layer's resampling (32 entries at this σ, error
 // ≤ (1/31)²/4 = 2.6e-4) are in the way. A second x² then reads
-// Y = X² as Gaussian of mean m and variance v = 4μ²σ² + 2σ⁴ = 0.016113:
-// E[Y²] = m² + v = 0.086670, against m² = 0.070557 when only the mean is
-// passed on; its σ = 0.127 lies between levels, where the smooth table's
-// log2 interpolation adds ≤ 6e-4. A mix of black and white by the result
-// shows its mean as the colour.
-TEST(GraphPattern, MomentsThroughCurvesMatchTheGaussianExpectations) {
+// Y = X² ∈ [0, 1] as the Beta of its mean m and variance
+// v = 4μ²σ² + 2σ⁴ = 0.016113 (a Beta axis): E[Y²] = m² + v = 0.086670 for
+// any distribution of those moments, against m² = 0.070557 when only the
+// mean is passed on. Its τ = 0.144 lies between levels, where the smooth
+// table interpolates in τ², exact for x² (log2 τ would add 0.0034). A mix
+// of black and white by the result shows its mean as the colour.
+TEST(GraphPattern, MomentsThroughCurvesMatchTheExpectations) {
     std::string points;
-    for (int k = 0; k <= 32; ++k) points += std::string(k ? ", " : "") + "[" + std::to_string(k / 32.0) + ", " +
-                                            std::to_string((k / 32.0) * (k / 32.0)) + "]";
+    for (int k = 0; k <= 32; ++k)
+        points += std::string(k ? ", " : "") + "[" + std::to_string(k / 32.0) + ", " +
+                  std::to_string((k / 32.0) * (k / 32.0)) + "]";
     const std::string square = R"({"type": "curve", "resolution": 1024, "points": [)" + points + "], \"input\": ";
-    const std::string shades = R"("black": {"type": "colormap", "x": "a", "y": "a", "colormap": {"type": "painted", "background": [0, 0, 0], "shapes": []}},
+    const std::string shades =
+        R"("black": {"type": "colormap", "x": "a", "y": "a", "colormap": {"type": "painted", "background": [0, 0, 0], "shapes": []}},
         "white": {"type": "colormap", "x": "a", "y": "a", "colormap": {"type": "painted", "background": [1, 1, 1], "shapes": []}},)";
-    const GraphPattern once = GraphPattern::build(parse(graph(R"("a": )" + kNoise + ", " + shades +
-                                                             R"("sq": )" + square + R"("a"},
+    const GraphPattern once =
+        GraphPattern::build(parse(graph(R"("a": )" + kNoise + ", " + shades + R"("sq": )" + square + R"("a"},
         "c": {"type": "mix", "a": "black", "b": "white", "t": "sq"})")));
-    const GraphPattern twice = GraphPattern::build(parse(graph(R"("a": )" + kNoise + ", " + shades +
-                                                              R"("sq": )" + square + R"("a"}, "sq2": )" + square + R"("sq"},
+    const GraphPattern twice = GraphPattern::build(
+        parse(graph(R"("a": )" + kNoise + ", " + shades + R"("sq": )" + square + R"("a"}, "sq2": )" + square + R"("sq"},
         "c": {"type": "mix", "a": "black", "b": "white", "t": "sq2"})")));
     FilterOptions o;
     o.use(parseFilter("smooth"));
     const std::vector<std::array<float, 2>> leaf{{0.5f, 0.015625f}};
     ASSERT_EQ(once.leafCount(), 1);  // the black and white colormaps read the leaf too (a constant colour)
     EXPECT_NEAR(FilteredGraph(once, o).fromMoments(leaf)[0], 0.265625, 6e-4);
-    EXPECT_NEAR(FilteredGraph(twice, o).fromMoments(leaf)[0], 0.086670, 1.5e-3);
+    EXPECT_NEAR(FilteredGraph(twice, o).fromMoments(leaf)[0], 0.086670, 6e-4);  // 0.086916 measured
     EXPECT_NEAR(FilteredGraph(twice, o, GraphMoments::MeanOnly).fromMoments(leaf)[0], 0.070557, 1e-3);
     // Without the input's variance the curve gives f(μ) = 0.25.
     EXPECT_NEAR(FilteredGraph(once, o).fromMoments({{0.5f, 0.0f}})[0], 0.25, 1e-3);
 }
 
+TEST(GraphPattern, ATableReadsAnOpsFieldWithinZeroOneAsABetaAndALeafAsAGaussian) {
+    // Figure 14: "direction" reads the two derivative leaves; "colour" reads
+    // direction's g ∈ [0, 1] along x and the height leaf along y.
+    const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
+    std::map<std::string, BetaAxes> beta;
+    for (const GraphPattern::Operation& op : g.operations())
+        if (op.table >= 0) beta[op.id] = g.tables()[size_t(op.table)].beta;
+    EXPECT_EQ(beta.at("direction"), (BetaAxes{false, false}));
+    EXPECT_EQ(beta.at("colour"), (BetaAxes{true, false}));
+    // A field's range decides, through affine ops: within [0, 1] a Beta,
+    // reaching 2 a Gaussian.
+    for (const auto& [scale, want] : {std::pair{"0.5", true}, {"2", false}}) {
+        const GraphPattern h = GraphPattern::build(
+            parse(graph(R"("a": )" + kNoise + R"(, "k": {"type": "curve", "input": "a", "points": [[0, 0.2], [1, 0.9]]},
+            "f": {"type": "affine", "input": "k", "scale": )" +
+                        std::string(scale) + R"(, "offset": 0.05},
+            "c": {"type": "colormap", "x": "f", "y": "a", "colormap": {"type": "gaussian"}})")));
+        const GraphPattern::Operation& c = h.operations().back();
+        EXPECT_EQ(h.tables()[size_t(c.table)].beta, (BetaAxes{want, false})) << "scale " << scale;
+    }
+}
+
 // Figure 14's graph zoomed out: moment matching stays near the reference
 // where pixel centres alias and passing the intermediate field's mean alone
-// loses its variance. Measured at 128² (reproduce figure14 --size 128): at
-// 16 texels per pixel none 0.318, mean-only 0.324, matched 0.145; here
-// 32², ≤ 32² reference samples.
+// loses its variance. Measured here (32², ≤ 32² reference samples, 16
+// texels per pixel, 2026-12-05): none 0.320, mean-only 0.333, matched 0.107
+// with g read as a Beta (docs/MATH.md); reproduce figure14 has the rest.
 TEST(GraphPattern, MomentMatchingFiltersFigure14CloserToTheReference) {
     const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
     for (const int footprint : {1, 16}) {
@@ -454,9 +505,9 @@ TEST(GraphPattern, MomentMatchingFiltersFigure14CloserToTheReference) {
             EXPECT_LT(matched, 0.06);
             EXPECT_LT(none, 0.06);
         } else {
-            EXPECT_LT(matched, 0.6 * none) << none;
-            EXPECT_LT(matched, 0.6 * meanOnly) << meanOnly;
-            EXPECT_LT(matched, 0.2);
+            EXPECT_LT(matched, 0.4 * none) << none;
+            EXPECT_LT(matched, 0.4 * meanOnly) << meanOnly;
+            EXPECT_LT(matched, 0.13);
         }
     }
 }
@@ -493,7 +544,8 @@ std::string buildError(const std::string& text, ResponseKind response = Response
 }
 
 TEST(GraphPattern, RefusesWhatItCannotEvaluateNamingTheNode) {
-    const std::string curve = R"("a": )" + kNoise + R"(, "k": {"type": "curve", "input": "a", "points": [[0, 1], [1, 0]]},)";
+    const std::string curve =
+        R"("a": )" + kNoise + R"(, "k": {"type": "curve", "input": "a", "points": [[0, 1], [1, 0]]},)";
     std::string e = buildError(graph(curve + R"( "d": {"type": "derivative", "input": "k"},
         "c": {"type": "colormap", "x": "d", "y": "a", "colormap": {"type": "gaussian"}})"));
     EXPECT_NE(e.find("node \"d\" (derivative): its input \"k\" is not linear in the sources"), std::string::npos) << e;
@@ -518,8 +570,11 @@ TEST(GraphPattern, RefusesWhatItCannotEvaluateNamingTheNode) {
     EXPECT_NE(e.find("node \"c\" (mix): its input \"x\" is a Gaussianized exemplar"), std::string::npos) << e;
     std::filesystem::remove(file);
     // A constant is no texture.
-    e = buildError(graph(R"("k": {"type": "colour", "colour": "#ff8000"}, "c": {"type": "mix", "a": "k", "b": "k", "t": "k2"},
-        "k2": {"type": "colormap_field", "x": "n", "y": "n", "colormap": {"type": "gaussian"}}, "n": )" + kNoise, "k"));
+    e = buildError(
+        graph(R"("k": {"type": "colour", "colour": "#ff8000"}, "c": {"type": "mix", "a": "k", "b": "k", "t": "k2"},
+        "k2": {"type": "colormap_field", "x": "n", "y": "n", "colormap": {"type": "gaussian"}}, "n": )" +
+                  kNoise,
+              "k"));
     EXPECT_NE(e.find("the output \"k\" reads no field"), std::string::npos) << e;
 }
 
@@ -550,7 +605,8 @@ TEST(GraphPattern, ColourNodeIsItsLinearColourEverywhere) {
             "c": {"type": "mix", "a": "k", "b": "k", "t": "a"})"));
         ADD_FAILURE() << "an invalid colour was accepted";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("/nodes/k/colour: invalid colour \"orange\""), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("/nodes/k/colour: invalid colour \"orange\""), std::string::npos)
+            << e.what();
     }
 }
 
@@ -565,15 +621,20 @@ TEST(GraphPattern, RefusesBadCurvesAndChoicesWithTheirJsonPointer) {
     };
     const std::string a = R"("a": )" + kNoise + ",";
     const std::string tail = R"(, "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}})";
-    std::string e = parseError(graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0], [0.5, 1], [0.5, 0]]})" + tail));
+    std::string e = parseError(
+        graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0], [0.5, 1], [0.5, 0]]})" + tail));
     EXPECT_NE(e.find("/nodes/k/points/2/0: x must increase"), std::string::npos) << e;
     e = parseError(graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0]]})" + tail));
     EXPECT_NE(e.find("/nodes/k/points: a curve needs 2 to 1024 points"), std::string::npos) << e;
     e = parseError(graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0], [1.5, 1]]})" + tail));
     EXPECT_NE(e.find("/nodes/k/points/1/0"), std::string::npos) << e;
-    e = parseError(graph(a + R"( "k": {"type": "colormap_field", "x": "a", "y": "a", "channel": "alpha", "colormap": {"type": "gaussian"}})" + tail));
+    e = parseError(graph(
+        a +
+        R"( "k": {"type": "colormap_field", "x": "a", "y": "a", "channel": "alpha", "colormap": {"type": "gaussian"}})" +
+        tail));
     EXPECT_NE(e.find("/nodes/k/channel: unknown value \"alpha\"; expected one of red, green, blue, luminance"),
-              std::string::npos) << e;
+              std::string::npos)
+        << e;
 }
 
 }  // namespace

@@ -349,6 +349,9 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
                                     "uGraphPrefiltered" + std::to_string(t),
                                     "the prefiltered table of node \"" + node + "\"", dir, precision, textures, files));
         tables.back()["node"] = node;
+        // The axes read as a Beta of (mean, σ) (kernel tableLayerBlend; the
+        // include's lookup already does).
+        tables.back()["beta_axes"] = {graph.tables()[t].beta[0], graph.tables()[t].beta[1]};
     }
     // Every table has the same σ levels (tableLevels); a graph of compose and
     // lean nodes alone has none.

@@ -52,11 +52,14 @@ void writeOpHost(std::ostringstream& o, const GraphPattern& graph) {
     for (const bool filtered : {false, true}) {
         o << (filtered ? "vec3 opPrefiltered(OpContext ctx, vec2 xy, vec2 sigma) {\n"
                        : "vec3 opTable(OpContext ctx, vec2 xy) {\n");
-        for (size_t t = 0; t < graph.tables().size(); ++t)
+        for (size_t t = 0; t < graph.tables().size(); ++t) {
+            const BetaAxes& beta = graph.tables()[t].beta;
             o << "    if (ctx.table == " << t << ") return "
-              << (filtered ? "prefilteredLookup(uGraphPrefiltered" + std::to_string(t) + ", xy, sigma)"
+              << (filtered ? "prefilteredLookup(uGraphPrefiltered" + std::to_string(t) + ", xy, sigma, ivec2(" +
+                                 std::to_string(beta[0]) + ", " + std::to_string(beta[1]) + "))"
                            : "tableLookup(uGraphTable" + std::to_string(t) + ", 0, xy)")
               << ";\n";
+        }
         o << "    return vec3(0.0);\n}\n";
     }
 }

@@ -311,7 +311,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         }
         p.operations_.push_back(std::move(op));
     }
-    checkProgramRange(p, examples, context);
+    settleProgramRanges(p, examples, context);
     return p;
 }
 
@@ -323,9 +323,11 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
 // op's also from its entries (curve, colormap), from the leaves' ranges: a
 // blend of three tiles lies within √3 of the largest deviation from the
 // example's mean. The lean op's specular peak may lie inside its inputs'
-// ranges; its colour feeds no field op.
-void GraphPattern::checkProgramRange(const GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                     const std::string& context) {
+// ranges; its colour feeds no field op. The same ranges tell which table
+// inputs are bounded fields, filtered as Betas (kernel betaLevelCoordinate): an
+// op's field, never a leaf (a noise, Gaussian by construction).
+void GraphPattern::settleProgramRanges(GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                       const std::string& context) {
     std::vector<vec3> lo, hi;
     for (const NoiseExample& e : examples) {
         float deviation = 0;
@@ -336,6 +338,10 @@ void GraphPattern::checkProgramRange(const GraphPattern& p, const std::vector<No
     }
     kernel::OpContext ctx;
     for (const Operation& op : p.operations_) {
+        if (op.table >= 0)
+            for (size_t axis = 0; axis < 2; ++axis)
+                if (const int s = op.inputs[axis]; s >= p.leafCount())
+                    p.tables_[size_t(op.table)].beta[axis] = lo[size_t(s)].x >= 0.0f && hi[size_t(s)].x <= 1.0f;
         ctx.table = op.table;
         ctx.pointTable = op.table >= 0 ? &p.tables_[size_t(op.table)].point : nullptr;
         vec3 outLo(INFINITY), outHi(-INFINITY);
@@ -602,7 +608,7 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         } catch (const InputError& e) {
             throw InputError("node \"" + op.id + "\": " + e.what());
         }
-        tables_.push_back(prefilteredPart(parts, t, options.response.prefilter));
+        tables_.push_back(prefilteredPart(parts, t, options.response.prefilter, graph.tables()[size_t(op.table)].beta));
     }
     sky_ = plain_ ? plainSky() : fromMoments(whole, wholeCov);
     if (options.source == StatisticsSource::Estimators)

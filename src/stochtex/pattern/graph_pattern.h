@@ -142,10 +142,12 @@ public:
 
 private:
     friend class FilteredGraph;
-    // InputError naming the first operation whose values can leave
-    // [−kMaxFieldValue, kMaxFieldValue] over the leaves' ranges.
-    static void checkProgramRange(const GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                  const std::string& context);
+    // Each slot's range over the leaves' ranges: InputError naming the first
+    // operation whose values can leave [−kMaxFieldValue, kMaxFieldValue];
+    // a table's axis whose input is an op's field within [0, 1] becomes a
+    // Beta axis (OpTable::beta).
+    static void settleProgramRanges(GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                    const std::string& context);
     using Slots = std::vector<kernel::vec3>;
     // The operations on slots whose leaves are set; returns slot `lastSlot`.
     Rgb run(Slots& slots, int lastSlot, const Direction& eye) const;

@@ -15,8 +15,9 @@ std::shared_ptr<const ColormapTable> makeColormap(const ColormapSpec& spec) {
 std::shared_ptr<const FootprintEstimator> makeEstimator(const TiledField& field, bool covariance, bool pack8) {
     return std::make_shared<const FootprintEstimator>(field, covariance, pack8);
 }
-std::shared_ptr<const PrefilteredColormap> makePrefiltered(const ColormapTable& blended, PrefilterMode mode) {
-    return std::make_shared<const PrefilteredColormap>(blended, mode);
+std::shared_ptr<const PrefilteredColormap> makePrefiltered(const ColormapTable& blended, PrefilterMode mode,
+                                                           BetaAxes beta) {
+    return std::make_shared<const PrefilteredColormap>(blended, mode, beta);
 }
 
 }  // namespace
@@ -56,9 +57,10 @@ std::shared_ptr<const FootprintEstimator> PartCache::estimator(const TiledField&
     return find(estimators_, key, builds_.estimators, [&] { return makeEstimator(field, covariance, pack8); });
 }
 
-std::shared_ptr<const PrefilteredColormap> PartCache::prefiltered(const ColormapTable& blended, PrefilterMode mode) {
-    return find(prefiltered_, PrefilteredKey{blended, mode}, builds_.prefiltered,
-                [&] { return makePrefiltered(blended, mode); });
+std::shared_ptr<const PrefilteredColormap> PartCache::prefiltered(const ColormapTable& blended, PrefilterMode mode,
+                                                                  BetaAxes beta) {
+    return find(prefiltered_, PrefilteredKey{blended, mode, beta}, builds_.prefiltered,
+                [&] { return makePrefiltered(blended, mode, beta); });
 }
 
 std::shared_ptr<void> PartCache::attachment(const std::shared_ptr<const void>& part, const std::string& what,
@@ -108,8 +110,8 @@ std::shared_ptr<const FootprintEstimator> estimatorPart(PartCache* parts, const 
 }
 
 std::shared_ptr<const PrefilteredColormap> prefilteredPart(PartCache* parts, const ColormapTable& blended,
-                                                           PrefilterMode mode) {
-    return parts ? parts->prefiltered(blended, mode) : makePrefiltered(blended, mode);
+                                                           PrefilterMode mode, BetaAxes beta) {
+    return parts ? parts->prefiltered(blended, mode, beta) : makePrefiltered(blended, mode, beta);
 }
 
 }  // namespace stochtex

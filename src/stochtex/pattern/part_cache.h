@@ -65,7 +65,8 @@ public:
                       double gridDensity, const std::function<TiledField()>& build);
     std::shared_ptr<const ColormapTable> colormap(const ColormapSpec& spec);
     std::shared_ptr<const FootprintEstimator> estimator(const TiledField& field, bool covariance, bool pack8);
-    std::shared_ptr<const PrefilteredColormap> prefiltered(const ColormapTable& blended, PrefilterMode mode);
+    std::shared_ptr<const PrefilteredColormap> prefiltered(const ColormapTable& blended, PrefilterMode mode,
+                                                           BetaAxes beta);
     // What a device makes of a kept part (the GPU view: the texture of an
     // example, a pyramid, an atlas), named `what`, kept as the parts are:
     // an edit uploads only the parts it changed. The value is the device's
@@ -112,6 +113,7 @@ private:
     struct PrefilteredKey {
         ColormapTable blended;
         PrefilterMode mode = PrefilterMode::Paper;
+        BetaAxes beta{false, false};
         bool operator==(const PrefilteredKey&) const = default;
     };
     struct AttachmentKey {
@@ -142,6 +144,6 @@ std::shared_ptr<const ColormapTable> colormapPart(PartCache* parts, const Colorm
 std::shared_ptr<const FootprintEstimator> estimatorPart(PartCache* parts, const TiledField& field, bool covariance,
                                                         bool pack8);
 std::shared_ptr<const PrefilteredColormap> prefilteredPart(PartCache* parts, const ColormapTable& blended,
-                                                           PrefilterMode mode);
+                                                           PrefilterMode mode, BetaAxes beta = {false, false});
 
 }  // namespace stochtex

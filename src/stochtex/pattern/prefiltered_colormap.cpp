@@ -9,6 +9,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include <boost/math/distributions/beta.hpp>
+#include <boost/math/special_functions/beta.hpp>
+
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/kernel/sigma_levels.h"
@@ -24,6 +27,13 @@ struct Tap {
     int index;
     double weight;
 };
+
+// Taps of the linear interpolation of n entries at entry coordinate c ∈ [0, n − 1]: a blur of 0.
+std::vector<Tap> interpolationTaps(int n, double c) {
+    const int j = std::min(int(c), n - 2);
+    const double f = c - j;
+    return {{j, 1.0 - f}, {j + 1, f}};
+}
 
 // Weights for blurring n entries by σ (domain units) and resampling to `out`
 // entries at i/(out−1). The table is read as the piecewise-linear function
@@ -46,10 +56,7 @@ std::vector<std::vector<Tap>> blurTaps(int n, double sigma, int out) {
         const double c = i * scale;
         auto& t = taps[size_t(i)];
         if (s <= 0.0) {
-            const int j = std::min(int(c), n - 2);
-            const double f = c - j;
-            t.push_back({j, 1.0 - f});
-            t.push_back({j + 1, f});
+            t = interpolationTaps(n, c);
             continue;
         }
         // ±5σ: the Gaussian mass left out (< 6e-7) is below float precision.
@@ -76,6 +83,101 @@ std::vector<std::vector<Tap>> blurTaps(int n, double sigma, int out) {
         }
         for (int j = lo; j <= hi; ++j) t.push_back({j, w[size_t(j - lo)] / sum});
     }
+    return taps;
+}
+
+// Weights for averaging n entries under a Beta distribution, per output
+// entry i of `out` at mean m = i/(out−1), with shape ν = 4τ² (kernel
+// betaLevelCoordinate): α = m(1/ν − 1), β = (1 − m)(1/ν − 1). The Beta lives on
+// [0, 1], the table's domain, so there is no edge to clamp. As for
+// blurTaps, each weight is the exact integral of the entry's hat function
+// under the density, from the regularised incomplete beta function
+// F(x) = I_x(α, β) and the partial first moment G(x) = ∫₀ˣ t f(t) dt =
+// m·I_x(α + 1, β) at the lattice nodes x_k = k/(n − 1) (spacing h):
+//   rising half of hat j:  ((G_j − G_{j−1}) − x_{j−1}(F_j − F_{j−1}))/h,
+//   falling half:          (x_{j+1}(F_{j+1} − F_j) − (G_{j+1} − G_j))/h.
+// Boost.Math's ibeta (Debian libboost-math-dev) computes F to double
+// precision for the small α or β of a skewed Beta near a table's end,
+// where a quadrature of the singular density would not. Nodes where F is
+// within 1e-12 of 0 or 1 are found by bisection and skipped. A wide Beta
+// (deviation ≥ 16 node spacings) reads every node, which would make a
+// large table's build quadratic in ibeta calls (seconds at 1024 entries):
+// there F steps from node to node by 4-point Gauss–Legendre quadrature of
+// the density, which is smooth away from the ends (relative error below
+// 1e-12 over a spacing ≤ 1/16 of its deviation), and ibeta is kept at the
+// 8 nodes next to each end, where the density may be singular, and every
+// 64th node, which bounds the accumulated rounding.
+std::vector<std::vector<Tap>> betaTaps(int n, double tau, int out) {
+    std::vector<std::vector<Tap>> taps(static_cast<size_t>(out));
+    const double nu = 4.0 * tau * tau, h = 1.0 / double(n - 1);
+    const auto x = [&](int k) { return double(k) * h; };
+    // Entries are independent: each thread fills its own (the same taps for any thread count).
+    parallelRows(out, [&](int i0, int i1) {
+        std::vector<double> F, G;
+        for (int i = i0; i < i1; ++i) {
+            const double m = double(i) / double(out - 1);
+            auto& t = taps[size_t(i)];
+            if (nu <= 0.0 || i == 0 || i == out - 1) {  // a point: at m, or at an end of the table
+                t = interpolationTaps(n, double(i) * double(n - 1) / double(out - 1));  // as blurTaps's
+                continue;
+            }
+            if (nu >= 1.0) {  // the limit of a Beta of this mean: spikes at 0 and 1
+                t = {{0, 1.0 - m}, {n - 1, m}};
+                continue;
+            }
+            const double shape = 1.0 / nu - 1.0, a = m * shape, b = (1.0 - m) * shape;
+            const auto cdf = [&](int k) { return boost::math::ibeta(a, b, x(k)); };
+            const double logBeta = std::lgamma(a) + std::lgamma(b) - std::lgamma(a + b);
+            const auto density = [&](double v) {
+                return std::exp((a - 1.0) * std::log(v) + (b - 1.0) * std::log1p(-v) - logBeta);
+            };
+            const bool wide = std::sqrt(nu * m * (1.0 - m)) >= 16.0 * h;
+            const auto stepped = [&](int k) {  // F(x_k) − F(x_{k−1}) by quadrature
+                constexpr double node[2] = {0.3399810435848563, 0.8611363115940526};
+                constexpr double weight[2] = {0.6521451548625461, 0.3478548451374538};
+                const double mid = x(k) - 0.5 * h;
+                double sum = 0;
+                for (int q = 0; q < 2; ++q)
+                    sum += weight[q] * (density(mid - 0.5 * h * node[q]) + density(mid + 0.5 * h * node[q]));
+                return 0.5 * h * sum;
+            };
+            // The first node with F > 1e-12 and the first with F > 1 − 1e-12 (F
+            // is non-decreasing): the mass outside [lo, hi] is below that.
+            const auto firstAbove = [&](double level) {
+                int lo = 0, hi = n - 1;
+                while (lo < hi) {
+                    const int mid = (lo + hi) / 2;
+                    if (cdf(mid) > level)
+                        hi = mid;
+                    else
+                        lo = mid + 1;
+                }
+                return lo;
+            };
+            const int lo = std::max(firstAbove(1e-12) - 1, 0), hi = std::max(firstAbove(1.0 - 1e-12), lo + 1);
+            F.resize(size_t(hi - lo + 1));
+            G.resize(F.size());
+            for (int k = lo; k <= hi; ++k) {
+                const double xk = x(k);
+                const bool exact = !wide || k == lo || k <= 8 || k >= n - 9 || k % 64 == 0;
+                F[size_t(k - lo)] = exact ? cdf(k) : F[size_t(k - lo - 1)] + stepped(k);
+                // I_x(α + 1, β) = I_x(α, β) − x^α (1 − x)^β / (α B(α, β)), the last
+                // term x(1 − x) f(x)/α with f the density.
+                const double tail = xk <= 0.0 || xk >= 1.0 ? 0.0 : xk * (1.0 - xk) * density(xk) / a;
+                G[size_t(k - lo)] = m * (F[size_t(k - lo)] - tail);
+            }
+            double sum = 0;
+            for (int j = lo; j <= hi; ++j) {
+                const size_t q = size_t(j - lo);
+                double w = 0;
+                if (j > lo) w += ((G[q] - G[q - 1]) - x(j - 1) * (F[q] - F[q - 1])) / h;
+                if (j < hi) w += (x(j + 1) * (F[q + 1] - F[q]) - (G[q + 1] - G[q])) / h;
+                t.push_back({j, w});
+                sum += w;
+            }
+            for (Tap& tap : t) tap.weight /= sum;
+        }
+    });
     return taps;
 }
 
@@ -182,6 +284,15 @@ std::vector<double> PrefilteredColormap::sigmaLevels(PrefilterMode mode) {
     return s;
 }
 
+std::vector<double> PrefilteredColormap::betaLevels(PrefilterMode mode) {
+    if (mode == PrefilterMode::Paper) return sigmaLevels(mode);
+    std::vector<double> s{0.0};
+    for (int k = 0; k <= 6; ++k) s.push_back(std::exp2(k) / 256.0);
+    s.push_back(std::sqrt(2.0) / 4.0);
+    s.push_back(0.5);
+    return s;
+}
+
 void validatePrefilteredResolution(int width, int height) {
     if (width > kMaxPrefilteredResolution || height > kMaxPrefilteredResolution)
         throw InputError::parameter("resolution", "must be at most " + std::to_string(kMaxPrefilteredResolution) +
@@ -189,8 +300,8 @@ void validatePrefilteredResolution(int width, int height) {
                                                       "x" + std::to_string(height));
 }
 
-PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode mode)
-    : mode_(mode), sigmas_(sigmaLevels(mode)) {
+PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode mode, BetaAxes beta)
+    : mode_(mode), beta_(beta), sigmas_(sigmaLevels(mode)), betaLevels_(betaLevels(mode)) {
     validatePrefilteredResolution(h.resolutionX(), h.resolutionY());
     const Image base = h.table();
     // The x blur runs as a y blur of the transposed table (streams rows).
@@ -203,11 +314,16 @@ PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode m
         for (const auto& row : t) n += row.size();
         return n;
     };
-    for (double s : sigmas_) {
-        tapsX.push_back(blurTaps(base.width(), s, storedResolution(base.width(), s)));
+    // A Beta axis keeps all its entries: its blur is narrow near the ends.
+    const auto axisTaps = [](int n, double s, bool betaAxis) {
+        return betaAxis ? betaTaps(n, s, n) : blurTaps(n, s, storedResolution(n, s));
+    };
+    for (size_t k = 0; k < levels; ++k) {
+        tapsX.push_back(axisTaps(base.width(), axisLevels(0)[k], beta_[0]));
         // Square tables (the usual case) share the x taps.
-        tapsY.push_back(base.height() == base.width() ? tapsX.back()
-                                                      : blurTaps(base.height(), s, storedResolution(base.height(), s)));
+        tapsY.push_back(base.height() == base.width() && beta_[0] == beta_[1]
+                            ? tapsX.back()
+                            : axisTaps(base.height(), axisLevels(1)[k], beta_[1]));
     }
     // The blurs along x and y commute, so each layer takes the order whose
     // second pass is cheaper: the wide blur runs first, on one shared
@@ -230,13 +346,10 @@ PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode m
 
 // The level coordinates and the blend of the layers are the kernel's
 // (kernel/sigma_levels.glsl), as in the shaders.
-float PrefilteredColormap::levelCoordinate(float sigma) const {
-    return kernel::sigmaLevelCoordinate(sigma, mode_ == PrefilterMode::Paper, int(sigmas_.size()));
-}
-
 Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const {
     const kernel::LayerBlend b =
-        kernel::layerBlend(kernel::vec2(sx, sy), mode_ == PrefilterMode::Paper, int(sigmas_.size()));
+        kernel::tableLayerBlend(kernel::vec2(mx, my), kernel::vec2(sx, sy), kernel::ivec2(beta_[0], beta_[1]),
+                                mode_ == PrefilterMode::Paper, int(sigmas_.size()));
     if (b.f.x == 0.0f && b.f.y == 0.0f) return layer(b.k0.x, b.k0.y).sample(mx, my);
     const auto at = [&](int kx, int ky) {
         const Rgb c = layer(kx, ky).sample(mx, my);
@@ -319,6 +432,20 @@ Rgb convolveColormapNumerically(const ColormapTable& h, double mx, double my, do
             const Rgb c = h.sample(float(x), float(y));
             for (int k = 0; k < 3; ++k) acc[k] += wx * wy * c[size_t(k)];
         }
+    return {float(acc[0]), float(acc[1]), float(acc[2])};
+}
+
+Rgb betaAverageNumerically(const ColormapTable& h, double mx, double my, double sx, int steps) {
+    const double nu = sx * sx / (mx * (1.0 - mx));
+    if (!(nu > 0.0) || !(nu < 1.0))
+        throw std::invalid_argument("betaAverageNumerically: needs 0 < var < m(1 − m), got m " + std::to_string(mx) +
+                                    ", deviation " + std::to_string(sx));
+    const boost::math::beta_distribution<double> d(mx * (1.0 / nu - 1.0), (1.0 - mx) * (1.0 / nu - 1.0));
+    double acc[3] = {0, 0, 0};
+    for (int i = 0; i < steps; ++i) {
+        const Rgb c = h.sample(float(boost::math::quantile(d, (i + 0.5) / steps)), float(my));
+        for (int k = 0; k < 3; ++k) acc[k] += c[size_t(k)] / steps;
+    }
     return {float(acc[0]), float(acc[1]), float(acc[2])};
 }
 

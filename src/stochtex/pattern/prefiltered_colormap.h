@@ -12,6 +12,12 @@
 // Tables blurred by at least 8 entries along an axis are stored with fewer
 // entries along it (at least 4 per σ), which keeps memory and build time low
 // with no visible loss (checked against direct convolution in the tests).
+//
+// An axis whose input is a field bounded in [0, 1] (another table's output,
+// in a texture graph) is prefiltered with the Beta distribution of the
+// input's mean and variance instead of the Gaussian: its layers are levels
+// of the Beta's shape (kernel betaLevelCoordinate), at the same level values.
+#include <array>
 #include <vector>
 
 #include "stochtex/core/enum_names.h"
@@ -30,15 +36,24 @@ enum class PrefilterMode { Paper, Smooth };
 inline const EnumNames<PrefilterMode> kPrefilterModeNames{{"paper", PrefilterMode::Paper},
                                                           {"smooth", PrefilterMode::Smooth}};
 
+// Which axes (x, y) of a table are Beta axes (see above).
+using BetaAxes = std::array<bool, 2>;
+
 class PrefilteredColormap {
 public:
     PrefilteredColormap() = default;
-    PrefilteredColormap(const ColormapTable& h, PrefilterMode mode);
+    PrefilteredColormap(const ColormapTable& h, PrefilterMode mode, BetaAxes beta = {false, false});
 
     PrefilterMode mode() const { return mode_; }
+    const BetaAxes& betaAxes() const { return beta_; }
+    // The σ levels of a Gaussian axis; sigmas().size() levels per axis.
     const std::vector<double>& sigmas() const { return sigmas_; }
+    // The levels of axis 0 (x) or 1 (y): σ, or τ on a Beta axis.
+    const std::vector<double>& axisLevels(int axis) const { return beta_[size_t(axis)] ? betaLevels_ : sigmas_; }
     const ColormapTable& layer(int kx, int ky) const { return layers_[size_t(kx) * sigmas_.size() + size_t(ky)]; }
 
+    // The table at mean (mx, my) and deviations (sx, sy): [H ∗ G_σ](μ) on
+    // Gaussian axes, E[H] under the Beta of (m, σ²) on Beta axes.
     Rgb sample(float mx, float my, float sx, float sy) const;
 
     // Every layer resampled to rx × ry entries (layers stored coarser are
@@ -51,18 +66,22 @@ public:
 
     // σ levels of a mode, in colormap-domain units.
     static std::vector<double> sigmaLevels(PrefilterMode mode);
+    // τ levels of a Beta axis (kernel betaLevelCoordinate): as many.
+    static std::vector<double> betaLevels(PrefilterMode mode);
 
 private:
-    // Continuous (smooth) or nearest (paper) σ-level coordinate of σ.
-    float levelCoordinate(float sigma) const;
-
     PrefilterMode mode_ = PrefilterMode::Paper;
-    std::vector<double> sigmas_;
+    BetaAxes beta_{false, false};
+    std::vector<double> sigmas_, betaLevels_;
     std::vector<ColormapTable> layers_;
 };
 
 // Reference for tests: [H ∗ G_σ](μ) for the bilinear table H with clamp-to-edge
 // by numerical integration (Simpson-free Riemann sum over ±6σ, `steps` per axis).
 Rgb convolveColormapNumerically(const ColormapTable& h, double mx, double my, double sx, double sy, int steps = 400);
+// Reference for tests: E[H(X, y)] along x for X ~ Beta of mean mx and
+// deviation sx (var ≤ mx(1 − mx)), y = my, by the midpoint rule over the
+// Beta's quantiles (`steps` of them): a route independent of the tables'.
+Rgb betaAverageNumerically(const ColormapTable& h, double mx, double my, double sx, int steps = 20000);
 
 }  // namespace stochtex

@@ -98,6 +98,14 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
                               .render(cam, exact ? progressPart(part, 0.5, 1.0, "exact statistics") : Progress{});
             c.errors[m] = errorMap(c.images[m], c.reference, *errors[m]);
         }
+        // Matched through the other estimators (issue 32: a column each).
+        for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
+            FilterOptions other = fo;
+            other.source = StatisticsSource::Estimators;
+            other.estimator = kVarianceEstimatorNames[e].second;
+            (void)errorMap(FilteredGraph(graph, other).render(cam), c.reference,
+                           c.numbers.matchedOtherEstimators.emplace_back());
+        }
         cols.push_back(std::move(c));
     }
     // One colour scale for every error map: the 99.5th percentile of all.
@@ -118,12 +126,18 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
                          {"mean_error_none", "none: mean ‖S − S̄‖₂", ""},
                          {"mean_error_mean_only", "mean-only: mean ‖Ŝ − S̄‖₂", ""},
                          {"mean_error_matched_exact", "matched, exact statistics: mean ‖Ŝ − S̄‖₂", ""},
-                         {"mean_error_matched", "matched, estimators: mean ‖Ŝ − S̄‖₂", ""},
-                         // How good the brute-force images are (studies/reference_samples.h).
-                         {"reference_samples", "S̄: samples per pixel", ""},
-                         {"reference_change", "S̄: change on doubling them", ""},
-                         {"exact_samples", "exact statistics: samples per pixel", ""},
-                         {"exact_change", "exact statistics: change on doubling them", ""}};
+                         {"mean_error_matched", "matched, estimators: mean ‖Ŝ − S̄‖₂", ""}};
+    for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
+        const std::string& name = kVarianceEstimatorNames[e].first;
+        std::string key = "mean_error_matched_" + name;
+        std::replace(key.begin(), key.end(), '-', '_');
+        res.table.columns.push_back({key, "matched, " + name + " estimator: mean ‖Ŝ − S̄‖₂", ""});
+    }
+    // How good the brute-force images are (studies/reference_samples.h).
+    res.table.columns.push_back({"reference_samples", "S̄: samples per pixel", ""});
+    res.table.columns.push_back({"reference_change", "S̄: change on doubling them", ""});
+    res.table.columns.push_back({"exact_samples", "exact statistics: samples per pixel", ""});
+    res.table.columns.push_back({"exact_change", "exact statistics: change on doubling them", ""});
     const int thumb = std::min(o.size, 128);
     std::vector<std::vector<Image>> rows(1 + 2 * kMethods.size());
     std::vector<std::vector<std::string>> captions(rows.size());
@@ -137,12 +151,14 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
         TableCell first(fp);
         first.number = s;
         const double values[4] = {c.numbers.none, c.numbers.meanOnly, c.numbers.matchedExact, c.numbers.matched};
-        res.table.add({first, TableCell::value(values[0]), TableCell::value(values[1]), TableCell::value(values[2]),
-                       TableCell::value(values[3]),
-                       TableCell::integer((long long)c.numbers.referenceSamples * c.numbers.referenceSamples),
-                       TableCell::value(c.numbers.referenceChange, "%.5f"),
-                       TableCell::integer((long long)c.numbers.exactSamples * c.numbers.exactSamples),
-                       TableCell::value(c.numbers.exactChange, "%.5f")});
+        std::vector<TableCell> cells{first, TableCell::value(values[0]), TableCell::value(values[1]),
+                                     TableCell::value(values[2]), TableCell::value(values[3])};
+        for (const double error : c.numbers.matchedOtherEstimators) cells.push_back(TableCell::value(error));
+        cells.push_back(TableCell::integer((long long)c.numbers.referenceSamples * c.numbers.referenceSamples));
+        cells.push_back(TableCell::value(c.numbers.referenceChange, "%.5f"));
+        cells.push_back(TableCell::integer((long long)c.numbers.exactSamples * c.numbers.exactSamples));
+        cells.push_back(TableCell::value(c.numbers.exactChange, "%.5f"));
+        res.table.add(std::move(cells));
         res.columns.push_back(c.numbers);
         // Figures hold display codes (report/page.h): renders are encoded, error maps drawn so.
         Image ref = srgbFromLinear(c.reference);

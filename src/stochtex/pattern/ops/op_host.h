@@ -86,6 +86,9 @@ struct OpTable {
     ColormapTable point;    // what the unfiltered evaluation reads
     ColormapTable blended;  // the same with the inverse histogram transforms of Gaussianized leaf inputs folded in
     bool field = false;
+    // Its axes whose input is a field bounded in [0, 1], prefiltered as a
+    // Beta (set once the program's ranges are known, GraphPattern::build).
+    BetaAxes beta{false, false};
 };
 
 // A table as an image of its entries, each through `entry(i, j)` (Rx×Ry×3).
