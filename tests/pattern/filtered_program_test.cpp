@@ -82,6 +82,13 @@ TEST(PrefilteredColormap, NonSquareTablesBlurEachAxisByItsOwnSigma) {
     }
 }
 
+TEST(FilterOptions, TheDefaultEstimatorIsTheFirstOfTheNames) {
+    // The studies' main columns are the default estimator's and add one per
+    // name after the first (Figures 4, 11, 14, Table 1).
+    EXPECT_EQ(kVarianceEstimatorNames.front().second, FilterOptions{}.estimator);
+    EXPECT_EQ(kVarianceEstimatorNames.front().first, "paper");
+}
+
 TEST(PrefilteredColormap, BetaAxisLayersAverageTheTableUnderTheBetaOfTheirLevel) {
     // A 64×40 random table with a Beta x axis: layer (kx, 0) at entry (i, j)
     // is E[T(X, y_j)] for X ~ Beta of mean m_i = i/63 and shape τ = level kx

@@ -37,6 +37,8 @@ enum class VarianceEstimator {
     DeliotHeitz,  // one constant within-texel variance per LOD [DH19]
     SubProbes,    // the paper's, each probe as 2×2 probes one level finer (kernel/estimate.glsl; 4× the fetches)
 };
+// The paper's first: the studies' main columns are the default estimator's
+// (FilterOptions::estimator), then a column per name after it.
 inline const EnumNames<VarianceEstimator> kVarianceEstimatorNames{{"paper", VarianceEstimator::Paper},
                                                                   {"deliot-heitz", VarianceEstimator::DeliotHeitz},
                                                                   {"sub-probes", VarianceEstimator::SubProbes}};

@@ -33,8 +33,14 @@ const PublishedRow kPublished[] = {
     {64, {0.0851, 0.1801, 0.0355, 0.3194, 0.0017, 0.0033, 0.0441, 0.2493}},
     {128, {0.0619, 0.1310, 0.0344, 0.2444, 0.0005, 0.0009, 0.0342, 0.1882}},
 };
-// measureEstimatorErrors' rows: kVarianceEstimatorNames, then "global".
-const char* kEstimators[4] = {"paper", "deliot-heitz", "sub-probes", "global"};
+// measureEstimatorErrors' rows: kVarianceEstimatorNames, then "global" (so
+// a new estimator gets its block and its curve without an edit here).
+std::vector<std::string> tableEstimators() {
+    std::vector<std::string> names;
+    for (const auto& [name, estimator] : kVarianceEstimatorNames) names.push_back(name);
+    names.emplace_back("global");
+    return names;
+}
 
 // "abs (rel)" as the paper prints its cells.
 TableCell errorCell(double a, double r) {
@@ -119,8 +125,8 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
     }
 
     // Laid out like the paper's table: one block per estimator.
-    for (const char* est : kEstimators) {
-        Table t = paperLayout(std::string("Estimator: ") + est,
+    for (const std::string& est : tableEstimators()) {
+        Table t = paperLayout("Estimator: " + est,
                               "(" + std::to_string(o.errors.count) + " footprints per size × 2 components)");
         for (size_t i = 0; i < res.rows[0].size(); ++i) {
             const auto& a = res.rows[0][i];
@@ -141,11 +147,14 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
     for (int which = 0; which < 2; ++which)
         for (int moment = 0; moment < 2; ++moment) {
             std::vector<PlotSeries> series;
-            const std::array<float, 3> colours[4] = {
-                {0.1f, 0.3f, 0.8f}, {0.85f, 0.45f, 0.1f}, {0.75f, 0.15f, 0.55f}, {0.5f, 0.5f, 0.5f}};
-            int c = 0;
-            for (const char* est : kEstimators) {
-                PlotSeries s{std::string("ours, ") + est, {}, {}, colours[c++]};
+            const std::array<float, 3> colours[5] = {{0.1f, 0.3f, 0.8f},
+                                                     {0.85f, 0.45f, 0.1f},
+                                                     {0.75f, 0.15f, 0.55f},
+                                                     {0.5f, 0.5f, 0.5f},
+                                                     {0.2f, 0.7f, 0.8f}};
+            size_t c = 0;
+            for (const std::string& est : tableEstimators()) {
+                PlotSeries s{"ours, " + est, {}, {}, colours[c++ % 5]};
                 for (const auto& r : res.rows[size_t(which)])
                     if (r.estimator == est) {
                         s.x.push_back(r.footprint);
