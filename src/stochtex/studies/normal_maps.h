@@ -24,11 +24,14 @@ enum class LeanVariant {
     Ours,          // μ̂, σ̂², ĉov of the slopes (eq. 9, 14, 18) in the lobe
     NoCovariance,  // the same without ĉov (the slopes treated as independent, Fig. 12d)
     DeliotHeitz,   // one constant variance per LOD and no covariance [DH19] (Fig. 12a)
+    SubProbes,     // ours with the sub-probes estimator (issue 32)
+    Exact,         // the exact footprint moments of the slopes in the lobe: what estimators can reach (issue 32)
 };
-inline const EnumNames<LeanVariant> kLeanVariantNames{{"reference", LeanVariant::Reference},
-                                                      {"ours", LeanVariant::Ours},
-                                                      {"no-covariance", LeanVariant::NoCovariance},
-                                                      {"deliot-heitz", LeanVariant::DeliotHeitz}};
+// In the figure's order: the reference, then the variants it is compared with.
+inline const EnumNames<LeanVariant> kLeanVariantNames{
+    {"reference", LeanVariant::Reference},        {"ours", LeanVariant::Ours},
+    {"no-covariance", LeanVariant::NoCovariance}, {"deliot-heitz", LeanVariant::DeliotHeitz},
+    {"sub-probes", LeanVariant::SubProbes},       {"exact-statistics", LeanVariant::Exact}};
 // The filter options of a variant (aniso and reference samples as given).
 FilterOptions leanVariantOptions(LeanVariant variant, int aniso, int referenceSamples);
 
@@ -54,7 +57,7 @@ struct Figure12Row {
     double meanErrorGlobal = 0, meanErrorCrop = 0;  // mean ‖variant − reference‖₂ (RGB, linear)
 };
 struct Figure12Result {
-    std::vector<Figure12Row> rows;  // ours, no covariance, Deliot–Heitz
+    std::vector<Figure12Row> rows;  // every variant after the reference, in kLeanVariantNames' order
     Table table;                    // figure12.csv
     std::vector<Figure> figures;    // figure12.png, then each variant's view, crop and error maps
 };
