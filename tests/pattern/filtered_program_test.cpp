@@ -33,6 +33,16 @@ FilterOptions options(const std::string& filter, int aniso = 1) {
     return o;
 }
 
+// A table of w × h uniform random entries in [0, 1) (a linear congruential sequence from seed).
+ColormapTable randomTable(int w, int h, uint32_t seed) {
+    Image t(w, h, 3);
+    for (float& v : t.data()) {
+        seed = seed * 1664525u + 1013904223u;
+        v = float(seed >> 8) / 16777216.0f;
+    }
+    return ColormapTable(t);
+}
+
 }  // namespace
 
 TEST(PrefilteredColormap, EntriesEqualDirectNumericalConvolution) {
@@ -60,13 +70,7 @@ TEST(PrefilteredColormap, NonSquareTablesBlurEachAxisByItsOwnSigma) {
     // A 64×40 random table: x and y have different tap tables, and layers
     // blur x first or y first depending on which is cheaper — both orders
     // must give the exact separable convolution.
-    Image t(64, 40, 3);
-    uint32_t state = 12345;
-    for (float& v : t.data()) {
-        state = state * 1664525u + 1013904223u;
-        v = float(state >> 8) / 16777216.0f;
-    }
-    const ColormapTable h(t);
+    const ColormapTable h = randomTable(64, 40, 12345);
     const PrefilteredColormap p(h, PrefilterMode::Smooth);
     const auto& s = p.sigmas();
     for (auto [kx, ky] : {std::pair{1, 5}, {5, 1}, {0, 4}, {4, 0}, {3, 3}}) {
@@ -96,13 +100,7 @@ TEST(PrefilteredColormap, BetaAxisLayersAverageTheTableUnderTheBetaOfTheirLevel)
     // quantiles (a route that shares nothing with the tables' incomplete-beta
     // taps). The largest difference seen was 3.1e-5 (the quantile midpoint
     // rule at 6000 steps); the tolerance is ten times that.
-    Image t(64, 40, 3);
-    uint32_t state = 777;
-    for (float& v : t.data()) {
-        state = state * 1664525u + 1013904223u;
-        v = float(state >> 8) / 16777216.0f;
-    }
-    const ColormapTable h(t);
+    const ColormapTable h = randomTable(64, 40, 777);
     const PrefilteredColormap p(h, PrefilterMode::Smooth, {true, false});
     const auto& s = p.axisLevels(0);  // τ: 0, 1/256 … 1/4, √2/4, ½
     int checked = 0;
