@@ -98,14 +98,7 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
                               .render(cam, exact ? progressPart(part, 0.5, 1.0, "exact statistics") : Progress{});
             c.errors[m] = errorMap(c.images[m], c.reference, *errors[m]);
         }
-        // Matched through the other estimators (issue 32: a column each).
-        for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
-            FilterOptions other = fo;
-            other.source = StatisticsSource::Estimators;
-            other.estimator = kVarianceEstimatorNames[e].second;
-            (void)errorMap(FilteredGraph(graph, other).render(cam), c.reference,
-                           c.numbers.matchedOtherEstimators.emplace_back());
-        }
+        c.numbers.matchedOtherEstimators = otherEstimatorErrors(graph, fo, cam, c.reference);
         cols.push_back(std::move(c));
     }
     // One colour scale for every error map: the 99.5th percentile of all.
@@ -127,12 +120,8 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
                          {"mean_error_mean_only", "mean-only: mean ‖Ŝ − S̄‖₂", ""},
                          {"mean_error_matched_exact", "matched, exact statistics: mean ‖Ŝ − S̄‖₂", ""},
                          {"mean_error_matched", "matched, estimators: mean ‖Ŝ − S̄‖₂", ""}};
-    for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
-        const std::string& name = kVarianceEstimatorNames[e].first;
-        std::string key = "mean_error_matched_" + name;
-        std::replace(key.begin(), key.end(), '-', '_');
-        res.table.columns.push_back({key, "matched, " + name + " estimator: mean ‖Ŝ − S̄‖₂", ""});
-    }
+    otherEstimatorColumns(res.table, "mean_error_matched_",
+                          [](const std::string& name) { return "matched, " + name + " estimator: mean ‖Ŝ − S̄‖₂"; });
     // How good the brute-force images are (studies/reference_samples.h).
     res.table.columns.push_back({"reference_samples", "S̄: samples per pixel", ""});
     res.table.columns.push_back({"reference_change", "S̄: change on doubling them", ""});

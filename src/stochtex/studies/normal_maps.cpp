@@ -4,8 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
-#include <stdexcept>
 
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
@@ -15,22 +13,29 @@
 
 namespace stochtex {
 
-FilterOptions leanVariantOptions(LeanVariant variant, int aniso, int referenceSamples) {
+const std::array<LeanVariantInfo, 6> kLeanVariants{{
+    {LeanVariant::Reference, "reference", "reference (supersampled)",
+     [](FilterOptions& o) { o.source = StatisticsSource::Reference; }},
+    {LeanVariant::Ours, "ours", "ours (eq. 9, 14, 18)", [](FilterOptions&) {}},
+    {LeanVariant::NoCovariance, "no-covariance", "ours without covariance",
+     [](FilterOptions& o) { o.response.covariance = false; }},
+    {LeanVariant::DeliotHeitz, "deliot-heitz", "Deliot–Heitz (constant variance per LOD)",
+     [](FilterOptions& o) {
+         o.estimator = VarianceEstimator::DeliotHeitz;
+         o.response.covariance = false;
+     }},
+    {LeanVariant::SubProbes, "sub-probes", "ours, sub-probes estimator",
+     [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes; }},
+    {LeanVariant::Exact, "exact-statistics", "exact footprint statistics",
+     [](FilterOptions& o) { o.source = StatisticsSource::Exact; }},
+}};
+
+FilterOptions leanVariantOptions(const LeanVariantInfo& variant, int aniso, int referenceSamples) {
     FilterOptions o;
     o.response.kind = ResponseKind::Lean;
     o.aniso = aniso;
     o.referenceMaxSamples = referenceSamples;
-    switch (variant) {
-        case LeanVariant::Reference: o.source = StatisticsSource::Reference; break;
-        case LeanVariant::Ours: break;
-        case LeanVariant::NoCovariance: o.response.covariance = false; break;
-        case LeanVariant::DeliotHeitz:
-            o.estimator = VarianceEstimator::DeliotHeitz;
-            o.response.covariance = false;
-            break;
-        case LeanVariant::SubProbes: o.estimator = VarianceEstimator::SubProbes; break;
-        case LeanVariant::Exact: o.source = StatisticsSource::Exact; break;
-    }
+    variant.apply(o);
     return o;
 }
 
@@ -82,23 +87,15 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
     const Rect crop{int(o.crop[0] * o.width), int(o.crop[1] * o.height), std::max(int(o.crop[2] * o.width), 1),
                     std::max(int(o.crop[3] * o.height), 1)};
 
-    // kLeanVariantNames' order, with a caption each.
-    constexpr int n = 6;
-    const std::array<const char*, n> captions{"reference (supersampled)",   "ours (eq. 9, 14, 18)",
-                                              "ours without covariance",    "Deliot–Heitz (constant variance per LOD)",
-                                              "ours, sub-probes estimator", "exact footprint statistics"};
-    static_assert(n == int(std::size(captions)));
-    if (kLeanVariantNames.size() != size_t(n)) throw std::logic_error("figure12: a LEAN variant without a caption");
-    std::array<LeanVariant, n> order;
-    for (int k = 0; k < n; ++k) order[size_t(k)] = kLeanVariantNames[size_t(k)].second;
+    constexpr int n = int(kLeanVariants.size());
     Image views[n], errors[n];
     for (int k = 0; k < n; ++k) {
         // The supersampled reference and the exact statistics take nearly all the time.
         const double from = k == 0 ? 0.0 : 0.5 + 0.1 * (k - 1), to = k == 0 ? 0.5 : from + 0.1;
-        const FilterOptions fo = leanVariantOptions(order[size_t(k)], o.aniso, o.referenceSamples);
+        const LeanVariantInfo& variant = kLeanVariants[size_t(k)];
+        const FilterOptions fo = leanVariantOptions(variant, o.aniso, o.referenceSamples);
         // The file's lean program (GraphPattern::build), as `render` draws it.
-        views[k] = makeCpuRenderer(o.pattern, fo)
-                       ->render(cam, progressPart(progress, from, to, enumName(kLeanVariantNames, order[size_t(k)])));
+        views[k] = makeCpuRenderer(o.pattern, fo)->render(cam, progressPart(progress, from, to, variant.name));
     }
     Figure12Result res;
     res.table.columns = {{"variant", "variant", ""},
@@ -107,12 +104,12 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
     std::vector<float> all;
     for (int k = 1; k < n; ++k) {
         Figure12Row row;
-        row.variant = order[size_t(k)];
+        row.variant = kLeanVariants[size_t(k)].variant;
         errors[k] = errorMap(views[k], views[0], row.meanErrorGlobal);
         row.meanErrorCrop = meanOf(cropped(errors[k], crop));
         all.insert(all.end(), errors[k].data().begin(), errors[k].data().end());
         res.rows.push_back(row);
-        res.table.add({TableCell(enumName(kLeanVariantNames, order[size_t(k)])), TableCell::value(row.meanErrorGlobal),
+        res.table.add({TableCell(kLeanVariants[size_t(k)].name), TableCell::value(row.meanErrorGlobal),
                        TableCell::value(row.meanErrorCrop)});
     }
     // One colour scale for every error map: the 99.5th percentile of all.
@@ -131,7 +128,7 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
     std::vector<std::vector<std::string>> texts(4);
     std::vector<Figure> images;
     for (int k = 0; k < n; ++k) {
-        const std::string tag = enumName(kLeanVariantNames, order[size_t(k)]);
+        const std::string tag = kLeanVariants[size_t(k)].name, caption = kLeanVariants[size_t(k)].caption;
         // Figures hold display codes (report/page.h): renders are encoded, error maps drawn so.
         const Image shown = srgbFromLinear(views[k]);
         Image cropShown = resizeNearest(cropped(shown, crop), cropW, cropH);
@@ -146,16 +143,16 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
         const std::string err = k == 0 ? ""
                                        : ", error " + fixed4(res.rows[size_t(k - 1)].meanErrorGlobal) + " / " +
                                              fixed4(res.rows[size_t(k - 1)].meanErrorCrop) + " (crop)";
-        texts[0].push_back(std::string(captions[size_t(k)]) + err);
-        texts[1].push_back(std::string(captions[size_t(k)]) + ", mid-distance crop, ×" + std::to_string(magnify));
+        texts[0].push_back(caption + err);
+        texts[1].push_back(caption + ", mid-distance crop, ×" + std::to_string(magnify));
         images.push_back({"figure12_" + tag + ".png", shown, ""});
         images.push_back({"figure12_" + tag + "_crop.png", std::move(cropShown), ""});
         if (k == 0) continue;
         Image e = colourise(errors[k], 0.0, vmax, HeatPalette::Viridis);
         rows[2].push_back(resizeSmooth(e, thumbW, thumbH));
         rows[3].push_back(resizeNearest(cropped(e, crop), cropW, cropH));
-        texts[2].push_back("error, " + std::string(captions[size_t(k)]));
-        texts[3].push_back("error (crop), " + std::string(captions[size_t(k)]));
+        texts[2].push_back("error, " + caption);
+        texts[3].push_back("error (crop), " + caption);
         images.push_back({"figure12_" + tag + "_error.png", std::move(e), ""});
     }
     rows.push_back(

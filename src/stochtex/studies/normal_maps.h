@@ -27,13 +27,18 @@ enum class LeanVariant {
     SubProbes,     // ours with the sub-probes estimator (issue 32)
     Exact,         // the exact footprint moments of the slopes in the lobe: what estimators can reach (issue 32)
 };
+// A variant's name (file names, the CSV), its caption in the figure and
+// what it changes in the lean filter options.
+struct LeanVariantInfo {
+    LeanVariant variant;
+    const char* name;
+    const char* caption;
+    void (*apply)(FilterOptions&);
+};
 // In the figure's order: the reference, then the variants it is compared with.
-inline const EnumNames<LeanVariant> kLeanVariantNames{
-    {"reference", LeanVariant::Reference},        {"ours", LeanVariant::Ours},
-    {"no-covariance", LeanVariant::NoCovariance}, {"deliot-heitz", LeanVariant::DeliotHeitz},
-    {"sub-probes", LeanVariant::SubProbes},       {"exact-statistics", LeanVariant::Exact}};
+extern const std::array<LeanVariantInfo, 6> kLeanVariants;
 // The filter options of a variant (aniso and reference samples as given).
-FilterOptions leanVariantOptions(LeanVariant variant, int aniso, int referenceSamples);
+FilterOptions leanVariantOptions(const LeanVariantInfo& variant, int aniso, int referenceSamples);
 
 struct Figure12Options {
     PatternSpec pattern;  // with a normal map (the lean-ridges preset)

@@ -215,6 +215,27 @@ Image errorMap(const Image& a, const Image& b, double& mean) {
     return e;
 }
 
+std::vector<double> otherEstimatorErrors(const GraphPattern& pattern, FilterOptions filter, const Camera& camera,
+                                         const Image& reference) {
+    filter.source = StatisticsSource::Estimators;
+    std::vector<double> errors;
+    for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
+        filter.estimator = kVarianceEstimatorNames[e].second;
+        (void)errorMap(FilteredGraph(pattern, filter).render(camera), reference, errors.emplace_back());
+    }
+    return errors;
+}
+
+void otherEstimatorColumns(Table& table, const std::string& keyPrefix,
+                           const std::function<std::string(const std::string&)>& caption) {
+    for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
+        const std::string& name = kVarianceEstimatorNames[e].first;
+        std::string key = keyPrefix + name;
+        std::replace(key.begin(), key.end(), '-', '_');
+        table.columns.push_back({key, caption(name), ""});
+    }
+}
+
 namespace {
 
 // Mean over the pixels of ‖a − c‖₂ (RGB).
@@ -283,13 +304,7 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         c.estimated = FilteredGraph(pattern, fo).render(cam);
         if (o.exactStatistics) c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
         c.errEstimated = errorMap(c.estimated, c.reference, c.numbers.meanErrorEstimated);
-        // The same with the other estimators (issue 32: a column each).
-        for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
-            FilterOptions other = fo;
-            other.estimator = kVarianceEstimatorNames[e].second;
-            (void)errorMap(FilteredGraph(pattern, other).render(cam), c.reference,
-                           c.numbers.meanErrorOtherEstimators.emplace_back());
-        }
+        c.numbers.meanErrorOtherEstimators = otherEstimatorErrors(pattern, fo, cam, c.reference);
         // Not filtering at all: the pixel centres, what filtering must beat.
         (void)errorMap(FilteredGraph(pattern, fo.use(parseFilter("none"))).render(cam), c.reference,
                        c.numbers.meanErrorNone);
@@ -315,12 +330,8 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     if (o.exactStatistics)
         res.table.columns.push_back({"mean_error_exact_stats", "mean ‖Ŝ(μ, Σ) − S̄‖₂ (exact statistics)", ""});
     res.table.columns.push_back({"mean_error_estimators", "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (estimators)", ""});
-    for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
-        const std::string& name = kVarianceEstimatorNames[e].first;
-        std::string key = "mean_error_" + name;
-        std::replace(key.begin(), key.end(), '-', '_');
-        res.table.columns.push_back({key, "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (" + name + " estimator)", ""});
-    }
+    otherEstimatorColumns(res.table, "mean_error_",
+                          [](const std::string& name) { return "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (" + name + " estimator)"; });
     if (o.fadesTo) {
         res.table.columns.push_back({"mean_fade_reference", "mean ‖S̄ − m‖₂ (m: the profile's mean)", ""});
         res.table.columns.push_back({"mean_fade_estimators", "mean ‖Ŝ(μ̂, Σ̂) − m‖₂", ""});
