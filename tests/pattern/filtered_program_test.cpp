@@ -169,6 +169,20 @@ TEST(PrefilteredColormap, BetaAxisLookupReadsTheShapeOfTheMeanAndDeviation) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(top[size_t(c)], spikes[size_t(c)], 1e-6);
 }
 
+TEST(PrefilteredColormap, ATableTooLargeToPrefilterIsRefusedByItsResolution) {
+    // Two Beta axes keep every entry of all 10 × 10 layers: 10240² entries
+    // at 1024², 1200 MiB; one keeps 10240 × 3079 (360 MiB), within the bound.
+    const ColormapTable h = makeAnalyticColormap(AnalyticColormap::Gaussian, 1024);
+    const InputError e = test::inputErrorOf([&] { PrefilteredColormap(h, PrefilterMode::Smooth, {true, true}); });
+    EXPECT_EQ(e.parameter(), "resolution");
+    EXPECT_NE(std::string(e.what()).find("1024x1024 table read by bounded fields"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("would take 1200 MiB"), std::string::npos) << e.what();
+    // The library's own table builder names the parameter too.
+    const InputError r = test::inputErrorOf([] { makeAnalyticColormap(AnalyticColormap::Gaussian, 1); });
+    EXPECT_EQ(r.parameter(), "resolution");
+    EXPECT_STREQ(r.what(), "resolution must be in [2, 4096], got 1");
+}
+
 TEST(PrefilteredColormap, SmoothModeInterpolatesBetweenLevelsAndPaperSnaps) {
     const ColormapTable h = buildColormap(loadPreset("weld").colormap);
     const PrefilteredColormap smooth(h, PrefilterMode::Smooth), paper(h, PrefilterMode::Paper);

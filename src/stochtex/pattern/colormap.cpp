@@ -54,7 +54,8 @@ namespace {
 template <class F>
 ColormapTable tabulate(int resolution, F&& h) {
     if (resolution < 2 || resolution > kMaxColormapResolution)
-        throw std::invalid_argument("colormap resolution out of range");
+        throw InputError::parameter("resolution", "must be in [2, " + std::to_string(kMaxColormapResolution) +
+                                                      "], got " + std::to_string(resolution));
     Image table(resolution, resolution, 3);
     const double step = 1.0 / double(resolution - 1);
     parallelRows(resolution, [&](int y0, int y1) {

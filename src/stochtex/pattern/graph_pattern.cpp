@@ -336,12 +336,16 @@ void GraphPattern::settleProgramRanges(GraphPattern& p, const std::vector<NoiseE
         lo.push_back(vec3(e.toOutput(e.mean() - reach), 0.0f, 0.0f));
         hi.push_back(vec3(e.toOutput(e.mean() + reach), 0.0f, 0.0f));
     }
+    // A field whose bounds round past 0 or 1 in float (½ + ½ sin, a lerp of
+    // two ends) is still bounded: the Beta's mean is clamped to the table.
+    constexpr float roundingSlack = 1e-5f;
     kernel::OpContext ctx;
     for (const Operation& op : p.operations_) {
         if (op.table >= 0)
             for (size_t axis = 0; axis < 2; ++axis)
                 if (const int s = op.inputs[axis]; s >= p.leafCount())
-                    p.tables_[size_t(op.table)].beta[axis] = lo[size_t(s)].x >= 0.0f && hi[size_t(s)].x <= 1.0f;
+                    p.tables_[size_t(op.table)].beta[axis] =
+                        lo[size_t(s)].x >= -roundingSlack && hi[size_t(s)].x <= 1.0f + roundingSlack;
         ctx.table = op.table;
         ctx.pointTable = op.table >= 0 ? &p.tables_[size_t(op.table)].point : nullptr;
         vec3 outLo(INFINITY), outHi(-INFINITY);

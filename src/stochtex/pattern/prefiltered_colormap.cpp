@@ -11,6 +11,7 @@
 
 #include <boost/math/distributions/beta.hpp>
 #include <boost/math/special_functions/beta.hpp>
+#include <boost/math/special_functions/gamma.hpp>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
@@ -127,7 +128,8 @@ std::vector<std::vector<Tap>> betaTaps(int n, double tau, int out) {
             }
             const double shape = 1.0 / nu - 1.0, a = m * shape, b = (1.0 - m) * shape;
             const auto cdf = [&](int k) { return boost::math::ibeta(a, b, x(k)); };
-            const double logBeta = std::lgamma(a) + std::lgamma(b) - std::lgamma(a + b);
+            // Boost's lgamma: std::lgamma writes the global signgam, a race between the rows' threads.
+            const double logBeta = boost::math::lgamma(a) + boost::math::lgamma(b) - boost::math::lgamma(a + b);
             const auto density = [&](double v) {
                 return std::exp((a - 1.0) * std::log(v) + (b - 1.0) * std::log1p(-v) - logBeta);
             };
@@ -303,6 +305,20 @@ void validatePrefilteredResolution(int width, int height) {
 PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode mode, BetaAxes beta)
     : mode_(mode), beta_(beta), sigmas_(sigmaLevels(mode)), betaLevels_(betaLevels(mode)) {
     validatePrefilteredResolution(h.resolutionX(), h.resolutionY());
+    // The layers' size before any work: a Beta axis keeps every entry at each
+    // level, so two of them at 1024² would take 1.2 GB.
+    size_t entries[2] = {0, 0};
+    for (size_t axis = 0; axis < 2; ++axis) {
+        const int n = axis == 0 ? h.resolutionX() : h.resolutionY();
+        for (const double level : axisLevels(int(axis)))
+            entries[axis] += size_t(beta_[axis] ? n : storedResolution(n, level));
+    }
+    if (const size_t bytes = entries[0] * entries[1] * 3 * sizeof(float); bytes > kMaxPrefilteredBytes)
+        throw InputError::parameter(
+            "resolution", "a " + std::to_string(h.resolutionX()) + "x" + std::to_string(h.resolutionY()) + " table" +
+                              (beta_[0] || beta_[1] ? " read by bounded fields (Beta axes keep every entry)" : "") +
+                              " would take " + std::to_string(bytes >> 20) + " MiB prefiltered, more than " +
+                              std::to_string(kMaxPrefilteredBytes >> 20) + " MiB: lower the table's resolution");
     const Image base = h.table();
     // The x blur runs as a y blur of the transposed table (streams rows).
     const Image baseT = transposed(base);

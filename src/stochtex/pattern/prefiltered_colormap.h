@@ -18,6 +18,7 @@
 // input's mean and variance instead of the Gaussian: its layers are levels
 // of the Beta's shape (kernel betaLevelCoordinate), at the same level values.
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "stochtex/core/enum_names.h"
@@ -29,6 +30,9 @@ namespace stochtex {
 // of σ levels (100 pairs in smooth mode); R = 1024 takes ~1.4 s and 0.5 GB,
 // and each doubling four times that.
 constexpr int kMaxPrefilteredResolution = 1024;
+// The most memory a prefiltered table's layers may take (a table with two
+// Beta axes keeps every entry of every layer: 1.2 GB at 1024²).
+constexpr size_t kMaxPrefilteredBytes = size_t(512) << 20;
 // Fails (parameter "resolution") unless both sides are at most kMaxPrefilteredResolution.
 void validatePrefilteredResolution(int width, int height);
 
