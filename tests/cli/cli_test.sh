@@ -809,7 +809,7 @@ case_bad_render_flags() {
   "$bin" render --help | grep -q -- "--tilt FLOAT=60 .*degrees, in \[0, 89\]" || fail "render --help does not show --tilt's range from its entry"
   expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be in [1e-06, 1e+06], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
   expect_bad "bad view" "$out/bad23.png" '--view: view must be zoom or plane, got "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
-  expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper, deliot-heitz or sub-probes, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh
+  expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper, deliot-heitz, sub-probes or sub-probes-4x4, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh
   expect_bad "stability scale" "$out/sbad1" "--from: from must be in [1e-06, 1e+06], got 0" -- "$bin" stability --preset gaussian -o "$out/sbad1" --from 0
   expect_bad "stability denormal scale" "$out/sbad1b" "--from: from must be in [1e-06, 1e+06], got 4.94066e-324" -- "$bin" stability --preset gaussian -o "$out/sbad1b" --from 4.9e-324
   expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"

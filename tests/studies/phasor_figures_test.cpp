@@ -103,13 +103,14 @@ TEST(PhasorFigures, Figure11FadesToTheProfilesMean) {
     // Rows: reference, estimated, error (no exact statistics): 3 images per footprint.
     EXPECT_EQ(r.figures.size(), 2u + 3u * 3u);
     EXPECT_EQ(r.figures[0].file, "figure11.png");
-    // The estimators' errors (the paper's, deliot-heitz, sub-probes), the
-    // fades, then the reference's samples and its change on doubling them.
-    ASSERT_EQ(r.table.columns.size(), 9u);
+    // The estimators' errors (the paper's, deliot-heitz, sub-probes,
+    // sub-probes-4x4), the fades, then the reference's samples and its change
+    // on doubling them.
+    ASSERT_EQ(r.table.columns.size(), 10u);
     EXPECT_EQ(r.table.columns[1].key, "mean_error_none");
     EXPECT_EQ(r.table.columns[4].key, "mean_error_sub_probes");
-    EXPECT_EQ(r.table.columns[6].key, "mean_fade_estimators");
-    EXPECT_EQ(r.table.columns[7].key, "reference_samples");
+    EXPECT_EQ(r.table.columns[7].key, "mean_fade_estimators");
+    EXPECT_EQ(r.table.columns[8].key, "reference_samples");
     for (const Figure4Column& c : r.columns) {
         EXPECT_TRUE(c.referenceSamples == 8 || c.referenceSamples == 16) << c.footprint << ": " << c.referenceSamples;
         EXPECT_EQ(c.exactSamples, 0);  // Figure 11 renders no exact statistics

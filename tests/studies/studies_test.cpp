@@ -330,21 +330,22 @@ TEST(Studies, Table1ReducedRowsTablesAndPlots) {
     o.errors.count = 30;
     const Table1Result r = table1(o);
     for (const auto& rows : r.rows) {
-        ASSERT_EQ(rows.size(), 8u);  // 2 sizes × (paper, deliot-heitz, sub-probes, global)
+        ASSERT_EQ(rows.size(), 10u);  // 2 sizes × (paper, deliot-heitz, sub-probes, sub-probes-4x4, global)
         // As ReducedTable1HasSaneNumbers: at 2×2 the estimators beat the global statistics.
-        EXPECT_EQ(rows[3].estimator, "global");
-        EXPECT_LT(rows[0].muAbs, 0.5 * rows[3].muAbs);
-        EXPECT_LT(rows[0].sigmaAbs, 0.5 * rows[3].sigmaAbs);
+        EXPECT_EQ(rows[4].estimator, "global");
+        EXPECT_LT(rows[0].muAbs, 0.5 * rows[4].muAbs);
+        EXPECT_LT(rows[0].sigmaAbs, 0.5 * rows[4].sigmaAbs);
         for (const auto& e : rows) EXPECT_EQ(e.values, 60);
     }
-    ASSERT_EQ(r.data.rows.size(), 16u);
-    EXPECT_EQ(r.data.rows[8][0].text, "high");
+    ASSERT_EQ(r.data.rows.size(), 20u);
+    EXPECT_EQ(r.data.rows[10][0].text, "high");
     EXPECT_EQ(r.data.rows[2][2].text, "sub-probes");
+    EXPECT_EQ(r.data.rows[3][2].text, "sub-probes-4x4");
     EXPECT_EQ(*r.data.rows[0][3].number, r.rows[0][0].muAbs);
-    ASSERT_EQ(r.tables.size(), 5u);  // paper, deliot-heitz, sub-probes, global, published
+    ASSERT_EQ(r.tables.size(), 6u);  // paper, deliot-heitz, sub-probes, sub-probes-4x4, global, published
     EXPECT_EQ(r.tables[0].rows.size(), 2u);
     EXPECT_EQ(r.tables[0].rows[1][0].text, "16×16");
-    EXPECT_EQ(r.tables[4].rows.size(), 7u);
+    EXPECT_EQ(r.tables[5].rows.size(), 7u);
     EXPECT_EQ(r.figures.size(), 4u);
     o.errors.count = 0;
     EXPECT_THROW(table1(o), InputError);
@@ -370,11 +371,13 @@ TEST(Studies, Figure4ErrorsShrinkWithExactStatistics) {
     // Both beat the pixel centres there; at one texel a pixel all three are close to S̄.
     EXPECT_LT(r.columns[1].meanErrorEstimated, 0.7 * r.columns[1].meanErrorNone);
     EXPECT_LT(r.columns[0].meanErrorNone, 0.05);
-    // A column per other estimator (deliot-heitz, sub-probes); at 8² the
-    // sub-probes' error is below the paper's (docs/RESULTS.md, Figure 4).
-    ASSERT_EQ(r.columns[1].meanErrorOtherEstimators.size(), 2u);
+    // A column per other estimator (deliot-heitz, sub-probes, sub-probes-4x4);
+    // at 8² the sub-probes' errors are below the paper's (docs/RESULTS.md, Figure 4).
+    ASSERT_EQ(r.columns[1].meanErrorOtherEstimators.size(), 3u);
     EXPECT_LT(r.columns[1].meanErrorOtherEstimators[1], r.columns[1].meanErrorEstimated);
+    EXPECT_LT(r.columns[1].meanErrorOtherEstimators[2], r.columns[1].meanErrorEstimated);
     EXPECT_EQ(r.table.columns[5].key, "mean_error_sub_probes");
+    EXPECT_EQ(r.table.columns[6].key, "mean_error_sub_probes_4x4");
     EXPECT_EQ(r.figures.size(), 2u + 5u * 2u);
     EXPECT_EQ(*r.table.rows[1][0].number, 8);
     EXPECT_EQ(r.table.rows[1][0].text, "8²");
@@ -426,8 +429,11 @@ TEST(Studies, Figure12OursBeatsDeliotHeitzAndNeedsTheCovariance) {
     o.height = 120;
     o.referenceSamples = 24;
     const Figure12Result r = figure12(o);
-    ASSERT_EQ(r.rows.size(), 5u);
-    const Figure12Row &ours = r.rows[0], &noCov = r.rows[1], &dh = r.rows[2], &sub = r.rows[3], &exact = r.rows[4];
+    ASSERT_EQ(r.rows.size(), 6u);
+    const Figure12Row &ours = r.rows[0], &noCov = r.rows[1], &dh = r.rows[2], &sub = r.rows[3], &sub4 = r.rows[4],
+                      &exact = r.rows[5];
+    ASSERT_EQ(sub4.variant, LeanVariant::SubProbes4x4);
+    EXPECT_LT(sub4.meanErrorCrop, ours.meanErrorCrop);
     ASSERT_EQ(ours.variant, LeanVariant::Ours);
     ASSERT_EQ(noCov.variant, LeanVariant::NoCovariance);
     ASSERT_EQ(dh.variant, LeanVariant::DeliotHeitz);
@@ -446,7 +452,7 @@ TEST(Studies, Figure12OursBeatsDeliotHeitzAndNeedsTheCovariance) {
     EXPECT_LT(ours.meanErrorCrop, noCov.meanErrorCrop);
     EXPECT_LT(ours.meanErrorGlobal, noCov.meanErrorGlobal);
     EXPECT_GT(ours.meanErrorCrop, 0.0);
-    EXPECT_EQ(r.table.rows.size(), 5u);
+    EXPECT_EQ(r.table.rows.size(), 6u);
     EXPECT_EQ(r.figures.front().file, "figure12.png");
     // Bad parameters are refused before any work, naming the parameter.
     o.crop = {0.5, 0.2, 0.4, 0.6};

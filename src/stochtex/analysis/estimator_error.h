@@ -8,6 +8,7 @@
 //   paper        — eq. 8 and eq. 12 on the E_l / V_l pyramids;
 //   deliot-heitz — the same mean, one constant variance per level [DH19];
 //   sub-probes   — the paper's, each probe as 2×2 probes one level finer;
+//   sub-probes-4x4 — the same as 4×4 probes two levels finer;
 //   global       — no footprint information: μ_E and σ_E of the whole
 //                  example (what a pixel falls back to without filtering
 //                  data; every estimator should beat it).
@@ -43,8 +44,8 @@ void validateEstimatorErrorOptions(const EstimatorErrorOptions& options, int exa
 // The errors of a two-channel field's estimators (its grid density and
 // tile offsets; covariances are not measured, so its sharing does not
 // matter). Rows ordered by footprint, then estimator (kVarianceEstimatorNames'
-// order: paper, deliot-heitz, sub-probes; then global). Multi-threaded over footprints; the result does not depend on
-// threads. std::invalid_argument for a field without two channels.
+// order: paper, deliot-heitz, sub-probes, sub-probes-4x4; then global). Multi-threaded over footprints; the result does
+// not depend on threads. std::invalid_argument for a field without two channels.
 std::vector<EstimatorError> measureEstimatorErrors(const TiledField& field, const EstimatorErrorOptions& options,
                                                    const std::function<void(int)>& progress = {});
 

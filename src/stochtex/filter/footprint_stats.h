@@ -33,18 +33,22 @@ struct FootprintStats {
 };
 
 enum class VarianceEstimator {
-    Paper,        // eq. 12/14/15: per-texel variances from the V_l pyramid
-    DeliotHeitz,  // one constant within-texel variance per LOD [DH19]
-    SubProbes,    // the paper's, each probe as 2×2 probes one level finer (kernel/estimate.glsl; 4× the fetches)
+    Paper,         // eq. 12/14/15: per-texel variances from the V_l pyramid
+    DeliotHeitz,   // one constant within-texel variance per LOD [DH19]
+    SubProbes,     // the paper's, each probe as 2×2 probes one level finer (kernel/estimate.glsl; 4× the fetches)
+    SubProbes4x4,  // the same as 4×4 probes two levels finer (16× the fetches)
 };
 // The paper's first: the studies' main columns are the default estimator's
 // (FilterOptions::estimator), then a column per name after it.
 inline const EnumNames<VarianceEstimator> kVarianceEstimatorNames{{"paper", VarianceEstimator::Paper},
                                                                   {"deliot-heitz", VarianceEstimator::DeliotHeitz},
-                                                                  {"sub-probes", VarianceEstimator::SubProbes}};
+                                                                  {"sub-probes", VarianceEstimator::SubProbes},
+                                                                  {"sub-probes-4x4", VarianceEstimator::SubProbes4x4}};
 // The sub-probes per side of a probe that an estimator reads (the kernel's
-// subProbes: 2 for SubProbes, else 1).
-inline int subProbesOf(VarianceEstimator e) { return e == VarianceEstimator::SubProbes ? 2 : 1; }
+// subProbes: 2 for SubProbes, 4 for SubProbes4x4, else 1).
+inline int subProbesOf(VarianceEstimator e) {
+    return e == VarianceEstimator::SubProbes ? 2 : e == VarianceEstimator::SubProbes4x4 ? 4 : 1;
+}
 
 class FootprintEstimator {
 public:

@@ -13,7 +13,7 @@
 
 namespace stochtex {
 
-const std::array<LeanVariantInfo, 6> kLeanVariants{{
+const std::array<LeanVariantInfo, 7> kLeanVariants{{
     {LeanVariant::Reference, "reference", "reference (supersampled)",
      [](FilterOptions& o) { o.source = StatisticsSource::Reference; }},
     {LeanVariant::Ours, "ours", "ours (eq. 9, 14, 18)", [](FilterOptions&) {}},
@@ -26,6 +26,8 @@ const std::array<LeanVariantInfo, 6> kLeanVariants{{
      }},
     {LeanVariant::SubProbes, "sub-probes", "ours, sub-probes estimator",
      [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes; }},
+    {LeanVariant::SubProbes4x4, "sub-probes-4x4", "ours, sub-probes-4x4 estimator",
+     [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes4x4; }},
     {LeanVariant::Exact, "exact-statistics", "exact footprint statistics",
      [](FilterOptions& o) { o.source = StatisticsSource::Exact; }},
 }};
@@ -91,7 +93,7 @@ Figure12Result figure12(const Figure12Options& o, const Progress& progress) {
     Image views[n], errors[n];
     for (int k = 0; k < n; ++k) {
         // The supersampled reference and the exact statistics take nearly all the time.
-        const double from = k == 0 ? 0.0 : 0.5 + 0.1 * (k - 1), to = k == 0 ? 0.5 : from + 0.1;
+        const double from = k == 0 ? 0.0 : 0.5 + 0.5 * (k - 1) / (n - 1), to = k == 0 ? 0.5 : from + 0.5 / (n - 1);
         const LeanVariantInfo& variant = kLeanVariants[size_t(k)];
         const FilterOptions fo = leanVariantOptions(variant, o.aniso, o.referenceSamples);
         // The file's lean program (GraphPattern::build), as `render` draws it.
