@@ -4,17 +4,21 @@
 // Figure 10 (phasor variants; procedural phasor noise beside ours), Figure 11
 // (filtering the phasor sine pattern), Figure 12 (LEAN-mapped normal maps),
 // Figure 14 (a texture graph filtered by moment matching) — and
-// `all`, which runs them and writes an index.html (reproduce_all.cpp).
-#include "common.h"
+// `all`, which runs them and writes an index.html (reproduce_all.cpp); beyond
+// the paper, `estimators` (each footprint estimator's rendered error).
 #include "reproduce.h"
+#include "common.h"
 
 namespace stochtex::cli {
 
 void registerReproduce(CLI::App& app) {
     auto args = std::make_shared<ReproduceArgs>();
-    auto* cmd = app.add_subcommand("reproduce", "Regenerate the paper's evidence: table1, figure4, figure10, figure11, figure12, figure14, figures7-9, all");
+    auto* cmd = app.add_subcommand("reproduce",
+                                   "Regenerate the paper's evidence: table1, figure4, figure10, figure11, figure12, "
+                                   "figure14, figures7-9, all; and estimators");
     cmd->require_subcommand(1);
-    auto* table1Cmd = cmd->add_subcommand("table1", "Table 1: mean errors of μ̂ and σ̂ against exact footprint statistics");
+    auto* table1Cmd =
+        cmd->add_subcommand("table1", "Table 1: mean errors of μ̂ and σ̂ against exact footprint statistics");
     addReproduceFlags(*table1Cmd, *args, true, nullptr);
     table1Cmd->callback([args] {
         prepareReproduce(*args);
@@ -68,6 +72,7 @@ void registerReproduce(CLI::App& app) {
         });
     });
     registerReproduceFigure14(*cmd, args);
+    registerReproduceEstimators(*cmd, args);
     registerReproduceAll(*cmd, args);
 }
 

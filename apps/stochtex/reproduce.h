@@ -7,6 +7,7 @@
 
 #include "common.h"
 #include "stochtex/core/progress.h"
+#include "stochtex/studies/estimator_renders.h"
 #include "stochtex/studies/graph_filtering.h"
 #include "stochtex/studies/normal_maps.h"
 #include "stochtex/studies/paper.h"
@@ -24,6 +25,7 @@ struct ReproduceArgs {
     Figure10Options figure10;
     Figure14Options figure14 = figure14Options();
     std::string figure14Pattern;  // a graph file instead of the preset
+    EstimatorRendersOptions estimators;
     int sheetSize = 384;
     int threads = 0;
 };
@@ -57,5 +59,7 @@ void runReproduction(const ReproduceArgs& args, const std::string& name,
 void registerReproduceAll(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> args);
 // `reproduce figure14` (reproduce_figure14.cpp).
 void registerReproduceFigure14(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> args);
+// `reproduce estimators` (reproduce_estimators.cpp).
+void registerReproduceEstimators(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> args);
 
 }  // namespace stochtex::cli

@@ -1,6 +1,7 @@
 // stochtex stability: flicker of a zoom-out sequence, per filter mode, as the
 // change of the frames and as the change of their error against the ground
 // truth S̄ (studies/stability_study.h).
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ void registerStability(CLI::App& app) {
         PatternSource source;
         StabilityStudyOptions study;
         std::vector<std::string> filters{"none", "paper", "smooth", "exact", "reference"};  // kFilterNames
+        std::vector<std::string> estimators{"paper"};                                       // kVarianceEstimatorNames
         FilterOptions options;
         std::string dir;
         int threads = 0;
@@ -36,6 +38,12 @@ void registerStability(CLI::App& app) {
         ->check(nameValidator(kFilterNames, "filter"))
         ->type_name("ENUM")
         ->default_str("none,paper,smooth,exact,reference");
+    cmd->add_option("--estimators", args->estimators,
+                    "Footprint estimators: each filter that reads them (paper, smooth) is measured once per name")
+        ->delimiter(',')
+        ->check(nameValidator(kVarianceEstimatorNames, "estimator"))
+        ->type_name("ENUM")
+        ->default_str("paper");
     addParameterOptions(*cmd, stabilityStudyMembers(), args->study);
     addAnisoFlag(*cmd, args->options.aniso);
     addParameterOption(*cmd, referenceMaxSamplesParam(), args->options.referenceMaxSamples);
@@ -44,7 +52,19 @@ void registerStability(CLI::App& app) {
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args, cmd] {
         StabilityStudyOptions study = args->study;
-        for (const std::string& name : args->filters) study.filters.emplace_back(args->options).use(parseFilter(name));
+        std::vector<std::string> names;  // the sequences' file names
+        for (const std::string& name : args->filters) {
+            const NamedFilter filter = parseFilter(name);
+            const size_t runs = filter.source == StatisticsSource::Estimators ? args->estimators.size() : 1;
+            for (size_t e = 0; e < runs; ++e) {
+                FilterOptions& f = study.filters.emplace_back(args->options).use(filter);
+                if (filter.source == StatisticsSource::Estimators)
+                    f.estimator = parseEnum(kVarianceEstimatorNames, args->estimators[e], "estimator");
+                std::string file = filterName(f);
+                std::replace(file.begin(), file.end(), '/', '-');
+                names.push_back(file);
+            }
+        }
         validateStabilityStudy(study);
         refuseUnusedFilterFlags(*cmd, study.filters);
         const PatternSpec spec = loadPatternSource(args->source, study.filters);
@@ -52,7 +72,7 @@ void registerStability(CLI::App& app) {
         const GraphPattern pattern = GraphPattern::build(spec);  // what only building shows, before any output
         const std::string& dir = args->dir;
         ensureFolder(dir);
-        FrameSequenceSet outputs(dir, args->filters, study.size, study.size,
+        FrameSequenceSet outputs(dir, names, study.size, study.size,
                                  {.video = args->video, .frames = args->writeFrames});
         StabilityFrameSink writeFrame;
         if (outputs.writes()) writeFrame = [&](size_t m, int k, const Image& frame) { outputs.write(m, k, frame); };

@@ -325,6 +325,11 @@ case_graph() {
   expect_ok "reproduce figure14" "$out/rf14/figure14.csv" -- "$bin" reproduce figure14 -o "$out/rf14" --size 24 --footprints 1,16 --reference-samples 8
   [ -s "$out/rf14/figure14_filtering.png" ] || fail "reproduce figure14: figure14_filtering.png not written"
   grep -q "^16," "$out/rf14/figure14.csv" || fail "reproduce figure14: no row for footprint 16: $(cat "$out/rf14/figure14.csv")"
+  expect_ok "reproduce estimators" "$out/rest/estimators.csv" -- "$bin" reproduce estimators -o "$out/rest" --presets woven --scales 2,8 --size 24 --reference-samples 8 --no-plane
+  grep -q "^woven,zoom ×8,8," "$out/rest/estimators.csv" || fail "reproduce estimators: no row for woven at ×8: $(cat "$out/rest/estimators.csv")"
+  head -1 "$out/rest/estimators.csv" | grep -q "mean_error_sub_probes_4x4" || fail "reproduce estimators: no column for sub-probes-4x4"
+  [ -s "$out/rest/estimators_woven.png" ] || fail "reproduce estimators: estimators_woven.png not written"
+  expect_bad "estimators unknown preset" "$out/resb/estimators.csv" '--presets: presets must name known presets (stochtex presets lists them), got "nosuch"' -- "$bin" reproduce estimators -o "$out/resb" --presets nosuch
   # A colour exemplar as one 3-channel tiled field, the albedo of a lean node.
   for node in tiled_field channel compose lean; do "$bin" nodes | grep -q "^$node (" || fail "nodes: $node not listed"; done
   expect_ok "render painted-bumps" "$out/pb.png" -- "$bin" render "$src/data/graphs/painted-bumps.json" --size 64 --view plane --filter smooth -o "$out/pb.png"

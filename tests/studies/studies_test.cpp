@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
@@ -12,6 +13,7 @@
 #include "stochtex/pattern/presets.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
+#include "stochtex/studies/estimator_renders.h"
 #include "stochtex/studies/image_base_study.h"
 #include "stochtex/studies/normal_maps.h"
 #include "stochtex/studies/paper.h"
@@ -460,6 +462,43 @@ TEST(Studies, Figure12OursBeatsDeliotHeitzAndNeedsTheCovariance) {
     o = Figure12Options{};
     o.pattern = loadPreset("camouflage");
     EXPECT_THROW(figure12(o), InputError);
+}
+
+// Issue 32's render-error table, reduced: a colormap pattern and the LEAN
+// one, two zooms and the plane. Every estimator is measured against the same
+// S̄; the exact statistics are the floor and the 4×4 sub-probes beat the
+// paper's estimator where footprints span a few texels.
+TEST(Studies, EstimatorRendersMeasureEveryEstimatorAgainstTheFloor) {
+    EstimatorRendersOptions o;
+    o.presets = {"woven", "lean-ridges"};
+    o.scales = {2, 8};
+    o.size = 32;
+    o.referenceSamples = 16;
+    const EstimatorRendersResult r = estimatorRenders(o);
+    ASSERT_EQ(r.rows.size(), 6u);  // 2 patterns × (2 zooms + the plane)
+    for (const EstimatorRendersRow& row : r.rows) {
+        ASSERT_EQ(row.estimators.size(), kVarianceEstimatorNames.size());
+        const double paper = row.estimators[0];
+        std::printf("%s %s: none %.4f exact %.4f paper %.4f sub-probes %.4f 4x4 %.4f\n", row.pattern.c_str(),
+                    row.view.c_str(), row.none, row.exact, paper, row.estimators[2], row.estimators[3]);
+        EXPECT_GT(row.exact, 1e-5) << row.pattern << " " << row.view;  // never S̄ compared with itself
+        EXPECT_LT(row.exact, paper) << row.pattern << " " << row.view;
+        // (Not the paper's: on lean-ridges at ×8 it errs more than the pixel centres.)
+        EXPECT_LT(row.estimators[3], row.none) << row.pattern << " " << row.view;
+    }
+    EXPECT_EQ(r.rows[1].view, "zoom ×8");
+    EXPECT_EQ(r.rows[2].view, "plane 70°");
+    EXPECT_EQ(r.rows[2].scale, 0.0);
+    EXPECT_LT(r.rows[1].estimators[3], 0.7 * r.rows[1].estimators[0]);  // woven ×8: 4×4 sub-probes against the paper's
+    EXPECT_EQ(r.table.rows.size(), 6u);
+    EXPECT_EQ(r.table.columns[8].key, "mean_error_sub_probes_4x4");
+    ASSERT_EQ(r.figures.size(), 2u);
+    EXPECT_EQ(r.figures[1].file, "estimators_lean-ridges.png");
+    o.presets = {"nosuch"};
+    EXPECT_EQ(test::inputErrorOf([&] { estimatorRenders(o); }).parameter(), "presets");
+    o.presets = {"woven"};
+    o.scales = {0.0};
+    EXPECT_EQ(test::inputErrorOf([&] { estimatorRenders(o); }).parameter(), "scales");
 }
 
 TEST(Studies, Figures7to9AreThreeSheets) {

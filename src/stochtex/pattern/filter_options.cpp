@@ -30,7 +30,9 @@ void validateFilterOptions(const FilterOptions& options) {
 
 NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames, name, "filter"); }
 
-std::string filterName(const FilterOptions& options) {
+namespace {
+
+std::string filterPairName(const FilterOptions& options) {
     for (const auto& [name, filter] : kFilterNames)
         if (filter == options.filter()) return name;
     // Another response over a named filter's statistics: "smooth/lean".
@@ -42,6 +44,14 @@ std::string filterName(const FilterOptions& options) {
                        (options.response.covariance ? "" : " without covariance");
     }
     return enumName(kStatisticsSourceNames, options.source) + "/" + enumName(kResponseKindNames, options.response.kind);
+}
+
+}  // namespace
+
+std::string filterName(const FilterOptions& options) {
+    const bool otherEstimator =
+        options.source == StatisticsSource::Estimators && options.estimator != FilterOptions{}.estimator;
+    return filterPairName(options) + (otherEstimator ? "/" + enumName(kVarianceEstimatorNames, options.estimator) : "");
 }
 
 }  // namespace stochtex

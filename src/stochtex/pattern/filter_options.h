@@ -105,6 +105,7 @@ NamedFilter parseFilter(const std::string& name);
 // statistics reads "NAME/RESPONSE" ("smooth/lean", "none/lean without
 // covariance"), any other pair "SOURCE/RESPONSE" (e.g.
 // "exact/prefiltered-colormap") so that it is never mistaken for a name.
+// Statistics from an estimator other than the default add it: "smooth/sub-probes".
 std::string filterName(const FilterOptions& options);
 // The anisotropic probes K and the reference's samples per axis, each
 // described once: the range validateFilterOptions checks, the flag and help
