@@ -154,6 +154,12 @@ case_stability() {
   expect_ok "stability" "$out/stab/stability-frames.csv" -- "$bin" stability --preset marble -o "$out/stab" --frames 3 --size 16 --to 8 --filters none,smooth --write-frames
   [ -s "$out/stab/smooth-002.png" ] || fail "stability: frames not written"
   [ "$(wc -l <"$out/stab/stability.csv")" -eq 3 ] || fail "stability.csv: expected a header and 2 rows"
+  # A filter over the estimators is measured once per --estimators name, its frames named so.
+  expect_ok "stability per estimator" "$out/stabe/stability.csv" -- "$bin" stability --preset gaussian -o "$out/stabe" --frames 2 --size 16 --to 4 --filters none,smooth --estimators paper,sub-probes-4x4 --write-frames
+  grep -q "^smooth/sub-probes-4x4," "$out/stabe/stability.csv" || fail "stability: no row for smooth/sub-probes-4x4: $(cat "$out/stabe/stability.csv")"
+  [ "$(wc -l <"$out/stabe/stability.csv")" -eq 4 ] || fail "stability per estimator: expected a header and 3 rows"
+  [ -s "$out/stabe/smooth-sub-probes-4x4-001.png" ] || fail "stability per estimator: frames not written: $(ls "$out/stabe")"
+  expect_bad "stability bad estimator" "$out/stabeb" "--estimators" -- "$bin" stability --preset gaussian -o "$out/stabeb" --estimators nosuch
 }
 
 # --- thesis studies (small) ---
