@@ -235,6 +235,11 @@ CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options) {
                        "0.04-0.45x its sigma error at 2-16 texels, 3-5x its time; docs/RESULTS.md)");
 }
 
+void applyPatternEstimator(const CLI::App& cmd, const PatternSpec& spec, FilterOptions& options) {
+    const CLI::Option* flag = cmd.get_option_no_throw("--estimator");
+    if (spec.estimator && (!flag || flag->count() == 0)) options.estimator = *spec.estimator;
+}
+
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso) {
     aniso = kDefaultAniso;
     return addParameterOption(cmd, anisoParam(), aniso);

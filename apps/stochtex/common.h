@@ -183,6 +183,8 @@ void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterO
 // --estimator NAME (kVarianceEstimatorNames): the footprint estimator of
 // paper and smooth (refused with the other filters: refuseUnusedFilterFlags).
 CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options);
+// The pattern file's estimator ("estimator") where the command's --estimator was not given.
+void applyPatternEstimator(const CLI::App& cmd, const PatternSpec& spec, FilterOptions& options);
 // --aniso K (anisoParam(): 1..16, the library checks the range), set to its default, 8.
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso);
 // The checks of the filter-dependent flags: --aniso (and --estimator, --pack8:

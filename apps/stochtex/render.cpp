@@ -54,6 +54,7 @@ void registerRender(CLI::App& app) {
         checkBitsApply(bits, args->output);
         checkImageOutput(args->output, args->bits);
         const PatternSpec spec = loadPatternSource(args->source, args->options);
+        applyPatternEstimator(*cmd, spec, args->options);
         Camera camera = args->camera;
         camera.view = makeView(spec, args->view);
         validateCamera(camera);  // before building anything; the renderer checks the options

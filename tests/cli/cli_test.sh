@@ -820,6 +820,10 @@ case_bad_render_flags() {
   "$bin" render --help | grep -q -- "--tilt FLOAT=60 .*degrees, in \[0, 89\]" || fail "render --help does not show --tilt's range from its entry"
   expect_bad "zero scale" "$out/bad22.png" "--scale: scale must be in [1e-06, 1e+06], got 0" -- "$bin" render --preset gaussian -o "$out/bad22.png" --filter smooth --scale 0
   expect_bad "bad view" "$out/bad23.png" '--view: view must be zoom or plane, got "fisheye"' -- "$bin" render --preset gaussian -o "$out/bad23.png" --view fisheye
+  # A pattern file's "estimator" is used unless --estimator is given.
+  printf '{"estimator": "sub-probes-4x4", "noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "colormap": {"type": "gaussian"}}' >"$work/est.json"
+  "$bin" render "$work/est.json" --size 32 --scale 4 --filter paper -o "$out/est1.png" | grep -q "filter paper/sub-probes-4x4" || fail "render: the file's estimator not used"
+  "$bin" render "$work/est.json" --size 32 --scale 4 --filter paper --estimator paper -o "$out/est2.png" | grep -q "filter paper," || fail "render: --estimator does not override the file's"
   expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper, deliot-heitz, sub-probes or sub-probes-4x4, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh
   expect_bad "stability scale" "$out/sbad1" "--from: from must be in [1e-06, 1e+06], got 0" -- "$bin" stability --preset gaussian -o "$out/sbad1" --from 0
   expect_bad "stability denormal scale" "$out/sbad1b" "--from: from must be in [1e-06, 1e+06], got 4.94066e-324" -- "$bin" stability --preset gaussian -o "$out/sbad1b" --from 4.9e-324

@@ -135,6 +135,12 @@ TEST(PatternSpec, EnumValuedKeysUseTheNameTables) {
     EXPECT_EQ(parse(base + phasor + R"(sawtooth"}})").colormap.profile, PhasorProfile::Sawtooth);
     EXPECT_EQ(errorOf(base + phasor + R"(triangle"}})"),
               "test.json: /colormap/profile: unknown value \"triangle\" (expected one of: sine, sawtooth, square, image)");
+    // The footprint estimator a file asks for (commands' --estimator overrides it).
+    EXPECT_FALSE(parse(base + gaussian).estimator.has_value());
+    EXPECT_EQ(parse(base + R"(, "estimator": "sub-probes-4x4")" + gaussian).estimator, VarianceEstimator::SubProbes4x4);
+    EXPECT_EQ(errorOf(base + R"(, "estimator": "dh")" + gaussian),
+              "test.json: /estimator: unknown value \"dh\" (did you mean deliot-heitz?) (expected one of: paper, "
+              "deliot-heitz, sub-probes, sub-probes-4x4)");
 }
 
 TEST(PatternSpec, QuadratureShorthandSharesSeedAndOffsets) {

@@ -88,7 +88,7 @@ TEST(TextureGraph, RefusesBadGraphsNamingTheJsonPointer) {
         {graph(R"("a": )" + kNoise + ", " + cm, "zz"), "g.json: /output: no node \"zz\""},
         {graph(R"("a b": )" + kNoise + ", " + cm), "g.json: /nodes/a b: node ids are 1–64 letters, digits, '_' or '-'"},
         {R"({"nodes": {}, "output": "c"})", "g.json: /nodes: needs at least one node"},
-        {R"({"nodes": {"c": {"type": "colormap"}}, "output": "c", "noise_x": {}})", "g.json: /noise_x: unknown member (expected one of: name, description, seed, size, scale, offsets, grid_density, nodes, output)"},
+        {R"({"nodes": {"c": {"type": "colormap"}}, "output": "c", "noise_x": {}})", "g.json: /noise_x: unknown member (expected one of: name, description, seed, size, scale, offsets, grid_density, estimator, nodes, output)"},
     };
     for (const auto& c : cases) {
         const std::string e = errorOf(c.text);

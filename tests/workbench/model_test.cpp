@@ -198,6 +198,17 @@ TEST(WorkbenchModel, AProgramTakesItsKeysAndMouseAndRefusesEdits) {
 
 class WorkbenchModelFiles : public test::ScratchFolder {};
 
+// A pattern file that names its estimator opens with it.
+TEST_F(WorkbenchModelFiles, APatternFilesEstimatorIsTheOneShownFirst) {
+    const std::filesystem::path file = dir_ / "e.json";
+    nlohmann::json j = nlohmann::json::parse(presetText("camouflage"));
+    j["size"] = 64;
+    j["estimator"] = "sub-probes-4x4";
+    std::ofstream(file) << j.dump();
+    const WorkbenchModel m(WorkbenchDocument::patternFile(file.string()), options());
+    EXPECT_EQ(m.shown().filter.estimator, VarianceEstimator::SubProbes4x4);
+}
+
 TEST_F(WorkbenchModelFiles, AFileChangedOnDiskIsReloadedAndItsPartsBuiltAgain) {
     const std::filesystem::path file = dir_ / "p.json";
     nlohmann::json j = nlohmann::json::parse(presetText("camouflage"));

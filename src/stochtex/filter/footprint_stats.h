@@ -19,6 +19,7 @@
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint.h"
 #include "stochtex/filter/pyramid.h"
+#include "stochtex/filter/variance_estimator.h"
 #include "stochtex/kernel/estimate.h"
 #include "stochtex/noise/tiled_field.h"
 
@@ -31,24 +32,6 @@ struct FootprintStats {
     float sigmaX() const { return std::sqrt(std::max(varX, 0.0f)); }
     float sigmaY() const { return std::sqrt(std::max(varY, 0.0f)); }
 };
-
-enum class VarianceEstimator {
-    Paper,         // eq. 12/14/15: per-texel variances from the V_l pyramid
-    DeliotHeitz,   // one constant within-texel variance per LOD [DH19]
-    SubProbes,     // the paper's, each probe as 2×2 probes one level finer (kernel/estimate.glsl; 4× the fetches)
-    SubProbes4x4,  // the same as 4×4 probes two levels finer (16× the fetches)
-};
-// The paper's first: the studies' main columns are the default estimator's
-// (FilterOptions::estimator), then a column per name after it.
-inline const EnumNames<VarianceEstimator> kVarianceEstimatorNames{{"paper", VarianceEstimator::Paper},
-                                                                  {"deliot-heitz", VarianceEstimator::DeliotHeitz},
-                                                                  {"sub-probes", VarianceEstimator::SubProbes},
-                                                                  {"sub-probes-4x4", VarianceEstimator::SubProbes4x4}};
-// The sub-probes per side of a probe that an estimator reads (the kernel's
-// subProbes: 2 for SubProbes, 4 for SubProbes4x4, else 1).
-inline int subProbesOf(VarianceEstimator e) {
-    return e == VarianceEstimator::SubProbes ? 2 : e == VarianceEstimator::SubProbes4x4 ? 4 : 1;
-}
 
 class FootprintEstimator {
 public:

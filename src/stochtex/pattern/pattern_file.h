@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "stochtex/core/enum_names.h"
+#include "stochtex/filter/variance_estimator.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/noise/tiling_blending.h"
@@ -106,6 +107,9 @@ struct PatternSpec {
     bool quadraturePair = false;  // noise_y is "quadrature": the Hilbert pair of noise_x
     ColormapSpec colormap;
     std::optional<NormalMapSpec> normalMap;  // the pattern also carries normals
+    // The footprint estimator its filtered renders read, where the file names
+    // one ("estimator"); a command's --estimator overrides it.
+    std::optional<VarianceEstimator> estimator;
     // A graph file (texture_graph.h): its nodes give the two examples and the
     // colormap (`colormap` holds the output node's); noise[] is unused.
     std::shared_ptr<const TextureGraph> graph;

@@ -12,10 +12,11 @@ namespace fs = std::filesystem;
 PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
     const bool graph = r.value().is_object() && r.has("nodes");
     if (graph)
-        r.expectObject({"name", "description", "seed", "size", "scale", "offsets", "grid_density", "nodes", "output"});
+        r.expectObject({"name", "description", "seed", "size", "scale", "offsets", "grid_density", "estimator", "nodes",
+                        "output"});
     else
-        r.expectObject({"name", "description", "seed", "size", "scale", "offsets", "grid_density", "noise_x", "noise_y",
-                        "colormap", "normal_map"});
+        r.expectObject({"name", "description", "seed", "size", "scale", "offsets", "grid_density", "estimator",
+                        "noise_x", "noise_y", "colormap", "normal_map"});
     PatternSpec spec;
     spec.name = r.string("name", "pattern");
     if (r.has("description")) (void)r.at("description").string();
@@ -33,6 +34,7 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
     // The output caps (pixel count) are the renderer's: the pattern's own view must pass them.
     r.check([&] { validateView(View{spec.width, spec.height, spec.scale}); });
     spec.gridDensity = readNumber(r, patternMembers().gridDensity);
+    if (auto e = r.find("estimator")) spec.estimator = e->choice(kVarianceEstimatorNames);
     if (graph) {
         auto g = std::make_shared<TextureGraph>(parseTextureGraph(r, baseDir));
         spec.colormap = g->node(g->output).colormap;
@@ -47,8 +49,7 @@ PatternSpec parsePatternSpec(const JsonReader& r, const fs::path& baseDir) {
     if (ny.value().is_string()) {
         if (ny.string() != "quadrature")
             ny.fail("expected a noise object or \"quadrature\" (the Hilbert pair of noise_x)");
-        if (spec.noise[0].source != NoiseSpec::Source::Spectrum)
-            ny.fail("\"quadrature\" needs a spectrum noise_x");
+        if (spec.noise[0].source != NoiseSpec::Source::Spectrum) ny.fail("\"quadrature\" needs a spectrum noise_x");
         spec.noise[1] = spec.noise[0];
         spec.noise[1].spectrum.quadrature = !spec.noise[0].spectrum.quadrature;
         quadrature = true;

@@ -83,6 +83,8 @@ WorkbenchModel::WorkbenchModel(WorkbenchDocument document, const WorkbenchOption
             : filterName(FilterOptions{}.use({f.source, {ResponseKind::PrefilteredColormap, f.response.prefilter}}));
     shown_.response = f.response.kind;
     build();  // a document that does not build fails the run here
+    // A pattern file that names its estimator opens with it (the panel changes it).
+    if (!isShadertoy() && spec_.estimator) shown_.filter.estimator = *spec_.estimator;
 }
 
 WorkbenchModel::~WorkbenchModel() {

@@ -1,0 +1,28 @@
+#pragma once
+// Which footprint estimator a filter reads its statistics with: a parameter
+// of the filter options, the CLI, pattern files ("estimator") and the
+// exports, apart from the estimator itself (filter/footprint_stats.h) so
+// that what only names one need not include the pyramids.
+#include "stochtex/core/enum_names.h"
+
+namespace stochtex {
+
+enum class VarianceEstimator {
+    Paper,         // eq. 12/14/15: per-texel variances from the V_l pyramid
+    DeliotHeitz,   // one constant within-texel variance per LOD [DH19]
+    SubProbes,     // the paper's, each probe as 2×2 probes one level finer (kernel/estimate.glsl; 4× the fetches)
+    SubProbes4x4,  // the same as 4×4 probes two levels finer (16× the fetches)
+};
+// The paper's first: the studies' main columns are the default estimator's
+// (FilterOptions::estimator), then a column per name after it.
+inline const EnumNames<VarianceEstimator> kVarianceEstimatorNames{{"paper", VarianceEstimator::Paper},
+                                                                  {"deliot-heitz", VarianceEstimator::DeliotHeitz},
+                                                                  {"sub-probes", VarianceEstimator::SubProbes},
+                                                                  {"sub-probes-4x4", VarianceEstimator::SubProbes4x4}};
+// The sub-probes per side of a probe that an estimator reads (the kernel's
+// subProbes: 2 for SubProbes, 4 for SubProbes4x4, else 1).
+inline int subProbesOf(VarianceEstimator e) {
+    return e == VarianceEstimator::SubProbes ? 2 : e == VarianceEstimator::SubProbes4x4 ? 4 : 1;
+}
+
+}  // namespace stochtex
