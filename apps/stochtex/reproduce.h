@@ -34,6 +34,12 @@ struct ReproduceArgs {
 // --reference-samples, --filter, and --preset for figure 4, --footprints for
 // figure 11.
 void addReproduceFlags(CLI::App& sub, ReproduceArgs& args, bool table, Figure4Options* figure);
+// -o DIR and --threads, which every reproduce subcommand takes.
+void addReproduceOutputFlags(CLI::App& sub, ReproduceArgs& args);
+// --reference-tolerance: when the brute-force images have converged (studies/reference_samples.h).
+void addReferenceToleranceFlag(CLI::App& sub, double& tolerance);
+// --filter smooth|paper: the prefiltered tables of a study's filtered renders.
+void addPrefilterFlag(CLI::App& sub, PrefilterMode& mode);
 // figure10's flags: --size, --comparison-size, --frequency, --bandwidth,
 // --orientation, --density, --seed.
 void addFigure10Flags(CLI::App& sub, ReproduceArgs& args);

@@ -9,8 +9,7 @@ namespace stochtex::cli {
 void registerReproduceEstimators(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> args) {
     auto* sub = reproduce.add_subcommand(
         "estimators", "Beyond the paper: each footprint estimator's rendered error per pattern and view");
-    addOutputFolderFlag(*sub, args->dir);
-    addThreadsFlag(*sub, args->threads);
+    addReproduceOutputFlags(*sub, *args);
     EstimatorRendersOptions& e = args->estimators;
     addParameterOptions(*sub, estimatorRendersMembers(), e);
     sub->add_option("--presets", e.presets, "Patterns (presets)")
@@ -18,12 +17,9 @@ void registerReproduceEstimators(CLI::App& reproduce, std::shared_ptr<ReproduceA
         ->default_str("marble,woven,phasor-stripes,figure14,lean-ridges");
     sub->add_option("--scales", e.scales, "Zoom views, texels per pixel")->delimiter(',')->default_str("2,8,32,128");
     sub->add_flag("--no-plane{false}", e.plane, "Leave out the plane view");
-    sub->add_option("--reference-tolerance", e.referenceTolerance,
-                    "Samples double until the reference moves less than this (mean RGB distance)")
-        ->capture_default_str();
+    addReferenceToleranceFlag(*sub, e.referenceTolerance);
     addAnisoFlag(*sub, e.aniso);
-    addEnumFlag(*sub, "--filter", e.prefilter, kPrefilterModeNames, "prefilter",
-                "Prefiltered tables of the filtered renders: smooth or paper");
+    addPrefilterFlag(*sub, e.prefilter);
     sub->callback([args] {
         validateEstimatorRenders(args->estimators);
         runReproduction(*args, "estimators", [&](const Progress& p) {

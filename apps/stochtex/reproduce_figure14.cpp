@@ -8,17 +8,13 @@ namespace stochtex::cli {
 void registerReproduceFigure14(CLI::App& reproduce, std::shared_ptr<ReproduceArgs> args) {
     auto* sub = reproduce.add_subcommand(
         "figure14", "Figure 14: a graph of two transfer functions, filtered by moment matching vs the reference");
-    addOutputFolderFlag(*sub, args->dir);
-    addThreadsFlag(*sub, args->threads);
+    addReproduceOutputFlags(*sub, *args);
     Figure14Options& f = args->figure14;
     sub->add_option("--pattern", args->figure14Pattern, "A graph file instead of the preset figure14");
     addParameterOptions(*sub, figure14Members(), f);
-    sub->add_option("--reference-tolerance", f.referenceTolerance,
-                    "Samples double until the reference moves less than this (mean RGB distance)")
-        ->capture_default_str();
+    addReferenceToleranceFlag(*sub, f.referenceTolerance);
     sub->add_option("--footprints", f.footprints, "Footprint sides in texels")->delimiter(',');
-    addEnumFlag(*sub, "--filter", f.prefilter, kPrefilterModeNames, "prefilter",
-                "Prefiltered tables of the filtered renders: smooth or paper");
+    addPrefilterFlag(*sub, f.prefilter);
     sub->callback([args] {
         if (!args->figure14Pattern.empty()) {
             args->figure14.pattern = loadPatternFile(args->figure14Pattern);

@@ -10,9 +10,24 @@
 
 namespace stochtex::cli {
 
-void addFigure10Flags(CLI::App& sub, ReproduceArgs& a) {
+void addReproduceOutputFlags(CLI::App& sub, ReproduceArgs& a) {
     addOutputFolderFlag(sub, a.dir);
     addThreadsFlag(sub, a.threads);
+}
+
+void addReferenceToleranceFlag(CLI::App& sub, double& tolerance) {
+    sub.add_option("--reference-tolerance", tolerance,
+                   "Samples double until the reference moves less than this (mean RGB distance)")
+        ->capture_default_str();
+}
+
+void addPrefilterFlag(CLI::App& sub, PrefilterMode& mode) {
+    addEnumFlag(sub, "--filter", mode, kPrefilterModeNames, "prefilter",
+                "Prefiltered tables of the filtered renders: smooth or paper");
+}
+
+void addFigure10Flags(CLI::App& sub, ReproduceArgs& a) {
+    addReproduceOutputFlags(sub, a);
     Figure10Options& f = a.figure10;
     addParameterOptions(sub, figure10Members(), f);
     sub.add_option("--frequency", f.field.frequency, "Frequency of both phasor fields, cycles per period")
@@ -27,8 +42,7 @@ void addFigure10Flags(CLI::App& sub, ReproduceArgs& a) {
 }
 
 void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, Figure4Options* figure) {
-    addOutputFolderFlag(sub, a.dir);
-    addThreadsFlag(sub, a.threads);
+    addReproduceOutputFlags(sub, a);
     if (table) {
         sub.add_option("--count", a.table.errors.count, "Random footprints per size")->capture_default_str();
         sub.add_option("--footprints", a.table.errors.footprints, "Footprint sides in texels")->delimiter(',');
@@ -42,9 +56,7 @@ void addReproduceFlags(CLI::App& sub, ReproduceArgs& a, bool table, Figure4Optio
         if (figure == &a.figure11 && !table)
             sub.add_option("--footprints", f.footprints, "Footprint sides in texels")->delimiter(',');
         addParameterOptions(sub, figure4Members(), f);
-        sub.add_option("--reference-tolerance", f.referenceTolerance,
-                       "Samples double until the reference moves less than this (mean RGB distance)")
-            ->capture_default_str();
+        addReferenceToleranceFlag(sub, f.referenceTolerance);
         // Figures 4 and 11 compare the estimators' statistics with the
         // reference: --filter chooses only the response, among the filters
         // over the estimators (the validator refuses the others).
@@ -75,8 +87,7 @@ void prepareReproduce(ReproduceArgs& a) {
 namespace stochtex::cli {
 
 void addFigure12Flags(CLI::App& sub, ReproduceArgs& a) {
-    addOutputFolderFlag(sub, a.dir);
-    addThreadsFlag(sub, a.threads);
+    addReproduceOutputFlags(sub, a);
     Figure12Options& f = a.figure12;
     sub.add_option("--preset", f.name, "Pattern with a normal map")->capture_default_str();
     sub.add_option_function<int>(
