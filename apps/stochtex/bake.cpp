@@ -43,7 +43,7 @@ void registerBake(CLI::App& app) {
         applyPatternEstimator(*cmd, spec, args->options);
         exportPatternSpec(spec, args->options, args->dir, e);
         std::printf("exported %s (filter %s) to %s: manifest.json, stochtex.glsl, README.md and the data\n",
-                    spec.name.c_str(), filterName(args->options).c_str(), args->dir.c_str());
+                    spec.name.c_str(), filterLabel(args->options).c_str(), args->dir.c_str());
     });
 }
 

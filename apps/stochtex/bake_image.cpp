@@ -49,6 +49,7 @@ void registerBakeImage(CLI::App& app) {
         if (!gpuHasSource(args->options.source))
             refuseOption(*cmd, "--filter", "bake-image renders none, paper or smooth");
         const PatternSpec spec = loadPatternSource(args->source, args->options);
+        applyPatternEstimator(*cmd, spec, args->options);
         Camera whole;
         whole.view = makeView(spec, args->view);
         validateCamera(whole);
@@ -73,7 +74,7 @@ void registerBakeImage(CLI::App& app) {
         progress.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("wrote %s (%dx%d, %s, filter %s, %s, bands of %d rows, %.1f s)\n", args->output.c_str(), v.width,
-                    v.height, spec.name.c_str(), filterName(args->options).c_str(), args->device.gpu ? "GPU" : "CPU",
+                    v.height, spec.name.c_str(), filterLabel(args->options).c_str(), args->device.gpu ? "GPU" : "CPU",
                     args->band, seconds);
     });
 }

@@ -232,7 +232,7 @@ CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options) {
                        "Footprint estimator: paper | deliot-heitz (one variance per LOD) | sub-probes (the paper's, "
                        "each probe as 2x2 one level finer: 4x the fetches, 0.24-0.43x its sigma error at 2-8 texels "
                        "on Table 1, 1.4-2.1x its time) | sub-probes-4x4 (4x4 two levels finer: 16x the fetches, "
-                       "0.04-0.45x its sigma error at 2-16 texels, 3-5x its time; docs/RESULTS.md)");
+                       "0.04-0.45x its sigma error at 2-16 texels, 3-5.3x its time; docs/RESULTS.md)");
 }
 
 void applyPatternEstimator(const CLI::App& cmd, const PatternSpec& spec, FilterOptions& options) {

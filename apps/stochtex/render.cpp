@@ -70,7 +70,7 @@ void registerRender(CLI::App& app) {
         writeImage(args->output, image, WriteOptions{args->bits});
         std::printf("wrote %s (%dx%d, %s, %s view, filter %s, %s, %.2f s)\n", args->output.c_str(), camera.view.width,
                     camera.view.height, spec.name.c_str(), enumName(Camera::kKindNames, camera.kind).c_str(),
-                    filterName(args->options).c_str(), renderer->device().c_str(), seconds);
+                    filterLabel(args->options).c_str(), renderer->device().c_str(), seconds);
     });
 }
 

@@ -39,6 +39,7 @@ void registerScene(CLI::App& app) {
         const FilterOptions& options = args->options;
         const Mesh mesh = makeObject(args->object);
         const PatternSpec spec = loadPatternSource(args->source, args->options);
+        applyPatternEstimator(*cmd, spec, args->options);
         const auto start = std::chrono::steady_clock::now();
         auto context = GlContext::headless();
         const std::unique_ptr<GpuView> gpu = makeGpuView(spec, *context, options);
@@ -51,7 +52,7 @@ void registerScene(CLI::App& app) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image);
         std::printf("wrote %s (%dx%d, %s on a %s, filter %s, %s, %.2f s)\n", args->output.c_str(), w, h,
-                    spec.name.c_str(), args->object.c_str(), filterName(options).c_str(), context->describe().c_str(),
+                    spec.name.c_str(), args->object.c_str(), filterLabel(options).c_str(), context->describe().c_str(),
                     seconds);
     });
 }

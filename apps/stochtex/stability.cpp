@@ -51,23 +51,35 @@ void registerStability(CLI::App& app) {
     cmd->add_flag("--video", args->video, "Also write each filter's sequence as <filter>.mp4 (30 fps)");
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args, cmd] {
+        const CLI::Option* estimatorsFlag = cmd->get_option("--estimators");
+        std::vector<VarianceEstimator> estimators;
+        for (const std::string& name : args->estimators) {
+            const VarianceEstimator e = parseEnum(kVarianceEstimatorNames, name, "estimator");
+            if (std::find(estimators.begin(), estimators.end(), e) != estimators.end())
+                refuseOption(estimatorsFlag, "names " + name + " twice");
+            estimators.push_back(e);
+        }
+        std::vector<FilterOptions> named;  // a filter per --filters name
+        for (const std::string& name : args->filters) named.emplace_back(args->options).use(parseFilter(name));
+        const auto readsEstimators = [](const FilterOptions& f) { return f.source == StatisticsSource::Estimators; };
+        refuseWithoutEffect(estimatorsFlag, std::any_of(named.begin(), named.end(), readsEstimators),
+                            "without a filter over the estimators (paper, smooth)");
+        refuseUnusedFilterFlags(*cmd, named);
+        const PatternSpec spec = loadPatternSource(args->source, named);
+        // The pattern file's estimator where --estimators was not given.
+        if (estimatorsFlag->count() == 0 && spec.estimator) estimators = {*spec.estimator};
+        // A filter over the estimators is measured once per estimator.
         StabilityStudyOptions study = args->study;
         std::vector<std::string> names;  // the sequences' file names
-        for (const std::string& name : args->filters) {
-            const NamedFilter filter = parseFilter(name);
-            const size_t runs = filter.source == StatisticsSource::Estimators ? args->estimators.size() : 1;
-            for (size_t e = 0; e < runs; ++e) {
-                FilterOptions& f = study.filters.emplace_back(args->options).use(filter);
-                if (filter.source == StatisticsSource::Estimators)
-                    f.estimator = parseEnum(kVarianceEstimatorNames, args->estimators[e], "estimator");
-                std::string file = filterName(f);
+        for (const FilterOptions& f : named)
+            for (size_t e = 0; e < (readsEstimators(f) ? estimators.size() : 1); ++e) {
+                FilterOptions& measured = study.filters.emplace_back(f);
+                if (readsEstimators(f)) measured.estimator = estimators[e];
+                std::string file = filterLabel(measured);
                 std::replace(file.begin(), file.end(), '/', '-');
                 names.push_back(file);
             }
-        }
         validateStabilityStudy(study);
-        refuseUnusedFilterFlags(*cmd, study.filters);
-        const PatternSpec spec = loadPatternSource(args->source, study.filters);
         ThreadLimit limit(args->threads);
         const GraphPattern pattern = GraphPattern::build(spec);  // what only building shows, before any output
         const std::string& dir = args->dir;

@@ -68,11 +68,12 @@ void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
     pattern->callback([p, pattern, study] {
         refuseUnusedFilterFlags(*pattern, p->options);
         const PatternSpec spec = loadPatternSource(p->source, p->options);
+        applyPatternEstimator(*pattern, spec, p->options);
         Camera camera;
         camera.view = makeView(spec, p->view);
         const std::unique_ptr<ViewRenderer> renderer = makeCpuRenderer(spec, p->options);
         const CameraSource source(*renderer, camera);
-        study(source, {spec.name + ", filter " + filterName(p->options), false, 0, 0, 0, Transfer::Srgb});
+        study(source, {spec.name + ", filter " + filterLabel(p->options), false, 0, 0, 0, Transfer::Srgb});
     });
 
     auto zoom = std::make_shared<ZoomFlags>();

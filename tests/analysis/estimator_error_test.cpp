@@ -94,7 +94,8 @@ TEST(EstimatorError, SubProbesHalveTheSigmaErrorAtSmallFootprints) {
 // The 4×4 sub-probes reach farther: Table 1's σ̂ target (at most half the
 // paper's error) from 2 to 32 texels on the low-pass noise and to 16 on the
 // bi-lobe (1000 footprints, docs/RESULTS.md: 0.07–0.42× and 0.04–0.45×);
-// here at 16 and 32 texels, 300 footprints, where the 2×2 sub-probes do not.
+// here at 16 and 32 texels, 300 footprints (the 2×2 sub-probes do not halve
+// it at 32 on the low-pass noise, nor at 16 on the bi-lobe).
 TEST(EstimatorError, SubProbes4x4HalveTheSigmaErrorUpTo32Texels) {
     EstimatorErrorOptions o;
     o.footprints = {16, 32};

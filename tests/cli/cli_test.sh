@@ -159,7 +159,9 @@ case_stability() {
   grep -q "^smooth/sub-probes-4x4," "$out/stabe/stability.csv" || fail "stability: no row for smooth/sub-probes-4x4: $(cat "$out/stabe/stability.csv")"
   [ "$(wc -l <"$out/stabe/stability.csv")" -eq 4 ] || fail "stability per estimator: expected a header and 3 rows"
   [ -s "$out/stabe/smooth-sub-probes-4x4-001.png" ] || fail "stability per estimator: frames not written: $(ls "$out/stabe")"
-  expect_bad "stability bad estimator" "$out/stabeb" "--estimators" -- "$bin" stability --preset gaussian -o "$out/stabeb" --estimators nosuch
+  expect_bad "stability bad estimator" "$out/stabeb" '--estimators: estimator must be paper, deliot-heitz, sub-probes or sub-probes-4x4, got "nosuch"' -- "$bin" stability --preset gaussian -o "$out/stabeb" --estimators nosuch
+  expect_bad "stability repeated estimator" "$out/stabec" "--estimators: names paper twice" -- "$bin" stability --preset gaussian -o "$out/stabec" --estimators paper,sub-probes,paper
+  expect_bad "stability estimators without effect" "$out/stabed" "--estimators: has no effect without a filter over the estimators (paper, smooth)" -- "$bin" stability --preset gaussian -o "$out/stabed" --filters none,exact --estimators sub-probes
 }
 
 # --- thesis studies (small) ---
@@ -824,6 +826,9 @@ case_bad_render_flags() {
   printf '{"estimator": "sub-probes-4x4", "noise_x": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "noise_y": {"type": "spectrum", "size": 64, "components": [{"shape": "lowpass", "cutoff": 4}]}, "colormap": {"type": "gaussian"}}' >"$work/est.json"
   "$bin" render "$work/est.json" --size 32 --scale 4 --filter paper -o "$out/est1.png" | grep -q "filter paper/sub-probes-4x4" || fail "render: the file's estimator not used"
   "$bin" render "$work/est.json" --size 32 --scale 4 --filter paper --estimator paper -o "$out/est2.png" | grep -q "filter paper," || fail "render: --estimator does not override the file's"
+  "$bin" bake "$work/est.json" --filter smooth -o "$out/estbake" >/dev/null || fail "bake with the file's estimator"
+  grep -q '"filter": "smooth"' "$out/estbake/manifest.json" || fail "bake: the manifest's filter is not the table's name: $(grep filter "$out/estbake/manifest.json")"
+  grep -q '"estimator": "sub-probes-4x4"' "$out/estbake/manifest.json" || fail "bake: the file's estimator not exported"
   expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper, deliot-heitz, sub-probes or sub-probes-4x4, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh
   expect_bad "stability scale" "$out/sbad1" "--from: from must be in [1e-06, 1e+06], got 0" -- "$bin" stability --preset gaussian -o "$out/sbad1" --from 0
   expect_bad "stability denormal scale" "$out/sbad1b" "--from: from must be in [1e-06, 1e+06], got 4.94066e-324" -- "$bin" stability --preset gaussian -o "$out/sbad1b" --from 4.9e-324

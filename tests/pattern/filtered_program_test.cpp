@@ -170,13 +170,25 @@ TEST(PrefilteredColormap, BetaAxisLookupReadsTheShapeOfTheMeanAndDeviation) {
 }
 
 TEST(PrefilteredColormap, ATableTooLargeToPrefilterIsRefusedByItsResolution) {
-    // Two Beta axes keep every entry of all 10 × 10 layers: 10240² entries
-    // at 1024², 1200 MiB; one keeps 10240 × 3079 (360 MiB), within the bound.
+    // Two Beta axes keep every entry of all 10 × 10 layers: 10240² RGBA
+    // entries at 1024², 1600 MiB; one keeps 10240 × 4095 (640 MiB), within
+    // the bound, and Gaussian axes 4095² (256 MiB).
+    constexpr size_t MiB = size_t(1) << 20;
+    EXPECT_EQ(PrefilteredColormap::layerBytes(1024, 1024, PrefilterMode::Smooth, {true, true}), 1600 * MiB);
+    EXPECT_EQ(PrefilteredColormap::layerBytes(1024, 1024, PrefilterMode::Smooth, {true, false}),
+              size_t(10240) * 4095 * 16);
+    EXPECT_LE(PrefilteredColormap::layerBytes(1024, 1024, PrefilterMode::Smooth, {true, false}), kMaxPrefilteredBytes);
+    EXPECT_EQ(PrefilteredColormap::layerBytes(1024, 1024, PrefilterMode::Smooth, {false, false}),
+              size_t(4095) * 4095 * 16);
+    // It is what the built layers take (a small table, both kinds of axis).
+    const ColormapTable small = makeAnalyticColormap(AnalyticColormap::Gaussian, 64);
+    EXPECT_EQ(PrefilteredColormap(small, PrefilterMode::Smooth, {true, false}).bytes(),
+              PrefilteredColormap::layerBytes(64, 64, PrefilterMode::Smooth, {true, false}));
     const ColormapTable h = makeAnalyticColormap(AnalyticColormap::Gaussian, 1024);
     const InputError e = test::inputErrorOf([&] { PrefilteredColormap(h, PrefilterMode::Smooth, {true, true}); });
     EXPECT_EQ(e.parameter(), "resolution");
     EXPECT_NE(std::string(e.what()).find("1024x1024 table read by bounded fields"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("would take 1200 MiB"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("would take 1600 MiB"), std::string::npos) << e.what();
     // The library's own table builder names the parameter too.
     const InputError r = test::inputErrorOf([] { makeAnalyticColormap(AnalyticColormap::Gaussian, 1); });
     EXPECT_EQ(r.parameter(), "resolution");

@@ -30,9 +30,7 @@ void validateFilterOptions(const FilterOptions& options) {
 
 NamedFilter parseFilter(const std::string& name) { return parseEnum(kFilterNames, name, "filter"); }
 
-namespace {
-
-std::string filterPairName(const FilterOptions& options) {
+std::string filterName(const FilterOptions& options) {
     for (const auto& [name, filter] : kFilterNames)
         if (filter == options.filter()) return name;
     // Another response over a named filter's statistics: "smooth/lean".
@@ -46,12 +44,10 @@ std::string filterPairName(const FilterOptions& options) {
     return enumName(kStatisticsSourceNames, options.source) + "/" + enumName(kResponseKindNames, options.response.kind);
 }
 
-}  // namespace
-
-std::string filterName(const FilterOptions& options) {
+std::string filterLabel(const FilterOptions& options) {
     const bool otherEstimator =
         options.source == StatisticsSource::Estimators && options.estimator != FilterOptions{}.estimator;
-    return filterPairName(options) + (otherEstimator ? "/" + enumName(kVarianceEstimatorNames, options.estimator) : "");
+    return filterName(options) + (otherEstimator ? "/" + enumName(kVarianceEstimatorNames, options.estimator) : "");
 }
 
 }  // namespace stochtex

@@ -104,9 +104,12 @@ NamedFilter parseFilter(const std::string& name);
 // The name of the options' pair; another response over a named filter's
 // statistics reads "NAME/RESPONSE" ("smooth/lean", "none/lean without
 // covariance"), any other pair "SOURCE/RESPONSE" (e.g.
-// "exact/prefiltered-colormap") so that it is never mistaken for a name.
-// Statistics from an estimator other than the default add it: "smooth/sub-probes".
+// "exact/prefiltered-colormap") so that it is never mistaken for a name
+// (the bake manifest's "filter" and what the flags take).
 std::string filterName(const FilterOptions& options);
+// filterName, and the estimator where the statistics come from one other than
+// the default: "smooth/sub-probes" (what a command prints, a study's row).
+std::string filterLabel(const FilterOptions& options);
 // The anisotropic probes K and the reference's samples per axis, each
 // described once: the range validateFilterOptions checks, the flag and help
 // the CLI sets it by.

@@ -306,17 +306,11 @@ PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode m
     : mode_(mode), beta_(beta), sigmas_(sigmaLevels(mode)), betaLevels_(betaLevels(mode)) {
     validatePrefilteredResolution(h.resolutionX(), h.resolutionY());
     // The layers' size before any work: a Beta axis keeps every entry at each
-    // level, so two of them at 1024² would take 1.2 GB.
-    size_t entries[2] = {0, 0};
-    for (size_t axis = 0; axis < 2; ++axis) {
-        const int n = axis == 0 ? h.resolutionX() : h.resolutionY();
-        for (const double level : axisLevels(int(axis)))
-            entries[axis] += size_t(beta_[axis] ? n : storedResolution(n, level));
-    }
-    if (const size_t bytes = entries[0] * entries[1] * 3 * sizeof(float); bytes > kMaxPrefilteredBytes)
+    // level, so two of them at 1024² would take 1600 MiB.
+    if (const size_t bytes = layerBytes(h.resolutionX(), h.resolutionY(), mode, beta); bytes > kMaxPrefilteredBytes)
         throw InputError::parameter(
             "resolution", "a " + std::to_string(h.resolutionX()) + "x" + std::to_string(h.resolutionY()) + " table" +
-                              (beta_[0] || beta_[1] ? " read by bounded fields (Beta axes keep every entry)" : "") +
+                              (beta[0] || beta[1] ? " read by bounded fields (Beta axes keep every entry)" : "") +
                               " would take " + std::to_string(bytes >> 20) + " MiB prefiltered, more than " +
                               std::to_string(kMaxPrefilteredBytes >> 20) + " MiB: lower the table's resolution");
     const Image base = h.table();
@@ -419,6 +413,16 @@ Image PrefilteredColormap::atlas(int rx, int ry) const {
         }
     });
     return out;
+}
+
+size_t PrefilteredColormap::layerBytes(int width, int height, PrefilterMode mode, BetaAxes beta) {
+    size_t entries[2] = {0, 0};
+    for (size_t axis = 0; axis < 2; ++axis) {
+        const int n = axis == 0 ? width : height;
+        for (const double level : beta[axis] ? betaLevels(mode) : sigmaLevels(mode))
+            entries[axis] += size_t(beta[axis] ? n : storedResolution(n, level));
+    }
+    return entries[0] * entries[1] * 4 * sizeof(float);  // ColormapTable keeps RGBA texels
 }
 
 size_t PrefilteredColormap::bytes() const {

@@ -30,9 +30,10 @@ namespace stochtex {
 // of σ levels (100 pairs in smooth mode); R = 1024 takes ~1.4 s and 0.5 GB,
 // and each doubling four times that.
 constexpr int kMaxPrefilteredResolution = 1024;
-// The most memory a prefiltered table's layers may take (a table with two
-// Beta axes keeps every entry of every layer: 1.2 GB at 1024²).
-constexpr size_t kMaxPrefilteredBytes = size_t(512) << 20;
+// The most memory a prefiltered table's layers may take: a 1024² table
+// with one Beta axis (640 MiB; Gaussian axes 256 MiB), not one with two (a
+// Beta axis keeps every entry of every layer: 1600 MiB at 1024²).
+constexpr size_t kMaxPrefilteredBytes = size_t(1) << 30;
 // Fails (parameter "resolution") unless both sides are at most kMaxPrefilteredResolution.
 void validatePrefilteredResolution(int width, int height);
 
@@ -67,6 +68,9 @@ public:
     Image atlas(int rx, int ry) const;
 
     size_t bytes() const;
+    // What bytes() will be for a width × height table, before building it
+    // (the constructor refuses a table above kMaxPrefilteredBytes).
+    static size_t layerBytes(int width, int height, PrefilterMode mode, BetaAxes beta);
 
     // σ levels of a mode, in colormap-domain units.
     static std::vector<double> sigmaLevels(PrefilterMode mode);

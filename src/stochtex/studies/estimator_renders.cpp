@@ -97,12 +97,7 @@ EstimatorRendersResult estimatorRenders(const EstimatorRendersOptions& o, const 
             FilterOptions none = base;
             none.source = StatisticsSource::Point;
             (void)errorMap(FilteredGraph(pattern, none).render(cam), truth, row.none);
-            FilterOptions estimated = base;
-            estimated.source = StatisticsSource::Estimators;
-            for (const auto& [estimatorName, estimator] : kVarianceEstimatorNames) {
-                estimated.estimator = estimator;
-                (void)errorMap(FilteredGraph(pattern, estimated).render(cam), truth, row.estimators.emplace_back());
-            }
+            row.estimators = estimatorErrors(pattern, base, cam, truth, 0);
             res.rows.push_back(std::move(row));
         }
     }
@@ -112,11 +107,8 @@ EstimatorRendersResult estimatorRenders(const EstimatorRendersOptions& o, const 
                          {"scale", "texels per pixel (zoom; 0: the plane)", ""},
                          {"mean_error_none", "none (pixel centres)", ""},
                          {"mean_error_exact", "exact statistics (the floor)", ""}};
-    for (const auto& [name, estimator] : kVarianceEstimatorNames) {
-        std::string key = "mean_error_" + name;
-        std::replace(key.begin(), key.end(), '-', '_');
-        res.table.columns.push_back({key, name, ""});
-    }
+    estimatorColumns(
+        res.table, "mean_error_", [](const std::string& name) { return name; }, 0);
     res.table.columns.push_back({"reference_samples", "S̄: samples per pixel", ""});
     res.table.columns.push_back({"reference_change", "S̄: change on doubling them", ""});
     res.table.columns.push_back({"exact_samples", "exact statistics: samples per pixel", ""});

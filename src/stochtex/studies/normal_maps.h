@@ -63,7 +63,7 @@ struct Figure12Row {
     double meanErrorGlobal = 0, meanErrorCrop = 0;  // mean ‖variant − reference‖₂ (RGB, linear)
 };
 struct Figure12Result {
-    std::vector<Figure12Row> rows;  // every variant after the reference, in kLeanVariantNames' order
+    std::vector<Figure12Row> rows;  // every variant after the reference, in kLeanVariants' order
     Table table;                    // figure12.csv
     std::vector<Figure> figures;    // figure12.png, then each variant's view, crop and error maps
 };

@@ -215,20 +215,20 @@ Image errorMap(const Image& a, const Image& b, double& mean) {
     return e;
 }
 
-std::vector<double> otherEstimatorErrors(const GraphPattern& pattern, FilterOptions filter, const Camera& camera,
-                                         const Image& reference) {
+std::vector<double> estimatorErrors(const GraphPattern& pattern, FilterOptions filter, const Camera& camera,
+                                    const Image& reference, size_t first) {
     filter.source = StatisticsSource::Estimators;
     std::vector<double> errors;
-    for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
+    for (size_t e = first; e < kVarianceEstimatorNames.size(); ++e) {
         filter.estimator = kVarianceEstimatorNames[e].second;
         (void)errorMap(FilteredGraph(pattern, filter).render(camera), reference, errors.emplace_back());
     }
     return errors;
 }
 
-void otherEstimatorColumns(Table& table, const std::string& keyPrefix,
-                           const std::function<std::string(const std::string&)>& caption) {
-    for (size_t e = 1; e < kVarianceEstimatorNames.size(); ++e) {
+void estimatorColumns(Table& table, const std::string& keyPrefix,
+                      const std::function<std::string(const std::string&)>& caption, size_t first) {
+    for (size_t e = first; e < kVarianceEstimatorNames.size(); ++e) {
         const std::string& name = kVarianceEstimatorNames[e].first;
         std::string key = keyPrefix + name;
         std::replace(key.begin(), key.end(), '-', '_');
@@ -304,7 +304,7 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         c.estimated = FilteredGraph(pattern, fo).render(cam);
         if (o.exactStatistics) c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
         c.errEstimated = errorMap(c.estimated, c.reference, c.numbers.meanErrorEstimated);
-        c.numbers.meanErrorOtherEstimators = otherEstimatorErrors(pattern, fo, cam, c.reference);
+        c.numbers.meanErrorOtherEstimators = estimatorErrors(pattern, fo, cam, c.reference);
         // Not filtering at all: the pixel centres, what filtering must beat.
         (void)errorMap(FilteredGraph(pattern, fo.use(parseFilter("none"))).render(cam), c.reference,
                        c.numbers.meanErrorNone);
@@ -330,8 +330,8 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     if (o.exactStatistics)
         res.table.columns.push_back({"mean_error_exact_stats", "mean ‖Ŝ(μ, Σ) − S̄‖₂ (exact statistics)", ""});
     res.table.columns.push_back({"mean_error_estimators", "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (estimators)", ""});
-    otherEstimatorColumns(res.table, "mean_error_",
-                          [](const std::string& name) { return "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (" + name + " estimator)"; });
+    estimatorColumns(res.table, "mean_error_",
+                     [](const std::string& name) { return "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (" + name + " estimator)"; });
     if (o.fadesTo) {
         res.table.columns.push_back({"mean_fade_reference", "mean ‖S̄ − m‖₂ (m: the profile's mean)", ""});
         res.table.columns.push_back({"mean_fade_estimators", "mean ‖Ŝ(μ̂, Σ̂) − m‖₂", ""});

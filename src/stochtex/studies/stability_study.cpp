@@ -34,7 +34,7 @@ StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const Stability
     std::vector<std::string> names;
     for (const FilterOptions& f : o.filters) {
         filters.push_back(std::make_unique<FilteredGraph>(pattern, f));
-        names.push_back(filterName(f));
+        names.push_back(filterLabel(f));
     }
     FilterOptions truthOptions = o.filters.front();
     truthOptions.source = StatisticsSource::Reference;
