@@ -152,26 +152,37 @@ BENCHMARK(BM_LeanFilteredVsUnfiltered)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// Precomputation: mean/variance pyramids of two 512² examples (+ covariance).
-void BM_BuildPyramids512(benchmark::State& state) {
+// Precomputation: mean/variance pyramids of two N² examples (N = the
+// argument), and with the covariance pyramid when the second is 1. "ns/texel"
+// is the time per level-0 texel of one example: constant from 256² to 4096²
+// when the build scales linearly.
+void BM_BuildPyramids(benchmark::State& state) {
+    const int n = int(state.range(0));
     std::array<TilingBlendingNoise, 2> noises;
     for (uint32_t a = 0; a < 2; ++a) {
         SpectrumSpec s;
-        s.size = 512;
+        s.size = n;
         s.seed = a;
         s.components.push_back({SpectrumShape::LowPass, 8, 2, 0, 1});
         noises[a] = TilingBlendingNoise(std::make_shared<const NoiseExample>(synthesizeExample(s)), a);
     }
-    const TiledField field({noises[0], noises[1]}, kDefaultGridDensity, OffsetSharing::Independent);
+    const TiledField field({noises[0], noises[1]}, kDefaultGridDensity,
+                           state.range(1) ? OffsetSharing::Shared : OffsetSharing::Independent);
     size_t bytes = 0;
     for (auto _ : state) {
-        FootprintEstimator e(field, false);
+        FootprintEstimator e(field, state.range(1) != 0);
         bytes = e.bytes();
         benchmark::DoNotOptimize(&e);
     }
     state.counters["MB"] = double(bytes) * 1e-6;
+    state.counters["ns/texel"] = benchmark::Counter(double(n) * double(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                                               benchmark::Counter::kInvert);
 }
-BENCHMARK(BM_BuildPyramids512)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BuildPyramids)
+    ->ArgsProduct({{256, 1024, 4096}, {0}})
+    ->Args({1024, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // Precomputation of the prefiltered table H̄ from a 256² colormap: mode 1
 // paper, 2 smooth, 3 smooth with a Beta x axis (a graph table reading a

@@ -39,8 +39,7 @@ void registerBake(CLI::App& app) {
         applyResponseFlags(*cmd, args->response, args->options);
         ExportOptions e;
         e.halfTable = args->precision == TablePrecision::Half;
-        const PatternSpec spec = loadPatternSource(args->source, args->options);
-        applyPatternEstimator(*cmd, spec, args->options);
+        const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         exportPatternSpec(spec, args->options, args->dir, e);
         std::printf("exported %s (filter %s) to %s: manifest.json, stochtex.glsl, README.md and the data\n",
                     spec.name.c_str(), filterLabel(args->options).c_str(), args->dir.c_str());

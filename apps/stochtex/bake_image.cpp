@@ -48,8 +48,7 @@ void registerBakeImage(CLI::App& app) {
         checkImageStreamFormat(args->output);  // .jpg and .tif are written whole, not in bands
         if (!gpuHasSource(args->options.source))
             refuseOption(*cmd, "--filter", "bake-image renders none, paper or smooth");
-        const PatternSpec spec = loadPatternSource(args->source, args->options);
-        applyPatternEstimator(*cmd, spec, args->options);
+        const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         Camera whole;
         whole.view = makeView(spec, args->view);
         validateCamera(whole);

@@ -61,6 +61,13 @@ PatternSpec loadPatternSource(const PatternSource& src, const FilterOptions& opt
     return spec;
 }
 
+PatternSpec loadPatternSource(const CLI::App& cmd, const PatternSource& src, FilterOptions& options) {
+    PatternSpec spec = loadPatternSource(src, options);
+    const CLI::Option* flag = cmd.get_option_no_throw("--estimator");
+    if (spec.estimator && (!flag || flag->count() == 0)) options.estimator = *spec.estimator;
+    return spec;
+}
+
 PatternSpec loadPatternSource(const PatternSource& src, const std::vector<FilterOptions>& filters) {
     for (const FilterOptions& f : filters)
         if (prefiltersColormap(f)) return loadPatternSource(src, f);
@@ -233,11 +240,6 @@ CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options) {
                        "each probe as 2x2 one level finer: 4x the fetches, 0.24-0.43x its sigma error at 2-8 texels "
                        "on Table 1, 1.4-2.1x its time) | sub-probes-4x4 (4x4 two levels finer: 16x the fetches, "
                        "0.04-0.45x its sigma error at 2-16 texels, 3-5.3x its time; docs/RESULTS.md)");
-}
-
-void applyPatternEstimator(const CLI::App& cmd, const PatternSpec& spec, FilterOptions& options) {
-    const CLI::Option* flag = cmd.get_option_no_throw("--estimator");
-    if (spec.estimator && (!flag || flag->count() == 0)) options.estimator = *spec.estimator;
 }
 
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso) {

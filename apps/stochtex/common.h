@@ -39,6 +39,9 @@ PatternSpec loadPatternSource(const PatternSource& src);
 // phasor or painted one: its resolution is known; an image's is checked when
 // it is read).
 PatternSpec loadPatternSource(const PatternSource& src, const FilterOptions& options);
+// The same for a command with one filter and --estimator, which takes the
+// pattern file's estimator ("estimator") where --estimator was not given.
+PatternSpec loadPatternSource(const CLI::App& cmd, const PatternSource& src, FilterOptions& options);
 // The same for a command that renders with several filters (stability's
 // --filters): checked as the first of them that prefilters the colormap.
 PatternSpec loadPatternSource(const PatternSource& src, const std::vector<FilterOptions>& filters);
@@ -183,8 +186,6 @@ void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterO
 // --estimator NAME (kVarianceEstimatorNames): the footprint estimator of
 // paper and smooth (refused with the other filters: refuseUnusedFilterFlags).
 CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options);
-// The pattern file's estimator ("estimator") where the command's --estimator was not given.
-void applyPatternEstimator(const CLI::App& cmd, const PatternSpec& spec, FilterOptions& options);
 // --aniso K (anisoParam(): 1..16, the library checks the range), set to its default, 8.
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso);
 // The checks of the filter-dependent flags: --aniso (and --estimator, --pack8:

@@ -53,8 +53,7 @@ void registerRender(CLI::App& app) {
         refuseUnusedDeviceFlags(*cmd, args->device);
         checkBitsApply(bits, args->output);
         checkImageOutput(args->output, args->bits);
-        const PatternSpec spec = loadPatternSource(args->source, args->options);
-        applyPatternEstimator(*cmd, spec, args->options);
+        const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         Camera camera = args->camera;
         camera.view = makeView(spec, args->view);
         validateCamera(camera);  // before building anything; the renderer checks the options

@@ -38,8 +38,7 @@ void registerScene(CLI::App& app) {
         const auto [w, h] = sizeFlagValue(size, args->size, 8192);
         const FilterOptions& options = args->options;
         const Mesh mesh = makeObject(args->object);
-        const PatternSpec spec = loadPatternSource(args->source, args->options);
-        applyPatternEstimator(*cmd, spec, args->options);
+        const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         const auto start = std::chrono::steady_clock::now();
         auto context = GlContext::headless();
         const std::unique_ptr<GpuView> gpu = makeGpuView(spec, *context, options);

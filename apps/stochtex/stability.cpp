@@ -52,33 +52,28 @@ void registerStability(CLI::App& app) {
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args, cmd] {
         const CLI::Option* estimatorsFlag = cmd->get_option("--estimators");
-        std::vector<VarianceEstimator> estimators;
-        for (const std::string& name : args->estimators) {
-            const VarianceEstimator e = parseEnum(kVarianceEstimatorNames, name, "estimator");
-            if (std::find(estimators.begin(), estimators.end(), e) != estimators.end())
-                refuseOption(estimatorsFlag, "names " + name + " twice");
-            estimators.push_back(e);
-        }
         std::vector<FilterOptions> named;  // a filter per --filters name
         for (const std::string& name : args->filters) named.emplace_back(args->options).use(parseFilter(name));
-        const auto readsEstimators = [](const FilterOptions& f) { return f.source == StatisticsSource::Estimators; };
-        refuseWithoutEffect(estimatorsFlag, std::any_of(named.begin(), named.end(), readsEstimators),
-                            "without a filter over the estimators (paper, smooth)");
+        refuseWithoutEffect(
+            estimatorsFlag,
+            std::any_of(named.begin(), named.end(),
+                        [](const FilterOptions& f) { return f.source == StatisticsSource::Estimators; }),
+            "without a filter over the estimators (paper, smooth)");
         refuseUnusedFilterFlags(*cmd, named);
         const PatternSpec spec = loadPatternSource(args->source, named);
+        std::vector<VarianceEstimator> estimators;
+        for (const std::string& name : args->estimators)
+            estimators.push_back(parseEnum(kVarianceEstimatorNames, name, "estimator"));
         // The pattern file's estimator where --estimators was not given.
         if (estimatorsFlag->count() == 0 && spec.estimator) estimators = {*spec.estimator};
-        // A filter over the estimators is measured once per estimator.
         StabilityStudyOptions study = args->study;
+        study.filters = filtersPerEstimator(named, estimators);
         std::vector<std::string> names;  // the sequences' file names
-        for (const FilterOptions& f : named)
-            for (size_t e = 0; e < (readsEstimators(f) ? estimators.size() : 1); ++e) {
-                FilterOptions& measured = study.filters.emplace_back(f);
-                if (readsEstimators(f)) measured.estimator = estimators[e];
-                std::string file = filterLabel(measured);
-                std::replace(file.begin(), file.end(), '/', '-');
-                names.push_back(file);
-            }
+        for (const FilterOptions& f : study.filters) {
+            std::string file = filterLabel(f);
+            std::replace(file.begin(), file.end(), '/', '-');
+            names.push_back(file);
+        }
         validateStabilityStudy(study);
         ThreadLimit limit(args->threads);
         const GraphPattern pattern = GraphPattern::build(spec);  // what only building shows, before any output

@@ -67,8 +67,7 @@ void addTextureSourceCommands(CLI::App& cmd, SourceStudy study) {
     addFilterFlag(*pattern, p->options, "none | paper | smooth | exact | reference");
     pattern->callback([p, pattern, study] {
         refuseUnusedFilterFlags(*pattern, p->options);
-        const PatternSpec spec = loadPatternSource(p->source, p->options);
-        applyPatternEstimator(*pattern, spec, p->options);
+        const PatternSpec spec = loadPatternSource(*pattern, p->source, p->options);
         Camera camera;
         camera.view = makeView(spec, p->view);
         const std::unique_ptr<ViewRenderer> renderer = makeCpuRenderer(spec, p->options);

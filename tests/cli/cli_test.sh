@@ -160,7 +160,7 @@ case_stability() {
   [ "$(wc -l <"$out/stabe/stability.csv")" -eq 4 ] || fail "stability per estimator: expected a header and 3 rows"
   [ -s "$out/stabe/smooth-sub-probes-4x4-001.png" ] || fail "stability per estimator: frames not written: $(ls "$out/stabe")"
   expect_bad "stability bad estimator" "$out/stabeb" '--estimators: estimator must be paper, deliot-heitz, sub-probes or sub-probes-4x4, got "nosuch"' -- "$bin" stability --preset gaussian -o "$out/stabeb" --estimators nosuch
-  expect_bad "stability repeated estimator" "$out/stabec" "--estimators: names paper twice" -- "$bin" stability --preset gaussian -o "$out/stabec" --estimators paper,sub-probes,paper
+  expect_bad "stability repeated estimator" "$out/stabec" "--estimators: estimators must name each estimator once, got paper twice" -- "$bin" stability --preset gaussian -o "$out/stabec" --estimators paper,sub-probes,paper
   expect_bad "stability estimators without effect" "$out/stabed" "--estimators: has no effect without a filter over the estimators (paper, smooth)" -- "$bin" stability --preset gaussian -o "$out/stabed" --filters none,exact --estimators sub-probes
 }
 

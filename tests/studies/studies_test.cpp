@@ -745,5 +745,23 @@ TEST(StabilityStudy, ErrorsNameTheParameter) {
     EXPECT_EQ(test::inputErrorOf([&] { validateStabilityStudy(o); }).parameter(), "filters");
 }
 
+TEST(StabilityStudy, FiltersOverTheEstimatorsAreMeasuredOncePerEstimator) {
+    std::vector<FilterOptions> filters(3);
+    filters[0].use(parseFilter("none"));
+    filters[1].use(parseFilter("paper"));
+    filters[2].use(parseFilter("exact"));
+    const std::vector<VarianceEstimator> estimators{VarianceEstimator::SubProbes, VarianceEstimator::Paper};
+    const std::vector<FilterOptions> measured = filtersPerEstimator(filters, estimators);
+    std::vector<std::string> labels;
+    for (const FilterOptions& f : measured) labels.push_back(filterLabel(f));
+    EXPECT_EQ(labels, (std::vector<std::string>{"none", "paper/sub-probes", "paper", "exact"}));
+    const std::vector<VarianceEstimator> twice{VarianceEstimator::Paper, VarianceEstimator::SubProbes,
+                                               VarianceEstimator::Paper};
+    const InputError e = test::inputErrorOf([&] { filtersPerEstimator(filters, twice); });
+    EXPECT_EQ(e.parameter(), "estimators");
+    EXPECT_NE(std::string(e.what()).find("must name each estimator once, got paper twice"), std::string::npos) << e.what();
+    EXPECT_EQ(test::inputErrorOf([&] { filtersPerEstimator(filters, {}); }).parameter(), "estimators");
+}
+
 }  // namespace
 }  // namespace stochtex

@@ -1,5 +1,6 @@
 #include "stochtex/studies/stability_study.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -20,6 +21,24 @@ std::span<const OptionMember<StabilityStudyOptions>> stabilityStudyMembers() {
          &O::truthSamples},
     };
     return members;
+}
+
+std::vector<FilterOptions> filtersPerEstimator(std::span<const FilterOptions> filters,
+                                               std::span<const VarianceEstimator> estimators) {
+    if (estimators.empty()) throw InputError::parameter("estimators", "must name at least one estimator");
+    for (auto e = estimators.begin(); e != estimators.end(); ++e)
+        if (std::find(estimators.begin(), e, *e) != e)
+            throw InputError::parameter(
+                "estimators", "must name each estimator once, got " + enumName(kVarianceEstimatorNames, *e) + " twice");
+    std::vector<FilterOptions> measured;
+    for (const FilterOptions& f : filters) {
+        if (f.source != StatisticsSource::Estimators) {
+            measured.push_back(f);
+            continue;
+        }
+        for (const VarianceEstimator e : estimators) measured.emplace_back(f).estimator = e;
+    }
+    return measured;
 }
 
 void validateStabilityStudy(const StabilityStudyOptions& o) {

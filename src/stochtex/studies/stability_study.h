@@ -49,6 +49,12 @@ struct StabilityStudyResult {
     std::vector<Figure> figures;  // error flicker and accuracy per frame, per filter (line plots)
 };
 
+// The filters a study measures: each filter that reads the estimators
+// (paper, smooth) once per estimator, in order, the others once. InputError
+// naming "estimators" when it is empty or names one twice.
+std::vector<FilterOptions> filtersPerEstimator(std::span<const FilterOptions> filters,
+                                               std::span<const VarianceEstimator> estimators);
+
 // InputError naming the parameter (filters, frames, size, from, to, truthSamples).
 void validateStabilityStudy(const StabilityStudyOptions& options);
 
