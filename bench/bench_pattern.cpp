@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "alternate_timing.h"
+#include "resident_memory.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/noise/spectrum.h"
@@ -31,8 +32,8 @@ void BM_RenderUnfiltered(benchmark::State& state) {
         Image img = p.render(view);
         benchmark::DoNotOptimize(img.data().data());
     }
-    state.counters["Mtexel/s"] = benchmark::Counter(double(view.width) * view.height * 1e-6,
-                                                    benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["Mtexel/s"] =
+        benchmark::Counter(double(view.width) * view.height * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_RenderUnfiltered)->Arg(0)->Arg(1)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -57,8 +58,8 @@ void BM_RenderSingleNoise(benchmark::State& state) {
         Image img = p.render(view);
         benchmark::DoNotOptimize(img.data().data());
     }
-    state.counters["Mtexel/s"] = benchmark::Counter(double(view.width) * view.height * 1e-6,
-                                                    benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["Mtexel/s"] =
+        benchmark::Counter(double(view.width) * view.height * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_RenderSingleNoise)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -164,19 +165,25 @@ void BM_BuildPyramids(benchmark::State& state) {
         s.size = n;
         s.seed = a;
         s.components.push_back({SpectrumShape::LowPass, 8, 2, 0, 1});
-        noises[a] = TilingBlendingNoise(std::make_shared<const NoiseExample>(synthesizeExample(s)), a);
+        // Shared offsets need one tile-offset seed for both channels.
+        noises[a] =
+            TilingBlendingNoise(std::make_shared<const NoiseExample>(synthesizeExample(s)), state.range(1) ? 0 : a);
     }
     const TiledField field({noises[0], noises[1]}, kDefaultGridDensity,
                            state.range(1) ? OffsetSharing::Shared : OffsetSharing::Independent);
-    size_t bytes = 0;
+    size_t bytes = 0, peakGrowth = 0;
     for (auto _ : state) {
+        const size_t before = bench::resetPeakResidentBytes();
         FootprintEstimator e(field, state.range(1) != 0);
+        peakGrowth = std::max(peakGrowth, bench::peakResidentBytes() - before);
         bytes = e.bytes();
         benchmark::DoNotOptimize(&e);
     }
     state.counters["MB"] = double(bytes) * 1e-6;
-    state.counters["ns/texel"] = benchmark::Counter(double(n) * double(n), benchmark::Counter::kIsIterationInvariantRate |
-                                                                               benchmark::Counter::kInvert);
+    // The build's peak resident memory over its result (1 = nothing but the pyramids).
+    state.counters["peak/data"] = double(peakGrowth) / double(bytes);
+    state.counters["ns/texel"] = benchmark::Counter(
+        double(n) * double(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_BuildPyramids)
     ->ArgsProduct({{256, 1024, 4096}, {0}})

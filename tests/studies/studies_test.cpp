@@ -759,7 +759,8 @@ TEST(StabilityStudy, FiltersOverTheEstimatorsAreMeasuredOncePerEstimator) {
                                                VarianceEstimator::Paper};
     const InputError e = test::inputErrorOf([&] { filtersPerEstimator(filters, twice); });
     EXPECT_EQ(e.parameter(), "estimators");
-    EXPECT_NE(std::string(e.what()).find("must name each estimator once, got paper twice"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("must name each estimator once, got paper twice"), std::string::npos)
+        << e.what();
     EXPECT_EQ(test::inputErrorOf([&] { filtersPerEstimator(filters, {}); }).parameter(), "estimators");
 }
 

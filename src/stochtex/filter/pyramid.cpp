@@ -4,98 +4,125 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "stochtex/core/parallel.h"
+
 namespace stochtex {
-
-namespace {
-
-// Box-halves a double grid (2×2 averages).
-std::vector<double> halve(const std::vector<double>& src, int n) {
-    const int h = n / 2;
-    std::vector<double> dst(size_t(h) * size_t(h));
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < h; ++x) {
-            const size_t a = size_t(2 * y) * size_t(n) + size_t(2 * x);
-            dst[size_t(y) * size_t(h) + size_t(x)] = 0.25 * (src[a] + src[a + 1] + src[a + size_t(n)] + src[a + size_t(n) + 1]);
-        }
-    return dst;
-}
-
-Image toImage(const std::vector<double>& v, int n) {
-    Image img(n, n, 1, Image::Uninitialized{});
-    for (size_t i = 0; i < v.size(); ++i) img.data()[i] = float(v[i]);
-    return img;
-}
-
-std::vector<double> toDouble(const Image& img) { return std::vector<double>(img.data().begin(), img.data().end()); }
-
-}  // namespace
 
 static void checkExample(const Image& e) {
     if (e.channels() != 1 || e.width() != e.height() || !isPowerOfTwo(e.width()))
         throw std::invalid_argument("StatsPyramid: needs a square power-of-two 1-channel example");
 }
 
-void StatsPyramid::addLevel(Image mean, Image moment) {
-    double sum = 0;
-    for (float v : moment.data()) sum += v;
-    averageMoment_.push_back(float(sum / double(moment.data().size())));
-    means_.push_back(std::move(mean));
-    moments_.push_back(std::move(moment));
-    grids_.emplace_back(std::array<const Image*, 2>{&means_.back(), &moments_.back()});
+void StatsPyramid::build(const Image& a, const Image* b) {
+    int n = a.width();
+    BasicPeriodicGrid<2> level0(n);
+    parallelRows(n, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < n; ++x) {
+                float* t = level0.texel(x, y);
+                t[0] = a.at(x, y);
+                t[1] = 0.0f;  // the moments of one texel
+            }
+    });
+    level0.wrapBorder();
+    grids_.push_back(std::move(level0));
+    // b's means of the current level, for a covariance pyramid (the grids
+    // hold a's).
+    std::vector<float> bMeans, bNext;
+    if (b) bMeans.assign(b->data().begin(), b->data().end());
+    while (n > 1) {
+        const int h = n / 2;
+        const BasicPeriodicGrid<2>& below = grids_.back();
+        BasicPeriodicGrid<2> level(h);
+        if (b) bNext.resize(size_t(h) * size_t(h));
+        parallelRows(h, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y)
+                for (int x = 0; x < h; ++x) {
+                    const float* c[4] = {below.texel(2 * x, 2 * y), below.texel(2 * x + 1, 2 * y),
+                                         below.texel(2 * x, 2 * y + 1), below.texel(2 * x + 1, 2 * y + 1)};
+                    const float mean = 0.25f * ((c[0][0] + c[1][0]) + (c[2][0] + c[3][0]));
+                    const float within = 0.25f * ((c[0][1] + c[1][1]) + (c[2][1] + c[3][1]));
+                    float d[4];
+                    for (int i = 0; i < 4; ++i) d[i] = c[i][0] - mean;
+                    float between;
+                    if (b) {
+                        const size_t i0 = size_t(2 * y) * size_t(n) + size_t(2 * x), i2 = i0 + size_t(n);
+                        const float bc[4] = {bMeans[i0], bMeans[i0 + 1], bMeans[i2], bMeans[i2 + 1]};
+                        const float bMean = 0.25f * ((bc[0] + bc[1]) + (bc[2] + bc[3]));
+                        bNext[size_t(y) * size_t(h) + size_t(x)] = bMean;
+                        between = 0.25f * ((d[0] * (bc[0] - bMean) + d[1] * (bc[1] - bMean)) +
+                                           (d[2] * (bc[2] - bMean) + d[3] * (bc[3] - bMean)));
+                    } else {
+                        between = 0.25f * ((d[0] * d[0] + d[1] * d[1]) + (d[2] * d[2] + d[3] * d[3]));
+                    }
+                    float* t = level.texel(x, y);
+                    t[0] = mean;
+                    t[1] = within + between;
+                }
+        });
+        level.wrapBorder();
+        grids_.push_back(std::move(level));
+        if (b) bMeans.swap(bNext);
+        n = h;
+    }
+    for (int l = 0; l < levels(); ++l) addAverageMoment(l);
 }
 
-// Builds all levels from level-0 first moments a, b and their product ab:
-// mean a_l and moment ab_l − a_l b_l (V_l or C_l).
-void StatsPyramid::buildLevels(std::vector<double> a, std::vector<double> b, std::vector<double> ab, int n) {
-    while (true) {
-        std::vector<double> m(a.size());
-        for (size_t i = 0; i < m.size(); ++i) m[i] = ab[i] - a[i] * b[i];
-        addLevel(toImage(a, n), toImage(m, n));
-        if (n == 1) break;
-        a = halve(a, n);
-        b = halve(b, n);
-        ab = halve(ab, n);
-        n /= 2;
-    }
+// The level's mean moment, summed in double by rows and the rows in order
+// (the same for any thread count).
+void StatsPyramid::addAverageMoment(int l) {
+    const BasicPeriodicGrid<2>& g = grids_[size_t(l)];
+    const int n = g.size();
+    std::vector<double> rows(size_t(n), 0.0);
+    parallelRows(n, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < n; ++x) rows[size_t(y)] += g.texel(x, y)[1];
+    });
+    double sum = 0;
+    for (double r : rows) sum += r;
+    averageMoment_.push_back(float(sum / (double(n) * double(n))));
 }
 
 StatsPyramid::StatsPyramid(const Image& example) {
     checkExample(example);
-    std::vector<double> e = toDouble(example), e2(e.size());
-    for (size_t i = 0; i < e.size(); ++i) e2[i] = e[i] * e[i];
-    buildLevels(e, e, std::move(e2), example.width());
+    build(example, nullptr);
 }
 
 StatsPyramid StatsPyramid::covariance(const Image& e, const Image& eprime) {
     checkExample(e);
     checkExample(eprime);
     if (e.width() != eprime.width()) throw std::invalid_argument("StatsPyramid::covariance: size mismatch");
-    std::vector<double> a = toDouble(e), b = toDouble(eprime), ab(a.size());
-    for (size_t i = 0; i < a.size(); ++i) ab[i] = a[i] * b[i];
     StatsPyramid p;
-    p.buildLevels(std::move(a), std::move(b), std::move(ab), e.width());
+    p.build(e, &eprime);
     return p;
 }
 
 StatsPyramid StatsPyramid::quantized8() const {
-    auto q = [](Image img, float scale) {
-        for (float& v : img.data()) v = std::round(std::clamp(v * scale, 0.0f, 1.0f) * 255.0f) / 255.0f / scale;
-        return img;
+    const auto q = [](float v, float scale) {
+        return std::round(std::clamp(v * scale, 0.0f, 1.0f) * 255.0f) / 255.0f / scale;
     };
-    StatsPyramid p;
-    for (size_t l = 0; l < grids_.size(); ++l) p.addLevel(q(means_[l], 1.0f), q(moments_[l], 16.0f));
-    p.averageMoment_ = averageMoment_;  // the Deliot–Heitz constants stay as computed
+    StatsPyramid p = *this;  // the Deliot–Heitz constants stay as computed
+    for (BasicPeriodicGrid<2>& g : p.grids_) {
+        const int n = g.size();
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                float* t = g.texel(x, y);
+                t[0] = q(t[0], 1.0f);
+                t[1] = q(t[1], 16.0f);
+            }
+        g.wrapBorder();
+    }
     return p;
 }
 
 Image StatsPyramid::interleavedLevel(int l, int channels) const {
-    const Image& mean = means_[size_t(l)];
-    const Image& moment = moments_[size_t(l)];
-    Image out(mean.width(), mean.height(), channels, 0.0f);
-    for (size_t i = 0; i < mean.pixelCount(); ++i) {
-        out.data()[size_t(channels) * i] = mean.data()[i];
-        out.data()[size_t(channels) * i + 1] = moment.data()[i];
-    }
+    const BasicPeriodicGrid<2>& g = grids_[size_t(l)];
+    Image out(g.size(), g.size(), channels, 0.0f);
+    for (int y = 0; y < g.size(); ++y)
+        for (int x = 0; x < g.size(); ++x) {
+            out.at(x, y, 0) = g.texel(x, y)[0];
+            out.at(x, y, 1) = g.texel(x, y)[1];
+        }
     return out;
 }
 

@@ -5,9 +5,15 @@
 //   E_l  = box average of E over the texel                      (means)
 //   V_l  = mip_l(E²) − E_l²   = mean of (E − E_l)² over the texel (eq. 10)
 //   C_l  = mip_l(E E') − E_l E'_l                               (eq. 16)
-// mip_l(E²) and mip_l(E E') are box averages of level 0 products accumulated
-// in double, so V_l and C_l are exact footprint statistics of level 0 (not a
-// recursion on V_{l−1} alone). Level L is 1×1: the global mean / variance.
+// Each level is built from the one below by the exact pairwise update of
+// centred moments (Chan, Golub & LeVeque): for the four children i of a
+// texel, E_{l+1} = avg E_{l,i} and
+//   C_{l+1} = avg C_{l,i} + avg (E_{l,i} − E_{l+1})(E'_{l,i} − E'_{l+1}),
+// so V_l and C_l are the exact footprint statistics of level 0, computed in
+// float without the cancellation of mip(E²) − E_l² (docs/MATH.md). Level L
+// is 1×1: the global mean / variance. Each level is stored once, as the
+// interleaved (mean, moment) grid the lookups read; levels are built in
+// parallel by rows (the same floats for any thread count).
 #include <vector>
 
 #include "stochtex/noise/example.h"
@@ -28,8 +34,9 @@ public:
     // Level l as one grid of (mean, moment) pairs: moment = variance V_l, or
     // covariance C_l for a covariance pyramid. One lookup reads both.
     const BasicPeriodicGrid<2>& level(int l) const { return grids_[size_t(l)]; }
-    const Image& meanImage(int l) const { return means_[size_t(l)]; }
-    const Image& momentImage(int l) const { return moments_[size_t(l)]; }
+    // Texel (x, y) of level l.
+    float mean(int l, int x, int y) const { return grids_[size_t(l)].texel(x, y)[0]; }
+    float moment(int l, int x, int y) const { return grids_[size_t(l)].texel(x, y)[1]; }
     // Level l as one image for upload or export: channel 0 = mean, channel 1
     // = moment, any further channel 0 (channels in [2, 4]).
     Image interleavedLevel(int l, int channels) const;
@@ -47,9 +54,10 @@ public:
     size_t bytes() const;
 
 private:
-    void addLevel(Image mean, Image moment);
-    void buildLevels(std::vector<double> a, std::vector<double> b, std::vector<double> ab, int n);
-    std::vector<Image> means_, moments_;
+    // Levels 0..L from level 0 of (a, b): a's means, and b's where it is
+    // another example (nullptr: b = a).
+    void build(const Image& a, const Image* b);
+    void addAverageMoment(int l);
     std::vector<BasicPeriodicGrid<2>> grids_;
     std::vector<float> averageMoment_;
 };

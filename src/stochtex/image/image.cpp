@@ -1,6 +1,9 @@
 #include "stochtex/image/image.h"
 
+#include <sys/mman.h>
+
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -10,6 +13,22 @@
 #include "stochtex/core/error.h"
 
 namespace stochtex {
+
+void* allocateBulk(size_t bytes) {
+    constexpr size_t kHugePage = size_t(2) << 20;
+    void* p = nullptr;
+    if (bytes >= kHugePage) {
+        const size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+        p = std::aligned_alloc(kHugePage, rounded);
+        if (p) madvise(p, rounded, MADV_HUGEPAGE);  // advice only: without THP the pages stay 4 KiB
+    } else {
+        p = std::malloc(bytes == 0 ? 1 : bytes);
+    }
+    if (!p) throw std::bad_alloc();
+    return p;
+}
+
+void freeBulk(void* p) noexcept { std::free(p); }
 
 Image::Image(int width, int height, int channels, Uninitialized)
     : width_(width), height_(height), channels_(channels) {

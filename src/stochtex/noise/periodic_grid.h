@@ -44,6 +44,25 @@ public:
                         channels[size_t(c)]->at((x + n) % n, (y + n) % n);
     }
 
+    // A W×W grid to be written in place: fill every texel(x, y), then
+    // wrapBorder() (a pyramid level computed from the one below).
+    explicit BasicPeriodicGrid(int size)
+        : padded_((size_t(size) + 2) * (size_t(size) + 2) * C), size_(size), sizeF_(float(size)) {}
+    // The C channels of texel (x, y), 0 ≤ x, y < W.
+    float* texel(int x, int y) { return padded_.data() + paddedIndex(x, y); }
+    const float* texel(int x, int y) const { return padded_.data() + paddedIndex(x, y); }
+    // Copies the periodic border from the texels (after writing them in place).
+    void wrapBorder() {
+        const int n = size_;
+        for (int y = 0; y < n; ++y) {
+            std::memcpy(texel(-1, y), texel(n - 1, y), C * sizeof(float));
+            std::memcpy(texel(n, y), texel(0, y), C * sizeof(float));
+        }
+        const size_t row = (size_t(n) + 2) * C;  // whole padded rows, corners included
+        std::memcpy(texel(-1, -1), texel(-1, n - 1), row * sizeof(float));
+        std::memcpy(texel(-1, n), texel(-1, 0), row * sizeof(float));
+    }
+
     int size() const { return size_; }
     float sizeF() const { return sizeF_; }
     size_t bytes() const { return padded_.size() * sizeof(float); }
@@ -96,9 +115,10 @@ public:
     }
 
 private:
+    size_t paddedIndex(int x, int y) const { return (size_t(y + 1) * (size_t(size_) + 2) + size_t(x + 1)) * C; }
     // The channels interleaved, with a one-texel periodic border on every
     // side, (W+2)²·C, so bilinear lookups never branch to wrap.
-    std::vector<float> padded_;
+    Image::Buffer padded_;  // bulk storage: left unset until written
     int size_ = 0;
     float sizeF_ = 0.0f;
 };

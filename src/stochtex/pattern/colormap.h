@@ -68,7 +68,7 @@ private:
     // loads and vector arithmetic (a GCC/Clang vector extension).
     typedef float Texel __attribute__((vector_size(16)));
     int width_ = 0, height_ = 0;
-    std::vector<Texel, DefaultInitAllocator<Texel>> rgba_;  // filled by the constructor
+    std::vector<Texel, BulkAllocator<Texel>> rgba_;  // filled by the constructor
 };
 
 // Analytic presets. Phasor profiles: the analytic shapes, or Image, a
