@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/image/png_stream.h"
 
 namespace stochtex {
 namespace fs = std::filesystem;
@@ -426,6 +427,22 @@ std::vector<unsigned char> encodeImage(const std::string& path, const Image& ima
 }
 
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
+    checkImageOutputFormat(path, options);
+    if (outputFormatOf(path) == OutputFormat::Png) {
+        // Streamed a band of rows at a time: the only copy beside the image is
+        // one band (encoding through OpenCV held four copies of the image).
+        if (image.empty()) throw InputError(path + ": refusing to write an empty image");
+        constexpr int kBandRows = 64;
+        PngStreamWriter png(path, image.width(), image.height(), image.channels(), options.bitDepth, options.transfer);
+        for (int y0 = 0; y0 < image.height(); y0 += kBandRows) {
+            const int rows = std::min(kBandRows, image.height() - y0);
+            Image band(image.width(), rows, image.channels(), Image::Uninitialized{});
+            std::copy_n(image.row(y0), band.data().size(), band.data().data());
+            png.writeRows(band);
+        }
+        png.finish();
+        return;
+    }
     const std::vector<unsigned char> buffer = encodeImage(path, image, options);
     AtomicFile file(path);
     file.write({reinterpret_cast<const char*>(buffer.data()), buffer.size()});

@@ -35,13 +35,21 @@ void onError(png_structp png, png_const_charp message) {
 
 void onWarning(png_structp, png_const_charp) {}
 
+const int kColourTypes[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
+                            PNG_COLOR_TYPE_RGB_ALPHA};
+
+// A value as an integer code 0..maxCode: clamped to [0, 1] (NaN to 0), then
+// rounded half to even, as OpenCV's convertTo rounds (a streamed PNG has the
+// codes cv::imencode wrote).
+long code(float v, float maxCode) { return v > 0.0f ? std::lrint(maxCode * std::min(v, 1.0f)) : 0; }
+
 }  // namespace
 
 PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height, int channels, int bits,
                                  Transfer transfer)
     : impl_(std::make_unique<Impl>()) {
     if (width < 1 || height < 1) throw InputError(path + ": image size must be positive");
-    if (channels != 1 && channels != 3) throw std::invalid_argument("PngStreamWriter: 1 or 3 channels");
+    if (channels < 1 || channels > 4) throw std::invalid_argument("PngStreamWriter: 1 to 4 channels");
     if (bits != 8 && bits != 16) throw InputError(path + ": PNG bit depth must be 8 or 16");
     Impl& m = *impl_;
     m.path = path;
@@ -63,9 +71,8 @@ PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height,
     if (setjmp(png_jmpbuf(m.png))) throw InputError(path + ": PNG error: " + m.error);
     png_init_io(m.png, m.file);
     png_set_compression_level(m.png, 3);
-    png_set_IHDR(m.png, m.info, png_uint_32(width), png_uint_32(height), bits,
-                 channels == 3 ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(m.png, m.info, png_uint_32(width), png_uint_32(height), bits, kColourTypes[channels - 1],
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(m.png, m.info);
     if (bits == 16) png_set_swap(m.png);  // our rows are little-endian uint16
 }
@@ -88,11 +95,10 @@ void PngStreamWriter::writeRows(const Image& band) {
     for (int y = 0; y < coded.height(); ++y) {
         const float* src = coded.row(y);
         if (m.bits == 8) {
-            for (size_t i = 0; i < values; ++i)
-                row[i] = static_cast<unsigned char>(std::lround(255.0f * std::clamp(src[i], 0.0f, 1.0f)));
+            for (size_t i = 0; i < values; ++i) row[i] = static_cast<unsigned char>(code(src[i], 255.0f));
         } else {
             for (size_t i = 0; i < values; ++i) {
-                const auto v = static_cast<uint16_t>(std::lround(65535.0f * std::clamp(src[i], 0.0f, 1.0f)));
+                const auto v = static_cast<uint16_t>(code(src[i], 65535.0f));
                 row[2 * i] = static_cast<unsigned char>(v & 0xff);
                 row[2 * i + 1] = static_cast<unsigned char>(v >> 8);
             }

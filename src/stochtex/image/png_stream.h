@@ -12,7 +12,8 @@ namespace stochtex {
 
 class PngStreamWriter {
 public:
-    // bits: 8 or 16; the bands written must have `channels` channels (3 or 1);
+    // bits: 8 or 16; the bands written must have `channels` channels (1: grey,
+    // 2: grey + alpha, 3: RGB, 4: RGBA);
     // transfer: of the codes, as WriteOptions::transfer (Srgb: bands are linear colour).
     PngStreamWriter(const std::string& path, int width, int height, int channels, int bits = 8,
                     Transfer transfer = Transfer::Srgb);
