@@ -12,8 +12,10 @@
 // so V_l and C_l are the exact footprint statistics of level 0, computed in
 // float without the cancellation of mip(E²) − E_l² (docs/MATH.md). Level L
 // is 1×1: the global mean / variance. Each level is stored once, as the
-// interleaved (mean, moment) grid the lookups read; levels are built in
-// parallel by rows (the same floats for any thread count).
+// interleaved (mean, moment) grid the lookups read. Levels 0–5 are built
+// tile by tile (32² level-0 texels, in cache), the rest a level at a time,
+// in parallel by rows of tiles or texels (the same floats for any thread
+// count).
 #include <vector>
 
 #include "stochtex/noise/example.h"
