@@ -175,7 +175,8 @@ void BM_BuildPyramids(benchmark::State& state) {
     for (auto _ : state) {
         const size_t before = bench::resetPeakResidentBytes();
         FootprintEstimator e(field, state.range(1) != 0);
-        peakGrowth = std::max(peakGrowth, bench::peakResidentBytes() - before);
+        const size_t peak = bench::peakResidentBytes();
+        peakGrowth = std::max(peakGrowth, peak > before ? peak - before : 0);
         bytes = e.bytes();
         benchmark::DoNotOptimize(&e);
     }

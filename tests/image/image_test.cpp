@@ -1,9 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <string>
+#include <vector>
 
 #include "stochtex/core/error.h"
 #include "stochtex/image/image.h"
@@ -49,6 +53,40 @@ TEST(ImageIo, Png8RoundTripIsExactOnTheGrid) {
     // Channel order survives (R stays R): pixel (1,0) has distinct channels.
     EXPECT_NEAR(back.at(1, 0, 0), 7.0f / 255.0f, 1e-6);
     EXPECT_NEAR(back.at(1, 0, 2), 69.0f / 255.0f, 1e-6);
+    fs::remove_all(d);
+}
+
+// writeImage streams a PNG in bands of rows (libpng); encodeImage still
+// encodes through OpenCV. Over several bands, an odd last band and 4
+// channels, both give the same codes, and a 2-channel image is refused
+// without leaving a file.
+TEST(ImageIo, StreamedPngHasTheCodesOfTheOpenCvEncoder) {
+    const fs::path d = tempDir();
+    Image img = gradient(53, 150, 4);
+    img.at(3, 140, 1) = std::nanf("");  // clamps to 0 in both
+    img.at(4, 140, 2) = 1.5f;           // to 255
+    const std::string path = (d / "rgba.png").string();
+    writeImage(path, img);
+    const std::vector<unsigned char> bytes = encodeImage(path, img);
+    const std::string viaOpenCv = (d / "opencv.png").string();
+    std::ofstream(viaOpenCv, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
+                                                     std::streamsize(bytes.size()));
+    const Image streamed = readImage(path), encoded = readImage(viaOpenCv);
+    ASSERT_EQ(streamed.channels(), 4);
+    ASSERT_EQ(streamed.height(), 150);
+    EXPECT_TRUE(std::equal(streamed.data().begin(), streamed.data().end(), encoded.data().begin()));
+    EXPECT_EQ(streamed.at(3, 140, 1), 0.0f);
+    EXPECT_EQ(streamed.at(4, 140, 2), 1.0f);
+    const std::string two = (d / "two.png").string();
+    try {
+        writeImage(two, Image(4, 4, 2));
+        ADD_FAILURE() << "a 2-channel PNG was written";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("two.png: a PNG is written from 1, 3 or 4 channels, got 2"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(filesIn(d), 2u);  // rgba.png and opencv.png
     fs::remove_all(d);
 }
 

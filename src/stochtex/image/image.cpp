@@ -17,6 +17,7 @@ namespace stochtex {
 void* allocateBulk(size_t bytes) {
     constexpr size_t kHugePage = size_t(2) << 20;
     void* p = nullptr;
+    if (bytes > SIZE_MAX - kHugePage) throw std::bad_alloc();
     if (bytes >= kHugePage) {
         const size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
         p = std::aligned_alloc(kHugePage, rounded);

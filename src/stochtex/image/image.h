@@ -18,7 +18,7 @@ namespace stochtex {
 //     parallel render, a pyramid level) does not pay a serial memset and its
 //     page faults first;
 //   * a block of 2 MiB or more is 2 MiB aligned and advised to use
-//     transparent huge pages (Linux's default THP mode is "madvise"), so
+//     transparent huge pages (Debian's default THP mode is "madvise"), so
 //     first touch costs one page fault per 2 MiB instead of 512: the faults
 //     of a 4096² pyramid were most of its build time.
 void* allocateBulk(size_t bytes);
@@ -30,6 +30,8 @@ struct BulkAllocator {
     BulkAllocator() = default;
     template <class U>
     BulkAllocator(const BulkAllocator<U>&) noexcept {}
+    // Plain malloc alignment for small blocks.
+    static_assert(alignof(T) <= alignof(std::max_align_t));
     T* allocate(size_t n) {
         if (n > std::numeric_limits<size_t>::max() / sizeof(T)) throw std::bad_array_new_length();
         return static_cast<T*>(allocateBulk(n * sizeof(T)));

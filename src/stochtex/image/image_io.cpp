@@ -429,14 +429,17 @@ std::vector<unsigned char> encodeImage(const std::string& path, const Image& ima
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
     checkImageOutputFormat(path, options);
     if (outputFormatOf(path) == OutputFormat::Png) {
-        // Streamed a band of rows at a time: the only copy beside the image is
-        // one band (encoding through OpenCV held four copies of the image).
+        // Streamed a band of rows at a time: beside the image it holds a band
+        // and its sRGB codes (encoding through OpenCV held four copies of the
+        // image).
         if (image.empty()) throw InputError(path + ": refusing to write an empty image");
+        if (image.channels() == 2) throw InputError(path + ": a PNG is written from 1, 3 or 4 channels, got 2");
         constexpr int kBandRows = 64;
         PngStreamWriter png(path, image.width(), image.height(), image.channels(), options.bitDepth, options.transfer);
+        Image band(image.width(), std::min(kBandRows, image.height()), image.channels(), Image::Uninitialized{});
         for (int y0 = 0; y0 < image.height(); y0 += kBandRows) {
             const int rows = std::min(kBandRows, image.height() - y0);
-            Image band(image.width(), rows, image.channels(), Image::Uninitialized{});
+            if (rows < band.height()) band = Image(image.width(), rows, image.channels(), Image::Uninitialized{});
             std::copy_n(image.row(y0), band.data().size(), band.data().data());
             png.writeRows(band);
         }

@@ -1,15 +1,18 @@
 #pragma once
-// Reading and writing images through OpenCV imgcodecs.
+// Reading and writing images: PNG through libpng, the others through OpenCV
+// imgcodecs.
 //
 // Writing, by extension (any case): .png and .tif/.tiff (8-bit by default,
 // 16-bit on request; TIFF LZW-compressed), .jpg/.jpeg (8-bit, quality
 // kJpegQuality) and .exr (float32 or half, values written as they are; the
 // others clamp to [0, 1]). Integer formats go through the options' transfer
 // function (colour_space.h): by default the image is linear-light colour and
-// its codes are sRGB; EXR stays linear. Writing is atomic (AtomicFile): the
-// file is encoded in memory, written to a temporary file beside the target
-// and renamed, so a failure never leaves a partial file under the requested
-// name.
+// its codes are sRGB; EXR stays linear. A PNG takes 1 (grey), 3 (RGB) or 4
+// (RGBA) channels and is streamed in bands of rows (PngStreamWriter), so
+// writing holds two bands beside the image; the other formats are encoded in
+// memory. Writing is atomic (AtomicFile): the file goes to a temporary file
+// beside the target and is renamed, so a failure never leaves a partial file
+// under the requested name.
 //
 // Reading, by content: PNG (through libpng), OpenEXR and JPEG (through OpenCV;
 // EXR through a private temporary file, OpenCV's decoder reading only files),
@@ -64,8 +67,10 @@ std::array<int, 2> readImageSize(const std::string& path);
 // Throws InputError for an unsupported extension, a bit depth the format
 // cannot hold, or an unwritable place.
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
-// The bytes writeImage would write to path (the format by its extension),
-// for files that embed an image (data: URIs of self-contained pages).
+// The image encoded in memory in path's format (by its extension; OpenCV's
+// encoder, also for PNG, so the bytes may differ from writeImage's file but
+// decode to the same codes), for files that embed an image (data: URIs of
+// self-contained pages).
 std::vector<unsigned char> encodeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
 
 // True if the file is an OpenEXR image (by its first bytes): its values are

@@ -4,9 +4,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <csetjmp>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -15,15 +17,48 @@
 
 namespace stochtex {
 
+namespace {
+
+// Where libpng's output goes: our write function keeps the reason a write
+// failed (errno), which libpng's own reduces to "Write Error".
+struct Sink {
+    FILE* file = nullptr;
+    std::string failure;  // strerror of the failed write, if one failed
+};
+
+void writeBytes(png_structp png, png_bytep data, png_size_t n) {
+    auto* sink = static_cast<Sink*>(png_get_io_ptr(png));
+    if (std::fwrite(data, 1, n, sink->file) != n) {
+        sink->failure = std::strerror(errno);
+        png_error(png, "write failed");
+    }
+}
+
+void flushBytes(png_structp png) { std::fflush(static_cast<Sink*>(png_get_io_ptr(png))->file); }
+
+}  // namespace
+
 struct PngStreamWriter::Impl {
     std::string path;
     std::unique_ptr<AtomicFile> output;  // the temporary file, renamed by finish()
-    FILE* file = nullptr;
+    Sink sink;                           // the temporary file, as libpng writes to it
     png_structp png = nullptr;
     png_infop info = nullptr;
     int width = 0, height = 0, channels = 0, bits = 8, written = 0;
     Transfer transfer = Transfer::Srgb;
     std::string error;
+    // The error after libpng jumped back: the write's reason where a write failed.
+    [[noreturn]] void fail() const {
+        if (!sink.failure.empty()) throw InputError(path + ": write failed: " + sink.failure);
+        throw InputError(path + ": PNG error: " + error);
+    }
+    // Here rather than in ~PngStreamWriter, so that a constructor that
+    // throws half-way (libpng refusing the size) frees what it made too.
+    ~Impl() {
+        if (png) png_destroy_write_struct(&png, &info);
+        if (sink.file) std::fclose(sink.file);
+        // output removes the temporary file unless finish() committed it.
+    }
 };
 
 namespace {
@@ -60,16 +95,16 @@ PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height,
     m.transfer = transfer;
     m.output = std::make_unique<AtomicFile>(path);
     const int fd = m.output->releaseDescriptor();
-    m.file = fdopen(fd, "wb");
-    if (!m.file) {
+    m.sink.file = fdopen(fd, "wb");
+    if (!m.sink.file) {
         ::close(fd);
         throw InputError(path + ": cannot write (out of memory for a stream)");
     }
     m.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &m.error, onError, onWarning);
     m.info = m.png ? png_create_info_struct(m.png) : nullptr;
     if (!m.png || !m.info) throw std::runtime_error(path + ": libpng could not start");
-    if (setjmp(png_jmpbuf(m.png))) throw InputError(path + ": PNG error: " + m.error);
-    png_init_io(m.png, m.file);
+    if (setjmp(png_jmpbuf(m.png))) m.fail();
+    png_set_write_fn(m.png, &m.sink, writeBytes, flushBytes);
     png_set_compression_level(m.png, 3);
     png_set_IHDR(m.png, m.info, png_uint_32(width), png_uint_32(height), bits, kColourTypes[channels - 1],
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -77,12 +112,7 @@ PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height,
     if (bits == 16) png_set_swap(m.png);  // our rows are little-endian uint16
 }
 
-PngStreamWriter::~PngStreamWriter() {
-    Impl& m = *impl_;
-    if (m.png) png_destroy_write_struct(&m.png, &m.info);
-    if (m.file) std::fclose(m.file);
-    // m.output removes the temporary file unless finish() committed it.
-}
+PngStreamWriter::~PngStreamWriter() = default;
 
 void PngStreamWriter::writeRows(const Image& band) {
     Impl& m = *impl_;
@@ -91,7 +121,7 @@ void PngStreamWriter::writeRows(const Image& band) {
     const size_t values = size_t(m.width) * size_t(m.channels);
     std::vector<unsigned char> row(values * size_t(m.bits / 8));
     const Image coded = encodeTransfer(band, m.transfer);  // before setjmp: a longjmp skips no destructor
-    if (setjmp(png_jmpbuf(m.png))) throw InputError(m.path + ": PNG error: " + m.error);
+    if (setjmp(png_jmpbuf(m.png))) m.fail();
     for (int y = 0; y < coded.height(); ++y) {
         const float* src = coded.row(y);
         if (m.bits == 8) {
@@ -111,14 +141,12 @@ void PngStreamWriter::writeRows(const Image& band) {
 void PngStreamWriter::finish() {
     Impl& m = *impl_;
     if (m.written != m.height) throw std::logic_error("PngStreamWriter: not every row was written");
-    if (setjmp(png_jmpbuf(m.png))) throw InputError(m.path + ": PNG error: " + m.error);
+    if (setjmp(png_jmpbuf(m.png))) m.fail();
     png_write_end(m.png, nullptr);
     png_destroy_write_struct(&m.png, &m.info);
-    if (std::fclose(m.file) != 0) {
-        m.file = nullptr;
-        throw InputError(m.path + ": write failed (disk full?)");
-    }
-    m.file = nullptr;
+    const int closed = std::fclose(m.sink.file);  // writes what stdio still buffers
+    m.sink.file = nullptr;
+    if (closed != 0) throw InputError(m.path + ": write failed: " + std::strerror(errno));
     m.output->commit();
 }
 

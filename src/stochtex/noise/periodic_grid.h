@@ -54,6 +54,7 @@ public:
     // Copies the periodic border from the texels (after writing them in place).
     void wrapBorder() {
         const int n = size_;
+        if (n == 0) return;
         for (int y = 0; y < n; ++y) {
             std::memcpy(texel(-1, y), texel(n - 1, y), C * sizeof(float));
             std::memcpy(texel(n, y), texel(0, y), C * sizeof(float));
