@@ -97,7 +97,7 @@ EstimatorRendersResult estimatorRenders(const EstimatorRendersOptions& o, const 
             FilterOptions none = base;
             none.source = StatisticsSource::Point;
             (void)errorMap(FilteredGraph(pattern, none).render(cam), truth, row.none);
-            row.estimators = estimatorErrors(pattern, base, cam, truth, 0);
+            row.estimators = estimatorErrors(pattern, base, cam, truth, EstimatorSet::All);
             res.rows.push_back(std::move(row));
         }
     }
@@ -108,7 +108,7 @@ EstimatorRendersResult estimatorRenders(const EstimatorRendersOptions& o, const 
                          {"mean_error_none", "none (pixel centres)", ""},
                          {"mean_error_exact", "exact statistics (the floor)", ""}};
     estimatorColumns(
-        res.table, "mean_error_", [](const std::string& name) { return name; }, 0);
+        res.table, "mean_error_", [](const std::string& name) { return name; }, EstimatorSet::All);
     res.table.columns.push_back({"reference_samples", "S̄: samples per pixel", ""});
     res.table.columns.push_back({"reference_change", "S̄: change on doubling them", ""});
     res.table.columns.push_back({"exact_samples", "exact statistics: samples per pixel", ""});

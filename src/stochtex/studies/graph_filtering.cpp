@@ -98,7 +98,7 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
                               .render(cam, exact ? progressPart(part, 0.5, 1.0, "exact statistics") : Progress{});
             c.errors[m] = errorMap(c.images[m], c.reference, *errors[m]);
         }
-        c.numbers.matchedOtherEstimators = estimatorErrors(graph, fo, cam, c.reference);
+        c.numbers.matchedOtherEstimators = estimatorErrors(graph, fo, cam, c.reference, EstimatorSet::AfterPaper);
         cols.push_back(std::move(c));
     }
     // One colour scale for every error map: the 99.5th percentile of all.
@@ -120,8 +120,10 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
                          {"mean_error_mean_only", "mean-only: mean ‖Ŝ − S̄‖₂", ""},
                          {"mean_error_matched_exact", "matched, exact statistics: mean ‖Ŝ − S̄‖₂", ""},
                          {"mean_error_matched", "matched, estimators: mean ‖Ŝ − S̄‖₂", ""}};
-    estimatorColumns(res.table, "mean_error_matched_",
-                     [](const std::string& name) { return "matched, " + name + " estimator: mean ‖Ŝ − S̄‖₂"; });
+    estimatorColumns(
+        res.table, "mean_error_matched_",
+        [](const std::string& name) { return "matched, " + name + " estimator: mean ‖Ŝ − S̄‖₂"; },
+        EstimatorSet::AfterPaper);
     // How good the brute-force images are (studies/reference_samples.h).
     res.table.columns.push_back({"reference_samples", "S̄: samples per pixel", ""});
     res.table.columns.push_back({"reference_change", "S̄: change on doubling them", ""});

@@ -215,11 +215,18 @@ Image errorMap(const Image& a, const Image& b, double& mean) {
     return e;
 }
 
+namespace {
+
+// kVarianceEstimatorNames lists the paper's estimator first.
+size_t firstOf(EstimatorSet set) { return set == EstimatorSet::All ? 0 : 1; }
+
+}  // namespace
+
 std::vector<double> estimatorErrors(const GraphPattern& pattern, FilterOptions filter, const Camera& camera,
-                                    const Image& reference, size_t first) {
+                                    const Image& reference, EstimatorSet set) {
     filter.source = StatisticsSource::Estimators;
     std::vector<double> errors;
-    for (size_t e = first; e < kVarianceEstimatorNames.size(); ++e) {
+    for (size_t e = firstOf(set); e < kVarianceEstimatorNames.size(); ++e) {
         filter.estimator = kVarianceEstimatorNames[e].second;
         (void)errorMap(FilteredGraph(pattern, filter).render(camera), reference, errors.emplace_back());
     }
@@ -227,8 +234,8 @@ std::vector<double> estimatorErrors(const GraphPattern& pattern, FilterOptions f
 }
 
 void estimatorColumns(Table& table, const std::string& keyPrefix,
-                      const std::function<std::string(const std::string&)>& caption, size_t first) {
-    for (size_t e = first; e < kVarianceEstimatorNames.size(); ++e) {
+                      const std::function<std::string(const std::string&)>& caption, EstimatorSet set) {
+    for (size_t e = firstOf(set); e < kVarianceEstimatorNames.size(); ++e) {
         const std::string& name = kVarianceEstimatorNames[e].first;
         std::string key = keyPrefix + name;
         std::replace(key.begin(), key.end(), '-', '_');
@@ -304,7 +311,7 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         c.estimated = FilteredGraph(pattern, fo).render(cam);
         if (o.exactStatistics) c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
         c.errEstimated = errorMap(c.estimated, c.reference, c.numbers.meanErrorEstimated);
-        c.numbers.meanErrorOtherEstimators = estimatorErrors(pattern, fo, cam, c.reference);
+        c.numbers.meanErrorOtherEstimators = estimatorErrors(pattern, fo, cam, c.reference, EstimatorSet::AfterPaper);
         // Not filtering at all: the pixel centres, what filtering must beat.
         (void)errorMap(FilteredGraph(pattern, fo.use(parseFilter("none"))).render(cam), c.reference,
                        c.numbers.meanErrorNone);
@@ -330,8 +337,10 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     if (o.exactStatistics)
         res.table.columns.push_back({"mean_error_exact_stats", "mean ‖Ŝ(μ, Σ) − S̄‖₂ (exact statistics)", ""});
     res.table.columns.push_back({"mean_error_estimators", "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (estimators)", ""});
-    estimatorColumns(res.table, "mean_error_",
-                     [](const std::string& name) { return "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (" + name + " estimator)"; });
+    estimatorColumns(
+        res.table, "mean_error_",
+        [](const std::string& name) { return "mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ (" + name + " estimator)"; },
+        EstimatorSet::AfterPaper);
     if (o.fadesTo) {
         res.table.columns.push_back({"mean_fade_reference", "mean ‖S̄ − m‖₂ (m: the profile's mean)", ""});
         res.table.columns.push_back({"mean_fade_estimators", "mean ‖Ŝ(μ̂, Σ̂) − m‖₂", ""});

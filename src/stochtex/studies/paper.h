@@ -103,16 +103,19 @@ Report figure4Report(const Figure4Result& result, const std::string& figure);
 // Per pixel ‖a − b‖₂ over RGB (a 1-channel image), and its mean.
 Image errorMap(const Image& a, const Image& b, double& mean);
 
-// The estimators from kVarianceEstimatorNames[first] on (first = 1: those
-// after the paper's, issue 32's column each in Figures 4, 11 and 14).
-// estimatorErrors renders the camera with each (filter as given, statistics
-// from the estimators) and returns mean ‖Ŝ − S̄‖₂ against the reference, in
-// that order; estimatorColumns appends their table columns, keyed keyPrefix
-// + the name in snake case and captioned caption(name).
+// Which estimators of kVarianceEstimatorNames a table compares: all of them
+// (the render-error table), or those after the paper's, which Figures 4, 11
+// and 14 give a column each beside their own paper-estimator column.
+enum class EstimatorSet { All, AfterPaper };
+// estimatorErrors renders the camera with each of the set (filter as given,
+// statistics from the estimators) and returns mean ‖Ŝ − S̄‖₂ against the
+// reference, in kVarianceEstimatorNames' order; estimatorColumns appends
+// their table columns, keyed keyPrefix + the name in snake case and
+// captioned caption(name).
 std::vector<double> estimatorErrors(const GraphPattern& pattern, FilterOptions filter, const Camera& camera,
-                                    const Image& reference, size_t first = 1);
+                                    const Image& reference, EstimatorSet set);
 void estimatorColumns(Table& table, const std::string& keyPrefix,
-                      const std::function<std::string(const std::string&)>& caption, size_t first = 1);
+                      const std::function<std::string(const std::string&)>& caption, EstimatorSet set);
 
 // Figure 11: Figure 4's comparison for the phasor sine pattern
 // (phasor-stripes): S̄, Ŝ(μ̂, Σ̂) and ‖Ŝ − S̄‖₂ per footprint, fading to the
