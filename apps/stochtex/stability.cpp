@@ -68,18 +68,12 @@ void registerStability(CLI::App& app) {
         if (estimatorsFlag->count() == 0 && spec.estimator) estimators = {*spec.estimator};
         StabilityStudyOptions study = args->study;
         study.filters = filtersPerEstimator(named, estimators);
-        std::vector<std::string> names;  // the sequences' file names
-        for (const FilterOptions& f : study.filters) {
-            std::string file = filterLabel(f);
-            std::replace(file.begin(), file.end(), '/', '-');
-            names.push_back(file);
-        }
         validateStabilityStudy(study);
         ThreadLimit limit(args->threads);
         const GraphPattern pattern = GraphPattern::build(spec);  // what only building shows, before any output
         const std::string& dir = args->dir;
         ensureFolder(dir);
-        FrameSequenceSet outputs(dir, names, study.size, study.size,
+        FrameSequenceSet outputs(dir, stabilitySequenceNames(study.filters), study.size, study.size,
                                  {.video = args->video, .frames = args->writeFrames});
         StabilityFrameSink writeFrame;
         if (outputs.writes()) writeFrame = [&](size_t m, int k, const Image& frame) { outputs.write(m, k, frame); };

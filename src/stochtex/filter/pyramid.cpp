@@ -58,6 +58,20 @@ void buildTexel(const BasicPeriodicGrid<2>& below, BasicPeriodicGrid<2>& level, 
     *bOut = combineChildren(c, bc, level.texel(x, y));
 }
 
+// A level's mean moment, summed in double by rows and the rows in order
+// (the same for any thread count).
+float levelMeanMoment(const BasicPeriodicGrid<2>& g) {
+    const int n = g.size();
+    std::vector<double> rows(size_t(n), 0.0);
+    parallelRows(n, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < n; ++x) rows[size_t(y)] += g.texel(x, y)[1];
+    });
+    double sum = 0;
+    for (double r : rows) sum += r;
+    return float(sum / (double(n) * double(n)));
+}
+
 }  // namespace
 
 void StatsPyramid::build(const Image& a, const Image* b) {
@@ -114,22 +128,7 @@ void StatsPyramid::build(const Image& a, const Image* b) {
         if (b) bMeans.swap(bNext);
     }
     averageMoment_.push_back(0.0f);  // level 0: one texel has no spread
-    for (int l = 1; l < levels(); ++l) addAverageMoment(l);
-}
-
-// The level's mean moment, summed in double by rows and the rows in order
-// (the same for any thread count).
-void StatsPyramid::addAverageMoment(int l) {
-    const BasicPeriodicGrid<2>& g = grids_[size_t(l)];
-    const int n = g.size();
-    std::vector<double> rows(size_t(n), 0.0);
-    parallelRows(n, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < n; ++x) rows[size_t(y)] += g.texel(x, y)[1];
-    });
-    double sum = 0;
-    for (double r : rows) sum += r;
-    averageMoment_.push_back(float(sum / (double(n) * double(n))));
+    for (int l = 1; l < levels(); ++l) averageMoment_.push_back(levelMeanMoment(grids_[size_t(l)]));
 }
 
 StatsPyramid::StatsPyramid(const Image& example) {

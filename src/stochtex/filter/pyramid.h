@@ -59,7 +59,6 @@ private:
     // Levels 0..L from level 0 of (a, b): a's means, and b's where it is
     // another example (nullptr: b = a).
     void build(const Image& a, const Image* b);
-    void addAverageMoment(int l);
     std::vector<BasicPeriodicGrid<2>> grids_;
     std::vector<float> averageMoment_;
 };

@@ -32,16 +32,13 @@ class BasicPeriodicGrid {
 public:
     BasicPeriodicGrid() = default;
     // channels: C square 1-channel images of the same size W ≥ 1.
-    explicit BasicPeriodicGrid(const std::array<const Image*, C>& channels) {
-        size_ = channels[0]->width();
-        sizeF_ = float(size_);
-        const int n = size_, stride = n + 2;
-        padded_.resize(size_t(stride) * size_t(stride) * C);
-        for (int y = -1; y <= n; ++y)
-            for (int x = -1; x <= n; ++x)
-                for (int c = 0; c < C; ++c)
-                    padded_[(size_t(y + 1) * size_t(stride) + size_t(x + 1)) * C + size_t(c)] =
-                        channels[size_t(c)]->at((x + n) % n, (y + n) % n);
+    explicit BasicPeriodicGrid(const std::array<const Image*, C>& channels) : BasicPeriodicGrid(channels[0]->width()) {
+        for (int y = 0; y < size_; ++y)
+            for (int x = 0; x < size_; ++x) {
+                float* t = texel(x, y);
+                for (int c = 0; c < C; ++c) t[c] = channels[size_t(c)]->at(x, y);
+            }
+        wrapBorder();
     }
 
     // A W×W grid to be written in place: fill every texel(x, y), then

@@ -41,6 +41,16 @@ std::vector<FilterOptions> filtersPerEstimator(std::span<const FilterOptions> fi
     return measured;
 }
 
+std::vector<std::string> stabilitySequenceNames(std::span<const FilterOptions> filters) {
+    std::vector<std::string> names;
+    for (const FilterOptions& f : filters) {
+        std::string name = filterLabel(f);
+        std::replace(name.begin(), name.end(), '/', '-');
+        names.push_back(name);
+    }
+    return names;
+}
+
 void validateStabilityStudy(const StabilityStudyOptions& o) {
     if (o.filters.empty()) throw InputError::parameter("filters", "must name at least one filter");
     checkMembers(o, stabilityStudyMembers());

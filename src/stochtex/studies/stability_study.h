@@ -55,6 +55,10 @@ struct StabilityStudyResult {
 std::vector<FilterOptions> filtersPerEstimator(std::span<const FilterOptions> filters,
                                                std::span<const VarianceEstimator> estimators);
 
+// The name of each filter's frame sequence (FrameSequenceSet's files
+// <name>.mp4, <name>-NNN.png): the filter's label with '/' as '-', in order.
+std::vector<std::string> stabilitySequenceNames(std::span<const FilterOptions> filters);
+
 // InputError naming the parameter (filters, frames, size, from, to, truthSamples).
 void validateStabilityStudy(const StabilityStudyOptions& options);
 
