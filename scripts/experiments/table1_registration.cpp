@@ -1,8 +1,8 @@
 // Not built by CMake: a measurement quoted in docs/RESULTS.md (Table 1,
 // "Our μ̂ errors are smaller"). Build against a Release build folder:
 //   g++ -std=c++20 -O2 -Isrc -I/usr/include/opencv4 scripts/experiments/table1_registration.cpp \
-//     -Wl,--start-group build/src/stochtex/*/libstochtex_*.a -Wl,--end-group -lopencv_imgcodecs \
-//     -lopencv_imgproc -lopencv_videoio -lopencv_core -ltbb -lepoxy -lEGL -lpng16 \
+//     -Wl,--start-group build/src/stochtex/*/libstochtex_*.a -Wl,--end-group -lopencv_video \
+//     -lopencv_imgproc -lopencv_core -ltbb -lepoxy -lEGL -lpng16 \
 //     $(pkg-config --libs plplot pangocairo cairo) -o /tmp/table1_registration
 // Experiment: does a half-texel misregistration between the estimator and the
 // reference reproduce the published μ̂ magnitudes?

@@ -1134,6 +1134,36 @@ case_video() {
   expect_bad "no-video with an MP4" "$out/nv.mp4" "--no-video" -- "$bin" zoom --no-video -o "$out/nv.mp4"
 }
 
+# The media codecs (OpenCV's imgcodecs and videoio, FFmpeg's encoders) are a
+# plugin beside the binary, loaded by the first file that needs them: the
+# binary does not link them, a PNG render runs without the plugin, and an
+# EXR asked of a binary without it fails naming the file it looked for,
+# leaving nothing behind.
+case_media_plugin() {
+  readelf -d "$bin" | grep NEEDED >"$work/needed.txt"
+  grep -q "libopencv_core" "$work/needed.txt" || fail "readelf shows no NEEDED libopencv_core: $(cat "$work/needed.txt")"
+  for lib in opencv_imgcodecs opencv_videoio libavformat libavcodec libswscale; do
+    grep -q "$lib" "$work/needed.txt" && fail "the binary links $lib, which belongs in the media plugin"
+  done
+  local plugin
+  plugin="$(dirname "$bin")/libstochtex_media.so"
+  [ -f "$plugin" ] || fail "no $plugin beside the binary"
+  readelf -d "$plugin" | grep -q "libopencv_imgcodecs" || fail "the plugin does not link imgcodecs"
+  mkdir -p "$work/alone"
+  cp "$bin" "$work/alone/stochtex"
+  local alone
+  alone=$(cd "$work/alone" && pwd -P)  # as /proc/self/exe resolves it
+  expect_ok "png without the plugin" "$out/alone.png" -- "$work/alone/stochtex" render --preset camouflage --size 32 -o "$out/alone.png"
+  "$work/alone/stochtex" render --preset camouflage --size 32 -o "$out/alone.exr" >"$work/out.txt" 2>"$work/err.txt"
+  local rc=$?
+  [ $rc -eq 1 ] || fail "exr without the plugin: exit $rc, expected 1"
+  grep -qF "cannot load the media codecs (EXR, JPEG, TIFF, video) from $alone/libstochtex_media.so: cannot open shared object file" "$work/err.txt" ||
+    fail "exr without the plugin: $(cat "$work/err.txt")"
+  [ ! -e "$out/alone.exr" ] || fail "exr without the plugin: $out/alone.exr was left behind"
+  # With the plugin beside it, the same command writes the EXR.
+  expect_ok "exr with the plugin" "$out/with.exr" -- "$bin" render --preset camouflage --size 32 -o "$out/with.exr"
+}
+
 # --- discoverability: version, typos, defaults, flags that would do nothing ---
 case_version() {
   "$bin" --version >"$work/v.txt" 2>&1 || fail "--version exits non-zero"

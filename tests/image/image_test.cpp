@@ -4,12 +4,15 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <string>
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/image/colour_space.h"
 #include "stochtex/image/image.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/image/image_stream.h"
@@ -56,10 +59,10 @@ TEST(ImageIo, Png8RoundTripIsExactOnTheGrid) {
     fs::remove_all(d);
 }
 
-// writeImage streams a PNG in bands of rows (libpng); encodeImage still
-// encodes through OpenCV. Over several bands, an odd last band and 4
-// channels, both give the same codes, and a 2-channel image is refused
-// without leaving a file.
+// writeImage streams a PNG in bands of rows (libpng); the codes are those
+// OpenCV's encoder wrote before it (sRGB, rounded half to even, clamped), and
+// encodeImage gives the file's bytes. Over several bands, an odd last band
+// and 4 channels; a 2-channel image is refused without leaving a file.
 TEST(ImageIo, StreamedPngHasTheCodesOfTheOpenCvEncoder) {
     const fs::path d = tempDir();
     Image img = gradient(53, 150, 4);
@@ -68,9 +71,15 @@ TEST(ImageIo, StreamedPngHasTheCodesOfTheOpenCvEncoder) {
     const std::string path = (d / "rgba.png").string();
     writeImage(path, img);
     const std::vector<unsigned char> bytes = encodeImage(path, img);
+    std::ifstream file(path, std::ios::binary);
+    const std::vector<unsigned char> written{std::istreambuf_iterator<char>(file), {}};
+    EXPECT_EQ(bytes, written);
+    const Image codes = encodeTransfer(img, Transfer::Srgb);
+    cv::Mat rgba(codes.height(), codes.width(), CV_32FC4, const_cast<float*>(codes.data().data())), bgra, eight;
+    cv::cvtColor(rgba, bgra, cv::COLOR_RGBA2BGRA);
+    bgra.convertTo(eight, CV_8U, 255.0);
     const std::string viaOpenCv = (d / "opencv.png").string();
-    std::ofstream(viaOpenCv, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                                     std::streamsize(bytes.size()));
+    ASSERT_TRUE(cv::imwrite(viaOpenCv, eight));
     const Image streamed = readImage(path), encoded = readImage(viaOpenCv);
     ASSERT_EQ(streamed.channels(), 4);
     ASSERT_EQ(streamed.height(), 150);

@@ -16,27 +16,19 @@
 #include <memory>
 #include <mutex>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // the IMWRITE_ parameter names; the codecs are the plugin's
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/image/media_codecs.h"
 #include "stochtex/image/png_stream.h"
 
 namespace stochtex {
 namespace fs = std::filesystem;
 
 namespace {
-
-// OpenCV refuses EXR unless this is set before its first codec call.
-void enableExr() {
-    static const bool done = [] {
-        setenv("OPENCV_IO_ENABLE_OPENEXR", "1", 0);
-        return true;
-    }();
-    (void)done;
-}
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
@@ -46,7 +38,7 @@ std::string lowerExtension(const std::string& path) {
 
 // What writeImage writes, by the path's extension (any case).
 enum class OutputFormat { Png, Exr, Jpeg, Tiff };
-// imencode's name for each format (it picks the encoder by it).
+// imencode's name for each format (it picks the encoder by it; media_codecs.h).
 constexpr const char* kOutputExtensions[] = {".png", ".exr", ".jpg", ".tif"};
 constexpr int kTiffCompressionLzw = 5;  // libtiff's COMPRESSION_LZW: lossless
 
@@ -241,14 +233,14 @@ Image decodePng(const std::string& path, const std::vector<uchar>& bytes) {
 // throws. So the bytes go to a file we own instead (an AtomicFile in the
 // temporary folder: exclusive, random name, removed on return, on an
 // exception and on SIGINT/SIGTERM), which cv::imread reads in place.
-cv::Mat decodeExr(const std::string& path, const std::vector<uchar>& bytes) {
+void decodeExr(const std::string& path, const std::vector<uchar>& bytes, cv::Mat& out) {
     std::error_code ec;
     const fs::path folder = fs::temp_directory_path(ec);
     if (ec) throw InputError(path + ": no temporary folder to decode OpenEXR through (" + ec.message() + ")");
     AtomicFile scratch((folder / "stochtex-exr-read").string(), ".exr");
     scratch.write({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
     ::close(scratch.releaseDescriptor());
-    return cv::imread(scratch.tempPath(), cv::IMREAD_UNCHANGED);
+    mediaCodecs().readImageFile(scratch.tempPath(), out);
 }  // the destructor removes the file (it is never committed)
 
 // OpenCV's imread/imdecode print their decoders' failures on std::cerr
@@ -275,10 +267,14 @@ private:
 
 // EXR and JPEG through OpenCV, once the header passed checkImageSize.
 Image decodeWithOpenCv(const std::string& path, const ImageHeader& header, const std::vector<uchar>& bytes) {
+    const MediaCodecs& codecs = mediaCodecs();  // loaded before std::cerr is muted: its failure is not the file's
     cv::Mat m;
     try {
         const MutedCerr muted;
-        m = header.format == ImageFormat::Exr ? decodeExr(path, bytes) : cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+        if (header.format == ImageFormat::Exr)
+            decodeExr(path, bytes, m);
+        else
+            codecs.decodeImage(bytes, m);
     } catch (const cv::Exception&) {
         m.release();  // OpenCV's assertion text says nothing to the user; the message below does
     }
@@ -369,7 +365,6 @@ std::array<int, 2> readImageSize(const std::string& path) {
 }
 
 Image readImage(const std::string& path) {
-    enableExr();
     const std::vector<uchar> bytes = readImageBytes(path);
     const ImageHeader header = readHeader(path, bytes);
     checkImageSize(path, header);
@@ -381,11 +376,41 @@ Image readImage(const std::string& path) {
     return image;
 }
 
+namespace {
+
+// A PNG streamed a band of rows at a time: beside the image it holds a band
+// and its sRGB codes (encoding through OpenCV held four copies of the image).
+void writePngBands(PngStreamWriter& png, const Image& image) {
+    constexpr int kBandRows = 64;
+    Image band(image.width(), std::min(kBandRows, image.height()), image.channels(), Image::Uninitialized{});
+    for (int y0 = 0; y0 < image.height(); y0 += kBandRows) {
+        const int rows = std::min(kBandRows, image.height() - y0);
+        if (rows < band.height()) band = Image(image.width(), rows, image.channels(), Image::Uninitialized{});
+        std::copy_n(image.row(y0), band.data().size(), band.data().data());
+        png.writeRows(band);
+    }
+    png.finish();
+}
+
+void checkWritable(const std::string& path, const Image& image, OutputFormat format) {
+    if (image.empty()) throw InputError(path + ": refusing to write an empty image");
+    if (format == OutputFormat::Png && image.channels() == 2)
+        throw InputError(path + ": a PNG is written from 1, 3 or 4 channels, got 2");
+}
+
+}  // namespace
+
 std::vector<unsigned char> encodeImage(const std::string& path, const Image& image, const WriteOptions& options) {
-    enableExr();
     checkImageOutputFormat(path, options);
     const OutputFormat format = *outputFormatOf(path);
-    if (image.empty()) throw InputError(path + ": refusing to write an empty image");
+    checkWritable(path, image, format);
+    if (format == OutputFormat::Png) {
+        std::vector<unsigned char> bytes;
+        PngStreamWriter png(bytes, path, image.width(), image.height(), image.channels(), options.bitDepth,
+                            options.transfer);
+        writePngBands(png, image);
+        return bytes;
+    }
     // Integer codes are sRGB for colour (colour_space.h); floats stay linear.
     const bool exr = format == OutputFormat::Exr;
     const Image coded = exr ? Image() : encodeTransfer(image, options.transfer);
@@ -411,14 +436,13 @@ std::vector<unsigned char> encodeImage(const std::string& path, const Image& ima
             bgr.convertTo(encoded, CV_16U, 65535.0);
         else
             bgr.convertTo(encoded, CV_8U, 255.0);
-        if (format == OutputFormat::Png) params = {cv::IMWRITE_PNG_COMPRESSION, 3};
         if (format == OutputFormat::Jpeg) params = {cv::IMWRITE_JPEG_QUALITY, kJpegQuality};
         if (format == OutputFormat::Tiff) params = {cv::IMWRITE_TIFF_COMPRESSION, kTiffCompressionLzw};
     }
     std::vector<uchar> buffer;
     bool ok = false;
     try {
-        ok = cv::imencode(kOutputExtensions[int(format)], encoded, buffer, params);
+        ok = mediaCodecs().encodeImage(kOutputExtensions[int(format)], encoded, params, buffer);
     } catch (const cv::Exception& e) {
         throw InputError(path + ": cannot encode image (" + e.msg + ")");
     }
@@ -428,22 +452,11 @@ std::vector<unsigned char> encodeImage(const std::string& path, const Image& ima
 
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
     checkImageOutputFormat(path, options);
-    if (outputFormatOf(path) == OutputFormat::Png) {
-        // Streamed a band of rows at a time: beside the image it holds a band
-        // and its sRGB codes (encoding through OpenCV held four copies of the
-        // image).
-        if (image.empty()) throw InputError(path + ": refusing to write an empty image");
-        if (image.channels() == 2) throw InputError(path + ": a PNG is written from 1, 3 or 4 channels, got 2");
-        constexpr int kBandRows = 64;
+    const OutputFormat format = *outputFormatOf(path);
+    if (format == OutputFormat::Png) {
+        checkWritable(path, image, format);
         PngStreamWriter png(path, image.width(), image.height(), image.channels(), options.bitDepth, options.transfer);
-        Image band(image.width(), std::min(kBandRows, image.height()), image.channels(), Image::Uninitialized{});
-        for (int y0 = 0; y0 < image.height(); y0 += kBandRows) {
-            const int rows = std::min(kBandRows, image.height() - y0);
-            if (rows < band.height()) band = Image(image.width(), rows, image.channels(), Image::Uninitialized{});
-            std::copy_n(image.row(y0), band.data().size(), band.data().data());
-            png.writeRows(band);
-        }
-        png.finish();
+        writePngBands(png, image);
         return;
     }
     const std::vector<unsigned char> buffer = encodeImage(path, image, options);

@@ -1,6 +1,6 @@
 #pragma once
 // Reading and writing images: PNG through libpng, the others through OpenCV
-// imgcodecs.
+// imgcodecs in the media plugin (media_codecs.h, loaded by the first such file).
 //
 // Writing, by extension (any case): .png and .tif/.tiff (8-bit by default,
 // 16-bit on request; TIFF LZW-compressed), .jpg/.jpeg (8-bit, quality
@@ -67,9 +67,8 @@ std::array<int, 2> readImageSize(const std::string& path);
 // Throws InputError for an unsupported extension, a bit depth the format
 // cannot hold, or an unwritable place.
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
-// The image encoded in memory in path's format (by its extension; OpenCV's
-// encoder, also for PNG, so the bytes may differ from writeImage's file but
-// decode to the same codes), for files that embed an image (data: URIs of
+// The image encoded in memory in path's format (by its extension; the bytes
+// writeImage writes), for files that embed an image (data: URIs of
 // self-contained pages).
 std::vector<unsigned char> encodeImage(const std::string& path, const Image& image, const WriteOptions& options = {});
 

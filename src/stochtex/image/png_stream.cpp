@@ -19,29 +19,45 @@ namespace stochtex {
 
 namespace {
 
-// Where libpng's output goes: our write function keeps the reason a write
-// failed (errno), which libpng's own reduces to "Write Error".
+// Where libpng's output goes, a file or memory: our write function keeps the
+// reason a write failed (errno), which libpng's own reduces to "Write Error".
 struct Sink {
     FILE* file = nullptr;
-    std::string failure;  // strerror of the failed write, if one failed
+    std::vector<unsigned char>* memory = nullptr;
+    std::string failure;  // why a write failed, if one failed
 };
 
 void writeBytes(png_structp png, png_bytep data, png_size_t n) {
     auto* sink = static_cast<Sink*>(png_get_io_ptr(png));
-    if (std::fwrite(data, 1, n, sink->file) != n) {
+    if (sink->memory) {
+        // No exception may cross libpng's C frames, and png_error's longjmp
+        // may not leave a catch block (the exception would never be freed).
+        bool grown = true;
+        try {
+            sink->memory->insert(sink->memory->end(), data, data + n);
+        } catch (const std::exception&) {  // bad_alloc, length_error
+            grown = false;
+        }
+        if (!grown) {
+            sink->failure = "out of memory";
+            png_error(png, "write failed");
+        }
+    } else if (std::fwrite(data, 1, n, sink->file) != n) {
         sink->failure = std::strerror(errno);
         png_error(png, "write failed");
     }
 }
 
-void flushBytes(png_structp png) { std::fflush(static_cast<Sink*>(png_get_io_ptr(png))->file); }
+void flushBytes(png_structp png) {
+    if (FILE* file = static_cast<Sink*>(png_get_io_ptr(png))->file) std::fflush(file);
+}
 
 }  // namespace
 
 struct PngStreamWriter::Impl {
     std::string path;
-    std::unique_ptr<AtomicFile> output;  // the temporary file, renamed by finish()
-    Sink sink;                           // the temporary file, as libpng writes to it
+    std::unique_ptr<AtomicFile> output;  // the temporary file, renamed by finish(); none into memory
+    Sink sink;                           // the temporary file or memory, as libpng writes to it
     png_structp png = nullptr;
     png_infop info = nullptr;
     int width = 0, height = 0, channels = 0, bits = 8, written = 0;
@@ -73,6 +89,12 @@ void onWarning(png_structp, png_const_charp) {}
 const int kColourTypes[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
                             PNG_COLOR_TYPE_RGB_ALPHA};
 
+void checkShape(const std::string& path, int width, int height, int channels, int bits) {
+    if (width < 1 || height < 1) throw InputError(path + ": image size must be positive");
+    if (channels < 1 || channels > 4) throw std::invalid_argument("PngStreamWriter: 1 to 4 channels");
+    if (bits != 8 && bits != 16) throw InputError(path + ": PNG bit depth must be 8 or 16");
+}
+
 // A value as an integer code 0..maxCode: clamped to [0, 1] (NaN to 0), then
 // rounded half to even, as OpenCV's convertTo rounds (a streamed PNG has the
 // codes cv::imencode wrote).
@@ -83,16 +105,9 @@ long code(float v, float maxCode) { return v > 0.0f ? std::lrint(maxCode * std::
 PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height, int channels, int bits,
                                  Transfer transfer)
     : impl_(std::make_unique<Impl>()) {
-    if (width < 1 || height < 1) throw InputError(path + ": image size must be positive");
-    if (channels < 1 || channels > 4) throw std::invalid_argument("PngStreamWriter: 1 to 4 channels");
-    if (bits != 8 && bits != 16) throw InputError(path + ": PNG bit depth must be 8 or 16");
+    checkShape(path, width, height, channels, bits);  // before the temporary file exists
     Impl& m = *impl_;
     m.path = path;
-    m.width = width;
-    m.height = height;
-    m.channels = channels;
-    m.bits = bits;
-    m.transfer = transfer;
     m.output = std::make_unique<AtomicFile>(path);
     const int fd = m.output->releaseDescriptor();
     m.sink.file = fdopen(fd, "wb");
@@ -100,6 +115,26 @@ PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height,
         ::close(fd);
         throw InputError(path + ": cannot write (out of memory for a stream)");
     }
+    start(width, height, channels, bits, transfer);
+}
+
+PngStreamWriter::PngStreamWriter(std::vector<unsigned char>& out, const std::string& name, int width, int height,
+                                 int channels, int bits, Transfer transfer)
+    : impl_(std::make_unique<Impl>()) {
+    checkShape(name, width, height, channels, bits);
+    impl_->path = name;
+    impl_->sink.memory = &out;
+    start(width, height, channels, bits, transfer);
+}
+
+void PngStreamWriter::start(int width, int height, int channels, int bits, Transfer transfer) {
+    Impl& m = *impl_;
+    const std::string& path = m.path;
+    m.width = width;
+    m.height = height;
+    m.channels = channels;
+    m.bits = bits;
+    m.transfer = transfer;
     m.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &m.error, onError, onWarning);
     m.info = m.png ? png_create_info_struct(m.png) : nullptr;
     if (!m.png || !m.info) throw std::runtime_error(path + ": libpng could not start");
@@ -144,6 +179,7 @@ void PngStreamWriter::finish() {
     if (setjmp(png_jmpbuf(m.png))) m.fail();
     png_write_end(m.png, nullptr);
     png_destroy_write_struct(&m.png, &m.info);
+    if (m.sink.memory) return;
     const int closed = std::fclose(m.sink.file);  // writes what stdio still buffers
     m.sink.file = nullptr;
     if (closed != 0) throw InputError(m.path + ": write failed: " + std::strerror(errno));

@@ -2,27 +2,25 @@
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <cmath>
 #include <filesystem>
 
 #include "stochtex/core/error.h"
+#include "stochtex/image/media_codecs.h"
 
 namespace stochtex {
-
-struct VideoReader::Capture {
-    cv::VideoCapture capture;
-};
 
 VideoReader::VideoReader(const std::string& path) : path_(path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": video not found");
     open();
-    width_ = int(capture_->capture.get(cv::CAP_PROP_FRAME_WIDTH));
-    height_ = int(capture_->capture.get(cv::CAP_PROP_FRAME_HEIGHT));
-    fps_ = capture_->capture.get(cv::CAP_PROP_FPS);
-    const double count = capture_->capture.get(cv::CAP_PROP_FRAME_COUNT);
+    const VideoDecoder& video = *video_;
+    const double width = video.width(), height = video.height();
+    width_ = std::isfinite(width) && std::abs(width) < 1e9 ? int(width) : 0;
+    height_ = std::isfinite(height) && std::abs(height) < 1e9 ? int(height) : 0;
+    fps_ = video.fps();
+    const double count = video.frameCount();
     frameCount_ = std::isfinite(count) && count >= 1 && count < 1e7 ? int(count) : 0;
     if (!(std::isfinite(fps_) && fps_ > 0 && fps_ <= 1000)) fps_ = 30;  // a stream without a rate: a common one
     if (width_ < 1 || height_ < 1 || width_ > 8192 || height_ > 8192)
@@ -34,9 +32,8 @@ VideoReader::VideoReader(const std::string& path) : path_(path) {
 VideoReader::~VideoReader() = default;
 
 void VideoReader::open() {
-    capture_ = std::make_unique<Capture>();
-    if (!capture_->capture.open(path_, cv::CAP_FFMPEG) || !capture_->capture.isOpened())
-        throw InputError(path_ + ": not a video this build can decode (OpenCV videoio with FFmpeg)");
+    video_ = mediaCodecs().openVideo(path_);
+    if (!video_) throw InputError(path_ + ": not a video this build can decode (OpenCV videoio with FFmpeg)");
     next_ = 0;
 }
 
@@ -47,7 +44,7 @@ const Image& VideoReader::frame(int index) {
     if (index < next_) open();  // going back: decode again from the start
     cv::Mat bgr;
     while (next_ <= index) {
-        if (!capture_->capture.read(bgr) || bgr.empty()) {
+        if (!video_->read(bgr)) {
             if (next_ == 0) throw InputError(path_ + ": the video has no frame this build can decode");
             // The end: now the count is known; loop to the frame asked for.
             frameCount_ = next_;

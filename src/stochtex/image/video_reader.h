@@ -1,5 +1,6 @@
 #pragma once
-// A video file's frames, decoded in order (OpenCV videoio), for inputs that
+// A video file's frames, decoded in order (OpenCV videoio, in the media
+// plugin: media_codecs.h), for inputs that
 // play a video by time (a ShaderToy video channel). Only the frame asked for
 // is held; going back reopens the file and decodes forward again.
 #include <memory>
@@ -8,6 +9,8 @@
 #include "stochtex/image/image.h"
 
 namespace stochtex {
+
+class VideoDecoder;
 
 class VideoReader {
 public:
@@ -34,8 +37,7 @@ public:
 private:
     void open();
     std::string path_;
-    struct Capture;
-    std::unique_ptr<Capture> capture_;
+    std::unique_ptr<VideoDecoder> video_;
     int width_ = 0, height_ = 0, frameCount_ = 0;
     double fps_ = 0;
     int next_ = 0;      // the index the decoder reads next

@@ -7,15 +7,16 @@
 // index first ("faststart") so a page can start playing it before it has
 // all of it. Frames are 8-bit sRGB codes, converted to BT.709 4:2:0 (which
 // needs even sides: an odd side is padded by repeating its last pixel row
-// or column, so the video is one pixel larger there).
+// or column, so the video is one pixel larger there). The encoding runs in
+// the media plugin (image/media_codecs.h), loaded by the first encoder.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "stochtex/image/image.h"
+#include "stochtex/image/media_codecs.h"
 
 namespace stochtex {
-
-enum class VideoCodec { H264, Vp9 };
 
 class VideoEncoder {
 public:
@@ -32,8 +33,9 @@ public:
     void finish();
 
 private:
-    struct State;
-    std::unique_ptr<State> s_;
+    int width_, height_;
+    std::unique_ptr<VideoFileEncoder> encoder_;
+    std::vector<uint8_t> rgb_;  // a frame's codes as the encoder takes them
 };
 
 // Whether this FFmpeg build has the codec's encoder. Like the encoder, it

@@ -1,4 +1,6 @@
-#include "stochtex/report/video_encoder.h"
+// The plugin's H.264/VP9 writer (media_codecs.h): FFmpeg's libraries
+// directly, for the choices report/video_encoder.h describes.
+#include "stochtex/image/media/video_file_encoder.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -11,16 +13,16 @@ extern "C" {
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdarg>
 #include <cstdlib>
 #include <mutex>
-#include <cmath>
 #include <stdexcept>
 #include <vector>
 
 #include "stochtex/core/error.h"
 
-namespace stochtex {
+namespace stochtex::media {
 
 namespace {
 
@@ -65,12 +67,14 @@ std::string lastFfmpegError() {
 
 }  // namespace
 
-bool hasVideoEncoder(VideoCodec codec) {
+bool hasFfmpegEncoder(VideoCodec codec) {
     quietFfmpegLog();
     return avcodec_find_encoder_by_name(encoderName(codec)) != nullptr;
 }
 
-struct VideoEncoder::State {
+namespace {
+
+struct EncoderState {
     std::string name;  // what errors name
     int width = 0, height = 0;
     AVFormatContext* format = nullptr;
@@ -81,12 +85,11 @@ struct VideoEncoder::State {
     AVPacket* packet = nullptr;
     int64_t next = 0;  // the next frame's pts
     bool finished = false;
-    std::vector<uint8_t> rgb;
 
     // An unfinished file is discarded (its AtomicFile removes it), so no
     // trailer is written here: after a failed one FFmpeg's muxer state is
     // gone, and a second av_write_trailer crashed.
-    ~State() {
+    ~EncoderState() {
         if (format && format->pb) avio_closep(&format->pb);
         avformat_free_context(format);
         avcodec_free_context(&codec);
@@ -117,10 +120,20 @@ struct VideoEncoder::State {
     }
 };
 
-VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int width, int height, double fps,
-                           const std::string& name)
-    : s_(std::make_unique<State>()) {
-    State& s = *s_;
+class FfmpegEncoder final : public VideoFileEncoder {
+public:
+    FfmpegEncoder(const std::string& path, VideoCodec codec, int width, int height, double fps,
+                  const std::string& name);
+    void add(const uint8_t* rgb) override;
+    void finish() override;
+
+private:
+    EncoderState s_;
+};
+
+FfmpegEncoder::FfmpegEncoder(const std::string& path, VideoCodec codecKind, int width, int height, double fps,
+                             const std::string& name) {
+    EncoderState& s = s_;
     quietFfmpegLog();
     {
         const std::lock_guard<std::mutex> lock(gLogMutex);
@@ -142,8 +155,8 @@ VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int wi
     s.codec = avcodec_alloc_context3(encoder);
     if (!s.codec) throw std::bad_alloc();
     // 4:2:0 needs even sides: odd ones are padded by one pixel.
-    s.codec->width = (width + 1) & ~1;
-    s.codec->height = (height + 1) & ~1;
+    s.codec->width = paddedSide(width);
+    s.codec->height = paddedSide(height);
     s.codec->pix_fmt = AV_PIX_FMT_YUV420P;
     // A rational frame rate: 30000/1001 and 23.976 stay exact at 1/1000 s.
     const AVRational rate = av_d2q(fps, 100000);
@@ -158,7 +171,7 @@ VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int wi
     if (s.format->oformat->flags & AVFMT_GLOBALHEADER) s.codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     AVDictionary* options = nullptr;
     if (codecKind == VideoCodec::H264) {
-        av_dict_set(&options, "crf", "18", 0);          // visually near-lossless
+        av_dict_set(&options, "crf", "18", 0);  // visually near-lossless
         av_dict_set(&options, "preset", "medium", 0);
         // x264's macroblock tree made one in ~8 encodings of the same
         // frames differ, even on one thread (measured: 30 of 30 identical
@@ -166,7 +179,7 @@ VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int wi
         av_dict_set(&options, "x264-params", "mbtree=0", 0);
     } else {
         av_dict_set(&options, "crf", "30", 0);
-        av_dict_set(&options, "b", "0", 0);             // constant quality
+        av_dict_set(&options, "b", "0", 0);  // constant quality
         av_dict_set(&options, "row-mt", "0", 0);
     }
     const int opened = avcodec_open2(s.codec, encoder, &options);
@@ -184,9 +197,9 @@ VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int wi
     av_dict_free(&muxer);
     if (header < 0) s.fail("header", header);
 
-    s.scale = sws_getContext(s.codec->width, s.codec->height, AV_PIX_FMT_RGB24, s.codec->width, s.codec->height,
-                             AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr,
-                             nullptr);
+    s.scale =
+        sws_getContext(s.codec->width, s.codec->height, AV_PIX_FMT_RGB24, s.codec->width, s.codec->height,
+                       AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr, nullptr);
     if (!s.scale) s.fail("colour conversion", 0);
     // RGB codes → BT.709 limited-range YUV, as the stream says.
     const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
@@ -198,37 +211,22 @@ VideoEncoder::VideoEncoder(const std::string& path, VideoCodec codecKind, int wi
     s.frame->width = s.codec->width;
     s.frame->height = s.codec->height;
     if (const int e = av_frame_get_buffer(s.frame, 0); e < 0) s.fail("frame", e);
-    s.rgb.resize(size_t(s.codec->width) * size_t(s.codec->height) * 3);
 }
 
-VideoEncoder::~VideoEncoder() = default;
-
-void VideoEncoder::add(const Image& codes) {
-    State& s = *s_;
-    if (codes.width() != s.width || codes.height() != s.height || (codes.channels() != 1 && codes.channels() != 3))
-        throw std::invalid_argument("VideoEncoder::add: frame of another size or channel count");
-    if (s.finished) throw std::logic_error("VideoEncoder::add after finish");
-    const int w = s.codec->width, h = s.codec->height, channels = codes.channels();
-    // Padding repeats the last column and row.
-    for (int y = 0; y < h; ++y) {
-        const float* row = codes.row(std::min(y, s.height - 1));
-        uint8_t* out = s.rgb.data() + size_t(y) * size_t(w) * 3;
-        for (int x = 0; x < w; ++x) {
-            const float* p = row + size_t(std::min(x, s.width - 1)) * size_t(channels);
-            for (int c = 0; c < 3; ++c)
-                out[3 * x + c] = uint8_t(std::lround(255.0f * std::clamp(p[channels == 3 ? c : 0], 0.0f, 1.0f)));
-        }
-    }
+void FfmpegEncoder::add(const uint8_t* rgb) {
+    EncoderState& s = s_;
+    if (s.finished) throw std::logic_error("VideoFileEncoder::add after finish");
+    const int w = s.codec->width, h = s.codec->height;
     if (const int e = av_frame_make_writable(s.frame); e < 0) s.fail("frame", e);
-    const uint8_t* source[1] = {s.rgb.data()};
+    const uint8_t* source[1] = {rgb};
     const int stride[1] = {3 * w};
     sws_scale(s.scale, source, stride, 0, h, s.frame->data, s.frame->linesize);
     s.frame->pts = s.next++;
     s.send(s.frame);
 }
 
-void VideoEncoder::finish() {
-    State& s = *s_;
+void FfmpegEncoder::finish() {
+    EncoderState& s = s_;
     if (s.finished) return;
     s.send(nullptr);
     s.finished = true;  // whatever happens next, never a second trailer
@@ -241,4 +239,11 @@ void VideoEncoder::finish() {
     if (const int e = avio_closep(&s.format->pb); e < 0) s.fail("closing", e);
 }
 
-}  // namespace stochtex
+}  // namespace
+
+std::unique_ptr<VideoFileEncoder> openFfmpegEncoder(const std::string& path, VideoCodec codec, int width, int height,
+                                                    double fps, const std::string& name) {
+    return std::make_unique<FfmpegEncoder>(path, codec, width, height, fps, name);
+}
+
+}  // namespace stochtex::media
