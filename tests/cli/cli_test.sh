@@ -1136,9 +1136,9 @@ case_video() {
 
 # The media codecs (OpenCV's imgcodecs and videoio, FFmpeg's encoders) are a
 # plugin beside the binary, loaded by the first file that needs them: the
-# binary does not link them, a PNG render runs without the plugin, and an
-# EXR asked of a binary without it fails naming the file it looked for,
-# leaving nothing behind.
+# binary does not link them, PNG and EXR (our own writers) need no plugin,
+# and a JPEG asked of a binary without it fails naming the file it looked
+# for, leaving nothing behind.
 case_media_plugin() {
   readelf -d "$bin" | grep NEEDED >"$work/needed.txt"
   grep -q "libopencv_core" "$work/needed.txt" || fail "readelf shows no NEEDED libopencv_core: $(cat "$work/needed.txt")"
@@ -1154,14 +1154,20 @@ case_media_plugin() {
   local alone
   alone=$(cd "$work/alone" && pwd -P)  # as /proc/self/exe resolves it
   expect_ok "png without the plugin" "$out/alone.png" -- "$work/alone/stochtex" render --preset camouflage --size 32 -o "$out/alone.png"
-  "$work/alone/stochtex" render --preset camouflage --size 32 -o "$out/alone.exr" >"$work/out.txt" 2>"$work/err.txt"
+  expect_ok "exr without the plugin" "$out/alone.exr" -- "$work/alone/stochtex" render --preset camouflage --size 32 -o "$out/alone.exr"
+  "$work/alone/stochtex" render --preset camouflage --size 32 -o "$out/alone.jpg" >"$work/out.txt" 2>"$work/err.txt"
   local rc=$?
-  [ $rc -eq 1 ] || fail "exr without the plugin: exit $rc, expected 1"
+  [ $rc -eq 1 ] || fail "jpg without the plugin: exit $rc, expected 1"
   grep -qF "cannot load the media codecs (EXR, JPEG, TIFF, video) from $alone/libstochtex_media.so: cannot open shared object file" "$work/err.txt" ||
-    fail "exr without the plugin: $(cat "$work/err.txt")"
-  [ ! -e "$out/alone.exr" ] || fail "exr without the plugin: $out/alone.exr was left behind"
-  # With the plugin beside it, the same command writes the EXR.
-  expect_ok "exr with the plugin" "$out/with.exr" -- "$bin" render --preset camouflage --size 32 -o "$out/with.exr"
+    fail "jpg without the plugin: $(cat "$work/err.txt")"
+  [ ! -e "$out/alone.jpg" ] || fail "jpg without the plugin: $out/alone.jpg was left behind"
+  # With the plugin beside it, the same command writes the JPEG, and the EXR
+  # written without it reads back (through the plugin's OpenEXR decoder).
+  expect_ok "jpg with the plugin" "$out/with.jpg" -- "$bin" render --preset camouflage --size 32 -o "$out/with.jpg"
+  local ring='"type":"spectrum","size":64,"components":[{"shape":"ring","frequency":8,"bandwidth":2}]'
+  local pattern="{\"noise_x\":{$ring,\"seed\":3},\"noise_y\":{$ring,\"seed\":4},"
+  pattern+="\"colormap\":{\"type\":\"image\",\"path\":\"$out/alone.exr\"},\"size\":64}"
+  expect_ok "exr read back" "$out/exr-read.png" -- "$bin" render "$pattern" --size 32 -o "$out/exr-read.png"
 }
 
 # --- discoverability: version, typos, defaults, flags that would do nothing ---

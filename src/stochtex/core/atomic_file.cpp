@@ -176,6 +176,17 @@ void AtomicFile::write(std::string_view bytes) {
     }
 }
 
+void AtomicFile::writeAt(uint64_t offset, std::string_view bytes) {
+    if (fd_ < 0) throw std::logic_error("AtomicFile::writeAt: the descriptor was released");
+    while (!bytes.empty()) {
+        const ssize_t n = ::pwrite(fd_, bytes.data(), bytes.size(), off_t(offset));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) throw InputError(path_ + ": write failed: " + std::strerror(errno));
+        bytes.remove_prefix(size_t(n));
+        offset += uint64_t(n);
+    }
+}
+
 int AtomicFile::releaseDescriptor() {
     const int fd = fd_;
     fd_ = -1;

@@ -11,6 +11,7 @@
 // status 128 + signal), so an interrupted command leaves no temporary file.
 // Every file the library and the CLI write goes through this (writeFileAtomic,
 // writeImage, PngStreamWriter, the MP4 writer).
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -39,6 +40,9 @@ public:
 
     // Appends bytes; throws InputError (disk full, I/O error).
     void write(std::string_view bytes);
+    // Overwrites bytes written before, at `offset` from the start (a table
+    // of contents known only at the end); the end of the file stays.
+    void writeAt(uint64_t offset, std::string_view bytes);
     // The descriptor passes to the caller (e.g. for fdopen), who closes it
     // before commit(); for writers that open tempPath() by name, close it.
     int releaseDescriptor();

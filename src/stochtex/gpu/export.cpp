@@ -67,8 +67,9 @@ struct WrittenFile {
     std::string content;
 };
 
-// How writeImage stores an EXR: OpenCV writes ZIP-compressed scanlines and
-// names 3 channels B, G, R; the values are data, never colour-managed.
+// How writeImage stores an EXR (ExrStreamWriter): ZIP-compressed blocks of
+// scanlines, 3 channels named B, G, R; the values are data, never
+// colour-managed.
 std::string exrFormat(const Image& image, const WriteOptions& w) {
     return "OpenEXR, " + std::to_string(image.width()) + " × " + std::to_string(image.height()) + ", " +
            std::to_string(image.channels()) + " channels (R, G, B) of " +

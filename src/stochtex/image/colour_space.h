@@ -7,6 +7,9 @@
 // are decoded where they enter (colormap specs and images) and encoded where
 // they leave as integer codes (8/16-bit PNG, video frames, the window).
 // Float files (EXR) hold linear values as they are.
+#include <algorithm>
+#include <cmath>
+
 #include "stochtex/core/enum_names.h"
 #include "stochtex/image/image.h"
 
@@ -33,5 +36,10 @@ Image linearFromSrgb(const Image& codes);
 // encoded (decoded) image for Srgb, the image itself for Linear.
 Image encodeTransfer(const Image& image, Transfer transfer);
 Image decodeTransfer(const Image& image, Transfer transfer);
+
+// A value (after the transfer) as an integer code 0..maxCode (255, 65535):
+// clamped to [0, 1] (NaN to 0), then rounded half to even as OpenCV's
+// convertTo rounds, so every integer file (PNG, TIFF, JPEG) gets the same codes.
+inline long integerCode(float v, float maxCode) { return v > 0.0f ? std::lrint(maxCode * std::min(v, 1.0f)) : 0; }
 
 }  // namespace stochtex

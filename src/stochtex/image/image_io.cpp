@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/image/image_stream.h"
 #include "stochtex/image/media_codecs.h"
 #include "stochtex/image/png_stream.h"
 
@@ -38,8 +39,6 @@ std::string lowerExtension(const std::string& path) {
 
 // What writeImage writes, by the path's extension (any case).
 enum class OutputFormat { Png, Exr, Jpeg, Tiff };
-// imencode's name for each format (it picks the encoder by it; media_codecs.h).
-constexpr const char* kOutputExtensions[] = {".png", ".exr", ".jpg", ".tif"};
 constexpr int kTiffCompressionLzw = 5;  // libtiff's COMPRESSION_LZW: lossless
 
 std::optional<OutputFormat> outputFormatOf(const std::string& path) {
@@ -378,24 +377,59 @@ Image readImage(const std::string& path) {
 
 namespace {
 
-// A PNG streamed a band of rows at a time: beside the image it holds a band
-// and its sRGB codes (encoding through OpenCV held four copies of the image).
-void writePngBands(PngStreamWriter& png, const Image& image) {
-    constexpr int kBandRows = 64;
-    Image band(image.width(), std::min(kBandRows, image.height()), image.channels(), Image::Uninitialized{});
-    for (int y0 = 0; y0 < image.height(); y0 += kBandRows) {
-        const int rows = std::min(kBandRows, image.height() - y0);
+// PNG and EXR are streamed a band of rows at a time: beside the image they
+// hold a band and its encoding (whole-image encoders held two to four
+// copies). An EXR band is 16 of its 16-row blocks, compressed in parallel.
+constexpr int kPngBandRows = 64, kExrBandRows = 256;
+
+template <class Writer>
+void writeBands(Writer& writer, const Image& image, int bandRows) {
+    Image band(image.width(), std::min(bandRows, image.height()), image.channels(), Image::Uninitialized{});
+    for (int y0 = 0; y0 < image.height(); y0 += bandRows) {
+        const int rows = std::min(bandRows, image.height() - y0);
         if (rows < band.height()) band = Image(image.width(), rows, image.channels(), Image::Uninitialized{});
         std::copy_n(image.row(y0), band.data().size(), band.data().data());
-        png.writeRows(band);
+        writer.writeRows(band);
     }
-    png.finish();
+    writer.finish();
+}
+
+// The image's integer codes (sRGB for colour, colour_space.h) in OpenCV's
+// channel order, a band of rows at a time: beside the image this holds a
+// band and the codes (a quarter or half of the image's bytes), where whole
+// copies (encoded, swapped, converted) held three.
+cv::Mat integerCodes(const Image& image, const WriteOptions& options) {
+    const int channels = image.channels(), width = image.width();
+    const bool sixteen = options.bitDepth == 16;
+    const float maxCode = sixteen ? 65535.0f : 255.0f;
+    cv::Mat codes(image.height(), width, CV_MAKETYPE(sixteen ? CV_16U : CV_8U, channels));
+    constexpr int kBandRows = 64;
+    for (int y0 = 0; y0 < image.height(); y0 += kBandRows) {
+        const int rows = std::min(kBandRows, image.height() - y0);
+        Image band(width, rows, channels, Image::Uninitialized{});
+        std::copy_n(image.row(y0), band.data().size(), band.data().data());
+        const Image coded = encodeTransfer(band, options.transfer);
+        for (int y = 0; y < rows; ++y) {
+            const float* src = coded.row(y);
+            for (int x = 0; x < width; ++x)
+                for (int c = 0; c < channels; ++c) {
+                    const int to = channels >= 3 && c < 3 ? 2 - c : c;  // RGB(A) → BGR(A)
+                    const long code = integerCode(src[size_t(x) * size_t(channels) + size_t(c)], maxCode);
+                    if (sixteen)
+                        codes.ptr<uint16_t>(y0 + y)[size_t(x) * size_t(channels) + size_t(to)] = uint16_t(code);
+                    else
+                        codes.ptr<uint8_t>(y0 + y)[size_t(x) * size_t(channels) + size_t(to)] = uint8_t(code);
+                }
+        }
+    }
+    return codes;
 }
 
 void checkWritable(const std::string& path, const Image& image, OutputFormat format) {
     if (image.empty()) throw InputError(path + ": refusing to write an empty image");
-    if (format == OutputFormat::Png && image.channels() == 2)
-        throw InputError(path + ": a PNG is written from 1, 3 or 4 channels, got 2");
+    if ((format == OutputFormat::Png || format == OutputFormat::Exr) && image.channels() == 2)
+        throw InputError(path + (format == OutputFormat::Png ? ": a PNG" : ": an EXR") +
+                         " is written from 1, 3 or 4 channels, got 2");
 }
 
 }  // namespace
@@ -408,41 +442,25 @@ std::vector<unsigned char> encodeImage(const std::string& path, const Image& ima
         std::vector<unsigned char> bytes;
         PngStreamWriter png(bytes, path, image.width(), image.height(), image.channels(), options.bitDepth,
                             options.transfer);
-        writePngBands(png, image);
+        writeBands(png, image, kPngBandRows);
         return bytes;
     }
-    // Integer codes are sRGB for colour (colour_space.h); floats stay linear.
-    const bool exr = format == OutputFormat::Exr;
-    const Image coded = exr ? Image() : encodeTransfer(image, options.transfer);
-    const Image& pixels = exr ? image : coded;
-    const int channels = pixels.channels();
-    cv::Mat f(pixels.height(), pixels.width(), CV_32FC(channels), const_cast<float*>(pixels.data().data()));
-    cv::Mat bgr;
-    if (channels == 3)
-        cv::cvtColor(f, bgr, cv::COLOR_RGB2BGR);
-    else if (channels == 4)
-        cv::cvtColor(f, bgr, cv::COLOR_RGBA2BGRA);
-    else
-        bgr = f;
-
-    cv::Mat encoded;
-    std::vector<int> params;
     if (format == OutputFormat::Exr) {
-        encoded = bgr;
-        params = {cv::IMWRITE_EXR_TYPE, options.exrHalf ? cv::IMWRITE_EXR_TYPE_HALF : cv::IMWRITE_EXR_TYPE_FLOAT};
-    } else {
-        // convertTo rounds and saturates, so values outside [0, 1] clamp.
-        if (options.bitDepth == 16)
-            bgr.convertTo(encoded, CV_16U, 65535.0);
-        else
-            bgr.convertTo(encoded, CV_8U, 255.0);
-        if (format == OutputFormat::Jpeg) params = {cv::IMWRITE_JPEG_QUALITY, kJpegQuality};
-        if (format == OutputFormat::Tiff) params = {cv::IMWRITE_TIFF_COMPRESSION, kTiffCompressionLzw};
+        std::vector<unsigned char> bytes;
+        ExrStreamWriter exr(bytes, path, image.width(), image.height(), image.channels(), options.exrHalf);
+        writeBands(exr, image, kExrBandRows);
+        return bytes;
     }
+    const cv::Mat encoded = integerCodes(image, options);
+    std::vector<int> params;
+    if (format == OutputFormat::Jpeg) params = {cv::IMWRITE_JPEG_QUALITY, kJpegQuality};
+    if (format == OutputFormat::Tiff) params = {cv::IMWRITE_TIFF_COMPRESSION, kTiffCompressionLzw};
     std::vector<uchar> buffer;
     bool ok = false;
     try {
-        ok = mediaCodecs().encodeImage(kOutputExtensions[int(format)], encoded, params, buffer);
+        // imencode picks its encoder by this name (media_codecs.h).
+        const char* extension = format == OutputFormat::Jpeg ? ".jpg" : ".tif";
+        ok = mediaCodecs().encodeImage(extension, encoded, params, buffer);
     } catch (const cv::Exception& e) {
         throw InputError(path + ": cannot encode image (" + e.msg + ")");
     }
@@ -453,10 +471,15 @@ std::vector<unsigned char> encodeImage(const std::string& path, const Image& ima
 void writeImage(const std::string& path, const Image& image, const WriteOptions& options) {
     checkImageOutputFormat(path, options);
     const OutputFormat format = *outputFormatOf(path);
+    checkWritable(path, image, format);
     if (format == OutputFormat::Png) {
-        checkWritable(path, image, format);
         PngStreamWriter png(path, image.width(), image.height(), image.channels(), options.bitDepth, options.transfer);
-        writePngBands(png, image);
+        writeBands(png, image, kPngBandRows);
+        return;
+    }
+    if (format == OutputFormat::Exr) {
+        ExrStreamWriter exr(path, image.width(), image.height(), image.channels(), options.exrHalf);
+        writeBands(exr, image, kExrBandRows);
         return;
     }
     const std::vector<unsigned char> buffer = encodeImage(path, image, options);

@@ -1,16 +1,18 @@
 #pragma once
-// Reading and writing images: PNG through libpng, the others through OpenCV
-// imgcodecs in the media plugin (media_codecs.h, loaded by the first such file).
+// Reading and writing images: PNG through libpng, EXR written by our
+// streamed writer (ExrStreamWriter), the rest through OpenCV imgcodecs in
+// the media plugin (media_codecs.h, loaded by the first such file).
 //
 // Writing, by extension (any case): .png and .tif/.tiff (8-bit by default,
 // 16-bit on request; TIFF LZW-compressed), .jpg/.jpeg (8-bit, quality
 // kJpegQuality) and .exr (float32 or half, values written as they are; the
 // others clamp to [0, 1]). Integer formats go through the options' transfer
 // function (colour_space.h): by default the image is linear-light colour and
-// its codes are sRGB; EXR stays linear. A PNG takes 1 (grey), 3 (RGB) or 4
-// (RGBA) channels and is streamed in bands of rows (PngStreamWriter), so
-// writing holds two bands beside the image; the other formats are encoded in
-// memory. Writing is atomic (AtomicFile): the file goes to a temporary file
+// its codes are sRGB; EXR stays linear. PNG and EXR take 1 (grey), 3 (RGB)
+// or 4 (RGBA) channels and are streamed in bands of rows (PngStreamWriter,
+// ExrStreamWriter: ZIP-compressed), so writing holds a band and its encoding
+// beside the image; JPEG and TIFF hold their 8- or 16-bit codes and the
+// encoded file. Writing is atomic (AtomicFile): the file goes to a temporary file
 // beside the target and is renamed, so a failure never leaves a partial file
 // under the requested name.
 //

@@ -95,11 +95,6 @@ void checkShape(const std::string& path, int width, int height, int channels, in
     if (bits != 8 && bits != 16) throw InputError(path + ": PNG bit depth must be 8 or 16");
 }
 
-// A value as an integer code 0..maxCode: clamped to [0, 1] (NaN to 0), then
-// rounded half to even, as OpenCV's convertTo rounds (a streamed PNG has the
-// codes cv::imencode wrote).
-long code(float v, float maxCode) { return v > 0.0f ? std::lrint(maxCode * std::min(v, 1.0f)) : 0; }
-
 }  // namespace
 
 PngStreamWriter::PngStreamWriter(const std::string& path, int width, int height, int channels, int bits,
@@ -160,10 +155,10 @@ void PngStreamWriter::writeRows(const Image& band) {
     for (int y = 0; y < coded.height(); ++y) {
         const float* src = coded.row(y);
         if (m.bits == 8) {
-            for (size_t i = 0; i < values; ++i) row[i] = static_cast<unsigned char>(code(src[i], 255.0f));
+            for (size_t i = 0; i < values; ++i) row[i] = static_cast<unsigned char>(integerCode(src[i], 255.0f));
         } else {
             for (size_t i = 0; i < values; ++i) {
-                const auto v = static_cast<uint16_t>(code(src[i], 65535.0f));
+                const auto v = static_cast<uint16_t>(integerCode(src[i], 65535.0f));
                 row[2 * i] = static_cast<unsigned char>(v & 0xff);
                 row[2 * i + 1] = static_cast<unsigned char>(v >> 8);
             }
