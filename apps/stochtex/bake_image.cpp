@@ -30,7 +30,7 @@ void registerBakeImage(CLI::App& app) {
     addPatternSource(*cmd, args->source);
     addViewFlags(*cmd, args->view);
     addOutputImageFlag(*cmd, args->output,
-                       "Output image: .png (8 or 16 bits, --bits) or .exr (32-bit float, uncompressed, linear values "
+                       "Output image: .png (8 or 16 bits, --bits) or .exr (32-bit float, ZIP-compressed, linear values "
                        "as rendered)");
     addFilterFlag(*cmd, args->options, "none | paper | smooth", gpuFilterNames());
     addAnisoFlag(*cmd, args->options.aniso);

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "stochtex/core/error.h"
@@ -143,6 +144,19 @@ std::string lowerExtension(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+void checkShape(const std::string& path, int width, int height, int channels) {
+    if (width < 1 || height < 1) throw InputError(path + ": image size must be positive");
+    if (channels != 1 && channels != 3 && channels != 4)
+        throw InputError(path + ": an EXR is written from 1, 3 or 4 channels, got " + std::to_string(channels));
+    // A block's byte count is a signed 32-bit field.
+    if (uint64_t(width) * uint64_t(channels) * 4 * kBlockRows > uint64_t(INT32_MAX))
+        throw InputError(path + ": an EXR row of " + std::to_string(width) + " pixels is too wide for its blocks");
+}
+
+}  // namespace
+
 uint16_t halfFromFloat(float value) {
     uint32_t bits = 0;
     std::memcpy(&bits, &value, 4);
@@ -167,9 +181,7 @@ uint16_t halfFromFloat(float value) {
 
 ExrStreamWriter::ExrStreamWriter(const std::string& path, int width, int height, int channels, bool half)
     : width_(width), height_(height), channels_(channels), half_(half) {
-    if (width < 1 || height < 1) throw InputError(path + ": image size must be positive");
-    if (channels != 1 && channels != 3 && channels != 4)
-        throw std::invalid_argument("ExrStreamWriter: 1, 3 or 4 channels");
+    checkShape(path, width, height, channels);
     file_ = std::make_unique<AtomicFile>(path);
     start();
 }
@@ -177,9 +189,7 @@ ExrStreamWriter::ExrStreamWriter(const std::string& path, int width, int height,
 ExrStreamWriter::ExrStreamWriter(std::vector<unsigned char>& out, const std::string& name, int width, int height,
                                  int channels, bool half)
     : memory_(&out), memoryStart_(out.size()), width_(width), height_(height), channels_(channels), half_(half) {
-    if (width < 1 || height < 1) throw InputError(name + ": image size must be positive");
-    if (channels != 1 && channels != 3 && channels != 4)
-        throw std::invalid_argument("ExrStreamWriter: 1, 3 or 4 channels");
+    checkShape(name, width, height, channels);
     start();
 }
 

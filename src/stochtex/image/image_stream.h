@@ -2,8 +2,8 @@
 // Images written a band of rows at a time, so that an image larger than
 // memory can be produced (bake-image, writeImage): PNG through
 // PngStreamWriter (8/16-bit, values clamped to [0, 1]) or OpenEXR through
-// ExrStreamWriter (32- or 16-bit floats, values as they are). The file appears under its name only when
-// finish() succeeds (AtomicFile).
+// ExrStreamWriter (32- or 16-bit floats, values as they are). The file
+// appears under its name only when finish() succeeds (AtomicFile).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -46,7 +46,8 @@ public:
 
 private:
     void start();
-    void writeBlocks(const float* rows, int count);  // count rows from written_, whole blocks but the last
+    // `count` rows, the next after the blocks written: whole blocks, but the image's last.
+    void writeBlocks(const float* rows, int count);
     void append(const std::string& bytes);
     std::unique_ptr<AtomicFile> file_;  // the temporary file, renamed by finish(); none into memory
     std::vector<unsigned char>* memory_ = nullptr;
