@@ -37,6 +37,25 @@ void BM_RenderUnfiltered(benchmark::State& state) {
 }
 BENCHMARK(BM_RenderUnfiltered)->Arg(0)->Arg(1)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The SIMD evaluator against its scalar reference (issue 33), timed
+// alternately on one thread, 1024², scale 1: arg 0 the camouflage preset
+// (a plain program: leaves in lanes, its colormap per pixel), 1 the one-noise graph of
+// BM_RenderSingleNoise (leaves in lanes, the colormap op per pixel).
+// Counters: simd_ and scalar_Mtexel/s and speedup = scalar time / SIMD time.
+const GraphPattern& singleNoise();
+void BM_SimdVsScalarUnfiltered(benchmark::State& state) {
+    ThreadLimit limit(1);
+    View view;
+    view.width = view.height = 1024;
+    const GraphPattern& p = state.range(0) == 0 ? camouflage() : singleNoise();
+    const auto t = bench::timeAlternately(
+        state, [&] { benchmark::DoNotOptimize(p.render(view, {}, CpuKernel::Simd).data().data()); },
+        [&] { benchmark::DoNotOptimize(p.render(view, {}, CpuKernel::Scalar).data().data()); });
+    bench::reportAlternateRates(state, double(view.width) * view.height, bench::TexelRate::Mega, {"simd", t.first},
+                                {"scalar", t.second}, "speedup");
+}
+BENCHMARK(BM_SimdVsScalarUnfiltered)->ArgName("program")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // One noise: the camouflage's noise_x as the one leaf of a colormap that
 // reads it twice. Not the plain pattern's one-lookup path (that needs two
 // leaves of one pair): the program's interpreter, so against
@@ -45,6 +64,17 @@ BENCHMARK(BM_RenderUnfiltered)->Arg(0)->Arg(1)->ArgName("threads")->Unit(benchma
 void BM_RenderSingleNoise(benchmark::State& state) {
     View view;
     view.width = view.height = 1024;
+    const GraphPattern& p = singleNoise();
+    for (auto _ : state) {
+        Image img = p.render(view);
+        benchmark::DoNotOptimize(img.data().data());
+    }
+    state.counters["Mtexel/s"] =
+        benchmark::Counter(double(view.width) * view.height * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_RenderSingleNoise)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+const GraphPattern& singleNoise() {
     static const GraphPattern p = [] {
         const nlohmann::json preset = JsonReader::parse(std::string(presetText("camouflage")), "camouflage");
         nlohmann::json nodes;
@@ -54,14 +84,8 @@ void BM_RenderSingleNoise(benchmark::State& state) {
         const nlohmann::json parsed = JsonReader::parse(graph.dump(), "one-noise");
         return GraphPattern::build(parsePatternSpec(JsonReader(parsed, "one-noise"), "."));
     }();
-    for (auto _ : state) {
-        Image img = p.render(view);
-        benchmark::DoNotOptimize(img.data().data());
-    }
-    state.counters["Mtexel/s"] =
-        benchmark::Counter(double(view.width) * view.height * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    return p;
 }
-BENCHMARK(BM_RenderSingleNoise)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Building a pattern's program: two 256² spectral examples (FFT) + painted colormap.
 void BM_BuildPattern(benchmark::State& state) {
@@ -264,5 +288,6 @@ void BM_Pack8Loss(benchmark::State& state) {
 BENCHMARK(BM_Pack8Loss)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
 
 BENCHMARK_MAIN();

@@ -9,7 +9,7 @@ packages=(
   build-essential cmake pkg-config
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-video-dev libopencv-videoio-dev
   libtbb-dev nlohmann-json3-dev libcli11-dev libglm-dev libboost-math-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libhwy-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri glslang-tools
   libglfw3-dev libimgui-dev xvfb xauth libpng-dev libwebp-dev libgif-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev

@@ -13,6 +13,7 @@ set(stochtex_sanitized_test_sources
   noise/spectrum_test.cpp
   noise/gaussianize_test.cpp
   noise/tiling_blending_test.cpp
+  noise/tiling_blending_lanes_test.cpp
   noise/tiled_white_noise_test.cpp
   filter/filter_test.cpp
   pattern/colormap_test.cpp
@@ -26,6 +27,7 @@ set(stochtex_sanitized_test_sources
   pattern/camera_test.cpp
   pattern/texture_graph_test.cpp
   pattern/graph_pattern_test.cpp
+  pattern/simd_render_test.cpp
   pattern/graph_lean_test.cpp
   pattern/graph_tiled_field_test.cpp
   pattern/part_cache_test.cpp

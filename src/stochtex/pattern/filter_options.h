@@ -22,6 +22,7 @@
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
+#include "stochtex/pattern/view.h"
 
 namespace stochtex {
 
@@ -86,9 +87,10 @@ struct FilterOptions {
     // The brute-force sources (exact, reference) sample n×n per pixel,
     // n = clamp(⌈2·extent in texels⌉, referenceMinSamples, referenceMaxSamples);
     // min = max fixes n (studies/reference_samples.h chooses it by convergence).
-    int referenceMaxSamples = 64;  // per axis
-    int referenceMinSamples = 8;   // per axis
-    bool pack8 = false;            // 8-bit pyramids (paper §5)
+    int referenceMaxSamples = 64;           // per axis
+    int referenceMinSamples = 8;            // per axis
+    bool pack8 = false;                     // 8-bit pyramids (paper §5)
+    CpuKernel cpuKernel = CpuKernel::Simd;  // the CPU evaluator's lanes or its scalar reference
 
     // Both axes at once, from a named filter.
     FilterOptions& use(const NamedFilter& f) {

@@ -12,6 +12,7 @@
 #include "stochtex/core/parallel.h"
 #include "stochtex/filter/pyramid.h"
 #include "stochtex/noise/slopes.h"
+#include "stochtex/noise/tiling_blending_lanes.h"
 #include "stochtex/pattern/graph_nodes.h"
 #include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/pattern_parts.h"
@@ -453,63 +454,97 @@ Rgb GraphPattern::fromLeafValues(const std::vector<float>& values) const {
 
 Rgb GraphPattern::evaluate(double u, double v) const { return evaluate(u, v, -1, kFromAbove); }
 
-// Walks the view's pixels row-parallel. Untransformed leaves share one
-// stencil per pixel, and neighbouring pixels on a scanline mostly see the
-// same three tiles, so the per-tile work of every leaf (hashing the offsets,
-// locating the rows to read) is redone only when the tiles change.
-Image GraphPattern::renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray) const {
+// Walks the view's pixels row-parallel. Untransformed leaves share the
+// triangle grid of a row: in SIMD lanes, each leaf is blended a vector of
+// pixels at a time (noise/tiling_blending_lanes.h); the colormap of a plain
+// program, or another program's ops, then run per pixel on the leaves'
+// values. The scalar reference shares one
+// stencil per pixel, and as neighbouring pixels on a scanline mostly see
+// the same three tiles, redoes the per-tile work of every leaf (hashing the
+// offsets, locating the rows to read) only when the tiles change.
+Image GraphPattern::renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray,
+                                 CpuKernel kernel) const {
     validateView(view);
     Image out(view.width, view.height, 3, Image::Uninitialized{});
     const double invW = 1.0 / double(exampleSize());
     std::vector<const TilingBlendingNoise*> leaves;
     for (int k = 0; k < leafCount(); ++k) leaves.push_back(&leaf(k));
     const ColormapTable* plain = lastSlot == outputSlot() ? plainColormap() : nullptr;
-    parallelRows(
-        view.height,
-        [&](int y0, int y1) {
-            Slots slots(size_t(outputSlot() + 1));
-            std::vector<TilingBlendingNoise::TileRows> tiles(leaves.size());
-            BlendStencil last{};
-            for (int py = y0; py < y1; ++py) {
-                const double v = pixelUv(view, invW, 0, py)[1];
-                const TriangleGridRow grid(v, gridDensity());
-                const float fv = periodFraction(v);
-                float* row = out.row(py);
-                bool valid = false;
+    // What a pixel's colour is once its leaves' values are in the slots.
+    const auto finish = [&](Slots& slots, float* rgb) {
+        Rgb c = run(slots, lastSlot, kFromAbove);
+        if (gray) c[0] = c[1] = c[2] = std::clamp(c[0], 0.0f, 1.0f);
+        std::copy(c.begin(), c.end(), rgb);
+    };
+    const auto lanes = [&](int y0, int y1) {
+        Slots slots(size_t(outputSlot() + 1));
+        GridRowLanes grid;
+        std::vector<std::vector<float>> values(leaves.size(), std::vector<float>(size_t(paddedLaneCount(view.width))));
+        for (int py = y0; py < y1; ++py) {
+            grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width, gridDensity());
+            for (size_t k = 0; k < leaves.size(); ++k) blendRowLanes(*leaves[k], grid, values[k].data());
+            float* row = out.row(py);
+            if (plain) {
+                // A plain program's colormap per pixel: its four RGBA entries are
+                // four 16-byte loads, cheaper than twelve gathers.
                 for (int px = 0; px < view.width; ++px) {
-                    const double u = pixelUv(view, invW, px, py)[0];
-                    Rgb c;
-                    if (untransformed_) {
-                        const BlendStencil s = grid.stencil(u);
-                        if (!valid || !sameTiles(s, last)) {
-                            for (size_t k = 0; k < leaves.size(); ++k) tiles[k] = leaves[k]->tileRows(s, fv);
-                            valid = true;
-                        }
-                        last = s;
-                        const float fu = periodFraction(u);
-                        if (plain) {
-                            c = plain->sample(leaves[0]->example().toOutput(leaves[0]->blend(s, tiles[0], fu)),
-                                              leaves[1]->example().toOutput(leaves[1]->blend(s, tiles[1], fu)));
-                        } else {
-                            for (size_t k = 0; k < leaves.size(); ++k)
-                                slots[k] =
-                                    vec3(leaves[k]->example().toOutput(leaves[k]->blend(s, tiles[k], fu)), 0.0f, 0.0f);
-                            c = run(slots, lastSlot, kFromAbove);
-                        }
-                    } else {
-                        c = evaluate(u, v, lastSlot, kFromAbove, slots);
-                    }
-                    if (gray) c[0] = c[1] = c[2] = std::clamp(c[0], 0.0f, 1.0f);
+                    const Rgb c = plain->sample(values[0][size_t(px)], values[1][size_t(px)]);
                     std::copy(c.begin(), c.end(), row + size_t(px) * 3);
                 }
+                continue;
             }
-        },
-        progress);
+            for (int px = 0; px < view.width; ++px) {
+                for (size_t k = 0; k < leaves.size(); ++k) slots[k] = vec3(values[k][size_t(px)], 0.0f, 0.0f);
+                finish(slots, row + size_t(px) * 3);
+            }
+        }
+    };
+    const auto scalar = [&](int y0, int y1) {
+        Slots slots(size_t(outputSlot() + 1));
+        std::vector<TilingBlendingNoise::TileRows> tiles(leaves.size());
+        BlendStencil last{};
+        for (int py = y0; py < y1; ++py) {
+            const double v = pixelUv(view, invW, 0, py)[1];
+            const TriangleGridRow grid(v, gridDensity());
+            const float fv = periodFraction(v);
+            float* row = out.row(py);
+            bool valid = false;
+            for (int px = 0; px < view.width; ++px) {
+                const double u = pixelUv(view, invW, px, py)[0];
+                float* rgb = row + size_t(px) * 3;
+                if (!untransformed_) {
+                    evaluate(u, v, lastSlot, kFromAbove, slots);
+                    finish(slots, rgb);
+                    continue;
+                }
+                const BlendStencil s = grid.stencil(u);
+                if (!valid || !sameTiles(s, last)) {
+                    for (size_t k = 0; k < leaves.size(); ++k) tiles[k] = leaves[k]->tileRows(s, fv);
+                    valid = true;
+                }
+                last = s;
+                const float fu = periodFraction(u);
+                if (plain) {
+                    const Rgb c = plain->sample(leaves[0]->example().toOutput(leaves[0]->blend(s, tiles[0], fu)),
+                                                leaves[1]->example().toOutput(leaves[1]->blend(s, tiles[1], fu)));
+                    std::copy(c.begin(), c.end(), rgb);
+                    continue;
+                }
+                for (size_t k = 0; k < leaves.size(); ++k)
+                    slots[k] = vec3(leaves[k]->example().toOutput(leaves[k]->blend(s, tiles[k], fu)), 0.0f, 0.0f);
+                finish(slots, rgb);
+            }
+        }
+    };
+    if (kernel == CpuKernel::Simd && untransformed_)
+        parallelRows(view.height, lanes, progress);
+    else
+        parallelRows(view.height, scalar, progress);
     return out;
 }
 
-Image GraphPattern::render(const View& view, const Progress& progress) const {
-    return renderPixels(view, progress, outputSlot(), false);
+Image GraphPattern::render(const View& view, const Progress& progress, CpuKernel kernel) const {
+    return renderPixels(view, progress, outputSlot(), false, kernel);
 }
 
 Image GraphPattern::renderNode(const View& view, const std::string& id) const {
@@ -523,7 +558,7 @@ Image GraphPattern::renderNode(const View& view, const std::string& id) const {
             field = givesField(operations_[k]);
         }
     if (slot < 0) throw InputError("node \"" + id + "\" is neither a leaf nor an operation of the graph's program");
-    return renderPixels(view, {}, slot, field);
+    return renderPixels(view, {}, slot, field, CpuKernel::Simd);
 }
 
 namespace {
@@ -743,7 +778,7 @@ Rgb FilteredGraph::shade(bool onPlane, double u, double v, const Jacobian& j, co
 Image FilteredGraph::render(const Camera& camera, const Progress& progress) const {
     validateCamera(camera);
     if (options_.source == StatisticsSource::Point && camera.kind == Camera::Kind::Zoom)
-        return graph_.render(camera.view, progress);
+        return graph_.render(camera.view, progress, options_.cpuKernel);
     if (options_.source == StatisticsSource::Reference && camera.kind == Camera::Kind::Zoom)
         return renderZoomReference(camera, progress);
     Image out(camera.view.width, camera.view.height, 3, Image::Uninitialized{});
@@ -842,8 +877,8 @@ Image FilteredGraph::renderZoomReference(const Camera& camera, const Progress& p
             fine.scale = view.scale / n;
             fine.offsetU = view.offsetU + x0 * view.scale;
             fine.offsetV = view.offsetV + y0 * view.scale;
-            const Image samples =
-                graph_.render(fine, progressPart(progress, ty * tilesX + tx, tilesX * tilesY, "reference"));
+            const Image samples = graph_.render(
+                fine, progressPart(progress, ty * tilesX + tx, tilesX * tilesY, "reference"), options_.cpuKernel);
             parallelRows(th, [&](int r0, int r1) {
                 for (int py = r0; py < r1; ++py) {
                     float* row = out.row(y0 + py) + size_t(x0) * 3;

@@ -133,8 +133,10 @@ public:
     // eye: the unit direction towards the eye, which a lean node reads
     // (evaluate(u, v) and the renders: from above).
     Rgb evaluate(double u, double v, int lastSlot, const Direction& eye) const;
-    // Unfiltered, one sample per pixel centre, multi-threaded.
-    Image render(const View& view, const Progress& progress = {}) const;
+    // Unfiltered, one sample per pixel centre, multi-threaded; the leaves
+    // (and a plain program's colormap) in SIMD lanes unless `kernel` asks
+    // for the scalar reference.
+    Image render(const View& view, const Progress& progress = {}, CpuKernel kernel = CpuKernel::Simd) const;
     // The value of any leaf or operation node over the same view (a field
     // as gray, clamped to [0, 1]; a colour as it is). InputError naming the
     // node if it is neither.
@@ -153,7 +155,7 @@ private:
     Rgb run(Slots& slots, int lastSlot, const Direction& eye) const;
     // evaluate(u, v, lastSlot, eye) in the caller's slots (no allocation per point).
     Rgb evaluate(double u, double v, int lastSlot, const Direction& eye, Slots& slots) const;
-    Image renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray) const;
+    Image renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray, CpuKernel kernel) const;
     std::vector<std::string> leafIds_;
     std::vector<TiledField> pairs_;
     std::vector<UvTransform> pairTransforms_;

@@ -40,6 +40,11 @@ inline std::array<double, 2> pixelUv(const View& view, double invW, int px, int 
     return {uv.x, uv.y};
 }
 
+// Which CPU code evaluates the pixels (issue 33): the SIMD lanes, or the
+// scalar kernel — the reference they are tested against, one pixel at a
+// time, which the tests and benchmarks compare them with.
+enum class CpuKernel { Simd, Scalar };
+
 // Checks a view against the output caps; InputError::parameter naming size,
 // scale or offset otherwise.
 void validateView(const View& view);

@@ -1,0 +1,262 @@
+// Tiling and blending in lanes: compiled once per vector target by
+// Highway's foreach_target (this file includes itself), dispatched at run
+// time. Every step is the scalar kernel's formula, in its order of
+// operations, so the lanes differ from it only where a target fuses a
+// multiply and an add.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "stochtex/noise/tiling_blending_lanes.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <array>
+
+#include "stochtex/noise/tiling_blending_lanes.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace stochtex::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// GridRowLanes::compute in double lanes: the split of the skewed x into
+// cell and fraction needs double precision far from the origin, as
+// TriangleGridRow::stencil does it.
+void GridRowImpl(GridRowLanes& row, double offset, double scale, double invW, double density, double xShift) {
+    const hn::ScalableTag<double> dd;
+    const hn::Rebind<int32_t, decltype(dd)> di32;
+    const hn::Rebind<uint32_t, decltype(dd)> du32;
+    const hn::Rebind<float, decltype(dd)> df;
+    const size_t n = hn::Lanes(dd);
+    const auto half = hn::Set(dd, 0.5), vOffset = hn::Set(dd, offset), vScale = hn::Set(dd, scale);
+    const auto vInvW = hn::Set(dd, invW), vDensity = hn::Set(dd, density), vShift = hn::Set(dd, xShift);
+    const auto one = hn::Set(df, 1.0f);
+    const auto ramp = hn::Iota(dd, 0.0);
+    for (size_t p = 0; p < row.cellX.size(); p += n) {
+        const auto px = hn::Add(hn::Set(dd, double(p)), ramp);
+        // kernel::zoomUv: (offset + p·scale)·invW at the pixel centre.
+        const auto u = hn::Mul(hn::Add(vOffset, hn::Mul(hn::Add(px, half), vScale)), vInvW);
+        const auto x = hn::Sub(hn::Mul(u, vDensity), vShift);
+        const auto bx = hn::Floor(x);
+        hn::StoreU(hn::DemoteTo(df, hn::Sub(x, bx)), df, row.fx.data() + p);
+        // The cell ids: the first lane's as a 64-bit integer wrapped to 32
+        // bits, the others' as their (exact, small) distance from it — a
+        // vector's pixels span at most a few thousand cells at the largest
+        // scale — so no lane converts a double to 64 bits.
+        const double first = hn::GetLane(bx);
+        const auto step = hn::BitCast(du32, hn::DemoteTo(di32, hn::Sub(bx, hn::Set(dd, first))));
+        const auto cell = hn::Add(hn::Set(du32, uint32_t(uint64_t(int64_t(first)))), step);
+        hn::StoreU(cell, du32, row.cellX.data() + p);
+        // periodFraction: a value just below an integer may round to 1.
+        const auto fu = hn::DemoteTo(df, hn::Sub(u, hn::Floor(u)));
+        hn::StoreU(hn::IfThenZeroElse(hn::Ge(fu, one), fu), df, row.fu.data() + p);
+    }
+}
+
+using DF = hn::ScalableTag<float>;
+static_assert(hn::MaxLanes(DF()) <= size_t(kMaxFloatLanes), "a row's arrays are padded for 16 float lanes");
+using DU = hn::RebindToUnsigned<DF>;
+using DI = hn::RebindToSigned<DF>;
+using VF = hn::Vec<DF>;
+using VU = hn::Vec<DU>;
+using VI = hn::Vec<DI>;
+
+// kernel::pcg3d on three lanes' words; returns the first two.
+HWY_INLINE void Pcg3d(DU du, VU x, VU y, VU z, VU& hx, VU& hy) {
+    const auto mul = hn::Set(du, 1664525u), add = hn::Set(du, 1013904223u);
+    x = hn::Add(hn::Mul(x, mul), add);
+    y = hn::Add(hn::Mul(y, mul), add);
+    z = hn::Add(hn::Mul(z, mul), add);
+    x = hn::Add(x, hn::Mul(y, z));
+    y = hn::Add(y, hn::Mul(z, x));
+    z = hn::Add(z, hn::Mul(x, y));
+    x = hn::Xor(x, hn::ShiftRight<16>(x));
+    y = hn::Xor(y, hn::ShiftRight<16>(y));
+    z = hn::Xor(z, hn::ShiftRight<16>(z));
+    hx = hn::Add(x, hn::Mul(y, z));
+    hy = hn::Add(y, hn::Mul(z, hx));
+}
+
+// kernel::unitFloat: the top 24 bits, exactly representable.
+HWY_INLINE VF UnitFloat(DF df, VU bits) {
+    const DI di;
+    return hn::Mul(hn::ConvertTo(df, hn::BitCast(di, hn::ShiftRight<8>(bits))), hn::Set(df, 1.0f / 16777216.0f));
+}
+
+// kernel::periodicTexel: t = point + offset, wrapped once into [½, w + ½).
+HWY_INLINE VF PeriodicTexel(VF point, VF offset, VF w, VF wHalf) {
+    const auto t = hn::Add(point, offset);
+    return hn::IfThenElse(hn::Ge(t, wHalf), hn::Sub(t, w), t);
+}
+
+// a + t·(b − a), the kernel's blends (blendEntries, blendColumnsFirst).
+HWY_INLINE VF Lerp(VF a, VF b, VF t) { return hn::Add(a, hn::Mul(t, hn::Sub(b, a))); }
+
+// The floats at index and index + 1 of every lane (a bilinear row's left
+// and right texels): one 64-bit element per lane pair of floats, so half
+// the gathered elements of two float gathers (a gather costs per element).
+HWY_INLINE void GatherPairs(DF df, const float* base, VI index, VF& left, VF& right) {
+#if HWY_TARGET == HWY_SCALAR  // one lane: no pairs
+    left = hn::GatherIndex(df, base, index);
+    right = hn::GatherIndex(df, base + 1, index);
+#else
+    const hn::Repartition<double, DF> dd;
+    const hn::Repartition<int64_t, DF> di64;
+    const hn::Half<DI> dih;
+    const auto bytes = hn::ShiftLeft<2>(index);
+    const double* pairs = reinterpret_cast<const double*>(base);  // read through gathers only
+    const auto lo = hn::BitCast(df, hn::GatherOffset(dd, pairs, hn::PromoteTo(di64, hn::LowerHalf(dih, bytes))));
+    const auto hi = hn::BitCast(df, hn::GatherOffset(dd, pairs, hn::PromoteTo(di64, hn::UpperHalf(dih, bytes))));
+    left = hn::ConcatEven(df, hi, lo);
+    right = hn::ConcatOdd(df, hi, lo);
+#endif
+}
+
+// kernel::tableTap + blendEntries on a table of n ≥ 2 entries (T⁻¹'s LUT).
+HWY_INLINE VF TableLookup(DF df, const float* table, int n, VF x) {
+    const DI di;
+    const auto fx =
+        hn::Mul(hn::IfThenElseZero(hn::Gt(x, hn::Zero(df)), hn::Min(x, hn::Set(df, 1.0f))), hn::Set(df, float(n - 1)));
+    const auto i = hn::Min(hn::ConvertTo(di, fx), hn::Set(di, n - 2));
+    const auto t = hn::Sub(fx, hn::ConvertTo(df, i));
+    return Lerp(hn::GatherIndex(df, table, i), hn::GatherIndex(df, table + 1, i), t);
+}
+
+// What a tile's lookups share along a row: its offset in texels along u,
+// the padded index of the row below its lookups and the upper row's weight
+// (v is fixed on a row, so its rows are too).
+struct TileRow {
+    float offsetTexels;
+    int rowIndex;
+    float wy;
+};
+
+void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out) {
+    const DF df;
+    const DU du;
+    const DI di;
+    const size_t n = hn::Lanes(df);
+    const NoiseExample& example = noise.example();
+    const PeriodicGrid& grid = example.grid();
+    const float* texels = grid.texel(-1, -1);  // the padded grid: index int(ty)·stride + int(tx)
+    const int stride = grid.size() + 2;
+    const float size = grid.sizeF();
+    const auto vSize = hn::Set(df, size), vSizeHalf = hn::Set(df, size + 0.5f);
+    const auto vStride = hn::Set(di, stride);
+    const auto mean = hn::Set(df, example.mean());
+    const auto one = hn::Set(df, 1.0f), zero = hn::Zero(df);
+    const auto fy = hn::Set(df, row.fy);
+    const auto cellY = hn::Set(du, row.cellY);
+    const auto seed = hn::Set(du, noise.offsetSeed());
+    const float pointTexelV = kernel::texelOfPoint(row.fv, size);
+    const auto tv = hn::Set(df, pointTexelV);
+    const auto oneU = hn::Set(du, 1u);
+    const std::vector<float>* lut = example.transform() ? &example.transform()->inverseLut() : nullptr;
+    // The tiles of the last vector whose lanes all saw one triangle.
+    kernel::Stencil shared{};
+    bool sharedValid = false;
+    std::array<TileRow, 3> sharedRows{};
+    for (size_t p = 0; p < row.cellX.size(); p += n) {
+        const auto fx = hn::LoadU(df, row.fx.data() + p);
+        const auto cellX = hn::LoadU(du, row.cellX.data() + p);
+        // kernel::blendStencil: the triangle and its normalised weights.
+        const auto fz = hn::Sub(hn::Sub(one, fx), fy);
+        const auto upper = hn::Not(hn::Gt(fz, zero));
+        auto w0 = hn::IfThenElse(upper, hn::Neg(fz), fz);
+        auto w1 = hn::IfThenElse(upper, hn::Sub(one, fy), fy);
+        auto w2 = hn::IfThenElse(upper, hn::Sub(one, fx), fx);
+        const auto norm = hn::Div(one, hn::Sqrt(hn::Add(hn::Add(hn::Mul(w0, w0), hn::Mul(w1, w1)), hn::Mul(w2, w2))));
+        w0 = hn::Mul(w0, norm);
+        w1 = hn::Mul(w1, norm);
+        w2 = hn::Mul(w2, norm);
+        const auto tu = hn::Add(hn::Mul(hn::LoadU(df, row.fu.data() + p), vSize), hn::Set(df, 0.5f));
+        // The lookup of tile i at the lanes' u: the texel pairs of its two rows.
+        const auto lookup = [&](VI rowIndex, VF wy, VF offsetTexels) {
+            const auto tx = PeriodicTexel(tu, offsetTexels, vSize, vSizeHalf);
+            const auto ix = hn::ConvertTo(di, tx);
+            const auto wx = hn::Sub(tx, hn::ConvertTo(df, ix));
+            const auto index = hn::Add(rowIndex, ix);
+            VF a0, a1, b0, b1;  // the row below's left and right texels, the row above's
+            GatherPairs(df, texels, index, a0, a1);
+            GatherPairs(df, texels + stride, index, b0, b1);
+            return Lerp(Lerp(a0, b0, wy), Lerp(a1, b1, wy), wx);
+        };
+        VF e[3];
+        const uint32_t firstCell = hn::GetLane(cellX);
+        const bool firstUpper = hn::AllTrue(df, upper);
+        if (hn::AllTrue(du, hn::Eq(cellX, hn::Set(du, firstCell))) && (firstUpper || hn::AllFalse(df, upper))) {
+            // Every lane sees the same three tiles (most vectors: a tile
+            // spans tens of pixels): their offsets are hashed and their rows
+            // located once, by the scalar kernel, and reused while they last.
+            if (!sharedValid || shared.cell.x != firstCell || shared.upper != firstUpper) {
+                shared.cell = kernel::uvec2(firstCell, row.cellY);
+                shared.upper = firstUpper;
+                const TilingBlendingNoise::Offsets offs = noise.offsets(shared);
+                for (size_t i = 0; i < 3; ++i) {
+                    const float ty = kernel::periodicTexel(pointTexelV, offs[i].y * size, size);
+                    const int iy = int(ty);
+                    sharedRows[i] = {offs[i].x * size, iy * stride, ty - float(iy)};
+                }
+                sharedValid = true;
+            }
+            for (size_t i = 0; i < 3; ++i)
+                e[i] = lookup(hn::Set(di, sharedRows[i].rowIndex), hn::Set(df, sharedRows[i].wy),
+                              hn::Set(df, sharedRows[i].offsetTexels));
+        } else {
+            // kernel::stencilVertex: upper (1,1), (1,0), (0,1); lower (0,0), (0,1), (1,0).
+            const auto up = hn::RebindMask(du, upper);
+            const auto dUpper = hn::IfThenElseZero(up, oneU), dLower = hn::IfThenZeroElse(up, oneU);
+            const VU vx[3] = {hn::Add(cellX, dUpper), hn::Add(cellX, dUpper), hn::Add(cellX, dLower)};
+            const VU vy[3] = {hn::Add(cellY, dUpper), hn::Add(cellY, dLower), hn::Add(cellY, dUpper)};
+            for (int i = 0; i < 3; ++i) {
+                // kernel::tileOffset, then the tile's rows (TilingBlendingNoise::tileRows).
+                VU hx, hy;
+                Pcg3d(du, vx[i], vy[i], seed, hx, hy);
+                const auto ty = PeriodicTexel(tv, hn::Mul(UnitFloat(df, hy), vSize), vSize, vSizeHalf);
+                const auto iy = hn::ConvertTo(di, ty);
+                e[i] =
+                    lookup(hn::Mul(iy, vStride), hn::Sub(ty, hn::ConvertTo(df, iy)), hn::Mul(UnitFloat(df, hx), vSize));
+            }
+        }
+        // kernel::blendMean: μ + Σ w_i (e_i − μ), in vertex order.
+        auto value = hn::Add(mean, hn::Mul(w0, hn::Sub(e[0], mean)));
+        value = hn::Add(value, hn::Mul(w1, hn::Sub(e[1], mean)));
+        value = hn::Add(value, hn::Mul(w2, hn::Sub(e[2], mean)));
+        if (lut) value = TableLookup(df, lut->data(), int(lut->size()), value);
+        hn::StoreU(value, df, out + p);
+    }
+}
+
+const char* TargetNameImpl() { return hwy::TargetName(HWY_TARGET); }
+
+}  // namespace stochtex::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace stochtex {
+
+HWY_EXPORT(GridRowImpl);
+HWY_EXPORT(BlendRowImpl);
+HWY_EXPORT(TargetNameImpl);
+
+void GridRowLanes::compute(double offset, double scale, double invW, double v, int pixels, double density) {
+    count = pixels;
+    const size_t padded = size_t(paddedLaneCount(pixels));
+    cellX.resize(padded);
+    fx.resize(padded);
+    fu.resize(padded);
+    // The row's y, as TriangleGridRow splits it.
+    const double sv = v * density;
+    const double y = double(kernel::kGridSkewY) * sv;
+    const int64_t by = floorToInt(y);
+    fy = float(y - double(by));
+    cellY = uint32_t(uint64_t(by));
+    fv = periodFraction(v);
+    HWY_DYNAMIC_DISPATCH(GridRowImpl)(*this, offset, scale, invW, density, double(kernel::kGridSkewX) * sv);
+}
+
+void blendRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out) {
+    HWY_DYNAMIC_DISPATCH(BlendRowImpl)(noise, row, out);
+}
+
+const char* laneTargetName() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)(); }
+
+}  // namespace stochtex
+#endif  // HWY_ONCE

@@ -1,0 +1,50 @@
+#pragma once
+// Tiling and blending of a row of pixels in SIMD lanes (issue 33: the
+// evaluator near the gather limit). The pixels of a zoom row share v, so
+// the row is split once into the triangle grid's cells (in double lanes, as
+// TriangleGridRow does per pixel) and every leaf is then blended a vector of
+// pixels at a time: stencil, vertex hashes, tile offsets, the texel pairs
+// of each tile's bilinear lookup as 64-bit gathers, eq. 7 and T⁻¹ — each
+// the kernel's formula (kernel/grid.glsl, hash.glsl, lookup.glsl) in its
+// order of operations, written in Highway ops and dispatched at run time to
+// the widest vectors the CPU has (SSE4, AVX2, AVX-512). A vector whose
+// lanes all see one triangle (most: a tile spans tens of pixels) hashes its
+// tiles once, by the scalar kernel, and keeps them while they last. The
+// scalar kernel stays the reference: tests/noise/ holds the lanes to
+// TilingBlendingNoise::blend within 1e-5 (on AVX2 they are bit-identical).
+#include <cstdint>
+#include <vector>
+
+#include "stochtex/noise/tiling_blending.h"
+
+namespace stochtex {
+
+// A row's arrays are padded to whole vectors of the widest target
+// (AVX-512: 16 floats), so a lane loop never needs a tail.
+constexpr int kMaxFloatLanes = 16;
+inline int paddedLaneCount(int count) { return (count + kMaxFloatLanes - 1) / kMaxFloatLanes * kMaxFloatLanes; }
+
+// The triangle grid along one row of pixels: pixel p at
+// u = (offset + (p + ½)·scale)·invW (kernel::zoomUv, in double) and the
+// row's v.
+struct GridRowLanes {
+    // Fills the arrays for pixels 0..count−1 (and the padding lanes past them).
+    void compute(double offset, double scale, double invW, double v, int count, double density = kDefaultGridDensity);
+    int count = 0;
+    // Per pixel: the cell's x id (wrapped to 32 bits), the fraction of the
+    // skewed x in it, and u reduced to one period (periodFraction).
+    std::vector<uint32_t> cellX;
+    std::vector<float> fx, fu;
+    // Per row: the cell's y id, the fraction of the skewed y, v reduced to one period.
+    uint32_t cellY = 0;
+    float fy = 0, fv = 0;
+};
+
+// N(u) in the noise's output space (T⁻¹ applied for a Gaussianized
+// exemplar) at every pixel of the row: out[p] for p < paddedLaneCount(row.count).
+void blendRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out);
+
+// The name of the vector target the lanes run on here ("AVX2", …).
+const char* laneTargetName();
+
+}  // namespace stochtex

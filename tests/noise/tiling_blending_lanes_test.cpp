@@ -1,0 +1,67 @@
+// The SIMD lanes of tiling and blending against the scalar kernel
+// (TriangleGridRow + TilingBlendingNoise::blend, the reference).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "stochtex/core/floor.h"
+#include "stochtex/noise/spectrum.h"
+#include "stochtex/noise/tiling_blending_lanes.h"
+#include "test_util.h"
+
+using namespace stochtex;
+
+namespace {
+
+// The largest |lanes − scalar| over the rows of a zoom view (W texels per
+// period, pixel p at (offset + (p + ½)·scale)/W).
+double maxLaneError(const TilingBlendingNoise& noise, double offsetU, double offsetV, double scale, int width,
+                    int rows) {
+    const double invW = 1.0 / noise.example().size();
+    GridRowLanes grid;
+    std::vector<float> lanes(size_t(paddedLaneCount(width)));
+    double worst = 0;
+    for (int py = 0; py < rows; ++py) {
+        const double v = (offsetV + (py + 0.5) * scale) * invW;
+        grid.compute(offsetU, scale, invW, v, width);
+        blendRowLanes(noise, grid, lanes.data());
+        const TriangleGridRow row(v);
+        for (int px = 0; px < width; ++px) {
+            const double u = (offsetU + (px + 0.5) * scale) * invW;
+            const float ref =
+                noise.example().toOutput(noise.blend(row.stencil(u), periodFraction(u), periodFraction(v)));
+            worst = std::max(worst, double(std::abs(lanes[size_t(px)] - ref)));
+        }
+    }
+    return worst;
+}
+
+}  // namespace
+
+// Views near and far from the origin (where the grid's split needs double
+// precision), zoomed in and out, a width that is no whole number of vectors,
+// and a Gaussianized exemplar (T⁻¹ as a gathered table lookup). Tolerance:
+// float rounding of values in [0, 1], as a target fusing a multiply and an
+// add moves them (a few ulps of 1).
+TEST(TilingBlendingLanes, AgreeWithTheScalarKernel) {
+    const Image e = test::example(SpectrumShape::LowPass, 0.1, 0, 0, 7, 64);
+    const auto plain = std::make_shared<NoiseExample>(e);
+    const HistogramTransform t = HistogramTransform::fit(e);
+    const auto gaussianized = std::make_shared<NoiseExample>(t.forward(e), t);
+    for (const auto& example : {plain, gaussianized}) {
+        const TilingBlendingNoise noise(example, 1234u);
+        SCOPED_TRACE(example->gaussianized() ? "gaussianized" : "plain");
+        EXPECT_LE(maxLaneError(noise, 0.0, 0.0, 1.0, 131, 40), 1e-5);
+        EXPECT_LE(maxLaneError(noise, -517.25, 93.5, 0.37, 77, 40), 1e-5);
+        EXPECT_LE(maxLaneError(noise, 3.0e7, -2.0e7, 6.3, 200, 40), 1e-5);
+    }
+}
+
+// The lanes do run vectorised where the machine can (not Highway's scalar fallback).
+TEST(TilingBlendingLanes, RunOnAVectorTarget) {
+    const std::string target = laneTargetName();
+    EXPECT_NE(target, "SCALAR");
+    EXPECT_NE(target, "EMU128");
+}

@@ -1,0 +1,94 @@
+// The SIMD evaluator (CpuKernel::Simd) against the scalar kernel it is
+// tested against (CpuKernel::Scalar), image to image: every preset and
+// every graph file of data/graphs, zoomed in, at scale 1 and zoomed out,
+// near and far from the origin; and the lanes' output for any thread count.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "stochtex/core/error.h"
+#include "stochtex/core/parallel.h"
+#include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/presets.h"
+
+namespace stochtex {
+namespace {
+
+double maxAbsDifference(const Image& a, const Image& b) {
+    EXPECT_EQ(a.data().size(), b.data().size());
+    double worst = 0;
+    for (size_t i = 0; i < std::min(a.data().size(), b.data().size()); ++i)
+        worst = std::max(worst, double(std::abs(a.data()[i] - b.data()[i])));
+    return worst;
+}
+
+std::vector<View> views() {
+    std::vector<View> out;
+    for (const auto& [scale, offsetU, offsetV] :
+         {std::array<double, 3>{0.31, 5.5, -2.25}, {1.0, 0.0, 0.0}, {4.7, -1.0e6, 3.3e5}}) {
+        View v;
+        v.width = 67;  // no whole number of vectors
+        v.height = 29;
+        v.scale = scale;
+        v.offsetU = offsetU;
+        v.offsetV = offsetV;
+        out.push_back(v);
+    }
+    return out;
+}
+
+// Linear colour agrees within float rounding: max |Δ| ≤ 1e-5 (the lanes
+// compute each formula in the scalar kernel's order of operations).
+void expectLanesAgree(const GraphPattern& program, const std::string& name) {
+    for (const View& view : views()) {
+        SCOPED_TRACE(name + " at scale " + std::to_string(view.scale));
+        const Image lanes = program.render(view, {}, CpuKernel::Simd);
+        const Image scalar = program.render(view, {}, CpuKernel::Scalar);
+        EXPECT_LE(maxAbsDifference(lanes, scalar), 1e-5);
+    }
+}
+
+TEST(SimdRender, EveryPresetAgreesWithTheScalarKernel) {
+    for (const std::string& name : presetNames()) {
+        const PatternSpec spec = loadPreset(name);
+        expectLanesAgree(GraphPattern::build(spec), name);
+        if (spec.normalMap) expectLanesAgree(GraphPattern::build(spec, {ResponseKind::Lean}), name + " (lean)");
+    }
+}
+
+TEST(SimdRender, EveryGraphFileAgreesWithTheScalarKernel) {
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(STOCHTEX_DATA_DIR) + "/graphs")) {
+        if (entry.path().extension() != ".json") continue;
+        expectLanesAgree(GraphPattern::build(loadPatternFile(entry.path().string())), entry.path().filename());
+        ++files;
+    }
+    EXPECT_GE(files, 3);
+}
+
+TEST(SimdRender, IdenticalForAnyThreadCount) {
+    const GraphPattern program = GraphPattern::build(loadPreset(presetNames().front()));
+    View view;
+    view.width = 203;
+    view.height = 61;
+    view.scale = 1.7;
+    Image one, many;
+    {
+        ThreadLimit limit(1);
+        one = program.render(view);
+    }
+    {
+        ThreadLimit limit(3);
+        many = program.render(view);
+    }
+    ASSERT_EQ(one.data().size(), many.data().size());
+    EXPECT_EQ(std::memcmp(one.data().data(), many.data().data(), one.data().size() * sizeof(float)), 0);
+}
+
+}  // namespace
+}  // namespace stochtex
