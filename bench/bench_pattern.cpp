@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "alternate_timing.h"
+#include "gather_floor.h"
 #include "resident_memory.h"
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
@@ -19,6 +20,13 @@ namespace {
 const GraphPattern& camouflage() {
     static const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
     return p;
+}
+
+// The SIMD time per image over the same-run gather floor of the texel
+// pairs it gathers (gather_floor.h): how far the lanes are from the limit.
+void reportFloorRatio(benchmark::State& state, double simdSeconds, double pairsPerImage) {
+    const double perImage = simdSeconds / double(state.iterations());
+    state.counters["floor_ratio"] = perImage / bench::gatherFloorSeconds((long long)pairsPerImage);
 }
 
 // Unfiltered S = H ∘ N for a two-noise pattern, 1024², all threads (arg 0)
@@ -41,7 +49,8 @@ BENCHMARK(BM_RenderUnfiltered)->Arg(0)->Arg(1)->ArgName("threads")->Unit(benchma
 // alternately on one thread, 1024², scale 1: arg 0 the camouflage preset
 // (a plain program: leaves in lanes, its colormap per pixel), 1 the one-noise graph of
 // BM_RenderSingleNoise (leaves in lanes, the colormap op per pixel).
-// Counters: simd_ and scalar_Mtexel/s and speedup = scalar time / SIMD time.
+// Counters: simd_ and scalar_Mtexel/s, speedup = scalar time / SIMD time
+// and floor_ratio = SIMD time / the same-run gather floor of its pairs.
 const GraphPattern& singleNoise();
 void BM_SimdVsScalarUnfiltered(benchmark::State& state) {
     ThreadLimit limit(1);
@@ -53,8 +62,38 @@ void BM_SimdVsScalarUnfiltered(benchmark::State& state) {
         [&] { benchmark::DoNotOptimize(p.render(view, {}, CpuKernel::Scalar).data().data()); });
     bench::reportAlternateRates(state, double(view.width) * view.height, bench::TexelRate::Mega, {"simd", t.first},
                                 {"scalar", t.second}, "speedup");
+    // Per pixel and leaf: three tiles, two rows, one pair each.
+    reportFloorRatio(state, t.first, double(view.width) * view.height * 6 * p.leafCount());
 }
 BENCHMARK(BM_SimdVsScalarUnfiltered)->ArgName("program")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same for a filtered zoom of the camouflage preset (smooth table,
+// paper's variances), 1024², one thread: arg the scale (1: one texel
+// footprint per pixel at level 0; 4.7: two levels, trilinear).
+void BM_SimdVsScalarFiltered(benchmark::State& state) {
+    ThreadLimit limit(1);
+    Camera camera;
+    camera.view.width = camera.view.height = 1024;
+    camera.view.scale = double(state.range(0)) / 10.0;
+    FilterOptions options;
+    const FilteredGraph simd(camouflage(), options);
+    options.cpuKernel = CpuKernel::Scalar;
+    const FilteredGraph scalar(camouflage(), options);
+    const auto t = bench::timeAlternately(
+        state, [&] { benchmark::DoNotOptimize(simd.render(camera).data().data()); },
+        [&] { benchmark::DoNotOptimize(scalar.render(camera).data().data()); });
+    bench::reportAlternateRates(state, double(camera.view.width) * camera.view.height, bench::TexelRate::Mega,
+                                {"simd", t.first}, {"scalar", t.second}, "speedup");
+    // Per pixel, level and leaf: three tiles, two rows, a pair left and right.
+    const int levels = state.range(0) == 10 ? 1 : 2;
+    reportFloorRatio(state, t.first, double(camera.view.width) * camera.view.height * 12 * 2 * levels);
+}
+BENCHMARK(BM_SimdVsScalarFiltered)
+    ->ArgName("scale_x10")
+    ->Arg(10)
+    ->Arg(47)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // One noise: the camouflage's noise_x as the one leaf of a colormap that
 // reads it twice. Not the plain pattern's one-lookup path (that needs two
@@ -288,6 +327,5 @@ void BM_Pack8Loss(benchmark::State& state) {
 BENCHMARK(BM_Pack8Loss)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
-
 
 BENCHMARK_MAIN();

@@ -1,7 +1,8 @@
 // The SIMD evaluator (CpuKernel::Simd) against the scalar kernel it is
 // tested against (CpuKernel::Scalar), image to image: every preset and
 // every graph file of data/graphs, zoomed in, at scale 1 and zoomed out,
-// near and far from the origin; and the lanes' output for any thread count.
+// near and far from the origin; a plain program's filtered zooms; and the
+// lanes' output for any thread count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -71,6 +72,35 @@ TEST(SimdRender, EveryGraphFileAgreesWithTheScalarKernel) {
     EXPECT_GE(files, 3);
 }
 
+// A plain program's filtered zoom: the texel statistics of each level in
+// lanes. Scales at a whole level (one texel footprint), between levels
+// (trilinear) and magnified; the paper's and Deliot–Heitz's variances, both
+// prefiltered tables.
+TEST(SimdRender, FilteredZoomsAgreeWithTheScalarKernel) {
+    const GraphPattern program = GraphPattern::build(loadPreset("camouflage"));
+    ASSERT_NE(program.plainColormap(), nullptr);
+    for (const char* filter : {"paper", "smooth"})
+        for (const VarianceEstimator estimator : {VarianceEstimator::Paper, VarianceEstimator::DeliotHeitz}) {
+            FilterOptions options;
+            options.use(parseFilter(filter));
+            options.estimator = estimator;
+            FilterOptions scalarOptions = options;
+            scalarOptions.cpuKernel = CpuKernel::Scalar;
+            const FilteredGraph lanes(program, options), scalar(program, scalarOptions);
+            for (const double scale : {0.37, 1.0, 2.0, 4.7, 16.0, 300.0}) {
+                SCOPED_TRACE(std::string(filter) + " " + enumName(kVarianceEstimatorNames, estimator) + " at scale " +
+                             std::to_string(scale));
+                Camera camera;
+                camera.view.width = 53;
+                camera.view.height = 17;
+                camera.view.scale = scale;
+                camera.view.offsetU = -3.0e5;
+                camera.view.offsetV = 77.25;
+                EXPECT_LE(maxAbsDifference(lanes.render(camera), scalar.render(camera)), 1e-5);
+            }
+        }
+}
+
 TEST(SimdRender, IdenticalForAnyThreadCount) {
     const GraphPattern program = GraphPattern::build(loadPreset(presetNames().front()));
     View view;
@@ -87,6 +117,19 @@ TEST(SimdRender, IdenticalForAnyThreadCount) {
         many = program.render(view);
     }
     ASSERT_EQ(one.data().size(), many.data().size());
+    EXPECT_EQ(std::memcmp(one.data().data(), many.data().data(), one.data().size() * sizeof(float)), 0);
+    // The filtered zoom in lanes likewise.
+    const FilteredGraph filtered(program, FilterOptions{});
+    Camera camera;
+    camera.view = view;
+    {
+        ThreadLimit limit(1);
+        one = filtered.render(camera);
+    }
+    {
+        ThreadLimit limit(3);
+        many = filtered.render(camera);
+    }
     EXPECT_EQ(std::memcmp(one.data().data(), many.data().data(), one.data().size() * sizeof(float)), 0);
 }
 

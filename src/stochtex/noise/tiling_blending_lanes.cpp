@@ -128,15 +128,20 @@ struct TileRow {
     float wy;
 };
 
-void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out) {
+// Eq. 7 on the example (C = 1: N, then T⁻¹ where the example has one) or
+// eq. 8 and 12 on a level of its statistics pyramid (C = 2: N̂_l and σ̂²_l)
+// at every pixel of the row.
+template <int C>
+void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& grid, const GridRowLanes& row,
+                  float* out, float* variance) {
+    static_assert(C == 1 || C == 2);
     const DF df;
     const DU du;
     const DI di;
     const size_t n = hn::Lanes(df);
     const NoiseExample& example = noise.example();
-    const PeriodicGrid& grid = example.grid();
-    const float* texels = grid.texel(-1, -1);  // the padded grid: index int(ty)·stride + int(tx)
-    const int stride = grid.size() + 2;
+    const float* texels = grid.texel(-1, -1);  // the padded grid: index int(ty)·stride + int(tx)·C
+    const int stride = (grid.size() + 2) * C;
     const float size = grid.sizeF();
     const auto vSize = hn::Set(df, size), vSizeHalf = hn::Set(df, size + 0.5f);
     const auto vStride = hn::Set(di, stride);
@@ -148,7 +153,7 @@ void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, flo
     const float pointTexelV = kernel::texelOfPoint(row.fv, size);
     const auto tv = hn::Set(df, pointTexelV);
     const auto oneU = hn::Set(du, 1u);
-    const std::vector<float>* lut = example.transform() ? &example.transform()->inverseLut() : nullptr;
+    const std::vector<float>* lut = C == 1 && example.transform() ? &example.transform()->inverseLut() : nullptr;
     // The tiles of the last vector whose lanes all saw one triangle.
     kernel::Stencil shared{};
     bool sharedValid = false;
@@ -167,18 +172,29 @@ void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, flo
         w1 = hn::Mul(w1, norm);
         w2 = hn::Mul(w2, norm);
         const auto tu = hn::Add(hn::Mul(hn::LoadU(df, row.fu.data() + p), vSize), hn::Set(df, 0.5f));
-        // The lookup of tile i at the lanes' u: the texel pairs of its two rows.
-        const auto lookup = [&](VI rowIndex, VF wy, VF offsetTexels) {
+        // The lookup of a tile at the lanes' u: the texels of its two rows
+        // (BasicPeriodicGrid::sampleTexels' order), each channel.
+        VF e[3], var[3];
+        const auto lookup = [&](int i, VI rowIndex, VF wy, VF offsetTexels) {
             const auto tx = PeriodicTexel(tu, offsetTexels, vSize, vSizeHalf);
             const auto ix = hn::ConvertTo(di, tx);
             const auto wx = hn::Sub(tx, hn::ConvertTo(df, ix));
-            const auto index = hn::Add(rowIndex, ix);
-            VF a0, a1, b0, b1;  // the row below's left and right texels, the row above's
-            GatherPairs(df, texels, index, a0, a1);
-            GatherPairs(df, texels + stride, index, b0, b1);
-            return Lerp(Lerp(a0, b0, wy), Lerp(a1, b1, wy), wx);
+            const auto index = hn::Add(rowIndex, C == 1 ? ix : hn::ShiftLeft<1>(ix));
+            if constexpr (C == 1) {
+                VF a0, a1, b0, b1;  // the row below's left and right texels, the row above's
+                GatherPairs(df, texels, index, a0, a1);
+                GatherPairs(df, texels + stride, index, b0, b1);
+                e[i] = Lerp(Lerp(a0, b0, wy), Lerp(a1, b1, wy), wx);
+            } else {
+                VF m0, v0, m1, v1, n0, u0, n1, u1;  // below: left mean, variance, right…; above: the same
+                GatherPairs(df, texels, index, m0, v0);
+                GatherPairs(df, texels + 2, index, m1, v1);
+                GatherPairs(df, texels + stride, index, n0, u0);
+                GatherPairs(df, texels + stride + 2, index, n1, u1);
+                e[i] = Lerp(Lerp(m0, n0, wy), Lerp(m1, n1, wy), wx);
+                var[i] = Lerp(Lerp(v0, u0, wy), Lerp(v1, u1, wy), wx);
+            }
         };
-        VF e[3];
         const uint32_t firstCell = hn::GetLane(cellX);
         const bool firstUpper = hn::AllTrue(df, upper);
         if (hn::AllTrue(du, hn::Eq(cellX, hn::Set(du, firstCell))) && (firstUpper || hn::AllFalse(df, upper))) {
@@ -196,9 +212,9 @@ void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, flo
                 }
                 sharedValid = true;
             }
-            for (size_t i = 0; i < 3; ++i)
-                e[i] = lookup(hn::Set(di, sharedRows[i].rowIndex), hn::Set(df, sharedRows[i].wy),
-                              hn::Set(df, sharedRows[i].offsetTexels));
+            for (int i = 0; i < 3; ++i)
+                lookup(i, hn::Set(di, sharedRows[size_t(i)].rowIndex), hn::Set(df, sharedRows[size_t(i)].wy),
+                       hn::Set(df, sharedRows[size_t(i)].offsetTexels));
         } else {
             // kernel::stencilVertex: upper (1,1), (1,0), (0,1); lower (0,0), (0,1), (1,0).
             const auto up = hn::RebindMask(du, upper);
@@ -211,8 +227,7 @@ void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, flo
                 Pcg3d(du, vx[i], vy[i], seed, hx, hy);
                 const auto ty = PeriodicTexel(tv, hn::Mul(UnitFloat(df, hy), vSize), vSize, vSizeHalf);
                 const auto iy = hn::ConvertTo(di, ty);
-                e[i] =
-                    lookup(hn::Mul(iy, vStride), hn::Sub(ty, hn::ConvertTo(df, iy)), hn::Mul(UnitFloat(df, hx), vSize));
+                lookup(i, hn::Mul(iy, vStride), hn::Sub(ty, hn::ConvertTo(df, iy)), hn::Mul(UnitFloat(df, hx), vSize));
             }
         }
         // kernel::blendMean: μ + Σ w_i (e_i − μ), in vertex order.
@@ -221,7 +236,21 @@ void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, flo
         value = hn::Add(value, hn::Mul(w2, hn::Sub(e[2], mean)));
         if (lut) value = TableLookup(df, lut->data(), int(lut->size()), value);
         hn::StoreU(value, df, out + p);
+        if constexpr (C == 2) {  // kernel::blendVariance: Σ w_i² V_i
+            const auto v = hn::Add(hn::Add(hn::Mul(hn::Mul(w0, w0), var[0]), hn::Mul(hn::Mul(w1, w1), var[1])),
+                                   hn::Mul(hn::Mul(w2, w2), var[2]));
+            hn::StoreU(v, df, variance + p);
+        }
     }
+}
+
+void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out) {
+    BlendGridRow<1>(noise, noise.example().grid(), row, out, nullptr);
+}
+
+void BlendLevelRowImpl(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,
+                       float* mean, float* variance) {
+    BlendGridRow<2>(noise, level, row, mean, variance);
 }
 
 const char* TargetNameImpl() { return hwy::TargetName(HWY_TARGET); }
@@ -234,6 +263,7 @@ namespace stochtex {
 
 HWY_EXPORT(GridRowImpl);
 HWY_EXPORT(BlendRowImpl);
+HWY_EXPORT(BlendLevelRowImpl);
 HWY_EXPORT(TargetNameImpl);
 
 void GridRowLanes::compute(double offset, double scale, double invW, double v, int pixels, double density) {
@@ -254,6 +284,11 @@ void GridRowLanes::compute(double offset, double scale, double invW, double v, i
 
 void blendRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out) {
     HWY_DYNAMIC_DISPATCH(BlendRowImpl)(noise, row, out);
+}
+
+void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,
+                   float* mean, float* variance) {
+    HWY_DYNAMIC_DISPATCH(BlendLevelRowImpl)(noise, level, row, mean, variance);
 }
 
 const char* laneTargetName() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)(); }

@@ -44,6 +44,13 @@ struct GridRowLanes {
 // exemplar) at every pixel of the row: out[p] for p < paddedLaneCount(row.count).
 void blendRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out);
 
+// Eq. 8 and 12 on a level of the noise's statistics pyramid (mean and
+// variance per texel, filter/pyramid.h) at every pixel of the row: N̂_l and
+// σ̂²_l with the stencil at the pixel, as FootprintEstimator::probeTexels
+// computes them for one texel footprint.
+void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,
+                   float* mean, float* variance);
+
 // The name of the vector target the lanes run on here ("AVX2", …).
 const char* laneTargetName();
 

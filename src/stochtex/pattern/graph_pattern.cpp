@@ -800,6 +800,8 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                                            e.maxLod(), options_.aniso));
         }
     }
+    if (plainEstimate && oneFootprint && options_.cpuKernel == CpuKernel::Simd && zoomInLanes(shapes.front()))
+        return renderZoomInLanes(camera, shapes.front(), progress);
     parallelRows(
         camera.view.height,
         [&](int y0, int y1) {
@@ -839,6 +841,71 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                     }
                     std::copy(c.begin(), c.end(), out.row(py) + size_t(px) * 3);
                 }
+        },
+        progress);
+    return out;
+}
+
+bool FilteredGraph::zoomInLanes(const Footprint& shape) const {
+    const FootprintEstimator& e = *estimators_.front();
+    const bool oneLevelVariance =
+        options_.estimator == VarianceEstimator::Paper || options_.estimator == VarianceEstimator::DeliotHeitz;
+    return shape.layout.count == 1 && oneLevelVariance && !e.covariancePyramid();
+}
+
+Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& shape, const Progress& progress) const {
+    const View& view = camera.view;
+    const FootprintEstimator& e = *estimators_.front();
+    const TiledField& field = graph_.leafPairs().front();
+    const kernel::ProbeLevels levels = kernel::probeLevels(shape.layout.lod, e.maxLod(), 1);
+    // The texel footprints every pixel reads: level l0, and l1 where it weighs.
+    const bool single = kernel::isSingleTexel(1, levels.frac);
+    const int levelCount = !single && levels.w1 > 0.0f ? 2 : 1;
+    const std::array<int, 2> level{levels.l0, levels.l1};
+    const bool deliotHeitz = options_.estimator == VarianceEstimator::DeliotHeitz;
+    const std::array<kernel::vec3, 2> averages{e.levelAverages(levels.l0), e.levelAverages(levels.l1)};
+    const double invW = 1.0 / double(graph_.exampleSize());
+    const size_t padded = size_t(paddedLaneCount(view.width));
+    Image out(view.width, view.height, 3, Image::Uninitialized{});
+    parallelRows(
+        view.height,
+        [&](int y0, int y1) {
+            GridRowLanes grid;
+            // Per level and channel: N̂_l and σ̂²_l of the row's pixels.
+            std::vector<float> buffer(padded * 8);
+            const auto mean = [&](int k, int a) { return buffer.data() + padded * size_t(4 * k + a); };
+            const auto variance = [&](int k, int a) { return buffer.data() + padded * size_t(4 * k + 2 + a); };
+            for (int py = y0; py < y1; ++py) {
+                grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width,
+                             field.gridDensity());
+                for (int k = 0; k < levelCount; ++k)
+                    for (int a = 0; a < 2; ++a)
+                        blendRowLanes(field.channel(a), e.pyramid(a).level(level[size_t(k)]), grid, mean(k, a),
+                                      variance(k, a));
+                float* row = out.row(py);
+                for (int px = 0; px < view.width; ++px) {
+                    std::array<kernel::TexelStats, 2> t{};
+                    for (int k = 0; k < levelCount; ++k) {
+                        t[size_t(k)].mean = kernel::vec2(mean(k, 0)[px], mean(k, 1)[px]);
+                        t[size_t(k)].var = kernel::vec2(variance(k, 0)[px], variance(k, 1)[px]);
+                        t[size_t(k)].cov = 0.0f;
+                        if (deliotHeitz)
+                            t[size_t(k)] = kernel::deliotHeitzTexel(t[size_t(k)], averages[size_t(k)], false);
+                    }
+                    // The kernel's loop for one probe (kernel/estimate.glsl).
+                    kernel::FootprintMoments r;
+                    if (single) {
+                        r = kernel::texelMoments(t[0]);
+                    } else {
+                        kernel::Moments sums = kernel::momentsAbout(t[0].mean);
+                        sums = kernel::momentsAdd(sums, levels.w0, t[0].mean, t[0].var, t[0].cov);
+                        if (levelCount == 2) sums = kernel::momentsAdd(sums, levels.w1, t[1].mean, t[1].var, t[1].cov);
+                        r = kernel::momentsResult(sums);
+                    }
+                    const Rgb c = plainColour(FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov});
+                    std::copy(c.begin(), c.end(), row + size_t(px) * 3);
+                }
+            }
         },
         progress);
     return out;

@@ -227,6 +227,13 @@ private:
     Rgb plainColour(const FootprintStats& s) const;  // a plain program's colour of its pair's statistics
     void footprints(double u, double v, const Jacobian& j, Scratch& scratch) const;  // one per estimator
     Rgb shade(Scratch& scratch, const Direction& eye) const;  // estimators, on scratch.footprints
+    // A plain program's zoom through one-probe footprints (a zoom's are
+    // isotropic) with the paper's or Deliot–Heitz's variances: each level's
+    // texel statistics of a row in SIMD lanes, then eq. 9, 14–15 and the
+    // prefiltered table per pixel by the kernel's functions, as estimate()
+    // computes them. Whether `shape` (the zoom's footprint) allows it.
+    bool zoomInLanes(const Footprint& shape) const;
+    Image renderZoomInLanes(const Camera& camera, const Footprint& shape, const Progress& progress) const;
     // The reference through a zoom: the point image at n times the
     // resolution, box-filtered (its pixels tile the plane).
     Image renderZoomReference(const Camera& camera, const Progress& progress) const;
