@@ -38,7 +38,7 @@ void GridRowImpl(GridRowLanes& row, double offset, double scale, double invW, do
         hn::StoreU(hn::DemoteTo(df, hn::Sub(x, bx)), df, row.fx.data() + p);
         // The cell ids: the first lane's as a 64-bit integer wrapped to 32
         // bits, the others' as their (exact, small) distance from it — a
-        // vector's pixels span at most a few thousand cells at the largest
+        // vector's pixels span at most a few million cells at the largest
         // scale — so no lane converts a double to 64 bits.
         const double first = hn::GetLane(bx);
         const auto step = hn::BitCast(du32, hn::DemoteTo(di32, hn::Sub(bx, hn::Set(dd, first))));

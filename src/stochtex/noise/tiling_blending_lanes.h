@@ -7,7 +7,8 @@
 // of each tile's bilinear lookup as 64-bit gathers, eq. 7 and T⁻¹ — each
 // the kernel's formula (kernel/grid.glsl, hash.glsl, lookup.glsl) in its
 // order of operations, written in Highway ops and dispatched at run time to
-// the widest vectors the CPU has (SSE4, AVX2, AVX-512). A vector whose
+// the widest vectors the CPU has (SSSE3, SSE4, AVX2, AVX-512; a one-lane
+// fallback elsewhere). A vector whose
 // lanes all see one triangle (most: a tile spans tens of pixels) hashes its
 // tiles once, by the scalar kernel, and keeps them while they last. The
 // scalar kernel stays the reference: tests/noise/ holds the lanes to

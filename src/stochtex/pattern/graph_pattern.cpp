@@ -404,23 +404,31 @@ const ColormapTable* GraphPattern::plainColormap() const {
 }
 
 Rgb GraphPattern::run(Slots& slots, int lastSlot, const Direction& eye) const {
-    if (lastSlot < leafCount()) return toRgb(slots[size_t(lastSlot)]);
+    runRows(slots.data(), 1, lastSlot, eye);
+    return toRgb(slots[size_t(lastSlot)]);
+}
+
+void GraphPattern::runRows(vec3* rows, int n, int lastSlot, const Direction& eye) const {
     kernel::OpContext ctx;  // the op's tables themselves (ops/op_host.h)
     ctx.eye = toVec(eye);
-    size_t out = size_t(leafCount());
+    const vec3* zero = rows + size_t(outputSlot() + 1) * size_t(n);
+    const auto in = [&](const Operation& op, int k) -> const vec3* {
+        const int slot = op.inputs[size_t(k)];
+        return slot >= 0 ? rows + size_t(slot) * size_t(n) : zero;
+    };
+    int out = leafCount();
     for (const Operation& op : operations_) {
+        if (out > lastSlot) break;
         ctx.table = op.table;
         ctx.pointTable = op.table >= 0 ? &tables_[size_t(op.table)].point : nullptr;
-        slots[out] = opPoint(op.params, input(slots, op, 0), input(slots, op, 1), input(slots, op, 2), ctx);
-        if (int(out) == lastSlot) break;
+        opPointRow(op.params, in(op, 0), in(op, 1), in(op, 2), rows + size_t(out) * size_t(n), n, ctx);
         ++out;
     }
-    return toRgb(slots[size_t(lastSlot)]);
 }
 
 Rgb GraphPattern::evaluate(double u, double v, int lastSlot, const Direction& eye, Slots& slots) const {
     if (lastSlot < 0) lastSlot = outputSlot();
-    slots.resize(size_t(outputSlot() + 1));
+    if (slots.size() != size_t(outputSlot() + 2)) slots = makeSlots();
     // Untransformed leaves share the stencil at uv.
     const BlendStencil shared = untransformed_ ? triangleGrid(u, v, gridDensity()) : BlendStencil{};
     for (int k = 0; k < leafCount(); ++k) {
@@ -447,7 +455,7 @@ Rgb GraphPattern::fromLeafValues(const std::vector<float>& values) const {
     if (int(values.size()) != leafCount())
         throw std::invalid_argument("GraphPattern::fromLeafValues: " + std::to_string(values.size()) + " values for " +
                                     std::to_string(leafCount()) + " leaves");
-    Slots slots(size_t(outputSlot() + 1));
+    Slots slots = makeSlots();
     for (size_t k = 0; k < values.size(); ++k) slots[k] = vec3(values[k], 0.0f, 0.0f);
     return run(slots, outputSlot(), kFromAbove);
 }
@@ -457,8 +465,8 @@ Rgb GraphPattern::evaluate(double u, double v) const { return evaluate(u, v, -1,
 // Walks the view's pixels row-parallel. Untransformed leaves share the
 // triangle grid of a row: in SIMD lanes, each leaf is blended a vector of
 // pixels at a time (noise/tiling_blending_lanes.h); the colormap of a plain
-// program, or another program's ops, then run per pixel on the leaves'
-// values. The scalar reference shares one
+// program then runs per pixel, another program's ops an op at a time over
+// the row (runRows). The scalar reference shares one
 // stencil per pixel, and as neighbouring pixels on a scanline mostly see
 // the same three tiles, redoes the per-tile work of every leaf (hashing the
 // offsets, locating the rows to read) only when the tiles change.
@@ -470,16 +478,17 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
     std::vector<const TilingBlendingNoise*> leaves;
     for (int k = 0; k < leafCount(); ++k) leaves.push_back(&leaf(k));
     const ColormapTable* plain = lastSlot == outputSlot() ? plainColormap() : nullptr;
-    // What a pixel's colour is once its leaves' values are in the slots.
-    const auto finish = [&](Slots& slots, float* rgb) {
-        Rgb c = run(slots, lastSlot, kFromAbove);
+    // A pixel's value as written: a field as gray, clamped to [0, 1].
+    const auto put = [&](Rgb c, float* rgb) {
         if (gray) c[0] = c[1] = c[2] = std::clamp(c[0], 0.0f, 1.0f);
         std::copy(c.begin(), c.end(), rgb);
     };
     const auto lanes = [&](int y0, int y1) {
-        Slots slots(size_t(outputSlot() + 1));
         GridRowLanes grid;
-        std::vector<std::vector<float>> values(leaves.size(), std::vector<float>(size_t(paddedLaneCount(view.width))));
+        const size_t width = size_t(view.width), padded = size_t(paddedLaneCount(view.width));
+        std::vector<std::vector<float>> values(leaves.size(), std::vector<float>(padded));
+        // The program's slots over the row (runRows), the last row vec3(0).
+        std::vector<vec3> rows(size_t(outputSlot() + 2) * width, vec3(0.0f));
         for (int py = y0; py < y1; ++py) {
             grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width, gridDensity());
             for (size_t k = 0; k < leaves.size(); ++k) blendRowLanes(*leaves[k], grid, values[k].data());
@@ -487,20 +496,21 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
             if (plain) {
                 // A plain program's colormap per pixel: its four RGBA entries are
                 // four 16-byte loads, cheaper than twelve gathers.
-                for (int px = 0; px < view.width; ++px) {
-                    const Rgb c = plain->sample(values[0][size_t(px)], values[1][size_t(px)]);
-                    std::copy(c.begin(), c.end(), row + size_t(px) * 3);
+                for (size_t px = 0; px < width; ++px) {
+                    const Rgb c = plain->sample(values[0][px], values[1][px]);
+                    std::copy(c.begin(), c.end(), row + px * 3);
                 }
                 continue;
             }
-            for (int px = 0; px < view.width; ++px) {
-                for (size_t k = 0; k < leaves.size(); ++k) slots[k] = vec3(values[k][size_t(px)], 0.0f, 0.0f);
-                finish(slots, row + size_t(px) * 3);
-            }
+            for (size_t k = 0; k < leaves.size(); ++k)
+                for (size_t px = 0; px < width; ++px) rows[k * width + px] = vec3(values[k][px], 0.0f, 0.0f);
+            runRows(rows.data(), view.width, lastSlot, kFromAbove);
+            const vec3* result = rows.data() + size_t(lastSlot) * width;
+            for (size_t px = 0; px < width; ++px) put(toRgb(result[px]), row + px * 3);
         }
     };
     const auto scalar = [&](int y0, int y1) {
-        Slots slots(size_t(outputSlot() + 1));
+        Slots slots = makeSlots();
         std::vector<TilingBlendingNoise::TileRows> tiles(leaves.size());
         BlendStencil last{};
         for (int py = y0; py < y1; ++py) {
@@ -513,8 +523,7 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
                 const double u = pixelUv(view, invW, px, py)[0];
                 float* rgb = row + size_t(px) * 3;
                 if (!untransformed_) {
-                    evaluate(u, v, lastSlot, kFromAbove, slots);
-                    finish(slots, rgb);
+                    put(evaluate(u, v, lastSlot, kFromAbove, slots), rgb);
                     continue;
                 }
                 const BlendStencil s = grid.stencil(u);
@@ -532,7 +541,7 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
                 }
                 for (size_t k = 0; k < leaves.size(); ++k)
                     slots[k] = vec3(leaves[k]->example().toOutput(leaves[k]->blend(s, tiles[k], fu)), 0.0f, 0.0f);
-                finish(slots, rgb);
+                put(run(slots, lastSlot, kFromAbove), rgb);
             }
         }
     };
@@ -662,7 +671,7 @@ Rgb FilteredGraph::fromMoments(const std::vector<std::array<float, 2>>& leafMome
         throw std::invalid_argument("FilteredGraph::fromMoments: " + std::to_string(leafMoments.size()) +
                                     " leaf moments for " + std::to_string(graph_.leafCount()) + " leaves");
     Scratch scratch;
-    scratch.slots.resize(size_t(graph_.outputSlot() + 1));
+    if (scratch.slots.size() != size_t(graph_.outputSlot() + 2)) scratch.slots = graph_.makeSlots();
     for (size_t k = 0; k < leafMoments.size(); ++k) scratch.slots[k] = vec3(leafMoments[k][0], leafMoments[k][1], 0.0f);
     scratch.covariances = pairCovariances;
     return runFiltered(scratch, eye);
@@ -698,7 +707,7 @@ Rgb FilteredGraph::plainColour(const FootprintStats& s) const {
 
 Rgb FilteredGraph::fromPairStats(Scratch& scratch, const Direction& eye) const {
     if (plain_) return plainColour(scratch.stats.front());
-    scratch.slots.resize(size_t(graph_.outputSlot() + 1));
+    if (scratch.slots.size() != size_t(graph_.outputSlot() + 2)) scratch.slots = graph_.makeSlots();
     scratch.covariances.clear();
     for (const FootprintStats& s : scratch.stats) scratch.covariances.push_back(s.cov);
     for (int k = 0; k < graph_.leafCount(); ++k) {

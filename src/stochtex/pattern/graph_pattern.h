@@ -150,9 +150,16 @@ private:
     // Beta axis (OpTable::beta).
     static void settleProgramRanges(GraphPattern& p, const std::vector<NoiseExample>& examples,
                                     const std::string& context);
+    // One pixel's slots: outputSlot() + 2 values, the last vec3(0) (what an
+    // op reads for an input it lacks).
     using Slots = std::vector<kernel::vec3>;
+    Slots makeSlots() const { return Slots(size_t(outputSlot() + 2), kernel::vec3(0.0f)); }
     // The operations on slots whose leaves are set; returns slot `lastSlot`.
     Rgb run(Slots& slots, int lastSlot, const Direction& eye) const;
+    // The operations on rows of n pixels, each op chosen once per row: slot
+    // k's values at rows + k·n, as many rows as a pixel has slots (the last
+    // all vec3(0)); stops after slot lastSlot. run() is its one-pixel case.
+    void runRows(kernel::vec3* rows, int n, int lastSlot, const Direction& eye) const;
     // evaluate(u, v, lastSlot, eye) in the caller's slots (no allocation per point).
     Rgb evaluate(double u, double v, int lastSlot, const Direction& eye, Slots& slots) const;
     Image renderPixels(const View& view, const Progress& progress, int lastSlot, bool gray, CpuKernel kernel) const;

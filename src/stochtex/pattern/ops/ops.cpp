@@ -73,6 +73,15 @@ kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kern
     return std::visit([&](const auto& p) { return kernel::opFiltered(p, a, b, c, ctx); }, op);
 }
 
+void opPointRow(const OpParams& op, const kernel::vec3* a, const kernel::vec3* b, const kernel::vec3* c,
+                kernel::vec3* out, int n, const kernel::OpContext& ctx) {
+    std::visit(
+        [&](const auto& p) {
+            for (int i = 0; i < n; ++i) out[i] = kernel::opPoint(p, a[i], b[i], c[i], ctx);
+        },
+        op);
+}
+
 namespace {
 
 // The ops' yes/no traits, one row per op (the variant's index): each is a

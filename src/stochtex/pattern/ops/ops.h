@@ -66,6 +66,9 @@ OpParams bindOp(int op, OpBuild& build);
 kernel::vec3 opPoint(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kernel::vec3 c, const kernel::OpContext& ctx);
 kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kernel::vec3 c,
                         const kernel::OpContext& ctx);
+// opPoint at n pixels, the op chosen once: out[i] = opPoint(op, a[i], b[i], c[i], ctx).
+void opPointRow(const OpParams& op, const kernel::vec3* a, const kernel::vec3* b, const kernel::vec3* c,
+                kernel::vec3* out, int n, const kernel::OpContext& ctx);
 
 // Whether the op lights its colour: it reads OpContext's eye and light (an
 // op declares `static constexpr bool kShadesLight = true`; false otherwise).
