@@ -29,19 +29,23 @@ void reportFloorRatio(benchmark::State& state, double simdSeconds, double pairsP
     state.counters["floor_ratio"] = perImage / bench::gatherFloorSeconds((long long)pairsPerImage);
 }
 
-// Unfiltered S = H ∘ N for a two-noise pattern, 1024², all threads (arg 0)
-// or a fixed thread count.
-void BM_RenderUnfiltered(benchmark::State& state) {
-    ThreadLimit limit(int(state.range(0)));
+// The program's unfiltered 1024² zoom once per iteration; counter Mtexel/s.
+void timeUnfilteredRenders(benchmark::State& state, const GraphPattern& p) {
     View view;
     view.width = view.height = 1024;
-    const GraphPattern& p = camouflage();
     for (auto _ : state) {
         Image img = p.render(view);
         benchmark::DoNotOptimize(img.data().data());
     }
     state.counters["Mtexel/s"] =
         benchmark::Counter(double(view.width) * view.height * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Unfiltered S = H ∘ N for a two-noise pattern, 1024², all threads (arg 0)
+// or a fixed thread count.
+void BM_RenderUnfiltered(benchmark::State& state) {
+    ThreadLimit limit(int(state.range(0)));
+    timeUnfilteredRenders(state, camouflage());
 }
 BENCHMARK(BM_RenderUnfiltered)->Arg(0)->Arg(1)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -100,17 +104,7 @@ BENCHMARK(BM_SimdVsScalarFiltered)
 // leaves of one pair): the program's interpreter, so against
 // BM_RenderUnfiltered it shows what the plain path saves as well as the
 // cost of a second leaf.
-void BM_RenderSingleNoise(benchmark::State& state) {
-    View view;
-    view.width = view.height = 1024;
-    const GraphPattern& p = singleNoise();
-    for (auto _ : state) {
-        Image img = p.render(view);
-        benchmark::DoNotOptimize(img.data().data());
-    }
-    state.counters["Mtexel/s"] =
-        benchmark::Counter(double(view.width) * view.height * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
-}
+void BM_RenderSingleNoise(benchmark::State& state) { timeUnfilteredRenders(state, singleNoise()); }
 BENCHMARK(BM_RenderSingleNoise)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 const GraphPattern& singleNoise() {
