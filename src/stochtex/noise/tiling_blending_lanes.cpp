@@ -1,8 +1,8 @@
 // Tiling and blending in lanes: compiled once per vector target by
 // Highway's foreach_target (this file includes itself), dispatched at run
 // time. Every step is the scalar kernel's formula, in its order of
-// operations, so the lanes differ from it only where a target fuses a
-// multiply and an add.
+// operations, with separate multiplies and adds (the build contracts none:
+// -ffp-contract=off), so the lanes give the scalar kernel's values.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "stochtex/noise/tiling_blending_lanes.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep

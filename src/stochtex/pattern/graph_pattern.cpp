@@ -11,6 +11,7 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/filter/pyramid.h"
+#include "stochtex/kernel/estimate.h"
 #include "stochtex/noise/slopes.h"
 #include "stochtex/noise/tiling_blending_lanes.h"
 #include "stochtex/pattern/graph_nodes.h"
@@ -862,17 +863,42 @@ bool FilteredGraph::zoomInLanes(const Footprint& shape) const {
     return shape.layout.count == 1 && oneLevelVariance && !e.covariancePyramid();
 }
 
+namespace {
+
+// The kernel's texel source (kernel/estimate.glsl) for one pixel of a row
+// whose texel statistics the lanes computed: the estimator's loop, found by
+// argument-dependent lookup, reads them instead of fetching.
+struct RowTexels {
+    const std::array<std::array<const float*, 4>, 2>* rows;  // per level: N̂_x, N̂_y, σ̂²_x, σ̂²_y
+    const FootprintEstimator* estimator;
+    size_t px;
+};
+kernel::TexelStats rowTexel(const RowTexels& s, int k) {
+    const std::array<const float*, 4>& r = (*s.rows)[size_t(k)];
+    kernel::TexelStats t;
+    t.mean = kernel::vec2(r[0][s.px], r[1][s.px]);
+    t.var = kernel::vec2(r[2][s.px], r[3][s.px]);
+    t.cov = 0.0f;
+    return t;
+}
+kernel::ProbeTexels probeTexels(const RowTexels& s, kernel::coord2, kernel::ProbeLevels) {
+    return {rowTexel(s, 0), rowTexel(s, 1)};
+}
+kernel::vec3 levelAverages(const RowTexels& s, int level) { return s.estimator->levelAverages(level); }
+
+}  // namespace
+
 Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& shape, const Progress& progress) const {
     const View& view = camera.view;
     const FootprintEstimator& e = *estimators_.front();
     const TiledField& field = graph_.leafPairs().front();
+    // The levels the kernel's loop will read: l0, and l1 where it weighs.
     const kernel::ProbeLevels levels = kernel::probeLevels(shape.layout.lod, e.maxLod(), 1);
-    // The texel footprints every pixel reads: level l0, and l1 where it weighs.
+    const int levelCount = levels.w1 > 0.0f ? 2 : 1;
     const bool single = kernel::isSingleTexel(1, levels.frac);
-    const int levelCount = !single && levels.w1 > 0.0f ? 2 : 1;
+    const kernel::vec3 averageL0 = e.levelAverages(levels.l0);
     const std::array<int, 2> level{levels.l0, levels.l1};
     const bool deliotHeitz = options_.estimator == VarianceEstimator::DeliotHeitz;
-    const std::array<kernel::vec3, 2> averages{e.levelAverages(levels.l0), e.levelAverages(levels.l1)};
     const double invW = 1.0 / double(graph_.exampleSize());
     const size_t padded = size_t(paddedLaneCount(view.width));
     Image out(view.width, view.height, 3, Image::Uninitialized{});
@@ -880,39 +906,32 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
         view.height,
         [&](int y0, int y1) {
             GridRowLanes grid;
-            // Per level and channel: N̂_l and σ̂²_l of the row's pixels.
             std::vector<float> buffer(padded * 8);
-            const auto mean = [&](int k, int a) { return buffer.data() + padded * size_t(4 * k + a); };
-            const auto variance = [&](int k, int a) { return buffer.data() + padded * size_t(4 * k + 2 + a); };
+            std::array<std::array<const float*, 4>, 2> rows{};
+            for (size_t k = 0; k < 2; ++k)
+                for (size_t a = 0; a < 4; ++a) rows[k][a] = buffer.data() + padded * (4 * k + a);
             for (int py = y0; py < y1; ++py) {
                 grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width,
                              field.gridDensity());
                 for (int k = 0; k < levelCount; ++k)
                     for (int a = 0; a < 2; ++a)
-                        blendRowLanes(field.channel(a), e.pyramid(a).level(level[size_t(k)]), grid, mean(k, a),
-                                      variance(k, a));
+                        blendRowLanes(field.channel(a), e.pyramid(a).level(level[size_t(k)]), grid,
+                                      buffer.data() + padded * size_t(4 * k + a),
+                                      buffer.data() + padded * size_t(4 * k + 2 + a));
                 float* row = out.row(py);
-                for (int px = 0; px < view.width; ++px) {
-                    std::array<kernel::TexelStats, 2> t{};
-                    for (int k = 0; k < levelCount; ++k) {
-                        t[size_t(k)].mean = kernel::vec2(mean(k, 0)[px], mean(k, 1)[px]);
-                        t[size_t(k)].var = kernel::vec2(variance(k, 0)[px], variance(k, 1)[px]);
-                        t[size_t(k)].cov = 0.0f;
-                        if (deliotHeitz)
-                            t[size_t(k)] = kernel::deliotHeitzTexel(t[size_t(k)], averages[size_t(k)], false);
-                    }
-                    // The kernel's loop for one probe (kernel/estimate.glsl).
-                    kernel::FootprintMoments r;
-                    if (single) {
-                        r = kernel::texelMoments(t[0]);
-                    } else {
-                        kernel::Moments sums = kernel::momentsAbout(t[0].mean);
-                        sums = kernel::momentsAdd(sums, levels.w0, t[0].mean, t[0].var, t[0].cov);
-                        if (levelCount == 2) sums = kernel::momentsAdd(sums, levels.w1, t[1].mean, t[1].var, t[1].cov);
-                        r = kernel::momentsResult(sums);
-                    }
+                for (size_t px = 0; px < size_t(view.width); ++px) {
+                    // The kernel's loop (one probe, no sub-probes) on the row's
+                    // statistics, or for a single texel its statistics directly,
+                    // as FootprintEstimator::estimate takes them.
+                    const RowTexels texels{&rows, &e, px};
+                    kernel::TexelStats first = rowTexel(texels, 0);
+                    if (deliotHeitz) first = kernel::deliotHeitzTexel(first, averageL0, false);
+                    const kernel::FootprintMoments r =
+                        single ? kernel::texelMoments(first)
+                               : kernel::footprintEstimate(texels, kernel::coord2(0.0), shape.layout, e.maxLod(),
+                                                           deliotHeitz, false, 1);
                     const Rgb c = plainColour(FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov});
-                    std::copy(c.begin(), c.end(), row + size_t(px) * 3);
+                    std::copy(c.begin(), c.end(), row + px * 3);
                 }
             }
         },

@@ -133,9 +133,9 @@ public:
     // eye: the unit direction towards the eye, which a lean node reads
     // (evaluate(u, v) and the renders: from above).
     Rgb evaluate(double u, double v, int lastSlot, const Direction& eye) const;
-    // Unfiltered, one sample per pixel centre, multi-threaded; the leaves
-    // (and a plain program's colormap) in SIMD lanes unless `kernel` asks
-    // for the scalar reference.
+    // Unfiltered, one sample per pixel centre, multi-threaded; the leaves in
+    // SIMD lanes and the ops a row at a time, unless `kernel` asks for the
+    // scalar reference.
     Image render(const View& view, const Progress& progress = {}, CpuKernel kernel = CpuKernel::Simd) const;
     // The value of any leaf or operation node over the same view (a field
     // as gray, clamped to [0, 1]; a colour as it is). InputError naming the
@@ -236,9 +236,10 @@ private:
     Rgb shade(Scratch& scratch, const Direction& eye) const;  // estimators, on scratch.footprints
     // A plain program's zoom through one-probe footprints (a zoom's are
     // isotropic) with the paper's or Deliot–Heitz's variances: each level's
-    // texel statistics of a row in SIMD lanes, then eq. 9, 14–15 and the
-    // prefiltered table per pixel by the kernel's functions, as estimate()
-    // computes them. Whether `shape` (the zoom's footprint) allows it.
+    // texel statistics of a row in SIMD lanes, then per pixel the kernel's
+    // loop over them (or a single texel's statistics, as estimate() takes
+    // them) and the prefiltered table. zoomInLanes: whether `shape` (the
+    // zoom's footprint) and the options allow it.
     bool zoomInLanes(const Footprint& shape) const;
     Image renderZoomInLanes(const Camera& camera, const Footprint& shape, const Progress& progress) const;
     // The reference through a zoom: the point image at n times the
