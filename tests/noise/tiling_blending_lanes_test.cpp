@@ -43,7 +43,8 @@ double maxLaneError(const TilingBlendingNoise& noise, double offsetU, double off
 }  // namespace
 
 // Views near and far from the origin (where the grid's split needs double
-// precision), zoomed in and out, a width that is no whole number of vectors,
+// precision), zoomed in and out (texels read from a window one or two
+// vectors wide, or gathered), a width that is no whole number of vectors,
 // and a Gaussianized exemplar (T⁻¹ as a gathered table lookup). Tolerance:
 // float rounding of values in [0, 1], as a target fusing a multiply and an
 // add moves them (a few ulps of 1).
@@ -58,6 +59,8 @@ TEST(TilingBlendingLanes, AgreeWithTheScalarKernel) {
             SCOPED_TRACE(example->gaussianized() ? "gaussianized" : "plain");
             EXPECT_LE(maxLaneError(noise, 0.0, 0.0, 1.0, 131, 40), 1e-5);
             EXPECT_LE(maxLaneError(noise, -517.25, 93.5, 0.37, 77, 40), 1e-5);
+            // A texel spacing between one and two pixels: the two-vector window.
+            EXPECT_LE(maxLaneError(noise, 11.0, -7.0, 1.6, 150, 40), 1e-5);
             EXPECT_LE(maxLaneError(noise, 3.0e7, -2.0e7, 6.3, 200, 40), 1e-5);
             EXPECT_LE(maxLaneError(noise, -1.0e9, 1.0e9, 1.0e4, 67, 8), 1e-5);  // at the view's limits
             EXPECT_LE(maxLaneError(noise, 5.0e8, -3.0e8, 1.0e6, 67, 8), 1e-5);
@@ -72,4 +75,39 @@ TEST(TilingBlendingLanes, RunOnEveryTargetAndAVectorOneByDefault) {
     const std::string target = laneTargetName();
     EXPECT_NE(target, "SCALAR");
     EXPECT_NE(target, "EMU128");
+}
+
+// The lanes' table taps are kernel::tableTap's, bit for bit, at values in
+// and outside [0, 1], NaN (entry 0) and the ends; with stride 3 they read
+// the first channel of vec3 rows; only whole vectors are done.
+TEST(TilingBlendingLanes, TableTapsAreTheKernels) {
+    test::forEachLaneTarget([](const char*) {
+        for (const size_t stride : {size_t(1), size_t(3)}) {
+            std::vector<float> x, y;
+            for (int k = 0; k < 203; ++k) {
+                const float a = float(k) / 173.0f - 0.1f, b = 1.05f - float(k * k % 211) / 199.0f;
+                for (size_t c = 0; c < stride; ++c) {
+                    x.push_back(c == 0 ? a : 1e30f);
+                    y.push_back(c == 0 ? b : -1e30f);
+                }
+            }
+            x[3 * stride] = std::nanf("");
+            y[5 * stride] = 1.0f;
+            const size_t count = x.size() / stride;
+            std::vector<int32_t> entry(count, -1);
+            std::vector<float> tx(count), ty(count);
+            const int width = 37, height = 2;
+            const size_t done =
+                tableTapsLanes(x.data(), y.data(), stride, width, height, count, entry.data(), tx.data(), ty.data());
+            EXPECT_LE(count - done, size_t(kMaxFloatLanes) - 1);
+            for (size_t k = 0; k < done; ++k) {
+                const kernel::TableTap a = kernel::tableTap(x[k * stride], width);
+                const kernel::TableTap b = kernel::tableTap(y[k * stride], height);
+                ASSERT_EQ(entry[k], b.i * width + a.i) << k;
+                ASSERT_EQ(tx[k], a.t) << k;
+                ASSERT_EQ(ty[k], b.t) << k;
+            }
+            for (size_t k = done; k < count; ++k) EXPECT_EQ(entry[k], -1) << "a tap past the whole vectors";
+        }
+    });
 }

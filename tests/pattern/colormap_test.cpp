@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "lane_targets.h"
 #include "stochtex/image/image.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
@@ -199,4 +200,32 @@ TEST(Colormap, PresetLayoutsHaveThreeTouchingRegions) {
     EXPECT_NE(left, right);
     EXPECT_NE(right, bottom);
     EXPECT_NE(left, bottom);
+}
+
+// A row of lookups (taps in SIMD lanes, on every target) is sample's,
+// bit for bit: contiguous values and the first channel of vec3 rows, with a
+// tail that is no whole vector, values outside [0, 1] and NaN.
+TEST(Colormap, ARowOfLookupsIsSamplesBitForBit) {
+    Image table(53, 29, 3);
+    for (int y = 0; y < table.height(); ++y)
+        for (int x = 0; x < table.width(); ++x)
+            for (int c = 0; c < 3; ++c) table.at(x, y, c) = float(0.5 + 0.5 * std::sin(0.7 * x - 1.3 * y + c));
+    const ColormapTable h(table);
+    test::forEachLaneTarget([&](const char*) {
+        for (const size_t stride : {size_t(1), size_t(3)}) {
+            const size_t count = 301;
+            std::vector<float> x(count * stride, 7.0f), y(count * stride, -7.0f);
+            for (size_t k = 0; k < count; ++k) {
+                x[k * stride] = float(k) / 281.0f - 0.05f;
+                y[k * stride] = 1.02f - float(k * 37 % 293) / 290.0f;
+            }
+            x[2 * stride] = std::nanf("");
+            std::vector<float> rgb(count * 3, -1.0f);
+            h.sampleRow(x.data(), y.data(), stride, rgb.data(), count);
+            for (size_t k = 0; k < count; ++k) {
+                const Rgb c = h.sample(x[k * stride], y[k * stride]);
+                for (int i = 0; i < 3; ++i) ASSERT_EQ(rgb[k * 3 + size_t(i)], c[size_t(i)]) << k << " " << stride;
+            }
+        }
+    });
 }

@@ -9,6 +9,7 @@
 #include <hwy/highway.h>
 
 #include <array>
+#include <stdexcept>
 
 #include "stochtex/noise/tiling_blending_lanes.h"
 
@@ -109,14 +110,72 @@ HWY_INLINE void GatherPairs(DF df, const float* base, VI index, VF& left, VF& ri
 #endif
 }
 
-// kernel::tableTap + blendEntries on a table of n ≥ 2 entries (T⁻¹'s LUT).
-HWY_INLINE VF TableLookup(DF df, const float* table, int n, VF x) {
+// kernel::tableTap in lanes on a table of n ≥ 2 entries: index i, weight t.
+HWY_INLINE void TableTap(DF df, int n, VF x, VI& i, VF& t) {
     const DI di;
     const auto fx =
         hn::Mul(hn::IfThenElseZero(hn::Gt(x, hn::Zero(df)), hn::Min(x, hn::Set(df, 1.0f))), hn::Set(df, float(n - 1)));
-    const auto i = hn::Min(hn::ConvertTo(di, fx), hn::Set(di, n - 2));
-    const auto t = hn::Sub(fx, hn::ConvertTo(df, i));
-    return Lerp(hn::GatherIndex(df, table, i), hn::GatherIndex(df, table + 1, i), t);
+    i = hn::Min(hn::ConvertTo(di, fx), hn::Set(di, n - 2));
+    t = hn::Sub(fx, hn::ConvertTo(df, i));
+}
+
+// kernel::tableTap + blendEntries on a table of n ≥ 2 entries (T⁻¹'s LUT).
+HWY_INLINE VF TableLookup(DF df, const float* table, int n, VF x) {
+    VI i;
+    VF t;
+    TableTap(df, n, x, i, t);
+    VF left, right;
+    GatherPairs(df, table, i, left, right);
+    return Lerp(left, right, t);
+}
+
+// The C channels of n consecutive texels as C vectors (C = 2: interleaved
+// mean and variance, split).
+template <int C>
+HWY_INLINE void LoadChannels(DF df, const float* p, VF (&channels)[C]) {
+    if constexpr (C == 1)
+        channels[0] = hn::LoadU(df, p);
+    else
+        hn::LoadInterleaved2(df, p, channels[0], channels[1]);
+}
+
+// The bilinear taps of lanes that read one row pair at columns ix: each
+// channel's left and right texel in the row below (b) and above (a). When
+// the columns are ix0 + d with 0 ≤ d < 2n — the lanes' texels lie in a
+// window two vectors wide, as they do where a texel spans about a pixel or
+// more (the unfiltered view at scale ≤ 1, a filtered level chosen for its
+// footprint) — the window is loaded and its lanes permuted into place,
+// several times cheaper than gathering them. Returns false, having read
+// nothing, when the columns are not such a window (a wrap inside the vector,
+// a texel spacing above two pixels) or the window would run past `end`.
+template <int C>
+HWY_INLINE bool WindowTaps(DF df, const float* below, const float* end, int stride, VI ix, VF (&bl)[C], VF (&br)[C],
+                           VF (&al)[C], VF (&ar)[C]) {
+    const DI di;
+    const int n = int(hn::Lanes(df));
+    const int ix0 = hn::GetLane(ix);
+    const auto d = hn::Sub(ix, hn::Set(di, ix0));
+    if (!hn::AllFalse(di, hn::Lt(d, hn::Zero(di))) || !hn::AllTrue(di, hn::Lt(d, hn::Set(di, 2 * n)))) return false;
+    const bool narrow = hn::AllTrue(di, hn::Lt(d, hn::Set(di, n)));
+    const float* left = below + C * ix0;
+    if (left + stride + C * (1 + (narrow ? n : 2 * n)) > end) return false;
+    const auto index = hn::IndicesFromVec(df, hn::And(d, hn::Set(di, n - 1)));
+    const auto inHigh = hn::RebindMask(df, hn::Gt(d, hn::Set(di, n - 1)));
+    // One tap of every channel: the window's lanes at d.
+    const auto tap = [&](const float* p, VF(&out)[C]) {
+        VF low[C];
+        LoadChannels<C>(df, p, low);
+        for (int c = 0; c < C; ++c) out[c] = hn::TableLookupLanes(low[c], index);
+        if (narrow) return;
+        VF high[C];
+        LoadChannels<C>(df, p + C * n, high);
+        for (int c = 0; c < C; ++c) out[c] = hn::IfThenElse(inHigh, hn::TableLookupLanes(high[c], index), out[c]);
+    };
+    tap(left, bl);
+    tap(left + C, br);
+    tap(left + stride, al);
+    tap(left + stride + C, ar);
+    return true;
 }
 
 // What a tile's lookups share along a row: its offset in texels along u,
@@ -142,6 +201,7 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
     const NoiseExample& example = noise.example();
     const float* texels = grid.texel(-1, -1);  // the padded grid: index int(ty)·stride + int(tx)·C
     const int stride = (grid.size() + 2) * C;
+    const float* texelsEnd = texels + grid.bytes() / sizeof(float);
     const float size = grid.sizeF();
     const auto vSize = hn::Set(df, size), vSizeHalf = hn::Set(df, size + 0.5f);
     const auto vStride = hn::Set(di, stride);
@@ -173,27 +233,29 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
         w2 = hn::Mul(w2, norm);
         const auto tu = hn::Add(hn::Mul(hn::LoadU(df, row.fu.data() + p), vSize), hn::Set(df, 0.5f));
         // The lookup of a tile at the lanes' u: the texels of its two rows
-        // (BasicPeriodicGrid::sampleTexels' order), each channel.
+        // (BasicPeriodicGrid::sampleTexels' order), each channel. A tile
+        // shared by every lane has one row pair, `sharedRow`, so its texels
+        // may come from a window (WindowTaps) instead of gathers.
         VF e[3], var[3];
-        const auto lookup = [&](int i, VI rowIndex, VF wy, VF offsetTexels) {
+        const auto lookup = [&](int i, VI rowIndex, VF wy, VF offsetTexels, const float* sharedRow) {
             const auto tx = PeriodicTexel(tu, offsetTexels, vSize, vSizeHalf);
             const auto ix = hn::ConvertTo(di, tx);
             const auto wx = hn::Sub(tx, hn::ConvertTo(df, ix));
-            const auto index = hn::Add(rowIndex, C == 1 ? ix : hn::ShiftLeft<1>(ix));
-            if constexpr (C == 1) {
-                VF a0, a1, b0, b1;  // the row below's left and right texels, the row above's
-                GatherPairs(df, texels, index, a0, a1);
-                GatherPairs(df, texels + stride, index, b0, b1);
-                e[i] = Lerp(Lerp(a0, b0, wy), Lerp(a1, b1, wy), wx);
-            } else {
-                VF m0, v0, m1, v1, n0, u0, n1, u1;  // below: left mean, variance, right…; above: the same
-                GatherPairs(df, texels, index, m0, v0);
-                GatherPairs(df, texels + 2, index, m1, v1);
-                GatherPairs(df, texels + stride, index, n0, u0);
-                GatherPairs(df, texels + stride + 2, index, n1, u1);
-                e[i] = Lerp(Lerp(m0, n0, wy), Lerp(m1, n1, wy), wx);
-                var[i] = Lerp(Lerp(v0, u0, wy), Lerp(v1, u1, wy), wx);
+            VF bl[C], br[C], al[C], ar[C];  // below: left, right; above: left, right — each channel
+            if (!sharedRow || !WindowTaps<C>(df, sharedRow, texelsEnd, stride, ix, bl, br, al, ar)) {
+                const auto index = hn::Add(rowIndex, C == 1 ? ix : hn::ShiftLeft<1>(ix));
+                if constexpr (C == 1) {
+                    GatherPairs(df, texels, index, bl[0], br[0]);
+                    GatherPairs(df, texels + stride, index, al[0], ar[0]);
+                } else {
+                    GatherPairs(df, texels, index, bl[0], bl[1]);
+                    GatherPairs(df, texels + 2, index, br[0], br[1]);
+                    GatherPairs(df, texels + stride, index, al[0], al[1]);
+                    GatherPairs(df, texels + stride + 2, index, ar[0], ar[1]);
+                }
             }
+            e[i] = Lerp(Lerp(bl[0], al[0], wy), Lerp(br[0], ar[0], wy), wx);
+            if constexpr (C == 2) var[i] = Lerp(Lerp(bl[1], al[1], wy), Lerp(br[1], ar[1], wy), wx);
         };
         const uint32_t firstCell = hn::GetLane(cellX);
         const bool firstUpper = hn::AllTrue(df, upper);
@@ -212,9 +274,10 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
                 }
                 sharedValid = true;
             }
-            for (int i = 0; i < 3; ++i)
-                lookup(i, hn::Set(di, sharedRows[size_t(i)].rowIndex), hn::Set(df, sharedRows[size_t(i)].wy),
-                       hn::Set(df, sharedRows[size_t(i)].offsetTexels));
+            for (int i = 0; i < 3; ++i) {
+                const TileRow& t = sharedRows[size_t(i)];
+                lookup(i, hn::Set(di, t.rowIndex), hn::Set(df, t.wy), hn::Set(df, t.offsetTexels), texels + t.rowIndex);
+            }
         } else {
             // kernel::stencilVertex: upper (1,1), (1,0), (0,1); lower (0,0), (0,1), (1,0).
             const auto up = hn::RebindMask(du, upper);
@@ -227,7 +290,8 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
                 Pcg3d(du, vx[i], vy[i], seed, hx, hy);
                 const auto ty = PeriodicTexel(tv, hn::Mul(UnitFloat(df, hy), vSize), vSize, vSizeHalf);
                 const auto iy = hn::ConvertTo(di, ty);
-                lookup(i, hn::Mul(iy, vStride), hn::Sub(ty, hn::ConvertTo(df, iy)), hn::Mul(UnitFloat(df, hx), vSize));
+                lookup(i, hn::Mul(iy, vStride), hn::Sub(ty, hn::ConvertTo(df, iy)), hn::Mul(UnitFloat(df, hx), vSize),
+                       nullptr);
             }
         }
         // kernel::blendMean: μ + Σ w_i (e_i − μ), in vertex order.
@@ -253,7 +317,37 @@ void BlendLevelRowImpl(const TilingBlendingNoise& noise, const BasicPeriodicGrid
     BlendGridRow<2>(noise, level, row, mean, variance);
 }
 
+// The 2D taps of values x[k·stride], y[k·stride] (stride 1 or 3) in a
+// width × height table, for k < count (whole vectors; the caller does the
+// rest): the entry (i, j) as j·width + i, and the two weights.
+void TableTaps2Impl(const float* x, const float* y, size_t stride, int width, int height, size_t count, int32_t* entry,
+                    float* tx, float* ty) {
+    const DF df;
+    const DI di;
+    const size_t n = hn::Lanes(df);
+    for (size_t k = 0; k + n <= count; k += n) {
+        VF vx, vy;
+        if (stride == 1) {
+            vx = hn::LoadU(df, x + k);
+            vy = hn::LoadU(df, y + k);
+        } else {
+            VF unused1, unused2;
+            hn::LoadInterleaved3(df, x + k * 3, vx, unused1, unused2);
+            hn::LoadInterleaved3(df, y + k * 3, vy, unused1, unused2);
+        }
+        VI i, j;
+        VF ti, tj;
+        TableTap(df, width, vx, i, ti);
+        TableTap(df, height, vy, j, tj);
+        hn::StoreU(hn::Add(hn::Mul(j, hn::Set(di, width)), i), di, entry + k);
+        hn::StoreU(ti, df, tx + k);
+        hn::StoreU(tj, df, ty + k);
+    }
+}
+
 const char* TargetNameImpl() { return hwy::TargetName(HWY_TARGET); }
+
+size_t LaneCountImpl() { return hn::Lanes(DF()); }
 
 }  // namespace stochtex::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
@@ -264,7 +358,9 @@ namespace stochtex {
 HWY_EXPORT(GridRowImpl);
 HWY_EXPORT(BlendRowImpl);
 HWY_EXPORT(BlendLevelRowImpl);
+HWY_EXPORT(TableTaps2Impl);
 HWY_EXPORT(TargetNameImpl);
+HWY_EXPORT(LaneCountImpl);
 
 void GridRowLanes::compute(double offset, double scale, double invW, double v, int pixels, double density) {
     count = pixels;
@@ -289,6 +385,14 @@ void blendRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, fl
 void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,
                    float* mean, float* variance) {
     HWY_DYNAMIC_DISPATCH(BlendLevelRowImpl)(noise, level, row, mean, variance);
+}
+
+size_t tableTapsLanes(const float* x, const float* y, size_t stride, int width, int height, size_t count,
+                      int32_t* entry, float* tx, float* ty) {
+    if (stride != 1 && stride != 3) throw std::invalid_argument("tableTapsLanes: stride must be 1 or 3");
+    HWY_DYNAMIC_DISPATCH(TableTaps2Impl)(x, y, stride, width, height, count, entry, tx, ty);
+    const size_t n = HWY_DYNAMIC_DISPATCH(LaneCountImpl)();
+    return count / n * n;
 }
 
 const char* laneTargetName() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)(); }

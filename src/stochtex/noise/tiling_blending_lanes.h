@@ -52,6 +52,15 @@ void blendRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, fl
 void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,
                    float* mean, float* variance);
 
+// kernel::tableTap in lanes for a 2D table lookup at each of the values
+// x[k·stride], y[k·stride] (stride 1 or 3: the first channel of vec3 rows)
+// in a width × height table (both ≥ 2): entry[k] = j·width + i of the lower
+// corner and its weights tx[k], ty[k]. Fills whole vectors only and returns
+// how many values it did (the caller taps the rest with the kernel); reads
+// nothing past the last value it fills (with stride 3, its vec3).
+size_t tableTapsLanes(const float* x, const float* y, size_t stride, int width, int height, size_t count,
+                      int32_t* entry, float* tx, float* ty);
+
 // The name of the vector target the lanes run on here ("AVX2", …).
 const char* laneTargetName();
 

@@ -45,14 +45,13 @@ public:
     // of kernel::blendRowsFirst, as in the shaders.
     Rgb sample(float x, float y) const {
         const kernel::TableTap tx = kernel::tableTap(x, width_), ty = kernel::tableTap(y, height_);
-        // Four RGBA texels, interpolated four channels at a time.
-        const Texel* a = rgba_.data() + size_t(ty.i) * size_t(width_) + size_t(tx.i);
-        const Texel* b = a + width_;
-        const Texel bottom = a[0] + tx.t * (a[1] - a[0]);
-        const Texel top = b[0] + tx.t * (b[1] - b[0]);
-        const Texel c = bottom + ty.t * (top - bottom);
-        return {c[0], c[1], c[2]};
+        return blend(size_t(ty.i) * size_t(width_) + size_t(tx.i), tx.t, ty.t);
     }
+    // sample(x[k·stride], y[k·stride]) into rgb[3k..3k+2] for k < count
+    // (stride 1, or 3: the first channel of vec3 rows): the taps of whole
+    // vectors of values computed in SIMD lanes (tableTapsLanes), the same
+    // values as sample's.
+    void sampleRow(const float* x, const float* y, size_t stride, float* rgb, size_t count) const;
 
     size_t bytes() const { return rgba_.size() * sizeof(Texel); }
     // The same resolution and entries (RGB; the unused alpha is not compared).
@@ -64,6 +63,16 @@ public:
     static ColormapTable fromImage(const Image& image);
 
 private:
+    // The bilinear blend from the lower corner entry (i, j) = entry with weights tx, ty.
+    Rgb blend(size_t entry, float tx, float ty) const {
+        // Four RGBA texels, interpolated four channels at a time.
+        const Texel* a = rgba_.data() + entry;
+        const Texel* b = a + width_;
+        const Texel bottom = a[0] + tx * (a[1] - a[0]);
+        const Texel top = b[0] + tx * (b[1] - b[0]);
+        const Texel c = bottom + ty * (top - bottom);
+        return {c[0], c[1], c[2]};
+    }
     // Entries as RGBA texels (alpha unused) so a lookup is four 16-byte
     // loads and vector arithmetic (a GCC/Clang vector extension).
     typedef float Texel __attribute__((vector_size(16)));

@@ -75,6 +75,13 @@ kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kern
 
 void opPointRow(const OpParams& op, const kernel::vec3* a, const kernel::vec3* b, const kernel::vec3* c,
                 kernel::vec3* out, int n, const kernel::OpContext& ctx) {
+    // A plain lookup's opPoint is its table at (a.x, b.x): a row of them is
+    // one row of table lookups, tapped in lanes.
+    if (n > 1 && ctx.pointTable && opIsPlainLookup(op)) {
+        static_assert(sizeof(kernel::vec3) == 3 * sizeof(float), "rows of vec3 are rows of floats, stride 3");
+        ctx.pointTable->sampleRow(&a->x, &b->x, 3, &out->x, size_t(n));
+        return;
+    }
     std::visit(
         [&](const auto& p) {
             for (int i = 0; i < n; ++i) out[i] = kernel::opPoint(p, a[i], b[i], c[i], ctx);

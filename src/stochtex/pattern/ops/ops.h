@@ -66,7 +66,8 @@ OpParams bindOp(int op, OpBuild& build);
 kernel::vec3 opPoint(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kernel::vec3 c, const kernel::OpContext& ctx);
 kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kernel::vec3 c,
                         const kernel::OpContext& ctx);
-// opPoint at n pixels, the op chosen once: out[i] = opPoint(op, a[i], b[i], c[i], ctx).
+// opPoint at n pixels, the op chosen once: out[i] = opPoint(op, a[i], b[i], c[i], ctx)
+// (a plain lookup's row, its table's sampleRow: taps in SIMD lanes).
 void opPointRow(const OpParams& op, const kernel::vec3* a, const kernel::vec3* b, const kernel::vec3* c,
                 kernel::vec3* out, int n, const kernel::OpContext& ctx);
 
