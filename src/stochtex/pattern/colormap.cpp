@@ -41,7 +41,7 @@ void ColormapTable::sampleRow(const float* x, const float* y, size_t stride, flo
         const size_t lanes =
             tableTapsLanes(x + k0 * stride, y + k0 * stride, stride, width_, height_, n, entry, tx, ty);
         for (size_t k = 0; k < lanes; ++k) {
-            const Rgb c = blend(size_t(entry[k]), tx[k], ty[k]);
+            const Rgb c = blend({size_t(entry[k]), tx[k], ty[k]});
             std::copy(c.begin(), c.end(), rgb + (k0 + k) * 3);
         }
         for (size_t k = k0 + lanes; k < k0 + n; ++k) {

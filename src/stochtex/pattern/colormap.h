@@ -43,9 +43,33 @@ public:
 
     // Bilinear, clamp-to-edge: the taps of kernel::tableTap and the order
     // of kernel::blendRowsFirst, as in the shaders.
-    Rgb sample(float x, float y) const {
+    Rgb sample(float x, float y) const { return blend(taps(x, y)); }
+    // sample in two steps, so a caller can fetch ahead: the lower corner
+    // entry (i, j) as j·Rx + i and the weights, then the blend.
+    struct Taps {
+        size_t entry;
+        float tx, ty;
+    };
+    Taps taps(float x, float y) const {
         const kernel::TableTap tx = kernel::tableTap(x, width_), ty = kernel::tableTap(y, height_);
-        return blend(size_t(ty.i) * size_t(width_) + size_t(tx.i), tx.t, ty.t);
+        return {size_t(ty.i) * size_t(width_) + size_t(tx.i), tx.t, ty.t};
+    }
+    Rgb blend(const Taps& t) const {
+        // Four RGBA texels, interpolated four channels at a time.
+        const Texel* a = rgba_.data() + t.entry;
+        const Texel* b = a + width_;
+        const Texel bottom = a[0] + t.tx * (a[1] - a[0]);
+        const Texel top = b[0] + t.tx * (b[1] - b[0]);
+        const Texel c = bottom + t.ty * (top - bottom);
+        return {c[0], c[1], c[2]};
+    }
+    // Asks the cache for the entries blend(t) will read.
+    void prefetch(const Taps& t) const {
+        const Texel* a = rgba_.data() + t.entry;
+        __builtin_prefetch(a);
+        __builtin_prefetch(a + 1);
+        __builtin_prefetch(a + width_);
+        __builtin_prefetch(a + width_ + 1);
     }
     // sample(x[k·stride], y[k·stride]) into rgb[3k..3k+2] for k < count
     // (stride 1, or 3: the first channel of vec3 rows): the taps of whole
@@ -63,16 +87,6 @@ public:
     static ColormapTable fromImage(const Image& image);
 
 private:
-    // The bilinear blend from the lower corner entry (i, j) = entry with weights tx, ty.
-    Rgb blend(size_t entry, float tx, float ty) const {
-        // Four RGBA texels, interpolated four channels at a time.
-        const Texel* a = rgba_.data() + entry;
-        const Texel* b = a + width_;
-        const Texel bottom = a[0] + tx * (a[1] - a[0]);
-        const Texel top = b[0] + tx * (b[1] - b[0]);
-        const Texel c = bottom + ty * (top - bottom);
-        return {c[0], c[1], c[2]};
-    }
     // Entries as RGBA texels (alpha unused) so a lookup is four 16-byte
     // loads and vector arithmetic (a GCC/Clang vector extension).
     typedef float Texel __attribute__((vector_size(16)));

@@ -697,10 +697,21 @@ Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
     return toRgb(slots[out - 1]);
 }
 
+namespace {
+
+// Where the colormap op's opFiltered reads the prefiltered table for a
+// pair's means and variances: (μx, μy, σx, σy).
+std::array<float, 4> plainTableCoordinates(float meanX, float meanY, float varX, float varY) {
+    return {meanX, meanY, kernel::momentSigma(vec2(meanX, std::max(varX, 0.0f))),
+            kernel::momentSigma(vec2(meanY, std::max(varY, 0.0f)))};
+}
+
+}  // namespace
+
 Rgb FilteredGraph::plainColour(const FootprintStats& s) const {
     // The colormap op's opFiltered on the pair's moments, without the interpreter.
-    return tables_.front()->sample(s.mean[0], s.mean[1], kernel::momentSigma(vec2(s.mean[0], std::max(s.varX, 0.0f))),
-                                   kernel::momentSigma(vec2(s.mean[1], std::max(s.varY, 0.0f))));
+    const auto [mx, my, sx, sy] = plainTableCoordinates(s.mean[0], s.mean[1], s.varX, s.varY);
+    return tables_.front()->sample(mx, my, sx, sy);
 }
 
 Rgb FilteredGraph::fromPairStats(Scratch& scratch, const Direction& eye) const {
@@ -904,6 +915,9 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
         [&](int y0, int y1) {
             GridRowLanes grid;
             std::vector<float> buffer(padded * 8);
+            // Per pixel: the prefiltered table's coordinates (μx, μy, σx, σy).
+            std::array<std::vector<float>, 4> coordinates;
+            for (std::vector<float>& c : coordinates) c.resize(size_t(view.width));
             std::array<std::array<const float*, 4>, 2> rows{};
             for (size_t k = 0; k < 2; ++k)
                 for (size_t a = 0; a < 4; ++a) rows[k][a] = buffer.data() + padded * (4 * k + a);
@@ -915,7 +929,6 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                         blendRowLanes(field.channel(a), e.pyramid(a).level(level[size_t(k)]), grid,
                                       buffer.data() + padded * size_t(4 * k + a),
                                       buffer.data() + padded * size_t(4 * k + 2 + a));
-                float* row = out.row(py);
                 for (size_t px = 0; px < size_t(view.width); ++px) {
                     // The kernel's loop (one probe, no sub-probes) on the row's
                     // statistics, or for a single texel its statistics directly,
@@ -927,9 +940,12 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                         single ? kernel::texelMoments(first)
                                : kernel::footprintEstimate(texels, kernel::coord2(0.0), shape.layout, e.maxLod(),
                                                            deliotHeitz, false, 1);
-                    const Rgb c = plainColour(FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov});
-                    std::copy(c.begin(), c.end(), row + px * 3);
+                    // plainColour's lookup, done for the whole row below.
+                    const std::array<float, 4> at = plainTableCoordinates(r.mean.x, r.mean.y, r.var.x, r.var.y);
+                    for (size_t i = 0; i < 4; ++i) coordinates[i][px] = at[i];
                 }
+                tables_.front()->sampleRow(coordinates[0].data(), coordinates[1].data(), coordinates[2].data(),
+                                           coordinates[3].data(), out.row(py), size_t(view.width));
             }
         },
         progress);

@@ -60,6 +60,13 @@ public:
     // The table at mean (mx, my) and deviations (sx, sy): [H ∗ G_σ](μ) on
     // Gaussian axes, E[H] under the Beta of (m, σ²) on Beta axes.
     Rgb sample(float mx, float my, float sx, float sy) const;
+    // sample at count pixels (mx[k], my[k], sx[k], sy[k]) into rgb[3k..3k+2],
+    // the same values: each pixel's layers and taps are found a few pixels
+    // ahead of its blend and their entries prefetched meanwhile (a lookup
+    // reads up to four layers of up to a megabyte each, beyond a core's L2,
+    // and otherwise waits on memory one pixel at a time).
+    void sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
+                   size_t count) const;
 
     // Every layer resampled to rx × ry entries (layers stored coarser are
     // smooth, so their bilinear resampling is far below a colour step),
