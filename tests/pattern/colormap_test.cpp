@@ -229,3 +229,36 @@ TEST(Colormap, ARowOfLookupsIsSamplesBitForBit) {
         }
     });
 }
+
+// A row of prefiltered lookups (found ahead, prefetched) is sample's, bit
+// for bit, in both modes and with Beta axes: deviations from 0 (one layer)
+// through the largest level and beyond, means outside [0, 1], rows shorter
+// and longer than the look-ahead.
+TEST(PrefilteredColormap, ARowOfLookupsIsSamplesBitForBit) {
+    Image table(41, 23, 3);
+    for (int y = 0; y < table.height(); ++y)
+        for (int x = 0; x < table.width(); ++x)
+            for (int c = 0; c < 3; ++c) table.at(x, y, c) = float(0.5 + 0.5 * std::cos(0.9 * x + 0.4 * y * c));
+    const ColormapTable h(table);
+    for (const PrefilterMode mode : {PrefilterMode::Paper, PrefilterMode::Smooth})
+        for (const BetaAxes beta : {BetaAxes{false, false}, BetaAxes{true, false}, BetaAxes{true, true}}) {
+            const PrefilteredColormap p(h, mode, beta);
+            for (const size_t count : {size_t(3), size_t(250)}) {
+                std::vector<float> mx(count), my(count), sx(count), sy(count);
+                for (size_t k = 0; k < count; ++k) {
+                    mx[k] = float(k) / float(count) * 1.2f - 0.1f;
+                    my[k] = 0.5f + 0.45f * std::sin(0.3f * float(k));
+                    sx[k] = k % 7 == 0 ? 0.0f : 0.4f * float(k % 13) / 12.0f;
+                    sy[k] = k % 5 == 0 ? 0.0f : 0.6f * float(k % 11) / 10.0f;
+                }
+                std::vector<float> rgb(count * 3, -1.0f);
+                p.sampleRow(mx.data(), my.data(), sx.data(), sy.data(), rgb.data(), count);
+                for (size_t k = 0; k < count; ++k) {
+                    const Rgb c = p.sample(mx[k], my[k], sx[k], sy[k]);
+                    for (size_t i = 0; i < 3; ++i)
+                        ASSERT_EQ(rgb[k * 3 + i], c[i]) << "pixel " << k << " of " << count << ", mode " << int(mode)
+                                                        << ", beta " << beta[0] << beta[1];
+                }
+            }
+        }
+}

@@ -383,9 +383,9 @@ void PrefilteredColormap::sampleRow(const float* mx, const float* my, const floa
     constexpr size_t kAhead = 8;  // pixels between a lookup's prefetch and its blend
     std::array<Lookup, kAhead> ring;
     const auto find = [&](size_t k, Lookup& l) {
-        const kernel::LayerBlend b =
-            kernel::tableLayerBlend(kernel::vec2(mx[k], my[k]), kernel::vec2(sx[k], sy[k]),
-                                    kernel::ivec2(beta_[0], beta_[1]), mode_ == PrefilterMode::Paper, int(sigmas_.size()));
+        const kernel::LayerBlend b = kernel::tableLayerBlend(kernel::vec2(mx[k], my[k]), kernel::vec2(sx[k], sy[k]),
+                                                             kernel::ivec2(beta_[0], beta_[1]),
+                                                             mode_ == PrefilterMode::Paper, int(sigmas_.size()));
         l.single = b.f.x == 0.0f && b.f.y == 0.0f;
         l.f = b.f;
         l.layers = {&layer(b.k0.x, b.k0.y), &layer(b.k1.x, b.k0.y), &layer(b.k0.x, b.k1.y), &layer(b.k1.x, b.k1.y)};

@@ -65,8 +65,7 @@ public:
     // ahead of its blend and their entries prefetched meanwhile (a lookup
     // reads up to four layers of up to a megabyte each, beyond a core's L2,
     // and otherwise waits on memory one pixel at a time).
-    void sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
-                   size_t count) const;
+    void sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb, size_t count) const;
 
     // Every layer resampled to rx × ry entries (layers stored coarser are
     // smooth, so their bilinear resampling is far below a colour step),
