@@ -59,7 +59,7 @@ TEST(TilingBlendingLanes, AgreeWithTheScalarKernel) {
             SCOPED_TRACE(example->gaussianized() ? "gaussianized" : "plain");
             EXPECT_LE(maxLaneError(noise, 0.0, 0.0, 1.0, 131, 40), 1e-5);
             EXPECT_LE(maxLaneError(noise, -517.25, 93.5, 0.37, 77, 40), 1e-5);
-            // A texel spacing between one and two pixels: the two-vector window.
+            // Neighbouring pixels 1.6 texels apart: the two-vector window.
             EXPECT_LE(maxLaneError(noise, 11.0, -7.0, 1.6, 150, 40), 1e-5);
             EXPECT_LE(maxLaneError(noise, 3.0e7, -2.0e7, 6.3, 200, 40), 1e-5);
             EXPECT_LE(maxLaneError(noise, -1.0e9, 1.0e9, 1.0e4, 67, 8), 1e-5);  // at the view's limits

@@ -220,6 +220,8 @@ TEST(Colormap, ARowOfLookupsIsSamplesBitForBit) {
                 y[k * stride] = 1.02f - float(k * 37 % 293) / 290.0f;
             }
             x[2 * stride] = std::nanf("");
+            y[4 * stride] = -0.3f;
+            y[9 * stride] = std::nanf("");
             std::vector<float> rgb(count * 3, -1.0f);
             h.sampleRow(x.data(), y.data(), stride, rgb.data(), count);
             for (size_t k = 0; k < count; ++k) {
@@ -232,8 +234,8 @@ TEST(Colormap, ARowOfLookupsIsSamplesBitForBit) {
 
 // A row of prefiltered lookups (found ahead, prefetched) is sample's, bit
 // for bit, in both modes and with Beta axes: deviations from 0 (one layer)
-// through the largest level and beyond, means outside [0, 1], rows shorter
-// and longer than the look-ahead.
+// through the largest level and beyond, means outside [0, 1], NaN, rows
+// shorter and longer than the look-ahead.
 TEST(PrefilteredColormap, ARowOfLookupsIsSamplesBitForBit) {
     Image table(41, 23, 3);
     for (int y = 0; y < table.height(); ++y)
@@ -250,6 +252,10 @@ TEST(PrefilteredColormap, ARowOfLookupsIsSamplesBitForBit) {
                     my[k] = 0.5f + 0.45f * std::sin(0.3f * float(k));
                     sx[k] = k % 7 == 0 ? 0.0f : 0.4f * float(k % 13) / 12.0f;
                     sy[k] = k % 5 == 0 ? 0.0f : 0.6f * float(k % 11) / 10.0f;
+                }
+                if (count > 2) {  // NaN means and deviations read as the kernel reads them
+                    mx[1] = std::nanf("");
+                    sy[2] = std::nanf("");
                 }
                 std::vector<float> rgb(count * 3, -1.0f);
                 p.sampleRow(mx.data(), my.data(), sx.data(), sy.data(), rgb.data(), count);

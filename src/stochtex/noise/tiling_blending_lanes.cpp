@@ -142,14 +142,15 @@ HWY_INLINE void LoadChannels(DF df, const float* p, VF (&channels)[C]) {
 // The bilinear taps of lanes that read one row pair at columns ix: each
 // channel's left and right texel in the row below (b) and above (a). When
 // the columns are ix0 + d with 0 ≤ d < 2n — the lanes' texels lie in a
-// window two vectors wide, as they do where a texel spans about a pixel or
-// more (the unfiltered view at scale ≤ 1, a filtered level chosen for its
-// footprint) — the window is loaded and its lanes permuted into place,
-// several times cheaper than gathering them. Returns false, having read
-// nothing, when the columns are not such a window (a wrap inside the vector,
-// a texel spacing above two pixels) or the window would run past `end`.
+// window two vectors wide, as they do where neighbouring pixels are at
+// most about two texels apart (the unfiltered view at scale ≤ 2, the
+// levels a filtered zoom reads, chosen for its footprint) — the window is
+// loaded and its lanes permuted into place, cheaper than gathering them.
+// Returns false, having read nothing, when the columns are not such a
+// window (a wrap inside the vector, pixels further apart) or the window
+// would read more than the `available` floats from `below` on.
 template <int C>
-HWY_INLINE bool WindowTaps(DF df, const float* below, const float* end, int stride, VI ix, VF (&bl)[C], VF (&br)[C],
+HWY_INLINE bool WindowTaps(DF df, const float* below, size_t available, int stride, VI ix, VF (&bl)[C], VF (&br)[C],
                            VF (&al)[C], VF (&ar)[C]) {
     const DI di;
     const int n = int(hn::Lanes(df));
@@ -157,8 +158,8 @@ HWY_INLINE bool WindowTaps(DF df, const float* below, const float* end, int stri
     const auto d = hn::Sub(ix, hn::Set(di, ix0));
     if (!hn::AllFalse(di, hn::Lt(d, hn::Zero(di))) || !hn::AllTrue(di, hn::Lt(d, hn::Set(di, 2 * n)))) return false;
     const bool narrow = hn::AllTrue(di, hn::Lt(d, hn::Set(di, n)));
+    if (size_t(C * ix0 + stride + C * (1 + (narrow ? n : 2 * n))) > available) return false;
     const float* left = below + C * ix0;
-    if (left + stride + C * (1 + (narrow ? n : 2 * n)) > end) return false;
     const auto index = hn::IndicesFromVec(df, hn::And(d, hn::Set(di, n - 1)));
     const auto inHigh = hn::RebindMask(df, hn::Gt(d, hn::Set(di, n - 1)));
     // One tap of every channel: the window's lanes at d.
@@ -242,7 +243,8 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
             const auto ix = hn::ConvertTo(di, tx);
             const auto wx = hn::Sub(tx, hn::ConvertTo(df, ix));
             VF bl[C], br[C], al[C], ar[C];  // below: left, right; above: left, right — each channel
-            if (!sharedRow || !WindowTaps<C>(df, sharedRow, texelsEnd, stride, ix, bl, br, al, ar)) {
+            if (!sharedRow ||
+                !WindowTaps<C>(df, sharedRow, size_t(texelsEnd - sharedRow), stride, ix, bl, br, al, ar)) {
                 const auto index = hn::Add(rowIndex, C == 1 ? ix : hn::ShiftLeft<1>(ix));
                 if constexpr (C == 1) {
                     GatherPairs(df, texels, index, bl[0], br[0]);
@@ -320,12 +322,13 @@ void BlendLevelRowImpl(const TilingBlendingNoise& noise, const BasicPeriodicGrid
 // The 2D taps of values x[k·stride], y[k·stride] (stride 1 or 3) in a
 // width × height table, for k < count (whole vectors; the caller does the
 // rest): the entry (i, j) as j·width + i, and the two weights.
-void TableTaps2Impl(const float* x, const float* y, size_t stride, int width, int height, size_t count, int32_t* entry,
-                    float* tx, float* ty) {
+size_t TableTaps2Impl(const float* x, const float* y, size_t stride, int width, int height, size_t count,
+                      int32_t* entry, float* tx, float* ty) {
     const DF df;
     const DI di;
     const size_t n = hn::Lanes(df);
-    for (size_t k = 0; k + n <= count; k += n) {
+    size_t k = 0;
+    for (; k + n <= count; k += n) {
         VF vx, vy;
         if (stride == 1) {
             vx = hn::LoadU(df, x + k);
@@ -343,11 +346,10 @@ void TableTaps2Impl(const float* x, const float* y, size_t stride, int width, in
         hn::StoreU(ti, df, tx + k);
         hn::StoreU(tj, df, ty + k);
     }
+    return k;
 }
 
 const char* TargetNameImpl() { return hwy::TargetName(HWY_TARGET); }
-
-size_t LaneCountImpl() { return hn::Lanes(DF()); }
 
 }  // namespace stochtex::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
@@ -360,7 +362,6 @@ HWY_EXPORT(BlendRowImpl);
 HWY_EXPORT(BlendLevelRowImpl);
 HWY_EXPORT(TableTaps2Impl);
 HWY_EXPORT(TargetNameImpl);
-HWY_EXPORT(LaneCountImpl);
 
 void GridRowLanes::compute(double offset, double scale, double invW, double v, int pixels, double density) {
     count = pixels;
@@ -390,9 +391,7 @@ void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>&
 size_t tableTapsLanes(const float* x, const float* y, size_t stride, int width, int height, size_t count,
                       int32_t* entry, float* tx, float* ty) {
     if (stride != 1 && stride != 3) throw std::invalid_argument("tableTapsLanes: stride must be 1 or 3");
-    HWY_DYNAMIC_DISPATCH(TableTaps2Impl)(x, y, stride, width, height, count, entry, tx, ty);
-    const size_t n = HWY_DYNAMIC_DISPATCH(LaneCountImpl)();
-    return count / n * n;
+    return HWY_DYNAMIC_DISPATCH(TableTaps2Impl)(x, y, stride, width, height, count, entry, tx, ty);
 }
 
 const char* laneTargetName() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)(); }

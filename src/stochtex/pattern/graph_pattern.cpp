@@ -466,8 +466,9 @@ Rgb GraphPattern::evaluate(double u, double v) const { return evaluate(u, v, -1,
 // Walks the view's pixels row-parallel. Untransformed leaves share the
 // triangle grid of a row: in SIMD lanes, each leaf is blended a vector of
 // pixels at a time (noise/tiling_blending_lanes.h); the colormap of a plain
-// program then runs per pixel, another program's ops an op at a time over
-// the row (runRows). The scalar reference shares one
+// program then reads the row's table lookups (their taps in lanes), another
+// program's ops run an op at a time over the row (runRows). The scalar
+// reference shares one
 // stencil per pixel, and as neighbouring pixels on a scanline mostly see
 // the same three tiles, redoes the per-tile work of every leaf (hashing the
 // offsets, locating the rows to read) only when the tiles change.

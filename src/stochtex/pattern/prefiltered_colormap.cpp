@@ -356,63 +356,45 @@ PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode m
 
 // The level coordinates and the blend of the layers are the kernel's
 // (kernel/sigma_levels.glsl), as in the shaders.
-Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const {
+PrefilteredColormap::Lookup PrefilteredColormap::find(float mx, float my, float sx, float sy) const {
     const kernel::LayerBlend b =
         kernel::tableLayerBlend(kernel::vec2(mx, my), kernel::vec2(sx, sy), kernel::ivec2(beta_[0], beta_[1]),
                                 mode_ == PrefilterMode::Paper, int(sigmas_.size()));
-    if (b.f.x == 0.0f && b.f.y == 0.0f) return layer(b.k0.x, b.k0.y).sample(mx, my);
-    const auto at = [&](int kx, int ky) {
-        const Rgb c = layer(kx, ky).sample(mx, my);
-        return kernel::vec3(c[0], c[1], c[2]);
-    };
-    const kernel::vec3 c =
-        kernel::layerMix(at(b.k0.x, b.k0.y), at(b.k1.x, b.k0.y), at(b.k0.x, b.k1.y), at(b.k1.x, b.k1.y), b.f);
+    Lookup l;
+    l.single = b.f.x == 0.0f && b.f.y == 0.0f;
+    l.f = b.f;
+    l.layers = {&layer(b.k0.x, b.k0.y), &layer(b.k1.x, b.k0.y), &layer(b.k0.x, b.k1.y), &layer(b.k1.x, b.k1.y)};
+    for (size_t i = 0; i < (l.single ? 1 : 4); ++i) l.taps[i] = l.layers[i]->taps(mx, my);
+    return l;
+}
+
+Rgb PrefilteredColormap::blend(const Lookup& l) const {
+    if (l.single) return l.layers[0]->blend(l.taps[0]);
+    kernel::vec3 at[4];
+    for (size_t i = 0; i < 4; ++i) {
+        const Rgb e = l.layers[i]->blend(l.taps[i]);
+        at[i] = kernel::vec3(e[0], e[1], e[2]);
+    }
+    const kernel::vec3 c = kernel::layerMix(at[0], at[1], at[2], at[3], l.f);
     return {c.x, c.y, c.z};
 }
 
+Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const { return blend(find(mx, my, sx, sy)); }
+
 void PrefilteredColormap::sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
                                     size_t count) const {
-    // A pixel's lookup, found ahead: its layers (one when it falls on a
-    // level, f = 0), their taps and the layer weights.
-    struct Lookup {
-        std::array<const ColormapTable*, 4> layers;
-        std::array<ColormapTable::Taps, 4> taps;
-        kernel::vec2 f;
-        bool single;
-    };
     constexpr size_t kAhead = 8;  // pixels between a lookup's prefetch and its blend
     std::array<Lookup, kAhead> ring;
-    const auto find = [&](size_t k, Lookup& l) {
-        const kernel::LayerBlend b = kernel::tableLayerBlend(kernel::vec2(mx[k], my[k]), kernel::vec2(sx[k], sy[k]),
-                                                             kernel::ivec2(beta_[0], beta_[1]),
-                                                             mode_ == PrefilterMode::Paper, int(sigmas_.size()));
-        l.single = b.f.x == 0.0f && b.f.y == 0.0f;
-        l.f = b.f;
-        l.layers = {&layer(b.k0.x, b.k0.y), &layer(b.k1.x, b.k0.y), &layer(b.k0.x, b.k1.y), &layer(b.k1.x, b.k1.y)};
-        for (size_t i = 0; i < (l.single ? 1 : 4); ++i) {
-            l.taps[i] = l.layers[i]->taps(mx[k], my[k]);
-            l.layers[i]->prefetch(l.taps[i]);
-        }
-    };
-    // sample's blend of the layers found.
-    const auto blend = [&](const Lookup& l, float* out) {
-        Rgb c;
-        if (l.single) {
-            c = l.layers[0]->blend(l.taps[0]);
-        } else {
-            kernel::vec3 at[4];
-            for (size_t i = 0; i < 4; ++i) {
-                const Rgb e = l.layers[i]->blend(l.taps[i]);
-                at[i] = kernel::vec3(e[0], e[1], e[2]);
-            }
-            const kernel::vec3 m = kernel::layerMix(at[0], at[1], at[2], at[3], l.f);
-            c = {m.x, m.y, m.z};
-        }
-        std::copy(c.begin(), c.end(), out);
-    };
     for (size_t k = 0; k < count + kAhead; ++k) {
-        if (k >= kAhead) blend(ring[(k - kAhead) % kAhead], rgb + (k - kAhead) * 3);
-        if (k < count) find(k, ring[k % kAhead]);
+        if (k >= kAhead) {
+            const Rgb c = blend(ring[(k - kAhead) % kAhead]);
+            std::copy(c.begin(), c.end(), rgb + (k - kAhead) * 3);
+        }
+        if (k < count) {
+            Lookup& l = ring[k % kAhead];
+            l = find(mx[k], my[k], sx[k], sy[k]);
+            for (size_t i = 0; i < (l.single ? 1 : 4); ++i) l.layers[i]->prefetch(l.taps[i]);
+        }
     }
 }
 

@@ -84,6 +84,18 @@ public:
     static std::vector<double> betaLevels(PrefilterMode mode);
 
 private:
+    // A lookup in two steps (sample = blend ∘ find), so sampleRow can fetch
+    // ahead: its layers (one when it falls on a level, f = 0), their taps
+    // and the layers' weights.
+    struct Lookup {
+        std::array<const ColormapTable*, 4> layers;
+        std::array<ColormapTable::Taps, 4> taps;
+        kernel::vec2 f;
+        bool single;
+    };
+    Lookup find(float mx, float my, float sx, float sy) const;
+    Rgb blend(const Lookup& l) const;
+
     PrefilterMode mode_ = PrefilterMode::Paper;
     BetaAxes beta_{false, false};
     std::vector<double> sigmas_, betaLevels_;
