@@ -10,6 +10,7 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
@@ -426,6 +427,37 @@ TEST(ReferenceSamples, ChosenCountIsWithinTheToleranceOfAFinerReference) {
     EXPECT_EQ(convergedSamples(p, fo, cam, 1e-9, GraphMoments::Matched, 4).perAxis, 4);
     fo.use(parseFilter("smooth"));
     EXPECT_THROW(convergedSamples(p, fo, cam, 1e-3), InputError);
+}
+
+// A study's renders share its tables and pyramids through one PartCache:
+// every probe render of convergedSamples and every estimator render of
+// estimatorErrors reads the same parts, built once (a graph's beta-axis
+// tables took `reproduce all` 66 s when each render built its own), and
+// the numbers are those of renders that build their own.
+TEST(ReferenceSamples, AStudysRendersBuildEachPartOnce) {
+    const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
+    Camera cam;
+    cam.view.width = cam.view.height = 24;
+    cam.view.scale = 6;
+    FilterOptions fo;
+    fo.use(parseFilter("exact"));
+    fo.referenceMaxSamples = 16;
+    PartCache cache;
+    const ConvergedSamples own = convergedSamples(p, fo, cam, 1e-9, GraphMoments::Matched, 8);
+    const ConvergedSamples shared = convergedSamples(p, fo, cam, 1e-9, GraphMoments::Matched, 8, &cache);
+    EXPECT_EQ(shared.perAxis, own.perAxis);
+    EXPECT_EQ(shared.change, own.change);
+    EXPECT_EQ(cache.builds().prefiltered, 1);  // camouflage has one table; the probes rendered three times
+
+    FilterOptions ref = fo;
+    const Image reference = FilteredGraph(p, withSamples(ref.use(parseFilter("reference")), 4)).render(cam);
+    fo.use(parseFilter("smooth"));
+    const std::vector<double> alone = estimatorErrors(p, fo, cam, reference, EstimatorSet::All);
+    const std::vector<double> kept = estimatorErrors(p, fo, cam, reference, EstimatorSet::All, &cache);
+    ASSERT_EQ(kept.size(), kVarianceEstimatorNames.size());
+    EXPECT_EQ(kept, alone);
+    EXPECT_EQ(cache.builds().prefiltered, 1);  // the smooth table was kept from the probes
+    EXPECT_EQ(cache.builds().estimators, 1);   // one pyramid pair for every estimator
 }
 
 // Figure 12 at reduced size (the paper's claims, §6.5): at mid distance our

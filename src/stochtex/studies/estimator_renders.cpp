@@ -6,6 +6,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/report/plot.h"
 #include "stochtex/studies/paper.h"
@@ -68,6 +69,8 @@ EstimatorRendersResult estimatorRenders(const EstimatorRendersOptions& o, const 
     for (const std::string& name : o.presets) {
         const PatternSpec spec = loadPreset(name);
         const GraphPattern pattern = GraphPattern::build(spec);
+        // Its tables and pyramids, built once for every render of its rows.
+        PartCache partCache;
         // The pattern's own filtered response: the LEAN lobe where it has a
         // normal map (as Figure 12), else the prefiltered colormap.
         FilterOptions base;
@@ -86,18 +89,21 @@ EstimatorRendersResult estimatorRenders(const EstimatorRendersOptions& o, const 
             FilterOptions reference = base;
             reference.source = StatisticsSource::Reference;
             reference = atConvergedSamples(pattern, reference, cam, o.referenceTolerance, row.referenceSamples,
-                                           row.referenceChange);
-            const Image truth =
-                FilteredGraph(pattern, reference).render(cam, progressPart(part, 0.0, 0.5, "reference"));
+                                           row.referenceChange, &partCache);
+            const Image truth = FilteredGraph(pattern, reference, GraphMoments::Matched, &partCache)
+                                    .render(cam, progressPart(part, 0.0, 0.5, "reference"));
             FilterOptions exact = base;
             exact.source = StatisticsSource::Exact;
-            exact = atConvergedSamples(pattern, exact, cam, o.referenceTolerance, row.exactSamples, row.exactChange);
-            (void)errorMap(FilteredGraph(pattern, exact).render(cam, progressPart(part, 0.5, 1.0, "exact statistics")),
+            exact = atConvergedSamples(pattern, exact, cam, o.referenceTolerance, row.exactSamples, row.exactChange,
+                                       &partCache);
+            (void)errorMap(FilteredGraph(pattern, exact, GraphMoments::Matched, &partCache)
+                               .render(cam, progressPart(part, 0.5, 1.0, "exact statistics")),
                            truth, row.exact);
             FilterOptions none = base;
             none.source = StatisticsSource::Point;
-            (void)errorMap(FilteredGraph(pattern, none).render(cam), truth, row.none);
-            row.estimators = estimatorErrors(pattern, base, cam, truth, EstimatorSet::All);
+            (void)errorMap(FilteredGraph(pattern, none, GraphMoments::Matched, &partCache).render(cam), truth,
+                           row.none);
+            row.estimators = estimatorErrors(pattern, base, cam, truth, EstimatorSet::All, &partCache);
             res.rows.push_back(std::move(row));
         }
     }

@@ -6,6 +6,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/report/plot.h"
 #include "stochtex/studies/paper.h"
@@ -62,6 +63,9 @@ const std::array<Method, 4> kMethods{{
 Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
     validateFigure14(o);
     const GraphPattern graph = GraphPattern::build(o.pattern);
+    // Its tables and pyramids, built once for every render of the figure
+    // (its beta-axis tables take a second or more each).
+    PartCache partCache;
     struct Column {
         Figure14Column numbers;
         Image reference;
@@ -83,8 +87,9 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
         // each at the fewest samples that have converged.
         fo.source = StatisticsSource::Reference;
         fo = atConvergedSamples(graph, fo, cam, o.referenceTolerance, c.numbers.referenceSamples,
-                                c.numbers.referenceChange);
-        c.reference = FilteredGraph(graph, fo).render(cam, progressPart(part, 0.0, 0.5, "reference"));
+                                c.numbers.referenceChange, &partCache);
+        c.reference = FilteredGraph(graph, fo, GraphMoments::Matched, &partCache)
+                          .render(cam, progressPart(part, 0.0, 0.5, "reference"));
         double* errors[4] = {&c.numbers.none, &c.numbers.meanOnly, &c.numbers.matchedExact, &c.numbers.matched};
         for (size_t m = 0; m < kMethods.size(); ++m) {
             fo.source = kMethods[m].source;
@@ -92,13 +97,14 @@ Figure14Result figure14(const Figure14Options& o, const Progress& progress) {
             if (exact) {
                 fo.referenceMaxSamples = o.referenceSamples;
                 fo = atConvergedSamples(graph, fo, cam, o.referenceTolerance, c.numbers.exactSamples,
-                                        c.numbers.exactChange);
+                                        c.numbers.exactChange, &partCache);
             }
-            c.images[m] = FilteredGraph(graph, fo, kMethods[m].moments)
+            c.images[m] = FilteredGraph(graph, fo, kMethods[m].moments, &partCache)
                               .render(cam, exact ? progressPart(part, 0.5, 1.0, "exact statistics") : Progress{});
             c.errors[m] = errorMap(c.images[m], c.reference, *errors[m]);
         }
-        c.numbers.matchedOtherEstimators = estimatorErrors(graph, fo, cam, c.reference, EstimatorSet::AfterPaper);
+        c.numbers.matchedOtherEstimators =
+            estimatorErrors(graph, fo, cam, c.reference, EstimatorSet::AfterPaper, &partCache);
         cols.push_back(std::move(c));
     }
     // One colour scale for every error map: the 99.5th percentile of all.

@@ -223,12 +223,13 @@ size_t firstOf(EstimatorSet set) { return set == EstimatorSet::All ? 0 : 1; }
 }  // namespace
 
 std::vector<double> estimatorErrors(const GraphPattern& pattern, FilterOptions filter, const Camera& camera,
-                                    const Image& reference, EstimatorSet set) {
+                                    const Image& reference, EstimatorSet set, PartCache* parts) {
     filter.source = StatisticsSource::Estimators;
     std::vector<double> errors;
     for (size_t e = firstOf(set); e < kVarianceEstimatorNames.size(); ++e) {
         filter.estimator = kVarianceEstimatorNames[e].second;
-        (void)errorMap(FilteredGraph(pattern, filter).render(camera), reference, errors.emplace_back());
+        (void)errorMap(FilteredGraph(pattern, filter, GraphMoments::Matched, parts).render(camera), reference,
+                       errors.emplace_back());
     }
     return errors;
 }
@@ -277,6 +278,9 @@ Figure4Options figure11Options() {
 Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
     validateFigure4(o);
     const GraphPattern pattern = GraphPattern::build(o.pattern);  // the file's program: a plain pattern or a graph
+    // Its tables and pyramids, built once for every render of the figure
+    // (a graph's beta-axis tables take a second or more each).
+    PartCache partCache;
     struct Column {
         Figure4Column numbers;
         Image reference, exact, estimated, errExact, errEstimated;
@@ -297,24 +301,28 @@ Figure4Result figure4(const Figure4Options& o, const StudyProgress& progress) {
         const double referenceShare = o.exactStatistics ? 0.5 : 1.0;
         fo.use(parseFilter("reference"));
         fo = atConvergedSamples(pattern, fo, cam, o.referenceTolerance, c.numbers.referenceSamples,
-                                c.numbers.referenceChange);
-        c.reference = FilteredGraph(pattern, fo).render(cam, progressPart(part, 0.0, referenceShare, "reference"));
+                                c.numbers.referenceChange, &partCache);
+        c.reference = FilteredGraph(pattern, fo, GraphMoments::Matched, &partCache)
+                          .render(cam, progressPart(part, 0.0, referenceShare, "reference"));
         if (o.exactStatistics) {
             fo.referenceMaxSamples = o.referenceSamples;
             fo.use(parseFilter("exact"));
             fo = atConvergedSamples(pattern, fo, cam, o.referenceTolerance, c.numbers.exactSamples,
-                                    c.numbers.exactChange);
-            c.exact = FilteredGraph(pattern, fo).render(cam, progressPart(part, 0.5, 1.0, "exact statistics"));
+                                    c.numbers.exactChange, &partCache);
+            c.exact = FilteredGraph(pattern, fo, GraphMoments::Matched, &partCache)
+                          .render(cam, progressPart(part, 0.5, 1.0, "exact statistics"));
         }
         fo.source = StatisticsSource::Estimators;
         fo.response = o.response;
-        c.estimated = FilteredGraph(pattern, fo).render(cam);
+        c.estimated = FilteredGraph(pattern, fo, GraphMoments::Matched, &partCache).render(cam);
         if (o.exactStatistics) c.errExact = errorMap(c.exact, c.reference, c.numbers.meanErrorExact);
         c.errEstimated = errorMap(c.estimated, c.reference, c.numbers.meanErrorEstimated);
-        c.numbers.meanErrorOtherEstimators = estimatorErrors(pattern, fo, cam, c.reference, EstimatorSet::AfterPaper);
+        c.numbers.meanErrorOtherEstimators =
+            estimatorErrors(pattern, fo, cam, c.reference, EstimatorSet::AfterPaper, &partCache);
         // Not filtering at all: the pixel centres, what filtering must beat.
-        (void)errorMap(FilteredGraph(pattern, fo.use(parseFilter("none"))).render(cam), c.reference,
-                       c.numbers.meanErrorNone);
+        (void)errorMap(
+            FilteredGraph(pattern, fo.use(parseFilter("none")), GraphMoments::Matched, &partCache).render(cam),
+            c.reference, c.numbers.meanErrorNone);
         if (o.fadesTo) {
             c.numbers.meanFadeReference = meanDistance(c.reference, *o.fadesTo);
             c.numbers.meanFadeEstimated = meanDistance(c.estimated, *o.fadesTo);

@@ -15,6 +15,7 @@
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/param_info.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/report.h"
@@ -111,9 +112,9 @@ enum class EstimatorSet { All, AfterPaper };
 // statistics from the estimators) and returns mean ‖Ŝ − S̄‖₂ against the
 // reference, in kVarianceEstimatorNames' order; estimatorColumns appends
 // their table columns, keyed keyPrefix + the name in snake case and
-// captioned caption(name).
+// captioned caption(name). `parts`: the study's PartCache, if it keeps one.
 std::vector<double> estimatorErrors(const GraphPattern& pattern, FilterOptions filter, const Camera& camera,
-                                    const Image& reference, EstimatorSet set);
+                                    const Image& reference, EstimatorSet set, PartCache* parts = nullptr);
 void estimatorColumns(Table& table, const std::string& keyPrefix,
                       const std::function<std::string(const std::string&)>& caption, EstimatorSet set);
 

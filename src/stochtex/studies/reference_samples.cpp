@@ -12,8 +12,8 @@ namespace {
 
 // The probe pixels' colours under `options`, row-major.
 std::vector<Rgb> probeColours(const GraphPattern& graph, const FilterOptions& options, const Camera& camera,
-                              GraphMoments moments, int probe) {
-    const FilteredGraph filtered(graph, options, moments);
+                              GraphMoments moments, int probe, PartCache* parts) {
+    const FilteredGraph filtered(graph, options, moments, parts);
     const int w = graph.exampleSize();
     const bool shadesLight = graph.shadesLight();
     std::vector<Rgb> out(size_t(probe) * size_t(probe));
@@ -47,8 +47,9 @@ double meanDistance(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
 }  // namespace
 
 FilterOptions atConvergedSamples(const GraphPattern& graph, const FilterOptions& options, const Camera& camera,
-                                 double tolerance, int& perAxis, double& change) {
-    const ConvergedSamples chosen = convergedSamples(graph, options, camera, tolerance);
+                                 double tolerance, int& perAxis, double& change, PartCache* parts) {
+    const ConvergedSamples chosen =
+        convergedSamples(graph, options, camera, tolerance, GraphMoments::Matched, 32, parts);
     perAxis = chosen.perAxis;
     change = chosen.change;
     return withSamples(options, chosen.perAxis);
@@ -60,7 +61,7 @@ void validateReferenceTolerance(double tolerance) {
 }
 
 ConvergedSamples convergedSamples(const GraphPattern& graph, FilterOptions options, const Camera& camera,
-                                  double tolerance, GraphMoments moments, int probe) {
+                                  double tolerance, GraphMoments moments, int probe, PartCache* parts) {
     if (options.source != StatisticsSource::Reference && options.source != StatisticsSource::Exact)
         throw InputError::parameter("source", "converged samples apply to the reference and exact sources only");
     if (!(tolerance > 0) || !std::isfinite(tolerance))
@@ -68,7 +69,7 @@ ConvergedSamples convergedSamples(const GraphPattern& graph, FilterOptions optio
     if (probe < 1 || probe > 256) throw InputError::parameter("probe", "must be in [1, 256], got " + std::to_string(probe));
     validateFilterOptions(options);
     const int cap = options.referenceMaxSamples, first = std::min(8, cap);
-    auto at = [&](int n) { return probeColours(graph, withSamples(options, n), camera, moments, probe); };
+    auto at = [&](int n) { return probeColours(graph, withSamples(options, n), camera, moments, probe, parts); };
     ConvergedSamples result;
     std::vector<Rgb> coarse = at(first);
     for (int n = first;; n = std::min(2 * n, cap)) {

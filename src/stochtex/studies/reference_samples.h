@@ -7,6 +7,7 @@
 // by convergence, measured on a probe grid of the image's own pixels.
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/part_cache.h"
 
 namespace stochtex {
 
@@ -31,13 +32,16 @@ constexpr int kMaxSamplesPerAxis = 4096;
 // image. Every pixel gets n×n samples, whatever its extent (a zoom's
 // footprints are all alike; through a plane, the far pixels set n).
 ConvergedSamples convergedSamples(const GraphPattern& graph, FilterOptions options, const Camera& camera,
-                                  double tolerance, GraphMoments moments = GraphMoments::Matched, int probe = 32);
+                                  double tolerance, GraphMoments moments = GraphMoments::Matched, int probe = 32,
+                                  PartCache* parts = nullptr);
 
 // `options` at the count convergedSamples chooses (referenceMaxSamples is
 // the cap), and that count and its change in perAxis and change: what a
 // figure renders its reference or exact statistics with and prints beside them.
+// `parts`, where the study keeps one: the tables and pyramids each probe
+// render needs are built once for the study (PartCache), not per render.
 FilterOptions atConvergedSamples(const GraphPattern& graph, const FilterOptions& options, const Camera& camera,
-                                 double tolerance, int& perAxis, double& change);
+                                 double tolerance, int& perAxis, double& change, PartCache* parts = nullptr);
 
 // A figure's reference tolerance: InputError naming referenceTolerance
 // outside (0, 0.1].

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "stochtex/core/error.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/report/plot.h"
 
 namespace stochtex {
@@ -59,16 +60,18 @@ void validateStabilityStudy(const StabilityStudyOptions& o) {
 StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const StabilityStudyOptions& o,
                                     const StudyProgress& progress, const StabilityFrameSink& onFrame) {
     validateStabilityStudy(o);
+    // The filters that share a table or a pyramid build it once.
+    PartCache partCache;
     std::vector<std::unique_ptr<FilteredGraph>> filters;
     std::vector<std::string> names;
     for (const FilterOptions& f : o.filters) {
-        filters.push_back(std::make_unique<FilteredGraph>(pattern, f));
+        filters.push_back(std::make_unique<FilteredGraph>(pattern, f, GraphMoments::Matched, &partCache));
         names.push_back(filterLabel(f));
     }
     FilterOptions truthOptions = o.filters.front();
     truthOptions.source = StatisticsSource::Reference;
     truthOptions.referenceMaxSamples = o.truthSamples;
-    const FilteredGraph truth(pattern, truthOptions);
+    const FilteredGraph truth(pattern, truthOptions, GraphMoments::Matched, &partCache);
     std::vector<ZoomSequenceMeter> meters(filters.size());
     const int renders = int(filters.size()) + 1;
     for (int k = 0; k < o.frames; ++k) {
