@@ -20,6 +20,7 @@
 #include "stochtex/image/image_io.h"
 #include "stochtex/kernel/graph_ops.h"
 #include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/presets.h"
 #include "test_util.h"
 
@@ -224,6 +225,10 @@ TEST(GraphPattern, PlainFileAndItsGraphSpellingAreOneProgram) {
         ASSERT_NE(spelt.plainColormap(), nullptr);
         const View view{48, 40, 1.7, 13.25, -40.5};
         EXPECT_TRUE(identical(plain.render(view), spelt.render(view)));
+        // Tables and pyramids built once for the renders below (a part is
+        // kept by what it is built from, so two programs share one only
+        // where they build it from equal inputs).
+        PartCache parts;
         for (const char* filter : {"none", "smooth", "paper", "exact", "reference"})
             for (const bool onPlane : {false, true}) {
                 FilterOptions o;
@@ -236,7 +241,8 @@ TEST(GraphPattern, PlainFileAndItsGraphSpellingAreOneProgram) {
                     cam.kind = Camera::Kind::Plane;
                     cam.tiltDeg = 80;  // the top rows are sky
                 }
-                const FilteredGraph a(plain, o), b(spelt, o);
+                const FilteredGraph a(plain, o, GraphMoments::Matched, &parts),
+                    b(spelt, o, GraphMoments::Matched, &parts);
                 EXPECT_EQ(a.skyColour(), b.skyColour()) << filter;
                 EXPECT_TRUE(identical(a.render(cam), b.render(cam))) << filter << (onPlane ? ", plane" : ", zoom");
             }
@@ -455,11 +461,14 @@ TEST(GraphPattern, MomentsThroughCurvesMatchTheExpectations) {
     o.use(parseFilter("smooth"));
     const std::vector<std::array<float, 2>> leaf{{0.5f, 0.015625f}};
     ASSERT_EQ(once.leafCount(), 1);  // the black and white colormaps read the leaf too (a constant colour)
-    EXPECT_NEAR(FilteredGraph(once, o).fromMoments(leaf)[0], 0.265625, 6e-4);
-    EXPECT_NEAR(FilteredGraph(twice, o).fromMoments(leaf)[0], 0.086670, 6e-4);  // 0.086916 measured
-    EXPECT_NEAR(FilteredGraph(twice, o, GraphMoments::MeanOnly).fromMoments(leaf)[0], 0.070557, 1e-3);
+    PartCache parts;                 // the tables, built once for the four programs
+    const FilteredGraph onceMatched(once, o, GraphMoments::Matched, &parts);
+    EXPECT_NEAR(onceMatched.fromMoments(leaf)[0], 0.265625, 6e-4);
+    EXPECT_NEAR(FilteredGraph(twice, o, GraphMoments::Matched, &parts).fromMoments(leaf)[0], 0.086670,
+                6e-4);  // 0.086916 measured
+    EXPECT_NEAR(FilteredGraph(twice, o, GraphMoments::MeanOnly, &parts).fromMoments(leaf)[0], 0.070557, 1e-3);
     // Without the input's variance the curve gives f(μ) = 0.25.
-    EXPECT_NEAR(FilteredGraph(once, o).fromMoments({{0.5f, 0.0f}})[0], 0.25, 1e-3);
+    EXPECT_NEAR(onceMatched.fromMoments({{0.5f, 0.0f}})[0], 0.25, 1e-3);
 }
 
 TEST(GraphPattern, ATableReadsAnOpsFieldWithinZeroOneAsABetaAndALeafAsAGaussian) {
@@ -491,16 +500,20 @@ TEST(GraphPattern, ATableReadsAnOpsFieldWithinZeroOneAsABetaAndALeafAsAGaussian)
 // with g read as a Beta (docs/MATH.md); reproduce figure14 has the rest.
 TEST(GraphPattern, MomentMatchingFiltersFigure14CloserToTheReference) {
     const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
+    PartCache parts;  // its two beta-axis tables, built once
+    const auto render = [&](const FilterOptions& o, const Camera& cam, GraphMoments moments = GraphMoments::Matched) {
+        return FilteredGraph(g, o, moments, &parts).render(cam);
+    };
     for (const int footprint : {1, 16}) {
         Camera cam;
         cam.view = {32, 32, double(footprint), 100.0, 37.0};
         FilterOptions o;
         o.referenceMaxSamples = 32;
-        const Image reference = FilteredGraph(g, o.use(parseFilter("reference"))).render(cam);
-        const double none = meanRgbDistance(FilteredGraph(g, o.use(parseFilter("none"))).render(cam), reference);
+        const Image reference = render(o.use(parseFilter("reference")), cam);
+        const double none = meanRgbDistance(render(o.use(parseFilter("none")), cam), reference);
         o.use(parseFilter("smooth"));
-        const double meanOnly = meanRgbDistance(FilteredGraph(g, o, GraphMoments::MeanOnly).render(cam), reference);
-        const double matched = meanRgbDistance(FilteredGraph(g, o).render(cam), reference);
+        const double meanOnly = meanRgbDistance(render(o, cam, GraphMoments::MeanOnly), reference);
+        const double matched = meanRgbDistance(render(o, cam), reference);
         if (footprint == 1) {
             EXPECT_LT(matched, 0.06);
             EXPECT_LT(none, 0.06);
