@@ -933,7 +933,9 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                 for (size_t px = 0; px < size_t(view.width); ++px) {
                     // The kernel's loop (one probe, no sub-probes) on the row's
                     // statistics, or for a single texel its statistics directly,
-                    // as FootprintEstimator::estimate takes them.
+                    // as FootprintEstimator::estimate takes them (the loop
+                    // alone made the scale-1 zoom ~15% slower: speed-up over
+                    // scalar 1.41-1.43x -> 1.15-1.26x, 2026-12-06).
                     const RowTexels texels{&rows, &e, px};
                     kernel::TexelStats first = rowTexel(texels, 0);
                     if (deliotHeitz) first = kernel::deliotHeitzTexel(first, averageL0, false);
