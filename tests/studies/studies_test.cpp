@@ -40,6 +40,14 @@ struct UnfilteredProgram {
     Camera camera;
 };
 
+// A square zoom: size² pixels, `scale` texels per pixel.
+Camera zoomCamera(int size, double scale) {
+    Camera cam;
+    cam.view.width = cam.view.height = size;
+    cam.view.scale = scale;
+    return cam;
+}
+
 bool sameImage(const Image& a, const Image& b) {
     return a.width() == b.width() && a.height() == b.height() && a.channels() == b.channels() && a.data() == b.data();
 }
@@ -169,9 +177,7 @@ TEST(TextureSource, FilteredProgramInstanceZeroIsTheCameraRender) {
         FilterOptions fo;
         fo.use(parseFilter(filter));
         const FilteredGraph filtered(pattern, fo);
-        Camera cam;
-        cam.view.width = cam.view.height = 24;
-        cam.view.scale = 4;
+        Camera cam = zoomCamera(24, 4);
         const CameraSource source(filtered, cam);
         EXPECT_TRUE(sameImage(source.render({24, 24, 0, 0}, 0.0, 0), filtered.render(cam)));
         cam.kind = Camera::Kind::Plane;
@@ -401,9 +407,7 @@ TEST(Studies, Figure4ErrorsShrinkWithExactStatistics) {
 // the rest, as the error falls at least 2× per doubling; margin 1.5×).
 TEST(ReferenceSamples, ChosenCountIsWithinTheToleranceOfAFinerReference) {
     const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
-    Camera cam;
-    cam.view.width = cam.view.height = 40;
-    cam.view.scale = 24;
+    const Camera cam = zoomCamera(40, 24);
     FilterOptions fo;
     fo.use(parseFilter("reference"));
     fo.referenceMaxSamples = 64;
@@ -436,9 +440,7 @@ TEST(ReferenceSamples, ChosenCountIsWithinTheToleranceOfAFinerReference) {
 // the numbers are those of renders that build their own.
 TEST(ReferenceSamples, AStudysRendersBuildEachPartOnce) {
     const GraphPattern p = GraphPattern::build(loadPreset("camouflage"));
-    Camera cam;
-    cam.view.width = cam.view.height = 24;
-    cam.view.scale = 6;
+    const Camera cam = zoomCamera(24, 6);
     FilterOptions fo;
     fo.use(parseFilter("exact"));
     fo.referenceMaxSamples = 16;
