@@ -9,18 +9,24 @@ root=$1
 list=$2
 command -v clang-format >/dev/null || { echo "clang-format is not installed (scripts/install-deps.sh installs it)"; exit 2; }
 offenders=0
-checked=0
+files=()
 while IFS= read -r file; do
   case "$file" in '' | '#'*) continue ;; esac
   [ -f "$root/$file" ] || { echo "$file: listed but missing"; offenders=$((offenders + 1)); continue; }
-  checked=$((checked + 1))
-  if ! out=$(cd "$root" && clang-format --dry-run --Werror "$file" 2>&1); then
-    echo "$out" | head -3
-    offenders=$((offenders + 1))
-  fi
+  files+=("$file")
 done <"$list"
+# One clang-format for every file (a process per file took 13 s for 352):
+# its complaints are "FILE:LINE:COL: error: ..." lines, each followed by the
+# source line and a caret; the first of each file is printed.
+if [ ${#files[@]} -gt 0 ] && ! out=$(cd "$root" && clang-format --dry-run --Werror "${files[@]}" 2>&1); then
+  first=$(echo "$out" | awk -F: '/: error: / && !seen[$1]++ { print; n = 2; next } n > 0 { print; n-- }')
+  [ -n "$first" ] || first=$out  # not a complaint (clang-format itself failed): show it
+  echo "$first"
+  bad=$(echo "$out" | awk -F: '/: error: / { print $1 }' | sort -u | wc -l)
+  offenders=$((offenders + (bad > 0 ? bad : 1)))
+fi
 if [ "$offenders" -gt 0 ]; then
   echo "$offenders of the listed files are not formatted: run clang-format -i on them"
   exit 1
 fi
-echo "$checked listed files are formatted"
+echo "${#files[@]} listed files are formatted"
