@@ -7,6 +7,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/report/plot.h"
 #include "stochtex/studies/pattern_sheet.h"

@@ -15,7 +15,6 @@
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/param_info.h"
-#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/report.h"

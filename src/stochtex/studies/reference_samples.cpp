@@ -5,6 +5,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
+#include "stochtex/pattern/part_cache.h"
 
 namespace stochtex {
 
@@ -49,7 +50,7 @@ double meanDistance(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
 FilterOptions atConvergedSamples(const GraphPattern& graph, const FilterOptions& options, const Camera& camera,
                                  double tolerance, int& perAxis, double& change, PartCache* parts) {
     const ConvergedSamples chosen =
-        convergedSamples(graph, options, camera, tolerance, GraphMoments::Matched, 32, parts);
+        convergedSamples(graph, options, camera, tolerance, GraphMoments::Matched, kConvergenceProbe, parts);
     perAxis = chosen.perAxis;
     change = chosen.change;
     return withSamples(options, chosen.perAxis);

@@ -7,7 +7,6 @@
 // by convergence, measured on a probe grid of the image's own pixels.
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/graph_pattern.h"
-#include "stochtex/pattern/part_cache.h"
 
 namespace stochtex {
 
@@ -22,6 +21,8 @@ inline FilterOptions withSamples(FilterOptions options, int n) {
     options.referenceMinSamples = options.referenceMaxSamples = n;
     return options;
 }
+// The probe grid's pixels per axis the studies measure convergence on.
+constexpr int kConvergenceProbe = 32;
 // The most samples per axis FilterOptions takes.
 constexpr int kMaxSamplesPerAxis = 4096;
 
@@ -32,7 +33,7 @@ constexpr int kMaxSamplesPerAxis = 4096;
 // image. Every pixel gets n×n samples, whatever its extent (a zoom's
 // footprints are all alike; through a plane, the far pixels set n).
 ConvergedSamples convergedSamples(const GraphPattern& graph, FilterOptions options, const Camera& camera,
-                                  double tolerance, GraphMoments moments = GraphMoments::Matched, int probe = 32,
+                                  double tolerance, GraphMoments moments = GraphMoments::Matched, int probe = kConvergenceProbe,
                                   PartCache* parts = nullptr);
 
 // `options` at the count convergedSamples chooses (referenceMaxSamples is
