@@ -8,6 +8,7 @@
 
 #include "lane_targets.h"
 #include "stochtex/core/floor.h"
+#include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/noise/tiling_blending_lanes.h"
 #include "test_util.h"
@@ -108,6 +109,71 @@ TEST(TilingBlendingLanes, TableTapsAreTheKernels) {
                 ASSERT_EQ(ty[k], b.t) << k;
             }
             for (size_t k = done; k < count; ++k) EXPECT_EQ(entry[k], -1) << "a tap past the whole vectors";
+        }
+    });
+}
+
+// The lanes' prefiltered-table lookups are kernel::tableLayerBlend's and
+// kernel::tableTap's: the paper mode's levels and every tap bit for bit,
+// the smooth mode's level coordinate (k0 + f) within 1e-5 of the kernel's
+// (Highway's log2: a few ulps of coordinates up to 9), on every target; deviations of 0, tiny, at
+// and between levels, past the top, NaN and infinite; means outside [0, 1]
+// and NaN; layer sizes that differ per level.
+TEST(TilingBlendingLanes, LayerTapsAreTheKernels) {
+    const int levels = 10;
+    std::vector<int32_t> widths, heights;
+    for (int k = 0; k < levels; ++k) {
+        widths.push_back(256 >> std::min(k, 6));
+        heights.push_back(2 + 3 * k);
+    }
+    std::vector<float> mx, my, sx, sy;
+    for (int k = 0; k < 301; ++k) {
+        mx.push_back(float(k) / 250.0f - 0.1f);
+        my.push_back(0.5f + 0.6f * std::sin(0.37f * float(k)));
+        sx.push_back(std::ldexp(float(1 + k % 17) / 17.0f, k % 23 - 12));  // 2^-12 … 2^10, and between
+        sy.push_back(k % 9 == 0 ? 0.0f : std::ldexp(1.0f, k % 16 - 11));   // 0 and the levels themselves
+    }
+    mx[3] = std::nanf("");
+    sx[4] = std::nanf("");
+    sy[5] = INFINITY;
+    sx[6] = 1e-30f;
+    sy[7] = -0.25f;
+    const size_t count = mx.size();
+    test::forEachLaneTarget([&](const char*) {
+        for (const bool paper : {true, false}) {
+            SCOPED_TRACE(paper ? "paper" : "smooth");
+            LayerTapsLanes out;
+            out.resize(count);
+            const size_t done = layerTapsLanes(mx.data(), my.data(), sx.data(), sy.data(), count, paper, levels,
+                                               widths.data(), heights.data(), out);
+            EXPECT_GE(done, count - size_t(kMaxFloatLanes) + 1);
+            for (size_t k = 0; k < done; ++k) {
+                const kernel::LayerBlend b = kernel::tableLayerBlend(
+                    kernel::vec2(mx[k], my[k]), kernel::vec2(sx[k], sy[k]), kernel::ivec2(0, 0), paper, levels);
+                if (paper) {
+                    ASSERT_EQ(out.kx0[k], b.k0.x) << k;
+                    ASSERT_EQ(out.ky0[k], b.k0.y) << k;
+                    ASSERT_EQ(out.kx1[k], b.k1.x) << k;
+                    ASSERT_EQ(out.ky1[k], b.k1.y) << k;
+                    ASSERT_EQ(out.fx[k], b.f.x) << k;
+                    ASSERT_EQ(out.fy[k], b.f.y) << k;
+                } else {
+                    ASSERT_NEAR(float(out.kx0[k]) + out.fx[k], float(b.k0.x) + b.f.x, 1e-5) << k;
+                    ASSERT_NEAR(float(out.ky0[k]) + out.fy[k], float(b.k0.y) + b.f.y, 1e-5) << k;
+                    ASSERT_EQ(out.kx1[k], std::min(out.kx0[k] + 1, levels - 1)) << k;
+                    ASSERT_EQ(out.ky1[k], std::min(out.ky0[k] + 1, levels - 1)) << k;
+                }
+                // The taps in the sizes of the lanes' own layers.
+                const auto tap = [&](float x, int32_t n, int32_t i, float t) {
+                    const kernel::TableTap a = kernel::tableTap(x, n);
+                    ASSERT_EQ(i, a.i) << k;
+                    ASSERT_EQ(t, a.t) << k;
+                };
+                tap(mx[k], widths[size_t(out.kx0[k])], out.ix0[k], out.tx0[k]);
+                tap(mx[k], widths[size_t(out.kx1[k])], out.ix1[k], out.tx1[k]);
+                tap(my[k], heights[size_t(out.ky0[k])], out.iy0[k], out.ty0[k]);
+                tap(my[k], heights[size_t(out.ky1[k])], out.iy1[k], out.ty1[k]);
+            }
         }
     });
 }

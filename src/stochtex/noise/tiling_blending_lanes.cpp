@@ -8,6 +8,9 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+// Per target, after foreach_target.h (Log2).
+#include <hwy/contrib/math/math-inl.h>
+
 #include <array>
 #include <stdexcept>
 
@@ -349,6 +352,79 @@ size_t TableTaps2Impl(const float* x, const float* y, size_t stride, int width, 
     return k;
 }
 
+// kernel::tableTap with a table size per lane (n ≥ 2).
+HWY_INLINE void TableTapPerLane(DF df, VI n, VF x, VI& i, VF& t) {
+    const DI di;
+    const auto oneI = hn::Set(di, 1);
+    const auto fx = hn::Mul(hn::IfThenElseZero(hn::Gt(x, hn::Zero(df)), hn::Min(x, hn::Set(df, 1.0f))),
+                            hn::ConvertTo(df, hn::Sub(n, oneI)));
+    i = hn::Min(hn::ConvertTo(di, fx), hn::Sub(n, hn::Set(di, 2)));
+    t = hn::Sub(fx, hn::ConvertTo(df, i));
+}
+
+// kernel::sigmaLevelCoordinate.
+HWY_INLINE VF SigmaLevelCoordinate(DF df, VF sigma, bool paper, float top) {
+    const DI di;
+    const DU du;
+    const auto s256 = hn::Mul(sigma, hn::Set(df, 256.0f));
+    const auto positive = hn::Gt(s256, hn::Zero(df));  // false for NaN, as the kernel's !(s256 > 0)
+    if (paper) {
+        // round(log2 x) = ⌊log2(√2·x)⌋ from the float's exponent field.
+        const auto y = hn::Mul(s256, hn::Set(df, 1.41421356f));
+        const auto exponent = hn::Sub(hn::BitCast(di, hn::ShiftRight<23>(hn::BitCast(du, y))), hn::Set(di, 127));
+        const auto c = hn::Min(hn::ConvertTo(df, exponent), hn::Set(df, top));
+        return hn::IfThenElseZero(hn::And(positive, hn::Ge(y, hn::Set(df, 2.0f))), c);
+    }
+    // Highway's log2 sees [1, 2^30] only: above 2^30 the coordinate is past
+    // every table's top, and the lanes at or below 1 (NaN and σ ≤ 0 too)
+    // take the linear part or 0 (it is not defined at +inf, 0 or below).
+    const auto one = hn::Set(df, 1.0f);
+    const auto bounded = hn::IfThenElse(hn::Gt(s256, one), hn::Min(s256, hn::Set(df, 1073741824.0f)), one);
+    const auto logarithmic = hn::Add(one, hn::Log2(df, bounded));
+    const auto c = hn::IfThenElse(hn::Le(s256, one), s256, logarithmic);
+    return hn::IfThenElseZero(positive, hn::Min(c, hn::Set(df, top)));
+}
+
+size_t LayerTapsImpl(const float* mx, const float* my, const float* sx, const float* sy, size_t count, bool paper,
+                     int levels, const int32_t* widths, const int32_t* heights, LayerTapsLanes& out) {
+    const DF df;
+    const DI di;
+    const size_t n = hn::Lanes(df);
+    const float top = float(levels - 1);
+    const auto last = hn::Set(di, levels - 1), oneI = hn::Set(di, 1);
+    size_t k = 0;
+    for (; k + n <= count; k += n) {
+        // kernel::levelBlend of the two axes' coordinates.
+        const auto cx = SigmaLevelCoordinate(df, hn::LoadU(df, sx + k), paper, top);
+        const auto cy = SigmaLevelCoordinate(df, hn::LoadU(df, sy + k), paper, top);
+        const auto kx0 = hn::Min(hn::ConvertTo(di, cx), last), ky0 = hn::Min(hn::ConvertTo(di, cy), last);
+        const auto kx1 = hn::Min(hn::Add(kx0, oneI), last), ky1 = hn::Min(hn::Add(ky0, oneI), last);
+        hn::StoreU(hn::Sub(cx, hn::ConvertTo(df, kx0)), df, out.fx.data() + k);
+        hn::StoreU(hn::Sub(cy, hn::ConvertTo(df, ky0)), df, out.fy.data() + k);
+        hn::StoreU(kx0, di, out.kx0.data() + k);
+        hn::StoreU(ky0, di, out.ky0.data() + k);
+        hn::StoreU(kx1, di, out.kx1.data() + k);
+        hn::StoreU(ky1, di, out.ky1.data() + k);
+        // The taps in the layers' sizes along each axis.
+        const auto x = hn::LoadU(df, mx + k), y = hn::LoadU(df, my + k);
+        VI i;
+        VF t;
+        TableTapPerLane(df, hn::GatherIndex(di, widths, kx0), x, i, t);
+        hn::StoreU(i, di, out.ix0.data() + k);
+        hn::StoreU(t, df, out.tx0.data() + k);
+        TableTapPerLane(df, hn::GatherIndex(di, widths, kx1), x, i, t);
+        hn::StoreU(i, di, out.ix1.data() + k);
+        hn::StoreU(t, df, out.tx1.data() + k);
+        TableTapPerLane(df, hn::GatherIndex(di, heights, ky0), y, i, t);
+        hn::StoreU(i, di, out.iy0.data() + k);
+        hn::StoreU(t, df, out.ty0.data() + k);
+        TableTapPerLane(df, hn::GatherIndex(di, heights, ky1), y, i, t);
+        hn::StoreU(i, di, out.iy1.data() + k);
+        hn::StoreU(t, df, out.ty1.data() + k);
+    }
+    return k;
+}
+
 const char* TargetNameImpl() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace stochtex::HWY_NAMESPACE
@@ -361,6 +437,7 @@ HWY_EXPORT(GridRowImpl);
 HWY_EXPORT(BlendRowImpl);
 HWY_EXPORT(BlendLevelRowImpl);
 HWY_EXPORT(TableTaps2Impl);
+HWY_EXPORT(LayerTapsImpl);
 HWY_EXPORT(TargetNameImpl);
 
 void GridRowLanes::compute(double offset, double scale, double invW, double v, int pixels, double density) {
@@ -392,6 +469,17 @@ size_t tableTapsLanes(const float* x, const float* y, size_t stride, int width, 
                       int32_t* entry, float* tx, float* ty) {
     if (stride != 1 && stride != 3) throw std::invalid_argument("tableTapsLanes: stride must be 1 or 3");
     return HWY_DYNAMIC_DISPATCH(TableTaps2Impl)(x, y, stride, width, height, count, entry, tx, ty);
+}
+
+void LayerTapsLanes::resize(size_t count) {
+    for (std::vector<int32_t>* v : {&kx0, &ky0, &kx1, &ky1, &ix0, &ix1, &iy0, &iy1}) v->resize(count);
+    for (std::vector<float>* v : {&fx, &fy, &tx0, &tx1, &ty0, &ty1}) v->resize(count);
+}
+
+size_t layerTapsLanes(const float* mx, const float* my, const float* sx, const float* sy, size_t count, bool paper,
+                      int levels, const int32_t* widths, const int32_t* heights, LayerTapsLanes& out) {
+    if (out.fx.size() < count) throw std::invalid_argument("layerTapsLanes: the output holds fewer pixels than count");
+    return HWY_DYNAMIC_DISPATCH(LayerTapsImpl)(mx, my, sx, sy, count, paper, levels, widths, heights, out);
 }
 
 const char* laneTargetName() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)(); }

@@ -61,6 +61,28 @@ void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>&
 size_t tableTapsLanes(const float* x, const float* y, size_t stride, int width, int height, size_t count,
                       int32_t* entry, float* tx, float* ty);
 
+// The lookups of a prefiltered colormap whose two axes are Gaussian, in
+// lanes: kernel::tableLayerBlend at the means (mx, my) and deviations
+// (sx, sy) of count pixels, then kernel::tableTap on each axis of the
+// layers it blends. Layer (kx, ky) of the table is widths[kx] × heights[ky]
+// entries (both ≥ 2; PrefilteredColormap stores a layer coarser along an
+// axis as that axis's σ grows). Per pixel k: the layers (kx0, ky0) and
+// (kx1, ky1) and the weights fx, fy of kx1 and ky1 (kernel::levelBlend);
+// the x taps (entry, weight) in the columns kx0 and kx1, the y taps in the
+// rows ky0 and ky1.
+struct LayerTapsLanes {
+    void resize(size_t count);
+    std::vector<int32_t> kx0, ky0, kx1, ky1, ix0, ix1, iy0, iy1;
+    std::vector<float> fx, fy, tx0, tx1, ty0, ty1;
+};
+// Fills whole vectors only and returns how many pixels it did (the caller
+// does the rest with the kernel). The smooth mode's log2 is Highway's
+// (≤ 2 ulp from std::log2), so a level weight may differ from the kernel's
+// by a few ulps; the paper mode's level is read off the float's exponent,
+// as the kernel does, and is the kernel's exactly.
+size_t layerTapsLanes(const float* mx, const float* my, const float* sx, const float* sy, size_t count, bool paper,
+                      int levels, const int32_t* widths, const int32_t* heights, LayerTapsLanes& out);
+
 // The name of the vector target the lanes run on here ("AVX2", …).
 const char* laneTargetName();
 

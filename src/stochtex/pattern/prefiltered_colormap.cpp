@@ -17,6 +17,7 @@
 #include "stochtex/core/parallel.h"
 #include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/normal.h"
+#include "stochtex/noise/tiling_blending_lanes.h"
 
 namespace stochtex {
 
@@ -352,6 +353,15 @@ PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode m
             layers_.emplace_back(xThenY <= yThenX ? blurColumns(blurredX[kx], tapsY[ky])
                                                   : transposed(blurColumns(blurredYT[ky], tapsX[kx])));
         }
+    for (size_t k = 0; k < levels; ++k) {
+        widths_.push_back(layer(int(k), 0).resolutionX());
+        heights_.push_back(layer(0, int(k)).resolutionY());
+    }
+    for (size_t kx = 0; kx < levels; ++kx)
+        for (size_t ky = 0; ky < levels; ++ky)
+            if (layer(int(kx), int(ky)).resolutionX() != widths_[kx] ||
+                layer(int(kx), int(ky)).resolutionY() != heights_[ky])
+                throw std::logic_error("PrefilteredColormap: a layer's size depends on the other axis's level");
 }
 
 // The level coordinates and the blend of the layers are the kernel's
@@ -383,7 +393,38 @@ Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const { 
 
 void PrefilteredColormap::sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
                                     size_t count) const {
-    constexpr size_t kAhead = 8;  // pixels between a lookup's prefetch and its blend
+    constexpr size_t kAhead = 8;    // pixels between a lookup's prefetch and its blend
+    constexpr size_t kChunk = 256;  // pixels whose layers and taps the lanes find at once
+    const bool lanes = !beta_[0] && !beta_[1];
+    LayerTapsLanes found;
+    if (lanes) found.resize(kChunk);
+    size_t chunkStart = 0, chunkDone = 0;  // pixels [chunkStart, chunkStart + chunkDone) are in `found`
+    // Pixel k's lookup (k in order): from the lanes, or find where they did not reach.
+    const auto lookupAt = [&](size_t k) {
+        if (lanes && k % kChunk == 0) {
+            chunkStart = k;
+            chunkDone = layerTapsLanes(mx + k, my + k, sx + k, sy + k, std::min(kChunk, count - k),
+                                       mode_ == PrefilterMode::Paper, int(sigmas_.size()), widths_.data(),
+                                       heights_.data(), found);
+        }
+        if (!lanes || k - chunkStart >= chunkDone) return find(mx[k], my[k], sx[k], sy[k]);
+        const size_t j = k - chunkStart;
+        const int kx0 = found.kx0[j], ky0 = found.ky0[j], kx1 = found.kx1[j], ky1 = found.ky1[j];
+        Lookup l;
+        l.f = kernel::vec2(found.fx[j], found.fy[j]);
+        l.single = l.f.x == 0.0f && l.f.y == 0.0f;
+        l.layers = {&layer(kx0, ky0), &layer(kx1, ky0), &layer(kx0, ky1), &layer(kx1, ky1)};
+        // ColormapTable::taps' entries: row · width + column.
+        const auto entry = [&](int32_t row, int kx, int32_t column) {
+            return size_t(row) * size_t(widths_[size_t(kx)]) + size_t(column);
+        };
+        l.taps[0] = {entry(found.iy0[j], kx0, found.ix0[j]), found.tx0[j], found.ty0[j]};
+        if (l.single) return l;  // blend reads layer 0 only, as find leaves it
+        l.taps[1] = {entry(found.iy0[j], kx1, found.ix1[j]), found.tx1[j], found.ty0[j]};
+        l.taps[2] = {entry(found.iy1[j], kx0, found.ix0[j]), found.tx0[j], found.ty1[j]};
+        l.taps[3] = {entry(found.iy1[j], kx1, found.ix1[j]), found.tx1[j], found.ty1[j]};
+        return l;
+    };
     std::array<Lookup, kAhead> ring;
     for (size_t k = 0; k < count + kAhead; ++k) {
         if (k >= kAhead) {
@@ -392,7 +433,7 @@ void PrefilteredColormap::sampleRow(const float* mx, const float* my, const floa
         }
         if (k < count) {
             Lookup& l = ring[k % kAhead];
-            l = find(mx[k], my[k], sx[k], sy[k]);
+            l = lookupAt(k);
             for (size_t i = 0; i < (l.single ? 1 : 4); ++i) l.layers[i]->prefetch(l.taps[i]);
         }
     }

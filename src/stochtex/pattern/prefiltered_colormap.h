@@ -19,6 +19,7 @@
 // of the Beta's shape (kernel betaLevelCoordinate), at the same level values.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "stochtex/core/enum_names.h"
@@ -60,11 +61,13 @@ public:
     // The table at mean (mx, my) and deviations (sx, sy): [H ∗ G_σ](μ) on
     // Gaussian axes, E[H] under the Beta of (m, σ²) on Beta axes.
     Rgb sample(float mx, float my, float sx, float sy) const;
-    // sample at count pixels (mx[k], my[k], sx[k], sy[k]) into rgb[3k..3k+2],
-    // the same values: each pixel's layers and taps are found a few pixels
-    // ahead of its blend and their entries prefetched meanwhile (a lookup
-    // reads up to four layers of up to a megabyte each, beyond a core's L2,
-    // and otherwise waits on memory one pixel at a time).
+    // sample at count pixels (mx[k], my[k], sx[k], sy[k]) into rgb[3k..3k+2]:
+    // each pixel's layers and taps are found a few pixels ahead of its
+    // blend and their entries prefetched meanwhile (a lookup reads up to
+    // four layers of up to a megabyte each, beyond a core's L2, and
+    // otherwise waits on memory one pixel at a time). On Gaussian axes
+    // they are found in SIMD lanes (layerTapsLanes: the smooth mode's level
+    // weights within a few ulps of sample's, the rest the same values).
     void sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb, size_t count) const;
 
     // Every layer resampled to rx × ry entries (layers stored coarser are
@@ -100,6 +103,9 @@ private:
     BetaAxes beta_{false, false};
     std::vector<double> sigmas_, betaLevels_;
     std::vector<ColormapTable> layers_;
+    // The entries along x of the layers (kx, ·) and along y of (·, ky): a
+    // layer's size along an axis depends on that axis's level only.
+    std::vector<int32_t> widths_, heights_;
 };
 
 // Reference for tests: [H ∗ G_σ](μ) for the bilinear table H with clamp-to-edge
