@@ -19,10 +19,10 @@ done <"$list"
 # its complaints are "FILE:LINE:COL: error: ..." lines, each followed by the
 # source line and a caret; the first of each file is printed.
 if [ ${#files[@]} -gt 0 ] && ! out=$(cd "$root" && clang-format --dry-run --Werror "${files[@]}" 2>&1); then
-  first=$(echo "$out" | awk -F: '/: error: / && !seen[$1]++ { print; n = 2; next } n > 0 { print; n-- }')
+  first=$(echo "$out" | awk -F: '/^[^ :]+:[0-9]+:[0-9]+: error: / && !seen[$1]++ { print; n = 2; next } n > 0 { print; n-- }')
   [ -n "$first" ] || first=$out  # not a complaint (clang-format itself failed): show it
   echo "$first"
-  bad=$(echo "$out" | awk -F: '/: error: / { print $1 }' | sort -u | wc -l)
+  bad=$(echo "$out" | awk -F: '/^[^ :]+:[0-9]+:[0-9]+: error: / { print $1 }' | sort -u | wc -l)
   offenders=$((offenders + (bad > 0 ? bad : 1)))
 fi
 if [ "$offenders" -gt 0 ]; then

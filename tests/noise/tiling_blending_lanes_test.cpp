@@ -114,11 +114,13 @@ TEST(TilingBlendingLanes, TableTapsAreTheKernels) {
 }
 
 // The lanes' prefiltered-table lookups are kernel::tableLayerBlend's and
-// kernel::tableTap's: the paper mode's levels and every tap bit for bit,
-// the smooth mode's level coordinate (k0 + f) within 1e-5 of the kernel's
-// (Highway's log2: a few ulps of coordinates up to 9), on every target; deviations of 0, tiny, at
-// and between levels, past the top, NaN and infinite; means outside [0, 1]
-// and NaN; layer sizes that differ per level.
+// kernel::tableTap's, on every target: the paper mode's levels and every
+// tap bit for bit; the smooth mode's level coordinate (k0 + f) within 1e-5
+// of the kernel's (the mantissa's log2 is Highway's: a few ulps of
+// coordinates up to 9), its weights in [0, 1), and exactly the kernel's on
+// a level. Deviations of 0, tiny, linear (σ·256 < 1), at and between
+// levels, past the top, NaN and infinite; means outside [0, 1] and NaN;
+// layer sizes that differ per level.
 TEST(TilingBlendingLanes, LayerTapsAreTheKernels) {
     const int levels = 10;
     std::vector<int32_t> widths, heights;
@@ -130,7 +132,7 @@ TEST(TilingBlendingLanes, LayerTapsAreTheKernels) {
     for (int k = 0; k < 301; ++k) {
         mx.push_back(float(k) / 250.0f - 0.1f);
         my.push_back(0.5f + 0.6f * std::sin(0.37f * float(k)));
-        sx.push_back(std::ldexp(float(1 + k % 17) / 17.0f, k % 23 - 12));  // 2^-12 … 2^10, and between
+        sx.push_back(std::ldexp(float(1 + k % 17) / 17.0f, k % 23 - 12));  // σ·256 from 0.004 to 2^18
         sy.push_back(k % 9 == 0 ? 0.0f : std::ldexp(1.0f, k % 16 - 11));   // 0 and the levels themselves
     }
     mx[3] = std::nanf("");
@@ -160,8 +162,22 @@ TEST(TilingBlendingLanes, LayerTapsAreTheKernels) {
                 } else {
                     ASSERT_NEAR(float(out.kx0[k]) + out.fx[k], float(b.k0.x) + b.f.x, 1e-5) << k;
                     ASSERT_NEAR(float(out.ky0[k]) + out.fy[k], float(b.k0.y) + b.f.y, 1e-5) << k;
+                    ASSERT_LE(std::abs(out.kx0[k] - b.k0.x), 1) << k;
+                    ASSERT_LE(std::abs(out.ky0[k] - b.k0.y), 1) << k;
+                    for (const float f : {out.fx[k], out.fy[k]}) {
+                        ASSERT_GE(f, 0.0f) << k;
+                        ASSERT_LT(f, 1.0f) << k;
+                    }
                     ASSERT_EQ(out.kx1[k], std::min(out.kx0[k] + 1, levels - 1)) << k;
                     ASSERT_EQ(out.ky1[k], std::min(out.ky0[k] + 1, levels - 1)) << k;
+                    // On a level (σ = 0, 2^j/256, past the top) exactly the
+                    // kernel's: a lookup there reads one layer.
+                    if (b.f.x == 0.0f) {
+                        ASSERT_TRUE(out.kx0[k] == b.k0.x && out.fx[k] == 0.0f) << k;
+                    }
+                    if (b.f.y == 0.0f) {
+                        ASSERT_TRUE(out.ky0[k] == b.k0.y && out.fy[k] == 0.0f) << k;
+                    }
                 }
                 // The taps in the sizes of the lanes' own layers.
                 const auto tap = [&](float x, int32_t n, int32_t i, float t) {

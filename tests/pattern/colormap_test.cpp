@@ -5,6 +5,7 @@
 
 #include "lane_targets.h"
 #include "stochtex/image/image.h"
+#include "stochtex/noise/tiling_blending_lanes.h"
 #include "stochtex/pattern/colormap.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
 #include "stochtex/pattern/presets.h"
@@ -254,7 +255,8 @@ TEST(PrefilteredColormap, ARowOfLookupsIsSamples) {
                 for (size_t k = 0; k < count; ++k) {
                     mx[k] = float(k) / float(count) * 1.2f - 0.1f;
                     my[k] = 0.5f + 0.45f * std::sin(0.3f * float(k));
-                    sx[k] = k % 7 == 0 ? 0.0f : 0.4f * float(k % 13) / 12.0f;
+                    // σ of 0, in the smooth mode's linear part (σ·256 < 1), at and between levels.
+                    sx[k] = k % 7 == 0 ? 0.0f : k % 7 == 1 ? float(k % 5) / 1280.0f : 0.4f * float(k % 13) / 12.0f;
                     sy[k] = k % 5 == 0 ? 0.0f : 0.6f * float(k % 11) / 10.0f;
                 }
                 if (count > 2) {  // NaN means and deviations read as the kernel reads them
@@ -263,7 +265,12 @@ TEST(PrefilteredColormap, ARowOfLookupsIsSamples) {
                 }
                 test::forEachLaneTarget([&](const char*) {
                     std::vector<float> rgb(count * 3, -1.0f);
-                    p.sampleRow(mx.data(), my.data(), sx.data(), sy.data(), rgb.data(), count);
+                    const size_t inLanes = p.sampleRow(mx.data(), my.data(), sx.data(), sy.data(), rgb.data(), count);
+                    // Gaussian axes in lanes (all but a row's last partial vector), Beta axes one at a time.
+                    if (beta[0] || beta[1])
+                        EXPECT_EQ(inLanes, 0u);
+                    else
+                        EXPECT_GE(inLanes + size_t(kMaxFloatLanes) - 1, count);
                     for (size_t k = 0; k < count; ++k) {
                         const Rgb c = p.sample(mx[k], my[k], sx[k], sy[k]);
                         for (size_t i = 0; i < 3; ++i) {

@@ -375,12 +375,16 @@ HWY_INLINE VF SigmaLevelCoordinate(DF df, VF sigma, bool paper, float top) {
         const auto c = hn::Min(hn::ConvertTo(df, exponent), hn::Set(df, top));
         return hn::IfThenElseZero(hn::And(positive, hn::Ge(y, hn::Set(df, 2.0f))), c);
     }
-    // Highway's log2 sees [1, 2^30] only: above 2^30 the coordinate is past
-    // every table's top, and the lanes at or below 1 (NaN and σ ≤ 0 too)
-    // take the linear part or 0 (it is not defined at +inf, 0 or below).
+    // 1 + log2(s256) as 1 + e + log2(m), s256 = m·2^e with m ∈ [1, 2) split
+    // off the float's bits: exact at the levels (m = 1), as std::log2 is,
+    // and within a few ulps of 1 elsewhere (Highway's log2, on [1, 2) only).
+    // Lanes at or below 1 (NaN and σ ≤ 0 too) take the linear part or 0;
+    // +inf reads the top (e = 128).
     const auto one = hn::Set(df, 1.0f);
-    const auto bounded = hn::IfThenElse(hn::Gt(s256, one), hn::Min(s256, hn::Set(df, 1073741824.0f)), one);
-    const auto logarithmic = hn::Add(one, hn::Log2(df, bounded));
+    const auto bits = hn::BitCast(du, s256);
+    const auto e = hn::Sub(hn::BitCast(di, hn::ShiftRight<23>(bits)), hn::Set(di, 127));
+    const auto m = hn::BitCast(df, hn::Or(hn::And(bits, hn::Set(du, 0x007fffffu)), hn::Set(du, 0x3f800000u)));
+    const auto logarithmic = hn::Add(hn::Add(one, hn::ConvertTo(df, e)), hn::Log2(df, m));
     const auto c = hn::IfThenElse(hn::Le(s256, one), s256, logarithmic);
     return hn::IfThenElseZero(positive, hn::Min(c, hn::Set(df, top)));
 }
@@ -479,6 +483,7 @@ void LayerTapsLanes::resize(size_t count) {
 size_t layerTapsLanes(const float* mx, const float* my, const float* sx, const float* sy, size_t count, bool paper,
                       int levels, const int32_t* widths, const int32_t* heights, LayerTapsLanes& out) {
     if (out.fx.size() < count) throw std::invalid_argument("layerTapsLanes: the output holds fewer pixels than count");
+    if (levels < 1) throw std::invalid_argument("layerTapsLanes: a table needs at least one level");
     return HWY_DYNAMIC_DISPATCH(LayerTapsImpl)(mx, my, sx, sy, count, paper, levels, widths, heights, out);
 }
 

@@ -76,10 +76,11 @@ struct LayerTapsLanes {
     std::vector<float> fx, fy, tx0, tx1, ty0, ty1;
 };
 // Fills whole vectors only and returns how many pixels it did (the caller
-// does the rest with the kernel). The smooth mode's log2 is Highway's
-// (≤ 2 ulp from std::log2), so a level weight may differ from the kernel's
-// by a few ulps; the paper mode's level is read off the float's exponent,
-// as the kernel does, and is the kernel's exactly.
+// does the rest with the kernel); levels ≥ 1. The paper mode's level is
+// read off the float's exponent, as the kernel does, and is the kernel's
+// exactly; the smooth mode's log2 takes the exponent from the float too
+// (exact at the levels) and the log2 of the mantissa from Highway, so a
+// level weight between levels may differ from the kernel's by a few ulps.
 size_t layerTapsLanes(const float* mx, const float* my, const float* sx, const float* sy, size_t count, bool paper,
                       int levels, const int32_t* widths, const int32_t* heights, LayerTapsLanes& out);
 

@@ -391,14 +391,15 @@ Rgb PrefilteredColormap::blend(const Lookup& l) const {
 
 Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const { return blend(find(mx, my, sx, sy)); }
 
-void PrefilteredColormap::sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
-                                    size_t count) const {
+size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
+                                      size_t count) const {
     constexpr size_t kAhead = 8;    // pixels between a lookup's prefetch and its blend
     constexpr size_t kChunk = 256;  // pixels whose layers and taps the lanes find at once
     const bool lanes = !beta_[0] && !beta_[1];
     LayerTapsLanes found;
     if (lanes) found.resize(kChunk);
     size_t chunkStart = 0, chunkDone = 0;  // pixels [chunkStart, chunkStart + chunkDone) are in `found`
+    size_t inLanes = 0;
     // Pixel k's lookup (k in order): from the lanes, or find where they did not reach.
     const auto lookupAt = [&](size_t k) {
         if (lanes && k % kChunk == 0) {
@@ -406,6 +407,7 @@ void PrefilteredColormap::sampleRow(const float* mx, const float* my, const floa
             chunkDone = layerTapsLanes(mx + k, my + k, sx + k, sy + k, std::min(kChunk, count - k),
                                        mode_ == PrefilterMode::Paper, int(sigmas_.size()), widths_.data(),
                                        heights_.data(), found);
+            inLanes += chunkDone;
         }
         if (!lanes || k - chunkStart >= chunkDone) return find(mx[k], my[k], sx[k], sy[k]);
         const size_t j = k - chunkStart;
@@ -437,6 +439,7 @@ void PrefilteredColormap::sampleRow(const float* mx, const float* my, const floa
             for (size_t i = 0; i < (l.single ? 1 : 4); ++i) l.layers[i]->prefetch(l.taps[i]);
         }
     }
+    return inLanes;
 }
 
 Image PrefilteredColormap::atlas(int rx, int ry) const {

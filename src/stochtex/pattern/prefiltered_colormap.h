@@ -68,7 +68,9 @@ public:
     // otherwise waits on memory one pixel at a time). On Gaussian axes
     // they are found in SIMD lanes (layerTapsLanes: the smooth mode's level
     // weights within a few ulps of sample's, the rest the same values).
-    void sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb, size_t count) const;
+    // Returns how many lookups the lanes found (the rest: one at a time).
+    size_t sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
+                     size_t count) const;
 
     // Every layer resampled to rx × ry entries (layers stored coarser are
     // smooth, so their bilinear resampling is far below a colour step),

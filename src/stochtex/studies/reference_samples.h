@@ -33,8 +33,8 @@ constexpr int kMaxSamplesPerAxis = 4096;
 // image. Every pixel gets n×n samples, whatever its extent (a zoom's
 // footprints are all alike; through a plane, the far pixels set n).
 ConvergedSamples convergedSamples(const GraphPattern& graph, FilterOptions options, const Camera& camera,
-                                  double tolerance, GraphMoments moments = GraphMoments::Matched, int probe = kConvergenceProbe,
-                                  PartCache* parts = nullptr);
+                                  double tolerance, GraphMoments moments = GraphMoments::Matched,
+                                  int probe = kConvergenceProbe, PartCache* parts = nullptr);
 
 // `options` at the count convergedSamples chooses (referenceMaxSamples is
 // the cap), and that count and its change in perAxis and change: what a
