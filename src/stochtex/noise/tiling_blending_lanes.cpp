@@ -409,22 +409,20 @@ size_t LayerTapsImpl(const float* mx, const float* my, const float* sx, const fl
         hn::StoreU(ky0, di, out.ky0.data() + k);
         hn::StoreU(kx1, di, out.kx1.data() + k);
         hn::StoreU(ky1, di, out.ky1.data() + k);
-        // The taps in the layers' sizes along each axis.
+        // The taps in the layers' sizes along each axis: a layer's entry
+        // count along it is sizes[level].
+        const auto tap = [&](const int32_t* sizes, VI level, VF value, int32_t* entry, float* weight) {
+            VI i;
+            VF t;
+            TableTapPerLane(df, hn::GatherIndex(di, sizes, level), value, i, t);
+            hn::StoreU(i, di, entry + k);
+            hn::StoreU(t, df, weight + k);
+        };
         const auto x = hn::LoadU(df, mx + k), y = hn::LoadU(df, my + k);
-        VI i;
-        VF t;
-        TableTapPerLane(df, hn::GatherIndex(di, widths, kx0), x, i, t);
-        hn::StoreU(i, di, out.ix0.data() + k);
-        hn::StoreU(t, df, out.tx0.data() + k);
-        TableTapPerLane(df, hn::GatherIndex(di, widths, kx1), x, i, t);
-        hn::StoreU(i, di, out.ix1.data() + k);
-        hn::StoreU(t, df, out.tx1.data() + k);
-        TableTapPerLane(df, hn::GatherIndex(di, heights, ky0), y, i, t);
-        hn::StoreU(i, di, out.iy0.data() + k);
-        hn::StoreU(t, df, out.ty0.data() + k);
-        TableTapPerLane(df, hn::GatherIndex(di, heights, ky1), y, i, t);
-        hn::StoreU(i, di, out.iy1.data() + k);
-        hn::StoreU(t, df, out.ty1.data() + k);
+        tap(widths, kx0, x, out.ix0.data(), out.tx0.data());
+        tap(widths, kx1, x, out.ix1.data(), out.tx1.data());
+        tap(heights, ky0, y, out.iy0.data(), out.ty0.data());
+        tap(heights, ky1, y, out.iy1.data(), out.ty1.data());
     }
     return k;
 }
