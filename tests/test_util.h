@@ -13,6 +13,8 @@
 #include "stochtex/core/error.h"
 #include "stochtex/image/image.h"
 #include "stochtex/noise/spectrum.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/pattern_spec.h"
 
 namespace stochtex::test {
 
@@ -66,6 +68,12 @@ inline SpectrumSpec spectrumSpec(SpectrumShape shape, double f, double b, double
 
 inline Image example(SpectrumShape shape, double f, double b, double theta, uint32_t seed, int size) {
     return synthesizeExample(spectrumSpec(shape, f, b, theta, seed, size));
+}
+
+// A pattern file's text as parsePatternSpec reads it: errors name the file
+// `name`, relative paths are against the working directory.
+inline PatternSpec parsePatternText(const std::string& text, const std::string& name = "g.json") {
+    return parsePatternSpec(JsonReader(JsonReader::parse(text, name), name), ".");
 }
 
 // The InputError that `f` throws; a test failure (and a placeholder error)

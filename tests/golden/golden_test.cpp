@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "stochtex/gpu/gl_context.h"
+#include "gl_test_context.h"
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/cpu_renderer.h"
@@ -90,11 +90,6 @@ const PatternSpec& spec(const std::string& preset) {
     const auto it = specs.find(preset);
     return it != specs.end() ? it->second : specs.emplace(preset, loadPreset(preset)).first->second;
 }
-GlContext& context() {
-    static std::unique_ptr<GlContext> ctx = GlContext::headless();
-    return *ctx;
-}
-
 // Zoomed out 4 texels per pixel (the filters differ there), or the ground
 // plane tilted 70° with 8 anisotropic probes (footprints of every shape).
 Image render(const GoldenCase& c) {
@@ -109,7 +104,7 @@ Image render(const GoldenCase& c) {
         camera.tiltDeg = 70;
         options.aniso = 8;
     }
-    if (c.gpu) return makeGpuView(spec(c.preset), context(), options)->render(camera);
+    if (c.gpu) return makeGpuView(spec(c.preset), test::glContext(), options)->render(camera);
     return makeCpuRenderer(spec(c.preset), options)->render(camera);
 }
 

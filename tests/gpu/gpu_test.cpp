@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "gl_test_context.h"
 #include "stochtex/core/error.h"
-#include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/scene_render.h"
@@ -32,11 +32,6 @@ namespace stochtex {
 namespace {
 
 namespace fs = std::filesystem;
-
-GlContext& context() {
-    static std::unique_ptr<GlContext> ctx = GlContext::headless();
-    return *ctx;
-}
 
 struct Difference {
     double mean = 0, outlierFraction = 0, max = 0;
@@ -74,7 +69,7 @@ FilterOptions unfilteredOptions() {
 void expectParity(const PatternSpec& spec, const Camera& camera, const std::string& what,
                   const FilterOptions& options = unfilteredOptions(), double allowedOutliers = 0.005,
                   GpuView::Pipeline pipeline = GpuView::Pipeline::Fragment) {
-    const std::unique_ptr<GpuView> gpu = makeGpuView(spec, context(), options);
+    const std::unique_ptr<GpuView> gpu = makeGpuView(spec, test::glContext(), options);
     gpu->setPipeline(pipeline);
     const Image cpu = makeCpuRenderer(spec, options)->render(camera);
     const Difference d = compare(gpu->render(camera), cpu);
@@ -92,7 +87,7 @@ void expectParity(const PatternSpec& spec, const View& view, const std::string& 
 }
 
 TEST(Gpu, HeadlessContextIsCore33OrNewer) {
-    context().makeCurrent();
+    test::glContext().makeCurrent();
     GLint major = 0, minor = 0, profile = 0;
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
@@ -104,13 +99,13 @@ TEST(Gpu, HeadlessContextIsCore33OrNewer) {
     EXPECT_EQ(profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT, 0) << "profile mask " << profile;
     EXPECT_TRUE(epoxy_is_desktop_gl());
     // The compute pipeline is offered exactly when the context has compute shaders.
-    EXPECT_EQ(context().hasCompute(), version >= 43);
+    EXPECT_EQ(test::glContext().hasCompute(), version >= 43);
     // The version string and describe() report the version the integers give.
     const std::string numbers = std::to_string(major) + "." + std::to_string(minor);
     const auto* glVersion = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     ASSERT_NE(glVersion, nullptr);
     EXPECT_EQ(std::string(glVersion).rfind(numbers, 0), 0u) << glVersion;
-    const std::string d = context().describe();
+    const std::string d = test::glContext().describe();
     EXPECT_NE(d.find("OpenGL " + numbers), std::string::npos) << d;
     std::printf("[ info ] %s\n", d.c_str());
 }
@@ -128,7 +123,7 @@ TEST(Gpu, CameraSourceOverTheGpuGivesTheCpuInstances) {
         camera.kind = kind;
         camera.view.scale = 1.5;
         camera.tiltDeg = 60;
-        const std::unique_ptr<GpuView> gpu = makeGpuView(pattern, context(), smooth);
+        const std::unique_ptr<GpuView> gpu = makeGpuView(pattern, test::glContext(), smooth);
         const std::unique_ptr<ViewRenderer> cpu = makeCpuRenderer(pattern, smooth);
         // One interface for both (pattern/view_renderer.h).
         const CameraSource onGpu(*gpu, camera), onCpu(*cpu, camera);
@@ -241,15 +236,15 @@ TEST(Gpu, AViewBuiltFromKeptPartsDrawsTheSameAndAnEditUploadsOnlyWhatItChanged) 
     v.height = 64;
     v.scale = 3.0;
     PartCache parts;
-    const Image first = makeGpuView(spec(), context(), o, &parts)->render(v);
-    EXPECT_TRUE(first.data() == makeGpuView(spec(), context(), o)->render(v).data());
+    const Image first = makeGpuView(spec(), test::glContext(), o, &parts)->render(v);
+    EXPECT_TRUE(first.data() == makeGpuView(spec(), test::glContext(), o)->render(v).data());
     const int uploads = parts.builds().attachments;
     EXPECT_EQ(uploads, 5);  // two examples, two pyramids, one prefiltered table
     parts.beginGeneration();
     j["colormap"]["shapes"][0]["colour"] = "#d02020";
-    const Image edited = makeGpuView(spec(), context(), o, &parts)->render(v);
+    const Image edited = makeGpuView(spec(), test::glContext(), o, &parts)->render(v);
     EXPECT_EQ(parts.builds().attachments, uploads + 1);
-    EXPECT_TRUE(edited.data() == makeGpuView(spec(), context(), o)->render(v).data());
+    EXPECT_TRUE(edited.data() == makeGpuView(spec(), test::glContext(), o)->render(v).data());
     EXPECT_FALSE(edited.data() == first.data());
 }
 
@@ -276,7 +271,7 @@ TEST(Gpu, PlaneViewMatchesTheCpu) {
             o.aniso = aniso;
             const std::string what = "plane " + std::to_string(int(tilt)) + "°, smooth, K = " + std::to_string(aniso);
             expectParity(p, c, what, o);
-            const std::unique_ptr<GpuView> gpu = makeGpuView(p, context(), o);
+            const std::unique_ptr<GpuView> gpu = makeGpuView(p, test::glContext(), o);
             gpu->setDerivatives(GpuView::Derivatives::Rasterizer);
             const Difference d = compare(gpu->render(c), makeCpuRenderer(p, o)->render(c));
             std::printf("[ info ] %s, rasterizer derivatives: mean %.2e, %.3f%% over 2/255\n", what.c_str(), d.mean,
@@ -308,8 +303,8 @@ TEST(Gpu, SceneShadesANormalMapWithTheLeanResponse) {
     smooth.use(parseFilter("smooth"));
     for (const char* name : {"sphere", "torus"}) {
         const Mesh mesh = makeObject(name);
-        const Image img = renderScene(*makeGpuView(lean, context(), o), mesh, SceneCamera{}, w, h, 4.0f);
-        const Image ref = renderScene(*makeGpuView(colour, context(), smooth), mesh, SceneCamera{}, w, h, 4.0f);
+        const Image img = renderScene(*makeGpuView(lean, test::glContext(), o), mesh, SceneCamera{}, w, h, 4.0f);
+        const Image ref = renderScene(*makeGpuView(colour, test::glContext(), smooth), mesh, SceneCamera{}, w, h, 4.0f);
         int coveredLean = 0, coveredColour = 0;
         float brightest = 0;
         bool finite = true;
@@ -331,7 +326,8 @@ TEST(Gpu, SceneShadesANormalMapWithTheLeanResponse) {
         EXPECT_GT(brightest, 0.3f) << name;  // measured 0.42 (sphere), 0.35 (torus)
         FilterOptions noCov = o;
         noCov.response.covariance = false;
-        EXPECT_NE(renderScene(*makeGpuView(lean, context(), noCov), mesh, SceneCamera{}, w, h, 4.0f).data(), img.data())
+        EXPECT_NE(renderScene(*makeGpuView(lean, test::glContext(), noCov), mesh, SceneCamera{}, w, h, 4.0f).data(),
+                  img.data())
             << name;
     }
 }
@@ -339,7 +335,7 @@ TEST(Gpu, SceneShadesANormalMapWithTheLeanResponse) {
 // The compute kernel runs the same GLSL functions: same tolerance, zoom and
 // plane, filtered (K = 1 and 8) and unfiltered. Skipped below OpenGL 4.3.
 TEST(Gpu, ComputeKernelMatchesTheCpu) {
-    if (!context().hasCompute()) GTEST_SKIP() << "no OpenGL 4.3: " << context().describe();
+    if (!test::glContext().hasCompute()) GTEST_SKIP() << "no OpenGL 4.3: " << test::glContext().describe();
     const auto compute = GpuView::Pipeline::Compute;
     const PatternSpec p = loadPreset("camouflage");
     Camera c;
@@ -356,7 +352,7 @@ TEST(Gpu, ComputeKernelMatchesTheCpu) {
     o.use(parseFilter("smooth"));
     o.aniso = 8;
     expectParity(p, c, "compute, plane 70°, smooth, K = 8", o, 0.005, compute);
-    const std::unique_ptr<GpuView> gpu = makeGpuView(p, context(), o);
+    const std::unique_ptr<GpuView> gpu = makeGpuView(p, test::glContext(), o);
     gpu->setPipeline(compute);
     EXPECT_THROW(gpu->setDerivatives(GpuView::Derivatives::Rasterizer), InputError);
 }
@@ -415,7 +411,7 @@ TEST(Gpu, GraphPatternMatchesTheCpu) {
 // prefiltered tables, against the CPU evaluator (pattern/graph_pattern.h).
 void expectGraphParity(const GraphPattern& g, const Camera& camera, const FilterOptions& o, const std::string& what,
                        double meanLimit, double allowedOutliers, GraphMoments moments = GraphMoments::Matched) {
-    GpuGraph gpu(g, context(), o, moments);
+    GpuGraph gpu(g, test::glContext(), o, moments);
     const Difference d = compare(gpu.render(camera), FilteredGraph(g, o, moments).render(camera));
     std::printf("[ info ] %s: mean |GPU - CPU| %.2e, max %.2e, %.3f%% of pixels over 2/255\n", what.c_str(), d.mean,
                 d.max, 100.0 * d.outlierFraction);
@@ -486,7 +482,7 @@ TEST(Gpu, PlainPatternProgramsMatchTheCpu) {
                 o.use(parseFilter(filter));
                 o.aniso = std::string(filter) == "paper" ? 1 : 8;
                 o.response.kind = response;
-                const std::unique_ptr<GpuView> gpu = makeGpuView(spec, context(), o);
+                const std::unique_ptr<GpuView> gpu = makeGpuView(spec, test::glContext(), o);
                 const GraphPattern g = GraphPattern::build(spec, o.response);
                 const FilteredGraph cpu(g, o);  // holds a reference to g
                 Camera zoom, plane;
@@ -608,8 +604,8 @@ TEST(Gpu, TextureGraphWithEveryOperationMatchesTheCpu) {
             R"(", "y": "a", "colormap": {"type": "gaussian"}}}, "output": "c"})";
     const GraphPattern big =
         GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(many, "many"), "many"), "."));
-    EXPECT_NO_THROW({ const GpuGraph unfiltered(big, context(), unfilteredOptions()); });  // 1 leaf + 10 tables
-    const std::string e = test::inputErrorOf([&] { const GpuGraph filtered(big, context(), o); }).what();
+    EXPECT_NO_THROW({ const GpuGraph unfiltered(big, test::glContext(), unfilteredOptions()); });  // 1 leaf + 10 tables
+    const std::string e = test::inputErrorOf([&] { const GpuGraph filtered(big, test::glContext(), o); }).what();
     EXPECT_NE(e.find("reads 22 textures filtered, more than the 16 units"), std::string::npos) << e;
     fs::remove_all(dir);
 }
@@ -694,7 +690,7 @@ TEST(Gpu, SceneRendersObjectsInEveryFilterMode) {
                 const std::string what = std::string(preset) + " on a " + name + ", filter " + mode;
                 FilterOptions o;
                 o.use(parseFilter(mode));
-                const std::unique_ptr<GpuView> gpu = makeGpuView(loadPreset(preset), context(), o);
+                const std::unique_ptr<GpuView> gpu = makeGpuView(loadPreset(preset), test::glContext(), o);
                 const Image img = renderScene(*gpu, makeObject(name), SceneCamera{}, w, h, 4.0f);
                 ASSERT_EQ(img.width(), w);
                 ASSERT_EQ(img.height(), h);
@@ -725,7 +721,7 @@ TEST(Gpu, SceneRendersObjectsInEveryFilterMode) {
             EXPECT_NEAR(coverage["none"], coverage["smooth"], c.silhouette) << preset << " on a " << name;
             EXPECT_NEAR(coverage["paper"], coverage["smooth"], c.silhouette) << preset << " on a " << name;
         }
-    const std::unique_ptr<GpuView> gpu = makeGpuView(loadPreset("weld"), context(), FilterOptions{});
+    const std::unique_ptr<GpuView> gpu = makeGpuView(loadPreset("weld"), test::glContext(), FilterOptions{});
     EXPECT_EQ(test::inputErrorOf([] { makeObject("cube"); }).parameter(), "object");
     EXPECT_EQ(
         test::inputErrorOf([&] { renderScene(*gpu, makeObject("sphere"), SceneCamera{}, 16, 16, -1.0f); }).parameter(),
@@ -733,7 +729,7 @@ TEST(Gpu, SceneRendersObjectsInEveryFilterMode) {
 }
 
 TEST(Gpu, BrokenShaderReportsFileAndLine) {
-    context();
+    test::glContext();
     try {
         compileProgram({"fullscreen"}, {"common", "view", "pattern"},
                        {{"pattern", "void main() {\n  float x = 1.0;\n  undefined_call(x);\n}\n"}});
@@ -747,7 +743,7 @@ TEST(Gpu, BrokenShaderReportsFileAndLine) {
 // A user's GLSL file (not embedded) compiles after the embedded chunks it
 // names, and its errors name the file and the line.
 TEST(Gpu, UserShaderFileErrorsNameTheFileAndLine) {
-    context();
+    test::glContext();
     const fs::path file = fs::temp_directory_path() / "stochtex_user_shader.frag";
     std::ofstream(file) << "out vec4 colour;\nvoid main() {\n  colour = vec4(unitFloat(pcg3d(uvec3(1u)).x));\n"
                            "  colour += missing_function();\n}\n";

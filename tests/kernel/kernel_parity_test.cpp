@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "stochtex/gpu/gl_context.h"
+#include "gl_test_context.h"
 #include "stochtex/gpu/gl_objects.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/kernel/camera.h"
@@ -44,11 +44,6 @@ namespace {
 using namespace kernel;
 
 constexpr int kItems = 1 << 14;  // random inputs per function
-
-GlContext& context() {
-    static std::unique_ptr<GlContext> ctx = GlContext::headless();
-    return *ctx;
-}
 
 // Runs `body` (GLSL) once per item in a compute shader after the kernel
 // files `chunks`. Each item reads `inWords` uvec4 words (word(k), wordf(k))
@@ -147,7 +142,7 @@ std::string closeLog(float g, float c, int units, const char* what) {
 class KernelParity : public ::testing::Test {
 protected:
     void SetUp() override {
-        if (!context().hasCompute()) GTEST_SKIP() << "no OpenGL 4.3 compute: " << context().describe();
+        if (!test::glContext().hasCompute()) GTEST_SKIP() << "no OpenGL 4.3 compute: " << test::glContext().describe();
     }
 };
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "stochtex/gpu/gl_context.h"
+#include "gl_test_context.h"
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/shader.h"
@@ -20,11 +20,6 @@
 
 namespace stochtex {
 namespace {
-
-GlContext& context() {
-    static std::unique_ptr<GlContext> ctx = GlContext::headless();
-    return *ctx;
-}
 
 // A member of the block as GL lays it out.
 struct GlMember {
@@ -66,11 +61,11 @@ std::map<std::string, GlMember> blockMembers(GLuint program, GLint& dataSize) {
 }
 
 TEST(KernelPatternParams, CppOffsetsMatchTheStd140LayoutOfEveryProgram) {
-    context().makeCurrent();
+    test::glContext().makeCurrent();
     int programs = 0;
     for (const ProgramRecipe& r : programRecipes()) {
         if (r.kind == ProgramRecipe::Kind::Include) continue;
-        if (r.kind == ProgramRecipe::Kind::Compute && !context().hasCompute()) continue;
+        if (r.kind == ProgramRecipe::Kind::Compute && !test::glContext().hasCompute()) continue;
         // Programs without the pattern (the window's "display") declare no block.
         const std::vector<std::string> chunks = shaderChunks(r.main);
         if (std::find(chunks.begin(), chunks.end(), "pattern_params") == chunks.end()) continue;

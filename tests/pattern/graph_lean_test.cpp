@@ -18,11 +18,6 @@
 namespace stochtex {
 namespace {
 
-PatternSpec parse(const std::string& text) {
-    const auto j = JsonReader::parse(text, "g.json");
-    return parsePatternSpec(JsonReader(j, "g.json"), ".");
-}
-
 // Ridges across 30° (a bi-lobe height spectrum, as the lean-ridges preset),
 // so the two slopes are strongly correlated; the albedo is a colormap of
 // the height itself, so it must see the height's tiles.
@@ -76,7 +71,7 @@ TEST(GraphOps, LeanOpIsTheKernelsLobeLit) {
 // slopes (scaled to the RMS amplitude) on the height's tiles, with the
 // albedo's colour at the same point.
 TEST(GraphPattern, LeanNodeShadesTheHeightsSlopesOnItsTiles) {
-    const PatternSpec spec = parse(ridges());
+    const PatternSpec spec = test::parsePatternText(ridges());
     const GraphPattern g = GraphPattern::build(spec);
     ASSERT_EQ(g.leafCount(), 3);
     EXPECT_EQ(g.leafIds()[1], "shaded.slope_u");
@@ -120,8 +115,8 @@ TEST(GraphPattern, LeanNodeShadesTheHeightsSlopesOnItsTiles) {
 // better than the point shading, and without the covariance the lobe
 // spreads along the horizon (the ridges' slopes are strongly correlated).
 TEST(GraphPattern, LeanNodeFilteredFollowsTheReferenceAndNeedsTheCovariance) {
-    const GraphPattern g = GraphPattern::build(parse(ridges()));
-    const GraphPattern noCov = GraphPattern::build(parse(ridges(R"(, "covariance": false)")));
+    const GraphPattern g = GraphPattern::build(test::parsePatternText(ridges()));
+    const GraphPattern noCov = GraphPattern::build(test::parsePatternText(ridges(R"(, "covariance": false)")));
     EXPECT_FALSE(noCov.pairCovariance(1));
     FilterOptions unfiltered, smooth, exact, reference;
     unfiltered.use(parseFilter("none"));
@@ -152,7 +147,7 @@ TEST(GraphPattern, LeanNodeFilteredFollowsTheReferenceAndNeedsTheCovariance) {
 
 std::string buildError(const std::string& text) {
     try {
-        (void)GraphPattern::build(parse(text));
+        (void)GraphPattern::build(test::parsePatternText(text));
     } catch (const InputError& e) {
         return e.what();
     }

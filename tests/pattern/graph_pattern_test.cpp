@@ -27,15 +27,10 @@
 namespace stochtex {
 namespace {
 
-PatternSpec parse(const std::string& text) {
-    const auto j = JsonReader::parse(text, "g.json");
-    return parsePatternSpec(JsonReader(j, "g.json"), ".");
-}
-
-const std::string kNoise =
+const std::string kSeededNoise =
     R"({"type": "spectral_noise", "size": 64, "seed": 3, "components": [{"shape": "lowpass", "cutoff": 4}]})";
 
-std::string graph(const std::string& nodes, const std::string& output = "c") {
+std::string seededGraph(const std::string& nodes, const std::string& output = "c") {
     return R"({"size": 32, "seed": 9, "nodes": {)" + nodes + R"(}, "output": ")" + output + R"("})";
 }
 
@@ -155,11 +150,11 @@ std::vector<double> errorsToTheReference(const GraphPattern& g, const Camera& ca
 }
 
 TEST(GraphPattern, ProductFiltersTowardsTheReference) {
-    const std::string nodes = R"("a": )" + kNoise + R"(,
+    const std::string nodes = R"("a": )" + kSeededNoise + R"(,
         "b": {"type": "spectral_noise", "size": 64, "seed": 8, "components": [{"shape": "ring", "frequency": 5, "bandwidth": 2}]},
         "p": {"type": "product", "a": "a", "b": "b", "scale": 2},
         "c": {"type": "compose", "r": "p", "g": "p", "b": "p"})";
-    const GraphPattern g = GraphPattern::build(parse(graph(nodes)));
+    const GraphPattern g = GraphPattern::build(test::parsePatternText(seededGraph(nodes)));
     Camera cam;
     cam.view = {24, 24, 12.0, 3.0, 41.0};
     const std::vector<double> e = errorsToTheReference(g, cam, {"none", "exact", "smooth"});
@@ -176,10 +171,10 @@ TEST(GraphPattern, ProductFiltersTowardsTheReference) {
 // input, and filtered by moment matching its blots' soft edges come out
 // closer to the supersampled reference than the point samples do.
 TEST(GraphPattern, ThresholdIsTheSmoothstepOfItsInputAndFiltersTowardsTheReference) {
-    const std::string nodes = R"("a": )" + kNoise + R"(,
+    const std::string nodes = R"("a": )" + kSeededNoise + R"(,
         "t": {"type": "threshold", "input": "a", "edge": 0.55, "width": 0.1},
         "c": {"type": "compose", "r": "t", "g": "a", "b": "t"})";
-    const GraphPattern g = GraphPattern::build(parse(graph(nodes)));
+    const GraphPattern g = GraphPattern::build(test::parsePatternText(seededGraph(nodes)));
     const View view{24, 24, 2.0, 5.0, 7.0};
     const Image out = g.render(view), in = g.renderNode(view, "a");
     for (int y = 0; y < 24; ++y)
@@ -208,19 +203,19 @@ TEST(GraphPattern, PlainFileAndItsGraphSpellingAreOneProgram) {
     for (const char* offsets : {"independent", "shared"}) {
         SCOPED_TRACE(offsets);
         const std::string head = R"({"seed": 4, "offsets": ")" + std::string(offsets) + R"(", )";
-        const GraphPattern plain = GraphPattern::build(parse(head + R"(
+        const GraphPattern plain = GraphPattern::build(test::parsePatternText(head + R"(
             "noise_x": {"type": "spectrum", "size": 64, )" + noiseX +
-                                                             R"(},
+                                                                              R"(},
             "noise_y": {"type": "spectrum", "size": 64, )" + noiseY +
-                                                             R"(},
+                                                                              R"(},
             "colormap": )" + colormap + "}"));
-        const GraphPattern spelt = GraphPattern::build(parse(head + R"("nodes": {
+        const GraphPattern spelt = GraphPattern::build(test::parsePatternText(head + R"("nodes": {
             "a": {"type": "spectral_noise", "size": 64, )" + noiseX +
-                                                             R"(},
+                                                                              R"(},
             "b": {"type": "spectral_noise", "size": 64, )" + noiseY +
-                                                             R"(},
-            "c": {"type": "colormap", "x": "a", "y": "b", "colormap": )" +
-                                                             colormap + R"(}}, "output": "c"})"));
+                                                                              R"(},
+            "c": {"type": "colormap", "x": "a", "y": "b", "colormap": )" + colormap +
+                                                                              R"(}}, "output": "c"})"));
         ASSERT_NE(plain.plainColormap(), nullptr);
         ASSERT_NE(spelt.plainColormap(), nullptr);
         const View view{48, 40, 1.7, 13.25, -40.5};
@@ -246,10 +241,10 @@ TEST(GraphPattern, PlainFileAndItsGraphSpellingAreOneProgram) {
                 EXPECT_EQ(a.skyColour(), b.skyColour()) << filter;
                 EXPECT_TRUE(identical(a.render(cam), b.render(cam))) << filter << (onPlane ? ", plane" : ", zoom");
             }
-        const GraphPattern derivative = GraphPattern::build(parse(
+        const GraphPattern derivative = GraphPattern::build(test::parsePatternText(
             head + R"("nodes": {
             "h": )" +
-            kNoise +
+            kSeededNoise +
             R"(, "n": {"type": "spectral_noise", "size": 64, "components": [{"shape": "ring", "frequency": 6, "bandwidth": 2}]},
             "d": {"type": "derivative", "input": "h", "angle": 30},
             "c": {"type": "colormap", "x": "d", "y": "n", "colormap": )" +
@@ -264,7 +259,8 @@ TEST(GraphPattern, PlainFileAndItsGraphSpellingAreOneProgram) {
 // for bit: the render against evaluate(u, v) per pixel, and the filtered
 // shade against the program on the estimators' moments (fromMoments).
 TEST(GraphPattern, PlainProgramShortcutIsTheInterpreterBitForBit) {
-    const PatternSpec s = parse(graph(R"("x": )" + kNoise + R"(, "y": {"type": "spectral_noise", "size": 64,
+    const PatternSpec s =
+        test::parsePatternText(seededGraph(R"("x": )" + kSeededNoise + R"(, "y": {"type": "spectral_noise", "size": 64,
         "components": [{"shape": "ring", "frequency": 6, "bandwidth": 2}]},
         "c": {"type": "colormap", "x": "x", "y": "y", "colormap": {"type": "phasor", "profile": "sine"}})"));
     const GraphPattern g = GraphPattern::build(s);
@@ -304,7 +300,7 @@ TEST(GraphPattern, PlainProgramShortcutIsTheInterpreterBitForBit) {
         EXPECT_GT(shaded, 50);
     }
     // A colormap reading one node twice is no plain program: its one leaf is tiled once.
-    EXPECT_EQ(GraphPattern::build(parse(graph(R"("x": )" + kNoise + R"(,
+    EXPECT_EQ(GraphPattern::build(test::parsePatternText(seededGraph(R"("x": )" + kSeededNoise + R"(,
         "c": {"type": "colormap", "x": "x", "y": "x", "colormap": {"type": "gaussian"}})")))
                   .plainColormap(),
               nullptr);
@@ -325,7 +321,7 @@ TEST(GraphPattern, EachOperationComputesItsFormulaOnItsInputs) {
         }
     writeImage(ramp.string(), h);
     const std::string image = R"({"type": "image", "path": ")" + ramp.string() + R"("})";
-    const std::string nodes = R"("a": )" + kNoise + R"(,
+    const std::string nodes = R"("a": )" + kSeededNoise + R"(,
         "b": {"type": "spectral_noise", "size": 64, "seed": 8, "stddev": 0.1, "components": [{"shape": "lowpass", "cutoff": 3}]},
         "up": {"type": "curve", "input": "a", "points": [[0, 0], [1, 1]]},
         "down": {"type": "curve", "input": "a", "points": [[0, 0.9], [0.5, 0.1], [1, 0.3]], "resolution": 1024},
@@ -340,7 +336,7 @@ TEST(GraphPattern, EachOperationComputesItsFormulaOnItsInputs) {
         "red": {"type": "colormap", "x": "sm", "y": "green", "colormap": {"type": "painted", "background": [1, 0, 0], "shapes": []}},
         "navy": {"type": "colormap", "x": "up", "y": "blue", "colormap": {"type": "painted", "background": [0, 0, 1], "shapes": []}},
         "c": {"type": "mix", "a": "red", "b": "navy", "t": "sm"})";
-    const GraphPattern g = GraphPattern::build(parse(graph(nodes)));
+    const GraphPattern g = GraphPattern::build(test::parsePatternText(seededGraph(nodes)));
     std::filesystem::remove(ramp);
     const View view{24, 24, 2.0, 5.0, 7.0};
     const auto field = [&](const char* id) { return g.renderNode(view, id); };
@@ -384,13 +380,15 @@ TEST(GraphPattern, TransformSeesItsInputThroughTheMappedUv) {
         R"("n": {"type": "spectral_noise", "size": 64, "seed": 4, "components": [{"shape": "bilobe", "frequency": 6, "bandwidth": 2, "orientation": 20}]},
         "k": {"type": "curve", "input": "f", "points": [[0, 0], [0.5, 1], [1, 0.2]]},
         "c": {"type": "colormap", "x": "k", "y": "f", "colormap": {"type": "phasor", "profile": "sine"}})";
-    const GraphPattern plain = GraphPattern::build(parse(graph(head + R"(, "f": {"type": "affine", "input": "n"})")));
-    const GraphPattern turned = GraphPattern::build(parse(graph(
+    const GraphPattern plain =
+        GraphPattern::build(test::parsePatternText(seededGraph(head + R"(, "f": {"type": "affine", "input": "n"})")));
+    const GraphPattern turned = GraphPattern::build(test::parsePatternText(seededGraph(
         head +
         R"(, "f": {"type": "transform", "input": "n", "angle": 90, "scale": 2, "offset_u": 0.25, "offset_v": -3})")));
     // A transformed leaf is no plain program: the plain loop reads one pair through no transform.
     EXPECT_EQ(
-        GraphPattern::build(parse(graph(R"("n": )" + kNoise + R"(, "f": {"type": "transform", "input": "n", "scale": 2},
+        GraphPattern::build(test::parsePatternText(seededGraph(
+                                R"("n": )" + kSeededNoise + R"(, "f": {"type": "transform", "input": "n", "scale": 2},
         "c": {"type": "colormap", "x": "f", "y": "n", "colormap": {"type": "gaussian"}})")))
             .plainColormap(),
         nullptr);
@@ -404,8 +402,8 @@ TEST(GraphPattern, TransformSeesItsInputThroughTheMappedUv) {
     }
     EXPECT_LT(worst, 1e-5);
     // Filtered: scale only, so the views are the same region of the input.
-    const GraphPattern zoomed =
-        GraphPattern::build(parse(graph(head + R"(, "f": {"type": "transform", "input": "n", "scale": 2})")));
+    const GraphPattern zoomed = GraphPattern::build(
+        test::parsePatternText(seededGraph(head + R"(, "f": {"type": "transform", "input": "n", "scale": 2})")));
     FilterOptions o;
     o.use(parseFilter("smooth"));
     Camera near, far;
@@ -416,16 +414,17 @@ TEST(GraphPattern, TransformSeesItsInputThroughTheMappedUv) {
     // A derivative of a transformed field, and a sum over two transforms, are refused.
     const auto error = [](const std::string& text) -> std::string {
         try {
-            (void)GraphPattern::build(parse(text));
+            (void)GraphPattern::build(test::parsePatternText(text));
         } catch (const InputError& err) {
             return err.what();
         }
         return "(no error)";
     };
-    std::string m = error(graph(R"("n": )" + kNoise + R"(, "f": {"type": "transform", "input": "n", "angle": 30},
+    std::string m =
+        error(seededGraph(R"("n": )" + kSeededNoise + R"(, "f": {"type": "transform", "input": "n", "angle": 30},
         "d": {"type": "derivative", "input": "f"}, "c": {"type": "colormap", "x": "d", "y": "n", "colormap": {"type": "gaussian"}})"));
     EXPECT_NE(m.find("node \"d\" (derivative): its input is seen through a transform of uv"), std::string::npos) << m;
-    m = error(graph(R"("n": )" + kNoise + R"(, "f": {"type": "transform", "input": "n", "angle": 30},
+    m = error(seededGraph(R"("n": )" + kSeededNoise + R"(, "f": {"type": "transform", "input": "n", "angle": 30},
         "s": {"type": "sum", "a": "f", "b": "n"}, "c": {"type": "colormap", "x": "s", "y": "n", "colormap": {"type": "gaussian"}})"));
     EXPECT_NE(m.find("node \"s\" (sum): its inputs are seen through different transforms"), std::string::npos) << m;
 }
@@ -451,11 +450,11 @@ TEST(GraphPattern, MomentsThroughCurvesMatchTheExpectations) {
     const std::string shades =
         R"("black": {"type": "colormap", "x": "a", "y": "a", "colormap": {"type": "painted", "background": [0, 0, 0], "shapes": []}},
         "white": {"type": "colormap", "x": "a", "y": "a", "colormap": {"type": "painted", "background": [1, 1, 1], "shapes": []}},)";
-    const GraphPattern once =
-        GraphPattern::build(parse(graph(R"("a": )" + kNoise + ", " + shades + R"("sq": )" + square + R"("a"},
+    const GraphPattern once = GraphPattern::build(
+        test::parsePatternText(seededGraph(R"("a": )" + kSeededNoise + ", " + shades + R"("sq": )" + square + R"("a"},
         "c": {"type": "mix", "a": "black", "b": "white", "t": "sq"})")));
-    const GraphPattern twice = GraphPattern::build(
-        parse(graph(R"("a": )" + kNoise + ", " + shades + R"("sq": )" + square + R"("a"}, "sq2": )" + square + R"("sq"},
+    const GraphPattern twice = GraphPattern::build(test::parsePatternText(seededGraph(
+        R"("a": )" + kSeededNoise + ", " + shades + R"("sq": )" + square + R"("a"}, "sq2": )" + square + R"("sq"},
         "c": {"type": "mix", "a": "black", "b": "white", "t": "sq2"})")));
     FilterOptions o;
     o.use(parseFilter("smooth"));
@@ -483,10 +482,10 @@ TEST(GraphPattern, ATableReadsAnOpsFieldWithinZeroOneAsABetaAndALeafAsAGaussian)
     // A field's range decides, through affine ops: within [0, 1] a Beta,
     // reaching 2 a Gaussian.
     for (const auto& [scale, want] : {std::pair{"0.5", true}, {"2", false}}) {
-        const GraphPattern h = GraphPattern::build(
-            parse(graph(R"("a": )" + kNoise + R"(, "k": {"type": "curve", "input": "a", "points": [[0, 0.2], [1, 0.9]]},
+        const GraphPattern h = GraphPattern::build(test::parsePatternText(seededGraph(
+            R"("a": )" + kSeededNoise + R"(, "k": {"type": "curve", "input": "a", "points": [[0, 0.2], [1, 0.9]]},
             "f": {"type": "affine", "input": "k", "scale": )" +
-                        std::string(scale) + R"(, "offset": 0.05},
+            std::string(scale) + R"(, "offset": 0.05},
             "c": {"type": "colormap", "x": "f", "y": "a", "colormap": {"type": "gaussian"}})")));
         const GraphPattern::Operation& c = h.operations().back();
         EXPECT_EQ(h.tables()[size_t(c.table)].beta, (BetaAxes{want, false})) << "scale " << scale;
@@ -548,7 +547,7 @@ std::string buildError(const std::string& text, ResponseKind response = Response
     try {
         FilterOptions o;
         o.response.kind = response;
-        const GraphPattern g = GraphPattern::build(parse(text), o.response);
+        const GraphPattern g = GraphPattern::build(test::parsePatternText(text), o.response);
         FilteredGraph f(g, o);
     } catch (const InputError& e) {
         return e.what();
@@ -558,18 +557,19 @@ std::string buildError(const std::string& text, ResponseKind response = Response
 
 TEST(GraphPattern, RefusesWhatItCannotEvaluateNamingTheNode) {
     const std::string curve =
-        R"("a": )" + kNoise + R"(, "k": {"type": "curve", "input": "a", "points": [[0, 1], [1, 0]]},)";
-    std::string e = buildError(graph(curve + R"( "d": {"type": "derivative", "input": "k"},
+        R"("a": )" + kSeededNoise + R"(, "k": {"type": "curve", "input": "a", "points": [[0, 1], [1, 0]]},)";
+    std::string e = buildError(seededGraph(curve + R"( "d": {"type": "derivative", "input": "k"},
         "c": {"type": "colormap", "x": "d", "y": "a", "colormap": {"type": "gaussian"}})"));
     EXPECT_NE(e.find("node \"d\" (derivative): its input \"k\" is not linear in the sources"), std::string::npos) << e;
-    e = buildError(graph(curve + R"( "t": {"type": "transform", "input": "k", "scale": 2},
+    e = buildError(seededGraph(curve + R"( "t": {"type": "transform", "input": "k", "scale": 2},
         "c": {"type": "colormap", "x": "t", "y": "a", "colormap": {"type": "gaussian"}})"));
     EXPECT_NE(e.find("node \"t\" (transform): its input \"k\" is not linear in the sources, so it has no example for a "
                      "transform node to read"),
               std::string::npos)
         << e;
-    e = buildError(graph(curve + R"( "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}})"),
-                   ResponseKind::Lean);
+    e = buildError(
+        seededGraph(curve + R"( "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}})"),
+        ResponseKind::Lean);
     EXPECT_NE(e.find("response a texture graph shades through its own nodes"), std::string::npos) << e;
     // A Gaussianized exemplar only a table reads.
     const std::filesystem::path file = std::filesystem::temp_directory_path() / "stochtex_graph_exemplar.png";
@@ -577,17 +577,18 @@ TEST(GraphPattern, RefusesWhatItCannotEvaluateNamingTheNode) {
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 16; ++x) img.at(x, y) = float(0.5 + 0.3 * std::sin(0.7 * x + 0.4 * y));
     writeImage(file.string(), img, WriteOptions{.transfer = Transfer::Linear});
-    e = buildError(graph(R"("x": {"type": "exemplar", "path": ")" + file.string() + R"("}, "a": )" + kNoise + R"(,
+    e = buildError(
+        seededGraph(R"("x": {"type": "exemplar", "path": ")" + file.string() + R"("}, "a": )" + kSeededNoise + R"(,
         "p": {"type": "colormap", "x": "a", "y": "a", "colormap": {"type": "gaussian"}},
         "c": {"type": "mix", "a": "p", "b": "p", "t": "x"})"));
     EXPECT_NE(e.find("node \"c\" (mix): its input \"x\" is a Gaussianized exemplar"), std::string::npos) << e;
     std::filesystem::remove(file);
     // A constant is no texture.
-    e = buildError(
-        graph(R"("k": {"type": "colour", "colour": "#ff8000"}, "c": {"type": "mix", "a": "k", "b": "k", "t": "k2"},
+    e = buildError(seededGraph(
+        R"("k": {"type": "colour", "colour": "#ff8000"}, "c": {"type": "mix", "a": "k", "b": "k", "t": "k2"},
         "k2": {"type": "colormap_field", "x": "n", "y": "n", "colormap": {"type": "gaussian"}}, "n": )" +
-                  kNoise,
-              "k"));
+            kSeededNoise,
+        "k"));
     EXPECT_NE(e.find("the output \"k\" reads no field"), std::string::npos) << e;
 }
 
@@ -595,7 +596,7 @@ TEST(GraphPattern, RefusesWhatItCannotEvaluateNamingTheNode) {
 // light, wherever and however filtered (its footprint mean is itself); a
 // colour that is none is refused at its JSON pointer.
 TEST(GraphPattern, ColourNodeIsItsLinearColourEverywhere) {
-    const GraphPattern g = GraphPattern::build(parse(graph(R"("a": )" + kNoise + R"(,
+    const GraphPattern g = GraphPattern::build(test::parsePatternText(seededGraph(R"("a": )" + kSeededNoise + R"(,
         "k": {"type": "colour", "colour": [1, 0.5, 0]},
         "c": {"type": "mix", "a": "k", "b": "k", "t": "a"})")));
     const Rgb expected{1.0f, linearFromSrgb(0.5f), 0.0f};
@@ -614,7 +615,8 @@ TEST(GraphPattern, ColourNodeIsItsLinearColourEverywhere) {
                 for (int c = 0; c < 3; ++c) ASSERT_NEAR(img.at(x, y, c), expected[size_t(c)], 1e-6) << filter;
     }
     try {
-        (void)parse(graph(R"("a": )" + kNoise + R"(, "k": {"type": "colour", "colour": "orange"},
+        (void)test::parsePatternText(
+            seededGraph(R"("a": )" + kSeededNoise + R"(, "k": {"type": "colour", "colour": "orange"},
             "c": {"type": "mix", "a": "k", "b": "k", "t": "a"})"));
         ADD_FAILURE() << "an invalid colour was accepted";
     } catch (const InputError& e) {
@@ -626,22 +628,22 @@ TEST(GraphPattern, ColourNodeIsItsLinearColourEverywhere) {
 TEST(GraphPattern, RefusesBadCurvesAndChoicesWithTheirJsonPointer) {
     const auto parseError = [](const std::string& text) -> std::string {
         try {
-            (void)parse(text);
+            (void)test::parsePatternText(text);
         } catch (const InputError& e) {
             return e.what();
         }
         return "(no error)";
     };
-    const std::string a = R"("a": )" + kNoise + ",";
+    const std::string a = R"("a": )" + kSeededNoise + ",";
     const std::string tail = R"(, "c": {"type": "colormap", "x": "k", "y": "a", "colormap": {"type": "gaussian"}})";
     std::string e = parseError(
-        graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0], [0.5, 1], [0.5, 0]]})" + tail));
+        seededGraph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0], [0.5, 1], [0.5, 0]]})" + tail));
     EXPECT_NE(e.find("/nodes/k/points/2/0: x must increase"), std::string::npos) << e;
-    e = parseError(graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0]]})" + tail));
+    e = parseError(seededGraph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0]]})" + tail));
     EXPECT_NE(e.find("/nodes/k/points: a curve needs 2 to 1024 points"), std::string::npos) << e;
-    e = parseError(graph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0], [1.5, 1]]})" + tail));
+    e = parseError(seededGraph(a + R"( "k": {"type": "curve", "input": "a", "points": [[0, 0], [1.5, 1]]})" + tail));
     EXPECT_NE(e.find("/nodes/k/points/1/0"), std::string::npos) << e;
-    e = parseError(graph(
+    e = parseError(seededGraph(
         a +
         R"( "k": {"type": "colormap_field", "x": "a", "y": "a", "channel": "alpha", "colormap": {"type": "gaussian"}})" +
         tail));

@@ -20,14 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-PatternSpec parse(const std::string& text) {
-    const auto j = JsonReader::parse(text, "g.json");
-    return parsePatternSpec(JsonReader(j, "g.json"), ".");
-}
-
 std::string parseError(const std::string& text) {
     try {
-        (void)GraphPattern::build(parse(text));
+        (void)GraphPattern::build(test::parsePatternText(text));
     } catch (const InputError& e) {
         return e.what();
     }
@@ -71,7 +66,7 @@ protected:
 // mean included), unfiltered and filtered; two tiled_field nodes of the same
 // file are two tilings, and the relation breaks (the test can fail).
 TEST_F(TiledFieldNode, ChannelsOfOneFieldShareTilesSoTheirRelationHolds) {
-    const GraphPattern g = GraphPattern::build(parse(graph(true)));
+    const GraphPattern g = GraphPattern::build(test::parsePatternText(graph(true)));
     ASSERT_EQ(g.leafCount(), 3);  // r, n, g: the noise between two channels of one field
     EXPECT_EQ(g.leaf(0).offsetSeed(), g.leaf(2).offsetSeed());
     EXPECT_NE(g.leaf(1).offsetSeed(), g.leaf(0).offsetSeed());
@@ -89,7 +84,7 @@ TEST_F(TiledFieldNode, ChannelsOfOneFieldShareTilesSoTheirRelationHolds) {
     cam.view.scale = 9.0;
     EXPECT_LT(maxDeviation(FilteredGraph(g, smooth).render(cam)), 1e-4);
 
-    const GraphPattern two = GraphPattern::build(parse(graph(false)));
+    const GraphPattern two = GraphPattern::build(test::parsePatternText(graph(false)));
     EXPECT_NE(two.leaf(0).offsetSeed(), two.leaf(2).offsetSeed());
     cam.view.scale = 1.7;
     EXPECT_GT(maxDeviation(two.render(cam.view)), 0.1);
@@ -110,7 +105,7 @@ TEST_F(TiledFieldNode, TransferDecodesColourChannelsButNotAlpha) {
                 "t": {"type": "tiled_field", "path": ")" + png + R"(", "gaussianize": false, "transfer": ")" + transfer + R"("},
                 "k": {"type": "channel", "field": "t", "index": )" + std::to_string(channel) + R"(},
                 "c": {"type": "colormap", "x": "k", "y": "k", "colormap": {"type": "gaussian"}}}, "output": "c"})";
-            const PatternSpec spec = parse(text);
+            const PatternSpec spec = test::parsePatternText(text);
             const NoiseExample e = buildGraphField(*spec.graph, "k", spec.seed, "g");
             const bool decoded = transfer != "linear" && channel < 3;
             double worst = 0;

@@ -17,10 +17,7 @@ using namespace stochtex;
 
 namespace {
 
-PatternSpec parse(const std::string& text) {
-    const auto j = JsonReader::parse(text, "test.json");
-    return parsePatternSpec(JsonReader(j, "test.json"), ".");
-}
+PatternSpec parse(const std::string& text) { return test::parsePatternText(text, "test.json"); }
 
 std::string errorOf(const std::string& text) {
     try {

@@ -16,18 +16,14 @@
 #include "stochtex/core/hash.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/presets.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
 
-PatternSpec parse(const std::string& text) {
-    const auto j = JsonReader::parse(text, "g.json");
-    return parsePatternSpec(JsonReader(j, "g.json"), ".");
-}
-
 std::string errorOf(const std::string& text) {
     try {
-        const PatternSpec s = parse(text);
+        const PatternSpec s = test::parsePatternText(text);
         (void)GraphPattern::build(s);
     } catch (const InputError& e) {
         return e.what();
@@ -42,7 +38,7 @@ std::string graph(const std::string& nodes, const std::string& output = "c") {
 }
 
 TEST(TextureGraph, ParsesNodesInDependencyOrder) {
-    const PatternSpec s = parse(graph(R"("a": )" + kNoise + R"(, "d": {"type": "derivative", "input": "a", "angle": 30},
+    const PatternSpec s = test::parsePatternText(graph(R"("a": )" + kNoise + R"(, "d": {"type": "derivative", "input": "a", "angle": 30},
         "c": {"type": "colormap", "x": "d", "y": "a", "colormap": {"type": "gaussian"}})"));
     ASSERT_TRUE(s.graph);
     ASSERT_EQ(s.graph->nodes.size(), 3u);
@@ -116,7 +112,7 @@ TEST(TextureGraph, GraphOfAPresetRendersByteIdenticalToIt) {
         "c": {"type": "colormap", "x": "nx", "y": "ny", "colormap": )" +
                              nlohmann::json::parse(presetText("camouflage"))["colormap"].dump() + R"(}}, "output": "c"})";
     const View view{96, 64, 1.7, 13.25, -40.5};
-    const Image a = GraphPattern::build(preset).render(view), b = GraphPattern::build(parse(text)).render(view);
+    const Image a = GraphPattern::build(preset).render(view), b = GraphPattern::build(test::parsePatternText(text)).render(view);
     ASSERT_EQ(a.data().size(), b.data().size());
     EXPECT_EQ(0, std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)));
 }
@@ -125,7 +121,7 @@ TEST(TextureGraph, GraphOfAPresetRendersByteIdenticalToIt) {
 // of the periodic example (second-order accurate, so close for a smooth
 // low-pass noise), after both are normalised.
 TEST(TextureGraph, DerivativeFoldsIntoTheExampleAsItsDirectionalDerivative) {
-    const PatternSpec s = parse(graph(R"("a": {"type": "spectral_noise", "size": 128, "seed": 5, "components": [{"shape": "lowpass", "cutoff": 6}]},
+    const PatternSpec s = test::parsePatternText(graph(R"("a": {"type": "spectral_noise", "size": 128, "seed": 5, "components": [{"shape": "lowpass", "cutoff": 6}]},
         "d": {"type": "derivative", "input": "a", "angle": 90, "mean": 0.4, "stddev": 0.1},
         "c": {"type": "colormap", "x": "d", "y": "a", "colormap": {"type": "gaussian"}})"));
     const NoiseExample base = buildGraphField(*s.graph, "a", s.seed, "g"), d = buildGraphField(*s.graph, "d", s.seed, "g");
@@ -178,7 +174,7 @@ TEST(TextureGraph, EveryNodeBuildsAndRendersInItsSampleGraph) {
         const std::string text = sampleNodeGraph(node, file.string()).dump();
         try {
             // GraphPattern evaluates any graph (a folding one as the plain program).
-            const GraphPattern p = GraphPattern::build(parse(text));
+            const GraphPattern p = GraphPattern::build(test::parsePatternText(text));
             const Image out = p.render(View{32, 32, 1.0});
             double lo = 1e9, hi = -1e9;
             for (float v : out.data()) lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
@@ -198,7 +194,7 @@ TEST(TextureGraph, SharedInputsAreBuiltOnceSoDeepDiamondsStayLinear) {
         nodes += ", \"s" + std::to_string(i) + "\": {\"type\": \"sum\", \"a\": \"s" + std::to_string(i - 1) +
                  "\", \"b\": \"s" + std::to_string(i - 1) + "\"}";
     nodes += R"(, "c": {"type": "colormap", "x": "s200", "y": "s0", "colormap": {"type": "gaussian"}})";
-    const PatternSpec s = parse(graph(nodes));
+    const PatternSpec s = test::parsePatternText(graph(nodes));
     const NoiseExample e = buildGraphField(*s.graph, "s200", s.seed, "g");  // 0.5·a + 0.5·b of equal inputs: s0 itself
     const NoiseExample base = buildGraphField(*s.graph, "s0", s.seed, "g");
     for (size_t i = 0; i < e.values().data().size(); ++i)
