@@ -14,6 +14,7 @@
 //                  data; every estimator should beat it).
 // Both components of N are measured and pooled (2 values per footprint).
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,37 @@ struct EstimatorError {
 // InputError for a count outside [1, 1e6] or footprints outside
 // [1, 4·exampleSize].
 void validateEstimatorErrorOptions(const EstimatorErrorOptions& options, int exampleSize);
+
+// The per-footprint terms of those errors, for footprints split across
+// processes (a Dask cluster, stochtex/dask.py): footprint k of size s depends
+// only on (k, s, options.seed), so the terms of footprints [first, first +
+// count) can be measured anywhere, and summarizeEstimatorErrors over all of
+// them in index order gives exactly measureEstimatorErrors' rows.
+class EstimatorErrorSampler {
+public:
+    // InputError for unusable options (validateEstimatorErrorOptions) or
+    // examples that are not power-of-two sized; std::invalid_argument for a
+    // field without two channels.
+    EstimatorErrorSampler(const TiledField& field, const EstimatorErrorOptions& options);
+    ~EstimatorErrorSampler();
+    // The estimators measured, in row order: kVarianceEstimatorNames', then "global".
+    static const std::vector<std::string>& estimators();
+    // Terms per footprint: per estimator |Δμ|, |Δμ|/|μ|, |Δσ|, |Δσ|/σ (each
+    // summed over the two components), then μ and σ summed over them.
+    static size_t termsPerFootprint();
+    // count × termsPerFootprint() terms, footprint-major; multi-threaded,
+    // the result does not depend on threads. InputError for a size outside
+    // the options' range or first/count outside [0, options.count].
+    std::vector<double> terms(int footprint, int first, int count) const;
+
+private:
+    struct State;
+    std::unique_ptr<const State> state_;
+};
+
+// Rows of one footprint size (EstimatorError, in estimators() order) from
+// the terms of all its footprints in index order.
+std::vector<EstimatorError> summarizeEstimatorErrors(int footprint, const std::vector<double>& terms);
 
 // The errors of a two-channel field's estimators (its grid density and
 // tile offsets; covariances are not measured, so its sharing does not

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "stochtex/core/error.h"
 #include "stochtex/image/colour_space.h"
@@ -94,9 +95,35 @@ PatternSpec table1PatternSpec(int which, uint32_t seed) {
 
 void validateTable1(const Table1Options& o) { validateEstimatorErrorOptions(o.errors, kTable1ExampleSize); }
 
+TiledField table1Field(int which, uint32_t seed) {
+    // The file's program: its one pair of leaves is N.
+    return GraphPattern::build(table1PatternSpec(which, seed)).leafPairs().front();
+}
+
 Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
     validateTable1(o);
+    std::array<std::vector<EstimatorError>, 2> rows;
+    for (int which = 0; which < 2; ++which) {
+        // Steps of one noise: building its examples, then each footprint size.
+        const Progress noise =
+            progressPart(progress, which, 2, std::string("table1: ") + kTableNoiseNames[which] + " noise");
+        const int steps = 1 + int(o.errors.footprints.size());
+        if (noise) noise(0.0, "building the 512² examples");
+        rows[size_t(which)] = measureEstimatorErrors(table1Field(which, o.seed), o.errors, [&](int k) {
+            if (noise) noise(double(1 + k) / steps, "footprint " + std::to_string(k) + "/" + std::to_string(steps - 1));
+        });
+    }
+    return table1FromRows(std::move(rows), o);
+}
+
+Table1Result table1FromRows(std::array<std::vector<EstimatorError>, 2> rows, const Table1Options& o) {
+    validateTable1(o);
+    const size_t expected = o.errors.footprints.size() * EstimatorErrorSampler::estimators().size();
+    if (rows[0].size() != expected || rows[1].size() != expected)
+        throw std::invalid_argument("table1FromRows: expected " + std::to_string(expected) + " rows per noise, got " +
+                                    std::to_string(rows[0].size()) + " and " + std::to_string(rows[1].size()));
     Table1Result res;
+    res.rows = std::move(rows);
     res.data.columns = {{"noise", "noise", ""},
                         {"footprint", "footprint", "texels"},
                         {"estimator", "estimator", ""},
@@ -107,23 +134,12 @@ Table1Result table1(const Table1Options& o, const StudyProgress& progress) {
                         {"mean_mu", "mean μ", ""},
                         {"mean_sigma", "mean σ", ""},
                         {"values", "values", ""}};
-    for (int which = 0; which < 2; ++which) {
-        // Steps of one noise: building its examples, then each footprint size.
-        const Progress noise =
-            progressPart(progress, which, 2, std::string("table1: ") + kTableNoiseNames[which] + " noise");
-        const int steps = 1 + int(o.errors.footprints.size());
-        if (noise) noise(0.0, "building the 512² examples");
-        // The file's program: its one pair of leaves is N.
-        const GraphPattern p = GraphPattern::build(table1PatternSpec(which, o.seed));
-        res.rows[size_t(which)] = measureEstimatorErrors(p.leafPairs().front(), o.errors, [&](int k) {
-            if (noise) noise(double(1 + k) / steps, "footprint " + std::to_string(k) + "/" + std::to_string(steps - 1));
-        });
+    for (int which = 0; which < 2; ++which)
         for (const auto& r : res.rows[size_t(which)])
             res.data.add({which == 0 ? "low" : "high", TableCell::integer(r.footprint), r.estimator,
                           TableCell::value(r.muAbs), TableCell::value(r.muRel), TableCell::value(r.sigmaAbs),
                           TableCell::value(r.sigmaRel), TableCell::value(r.meanMu), TableCell::value(r.meanSigma),
                           TableCell::integer(r.values)});
-    }
 
     // Laid out like the paper's table: one block per estimator.
     for (const std::string& est : tableEstimators()) {

@@ -46,6 +46,12 @@ struct Table1Result {
     std::vector<Figure> figures;  // mean error vs footprint, ours and published
 };
 Table1Result table1(const Table1Options& options, const StudyProgress& progress = {});
+// The tables and figures of Table 1 from its rows, as table1 makes them
+// (a Dask run measures the rows in chunks: stochtex/dask.py).
+Table1Result table1FromRows(std::array<std::vector<EstimatorError>, 2> rows, const Table1Options& options);
+// The pair of leaves whose estimators Table 1 measures: noise `which` (0:
+// low, 1: high) with the noises' seed.
+TiledField table1Field(int which, uint32_t seed);
 // Its report: the paper's layout and the published numbers on the page,
 // table1.csv (every row), table1.md and the plots.
 Report table1Report(const Table1Result& result);
