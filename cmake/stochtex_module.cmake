@@ -31,6 +31,15 @@
 set(STOCHTEX_MODULE_ORDER kernel core image noise filter pattern textures analysis report studies gpu workbench)
 set(STOCHTEX_MODULE_MANIFEST ${CMAKE_BINARY_DIR}/stochtex_modules.cmake)
 
+# A target compiled in unity batches of `size` files. GCC takes a batch's
+# included .cpp files for headers and warns (-Wsubobject-linkage) of every
+# type there that uses a type of the file's anonymous namespace: silenced
+# for these targets only.
+function(stochtex_unity_build target size)
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${size})
+  target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-Wno-subobject-linkage>)
+endfunction()
+
 function(stochtex_module)
   cmake_parse_arguments(PARSE_ARGV 0 ARG "UNITY" "NAME" "SOURCES;DEPENDS;LIBS")
   if(NOT ARG_NAME)
@@ -52,7 +61,7 @@ function(stochtex_module)
   endif()
   add_library(stochtex::${ARG_NAME} ALIAS ${target})
   if(ARG_UNITY)
-    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+    stochtex_unity_build(${target} 8)
   endif()
   target_include_directories(${target} ${scope} ${PROJECT_SOURCE_DIR}/src)
   foreach(dep IN LISTS ARG_DEPENDS)

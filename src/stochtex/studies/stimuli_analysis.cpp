@@ -186,7 +186,7 @@ DetectionRates detectionRates(const std::vector<StimulusAnswer>& answers) {
 Report detectionReport(const DetectionRates& r, const std::string& answers) {
     Report report = sectionReport("Perception experiment: detection rates", {{"detection.csv", r.table}}, r.figures,
                                   "<p>Answers: " + htmlEscape(answers) + "</p>");
-    report.sections.front().files = {{"detection.md", r.table.markdown()}};
+    report.sections.front().files = {{"detection.md", r.table.markdown(), ""}};
     return report;
 }
 

@@ -1,0 +1,45 @@
+#pragma once
+// What the Python module's binding files share: numpy arrays made from the
+// library's values without copying, and the conversion of a report's table.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stochtex/image/image.h"
+#include "stochtex/report/table.h"
+
+namespace stochtex::python {
+
+namespace py = pybind11;
+
+// `values` moved into a numpy array of `shape` (C order) that owns it: no copy.
+template <class T, class Buffer>
+py::array_t<T> ownedArray(Buffer&& values, std::vector<py::ssize_t> shape) {
+    auto* owned = new std::decay_t<Buffer>(std::forward<Buffer>(values));
+    py::capsule free(owned, [](void* p) { delete static_cast<std::decay_t<Buffer>*>(p); });
+    return py::array_t<T>(std::move(shape), owned->data(), free);
+}
+
+// An image as a float32 array of shape (height, width, channels): row 0 on
+// top, as the library stores it, and no copy.
+inline py::array_t<float> imageArray(Image&& image) {
+    const std::vector<py::ssize_t> shape{image.height(), image.width(), image.channels()};
+    return ownedArray<float>(std::move(image.data()), shape);
+}
+
+// The Python keyword of a library parameter: its name in snake case.
+std::string keywordOf(const std::string& parameter);
+
+// A table as (title, note, [(key, header, unit, values)]): values a float64
+// array where every cell is a number or does not apply (NaN), else a list
+// of the cells' text. stochtex/__init__.py makes it a Table (a dict).
+py::tuple tableTuple(const Table& table);
+
+void bindImages(py::module_& m);
+void bindPatterns(py::module_& m);
+void bindStudies(py::module_& m);
+
+}  // namespace stochtex::python

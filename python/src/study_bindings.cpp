@@ -1,0 +1,136 @@
+// The studies, for Python: their report values (tables as columns, figures
+// as arrays), and the pieces a distributed run splits them into
+// (stochtex/dask.py): the per-footprint terms of Table 1 and their merge.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.h"
+#include "stochtex/analysis/estimator_error.h"
+#include "stochtex/studies/paper.h"
+
+namespace stochtex::python {
+
+namespace {
+
+Table1Options table1Options(int count, const std::vector<int>& footprints, uint32_t seed, uint32_t noiseSeed,
+                            int maxSamples) {
+    Table1Options o;
+    o.errors.count = count;
+    o.errors.footprints = footprints;
+    o.errors.seed = seed;
+    o.errors.maxSamplesPerAxis = maxSamples;
+    o.seed = noiseSeed;
+    validateTable1(o);
+    if (maxSamples < 1 || maxSamples > 4096)
+        throw InputError::parameter("max_samples", "must be in [1, 4096], got " + std::to_string(maxSamples));
+    return o;
+}
+
+py::dict table1Dict(Table1Result&& result) {
+    py::list tables, figures;
+    for (const Table& t : result.tables) tables.append(tableTuple(t));
+    for (Figure& f : result.figures) figures.append(py::make_tuple(f.file, f.caption, imageArray(std::move(f.image))));
+    py::dict d;
+    d["data"] = tableTuple(result.data);
+    d["tables"] = tables;
+    d["figures"] = figures;
+    return d;
+}
+
+// The Table 1 pair of one noise and what measures its footprints' terms.
+class Table1Sampler {
+public:
+    Table1Sampler(int which, const Table1Options& options) {
+        if (which != 0 && which != 1) throw InputError::parameter("noise", "must be 0 (low) or 1 (high)");
+        py::gil_scoped_release release;
+        sampler_ = std::make_unique<EstimatorErrorSampler>(table1Field(which, options.seed), options.errors);
+    }
+    py::array_t<double> terms(int footprint, int first, int count) const {
+        std::vector<double> t;
+        {
+            py::gil_scoped_release release;
+            t = sampler_->terms(footprint, first, count);
+        }
+        const py::ssize_t width = py::ssize_t(EstimatorErrorSampler::termsPerFootprint());
+        return ownedArray<double>(std::move(t), {py::ssize_t(count), width});
+    }
+
+private:
+    std::unique_ptr<EstimatorErrorSampler> sampler_;
+};
+
+}  // namespace
+
+void bindStudies(py::module_& m) {
+    m.def(
+        "table1",
+        [](int count, const std::vector<int>& footprints, uint32_t seed, uint32_t noiseSeed, int maxSamples) {
+            const Table1Options o = table1Options(count, footprints, seed, noiseSeed, maxSamples);
+            Table1Result result;
+            {
+                py::gil_scoped_release release;
+                result = table1(o);
+            }
+            return table1Dict(std::move(result));
+        },
+        py::kw_only(), py::arg("count") = EstimatorErrorOptions{}.count,
+        py::arg("footprints") = EstimatorErrorOptions{}.footprints, py::arg("seed") = EstimatorErrorOptions{}.seed,
+        py::arg("noise_seed") = Table1Options{}.seed,
+        py::arg("max_samples") = EstimatorErrorOptions{}.maxSamplesPerAxis,
+        "Paper Table 1: the estimators' errors over `count` random square footprints per size.");
+
+    py::class_<Table1Sampler>(m, "Table1Sampler",
+                              "The per-footprint error terms of one Table 1 noise (0: low, 1: high), for runs split "
+                              "into chunks; table1_from_terms merges them.")
+        .def(py::init([](int which, int count, const std::vector<int>& footprints, uint32_t seed, uint32_t noiseSeed,
+                         int maxSamples) {
+                 return std::make_unique<Table1Sampler>(which,
+                                                        table1Options(count, footprints, seed, noiseSeed, maxSamples));
+             }),
+             py::arg("noise"), py::kw_only(), py::arg("count") = EstimatorErrorOptions{}.count,
+             py::arg("footprints") = EstimatorErrorOptions{}.footprints, py::arg("seed") = EstimatorErrorOptions{}.seed,
+             py::arg("noise_seed") = Table1Options{}.seed,
+             py::arg("max_samples") = EstimatorErrorOptions{}.maxSamplesPerAxis)
+        .def("terms", &Table1Sampler::terms, py::arg("footprint"), py::arg("first"), py::arg("count"),
+             "The terms of footprints [first, first + count) of size `footprint`: (count, terms_per_footprint) "
+             "float64.")
+        .def_property_readonly_static("estimators", [](py::object) { return EstimatorErrorSampler::estimators(); })
+        .def_property_readonly_static("terms_per_footprint",
+                                      [](py::object) { return EstimatorErrorSampler::termsPerFootprint(); });
+
+    m.def(
+        "table1_from_terms",
+        [](const std::vector<std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>>>& terms,
+           int count, const std::vector<int>& footprints, uint32_t seed, uint32_t noiseSeed, int maxSamples) {
+            const Table1Options o = table1Options(count, footprints, seed, noiseSeed, maxSamples);
+            if (terms.size() != 2) throw InputError::parameter("terms", "must hold the two noises' terms");
+            std::array<std::vector<EstimatorError>, 2> rows;
+            for (size_t which = 0; which < 2; ++which) {
+                if (terms[which].size() != footprints.size())
+                    throw InputError::parameter("terms", "must hold one array per footprint size for each noise");
+                for (size_t k = 0; k < footprints.size(); ++k) {
+                    const auto& a = terms[which][k];
+                    if (size_t(a.size()) != size_t(count) * EstimatorErrorSampler::termsPerFootprint())
+                        throw InputError::parameter("terms", "must hold `count` footprints per size, in index order");
+                    const std::vector<EstimatorError> r =
+                        summarizeEstimatorErrors(footprints[k], std::vector<double>(a.data(), a.data() + a.size()));
+                    rows[which].insert(rows[which].end(), r.begin(), r.end());
+                }
+            }
+            return table1Dict(table1FromRows(std::move(rows), o));
+        },
+        py::arg("terms"), py::kw_only(), py::arg("count") = EstimatorErrorOptions{}.count,
+        py::arg("footprints") = EstimatorErrorOptions{}.footprints, py::arg("seed") = EstimatorErrorOptions{}.seed,
+        py::arg("noise_seed") = Table1Options{}.seed,
+        py::arg("max_samples") = EstimatorErrorOptions{}.maxSamplesPerAxis,
+        "Table 1 from the terms of every footprint: terms[noise][k] for footprints[k], all `count` footprints in "
+        "index order. Equals table1() with the same options exactly.");
+}
+
+}  // namespace stochtex::python

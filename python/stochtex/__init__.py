@@ -1,0 +1,93 @@
+"""stochtex: colour-mapped noise vector fields (Grenier et al. 2022), filtered,
+and the studies of procedural textures' artifacts (Tavernier 2017), over numpy.
+
+    import stochtex
+    image = stochtex.render("camouflage", size=256, filter="smooth", scale=4)
+    # float32 (256, 256, 3), linear-light RGB, row 0 on top
+
+Every render, statistic and study runs in the C++ library (the same code as
+the `stochtex` command), with the GIL released. Bad input raises
+stochtex.InputError (a ValueError) with the library's message; its
+`parameter` is the keyword at fault, or None where the message names a file
+and JSON pointer. docs/PYTHON.md has the whole interface.
+"""
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Mapping, Optional, Sequence, Union
+
+import numpy as np
+
+from ._stochtex import (  # noqa: F401 (re-exported)
+    FootprintStatistics,
+    GpuUnavailable,
+    InputError,
+    Pattern,
+    Renderer,
+    presets,
+    read_image,
+    write_image,
+)
+from . import studies  # noqa: F401 (re-exported)
+
+__all__ = [
+    "FootprintStatistics",
+    "GpuUnavailable",
+    "InputError",
+    "Pattern",
+    "Renderer",
+    "pattern",
+    "presets",
+    "read_image",
+    "render",
+    "studies",
+    "write_image",
+]
+
+PatternSource = Union[Pattern, str, "os.PathLike[str]", Mapping[str, Any]]
+
+
+def pattern(source: PatternSource, *, seed: Optional[int] = None) -> Pattern:
+    """A Pattern from a preset name, a pattern or graph file's path, its JSON
+    text, or a dict of the file's members (docs/PATTERNS.md)."""
+    if isinstance(source, Pattern):
+        if seed is not None:
+            raise TypeError("pattern: give the seed where the Pattern is made (Pattern.preset/load/parse take seed=)")
+        return source
+    if isinstance(source, Mapping):
+        return Pattern.parse(json.dumps(source), source="<dict>", seed=seed)
+    if isinstance(source, os.PathLike):
+        return Pattern.load(os.fspath(source), seed=seed)
+    if isinstance(source, str):
+        if source.lstrip().startswith("{"):
+            return Pattern.parse(source, source="<inline JSON>", seed=seed)
+        if source in presets():
+            return Pattern.preset(source, seed=seed)
+        return Pattern.load(source, seed=seed)
+    raise TypeError(f"pattern: expected a Pattern, a preset name, a path, JSON text or a dict, got {type(source).__name__}")
+
+
+def render(
+    source: PatternSource,
+    *,
+    size: Union[None, int, Sequence[int]] = None,
+    scale: Optional[float] = None,
+    offset: Optional[Sequence[float]] = None,
+    camera: str = "zoom",
+    tilt_deg: float = 60.0,
+    fov_deg: float = 60.0,
+    filter: str = "none",
+    aniso: int = 8,
+    estimator: Optional[str] = None,
+    gpu: bool = False,
+    threads: int = 0,
+    seed: Optional[int] = None,
+) -> np.ndarray:
+    """One view of a pattern as float32 (height, width, 3), linear-light RGB,
+    row 0 on top: `stochtex render` without the file. For several views of
+    one pattern, make a Renderer once (it builds the pyramids and tables)."""
+    renderer = Renderer(pattern(source, seed=seed), filter=filter, aniso=aniso, estimator=estimator, gpu=gpu)
+    return renderer.render(
+        size=size, scale=scale, offset=offset, camera=camera, tilt_deg=tilt_deg, fov_deg=fov_deg, threads=threads
+    )

@@ -1,0 +1,111 @@
+# Type stubs of the C++ extension (python/src/*.cpp); python/tests/test_stubs.py
+# holds them to the module's names and signatures.
+from typing import ClassVar, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+class InputError(ValueError):
+    parameter: Optional[str]
+
+class GpuUnavailable(RuntimeError): ...
+
+def presets() -> List[str]: ...
+def read_image(path: str) -> npt.NDArray[np.float32]: ...
+def write_image(path: str, pixels: npt.ArrayLike, *, bits: int = 8, half: bool = False) -> None: ...
+
+class Pattern:
+    @staticmethod
+    def preset(name: str, seed: Optional[int] = None) -> Pattern: ...
+    @staticmethod
+    def load(path: str, seed: Optional[int] = None) -> Pattern: ...
+    @staticmethod
+    def parse(text: str, source: str = "<json>", base_dir: str = ".", seed: Optional[int] = None) -> Pattern: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def width(self) -> int: ...
+    @property
+    def height(self) -> int: ...
+    @property
+    def scale(self) -> float: ...
+    @property
+    def is_graph(self) -> bool: ...
+
+class Renderer:
+    def __init__(
+        self,
+        pattern: Pattern,
+        *,
+        filter: str = "none",
+        aniso: int = 8,
+        estimator: Optional[str] = None,
+        response: str = "prefiltered-colormap",
+        covariance: bool = True,
+        pack8: bool = False,
+        reference_max_samples: int = 64,
+        kernel: str = "simd",
+        gpu: bool = False,
+    ) -> None: ...
+    def render(
+        self,
+        *,
+        size: Union[None, int, Sequence[int]] = None,
+        scale: Optional[float] = None,
+        offset: Optional[Sequence[float]] = None,
+        camera: str = "zoom",
+        tilt_deg: float = 60.0,
+        fov_deg: float = 60.0,
+        threads: int = 0,
+    ) -> npt.NDArray[np.float32]: ...
+    @property
+    def example_size(self) -> int: ...
+    @property
+    def device(self) -> str: ...
+    @property
+    def filter(self) -> str: ...
+
+class FootprintStatistics:
+    def __init__(self, pattern: Pattern, *, field: int = 0, covariance: bool = False, pack8: bool = False) -> None: ...
+    def estimate(
+        self, uv: npt.ArrayLike, jacobian: npt.ArrayLike, *, estimator: str = "paper", aniso: int = 1
+    ) -> Tuple[npt.NDArray[np.float32], npt.NDArray[np.float32]]: ...
+    def exact(
+        self, uv: npt.ArrayLike, jacobian: npt.ArrayLike, *, max_samples: int = 512
+    ) -> Tuple[npt.NDArray[np.float32], npt.NDArray[np.float32]]: ...
+    @property
+    def example_size(self) -> int: ...
+    @property
+    def max_level(self) -> int: ...
+
+_TableTuple = Tuple[str, str, List[Tuple[str, str, str, Union[npt.NDArray[np.float64], List[str]]]]]
+
+def table1(
+    *, count: int = 1000, footprints: Sequence[int] = ..., seed: int = 1, noise_seed: int = 1, max_samples: int = 512
+) -> dict: ...
+def table1_from_terms(
+    terms: Sequence[Sequence[npt.ArrayLike]],
+    *,
+    count: int = 1000,
+    footprints: Sequence[int] = ...,
+    seed: int = 1,
+    noise_seed: int = 1,
+    max_samples: int = 512,
+) -> dict: ...
+
+class Table1Sampler:
+    estimators: ClassVar[List[str]]
+    terms_per_footprint: ClassVar[int]
+    def __init__(
+        self,
+        noise: int,
+        *,
+        count: int = 1000,
+        footprints: Sequence[int] = ...,
+        seed: int = 1,
+        noise_seed: int = 1,
+        max_samples: int = 512,
+    ) -> None: ...
+    def terms(self, footprint: int, first: int, count: int) -> npt.NDArray[np.float64]: ...

@@ -1,0 +1,75 @@
+# Table 1 on a Dask cluster of two worker processes: exactly the
+# single-process result, also when a worker dies mid-run.
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+distributed = pytest.importorskip("distributed")
+
+import stochtex
+import stochtex.dask
+
+OPTIONS = dict(count=30, footprints=[4, 16, 64], seed=5, noise_seed=4, max_samples=64)
+
+
+def assert_same(a, b):
+    assert list(a["data"]) == list(b["data"])
+    for key, values in a["data"].items():
+        if isinstance(values, np.ndarray):
+            assert np.array_equal(values, b["data"][key]), key
+        else:
+            assert values == b["data"][key], key
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+    with distributed.Client(cluster) as c:
+        yield c
+    cluster.close()
+
+
+@pytest.fixture(scope="module")
+def single():
+    return stochtex.studies.table1(**OPTIONS)
+
+
+def test_table1_on_two_workers_equals_one_process(client, single):
+    assert_same(stochtex.dask.table1(client, chunk=7, **OPTIONS), single)
+
+
+def test_a_worker_lost_mid_run_changes_nothing(client, single):
+    pids = client.run(os.getpid)
+    assert len(pids) == 2
+    victim = next(iter(pids.values()))
+    killed = {}
+
+    def kill_after_first_results():
+        # Mid-run: once some chunks are done and before the last.
+        while client.processing() and sum(len(v) for v in client.processing().values()) == 0:
+            time.sleep(0.005)
+        time.sleep(0.05)
+        os.kill(victim, signal.SIGKILL)
+        killed["at"] = time.perf_counter()
+
+    killer = threading.Thread(target=kill_after_first_results, daemon=True)
+    killer.start()
+    start = time.perf_counter()
+    result = stochtex.dask.table1(client, chunk=1, **OPTIONS)
+    done = time.perf_counter()
+    killer.join(10)
+    assert "at" in killed and killed["at"] < done, "the worker died after the run had finished"
+    print(f"killed {killed['at'] - start:.2f} s into a {done - start:.2f} s run")
+    assert_same(result, single)
+    # The cluster replaced it.
+    client.wait_for_workers(2, timeout=30)
+
+
+def test_bad_options_raise_before_any_task(client):
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.dask.table1(client, count=0)
+    assert caught.value.parameter == "count"

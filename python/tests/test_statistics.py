@@ -1,0 +1,94 @@
+# Footprint statistics and the Table 1 study from Python: the library's
+# values (the CLI's table1.csv), the chunked terms merge to the same table,
+# and the GIL is released while the C++ works.
+import csv
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import stochtex
+
+TABLE1 = dict(count=24, footprints=[4, 32], seed=3, noise_seed=2)
+
+
+@pytest.fixture(scope="module")
+def table1():
+    return stochtex.studies.table1(**TABLE1)
+
+
+def test_table1_equals_the_cli_csv(tmp_path, cli, table1):
+    cli("reproduce", "table1", "--count", "24", "--footprints", "4,32", "--footprint-seed", "3", "--seed", "2",
+        "-o", str(tmp_path))
+    with open(tmp_path / "table1.csv") as f:
+        rows = list(csv.DictReader(f))
+    data = table1["data"]
+    assert data.rows() == len(rows) == 2 * 2 * 5
+    assert data["noise"] == [r["noise"] for r in rows]
+    assert data["estimator"] == [r["estimator"] for r in rows]
+    for key in ("footprint", "mu_abs", "mu_rel", "sigma_abs", "sigma_rel", "mean_mu", "mean_sigma", "values"):
+        # The CSV holds 6 significant digits.
+        np.testing.assert_allclose(data[key], [float(r[key]) for r in rows], rtol=5e-6, atol=0)
+    assert table1["tables"][0].title.startswith("Estimator: paper")
+    assert all(f.image.ndim == 3 and f.image.shape[0] > 100 for f in table1["figures"])
+
+
+def test_table1_from_chunked_terms_is_exactly_table1(table1):
+    options = dict(TABLE1)
+    terms = [[], []]
+    for noise in (0, 1):
+        sampler = stochtex.studies.Table1Sampler(noise, **options)
+        for s in options["footprints"]:
+            # Uneven chunks, measured out of order: only the merge order matters.
+            chunks = {first: sampler.terms(s, first, size) for first, size in [(16, 8), (0, 5), (5, 11)]}
+            terms[noise].append(np.concatenate([chunks[0], chunks[5], chunks[16]]))
+    assert terms[0][0].shape == (24, stochtex.studies.Table1Sampler.terms_per_footprint)
+    merged = stochtex.studies.table1_from_terms(terms, **options)
+    for key, values in table1["data"].items():
+        if isinstance(values, np.ndarray):
+            assert np.array_equal(merged["data"][key], values), key
+        else:
+            assert merged["data"][key] == values, key
+
+
+def test_estimates_are_close_to_the_exact_statistics():
+    stats = stochtex.FootprintStatistics(stochtex.pattern("camouflage"))
+    rng = np.random.default_rng(7)
+    n = 400
+    uv = rng.uniform(0, 8, size=(n, 2))
+    side = 8.0 / stats.example_size  # 8-texel square footprints
+    jacobian = np.tile(np.array([[side, 0.0], [0.0, side]]), (n, 1, 1))
+    mean, cov = stats.estimate(uv, jacobian)
+    exact_mean, exact_cov = stats.exact(uv, jacobian)
+    assert mean.shape == (n, 2) and cov.shape == (n, 2, 2) and mean.dtype == np.float32
+    assert np.array_equal(cov[:, 0, 1], cov[:, 1, 0])
+    spread = np.sqrt(np.mean(exact_cov[:, 0, 0] + exact_mean[:, 0] ** 2))  # the noise's own scale
+    # The paper's estimator at 8 texels: mean |μ̂ − μ| a small part of the noise's scale.
+    assert np.mean(np.abs(mean - exact_mean)) < 0.25 * spread
+    assert np.all(cov[:, 0, 0] >= 0) and np.all(exact_cov[:, 0, 0] >= 0)
+    # Deterministic whatever the threads.
+    again, _ = stats.estimate(uv, jacobian)
+    assert np.array_equal(again, mean)
+
+
+def test_the_gil_is_released_while_rendering():
+    renderer = stochtex.Renderer(stochtex.pattern("camouflage"), filter="smooth")
+    span = {}
+
+    def work():
+        span["start"] = time.perf_counter()
+        renderer.render(size=512, scale=4.7, threads=1)
+        span["end"] = time.perf_counter()
+
+    ticks = []
+    thread = threading.Thread(target=work)
+    thread.start()
+    while thread.is_alive():
+        ticks.append(time.perf_counter())
+        time.sleep(0.001)
+    thread.join()
+    assert span["end"] - span["start"] > 0.05, "the render was too short to tell"
+    inside = [t for t in ticks if span["start"] + 0.01 < t < span["end"] - 0.01]
+    # Holding the GIL, the render would have stopped this thread throughout.
+    assert len(inside) >= 5, f"{len(inside)} ticks of this thread during a {span['end'] - span['start']:.2f} s render"
