@@ -16,14 +16,21 @@ from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 ROOT = os.path.dirname(os.path.abspath(__file__))
+BUILD = os.path.abspath(os.environ.get("STOCHTEX_BUILD_DIR", os.path.join(ROOT, "build")))
 
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
-        build = os.path.abspath(os.environ.get("STOCHTEX_BUILD_DIR", os.path.join(ROOT, "build")))
+        build = BUILD
         configure = ["cmake", "-S", ROOT, "-B", build, f"-DPython3_EXECUTABLE={sys.executable}"]
-        if not os.path.exists(os.path.join(build, "CMakeCache.txt")):
+        configured = configured_python(build)
+        if configured is None:
             configure.append("-DCMAKE_BUILD_TYPE=Release")  # a configured build keeps its own
+        elif os.path.realpath(configured) != os.path.realpath(sys.executable):
+            raise RuntimeError(
+                f"setup.py: {build} builds the module for {configured}, not {sys.executable} (this pip's); "
+                "run pip with that interpreter, or set STOCHTEX_BUILD_DIR to another folder"
+            )
         subprocess.check_call(configure)
         subprocess.check_call(["cmake", "--build", build, "--target", "stochtex_python", "-j", str(os.cpu_count() or 1)])
         built = glob.glob(os.path.join(build, "python", "stochtex", "_stochtex*.so"))
@@ -35,6 +42,18 @@ class CMakeBuild(build_ext):
         # The media plugin (EXR/JPEG/TIFF, video) is loaded from beside the module.
         plugin = os.path.join(os.path.dirname(built[0]), "libstochtex_media.so")
         shutil.copyfile(plugin, os.path.join(os.path.dirname(target), "libstochtex_media.so"))
+
+
+def configured_python(build):
+    """The interpreter a configured build tree's module is for, or None."""
+    cache = os.path.join(build, "CMakeCache.txt")
+    if not os.path.exists(cache):
+        return None
+    with open(cache) as f:
+        for line in f:
+            if line.startswith("Python3_EXECUTABLE:"):
+                return line.split("=", 1)[1].strip()
+    return None
 
 
 def version():
@@ -57,4 +76,6 @@ setup(
     python_requires=">=3.9",
     install_requires=["numpy"],
     zip_safe=False,
+    # setuptools' own staging, in a folder of its own in the build tree.
+    options={"build": {"build_base": os.path.join(BUILD, "setuptools")}},
 )

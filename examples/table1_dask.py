@@ -24,14 +24,18 @@ def main():
     args = parser.parse_args()
     footprints = [int(s) for s in args.footprints.split(",")]
 
+    cluster = None
     if args.scheduler:
         client = Client(args.scheduler)
     else:
-        client = Client(LocalCluster(n_workers=args.workers, threads_per_worker=1, dashboard_address=None))
+        cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, dashboard_address=None)
+        client = Client(cluster)
     with client:
         start = time.perf_counter()
         result = stochtex.dask.table1(client, count=args.count, footprints=footprints, chunk=args.chunk)
         print(f"Table 1 on {len(client.scheduler_info()['workers'])} workers: {time.perf_counter() - start:.1f} s")
+    if cluster is not None:
+        cluster.close()
     data = result["data"]
     print(f"{'noise':6} {'size':>5} {'estimator':15} {'mean |σ̂ − σ|/σ':>16}")
     for i in range(data.rows()):

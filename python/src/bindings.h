@@ -3,6 +3,7 @@
 // library's values without copying, and the conversion of a report's table.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <tbb/task_arena.h>
 
 #include <string>
 #include <utility>
@@ -33,6 +34,15 @@ inline py::array_t<float> imageArray(Image&& image) {
 // The Python keyword of a library parameter: its name in snake case.
 std::string keywordOf(const std::string& parameter);
 
+// f() on `threads` worker threads of the library's parallel loops (0: every
+// core), in an arena of this call's own: other calls keep theirs.
+template <class F>
+auto withThreads(int threads, F&& f) {
+    if (threads == 0) return f();
+    tbb::task_arena arena(threads);
+    return arena.execute(std::forward<F>(f));
+}
+
 // A table as (title, note, [(key, header, unit, values)]): values a float64
 // array where every cell is a number or does not apply (NaN), else a list
 // of the cells' text. stochtex/__init__.py makes it a Table (a dict).
@@ -40,6 +50,7 @@ py::tuple tableTuple(const Table& table);
 
 void bindImages(py::module_& m);
 void bindPatterns(py::module_& m);
+void bindShadertoy(py::module_& m);
 void bindStudies(py::module_& m);
 
 }  // namespace stochtex::python

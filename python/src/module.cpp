@@ -7,8 +7,8 @@
 // range) raises stochtex.InputError, a ValueError whose message is the
 // library's (the CLI prints the same after its flag) and whose `parameter`
 // is the library's parameter name in snake case, the keyword that sets it
-// ("tiltDeg" → tilt_deg; None for a file or JSON error, whose message names
-// the file and JSON pointer); GpuUnavailable raises
+// ("tiltDeg" → tilt_deg; None for an error about no one parameter: a file
+// or JSON value, whose message names the file and JSON pointer, a path); GpuUnavailable raises
 // stochtex.GpuUnavailable (a RuntimeError).
 #include <pybind11/pybind11.h>
 
@@ -82,5 +82,6 @@ PYBIND11_MODULE(_stochtex, m) {
 
     python::bindImages(m);
     python::bindPatterns(m);
+    python::bindShadertoy(m);
     python::bindStudies(m);
 }

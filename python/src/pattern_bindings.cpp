@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "gl_thread.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/filter/footprint.h"
@@ -63,9 +65,18 @@ public:
         if (gpu && !gpuHasSource(options_.source))
             throw InputError::parameter(
                 "filter", "must be none, paper or smooth on the GPU, got \"" + filterName(options_) + "\"");
-        py::gil_scoped_release release;
-        renderer_ = gpu ? makeGpuRenderer(spec_, options_) : makeCpuRenderer(spec_, options_);
+        if (gpu) {
+            // The GPU's context lives on a thread of its own (gl_thread.h).
+            gl_ = std::make_unique<GlThread>();
+            gl_->run([this] { renderer_ = makeGpuRenderer(spec_, options_); });
+        } else {
+            py::gil_scoped_release release;
+            renderer_ = makeCpuRenderer(spec_, options_);
+        }
     }
+    ~Renderer() { releaseOnGlThread(gl_, renderer_); }  // GL objects go with their context current
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
 
     py::array_t<float> render(const std::optional<std::variant<int, std::vector<int>>>& sizeArgument,
                               const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,
@@ -97,11 +108,14 @@ public:
         c.fovDeg = fov;
         validateView(c.view);
         validateCamera(c);
+        if (threads < 0)
+            throw InputError::parameter("threads", "must be ≥ 0 (0: every core), got " + std::to_string(threads));
         Image image;
-        {
+        if (gl_) {
+            image = gl_->run([&] { return renderer_->render(c); });
+        } else {
             py::gil_scoped_release release;
-            ThreadLimit limit(threads);
-            image = renderer_->render(c);
+            image = withThreads(threads, [&] { return renderer_->render(c); });
         }
         return imageArray(std::move(image));
     }
@@ -111,6 +125,7 @@ public:
     std::string filter() const { return filterLabel(options_); }
 
 private:
+    std::unique_ptr<GlThread> gl_;  // the GPU's, else none
     PatternSpec spec_;
     FilterOptions options_;
     std::unique_ptr<ViewRenderer> renderer_;
@@ -174,6 +189,18 @@ private:
         if (n > (py::ssize_t(1) << 31) - 1) throw InputError::parameter("uv", "has too many footprints");
         const double* p = uv.data();
         const double* jp = jacobian.data();
+        // The grids index texels with 32-bit integers: footprints within a
+        // million periods of the origin (the views' 1e9-texel offsets), sides
+        // within 1e4 periods (any footprint a camera makes).
+        for (py::ssize_t k = 0; k < 2 * n; ++k)
+            if (!std::isfinite(p[k]) || std::abs(p[k]) > 1e6)
+                throw InputError::parameter("uv", "must be finite and within 1e6 periods, got " + formatValue(p[k]) +
+                                                      " at footprint " + std::to_string(k / 2));
+        for (py::ssize_t k = 0; k < 4 * n; ++k)
+            if (!std::isfinite(jp[k]) || std::abs(jp[k]) > 1e4)
+                throw InputError::parameter("jacobian", "must be finite and within 1e4 periods per pixel, got " +
+                                                            formatValue(jp[k]) + " at footprint " +
+                                                            std::to_string(k / 4));
         std::vector<float> mean(size_t(n) * 2), cov(size_t(n) * 4);
         {
             py::gil_scoped_release release;

@@ -110,20 +110,31 @@ void bindStudies(py::module_& m) {
            int count, const std::vector<int>& footprints, uint32_t seed, uint32_t noiseSeed, int maxSamples) {
             const Table1Options o = table1Options(count, footprints, seed, noiseSeed, maxSamples);
             if (terms.size() != 2) throw InputError::parameter("terms", "must hold the two noises' terms");
-            std::array<std::vector<EstimatorError>, 2> rows;
+            const py::ssize_t width = py::ssize_t(EstimatorErrorSampler::termsPerFootprint());
+            std::array<std::vector<std::vector<double>>, 2> copied;
             for (size_t which = 0; which < 2; ++which) {
                 if (terms[which].size() != footprints.size())
                     throw InputError::parameter("terms", "must hold one array per footprint size for each noise");
-                for (size_t k = 0; k < footprints.size(); ++k) {
-                    const auto& a = terms[which][k];
-                    if (size_t(a.size()) != size_t(count) * EstimatorErrorSampler::termsPerFootprint())
-                        throw InputError::parameter("terms", "must hold `count` footprints per size, in index order");
-                    const std::vector<EstimatorError> r =
-                        summarizeEstimatorErrors(footprints[k], std::vector<double>(a.data(), a.data() + a.size()));
-                    rows[which].insert(rows[which].end(), r.begin(), r.end());
+                for (const auto& a : terms[which]) {
+                    if (a.ndim() != 2 || a.shape(0) != count || a.shape(1) != width)
+                        throw InputError::parameter("terms", "must hold arrays of shape (count, " +
+                                                                 std::to_string(width) +
+                                                                 "): every footprint, in index order");
+                    copied[which].emplace_back(a.data(), a.data() + a.size());
                 }
             }
-            return table1Dict(table1FromRows(std::move(rows), o));
+            Table1Result result;
+            {
+                py::gil_scoped_release release;
+                std::array<std::vector<EstimatorError>, 2> rows;
+                for (size_t which = 0; which < 2; ++which)
+                    for (size_t k = 0; k < footprints.size(); ++k) {
+                        const std::vector<EstimatorError> r = summarizeEstimatorErrors(footprints[k], copied[which][k]);
+                        rows[which].insert(rows[which].end(), r.begin(), r.end());
+                    }
+                result = table1FromRows(std::move(rows), o);
+            }
+            return table1Dict(std::move(result));
         },
         py::arg("terms"), py::kw_only(), py::arg("count") = EstimatorErrorOptions{}.count,
         py::arg("footprints") = EstimatorErrorOptions{}.footprints, py::arg("seed") = EstimatorErrorOptions{}.seed,

@@ -45,24 +45,29 @@ def test_table1_on_two_workers_equals_one_process(client, single):
 def test_a_worker_lost_mid_run_changes_nothing(client, single):
     pids = client.run(os.getpid)
     assert len(pids) == 2
-    victim = next(iter(pids.values()))
+    victim_address, victim = next(iter(pids.items()))
     killed = {}
 
-    def kill_after_first_results():
-        # Mid-run: once some chunks are done and before the last.
-        while client.processing() and sum(len(v) for v in client.processing().values()) == 0:
-            time.sleep(0.005)
-        time.sleep(0.05)
-        os.kill(victim, signal.SIGKILL)
-        killed["at"] = time.perf_counter()
+    def kill_while_it_works():
+        # Mid-run: once the victim has chunks in hand.
+        deadline = time.perf_counter() + 30
+        while time.perf_counter() < deadline:
+            busy = client.processing().get(victim_address, ())
+            if busy:
+                killed["busy"] = len(busy)
+                os.kill(victim, signal.SIGKILL)
+                killed["at"] = time.perf_counter()
+                return
+            time.sleep(0.002)
 
-    killer = threading.Thread(target=kill_after_first_results, daemon=True)
+    killer = threading.Thread(target=kill_while_it_works, daemon=True)
     killer.start()
     start = time.perf_counter()
     result = stochtex.dask.table1(client, chunk=1, **OPTIONS)
     done = time.perf_counter()
     killer.join(10)
-    assert "at" in killed and killed["at"] < done, "the worker died after the run had finished"
+    assert "at" in killed, "the victim never had a chunk in hand"
+    assert killed["at"] < done, "the worker died after the run had finished"
     print(f"killed {killed['at'] - start:.2f} s into a {done - start:.2f} s run")
     assert_same(result, single)
     # The cluster replaced it.

@@ -1,5 +1,8 @@
 # Rendering from Python: the same pixels as the CLI, linear light, no copy
 # surprises, and the thread count does not change them.
+import os
+import threading
+
 import numpy as np
 import pytest
 
@@ -101,3 +104,44 @@ def test_the_gpu_renders_the_same_view():
     assert gpu.device != "CPU"
     # The CPU/GPU render parity of docs/TESTING.md: mean |Δ| ≤ 0.05/255.
     assert np.mean(np.abs(a - b)) <= 0.05 / 255
+
+
+SHADERTOY = os.path.join(os.environ.get("STOCHTEX_SOURCE_DIR", "."), "data", "shadertoy")
+
+
+def test_a_shadertoy_program_s_frames_as_arrays():
+    try:
+        life = stochtex.Shadertoy(os.path.join(SHADERTOY, "life"), width=64, height=48)
+    except stochtex.GpuUnavailable:
+        pytest.skip("no OpenGL context on this machine")
+    frames = life.frames(4)
+    assert frames.shape == (4, 48, 64, 3) and frames.dtype == np.float32
+    assert life.frame == 4 and life.name == "life"
+    assert np.array_equal(life.frames(4), frames)  # from frame 0 again: the same frames
+    assert not np.array_equal(frames[0], frames[3])  # the game went on
+    life.reset()
+    assert np.array_equal(life.next(), frames[0])
+
+
+def test_gpu_objects_work_from_any_thread():
+    # Their GL context lives on a thread of their own: calls from other
+    # Python threads, even at once, are served there one after the other.
+    try:
+        life = stochtex.Shadertoy(os.path.join(SHADERTOY, "life"), width=32, height=32)
+        gpu = stochtex.Renderer(stochtex.pattern("camouflage"), filter="smooth", gpu=True)
+    except stochtex.GpuUnavailable:
+        pytest.skip("no OpenGL context on this machine")
+    expected = (life.frames(3), gpu.render(size=32, scale=2))
+    results = []
+
+    def work():
+        results.append((life.frames(3), gpu.render(size=32, scale=2)))
+
+    threads = [threading.Thread(target=work) for _ in range(3)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert len(results) == 3
+    for frames, image in results:
+        assert np.array_equal(frames, expected[0]) and np.array_equal(image, expected[1])

@@ -67,9 +67,21 @@ def test_estimates_are_close_to_the_exact_statistics():
     # The paper's estimator at 8 texels: mean |μ̂ − μ| a small part of the noise's scale.
     assert np.mean(np.abs(mean - exact_mean)) < 0.25 * spread
     assert np.all(cov[:, 0, 0] >= 0) and np.all(exact_cov[:, 0, 0] >= 0)
-    # Deterministic whatever the threads.
-    again, _ = stats.estimate(uv, jacobian)
-    assert np.array_equal(again, mean)
+
+
+def test_footprints_out_of_the_grids_reach_raise():
+    stats = stochtex.FootprintStatistics(stochtex.pattern("camouflage"))
+    good = np.full((3, 2, 2), [[0.01, 0.0], [0.0, 0.01]])
+    for uv in (np.array([[0.5, 0.5], [np.nan, 0.1], [0.2, 0.2]]), np.array([[0.5, 0.5], [-1e19, 0.1], [0.2, 0.2]])):
+        for call in (stats.estimate, stats.exact):
+            with pytest.raises(stochtex.InputError, match="at footprint 1") as caught:
+                call(uv, good)
+            assert caught.value.parameter == "uv"
+    bad = good.copy()
+    bad[2, 1, 1] = np.inf
+    with pytest.raises(stochtex.InputError) as caught:
+        stats.exact(np.zeros((3, 2)), bad)
+    assert caught.value.parameter == "jacobian"
 
 
 def test_the_gil_is_released_while_rendering():

@@ -67,10 +67,12 @@ std::vector<double> EstimatorErrorSampler::terms(int s, int first, int count) co
     if (s < 1 || s > 4 * w)
         throw InputError::parameter("footprint",
                                     "must be in [1, " + std::to_string(4 * w) + "] texels, got " + std::to_string(s));
-    if (first < 0 || count < 0 || first > o.count || count > o.count - first)
-        throw InputError::parameter("first", "and count must lie in the options' " + std::to_string(o.count) +
-                                                 " footprints, got " + std::to_string(first) + " and " +
-                                                 std::to_string(count));
+    if (first < 0 || first > o.count)
+        throw InputError::parameter("first", "must be in [0, " + std::to_string(o.count) +
+                                                 "] (the options' count), got " + std::to_string(first));
+    if (count < 0 || count > o.count - first)
+        throw InputError::parameter("count", "must be in [0, " + std::to_string(o.count - first) +
+                                                 "] (the footprints from first on), got " + std::to_string(count));
     const size_t estimators = EstimatorErrorSampler::estimators().size(), width = termsPerFootprint();
     std::vector<double> out(size_t(count) * width, 0.0);
     const double side = double(s) / w;

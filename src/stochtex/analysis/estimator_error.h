@@ -61,7 +61,7 @@ public:
     static size_t termsPerFootprint();
     // count × termsPerFootprint() terms, footprint-major; multi-threaded,
     // the result does not depend on threads. InputError for a size outside
-    // the options' range or first/count outside [0, options.count].
+    // the options' range, first outside [0, options.count] or count beyond it.
     std::vector<double> terms(int footprint, int first, int count) const;
 
 private:
