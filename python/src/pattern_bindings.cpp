@@ -24,6 +24,7 @@
 #include "stochtex/pattern/cpu_renderer.h"
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/pattern_parts.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/presets.h"
 
@@ -228,6 +229,38 @@ private:
 
 void bindPatterns(py::module_& m) {
     m.def("presets", &presetNames, "The names of the embedded presets, sorted.");
+
+    m.def(
+        "example",
+        [](const std::string& text, const std::string& source, const std::string& baseDir,
+           std::optional<uint32_t> seed) {
+            NoiseSpec spec = parseNoiseSpec(JsonReader(JsonReader::parse(text, source), source), baseDir);
+            if (seed) spec.spectrum.seed = *seed;
+            Image image;
+            {
+                py::gil_scoped_release release;
+                image = buildExampleImage(spec, source);
+            }
+            const int w = image.width(), h = image.height();
+            return ownedArray<float>(std::move(image.data()), {h, w});
+        },
+        py::arg("text"), py::arg("source") = "<json>", py::arg("base_dir") = ".", py::arg("seed") = py::none(),
+        "A noise example from a NOISE object's JSON (docs/PATTERNS.md; `stochtex noise`): float32 (W, W), the "
+        "values before any Gaussianization, as `stochtex noise` writes them.");
+    m.def(
+        "colormap",
+        [](const std::string& text, const std::string& source, const std::string& baseDir) {
+            const ColormapSpec spec = parseColormapSpec(JsonReader(JsonReader::parse(text, source), source), baseDir);
+            Image table;
+            {
+                py::gil_scoped_release release;
+                table = buildColormap(spec).table();
+            }
+            return imageArray(std::move(table));
+        },
+        py::arg("text"), py::arg("source") = "<json>", py::arg("base_dir") = ".",
+        "A colormap H from a COLORMAP object's JSON (docs/PATTERNS.md; `stochtex colormap`): its table as "
+        "float32 (Ry, Rx, 3), linear light, row j = y index j (H(x, y) at (j, i)).");
 
     py::class_<PatternSpec>(m, "Pattern", "A parsed pattern or texture-graph file (docs/PATTERNS.md).")
         .def_static(

@@ -19,6 +19,7 @@ from typing import Any, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
+from . import _stochtex
 from ._stochtex import (  # noqa: F401 (re-exported)
     FootprintStatistics,
     GpuUnavailable,
@@ -36,6 +37,8 @@ __all__ = [
     "FootprintStatistics",
     "GpuUnavailable",
     "InputError",
+    "colormap",
+    "example",
     "Pattern",
     "Renderer",
     "Shadertoy",
@@ -68,6 +71,30 @@ def pattern(source: PatternSource, *, seed: Optional[int] = None) -> Pattern:
             return Pattern.preset(source, seed=seed)
         return Pattern.load(source, seed=seed)
     raise TypeError(f"pattern: expected a Pattern, a preset name, a path, JSON text or a dict, got {type(source).__name__}")
+
+
+def _json(spec: Union[str, Mapping[str, Any]]) -> str:
+    if isinstance(spec, Mapping):
+        return json.dumps(spec)
+    if isinstance(spec, str):
+        return spec
+    raise TypeError(f"expected JSON text or a dict, got {type(spec).__name__}")
+
+
+def example(spec: Union[str, Mapping[str, Any]], *, seed: Optional[int] = None, base_dir: str = ".") -> np.ndarray:
+    """A noise example (`stochtex noise`) from a NOISE object of a pattern
+    file, as a dict or JSON text: float32 (W, W), before Gaussianization.
+    Relative paths (an image exemplar) are against base_dir."""
+    return _stochtex.example(_json(spec), source="<dict>" if isinstance(spec, Mapping) else "<json>",
+                             base_dir=base_dir, seed=seed)
+
+
+def colormap(spec: Union[str, Mapping[str, Any]], *, base_dir: str = ".") -> np.ndarray:
+    """A colormap H (`stochtex colormap`) from a COLORMAP object, as a dict or
+    JSON text: its table as float32 (Ry, Rx, 3), linear light, H(x, y) at
+    row y, column x."""
+    return _stochtex.colormap(_json(spec), source="<dict>" if isinstance(spec, Mapping) else "<json>",
+                              base_dir=base_dir)
 
 
 def render(

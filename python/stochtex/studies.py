@@ -68,25 +68,11 @@ def table1(
     )
 
 
-def table1_from_terms(
-    terms: Sequence[Sequence[np.ndarray]],
-    *,
-    count: int = 1000,
-    footprints: Sequence[int] = TABLE1_FOOTPRINTS,
-    seed: int = 1,
-    noise_seed: int = 1,
-    max_samples: int = 512,
-) -> Dict[str, Any]:
+def table1_from_terms(terms: Sequence[Sequence[np.ndarray]], **options: Any) -> Dict[str, Any]:
     """Table 1 from its per-footprint terms (Table1Sampler.terms of every
-    footprint, terms[noise][k] for footprints[k] in index order): exactly
+    footprint, terms[noise][k] for footprints[k] in index order, each
+    (count, terms_per_footprint)), with table1()'s keywords: exactly
     table1() with the same options."""
-    return _result(
-        _stochtex.table1_from_terms(
-            [list(t) for t in terms],
-            count=count,
-            footprints=list(footprints),
-            seed=seed,
-            noise_seed=noise_seed,
-            max_samples=max_samples,
-        )
-    )
+    if "footprints" in options:
+        options["footprints"] = list(options["footprints"])
+    return _result(_stochtex.table1_from_terms([list(t) for t in terms], **options))

@@ -145,3 +145,25 @@ def test_gpu_objects_work_from_any_thread():
     assert len(results) == 3
     for frames, image in results:
         assert np.array_equal(frames, expected[0]) and np.array_equal(image, expected[1])
+
+
+def test_examples_and_colormaps_equal_the_cli_s(tmp_path, cli):
+    noise = {"type": "spectrum", "size": 64, "seed": 3, "components": [{"shape": "ring", "frequency": 6, "bandwidth": 2}]}
+    import json
+
+    cli("noise", json.dumps(noise), "-o", str(tmp_path / "n.exr"))
+    example = stochtex.example(noise)
+    assert example.shape == (64, 64) and example.dtype == np.float32
+    assert np.array_equal(example, stochtex.read_image(str(tmp_path / "n.exr"))[:, :, 0])
+    assert not np.array_equal(stochtex.example(noise, seed=4), example)
+    assert 0.3 < example.mean() < 0.7 and example.std() > 0.05
+
+    table = stochtex.colormap({"type": "gaussian"})
+    assert table.ndim == 3 and table.shape[2] == 3
+    ry, rx, _ = table.shape
+    # H = x (grey, its sRGB value x in linear light): rising along a row from
+    # black to white, the same on every row.
+    assert np.all(np.diff(table[0, :, 0]) > 0) and table[0, 0, 0] == 0 and table[0, -1, 0] == pytest.approx(1, abs=1e-6)
+    assert np.array_equal(table, np.broadcast_to(table[:1], table.shape))
+    with pytest.raises(stochtex.InputError, match="<dict>"):
+        stochtex.colormap({"type": "no-such-colormap"})
