@@ -5,11 +5,16 @@
 #include <pybind11/pybind11.h>
 #include <tbb/task_arena.h>
 
+#include <span>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
+#include "stochtex/core/error.h"
 #include "stochtex/image/image.h"
+#include "stochtex/pattern/param_info.h"
+#include "stochtex/report/report.h"
 #include "stochtex/report/table.h"
 
 namespace stochtex::python {
@@ -47,6 +52,36 @@ auto withThreads(int threads, F&& f) {
 // array where every cell is a number or does not apply (NaN), else a list
 // of the cells' text. stochtex/__init__.py makes it a Table (a dict).
 py::tuple tableTuple(const Table& table);
+
+// A report (a study's value) as {"title", "sections": [{"heading", "html",
+// "tables": [(file, tableTuple)], "figures": [(file, caption, image)]}]};
+// stochtex/studies.py makes it a Report.
+py::dict reportDict(Report&& report);
+
+// Sets the numbers an option table describes (OptionMember: the CLI's flags
+// and the workbench's widgets come from the same table) from keyword
+// arguments named as their parameters in snake case, then checks them all.
+// A keyword the table lacks is an InputError naming it.
+template <class Options>
+void setMembers(Options& options, std::span<const OptionMember<Options>> members, const py::kwargs& kwargs) {
+    for (const auto& [key, value] : kwargs) {
+        const std::string keyword = py::str(key);
+        const OptionMember<Options>* member = nullptr;
+        std::string known;
+        for (const OptionMember<Options>& m : members) {
+            if (keywordOf(m.info.name) == keyword) member = &m;
+            known += (known.empty() ? "" : ", ") + keywordOf(m.info.name);
+        }
+        if (!member)
+            throw InputError::parameter(keyword, "is not an option of this study (its numbers: " + known + ")");
+        std::visit(
+            [&](auto field) {
+                options.*field = value.template cast<std::remove_reference_t<decltype(options.*field)>>();
+            },
+            member->member);
+    }
+    checkMembers(options, members);
+}
 
 void bindImages(py::module_& m);
 void bindPatterns(py::module_& m);

@@ -58,6 +58,26 @@ py::tuple tableTuple(const Table& table) {
     return py::make_tuple(table.title, table.note, columns);
 }
 
+py::dict reportDict(Report&& report) {
+    py::list sections;
+    for (ReportSection& section : report.sections) {
+        py::list tables, figures;
+        for (const ReportTable& t : section.tables) tables.append(py::make_tuple(t.file, tableTuple(t.table)));
+        for (Figure& f : section.figures)
+            figures.append(py::make_tuple(f.file, f.caption, imageArray(std::move(f.image))));
+        py::dict d;
+        d["heading"] = section.heading;
+        d["html"] = section.html;
+        d["tables"] = tables;
+        d["figures"] = figures;
+        sections.append(d);
+    }
+    py::dict d;
+    d["title"] = report.title;
+    d["sections"] = sections;
+    return d;
+}
+
 }  // namespace stochtex::python
 
 PYBIND11_MODULE(_stochtex, m) {

@@ -12,6 +12,7 @@
 
 #include "bindings.h"
 #include "stochtex/analysis/estimator_error.h"
+#include "stochtex/pattern/prefiltered_colormap.h"
 #include "stochtex/studies/paper.h"
 
 namespace stochtex::python {
@@ -68,6 +69,31 @@ private:
 }  // namespace
 
 void bindStudies(py::module_& m) {
+    m.def(
+        "figure4",
+        [](const PatternSpec& pattern, const std::vector<int>& footprints, const std::string& prefilter,
+           double referenceTolerance, const py::kwargs& numbers) {
+            Figure4Options o;
+            o.pattern = pattern;
+            o.name = pattern.name;
+            o.footprints = footprints;
+            o.response.prefilter = parseEnum(kPrefilterModeNames, prefilter, "prefilter");
+            o.referenceTolerance = referenceTolerance;
+            setMembers(o, figure4Members(), numbers);
+            validateFigure4(o);
+            Report report;
+            {
+                py::gil_scoped_release release;
+                report = figure4Report(figure4(o), o.figure);
+            }
+            return reportDict(std::move(report));
+        },
+        py::arg("pattern"), py::kw_only(), py::arg("footprints") = Figure4Options{}.footprints,
+        py::arg("prefilter") = "smooth", py::arg("reference_tolerance") = Figure4Options{}.referenceTolerance,
+        "Paper Figure 4 (`stochtex reproduce figure4`): per footprint, the reference S̄, Ŝ from the exact "
+        "statistics and from the estimators, and their errors. Numbers of the study's option table as keywords: "
+        "size, reference_samples.");
+
     m.def(
         "table1",
         [](int count, const std::vector<int>& footprints, uint32_t seed, uint32_t noiseSeed, int maxSamples) {

@@ -98,6 +98,14 @@ class Shadertoy:
 
 _TableTuple = Tuple[str, str, List[Tuple[str, str, str, Union[npt.NDArray[np.float64], List[str]]]]]
 
+def figure4(
+    pattern: Pattern,
+    *,
+    footprints: Sequence[int] = ...,
+    prefilter: str = "smooth",
+    reference_tolerance: float = 0.0005,
+    **kwargs: float,
+) -> dict: ...
 def table1(
     *, count: int = 1000, footprints: Sequence[int] = ..., seed: int = 1, noise_seed: int = 1, max_samples: int = 512
 ) -> dict: ...

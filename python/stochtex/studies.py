@@ -11,7 +11,17 @@ import numpy as np
 from . import _stochtex
 from ._stochtex import Table1Sampler  # noqa: F401 (re-exported)
 
-__all__ = ["Figure", "Table", "Table1Sampler", "table1", "table1_from_terms", "TABLE1_FOOTPRINTS"]
+__all__ = [
+    "Figure",
+    "Report",
+    "Section",
+    "Table",
+    "Table1Sampler",
+    "TABLE1_FOOTPRINTS",
+    "figure4",
+    "table1",
+    "table1_from_terms",
+]
 
 TABLE1_FOOTPRINTS = (2, 4, 8, 16, 32, 64, 128)
 
@@ -41,6 +51,62 @@ class Figure(NamedTuple):
     file: str  # the name the report writes it under
     caption: str
     image: np.ndarray  # float32 (height, width, channels), as the report writes it
+
+
+class Section(NamedTuple):
+    heading: str
+    html: str  # the page's text under the heading
+    tables: Dict[str, Table]  # by the CSV file the report writes (else the table's title)
+    figures: List[Figure]
+
+
+class Report(NamedTuple):
+    """A study's report as `stochtex reproduce` writes it, as values."""
+
+    title: str
+    sections: List[Section]
+
+    @property
+    def tables(self) -> Dict[str, Table]:
+        return {name: t for s in self.sections for name, t in s.tables.items()}
+
+    @property
+    def figures(self) -> List[Figure]:
+        return [f for s in self.sections for f in s.figures]
+
+
+def _report(raw: Dict[str, Any]) -> Report:
+    sections = []
+    for s in raw["sections"]:
+        tables = {}
+        for file, t in s["tables"]:
+            table = Table(*t)
+            tables[file or table.title] = table
+        sections.append(Section(s["heading"], s["html"], tables, [Figure(*f) for f in s["figures"]]))
+    return Report(raw["title"], sections)
+
+
+def figure4(
+    pattern: Any = "camouflage",
+    *,
+    footprints: Sequence[int] = (1, 2, 4, 8, 16, 32, 64, 128),
+    prefilter: str = "smooth",
+    reference_tolerance: float = 5e-4,
+    **numbers: Any,
+) -> Report:
+    """Paper Figure 4 (`stochtex reproduce figure4`) for any pattern (a
+    Pattern, preset name, path or dict): per footprint the reference S̄, Ŝ
+    from the exact statistics and from the estimators, and their mean errors
+    (the table "figure4.csv"). numbers: the study's option table, size (image
+    side per footprint) and reference_samples (the reference's cap per axis)."""
+    from . import pattern as _pattern
+
+    return _report(
+        _stochtex.figure4(
+            _pattern(pattern), footprints=list(footprints), prefilter=prefilter,
+            reference_tolerance=reference_tolerance, **numbers
+        )
+    )
 
 
 def _result(raw: Dict[str, Any]) -> Dict[str, Any]:

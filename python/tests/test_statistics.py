@@ -104,3 +104,27 @@ def test_the_gil_is_released_while_rendering():
     inside = [t for t in ticks if span["start"] + 0.01 < t < span["end"] - 0.01]
     # Holding the GIL, the render would have stopped this thread throughout.
     assert len(inside) >= 5, f"{len(inside)} ticks of this thread during a {span['end'] - span['start']:.2f} s render"
+
+
+def test_figure4_equals_the_cli_csv(tmp_path, cli):
+    cli("reproduce", "figure4", "--size", "32", "--reference-samples", "8", "-o", str(tmp_path))
+    with open(tmp_path / "figure4.csv") as f:
+        rows = list(csv.DictReader(f))
+    report = stochtex.studies.figure4("camouflage", size=32, reference_samples=8)
+    table = report.tables["figure4.csv"]
+    assert table.rows() == len(rows) == 8
+    for key in table:
+        if isinstance(table[key], np.ndarray):
+            expected = [float(r[key]) if r[key] else np.nan for r in rows]
+            np.testing.assert_allclose(table[key], expected, rtol=5e-6, atol=0, err_msg=key)
+    assert report.figures and all(f.image.ndim == 3 for f in report.figures)
+    assert report.title
+
+
+def test_a_study_s_numbers_are_its_option_table_s():
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.figure4("camouflage", size=8)
+    assert caught.value.parameter == "size"
+    with pytest.raises(stochtex.InputError, match="its numbers: size, reference_samples") as caught:
+        stochtex.studies.figure4("camouflage", sise=32)
+    assert caught.value.parameter == "sise"
