@@ -12,26 +12,20 @@
 // stochtex.GpuUnavailable (a RuntimeError).
 #include <pybind11/pybind11.h>
 
-#include <cctype>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "bindings.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gl_context.h"
+#include "stochtex/pattern/param_info.h"
 
 namespace stochtex::python {
 
 std::string keywordOf(const std::string& parameter) {
-    std::string k;
-    for (const char c : parameter) {
-        if (std::isupper(static_cast<unsigned char>(c))) {
-            k += '_';
-            k += char(std::tolower(static_cast<unsigned char>(c)));
-        } else {
-            k += c;
-        }
-    }
+    std::string k = kebabCase(parameter);  // the CLI's flag spelling, with underscores
+    std::replace(k.begin(), k.end(), '-', '_');
     return k;
 }
 
