@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <tbb/task_arena.h>
 
+#include <functional>
 #include <span>
 #include <string>
 #include <utility>
@@ -12,10 +13,12 @@
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/core/progress.h"
 #include "stochtex/image/image.h"
 #include "stochtex/pattern/param_info.h"
 #include "stochtex/report/report.h"
 #include "stochtex/report/table.h"
+#include "stochtex/textures/texture_source.h"
 
 namespace stochtex::python {
 
@@ -63,7 +66,7 @@ py::dict reportDict(Report&& report);
 // arguments named as their parameters in snake case, then checks them all.
 // A keyword the table lacks is an InputError naming it.
 template <class Options>
-void setMembers(Options& options, std::span<const OptionMember<Options>> members, const py::kwargs& kwargs) {
+void setMembers(Options& options, std::span<const OptionMember<Options>> members, const py::dict& kwargs) {
     for (const auto& [key, value] : kwargs) {
         const std::string keyword = py::str(key);
         const OptionMember<Options>* member = nullptr;
@@ -83,8 +86,24 @@ void setMembers(Options& options, std::span<const OptionMember<Options>> members
     checkMembers(options, members);
 }
 
+// A texture source Python holds (the zoom texture, a ShaderToy program, a
+// pattern's view): use(f) calls f with the library's TextureSource on the
+// thread that owns it (a GPU source's GL thread), the GIL released.
+class PySource {
+public:
+    virtual ~PySource() = default;
+    virtual void use(const std::function<void(const TextureSource&)>& f) const = 0;
+};
+
+// A Python callable progress(fraction, step) as the library's Progress,
+// called from any thread with the GIL taken; it also lets Ctrl-C stop the
+// work (a pending signal raises KeyboardInterrupt through the library call).
+// The caller must release the GIL while the library runs.
+Progress pythonProgress(const py::object& callback);
+
 void bindImages(py::module_& m);
 void bindPatterns(py::module_& m);
+void bindSources(py::module_& m);  // first: TextureSource is the others' base
 void bindShadertoy(py::module_& m);
 void bindStudies(py::module_& m);
 

@@ -52,6 +52,14 @@ py::tuple tableTuple(const Table& table) {
     return py::make_tuple(table.title, table.note, columns);
 }
 
+Progress pythonProgress(const py::object& callback) {
+    return [callback](double fraction, const std::string& step) {
+        py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        if (!callback.is_none()) callback(fraction, step);
+    };
+}
+
 py::dict reportDict(Report&& report) {
     py::list sections;
     for (ReportSection& section : report.sections) {
@@ -95,6 +103,7 @@ PYBIND11_MODULE(_stochtex, m) {
     });
 
     python::bindImages(m);
+    python::bindSources(m);
     python::bindPatterns(m);
     python::bindShadertoy(m);
     python::bindStudies(m);

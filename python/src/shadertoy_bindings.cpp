@@ -23,7 +23,7 @@ namespace {
 // The most one frames() call returns.
 constexpr long long kMaxFramesBytes = 4ll << 30;
 
-class Shadertoy {
+class Shadertoy : public PySource {
 public:
     Shadertoy(const std::string& path, const ShadertoySettings& settings) {
         validateShadertoySettings(settings);
@@ -83,6 +83,10 @@ public:
     std::string name() {
         return gl_->run([this] { return host_->spec().name; });
     }
+    // Source pixel (0, 0) is the frame's centre; time t is frame round((t − start_time)·fps).
+    void use(const std::function<void(const TextureSource&)>& f) const override {
+        gl_->run([&] { f(ShadertoySource(*host_)); });
+    }
 
 private:
     std::unique_ptr<GlThread> gl_ = std::make_unique<GlThread>();  // first: it outlives what it made
@@ -93,9 +97,9 @@ private:
 }  // namespace
 
 void bindShadertoy(py::module_& m) {
-    py::class_<Shadertoy>(m, "Shadertoy",
-                          "A ShaderToy program (a folder, our manifest or ShaderToy's export JSON; "
-                          "docs/SHADERTOY.md) on a headless OpenGL context: its frames as arrays.")
+    py::class_<Shadertoy, PySource>(m, "Shadertoy",
+                                    "A ShaderToy program (a folder, our manifest or ShaderToy's export JSON; "
+                                    "docs/SHADERTOY.md) on a headless OpenGL context: its frames as arrays.")
         .def(py::init([](const std::string& path, int width, int height, double fps, double startTime) {
                  ShadertoySettings s;
                  s.width = width;

@@ -1,6 +1,6 @@
 # Type stubs of the C++ extension (python/src/*.cpp); python/tests/test_stubs.py
 # holds them to the module's names and signatures.
-from typing import ClassVar, List, Optional, Sequence, Tuple, Union
+from typing import Callable, ClassVar, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -84,7 +84,78 @@ class FootprintStatistics:
     @property
     def max_level(self) -> int: ...
 
-class Shadertoy:
+class TextureSource: ...
+
+class ZoomTexture(TextureSource):
+    def __init__(
+        self,
+        *,
+        scaling: str = "exponential",
+        offsets: str = "none",
+        interpolation: str = "linear",
+        offset_seed: int = 1,
+        seed: int = 1,
+        image: Optional[npt.ArrayLike] = None,
+        **kwargs: float,
+    ) -> None: ...
+    def render(
+        self,
+        *,
+        size: Union[int, Sequence[int]] = 256,
+        origin: Optional[Sequence[float]] = None,
+        time: float = 0.0,
+        instance: int = 0,
+    ) -> npt.NDArray[np.float32]: ...
+
+class InstanceStatistics:
+    def __init__(
+        self,
+        *,
+        size: Union[int, Sequence[int]] = 256,
+        origin: Optional[Sequence[float]] = None,
+        time: float = 0.0,
+        **kwargs: int,
+    ) -> None: ...
+    def merge(self, other: InstanceStatistics) -> None: ...
+    @property
+    def count(self) -> int: ...
+    @property
+    def point(self) -> Tuple[int, int]: ...
+    @property
+    def mean(self) -> npt.NDArray[np.float32]: ...
+    @property
+    def variance(self) -> npt.NDArray[np.float32]: ...
+    @property
+    def correlation(self) -> npt.NDArray[np.float32]: ...
+    @property
+    def correlation_row(self) -> npt.NDArray[np.float32]: ...
+    @property
+    def probe_correlation(self) -> npt.NDArray[np.float32]: ...
+
+def instance_statistics(
+    source: TextureSource,
+    *,
+    size: Union[int, Sequence[int]] = 256,
+    origin: Optional[Sequence[float]] = None,
+    time: float = 0.0,
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: int,
+) -> InstanceStatistics: ...
+def instance_report(statistics: InstanceStatistics) -> dict: ...
+def instance_chunk(
+    source: TextureSource,
+    index: int,
+    *,
+    size: Union[int, Sequence[int]] = 256,
+    origin: Optional[Sequence[float]] = None,
+    time: float = 0.0,
+    **kwargs: int,
+) -> InstanceStatistics: ...
+def instance_chunk_count(
+    *, size: Union[int, Sequence[int]] = 256, origin: Optional[Sequence[float]] = None, time: float = 0.0, **kwargs: int
+) -> int: ...
+
+class Shadertoy(TextureSource):
     def __init__(
         self, path: str, *, width: int = 640, height: int = 360, fps: float = 60.0, start_time: float = 0.0
     ) -> None: ...

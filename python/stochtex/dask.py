@@ -1,13 +1,18 @@
 """The embarrassingly parallel studies on Dask (dask.distributed): each
-splits into deterministic chunks keyed by seed and footprint range, which
-any worker computes, and merges into exactly the single-process result.
+splits into deterministic chunks keyed by seed and footprint range (Table 1)
+or instance range (statistics over instances), which any worker computes,
+and merges into exactly the single-process result.
 
     from dask.distributed import Client
-    import stochtex.dask
+    import functools, stochtex, stochtex.dask
 
     client = Client("scheduler:8786")          # or Client(LocalCluster(...))
     result = stochtex.dask.table1(client, count=100_000)
     result["data"]                             # == stochtex.studies.table1(count=100_000)["data"]
+
+    program = functools.partial(stochtex.Shadertoy, "data/shadertoy/noise", width=128, height=128)
+    stats = stochtex.dask.instance_statistics(client, program, size=128, instances=4096)
+    stats.correlation                          # == studies.instance_statistics(program(), ...).correlation
 
 A chunk's result depends only on its key, so a lost worker's chunks are
 recomputed by Dask elsewhere and the merge is unchanged. Every worker needs
@@ -16,13 +21,16 @@ stochtex importable (the same build: `pip install --no-build-isolation .`).
 from __future__ import annotations
 
 import functools
-from typing import Any, Dict, List, Sequence
+import pickle
+from typing import Any, Callable, Dict, List, Sequence
+
+import cloudpickle
 
 import numpy as np
 
 from . import studies
 
-__all__ = ["table1", "table1_chunks"]
+__all__ = ["instance_statistics", "table1", "table1_chunks"]
 
 
 @functools.lru_cache(maxsize=4)
@@ -83,3 +91,44 @@ def table1(
     return studies.table1_from_terms(
         terms, count=count, footprints=footprints, seed=seed, noise_seed=noise_seed, max_samples=max_samples
     )
+
+
+@functools.lru_cache(maxsize=2)
+def _worker_source(recipe: bytes):
+    # A source is made once per worker process and recipe (a ShaderToy
+    # program compiles its shaders, a zoom texture draws its lattice); its
+    # chunks reuse it. Sources serialise their own calls (a GPU source runs
+    # them on its GL thread), so threads of one worker may share it.
+    return pickle.loads(recipe)()
+
+
+def _instance_chunk(recipe: bytes, index: int, options: Dict[str, Any]):
+    return studies.instance_chunk(_worker_source(recipe), index, **options)
+
+
+def instance_statistics(client, make_source: Callable[[], Any], **options: Any):
+    """stochtex.studies.instance_statistics(make_source(), **options) with its
+    chunks of `chunk` instances computed on the client's cluster and merged
+    in index order: exactly the single-process result (an
+    InstanceStatistics). make_source is a picklable callable that makes the
+    source on a worker (e.g. functools.partial(stochtex.Shadertoy, path,
+    width=128, height=128), or a lambda: Dask's cloudpickle takes those);
+    each worker calls it once. Memory: the driver holds the running sums and
+    the chunks not yet merged; a task, one chunk's sums (5 float64 maps of
+    the window and one width² matrix). progress(fraction, step), where
+    given, is called on this side as chunks are merged."""
+    progress = options.pop("progress", None)
+    total = studies.InstanceStatistics(**options)  # refuses bad options here, before any task runs
+    recipe = cloudpickle.dumps(make_source)
+    count = studies.instance_chunk_count(**options)
+    futures = [client.submit(_instance_chunk, recipe, index, options, pure=True) for index in range(count)]
+    try:
+        for index, future in enumerate(futures):  # index order: the merge is the single-process fold
+            total.merge(future.result())
+            future.release()
+            if progress is not None:
+                progress((index + 1) / count, f"chunk {index + 1} of {count}")
+    except BaseException:
+        client.cancel(futures)  # a bad source or Ctrl-C: the other chunks are not wanted
+        raise
+    return total

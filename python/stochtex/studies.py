@@ -9,7 +9,7 @@ from typing import Any, Dict, List, NamedTuple, Sequence, Union
 import numpy as np
 
 from . import _stochtex
-from ._stochtex import Table1Sampler  # noqa: F401 (re-exported)
+from ._stochtex import InstanceStatistics, Table1Sampler, TextureSource  # noqa: F401 (re-exported)
 
 __all__ = [
     "Figure",
@@ -19,6 +19,10 @@ __all__ = [
     "Table1Sampler",
     "TABLE1_FOOTPRINTS",
     "figure4",
+    "instance_chunk",
+    "instance_chunk_count",
+    "instance_report",
+    "instance_statistics",
     "table1",
     "table1_from_terms",
 ]
@@ -142,3 +146,35 @@ def table1_from_terms(terms: Sequence[Sequence[np.ndarray]], **options: Any) -> 
     if "footprints" in options:
         options["footprints"] = list(options["footprints"])
     return _result(_stochtex.table1_from_terms([list(t) for t in terms], **options))
+
+
+def instance_statistics(source: TextureSource, **options: Any) -> InstanceStatistics:
+    """The statistical accumulator (thesis §3.3) over instances 0…N−1 of a
+    source (ZoomTexture, Shadertoy) at one time: per-pixel mean and variance
+    of the gray frames, the correlation of every pixel with a point (eq. 3.1),
+    with a row, and between the pixels of the probe row. Options: size (N or
+    (width, height), 4…1024), origin ((x0, y0); default: centred), time,
+    instances, chunk, point_x, point_y, reference_row, probe_row, progress
+    (a callable(fraction, step)). stochtex.dask.instance_statistics splits
+    the same run over a cluster with exactly this result."""
+    return _stochtex.instance_statistics(source, **options)
+
+
+def instance_chunk(source: TextureSource, index: int, **options: Any) -> InstanceStatistics:
+    """The sums of chunk `index` (instances [index·chunk, (index+1)·chunk))
+    of instance_statistics with the same options. Merged in index order into
+    InstanceStatistics(**options), the chunks give its result exactly."""
+    return _stochtex.instance_chunk(source, index, **options)
+
+
+def instance_chunk_count(**options: Any) -> int:
+    """The number of chunks of instance_statistics with these options."""
+    return _stochtex.instance_chunk_count(**options)
+
+
+def instance_report(statistics: InstanceStatistics) -> Report:
+    """What `stochtex shadertoy --analyse statistics` reports: the summary
+    table "statistics.csv" (instances, mean of the mean and its spread, mean
+    variance, the correlation's Corr ≥ ½ area, elongation, anti-correlation)
+    and maps of the mean, the variance and the correlation."""
+    return _report(_stochtex.instance_report(statistics))

@@ -90,7 +90,7 @@ def test_the_gil_is_released_while_rendering():
 
     def work():
         span["start"] = time.perf_counter()
-        renderer.render(size=512, scale=4.7, threads=1)
+        renderer.render(size=1536, scale=4.7, threads=1)  # ≥ 0.3 s on the 2-core VM (512² took 40 ms)
         span["end"] = time.perf_counter()
 
     ticks = []

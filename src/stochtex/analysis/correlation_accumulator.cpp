@@ -56,6 +56,33 @@ void CorrelationAccumulator::add(const Image& frame) {
     ++count_;
 }
 
+void CorrelationAccumulator::merge(const CorrelationAccumulator& other) {
+    if (other.width_ != width_ || other.height_ != height_ || other.refX_ != refX_ || other.refY_ != refY_ ||
+        other.refRow_ != refRow_ || other.probeRow_ != probeRow_)
+        throw InputError("accumulator: merges only an accumulator of the same frame size, point and rows");
+    const auto mine = sumsToAdd();
+    const auto theirs = other.sums();
+    for (int k = 0; k < kSums; ++k) {
+        std::vector<double>& to = *mine[size_t(k)];
+        const std::vector<double>& from = *theirs[size_t(k)];
+        for (size_t i = 0; i < to.size(); ++i) to[i] += from[i];
+    }
+    count_ += other.count_;
+}
+
+void CorrelationAccumulator::restore(int count, std::array<std::vector<double>, kSums> sums) {
+    if (count < 0) throw InputError("accumulator: a count of frames cannot be negative");
+    const auto mine = this->sums();
+    for (int k = 0; k < kSums; ++k)
+        if (sums[size_t(k)].size() != mine[size_t(k)]->size())
+            throw InputError("accumulator: sum " + std::to_string(k) + " holds " +
+                             std::to_string(sums[size_t(k)].size()) + " values, not " +
+                             std::to_string(mine[size_t(k)]->size()));
+    count_ = count;
+    const auto to = sumsToAdd();
+    for (int k = 0; k < kSums; ++k) *to[size_t(k)] = std::move(sums[size_t(k)]);
+}
+
 double CorrelationAccumulator::varAt(size_t i) const {
     const double m = meanAt(i);
     return std::max(0.0, sum2_[i] / count_ - m * m);

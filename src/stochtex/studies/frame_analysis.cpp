@@ -4,12 +4,11 @@
 #include <array>
 #include <cmath>
 
-#include "stochtex/analysis/correlation_accumulator.h"
-#include "stochtex/analysis/correlation_shape.h"
 #include "stochtex/analysis/flicker.h"
-#include "stochtex/report/plot.h"
 #include "stochtex/core/error.h"
+#include "stochtex/report/plot.h"
 #include "stochtex/studies/flow_study.h"
+#include "stochtex/studies/instance_statistics.h"
 #include "stochtex/studies/spectrum_study.h"
 #include "stochtex/studies/temporal_coherence_study.h"
 
@@ -48,24 +47,14 @@ bool has(const FrameAnalysisOptions& o, FrameAnalysis a) {
     return std::find(o.analyses.begin(), o.analyses.end(), a) != o.analyses.end();
 }
 
-std::array<int, 2> statisticsPoint(const FrameAnalysisOptions& o) {
-    return {o.pointX < 0 ? o.region.width / 2 : o.pointX, o.pointY < 0 ? o.region.height / 2 : o.pointY};
-}
-
-// A map over the study's window as a heat map, axes in window pixels, rows down.
-Image windowMap(const Image& values, const SourceRegion& region, const std::string& title, double lo, double hi,
-                HeatPalette palette) {
-    HeatmapOptions h;
-    h.title = title;
-    h.vmin = lo;
-    h.vmax = hi;
-    h.palette = palette;
-    h.yUp = false;
-    h.xMax = region.width;
-    h.yMax = region.height;
-    h.xLabel = "x (pixels)";
-    h.yLabel = "y (pixels, down)";
-    return heatmapPlot(values, h);
+InstanceStatisticsOptions statisticsOptions(const FrameAnalysisOptions& o) {
+    InstanceStatisticsOptions s;
+    s.region = o.region;
+    s.time = o.time;
+    s.instances = o.instances;
+    s.pointX = o.pointX;
+    s.pointY = o.pointY;
+    return s;
 }
 
 struct Section {
@@ -78,7 +67,9 @@ struct Section {
 Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& o, const Progress& progress) {
     Section s{"Flicker: change between frames that the optical flow does not explain", {}, {}};
     Table perPair, summary;
-    perPair.columns = {{"pair", "frames", ""}, {"residual", "residual", "codes"}, {"contrast", "contrast", "codes"},
+    perPair.columns = {{"pair", "frames", ""},
+                       {"residual", "residual", "codes"},
+                       {"contrast", "contrast", "codes"},
                        {"relative", "residual / contrast", ""}};
     std::vector<double> pairs, relative;
     Image previous = source.render(o.region, o.time, 0), worstMap;
@@ -100,8 +91,10 @@ Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& 
     }
     const int n = o.frames - 1;
     const double meanContrast = sumContrast / n;
-    summary.columns = {{"pairs", "pairs", ""}, {"residual", "mean residual", "codes"},
-                       {"contrast", "mean contrast", "codes"}, {"relative", "residual / contrast", ""}};
+    summary.columns = {{"pairs", "pairs", ""},
+                       {"residual", "mean residual", "codes"},
+                       {"contrast", "mean contrast", "codes"},
+                       {"relative", "residual / contrast", ""}};
     summary.add({TableCell::integer(n), TableCell::value(sumResidual / n), TableCell::value(meanContrast),
                  TableCell::value(relativeFlicker(sumResidual / n, meanContrast))});
     s.tables = {{"flicker.csv", summary}, {"flicker_pairs.csv", perPair}};
@@ -110,60 +103,33 @@ Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& 
     po.title = "Flicker per pair of frames";
     po.xLabel = "pair (frame k → k + 1)";
     po.yLabel = "residual / contrast";
-    s.figures.push_back(chartFigure("flicker.png", {{series}, po},
-                         "The next frame warped back by the optical flow (DIS) and subtracted: what motion does not "
-                         "explain, relative to the frames' contrast (blur lowers both)."));
-    s.figures.push_back({"flicker_map.png",
-                         windowMap(worstMap, o.region,
-                                   "Residual of pair " + std::to_string(worstPair) + "→" + std::to_string(worstPair + 1),
-                                   0, std::max(1e-6, 4.0 * worst), HeatPalette::Viridis),
-                         "Where the worst pair flickers: the per-pixel residual (grey: no flow target inside the frame)."});
+    s.figures.push_back(
+        chartFigure("flicker.png", {{series}, po},
+                    "The next frame warped back by the optical flow (DIS) and subtracted: what motion does not "
+                    "explain, relative to the frames' contrast (blur lowers both)."));
+    s.figures.push_back(
+        {"flicker_map.png",
+         windowMap(worstMap, o.region,
+                   "Residual of pair " + std::to_string(worstPair) + "→" + std::to_string(worstPair + 1), 0,
+                   std::max(1e-6, 4.0 * worst), HeatPalette::Viridis),
+         "Where the worst pair flickers: the per-pixel residual (grey: no flow target inside the frame)."});
     return s;
 }
 
 // Instances 0…N−1 at the first frame's time through the correlation accumulator.
 Section statisticsSection(const TextureSource& source, const FrameAnalysisOptions& o, const Progress& progress) {
-    Section s{"Statistics over instances (the statistical accumulator)", {}, {}};
-    const auto [px, py] = statisticsPoint(o);
-    CorrelationAccumulator acc(o.region.width, o.region.height, px, py, py, py);
-    for (int i = 0; i < o.instances; ++i) {
-        if (progress && i % 8 == 0) progress(double(i) / o.instances, "instance " + std::to_string(i + 1));
-        const Image frame = source.render(o.region, o.time, i);
-        acc.add(frame.channels() == 1 ? frame : toGray(frame));
-    }
-    const Image mean = acc.mean(), variance = acc.variance(), corr = acc.correlationWithPoint();
-    const ChannelStats m = channelStats(mean), v = channelStats(variance);
-    const CorrelationShape shape = correlationShape(corr, px, py);
-    Table summary;
-    summary.columns = {{"instances", "instances", ""},     {"mean", "mean of the mean", "codes"},
-                       {"mean_spread", "spread of the mean", "codes"}, {"variance", "mean variance", "codes²"},
-                       {"area", "Corr ≥ ½ area", "pixels"}, {"elongation", "elongation", ""},
-                       {"anti", "anti-correlation", ""}};
-    summary.add({TableCell::integer(o.instances), TableCell::value(m.mean), TableCell::value(m.stddev),
-                 TableCell::value(v.mean), TableCell::integer(shape.area), TableCell::value(shape.elongation, "%.2f"),
-                 TableCell::value(shape.antiCorrelation, "%.3f")});
-    s.tables = {{"statistics.csv", summary}};
-    auto map = [&](const Image& values, const std::string& title, double lo, double hi, HeatPalette palette) {
-        return windowMap(values, o.region, title, lo, hi, palette);
-    };
-    const double vmax = std::max(1e-6, v.mean + 3 * v.stddev);
-    const std::string n = std::to_string(o.instances) + " instances";
-    s.figures.push_back({"statistics_mean.png", map(mean, "Mean over " + n, 0, 1, HeatPalette::Viridis),
-                         "Per-pixel mean of the gray values: a stationary texture is flat."});
-    s.figures.push_back({"statistics_variance.png", map(variance, "Variance over " + n, 0, vmax, HeatPalette::Viridis),
-                         "Per-pixel variance: a stationary texture is flat."});
-    s.figures.push_back({"statistics_correlation.png",
-                         map(corr, "Corr with (" + std::to_string(px) + ", " + std::to_string(py) + ")", -1, 1,
-                             HeatPalette::Diverging),
-                         "Correlation of every pixel with the point over the instances (thesis eq. 3.1)."});
-    return s;
+    const InstanceStatisticsOptions options = statisticsOptions(o);
+    InstanceStatisticsSummary summary =
+        summarizeInstanceStatistics(instanceStatistics(source, options, progress), options.region);
+    return {std::move(summary.title), {{"statistics.csv", std::move(summary.summary)}}, std::move(summary.figures)};
 }
 
 }  // namespace
 
 void validateFrameAnalysis(const FrameAnalysisOptions& o, const TextureSource* source) {
     if (o.analyses.empty())
-        throw InputError::parameter("analyses", "must name at least one of " + canonicalNames(kFrameAnalysisNames, ", "));
+        throw InputError::parameter("analyses",
+                                    "must name at least one of " + canonicalNames(kFrameAnalysisNames, ", "));
     for (size_t k = 0; k < o.analyses.size(); ++k)
         if (std::count(o.analyses.begin(), o.analyses.end(), o.analyses[k]) > 1)
             throw InputError::parameter("analyses", "names " + enumName(kFrameAnalysisNames, o.analyses[k]) + " twice");
@@ -171,24 +137,11 @@ void validateFrameAnalysis(const FrameAnalysisOptions& o, const TextureSource* s
     if (has(o, FrameAnalysis::Flow)) validateFlowStudy(flowOptions(o), source);
     if (has(o, FrameAnalysis::Coherence)) validateTemporalCoherence(coherenceOptions(o), source);
     if (has(o, FrameAnalysis::Flicker)) validateFlowStudy(flowOptions(o), source);  // the same frames, the same flow
-    if (has(o, FrameAnalysis::Statistics)) {
-        if (o.instances < 2 || o.instances > 100000)
-            throw InputError::parameter("instances", "must be in [2, 100000], got " + std::to_string(o.instances));
-        const auto [px, py] = statisticsPoint(o);
-        if (px >= o.region.width || py >= o.region.height)
-            throw InputError::parameter("point", "(" + std::to_string(px) + ", " + std::to_string(py) +
-                                                     ") lies outside the " + std::to_string(o.region.width) + "x" +
-                                                     std::to_string(o.region.height) + " window");
-        if (o.region.width < 4 || o.region.height < 4 || o.region.width > 1024 || o.region.height > 1024)
-            throw InputError::parameter("size", "statistics need a window of 4…1024 pixels a side");
-        if (source) {
-            source->checkWindow(o.region, o.time);
-            source->checkInstances(o.instances);
-        }
-    }
+    if (has(o, FrameAnalysis::Statistics)) validateInstanceStatistics(statisticsOptions(o), source);
 }
 
-FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalysisOptions& o, const StudyProgress& progress) {
+FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalysisOptions& o,
+                                  const StudyProgress& progress) {
     validateFrameAnalysis(o, &source);
     FrameAnalysisResult r;
     r.report.title = "Frame studies: " + o.sourceName;
@@ -233,7 +186,7 @@ FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalys
             case FrameAnalysis::Flicker:
             case FrameAnalysis::Statistics: {
                 const Section s = o.analyses[size_t(k)] == FrameAnalysis::Flicker ? flickerSection(source, o, part)
-                                                                                   : statisticsSection(source, o, part);
+                                                                                  : statisticsSection(source, o, part);
                 r.tables.insert(r.tables.end(), s.tables.begin(), s.tables.end());
                 add(s.title, s.tables.front().second, s.figures);
                 break;

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "stochtex/analysis/correlation_accumulator.h"
 #include "stochtex/core/error.h"
 #include "stochtex/report/plot.h"
+#include "stochtex/studies/instance_statistics.h"
 
 namespace stochtex {
 
@@ -19,13 +19,13 @@ std::array<int, 2> reference(const ImageBaseStudyOptions& o) {
 // source's instances.
 Image pointCorrelation(const TextureSource& source, const ImageBaseStudyOptions& o, const Progress& progress) {
     const auto r = reference(o);
-    CorrelationAccumulator acc(o.size, o.size, r[0], r[1], 0, 0);
-    const SourceRegion region{o.size, o.size, 0.0, 0.0};
-    for (int k = 0; k < o.instances; ++k) {
-        if (progress && k % 16 == 0) progress(double(k) / o.instances, "");
-        acc.add(source.render(region, o.zoom.time, k));
-    }
-    return acc.correlationWithPoint();
+    InstanceStatisticsOptions s;
+    s.region = {o.size, o.size, 0.0, 0.0};
+    s.time = o.zoom.time;
+    s.instances = o.instances;
+    s.pointX = r[0];
+    s.pointY = r[1];
+    return instanceStatistics(source, s, progress).correlationWithPoint();
 }
 
 // The strongest echo: the largest correlation at least `radius` pixels from

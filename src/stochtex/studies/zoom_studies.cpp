@@ -9,6 +9,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/report/plot.h"
+#include "stochtex/studies/instance_statistics.h"
 
 namespace stochtex {
 
@@ -24,8 +25,6 @@ Image map(int size, F&& f) {
     });
     return out;
 }
-
-Image gray(Image frame) { return frame.channels() == 1 ? frame : toGray(frame); }
 
 }  // namespace
 
@@ -43,9 +42,15 @@ CorrelationMeasurement measureCorrelation(const TextureSource& source, const Cor
     if (px >= o.size || py >= o.size)
         throw InputError("correlation: the reference point (" + std::to_string(px) + ", " + std::to_string(py) +
                          ") lies outside the " + std::to_string(o.size) + "-pixel window");
-    CorrelationAccumulator acc(o.size, o.size, px, py, 0, 0);
-    const SourceRegion region{o.size, o.size, o.x0, o.y0};
-    for (int k = 0; k < o.instances; ++k) acc.add(gray(source.render(region, o.time, k)));
+    InstanceStatisticsOptions s;
+    s.region = {o.size, o.size, o.x0, o.y0};
+    s.time = o.time;
+    s.instances = o.instances;
+    s.pointX = px;
+    s.pointY = py;
+    s.referenceRow = 0;
+    s.probeRow = 0;
+    const CorrelationAccumulator acc = instanceStatistics(source, s);
     m.measuredRadial = acc.probeCorrelation();
     m.measuredNonRadial = acc.correlationWithRow();
     m.measuredPoint = acc.correlationWithPoint();

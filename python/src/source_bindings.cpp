@@ -1,0 +1,295 @@
+// Texture sources for Python (the zoom texture here; a ShaderToy program in
+// shadertoy_bindings.cpp) and the statistics over their instances (thesis
+// §3.3), in the chunks a distributed run splits them into
+// (studies/instance_statistics.h; stochtex/dask.py merges them).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "bindings.h"
+#include "stochtex/core/error.h"
+#include "stochtex/report/report.h"
+#include "stochtex/studies/instance_statistics.h"
+
+namespace stochtex::python {
+
+namespace {
+
+// The stationary zoom texture over a white-noise lattice or a gray image.
+class ZoomTexture : public PySource {
+public:
+    ZoomTexture(const ZoomParams& params, ZoomBase base) : source_(params, std::move(base)) {}
+    void use(const std::function<void(const TextureSource&)>& f) const override {
+        py::gil_scoped_release release;
+        f(source_);
+    }
+    const ZoomSource& source() const { return source_; }
+
+private:
+    ZoomSource source_;
+};
+
+using SizeArgument = std::variant<int, std::vector<int>>;
+
+// A window of a source: size N or (width, height), origin (x0, y0) its first
+// pixel in the source's (default: centred on the source's origin).
+SourceRegion regionOf(const SizeArgument& size, const std::optional<std::vector<double>>& origin) {
+    const std::vector<int> sides =
+        std::holds_alternative<int>(size) ? std::vector<int>{std::get<int>(size)} : std::get<std::vector<int>>(size);
+    if (sides.empty() || sides.size() > 2)
+        throw InputError::parameter("size", "must be N or (width, height), got " + std::to_string(sides.size()) +
+                                                " numbers");
+    for (const int side : sides)
+        if (side < 1 || side > 16384)
+            throw InputError::parameter("size", "must be in [1, 16384] pixels a side, got " + std::to_string(side));
+    SourceRegion region = SourceRegion::centred(sides[0], sides.size() > 1 ? sides[1] : sides[0]);
+    if (origin) {
+        if (origin->size() != 2)
+            throw InputError::parameter("origin", "must be (x0, y0), the window's first pixel in the source's, got " +
+                                                      std::to_string(origin->size()) + " numbers");
+        region.x0 = (*origin)[0];
+        region.y0 = (*origin)[1];
+    }
+    return region;
+}
+
+// The window, time and numbers of a statistics run, from Python's keywords.
+InstanceStatisticsOptions instanceOptions(const SizeArgument& size, const std::optional<std::vector<double>>& origin,
+                                          double time, const py::kwargs& numbers) {
+    InstanceStatisticsOptions o;
+    o.region = regionOf(size, origin);
+    o.time = time;
+    setMembers(o, instanceStatisticsMembers(), numbers);
+    validateInstanceStatistics(o);
+    return o;
+}
+
+// The sums of some instances of a source, with the run's options (for the
+// summary's window and for pickling).
+class InstanceStatistics {
+public:
+    explicit InstanceStatistics(const InstanceStatisticsOptions& options)
+        : options_(options), sums_(emptyInstanceStatistics(options)) {}
+    InstanceStatistics(const InstanceStatisticsOptions& options, CorrelationAccumulator&& sums)
+        : options_(options), sums_(std::move(sums)) {}
+
+    void merge(const InstanceStatistics& other) {
+        py::gil_scoped_release release;
+        sums_.merge(other.sums_);
+    }
+    int count() const { return sums_.count(); }
+    py::array_t<float> map(Image (CorrelationAccumulator::*which)() const) const {
+        Image image;
+        {
+            py::gil_scoped_release release;
+            image = (sums_.*which)();
+        }
+        return ownedArray<float>(std::move(image.data()), {image.height(), image.width()});
+    }
+    py::dict report() const {
+        Report report;
+        {
+            py::gil_scoped_release release;
+            InstanceStatisticsSummary s = summarizeInstanceStatistics(sums_, options_.region);
+            report.title = "Statistics over instances";
+            ReportSection section;
+            section.heading = s.title;
+            section.tables.push_back({"statistics.csv", std::move(s.summary), true});
+            section.figures = std::move(s.figures);
+            report.sections.push_back(std::move(section));
+        }
+        return reportDict(std::move(report));
+    }
+
+    // (options, count, sums): what pickling keeps.
+    py::tuple state() const {
+        const InstanceStatisticsOptions& o = options_;
+        py::tuple options = py::make_tuple(o.region.width, o.region.height, o.region.x0, o.region.y0, o.time,
+                                           o.instances, o.pointX, o.pointY, o.referenceRow, o.probeRow, o.chunk);
+        py::list sums;
+        for (const std::vector<double>* s : sums_.sums())
+            sums.append(ownedArray<double>(std::vector<double>(*s), {py::ssize_t(s->size())}));
+        return py::make_tuple(options, sums_.count(), sums);
+    }
+    static InstanceStatistics fromState(const py::tuple& state) {
+        if (state.size() != 3) throw InputError("InstanceStatistics: not a pickled state");
+        const auto options = state[0].cast<py::tuple>();
+        if (options.size() != 11) throw InputError("InstanceStatistics: not a pickled state");
+        InstanceStatisticsOptions o;
+        o.region = {options[0].cast<int>(), options[1].cast<int>(), options[2].cast<double>(),
+                    options[3].cast<double>()};
+        o.time = options[4].cast<double>();
+        o.instances = options[5].cast<int>();
+        o.pointX = options[6].cast<int>();
+        o.pointY = options[7].cast<int>();
+        o.referenceRow = options[8].cast<int>();
+        o.probeRow = options[9].cast<int>();
+        o.chunk = options[10].cast<int>();
+        InstanceStatistics out(o);
+        const auto arrays =
+            state[2].cast<std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>>>();
+        if (arrays.size() != CorrelationAccumulator::kSums) throw InputError("InstanceStatistics: not a pickled state");
+        std::array<std::vector<double>, CorrelationAccumulator::kSums> sums;
+        for (size_t k = 0; k < sums.size(); ++k) sums[k].assign(arrays[k].data(), arrays[k].data() + arrays[k].size());
+        out.sums_.restore(state[1].cast<int>(), std::move(sums));
+        return out;
+    }
+
+    const InstanceStatisticsOptions& options() const { return options_; }
+    std::array<int, 2> point() const { return {sums_.referenceX(), sums_.referenceY()}; }
+
+private:
+    InstanceStatisticsOptions options_;
+    CorrelationAccumulator sums_;
+};
+
+// f(source, options) for a Python source, the GIL released, with progress.
+template <class F>
+InstanceStatistics measure(const PySource& source, const InstanceStatisticsOptions& o, F&& f) {
+    std::optional<InstanceStatistics> out;
+    source.use([&](const TextureSource& s) {
+        validateInstanceStatistics(o, &s);
+        out.emplace(o, f(s));
+    });
+    return std::move(*out);
+}
+
+}  // namespace
+
+void bindSources(py::module_& m) {
+    py::class_<PySource>(m, "TextureSource",
+                         "Frames of a texture for the studies: a window of its plane at a time, for an instance "
+                         "(a realisation of its random process). ZoomTexture, Shadertoy.");
+
+    py::class_<ZoomTexture, PySource>(
+        m, "ZoomTexture",
+        "The stationary zoom texture (Tavernier 2017, eq. 2.1): layers of one white-noise lattice of period "
+        "base_size (instance i: the lattice of seed i's hash) or of a gray image (instance i: the image moved), "
+        "each scaled by its own factor and blended. Source pixels are the plane's points relative to the zoom "
+        "centre.")
+        .def(py::init([](const std::string& scaling, const std::string& offsets, const std::string& interpolation,
+                         uint32_t offsetSeed, uint32_t seed,
+                         const std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>>& image,
+                         const py::kwargs& numbers) {
+                 ZoomParams p;
+                 p.scaling = parseEnum(kZoomScalingNames, scaling, "scaling");
+                 p.offsets = parseEnum(kZoomOffsetsNames, offsets, "offsets");
+                 p.interpolation = parseEnum(kLatticeInterpolationNames, interpolation, "interpolation");
+                 p.offsetSeed = offsetSeed;
+                 ZoomBase base;
+                 base.seed = seed;
+                 py::dict zoomNumbers, baseNumbers;
+                 for (const auto& [key, value] : numbers)
+                     (py::str(key).cast<std::string>() == "base_size" ? baseNumbers : zoomNumbers)[key] = value;
+                 setMembers(p, zoomParamsMembers(), zoomNumbers);
+                 setMembers(base, zoomBaseMembers(), baseNumbers);
+                 if (image) {
+                     if (image->ndim() != 2)
+                         throw InputError::parameter("image", "must be a gray image: a float array (height, width)");
+                     base.image = Image(int(image->shape(1)), int(image->shape(0)), 1, Image::Uninitialized{});
+                     std::copy(image->data(), image->data() + image->size(), base.image.data().begin());
+                 }
+                 py::gil_scoped_release release;
+                 return std::make_unique<ZoomTexture>(p, std::move(base));
+             }),
+             py::kw_only(), py::arg("scaling") = "exponential", py::arg("offsets") = "none",
+             py::arg("interpolation") = "linear", py::arg("offset_seed") = ZoomParams{}.offsetSeed,
+             py::arg("seed") = ZoomBase{}.seed, py::arg("image") = py::none(),
+             "Numbers as keywords: layers, max_scale, time, envelope_sigma (eq. 2.1's n, H, t, s) and base_size.")
+        .def(
+            "render",
+            [](const ZoomTexture& z, const SizeArgument& size, const std::optional<std::vector<double>>& origin,
+               double time, int instance) {
+                const SourceRegion region = regionOf(size, origin);
+                Image image;
+                {
+                    py::gil_scoped_release release;
+                    z.source().checkWindow(region, time);
+                    image = z.source().render(region, time, instance);
+                }
+                return ownedArray<float>(std::move(image.data()), {image.height(), image.width()});
+            },
+            py::kw_only(), py::arg("size") = 256, py::arg("origin") = py::none(), py::arg("time") = 0.0,
+            py::arg("instance") = 0,
+            "A window as float32 (height, width): size N or (width, height), origin (x0, y0) its first pixel in "
+            "the plane (default: centred on the zoom centre).");
+
+    py::class_<InstanceStatistics>(
+        m, "InstanceStatistics",
+        "Sums over instances of a source (the statistical accumulator, thesis §3.3): per-pixel mean and variance, "
+        "correlation with a point, with a row, and between the pixels of the probe row. Merges with the sums of "
+        "other instances of the same window; pickles (for Dask).")
+        .def(py::init([](const SizeArgument& size, const std::optional<std::vector<double>>& origin, double time,
+                         const py::kwargs& numbers) {
+                 return InstanceStatistics(instanceOptions(size, origin, time, numbers));
+             }),
+             py::kw_only(), py::arg("size") = 256, py::arg("origin") = py::none(), py::arg("time") = 0.0,
+             "No instance yet, for the options instance_statistics takes.")
+        .def("merge", &InstanceStatistics::merge, py::arg("other"),
+             "Adds the other's sums (the same window, point and rows).")
+        .def_property_readonly("count", &InstanceStatistics::count, "Instances summed.")
+        .def_property_readonly("point", &InstanceStatistics::point, "(x, y): the correlation's point in the window.")
+        .def_property_readonly("mean", [](const InstanceStatistics& s) { return s.map(&CorrelationAccumulator::mean); })
+        .def_property_readonly("variance",
+                               [](const InstanceStatistics& s) { return s.map(&CorrelationAccumulator::variance); })
+        .def_property_readonly(
+            "correlation",
+            [](const InstanceStatistics& s) { return s.map(&CorrelationAccumulator::correlationWithPoint); },
+            "Corr[I(point), I(x, y)] (thesis eq. 3.1), float32 (height, width).")
+        .def_property_readonly(
+            "correlation_row",
+            [](const InstanceStatistics& s) { return s.map(&CorrelationAccumulator::correlationWithRow); },
+            "Corr[I(x, reference_row), I(x, y)], float32 (height, width).")
+        .def_property_readonly(
+            "probe_correlation",
+            [](const InstanceStatistics& s) { return s.map(&CorrelationAccumulator::probeCorrelation); },
+            "Corr[I(x, probe_row), I(y, probe_row)], float32 (width, width).")
+        .def(py::pickle([](const InstanceStatistics& s) { return s.state(); },
+                        [](const py::tuple& state) { return InstanceStatistics::fromState(state); }));
+
+    m.def(
+        "instance_statistics",
+        [](const PySource& source, const SizeArgument& size, const std::optional<std::vector<double>>& origin,
+           double time, const py::object& progress, const py::kwargs& numbers) {
+            const InstanceStatisticsOptions o = instanceOptions(size, origin, time, numbers);
+            const Progress report = pythonProgress(progress);
+            return measure(source, o, [&](const TextureSource& s) { return instanceStatistics(s, o, report); });
+        },
+        py::arg("source"), py::kw_only(), py::arg("size") = 256, py::arg("origin") = py::none(), py::arg("time") = 0.0,
+        py::arg("progress") = py::none(),
+        "Statistics over instances 0…N−1 of a source's window at one time, frames gray (the thesis's luminosity). "
+        "size: N or (width, height), 4…1024; origin: (x0, y0), default centred; numbers as keywords: instances, "
+        "chunk (instances summed from zero before they are added in order: part of the result's definition), "
+        "point_x, point_y, reference_row, probe_row (−1: the centre, the point's row). progress(fraction, step) "
+        "is called as it goes.");
+    m.def("instance_report", &InstanceStatistics::report, py::arg("statistics"),
+          "The summary (instances, mean and its spread, mean variance, the correlation's Corr ≥ ½ area, elongation "
+          "and anti-correlation) and maps, as `stochtex shadertoy --analyse statistics` reports them.");
+    m.def(
+        "instance_chunk",
+        [](const PySource& source, int index, const SizeArgument& size,
+           const std::optional<std::vector<double>>& origin, double time, const py::kwargs& numbers) {
+            const InstanceStatisticsOptions o = instanceOptions(size, origin, time, numbers);
+            return measure(source, o, [&](const TextureSource& s) { return instanceChunk(s, o, index); });
+        },
+        py::arg("source"), py::arg("index"), py::kw_only(), py::arg("size") = 256, py::arg("origin") = py::none(),
+        py::arg("time") = 0.0,
+        "The sums of chunk `index` of instance_statistics with the same options: merged in index order into "
+        "InstanceStatistics(same options), the chunks give instance_statistics' result exactly.");
+    m.def(
+        "instance_chunk_count",
+        [](const SizeArgument& size, const std::optional<std::vector<double>>& origin, double time,
+           const py::kwargs& numbers) { return instanceChunkCount(instanceOptions(size, origin, time, numbers)); },
+        py::kw_only(), py::arg("size") = 256, py::arg("origin") = py::none(), py::arg("time") = 0.0,
+        "⌈instances / chunk⌉ for these options.");
+}
+
+}  // namespace stochtex::python
