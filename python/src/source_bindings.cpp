@@ -45,8 +45,8 @@ SourceRegion regionOf(const SizeArgument& size, const std::optional<std::vector<
     const std::vector<int> sides =
         std::holds_alternative<int>(size) ? std::vector<int>{std::get<int>(size)} : std::get<std::vector<int>>(size);
     if (sides.empty() || sides.size() > 2)
-        throw InputError::parameter("size", "must be N or (width, height), got " + std::to_string(sides.size()) +
-                                                " numbers");
+        throw InputError::parameter("size",
+                                    "must be N or (width, height), got " + std::to_string(sides.size()) + " numbers");
     for (const int side : sides)
         if (side < 1 || side > 16384)
             throw InputError::parameter("size", "must be in [1, 16384] pixels a side, got " + std::to_string(side));
