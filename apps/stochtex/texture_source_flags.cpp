@@ -32,7 +32,9 @@ void addShadertoySource(CLI::App& cmd, const SourceStudy& study) {
         auto context = GlContext::headless();
         ShadertoyHost host(spec, *context, settings);
         const ShadertoySource source(host);
-        study(source, {spec.name + " (ShaderToy program)", false, 0, 0, 0, Transfer::Srgb,
+        // Linear: a program's frames are display codes already, shown as they are
+        // (as `shadertoy --analyse` shows them).
+        study(source, {spec.name + " (ShaderToy program)", false, 0, 0, 0, Transfer::Linear,
                        settings.startTime + args->flags.firstFrame / settings.fps});
     });
 }

@@ -634,6 +634,9 @@ JSON
   expect_ok "shadertoy frame 120" "$out/wbt_ref.png" -- "$bin" shadertoy "$src/data/shadertoy/swirl" --size 96,80 --frames 121 -o "$out/wbt_ref.png"
   d=$("$compare" "$out/wbt.png" "$out/wbt_ref.png") || { fail "workbench frame: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench frame vs shadertoy: $d (want mean <= 0.5, flipped >= 10)"
+  # A program's frames are display codes: the spectrum study shows its frame as they are.
+  d=$("$compare" "$out/wbss/frame.png" "$out/wbt_ref.png") || { fail "spectrum frame: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5) }' || fail "spectrum's frame.png of a program vs its frame: $d (want mean <= 0.5)"
 
   # Side by side halves the program's picture: the program runs on at the new
   # size instead of starting again (its grey is iFrame; a restart at frame 10
