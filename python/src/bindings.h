@@ -6,6 +6,7 @@
 #include <tbb/task_arena.h>
 
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -14,6 +15,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/progress.h"
+#include "stochtex/image/colour_space.h"
 #include "stochtex/image/image.h"
 #include "stochtex/pattern/param_info.h"
 #include "stochtex/report/report.h"
@@ -93,7 +95,20 @@ class PySource {
 public:
     virtual ~PySource() = default;
     virtual void use(const std::function<void(const TextureSource&)>& f) const = 0;
+    // What a report calls it.
+    virtual std::string name() const = 0;
+    // How a study shows its frames: Srgb encodes linear-light colour (a
+    // pattern's renders), Linear shows values as they are (display codes, gray).
+    virtual Transfer frameTransfer() const { return Transfer::Linear; }
+    // A frame study's defaults: the first frame's time and the time between frames.
+    virtual double startTime() const { return 0; }
+    virtual double frameStep() const { return 1.0 / 30; }
 };
+
+// A window of a source: size N or (width, height), origin (x0, y0) its first
+// pixel in the source's (default: centred on the source's origin).
+using SizeArgument = std::variant<int, std::vector<int>>;
+SourceRegion sourceRegion(const SizeArgument& size, const std::optional<std::vector<double>>& origin);
 
 // A Python callable progress(fraction, step) as the library's Progress,
 // called from any thread with the GIL taken; it also lets Ctrl-C stop the

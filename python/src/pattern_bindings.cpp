@@ -79,11 +79,12 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    py::array_t<float> render(const std::optional<std::variant<int, std::vector<int>>>& sizeArgument,
-                              const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,
-                              const std::string& camera, double tilt, double fov, int threads) const {
+    // The camera of a view: the pattern's size and scale unless given.
+    Camera camera(const std::optional<std::variant<int, std::vector<int>>>& sizeArgument,
+                  const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,
+                  const std::string& kind, double tilt, double fov) const {
         Camera c;
-        c.kind = parseEnum(Camera::kKindNames, camera, "camera");
+        c.kind = parseEnum(Camera::kKindNames, kind, "camera");
         c.view.width = spec_.width;
         c.view.height = spec_.height;
         c.view.scale = scale.value_or(spec_.scale);
@@ -109,18 +110,28 @@ public:
         c.fovDeg = fov;
         validateView(c.view);
         validateCamera(c);
-        if (threads < 0)
-            throw InputError::parameter("threads", "must be ≥ 0 (0: every core), got " + std::to_string(threads));
-        Image image;
-        if (gl_) {
-            image = gl_->run([&] { return renderer_->render(c); });
-        } else {
-            py::gil_scoped_release release;
-            image = withThreads(threads, [&] { return renderer_->render(c); });
-        }
-        return imageArray(std::move(image));
+        return c;
     }
 
+    // f(renderer) where the renderer lives (the GPU's GL thread; else here on
+    // `threads` worker threads, 0: every core), the GIL released.
+    template <class F>
+    auto use(int threads, F&& f) const {
+        if (threads < 0)
+            throw InputError::parameter("threads", "must be ≥ 0 (0: every core), got " + std::to_string(threads));
+        if (gl_) return gl_->run([&] { return f(static_cast<const ViewRenderer&>(*renderer_)); });
+        py::gil_scoped_release release;
+        return withThreads(threads, [&] { return f(static_cast<const ViewRenderer&>(*renderer_)); });
+    }
+
+    py::array_t<float> render(const std::optional<std::variant<int, std::vector<int>>>& size,
+                              const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,
+                              const std::string& kind, double tilt, double fov, int threads) const {
+        const Camera c = camera(size, scale, offset, kind, tilt, fov);
+        return imageArray(use(threads, [&](const ViewRenderer& r) { return r.render(c); }));
+    }
+
+    const PatternSpec& spec() const { return spec_; }
     int exampleSize() const { return renderer_->exampleSize(); }
     std::string device() const { return renderer_->device(); }
     std::string filter() const { return filterLabel(options_); }
@@ -130,6 +141,23 @@ private:
     PatternSpec spec_;
     FilterOptions options_;
     std::unique_ptr<ViewRenderer> renderer_;
+};
+
+// A renderer's camera as a texture source: a window of the camera's view,
+// instance i moving it (another draw of the tile offsets). The renderer
+// must outlive it (Python keeps it alive).
+class PatternView : public PySource {
+public:
+    PatternView(const Renderer& renderer, const Camera& camera) : renderer_(renderer), camera_(camera) {}
+    void use(const std::function<void(const TextureSource&)>& f) const override {
+        renderer_.use(0, [&](const ViewRenderer& r) { f(CameraSource(r, camera_)); });
+    }
+    std::string name() const override { return renderer_.spec().name + ", filter " + renderer_.filter(); }
+    Transfer frameTransfer() const override { return Transfer::Srgb; }  // linear-light colour renders
+
+private:
+    const Renderer& renderer_;
+    Camera camera_;
 };
 
 // The footprint statistics of one pair of a pattern's leaves (a plain
@@ -228,6 +256,7 @@ private:
 }  // namespace
 
 void bindPatterns(py::module_& m) {
+    py::class_<PatternView, PySource>(m, "PatternView", "A renderer's camera as a TextureSource (Renderer.source).");
     m.def("presets", &presetNames, "The names of the embedded presets, sorted.");
 
     m.def(
@@ -312,6 +341,17 @@ void bindPatterns(py::module_& m) {
              "(width, height), default the pattern's; scale: example texels per pixel; offset: (u, v) in texels; "
              "camera: zoom or plane (tilt_deg, fov_deg); threads: 0 for every core (the result does not "
              "depend on it).")
+        .def(
+            "source",
+            [](const Renderer& r, const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,
+               const std::string& camera, double tilt, double fov) {
+                return std::make_unique<PatternView>(r, r.camera(std::nullopt, scale, offset, camera, tilt, fov));
+            },
+            py::kw_only(), py::arg("scale") = py::none(), py::arg("offset") = py::none(), py::arg("camera") = "zoom",
+            py::arg("tilt_deg") = 60.0, py::arg("fov_deg") = 60.0, py::keep_alive<0, 1>(),
+            "This renderer's view as a TextureSource for the studies (instance_statistics, frame_analysis): "
+            "source pixel (0, 0) is the view's pixel (0, 0); instance i moves the view (another draw of the tile "
+            "offsets); static in time. A plane camera's windows start at (0, 0): pass origin=(0, 0).")
         .def_property_readonly("example_size", &Renderer::exampleSize, "W: the examples' side in texels.")
         .def_property_readonly("device", &Renderer::device, "\"CPU\" or the OpenGL context's description.")
         .def_property_readonly("filter", &Renderer::filter);

@@ -80,12 +80,19 @@ public:
     int frame() {
         return gl_->run([this] { return host_->frame(); });
     }
-    std::string name() {
+    std::string programName() const {
         return gl_->run([this] { return host_->spec().name; });
     }
     // Source pixel (0, 0) is the frame's centre; time t is frame round((t − start_time)·fps).
     void use(const std::function<void(const TextureSource&)>& f) const override {
         gl_->run([&] { f(ShadertoySource(*host_)); });
+    }
+    std::string name() const override { return programName() + " (ShaderToy program)"; }
+    double startTime() const override {
+        return gl_->run([this] { return host_->settings().startTime; });
+    }
+    double frameStep() const override {
+        return gl_->run([this] { return 1.0 / host_->settings().fps; });
     }
 
 private:
@@ -118,7 +125,7 @@ void bindShadertoy(py::module_& m) {
              "Back to frame 0, buffers cleared, the instance uniform set.")
         .def("next", &Shadertoy::next, "Renders the next frame: float32 (height, width, 3).")
         .def_property_readonly("frame", &Shadertoy::frame, "Frames rendered since the last reset.")
-        .def_property_readonly("name", &Shadertoy::name);
+        .def_property_readonly("name", &Shadertoy::programName);
 }
 
 }  // namespace stochtex::python

@@ -32,16 +32,16 @@ public:
         f(source_);
     }
     const ZoomSource& source() const { return source_; }
+    std::string name() const override { return "zoom texture, n = " + std::to_string(source_.params().layers); }
+    double startTime() const override { return source_.params().time; }
 
 private:
     ZoomSource source_;
 };
 
-using SizeArgument = std::variant<int, std::vector<int>>;
+}  // namespace
 
-// A window of a source: size N or (width, height), origin (x0, y0) its first
-// pixel in the source's (default: centred on the source's origin).
-SourceRegion regionOf(const SizeArgument& size, const std::optional<std::vector<double>>& origin) {
+SourceRegion sourceRegion(const SizeArgument& size, const std::optional<std::vector<double>>& origin) {
     const std::vector<int> sides =
         std::holds_alternative<int>(size) ? std::vector<int>{std::get<int>(size)} : std::get<std::vector<int>>(size);
     if (sides.empty() || sides.size() > 2)
@@ -61,11 +61,13 @@ SourceRegion regionOf(const SizeArgument& size, const std::optional<std::vector<
     return region;
 }
 
+namespace {
+
 // The window, time and numbers of a statistics run, from Python's keywords.
 InstanceStatisticsOptions instanceOptions(const SizeArgument& size, const std::optional<std::vector<double>>& origin,
                                           double time, const py::kwargs& numbers) {
     InstanceStatisticsOptions o;
-    o.region = regionOf(size, origin);
+    o.region = sourceRegion(size, origin);
     o.time = time;
     setMembers(o, instanceStatisticsMembers(), numbers);
     validateInstanceStatistics(o);
@@ -208,7 +210,7 @@ void bindSources(py::module_& m) {
             "render",
             [](const ZoomTexture& z, const SizeArgument& size, const std::optional<std::vector<double>>& origin,
                double time, int instance) {
-                const SourceRegion region = regionOf(size, origin);
+                const SourceRegion region = sourceRegion(size, origin);
                 Image image;
                 {
                     py::gil_scoped_release release;

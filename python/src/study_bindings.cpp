@@ -13,7 +13,12 @@
 #include "bindings.h"
 #include "stochtex/analysis/estimator_error.h"
 #include "stochtex/pattern/prefiltered_colormap.h"
+#include "stochtex/studies/estimator_renders.h"
+#include "stochtex/studies/frame_analysis.h"
+#include "stochtex/studies/graph_filtering.h"
+#include "stochtex/studies/normal_maps.h"
 #include "stochtex/studies/paper.h"
+#include "stochtex/studies/phasor_figures.h"
 
 namespace stochtex::python {
 
@@ -66,9 +71,124 @@ private:
     std::unique_ptr<EstimatorErrorSampler> sampler_;
 };
 
+// A study's report: its numbers set from keywords (the study's option
+// table, the one the CLI's flags come from), then run with the GIL released.
+template <class Options, class Run>
+py::dict studyReport(Options options, std::span<const OptionMember<Options>> members, const py::kwargs& numbers,
+                     const py::object& progress, Run&& run) {
+    setMembers(options, members, numbers);
+    const Progress report = pythonProgress(progress);
+    Report result;
+    {
+        py::gil_scoped_release release;
+        result = run(options, report);
+    }
+    return reportDict(std::move(result));
+}
+
 }  // namespace
 
 void bindStudies(py::module_& m) {
+    m.def(
+        "frame_analysis",
+        [](const PySource& source, const std::vector<std::string>& analyses,
+           const std::variant<int, std::vector<int>>& size, const std::optional<std::vector<double>>& origin,
+           const std::optional<double>& time, const std::optional<double>& timeStep, int frames, int instances,
+           int pointX, int pointY, const py::object& progress) {
+            FrameAnalysisOptions o;
+            for (const std::string& a : analyses) o.analyses.push_back(parseEnum(kFrameAnalysisNames, a, "analyses"));
+            o.region = sourceRegion(size, origin);
+            o.time = time.value_or(source.startTime());
+            o.timeStep = timeStep.value_or(source.frameStep());
+            o.frames = frames;
+            o.instances = instances;
+            o.pointX = pointX;
+            o.pointY = pointY;
+            o.frameTransfer = source.frameTransfer();
+            o.sourceName = source.name();
+            validateFrameAnalysis(o);
+            const Progress report = pythonProgress(progress);
+            Report result;
+            source.use([&](const TextureSource& s) { result = frameAnalysis(s, o, report).report; });
+            return reportDict(std::move(result));
+        },
+        py::arg("source"), py::kw_only(), py::arg("analyses") = std::vector<std::string>{"spectrum"},
+        py::arg("size") = 256, py::arg("origin") = py::none(), py::arg("time") = py::none(),
+        py::arg("time_step") = py::none(), py::arg("frames") = FrameAnalysisOptions{}.frames,
+        py::arg("instances") = FrameAnalysisOptions{}.instances, py::arg("point_x") = -1, py::arg("point_y") = -1,
+        py::arg("progress") = py::none(),
+        "Frame studies of a source's window on one page (`stochtex shadertoy PROG --analyse ...`): spectrum (the "
+        "first frame's power spectrum), flow (optical flow between consecutive frames), coherence, flicker (what "
+        "the flow does not explain), statistics (over instances). Frame k at time + k·time_step (defaults: the "
+        "source's start and frame step).");
+
+    m.def(
+        "figure10",
+        [](const py::object& progress, const py::kwargs& numbers) {
+            return studyReport(
+                Figure10Options{}, figure10Members(), numbers, progress,
+                [](const Figure10Options& o, const Progress& p) { return figure10Report(figure10(o, p)); });
+        },
+        py::kw_only(), py::arg("progress") = py::none(),
+        "Paper Figure 10 (`stochtex reproduce figure10`): the phasor variants, and procedural phasor noise beside "
+        "ours. Numbers of its option table as keywords.");
+    m.def(
+        "figure12",
+        [](const PatternSpec& pattern, int size, double tilt, int aniso, const py::object& progress,
+           const py::kwargs& numbers) {
+            Figure12Options o;
+            o.pattern = pattern;
+            o.name = pattern.name;
+            o.width = size;
+            o.height = size * 5 / 8;  // as the CLI's --size
+            o.tiltDeg = tilt;
+            o.aniso = aniso;
+            return studyReport(
+                o, figure12Members(), numbers, progress,
+                [](const Figure12Options& o, const Progress& p) { return figure12Report(figure12(o, p)); });
+        },
+        py::arg("pattern"), py::kw_only(), py::arg("size") = Figure12Options{}.width,
+        py::arg("tilt_deg") = Figure12Options{}.tiltDeg, py::arg("aniso") = Figure12Options{}.aniso,
+        py::arg("progress") = py::none(),
+        "Paper Figure 12 (`stochtex reproduce figure12`): a LEAN-mapped procedural normal map seen on a plane, four "
+        "variants: size is the global view's width (its height 5/8 of it). Numbers of its option table as keywords.");
+    m.def(
+        "figure14",
+        [](const PatternSpec& pattern, const std::vector<int>& footprints, const std::string& prefilter,
+           const py::object& progress, const py::kwargs& numbers) {
+            Figure14Options o;
+            o.pattern = pattern;
+            o.name = pattern.name;
+            o.footprints = footprints;
+            o.prefilter = parseEnum(kPrefilterModeNames, prefilter, "prefilter");
+            return studyReport(
+                o, figure14Members(), numbers, progress,
+                [](const Figure14Options& o, const Progress& p) { return figure14Report(figure14(o, p)); });
+        },
+        py::arg("pattern"), py::kw_only(), py::arg("footprints") = Figure14Options{}.footprints,
+        py::arg("prefilter") = "smooth", py::arg("progress") = py::none(),
+        "Paper Figure 14 (`stochtex reproduce figure14`): a graph filtered per footprint against its reference. "
+        "Numbers of its option table as keywords.");
+    m.def(
+        "estimator_renders",
+        [](const std::vector<std::string>& presets, const std::vector<double>& scales, bool plane,
+           const std::string& prefilter, const py::object& progress, const py::kwargs& numbers) {
+            EstimatorRendersOptions o;
+            o.presets = presets;
+            o.scales = scales;
+            o.plane = plane;
+            o.prefilter = parseEnum(kPrefilterModeNames, prefilter, "prefilter");
+            return studyReport(o, estimatorRendersMembers(), numbers, progress,
+                               [](const EstimatorRendersOptions& o, const Progress& p) {
+                                   return estimatorRendersReport(estimatorRenders(o, p));
+                               });
+        },
+        py::kw_only(), py::arg("presets") = EstimatorRendersOptions{}.presets,
+        py::arg("scales") = EstimatorRendersOptions{}.scales, py::arg("plane") = EstimatorRendersOptions{}.plane,
+        py::arg("prefilter") = "smooth", py::arg("progress") = py::none(),
+        "The estimators' rendered error (`stochtex reproduce estimators`): each preset at zoom scales and on a "
+        "plane, every estimator against the reference. Numbers of its option table as keywords.");
+
     m.def(
         "figure4",
         [](const PatternSpec& pattern, const std::vector<int>& footprints, const std::string& prefilter,

@@ -64,6 +64,15 @@ class Renderer:
         fov_deg: float = 60.0,
         threads: int = 0,
     ) -> npt.NDArray[np.float32]: ...
+    def source(
+        self,
+        *,
+        scale: Optional[float] = None,
+        offset: Optional[Sequence[float]] = None,
+        camera: str = "zoom",
+        tilt_deg: float = 60.0,
+        fov_deg: float = 60.0,
+    ) -> PatternView: ...
     @property
     def example_size(self) -> int: ...
     @property
@@ -106,6 +115,8 @@ class ZoomTexture(TextureSource):
         time: float = 0.0,
         instance: int = 0,
     ) -> npt.NDArray[np.float32]: ...
+
+class PatternView(TextureSource): ...
 
 class InstanceStatistics:
     def __init__(
@@ -169,6 +180,47 @@ class Shadertoy(TextureSource):
 
 _TableTuple = Tuple[str, str, List[Tuple[str, str, str, Union[npt.NDArray[np.float64], List[str]]]]]
 
+def frame_analysis(
+    source: TextureSource,
+    *,
+    analyses: Sequence[str] = ...,
+    size: Union[int, Sequence[int]] = 256,
+    origin: Optional[Sequence[float]] = None,
+    time: Optional[float] = None,
+    time_step: Optional[float] = None,
+    frames: int = 8,
+    instances: int = 64,
+    point_x: int = -1,
+    point_y: int = -1,
+    progress: Optional[Callable[[float, str], None]] = None,
+) -> dict: ...
+def figure10(*, progress: Optional[Callable[[float, str], None]] = None, **kwargs: float) -> dict: ...
+def figure12(
+    pattern: Pattern,
+    *,
+    size: int = 640,
+    tilt_deg: float = 70.0,
+    aniso: int = 8,
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: float,
+) -> dict: ...
+def figure14(
+    pattern: Pattern,
+    *,
+    footprints: Sequence[int] = ...,
+    prefilter: str = "smooth",
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: float,
+) -> dict: ...
+def estimator_renders(
+    *,
+    presets: Sequence[str] = ...,
+    scales: Sequence[float] = ...,
+    plane: bool = True,
+    prefilter: str = "smooth",
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: float,
+) -> dict: ...
 def figure4(
     pattern: Pattern,
     *,

@@ -18,7 +18,12 @@ __all__ = [
     "Table",
     "Table1Sampler",
     "TABLE1_FOOTPRINTS",
+    "estimator_renders",
     "figure4",
+    "figure10",
+    "figure12",
+    "figure14",
+    "frame_analysis",
     "instance_chunk",
     "instance_chunk_count",
     "instance_report",
@@ -111,6 +116,54 @@ def figure4(
             reference_tolerance=reference_tolerance, **numbers
         )
     )
+
+
+def figure10(**numbers: Any) -> Report:
+    """Paper Figure 10 (`stochtex reproduce figure10`): the phasor variants'
+    sheet, and procedural phasor noise beside ours with their spectra.
+    numbers: size, comparison_size."""
+    return _report(_stochtex.figure10(**numbers))
+
+
+def figure12(pattern: Any = "lean-ridges", **options: Any) -> Report:
+    """Paper Figure 12 (`stochtex reproduce figure12`): a LEAN-mapped
+    procedural normal map on a plane, four variants against the reference.
+    Options: size (the view's width; height 5/8 of it), tilt_deg, aniso,
+    reference_samples, progress."""
+    from . import pattern as _pattern
+
+    return _report(_stochtex.figure12(_pattern(pattern), **options))
+
+
+def figure14(pattern: Any = "figure14", *, footprints: Sequence[int] = (1, 2, 4, 8, 16, 32, 64), **options: Any) -> Report:
+    """Paper Figure 14 (`stochtex reproduce figure14`): a texture graph
+    filtered per footprint against its reference. Options: prefilter, size,
+    reference_samples, progress."""
+    from . import pattern as _pattern
+
+    return _report(_stochtex.figure14(_pattern(pattern), footprints=list(footprints), **options))
+
+
+def estimator_renders(**options: Any) -> Report:
+    """The estimators' rendered error (`stochtex reproduce estimators`):
+    presets (names), scales (texels per pixel), plane (bool), prefilter,
+    and the numbers size, reference_samples, aniso, tilt_deg, plane_scale."""
+    for key in ("presets", "scales"):
+        if key in options:
+            options[key] = list(options[key])
+    return _report(_stochtex.estimator_renders(**options))
+
+
+def frame_analysis(source: TextureSource, analyses: Sequence[str] = ("spectrum",), **options: Any) -> Report:
+    """Frame studies of a source's window on one page, as `stochtex
+    shadertoy PROG --analyse ...` writes it: "spectrum" (the first frame's
+    power spectrum), "flow" (optical flow between consecutive frames),
+    "coherence", "flicker" (what the flow does not explain), "statistics"
+    (over instances). A source: ZoomTexture, Shadertoy, Renderer.source().
+    Options: size (N or (width, height)), origin, time and time_step (the
+    source's start and frame step by default), frames, instances, point_x,
+    point_y, progress."""
+    return _report(_stochtex.frame_analysis(source, analyses=list(analyses), **options))
 
 
 def _result(raw: Dict[str, Any]) -> Dict[str, Any]:

@@ -1,0 +1,106 @@
+# The studies as report values equal the CLI's CSV files: the paper's
+# figures (their numbers as keywords from the studies' option tables) and
+# the frame studies of any texture source (a ShaderToy program, a pattern's
+# view, the zoom texture).
+import csv
+import os
+
+import numpy as np
+import pytest
+
+import stochtex
+
+SOURCE_DIR = os.environ.get("STOCHTEX_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+VALUE_NOISE = os.path.join(SOURCE_DIR, "data", "shadertoy", "value-noise")
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def assert_table_is_csv(table, path, rtol=1e-5):
+    """Every column of a report's table equals the CSV the CLI wrote (6
+    significant digits: rtol 1e-5); text columns exactly."""
+    rows = read_csv(path)
+    assert table.rows() == len(rows), path
+    assert list(table) == list(rows[0]), path
+    for key, values in table.items():
+        if isinstance(values, np.ndarray):
+            expected = [float(r[key]) if r[key] not in ("", "—") else np.nan for r in rows]
+            np.testing.assert_allclose(values, expected, rtol=rtol, atol=1e-12, err_msg=f"{path}: {key}")
+        else:
+            assert values == [r[key] for r in rows], f"{path}: {key}"
+
+
+def assert_report_is_cli_s(report, folder):
+    written = sorted(f for f in os.listdir(folder) if f.endswith(".csv"))
+    assert sorted(report.tables) == written
+    for name, table in report.tables.items():
+        assert_table_is_csv(table, os.path.join(folder, name))
+    assert all(f.image.ndim == 3 and f.image.size for f in report.figures)
+
+
+@pytest.mark.parametrize(
+    "study, flags, call",
+    [
+        ("figure10", ["--size", "64", "--comparison-size", "32"], lambda: stochtex.studies.figure10(size=64, comparison_size=32)),
+        ("figure12", ["--size", "64", "--reference-samples", "4"],
+         lambda: stochtex.studies.figure12(size=64, reference_samples=4)),
+        ("figure14", ["--size", "16", "--reference-samples", "4", "--footprints", "4,16"],
+         lambda: stochtex.studies.figure14(size=16, reference_samples=4, footprints=[4, 16])),
+        ("estimators", ["--presets", "marble,figure14", "--scales", "8", "--size", "16", "--reference-samples", "4"],
+         lambda: stochtex.studies.estimator_renders(presets=["marble", "figure14"], scales=[8], size=16,
+                                                     reference_samples=4)),
+    ],
+)
+def test_paper_studies_equal_the_cli_s(tmp_path, cli, study, flags, call):
+    cli("reproduce", study, *flags, "-o", str(tmp_path))
+    assert_report_is_cli_s(call(), tmp_path)
+
+
+def test_frame_studies_of_a_program_equal_shadertoy_analyse(tmp_path, cli):
+    analyses = ["spectrum", "flow", "coherence", "flicker", "statistics"]
+    cli("shadertoy", VALUE_NOISE, "--size", "64,48", "--analyse", ",".join(analyses), "--frames", "4", "--instances",
+        "16", "-o", str(tmp_path))
+    program = stochtex.Shadertoy(VALUE_NOISE, width=64, height=48)
+    seen = []
+    report = stochtex.studies.frame_analysis(program, analyses, size=(64, 48), frames=4, instances=16,
+                                             progress=lambda f, step: seen.append(f))
+    assert_report_is_cli_s(report, tmp_path)
+    assert [s.heading for s in report.sections][0].startswith("Power spectrum")
+    assert seen and seen == sorted(seen)
+    assert "value-noise" in report.title
+    assert report.figures
+
+
+def test_frame_studies_of_a_pattern_and_of_the_zoom_texture_equal_their_commands(tmp_path, cli):
+    cli("spectrum", "-o", str(tmp_path / "spectrum"), "--size", "64", "pattern", "--preset", "camouflage")
+    view = stochtex.Renderer(stochtex.pattern("camouflage")).source()
+    assert_report_is_cli_s(stochtex.studies.frame_analysis(view, ["spectrum"], size=64), tmp_path / "spectrum")
+    # frame_analysis' flow is DIS (the flow command's default is Farnebäck).
+    cli("flow", "-o", str(tmp_path / "flow"), "--size", "64", "--frames", "4", "--method", "dis", "zoom", "--layers", "4")
+    zoom = stochtex.ZoomTexture(layers=4)
+    report = stochtex.studies.frame_analysis(zoom, ["flow"], size=64, frames=4)
+    assert_table_is_csv(report.tables["flow.csv"], tmp_path / "flow" / "flow.csv")
+
+
+def test_a_pattern_s_statistics_over_instances_move_its_window():
+    view = stochtex.Renderer(stochtex.pattern("camouflage")).source(scale=2.0)
+    stats = stochtex.studies.instance_statistics(view, size=48, instances=24, chunk=8)
+    # Each instance is another draw of the tile offsets: the per-pixel
+    # variance over instances is that of the pattern, not zero.
+    assert float(stats.variance.mean()) > 1e-3
+    assert stats.correlation[24, 24] == pytest.approx(1.0, abs=1e-6)
+
+
+def test_bad_study_options_raise_naming_them():
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.figure10(size=8)
+    assert caught.value.parameter == "size"
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.frame_analysis(stochtex.ZoomTexture(), ["spectra"])
+    assert caught.value.parameter == "analyses"
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.figure14(colour=3)
+    assert caught.value.parameter == "colour"
