@@ -50,8 +50,7 @@ void registerBakeImage(CLI::App& app) {
             refuseOption(*cmd, "--filter", "bake-image renders none, paper or smooth");
         const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         Camera whole;
-        whole.view = makeView(spec, args->view);
-        validateCamera(whole);
+        whole.view = makeView(spec, args->view, ViewUse::BandedBake);  // memory is one band: 65536 rows
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
         ProgressLine progress("bake-image");
@@ -59,16 +58,8 @@ void registerBakeImage(CLI::App& app) {
         const std::unique_ptr<ViewRenderer> renderer = makeRenderer(spec, args->options, args->device);
         const View& v = whole.view;
         const std::unique_ptr<ImageStreamWriter> out = openImageStream(args->output, v.width, v.height, 3, args->bits);
-        for (int y0 = 0; y0 < v.height; y0 += args->band) {
-            Camera band = whole;
-            band.view.height = std::min(args->band, v.height - y0);
-            band.view.offsetV = v.offsetV + y0 * v.scale;  // pixel rows y0… of the whole view
-            const int y1 = y0 + band.view.height;
-            const std::string rows =
-                "rows " + std::to_string(y0) + "–" + std::to_string(y1) + " of " + std::to_string(v.height);
-            out->writeRows(renderer->render(
-                band, progressPart(progress.callback(), double(y0) / v.height, double(y1) / v.height, rows)));
-        }
+        renderInBands(
+            *renderer, whole, args->band, [&](const Image& rows) { out->writeRows(rows); }, progress.callback());
         out->finish();
         progress.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -82,22 +82,9 @@ void addViewFlags(CLI::App& cmd, ViewFlags& flags) {
     cmd.add_option("--offset", flags.offset, "Texture-space offset X,Y in example texels")->delimiter(',')->expected(2);
 }
 
-View makeView(const PatternSpec& spec, const ViewFlags& flags) {
-    View v;
-    v.width = spec.width;
-    v.height = spec.height;
-    v.scale = spec.scale;
-    if (!flags.size.empty()) {
-        v.width = flags.size[0];
-        v.height = flags.size.size() > 1 ? flags.size[1] : flags.size[0];
-    }
-    if (flags.scale) v.scale = *flags.scale;
-    if (!flags.offset.empty()) {
-        v.offsetU = flags.offset[0];
-        v.offsetV = flags.offset[1];
-    }
-    validateView(v);  // errors name size, scale or offset: main adds the flag
-    return v;
+View makeView(const PatternSpec& spec, const ViewFlags& flags, ViewUse use) {
+    // Errors name size, scale or offset: main adds the flag.
+    return patternView(spec, flags.size, flags.scale, flags.offset, use);
 }
 
 std::string readJsonArgumentSource(const std::string& arg) {

@@ -52,7 +52,7 @@ struct ViewFlags {
     std::vector<double> offset;  // X,Y in texels
 };
 void addViewFlags(CLI::App& cmd, ViewFlags& flags);
-View makeView(const PatternSpec& spec, const ViewFlags& flags);
+View makeView(const PatternSpec& spec, const ViewFlags& flags, ViewUse use = ViewUse::Render);
 
 // A JSON argument: inline if it starts with '{' (or '"'), else a file path.
 struct JsonArgument {

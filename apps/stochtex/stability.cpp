@@ -61,13 +61,12 @@ void registerStability(CLI::App& app) {
             "without a filter over the estimators (paper, smooth)");
         refuseUnusedFilterFlags(*cmd, named);
         const PatternSpec spec = loadPatternSource(args->source, named);
-        std::vector<VarianceEstimator> estimators;
-        for (const std::string& name : args->estimators)
-            estimators.push_back(parseEnum(kVarianceEstimatorNames, name, "estimator"));
-        // The pattern file's estimator where --estimators was not given.
-        if (estimatorsFlag->count() == 0 && spec.estimator) estimators = {*spec.estimator};
+        std::vector<VarianceEstimator> estimators;  // none given: the pattern file's
+        if (estimatorsFlag->count() > 0)
+            for (const std::string& name : args->estimators)
+                estimators.push_back(parseEnum(kVarianceEstimatorNames, name, "estimator"));
         StabilityStudyOptions study = args->study;
-        study.filters = filtersPerEstimator(named, estimators);
+        study.filters = stabilityFilters(spec, args->filters, estimators, args->options);
         validateStabilityStudy(study);
         ThreadLimit limit(args->threads);
         const GraphPattern pattern = GraphPattern::build(spec);  // what only building shows, before any output

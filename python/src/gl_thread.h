@@ -5,8 +5,10 @@
 // while the GPU works): each call is posted here and waited for, so the
 // context never changes threads and two calls never overlap.
 //
-// A task must never take the GIL: owners wait for their last task (the GL
-// objects' destruction) holding it, which is safe only because of that.
+// A task may take the GIL (a progress callback) only while its caller waits
+// in run(), which releases it: owners wait for their last task (the GL
+// objects' destruction) holding it, and no call can be running then (the
+// call holds a reference to its owner).
 #include <pybind11/pybind11.h>
 #include <unistd.h>
 

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
 
 #include "bindings.h"
@@ -26,6 +27,14 @@ namespace stochtex::python {
 std::string keywordOf(const std::string& parameter) {
     std::string k = kebabCase(parameter);  // the CLI's flag spelling, with underscores
     std::replace(k.begin(), k.end(), '-', '_');
+    // A Python keyword cannot be written as an argument's name: PEP 8's
+    // trailing underscore (the stability study's "from" is from_).
+    static const std::set<std::string> reserved{
+        "False", "None",     "True",  "and",    "as",   "assert", "async",  "await",    "break",
+        "class", "continue", "def",   "del",    "elif", "else",   "except", "finally",  "for",
+        "from",  "global",   "if",    "import", "in",   "is",     "lambda", "nonlocal", "not",
+        "or",    "pass",     "raise", "return", "try",  "while",  "with",   "yield"};
+    if (reserved.count(k)) k += '_';
     return k;
 }
 

@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -20,6 +21,8 @@
 #include "stochtex/filter/footprint.h"
 #include "stochtex/filter/footprint_stats.h"
 #include "stochtex/gpu/gpu_graph.h"
+#include "stochtex/image/image_io.h"
+#include "stochtex/image/image_stream.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/cpu_renderer.h"
 #include "stochtex/pattern/filter_options.h"
@@ -80,36 +83,20 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     // The camera of a view: the pattern's size and scale unless given.
-    Camera camera(const std::optional<std::variant<int, std::vector<int>>>& sizeArgument,
-                  const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,
-                  const std::string& kind, double tilt, double fov) const {
+    Camera camera(const std::optional<std::variant<int, std::vector<int>>>& size, const std::optional<double>& scale,
+                  const std::optional<std::vector<double>>& offset, const std::string& kind, double tilt, double fov,
+                  ViewUse use = ViewUse::Render) const {
         Camera c;
         c.kind = parseEnum(Camera::kKindNames, kind, "camera");
-        c.view.width = spec_.width;
-        c.view.height = spec_.height;
-        c.view.scale = scale.value_or(spec_.scale);
-        std::optional<std::vector<int>> size;
-        if (sizeArgument)
-            size = std::holds_alternative<int>(*sizeArgument) ? std::vector<int>{std::get<int>(*sizeArgument)}
-                                                              : std::get<std::vector<int>>(*sizeArgument);
-        if (size) {
-            if (size->empty() || size->size() > 2)
-                throw InputError::parameter(
-                    "size", "must be N or (width, height), got " + std::to_string(size->size()) + " numbers");
-            c.view.width = (*size)[0];
-            c.view.height = size->size() > 1 ? (*size)[1] : (*size)[0];
-        }
-        if (offset) {
-            if (offset->size() != 2)
-                throw InputError::parameter(
-                    "offset", "must be (u, v) in texels, got " + std::to_string(offset->size()) + " numbers");
-            c.view.offsetU = (*offset)[0];
-            c.view.offsetV = (*offset)[1];
-        }
+        std::vector<int> sides;
+        if (size)
+            sides = std::holds_alternative<int>(*size) ? std::vector<int>{std::get<int>(*size)}
+                                                       : std::get<std::vector<int>>(*size);
+        if (size && sides.empty()) throw InputError::parameter("size", "must be N or (width, height), got 0 numbers");
+        c.view = patternView(spec_, sides, scale, offset.value_or(std::vector<double>{}), use);
         c.tiltDeg = tilt;
         c.fovDeg = fov;
-        validateView(c.view);
-        validateCamera(c);
+        if (use == ViewUse::Render) validateCamera(c);
         return c;
     }
 
@@ -126,9 +113,32 @@ public:
 
     py::array_t<float> render(const std::optional<std::variant<int, std::vector<int>>>& size,
                               const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,
-                              const std::string& kind, double tilt, double fov, int threads) const {
-        const Camera c = camera(size, scale, offset, kind, tilt, fov);
+                              const std::string& kind, double tilt, double fov,
+                              const std::optional<std::array<int, 2>>& rows, int threads) const {
+        // Rows of a view are a band of a bake: the view may be as high as one.
+        Camera c = camera(size, scale, offset, kind, tilt, fov, rows ? ViewUse::BandedBake : ViewUse::Render);
+        if (rows) c = bandCamera(c, (*rows)[0], (*rows)[1] - (*rows)[0]);
         return imageArray(use(threads, [&](const ViewRenderer& r) { return r.render(c); }));
+    }
+
+    // The view written to a PNG or EXR in bands of rows (bake-image).
+    void bake(const std::string& path, const std::optional<std::variant<int, std::vector<int>>>& size,
+              const std::optional<double>& scale, const std::optional<std::vector<double>>& offset, int band, int bits,
+              int threads, const py::object& progress) const {
+        const Camera c = camera(size, scale, offset, "zoom", 60, 60, ViewUse::BandedBake);
+        if (band < 1 || band > 4096)
+            throw InputError::parameter("band", "must be in [1, 4096] rows, got " + std::to_string(band));
+        checkImageStreamFormat(path);
+        WriteOptions options;
+        options.bitDepth = bits;
+        checkImageOutputFormat(path, options);
+        const Progress report = pythonProgress(progress);
+        use(threads, [&](const ViewRenderer& r) {
+            const std::unique_ptr<ImageStreamWriter> out = openImageStream(path, c.view.width, c.view.height, 3, bits);
+            renderInBands(
+                r, c, band, [&](const Image& rows) { out->writeRows(rows); }, report);
+            out->finish();
+        });
     }
 
     const PatternSpec& spec() const { return spec_; }
@@ -336,11 +346,33 @@ void bindPatterns(py::module_& m) {
              py::arg("kernel") = "simd", py::arg("gpu") = false)
         .def("render", &Renderer::render, py::kw_only(), py::arg("size") = py::none(), py::arg("scale") = py::none(),
              py::arg("offset") = py::none(), py::arg("camera") = "zoom", py::arg("tilt_deg") = 60.0,
-             py::arg("fov_deg") = 60.0, py::arg("threads") = 0,
+             py::arg("fov_deg") = 60.0, py::arg("rows") = py::none(), py::arg("threads") = 0,
              "The view as a float32 array (height, width, 3): linear-light RGB, row 0 on top. size: N or "
              "(width, height), default the pattern's; scale: example texels per pixel; offset: (u, v) in texels; "
-             "camera: zoom or plane (tilt_deg, fov_deg); threads: 0 for every core (the result does not "
-             "depend on it).")
+             "camera: zoom or plane (tilt_deg, fov_deg); rows: (y0, y1), only those rows of a zoom view, as "
+             "bake-image renders a band; threads: 0 for every core (the result does not depend on it).")
+        .def(
+            "view",
+            [](const Renderer& r, const std::optional<std::variant<int, std::vector<int>>>& size,
+               const std::optional<double>& scale, const std::optional<std::vector<double>>& offset, bool baked) {
+                const View v =
+                    r.camera(size, scale, offset, "zoom", 60, 60, baked ? ViewUse::BandedBake : ViewUse::Render).view;
+                py::dict d;
+                d["width"] = v.width;
+                d["height"] = v.height;
+                d["scale"] = v.scale;
+                d["offset"] = py::make_tuple(v.offsetU, v.offsetV);
+                return d;
+            },
+            py::kw_only(), py::arg("size") = py::none(), py::arg("scale") = py::none(), py::arg("offset") = py::none(),
+            py::arg("baked") = false,
+            "The zoom view these keywords give (the pattern's own where not given), checked as a render's, or "
+            "with baked=True as a bake's (65536 rows): {width, height, scale, offset}.")
+        .def("bake", &Renderer::bake, py::arg("path"), py::kw_only(), py::arg("size") = py::none(),
+             py::arg("scale") = py::none(), py::arg("offset") = py::none(), py::arg("band") = 256, py::arg("bits") = 8,
+             py::arg("threads") = 0, py::arg("progress") = py::none(),
+             "The zoom view written to a PNG (bits 8 or 16) or EXR in bands of `band` rows, memory one band "
+             "whatever the size: the same file as `stochtex bake-image` with the same options.")
         .def(
             "source",
             [](const Renderer& r, const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,

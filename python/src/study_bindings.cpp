@@ -19,6 +19,7 @@
 #include "stochtex/studies/normal_maps.h"
 #include "stochtex/studies/paper.h"
 #include "stochtex/studies/phasor_figures.h"
+#include "stochtex/studies/stability_study.h"
 
 namespace stochtex::python {
 
@@ -86,9 +87,140 @@ py::dict studyReport(Options options, std::span<const OptionMember<Options>> mem
     return reportDict(std::move(result));
 }
 
+// A stability study's options from Python's keywords, as the CLI's
+// `stability` makes them: the filters by name over aniso and the reference's
+// samples, those over the estimators once per estimator.
+StabilityStudyOptions stabilityOptions(const PatternSpec& pattern, const std::vector<std::string>& filters,
+                                       const std::vector<std::string>& estimatorNames, int aniso,
+                                       int referenceMaxSamples, const py::kwargs& numbers) {
+    FilterOptions base;
+    base.aniso = aniso;
+    base.referenceMaxSamples = referenceMaxSamples;
+    validateFilterOptions(base);
+    std::vector<VarianceEstimator> estimators;
+    for (const std::string& name : estimatorNames)
+        estimators.push_back(parseEnum(kVarianceEstimatorNames, name, "estimators"));
+    StabilityStudyOptions o;
+    o.filters = stabilityFilters(pattern, filters, estimators, base);
+    setMembers(o, stabilityStudyMembers(), numbers);
+    validateStabilityStudy(o);
+    return o;
+}
+
+py::tuple framesTuple(StabilityFrames&& f) {
+    const auto arrays = [](std::vector<std::vector<double>>& perFilter) {
+        py::list out;
+        for (std::vector<double>& v : perFilter) {
+            const py::ssize_t n = py::ssize_t(v.size());
+            out.append(ownedArray<double>(std::move(v), {n}));
+        }
+        return out;
+    };
+    return py::make_tuple(f.first, f.count, arrays(f.accuracy), arrays(f.imageChange), arrays(f.errorFlicker));
+}
+
+StabilityFrames framesOf(const py::tuple& t) {
+    if (t.size() != 5) throw InputError::parameter("parts", "must hold StabilitySampler.frames' tuples");
+    const auto lists = [](const py::handle& h) {
+        std::vector<std::vector<double>> out;
+        for (const auto& a : h.cast<std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>>>())
+            out.emplace_back(a.data(), a.data() + a.size());
+        return out;
+    };
+    return {t[0].cast<int>(), t[1].cast<int>(), lists(t[2]), lists(t[3]), lists(t[4])};
+}
+
+// A stability study's pattern, filters and ground truth, built once.
+class PyStabilitySampler {
+public:
+    PyStabilitySampler(const PatternSpec& spec, const StabilityStudyOptions& options)
+        : frames_(options.frames), pattern_(GraphPattern::build(spec)), sampler_(pattern_, options) {}
+    int frameCount() const { return frames_; }
+    py::tuple frames(int first, int count, const py::object& progress) const {
+        const Progress report = pythonProgress(progress);
+        StabilityFrames f;
+        {
+            py::gil_scoped_release release;
+            f = sampler_.frames(first, count, report);
+        }
+        return framesTuple(std::move(f));
+    }
+
+private:
+    int frames_;
+    GraphPattern pattern_;  // before the sampler: its filters refer to it
+    StabilitySampler sampler_;
+};
+
 }  // namespace
 
 void bindStudies(py::module_& m) {
+    m.def(
+        "stability",
+        [](const PatternSpec& pattern, const std::vector<std::string>& filters,
+           const std::vector<std::string>& estimators, int aniso, int referenceMaxSamples, const py::object& progress,
+           const py::kwargs& numbers) {
+            const StabilityStudyOptions o =
+                stabilityOptions(pattern, filters, estimators, aniso, referenceMaxSamples, numbers);
+            const Progress report = pythonProgress(progress);
+            Report result;
+            {
+                py::gil_scoped_release release;
+                result = stabilityReport(stabilityStudy(GraphPattern::build(pattern), o, report), pattern.name);
+            }
+            return reportDict(std::move(result));
+        },
+        py::arg("pattern"), py::kw_only(),
+        py::arg("filters") = std::vector<std::string>{"none", "paper", "smooth", "exact", "reference"},
+        py::arg("estimators") = std::vector<std::string>{}, py::arg("aniso") = kDefaultAniso,
+        py::arg("reference_max_samples") = 32, py::arg("progress") = py::none(),
+        "Temporal stability under a zoom (`stochtex stability`): per filter the error flicker, accuracy and "
+        "image change of a zoom-out sequence against its ground truth. estimators: each filter over them is "
+        "measured once per name (default: the pattern file's, else paper). Numbers of its option table as "
+        "keywords: frames, size, from, to, truth_samples.");
+    py::class_<PyStabilitySampler>(m, "StabilitySampler",
+                                   "A stability study's filters and ground truth, built once, measuring ranges of "
+                                   "its frames (stochtex.dask.stability); stability_from_frames joins them.")
+        .def(py::init([](const PatternSpec& pattern, const std::vector<std::string>& filters,
+                         const std::vector<std::string>& estimators, int aniso, int referenceMaxSamples,
+                         const py::kwargs& numbers) {
+                 const StabilityStudyOptions o =
+                     stabilityOptions(pattern, filters, estimators, aniso, referenceMaxSamples, numbers);
+                 py::gil_scoped_release release;
+                 return std::make_unique<PyStabilitySampler>(pattern, o);
+             }),
+             py::arg("pattern"), py::kw_only(),
+             py::arg("filters") = std::vector<std::string>{"none", "paper", "smooth", "exact", "reference"},
+             py::arg("estimators") = std::vector<std::string>{}, py::arg("aniso") = kDefaultAniso,
+             py::arg("reference_max_samples") = 32)
+        .def("frames", &PyStabilitySampler::frames, py::arg("first"), py::arg("count"), py::kw_only(),
+             py::arg("progress") = py::none(),
+             "Frames [first, first + count): (first, count, accuracy, image_change, error_flicker), each a list "
+             "per filter of float64 arrays (accuracy per frame; the changes per pair (k − 1, k), k ≥ 1 in the "
+             "range).")
+        .def_property_readonly("frame_count", &PyStabilitySampler::frameCount, "The study's frames.");
+    m.def(
+        "stability_from_frames",
+        [](const std::vector<py::tuple>& parts, const PatternSpec& pattern, const std::vector<std::string>& filters,
+           const std::vector<std::string>& estimators, int aniso, int referenceMaxSamples, const py::kwargs& numbers) {
+            const StabilityStudyOptions o =
+                stabilityOptions(pattern, filters, estimators, aniso, referenceMaxSamples, numbers);
+            std::vector<StabilityFrames> frames;
+            for (const py::tuple& t : parts) frames.push_back(framesOf(t));
+            Report result;
+            {
+                py::gil_scoped_release release;
+                result = stabilityReport(stabilityFromFrames(o, frames), pattern.name);
+            }
+            return reportDict(std::move(result));
+        },
+        py::arg("parts"), py::arg("pattern"), py::kw_only(),
+        py::arg("filters") = std::vector<std::string>{"none", "paper", "smooth", "exact", "reference"},
+        py::arg("estimators") = std::vector<std::string>{}, py::arg("aniso") = kDefaultAniso,
+        py::arg("reference_max_samples") = 32,
+        "The stability study from StabilitySampler.frames' parts covering every frame in order: exactly "
+        "stability() with the same options.");
+
     m.def(
         "frame_analysis",
         [](const PySource& source, const std::vector<std::string>& analyses,

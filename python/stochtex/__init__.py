@@ -23,6 +23,7 @@ from . import _stochtex
 from ._stochtex import (  # noqa: F401 (re-exported)
     FootprintStatistics,
     GpuUnavailable,
+    ImageStream,
     InputError,
     InstanceStatistics,
     Pattern,
@@ -40,6 +41,7 @@ from . import studies  # noqa: F401 (re-exported)
 __all__ = [
     "FootprintStatistics",
     "GpuUnavailable",
+    "ImageStream",
     "InputError",
     "InstanceStatistics",
     "colormap",

@@ -62,8 +62,29 @@ class Renderer:
         camera: str = "zoom",
         tilt_deg: float = 60.0,
         fov_deg: float = 60.0,
+        rows: Optional[Tuple[int, int]] = None,
         threads: int = 0,
     ) -> npt.NDArray[np.float32]: ...
+    def view(
+        self,
+        *,
+        size: Union[None, int, Sequence[int]] = None,
+        scale: Optional[float] = None,
+        offset: Optional[Sequence[float]] = None,
+        baked: bool = False,
+    ) -> dict: ...
+    def bake(
+        self,
+        path: str,
+        *,
+        size: Union[None, int, Sequence[int]] = None,
+        scale: Optional[float] = None,
+        offset: Optional[Sequence[float]] = None,
+        band: int = 256,
+        bits: int = 8,
+        threads: int = 0,
+        progress: Optional[Callable[[float, str], None]] = None,
+    ) -> None: ...
     def source(
         self,
         *,
@@ -92,6 +113,13 @@ class FootprintStatistics:
     def example_size(self) -> int: ...
     @property
     def max_level(self) -> int: ...
+
+class ImageStream:
+    def __init__(self, path: str, width: int, height: int, *, channels: int = 3, bits: int = 8) -> None: ...
+    def write_rows(self, rows: npt.ArrayLike) -> None: ...
+    def finish(self) -> None: ...
+    @property
+    def rows_written(self) -> int: ...
 
 class TextureSource: ...
 
@@ -229,6 +257,44 @@ def figure4(
     reference_tolerance: float = 0.0005,
     **kwargs: float,
 ) -> dict: ...
+def stability(
+    pattern: Pattern,
+    *,
+    filters: Sequence[str] = ...,
+    estimators: Sequence[str] = ...,
+    aniso: int = 8,
+    reference_max_samples: int = 32,
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: float,
+) -> dict: ...
+def stability_from_frames(
+    parts: Sequence[tuple],
+    pattern: Pattern,
+    *,
+    filters: Sequence[str] = ...,
+    estimators: Sequence[str] = ...,
+    aniso: int = 8,
+    reference_max_samples: int = 32,
+    **kwargs: float,
+) -> dict: ...
+
+class StabilitySampler:
+    def __init__(
+        self,
+        pattern: Pattern,
+        *,
+        filters: Sequence[str] = ...,
+        estimators: Sequence[str] = ...,
+        aniso: int = 8,
+        reference_max_samples: int = 32,
+        **kwargs: float,
+    ) -> None: ...
+    def frames(
+        self, first: int, count: int, *, progress: Optional[Callable[[float, str], None]] = None
+    ) -> tuple: ...
+    @property
+    def frame_count(self) -> int: ...
+
 def table1(
     *, count: int = 1000, footprints: Sequence[int] = ..., seed: int = 1, noise_seed: int = 1, max_samples: int = 512
 ) -> dict: ...

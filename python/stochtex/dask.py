@@ -14,6 +14,8 @@ and merges into exactly the single-process result.
     stats = stochtex.dask.instance_statistics(client, program, size=128, instances=4096)
     stats.correlation                          # == studies.instance_statistics(program(), ...).correlation
 
+    stochtex.dask.bake(client, "marble", "marble.exr", size=16384, filter="smooth")   # == stochtex bake-image
+
 A chunk's result depends only on its key, so a lost worker's chunks are
 recomputed by Dask elsewhere and the merge is unchanged. Every worker needs
 stochtex importable (the same build: `pip install --no-build-isolation .`).
@@ -21,6 +23,7 @@ stochtex importable (the same build: `pip install --no-build-isolation .`).
 from __future__ import annotations
 
 import functools
+import os
 import pickle
 from typing import Any, Callable, Dict, List, Sequence
 
@@ -28,9 +31,16 @@ import cloudpickle
 
 import numpy as np
 
-from . import studies
+from . import _stochtex, studies
 
-__all__ = ["instance_statistics", "table1", "table1_chunks"]
+__all__ = ["bake", "instance_statistics", "stability", "table1", "table1_chunks"]
+
+
+def _input_error(parameter: str, message: str) -> Exception:
+    # As the library raises it: the message and the keyword at fault.
+    error = _stochtex.InputError(message)
+    error.parameter = parameter
+    return error
 
 
 @functools.lru_cache(maxsize=4)
@@ -132,3 +142,128 @@ def instance_statistics(client, make_source: Callable[[], Any], **options: Any):
         client.cancel(futures)  # a bad source or Ctrl-C: the other chunks are not wanted
         raise
     return total
+
+
+@functools.lru_cache(maxsize=2)
+def _worker_renderer(recipe: bytes):
+    # Built once per worker process and recipe (its pyramids and tables);
+    # the bands of one bake reuse it.
+    from . import pattern as _pattern
+
+    source, seed, options = pickle.loads(recipe)
+    return _stochtex.Renderer(_pattern(source, seed=seed), **options)
+
+
+def _bake_band(recipe: bytes, view: Dict[str, Any], y0: int, y1: int):
+    return _worker_renderer(recipe).render(rows=(y0, y1), threads=1, **view)
+
+
+def bake(
+    client,
+    pattern: Any,
+    path: str,
+    *,
+    size: Any = None,
+    scale: Any = None,
+    offset: Any = None,
+    band: int = 256,
+    bits: int = 8,
+    seed: Any = None,
+    progress: Any = None,
+    pending: int = 0,
+    **renderer_options: Any,
+) -> None:
+    """A large PNG or EXR of a pattern's zoom view (`stochtex bake-image`),
+    its bands of `band` rows rendered on the cluster and written here in
+    order as they arrive: the same bytes as bake-image with the same
+    options (each band is its band). pattern: a preset name, a file's path
+    (readable by the workers), its JSON text or a dict (a Pattern object
+    does not travel); renderer_options: Renderer's (filter, aniso, ...).
+    Memory: this side holds at most `pending` bands (0: two per worker
+    thread), each worker one band and the pattern's runtime data."""
+    from . import pattern as _pattern
+
+    if isinstance(pattern, _stochtex.Pattern):
+        raise TypeError("bake: pass the pattern as a preset name, path, JSON text or dict (a Pattern does not travel)")
+    if isinstance(pattern, (str, os.PathLike)) and os.path.exists(pattern):
+        pattern = os.path.abspath(os.fspath(pattern))  # the workers' working folder may differ
+    spec = _pattern(pattern, seed=seed)
+    view = {k: v for k, v in dict(size=size, scale=scale, offset=offset).items() if v is not None}
+    if band < 1 or band > 4096:
+        raise _input_error("band", f"band must be in [1, 4096] rows, got {band}")
+    # The view and the options are checked here, with the library's
+    # messages, before any task runs.
+    shape = _stochtex.Renderer(spec, **renderer_options).view(baked=True, **view)
+    width, height = shape["width"], shape["height"]
+    stream = _stochtex.ImageStream(path, width, height, channels=3, bits=bits)
+    recipe = cloudpickle.dumps((pattern, seed, renderer_options))
+    bands = [(y0, min(height, y0 + band)) for y0 in range(0, height, band)]
+    if pending < 1:
+        pending = 2 * max(1, sum(w["nthreads"] for w in client.scheduler_info()["workers"].values()))
+    futures: List[Any] = []
+    submitted = 0
+    try:
+        for index, (y0, y1) in enumerate(bands):
+            while submitted < len(bands) and submitted < index + pending:
+                a, b = bands[submitted]
+                futures.append(client.submit(_bake_band, recipe, view, a, b, pure=True))
+                submitted += 1
+            future = futures[index]
+            stream.write_rows(future.result())
+            future.release()
+            futures[index] = None
+            if progress is not None:
+                progress(y1 / height, f"rows {y0}–{y1} of {height}")
+        stream.finish()
+    except BaseException:
+        client.cancel([f for f in futures if f is not None])
+        raise
+
+
+@functools.lru_cache(maxsize=2)
+def _worker_stability(recipe: bytes):
+    # The pattern, its filters and the ground truth, built once per worker
+    # process and study; the frame ranges of one run reuse them.
+    from . import pattern as _pattern
+
+    source, options = pickle.loads(recipe)
+    return studies.StabilitySampler(_pattern(source), **studies._lists(options))
+
+
+def _stability_frames(recipe: bytes, first: int, count: int):
+    return _worker_stability(recipe).frames(first, count)
+
+
+def stability(client, pattern: Any = "marble", *, chunk: int = 4, progress: Any = None, **options: Any):
+    """stochtex.studies.stability with its frames measured in ranges of
+    `chunk` on the client's cluster (each range renders its first pair's
+    previous frame again): exactly the single-process report. pattern: a
+    preset name, a path the workers can read, JSON text or a dict. Each
+    worker builds the pattern's filters and ground truth once; a task holds
+    two frames per filter."""
+    from . import pattern as _pattern
+
+    if isinstance(pattern, _stochtex.Pattern):
+        raise TypeError("stability: pass the pattern as a preset name, path, JSON text or dict (a Pattern does not travel)")
+    if isinstance(pattern, (str, os.PathLike)) and os.path.exists(pattern):
+        pattern = os.path.abspath(os.fspath(pattern))
+    if chunk < 1:
+        raise _input_error("chunk", f"chunk must be at least 1 frame, got {chunk}")
+    spec = _pattern(pattern)
+    # Refuses bad options here, with the library's message, before any task
+    # runs: building the sampler checks them all (it costs the filters' tables).
+    frames = studies.StabilitySampler(spec, **studies._lists(options)).frame_count
+    recipe = cloudpickle.dumps((pattern, options))
+    ranges = [(first, min(chunk, frames - first)) for first in range(0, frames, chunk)]
+    futures = [client.submit(_stability_frames, recipe, first, count, pure=True) for first, count in ranges]
+    parts = []
+    try:
+        for index, future in enumerate(futures):
+            parts.append(future.result())
+            future.release()
+            if progress is not None:
+                progress((index + 1) / len(futures), f"frames {ranges[index][0]}… of {frames}")
+    except BaseException:
+        client.cancel(futures)
+        raise
+    return studies.stability_from_frames(parts, spec, **options)

@@ -9,7 +9,7 @@ from typing import Any, Dict, List, NamedTuple, Sequence, Union
 import numpy as np
 
 from . import _stochtex
-from ._stochtex import InstanceStatistics, Table1Sampler, TextureSource  # noqa: F401 (re-exported)
+from ._stochtex import InstanceStatistics, StabilitySampler, Table1Sampler, TextureSource  # noqa: F401 (re-exported)
 
 __all__ = [
     "Figure",
@@ -28,6 +28,9 @@ __all__ = [
     "instance_chunk_count",
     "instance_report",
     "instance_statistics",
+    "stability",
+    "stability_from_frames",
+    "StabilitySampler",
     "table1",
     "table1_from_terms",
 ]
@@ -51,6 +54,17 @@ class Table(Dict[str, Column]):
 
     def rows(self) -> int:
         return len(next(iter(self.values()))) if self else 0
+
+    def to_pandas(self):
+        """The table as a pandas DataFrame, a column per key (numbers as
+        float64, NaN where a cell does not apply; text as object), the title,
+        headers and units in its `attrs`. pandas is optional (Debian's
+        python3-pandas; scripts/install-deps.sh installs it)."""
+        import pandas
+
+        frame = pandas.DataFrame({key: values for key, values in self.items()})
+        frame.attrs.update(title=self.title, note=self.note, headers=dict(self.headers), units=dict(self.units))
+        return frame
 
     def __repr__(self) -> str:
         return f"<stochtex Table {self.title!r}: {self.rows()} rows, columns {list(self)}>"
@@ -164,6 +178,31 @@ def frame_analysis(source: TextureSource, analyses: Sequence[str] = ("spectrum",
     source's start and frame step by default), frames, instances, point_x,
     point_y, progress."""
     return _report(_stochtex.frame_analysis(source, analyses=list(analyses), **options))
+
+
+def stability(pattern: Any = "marble", **options: Any) -> Report:
+    """Temporal stability under a zoom (`stochtex stability`): per filter,
+    the error flicker (the change of frame − S̄ between consecutive frames,
+    the zoom undone), the accuracy and the image change of a zoom-out
+    sequence. Options: filters (names), estimators (each filter over the
+    estimators once per name), aniso, reference_max_samples, progress, and
+    the numbers frames, size, from, to, truth_samples. stochtex.dask.stability
+    measures the frames on a cluster with exactly this result."""
+    from . import pattern as _pattern
+
+    return _report(_stochtex.stability(_pattern(pattern), **_lists(options)))
+
+
+def stability_from_frames(parts: Sequence[tuple], pattern: Any = "marble", **options: Any) -> Report:
+    """The stability study from StabilitySampler.frames' parts that cover
+    every frame in order, with stability()'s options: exactly its result."""
+    from . import pattern as _pattern
+
+    return _report(_stochtex.stability_from_frames(list(parts), _pattern(pattern), **_lists(options)))
+
+
+def _lists(options: Dict[str, Any]) -> Dict[str, Any]:
+    return {k: list(v) if k in ("filters", "estimators") else v for k, v in options.items()}
 
 
 def _result(raw: Dict[str, Any]) -> Dict[str, Any]:

@@ -78,3 +78,20 @@ def test_bad_options_raise_before_any_task(client):
     with pytest.raises(stochtex.InputError) as caught:
         stochtex.dask.table1(client, count=0)
     assert caught.value.parameter == "count"
+
+
+def test_the_stability_study_on_two_workers_equals_one_process(client):
+    options = dict(filters=["none", "smooth"], frames=6, size=16, to=8.0, truth_samples=8)
+    single = stochtex.studies.stability("marble", **options)
+    seen = []
+    spread = stochtex.dask.stability(client, "marble", chunk=2, progress=lambda f, step: seen.append(f), **options)
+    assert seen == [1 / 3, 2 / 3, 1.0]
+    for name, table in single.tables.items():
+        for key, values in table.items():
+            if isinstance(values, np.ndarray):
+                assert np.array_equal(values, spread.tables[name][key], equal_nan=True), (name, key)
+            else:
+                assert values == spread.tables[name][key], (name, key)
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.dask.stability(client, "marble", frames=1)
+    assert caught.value.parameter == "frames"

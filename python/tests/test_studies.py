@@ -104,3 +104,50 @@ def test_bad_study_options_raise_naming_them():
     with pytest.raises(stochtex.InputError) as caught:
         stochtex.studies.figure14(colour=3)
     assert caught.value.parameter == "colour"
+
+
+STABILITY = dict(filters=["none", "paper"], frames=5, size=16, to=8.0, truth_samples=8)
+
+
+def test_the_stability_study_equals_the_cli_s(tmp_path, cli):
+    cli("stability", "--preset", "marble", "--filters", "none,paper", "--frames", "5", "--size", "16", "--to", "8",
+        "--truth-samples", "8", "-o", str(tmp_path))
+    report = stochtex.studies.stability("marble", **STABILITY)
+    assert sorted(report.tables) == ["stability-frames.csv", "stability.csv"]
+    for name, table in report.tables.items():
+        assert_table_is_csv(table, tmp_path / name)
+
+
+def test_the_stability_study_in_frame_ranges_is_the_study():
+    whole = stochtex.studies.stability("marble", **STABILITY)
+    sampler = stochtex.studies.StabilitySampler(stochtex.pattern("marble"), **STABILITY)
+    assert sampler.frame_count == 5
+    parts = [sampler.frames(0, 2), sampler.frames(2, 1), sampler.frames(3, 2)]
+    joined = stochtex.studies.stability_from_frames(parts, "marble", **STABILITY)
+    for name, table in whole.tables.items():
+        for key, values in table.items():
+            if isinstance(values, np.ndarray):
+                assert np.array_equal(values, joined.tables[name][key], equal_nan=True), (name, key)
+            else:
+                assert values == joined.tables[name][key]
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.stability_from_frames(parts[:2], "marble", **STABILITY)
+    assert caught.value.parameter == "parts"
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.stability("marble", **{**STABILITY, "from": 0.0})
+    assert caught.value.parameter == "from_"  # a Python keyword: PEP 8's trailing underscore
+    assert stochtex.studies.stability("marble", **{**STABILITY, "from_": 2.0}).tables["stability.csv"].rows() == 2
+
+
+def test_a_table_as_a_pandas_frame():
+    pandas = pytest.importorskip("pandas")
+    table = stochtex.studies.figure10(size=64, comparison_size=32).tables["figure10.csv"]
+    frame = table.to_pandas()
+    assert isinstance(frame, pandas.DataFrame)
+    assert list(frame.columns) == list(table) and len(frame) == table.rows()
+    for key, values in table.items():
+        if isinstance(values, np.ndarray):
+            assert np.array_equal(frame[key].to_numpy(), values, equal_nan=True), key
+        else:
+            assert list(frame[key]) == values, key
+    assert frame.attrs["units"] == table.units and frame.attrs["title"] == table.title

@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filter_options.h"
 #include "stochtex/pattern/param_info.h"
+#include "stochtex/pattern/pattern_spec.h"
+#include "stochtex/pattern/view_renderer.h"
 #include "test_util.h"
 
 namespace stochtex {
@@ -140,6 +143,44 @@ TEST(Camera, ErrorsNameTheParameterAndTheValue) {
     c.view.width = c.view.height = 16384;
     e = test::inputErrorOf([&] { validateCamera(c); });
     EXPECT_STREQ(e.what(), "size must be at most 67108864 pixels, got 16384x16384");
+}
+
+// A view baked in bands holds one band: up to 65536 rows of a render's width,
+// however many pixels; a band of it is a render again.
+TEST(Camera, ABakedViewIsCappedByItsBandsNotItsPixels) {
+    View tall{16384, 65536, 1.0};
+    EXPECT_NO_THROW(validateView(tall, ViewUse::BandedBake));
+    EXPECT_STREQ(test::inputErrorOf([&] { validateView(tall); }).what(),
+                 "size must be in [1, 16384] per side, got 16384x65536");
+    tall.width = 16385;
+    EXPECT_STREQ(test::inputErrorOf([&] { validateView(tall, ViewUse::BandedBake); }).what(),
+                 "size must be in [1, 16384] wide and [1, 65536] high, got 16385x65536");
+    Camera whole;
+    whole.view = View{16384, 65536, 2.0, 3.0, -5.0};
+    const Camera band = bandCamera(whole, 4096, 256);
+    EXPECT_NO_THROW(validateCamera(band));
+    EXPECT_EQ(band.view.height, 256);
+    EXPECT_EQ(band.view.offsetV, -5.0 + 4096 * 2.0);  // rows 4096… of the whole view
+    EXPECT_EQ(test::inputErrorOf([&] { bandCamera(whole, 65500, 256); }).parameter(), "rows");
+    whole.kind = Camera::Kind::Plane;
+    EXPECT_EQ(test::inputErrorOf([&] { bandCamera(whole, 0, 1); }).parameter(), "camera");
+    // The pattern's own view unless told otherwise.
+    PatternSpec spec;
+    spec.width = 300;
+    spec.height = 200;
+    spec.scale = 2;
+    const View v = patternView(spec, std::vector<int>{64}, std::nullopt, std::vector<double>{1, 2});
+    EXPECT_EQ(v.width, 64);
+    EXPECT_EQ(v.height, 64);
+    EXPECT_EQ(v.scale, 2.0);
+    EXPECT_EQ(v.offsetV, 2.0);
+    EXPECT_EQ(patternView(spec, {}, 0.5, {}).width, 300);
+    EXPECT_EQ(test::inputErrorOf([&] { patternView(spec, {}, std::nullopt, std::vector<double>{1}); }).parameter(),
+              "offset");
+    EXPECT_EQ(test::inputErrorOf([&] {
+                  patternView(spec, std::vector<int>{1, 2, 3}, std::nullopt, {});
+              }).parameter(),
+              "size");
 }
 
 }  // namespace

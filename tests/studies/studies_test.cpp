@@ -657,7 +657,7 @@ TEST(StabilityStudy, TablesMatchTheFramesItRenders) {
             flickerSum += e;
             max = std::max(max, d);
         }
-        EXPECT_FALSE(r.perFrame.rows[m * 4][4].number.has_value());  // no pair before the first frame
+        EXPECT_TRUE(std::isnan(r.perFrame.rows[m * 4][4].number.value_or(0)));  // no pair before the first frame
         EXPECT_NEAR(*r.summary.rows[m][1].number, sum / 3, 1e-12);
         EXPECT_NEAR(*r.summary.rows[m][2].number, max, 1e-12);
         EXPECT_NEAR(*r.summary.rows[m][3].number, flickerSum / 3, 1e-9);
@@ -769,6 +769,37 @@ TEST(ImageBaseStudy, RegularImagesEchoStochasticOnesDoNot) {
     ImageBaseStudyOptions bad = o;
     bad.instances = 1;
     EXPECT_EQ(test::inputErrorOf([&] { validateImageBaseStudy(bad, {{"noise", noise}}); }).parameter(), "instances");
+}
+
+// A study measured in frame ranges (each range rendering its own first
+// pair's previous frame again) and joined is the study, bit for bit.
+TEST(StabilityStudy, RangesJoinedAreTheStudy) {
+    const GraphPattern p = GraphPattern::build(loadPreset("marble"));
+    StabilityStudyOptions o;
+    o.filters.resize(2);
+    o.filters[0].use(parseFilter("none"));
+    o.filters[1].use(parseFilter("paper"));
+    o.frames = 7;
+    o.size = 16;
+    o.to = 16;
+    o.truthSamples = 8;
+    const StabilityStudyResult whole = stabilityStudy(p, o);
+    const StabilitySampler sampler(p, o);
+    const std::vector<StabilityFrames> parts{sampler.frames(0, 3), sampler.frames(3, 1), sampler.frames(4, 3)};
+    const StabilityStudyResult joined = stabilityFromFrames(o, parts);
+    EXPECT_EQ(joined.summary.csv(), whole.summary.csv());
+    EXPECT_EQ(joined.perFrame.csv(), whole.perFrame.csv());
+    for (size_t m = 0; m < 2; ++m) {
+        EXPECT_EQ(joined.measurements[m].errorFlicker.differences, whole.measurements[m].errorFlicker.differences);
+        EXPECT_EQ(joined.measurements[m].errorFlicker.mean, whole.measurements[m].errorFlicker.mean);
+        EXPECT_EQ(joined.measurements[m].meanAccuracy, whole.measurements[m].meanAccuracy);
+    }
+    // Ranges out of the study, or parts that leave a gap, are refused by name.
+    EXPECT_EQ(test::inputErrorOf([&] { sampler.frames(7, 1); }).parameter(), "first");
+    EXPECT_EQ(test::inputErrorOf([&] { sampler.frames(5, 3); }).parameter(), "count");
+    const std::vector<StabilityFrames> gap{parts[0], parts[2]};
+    EXPECT_EQ(test::inputErrorOf([&] { stabilityFromFrames(o, gap); }).parameter(), "parts");
+    EXPECT_EQ(test::inputErrorOf([&] { stabilityFromFrames(o, std::span(parts).first(2)); }).parameter(), "parts");
 }
 
 TEST(StabilityStudy, ErrorsNameTheParameter) {

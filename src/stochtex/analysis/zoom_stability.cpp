@@ -53,10 +53,19 @@ void ZoomSequenceMeter::add(const Image& frame, const Image& truth, double scale
     error_ = std::move(error);
 }
 
-double ZoomSequenceMeter::meanAccuracy() const {
+double orderedMean(const std::vector<double>& values) {
     double sum = 0;
-    for (double a : accuracy_) sum += a;
-    return accuracy_.empty() ? 0.0 : sum / double(accuracy_.size());
+    for (double v : values) sum += v;
+    return values.empty() ? 0.0 : sum / double(values.size());
+}
+
+double ZoomSequenceMeter::meanAccuracy() const { return orderedMean(accuracy_); }
+
+ZoomStability zoomStabilityOf(std::vector<double> scales, const std::vector<double>& differences) {
+    ZoomStability z;
+    z.scales = std::move(scales);
+    for (double d : differences) append(z, d);
+    return z;
 }
 
 ZoomStability measureZoomStability(const std::function<Image(double)>& render, int frames, double from, double to,

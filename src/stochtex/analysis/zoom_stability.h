@@ -23,6 +23,14 @@ struct ZoomStability {
     double max = 0;
 };
 
+// The stability of a sequence from its scales and consecutive differences,
+// accumulated in order as a ZoomSequenceMeter does (the same mean and max,
+// bit for bit): what joins a sequence measured in parts.
+ZoomStability zoomStabilityOf(std::vector<double> scales, const std::vector<double>& differences);
+
+// The mean of values summed in order (0 for none): a meter's meanAccuracy.
+double orderedMean(const std::vector<double>& values);
+
 // The scale of frame k of `frames` geometric from `from` to `to`.
 double zoomSequenceScale(int k, int frames, double from, double to);
 

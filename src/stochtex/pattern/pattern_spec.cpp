@@ -70,6 +70,30 @@ PatternSpec loadPatternFile(const std::string& path) {
     return parsePatternSpec(JsonReader(j, path), base);
 }
 
+View patternView(const PatternSpec& spec, std::span<const int> size, std::optional<double> scale,
+                 std::span<const double> offset, ViewUse use) {
+    View v;
+    v.width = spec.width;
+    v.height = spec.height;
+    v.scale = scale.value_or(spec.scale);
+    if (!size.empty()) {
+        if (size.size() > 2)
+            throw InputError::parameter(
+                "size", "must be N or (width, height), got " + std::to_string(size.size()) + " numbers");
+        v.width = size[0];
+        v.height = size.size() > 1 ? size[1] : size[0];
+    }
+    if (!offset.empty()) {
+        if (offset.size() != 2)
+            throw InputError::parameter("offset",
+                                        "must be (u, v) in texels, got " + std::to_string(offset.size()) + " numbers");
+        v.offsetU = offset[0];
+        v.offsetV = offset[1];
+    }
+    validateView(v, use);
+    return v;
+}
+
 uint32_t noiseSeed(const PatternSpec& spec, int axis) {
     const NoiseSpec& n = spec.noise[axis];
     if (n.explicitSeed) return n.spectrum.seed;

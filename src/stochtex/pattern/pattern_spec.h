@@ -9,11 +9,14 @@
 // the JSON pointer of the value at fault.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <span>
 #include <string>
 
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/pattern_file.h"
 #include "stochtex/pattern/pattern_parts.h"
+#include "stochtex/pattern/view.h"
 
 namespace stochtex {
 
@@ -25,5 +28,11 @@ PatternSpec loadPatternFile(const std::string& path);
 // (axis 0 or 1), so one pattern seed controls everything.
 uint32_t noiseSeed(const PatternSpec& spec, int axis);
 
+// The pattern's view (its size and scale, offset 0) with what is given
+// instead: size {N} or {W, H}, a scale, offset {u, v} in texels (the CLI's
+// --size/--scale/--offset, Python's keywords). InputError naming size or
+// offset for a wrong count, then validateView for `use`.
+View patternView(const PatternSpec& spec, std::span<const int> size, std::optional<double> scale,
+                 std::span<const double> offset, ViewUse use = ViewUse::Render);
 
 }  // namespace stochtex

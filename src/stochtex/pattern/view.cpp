@@ -14,12 +14,17 @@ const ParamInfo& viewScaleParam() {
     return p;
 }
 
-void validateView(const View& view) {
+void validateView(const View& view, ViewUse use) {
     const std::string size = std::to_string(view.width) + "x" + std::to_string(view.height);
-    if (view.width < 1 || view.height < 1 || view.width > kMaxOutputSide || view.height > kMaxOutputSide)
-        throw InputError::parameter("size",
-                                    "must be in [1, " + std::to_string(kMaxOutputSide) + "] per side, got " + size);
-    if ((long long)view.width * view.height > kMaxOutputPixels)
+    // A band is a render of the view's width: only the height grows.
+    const int maxHeight = use == ViewUse::BandedBake ? kMaxBakedHeight : kMaxOutputSide;
+    if (view.width < 1 || view.height < 1 || view.width > kMaxOutputSide || view.height > maxHeight)
+        throw InputError::parameter(
+            "size", "must be in [1, " + std::to_string(kMaxOutputSide) + "] " +
+                        (use == ViewUse::BandedBake ? "wide and [1, " + std::to_string(maxHeight) + "] high"
+                                                    : std::string("per side")) +
+                        ", got " + size);
+    if (use == ViewUse::Render && (long long)view.width * view.height > kMaxOutputPixels)
         throw InputError::parameter("size",
                                     "must be at most " + std::to_string(kMaxOutputPixels) + " pixels, got " + size);
     checkNumber(viewScaleParam(), view.scale);

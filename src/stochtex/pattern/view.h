@@ -12,6 +12,12 @@ namespace stochtex {
 
 constexpr int kMaxOutputSide = 16384;
 constexpr long long kMaxOutputPixels = 8192LL * 8192LL;
+// A view rendered in bands of rows (bake-image, Renderer.bake, a
+// distributed bake) holds one band at a time: each band is a render (its
+// width within kMaxOutputSide), its height is capped by the image files it
+// is written to (PNG and EXR here, 65536), its pixels not at all.
+constexpr int kMaxBakedHeight = 65536;
+enum class ViewUse { Render, BandedBake };
 // The scales (example texels per output pixel) a view may have. Above 1e6 a
 // pixel covers a 4096² example 244 times over; below 1e-6 a 16384-pixel
 // image spans a sixtieth of a texel, and a scale near the smallest double
@@ -47,6 +53,6 @@ enum class CpuKernel { Simd, Scalar };
 
 // Checks a view against the output caps; InputError::parameter naming size,
 // scale or offset otherwise.
-void validateView(const View& view);
+void validateView(const View& view, ViewUse use = ViewUse::Render);
 
 }  // namespace stochtex

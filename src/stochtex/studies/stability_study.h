@@ -9,12 +9,15 @@
 // mean |frame − truth|. Frames are rendered one index at a time for every
 // filter, so memory stays at two frames per filter.
 #include <functional>
+#include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "stochtex/analysis/zoom_stability.h"
 #include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/param_info.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/report/page.h"
 #include "stochtex/report/table.h"
 #include "stochtex/studies/paper.h"
@@ -55,6 +58,13 @@ struct StabilityStudyResult {
 std::vector<FilterOptions> filtersPerEstimator(std::span<const FilterOptions> filters,
                                                std::span<const VarianceEstimator> estimators);
 
+// The filters a study of `pattern` measures: a filter per name (kFilterNames)
+// over `base` (its aniso, reference samples), by filtersPerEstimator over
+// `estimators`, or where none are given the pattern file's estimator, else
+// paper. InputError naming "filters" or "estimators".
+std::vector<FilterOptions> stabilityFilters(const PatternSpec& pattern, std::span<const std::string> filters,
+                                            std::span<const VarianceEstimator> estimators, const FilterOptions& base);
+
 // The name of each filter's frame sequence (FrameSequenceSet's files
 // <name>.mp4, <name>-NNN.png): the filter's label with '/' as '-', in order.
 std::vector<std::string> stabilitySequenceNames(std::span<const FilterOptions> filters);
@@ -67,6 +77,36 @@ void validateStabilityStudy(const StabilityStudyOptions& options);
 using StabilityFrameSink = std::function<void(size_t, int, const Image&)>;
 StabilityStudyResult stabilityStudy(const GraphPattern& pattern, const StabilityStudyOptions& options,
                                     const StudyProgress& progress = {}, const StabilityFrameSink& onFrame = {});
+
+// A study in parts (frame ranges), for runs split over processes
+// (stochtex/dask.py): what frames [first, first + count) measure, per
+// filter: the accuracy of each frame and, for each frame k ≥ 1 of the range,
+// the image change and error flicker of the pair (k − 1, k) (frame first − 1
+// is rendered again for the range's first pair: rendering is deterministic,
+// so it is the frame the previous range rendered).
+struct StabilityFrames {
+    int first = 0, count = 0;
+    std::vector<std::vector<double>> accuracy, imageChange, errorFlicker;  // per filter
+};
+// The filters and the ground truth of a study, built once (one PartCache),
+// measuring any range of its frames. `pattern` must outlive it.
+class StabilitySampler {
+public:
+    StabilitySampler(const GraphPattern& pattern, const StabilityStudyOptions& options);
+    ~StabilitySampler();
+    // InputError naming "first" or "count" for a range outside 0…frames − 1.
+    StabilityFrames frames(int first, int count, const StudyProgress& progress = {},
+                           const StabilityFrameSink& onFrame = {}) const;
+
+private:
+    StabilityStudyOptions options_;
+    PartCache cache_;
+    std::vector<std::unique_ptr<FilteredGraph>> filters_;
+    std::unique_ptr<FilteredGraph> truth_;
+};
+// The study from parts that cover frames 0…frames − 1 in order (InputError
+// naming "parts" otherwise): exactly stabilityStudy's result.
+StabilityStudyResult stabilityFromFrames(const StabilityStudyOptions& options, std::span<const StabilityFrames> parts);
 // Its report: stability.csv, stability-frames.csv (not on the page) and the
 // plots, titled by the pattern's name.
 Report stabilityReport(const StabilityStudyResult& result, const std::string& patternName);
