@@ -164,6 +164,30 @@ TEST(Camera, ABakedViewIsCappedByItsBandsNotItsPixels) {
     EXPECT_EQ(test::inputErrorOf([&] { bandCamera(whole, 65500, 256); }).parameter(), "rows");
     whole.kind = Camera::Kind::Plane;
     EXPECT_EQ(test::inputErrorOf([&] { bandCamera(whole, 0, 1); }).parameter(), "camera");
+    // Bands in order, each its rows of the view: a renderer that writes each
+    // pixel's absolute row (from the band's offset) gives 0…H−1 top to bottom.
+    struct RowRenderer : ViewRenderer {
+        Image render(const Camera& c, const Progress&) const override {
+            Image out(c.view.width, c.view.height, 1);
+            for (int y = 0; y < c.view.height; ++y)
+                for (int x = 0; x < c.view.width; ++x) out.at(x, y) = float(c.view.offsetV / c.view.scale + y);
+            return out;
+        }
+        int exampleSize() const override { return 64; }
+    };
+    Camera small;
+    small.view = View{3, 10, 2.0};
+    std::vector<float> rows;
+    std::vector<int> heights;
+    renderInBands(RowRenderer{}, small, 4, [&](const Image& band) {
+        heights.push_back(band.height());
+        for (int y = 0; y < band.height(); ++y) rows.push_back(band.at(2, y));
+    });
+    EXPECT_EQ(heights, (std::vector<int>{4, 4, 2}));
+    for (int y = 0; y < 10; ++y) EXPECT_EQ(rows[size_t(y)], float(y));
+    EXPECT_EQ(test::inputErrorOf([&] { renderInBands(RowRenderer{}, small, 0, [](const Image&) {}); }).parameter(),
+              "band");
+
     // The pattern's own view unless told otherwise.
     PatternSpec spec;
     spec.width = 300;
