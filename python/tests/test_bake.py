@@ -2,14 +2,12 @@
 # the same bytes as `stochtex bake-image` (PNG and EXR), also when a worker
 # dies mid-run; ImageStream writes a file only when it is complete.
 import os
-import signal
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import stochtex
+import stochtex.dask
 
 VIEW = dict(size=(200, 150), scale=3.0)
 
@@ -75,18 +73,6 @@ def test_an_image_stream_appears_only_when_complete(tmp_path):
         stochtex.ImageStream(str(tmp_path / "x.jpg"), 8, 4)  # not written in bands
 
 
-distributed = pytest.importorskip("distributed")
-import stochtex.dask  # noqa: E402
-
-
-@pytest.fixture(scope="module")
-def client():
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
-    with distributed.Client(cluster) as c:
-        yield c
-    cluster.close()
-
-
 def test_a_dask_bake_is_bake_image_s_file(tmp_path, cli, client):
     expected = bake_image(cli, tmp_path, "cli.exr", "--band", "40")
     seen = []
@@ -99,29 +85,11 @@ def test_a_dask_bake_is_bake_image_s_file(tmp_path, cli, client):
     assert read(tmp_path / "dask.png") == expected
 
 
-def test_a_worker_lost_mid_bake_changes_nothing(tmp_path, cli, client):
+def test_a_worker_lost_mid_bake_changes_nothing(tmp_path, cli, client, worker_killed_mid_run):
     expected = bake_image(cli, tmp_path, "cli.exr", "--band", "2")
-    client.wait_for_workers(2, timeout=30)
-    victim_address, victim = next(iter(client.run(os.getpid).items()))
-    killed = {}
-
-    def kill_while_it_works():
-        deadline = time.perf_counter() + 30
-        while time.perf_counter() < deadline:
-            if client.processing().get(victim_address, ()):
-                os.kill(victim, signal.SIGKILL)
-                killed["at"] = time.perf_counter()
-                return
-            time.sleep(0.002)
-
-    killer = threading.Thread(target=kill_while_it_works, daemon=True)
-    killer.start()
-    stochtex.dask.bake(client, "marble", str(tmp_path / "dask.exr"), band=2, filter="smooth", **VIEW)
-    done = time.perf_counter()
-    killer.join(10)
-    assert "at" in killed and killed["at"] < done, "the worker was not killed mid-bake"
+    with worker_killed_mid_run():
+        stochtex.dask.bake(client, "marble", str(tmp_path / "dask.exr"), band=2, filter="smooth", **VIEW)
     assert read(tmp_path / "dask.exr") == expected
-    client.wait_for_workers(2, timeout=30)
 
 
 def test_bad_bake_options_raise_before_any_task(tmp_path, client):

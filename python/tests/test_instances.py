@@ -6,14 +6,12 @@ import csv
 import functools
 import os
 import pickle
-import signal
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import stochtex
+import stochtex.dask
 
 SOURCE_DIR = os.environ.get("STOCHTEX_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 VALUE_NOISE = os.path.join(SOURCE_DIR, "data", "shadertoy", "value-noise")
@@ -118,18 +116,6 @@ def test_a_program_without_an_instance_uniform_is_refused():
     assert caught.value.parameter == "instances"
 
 
-distributed = pytest.importorskip("distributed")
-import stochtex.dask  # noqa: E402
-
-
-@pytest.fixture(scope="module")
-def client():
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
-    with distributed.Client(cluster) as c:
-        yield c
-    cluster.close()
-
-
 def test_on_two_workers_equals_one_process(client):
     single = stochtex.studies.instance_statistics(zoom(), **OPTIONS)
     assert_same(stochtex.dask.instance_statistics(client, functools.partial(stochtex.ZoomTexture, **ZOOM), **OPTIONS),
@@ -140,31 +126,12 @@ def test_on_two_workers_equals_one_process(client):
                 stochtex.studies.instance_statistics(make_program(), **program_options))
 
 
-def test_a_worker_lost_mid_run_changes_nothing(client):
+def test_a_worker_lost_mid_run_changes_nothing(client, worker_killed_mid_run):
     options = {**OPTIONS, "size": 96, "instances": 160, "chunk": 2, "point_x": -1, "point_y": -1}
     single = stochtex.studies.instance_statistics(zoom(), **options)
-    client.wait_for_workers(2, timeout=30)
-    pids = client.run(os.getpid)
-    victim_address, victim = next(iter(pids.items()))
-    killed = {}
-
-    def kill_while_it_works():
-        deadline = time.perf_counter() + 30
-        while time.perf_counter() < deadline:
-            if client.processing().get(victim_address, ()):
-                os.kill(victim, signal.SIGKILL)
-                killed["at"] = time.perf_counter()
-                return
-            time.sleep(0.002)
-
-    killer = threading.Thread(target=kill_while_it_works, daemon=True)
-    killer.start()
-    result = stochtex.dask.instance_statistics(client, functools.partial(stochtex.ZoomTexture, **ZOOM), **options)
-    done = time.perf_counter()
-    killer.join(10)
-    assert "at" in killed and killed["at"] < done, "the worker was not killed mid-run"
+    with worker_killed_mid_run():
+        result = stochtex.dask.instance_statistics(client, functools.partial(stochtex.ZoomTexture, **ZOOM), **options)
     assert_same(result, single)
-    client.wait_for_workers(2, timeout=30)
 
 
 def test_bad_options_raise_before_any_task(client):

@@ -597,20 +597,25 @@ TEST(Studies, Figures7And8ShareOnePairOfNoises) {
     EXPECT_EQ(test::inputErrorOf([] { paperFigurePanels(6); }).parameter(), "figure");
 }
 
+// A short zoom-out of 16² frames from scale 1 to `to`, per named filter.
+StabilityStudyOptions smallStability(std::initializer_list<const char*> filters, int frames, double to,
+                                     int truthSamples) {
+    StabilityStudyOptions o;
+    for (const char* f : filters) o.filters.emplace_back().use(parseFilter(f));
+    o.frames = frames;
+    o.size = 16;
+    o.from = 1;
+    o.to = to;
+    o.truthSamples = truthSamples;
+    return o;
+}
+
 // The study measures the frames it hands out: re-measuring the sink's frames
 // (and the ground truth, rendered here independently) gives the per-frame
 // table, and the summary is their mean and maximum.
 TEST(StabilityStudy, TablesMatchTheFramesItRenders) {
     const GraphPattern p = GraphPattern::build(loadPreset("marble"));
-    StabilityStudyOptions o;
-    o.filters.resize(2);
-    o.filters[0].use(parseFilter("none"));
-    o.filters[1].use(parseFilter("smooth"));
-    o.frames = 4;
-    o.size = 16;
-    o.from = 1;
-    o.to = 8;
-    o.truthSamples = 12;
+    const StabilityStudyOptions o = smallStability({"none", "smooth"}, 4, 8, 12);
     std::vector<std::vector<Image>> frames(2);
     const StabilityStudyResult r = stabilityStudy(p, o, {}, [&](size_t m, int k, const Image& f) {
         ASSERT_EQ(size_t(k), frames[m].size());
@@ -775,14 +780,7 @@ TEST(ImageBaseStudy, RegularImagesEchoStochasticOnesDoNot) {
 // pair's previous frame again) and joined is the study, bit for bit.
 TEST(StabilityStudy, RangesJoinedAreTheStudy) {
     const GraphPattern p = GraphPattern::build(loadPreset("marble"));
-    StabilityStudyOptions o;
-    o.filters.resize(2);
-    o.filters[0].use(parseFilter("none"));
-    o.filters[1].use(parseFilter("paper"));
-    o.frames = 7;
-    o.size = 16;
-    o.to = 16;
-    o.truthSamples = 8;
+    const StabilityStudyOptions o = smallStability({"none", "paper"}, 7, 16, 8);
     const StabilityStudyResult whole = stabilityStudy(p, o);
     const StabilitySampler sampler(p, o);
     const std::vector<StabilityFrames> parts{sampler.frames(0, 3), sampler.frames(3, 1), sampler.frames(4, 3)};
