@@ -59,7 +59,8 @@ auto withThreads(int threads, F&& f) {
 py::tuple tableTuple(const Table& table);
 
 // A report (a study's value) as {"title", "sections": [{"heading", "html",
-// "tables": [(file, tableTuple)], "figures": [(file, caption, image)]}]};
+// "tables": [(file, tableTuple)], "figures": [(file, caption, image)],
+// "files": {file: text}}]};
 // stochtex/studies.py makes it a Report.
 py::dict reportDict(Report&& report);
 

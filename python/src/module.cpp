@@ -81,6 +81,9 @@ py::dict reportDict(Report&& report) {
         d["html"] = section.html;
         d["tables"] = tables;
         d["figures"] = figures;
+        py::dict files;
+        for (const ReportFile& f : section.files) files[py::str(f.file)] = f.text;
+        d["files"] = files;
         sections.append(d);
     }
     py::dict d;

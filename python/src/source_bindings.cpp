@@ -18,6 +18,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/report/report.h"
 #include "stochtex/studies/instance_statistics.h"
+#include "stochtex/studies/zoom_studies.h"
 
 namespace stochtex::python {
 
@@ -272,6 +273,33 @@ void bindSources(py::module_& m) {
         "chunk (instances summed from zero before they are added in order: part of the result's definition), "
         "point_x, point_y, reference_row, probe_row (−1: the centre, the point's row). progress(fraction, step) "
         "is called as it goes.");
+    m.def(
+        "correlation",
+        [](const ZoomTexture& zoom, const std::vector<std::string>& variants, const std::vector<int>& layers,
+           const py::object& progress, const py::kwargs& numbers) {
+            CorrelationStudyOptions o;
+            o.zoom = zoom.source().params();
+            o.base = zoom.source().base();
+            o.variants.clear();
+            for (const std::string& v : variants) o.variants.push_back(parseEnum(kZoomVariantNames, v, "variants"));
+            o.layers = layers;
+            setMembers(o, correlationStudyMembers(), numbers);
+            validateCorrelationStudy(o);
+            const Progress report = pythonProgress(progress);
+            Report result;
+            {
+                py::gil_scoped_release release;
+                result = correlationReport(correlationStudy(o, report), o);
+            }
+            return reportDict(std::move(result));
+        },
+        py::arg("zoom"), py::kw_only(),
+        py::arg("variants") = std::vector<std::string>{"sliding", "fixed", "simple", "random"},
+        py::arg("layers") = CorrelationStudyOptions{}.layers, py::arg("progress") = py::none(),
+        "The thesis's correlation study (`stochtex correlation`, Figures 2.8–2.10): per zoom variant and layer "
+        "count, the correlation over instances measured beside its closed form. The zoom texture gives the "
+        "numbers and the base; each cell sets its variant's scaling and offsets and its layer count. Numbers of "
+        "its option table as keywords: instances, plot_size.");
     m.def("instance_report", &InstanceStatistics::report, py::arg("statistics"),
           "The summary (instances, mean and its spread, mean variance, the correlation's Corr ≥ ½ area, elongation "
           "and anti-correlation) and maps, as `stochtex shadertoy --analyse statistics` reports them.");

@@ -20,6 +20,7 @@
 #include "stochtex/studies/paper.h"
 #include "stochtex/studies/phasor_figures.h"
 #include "stochtex/studies/stability_study.h"
+#include "stochtex/studies/stimuli.h"
 
 namespace stochtex::python {
 
@@ -254,6 +255,46 @@ void bindStudies(py::module_& m) {
         "the flow does not explain), statistics (over instances). Frame k at time + k·time_step (defaults: the "
         "source's start and frame step).");
 
+    m.def(
+        "stimulus",
+        [](int size, int tile, double correlation, uint32_t seed, double mean, double contrast) {
+            StimulusOptions o{size, tile, correlation, seed, mean, contrast};
+            validateStimulus(o);
+            Image image;
+            {
+                py::gil_scoped_release release;
+                image = stimulusImage(o);
+            }
+            return ownedArray<float>(std::move(image.data()), {image.height(), image.width()});
+        },
+        py::kw_only(), py::arg("size") = StimulusOptions{}.size, py::arg("tile") = StimulusOptions{}.tile,
+        py::arg("correlation") = StimulusOptions{}.correlation, py::arg("seed") = StimulusOptions{}.seed,
+        py::arg("mean") = StimulusOptions{}.mean, py::arg("contrast") = StimulusOptions{}.contrast,
+        "One perception stimulus (thesis §2.6.2): tiled white noise whose pixels one tile apart correlate as "
+        "asked (eq. 2.28), float32 (size, size) display values in [0, 1].");
+    m.def(
+        "stimuli",
+        [](const std::vector<int>& tiles, const std::vector<double>& correlations, uint32_t seed, double mean,
+           double contrast, const py::object& progress, const py::kwargs& numbers) {
+            StimulusSetOptions o;
+            o.tiles = tiles;
+            o.correlations = correlations;
+            o.seed = seed;
+            o.mean = mean;
+            o.contrast = contrast;
+            return studyReport(o, stimulusSetMembers(), numbers, progress,
+                               [](const StimulusSetOptions& o, const Progress& p) {
+                                   validateStimulusSet(o);
+                                   return stimulusSetReport(stimulusSet(o, p));
+                               });
+        },
+        py::kw_only(), py::arg("tiles") = StimulusSetOptions{}.tiles,
+        py::arg("correlations") = StimulusSetOptions{}.correlations, py::arg("seed") = StimulusSetOptions{}.seed,
+        py::arg("mean") = StimulusSetOptions{}.mean, py::arg("contrast") = StimulusSetOptions{}.contrast,
+        py::arg("progress") = py::none(),
+        "The perception experiment's stimulus set (`stochtex stimuli`): the grid of tile sizes × correlations × "
+        "repeats in a seeded order, stimuli.csv, the stimuli and experiment.html (the report's files). Numbers of "
+        "its option table as keywords: size, repeats, duration_ms, reset_ms.");
     m.def(
         "figure10",
         [](const py::object& progress, const py::kwargs& numbers) {

@@ -222,6 +222,27 @@ def frame_analysis(
     point_y: int = -1,
     progress: Optional[Callable[[float, str], None]] = None,
 ) -> dict: ...
+def correlation(
+    zoom: ZoomTexture,
+    *,
+    variants: Sequence[str] = ...,
+    layers: Sequence[int] = ...,
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: int,
+) -> dict: ...
+def stimulus(
+    *, size: int = 256, tile: int = 32, correlation: float = 0.5, seed: int = 0, mean: float = 0.5, contrast: float = 1.0
+) -> npt.NDArray[np.float32]: ...
+def stimuli(
+    *,
+    tiles: Sequence[int] = ...,
+    correlations: Sequence[float] = ...,
+    seed: int = 0,
+    mean: float = 0.5,
+    contrast: float = 1.0,
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: int,
+) -> dict: ...
 def figure10(*, progress: Optional[Callable[[float, str], None]] = None, **kwargs: float) -> dict: ...
 def figure12(
     pattern: Pattern,

@@ -19,6 +19,7 @@ __all__ = [
     "Table1Sampler",
     "TABLE1_FOOTPRINTS",
     "estimator_renders",
+    "correlation",
     "figure4",
     "figure10",
     "figure12",
@@ -30,6 +31,8 @@ __all__ = [
     "instance_statistics",
     "stability",
     "stability_from_frames",
+    "stimuli",
+    "stimulus",
     "StabilitySampler",
     "table1",
     "table1_from_terms",
@@ -81,6 +84,7 @@ class Section(NamedTuple):
     html: str  # the page's text under the heading
     tables: Dict[str, Table]  # by the CSV file the report writes (else the table's title)
     figures: List[Figure]
+    files: Dict[str, str]  # other text files the report writes (a page, a Markdown table), by name
 
 
 class Report(NamedTuple):
@@ -97,6 +101,10 @@ class Report(NamedTuple):
     def figures(self) -> List[Figure]:
         return [f for s in self.sections for f in s.figures]
 
+    @property
+    def files(self) -> Dict[str, str]:
+        return {name: text for s in self.sections for name, text in s.files.items()}
+
 
 def _report(raw: Dict[str, Any]) -> Report:
     sections = []
@@ -105,7 +113,7 @@ def _report(raw: Dict[str, Any]) -> Report:
         for file, t in s["tables"]:
             table = Table(*t)
             tables[file or table.title] = table
-        sections.append(Section(s["heading"], s["html"], tables, [Figure(*f) for f in s["figures"]]))
+        sections.append(Section(s["heading"], s["html"], tables, [Figure(*f) for f in s["figures"]], dict(s["files"])))
     return Report(raw["title"], sections)
 
 
@@ -203,6 +211,40 @@ def stability_from_frames(parts: Sequence[tuple], pattern: Any = "marble", **opt
 
 def _lists(options: Dict[str, Any]) -> Dict[str, Any]:
     return {k: list(v) if k in ("filters", "estimators") else v for k, v in options.items()}
+
+
+def correlation(zoom: Any = None, **options: Any) -> Report:
+    """The thesis's correlation study (`stochtex correlation`, Figures
+    2.8–2.10): per zoom variant ("sliding", "fixed", "simple", "random")
+    and layer count, the correlation over instances of the zoom texture
+    measured beside its closed form. zoom: a ZoomTexture giving the numbers
+    and the base (default: ZoomTexture()). Options: variants, layers,
+    instances, plot_size, progress."""
+    from . import ZoomTexture
+
+    for key in ("variants", "layers"):
+        if key in options:
+            options[key] = list(options[key])
+    return _report(_stochtex.correlation(zoom if zoom is not None else ZoomTexture(), **options))
+
+
+def stimulus(**options: Any) -> np.ndarray:
+    """One perception stimulus (thesis §2.6.2): float32 (size, size) display
+    values of tiled white noise whose pixels one tile apart correlate as
+    asked. Options: size, tile, correlation, seed, mean, contrast."""
+    return _stochtex.stimulus(**options)
+
+
+def stimuli(**options: Any) -> Report:
+    """The perception experiment's stimulus set (`stochtex stimuli`): the
+    table "stimuli.csv" (one row per trial, in presentation order), the
+    stimuli as figures and the experiment page (report.files
+    ["experiment.html"], self-contained). Options: tiles, correlations,
+    seed, mean, contrast, size, repeats, duration_ms, reset_ms, progress."""
+    for key in ("tiles", "correlations"):
+        if key in options:
+            options[key] = list(options[key])
+    return _report(_stochtex.stimuli(**options))
 
 
 def _result(raw: Dict[str, Any]) -> Dict[str, Any]:

@@ -151,3 +151,27 @@ def test_a_table_as_a_pandas_frame():
         else:
             assert list(frame[key]) == values, key
     assert frame.attrs["units"] == table.units and frame.attrs["title"] == table.title
+
+
+def test_the_correlation_study_equals_the_cli_s(tmp_path, cli):
+    cli("correlation", "-o", str(tmp_path), "--variant", "sliding,random", "--layers-list", "4,2", "--instances", "32",
+        "--size", "16", "--base-size", "64")
+    report = stochtex.studies.correlation(stochtex.ZoomTexture(base_size=64), variants=["sliding", "random"],
+                                          layers=[4, 2], instances=32, plot_size=16)
+    assert_report_is_cli_s(report, tmp_path)
+    assert report.tables["correlation.csv"]["variant"] == ["sliding", "sliding", "random", "random"]
+
+
+def test_the_stimulus_set_equals_the_cli_s(tmp_path, cli):
+    cli("stimuli", "-o", str(tmp_path), "--size", "32", "--tiles", "8,16", "--correlations", "0,1", "--repeats", "2",
+        "--seed", "3")
+    report = stochtex.studies.stimuli(size=32, tiles=[8, 16], correlations=[0, 1], repeats=2, seed=3)
+    assert_report_is_cli_s(report, tmp_path)
+    with open(tmp_path / "experiment.html") as f:
+        assert report.files["experiment.html"] in f.read()  # the page's body, which the writer wraps
+    # Each figure is the stimulus the CLI wrote (8-bit display codes).
+    for figure in report.figures[:3]:
+        written = stochtex.read_image(str(tmp_path / figure.file))
+        assert np.abs(written[..., 0] - figure.image[..., 0]).max() <= 0.5 / 255 + 1e-6, figure.file
+    one = stochtex.studies.stimulus(size=32, tile=8, correlation=1.0, seed=5)
+    assert one.shape == (32, 32) and np.array_equal(one[:8, :8], one[8:16, 16:24])  # correlation 1: tiles repeat
