@@ -67,6 +67,23 @@ private:
     int width_, height_, channels_, written_ = 0;
 };
 
+using Pixels = py::array_t<float, py::array::c_style | py::array::forcecast>;
+
+// An array (height, width) or (height, width, channels) as an image (copied).
+Image imageOf(const Pixels& pixels) {
+    if (pixels.ndim() != 2 && pixels.ndim() != 3)
+        throw InputError::parameter("pixels", "must be an array of shape (height, width) or (height, width, channels)");
+    const int channels = pixels.ndim() == 3 ? int(pixels.shape(2)) : 1;
+    if (channels < 1 || channels > 4)
+        throw InputError::parameter("pixels", "must have 1 to 4 channels, got " + std::to_string(channels));
+    if (pixels.shape(0) < 1 || pixels.shape(1) < 1 || pixels.shape(0) > kMaxImageSide ||
+        pixels.shape(1) > kMaxImageSide)
+        throw InputError::parameter("pixels", "must be 1 to " + std::to_string(kMaxImageSide) + " pixels on each side");
+    Image image(int(pixels.shape(1)), int(pixels.shape(0)), channels, Image::Uninitialized{});
+    std::memcpy(image.data().data(), pixels.data(), image.data().size() * sizeof(float));
+    return image;
+}
+
 }  // namespace
 
 void bindImages(py::module_& m) {
@@ -96,21 +113,8 @@ void bindImages(py::module_& m) {
         "light), an 8/16-bit file's codes scaled to [0, 1] (sRGB-encoded where stochtex wrote them).");
     m.def(
         "write_image",
-        [](const std::string& path, const py::array_t<float, py::array::c_style | py::array::forcecast>& pixels,
-           int bits, bool half) {
-            if (pixels.ndim() != 2 && pixels.ndim() != 3)
-                throw InputError::parameter("pixels",
-                                            "must be an array of shape (height, width) or (height, width, "
-                                            "channels)");
-            const int channels = pixels.ndim() == 3 ? int(pixels.shape(2)) : 1;
-            if (channels < 1 || channels > 4)
-                throw InputError::parameter("pixels", "must have 1 to 4 channels, got " + std::to_string(channels));
-            if (pixels.shape(0) < 1 || pixels.shape(1) < 1 || pixels.shape(0) > kMaxImageSide ||
-                pixels.shape(1) > kMaxImageSide)
-                throw InputError::parameter("pixels",
-                                            "must be 1 to " + std::to_string(kMaxImageSide) + " pixels on each side");
-            Image image(int(pixels.shape(1)), int(pixels.shape(0)), channels, Image::Uninitialized{});
-            std::memcpy(image.data().data(), pixels.data(), image.data().size() * sizeof(float));
+        [](const std::string& path, const Pixels& pixels, int bits, bool half) {
+            const Image image = imageOf(pixels);
             WriteOptions options;
             options.bitDepth = bits;
             options.exrHalf = half;
@@ -121,6 +125,25 @@ void bindImages(py::module_& m) {
         py::arg("path"), py::arg("pixels"), py::kw_only(), py::arg("bits") = 8, py::arg("half") = false,
         "Writes linear-light pixels to PNG/TIFF (8 or 16 bits, sRGB-encoded), JPEG or EXR (float, or half), "
         "atomically: a failed write leaves no file.");
+    m.def(
+        "encode_image",
+        [](const Pixels& pixels, const std::string& format, int bits, bool display) {
+            const Image image = imageOf(pixels);
+            WriteOptions options;
+            options.bitDepth = bits;
+            if (display) options.transfer = Transfer::Linear;  // display codes: written as they are
+            const std::string name = "image." + format;
+            checkImageOutputFormat(name, options);
+            std::vector<unsigned char> bytes;
+            {
+                py::gil_scoped_release release;
+                bytes = encodeImage(name, image, options);
+            }
+            return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        },
+        py::arg("pixels"), py::kw_only(), py::arg("format") = "png", py::arg("bits") = 8, py::arg("display") = false,
+        "The bytes write_image would write, in memory (png, jpg, tif, exr): linear-light pixels sRGB-encoded, or "
+        "with display=True values that are display codes already (a study's figures) as they are.");
 }
 
 }  // namespace stochtex::python

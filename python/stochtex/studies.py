@@ -4,6 +4,8 @@ study with the GIL released; stochtex.dask runs the embarrassingly parallel
 ones on a Dask cluster with exactly the same result."""
 from __future__ import annotations
 
+import base64
+import html
 from typing import Any, Dict, List, NamedTuple, Sequence, Union
 
 import numpy as np
@@ -72,11 +74,39 @@ class Table(Dict[str, Column]):
     def __repr__(self) -> str:
         return f"<stochtex Table {self.title!r}: {self.rows()} rows, columns {list(self)}>"
 
+    def _repr_html_(self) -> str:
+        """The table as a notebook shows it: headers with units, numbers with
+        6 significant digits (as the CSV), — where a cell does not apply."""
+
+        def cell(v: Any) -> str:
+            if isinstance(v, (float, np.floating)):
+                return "—" if np.isnan(v) else f"{v:.6g}"
+            return html.escape(str(v))
+
+        head = "".join(
+            f"<th>{html.escape(self.headers[k])}{' (' + html.escape(self.units[k]) + ')' if self.units[k] else ''}</th>"
+            for k in self
+        )
+        body = "".join(
+            "<tr>" + "".join(f"<td>{cell(self[k][i])}</td>" for k in self) + "</tr>" for i in range(self.rows())
+        )
+        title = f"<caption>{html.escape(self.title)}</caption>" if self.title else ""
+        return f"<table>{title}<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+
 
 class Figure(NamedTuple):
     file: str  # the name the report writes it under
     caption: str
-    image: np.ndarray  # float32 (height, width, channels), as the report writes it
+    image: np.ndarray  # float32 (height, width, channels): display codes in [0, 1], as the report writes them
+
+    def _repr_png_(self) -> bytes:
+        """The figure's PNG, as the report writes it (a notebook shows it)."""
+        return _stochtex.encode_image(self.image, display=True)
+
+    def _repr_html_(self) -> str:
+        png = base64.b64encode(self._repr_png_()).decode("ascii")
+        caption = f"<figcaption>{html.escape(self.caption)}</figcaption>" if self.caption else ""
+        return f'<figure><img src="data:image/png;base64,{png}" alt="{html.escape(self.file)}">{caption}</figure>'
 
 
 class Section(NamedTuple):
@@ -104,6 +134,19 @@ class Report(NamedTuple):
     @property
     def files(self) -> Dict[str, str]:
         return {name: text for s in self.sections for name, text in s.files.items()}
+
+    def _repr_html_(self) -> str:
+        """The report as a notebook shows it: each section's heading, text,
+        tables and figures (embedded PNGs), as `stochtex reproduce` lays out
+        its page."""
+        parts = [f"<h2>{html.escape(self.title)}</h2>"]
+        for section in self.sections:
+            if section.heading:
+                parts.append(f"<h3>{html.escape(section.heading)}</h3>")
+            parts.append(section.html)
+            parts += [t._repr_html_() for t in section.tables.values()]
+            parts += [f._repr_html_() for f in section.figures if f.caption]
+        return "\n".join(parts)
 
 
 def _report(raw: Dict[str, Any]) -> Report:

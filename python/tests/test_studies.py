@@ -175,3 +175,23 @@ def test_the_stimulus_set_equals_the_cli_s(tmp_path, cli):
         assert np.abs(written[..., 0] - figure.image[..., 0]).max() <= 0.5 / 255 + 1e-6, figure.file
     one = stochtex.studies.stimulus(size=32, tile=8, correlation=1.0, seed=5)
     assert one.shape == (32, 32) and np.array_equal(one[:8, :8], one[8:16, 16:24])  # correlation 1: tiles repeat
+
+
+def test_reports_show_themselves_in_a_notebook(tmp_path):
+    report = stochtex.studies.figure10(size=64, comparison_size=32)
+    page = report._repr_html_()
+    assert page.count("<table>") == len(report.tables) and page.count("data:image/png;base64,") >= 1
+    assert report.title in page
+    figure = report.figures[0]
+    png = figure._repr_png_()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    (tmp_path / "f.png").write_bytes(png)
+    shown = stochtex.read_image(str(tmp_path / "f.png"))
+    assert shown.shape == figure.image.shape
+    assert np.abs(shown - np.clip(figure.image, 0, 1)).max() <= 0.5 / 255 + 1e-6  # display codes, as written
+    # Linear light by default: the bytes write_image writes.
+    pixels = np.linspace(0, 1, 48, dtype=np.float32).reshape(4, 4, 3)
+    stochtex.write_image(str(tmp_path / "w.png"), pixels)
+    assert stochtex.encode_image(pixels) == (tmp_path / "w.png").read_bytes()
+    with pytest.raises(stochtex.InputError):
+        stochtex.encode_image(pixels, format="gif")
