@@ -195,3 +195,17 @@ def test_reports_show_themselves_in_a_notebook(tmp_path):
     assert stochtex.encode_image(pixels) == (tmp_path / "w.png").read_bytes()
     with pytest.raises(stochtex.InputError):
         stochtex.encode_image(pixels, format="gif")
+
+
+def test_a_report_pickles_as_it_is():
+    import pickle
+
+    report = stochtex.studies.figure10(size=64, comparison_size=32)
+    back = pickle.loads(pickle.dumps(report))
+    assert back.title == report.title and list(back.tables) == list(report.tables)
+    for name, table in report.tables.items():
+        assert back.tables[name].units == table.units and back.tables[name].title == table.title
+        for key, values in table.items():
+            assert np.array_equal(back.tables[name][key], values) if isinstance(values, np.ndarray) else (
+                back.tables[name][key] == values)
+    assert all(np.array_equal(a.image, b.image) for a, b in zip(back.figures, report.figures))
