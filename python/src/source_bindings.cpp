@@ -300,6 +300,25 @@ void bindSources(py::module_& m) {
         "count, the correlation over instances measured beside its closed form. The zoom texture gives the "
         "numbers and the base; each cell sets its variant's scaling and offsets and its layer count. Numbers of "
         "its option table as keywords: instances, plot_size.");
+    m.def(
+        "contrast",
+        [](const ZoomTexture& zoom, const py::kwargs& numbers) {
+            ContrastStudyOptions o;
+            setMembers(o, contrastStudyMembers(), numbers);
+            validateContrastStudy(o);
+            Report result;
+            {
+                py::gil_scoped_release release;
+                result = contrastReport(zoomContrastStudy(zoom.source().params(), zoom.source().base(), o),
+                                        zoom.source().params().layers);
+            }
+            return reportDict(std::move(result));
+        },
+        py::arg("zoom"), py::kw_only(),
+        "The thesis's contrast corrections (`stochtex contrast`, §2.4): linear, polynomial and sigmoid "
+        "correction of the zoom texture (at its time) against its base's statistics. Numbers of its option table as "
+        "keywords: "
+        "size.");
     m.def("instance_report", &InstanceStatistics::report, py::arg("statistics"),
           "The summary (instances, mean and its spread, mean variance, the correlation's Corr ≥ ½ area, elongation "
           "and anti-correlation) and maps, as `stochtex shadertoy --analyse statistics` reports them.");

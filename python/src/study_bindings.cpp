@@ -153,9 +153,27 @@ private:
     StabilitySampler sampler_;
 };
 
+// A frame study's run of a Python source: its window, its first frame's time
+// and step (the source's where not given), its frames; named as the source.
+FrameAnalysisOptions frameOptions(const PySource& source, const SizeArgument& size,
+                                  const std::optional<std::vector<double>>& origin, const std::optional<double>& time,
+                                  const std::optional<double>& timeStep, int frames) {
+    FrameAnalysisOptions o;
+    o.analyses = {FrameAnalysis::Flicker};
+    o.region = sourceRegion(size, origin);
+    o.time = time.value_or(source.startTime());
+    o.timeStep = timeStep.value_or(source.frameStep());
+    o.frames = frames;
+    o.frameTransfer = source.frameTransfer();
+    o.sourceName = source.name();
+    return o;  // checked by the study it is for
+}
+
 }  // namespace
 
 void bindStudies(py::module_& m) {
+    // What stochtex.dask splits a frame study's run by, where no frames are given.
+    m.attr("_frame_analysis_frames") = FrameAnalysisOptions{}.frames;
     m.def(
         "stability",
         [](const PatternSpec& pattern, const std::vector<std::string>& filters,
@@ -224,21 +242,16 @@ void bindStudies(py::module_& m) {
 
     m.def(
         "frame_analysis",
-        [](const PySource& source, const std::vector<std::string>& analyses,
-           const std::variant<int, std::vector<int>>& size, const std::optional<std::vector<double>>& origin,
-           const std::optional<double>& time, const std::optional<double>& timeStep, int frames, int instances,
-           int pointX, int pointY, const py::object& progress) {
-            FrameAnalysisOptions o;
+        [](const PySource& source, const std::vector<std::string>& analyses, const SizeArgument& size,
+           const std::optional<std::vector<double>>& origin, const std::optional<double>& time,
+           const std::optional<double>& timeStep, int frames, int instances, int pointX, int pointY,
+           const py::object& progress) {
+            FrameAnalysisOptions o = frameOptions(source, size, origin, time, timeStep, frames);
+            o.analyses.clear();
             for (const std::string& a : analyses) o.analyses.push_back(parseEnum(kFrameAnalysisNames, a, "analyses"));
-            o.region = sourceRegion(size, origin);
-            o.time = time.value_or(source.startTime());
-            o.timeStep = timeStep.value_or(source.frameStep());
-            o.frames = frames;
             o.instances = instances;
             o.pointX = pointX;
             o.pointY = pointY;
-            o.frameTransfer = source.frameTransfer();
-            o.sourceName = source.name();
             validateFrameAnalysis(o);
             const Progress report = pythonProgress(progress);
             Report result;
@@ -254,6 +267,67 @@ void bindStudies(py::module_& m) {
         "first frame's power spectrum), flow (optical flow between consecutive frames), coherence, flicker (what "
         "the flow does not explain), statistics (over instances). Frame k at time + k·time_step (defaults: the "
         "source's start and frame step).");
+    m.def(
+        "flicker_pairs",
+        [](const PySource& source, int first, int count, const SizeArgument& size,
+           const std::optional<std::vector<double>>& origin, const std::optional<double>& time,
+           const std::optional<double>& timeStep, int frames) {
+            const FrameAnalysisOptions o = frameOptions(source, size, origin, time, timeStep, frames);
+            FlickerPairs f;
+            source.use([&](const TextureSource& s) { f = flickerPairs(s, o, first, count); });
+            std::vector<double> residual, contrast, relative;
+            for (const FlickerMeasure& m : f.measures) {
+                residual.push_back(m.residual);
+                contrast.push_back(m.contrast);
+                relative.push_back(m.relative);
+            }
+            const py::ssize_t n = py::ssize_t(f.measures.size());
+            return py::make_tuple(f.first, ownedArray<double>(std::move(residual), {n}),
+                                  ownedArray<double>(std::move(contrast), {n}),
+                                  ownedArray<double>(std::move(relative), {n}), imageArray(std::move(f.worstMap)));
+        },
+        py::arg("source"), py::arg("first"), py::arg("count"), py::kw_only(), py::arg("size") = 256,
+        py::arg("origin") = py::none(), py::arg("time") = py::none(), py::arg("time_step") = py::none(),
+        py::arg("frames") = FrameAnalysisOptions{}.frames,
+        "The flicker of pairs [first, first + count) of frame_analysis' run with the same options (pair k: frame "
+        "k → k + 1): (first, residual, contrast, relative, worst_map), the part's frames rendered here.");
+    m.def(
+        "flicker_from_pairs",
+        [](const PySource& source, const std::vector<py::tuple>& parts, const SizeArgument& size,
+           const std::optional<std::vector<double>>& origin, const std::optional<double>& time,
+           const std::optional<double>& timeStep, int frames) {
+            const FrameAnalysisOptions o = frameOptions(source, size, origin, time, timeStep, frames);
+            std::vector<FlickerPairs> pairs;
+            for (const py::tuple& t : parts) {
+                if (t.size() != 5) throw InputError::parameter("parts", "must hold flicker_pairs' tuples");
+                FlickerPairs f;
+                f.first = t[0].cast<int>();
+                const auto column = [&](int k) {
+                    return t[size_t(k)].cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+                };
+                const auto residual = column(1), contrast = column(2), relative = column(3);
+                if (residual.size() != contrast.size() || residual.size() != relative.size())
+                    throw InputError::parameter("parts", "must hold flicker_pairs' tuples");
+                for (py::ssize_t i = 0; i < residual.size(); ++i)
+                    f.measures.push_back({residual.data()[i], contrast.data()[i], relative.data()[i]});
+                const auto map = t[4].cast<py::array_t<float, py::array::c_style | py::array::forcecast>>();
+                if (map.ndim() != 3) throw InputError::parameter("parts", "must hold flicker_pairs' tuples");
+                f.worstMap = Image(int(map.shape(1)), int(map.shape(0)), int(map.shape(2)), Image::Uninitialized{});
+                std::copy(map.data(), map.data() + map.size(), f.worstMap.data().begin());
+                pairs.push_back(std::move(f));
+            }
+            Report result;
+            {
+                py::gil_scoped_release release;
+                result = flickerFromPairs(o, pairs).report;
+            }
+            return reportDict(std::move(result));
+        },
+        py::arg("source"), py::arg("parts"), py::kw_only(), py::arg("size") = 256, py::arg("origin") = py::none(),
+        py::arg("time") = py::none(), py::arg("time_step") = py::none(),
+        py::arg("frames") = FrameAnalysisOptions{}.frames,
+        "frame_analysis(source, ['flicker'], same options) from flicker_pairs' parts covering every pair in "
+        "order: exactly its report.");
 
     m.def(
         "stimulus",
@@ -295,6 +369,37 @@ void bindStudies(py::module_& m) {
         "The perception experiment's stimulus set (`stochtex stimuli`): the grid of tile sizes × correlations × "
         "repeats in a seeded order, stimuli.csv, the stimuli and experiment.html (the report's files). Numbers of "
         "its option table as keywords: size, repeats, duration_ms, reset_ms.");
+    m.def(
+        "figure11",
+        [](const std::vector<int>& footprints, double referenceTolerance, const py::object& progress,
+           const py::kwargs& numbers) {
+            Figure4Options o = figure11Options();
+            o.footprints = footprints;
+            o.referenceTolerance = referenceTolerance;
+            return studyReport(o, figure4Members(), numbers, progress, [](const Figure4Options& o, const Progress& p) {
+                return figure4Report(figure4(o, p), o.figure);
+            });
+        },
+        py::kw_only(), py::arg("footprints") = Figure4Options{}.footprints,
+        py::arg("reference_tolerance") = Figure4Options{}.referenceTolerance, py::arg("progress") = py::none(),
+        "Paper Figure 11 (`stochtex reproduce figure11`): Figure 4's comparison for the phasor sine pattern "
+        "(phasor-stripes), fading to the profile's mean colour. Numbers of Figure 4's option table as keywords: "
+        "size, reference_samples.");
+    m.def(
+        "figures7to9",
+        [](int size, const py::object& progress) {
+            validateFigures7to9(size);
+            const Progress report = pythonProgress(progress);
+            Report result;
+            {
+                py::gil_scoped_release release;
+                result = figures7to9Report(figures7to9(size, report));
+            }
+            return reportDict(std::move(result));
+        },
+        py::kw_only(), py::arg("size") = 384, py::arg("progress") = py::none(),
+        "Paper Figures 7–9 (`stochtex reproduce figures7-9`): sheets of four presets each (colormaps over one "
+        "pair of noises; noises), `size` pixels per pattern.");
     m.def(
         "figure10",
         [](const py::object& progress, const py::kwargs& numbers) {

@@ -232,6 +232,15 @@ def correlation(
     progress: Optional[Callable[[float, str], None]] = None,
     **kwargs: int,
 ) -> dict: ...
+def contrast(zoom: ZoomTexture, **kwargs: int) -> dict: ...
+def figure11(
+    *,
+    footprints: Sequence[int] = ...,
+    reference_tolerance: float = 0.0005,
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: float,
+) -> dict: ...
+def figures7to9(*, size: int = 384, progress: Optional[Callable[[float, str], None]] = None) -> dict: ...
 def stimulus(
     *, size: int = 256, tile: int = 32, correlation: float = 0.5, seed: int = 0, mean: float = 0.5, contrast: float = 1.0
 ) -> npt.NDArray[np.float32]: ...
@@ -244,6 +253,29 @@ def stimuli(
     contrast: float = 1.0,
     progress: Optional[Callable[[float, str], None]] = None,
     **kwargs: int,
+) -> dict: ...
+_frame_analysis_frames: int
+
+def flicker_pairs(
+    source: TextureSource,
+    first: int,
+    count: int,
+    *,
+    size: Union[int, Sequence[int]] = 256,
+    origin: Optional[Sequence[float]] = None,
+    time: Optional[float] = None,
+    time_step: Optional[float] = None,
+    frames: int = 8,
+) -> tuple: ...
+def flicker_from_pairs(
+    source: TextureSource,
+    parts: Sequence[tuple],
+    *,
+    size: Union[int, Sequence[int]] = 256,
+    origin: Optional[Sequence[float]] = None,
+    time: Optional[float] = None,
+    time_step: Optional[float] = None,
+    frames: int = 8,
 ) -> dict: ...
 def figure10(*, progress: Optional[Callable[[float, str], None]] = None, **kwargs: float) -> dict: ...
 def figure12(

@@ -33,7 +33,7 @@ import numpy as np
 
 from . import _stochtex, studies
 
-__all__ = ["bake", "instance_statistics", "stability", "table1", "table1_chunks"]
+__all__ = ["bake", "flicker", "instance_statistics", "stability", "table1", "table1_chunks"]
 
 
 def _input_error(parameter: str, message: str) -> Exception:
@@ -114,6 +114,41 @@ def _worker_source(recipe: bytes):
 
 def _instance_chunk(recipe: bytes, index: int, options: Dict[str, Any]):
     return studies.instance_chunk(_worker_source(recipe), index, **options)
+
+
+def _flicker_pairs(recipe: bytes, first: int, count: int, options: Dict[str, Any]):
+    return studies.flicker_pairs(_worker_source(recipe), first, count, **options)
+
+
+def flicker(client, make_source: Callable[[], Any], *, chunk: int = 4, progress: Any = None, **options: Any):
+    """stochtex.studies.frame_analysis(make_source(), ["flicker"], **options)
+    with its pairs of frames measured in parts of `chunk` pairs on the
+    client's cluster (each part renders its own frames: its first again) and
+    joined in order: exactly that report. make_source as for
+    instance_statistics; this side makes one too (to check the options and
+    name the report). A ShaderToy program renders every frame before the
+    ones a part asks for (its buffers need them): its parts cost more the
+    later they start."""
+    if chunk < 1:
+        raise _input_error("chunk", f"chunk must be at least 1 pair, got {chunk}")
+    source = make_source()
+    frames = options.get("frames", _stochtex._frame_analysis_frames)
+    # Refuses bad options here (the run's first pair), before any task runs.
+    first_part = studies.flicker_pairs(source, 0, min(chunk, frames - 1), **options)
+    recipe = cloudpickle.dumps(make_source)
+    ranges = [(first, min(chunk, frames - 1 - first)) for first in range(chunk, frames - 1, chunk)]
+    futures = [client.submit(_flicker_pairs, recipe, first, count, options, pure=True) for first, count in ranges]
+    parts = [first_part]
+    try:
+        for index, future in enumerate(futures):
+            parts.append(future.result())
+            future.release()
+            if progress is not None:
+                progress((index + 1) / len(futures), f"pairs {ranges[index][0]}… of {frames - 1}")
+    except BaseException:
+        client.cancel(futures)
+        raise
+    return studies.flicker_from_pairs(source, parts, **options)
 
 
 def instance_statistics(client, make_source: Callable[[], Any], **options: Any):

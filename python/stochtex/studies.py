@@ -21,11 +21,16 @@ __all__ = [
     "Table1Sampler",
     "TABLE1_FOOTPRINTS",
     "estimator_renders",
+    "contrast",
     "correlation",
     "figure4",
     "figure10",
+    "figure11",
     "figure12",
     "figure14",
+    "figures7to9",
+    "flicker_from_pairs",
+    "flicker_pairs",
     "frame_analysis",
     "instance_chunk",
     "instance_chunk_count",
@@ -271,6 +276,32 @@ def correlation(zoom: Any = None, **options: Any) -> Report:
     return _report(_stochtex.correlation(zoom if zoom is not None else ZoomTexture(), **options))
 
 
+def contrast(zoom: Any = None, **numbers: Any) -> Report:
+    """The thesis's contrast corrections (`stochtex contrast`, §2.4):
+    linear, polynomial and sigmoid correction of the zoom texture (default
+    ZoomTexture(layers=16), Figure 2.6's) at its time, with histograms,
+    curves and clamped-pixel percentages ("contrast.csv"). numbers: size."""
+    from . import ZoomTexture
+
+    return _report(_stochtex.contrast(zoom if zoom is not None else ZoomTexture(layers=16), **numbers))
+
+
+def figure11(**options: Any) -> Report:
+    """Paper Figure 11 (`stochtex reproduce figure11`): Figure 4's
+    comparison for the phasor sine pattern (phasor-stripes), fading to the
+    profile's mean colour. Options: footprints, reference_tolerance, size,
+    reference_samples, progress."""
+    if "footprints" in options:
+        options["footprints"] = list(options["footprints"])
+    return _report(_stochtex.figure11(**options))
+
+
+def figures7to9(**options: Any) -> Report:
+    """Paper Figures 7–9 (`stochtex reproduce figures7-9`): sheets of four
+    presets each, `size` pixels per pattern; progress."""
+    return _report(_stochtex.figures7to9(**options))
+
+
 def stimulus(**options: Any) -> np.ndarray:
     """One perception stimulus (thesis §2.6.2): float32 (size, size) display
     values of tiled white noise whose pixels one tile apart correlate as
@@ -288,6 +319,19 @@ def stimuli(**options: Any) -> Report:
         if key in options:
             options[key] = list(options[key])
     return _report(_stochtex.stimuli(**options))
+
+
+def flicker_pairs(source: TextureSource, first: int, count: int, **options: Any) -> tuple:
+    """The flicker of pairs [first, first + count) (pair k: frame k → k + 1)
+    of frame_analysis(source, ["flicker"], **options)'s run, its frames
+    rendered here: (first, residual, contrast, relative, worst_map)."""
+    return _stochtex.flicker_pairs(source, first, count, **options)
+
+
+def flicker_from_pairs(source: TextureSource, parts: Sequence[tuple], **options: Any) -> Report:
+    """frame_analysis(source, ["flicker"], **options) from flicker_pairs'
+    parts that cover every pair in order: exactly its report."""
+    return _report(_stochtex.flicker_from_pairs(source, list(parts), **options))
 
 
 def _result(raw: Dict[str, Any]) -> Dict[str, Any]:

@@ -60,3 +60,24 @@ def test_the_stability_study_on_two_workers_equals_one_process(client):
     with pytest.raises(stochtex.InputError) as caught:
         stochtex.dask.stability(client, "marble", frames=1)
     assert caught.value.parameter == "frames"
+
+
+def test_the_flicker_on_two_workers_equals_one_process(client):
+    import functools
+    import os
+
+    value_noise = os.path.join(os.environ.get("STOCHTEX_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", "..")),
+                               "data", "shadertoy", "value-noise")
+    for make, options in (
+        (functools.partial(stochtex.ZoomTexture, layers=4, offsets="hashed", base_size=64), dict(size=48, frames=7)),
+        (functools.partial(stochtex.Shadertoy, value_noise, width=48, height=48), dict(size=48, frames=6, time_step=0.25)),
+    ):
+        single = stochtex.studies.frame_analysis(make(), ["flicker"], **options)
+        spread = stochtex.dask.flicker(client, make, chunk=2, **options)
+        for name, table in single.tables.items():
+            for key, values in table.items():
+                if isinstance(values, np.ndarray):
+                    assert np.array_equal(values, spread.tables[name][key], equal_nan=True), (name, key)
+                else:
+                    assert values == spread.tables[name][key], (name, key)
+        assert all(np.array_equal(a.image, b.image) for a, b in zip(single.figures, spread.figures))

@@ -209,3 +209,44 @@ def test_a_report_pickles_as_it_is():
             assert np.array_equal(back.tables[name][key], values) if isinstance(values, np.ndarray) else (
                 back.tables[name][key] == values)
     assert all(np.array_equal(a.image, b.image) for a, b in zip(back.figures, report.figures))
+
+
+def assert_same_report(a, b):
+    assert a.title == b.title and list(a.tables) == list(b.tables)
+    for name, table in a.tables.items():
+        for key, values in table.items():
+            if isinstance(values, np.ndarray):
+                assert np.array_equal(values, b.tables[name][key], equal_nan=True), (name, key)
+            else:
+                assert values == b.tables[name][key], (name, key)
+    assert [f.file for f in a.figures] == [f.file for f in b.figures]
+    assert all(np.array_equal(x.image, y.image) for x, y in zip(a.figures, b.figures))
+
+
+def test_the_flicker_in_parts_is_the_flicker_of_the_run():
+    program = stochtex.Shadertoy(VALUE_NOISE, width=48, height=48)
+    options = dict(size=48, frames=6, time_step=0.25)
+    whole = stochtex.studies.frame_analysis(program, ["flicker"], **options)
+    parts = [stochtex.studies.flicker_pairs(program, first, count, **options) for first, count in ((0, 2), (2, 3))]
+    assert_same_report(stochtex.studies.flicker_from_pairs(program, parts, **options), whole)
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.flicker_pairs(program, 4, 2, **options)
+    assert caught.value.parameter == "count"
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.flicker_from_pairs(program, parts[1:], **options)
+    assert caught.value.parameter == "parts"
+
+
+def test_figure11_figures7to9_and_contrast_equal_the_cli_s(tmp_path, cli):
+    cli("reproduce", "figure11", "--size", "32", "--reference-samples", "8", "-o", str(tmp_path / "f11"))
+    assert_report_is_cli_s(stochtex.studies.figure11(size=32, reference_samples=8), tmp_path / "f11")
+    cli("contrast", "-o", str(tmp_path / "contrast"), "--size", "64", "--time", "0.06")
+    zoom = stochtex.ZoomTexture(layers=16, time=0.06)
+    assert_report_is_cli_s(stochtex.studies.contrast(zoom, size=64), tmp_path / "contrast")
+    cli("reproduce", "figures7-9", "--size", "64", "-o", str(tmp_path / "f79"))
+    sheets = stochtex.studies.figures7to9(size=64)
+    assert [f.file for f in sheets.figures][:3] == ["figure7.png", "figure8.png", "figure9.png"]
+    for figure in sheets.figures[:3]:
+        written = stochtex.read_image(str(tmp_path / "f79" / figure.file))
+        assert written.shape == figure.image.shape
+        assert np.abs(written - np.clip(figure.image, 0, 1)).max() <= 0.5 / 255 + 1e-6, figure.file

@@ -177,6 +177,9 @@ case_correlation() {
 case_contrast() {
   expect_ok "contrast" "$out/contrast/figure2_6.png" -- "$bin" contrast -o "$out/contrast" --size 64 --layers 8
   grep -q "^sigmoid,0," "$out/contrast/contrast.csv" || fail "contrast.csv: the sigmoid should clamp 0% of pixels"
+  # --time is the zoom's t: another time (not a multiple of the layers' period H/n) is another texture.
+  expect_ok "contrast at a time" "$out/contrast_t/contrast.csv" -- "$bin" contrast -o "$out/contrast_t" --size 64 --layers 8 --time 0.06
+  cmp -s "$out/contrast/contrast.csv" "$out/contrast_t/contrast.csv" && fail "contrast --time 0.06 measured the texture at t = 0"
 }
 
 # Spectra and optical flow of the three kinds of source (issue 14 items 1, 3).

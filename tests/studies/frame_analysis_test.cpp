@@ -9,6 +9,7 @@
 #include "stochtex/core/error.h"
 #include "stochtex/studies/flow_study.h"
 #include "stochtex/studies/spectrum_study.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -54,6 +55,39 @@ TEST(FrameAnalysis, RunsEachStudyAsItsCommandDoes) {
     f.method = FlowMethod::Dis;
     f.frameTransfer = o.frameTransfer;
     EXPECT_EQ(r.tables[2].second.csv(), flowStudy(source, f).summary.csv());
+}
+
+// The flicker in parts of pairs, each rendering its own frames, joined: the
+// very section of one pass (tables, the worst pair's map), whatever the split.
+TEST(FrameAnalysis, FlickerInPartsIsTheFlickerOfTheRun) {
+    ZoomParams p;
+    p.layers = 4;
+    p.offsets = ZoomOffsets::Hashed;
+    const ZoomSource source(p, ZoomBase{64, 5, {}});
+    FrameAnalysisOptions o;
+    o.analyses = {FrameAnalysis::Flicker};
+    o.region = SourceRegion::centred(48, 40);
+    o.timeStep = 0.2;
+    o.frames = 6;
+    o.sourceName = "zoom";
+    const FrameAnalysisResult whole = frameAnalysis(source, o);
+    const std::vector<FlickerPairs> parts{flickerPairs(source, o, 0, 2), flickerPairs(source, o, 2, 1),
+                                          flickerPairs(source, o, 3, 2)};
+    const FrameAnalysisResult joined = flickerFromPairs(o, parts);
+    ASSERT_EQ(joined.tables.size(), whole.tables.size());
+    for (size_t t = 0; t < whole.tables.size(); ++t) {
+        EXPECT_EQ(joined.tables[t].first, whole.tables[t].first);
+        EXPECT_EQ(joined.tables[t].second.csv(), whole.tables[t].second.csv());
+    }
+    ASSERT_EQ(joined.figures.size(), whole.figures.size());
+    for (size_t f = 0; f < whole.figures.size(); ++f)
+        EXPECT_EQ(joined.figures[f].image.data(), whole.figures[f].image.data()) << whole.figures[f].file;
+    EXPECT_EQ(reportPage(joined.report), reportPage(whole.report));
+    // Pairs outside the run, or parts with a gap, are refused by name.
+    EXPECT_EQ(test::inputErrorOf([&] { flickerPairs(source, o, 5, 1); }).parameter(), "first");
+    EXPECT_EQ(test::inputErrorOf([&] { flickerPairs(source, o, 3, 3); }).parameter(), "count");
+    const std::vector<FlickerPairs> gap{parts[0], parts[2]};
+    EXPECT_EQ(test::inputErrorOf([&] { flickerFromPairs(o, gap); }).parameter(), "parts");
 }
 
 TEST(FrameAnalysis, RefusesNothingToDoRepeatsAndTheStudiesOwnLimits) {

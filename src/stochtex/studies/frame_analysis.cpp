@@ -63,8 +63,9 @@ struct Section {
     std::vector<Figure> figures;
 };
 
-// Frame k → k + 1 of the run, each pair's flicker, the worst pair's map.
-Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& o, const Progress& progress) {
+// The flicker section from the pairs' measures (every pair of the run, in
+// order) and the worst pair's map.
+Section flickerSection(const FrameAnalysisOptions& o, std::span<const FlickerPairs> parts) {
     Section s{"Flicker: change between frames that the optical flow does not explain", {}, {}};
     Table perPair, summary;
     perPair.columns = {{"pair", "frames", ""},
@@ -72,23 +73,29 @@ Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& 
                        {"contrast", "contrast", "codes"},
                        {"relative", "residual / contrast", ""}};
     std::vector<double> pairs, relative;
-    Image previous = source.render(o.region, o.time, 0), worstMap;
     double worst = -1, sumResidual = 0, sumContrast = 0;
-    int worstPair = 0;
-    for (int k = 1; k < o.frames; ++k) {
-        if (progress) progress(double(k - 1) / (o.frames - 1), "frame " + std::to_string(k + 1));
-        const Image next = source.render(o.region, o.time + k * o.timeStep, 0);
-        Image map;
-        const FlickerMeasure m = flowCompensatedFlicker(previous, next, &map);
-        perPair.add({TableCell(std::to_string(k - 1) + "→" + std::to_string(k)), TableCell::value(m.residual),
-                     TableCell::value(m.contrast), TableCell::value(m.relative)});
-        pairs.push_back(k - 1);
-        relative.push_back(m.relative);
-        sumResidual += m.residual;
-        sumContrast += m.contrast;
-        if (m.residual > worst) worst = m.residual, worstMap = std::move(map), worstPair = k - 1;
-        previous = next;
+    const Image* worstMap = nullptr;
+    int worstPair = 0, next = 0;
+    for (const FlickerPairs& part : parts) {
+        if (part.first != next)
+            throw InputError::parameter("parts", "must cover pairs 0…" + std::to_string(o.frames - 2) + " in order");
+        for (size_t i = 0; i < part.measures.size(); ++i) {
+            const int k = part.first + int(i) + 1;  // pair k − 1 → k
+            const FlickerMeasure& m = part.measures[i];
+            perPair.add({TableCell(std::to_string(k - 1) + "→" + std::to_string(k)), TableCell::value(m.residual),
+                         TableCell::value(m.contrast), TableCell::value(m.relative)});
+            pairs.push_back(k - 1);
+            relative.push_back(m.relative);
+            sumResidual += m.residual;
+            sumContrast += m.contrast;
+            // The first pair of the largest residual, as one pass over the run finds it.
+            if (m.residual > worst) worst = m.residual, worstMap = &part.worstMap, worstPair = k - 1;
+        }
+        next += int(part.measures.size());
     }
+    if (next != o.frames - 1 || !worstMap)
+        throw InputError::parameter(
+            "parts", "cover pairs 0…" + std::to_string(next - 1) + " of the run's " + std::to_string(o.frames - 1));
     const int n = o.frames - 1;
     const double meanContrast = sumContrast / n;
     summary.columns = {{"pairs", "pairs", ""},
@@ -109,7 +116,7 @@ Section flickerSection(const TextureSource& source, const FrameAnalysisOptions& 
                     "explain, relative to the frames' contrast (blur lowers both)."));
     s.figures.push_back(
         {"flicker_map.png",
-         windowMap(worstMap, o.region,
+         windowMap(*worstMap, o.region,
                    "Residual of pair " + std::to_string(worstPair) + "→" + std::to_string(worstPair + 1), 0,
                    std::max(1e-6, 4.0 * worst), HeatPalette::Viridis),
          "Where the worst pair flickers: the per-pixel residual (grey: no flow target inside the frame)."});
@@ -138,6 +145,50 @@ void validateFrameAnalysis(const FrameAnalysisOptions& o, const TextureSource* s
     if (has(o, FrameAnalysis::Coherence)) validateTemporalCoherence(coherenceOptions(o), source);
     if (has(o, FrameAnalysis::Flicker)) validateFlowStudy(flowOptions(o), source);  // the same frames, the same flow
     if (has(o, FrameAnalysis::Statistics)) validateInstanceStatistics(statisticsOptions(o), source);
+}
+
+FlickerPairs flickerPairs(const TextureSource& source, const FrameAnalysisOptions& o, int first, int count,
+                          const Progress& progress) {
+    validateFlowStudy(flowOptions(o), &source);  // the same frames, the same flow
+    if (first < 0 || first >= o.frames - 1)
+        throw InputError::parameter(
+            "first", "must be in [0, " + std::to_string(o.frames - 2) + "], got " + std::to_string(first));
+    if (count < 1 || count > o.frames - 1 - first)
+        throw InputError::parameter("count", "must keep the pairs within the run's " + std::to_string(o.frames - 1) +
+                                                 ", got " + std::to_string(count) + " from pair " +
+                                                 std::to_string(first));
+    FlickerPairs out;
+    out.first = first;
+    double worst = -1;
+    Image previous = source.render(o.region, o.time + first * o.timeStep, 0);
+    for (int k = first + 1; k <= first + count; ++k) {
+        if (progress) progress(double(k - 1 - first) / count, "frame " + std::to_string(k + 1));
+        Image next = source.render(o.region, o.time + k * o.timeStep, 0);
+        Image map;
+        out.measures.push_back(flowCompensatedFlicker(previous, next, &map));
+        if (out.measures.back().residual > worst) worst = out.measures.back().residual, out.worstMap = std::move(map);
+        previous = std::move(next);
+    }
+    return out;
+}
+
+FrameAnalysisResult flickerFromPairs(const FrameAnalysisOptions& options, std::span<const FlickerPairs> parts) {
+    FrameAnalysisOptions o = options;
+    o.analyses = {FrameAnalysis::Flicker};
+    validateFrameAnalysis(o);
+    const Section s = flickerSection(o, parts);
+    FrameAnalysisResult r;
+    r.report.title = "Frame studies: " + o.sourceName;
+    r.tables = s.tables;
+    r.figures = s.figures;
+    ReportSection section;
+    section.heading = s.title;
+    section.figures = s.figures;
+    for (size_t t = 0; t < s.tables.size(); ++t)
+        section.tables.push_back({s.tables[t].first, s.tables[t].second, t == 0});
+    r.report.sections.push_back(std::move(section));
+    r.markdown = s.title + "\n" + s.tables.front().second.markdown() + "\n";
+    return r;
 }
 
 FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalysisOptions& o,
@@ -185,8 +236,9 @@ FrameAnalysisResult frameAnalysis(const TextureSource& source, const FrameAnalys
             }
             case FrameAnalysis::Flicker:
             case FrameAnalysis::Statistics: {
-                const Section s = o.analyses[size_t(k)] == FrameAnalysis::Flicker ? flickerSection(source, o, part)
-                                                                                  : statisticsSection(source, o, part);
+                const bool flicker = o.analyses[size_t(k)] == FrameAnalysis::Flicker;
+                const FlickerPairs pairs = flicker ? flickerPairs(source, o, 0, o.frames - 1, part) : FlickerPairs{};
+                const Section s = flicker ? flickerSection(o, {&pairs, 1}) : statisticsSection(source, o, part);
                 r.tables.insert(r.tables.end(), s.tables.begin(), s.tables.end());
                 add(s.title, s.tables.front().second, s.figures);
                 break;

@@ -413,7 +413,9 @@ ContrastStudyResult zoomContrastStudy(const ZoomParams& params, const ZoomBase& 
                                       const ContrastStudyOptions& options) {
     validateContrastStudy(options);
     const ZoomSource source(params, base);
-    return contrastStudy(source, zoomContrastTargets(source, options.size), options);
+    ContrastStudyOptions o = options;
+    o.time = params.time;  // the zoom's own t (--time), not a second time beside it
+    return contrastStudy(source, zoomContrastTargets(source, o.size), o);
 }
 
 Report contrastReport(const ContrastStudyResult& r, int layers) {

@@ -94,7 +94,7 @@ ContrastStudyResult contrastStudy(const TextureSource& source, const ContrastTar
                                   const ContrastStudyOptions& options);
 // The zoom texture's targets: its first lattice's μ_f, σ_f² and values.
 ContrastTargets zoomContrastTargets(const ZoomSource& source, int size);
-// The contrast study of the zoom texture (params, base).
+// The contrast study of the zoom texture (params, base) at its time params.time.
 ContrastStudyResult zoomContrastStudy(const ZoomParams& params, const ZoomBase& base,
                                       const ContrastStudyOptions& options);
 // Its report (thesis §2.4): contrast.csv and the figures; n: the zoom's layers.
