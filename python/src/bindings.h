@@ -117,6 +117,20 @@ SourceRegion sourceRegion(const SizeArgument& size, const std::optional<std::vec
 // The caller must release the GIL while the library runs.
 Progress pythonProgress(const py::object& callback);
 
+// The keywords of `kwargs` that `members` names (inTable), or the others:
+// for a call whose numbers belong to two option tables.
+template <class Options>
+py::dict keywordsOf(std::span<const OptionMember<Options>> members, const py::dict& kwargs, bool inTable) {
+    py::dict out;
+    for (const auto& [key, value] : kwargs) {
+        bool named = false;
+        for (const OptionMember<Options>& m : members)
+            named = named || keywordOf(m.info.name) == py::str(key).cast<std::string>();
+        if (named == inTable) out[key] = value;
+    }
+    return out;
+}
+
 void bindImages(py::module_& m);
 void bindPatterns(py::module_& m);
 void bindSources(py::module_& m);  // first: TextureSource is the others' base

@@ -189,11 +189,8 @@ void bindSources(py::module_& m) {
                  p.offsetSeed = offsetSeed;
                  ZoomBase base;
                  base.seed = seed;
-                 py::dict zoomNumbers, baseNumbers;
-                 for (const auto& [key, value] : numbers)
-                     (py::str(key).cast<std::string>() == "base_size" ? baseNumbers : zoomNumbers)[key] = value;
-                 setMembers(p, zoomParamsMembers(), zoomNumbers);
-                 setMembers(base, zoomBaseMembers(), baseNumbers);
+                 setMembers(base, zoomBaseMembers(), keywordsOf(zoomBaseMembers(), numbers, true));
+                 setMembers(p, zoomParamsMembers(), keywordsOf(zoomBaseMembers(), numbers, false));
                  if (image) {
                      if (image->ndim() != 2)
                          throw InputError::parameter("image", "must be a gray image: a float array (height, width)");

@@ -16,6 +16,7 @@
 #include "stochtex/studies/estimator_renders.h"
 #include "stochtex/studies/frame_analysis.h"
 #include "stochtex/studies/graph_filtering.h"
+#include "stochtex/studies/marble_study.h"
 #include "stochtex/studies/normal_maps.h"
 #include "stochtex/studies/paper.h"
 #include "stochtex/studies/phasor_figures.h"
@@ -76,7 +77,7 @@ private:
 // A study's report: its numbers set from keywords (the study's option
 // table, the one the CLI's flags come from), then run with the GIL released.
 template <class Options, class Run>
-py::dict studyReport(Options options, std::span<const OptionMember<Options>> members, const py::kwargs& numbers,
+py::dict studyReport(Options options, std::span<const OptionMember<Options>> members, const py::dict& numbers,
                      const py::object& progress, Run&& run) {
     setMembers(options, members, numbers);
     const Progress report = pythonProgress(progress);
@@ -369,6 +370,32 @@ void bindStudies(py::module_& m) {
         "The perception experiment's stimulus set (`stochtex stimuli`): the grid of tile sizes × correlations × "
         "repeats in a seeded order, stimuli.csv, the stimuli and experiment.html (the report's files). Numbers of "
         "its option table as keywords: size, repeats, duration_ms, reset_ms.");
+    m.def(
+        "marble",
+        [](const std::vector<std::string>& scalings, const std::optional<std::array<double, 2>>& point,
+           const std::string& method, uint32_t seed, const py::object& progress, const py::kwargs& numbers) {
+            MarbleStudyOptions o;
+            o.scalings.clear();
+            for (const std::string& name : scalings)
+                o.scalings.push_back(parseEnum(kMarbleScalingNames, name, "scalings"));
+            o.flowMethod = parseEnum(kFlowMethodNames, method, "method");
+            o.marble.seed = seed;
+            if (point) o.pointX = (*point)[0], o.pointY = (*point)[1];
+            setMembers(o.marble, marbleParamsMembers(), keywordsOf(marbleParamsMembers(), numbers, true));
+            return studyReport(o, marbleStudyMembers(), keywordsOf(marbleParamsMembers(), numbers, false), progress,
+                               [](const MarbleStudyOptions& o, const Progress& p) {
+                                   validateMarbleStudy(o);
+                                   return marbleReport(marbleStudy(o, p), false);
+                               });
+        },
+        py::kw_only(), py::arg("scalings") = std::vector<std::string>{"continuous", "blended-corrected"},
+        py::arg("point") = py::none(), py::arg("method") = "dis", py::arg("seed") = MarbleParams{}.seed,
+        py::arg("progress") = py::none(),
+        "The thesis's marble study (`stochtex marble`, §2.7.2–2.8): stretching, correlation, spectra and "
+        "sliding of the marble texture, continuous scaling against the blended fix. point: the correlation's "
+        "reference (x, y) in pixels from the origin (default: where the scaling shears the noise most). Numbers "
+        "of the texture's option table (band_period, level, ...) and the study's (size, correlation_size, "
+        "instances, spectrum_instances, slide_rate, frames, time_step, flow_step) as keywords.");
     m.def(
         "figure11",
         [](const std::vector<int>& footprints, double referenceTolerance, const py::object& progress,

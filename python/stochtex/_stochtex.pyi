@@ -241,6 +241,15 @@ def figure11(
     **kwargs: float,
 ) -> dict: ...
 def figures7to9(*, size: int = 384, progress: Optional[Callable[[float, str], None]] = None) -> dict: ...
+def marble(
+    *,
+    scalings: Sequence[str] = ...,
+    point: Optional[Tuple[float, float]] = None,
+    method: str = "dis",
+    seed: int = 1,
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: float,
+) -> dict: ...
 def stimulus(
     *, size: int = 256, tile: int = 32, correlation: float = 0.5, seed: int = 0, mean: float = 0.5, contrast: float = 1.0
 ) -> npt.NDArray[np.float32]: ...

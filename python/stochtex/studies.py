@@ -36,6 +36,7 @@ __all__ = [
     "instance_chunk_count",
     "instance_report",
     "instance_statistics",
+    "marble",
     "stability",
     "stability_from_frames",
     "stimuli",
@@ -300,6 +301,20 @@ def figures7to9(**options: Any) -> Report:
     """Paper Figures 7–9 (`stochtex reproduce figures7-9`): sheets of four
     presets each, `size` pixels per pattern; progress."""
     return _report(_stochtex.figures7to9(**options))
+
+
+def marble(**options: Any) -> Report:
+    """The thesis's marble study (`stochtex marble`, §2.7.2–2.8):
+    stretching, correlation ("correlation.csv"), spectra and sliding of the
+    marble texture, continuous scaling against the blended fix. Options:
+    scalings, point, method (the flow's), seed, progress, the texture's
+    numbers (band_period, band_angle, distortion, level, level_amplitude,
+    level_period, level_rate) and the study's (size, correlation_size,
+    instances, spectrum_instances, slide_rate, frames, time_step,
+    flow_step)."""
+    if "scalings" in options:
+        options["scalings"] = list(options["scalings"])
+    return _report(_stochtex.marble(**options))
 
 
 def stimulus(**options: Any) -> np.ndarray:

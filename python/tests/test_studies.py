@@ -250,3 +250,16 @@ def test_figure11_figures7to9_and_contrast_equal_the_cli_s(tmp_path, cli):
         written = stochtex.read_image(str(tmp_path / "f79" / figure.file))
         assert written.shape == figure.image.shape
         assert np.abs(written - np.clip(figure.image, 0, 1)).max() <= 0.5 / 255 + 1e-6, figure.file
+
+
+def test_the_marble_study_equals_the_cli_s(tmp_path, cli):
+    cli("marble", "-o", str(tmp_path), "--size", "64", "--correlation-size", "32", "--instances", "16",
+        "--spectrum-instances", "1", "--frames", "3", "--step", "16", "--level", "4")
+    report = stochtex.studies.marble(size=64, correlation_size=32, instances=16, spectrum_instances=1, frames=3,
+                                     flow_step=16, level=4.0)
+    assert sorted(report.tables) == ["correlation.csv", "sliding.csv", "spectra.csv"]
+    for name, table in report.tables.items():
+        assert_table_is_csv(table, tmp_path / name)
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.marble(level=99.0)
+    assert caught.value.parameter == "level"
