@@ -36,6 +36,22 @@ from . import _stochtex, studies
 __all__ = ["bake", "flicker", "instance_statistics", "stability", "table1", "table1_chunks"]
 
 
+def _in_order(client, futures: List[Any], progress: Any, step: Callable[[int], str]):
+    """The futures' results in their order, each released once taken (so the
+    cluster drops it), progress(fraction, step(index)) after each where
+    given; on an error or an interruption the others are cancelled."""
+    try:
+        for index, future in enumerate(futures):
+            result = future.result()
+            future.release()
+            if progress is not None:
+                progress((index + 1) / len(futures), step(index))
+            yield result
+    except BaseException:
+        client.cancel(futures)
+        raise
+
+
 def _input_error(parameter: str, message: str) -> Exception:
     # As the library raises it: the message and the keyword at fault.
     error = _stochtex.InputError(message)
@@ -138,16 +154,7 @@ def flicker(client, make_source: Callable[[], Any], *, chunk: int = 4, progress:
     recipe = cloudpickle.dumps(make_source)
     ranges = [(first, min(chunk, frames - 1 - first)) for first in range(chunk, frames - 1, chunk)]
     futures = [client.submit(_flicker_pairs, recipe, first, count, options, pure=True) for first, count in ranges]
-    parts = [first_part]
-    try:
-        for index, future in enumerate(futures):
-            parts.append(future.result())
-            future.release()
-            if progress is not None:
-                progress((index + 1) / len(futures), f"pairs {ranges[index][0]}… of {frames - 1}")
-    except BaseException:
-        client.cancel(futures)
-        raise
+    parts = [first_part, *_in_order(client, futures, progress, lambda i: f"pairs {ranges[i][0]}… of {frames - 1}")]
     return studies.flicker_from_pairs(source, parts, **options)
 
 
@@ -167,15 +174,9 @@ def instance_statistics(client, make_source: Callable[[], Any], **options: Any):
     recipe = cloudpickle.dumps(make_source)
     count = studies.instance_chunk_count(**options)
     futures = [client.submit(_instance_chunk, recipe, index, options, pure=True) for index in range(count)]
-    try:
-        for index, future in enumerate(futures):  # index order: the merge is the single-process fold
-            total.merge(future.result())
-            future.release()
-            if progress is not None:
-                progress((index + 1) / count, f"chunk {index + 1} of {count}")
-    except BaseException:
-        client.cancel(futures)  # a bad source or Ctrl-C: the other chunks are not wanted
-        raise
+    # Index order: the merge is the single-process fold.
+    for part in _in_order(client, futures, progress, lambda i: f"chunk {i + 1} of {count}"):
+        total.merge(part)
     return total
 
 
@@ -291,14 +292,5 @@ def stability(client, pattern: Any = "marble", *, chunk: int = 4, progress: Any 
     recipe = cloudpickle.dumps((pattern, options))
     ranges = [(first, min(chunk, frames - first)) for first in range(0, frames, chunk)]
     futures = [client.submit(_stability_frames, recipe, first, count, pure=True) for first, count in ranges]
-    parts = []
-    try:
-        for index, future in enumerate(futures):
-            parts.append(future.result())
-            future.release()
-            if progress is not None:
-                progress((index + 1) / len(futures), f"frames {ranges[index][0]}… of {frames}")
-    except BaseException:
-        client.cancel(futures)
-        raise
+    parts = list(_in_order(client, futures, progress, lambda i: f"frames {ranges[i][0]}… of {frames}"))
     return studies.stability_from_frames(parts, spec, **options)

@@ -9,6 +9,7 @@ pytest.importorskip("distributed")
 
 import stochtex
 import stochtex.dask
+from report_util import assert_same_report
 
 OPTIONS = dict(count=30, footprints=[4, 16, 64], seed=5, noise_seed=4, max_samples=64)
 
@@ -51,12 +52,7 @@ def test_the_stability_study_on_two_workers_equals_one_process(client):
     seen = []
     spread = stochtex.dask.stability(client, "marble", chunk=2, progress=lambda f, step: seen.append(f), **options)
     assert seen == [1 / 3, 2 / 3, 1.0]
-    for name, table in single.tables.items():
-        for key, values in table.items():
-            if isinstance(values, np.ndarray):
-                assert np.array_equal(values, spread.tables[name][key], equal_nan=True), (name, key)
-            else:
-                assert values == spread.tables[name][key], (name, key)
+    assert_same_report(spread, single)
     with pytest.raises(stochtex.InputError) as caught:
         stochtex.dask.stability(client, "marble", frames=1)
     assert caught.value.parameter == "frames"
@@ -74,10 +70,4 @@ def test_the_flicker_on_two_workers_equals_one_process(client):
     ):
         single = stochtex.studies.frame_analysis(make(), ["flicker"], **options)
         spread = stochtex.dask.flicker(client, make, chunk=2, **options)
-        for name, table in single.tables.items():
-            for key, values in table.items():
-                if isinstance(values, np.ndarray):
-                    assert np.array_equal(values, spread.tables[name][key], equal_nan=True), (name, key)
-                else:
-                    assert values == spread.tables[name][key], (name, key)
-        assert all(np.array_equal(a.image, b.image) for a, b in zip(single.figures, spread.figures))
+        assert_same_report(spread, single)

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 import stochtex
+from report_util import assert_same_report
 
 SOURCE_DIR = os.environ.get("STOCHTEX_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 VALUE_NOISE = os.path.join(SOURCE_DIR, "data", "shadertoy", "value-noise")
@@ -124,12 +125,7 @@ def test_the_stability_study_in_frame_ranges_is_the_study():
     assert sampler.frame_count == 5
     parts = [sampler.frames(0, 2), sampler.frames(2, 1), sampler.frames(3, 2)]
     joined = stochtex.studies.stability_from_frames(parts, "marble", **STABILITY)
-    for name, table in whole.tables.items():
-        for key, values in table.items():
-            if isinstance(values, np.ndarray):
-                assert np.array_equal(values, joined.tables[name][key], equal_nan=True), (name, key)
-            else:
-                assert values == joined.tables[name][key]
+    assert_same_report(joined, whole)
     with pytest.raises(stochtex.InputError) as caught:
         stochtex.studies.stability_from_frames(parts[:2], "marble", **STABILITY)
     assert caught.value.parameter == "parts"
@@ -202,25 +198,9 @@ def test_a_report_pickles_as_it_is():
 
     report = stochtex.studies.figure10(size=64, comparison_size=32)
     back = pickle.loads(pickle.dumps(report))
-    assert back.title == report.title and list(back.tables) == list(report.tables)
+    assert_same_report(back, report)
     for name, table in report.tables.items():
         assert back.tables[name].units == table.units and back.tables[name].title == table.title
-        for key, values in table.items():
-            assert np.array_equal(back.tables[name][key], values) if isinstance(values, np.ndarray) else (
-                back.tables[name][key] == values)
-    assert all(np.array_equal(a.image, b.image) for a, b in zip(back.figures, report.figures))
-
-
-def assert_same_report(a, b):
-    assert a.title == b.title and list(a.tables) == list(b.tables)
-    for name, table in a.tables.items():
-        for key, values in table.items():
-            if isinstance(values, np.ndarray):
-                assert np.array_equal(values, b.tables[name][key], equal_nan=True), (name, key)
-            else:
-                assert values == b.tables[name][key], (name, key)
-    assert [f.file for f in a.figures] == [f.file for f in b.figures]
-    assert all(np.array_equal(x.image, y.image) for x, y in zip(a.figures, b.figures))
 
 
 def test_the_flicker_in_parts_is_the_flicker_of_the_run():
