@@ -166,7 +166,7 @@ def instance_statistics(client, make_source: Callable[[], Any], **options: Any):
     source on a worker (e.g. functools.partial(stochtex.Shadertoy, path,
     width=128, height=128), or a lambda: Dask's cloudpickle takes those);
     each worker calls it once. Memory: the driver holds the running sums and
-    the chunks not yet merged; a task, one chunk's sums (5 float64 maps of
+    the chunks not yet merged; a task, one chunk's sums (4 float64 maps of
     the window and one width² matrix). progress(fraction, step), where
     given, is called on this side as chunks are merged."""
     progress = options.pop("progress", None)
