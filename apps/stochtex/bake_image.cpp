@@ -1,6 +1,7 @@
-// stochtex bake-image: a large texture of the pattern rendered in bands of
-// rows and streamed into a PNG or an OpenEXR file, so memory stays at one
-// band (a few tens of MB) whatever the image size. The bands are exact sub-views: the image is
+// stochtex bake-image: a large texture of the pattern (up to 65536² pixels)
+// rendered in bands of rows and streamed into a PNG or an OpenEXR file, so
+// memory stays at one band (a few tens of MB) whatever the image size. The
+// bands, and their tiles of 16384 columns, are exact sub-views: the image is
 // the same as one `render` of the whole (same flags).
 #include <chrono>
 #include <cstdio>
@@ -36,7 +37,10 @@ void registerBakeImage(CLI::App& app) {
     addAnisoFlag(*cmd, args->options.aniso);
     addResponseFlags(*cmd, args->response);
     const CLI::Option* bits = addBitsFlag(*cmd, args->bits);
-    cmd->add_option("--band", args->band, "Rows rendered at a time")->check(CLI::Range(1, 4096));
+    cmd->add_option("--band", args->band,
+                    "Rows rendered at a time (fewer for views over 16384 wide: a band holds at most 16384 x 256 "
+                    "pixels)")
+        ->check(CLI::Range(1, 4096));
     addDeviceFlags(*cmd, args->device, "Render the bands with the GLSL implementation", false);
     addThreadsFlag(*cmd, args->threads);
     cmd->callback([args, cmd, bits] {
@@ -50,7 +54,7 @@ void registerBakeImage(CLI::App& app) {
             refuseOption(*cmd, "--filter", "bake-image renders none, paper or smooth");
         const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         Camera whole;
-        whole.view = makeView(spec, args->view, ViewUse::BandedBake);  // memory is one band: 65536 rows
+        whole.view = makeView(spec, args->view, ViewUse::BandedBake);  // memory is one band: 65536 a side
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
         ProgressLine progress("bake-image");
@@ -65,7 +69,7 @@ void registerBakeImage(CLI::App& app) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("wrote %s (%dx%d, %s, filter %s, %s, bands of %d rows, %.1f s)\n", args->output.c_str(), v.width,
                     v.height, spec.name.c_str(), filterLabel(args->options).c_str(), args->device.gpu ? "GPU" : "CPU",
-                    args->band, seconds);
+                    bandRows(v.width, args->band), seconds);
     });
 }
 

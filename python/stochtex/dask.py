@@ -233,7 +233,8 @@ def bake(
     width, height = shape["width"], shape["height"]
     stream = _stochtex.ImageStream(path, width, height, channels=3, bits=bits)
     recipe = cloudpickle.dumps((pattern, seed, renderer_options))
-    bands = [(y0, min(height, y0 + band)) for y0 in range(0, height, band)]
+    rows = _stochtex.band_rows(width, band)  # bake-image's bands: fewer rows for a view over 16384 wide
+    bands = [(y0, min(height, y0 + rows)) for y0 in range(0, height, rows)]
     if pending < 1:
         pending = 2 * max(1, sum(w["nthreads"] for w in client.scheduler_info()["workers"].values()))
     futures: List[Any] = []

@@ -1,6 +1,7 @@
 # Large images in bands of rows: Renderer.bake and stochtex.dask.bake write
 # the same bytes as `stochtex bake-image` (PNG and EXR), also when a worker
-# dies mid-run; ImageStream writes a file only when it is complete.
+# dies mid-run, and wider than one render (tiles of 16384 columns);
+# ImageStream writes a file only when it is complete.
 import os
 
 import numpy as np
@@ -47,6 +48,30 @@ def test_a_band_is_its_rows_of_the_view(marble):
     with pytest.raises(stochtex.InputError) as caught:
         marble.render(rows=(0, 10), camera="plane", **VIEW)
     assert caught.value.parameter == "camera"
+
+
+def test_a_bake_wider_than_a_render_is_its_tiles_side_by_side(tmp_path, cli, client, marble):
+    # 20000 columns: a tile of 16384 and one of 3616, each a render of its
+    # own whose offset is moved right by its first column.
+    wide = dict(size=(20000, 6), scale=3.0, offset=(0.0, 0.0))
+    path = str(tmp_path / "wide.exr")
+    marble.bake(path, band=4, **wide)
+    image = stochtex.read_image(path)
+    assert image.shape == (6, 20000, 3)
+    assert np.array_equal(image[:, :16384], marble.render(size=(16384, 6), scale=3.0, offset=(0.0, 0.0)))
+    assert np.array_equal(image[:, 16384:], marble.render(size=(3616, 6), scale=3.0, offset=(16384 * 3.0, 0.0)))
+    assert np.array_equal(marble.render(rows=(2, 5), **wide), image[2:5])
+    cli("bake-image", "--preset", "marble", "--size", "20000,6", "--scale", "3", "--offset", "0,0", "--filter",
+        "smooth", "--band", "4", "-o", str(tmp_path / "cli.exr"))
+    assert read(tmp_path / "cli.exr") == read(path)
+    stochtex.dask.bake(client, "marble", str(tmp_path / "dask.exr"), band=4, filter="smooth", **wide)
+    assert read(tmp_path / "dask.exr") == read(path)
+    # A band of a view 65536 wide holds 64 rows (16384 × 256 pixels).
+    assert stochtex.band_rows(65536, 256) == 64 and stochtex.band_rows(20000, 4) == 4
+    assert marble.view(size=65536, baked=True)["width"] == 65536
+    with pytest.raises(stochtex.InputError) as caught:
+        marble.view(size=(65537, 8), baked=True)
+    assert caught.value.parameter == "size"
 
 
 def test_an_image_stream_appears_only_when_complete(tmp_path):

@@ -145,16 +145,17 @@ TEST(Camera, ErrorsNameTheParameterAndTheValue) {
     EXPECT_STREQ(e.what(), "size must be at most 67108864 pixels, got 16384x16384");
 }
 
-// A view baked in bands holds one band: up to 65536 rows of a render's width,
-// however many pixels; a band of it is a render again.
+// A view baked in bands holds one band: up to 65536 pixels a side, however
+// many pixels in all, rendered in tiles of at most 16384 columns; a tile of
+// a band is a render again.
 TEST(Camera, ABakedViewIsCappedByItsBandsNotItsPixels) {
-    View tall{16384, 65536, 1.0};
-    EXPECT_NO_THROW(validateView(tall, ViewUse::BandedBake));
-    EXPECT_STREQ(test::inputErrorOf([&] { validateView(tall); }).what(),
-                 "size must be in [1, 16384] per side, got 16384x65536");
-    tall.width = 16385;
-    EXPECT_STREQ(test::inputErrorOf([&] { validateView(tall, ViewUse::BandedBake); }).what(),
-                 "size must be in [1, 16384] wide and [1, 65536] high, got 16385x65536");
+    View big{65536, 65536, 1.0};
+    EXPECT_NO_THROW(validateView(big, ViewUse::BandedBake));
+    EXPECT_STREQ(test::inputErrorOf([&] { validateView(big); }).what(),
+                 "size must be in [1, 16384] per side, got 65536x65536");
+    big.width = 65537;
+    EXPECT_STREQ(test::inputErrorOf([&] { validateView(big, ViewUse::BandedBake); }).what(),
+                 "size must be in [1, 65536] per side, got 65537x65536");
     Camera whole;
     whole.view = View{16384, 65536, 2.0, 3.0, -5.0};
     const Camera band = bandCamera(whole, 4096, 256);
@@ -162,30 +163,58 @@ TEST(Camera, ABakedViewIsCappedByItsBandsNotItsPixels) {
     EXPECT_EQ(band.view.height, 256);
     EXPECT_EQ(band.view.offsetV, -5.0 + 4096 * 2.0);  // rows 4096… of the whole view
     EXPECT_EQ(test::inputErrorOf([&] { bandCamera(whole, 65500, 256); }).parameter(), "rows");
+    const Camera tile = columnCamera(whole, 100, 50);
+    EXPECT_EQ(tile.view.width, 50);
+    EXPECT_EQ(tile.view.offsetU, 3.0 + 100 * 2.0);
+    EXPECT_EQ(test::inputErrorOf([&] { columnCamera(whole, 16380, 5); }).parameter(), "columns");
     whole.kind = Camera::Kind::Plane;
     EXPECT_EQ(test::inputErrorOf([&] { bandCamera(whole, 0, 1); }).parameter(), "camera");
-    // Bands in order, each its rows of the view: a renderer that writes each
-    // pixel's absolute row (from the band's offset) gives 0…H−1 top to bottom.
-    struct RowRenderer : ViewRenderer {
+    EXPECT_EQ(test::inputErrorOf([&] { columnCamera(whole, 0, 1); }).parameter(), "camera");
+    // A band's rows: `band`, fewer where they would hold more than 16384 × 256 pixels.
+    EXPECT_EQ(bandRows(300, 256), 256);
+    EXPECT_EQ(bandRows(16384, 256), 256);
+    EXPECT_EQ(bandRows(65536, 256), 64);
+    EXPECT_EQ(bandRows(65536, 16), 16);
+    EXPECT_EQ(bandRows(40000, 4096), 104);
+    EXPECT_EQ(test::inputErrorOf([&] { bandRows(300, 0); }).parameter(), "band");
+
+    // Bands in order, tiles side by side, each its pixels of the view: a
+    // renderer that writes each pixel's absolute column and row (from its
+    // camera's offset) gives them back in place, and no render is wider
+    // than 16384.
+    struct PixelRenderer : ViewRenderer {
+        mutable int widest = 0;
         Image render(const Camera& c, const Progress&) const override {
-            Image out(c.view.width, c.view.height, 1);
+            widest = std::max(widest, c.view.width);
+            Image out(c.view.width, c.view.height, 3);
             for (int y = 0; y < c.view.height; ++y)
-                for (int x = 0; x < c.view.width; ++x) out.at(x, y) = float(c.view.offsetV / c.view.scale + y);
+                for (int x = 0; x < c.view.width; ++x) {
+                    out.at(x, y, 0) = float(c.view.offsetU / c.view.scale + x);
+                    out.at(x, y, 1) = float(c.view.offsetV / c.view.scale + y);
+                }
             return out;
         }
         int exampleSize() const override { return 64; }
     };
+    for (const int width : {3, 40000}) {
+        Camera view;
+        view.view = View{width, 10, 2.0};
+        PixelRenderer renderer;
+        std::vector<int> heights;
+        int y = 0, wrong = 0;
+        renderInBands(renderer, view, 4, [&](const Image& rows) {
+            heights.push_back(rows.height());
+            ASSERT_EQ(rows.width(), width);
+            for (int r = 0; r < rows.height(); ++r, ++y)
+                for (int x = 0; x < width; ++x) wrong += rows.at(x, r, 0) != float(x) || rows.at(x, r, 1) != float(y);
+        });
+        EXPECT_EQ(heights, (std::vector<int>{4, 4, 2})) << width;
+        EXPECT_EQ(wrong, 0) << width;
+        EXPECT_EQ(renderer.widest, std::min(width, 16384));
+    }
     Camera small;
     small.view = View{3, 10, 2.0};
-    std::vector<float> rows;
-    std::vector<int> heights;
-    renderInBands(RowRenderer{}, small, 4, [&](const Image& band) {
-        heights.push_back(band.height());
-        for (int y = 0; y < band.height(); ++y) rows.push_back(band.at(2, y));
-    });
-    EXPECT_EQ(heights, (std::vector<int>{4, 4, 2}));
-    for (int y = 0; y < 10; ++y) EXPECT_EQ(rows[size_t(y)], float(y));
-    EXPECT_EQ(test::inputErrorOf([&] { renderInBands(RowRenderer{}, small, 0, [](const Image&) {}); }).parameter(),
+    EXPECT_EQ(test::inputErrorOf([&] { renderInBands(PixelRenderer{}, small, 0, [](const Image&) {}); }).parameter(),
               "band");
 
     // The pattern's own view unless told otherwise.

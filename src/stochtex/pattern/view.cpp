@@ -16,14 +16,10 @@ const ParamInfo& viewScaleParam() {
 
 void validateView(const View& view, ViewUse use) {
     const std::string size = std::to_string(view.width) + "x" + std::to_string(view.height);
-    // A band is a render of the view's width: only the height grows.
-    const int maxHeight = use == ViewUse::BandedBake ? kMaxBakedHeight : kMaxOutputSide;
-    if (view.width < 1 || view.height < 1 || view.width > kMaxOutputSide || view.height > maxHeight)
-        throw InputError::parameter(
-            "size", "must be in [1, " + std::to_string(kMaxOutputSide) + "] " +
-                        (use == ViewUse::BandedBake ? "wide and [1, " + std::to_string(maxHeight) + "] high"
-                                                    : std::string("per side")) +
-                        ", got " + size);
+    // A baked view is rendered a band of tiles at a time: its sides grow to the image files' cap.
+    const int maxSide = use == ViewUse::BandedBake ? kMaxBakedSide : kMaxOutputSide;
+    if (view.width < 1 || view.height < 1 || view.width > maxSide || view.height > maxSide)
+        throw InputError::parameter("size", "must be in [1, " + std::to_string(maxSide) + "] per side, got " + size);
     if (use == ViewUse::Render && (long long)view.width * view.height > kMaxOutputPixels)
         throw InputError::parameter("size",
                                     "must be at most " + std::to_string(kMaxOutputPixels) + " pixels, got " + size);

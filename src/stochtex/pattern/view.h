@@ -13,10 +13,12 @@ namespace stochtex {
 constexpr int kMaxOutputSide = 16384;
 constexpr long long kMaxOutputPixels = 8192LL * 8192LL;
 // A view rendered in bands of rows (bake-image, Renderer.bake, a
-// distributed bake) holds one band at a time: each band is a render (its
-// width within kMaxOutputSide), its height is capped by the image files it
-// is written to (PNG and EXR here, 65536), its pixels not at all.
-constexpr int kMaxBakedHeight = 65536;
+// distributed bake) holds one band at a time, rendered in tiles of at most
+// kMaxOutputSide columns (renderRows): its sides are capped by the image
+// files it is written to (PNG and EXR here, 65536), its pixels not at all,
+// and a band by kMaxBandPixels (bandRows).
+constexpr int kMaxBakedSide = 65536;
+constexpr long long kMaxBandPixels = 16384LL * 256;
 enum class ViewUse { Render, BandedBake };
 // The scales (example texels per output pixel) a view may have. Above 1e6 a
 // pixel covers a 4096² example 244 times over; below 1e-6 a 16384-pixel

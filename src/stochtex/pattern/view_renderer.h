@@ -10,6 +10,7 @@
 #include "stochtex/core/progress.h"
 #include "stochtex/image/image.h"
 #include "stochtex/pattern/camera.h"
+#include "stochtex/pattern/view.h"
 
 namespace stochtex {
 
@@ -32,9 +33,22 @@ public:
 // whole) or rows outside the view.
 Camera bandCamera(const Camera& whole, int y0, int rows);
 
-// The view rendered in bands of `band` rows (bandCamera), top to bottom,
-// each handed to sink as it is done: memory stays one band whatever the
-// view's size.
+// Pixel columns [x0, x0 + columns) of a zoom camera's view (its offset
+// moved right by x0 columns), as bandCamera for rows.
+Camera columnCamera(const Camera& whole, int x0, int columns);
+
+// Rows [y0, y0 + rows) of a zoom view as wide as a baked one
+// (kMaxBakedSide): bandCamera's band, rendered in tiles of at most
+// kMaxOutputSide columns (each a render) joined side by side.
+Image renderRows(const ViewRenderer& renderer, const Camera& whole, int y0, int rows, const Progress& progress = {});
+
+// The rows of a band of a view `width` pixels wide: `band`, fewer where
+// `band` rows would hold more than kMaxBandPixels, at least one.
+int bandRows(int width, int band);
+
+// The view rendered in bands of bandRows(width, band) rows (renderRows),
+// top to bottom, each handed to sink as it is done: memory stays one band
+// whatever the view's size.
 void renderInBands(const ViewRenderer& renderer, const Camera& whole, int band,
                    const std::function<void(const Image& rows)>& sink, const Progress& progress = {});
 
