@@ -41,6 +41,11 @@ inline py::array_t<float> imageArray(Image&& image) {
     return ownedArray<float>(std::move(image.data()), shape);
 }
 
+// An array (height, width) or (height, width, channels), 1 to 4 channels,
+// as an image (copied); InputError naming `parameter` otherwise.
+using Pixels = py::array_t<float, py::array::c_style | py::array::forcecast>;
+Image imageOf(const Pixels& pixels, const std::string& parameter = "pixels");
+
 // The Python keyword of a library parameter: its name in snake case.
 std::string keywordOf(const std::string& parameter);
 
@@ -60,7 +65,8 @@ py::tuple tableTuple(const Table& table);
 
 // A report (a study's value) as {"title", "sections": [{"heading", "html",
 // "tables": [(file, tableTuple)], "figures": [(file, caption, image)],
-// "files": {file: text}}]};
+// "files": {file: text}, "folder"}]} (folder: where the CLI writes the
+// section's files, under the report's folder);
 // stochtex/studies.py makes it a Report.
 py::dict reportDict(Report&& report);
 
@@ -89,6 +95,16 @@ void setMembers(Options& options, std::span<const OptionMember<Options>> members
     checkMembers(options, members);
 }
 
+// The numbers an option table describes as keywords → values: what
+// setMembers takes back (a value's pickled state).
+template <class Options>
+py::dict membersDict(const Options& options, std::span<const OptionMember<Options>> members) {
+    py::dict out;
+    for (const OptionMember<Options>& m : members)
+        std::visit([&](auto field) { out[py::str(keywordOf(m.info.name))] = py::cast(options.*field); }, m.member);
+    return out;
+}
+
 // A texture source Python holds (the zoom texture, a ShaderToy program, a
 // pattern's view): use(f) calls f with the library's TextureSource on the
 // thread that owns it (a GPU source's GL thread), the GIL released.
@@ -109,6 +125,8 @@ public:
 // A window of a source: size N or (width, height), origin (x0, y0) its first
 // pixel in the source's (default: centred on the source's origin).
 using SizeArgument = std::variant<int, std::vector<int>>;
+// Its sides, [N] or [width, height]; InputError naming size for another count.
+std::vector<int> sizeSides(const SizeArgument& size);
 SourceRegion sourceRegion(const SizeArgument& size, const std::optional<std::vector<double>>& origin);
 
 // A Python callable progress(fraction, step) as the library's Progress,

@@ -67,24 +67,23 @@ private:
     int width_, height_, channels_, written_ = 0;
 };
 
-using Pixels = py::array_t<float, py::array::c_style | py::array::forcecast>;
+}  // namespace
 
-// An array (height, width) or (height, width, channels) as an image (copied).
-Image imageOf(const Pixels& pixels) {
+Image imageOf(const Pixels& pixels, const std::string& parameter) {
     if (pixels.ndim() != 2 && pixels.ndim() != 3)
-        throw InputError::parameter("pixels", "must be an array of shape (height, width) or (height, width, channels)");
+        throw InputError::parameter(parameter,
+                                    "must be an array of shape (height, width) or (height, width, channels)");
     const int channels = pixels.ndim() == 3 ? int(pixels.shape(2)) : 1;
     if (channels < 1 || channels > 4)
-        throw InputError::parameter("pixels", "must have 1 to 4 channels, got " + std::to_string(channels));
+        throw InputError::parameter(parameter, "must have 1 to 4 channels, got " + std::to_string(channels));
     if (pixels.shape(0) < 1 || pixels.shape(1) < 1 || pixels.shape(0) > kMaxImageSide ||
         pixels.shape(1) > kMaxImageSide)
-        throw InputError::parameter("pixels", "must be 1 to " + std::to_string(kMaxImageSide) + " pixels on each side");
+        throw InputError::parameter(parameter,
+                                    "must be 1 to " + std::to_string(kMaxImageSide) + " pixels on each side");
     Image image(int(pixels.shape(1)), int(pixels.shape(0)), channels, Image::Uninitialized{});
     std::memcpy(image.data().data(), pixels.data(), image.data().size() * sizeof(float));
     return image;
 }
-
-}  // namespace
 
 void bindImages(py::module_& m) {
     py::class_<ImageStream>(m, "ImageStream",

@@ -84,6 +84,7 @@ py::dict reportDict(Report&& report) {
         py::dict files;
         for (const ReportFile& f : section.files) files[py::str(f.file)] = f.text;
         d["files"] = files;
+        d["folder"] = section.folder;
         sections.append(d);
     }
     py::dict d;

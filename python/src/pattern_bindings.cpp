@@ -83,17 +83,13 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     // The camera of a view: the pattern's size and scale unless given.
-    Camera camera(const std::optional<std::variant<int, std::vector<int>>>& size, const std::optional<double>& scale,
+    Camera camera(const std::optional<SizeArgument>& size, const std::optional<double>& scale,
                   const std::optional<std::vector<double>>& offset, const std::string& kind, double tilt, double fov,
                   ViewUse use = ViewUse::Render) const {
         Camera c;
         c.kind = parseEnum(Camera::kKindNames, kind, "camera");
-        std::vector<int> sides;
-        if (size)
-            sides = std::holds_alternative<int>(*size) ? std::vector<int>{std::get<int>(*size)}
-                                                       : std::get<std::vector<int>>(*size);
-        if (size && sides.empty()) throw InputError::parameter("size", "must be N or (width, height), got 0 numbers");
-        c.view = patternView(spec_, sides, scale, offset.value_or(std::vector<double>{}), use);
+        c.view = patternView(spec_, size ? sizeSides(*size) : std::vector<int>{}, scale,
+                             offset.value_or(std::vector<double>{}), use);
         c.tiltDeg = tilt;
         c.fovDeg = fov;
         if (use == ViewUse::Render) validateCamera(c);
@@ -111,20 +107,20 @@ public:
         return withThreads(threads, [&] { return f(static_cast<const ViewRenderer&>(*renderer_)); });
     }
 
-    py::array_t<float> render(const std::optional<std::variant<int, std::vector<int>>>& size,
-                              const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,
-                              const std::string& kind, double tilt, double fov,
-                              const std::optional<std::array<int, 2>>& rows, int threads) const {
+    py::array_t<float> render(const std::optional<SizeArgument>& size, const std::optional<double>& scale,
+                              const std::optional<std::vector<double>>& offset, const std::string& kind, double tilt,
+                              double fov, const std::optional<std::array<int, 2>>& rows, int threads) const {
         // Rows of a view are a band of a bake: the view may be as high as one.
-        Camera c = camera(size, scale, offset, kind, tilt, fov, rows ? ViewUse::BandedBake : ViewUse::Render);
-        if (rows) c = bandCamera(c, (*rows)[0], (*rows)[1] - (*rows)[0]);
-        return imageArray(use(threads, [&](const ViewRenderer& r) { return r.render(c); }));
+        const Camera c = camera(size, scale, offset, kind, tilt, fov, rows ? ViewUse::BandedBake : ViewUse::Render);
+        return imageArray(use(threads, [&](const ViewRenderer& r) {
+            return rows ? renderRows(r, c, (*rows)[0], (*rows)[1] - (*rows)[0]) : r.render(c);
+        }));
     }
 
     // The view written to a PNG or EXR in bands of rows (bake-image).
-    void bake(const std::string& path, const std::optional<std::variant<int, std::vector<int>>>& size,
-              const std::optional<double>& scale, const std::optional<std::vector<double>>& offset, int band, int bits,
-              int threads, const py::object& progress) const {
+    void bake(const std::string& path, const std::optional<SizeArgument>& size, const std::optional<double>& scale,
+              const std::optional<std::vector<double>>& offset, int band, int bits, int threads,
+              const py::object& progress) const {
         const Camera c = camera(size, scale, offset, "zoom", 60, 60, ViewUse::BandedBake);
         if (band < 1 || band > 4096)
             throw InputError::parameter("band", "must be in [1, 4096] rows, got " + std::to_string(band));
@@ -268,6 +264,9 @@ private:
 void bindPatterns(py::module_& m) {
     py::class_<PatternView, PySource>(m, "PatternView", "A renderer's camera as a TextureSource (Renderer.source).");
     m.def("presets", &presetNames, "The names of the embedded presets, sorted.");
+    m.def("band_rows", &bandRows, py::arg("width"), py::arg("band"),
+          "The rows of a bake's band for a view `width` pixels wide: `band`, fewer where it would hold more than "
+          "16384 × 256 pixels (bake-image's and Renderer.bake's bands).");
 
     m.def(
         "example",
@@ -350,11 +349,12 @@ void bindPatterns(py::module_& m) {
              "The view as a float32 array (height, width, 3): linear-light RGB, row 0 on top. size: N or "
              "(width, height), default the pattern's; scale: example texels per pixel; offset: (u, v) in texels; "
              "camera: zoom or plane (tilt_deg, fov_deg); rows: (y0, y1), only those rows of a zoom view, as "
-             "bake-image renders a band; threads: 0 for every core (the result does not depend on it).")
+             "bake-image renders a band (a view up to 65536 a side, in tiles of 16384 columns); threads: 0 for every "
+             "core (the result does not depend on it).")
         .def(
             "view",
-            [](const Renderer& r, const std::optional<std::variant<int, std::vector<int>>>& size,
-               const std::optional<double>& scale, const std::optional<std::vector<double>>& offset, bool baked) {
+            [](const Renderer& r, const std::optional<SizeArgument>& size, const std::optional<double>& scale,
+               const std::optional<std::vector<double>>& offset, bool baked) {
                 const View v =
                     r.camera(size, scale, offset, "zoom", 60, 60, baked ? ViewUse::BandedBake : ViewUse::Render).view;
                 py::dict d;
@@ -367,12 +367,13 @@ void bindPatterns(py::module_& m) {
             py::kw_only(), py::arg("size") = py::none(), py::arg("scale") = py::none(), py::arg("offset") = py::none(),
             py::arg("baked") = false,
             "The zoom view these keywords give (the pattern's own where not given), checked as a render's, or "
-            "with baked=True as a bake's (65536 rows): {width, height, scale, offset}.")
+            "with baked=True as a bake's (65536 pixels a side): {width, height, scale, offset}.")
         .def("bake", &Renderer::bake, py::arg("path"), py::kw_only(), py::arg("size") = py::none(),
              py::arg("scale") = py::none(), py::arg("offset") = py::none(), py::arg("band") = 256, py::arg("bits") = 8,
              py::arg("threads") = 0, py::arg("progress") = py::none(),
-             "The zoom view written to a PNG (bits 8 or 16) or EXR in bands of `band` rows, memory one band "
-             "whatever the size: the same file as `stochtex bake-image` with the same options.")
+             "The zoom view written to a PNG (bits 8 or 16) or EXR in bands of `band` rows (band_rows: fewer for "
+             "views over 16384 wide), memory one band whatever the size: the same file as `stochtex bake-image` "
+             "with the same options.")
         .def(
             "source",
             [](const Renderer& r, const std::optional<double>& scale, const std::optional<std::vector<double>>& offset,

@@ -16,7 +16,10 @@
 
 #include "bindings.h"
 #include "stochtex/core/error.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/report/report.h"
+#include "stochtex/studies/artifact_report.h"
+#include "stochtex/studies/image_base_study.h"
 #include "stochtex/studies/instance_statistics.h"
 #include "stochtex/studies/zoom_studies.h"
 
@@ -40,14 +43,67 @@ private:
     ZoomSource source_;
 };
 
+// Image textures as bases: a dict {name: pixels or path} or a sequence of
+// paths (each named by its path, as the CLI names its files).
+std::vector<ImageBase> imageBases(const py::object& images) {
+    const auto base = [](const std::string& name, const py::handle& value) {
+        if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) {
+            const std::string path = py::str(py::module_::import("os").attr("fspath")(value));
+            py::gil_scoped_release release;
+            return ImageBase{name, readImage(path)};
+        }
+        return ImageBase{name, imageOf(value.cast<Pixels>(), "images")};
+    };
+    std::vector<ImageBase> out;
+    if (images.is_none()) return out;
+    if (py::isinstance<py::dict>(images)) {
+        for (const auto& [name, value] : images.cast<py::dict>()) out.push_back(base(py::str(name), value));
+        return out;
+    }
+    if (py::isinstance<py::str>(images) || !py::isinstance<py::sequence>(images))
+        throw InputError::parameter("images", "must be a dict {name: pixels or path} or a sequence of paths");
+    for (const py::handle& path : images.cast<py::sequence>()) {
+        if (!py::isinstance<py::str>(path) && !py::hasattr(path, "__fspath__"))
+            throw InputError::parameter("images", "a sequence must hold paths (name arrays in a dict)");
+        out.push_back(base(py::str(py::module_::import("os").attr("fspath")(path)), path));
+    }
+    return out;
+}
+
+// Keywords split between option tables, in order: each table takes the
+// ones it names; one no table names is an InputError listing them all.
+template <class... Options>
+void setSplitMembers(const py::dict& numbers, std::pair<Options*, std::span<const OptionMember<Options>>>... tables) {
+    std::string known;
+    const auto names = [&](const auto& table) {
+        for (const auto& m : table.second) known += (known.empty() ? "" : ", ") + keywordOf(m.info.name);
+    };
+    (names(tables), ...);
+    for (const auto& item : numbers) {
+        const std::string keyword = py::str(item.first);
+        bool named = false;
+        const auto match = [&](const auto& table) {
+            for (const auto& m : table.second) named = named || keywordOf(m.info.name) == keyword;
+        };
+        (match(tables), ...);
+        if (!named) throw InputError::parameter(keyword, "is not an option of this study (its numbers: " + known + ")");
+    }
+    (setMembers(*tables.first, tables.second, keywordsOf(tables.second, numbers, true)), ...);
+}
+
 }  // namespace
 
-SourceRegion sourceRegion(const SizeArgument& size, const std::optional<std::vector<double>>& origin) {
-    const std::vector<int> sides =
+std::vector<int> sizeSides(const SizeArgument& size) {
+    std::vector<int> sides =
         std::holds_alternative<int>(size) ? std::vector<int>{std::get<int>(size)} : std::get<std::vector<int>>(size);
     if (sides.empty() || sides.size() > 2)
         throw InputError::parameter("size",
                                     "must be N or (width, height), got " + std::to_string(sides.size()) + " numbers");
+    return sides;
+}
+
+SourceRegion sourceRegion(const SizeArgument& size, const std::optional<std::vector<double>>& origin) {
+    const std::vector<int> sides = sizeSides(size);
     for (const int side : sides)
         if (side < 1 || side > 16384)
             throw InputError::parameter("size", "must be in [1, 16384] pixels a side, got " + std::to_string(side));
@@ -66,7 +122,7 @@ namespace {
 
 // The window, time and numbers of a statistics run, from Python's keywords.
 InstanceStatisticsOptions instanceOptions(const SizeArgument& size, const std::optional<std::vector<double>>& origin,
-                                          double time, const py::kwargs& numbers) {
+                                          double time, const py::dict& numbers) {
     InstanceStatisticsOptions o;
     o.region = sourceRegion(size, origin);
     o.time = time;
@@ -113,36 +169,26 @@ public:
     }
 
     // (options, count, sums): what pickling keeps.
+    // Pickled as the keywords it was made from (instanceOptions checks them
+    // again) and its sums.
     py::tuple state() const {
         const InstanceStatisticsOptions& o = options_;
-        py::tuple options = py::make_tuple(o.region.width, o.region.height, o.region.x0, o.region.y0, o.time,
-                                           o.instances, o.pointX, o.pointY, o.referenceRow, o.probeRow, o.chunk);
         py::list sums;
         for (const std::vector<double>* s : sums_.sums())
             sums.append(ownedArray<double>(std::vector<double>(*s), {py::ssize_t(s->size())}));
-        return py::make_tuple(options, sums_.count(), sums);
+        return py::make_tuple(py::make_tuple(o.region.width, o.region.height), py::make_tuple(o.region.x0, o.region.y0),
+                              o.time, membersDict(o, instanceStatisticsMembers()), sums_.count(), sums);
     }
     static InstanceStatistics fromState(const py::tuple& state) {
-        if (state.size() != 3) throw InputError("InstanceStatistics: not a pickled state");
-        const auto options = state[0].cast<py::tuple>();
-        if (options.size() != 11) throw InputError("InstanceStatistics: not a pickled state");
-        InstanceStatisticsOptions o;
-        o.region = {options[0].cast<int>(), options[1].cast<int>(), options[2].cast<double>(),
-                    options[3].cast<double>()};
-        o.time = options[4].cast<double>();
-        o.instances = options[5].cast<int>();
-        o.pointX = options[6].cast<int>();
-        o.pointY = options[7].cast<int>();
-        o.referenceRow = options[8].cast<int>();
-        o.probeRow = options[9].cast<int>();
-        o.chunk = options[10].cast<int>();
-        InstanceStatistics out(o);
+        if (state.size() != 6) throw InputError("InstanceStatistics: not a pickled state");
+        InstanceStatistics out(instanceOptions(state[0].cast<std::vector<int>>(), state[1].cast<std::vector<double>>(),
+                                               state[2].cast<double>(), state[3].cast<py::dict>()));
         const auto arrays =
-            state[2].cast<std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>>>();
+            state[5].cast<std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>>>();
         if (arrays.size() != CorrelationAccumulator::kSums) throw InputError("InstanceStatistics: not a pickled state");
         std::array<std::vector<double>, CorrelationAccumulator::kSums> sums;
         for (size_t k = 0; k < sums.size(); ++k) sums[k].assign(arrays[k].data(), arrays[k].data() + arrays[k].size());
-        out.sums_.restore(state[1].cast<int>(), std::move(sums));
+        out.sums_.restore(state[4].cast<int>(), std::move(sums));
         return out;
     }
 
@@ -316,6 +362,63 @@ void bindSources(py::module_& m) {
         "correction of the zoom texture (at its time) against its base's statistics. Numbers of its option table as "
         "keywords: "
         "size.");
+    m.def(
+        "fractalize",
+        [](const py::object& images, int layers, double maxScale, const py::object& progress,
+           const py::kwargs& numbers) {
+            ImageBaseStudyOptions o;
+            o.zoom.layers = layers;
+            o.zoom.maxScale = maxScale;
+            checkMembers(o.zoom, zoomParamsMembers());
+            setMembers(o, imageBaseStudyMembers(), numbers);
+            const std::vector<ImageBase> bases = imageBases(images);
+            validateImageBaseStudy(o, bases);
+            const Progress report = pythonProgress(progress);
+            Report result;
+            {
+                py::gil_scoped_release release;
+                result = imageBaseReport(imageBaseStudy(bases, o, report));
+            }
+            return reportDict(std::move(result));
+        },
+        py::arg("images"), py::kw_only(), py::arg("layers") = 8, py::arg("max_scale") = ZoomParams{}.maxScale,
+        py::arg("progress") = py::none(),
+        "Image textures as the zoom texture's base (`stochtex fractalize`, thesis Figures 2.15–2.17): each "
+        "image's correlation and the zoom texture's over it, without and with hashed offsets. images: a dict "
+        "{name: pixels or path} (pixels as read_image gives them; colour is made gray by 0.21r + 0.72g + 0.07b) "
+        "or a sequence of paths. layers and max_scale: the zoom texture's. Numbers of the study's option table as "
+        "keywords: size, instances, reference_x, reference_y, echo_radius.");
+    m.def(
+        "analyze",
+        [](const ZoomTexture& zoom, const py::object& images, const std::vector<int>& layers,
+           const std::vector<int>& coherenceLayers, const py::object& progress, const py::kwargs& numbers) {
+            ArtifactReportOptions o;
+            o.correlation.zoom = zoom.source().params();
+            o.correlation.base = zoom.source().base();
+            o.correlation.layers = layers;
+            o.coherenceLayers = coherenceLayers;
+            setSplitMembers(numbers, std::pair{&o.correlation, correlationStudyMembers()},
+                            std::pair{&o.contrast, contrastStudyMembers()}, std::pair{&o, artifactReportMembers()});
+            o.imageBases = imageBases(images);
+            o = withDerivedParts(std::move(o));
+            validateArtifactReport(o);
+            const Progress report = pythonProgress(progress);
+            Report result;
+            {
+                py::gil_scoped_release release;
+                result = artifactReport(o, report);
+            }
+            return reportDict(std::move(result));
+        },
+        py::arg("zoom"), py::kw_only(), py::arg("images") = py::none(),
+        py::arg("layers") = CorrelationStudyOptions{}.layers,
+        py::arg("coherence_layers") = ArtifactReportOptions{}.coherenceLayers, py::arg("progress") = py::none(),
+        "The report page on the zoom texture's artifacts (`stochtex analyze`): sliding, contrast and its "
+        "corrections, correlation, spectrum, optical flow, temporal coherence and its curve over the layer counts "
+        "coherence_layers, the image bases (images as fractalize takes them), the marble texture and the "
+        "perception stimuli (the marble's sliding videos are left out: the CLI writes them). The zoom texture "
+        "gives the numbers and the base; layers: the correlation grid's layer counts. Numbers as keywords: "
+        "instances, plot_size (correlation), size (contrast), frame_size, spectrum_instances, coherence_frames.");
     m.def("instance_report", &InstanceStatistics::report, py::arg("statistics"),
           "The summary (instances, mean and its spread, mean variance, the correlation's Corr ≥ ½ area, elongation "
           "and anti-correlation) and maps, as `stochtex shadertoy --analyse statistics` reports them.");

@@ -156,11 +156,11 @@ private:
 
 // A frame study's run of a Python source: its window, its first frame's time
 // and step (the source's where not given), its frames; named as the source.
-FrameAnalysisOptions frameOptions(const PySource& source, const SizeArgument& size,
+FrameAnalysisOptions frameOptions(const PySource& source, std::vector<FrameAnalysis> analyses, const SizeArgument& size,
                                   const std::optional<std::vector<double>>& origin, const std::optional<double>& time,
                                   const std::optional<double>& timeStep, int frames) {
     FrameAnalysisOptions o;
-    o.analyses = {FrameAnalysis::Flicker};
+    o.analyses = std::move(analyses);
     o.region = sourceRegion(size, origin);
     o.time = time.value_or(source.startTime());
     o.timeStep = timeStep.value_or(source.frameStep());
@@ -247,9 +247,9 @@ void bindStudies(py::module_& m) {
            const std::optional<std::vector<double>>& origin, const std::optional<double>& time,
            const std::optional<double>& timeStep, int frames, int instances, int pointX, int pointY,
            const py::object& progress) {
-            FrameAnalysisOptions o = frameOptions(source, size, origin, time, timeStep, frames);
-            o.analyses.clear();
-            for (const std::string& a : analyses) o.analyses.push_back(parseEnum(kFrameAnalysisNames, a, "analyses"));
+            std::vector<FrameAnalysis> parsed;
+            for (const std::string& a : analyses) parsed.push_back(parseEnum(kFrameAnalysisNames, a, "analyses"));
+            FrameAnalysisOptions o = frameOptions(source, std::move(parsed), size, origin, time, timeStep, frames);
             o.instances = instances;
             o.pointX = pointX;
             o.pointY = pointY;
@@ -273,7 +273,8 @@ void bindStudies(py::module_& m) {
         [](const PySource& source, int first, int count, const SizeArgument& size,
            const std::optional<std::vector<double>>& origin, const std::optional<double>& time,
            const std::optional<double>& timeStep, int frames) {
-            const FrameAnalysisOptions o = frameOptions(source, size, origin, time, timeStep, frames);
+            const FrameAnalysisOptions o =
+                frameOptions(source, {FrameAnalysis::Flicker}, size, origin, time, timeStep, frames);
             FlickerPairs f;
             source.use([&](const TextureSource& s) { f = flickerPairs(s, o, first, count); });
             std::vector<double> residual, contrast, relative;
@@ -297,7 +298,8 @@ void bindStudies(py::module_& m) {
         [](const PySource& source, const std::vector<py::tuple>& parts, const SizeArgument& size,
            const std::optional<std::vector<double>>& origin, const std::optional<double>& time,
            const std::optional<double>& timeStep, int frames) {
-            const FrameAnalysisOptions o = frameOptions(source, size, origin, time, timeStep, frames);
+            const FrameAnalysisOptions o =
+                frameOptions(source, {FrameAnalysis::Flicker}, size, origin, time, timeStep, frames);
             std::vector<FlickerPairs> pairs;
             for (const py::tuple& t : parts) {
                 if (t.size() != 5) throw InputError::parameter("parts", "must hold flicker_pairs' tuples");

@@ -1,6 +1,7 @@
 # Type stubs of the C++ extension (python/src/*.cpp); python/tests/test_stubs.py
 # holds them to the module's names and signatures.
-from typing import Callable, ClassVar, List, Optional, Sequence, Tuple, Union
+import os
+from typing import Callable, ClassVar, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -11,6 +12,7 @@ class InputError(ValueError):
 class GpuUnavailable(RuntimeError): ...
 
 def presets() -> List[str]: ...
+def band_rows(width: int, band: int) -> int: ...
 def example(
     text: str, source: str = "<json>", base_dir: str = ".", seed: Optional[int] = None
 ) -> npt.NDArray[np.float32]: ...
@@ -233,6 +235,25 @@ def correlation(
     **kwargs: int,
 ) -> dict: ...
 def contrast(zoom: ZoomTexture, **kwargs: int) -> dict: ...
+def fractalize(
+    images: Union[Mapping[str, Union[npt.ArrayLike, str, "os.PathLike[str]"]], Sequence[Union[str, "os.PathLike[str]"]]],
+    *,
+    layers: int = 8,
+    max_scale: float = 2.0,
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: int,
+) -> dict: ...
+def analyze(
+    zoom: ZoomTexture,
+    *,
+    images: Optional[
+        Union[Mapping[str, Union[npt.ArrayLike, str, "os.PathLike[str]"]], Sequence[Union[str, "os.PathLike[str]"]]]
+    ] = None,
+    layers: Sequence[int] = ...,
+    coherence_layers: Sequence[int] = ...,
+    progress: Optional[Callable[[float, str], None]] = None,
+    **kwargs: int,
+) -> dict: ...
 def figure11(
     *,
     footprints: Sequence[int] = ...,

@@ -21,6 +21,7 @@ __all__ = [
     "Table1Sampler",
     "TABLE1_FOOTPRINTS",
     "estimator_renders",
+    "analyze",
     "contrast",
     "correlation",
     "figure4",
@@ -31,6 +32,7 @@ __all__ = [
     "figures7to9",
     "flicker_from_pairs",
     "flicker_pairs",
+    "fractalize",
     "frame_analysis",
     "instance_chunk",
     "instance_chunk_count",
@@ -121,6 +123,11 @@ class Section(NamedTuple):
     tables: Dict[str, Table]  # by the CSV file the report writes (else the table's title)
     figures: List[Figure]
     files: Dict[str, str]  # other text files the report writes (a page, a Markdown table), by name
+    folder: str = ""  # where the CLI writes the section's files, under its output folder ("" : there)
+
+    def path(self, name: str) -> str:
+        """A file of the section by its path under the report's folder."""
+        return f"{self.folder}/{name}" if self.folder else name
 
 
 class Report(NamedTuple):
@@ -129,17 +136,20 @@ class Report(NamedTuple):
     title: str
     sections: List[Section]
 
+    # The sections' tables, figures and files by their paths under the
+    # report's folder, as the CLI writes them (a section's folder first:
+    # "marble/correlation.csv" beside "correlation/correlation.csv").
     @property
     def tables(self) -> Dict[str, Table]:
-        return {name: t for s in self.sections for name, t in s.tables.items()}
+        return {s.path(name): t for s in self.sections for name, t in s.tables.items()}
 
     @property
     def figures(self) -> List[Figure]:
-        return [f for s in self.sections for f in s.figures]
+        return [f._replace(file=s.path(f.file)) for s in self.sections for f in s.figures]
 
     @property
     def files(self) -> Dict[str, str]:
-        return {name: text for s in self.sections for name, text in s.files.items()}
+        return {s.path(name): text for s in self.sections for name, text in s.files.items()}
 
     def _repr_html_(self) -> str:
         """The report as a notebook shows it: each section's heading, text,
@@ -162,7 +172,8 @@ def _report(raw: Dict[str, Any]) -> Report:
         for file, t in s["tables"]:
             table = Table(*t)
             tables[file or table.title] = table
-        sections.append(Section(s["heading"], s["html"], tables, [Figure(*f) for f in s["figures"]], dict(s["files"])))
+        figures = [Figure(*f) for f in s["figures"]]
+        sections.append(Section(s["heading"], s["html"], tables, figures, dict(s["files"]), s["folder"]))
     return Report(raw["title"], sections)
 
 
@@ -285,6 +296,36 @@ def contrast(zoom: Any = None, **numbers: Any) -> Report:
     from . import ZoomTexture
 
     return _report(_stochtex.contrast(zoom if zoom is not None else ZoomTexture(layers=16), **numbers))
+
+
+def fractalize(images: Any, **options: Any) -> Report:
+    """Image textures as the zoom texture's base (`stochtex fractalize`,
+    thesis Figures 2.15–2.17): each image's correlation around a point and
+    the zoom texture's over it, without and with hashed offsets
+    ("fractalize.csv", figure2_15.png, figure2_17.png). images: a dict
+    {name: pixels or path} (pixels as read_image gives them) or a sequence
+    of paths. Options: layers (8), max_scale, size, instances, reference_x,
+    reference_y, echo_radius, progress."""
+    return _report(_stochtex.fractalize(images if isinstance(images, dict) else list(images), **options))
+
+
+def analyze(zoom: Any = None, **options: Any) -> Report:
+    """The report page on the zoom texture's artifacts (`stochtex analyze`):
+    sliding, contrast and its corrections, correlation, spectrum, optical
+    flow, temporal coherence over the layer counts, image bases, the marble
+    texture and the perception stimuli, one section each (the marble's
+    sliding videos are the CLI's). zoom: a ZoomTexture giving the numbers
+    and the base (default: ZoomTexture()). Options: images (as fractalize
+    takes them), layers, coherence_layers, instances, plot_size, size,
+    frame_size, spectrum_instances, coherence_frames, progress."""
+    from . import ZoomTexture
+
+    for key in ("layers", "coherence_layers"):
+        if key in options:
+            options[key] = list(options[key])
+    if options.get("images") is not None and not isinstance(options["images"], dict):
+        options["images"] = list(options["images"])
+    return _report(_stochtex.analyze(zoom if zoom is not None else ZoomTexture(), **options))
 
 
 def figure11(**options: Any) -> Report:

@@ -243,3 +243,42 @@ def test_the_marble_study_equals_the_cli_s(tmp_path, cli):
     with pytest.raises(stochtex.InputError) as caught:
         stochtex.studies.marble(level=99.0)
     assert caught.value.parameter == "level"
+
+
+def test_fractalize_equals_the_cli_s_from_paths_or_arrays(tmp_path, cli):
+    stone, weld = (os.path.join(SOURCE_DIR, "data", "textures", n + ".png") for n in ("stone", "weld"))
+    cli("fractalize", stone, weld, "-o", str(tmp_path), "--size", "32", "--instances", "16", "--layers", "6")
+    report = stochtex.studies.fractalize([stone, weld], size=32, instances=16, layers=6)
+    assert_report_is_cli_s(report, tmp_path)
+    assert report.tables["fractalize.csv"]["image"] == [stone, weld]
+    # The same images as arrays (as read_image gives them) under the same names: the same report.
+    arrays = stochtex.studies.fractalize({stone: stochtex.read_image(stone), weld: weld}, size=32, instances=16,
+                                         layers=6)
+    assert_same_report(arrays, report)
+    for bad, parameter in (({"x": np.zeros((4, 4, 5), np.float32)}, "images"), ("stone.png", "images")):
+        with pytest.raises(stochtex.InputError) as caught:
+            stochtex.studies.fractalize(bad) if isinstance(bad, dict) else stochtex._stochtex.fractalize(bad)
+        assert caught.value.parameter == parameter
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.fractalize([stone], instances=1)
+    assert str(caught.value) == "instances must be in [2, 100000], got 1"
+
+
+def test_analyze_equals_the_cli_s_page(tmp_path, cli):
+    flags = ["--instances", "8", "--plot-size", "16", "--layers-list", "4", "--size", "64", "--frame-size", "32",
+             "--coherence-layers", "3,8"]
+    cli("analyze", "-o", str(tmp_path), *flags)
+    report = stochtex.studies.analyze(instances=8, plot_size=16, layers=[4], size=64, frame_size=32,
+                                      coherence_layers=[3, 8])
+    written = sorted(os.path.relpath(os.path.join(d, f), tmp_path) for d, _, files in os.walk(tmp_path)
+                     for f in files if f.endswith(".csv"))
+    assert sorted(report.tables) == written
+    for name, table in report.tables.items():
+        assert_table_is_csv(table, tmp_path / name)
+    figures = [f.file for f in report.figures]  # by their paths in the CLI's folder, as the tables
+    assert "correlation/figure2_10.png" in figures and any(f.startswith("marble/") for f in figures)
+    assert all(os.path.exists(tmp_path / f) for f in figures)
+    with pytest.raises(stochtex.InputError) as caught:
+        stochtex.studies.analyze(frame_sizes=32)
+    assert caught.value.parameter == "frame_sizes"
+    assert "frame_size" in str(caught.value) and "plot_size" in str(caught.value)
