@@ -54,8 +54,7 @@ FilterOptions filterOptions(const PatternSpec& spec, const std::string& filter, 
     o.response.covariance = covariance;
     o.pack8 = pack8;
     o.referenceMaxSamples = referenceMaxSamples;
-    static const EnumNames<CpuKernel> kernels{{"simd", CpuKernel::Simd}, {"scalar", CpuKernel::Scalar}};
-    o.cpuKernel = parseEnum(kernels, kernel, "kernel");
+    o.cpuKernel = parseEnum(kCpuKernelNames, kernel, "kernel");
     validateFilterOptions(o);
     return o;
 }

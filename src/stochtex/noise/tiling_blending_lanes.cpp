@@ -113,14 +113,16 @@ HWY_INLINE void GatherPairs(DF df, const float* base, VI index, VF& left, VF& ri
 #endif
 }
 
-// kernel::tableTap in lanes on a table of n ≥ 2 entries: index i, weight t.
-HWY_INLINE void TableTap(DF df, int n, VF x, VI& i, VF& t) {
+// kernel::tableTap in lanes on tables of n ≥ 2 entries (n per lane): index
+// i, weight t.
+HWY_INLINE void TableTap(DF df, VI n, VF x, VI& i, VF& t) {
     const DI di;
-    const auto fx =
-        hn::Mul(hn::IfThenElseZero(hn::Gt(x, hn::Zero(df)), hn::Min(x, hn::Set(df, 1.0f))), hn::Set(df, float(n - 1)));
-    i = hn::Min(hn::ConvertTo(di, fx), hn::Set(di, n - 2));
+    const auto fx = hn::Mul(hn::IfThenElseZero(hn::Gt(x, hn::Zero(df)), hn::Min(x, hn::Set(df, 1.0f))),
+                            hn::ConvertTo(df, hn::Sub(n, hn::Set(di, 1))));
+    i = hn::Min(hn::ConvertTo(di, fx), hn::Sub(n, hn::Set(di, 2)));
     t = hn::Sub(fx, hn::ConvertTo(df, i));
 }
+HWY_INLINE void TableTap(DF df, int n, VF x, VI& i, VF& t) { TableTap(df, hn::Set(DI(), n), x, i, t); }
 
 // kernel::tableTap + blendEntries on a table of n ≥ 2 entries (T⁻¹'s LUT).
 HWY_INLINE VF TableLookup(DF df, const float* table, int n, VF x) {
@@ -352,27 +354,22 @@ size_t TableTaps2Impl(const float* x, const float* y, size_t stride, int width, 
     return k;
 }
 
-// kernel::tableTap with a table size per lane (n ≥ 2).
-HWY_INLINE void TableTapPerLane(DF df, VI n, VF x, VI& i, VF& t) {
+// ⌊log2 x⌋ of positive finite floats x, from the exponent field.
+HWY_INLINE VI FloorLog2(VF x) {
     const DI di;
-    const auto oneI = hn::Set(di, 1);
-    const auto fx = hn::Mul(hn::IfThenElseZero(hn::Gt(x, hn::Zero(df)), hn::Min(x, hn::Set(df, 1.0f))),
-                            hn::ConvertTo(df, hn::Sub(n, oneI)));
-    i = hn::Min(hn::ConvertTo(di, fx), hn::Sub(n, hn::Set(di, 2)));
-    t = hn::Sub(fx, hn::ConvertTo(df, i));
+    const DU du;
+    return hn::Sub(hn::BitCast(di, hn::ShiftRight<23>(hn::BitCast(du, x))), hn::Set(di, 127));
 }
 
 // kernel::sigmaLevelCoordinate.
 HWY_INLINE VF SigmaLevelCoordinate(DF df, VF sigma, bool paper, float top) {
-    const DI di;
     const DU du;
     const auto s256 = hn::Mul(sigma, hn::Set(df, 256.0f));
     const auto positive = hn::Gt(s256, hn::Zero(df));  // false for NaN, as the kernel's !(s256 > 0)
     if (paper) {
-        // round(log2 x) = ⌊log2(√2·x)⌋ from the float's exponent field.
+        // round(log2 x) = ⌊log2(√2·x)⌋.
         const auto y = hn::Mul(s256, hn::Set(df, 1.41421356f));
-        const auto exponent = hn::Sub(hn::BitCast(di, hn::ShiftRight<23>(hn::BitCast(du, y))), hn::Set(di, 127));
-        const auto c = hn::Min(hn::ConvertTo(df, exponent), hn::Set(df, top));
+        const auto c = hn::Min(hn::ConvertTo(df, FloorLog2(y)), hn::Set(df, top));
         return hn::IfThenElseZero(hn::And(positive, hn::Ge(y, hn::Set(df, 2.0f))), c);
     }
     // 1 + log2(s256) as 1 + e + log2(m), s256 = m·2^e with m ∈ [1, 2) split
@@ -382,7 +379,7 @@ HWY_INLINE VF SigmaLevelCoordinate(DF df, VF sigma, bool paper, float top) {
     // +inf reads the top (e = 128).
     const auto one = hn::Set(df, 1.0f);
     const auto bits = hn::BitCast(du, s256);
-    const auto e = hn::Sub(hn::BitCast(di, hn::ShiftRight<23>(bits)), hn::Set(di, 127));
+    const auto e = FloorLog2(s256);
     const auto m = hn::BitCast(df, hn::Or(hn::And(bits, hn::Set(du, 0x007fffffu)), hn::Set(du, 0x3f800000u)));
     const auto logarithmic = hn::Add(hn::Add(one, hn::ConvertTo(df, e)), hn::Log2(df, m));
     const auto c = hn::IfThenElse(hn::Le(s256, one), s256, logarithmic);
@@ -414,7 +411,7 @@ size_t LayerTapsImpl(const float* mx, const float* my, const float* sx, const fl
         const auto tap = [&](const int32_t* sizes, VI level, VF value, int32_t* entry, float* weight) {
             VI i;
             VF t;
-            TableTapPerLane(df, hn::GatherIndex(di, sizes, level), value, i, t);
+            TableTap(df, hn::GatherIndex(di, sizes, level), value, i, t);
             hn::StoreU(i, di, entry + k);
             hn::StoreU(t, df, weight + k);
         };

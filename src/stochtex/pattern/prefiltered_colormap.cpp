@@ -396,8 +396,9 @@ size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const fl
     constexpr size_t kAhead = 8;    // pixels between a lookup's prefetch and its blend
     constexpr size_t kChunk = 256;  // pixels whose layers and taps the lanes find at once
     const bool lanes = !beta_[0] && !beta_[1];
-    LayerTapsLanes found;
-    if (lanes) found.resize(kChunk);
+    // The lanes' output, kept per thread: sampleRow runs once per row.
+    thread_local LayerTapsLanes found;
+    if (lanes && found.fx.size() < kChunk) found.resize(kChunk);
     size_t chunkStart = 0, chunkDone = 0;  // pixels [chunkStart, chunkStart + chunkDone) are in `found`
     size_t inLanes = 0;
     // Pixel k's lookup (k in order): from the lanes, or find where they did not reach.

@@ -6,6 +6,7 @@
 
 #include <array>
 
+#include "stochtex/core/enum_names.h"
 #include "stochtex/kernel/camera.h"
 
 namespace stochtex {
@@ -52,6 +53,7 @@ inline std::array<double, 2> pixelUv(const View& view, double invW, int px, int 
 // scalar kernel — the reference they are tested against, one pixel at a
 // time, which the tests and benchmarks compare them with.
 enum class CpuKernel { Simd, Scalar };
+inline const EnumNames<CpuKernel> kCpuKernelNames{{"simd", CpuKernel::Simd}, {"scalar", CpuKernel::Scalar}};
 
 // Checks a view against the output caps; InputError::parameter naming size,
 // scale or offset otherwise.
