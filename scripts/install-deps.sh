@@ -10,8 +10,8 @@ packages=(
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-video-dev libopencv-videoio-dev
   libtbb-dev nlohmann-json3-dev libcli11-dev libglm-dev libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev libhwy-dev
-  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri glslang-tools
-  libglfw3-dev libimgui-dev xvfb xauth libpng-dev libwebp-dev libgif-dev
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri glslang-tools spirv-tools
+  libglfw3-dev libimgui-dev xvfb xauth libpng-dev libwebp-dev libgif-dev libtinyobjloader-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libplplot-dev plplot-driver-cairo libpango1.0-dev libcairo2-dev fonts-dejavu-core libjs-chart.js
   clang-14 libclang-rt-14-dev clang-format

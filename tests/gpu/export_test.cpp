@@ -7,10 +7,12 @@
 #include <bit>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -84,8 +86,13 @@ std::vector<std::uint8_t> parameterBlock(const std::string& readme, const nlohma
     return block;
 }
 
+// What a fragment renders (uPixelScale: texels per pixel): the pattern at
+// its pixel centre, the footprint from the fragment's derivatives.
+constexpr const char* kSampleAtPixel = "stochtex_sample(gl_FragCoord.xy * uPixelScale * uPattern.invExampleSize)";
+
 // An engine's view of the export: it knows GL and the README, nothing else.
-Image renderFromExport(const fs::path& dir, int width, int height, double scale) {
+Image renderFromExport(const fs::path& dir, int width, int height, double scale,
+                       const std::string& sample = kSampleAtPixel) {
     std::ifstream mf(dir / "manifest.json");
     const nlohmann::json m = nlohmann::json::parse(mf);
     const std::string include = readText(dir / "stochtex.glsl");
@@ -94,8 +101,8 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale)
     const GLuint fs_ =
         compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + include +
                                         "uniform float uPixelScale;\nout vec4 colour;\n"
-                                        "void main() { colour = stochtex_sample(gl_FragCoord.xy * uPixelScale * "
-                                        "uPattern.invExampleSize); }\n");
+                                        "void main() { colour = " +
+                                        sample + "; }\n");
     const GLuint prog = glCreateProgram();
     glAttachShader(prog, vs);
     glAttachShader(prog, fs_);
@@ -368,6 +375,79 @@ TEST(Export, LeanProgramIncludeLinksLitByTheEnginesLight) {
     glDeleteProgram(prog);
     glDeleteShader(vs);
     glDeleteShader(fs_);
+}
+
+// The include's explicit-derivative entry point: given the footprint a
+// fragment's derivatives give (uv = pixel · s, so ddx = (s, 0), ddy =
+// (0, s)) it renders what stochtex_sample renders; given a footprint 8
+// times as wide it renders another (blurrier) image, so the footprint is
+// the arguments', not the fragment's.
+TEST(Export, SampleGradTakesTheFootprintFromItsArguments) {
+    auto ctx = GlContext::headless();
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    const fs::path dir = test::scratchPath("stochtex_export_grad");
+    fs::remove_all(dir);
+    exportPatternSpec(loadPreset("camouflage"), o, dir.string(), {});
+    const std::string s = "(uPixelScale * uPattern.invExampleSize)";
+    const auto grad = [&](const std::string& k) {
+        return "stochtex_sample_grad(gl_FragCoord.xy * " + s + ", vec2(" + k + " * " + s + ", 0.0), vec2(0.0, " + k +
+               " * " + s + "))";
+    };
+    const Image fragment = renderFromExport(dir, 64, 48, 3.0);
+    const Image given = renderFromExport(dir, 64, 48, 3.0, grad("1.0"));
+    const Image wider = renderFromExport(dir, 64, 48, 3.0, grad("8.0"));
+    double same = 0, changed = 0;
+    for (size_t i = 0; i < fragment.data().size(); ++i) {
+        same = std::max(same, double(std::abs(fragment.data()[i] - given.data()[i])));
+        changed += std::abs(fragment.data()[i] - wider.data()[i]) / double(fragment.data().size());
+    }
+    std::printf("[ info ] stochtex_sample_grad: max |Δ| %.2e with the fragment's derivatives, mean |Δ| %.3f at 8×\n",
+                same, changed);
+    EXPECT_LT(same, 1e-5);
+    EXPECT_GT(changed, 0.02);
+    fs::remove_all(dir);
+}
+
+// The include is also Vulkan GLSL: compiled as `#version 450` for SPIR-V
+// by the reference compiler (which defines VULKAN) and checked by
+// spirv-val, for a plain pattern, a quadrature pair, a lean program and a
+// graph; every sampler has its own binding after the block's 0, as
+// manifest.json lists them.
+TEST(Export, IncludeIsVulkanGlslWithABindingPerResource) {
+    const fs::path dir = test::scratchPath("stochtex_export_vulkan");
+    const auto run = [&](const std::string& command) {
+        const int rc = std::system((command + " > " + (dir / "log.txt").string() + " 2>&1").c_str());
+        return std::make_pair(rc, readText(dir / "log.txt"));
+    };
+    for (const char* name : {"camouflage", "phasor-stripes", "lean-ridges", "figure14"}) {
+        fs::remove_all(dir);
+        FilterOptions o;
+        o.use(parseFilter("paper"));
+        if (std::string(name) == "lean-ridges") o.response.kind = ResponseKind::Lean;
+        exportPatternSpec(loadPreset(name), o, dir.string(), {});
+        std::ifstream mf(dir / "manifest.json");
+        const nlohmann::json m = nlohmann::json::parse(mf);
+        EXPECT_EQ(m["block_binding"], 0);
+        std::set<int> bindings{0};
+        const std::string include = readText(dir / "stochtex.glsl");
+        for (const nlohmann::json& t : m["textures"]) {
+            const int b = t["binding"].get<int>();
+            EXPECT_TRUE(bindings.insert(b).second) << name << ": binding " << b << " twice";
+            EXPECT_NE(include.find("STOCHTEX_BINDING(" + std::to_string(b) + ") uniform sampler"), std::string::npos);
+        }
+        std::ofstream(dir / "probe.frag") << "#version 450\n" << include
+                                          << "layout(location = 0) in vec2 vUv;\n"
+                                             "layout(location = 0) out vec4 colour;\n"
+                                             "void main() { colour = stochtex_sample(vUv) + "
+                                             "stochtex_sample_grad(vUv, vec2(0.01, 0.0), vec2(0.0, 0.01)); }\n";
+        const auto [compiled, log] = run("glslangValidator -V " + (dir / "probe.frag").string() + " -o " +
+                                         (dir / "probe.spv").string());
+        EXPECT_EQ(compiled, 0) << name << ":\n" << log;
+        const auto [valid, validLog] = run("spirv-val --target-env vulkan1.0 " + (dir / "probe.spv").string());
+        EXPECT_EQ(valid, 0) << name << ":\n" << validLog;
+    }
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -25,15 +25,28 @@ namespace {
 
 const char* kIncludeHeader =
     "// stochtex: filtered colour-mapped noise (Grenier et al. 2022), exported by `stochtex bake`.\n"
-    "// Include after a `#version 330 core` (or `#version 300 es` + highp precision) line.\n"
-    "// Entry point: vec4 stochtex_sample(vec2 uv), uv in example periods; the\n"
-    "// footprint comes from this fragment's derivatives of uv. It returns LINEAR-light\n"
-    "// RGB (not sRGB codes): draw into an sRGB framebuffer (GL_FRAMEBUFFER_SRGB) or\n"
-    "// encode it before display. The textures to bind (manifest.json's \"textures\") and\n"
-    "// the PatternParameters block to fill are described in README.md.\n";
+    "// Include after a `#version 330 core` line (OpenGL), `#version 300 es` + highp precision\n"
+    "// (WebGL 2, GLES), or `#version 450` compiled for Vulkan (glslangValidator -V).\n"
+    "// Entry points, uv in example periods: vec4 stochtex_sample(vec2 uv), its footprint\n"
+    "// from this fragment's derivatives of uv; vec4 stochtex_sample_grad(vec2 uv, vec2 ddx,\n"
+    "// vec2 ddy), the footprint from explicit derivatives (as textureGrad: compute,\n"
+    "// deferred or ray-traced shading). Both return LINEAR-light RGB (not sRGB codes):\n"
+    "// draw into an sRGB framebuffer (GL_FRAMEBUFFER_SRGB) or encode it before display.\n"
+    "// The textures to bind (manifest.json's \"textures\", each with its Vulkan \"binding\")\n"
+    "// and the PatternParameters block to fill (binding 0) are described in README.md.\n\n"
+    "// Vulkan needs a set and binding on every block and sampler; OpenGL binds by name.\n"
+    "// Define STOCHTEX_BINDING(n) before the include to place them elsewhere.\n"
+    "#ifndef STOCHTEX_BINDING\n"
+    "#ifdef VULKAN\n"
+    "#define STOCHTEX_BINDING(n) layout(set = 0, binding = n)\n"
+    "#else\n"
+    "#define STOCHTEX_BINDING(n)\n"
+    "#endif\n"
+    "#endif\n";
 
 const char* kSampleFunction =
-    "vec4 stochtex_sample(vec2 uv) { return vec4(filteredColour(uv, dFdx(uv), dFdy(uv)), 1.0); }\n";
+    "vec4 stochtex_sample_grad(vec2 uv, vec2 ddx, vec2 ddy) { return vec4(filteredColour(uv, ddx, ddy), 1.0); }\n"
+    "vec4 stochtex_sample(vec2 uv) { return stochtex_sample_grad(uv, dFdx(uv), dFdy(uv)); }\n";
 
 }  // namespace
 
@@ -97,12 +110,13 @@ void writeStats(const StatsPyramid& p, const std::string& dir, const std::string
 const char* kReadme = R"(# stochtex export
 
 Filtered colour-mapped noise (Grenier et al., CGF 2022) for your own OpenGL
-(3.3 core) or WebGL 2 / GLES 3.0 program. `manifest.json` lists the data.
+(3.3 core), WebGL 2 / GLES 3.0 or Vulkan (GLSL 4.50 compiled to SPIR-V)
+program. `manifest.json` lists the data.
 
 ## Textures
 
-| uniform | type | content |
-| --- | --- | --- |
+| uniform | Vulkan binding | type | content |
+| --- | --- | --- | --- |
 @TEXTURES@
 `manifest.json`'s `"textures"` lists the same: each sampler uniform with its
 files (`"pyramid"`: one file per mip level; `"table"`: one file of `layers`
@@ -134,7 +148,9 @@ Fill one buffer of @SIZE@ bytes with the members below (4-byte values at these
 std140 offsets; an int that is a switch holds 0 or 1), upload it as a uniform
 buffer and attach it to the block:
 `glUniformBlockBinding(program, glGetUniformBlockIndex(program, "@BLOCK@"), n)`,
-`glBindBufferBase(GL_UNIFORM_BUFFER, n, buffer)`.
+`glBindBufferBase(GL_UNIFORM_BUFFER, n, buffer)`. Under Vulkan the block is
+`layout(set = 0, binding = 0)` (`manifest.json`: `"block_binding"`) and each
+sampler a combined image sampler at its binding above.
 
 | offset | type | member | meaning | from `manifest.json` |
 | --- | --- | --- | --- | --- |
@@ -148,11 +164,20 @@ in vec2 vUv;               // your texture coordinates, in example periods
 out vec4 colour;
 void main() { colour = stochtex_sample(vUv * 8.0); }
 ```
+
+Where the fragment's derivatives are not the footprint (a compute shader, a
+deferred or ray-traced pass), give them: `stochtex_sample_grad(uv, ddx,
+ddy)`, with ddx and ddy the change of uv over one pixel along x and y (as
+`textureGrad` takes them). For Vulkan, compile `#version 450` with the
+include for SPIR-V (`glslangValidator -V`, which defines `VULKAN`): every
+block and sampler then has `layout(set = 0, binding = n)`; define
+`STOCHTEX_BINDING(n)` before the include to choose another set or offset.
 )";
 
 // The README's row for a sampler of manifest.json's "textures".
 std::string textureRow(const nlohmann::json& t) {
-    const std::string uniform = "`" + t["uniform"].get<std::string>() + "`";
+    const std::string uniform =
+        "`" + t["uniform"].get<std::string>() + "` | " + std::to_string(t["binding"].get<int>());
     if (t["kind"] == "pyramid") {
         const std::string first = t["files"].front(), last = t["files"].back();
         return "| " + uniform + " | `sampler2D`, RG32F, mip levels 0…" + std::to_string(t["files"].size() - 1) +
@@ -183,20 +208,24 @@ x along u, y along v, z up; unit length):
 
 )";
 
+// The samplers `include` declares, in order, each with its binding
+// (STOCHTEX_BINDING(n): Vulkan's; gpu_graph.cpp declares one per line).
+std::vector<std::pair<std::string, int>> declaredSamplers(const std::string& include) {
+    std::vector<std::pair<std::string, int>> out;
+    const std::regex declaration(R"(STOCHTEX_BINDING\((\d+)\) uniform sampler\w+ (\w+);)");
+    for (std::sregex_iterator it(include.begin(), include.end(), declaration), end; it != end; ++it)
+        out.emplace_back((*it)[2].str(), std::stoi((*it)[1].str()));
+    return out;
+}
+
 // The samplers `include` declares that manifest.json's textures do not
 // list: the unfiltered path's, which stochtex_sample never calls.
 std::vector<std::string> unlistedSamplers(const std::string& include, const nlohmann::json& textures) {
     std::vector<std::string> out;
-    const std::regex declaration(R"(\buniform\s+sampler\w+\s+([^;]+);)");
-    for (std::sregex_iterator it(include.begin(), include.end(), declaration), end; it != end; ++it) {
-        std::stringstream names((*it)[1].str());
-        for (std::string name; std::getline(names, name, ',');) {
-            name.erase(0, name.find_first_not_of(" \t"));
-            name.erase(name.find_last_not_of(" \t") + 1);
-            const bool listed = std::any_of(textures.begin(), textures.end(),
-                                            [&](const nlohmann::json& t) { return t["uniform"] == name; });
-            if (!listed) out.push_back(name);
-        }
+    for (const auto& [name, binding] : declaredSamplers(include)) {
+        const bool listed = std::any_of(textures.begin(), textures.end(),
+                                        [&](const nlohmann::json& t) { return t["uniform"] == name; });
+        if (!listed) out.push_back(name);
     }
     return out;
 }
@@ -280,12 +309,17 @@ void makeFolder(const std::string& dir) {
 void writeDescription(const std::string& dir, nlohmann::json& m, const std::string& include,
                       std::vector<WrittenFile>& files, const std::string& shading) {
     m["colour_space"] = "linear";  // the tables and stochtex_sample: linear light, never sRGB codes
+    // Vulkan's bindings, as the include declares them (set 0 unless STOCHTEX_BINDING says otherwise).
+    m["block_binding"] = 0;
+    for (const auto& [name, binding] : declaredSamplers(include))
+        for (nlohmann::json& t : m["textures"])
+            if (t["uniform"] == name) t["binding"] = binding;
     writeFileAtomic((fs::path(dir) / "manifest.json").string(), m.dump(2) + "\n");
     files.push_back(
         {"`manifest.json`", "JSON (UTF-8)", "parameters, the textures to bind and the lists of data files"});
     writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), include);
-    files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 source, no `#version` line",
-                     "`vec4 stochtex_sample(vec2 uv)` and what it calls"});
+    files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 / Vulkan GLSL 4.50 source, no `#version` line",
+                     "`vec4 stochtex_sample(vec2 uv)`, `stochtex_sample_grad(uv, ddx, ddy)` and what they call"});
     files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
     writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], shading, include));
 }

@@ -157,16 +157,26 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
     o << "// Generated for one texture graph (gpu/gpu_graph.cpp): the pattern's two colour\n"
          "// functions, its leaves then its operations.\n"
          "#include \"stochtex/kernel/camera.glsl\"\n";  // transformUv
+    // Each sampler with its own binding, in declaration order after the
+    // parameter block's 0 (STOCHTEX_BINDING: Vulkan's layout in the export).
+    int binding = 1;
+    const auto sampler = [&](const char* type, const std::string& name, const std::string& comment) {
+        o << "STOCHTEX_BINDING(" << binding++ << ") uniform " << type << " " << name << ";"
+          << (comment.empty() ? "" : "  // " + comment) << "\n";
+    };
     for (int k = 0; k < graph.leafCount(); ++k) {
-        o << "uniform sampler2D uGraphExample" << k << ", uGraphStats" << k << ";  // leaf \""
-          << graph.leafIds()[size_t(k)] << "\": example, (E, V) pyramid\n";
-        if (graph.leaf(k).example().gaussianized()) o << "uniform sampler2D uGraphInverse" << k << ";  // T⁻¹ LUT\n";
+        const std::string n = std::to_string(k);
+        sampler("sampler2D", "uGraphExample" + n, "leaf \"" + graph.leafIds()[size_t(k)] + "\": example");
+        sampler("sampler2D", "uGraphStats" + n, "its (E, V) pyramid");
+        if (graph.leaf(k).example().gaussianized()) sampler("sampler2D", "uGraphInverse" + n, "its T⁻¹ LUT");
     }
-    for (size_t t = 0; t < graph.tables().size(); ++t)
-        o << "uniform sampler2DArray uGraphTable" << t << ", uGraphPrefiltered" << t << ";\n";
+    for (size_t t = 0; t < graph.tables().size(); ++t) {
+        sampler("sampler2DArray", "uGraphTable" + std::to_string(t), "");
+        sampler("sampler2DArray", "uGraphPrefiltered" + std::to_string(t), "");
+    }
     for (size_t p = 0; p < graph.leafPairs().size(); ++p)
         if (graph.pairCovariance(int(p)))
-            o << "uniform sampler2D uGraphCov" << p << ";  // pair " << p << "'s C_l pyramid\n";
+            sampler("sampler2D", "uGraphCov" + std::to_string(p), "pair " + std::to_string(p) + "'s C_l pyramid");
     writeOpHost(o, graph);
     writeTexelSource(o, graph, estimator.levelAverages);
 

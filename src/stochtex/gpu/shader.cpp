@@ -59,13 +59,16 @@ std::vector<std::string> shaderNames() {
 namespace {
 
 std::string header(GlslTarget target) {
+    // A resource's binding (the export's Vulkan layout): OpenGL binds by name.
+    const std::string bindings = "#define STOCHTEX_BINDING(n)\n";
     switch (target) {
-        case GlslTarget::Core330: return "#version 330 core\n";
-        case GlslTarget::Core430: return "#version 430 core\n";
+        case GlslTarget::Core330: return "#version 330 core\n" + bindings;
+        case GlslTarget::Core430: return "#version 430 core\n" + bindings;
         case GlslTarget::Es300: break;
     }
     return "#version 300 es\nprecision highp float;\nprecision highp int;\n"
-           "precision highp sampler2D;\nprecision highp sampler2DArray;\n";
+           "precision highp sampler2D;\nprecision highp sampler2DArray;\n" +
+           bindings;
 }
 
 // A line `#include "path"`: GLSL has no includes, so the line names a file

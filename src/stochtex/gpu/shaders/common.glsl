@@ -65,5 +65,6 @@ vec3 tableLookup(sampler2DArray table, int layer, vec2 xy) {
 
 // The pattern's parameters (kernel/pattern_params.glsl): one std140 block,
 // filled on the CPU from the same struct (GpuGraph::bind, an engine from
-// the export's README).
-layout(std140) uniform PatternParameters { PatternParams uPattern; };
+// the export's README). STOCHTEX_BINDING(n): nothing for OpenGL (the host's
+// header), a Vulkan set and binding in the export's include.
+STOCHTEX_BINDING(0) layout(std140) uniform PatternParameters { PatternParams uPattern; };
