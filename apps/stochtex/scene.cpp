@@ -6,6 +6,7 @@
 #include "common.h"
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_graph.h"
+#include "stochtex/gpu/mesh_file.h"
 #include "stochtex/gpu/scene_render.h"
 #include "stochtex/image/image_io.h"
 
@@ -16,15 +17,22 @@ void registerScene(CLI::App& app) {
         PatternSource source;
         FilterOptions options;
         ResponseFlags response;
-        std::string output, object = "sphere";
+        std::string output, object = "sphere", mesh, mapping;
         std::vector<int> size{768, 512};
         float tiling = 4.0f;
     };
     auto args = std::make_shared<Args>();
-    auto* cmd = app.add_subcommand("scene", "The pattern on a lit 3D object (plane, sphere or torus), headless OpenGL");
+    auto* cmd = app.add_subcommand(
+        "scene", "The pattern on a lit 3D object (plane, sphere, torus or your OBJ/glTF mesh), headless OpenGL");
     addPatternSource(*cmd, args->source);
     addOutputImageFlag(*cmd, args->output);
-    cmd->add_option("--object", args->object, "plane | sphere | torus");
+    CLI::Option* object = cmd->add_option("--object", args->object, "plane | sphere | torus");
+    cmd->add_option("--mesh", args->mesh,
+                    "A mesh file instead: .obj, .gltf or .glb (centred, scaled to the sphere's size)")
+        ->excludes(object);
+    cmd->add_option("--mapping", args->mapping,
+                    "uv (the mesh's texture coordinates) | triplanar (three projections blended by the normal); "
+                    "default uv, triplanar for a mesh without uv");
     addFilterFlag(*cmd, args->options, "none | paper | smooth", gpuFilterNames());
     addAnisoFlag(*cmd, args->options.aniso);
     addResponseFlags(*cmd, args->response);
@@ -37,22 +45,36 @@ void registerScene(CLI::App& app) {
         checkImageOutput(args->output);
         const auto [w, h] = sizeFlagValue(size, args->size, 8192);
         const FilterOptions& options = args->options;
-        const Mesh mesh = makeObject(args->object);
+        LoadedMesh loaded;
+        if (args->mesh.empty()) {
+            loaded.mesh = makeObject(args->object);
+            loaded.hasUv = loaded.hasNormals = true;
+        } else {
+            loaded = loadMesh(args->mesh);
+        }
+        const SurfaceMapping mapping = args->mapping.empty()
+                                           ? (loaded.hasUv ? SurfaceMapping::Uv : SurfaceMapping::Triplanar)
+                                           : parseEnum(kSurfaceMappingNames, args->mapping, "mapping");
+        if (mapping == SurfaceMapping::Uv && !loaded.hasUv)
+            throw InputError::parameter(
+                "mapping", "must be triplanar for a mesh without texture coordinates (" + args->mesh + ")");
+        const Mesh& mesh = loaded.mesh;
         const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         const auto start = std::chrono::steady_clock::now();
         auto context = GlContext::headless();
         const std::unique_ptr<GpuView> gpu = makeGpuView(spec, *context, options);
         SceneCamera camera;
-        if (args->object == "plane") {
+        if (args->mesh.empty() && args->object == "plane") {
             camera.eye = {0.0f, 0.2f, 2.6f};
             camera.target = {0.0f, -0.9f, -0.5f};
         }
-        const Image image = renderScene(*gpu, mesh, camera, w, h, args->tiling);
+        const Image image = renderScene(*gpu, mesh, camera, w, h, args->tiling, mapping);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeImage(args->output, image);
-        std::printf("wrote %s (%dx%d, %s on a %s, filter %s, %s, %.2f s)\n", args->output.c_str(), w, h,
-                    spec.name.c_str(), args->object.c_str(), filterLabel(options).c_str(), context->describe().c_str(),
-                    seconds);
+        const std::string on = args->mesh.empty() ? "a " + args->object : args->mesh;
+        std::printf("wrote %s (%dx%d, %s on %s, %s mapping, filter %s, %s, %.2f s)\n", args->output.c_str(), w, h,
+                    spec.name.c_str(), on.c_str(), enumName(kSurfaceMappingNames, mapping).c_str(),
+                    filterLabel(options).c_str(), context->describe().c_str(), seconds);
     });
 }
 

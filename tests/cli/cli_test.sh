@@ -791,6 +791,13 @@ case_scene() {
   expect_ok "scene lean" "$out/scene_lean.png" -- "$bin" scene --preset lean-ridges --response lean --object sphere --size 96,64 -o "$out/scene_lean.png"
   expect_ok "scene lean unfiltered" "$out/scene_lean_none.png" -- "$bin" scene --preset lean-ridges --response lean --filter none --object sphere --size 96,64 -o "$out/scene_lean_none.png"
   cmp -s "$out/scene_lean.png" "$out/scene_lean_none.png" && fail "scene lean: filtered and unfiltered are identical"
+  # A user's mesh: a tetrahedron without uv (triplanar by default), refused as uv; missing and unknown files refused.
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$work/tetra.obj"
+  expect_ok "scene mesh" "$out/scene_mesh.png" -- "$bin" scene --preset marble --mesh "$work/tetra.obj" --size 96,64 -o "$out/scene_mesh.png"
+  grep -q "triplanar mapping" "$work/out.txt" || fail "scene mesh: the default mapping of a mesh without uv is not triplanar: $(cat "$work/out.txt")"
+  expect_bad "scene mesh as uv" "$out/scene_uv.png" "--mapping: mapping must be triplanar for a mesh without texture coordinates ($work/tetra.obj)" -- "$bin" scene --preset marble --mesh "$work/tetra.obj" --mapping uv -o "$out/scene_uv.png"
+  expect_bad "scene missing mesh" "$out/scene_nm.png" "$work/nope.obj: no such mesh file" -- "$bin" scene --preset marble --mesh "$work/nope.obj" -o "$out/scene_nm.png"
+  expect_bad "scene mesh and object" "$out/scene_mo.png" "--object excludes --mesh" -- "$bin" scene --preset marble --mesh "$work/tetra.obj" --object torus -o "$out/scene_mo.png"
 }
 
 # --- bad input ---

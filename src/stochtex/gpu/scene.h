@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "stochtex/core/enum_names.h"
+
 namespace stochtex {
 
 struct Mesh {
@@ -20,6 +22,13 @@ Mesh makeTorus(int segments = 192);          // radii 1 and 0.35, uv along both 
 Mesh makePlaneMesh(int segments = 64);       // the square [−2, 2]² at y = −1, uv over [0,1]²
 // "plane", "sphere" or "torus"; InputError otherwise.
 Mesh makeObject(const std::string& name);
+
+// How the pattern lies on a surface: the mesh's texture coordinates, or
+// triplanar (three projections along the object's axes, blended by the
+// normal: for meshes without uv).
+enum class SurfaceMapping { Uv, Triplanar };
+inline const EnumNames<SurfaceMapping> kSurfaceMappingNames{{"uv", SurfaceMapping::Uv},
+                                                            {"triplanar", SurfaceMapping::Triplanar}};
 
 using Mat4 = std::array<float, 16>;  // column-major, as OpenGL
 

@@ -30,9 +30,13 @@ SceneRenderer::SceneRenderer(const GpuView& pattern, const Mesh& mesh)
     glBindVertexArray(0);
 }
 
-void SceneRenderer::draw(const SceneCamera& camera, const RenderTarget& target, float tiling) const {
+void SceneRenderer::draw(const SceneCamera& camera, const RenderTarget& target, float tiling,
+                         SurfaceMapping mapping) const {
     if (!(tiling > 0) || !std::isfinite(tiling) || tiling > 1e4)
         throw InputError::parameter("tiling", "must be a finite number in (0, 1e4], got " + formatValue(tiling));
+    // A lean program shades its slopes in the uv frame of one projection.
+    if (mapping == SurfaceMapping::Triplanar && pattern_.shadesLight())
+        throw InputError::parameter("mapping", "triplanar does not light a program that shades its own light (lean)");
     for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {}  // earlier callers' errors are not ours
     target.bind();
     // The dark slate background, given as sRGB codes: the target holds linear light.
@@ -47,6 +51,7 @@ void SceneRenderer::draw(const SceneCamera& camera, const RenderTarget& target, 
     glUniform1f(uniform("uTiling"), tiling);
     glUniform1i(uniform("uFiltered"), pattern_.filtered());
     glUniform1i(uniform("uShadesLight"), pattern_.shadesLight());
+    glUniform1i(uniform("uTriplanar"), mapping == SurfaceMapping::Triplanar);
     const float l[3] = {0.45f, 0.8f, 0.4f};
     const float n = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
     glUniform3f(uniform("uLight"), l[0] / n, l[1] / n, l[2] / n);
@@ -62,12 +67,12 @@ void SceneRenderer::draw(const SceneCamera& camera, const RenderTarget& target, 
 }
 
 Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
-                  float tiling) {
+                  float tiling, SurfaceMapping mapping) {
     if (width < 1 || height < 1 || width > 8192 || height > 8192)
         throw InputError::parameter("size", "must be in [1, 8192] per side, got " + std::to_string(width) + "x" +
                                                 std::to_string(height));
     const RenderTarget target(width, height, true);
-    SceneRenderer(pattern, mesh).draw(camera, target, tiling);
+    SceneRenderer(pattern, mesh).draw(camera, target, tiling, mapping);
     // GL's row 0 is the bottom of the picture: flip for an image file.
     Image out = target.readRgb(RenderTarget::Rows::TopDown);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -17,8 +17,10 @@ public:
     SceneRenderer(const GpuView& pattern, const Mesh& mesh);
     // Draws the mesh, uv × tiling example periods, seen by a perspective
     // camera, into `target` (which needs a depth buffer), over the slate
-    // background; rows as drawn (GL row 0 at the bottom). tiling in (0, 1e4].
-    void draw(const SceneCamera& camera, const RenderTarget& target, float tiling) const;
+    // background; rows as drawn (GL row 0 at the bottom). tiling in (0, 1e4]
+    // (triplanar: example periods across 2 units of the object, its size).
+    void draw(const SceneCamera& camera, const RenderTarget& target, float tiling,
+              SurfaceMapping mapping = SurfaceMapping::Uv) const;
 
 private:
     const GpuView& pattern_;
@@ -31,6 +33,6 @@ private:
 // A SceneRenderer's draw into a new target, read back: 3 channels, row 0 at the top.
 // width, height in [1, 8192].
 Image renderScene(const GpuView& pattern, const Mesh& mesh, const SceneCamera& camera, int width, int height,
-                  float tiling);
+                  float tiling, SurfaceMapping mapping = SurfaceMapping::Uv);
 
 }  // namespace stochtex
