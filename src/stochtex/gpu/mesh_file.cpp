@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 
 #include "stochtex/core/error.h"
@@ -182,8 +183,42 @@ Mat4d localTransform(const tinygltf::Node& n) {
     return m;
 }
 
+// The files a glTF reads (its buffers): regular files of bounded size,
+// named as written (no shell expansion of `~` or `$VAR`); nothing written.
+tinygltf::FsCallbacks boundedFiles() {
+    tinygltf::FsCallbacks fs{};
+    fs.FileExists = [](const std::string& path, void*) {
+        std::error_code ec;
+        return std::filesystem::is_regular_file(path, ec);
+    };
+    fs.ExpandFilePath = [](const std::string& path, void*) { return path; };
+    fs.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+        std::error_code ec;
+        const bool regular = std::filesystem::is_regular_file(path, ec);
+        const auto bytes = regular ? std::filesystem::file_size(path, ec) : 0;
+        if (!regular || ec || (long long)bytes > kMaxMeshFileBytes) {
+            if (err)
+                *err += path + ": not a regular file of at most " + std::to_string(kMaxMeshFileBytes >> 20) + " MB";
+            return false;
+        }
+        std::ifstream in(path, std::ios::binary);
+        out->resize(size_t(bytes));
+        if (bytes && !in.read(reinterpret_cast<char*>(out->data()), std::streamsize(bytes))) {
+            if (err) *err += path + ": cannot be read";
+            return false;
+        }
+        return true;
+    };
+    fs.WriteWholeFile = [](std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+        if (err) *err += "a mesh file is only read";
+        return false;
+    };
+    return fs;
+}
+
 Corners readGltf(const std::string& path, bool binary) {
     tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks(boundedFiles());
     // The mesh's images are not read: the pattern is its texture.
     loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*,
                              int, void*) { return true; },
