@@ -52,12 +52,7 @@ void registerScene(CLI::App& app) {
         } else {
             loaded = loadMesh(args->mesh);
         }
-        const SurfaceMapping mapping = args->mapping.empty()
-                                           ? (loaded.hasUv ? SurfaceMapping::Uv : SurfaceMapping::Triplanar)
-                                           : parseEnum(kSurfaceMappingNames, args->mapping, "mapping");
-        if (mapping == SurfaceMapping::Uv && !loaded.hasUv)
-            throw InputError::parameter(
-                "mapping", "must be triplanar for a mesh without texture coordinates (" + args->mesh + ")");
+        const SurfaceMapping mapping = meshMapping(loaded, args->mapping, args->mesh);
         const Mesh& mesh = loaded.mesh;
         const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         const auto start = std::chrono::steady_clock::now();

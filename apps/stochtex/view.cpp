@@ -17,7 +17,7 @@ namespace stochtex::cli {
 void registerView(CLI::App& app) {
     struct Args {
         PatternSource source;
-        std::string shadertoy, script;
+        std::string shadertoy, script, mesh, mapping;
         WorkbenchOptions window;
         ResponseFlags response;
         std::vector<int> size{960, 640};
@@ -38,9 +38,12 @@ void registerView(CLI::App& app) {
     // One flag for where the pattern is seen: the window's views extend the
     // cameras' (zoom, plane) with the 3D objects.
     cmd->remove_option(cmd->get_option("--view"));
-    addEnumFlag(
-        *cmd, "--view", w.view, kWorkbenchViewNames, "view",
-        "Where the pattern is seen: zoom (flat) | plane (perspective ground plane) | sphere | torus (V cycles)");
+    const CLI::Option* view = addEnumFlag(*cmd, "--view", w.view, kWorkbenchViewNames, "view",
+                                          "Where the pattern is seen: zoom (flat) | plane (perspective ground plane) | "
+                                          "sphere | torus | mesh (--mesh FILE; V cycles)");
+    cmd->add_option("--mesh", args->mesh, "A mesh for the mesh view: .obj, .gltf or .glb (shown first unless --view)");
+    cmd->add_option("--mapping", args->mapping,
+                    "The mesh's mapping: uv | triplanar (default uv, triplanar for a mesh without uv)");
     addParameterOption(*cmd, viewScaleParam(), w.camera.view.scale);  // the starting scale
     addAnisoFlag(*cmd, w.filter.aniso);
     addResponseFlags(*cmd, args->response);
@@ -56,7 +59,7 @@ void registerView(CLI::App& app) {
     cmd->add_option("--script", args->script, "Steps to run, a JSON file (docs/WORKBENCH.md)");
     addMemberOption(*cmd, optionMember(workbenchOptionsMembers(), "frames"), w);
     cmd->add_option("--screenshot", w.screenshot, "Save the picture area of the last frame to this PNG/EXR");
-    cmd->callback([args, cmd] {
+    cmd->callback([args, cmd, view] {
         applyResponseFlags(*cmd, args->response, args->window.filter);
         WorkbenchOptions o = args->window;
         if (!o.screenshot.empty()) checkImageOutput(o.screenshot);
@@ -65,6 +68,13 @@ void registerView(CLI::App& app) {
         o.panel = !args->noPanel;
         if (!gpuHasSource(o.filter.source)) refuseOption(*cmd, "--filter", "the window shows none, paper or smooth");
         validateCamera(o.camera);
+        if (!args->mapping.empty() && args->mesh.empty()) refuseOption(*cmd, "--mapping", "give it with --mesh");
+        if (!args->mesh.empty()) {
+            auto mesh = std::make_shared<const LoadedMesh>(loadMesh(args->mesh));
+            o.mapping = meshMapping(*mesh, args->mapping, args->mesh);
+            o.mesh = std::move(mesh);
+            if (view->count() == 0) o.view = WorkbenchView::Mesh;
+        }
         o.camera.kind = o.view == WorkbenchView::Plane ? Camera::Kind::Plane : Camera::Kind::Zoom;
         if (!args->script.empty()) o.script = parseWorkbenchScript(readJsonFile(args->script), args->script);
         if (!args->source.file.empty() && args->source.file.front() == '{')

@@ -680,6 +680,12 @@ JSON
   expect_ok "scene sphere" "$out/wbsphr.png" -- "$bin" scene --preset marble --object sphere --size 160,120 --filter smooth -o "$out/wbsphr.png"
   d=$("$compare" "$out/wbsph.png" "$out/wbsphr.png") || { fail "workbench sphere: compare failed"; return; }
   echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 10) }' || fail "workbench sphere vs scene: $d (want mean <= 0.5, flipped >= 10)"
+  # The user's mesh (a tetrahedron without uv: triplanar) is the one `scene --mesh` draws.
+  printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$work/wbtetra.obj"
+  expect_ok "workbench mesh" "$out/wbmesh.png" -- "${xvfb[@]}" "$bin" view --preset marble --mesh "$work/wbtetra.obj" --size 160,120 --frames 3 --screenshot "$out/wbmesh.png"
+  expect_ok "scene mesh for the workbench" "$out/wbmeshr.png" -- "$bin" scene --preset marble --mesh "$work/wbtetra.obj" --size 160,120 --filter smooth -o "$out/wbmeshr.png"
+  d=$("$compare" "$out/wbmesh.png" "$out/wbmeshr.png") || { fail "workbench mesh: compare failed"; return; }
+  echo "$d" | awk '{ exit !($2 <= 0.5 && $4 >= 2) }' || fail "workbench mesh vs scene: $d (want mean <= 0.5, flipped >= 2)"
 
   # A texture graph: a node parameter edited (the panel's widgets come from
   # the node table; the script edits through the same call), recorded to an

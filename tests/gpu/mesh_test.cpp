@@ -173,6 +173,15 @@ TEST(MeshFile, TriplanarMappingTexturesAMeshWithoutUv) {
                   renderScene(*lean, m.mesh, SceneCamera{}, 16, 16, 4.0f, SurfaceMapping::Triplanar);
               }).parameter(),
               "mapping");
+    // The mapping a mesh gets: its uv where it has them, else triplanar; uv refused without them.
+    EXPECT_EQ(meshMapping(m, "", "normals.obj"), SurfaceMapping::Triplanar);
+    EXPECT_EQ(meshMapping(m, "triplanar", "normals.obj"), SurfaceMapping::Triplanar);
+    EXPECT_STREQ(test::inputErrorOf([&] { meshMapping(m, "uv", "normals.obj"); }).what(),
+                 "mapping must be triplanar for a mesh without texture coordinates (normals.obj)");
+    LoadedMesh withUv = m;
+    withUv.hasUv = true;
+    EXPECT_EQ(meshMapping(withUv, "", "cube.obj"), SurfaceMapping::Uv);
+    EXPECT_EQ(test::inputErrorOf([&] { meshMapping(withUv, "spherical", "cube.obj"); }).parameter(), "mapping");
 }
 
 }  // namespace

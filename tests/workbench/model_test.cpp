@@ -154,6 +154,35 @@ TEST(WorkbenchModel, KeysAreTheCommandsTheHelpLists) {
 
 // The estimator control changes the filter the picture's view is built
 // with, and asks for a new view (a new program: its loop's sub-probes).
+// The mesh view is offered only with a mesh: V skips it without one (torus
+// → zoom) and goes to it with one (torus → mesh → zoom); a script's step
+// to it without one is refused naming the view.
+TEST(WorkbenchModel, TheMeshViewIsOfferedOnlyWithAMesh) {
+    WorkbenchOptions o = options();
+    o.view = WorkbenchView::Torus;
+    WorkbenchModel bare(WorkbenchDocument::preset("camouflage"), o);
+    tap(bare, GLFW_KEY_V);
+    EXPECT_EQ(bare.shown().view, WorkbenchView::Zoom);
+    EXPECT_EQ(test::inputErrorOf([&] { bare.apply(WorkbenchCommand::of(A::View, 0, "mesh"), true); }).parameter(),
+              "view");
+    auto mesh = std::make_shared<LoadedMesh>();
+    mesh->mesh = makeSphere(16);
+    mesh->hasUv = true;
+    o.mesh = mesh;
+    o.mapping = SurfaceMapping::Triplanar;
+    WorkbenchModel withMesh(WorkbenchDocument::preset("camouflage"), o);
+    tap(withMesh, GLFW_KEY_V);
+    EXPECT_EQ(withMesh.shown().view, WorkbenchView::Mesh);
+    EXPECT_TRUE(withMesh.isScene());
+    EXPECT_EQ(withMesh.mesh(), mesh.get());
+    EXPECT_EQ(withMesh.mapping(), SurfaceMapping::Triplanar);
+    tap(withMesh, GLFW_KEY_V);
+    EXPECT_EQ(withMesh.shown().view, WorkbenchView::Zoom);
+    o.mesh = nullptr;
+    o.view = WorkbenchView::Mesh;
+    EXPECT_EQ(test::inputErrorOf([&] { validateWorkbenchOptions(o); }).parameter(), "view");
+}
+
 TEST(WorkbenchModel, TheEstimatorStepSetsTheFiltersEstimator) {
     WorkbenchModel m(WorkbenchDocument::preset("camouflage"), options());
     EXPECT_EQ(m.shown().filter.estimator, VarianceEstimator::Paper);

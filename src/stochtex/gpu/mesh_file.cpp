@@ -311,6 +311,15 @@ Vec3 normalized(const Vec3& v) {
 
 }  // namespace
 
+SurfaceMapping meshMapping(const LoadedMesh& mesh, const std::string& name, const std::string& path) {
+    const SurfaceMapping m = name.empty() ? (mesh.hasUv ? SurfaceMapping::Uv : SurfaceMapping::Triplanar)
+                                          : parseEnum(kSurfaceMappingNames, name, "mapping");
+    if (m == SurfaceMapping::Uv && !mesh.hasUv)
+        throw InputError::parameter("mapping",
+                                    "must be triplanar for a mesh without texture coordinates (" + path + ")");
+    return m;
+}
+
 LoadedMesh loadMesh(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": no such mesh file");

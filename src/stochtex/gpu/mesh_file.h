@@ -28,4 +28,9 @@ struct LoadedMesh {
 // oversized file, an unknown extension, or a mesh without triangles.
 LoadedMesh loadMesh(const std::string& path);
 
+// The mapping named (kSurfaceMappingNames), or where `name` is empty the
+// mesh's own: uv where it has texture coordinates, else triplanar.
+// InputError naming "mapping" for uv on a mesh without them (`path` says which).
+SurfaceMapping meshMapping(const LoadedMesh& mesh, const std::string& name, const std::string& path);
+
 }  // namespace stochtex

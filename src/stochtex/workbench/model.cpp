@@ -69,7 +69,7 @@ int javascriptKeyCode(int glfwKey) {
 }
 
 WorkbenchModel::WorkbenchModel(WorkbenchDocument document, const WorkbenchOptions& options)
-    : doc_(std::move(document)), fps_(options.shadertoy.fps) {
+    : doc_(std::move(document)), mesh_(options.mesh), mapping_(options.mapping), fps_(options.shadertoy.fps) {
     shown_.camera = options.camera;
     shown_.filter = options.filter;
     shown_.view = options.view;
@@ -291,7 +291,13 @@ void WorkbenchModel::apply(const WorkbenchCommand& c, bool scripted) {
             viewChanged();
             break;
         case A::Tilt: s.camera.tiltDeg = std::clamp(c.amount, 0.0, 89.0), viewChanged(); break;
-        case A::View: s.view = parseEnum(kWorkbenchViewNames, c.text, "view"), viewChanged(); break;
+        case A::View: {
+            const WorkbenchView view = parseEnum(kWorkbenchViewNames, c.text, "view");
+            if (view == WorkbenchView::Mesh && !mesh_) throw InputError::parameter("view", "mesh needs a mesh file");
+            s.view = view;
+            viewChanged();
+            break;
+        }
         case A::Mode: s.mode = parseEnum(kWorkbenchModeNames, c.text, "mode"), analysisRestart_ = true; break;
         case A::Analysis:
             s.analysis = parseEnum(kLiveAnalysisNames, c.text, "analysis"), analysisRestart_ = true;
@@ -404,7 +410,10 @@ void WorkbenchModel::applyKeyEvent(const KeyEvent& e) {
         const auto it = std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.second == value; });
         return it == names.end() || std::next(it) == names.end() ? names.front().first : std::next(it)->first;
     };
-    if (pressed(GLFW_KEY_V)) command(A::View, 0, next(kWorkbenchViewNames, s.view));
+    if (pressed(GLFW_KEY_V)) {
+        const std::string view = next(kWorkbenchViewNames, s.view);  // the mesh view only with a mesh
+        command(A::View, 0, view == "mesh" && !mesh_ ? kWorkbenchViewNames.front().first : view);
+    }
     if (pressed(GLFW_KEY_D)) command(A::Derivatives, s.derivatives == GpuView::Derivatives::Camera);
     // Held arrows repeat.
     const bool pressOrRepeat = e.action == GLFW_PRESS || e.action == GLFW_REPEAT;

@@ -113,7 +113,13 @@ public:
 
     // --- what is shown ---
     const WorkbenchShown& shown() const { return shown_; }
-    bool isScene() const { return shown_.view == WorkbenchView::Sphere || shown_.view == WorkbenchView::Torus; }
+    bool isScene() const {
+        return shown_.view == WorkbenchView::Sphere || shown_.view == WorkbenchView::Torus ||
+               shown_.view == WorkbenchView::Mesh;
+    }
+    // The user's mesh of the mesh view (nullptr: none loaded, the view is not offered) and its mapping.
+    const LoadedMesh* mesh() const { return mesh_.get(); }
+    SurfaceMapping mapping() const { return mapping_; }
     bool analysing() const { return shown_.mode != WorkbenchMode::Texture; }
     // Changes whenever something the picture shows does: analyses of the old picture are stale.
     long long viewVersion() const { return viewVersion_; }
@@ -157,6 +163,8 @@ private:
     PreviewCache previews_;
     PartCache parts_;
     bool hasNormalMap_ = false;
+    std::shared_ptr<const LoadedMesh> mesh_;
+    SurfaceMapping mapping_ = SurfaceMapping::Uv;
     long long builds_ = 0;
     bool needsRebuild_ = false, gestureOpen_ = false;
     std::chrono::steady_clock::time_point lastBuild_{}, lastWatch_{};

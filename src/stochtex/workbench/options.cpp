@@ -27,6 +27,7 @@ void validateWorkbenchOptions(const WorkbenchOptions& o) {
     checkNumber(cameraTiltParam(), o.camera.tiltDeg, " degrees");
     checkNumber(viewScaleParam(), o.camera.view.scale);
     checkMembers(o, workbenchOptionsMembers());
+    if (o.view == WorkbenchView::Mesh && !o.mesh) throw InputError::parameter("view", "mesh needs a mesh file");
     if (!o.screenshot.empty() && o.frames == 0)
         throw InputError::parameter("frames", "must be given with a screenshot (it is of the last frame)");
     validateShadertoySettings(o.shadertoy);

@@ -3,10 +3,12 @@
 // model's first state): the camera, filter, view, mode and analysis, a
 // program's settings, the panel, the frames to run, the screenshot and the
 // script.
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "stochtex/gpu/mesh_file.h"
 #include "stochtex/gpu/shadertoy.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/filter_options.h"
@@ -20,6 +22,10 @@ struct WorkbenchOptions {
     Camera camera;         // the starting camera; its view's size is the picture area's
     FilterOptions filter;  // the starting filter: none, paper or smooth (with its aniso and response)
     WorkbenchView view = WorkbenchView::Zoom;
+    // The user's mesh for the mesh view (view --mesh FILE; none: the view is
+    // not offered) and how the pattern lies on it.
+    std::shared_ptr<const LoadedMesh> mesh;
+    SurfaceMapping mapping = SurfaceMapping::Uv;
     WorkbenchMode mode = WorkbenchMode::Texture;
     LiveAnalysisKind analysis = LiveAnalysisKind::Spectrum;
     ShadertoySettings shadertoy;  // a program's settings (its size follows the picture area); its fps is

@@ -146,13 +146,14 @@ GLuint WorkbenchPicture::drawPattern(int w, int h) {
     GpuView& r = renderer();
     const WorkbenchShown& s = model_.shown();
     if (model_.isScene()) {
-        const std::string object = s.view == WorkbenchView::Sphere ? "sphere" : "torus";
+        const bool mesh = s.view == WorkbenchView::Mesh && model_.mesh();
+        const std::string object = mesh ? "mesh" : s.view == WorkbenchView::Sphere ? "sphere" : "torus";
         if (!scene_ || sceneView_ != &r || sceneObject_ != object) {
-            scene_ = std::make_unique<SceneRenderer>(r, makeObject(object));
+            scene_ = std::make_unique<SceneRenderer>(r, mesh ? model_.mesh()->mesh : makeObject(object));
             sceneView_ = &r;
             sceneObject_ = object;
         }
-        scene_->draw(s.orbit.camera(), *target_, 4.0f);
+        scene_->draw(s.orbit.camera(), *target_, 4.0f, mesh ? model_.mapping() : SurfaceMapping::Uv);
     } else {
         target_->bind();
         r.setDerivatives(s.derivatives);

@@ -40,11 +40,13 @@ inline const EnumNames<WorkbenchMode> kWorkbenchModeNames{{"texture", WorkbenchM
                                                           {"split", WorkbenchMode::Split},
                                                           {"overlay", WorkbenchMode::Overlay}};
 // How a pattern is seen: the 2D zoom view, the perspective plane, or on a 3D object.
-enum class WorkbenchView { Zoom, Plane, Sphere, Torus };
+// Mesh: the user's mesh (view --mesh FILE), offered only when one is loaded.
+enum class WorkbenchView { Zoom, Plane, Sphere, Torus, Mesh };
 inline const EnumNames<WorkbenchView> kWorkbenchViewNames{{"zoom", WorkbenchView::Zoom},
                                                           {"plane", WorkbenchView::Plane},
                                                           {"sphere", WorkbenchView::Sphere},
-                                                          {"torus", WorkbenchView::Torus}};
+                                                          {"torus", WorkbenchView::Torus},
+                                                          {"mesh", WorkbenchView::Mesh}};
 
 // One thing done to the workbench: what a key, the mouse, a panel's control
 // or a script step asks for, applied by one function (WorkbenchModel::apply).
