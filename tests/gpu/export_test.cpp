@@ -12,17 +12,17 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <set>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "stochtex/gpu/export.h"
 #include "stochtex/gpu/gl_context.h"
-#include "test_util.h"
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/presets.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -96,13 +96,13 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale,
     std::ifstream mf(dir / "manifest.json");
     const nlohmann::json m = nlohmann::json::parse(mf);
     const std::string include = readText(dir / "stochtex.glsl");
-    const GLuint vs = compile(GL_VERTEX_SHADER, "#version 330 core\nvoid main() { vec2 p = vec2(float((gl_VertexID << 1) & 2), "
-                                                "float(gl_VertexID & 2)); gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }\n");
-    const GLuint fs_ =
-        compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + include +
-                                        "uniform float uPixelScale;\nout vec4 colour;\n"
-                                        "void main() { colour = " +
-                                        sample + "; }\n");
+    const GLuint vs = compile(GL_VERTEX_SHADER,
+                              "#version 330 core\nvoid main() { vec2 p = vec2(float((gl_VertexID << 1) & 2), "
+                              "float(gl_VertexID & 2)); gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }\n");
+    const GLuint fs_ = compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + include +
+                                                       "uniform float uPixelScale;\nout vec4 colour;\n"
+                                                       "void main() { colour = " +
+                                                       sample + "; }\n");
     const GLuint prog = glCreateProgram();
     glAttachShader(prog, vs);
     glAttachShader(prog, fs_);
@@ -306,7 +306,8 @@ TEST(Export, PlainPatternFileExportsItsProgram) {
     const fs::path dir = test::scratchPath("stochtex_export_plain_program");
     fs::remove_all(dir);
     exportPatternSpec(spec, o, dir.string(), ExportOptions{});
-    EXPECT_NE(readText(dir / "stochtex.glsl").find("vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy)"), std::string::npos);
+    EXPECT_NE(readText(dir / "stochtex.glsl").find("vec3 filteredColour(vec2 uv, vec2 jx, vec2 jy)"),
+              std::string::npos);
     EXPECT_NE(readText(dir / "README.md").find("`uGraphPrefiltered0`"), std::string::npos);
     const std::unique_ptr<GpuView> gpu = makeGpuView(spec, *ctx, o);
     for (double scale : {1.0, 6.0}) {
@@ -354,8 +355,9 @@ TEST(Export, LeanGraphExportsTheSlopesCovariance) {
 // before stochtex_sample.
 TEST(Export, LeanProgramIncludeLinksLitByTheEnginesLight) {
     auto ctx = GlContext::headless();
-    const GLuint vs = compile(GL_VERTEX_SHADER,
-                              "#version 330 core\nout vec2 uv;\nvoid main() { uv = vec2(0.5); gl_Position = vec4(0.0); }\n");
+    const GLuint vs =
+        compile(GL_VERTEX_SHADER,
+                "#version 330 core\nout vec2 uv;\nvoid main() { uv = vec2(0.5); gl_Position = vec4(0.0); }\n");
     const GraphPattern lean = GraphPattern::build(loadPreset("lean-ridges"), {ResponseKind::Lean});
     ASSERT_TRUE(lean.shadesLight());
     const GLuint fs_ = compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + exportedGraphInclude(lean) +
@@ -397,15 +399,22 @@ TEST(Export, SampleGradTakesTheFootprintFromItsArguments) {
     const Image fragment = renderFromExport(dir, 64, 48, 3.0);
     const Image given = renderFromExport(dir, 64, 48, 3.0, grad("1.0"));
     const Image wider = renderFromExport(dir, 64, 48, 3.0, grad("8.0"));
-    double same = 0, changed = 0;
+    // Triplanar on the plane z = 0 facing +z: only the xy projection, the pattern at uv = (x, y).
+    const Image planar = renderFromExport(
+        dir, 64, 48, 3.0, "stochtex_sample_triplanar(vec3(gl_FragCoord.xy * " + s + ", 0.0), vec3(0.0, 0.0, 2.0))");
+    double same = 0, changed = 0, triplanar = 0;
     for (size_t i = 0; i < fragment.data().size(); ++i) {
         same = std::max(same, double(std::abs(fragment.data()[i] - given.data()[i])));
         changed += std::abs(fragment.data()[i] - wider.data()[i]) / double(fragment.data().size());
+        triplanar = std::max(triplanar, double(std::abs(fragment.data()[i] - planar.data()[i])));
     }
-    std::printf("[ info ] stochtex_sample_grad: max |Δ| %.2e with the fragment's derivatives, mean |Δ| %.3f at 8×\n",
-                same, changed);
+    std::printf(
+        "[ info ] stochtex_sample_grad: max |Δ| %.2e with the fragment's derivatives, mean |Δ| %.3f at 8×; "
+        "triplanar on a plane: max |Δ| %.2e\n",
+        same, changed, triplanar);
     EXPECT_LT(same, 1e-5);
     EXPECT_GT(changed, 0.02);
+    EXPECT_LT(triplanar, 1e-5);
     fs::remove_all(dir);
 }
 
@@ -436,13 +445,15 @@ TEST(Export, IncludeIsVulkanGlslWithABindingPerResource) {
             EXPECT_TRUE(bindings.insert(b).second) << name << ": binding " << b << " twice";
             EXPECT_NE(include.find("STOCHTEX_BINDING(" + std::to_string(b) + ") uniform sampler"), std::string::npos);
         }
-        std::ofstream(dir / "probe.frag") << "#version 450\n" << include
+        std::ofstream(dir / "probe.frag") << "#version 450\n"
+                                          << include
                                           << "layout(location = 0) in vec2 vUv;\n"
                                              "layout(location = 0) out vec4 colour;\n"
                                              "void main() { colour = stochtex_sample(vUv) + "
-                                             "stochtex_sample_grad(vUv, vec2(0.01, 0.0), vec2(0.0, 0.01)); }\n";
-        const auto [compiled, log] = run("glslangValidator -V " + (dir / "probe.frag").string() + " -o " +
-                                         (dir / "probe.spv").string());
+                                             "stochtex_sample_grad(vUv, vec2(0.01, 0.0), vec2(0.0, 0.01)) + "
+                                             "stochtex_sample_triplanar(vec3(vUv, 1.0), vec3(0.0, 1.0, 0.0)); }\n";
+        const auto [compiled, log] =
+            run("glslangValidator -V " + (dir / "probe.frag").string() + " -o " + (dir / "probe.spv").string());
         EXPECT_EQ(compiled, 0) << name << ":\n" << log;
         const auto [valid, validLog] = run("spirv-val --target-env vulkan1.0 " + (dir / "probe.spv").string());
         EXPECT_EQ(valid, 0) << name << ":\n" << validLog;

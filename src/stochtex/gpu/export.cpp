@@ -30,7 +30,10 @@ const char* kIncludeHeader =
     "// Entry points, uv in example periods: vec4 stochtex_sample(vec2 uv), its footprint\n"
     "// from this fragment's derivatives of uv; vec4 stochtex_sample_grad(vec2 uv, vec2 ddx,\n"
     "// vec2 ddy), the footprint from explicit derivatives (as textureGrad: compute,\n"
-    "// deferred or ray-traced shading). Both return LINEAR-light RGB (not sRGB codes):\n"
+    "// deferred or ray-traced shading); for surfaces without uv, vec4\n"
+    "// stochtex_sample_triplanar(vec3 p, vec3 n) and stochtex_sample_triplanar_grad(p, n,\n"
+    "// dpdx, dpdy), p in example periods (three projections blended by the normal n,\n"
+    "// each filtered with its own footprint). All return LINEAR-light RGB (not sRGB codes):\n"
     "// draw into an sRGB framebuffer (GL_FRAMEBUFFER_SRGB) or encode it before display.\n"
     "// The textures to bind (manifest.json's \"textures\", each with its Vulkan \"binding\")\n"
     "// and the PatternParameters block to fill (binding 0) are described in README.md.\n\n"
@@ -46,7 +49,12 @@ const char* kIncludeHeader =
 
 const char* kSampleFunction =
     "vec4 stochtex_sample_grad(vec2 uv, vec2 ddx, vec2 ddy) { return vec4(filteredColour(uv, ddx, ddy), 1.0); }\n"
-    "vec4 stochtex_sample(vec2 uv) { return stochtex_sample_grad(uv, dFdx(uv), dFdy(uv)); }\n";
+    "vec4 stochtex_sample(vec2 uv) { return stochtex_sample_grad(uv, dFdx(uv), dFdy(uv)); }\n"
+    "vec4 stochtex_sample_triplanar_grad(vec3 p, vec3 n, vec3 dpdx, vec3 dpdy) {\n"
+    "    return vec4(triplanarColour(p, n, dpdx, dpdy, true), 1.0);\n"
+    "}\n"
+    "vec4 stochtex_sample_triplanar(vec3 p, vec3 n) { return stochtex_sample_triplanar_grad(p, n, dFdx(p), dFdy(p)); "
+    "}\n";
 
 }  // namespace
 
@@ -168,7 +176,11 @@ void main() { colour = stochtex_sample(vUv * 8.0); }
 Where the fragment's derivatives are not the footprint (a compute shader, a
 deferred or ray-traced pass), give them: `stochtex_sample_grad(uv, ddx,
 ddy)`, with ddx and ddy the change of uv over one pixel along x and y (as
-`textureGrad` takes them). For Vulkan, compile `#version 450` with the
+`textureGrad` takes them). On a surface without texture coordinates,
+`stochtex_sample_triplanar(p, n)` projects the pattern along x, y and z (p
+in example periods, n the normal; each projection filtered with its own
+footprint, blended by n's components to the fourth power);
+`stochtex_sample_triplanar_grad(p, n, dpdx, dpdy)` takes p's derivatives. For Vulkan, compile `#version 450` with the
 include for SPIR-V (`glslangValidator -V`, which defines `VULKAN`): every
 block and sampler then has `layout(set = 0, binding = n)`; define
 `STOCHTEX_BINDING(n)` before the include to choose another set or offset.
@@ -319,7 +331,9 @@ void writeDescription(const std::string& dir, nlohmann::json& m, const std::stri
         {"`manifest.json`", "JSON (UTF-8)", "parameters, the textures to bind and the lists of data files"});
     writeFileAtomic((fs::path(dir) / "stochtex.glsl").string(), include);
     files.push_back({"`stochtex.glsl`", "GLSL 3.30 core / ES 3.00 / Vulkan GLSL 4.50 source, no `#version` line",
-                     "`vec4 stochtex_sample(vec2 uv)`, `stochtex_sample_grad(uv, ddx, ddy)` and what they call"});
+                     "`vec4 stochtex_sample(vec2 uv)`, `stochtex_sample_grad(uv, ddx, ddy)`, "
+                     "`stochtex_sample_triplanar(p, n)`, `stochtex_sample_triplanar_grad(p, n, dpdx, dpdy)` and what "
+                     "they call"});
     files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
     writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], shading, include));
 }

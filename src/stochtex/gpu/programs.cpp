@@ -16,15 +16,30 @@ const std::vector<ProgramRecipe>& programRecipes() {
     const std::string& G = kPrefilteredLookupChunk;
     static const std::vector<ProgramRecipe> recipes = {
         {"display", K::Graphics, {"fullscreen"}, {"display"}},  // a render target in a window, sRGB-encoded
-        {"graph", K::Graphics, {"fullscreen"}, {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "pattern"}},
-        {"graph-filtered", K::Graphics, {"fullscreen"},
+        {"graph",
+         K::Graphics,
+         {"fullscreen"},
+         {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "pattern"}},
+        {"graph-filtered",
+         K::Graphics,
+         {"fullscreen"},
          {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "filtered"}},
-        {"graph-compute", K::Compute, {},
+        {"graph-compute",
+         K::Compute,
+         {},
          {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "kernel_unfiltered", "view_kernel"}},
-        {"graph-filtered-compute", K::Compute, {},
+        {"graph-filtered-compute",
+         K::Compute,
+         {},
          {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "kernel_filtered", "view_kernel"}},
-        {"graph-scene", K::Graphics, {"mesh"}, {"common", "filtering", G, "graph_ops", kGraphProgramStem, "scene"}},
-        {"export-graph-include", K::Include, {}, {"common", "filtering", G, "graph_ops", kGraphProgramStem}},
+        {"graph-scene",
+         K::Graphics,
+         {"mesh"},
+         {"common", "filtering", G, "graph_ops", kGraphProgramStem, "triplanar", "scene"}},
+        {"export-graph-include",
+         K::Include,
+         {},
+         {"common", "filtering", G, "graph_ops", kGraphProgramStem, "triplanar"}},
     };
     return recipes;
 }
@@ -38,8 +53,7 @@ const ProgramRecipe& programRecipe(const std::string& name) {
 gl::Program buildProgram(const std::string& name, const std::vector<std::pair<std::string, std::string>>& generated) {
     const ProgramRecipe& r = programRecipe(name);
     switch (r.kind) {
-        case ProgramRecipe::Kind::Graphics:
-            return gl::Program(compileProgram(r.vertex, r.main, generated));
+        case ProgramRecipe::Kind::Graphics: return gl::Program(compileProgram(r.vertex, r.main, generated));
         case ProgramRecipe::Kind::Compute: return gl::Program(compileComputeProgram(r.main, generated));
         case ProgramRecipe::Kind::Include: break;
     }

@@ -15,23 +15,6 @@ layout(location = 0) out vec4 fragColour;
 uniform bool uShadesLight;  // the program lights its own colour (GpuView::shadesLight): it is the whole colour
 uniform bool uTriplanar;    // three projections along the axes instead of the mesh's uv
 
-// The pattern's colour at uv with the footprint of uv's screen derivatives.
-vec3 surfaceColour(vec2 uv) { return uFiltered ? filteredColour(uv, dFdx(uv), dFdy(uv)) : unfilteredColour(uv); }
-
-// Triplanar mapping (meshes without uv): the pattern projected along x, y
-// and z (uv = the other two coordinates × uTiling / 2: uTiling periods
-// across the object's 2-unit size), each filtered with its own footprint,
-// blended by the normal's components to the fourth power (sharp seams
-// where a projection stretches). The three are evaluated in uniform
-// control flow, as their derivatives need.
-vec3 triplanarColour(vec3 p, vec3 n) {
-    vec3 w = pow(abs(n), vec3(4.0));
-    w /= w.x + w.y + w.z;
-    float s = 0.5 * uTiling;
-    vec3 cx = surfaceColour(p.zy * s), cy = surfaceColour(p.xz * s), cz = surfaceColour(p.xy * s);
-    return cx * w.x + cy * w.y + cz * w.z;
-}
-
 // Light and eye in the surface's tangent frame for the lean response: T
 // along ∂p/∂u (from the screen derivatives of position and uv), the normal
 // n as z, B = n × T, so that the normal map's slopes tilt the surface about
@@ -61,7 +44,9 @@ void main() {
         fragColour = vec4(leanShaded(uv, jx, jy, n, v), 1.0);
         return;
     }
-    vec3 albedo = uTriplanar ? triplanarColour(vWorld, normalize(vNormal))
+    // Triplanar (triplanar.glsl): uTiling periods across the object's 2-unit size.
+    vec3 p = vWorld * (0.5 * uTiling);
+    vec3 albedo = uTriplanar ? triplanarColour(p, vNormal, dFdx(p), dFdy(p), uFiltered)
                              : (uFiltered ? filteredColour(uv, jx, jy) : unfilteredColour(uv));
     vec3 h = normalize(uLight + v);
     float diffuse = max(dot(n, uLight), 0.0);
