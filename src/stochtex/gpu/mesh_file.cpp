@@ -75,36 +75,51 @@ Corners readObj(const std::string& path) {
     return c;
 }
 
-// The `count` elements of `components` floats of a glTF accessor (float, or
-// normalised unsigned bytes/shorts for texture coordinates).
-std::vector<float> accessorFloats(const std::string& path, const tinygltf::Model& m, int index, int components) {
+// A glTF accessor's elements as bytes, element i at data + i·stride, each
+// of `components` components of componentBytes, once every element is
+// checked to lie inside its buffer view and buffer. what: "an attribute"
+// or "indices", for the message.
+struct AccessorBytes {
+    const unsigned char* data;
+    size_t stride, count;
+    int componentType, componentBytes;
+};
+AccessorBytes accessorBytes(const std::string& path, const tinygltf::Model& m, int index, int components,
+                            const std::string& what) {
     if (index < 0 || size_t(index) >= m.accessors.size())
         throw InputError(path + ": an accessor index is out of range");
     const tinygltf::Accessor& a = m.accessors[size_t(index)];
-    if (tinygltf::GetNumComponentsInType(uint32_t(a.type)) != components)
-        throw InputError(path + ": an attribute has " +
-                         std::to_string(tinygltf::GetNumComponentsInType(uint32_t(a.type))) + " components, expected " +
+    const int found = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+    if (found != components)
+        throw InputError(path + ": " + what + " of " + std::to_string(found) + " components, expected " +
                          std::to_string(components));
     if (a.bufferView < 0 || size_t(a.bufferView) >= m.bufferViews.size())
-        throw InputError(path + ": an accessor without data (sparse accessors are not read)");
+        throw InputError(path + ": " + what + " without data (sparse accessors are not read)");
     const tinygltf::BufferView& view = m.bufferViews[size_t(a.bufferView)];
     if (view.buffer < 0 || size_t(view.buffer) >= m.buffers.size())
         throw InputError(path + ": a buffer index is out of range");
     const std::vector<unsigned char>& data = m.buffers[size_t(view.buffer)].data;
     const int componentBytes = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    if (componentBytes <= 0) throw InputError(path + ": an accessor of an unknown component type");
+    if (componentBytes <= 0) throw InputError(path + ": " + what + " of an unknown component type");
     const size_t element = size_t(componentBytes) * size_t(components);
     const size_t stride = view.byteStride ? view.byteStride : element;
     const size_t start = view.byteOffset + a.byteOffset;
     if (a.count == 0 || stride < element || start + stride * (a.count - 1) + element > data.size() ||
         a.byteOffset + stride * (a.count - 1) + element > view.byteLength)
-        throw InputError(path + ": an accessor reads past its buffer");
-    std::vector<float> out(a.count * size_t(components));
-    for (size_t i = 0; i < a.count; ++i)
+        throw InputError(path + ": " + what + " read past their buffer");
+    return {data.data() + start, stride, a.count, a.componentType, componentBytes};
+}
+
+// An attribute's elements of `components` floats (float, or normalised
+// unsigned bytes or shorts for texture coordinates).
+std::vector<float> accessorFloats(const std::string& path, const tinygltf::Model& m, int index, int components) {
+    const AccessorBytes b = accessorBytes(path, m, index, components, "an attribute");
+    std::vector<float> out(b.count * size_t(components));
+    for (size_t i = 0; i < b.count; ++i)
         for (int k = 0; k < components; ++k) {
-            const unsigned char* p = data.data() + start + i * stride + size_t(k * componentBytes);
+            const unsigned char* p = b.data + i * b.stride + size_t(k * b.componentBytes);
             float v = 0;
-            switch (a.componentType) {
+            switch (b.componentType) {
                 case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&v, p, 4); break;
                 case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = float(*p) / 255.0f; break;
                 case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
@@ -120,25 +135,17 @@ std::vector<float> accessorFloats(const std::string& path, const tinygltf::Model
     return out;
 }
 
+// A primitive's indices: unsigned bytes, shorts or ints.
 std::vector<uint32_t> accessorIndices(const std::string& path, const tinygltf::Model& m, int index) {
-    const tinygltf::Accessor& a = m.accessors.at(size_t(index));
-    if (a.type != TINYGLTF_TYPE_SCALAR) throw InputError(path + ": indices are not scalars");
-    if (a.bufferView < 0 || size_t(a.bufferView) >= m.bufferViews.size())
-        throw InputError(path + ": indices without data");
-    const tinygltf::BufferView& view = m.bufferViews[size_t(a.bufferView)];
-    if (view.buffer < 0 || size_t(view.buffer) >= m.buffers.size())
-        throw InputError(path + ": a buffer index is out of range");
-    const std::vector<unsigned char>& data = m.buffers[size_t(view.buffer)].data;
-    const int bytes = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    if (bytes != 1 && bytes != 2 && bytes != 4) throw InputError(path + ": indices of an unknown type");
-    const size_t stride = view.byteStride ? view.byteStride : size_t(bytes);
-    const size_t start = view.byteOffset + a.byteOffset;
-    if (a.count == 0 || start + stride * (a.count - 1) + size_t(bytes) > data.size())
-        throw InputError(path + ": indices read past their buffer");
-    std::vector<uint32_t> out(a.count);
-    for (size_t i = 0; i < a.count; ++i) {
+    const AccessorBytes b = accessorBytes(path, m, index, 1, "indices");
+    if (b.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        b.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        b.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        throw InputError(path + ": indices are not unsigned integers");
+    std::vector<uint32_t> out(b.count);
+    for (size_t i = 0; i < b.count; ++i) {
         uint32_t v = 0;
-        std::memcpy(&v, data.data() + start + i * stride, size_t(bytes));  // little-endian, as glTF
+        std::memcpy(&v, b.data + i * b.stride, size_t(b.componentBytes));  // little-endian, as glTF
         out[i] = v;
     }
     return out;

@@ -7,31 +7,31 @@
 
 namespace stochtex {
 
-Camera bandCamera(const Camera& whole, int y0, int rows) {
+namespace {
+
+// Pixels [first, first + count) of a zoom view along its rows or columns
+// as a view of their own: its size `count` along that axis, its offset
+// moved by `first` pixels.
+Camera partCamera(const Camera& whole, bool rows, int first, int count) {
     if (whole.kind != Camera::Kind::Zoom)
-        throw InputError::parameter("camera",
-                                    "bands are rows of a zoom view (a plane camera's frame is rendered whole)");
-    if (y0 < 0 || rows < 1 || rows > whole.view.height - y0)
-        throw InputError::parameter("rows", "rows " + std::to_string(y0) + "–" + std::to_string(y0 + rows) +
-                                                " are not inside the view's " + std::to_string(whole.view.height));
-    Camera band = whole;
-    band.view.height = rows;
-    band.view.offsetV = whole.view.offsetV + y0 * whole.view.scale;
-    return band;
+        throw InputError::parameter("camera", std::string(rows ? "bands are rows" : "tiles are columns") +
+                                                  " of a zoom view (a plane camera's frame is rendered whole)");
+    const std::string what = rows ? "rows" : "columns";
+    const int size = rows ? whole.view.height : whole.view.width;
+    if (first < 0 || count < 1 || count > size - first)
+        throw InputError::parameter(what, what + " " + std::to_string(first) + "–" + std::to_string(first + count) +
+                                              " are not inside the view's " + std::to_string(size));
+    Camera part = whole;
+    (rows ? part.view.height : part.view.width) = count;
+    (rows ? part.view.offsetV : part.view.offsetU) += first * whole.view.scale;
+    return part;
 }
 
-Camera columnCamera(const Camera& whole, int x0, int columns) {
-    if (whole.kind != Camera::Kind::Zoom)
-        throw InputError::parameter("camera",
-                                    "tiles are columns of a zoom view (a plane camera's frame is rendered whole)");
-    if (x0 < 0 || columns < 1 || columns > whole.view.width - x0)
-        throw InputError::parameter("columns", "columns " + std::to_string(x0) + "–" + std::to_string(x0 + columns) +
-                                                   " are not inside the view's " + std::to_string(whole.view.width));
-    Camera tile = whole;
-    tile.view.width = columns;
-    tile.view.offsetU = whole.view.offsetU + x0 * whole.view.scale;
-    return tile;
-}
+}  // namespace
+
+Camera bandCamera(const Camera& whole, int y0, int rows) { return partCamera(whole, true, y0, rows); }
+
+Camera columnCamera(const Camera& whole, int x0, int columns) { return partCamera(whole, false, x0, columns); }
 
 Image renderRows(const ViewRenderer& renderer, const Camera& whole, int y0, int rows, const Progress& progress) {
     const Camera band = bandCamera(whole, y0, rows);
