@@ -118,6 +118,39 @@ TEST(MeshFile, GltfNodesTransformItsPrimitives) {
     EXPECT_EQ(second[7], 0.0f);  // the file's v = 1
 }
 
+// Under a non-uniform scale a normal is not carried as a direction: the
+// quad tilted 45° about x in a node scaled (1, 3, 1) keeps its normals
+// perpendicular to its edges (the linear part's inverse transpose).
+TEST(MeshFile, GltfNormalsStayPerpendicularUnderANonUniformScale) {
+    const float data[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+    const uint16_t indices[] = {0, 1, 2, 0, 2, 3};
+    std::string bin(reinterpret_cast<const char*>(data), sizeof data);
+    bin += std::string(reinterpret_cast<const char*>(indices), sizeof indices);
+    writeFile("tilted.bin", bin);
+    const std::string gltf = R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
+      "nodes": [{"scale": [1, 3, 1], "children": [1]}, {"mesh": 0, "rotation": [0.38268343, 0, 0, 0.92387953]}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2}]}],
+      "buffers": [{"uri": "tilted.bin", "byteLength": 108}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 12}],
+      "accessors": [
+        {"bufferView": 0, "byteOffset": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+        {"bufferView": 0, "byteOffset": 48, "componentType": 5126, "count": 4, "type": "VEC3"},
+        {"bufferView": 1, "byteOffset": 0, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
+    const LoadedMesh m = loadMesh(writeFile("tilted.gltf", gltf).string());
+    EXPECT_FALSE(m.hasUv);
+    ASSERT_EQ(m.mesh.indices.size(), 6u);
+    const auto vertex = [&](size_t k) { return &m.mesh.vertices[k * Mesh::kStride]; };
+    for (size_t k = 0; k < 6; ++k) {
+        const float* n = vertex(k) + 3;
+        for (const size_t other : {size_t(1), size_t(2)}) {  // the edges from corner 0 of the first triangle
+            const float* a = vertex(0);
+            const float* b = vertex(other);
+            const float dot = n[0] * (b[0] - a[0]) + n[1] * (b[1] - a[1]) + n[2] * (b[2] - a[2]);
+            EXPECT_NEAR(dot, 0.0f, 1e-5f) << k;
+        }
+    }
+}
+
 TEST(MeshFile, BadFilesAreRefusedNamingThem) {
     const auto refusal = [](const fs::path& p) {
         return std::string(test::inputErrorOf([&] { loadMesh(p.string()); }).what());

@@ -247,6 +247,23 @@ Corners readGltf(const std::string& path, bool binary) {
                                        transform[size_t(8 + r)] * p[2] + transform[size_t(12 + r)] * w);
             return out;
         };
+        // Normals by the cofactor matrix of the linear part (its inverse
+        // transpose times the determinant, the determinant's sign undone):
+        // right under non-uniform scales; lengths are normalised later.
+        const auto at = [&](int r, int c) { return transform[size_t(((c % 3) * 4) + (r % 3))]; };
+        std::array<double, 9> cofactor{};
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c)
+                cofactor[size_t(r * 3 + c)] = at(r + 1, c + 1) * at(r + 2, c + 2) - at(r + 1, c + 2) * at(r + 2, c + 1);
+        const double det = at(0, 0) * cofactor[0] + at(0, 1) * cofactor[1] + at(0, 2) * cofactor[2];
+        const double sign = det < 0 ? -1.0 : 1.0;
+        const auto normal = [&](const float* v) {
+            Vec3 out{};
+            for (int r = 0; r < 3; ++r)
+                out[size_t(r)] = float(sign * (cofactor[size_t(r * 3)] * v[0] + cofactor[size_t(r * 3 + 1)] * v[1] +
+                                               cofactor[size_t(r * 3 + 2)] * v[2]));
+            return out;
+        };
         for (const tinygltf::Primitive& prim : mesh.primitives) {
             if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) continue;  // points and lines: no surface
             const auto position = prim.attributes.find("POSITION");
@@ -274,7 +291,7 @@ Corners readGltf(const std::string& path, bool binary) {
                     if (v >= vertices) throw InputError(path + ": an index refers to a vertex the mesh does not have");
                     c.position.push_back(first + v);
                     if (n.size() == 3 * vertices) {
-                        c.normal.push_back(point(&n[3 * v], 0.0));  // (exact for rotations and uniform scales)
+                        c.normal.push_back(normal(&n[3 * v]));
                     } else {
                         c.hasNormals = false;
                         c.normal.push_back({0, 0, 0});
