@@ -234,7 +234,8 @@ std::vector<std::pair<std::string, int>> declaredSamplers(const std::string& inc
 // list: the unfiltered path's, which stochtex_sample never calls.
 std::vector<std::string> unlistedSamplers(const std::string& include, const nlohmann::json& textures) {
     std::vector<std::string> out;
-    for (const auto& [name, binding] : declaredSamplers(include)) {
+    for (const auto& sampler : declaredSamplers(include)) {
+        const std::string& name = sampler.first;  // (clang 14 captures no structured binding)
         const bool listed = std::any_of(textures.begin(), textures.end(),
                                         [&](const nlohmann::json& t) { return t["uniform"] == name; });
         if (!listed) out.push_back(name);
