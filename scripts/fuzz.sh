@@ -18,7 +18,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(pattern_json noise_spec colormap_spec image pipeline graph shadertoy_manifest)
+[ ${#targets[@]} -eq 0 ] && targets=(pattern_json noise_spec colormap_spec image pipeline graph shadertoy_manifest mesh)
 build=${BUILD_DIR:-build-fuzz}
 cxx=${CXX:-clang++-14}
 

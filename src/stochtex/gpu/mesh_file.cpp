@@ -353,13 +353,18 @@ LoadedMesh loadMesh(const std::string& path) {
         throw InputError(path + ": mesh file larger than " + std::to_string(kMaxMeshFileBytes >> 20) + " MB");
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
-    Corners c;
-    if (ext == ".obj")
-        c = readObj(path);
-    else if (ext == ".gltf" || ext == ".glb")
-        c = readGltf(path, ext == ".glb");
-    else
+    if (ext != ".obj" && ext != ".gltf" && ext != ".glb")
         throw InputError(path + ": unknown mesh format '" + ext + "' (use .obj, .gltf or .glb)");
+    if (bytes == 0) throw InputError(path + ": empty mesh file");
+    Corners c;
+    try {
+        c = ext == ".obj" ? readObj(path) : readGltf(path, ext == ".glb");
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        // The parsers' own checks (tinygltf indexes some vectors with at()).
+        throw InputError(path + ": not a readable mesh file (" + e.what() + ")");
+    }
     if (c.position.size() < 3) throw InputError(path + ": the mesh has no triangles");
     // Centred on its bounding box, scaled to a half-diagonal of 1.
     Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
