@@ -21,6 +21,7 @@ void registerBake(CLI::App& app) {
         ResponseFlags response;
         std::string dir;
         TablePrecision precision = TablePrecision::Half;
+        ExportFormat format = ExportFormat::Float;
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("bake",
@@ -33,16 +34,26 @@ void registerBake(CLI::App& app) {
     addAnisoFlag(*cmd, args->options.aniso);
     addEstimatorFlag(*cmd, args->options);
     addResponseFlags(*cmd, args->response);
-    addEnumFlag(*cmd, "--table-precision", args->precision, kTablePrecisionNames, "tablePrecision",
-                "half (half the size, error <= 0.06/255) | float (bit-exact with render --gpu)");
-    cmd->callback([args, cmd] {
+    addEnumFlag(*cmd, "--format", args->format, kExportFormatNames, "format",
+                "float | half | 8bit: the data's storage (the paper's 8-bit layout: pyramids RGBA8 per leaf pair, "
+                "tables sRGB8); each format's measured accuracy is in the export's README");
+    CLI::Option* precisionFlag =
+        addEnumFlag(*cmd, "--table-precision", args->precision, kTablePrecisionNames, "tablePrecision",
+                    "with --format float: half (half the size, error <= 0.06/255) | float (bit-exact with render "
+                    "--gpu)");
+    cmd->callback([args, cmd, precisionFlag] {
         applyResponseFlags(*cmd, args->response, args->options);
+        if (precisionFlag->count() > 0 && args->format != ExportFormat::Float)
+            refuseOption(*cmd, "--table-precision",
+                         "applies to --format float only, got --format " + enumName(kExportFormatNames, args->format));
         ExportOptions e;
+        e.format = args->format;
         e.halfTable = args->precision == TablePrecision::Half;
         const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         exportPatternSpec(spec, args->options, args->dir, e);
-        std::printf("exported %s (filter %s) to %s: manifest.json, stochtex.glsl, README.md and the data\n",
-                    spec.name.c_str(), filterLabel(args->options).c_str(), args->dir.c_str());
+        std::printf("exported %s (filter %s, %s data) to %s: manifest.json, stochtex.glsl, README.md and the data\n",
+                    spec.name.c_str(), filterLabel(args->options).c_str(),
+                    enumName(kExportFormatNames, args->format).c_str(), args->dir.c_str());
     });
 }
 

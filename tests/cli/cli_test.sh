@@ -736,6 +736,14 @@ case_bake() {
                    for (i = 1; i <= n; i++) if (($i - w[i]) ^ 2 > 1e-12) exit 1; found = 1 } END { exit !found }' ||
     fail "bake lean: no lean op with the file's shading"
   grep -q "gLightDirection" "$out/bakelean/README.md" || fail "bake lean: README lacks how to light it"
+  # The paper's 8-bit layout: one RGBA8 PNG per leaf pair and level, the table as sRGB codes, the codes in the manifest.
+  expect_ok "bake 8bit" "$out/bake8/stats_0_0.png" -- "$bin" bake --preset weld --filter paper --format 8bit -o "$out/bake8"
+  [ -s "$out/bake8/table_0.png" ] || fail "bake 8bit: no PNG table"
+  ls "$out/bake8"/*.exr >/dev/null 2>&1 && fail "bake 8bit: an EXR was written"
+  grep -q '"format": "8bit"' "$out/bake8/manifest.json" || fail "bake 8bit: manifest lacks the format"
+  grep -q '"format": "SRGB8"' "$out/bake8/manifest.json" || fail "bake 8bit: manifest lacks the table's GL format"
+  grep -q "StatsCoding(offset0\[level\]" "$out/bake8/stochtex.glsl" || fail "bake 8bit: the include lacks the codes"
+  expect_bad "bake --table-precision with --format half" "$out/bakeh" "--table-precision: applies to --format float only" -- "$bin" bake --preset weld --format half --table-precision float -o "$out/bakeh"
 }
 
 case_bake_image() {

@@ -4,7 +4,9 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +15,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <set>
 #include <sstream>
 
@@ -60,7 +63,7 @@ std::vector<std::uint8_t> parameterBlock(const std::string& readme, const nlohma
         {"invExampleSize", {f(1.0f / m["example_size"].get<float>())}},
         {"aniso", {i(m["aniso"].get<int>())}},
         {"smoothTable", {i(m["filter"] == "smooth")}},
-        {"tableLevels", {i(m["table"]["levels"].get<int>())}},
+        {"tableLevels", {i(m.contains("table") ? m["table"]["levels"].get<int>() : 0)}},  // a lean program has none
         {"spare0", {0}},
         {"spare1", {0}},
         {"spare2", {0}},
@@ -108,38 +111,68 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale,
     glAttachShader(prog, fs_);
     glLinkProgram(prog);
     glUseProgram(prog);
-    // Every sampler of manifest.json's "textures", each on a unit of its own.
-    auto pyramid = [&](const nlohmann::json& files) {
-        GLuint t = 0;
-        glGenTextures(1, &t);
-        glBindTexture(GL_TEXTURE_2D, t);
+    // Every sampler of manifest.json's "textures", each on a unit of its own,
+    // uploaded in the GL format the manifest names: float files as floats,
+    // 8-bit files as their codes.
+    const auto upload = [&](GLenum target, GLint level, const std::string& format, const Image& img, int width,
+                            int height, int depth) {
+        const std::map<std::string, std::pair<GLint, int>> formats = {
+            {"RG32F", {GL_RG32F, 2}},   {"RG16F", {GL_RG16F, 2}}, {"RGBA8", {GL_RGBA8, 4}}, {"RGB32F", {GL_RGB32F, 3}},
+            {"RGB16F", {GL_RGB16F, 3}}, {"SRGB8", {GL_SRGB8, 3}}, {"RGB16", {GL_RGB16, 3}}};
+        const auto it = formats.find(format);
+        EXPECT_NE(it, formats.end()) << "unknown format " << format;
+        if (it == formats.end()) return;
+        const auto [internal, channels] = it->second;
+        const GLenum layout = channels == 2 ? GL_RG : channels == 3 ? GL_RGB : GL_RGBA;
+        EXPECT_GE(img.channels(), channels) << format;
+        const bool bytes = format == "RGBA8" || format == "SRGB8", shorts = format == "RGB16";
+        std::vector<float> values(img.pixelCount() * size_t(channels));
+        std::vector<std::uint8_t> codes(bytes ? values.size() : 0);
+        std::vector<std::uint16_t> codes16(shorts ? values.size() : 0);
+        for (size_t i = 0; i < img.pixelCount(); ++i)
+            for (size_t c = 0; c < size_t(channels); ++c) {
+                const float v = img.data()[size_t(img.channels()) * i + c];
+                values[size_t(channels) * i + c] = v;
+                if (bytes) codes[size_t(channels) * i + c] = std::uint8_t(std::lround(v * 255.0f));
+                if (shorts) codes16[size_t(channels) * i + c] = std::uint16_t(std::lround(v * 65535.0f));
+            }
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        const GLenum type = bytes ? GL_UNSIGNED_BYTE : shorts ? GL_UNSIGNED_SHORT : GL_FLOAT;
+        const void* data = bytes    ? static_cast<const void*>(codes.data())
+                           : shorts ? static_cast<const void*>(codes16.data())
+                                    : static_cast<const void*>(values.data());
+        if (target == GL_TEXTURE_2D_ARRAY)
+            glTexImage3D(target, level, internal, width, height, depth, 0, layout, type, data);
+        else
+            glTexImage2D(target, level, internal, width, height, 0, layout, type, data);
+    };
+    auto pyramid = [&](const nlohmann::json& t) {
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        glBindTexture(GL_TEXTURE_2D, id);
+        const nlohmann::json& files = t["files"];
         for (size_t l = 0; l < files.size(); ++l) {
             const Image img = readImage((dir / files[l].get<std::string>()).string());
-            std::vector<float> rg(img.pixelCount() * 2);
-            for (size_t i = 0; i < img.pixelCount(); ++i) {
-                rg[2 * i] = img.data()[3 * i];
-                rg[2 * i + 1] = img.data()[3 * i + 1];
-            }
-            glTexImage2D(GL_TEXTURE_2D, GLint(l), GL_RG32F, img.width(), img.height(), 0, GL_RG, GL_FLOAT, rg.data());
+            upload(GL_TEXTURE_2D, GLint(l), t["format"], img, img.width(), img.height(), 1);
         }
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(files.size()) - 1);
-        return t;
+        return id;
     };
     auto table = [&](const nlohmann::json& t) {
         const Image atlas = readImage((dir / t["file"].get<std::string>()).string());
         GLuint id = 0;
         glGenTextures(1, &id);
         glBindTexture(GL_TEXTURE_2D_ARRAY, id);
-        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGB32F, t["width"].get<int>(), t["height"].get<int>(),
-                     t["layers"].get<int>(), 0, GL_RGB, GL_FLOAT, atlas.data().data());
+        upload(GL_TEXTURE_2D_ARRAY, 0, t["format"], atlas, t["width"].get<int>(), t["height"].get<int>(),
+               t["layers"].get<int>());
         glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
         return id;
     };
     std::vector<GLuint> textures;
     for (const nlohmann::json& t : m["textures"])  // created on unit 0, then each bound to its own unit
-        textures.push_back(t["kind"] == "table" ? table(t) : pyramid(t["files"]));
+        textures.push_back(t["kind"] == "table" ? table(t) : pyramid(t));
     for (size_t k = 0; k < textures.size(); ++k) {
         const nlohmann::json& t = m["textures"][k];
         glActiveTexture(GLenum(GL_TEXTURE0 + k));
@@ -434,7 +467,10 @@ TEST(Export, IncludeIsVulkanGlslWithABindingPerResource) {
         FilterOptions o;
         o.use(parseFilter("paper"));
         if (std::string(name) == "lean-ridges") o.response.kind = ResponseKind::Lean;
-        exportPatternSpec(loadPreset(name), o, dir.string(), {});
+        // Two in the 8-bit format: its packed pyramids, codes and covariance coding compile too.
+        ExportOptions e;
+        if (std::string(name) == "lean-ridges" || std::string(name) == "figure14") e.format = ExportFormat::Rgba8;
+        exportPatternSpec(loadPreset(name), o, dir.string(), e);
         std::ifstream mf(dir / "manifest.json");
         const nlohmann::json m = nlohmann::json::parse(mf);
         EXPECT_EQ(m["block_binding"], 0);
@@ -459,6 +495,85 @@ TEST(Export, IncludeIsVulkanGlslWithABindingPerResource) {
         EXPECT_EQ(valid, 0) << name << ":\n" << validLog;
     }
     fs::remove_all(dir);
+}
+
+// Each storage format renders within the accuracy kExportFormatAccuracy
+// states (the export README's format table): against the float export with
+// a float table, loaded by the same engine-side code, over presets of each
+// kind (independent and shared offsets, a gaussianized marble, a lean
+// response, a graph of two tables) at 1, 4 and 16 texels per pixel. The
+// 8-bit format must also cost something measurable (its codes do differ)
+// and store its data in under a third of the float export's (its table
+// in half floats, the default) bytes.
+TEST(ExportFormats, RenderWithinTheirStatedAccuracy) {
+    auto ctx = GlContext::headless();
+    struct Case {
+        const char* preset;
+        const char* filter;
+        ResponseKind response;
+    };
+    const Case cases[] = {{"camouflage", "smooth", ResponseKind::PrefilteredColormap},
+                          {"phasor-stripes", "paper", ResponseKind::PrefilteredColormap},
+                          {"marble", "paper", ResponseKind::PrefilteredColormap},
+                          {"lean-ridges", "paper", ResponseKind::Lean},
+                          {"figure14", "smooth", ResponseKind::PrefilteredColormap}};
+    const auto bytesIn = [](const fs::path& dir) {
+        std::uintmax_t bytes = 0;
+        for (const auto& entry : fs::directory_iterator(dir))
+            if (entry.path().extension() == ".exr" || entry.path().extension() == ".png") bytes += entry.file_size();
+        return bytes;
+    };
+    std::map<ExportFormat, double> worstMean;
+    for (const Case& c : cases) {
+        std::map<ExportFormat, std::uintmax_t> bytes;
+        FilterOptions o;
+        o.use(parseFilter(c.filter));
+        o.response.kind = c.response;
+        const PatternSpec spec = loadPreset(c.preset);
+        const auto exportAs = [&](ExportFormat format, bool halfTable) {
+            const fs::path dir = test::scratchPath(std::string("stochtex_format_") + c.preset + "_" +
+                                                   enumName(kExportFormatNames, format) + (halfTable ? "h" : ""));
+            fs::remove_all(dir);
+            ExportOptions e;
+            e.format = format;
+            e.halfTable = halfTable;
+            exportPatternSpec(spec, o, dir.string(), e);
+            return dir;
+        };
+        const fs::path reference = exportAs(ExportFormat::Float, false);
+        const std::array<double, 3> scales{1.0, 4.0, 16.0};
+        std::vector<Image> expectedAt;
+        for (const double scale : scales) expectedAt.push_back(renderFromExport(reference, 96, 80, scale));
+        fs::remove_all(reference);
+        for (const ExportFormatAccuracy& a : kExportFormatAccuracy) {
+            const fs::path dir = exportAs(a.format, true);
+            for (size_t k = 0; k < scales.size(); ++k) {
+                const double scale = scales[k];
+                const Image& expected = expectedAt[k];
+                const Image got = renderFromExport(dir, 96, 80, scale);
+                std::vector<double> diffs(got.data().size());
+                for (size_t i = 0; i < diffs.size(); ++i)
+                    diffs[i] = std::abs(double(got.data()[i]) - double(expected.data()[i]));
+                const double mean = std::accumulate(diffs.begin(), diffs.end(), 0.0) / double(diffs.size());
+                std::sort(diffs.begin(), diffs.end());
+                const double maxDiff = diffs.back(), p99 = diffs[diffs.size() * 99 / 100];
+                worstMean[a.format] = std::max(worstMean[a.format], mean);
+                std::printf("[ info ] %s %s at scale %g: |%s - float| max %.2e, 99%% %.2e, mean %.2e\n", c.preset,
+                            c.filter, scale, enumName(kExportFormatNames, a.format).c_str(), maxDiff, p99, mean);
+                EXPECT_LE(p99, a.p99Error) << c.preset << " " << enumName(kExportFormatNames, a.format) << " " << scale;
+                EXPECT_LE(maxDiff, a.maxError)
+                    << c.preset << " " << enumName(kExportFormatNames, a.format) << " " << scale;
+                EXPECT_LE(mean, a.meanError)
+                    << c.preset << " " << enumName(kExportFormatNames, a.format) << " " << scale;
+            }
+            bytes[a.format] = bytesIn(dir);
+            fs::remove_all(dir);
+        }
+        std::printf("[ info ] %s: data %ju bytes (8bit) vs %ju (float)\n", c.preset, bytes[ExportFormat::Rgba8],
+                    bytes[ExportFormat::Float]);
+        EXPECT_LT(3 * bytes[ExportFormat::Rgba8], bytes[ExportFormat::Float]) << c.preset;
+    }
+    EXPECT_GT(worstMean[ExportFormat::Rgba8], 1e-4) << "the 8-bit codes should cost something measurable";
 }
 
 }  // namespace

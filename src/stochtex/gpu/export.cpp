@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -20,6 +22,21 @@
 namespace stochtex {
 
 namespace fs = std::filesystem;
+
+const EnumNames<ExportFormat> kExportFormatNames{
+    {"float", ExportFormat::Float}, {"half", ExportFormat::Half}, {"8bit", ExportFormat::Rgba8}};
+
+// Bounds ~1.3× the largest of each statistic measured over the test's
+// cases (ExportFormats.RenderWithinTheirStatedAccuracy prints them). The
+// largest errors are single pixels at one texel per pixel on a colormap's
+// steepest edges, where a mean rounded by the format moves the colour most.
+const std::vector<ExportFormatAccuracy> kExportFormatAccuracy{
+    {ExportFormat::Float, "pyramids RG32F (8 bytes per leaf texel), colour tables RGB16F (RGB32F: float table)", 3e-4,
+     2e-4, 6e-5},
+    {ExportFormat::Half, "pyramids RG16F (4 bytes per leaf texel), colour tables RGB16F", 7e-2, 7e-3, 4e-4},
+    {ExportFormat::Rgba8,
+     "pyramids RGBA8 per leaf pair (2 bytes per leaf texel), colour tables SRGB8, field tables RGB16", 0.5, 7e-2, 5e-3},
+};
 
 namespace {
 
@@ -97,20 +114,109 @@ std::string exrFormat(const Image& image, const WriteOptions& w) {
            (w.exrHalf ? "16-bit half float" : "32-bit float") + ", ZIP-compressed scanlines";
 }
 
-// Writes a pyramid's levels as stem_l.exr; their names go into `list`.
+// The README's name for a levelled family of files.
+std::string fileFamily(const nlohmann::json& list) {
+    std::string names;
+    for (const nlohmann::json& f : list) names += (names.empty() ? "`" : ", `") + f.get<std::string>() + "`";
+    return names;
+}
+
+// Writes a pyramid's levels as stem_l.exr (float32, or half with `half`);
+// their names go into `list`.
 void writeStats(const StatsPyramid& p, const std::string& dir, const std::string& stem, nlohmann::json& list,
-                const std::string& green, std::vector<WrittenFile>& files) {
-    std::string names, sizes;
+                const std::string& green, bool half, std::vector<WrittenFile>& files) {
+    std::string sizes;
+    WriteOptions w;
+    w.exrHalf = half;
     for (int l = 0; l < p.levels(); ++l) {
         const std::string file = stem + "_" + std::to_string(l) + ".exr";
         const Image level = p.interleavedLevel(l, 3);  // EXR has no 2-channel layout
-        writeImage((fs::path(dir) / file).string(), level);
+        writeImage((fs::path(dir) / file).string(), level, w);
         list.push_back(file);
-        names += (l ? ", `" : "`") + file + "`";
-        if (l == 0) sizes = exrFormat(level, {});
+        if (l == 0) sizes = exrFormat(level, w);
     }
-    files.push_back({names, sizes + " at level 0, halving per level down to 1 × 1",
+    files.push_back({fileFamily(list), sizes + " at level 0, halving per level down to 1 × 1",
                      "level l of the pyramid: R = mean E_l, G = " + green + ", B = 0 (noise-domain data, linear)"});
+}
+
+// An 8-bit code over a channel's range at one level: the texel holds
+// q/255, q = round(255 (v − lo)/(hi − lo)), and the program decodes
+// lo + (hi − lo)·texel (StatsCoding: affine, so it commutes with the
+// bilinear blend of texels). A constant channel is its offset.
+struct CodedRange {
+    float lo = 0, hi = 0;
+    void include(float v) {
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+    }
+    float code(float v) const { return hi > lo ? std::round(255.0f * (v - lo) / (hi - lo)) / 255.0f : 0.0f; }
+    float scale() const { return hi - lo; }
+};
+
+// Channel c of every texel of `level` (3 interleaved channels).
+CodedRange rangeOf(const Image& level, int c) {
+    CodedRange r{level.data()[size_t(c)], level.data()[size_t(c)]};
+    for (size_t i = 0; i < level.pixelCount(); ++i) r.include(level.data()[3 * i + size_t(c)]);
+    return r;
+}
+
+// The 8-bit (paper) layout of one leaf pair: stem_l.png per level, RGBA8
+// (E_x, E_y, V_x, V_y) coded per level and channel; the codes go into
+// `coding`, the names into `list`.
+void writePackedPair(const StatsPyramid& x, const StatsPyramid& y, const std::string& dir, const std::string& stem,
+                     nlohmann::json& list, std::vector<GraphEstimator::LevelCoding>& coding,
+                     std::vector<WrittenFile>& files) {
+    std::string sizes;
+    for (int l = 0; l < x.levels(); ++l) {
+        const Image ex = x.interleavedLevel(l, 3), ey = y.interleavedLevel(l, 3);
+        const std::array<const Image*, 4> source{&ex, &ey, &ex, &ey};
+        const std::array<int, 4> channel{0, 0, 1, 1};
+        std::array<CodedRange, 4> range;
+        GraphEstimator::LevelCoding& c = coding.emplace_back();
+        for (size_t k = 0; k < 4; ++k) {
+            range[k] = rangeOf(*source[k], channel[k]);
+            c.offset[k] = range[k].lo;
+            c.scale[k] = range[k].scale();
+        }
+        Image packed(ex.width(), ex.height(), 4, Image::Uninitialized{});
+        for (size_t i = 0; i < packed.pixelCount(); ++i)
+            for (size_t k = 0; k < 4; ++k)
+                packed.data()[4 * i + k] = range[k].code(source[k]->data()[3 * i + size_t(channel[k])]);
+        const std::string file = stem + "_" + std::to_string(l) + ".png";
+        writeImage((fs::path(dir) / file).string(), packed, kNoTransfer);
+        list.push_back(file);
+        if (l == 0) sizes = "PNG, " + std::to_string(ex.width()) + " × " + std::to_string(ex.height()) + ", RGBA 8-bit";
+    }
+    files.push_back({fileFamily(list), sizes + " at level 0, halving per level down to 1 × 1",
+                     "level l of the pair's pyramid: R, G = means E_l of its leaves x, y; B, A = their variances "
+                     "V_l; 8-bit codes of noise-domain data (no transfer function), decoded as offset + scale · "
+                     "texel per level and channel (manifest.json's `coding`, constants of `stochtex.glsl`)"});
+}
+
+// A covariance pyramid in the 8-bit format: stem_l.png, G = C_l coded per
+// level (R = the first leaf's E_l, coded too; B = 0, A = 1).
+void writeCodedCovariance(const StatsPyramid& p, const std::string& dir, const std::string& stem, nlohmann::json& list,
+                          std::vector<GraphEstimator::LevelCoding>& coding, std::vector<WrittenFile>& files) {
+    std::string sizes;
+    for (int l = 0; l < p.levels(); ++l) {
+        const Image level = p.interleavedLevel(l, 3);
+        const CodedRange mean = rangeOf(level, 0), covariance = rangeOf(level, 1);
+        coding[size_t(l)].covariance = {covariance.lo, covariance.scale()};
+        Image coded(level.width(), level.height(), 4);
+        for (size_t i = 0; i < coded.pixelCount(); ++i) {
+            coded.data()[4 * i] = mean.code(level.data()[3 * i]);
+            coded.data()[4 * i + 1] = covariance.code(level.data()[3 * i + 1]);
+            coded.data()[4 * i + 3] = 1.0f;
+        }
+        const std::string file = stem + "_" + std::to_string(l) + ".png";
+        writeImage((fs::path(dir) / file).string(), coded, kNoTransfer);
+        list.push_back(file);
+        if (l == 0)
+            sizes = "PNG, " + std::to_string(level.width()) + " × " + std::to_string(level.height()) + ", RGBA 8-bit";
+    }
+    files.push_back({fileFamily(list), sizes + " at level 0, halving per level down to 1 × 1",
+                     "level l of the pair's covariance: G = C_l (R = the first leaf's E_l, B = 0, A = 1); 8-bit codes "
+                     "decoded as offset + scale · texel per level (manifest.json's `coding`)"});
 }
 
 // README.md; @BLOCK@, @SIZE@ and @MEMBERS@ are filled from the parameter
@@ -129,20 +235,40 @@ program. `manifest.json` lists the data.
 `manifest.json`'s `"textures"` lists the same: each sampler uniform with its
 files (`"pyramid"`: one file per mip level; `"table"`: one file of `layers`
 stacked `width × height` layers).
-All are read with `texelFetch` (no filtering needed); set each pyramid's
-`GL_TEXTURE_MAX_LEVEL` to its last mip level (its row above: levels 0…N) so
-that it is mipmap-complete.
+All are read with `texelFetch` (no filtering needed): upload each in the GL
+format its row names (an 8-bit file's codes as they are: `RGBA8` is
+unsigned normalised, `SRGB8` decodes sRGB to linear when read); set each
+pyramid's `GL_TEXTURE_MAX_LEVEL` to its last mip level (its row above:
+levels 0…N) so that it is mipmap-complete.
 @UNREAD@
+## Formats
+
+The data is stored in one of three formats (`manifest.json`: `"format"`),
+chosen when exporting. What each costs against `float` with a float table: the absolute difference of the rendered
+linear RGB, over pixel channels (bounds a test holds every format to, over
+the presets camouflage, phasor-stripes, marble, lean-ridges and the graph
+figure14 at 1, 4 and 16 texels per pixel). The largest differences are
+single pixels at one texel per pixel on a colormap's steepest edges, where
+a rounded mean moves the colour most; 99% of pixels stay within the
+percentile column.
+
+| format | GPU storage | largest | 99th percentile | mean |
+| --- | --- | --- | --- | --- |
+@FORMATS@
+
 ## Colour space
 
-The tables (`table*.exr`) hold linear-light RGB (`manifest.json`: `"colour_space": "linear"`;
+The tables hold linear-light RGB (`manifest.json`: `"colour_space": "linear"`;
 the pattern's sRGB colours were decoded once, before filtering), and
 `stochtex_sample` returns linear RGB: write it to an sRGB framebuffer
 (`GL_FRAMEBUFFER_SRGB`, an `SRGB8_ALPHA8` target) or encode it before display,
-as `stochtex render` does for PNG. Upload the tables as float, never as sRGB
-textures. A colormap declared `"transfer": "linear"` (data: heights, roughness)
-is exported as its values, unencoded. The statistics EXRs hold noise values
-(data).
+as `stochtex render` does for PNG. Each texture's `"colour_space"` says how
+its file holds them: `linear` (the EXR tables: upload as float, never as an
+sRGB texture), `srgb` (the 8-bit format's PNG tables: sRGB codes of those
+linear values; upload as `SRGB8` so that reading decodes them) or `data`
+(the statistics: noise values, no transfer function). A colormap declared
+`"transfer": "linear"` (data: heights, roughness) is exported as its values,
+through the same coding.
 
 @LEAN@## Files
 
@@ -190,17 +316,32 @@ block and sampler then has `layout(set = 0, binding = n)`; define
 std::string textureRow(const nlohmann::json& t) {
     const std::string uniform =
         "`" + t["uniform"].get<std::string>() + "` | " + std::to_string(t["binding"].get<int>());
+    const std::string format = t["format"].get<std::string>();
     if (t["kind"] == "pyramid") {
         const std::string first = t["files"].front(), last = t["files"].back();
-        return "| " + uniform + " | `sampler2D`, RG32F, mip levels 0…" + std::to_string(t["files"].size() - 1) +
-               " | level l from `" + first + "` … `" + last + "` (R = mean, G = " + t["content"].get<std::string>() +
-               ") |\n";
+        return "| " + uniform + " | `sampler2D`, " + format + ", mip levels 0…" +
+               std::to_string(t["files"].size() - 1) + " | level l from `" + first + "` … `" + last + "` (" +
+               t["content"].get<std::string>() + ") |\n";
     }
-    return "| " + uniform + " | `sampler2DArray`, RGB16F or RGB32F (`precision`), " +
-           std::to_string(t["layers"].get<int>()) + " layers of " + std::to_string(t["width"].get<int>()) + " × " +
-           std::to_string(t["height"].get<int>()) + " | layer k = rows `[k·height, (k+1)·height)` of `" +
-           t["file"].get<std::string>() + "`; texture row j = that layer's row j |\n";
+    return "| " + uniform + " | `sampler2DArray`, " + format + ", " + std::to_string(t["layers"].get<int>()) +
+           " layers of " + std::to_string(t["width"].get<int>()) + " × " + std::to_string(t["height"].get<int>()) +
+           " | layer k = rows `[k·height, (k+1)·height)` of `" + t["file"].get<std::string>() +
+           "`; texture row j = that layer's row j |\n";
 }
+
+// The README's table of formats: each with its cost and measured accuracy,
+// this export's marked.
+std::string formatRows(ExportFormat written) {
+    std::string rows;
+    char bounds[96];
+    for (const ExportFormatAccuracy& a : kExportFormatAccuracy) {
+        std::snprintf(bounds, sizeof bounds, "%.0e | %.0e | %.0e", a.maxError, a.p99Error, a.meanError);
+        rows += "| `" + enumName(kExportFormatNames, a.format) + "`" + (a.format == written ? " (this export)" : "") +
+                " | " + a.storage + " | " + bounds + " |\n";
+    }
+    return rows;
+}
+
 const char* kProgramLightSection = R"(## Lighting (lean nodes)
 
 The program lights its own colour: a `lean` node (a pattern file's normal
@@ -245,7 +386,7 @@ std::vector<std::string> unlistedSamplers(const std::string& include, const nloh
 
 // shading: the section on how the colour is lit ("" when it is not).
 std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& textures, const std::string& shading,
-                   const std::string& include) {
+                   const std::string& include, ExportFormat format) {
     std::string textureRows;
     for (const nlohmann::json& t : textures) textureRows += textureRow(t);
     std::string unread;
@@ -272,6 +413,7 @@ std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& 
                                                          {"@FILES@", fileRows},
                                                          {"@TEXTURES@", textureRows},
                                                          {"@UNREAD@", unread},
+                                                         {"@FORMATS@", formatRows(format)},
                                                          {"@LEAN@", shading}};
     std::string text = kReadme;
     for (const auto& [key, value] : fills)
@@ -280,26 +422,47 @@ std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& 
     return text;
 }
 
-// A prefiltered table's atlas as `file`, its manifest entry and its
-// "textures" entry for `uniform`.
-nlohmann::json writeTable(const PrefilteredColormap& table, int rx, int ry, const std::string& file,
+// How a table is stored: an EXR of floats (half or float32) or 8-bit sRGB
+// codes in a PNG.
+enum class TableStorage { Half, Float, Srgb8, Unorm16 };
+
+// A prefiltered table's atlas as `stem` + its extension, its manifest entry
+// and its "textures" entry for `uniform`.
+nlohmann::json writeTable(const PrefilteredColormap& table, int rx, int ry, const std::string& stem,
                           const std::string& uniform, const std::string& what, const std::string& dir,
-                          const ExportOptions& exportOptions, nlohmann::json& textures,
-                          std::vector<WrittenFile>& files) {
+                          TableStorage storage, nlohmann::json& textures, std::vector<WrittenFile>& files) {
     const int n = int(table.sigmas().size());
     const Image atlas = table.atlas(rx, ry);
-    WriteOptions w;
-    w.exrHalf = exportOptions.halfTable;
+    // 16-bit codes hold only [0, 1] (UNORM): a field table beyond it stays float.
+    if (storage == TableStorage::Unorm16 &&
+        !std::all_of(atlas.data().begin(), atlas.data().end(), [](float v) { return v >= 0.0f && v <= 1.0f; }))
+        storage = TableStorage::Float;
+    const bool srgb = storage == TableStorage::Srgb8, unorm = storage == TableStorage::Unorm16;
+    const std::string file = stem + (srgb || unorm ? ".png" : ".exr");
+    WriteOptions w;  // PNG: 8-bit sRGB codes of the linear colours (the default transfer)
+    w.exrHalf = storage == TableStorage::Half;
+    if (unorm) w = {.bitDepth = 16, .transfer = Transfer::Linear};
     writeImage((fs::path(dir) / file).string(), atlas, w);
-    const std::string precision = exportOptions.halfTable ? "half" : "float";
+    const std::string precision = srgb ? "srgb8" : unorm ? "unorm16" : w.exrHalf ? "half" : "float";
     textures.push_back({{"uniform", uniform},
                         {"kind", "table"},
                         {"file", file},
                         {"layers", n * n},
                         {"width", rx},
                         {"height", ry},
-                        {"precision", precision}});
-    files.push_back({"`" + file + "`", exrFormat(atlas, w),
+                        {"precision", precision},
+                        {"format", srgb        ? "SRGB8"
+                                   : unorm     ? "RGB16"
+                                   : w.exrHalf ? "RGB16F"
+                                               : "RGB32F"},
+                        {"colour_space", srgb    ? "srgb"
+                                         : unorm ? "data"
+                                                 : "linear"}});
+    const std::string size = std::to_string(rx) + " × " + std::to_string(n * n * ry);
+    const std::string format = srgb    ? "PNG, " + size + ", RGB 8-bit sRGB codes (upload as SRGB8)"
+                               : unorm ? "PNG, " + size + ", RGB 16-bit linear codes of [0, 1] (upload as RGB16)"
+                                       : exrFormat(atlas, w);
+    files.push_back({"`" + file + "`", format,
                      what + ": " + std::to_string(n * n) + " layers of " + std::to_string(rx) + " × " +
                          std::to_string(ry) + " RGB colours stacked vertically (T⁻¹ folded in), no alpha; " +
                          kTableColourSpace});
@@ -307,8 +470,19 @@ nlohmann::json writeTable(const PrefilteredColormap& table, int rx, int ry, cons
             {"precision", precision}};
 }
 
-nlohmann::json pyramidTexture(const std::string& uniform, const nlohmann::json& files, const std::string& content) {
-    return {{"uniform", uniform}, {"kind", "pyramid"}, {"files", files}, {"content", content}};
+nlohmann::json pyramidTexture(const std::string& uniform, const nlohmann::json& files, const std::string& format,
+                              const std::string& content) {
+    return {{"uniform", uniform}, {"kind", "pyramid"},      {"files", files},
+            {"format", format},   {"colour_space", "data"}, {"content", content}};
+}
+
+// A pair's codes for manifest.json, per level.
+nlohmann::json codingJson(const std::vector<GraphEstimator::LevelCoding>& levels, bool covariance) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const GraphEstimator::LevelCoding& l : levels)
+        out.push_back(covariance ? nlohmann::json{{"offset", l.covariance[0]}, {"scale", l.covariance[1]}}
+                                 : nlohmann::json{{"offset", l.offset}, {"scale", l.scale}});
+    return out;
 }
 
 // Creates the export folder; InputError naming it if that fails.
@@ -320,7 +494,7 @@ void makeFolder(const std::string& dir) {
 
 // manifest.json, stochtex.glsl and README.md, after the data.
 void writeDescription(const std::string& dir, nlohmann::json& m, const std::string& include,
-                      std::vector<WrittenFile>& files, const std::string& shading) {
+                      std::vector<WrittenFile>& files, const std::string& shading, ExportFormat format) {
     m["colour_space"] = "linear";  // the tables and stochtex_sample: linear light, never sRGB codes
     // Vulkan's bindings, as the include declares them (set 0 unless STOCHTEX_BINDING says otherwise).
     m["block_binding"] = 0;
@@ -336,7 +510,7 @@ void writeDescription(const std::string& dir, nlohmann::json& m, const std::stri
                      "`stochtex_sample_triplanar(p, n)`, `stochtex_sample_triplanar_grad(p, n, dpdx, dpdy)` and what "
                      "they call"});
     files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
-    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], shading, include));
+    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], shading, include, format));
 }
 
 }  // namespace
@@ -362,26 +536,72 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     nlohmann::json& textures = m["textures"] = nlohmann::json::array();
     nlohmann::json& leaves = m["graph"]["leaves"] = nlohmann::json::array();
     std::vector<WrittenFile> files;
-    for (int k = 0; k < graph.leafCount(); ++k) {
-        const std::string& id = graph.leafIds()[size_t(k)];
-        const auto [pair, channel] = graph.leafLocation(k);
-        nlohmann::json list = nlohmann::json::array();
-        writeStats(f.estimator(pair).pyramid(channel), dir, "stats_" + std::to_string(k), list,
-                   "variance V_l of leaf \"" + id + "\"", files);
-        textures.push_back(pyramidTexture("uGraphStats" + std::to_string(k), list, "variance"));
-        leaves.push_back({{"id", id}, {"files", list}});
+    GraphEstimator estimator = graphEstimator(f, options);
+    const ExportFormat format = exportOptions.format;
+    m["format"] = enumName(kExportFormatNames, format);
+    if (format == ExportFormat::Rgba8) {
+        // One RGBA8 pyramid per pair (a leaf without a partner fills both halves).
+        estimator.packedPairs = true;
+        for (size_t p = 0; p < graph.leafPairs().size(); ++p) {
+            std::array<const StatsPyramid*, 2> pyramids{nullptr, nullptr};
+            std::array<std::string, 2> ids;
+            for (int k = 0; k < graph.leafCount(); ++k)
+                if (const auto [pair, channel] = graph.leafLocation(k); pair == int(p)) {
+                    pyramids[size_t(channel)] = &f.estimator(pair).pyramid(channel);
+                    ids[size_t(channel)] = graph.leafIds()[size_t(k)];
+                }
+            if (!pyramids[1]) pyramids[1] = pyramids[0];
+            nlohmann::json list = nlohmann::json::array();
+            std::vector<GraphEstimator::LevelCoding>& coding = estimator.pyramidCoding.emplace_back();
+            writePackedPair(*pyramids[0], *pyramids[1], dir, "stats_" + std::to_string(p), list, coding, files);
+            nlohmann::json texture =
+                pyramidTexture("uGraphPairStats" + std::to_string(p), list, "RGBA8",
+                               "R, G = means of leaves \"" + ids[0] + "\", \"" + (ids[1].empty() ? ids[0] : ids[1]) +
+                                   "\"; B, A = their variances; 8-bit codes, per level value = offset + scale · "
+                                   "texel, `coding` in manifest.json");
+            texture["coding"] = codingJson(coding, false);
+            textures.push_back(std::move(texture));
+        }
+        for (int k = 0; k < graph.leafCount(); ++k) {
+            const auto [pair, channel] = graph.leafLocation(k);
+            leaves.push_back({{"id", graph.leafIds()[size_t(k)]}, {"pair", pair}, {"channel", "xy"[channel]}});
+        }
+    } else {
+        const bool half = format == ExportFormat::Half;
+        for (int k = 0; k < graph.leafCount(); ++k) {
+            const std::string& id = graph.leafIds()[size_t(k)];
+            const auto [pair, channel] = graph.leafLocation(k);
+            nlohmann::json list = nlohmann::json::array();
+            writeStats(f.estimator(pair).pyramid(channel), dir, "stats_" + std::to_string(k), list,
+                       "variance V_l of leaf \"" + id + "\"", half, files);
+            textures.push_back(pyramidTexture("uGraphStats" + std::to_string(k), list, half ? "RG16F" : "RG32F",
+                                              "R = mean, G = variance"));
+            leaves.push_back({{"id", id}, {"files", list}});
+        }
     }
     // The covariance pyramids of the pairs whose covariance a lean node reads.
     nlohmann::json& covariances = m["graph"]["covariances"] = nlohmann::json::array();
     for (size_t p = 0; p < graph.leafPairs().size(); ++p) {
         if (!graph.pairCovariance(int(p))) continue;
         nlohmann::json list = nlohmann::json::array();
-        writeStats(
-            *f.estimator(int(p)).covariancePyramid(), dir, "covariance_" + std::to_string(p), list,
-            "covariance C_l of leaf pair " + std::to_string(p) + " (a lean node's slopes; R is E_l of the first)",
-            files);
-        textures.push_back(
-            pyramidTexture("uGraphCov" + std::to_string(p), list, "covariance, R the mean of the first leaf"));
+        const StatsPyramid& pyramid = *f.estimator(int(p)).covariancePyramid();
+        const std::string stem = "covariance_" + std::to_string(p), uniform = "uGraphCov" + std::to_string(p);
+        if (format == ExportFormat::Rgba8) {
+            writeCodedCovariance(pyramid, dir, stem, list, estimator.pyramidCoding[p], files);
+            nlohmann::json texture = pyramidTexture(uniform, list, "RGBA8",
+                                                    "G = covariance; 8-bit codes, per level value = offset + scale "
+                                                    "· texel, `coding` in manifest.json");
+            texture["coding"] = codingJson(estimator.pyramidCoding[p], true);
+            textures.push_back(std::move(texture));
+        } else {
+            const bool half = format == ExportFormat::Half;
+            writeStats(
+                pyramid, dir, stem, list,
+                "covariance C_l of leaf pair " + std::to_string(p) + " (a lean node's slopes; R is E_l of the first)",
+                half, files);
+            textures.push_back(
+                pyramidTexture(uniform, list, half ? "RG16F" : "RG32F", "R = the first leaf's mean, G = covariance"));
+        }
         covariances.push_back({{"pair", p}, {"files", list}});
     }
     nlohmann::json& tables = m["graph"]["tables"] = nlohmann::json::array();
@@ -390,14 +610,20 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
         std::string node;
         for (const GraphPattern::Operation& op : graph.operations())
             if (op.table == int(t)) node = op.id;
-        const std::string file = "table_" + std::to_string(t) + ".exr";
-        // A field's (g, g²) table stays float: the next table reads g, and a
-        // half-float g (rounded by up to 2⁻¹¹ of it) moves across that table's edges.
-        ExportOptions precision = exportOptions;
-        precision.halfTable = exportOptions.halfTable && !graph.tables()[t].field;
-        tables.push_back(writeTable(f.table(int(t)), h.resolutionX(), h.resolutionY(), file,
+        // A field's (g, g²) table is never half: the next table reads g, and
+        // a g rounded by up to 2⁻¹¹ of it moves across that table's edges.
+        // The 8-bit format stores it as 16-bit codes (steps of 2⁻¹⁶) where
+        // it lies in [0, 1], else as floats.
+        const bool field = graph.tables()[t].field;
+        const TableStorage storage = field && format == ExportFormat::Rgba8 ? TableStorage::Unorm16
+                                     : field                                ? TableStorage::Float
+                                     : format == ExportFormat::Rgba8        ? TableStorage::Srgb8
+                                     : format == ExportFormat::Half         ? TableStorage::Half
+                                     : exportOptions.halfTable              ? TableStorage::Half
+                                                                            : TableStorage::Float;
+        tables.push_back(writeTable(f.table(int(t)), h.resolutionX(), h.resolutionY(), "table_" + std::to_string(t),
                                     "uGraphPrefiltered" + std::to_string(t),
-                                    "the prefiltered table of node \"" + node + "\"", dir, precision, textures, files));
+                                    "the prefiltered table of node \"" + node + "\"", dir, storage, textures, files));
         tables.back()["node"] = node;
         // The axes read as a Beta of (mean, σ) (kernel tableLayerBlend; the
         // include's lookup already does).
@@ -415,8 +641,8 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
             entry["node"] = op.id;
             m["graph"][op.info->name].push_back(std::move(entry));
         }
-    writeDescription(dir, m, exportedGraphInclude(graph, GraphMoments::Matched, graphEstimator(f, options)), files,
-                     graph.shadesLight() ? kProgramLightSection : "");
+    writeDescription(dir, m, exportedGraphInclude(graph, GraphMoments::Matched, estimator), files,
+                     graph.shadesLight() ? kProgramLightSection : "", format);
 }
 
 void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,

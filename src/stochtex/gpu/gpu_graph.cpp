@@ -83,17 +83,48 @@ std::array<int, 2> pairLeaves(const GraphPattern& graph, int p) {
     return leaves;
 }
 
+// statsCoding (gpu/shaders/filtering.glsl): each pair's per-level codes
+// as constant arrays, or the float data's identity.
+void writeStatsCoding(std::ostringstream& o, const GraphEstimator& estimator) {
+    const auto vec = [](const auto& v) {
+        std::string out = "vec" + std::to_string(v.size()) + "(";
+        for (size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + glslFloat(v[i]);
+        return out + ")";
+    };
+    o << "StatsCoding statsCoding(TexelSource s, int level) {\n";
+    for (size_t p = 0; p < estimator.pyramidCoding.size(); ++p) {
+        const auto& levels = estimator.pyramidCoding[p];
+        const std::string n = std::to_string(levels.size());
+        std::string offsets, scales, covariances;
+        for (size_t l = 0; l < levels.size(); ++l) {
+            offsets += (l ? ", " : "") + vec(levels[l].offset);
+            scales += (l ? ", " : "") + vec(levels[l].scale);
+            covariances += (l ? ", " : "") + vec(levels[l].covariance);
+        }
+        o << "    if (s.pair == " << p << ") {\n"
+          << "        const vec4 offset" << p << "[" << n << "] = vec4[" << n << "](" << offsets << ");\n"
+          << "        const vec4 scale" << p << "[" << n << "] = vec4[" << n << "](" << scales << ");\n"
+          << "        const vec2 covariance" << p << "[" << n << "] = vec2[" << n << "](" << covariances << ");\n"
+          << "        return StatsCoding(offset" << p << "[level], scale" << p << "[level], covariance" << p
+          << "[level], " << (estimator.packedPairs ? 1 : 0) << ");\n    }\n";
+    }
+    o << "    return StatsCoding(vec4(0.0), vec4(1.0), vec2(0.0, 1.0), 0);\n}\n";
+}
+
 // The texel source's two functions (kernel/estimate.glsl) over the graph's
 // pyramids: a branch per pair (a constant in each call, so they fold
 // away), then the kernel's loop; each pair's level averages as a constant
 // array when there are any (the Deliot–Heitz estimator).
-void writeTexelSource(std::ostringstream& o, const GraphPattern& graph, const LevelAverages& averages) {
+void writeTexelSource(std::ostringstream& o, const GraphPattern& graph, const GraphEstimator& estimator) {
+    const LevelAverages& averages = estimator.levelAverages;
     o << "#include \"stochtex/kernel/estimate.glsl\"\n";
     o << "ProbeTexels probeTexels(TexelSource s, vec2 uv, ProbeLevels levels) {\n";
     const int pairs = int(graph.leafPairs().size());
     for (int p = 0; p < pairs; ++p) {
         const std::array<int, 2> leaves = pairLeaves(graph, p);
-        const std::string x = "uGraphStats" + std::to_string(leaves[0]), y = "uGraphStats" + std::to_string(leaves[1]);
+        const std::string packed = "uGraphPairStats" + std::to_string(p);
+        const std::string x = estimator.packedPairs ? packed : "uGraphStats" + std::to_string(leaves[0]);
+        const std::string y = estimator.packedPairs ? packed : "uGraphStats" + std::to_string(leaves[1]);
         const std::string cov = graph.pairCovariance(p) ? "uGraphCov" + std::to_string(p) : x;
         o << "    " << (p + 1 < pairs ? "if (s.pair == " + std::to_string(p) + ") " : std::string())
           << "return pairProbeTexels(" << x << ", " << y << ", " << cov << ", s, uv, levels);\n";
@@ -112,6 +143,7 @@ void writeTexelSource(std::ostringstream& o, const GraphPattern& graph, const Le
         o << ");\n        return a" << p << "[level];\n    }\n";
     }
     o << "    return vec3(0.0);\n}\n";
+    writeStatsCoding(o, estimator);
 }
 
 // The operations after the leaves, on values (point) or on moments
@@ -167,9 +199,13 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
     for (int k = 0; k < graph.leafCount(); ++k) {
         const std::string n = std::to_string(k);
         sampler("sampler2D", "uGraphExample" + n, "leaf \"" + graph.leafIds()[size_t(k)] + "\": example");
-        sampler("sampler2D", "uGraphStats" + n, "its (E, V) pyramid");
+        if (!estimator.packedPairs) sampler("sampler2D", "uGraphStats" + n, "its (E, V) pyramid");
         if (graph.leaf(k).example().gaussianized()) sampler("sampler2D", "uGraphInverse" + n, "its T⁻¹ LUT");
     }
+    if (estimator.packedPairs)
+        for (size_t p = 0; p < graph.leafPairs().size(); ++p)
+            sampler("sampler2D", "uGraphPairStats" + std::to_string(p),
+                    "pair " + std::to_string(p) + "'s (E_x, E_y, V_x, V_y) pyramid, coded");
     for (size_t t = 0; t < graph.tables().size(); ++t) {
         sampler("sampler2DArray", "uGraphTable" + std::to_string(t), "");
         sampler("sampler2DArray", "uGraphPrefiltered" + std::to_string(t), "");
@@ -178,7 +214,7 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
         if (graph.pairCovariance(int(p)))
             sampler("sampler2D", "uGraphCov" + std::to_string(p), "pair " + std::to_string(p) + "'s C_l pyramid");
     writeOpHost(o, graph);
-    writeTexelSource(o, graph, estimator.levelAverages);
+    writeTexelSource(o, graph, estimator);
 
     o << "\nvec3 unfilteredColour(vec2 uv) {\n";
     // One stencil per pair's uv (pairs under one transform share it).

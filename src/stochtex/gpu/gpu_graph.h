@@ -11,6 +11,7 @@
 // the GPU's colours are the CPU's within float rounding. Seeds, means and
 // parameters are constants of the program; examples, pyramids and tables
 // are textures.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,18 @@ struct GraphEstimator {
     // the texels' own variances.
     LevelAverages levelAverages;
     int subProbes = 1;  // per side of each probe (the sub-probes estimator: subProbesOf)
+    // How the pyramids' texels code the statistics (StatsCoding,
+    // gpu/shaders/filtering.glsl), per leaf pair then level: empty, the
+    // float data GpuGraph uploads; the export's 8-bit format fills it.
+    struct LevelCoding {
+        std::array<float, 4> offset{0, 0, 0, 0};  // of (E_x, E_y, V_x, V_y)
+        std::array<float, 4> scale{1, 1, 1, 1};
+        std::array<float, 2> covariance{0, 1};  // (offset, scale) of C
+    };
+    std::vector<std::vector<LevelCoding>> pyramidCoding;
+    // One RGBA pyramid per pair, (E_x, E_y, V_x, V_y) (the paper's layout):
+    // sampler uGraphPairStatsP replaces the leaves' uGraphStatsK.
+    bool packedPairs = false;
 };
 std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched,
                                const GraphEstimator& estimator = {});

@@ -27,6 +27,22 @@ struct TexelSource {
 ProbeTexels probeTexels(TexelSource s, vec2 uv, ProbeLevels levels);
 vec3 levelAverages(TexelSource s, int level);
 
+// How one pair's pyramid texels hold its statistics at one level: the
+// export's compact formats (gpu/export.h) store them as 8-bit codes, float
+// data is its own code (offset 0, scale 1, which the compiler folds away).
+// With q the texels' values in the order (E_x, E_y, V_x, V_y) — the leaves'
+// own textures' (x.r, y.r, x.g, y.g), or with `packedPair` one RGBA texture per
+// pair holding (E_x, E_y, V_x, V_y), the paper's layout — the statistics
+// are offset + scale · q, and C = cov.x + cov.y · (the covariance texel's g).
+// The coding is affine, so it commutes with the bilinear blend of texels.
+struct StatsCoding {
+    vec4 offset;
+    vec4 scale;
+    vec2 cov;
+    int packedPair;
+};
+StatsCoding statsCoding(TexelSource s, int level);
+
 // Tile i's statistics at one level: (E_l, V_l) of each noise and C_l.
 struct TileStats {
     vec2 x;  // (mean, variance) of N_x's tile
@@ -34,14 +50,16 @@ struct TileStats {
     float c; // covariance (0 without the pair's hasCovariance: not fetched)
 };
 
-TileStats tileStats(sampler2D statsX, sampler2D statsY, sampler2D covariance, TexelSource pair, Stencil s, int i,
-                    vec2 fu, int level) {
+TileStats tileStats(sampler2D statsX, sampler2D statsY, sampler2D covariance, TexelSource pair, StatsCoding code,
+                    Stencil s, int i, vec2 fu, int level) {
     uvec2 vertex = stencilVertex(s, i);
     vec2 ox = tileOffset(vertex, pair.seed.x), oy = tileOffset(vertex, pair.seed.y);
+    vec4 tx = periodicBilinearLod(statsX, fu, ox, level), ty = periodicBilinearLod(statsY, fu, oy, level);
+    vec4 q = code.offset + code.scale * (code.packedPair != 0 ? vec4(tx.r, ty.g, tx.b, ty.a) : vec4(tx.r, ty.r, tx.g, ty.g));
     TileStats t;
-    t.x = periodicBilinearLod(statsX, fu, ox, level).rg;
-    t.y = periodicBilinearLod(statsY, fu, oy, level).rg;
-    t.c = pair.hasCovariance != 0 ? periodicBilinearLod(covariance, fu, ox, level).g : 0.0;
+    t.x = q.xz;
+    t.y = q.yw;
+    t.c = pair.hasCovariance != 0 ? code.cov.x + code.cov.y * periodicBilinearLod(covariance, fu, ox, level).g : 0.0;
     return t;
 }
 
@@ -49,9 +67,10 @@ TileStats tileStats(sampler2D statsX, sampler2D statsY, sampler2D covariance, Te
 // blendVariance), the paper's variances.
 TexelStats texelStats(sampler2D statsX, sampler2D statsY, sampler2D covariance, TexelSource pair, Stencil s, vec2 fu,
                       int level) {
-    TileStats a = tileStats(statsX, statsY, covariance, pair, s, 0, fu, level);
-    TileStats b = tileStats(statsX, statsY, covariance, pair, s, 1, fu, level);
-    TileStats c = tileStats(statsX, statsY, covariance, pair, s, 2, fu, level);
+    StatsCoding code = statsCoding(pair, level);
+    TileStats a = tileStats(statsX, statsY, covariance, pair, code, s, 0, fu, level);
+    TileStats b = tileStats(statsX, statsY, covariance, pair, code, s, 1, fu, level);
+    TileStats c = tileStats(statsX, statsY, covariance, pair, code, s, 2, fu, level);
     TexelStats t;
     t.mean = vec2(blendMean(pair.mean.x, s.w, vec3(a.x.x, b.x.x, c.x.x)),
                   blendMean(pair.mean.y, s.w, vec3(a.y.x, b.y.x, c.y.x)));
