@@ -15,7 +15,7 @@ packages=(
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libplplot-dev plplot-driver-cairo libpango1.0-dev libcairo2-dev fonts-dejavu-core libjs-chart.js
   clang-14 libclang-rt-14-dev clang-format
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-matplotlib python3-pandas python3-pip
+  pybind11-dev python3-dev python3-numpy python3-pil python3-pytest python3-distributed python3-matplotlib python3-pandas python3-pip
   chromium
 )
 

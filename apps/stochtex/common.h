@@ -282,6 +282,7 @@ void registerScene(CLI::App& app);
 void registerView(CLI::App& app);
 void registerBake(CLI::App& app);
 void registerBakeImage(CLI::App& app);
+void registerWeb(CLI::App& app);
 void registerShadertoy(CLI::App& app);
 
 }  // namespace stochtex::cli

@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
     stochtex::cli::registerView(app);
     stochtex::cli::registerBake(app);
     stochtex::cli::registerBakeImage(app);
+    stochtex::cli::registerWeb(app);
     stochtex::cli::registerShadertoy(app);
     stochtex::cli::tidyDefaults(app);
     try {

@@ -69,7 +69,7 @@ JSON
 
 # --- help on every command ---
 case_help() {
-  for c in render gallery noise colormap presets nodes zoom correlation contrast analyze stimuli marble spectrum flow coherence fractalize reproduce scene view bake bake-image; do
+  for c in render gallery noise colormap presets nodes zoom correlation contrast analyze stimuli marble spectrum flow coherence fractalize reproduce scene view bake bake-image web; do
     "$bin" $c --help >/dev/null 2>&1 || fail "$c --help exits non-zero"
   done
   # Usage names the command as a person types it, not the binary's path.
@@ -905,6 +905,20 @@ case_bad_export_flags() {
   expect_bad "scene unknown object" "$out/sbad.png" '--object: object must be plane, sphere or torus, got "cube"' -- "$bin" scene --preset marble --object cube -o "$out/sbad.png"
   expect_bad "bake unfiltered" "$out/bbad" "--filter: source must be estimators to export (filter paper or smooth), got point" -- "$bin" bake --preset weld --filter none -o "$out/bbad"
   expect_bad "bake bad precision" "$out/bbad2" '--table-precision: tablePrecision must be half or float, got "double"' -- "$bin" bake --preset weld --table-precision double -o "$out/bbad2"
+  expect_bad "web exact filter" "$out/wbad" '--filter: filter must be none, paper or smooth, got "exact"' -- "$bin" web --preset weld --filter exact -o "$out/wbad"
+  expect_bad "web tilt beyond the horizon" "$out/wbad2" "--tilt" -- "$bin" web --preset weld --view plane --tilt 95 -o "$out/wbad2"
+}
+
+# --- the web page: three files, the program and the data inside (tests/web drives it in Chromium) ---
+case_web() {
+  expect_ok "web" "$out/web/index.html" -- "$bin" web --preset weld --size 200,120 -o "$out/web"
+  for f in page.js data.js; do [ -s "$out/web/$f" ] || fail "web: no $f"; done
+  grep -q '^window.STOCHTEX_DATA = {' "$out/web/data.js" || fail "web: data.js does not define the data"
+  grep -q '"size":\[200,120\]' "$out/web/data.js" || fail "web: the starting view's size is not in the data"
+  grep -q 'src="data.js"' "$out/web/index.html" || fail "web: index.html does not load data.js"
+  # Nothing is fetched: a page opened from disk cannot.
+  grep -qE 'fetch\(|XMLHttpRequest' "$out/web/page.js" && fail "web: page.js fetches"
+  return 0
 }
 
 # --- hostile JSON and flag values: refused up front, naming the input ---

@@ -14,6 +14,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/gpu/gpu_graph.h"
+#include "stochtex/gpu/packed_stats.h"
 #include "stochtex/gpu/programs.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
@@ -139,53 +140,19 @@ void writeStats(const StatsPyramid& p, const std::string& dir, const std::string
                      "level l of the pyramid: R = mean E_l, G = " + green + ", B = 0 (noise-domain data, linear)"});
 }
 
-// An 8-bit code over a channel's range at one level: the texel holds
-// q/255, q = round(255 (v − lo)/(hi − lo)), and the program decodes
-// lo + (hi − lo)·texel (StatsCoding: affine, so it commutes with the
-// bilinear blend of texels). A constant channel is its offset.
-struct CodedRange {
-    float lo = 0, hi = 0;
-    void include(float v) {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-    }
-    float code(float v) const { return hi > lo ? std::round(255.0f * (v - lo) / (hi - lo)) / 255.0f : 0.0f; }
-    float scale() const { return hi - lo; }
-};
-
-// Channel c of every texel of `level` (3 interleaved channels).
-CodedRange rangeOf(const Image& level, int c) {
-    CodedRange r{level.data()[size_t(c)], level.data()[size_t(c)]};
-    for (size_t i = 0; i < level.pixelCount(); ++i) r.include(level.data()[3 * i + size_t(c)]);
-    return r;
-}
-
-// The 8-bit (paper) layout of one leaf pair: stem_l.png per level, RGBA8
-// (E_x, E_y, V_x, V_y) coded per level and channel; the codes go into
-// `coding`, the names into `list`.
+// The 8-bit (paper) layout of one leaf pair: stem_l.png per level
+// (packedPairLevel); the codes go into `coding`, the names into `list`.
 void writePackedPair(const StatsPyramid& x, const StatsPyramid& y, const std::string& dir, const std::string& stem,
                      nlohmann::json& list, std::vector<GraphEstimator::LevelCoding>& coding,
                      std::vector<WrittenFile>& files) {
     std::string sizes;
     for (int l = 0; l < x.levels(); ++l) {
-        const Image ex = x.interleavedLevel(l, 3), ey = y.interleavedLevel(l, 3);
-        const std::array<const Image*, 4> source{&ex, &ey, &ex, &ey};
-        const std::array<int, 4> channel{0, 0, 1, 1};
-        std::array<CodedRange, 4> range;
-        GraphEstimator::LevelCoding& c = coding.emplace_back();
-        for (size_t k = 0; k < 4; ++k) {
-            range[k] = rangeOf(*source[k], channel[k]);
-            c.offset[k] = range[k].lo;
-            c.scale[k] = range[k].scale();
-        }
-        Image packed(ex.width(), ex.height(), 4, Image::Uninitialized{});
-        for (size_t i = 0; i < packed.pixelCount(); ++i)
-            for (size_t k = 0; k < 4; ++k)
-                packed.data()[4 * i + k] = range[k].code(source[k]->data()[3 * i + size_t(channel[k])]);
+        const Image packed = packedPairLevel(x, y, l, coding.emplace_back());
         const std::string file = stem + "_" + std::to_string(l) + ".png";
         writeImage((fs::path(dir) / file).string(), packed, kNoTransfer);
         list.push_back(file);
-        if (l == 0) sizes = "PNG, " + std::to_string(ex.width()) + " × " + std::to_string(ex.height()) + ", RGBA 8-bit";
+        if (l == 0)
+            sizes = "PNG, " + std::to_string(packed.width()) + " × " + std::to_string(packed.height()) + ", RGBA 8-bit";
     }
     files.push_back({fileFamily(list), sizes + " at level 0, halving per level down to 1 × 1",
                      "level l of the pair's pyramid: R, G = means E_l of its leaves x, y; B, A = their variances "
@@ -193,26 +160,18 @@ void writePackedPair(const StatsPyramid& x, const StatsPyramid& y, const std::st
                      "texel per level and channel (manifest.json's `coding`, constants of `stochtex.glsl`)"});
 }
 
-// A covariance pyramid in the 8-bit format: stem_l.png, G = C_l coded per
-// level (R = the first leaf's E_l, coded too; B = 0, A = 1).
+// A covariance pyramid in the 8-bit format: stem_l.png per level
+// (codedCovarianceLevel).
 void writeCodedCovariance(const StatsPyramid& p, const std::string& dir, const std::string& stem, nlohmann::json& list,
                           std::vector<GraphEstimator::LevelCoding>& coding, std::vector<WrittenFile>& files) {
     std::string sizes;
     for (int l = 0; l < p.levels(); ++l) {
-        const Image level = p.interleavedLevel(l, 3);
-        const CodedRange mean = rangeOf(level, 0), covariance = rangeOf(level, 1);
-        coding[size_t(l)].covariance = {covariance.lo, covariance.scale()};
-        Image coded(level.width(), level.height(), 4);
-        for (size_t i = 0; i < coded.pixelCount(); ++i) {
-            coded.data()[4 * i] = mean.code(level.data()[3 * i]);
-            coded.data()[4 * i + 1] = covariance.code(level.data()[3 * i + 1]);
-            coded.data()[4 * i + 3] = 1.0f;
-        }
+        const Image coded = codedCovarianceLevel(p, l, coding[size_t(l)]);
         const std::string file = stem + "_" + std::to_string(l) + ".png";
         writeImage((fs::path(dir) / file).string(), coded, kNoTransfer);
         list.push_back(file);
         if (l == 0)
-            sizes = "PNG, " + std::to_string(level.width()) + " × " + std::to_string(level.height()) + ", RGBA 8-bit";
+            sizes = "PNG, " + std::to_string(coded.width()) + " × " + std::to_string(coded.height()) + ", RGBA 8-bit";
     }
     files.push_back({fileFamily(list), sizes + " at level 0, halving per level down to 1 × 1",
                      "level l of the pair's covariance: G = C_l (R = the first leaf's E_l, B = 0, A = 1); 8-bit codes "
@@ -543,14 +502,11 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
         // One RGBA8 pyramid per pair (a leaf without a partner fills both halves).
         estimator.packedPairs = true;
         for (size_t p = 0; p < graph.leafPairs().size(); ++p) {
-            std::array<const StatsPyramid*, 2> pyramids{nullptr, nullptr};
+            const std::array<const StatsPyramid*, 2> pyramids = pairPyramids(graph, f, int(p));
             std::array<std::string, 2> ids;
             for (int k = 0; k < graph.leafCount(); ++k)
-                if (const auto [pair, channel] = graph.leafLocation(k); pair == int(p)) {
-                    pyramids[size_t(channel)] = &f.estimator(pair).pyramid(channel);
-                    ids[size_t(channel)] = graph.leafIds()[size_t(k)];
-                }
-            if (!pyramids[1]) pyramids[1] = pyramids[0];
+                if (graph.leafLocation(k)[0] == int(p))
+                    ids[size_t(graph.leafLocation(k)[1])] = graph.leafIds()[size_t(k)];
             nlohmann::json list = nlohmann::json::array();
             std::vector<GraphEstimator::LevelCoding>& coding = estimator.pyramidCoding.emplace_back();
             writePackedPair(*pyramids[0], *pyramids[1], dir, "stats_" + std::to_string(p), list, coding, files);

@@ -171,6 +171,16 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
 
 }  // namespace
 
+kernel::PatternParams patternParams(const GraphPattern& graph, const FilterOptions& options) {
+    kernel::PatternParams p{};
+    p.gridDensity = float(graph.gridDensity());
+    p.invExampleSize = float(1.0 / graph.exampleSize());
+    p.aniso = options.aniso;
+    p.smoothTable = options.response.prefilter == PrefilterMode::Smooth;
+    p.tableLevels = int(PrefilteredColormap::sigmaLevels(options.response.prefilter).size());
+    return p;
+}
+
 GraphEstimator graphEstimator(const FilteredGraph& filtered, const FilterOptions& options) {
     GraphEstimator out;
     if (options.source != StatisticsSource::Estimators) return out;
@@ -312,12 +322,7 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
     Impl& m = *impl_;
     m.filtered = filtered;
     m.sky = f.skyColour();
-    kernel::PatternParams p{};
-    p.gridDensity = float(graph.gridDensity());
-    p.invExampleSize = float(1.0 / graph.exampleSize());
-    p.aniso = options.aniso;
-    p.smoothTable = options.response.prefilter == PrefilterMode::Smooth;
-    p.tableLevels = int(PrefilteredColormap::sigmaLevels(options.response.prefilter).size());
+    const kernel::PatternParams p = patternParams(graph, options);
     // The texture of a part of the program: with `parts`, the one uploaded
     // when the part was built (an edit uploads only what it changed).
     const auto texture = [&](const std::shared_ptr<const void>& part, const std::string& what,

@@ -18,6 +18,7 @@
 
 #include "stochtex/gpu/gl_context.h"
 #include "stochtex/gpu/gpu_view.h"
+#include "stochtex/kernel/pattern_params.h"
 #include "stochtex/pattern/camera.h"
 #include "stochtex/pattern/graph_pattern.h"
 
@@ -53,6 +54,9 @@ struct GraphEstimator {
 };
 std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments = GraphMoments::Matched,
                                const GraphEstimator& estimator = {});
+// The PatternParameters block's values (kernel/pattern_params.h) for a
+// graph under `options`: what GpuGraph uploads and the web page embeds.
+kernel::PatternParams patternParams(const GraphPattern& graph, const FilterOptions& options);
 // The estimator `options` choose, for graphProgramSource: the level averages
 // [DH19] from the filtered graph's estimators when it is Deliot–Heitz.
 GraphEstimator graphEstimator(const FilteredGraph& filtered, const FilterOptions& options);

@@ -36,6 +36,10 @@ const std::vector<ProgramRecipe>& programRecipes() {
          K::Graphics,
          {"mesh"},
          {"common", "filtering", G, "graph_ops", kGraphProgramStem, "triplanar", "scene"}},
+        {"graph-web",  // the web page's program (gpu/web_page.h), GLSL ES 3.00: both paths, a uniform picks one
+         K::Graphics,
+         {"fullscreen"},
+         {"common", "filtering", G, "graph_ops", kGraphProgramStem, "view", "web"}},
         {"export-graph-include",
          K::Include,
          {},

@@ -81,8 +81,10 @@ std::string chartConfig(const LineChart& c) {
         d["showLine"] = true;
         d["borderColor"] = d["backgroundColor"] = cssColour(s.colour);
         d["borderWidth"] = 2;
-        if (s.bars) d["stepped"] = "middle";
-        else d["borderDash"] = dashes[i % 4];
+        if (s.bars)
+            d["stepped"] = "middle";
+        else
+            d["borderDash"] = dashes[i % 4];
         d["pointStyle"] = markers[i % 6];
         d["pointRadius"] = marked ? 4 : 0;
         d["pointBackgroundColor"] = i == 0 ? cssColour(s.colour) : "rgba(0,0,0,0)";
@@ -123,32 +125,15 @@ std::string htmlFigures(const std::string& prefix, const std::vector<Figure>& fi
         if (f.caption.empty()) continue;
         if (shown++ == limit) break;
         if (f.chart) {
-            h << "<figure class='chart'><canvas></canvas><script type='application/json' class='" << kChartClass
-              << "'>" << chartConfig(*f.chart) << "</script><figcaption>" << htmlEscape(f.caption) << " (<a href='"
-              << prefix << f.file << "'>PNG</a>)</figcaption></figure>\n";
+            h << "<figure class='chart'><canvas></canvas><script type='application/json' class='" << kChartClass << "'>"
+              << chartConfig(*f.chart) << "</script><figcaption>" << htmlEscape(f.caption) << " (<a href='" << prefix
+              << f.file << "'>PNG</a>)</figcaption></figure>\n";
         } else {
-            h << "<figure><a href='" << prefix << f.file << "'><img src='" << prefix << f.file
-              << "'></a><figcaption>" << htmlEscape(f.caption) << "</figcaption></figure>\n";
+            h << "<figure><a href='" << prefix << f.file << "'><img src='" << prefix << f.file << "'></a><figcaption>"
+              << htmlEscape(f.caption) << "</figcaption></figure>\n";
         }
     }
     return h.str();
-}
-
-std::string base64(const std::vector<unsigned char>& bytes) {
-    static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((bytes.size() + 2) / 3 * 4);
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        const size_t n = std::min<size_t>(3, bytes.size() - i);
-        uint32_t v = uint32_t(bytes[i]) << 16;
-        if (n > 1) v |= uint32_t(bytes[i + 1]) << 8;
-        if (n > 2) v |= uint32_t(bytes[i + 2]);
-        out += kAlphabet[(v >> 18) & 63];
-        out += kAlphabet[(v >> 12) & 63];
-        out += n > 1 ? kAlphabet[(v >> 6) & 63] : '=';
-        out += n > 2 ? kAlphabet[v & 63] : '=';
-    }
-    return out;
 }
 
 std::string pngDataUri(const Image& image) {
@@ -170,8 +155,8 @@ std::string htmlPage(const std::string& title, const std::string& body, int maxW
       << captionWidthPx << "px}</style></head><body>" << body;
     if (body.find(kChartClass) != std::string::npos) {
         if (kEmbeddedChartJsCount != 1) throw std::logic_error("htmlPage: Chart.js is not embedded");
-        h << "<script>" << kEmbeddedChartJs[0].contents
-          << "</script><script>document.querySelectorAll('script." << kChartClass
+        h << "<script>" << kEmbeddedChartJs[0].contents << "</script><script>document.querySelectorAll('script."
+          << kChartClass
           << "').forEach(function(s){var c=JSON.parse(s.textContent);"
              // Linear axes' ticks in the PNG's number format (tickLabel):
              // 3 significant digits, powers of ten outside [0.01, 10⁴), and

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "stochtex/core/base64.h"
 #include "stochtex/image/image.h"
 #include "stochtex/report/plot.h"
 
@@ -50,8 +51,6 @@ std::string htmlAnimatedPreview(const std::string& prefix, const std::string& na
 // A figure-like image (values are the file's codes, as in writeFigures) as
 // an 8-bit PNG in a data: URI, for pages that must be one file.
 std::string pngDataUri(const Image& image);
-// Base64 (RFC 4648, padded) of bytes.
-std::string base64(const std::vector<unsigned char>& bytes);
 
 // A whole page: <head> with the report style (content at most maxWidthPx
 // wide, figure captions at most captionWidthPx), then body (HTML) unchanged;
