@@ -19,7 +19,7 @@ void registerScene(CLI::App& app) {
         ResponseFlags response;
         std::string output, object = "sphere", mesh, mapping;
         std::vector<int> size{768, 512};
-        float tiling = 4.0f;
+        float tiling = kDefaultSceneTiling;
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand(

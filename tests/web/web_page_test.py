@@ -7,14 +7,15 @@ no network, no extra package).
 For each case the page is opened from disk (file://) with its view in the
 address's fragment, and must
   * reach data-state="ready" (data decoded, program linked, a frame drawn);
-  * match `render --gpu` of the same view (the canvas's pixels, as
+  * match `render --gpu` of the same view, or `scene` of the same object
+    (the canvas's pixels, as
     toDataURL gives them, against the PNG, in 8-bit sRGB codes): the page reads the export's 8-bit data,
     the render float data, so the bound is the 8-bit format's cost at these
     scales plus rounding, stated per case below;
   * log no console error or warning and throw no exception.
 A real wheel event (Input.dispatchMouseEvent, as a mouse would send) over
 the canvas must zoom in about the cursor: the scale shrinks, the texel under
-the cursor stays, and the picture changes.
+the cursor stays, and the picture changes; a real drag turns a lit object.
 
 Usage: web_page_test.py STOCHTEX_BINARY SOURCE_DIR. Exit 77 (ctest:
 skipped) without Chromium.
@@ -143,24 +144,31 @@ def run(args, what):
         fail("%s: %s" % (what, result.stderr.strip()))
 
 
-# (name, pattern source flags, view flags, fragment, largest mean and 99th
+# (name, pattern source flags, the reference command (render --gpu or
+# scene) with its view flags, fragment, largest mean and 99th
 # percentile |Δ| in 8-bit codes: the CPU/GPU parity bound of 0.5/255 on the
 # mean; the 8-bit data moves a few pixels on a colormap's steepest edges)
 W, H = 256, 192
 CASES = [
-    ("camouflage zoom smooth", ["--preset", "camouflage"], ["--scale", "4", "--filter", "smooth"],
+    ("camouflage zoom smooth", ["--preset", "camouflage"], ["render", "--gpu", "--scale", "4", "--filter", "smooth"],
      "view=zoom&scale=4&x=0&y=0&filter=smooth", 0.5, 2),
     ("marble plane paper", ["--preset", "marble"],
-     ["--scale", "2", "--offset", "40,-30", "--view", "plane", "--tilt", "60", "--filter", "paper"],
+     ["render", "--gpu", "--scale", "2", "--offset", "40,-30", "--view", "plane", "--tilt", "60", "--filter", "paper"],
      "view=plane&scale=2&x=40&y=-30&tilt=60&filter=paper", 0.5, 3),
-    ("phasor-stripes zoom none", ["--preset", "phasor-stripes"], ["--scale", "1.5", "--filter", "none"],
-     "view=zoom&scale=1.5&x=0&y=0&filter=none", 0.5, 1),
+    ("phasor-stripes zoom none", ["--preset", "phasor-stripes"],
+     ["render", "--gpu", "--scale", "1.5", "--filter", "none"], "view=zoom&scale=1.5&x=0&y=0&filter=none", 0.5, 1),
     ("lean-ridges plane (lean response)", ["--preset", "lean-ridges", "--response", "lean"],
-     ["--view", "plane", "--tilt", "65", "--filter", "smooth"], "view=plane&scale=1&x=0&y=0&tilt=65&filter=smooth",
-     0.5, 3),
+     ["render", "--gpu", "--view", "plane", "--tilt", "65", "--filter", "smooth"],
+     "view=plane&scale=1&x=0&y=0&tilt=65&filter=smooth", 0.5, 3),
     ("graph with a field table, plane smooth", ["GRAPH"],
-     ["--scale", "3", "--view", "plane", "--tilt", "50", "--filter", "smooth"],
+     ["render", "--gpu", "--scale", "3", "--view", "plane", "--tilt", "50", "--filter", "smooth"],
      "view=plane&scale=3&x=0&y=0&tilt=50&filter=smooth", 0.5, 2),
+    # The lit objects against `scene` (its camera, light and tiling by default).
+    ("camouflage on a lit sphere, uv", ["--preset", "camouflage"],
+     ["scene", "--object", "sphere", "--filter", "smooth"], "view=sphere&mapping=uv&filter=smooth", 0.5, 2),
+    ("marble on a lit torus, triplanar", ["--preset", "marble"],
+     ["scene", "--object", "torus", "--mapping", "triplanar", "--filter", "paper"],
+     "view=torus&mapping=triplanar&filter=paper", 0.5, 3),
 ]
 
 # A small graph whose first table is read as a field (its (g, g²) table
@@ -185,7 +193,7 @@ try:
         folder = os.path.join(work, "page%d" % case)  # a new document each (not a change of fragment)
         run(["web"] + source + ["--size", "%d,%d" % (W, H), "-o", folder], "web " + name)
         reference = os.path.join(work, "reference.png")
-        run(["render", "--gpu"] + source + view + ["--size", "%d,%d" % (W, H), "-o", reference], "render " + name)
+        run(view[:1] + source + view[1:] + ["--size", "%d,%d" % (W, H), "-o", reference], view[0] + " " + name)
         browser.events.clear()
         url = "file://%s/index.html#%s&size=%d,%d" % (folder, fragment, W, H)
         browser.call("Page.navigate", {"url": url}, session=True)
@@ -197,12 +205,12 @@ try:
         expected = np.asarray(Image.open(reference).convert("RGB"), dtype=np.float64)
         diff = np.abs(got - expected)
         mean, p99, flipped = diff.mean(), np.percentile(diff, 99), np.abs(got[::-1] - expected).mean()
-        print("[ info ] %s (%.0f s): page vs render --gpu, mean %.3f/255, 99%% %.1f/255, max %.0f/255 (upside down: %.1f)"
-              % (name, time.time() - started, mean, p99, diff.max(), flipped))
+        print("[ info ] %s (%.0f s): page vs %s, mean %.3f/255, 99%% %.1f/255, max %.0f/255 (upside down: %.1f)"
+              % (name, time.time() - started, view[0], mean, p99, diff.max(), flipped))
         if mean > mean_bound or p99 > p99_bound:
             shot = os.path.join(os.getcwd(), "web-page-failure.png")
             Image.fromarray(got.astype(np.uint8)).save(shot)
-            fail("%s: the page differs from render --gpu: mean %.3f > %.1f or 99%% %.1f > %.0f (its canvas: %s)"
+            fail("%s: the page differs from its reference: mean %.3f > %.1f or 99%% %.1f > %.0f (its canvas: %s)"
                  % (name, mean, mean_bound, p99, p99_bound, shot))
         if flipped < 4 * mean + 1:
             fail("%s: the page matches its own upside-down image as well: orientation is not tested" % name)
@@ -239,10 +247,28 @@ try:
         fail("the picture did not change after zooming (mean |Δ| %.2f/255)" % changed)
     print("[ info ] wheel: scale %g → %g about (%d, %d), picture changed by %.1f/255"
           % (before["scale"], after["scale"], px, py, changed))
+    # A real drag (press, move, release) on the lit sphere turns it.
+    browser.call("Page.navigate", {"url": "file://%s/page5/index.html#%s&size=%d,%d" % (work, CASES[5][3], W, H)},
+                 session=True)
+    browser.wait_for("(() => { const s = document.getElementById('status'); return s && s.dataset.state === 'ready'; })()")
+    yaw = browser.evaluate("window.stochtex.state.yaw")
+    frames = browser.evaluate("document.getElementById('status').dataset.frames")
+    picture = browser.canvas_pixels()
+    for kind, x in (("mousePressed", 100), ("mouseMoved", 140), ("mouseReleased", 140)):
+        browser.call("Input.dispatchMouseEvent",
+                     {"type": kind, "x": x, "y": 90, "button": "left", "buttons": 1 if kind != "mouseReleased" else 0,
+                      "clickCount": 1}, session=True)
+    browser.wait_for("document.getElementById('status').dataset.frames !== '%s'" % frames)
+    turned = browser.evaluate("window.stochtex.state.yaw")
+    changed = np.abs(browser.canvas_pixels() - picture).mean()
+    if not abs(turned - (yaw - 0.4)) < 1e-6 or changed < 1:
+        fail("a 40-pixel drag did not turn the sphere by 0.4 rad: yaw %g → %g, picture changed by %.2f/255"
+             % (yaw, turned, changed))
+    print("[ info ] drag: yaw %g → %g, picture changed by %.1f/255" % (yaw, turned, changed))
     problems = browser.problems()
     if problems:
-        fail("the console has problems after zooming: %s" % problems)
-    print("web page: %d views match render --gpu, the wheel zooms" % len(CASES))
+        fail("the console has problems after zooming and dragging: %s" % problems)
+    print("web page: %d views match render --gpu and scene, the wheel zooms, a drag turns" % len(CASES))
 finally:
     if browser:
         browser.close()

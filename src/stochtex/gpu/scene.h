@@ -17,9 +17,9 @@ struct Mesh {
 };
 
 // `segments` around the main circle (the other resolutions follow).
-Mesh makeSphere(int segments = 128);         // radius 1, uv = (longitude, latitude) in [0,1]²
-Mesh makeTorus(int segments = 192);          // radii 1 and 0.35, uv along both circles
-Mesh makePlaneMesh(int segments = 64);       // the square [−2, 2]² at y = −1, uv over [0,1]²
+Mesh makeSphere(int segments = 128);    // radius 1, uv = (longitude, latitude) in [0,1]²
+Mesh makeTorus(int segments = 192);     // radii 1 and 0.35, uv along both circles
+Mesh makePlaneMesh(int segments = 64);  // the square [−2, 2]² at y = −1, uv over [0,1]²
 // "plane", "sphere" or "torus"; InputError otherwise.
 Mesh makeObject(const std::string& name);
 
@@ -29,6 +29,9 @@ Mesh makeObject(const std::string& name);
 enum class SurfaceMapping { Uv, Triplanar };
 inline const EnumNames<SurfaceMapping> kSurfaceMappingNames{{"uv", SurfaceMapping::Uv},
                                                             {"triplanar", SurfaceMapping::Triplanar}};
+
+// Example periods across an object's uv square (scene's --tiling, the web page's objects).
+inline constexpr float kDefaultSceneTiling = 4.0f;
 
 using Mat4 = std::array<float, 16>;  // column-major, as OpenGL
 

@@ -1,6 +1,7 @@
 #include "stochtex/gpu/web_page.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/packed_stats.h"
 #include "stochtex/gpu/programs.h"
+#include "stochtex/gpu/scene.h"
 #include "stochtex/gpu/shader.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/part_cache.h"
@@ -146,6 +148,7 @@ void writeWebPage(const PatternSpec& spec, const WebPageOptions& web, const std:
     }
 
     const ProgramRecipe& recipe = programRecipe("graph-web");
+    const ProgramRecipe& scene = programRecipe("graph-scene");
     const std::vector<std::pair<std::string, std::string>> program = {
         {kGraphProgramStem, graphProgramSource(graph, GraphMoments::Matched, estimator)}};
     const Camera& camera = web.camera;
@@ -153,6 +156,22 @@ void writeWebPage(const PatternSpec& spec, const WebPageOptions& web, const std:
     data["name"] = spec.name;
     data["vertex"] = assembleShader(GlslTarget::Es300, recipe.vertex, program);
     data["fragment"] = assembleShader(GlslTarget::Es300, recipe.main, program);
+    // The lit objects: `scene`'s program and meshes, its camera's defaults.
+    data["sceneVertex"] = assembleShader(GlslTarget::Es300, scene.vertex, program);
+    data["sceneFragment"] = assembleShader(GlslTarget::Es300, scene.main, program);
+    data["shadesLight"] = graph.shadesLight();
+    for (const char* object : {"sphere", "torus"}) {
+        const Mesh mesh = makeObject(object);
+        data["meshes"][object] = {
+            {"vertices", base64Of(mesh.vertices.data(), mesh.vertices.size() * sizeof(float))},
+            {"indices", base64Of(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t))},
+            {"count", mesh.indices.size()}};
+    }
+    const SceneCamera sceneCamera;
+    data["sceneCamera"] = {{"eye", sceneCamera.eye},
+                           {"target", sceneCamera.target},
+                           {"fov", sceneCamera.fovDeg},
+                           {"tiling", kDefaultSceneTiling}};
     data["exampleSize"] = graph.exampleSize();
     data["sky"] = {paperGraph.skyColour()[0], paperGraph.skyColour()[1], paperGraph.skyColour()[2]};
     data["blocks"] = {

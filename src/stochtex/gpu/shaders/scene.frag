@@ -3,6 +3,7 @@
 // footprint of the rasterizer's derivatives, under one directional light.
 // A program that lights its own colour (a lean op: the lean response of a
 // normal map, paper §6.5) is drawn as it is, lit by the same light.
+#include "stochtex/kernel/colour.glsl"
 in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vUv;
@@ -14,6 +15,13 @@ layout(location = 0) out vec4 fragColour;
 
 uniform bool uShadesLight;  // the program lights its own colour (GpuView::shadesLight): it is the whole colour
 uniform bool uTriplanar;    // three projections along the axes instead of the mesh's uv
+// Linear light for a float target (the C++ host encodes the image), sRGB
+// codes for an 8-bit surface shown as is (the web page's canvas).
+uniform bool uEncodeSrgb;
+
+vec4 sceneColour(vec3 linear) {
+    return vec4(uEncodeSrgb ? srgbFromLinear3(linear) : linear, 1.0);
+}
 
 // Light and eye in the surface's tangent frame for the lean response: T
 // along ∂p/∂u (from the screen derivatives of position and uv), the normal
@@ -41,7 +49,7 @@ void main() {
     vec3 v = normalize(uEye - vWorld);
     if (dot(n, v) < 0.0) n = -n;  // two-sided: whatever the mesh's winding
     if (uShadesLight) {
-        fragColour = vec4(leanShaded(uv, jx, jy, n, v), 1.0);
+        fragColour = sceneColour(leanShaded(uv, jx, jy, n, v));
         return;
     }
     // Triplanar (triplanar.glsl): uTiling periods across the object's 2-unit size.
@@ -51,5 +59,5 @@ void main() {
     vec3 h = normalize(uLight + v);
     float diffuse = max(dot(n, uLight), 0.0);
     float specular = pow(max(dot(n, h), 0.0), 48.0) * 0.15;
-    fragColour = vec4(albedo * (0.25 + 0.75 * diffuse) + vec3(specular), 1.0);
+    fragColour = sceneColour(albedo * (0.25 + 0.75 * diffuse) + vec3(specular));
 }

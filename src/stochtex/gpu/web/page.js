@@ -38,13 +38,33 @@
     tilt: data.start.tilt,
     filter: data.start.filter,
     aniso: data.start.aniso,
+    // The objects' orbit camera (scene's look-at camera, gpu/scene.cpp), from its default eye.
+    mapping: 'uv',
+    tiling: data.sceneCamera.tiling,
+    yaw: 0,
+    pitch: 0,
+    distance: 1,
   };
+  const objects = ['sphere', 'torus'];
+  function orbitFromEye() {
+    const [ex, ey, ez] = data.sceneCamera.eye, [tx, ty, tz] = data.sceneCamera.target;
+    const d = [ex - tx, ey - ty, ez - tz];
+    state.distance = Math.hypot(d[0], d[1], d[2]);
+    state.pitch = Math.asin(d[1] / state.distance);
+    state.yaw = Math.atan2(d[0], d[2]);
+  }
+  orbitFromEye();
   function readHash() {
     for (const part of location.hash.replace(/^#/, '').split('&')) {
       const [key, value] = part.split('=');
       if (value === undefined) continue;
       const number = Number(value);
-      if (key === 'view' && (value === 'zoom' || value === 'plane')) state.view = value;
+      if (key === 'view' && ['zoom', 'plane'].concat(objects).includes(value)) state.view = value;
+      else if (key === 'mapping' && (value === 'uv' || value === 'triplanar')) state.mapping = value;
+      else if (key === 'tiling' && number > 0 && number <= 1e4) state.tiling = number;
+      else if (key === 'yaw' && isFinite(number)) state.yaw = number;
+      else if (key === 'pitch' && Math.abs(number) <= 1.5) state.pitch = number;
+      else if (key === 'distance' && number >= 1.2 && number <= 50) state.distance = number;
       else if (key === 'filter' && ['none', 'paper', 'smooth'].includes(value)) state.filter = value;
       else if (key === 'size') {
         const [w, h] = value.split(',').map(Number);
@@ -59,7 +79,10 @@
   function writeHash() {
     const hash = '#view=' + state.view + '&scale=' + state.scale.toPrecision(6) + '&x=' + state.x.toPrecision(8) +
       '&y=' + state.y.toPrecision(8) + '&filter=' + state.filter + '&aniso=' + state.aniso + '&tilt=' + state.tilt +
-      '&size=' + state.width + ',' + state.height;
+      '&size=' + state.width + ',' + state.height +
+      (objects.includes(state.view) ? '&mapping=' + state.mapping + '&tiling=' + state.tiling + '&yaw=' +
+        state.yaw.toPrecision(6) + '&pitch=' + state.pitch.toPrecision(6) + '&distance=' +
+        state.distance.toPrecision(6) : '');
     history.replaceState(null, '', hash);
   }
   readHash();
@@ -131,17 +154,26 @@
     if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error('shader: ' + gl.getShaderInfoLog(shader));
     return shader;
   }
-  const program = gl.createProgram();
-  gl.attachShader(program, compile(gl.VERTEX_SHADER, data.vertex));
-  gl.attachShader(program, compile(gl.FRAGMENT_SHADER, data.fragment));
-  gl.linkProgram(program);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
-    showError('program: ' + gl.getProgramInfoLog(program));
+  function link(vertex, fragment) {
+    const p = gl.createProgram();
+    gl.attachShader(p, compile(gl.VERTEX_SHADER, vertex));
+    gl.attachShader(p, compile(gl.FRAGMENT_SHADER, fragment));
+    gl.linkProgram(p);
+    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error('program: ' + gl.getProgramInfoLog(p));
+    gl.uniformBlockBinding(p, gl.getUniformBlockIndex(p, 'PatternParameters'), 0);
+    return p;
+  }
+  let program, sceneProgram;
+  try {
+    program = link(data.vertex, data.fragment);  // the zoom and plane views
+    sceneProgram = link(data.sceneVertex, data.sceneFragment);  // the lit objects
+  } catch (error) {
+    showError(error.message);
     return;
   }
-  gl.useProgram(program);
   const vao = gl.createVertexArray();
-  const uniform = (name) => gl.getUniformLocation(program, name);
+  let current = program;
+  const uniform = (name) => gl.getUniformLocation(current, name);
 
   // ---- textures: each sampler on a unit of its own; a prefiltered table per filter ----
   const formats = {
@@ -176,9 +208,51 @@
     slot.textures[entry.filter || 'all'] = texture;
   }
 
+  // ---- the objects' meshes (positions, normals, uv: 8 floats a vertex), made on first use ----
+  const meshes = {};
+  function mesh(name) {
+    if (meshes[name]) return meshes[name];
+    const source = data.meshes[name];
+    const vertexArray = gl.createVertexArray();
+    gl.bindVertexArray(vertexArray);
+    gl.bindBuffer(gl.ARRAY_BUFFER, gl.createBuffer());
+    gl.bufferData(gl.ARRAY_BUFFER, bytesOf(source.vertices), gl.STATIC_DRAW);
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, gl.createBuffer());
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, bytesOf(source.indices), gl.STATIC_DRAW);
+    [[0, 3, 0], [1, 3, 3], [2, 2, 6]].forEach(([attribute, size, offset]) => {
+      gl.enableVertexAttribArray(attribute);
+      gl.vertexAttribPointer(attribute, size, gl.FLOAT, false, 32, offset * 4);
+    });
+    gl.bindVertexArray(null);
+    return (meshes[name] = { vertexArray: vertexArray, count: source.count });
+  }
+  // scene's look-at camera and projection (gpu/scene.cpp SceneCamera), column-major.
+  function viewProjection(eye, target, fovDeg, aspect) {
+    const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    const normalize = (v) => { const l = Math.hypot(v[0], v[1], v[2]); return [v[0] / l, v[1] / l, v[2] / l]; };
+    const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    const f = normalize(sub(target, eye)), s = normalize(cross(f, [0, 1, 0])), u = cross(s, f);
+    const view = [s[0], u[0], -f[0], 0, s[1], u[1], -f[1], 0, s[2], u[2], -f[2], 0, -dot(s, eye), -dot(u, eye),
+      dot(f, eye), 1];
+    const t = 1 / Math.tan(0.5 * fovDeg * Math.PI / 180), zn = 0.05, zf = 50;
+    const proj = [t / aspect, 0, 0, 0, 0, t, 0, 0, 0, 0, (zf + zn) / (zn - zf), -1, 0, 0, 2 * zf * zn / (zn - zf), 0];
+    const out = new Float32Array(16);
+    for (let c = 0; c < 4; ++c)
+      for (let r = 0; r < 4; ++r) {
+        let v = 0;
+        for (let k = 0; k < 4; ++k) v += proj[k * 4 + r] * view[c * 4 + k];
+        out[c * 4 + r] = v;
+      }
+    return out;
+  }
+  function eye() {
+    const t = data.sceneCamera.target, c = Math.cos(state.pitch);
+    return [t[0] + state.distance * c * Math.sin(state.yaw), t[1] + state.distance * Math.sin(state.pitch),
+      t[2] + state.distance * c * Math.cos(state.yaw)];
+  }
+
   // ---- the parameter block ----
-  const blockIndex = gl.getUniformBlockIndex(program, 'PatternParameters');
-  gl.uniformBlockBinding(program, blockIndex, 0);
   const parameters = gl.createBuffer();
   function fillBlock() {
     const bytes = bytesOf(data.blocks[state.filter]);
@@ -199,13 +273,51 @@
     }
     canvas.style.width = state.width / dpr + 'px';
     canvas.style.height = state.height / dpr + 'px';
-    gl.useProgram(program);
+    const object = objects.includes(state.view);
+    current = object ? sceneProgram : program;
+    gl.useProgram(current);
     for (const [name, slot] of units) {
       gl.activeTexture(gl.TEXTURE0 + slot.unit);
       gl.bindTexture(slot.target, slot.textures[state.filter] || slot.textures.paper || slot.textures.all);
       gl.uniform1i(uniform(name), slot.unit);
     }
     fillBlock();
+    gl.viewport(0, 0, state.width, state.height);
+    if (object) drawObject();
+    else drawView();
+    ++drawn;
+    statusBox.textContent = state.view + ' view, ' +
+      (object ? state.mapping + ' mapping, ' + state.tiling + ' periods across' : state.scale.toPrecision(4) +
+        ' texels per pixel') + ', filter ' + state.filter + (state.filter === 'none' ? '' : ', K = ' + state.aniso) +
+      (state.view === 'plane' ? ', tilt ' + state.tilt + '°' : '') + ' — frame ' + drawn;
+    statusBox.dataset.state = 'ready';
+    statusBox.dataset.frames = String(drawn);
+  }
+  // A lit object as `scene` draws it (gpu/scene_render.cpp): its light, its
+  // slate background (sRGB codes: the canvas holds codes), the rasterizer's
+  // footprints.
+  function drawObject() {
+    const m = mesh(state.view);
+    gl.clearColor(0.08, 0.09, 0.11, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    const e = eye();
+    gl.uniformMatrix4fv(uniform('uViewProjection'), false,
+      viewProjection(e, data.sceneCamera.target, data.sceneCamera.fov, state.width / state.height));
+    gl.uniform1f(uniform('uTiling'), state.tiling);
+    gl.uniform1i(uniform('uFiltered'), state.filter === 'none' ? 0 : 1);
+    gl.uniform1i(uniform('uShadesLight'), data.shadesLight ? 1 : 0);
+    gl.uniform1i(uniform('uTriplanar'), state.mapping === 'triplanar' && !data.shadesLight ? 1 : 0);
+    const light = [0.45, 0.8, 0.4], n = Math.hypot(light[0], light[1], light[2]);
+    gl.uniform3f(uniform('uLight'), light[0] / n, light[1] / n, light[2] / n);
+    gl.uniform3f(uniform('uEye'), e[0], e[1], e[2]);
+    gl.uniform1i(uniform('uEncodeSrgb'), 1);
+    gl.bindVertexArray(m.vertexArray);
+    gl.drawElements(gl.TRIANGLES, m.count, gl.UNSIGNED_INT, 0);
+    gl.bindVertexArray(null);
+    gl.disable(gl.DEPTH_TEST);
+  }
+  function drawView() {
     const tilt = state.tilt * Math.PI / 180;
     gl.uniform1i(uniform('uPlane'), state.view === 'plane' ? 1 : 0);
     gl.uniform1f(uniform('uTanHalfFov'), Math.tan(0.5 * data.start.fov * Math.PI / 180));
@@ -216,15 +328,8 @@
     gl.uniform1f(uniform('uScale'), state.scale);
     gl.uniform3f(uniform('uSky'), data.sky[0], data.sky[1], data.sky[2]);
     gl.uniform1i(uniform('uFiltered'), state.filter === 'none' ? 0 : 1);
-    gl.viewport(0, 0, state.width, state.height);
     gl.bindVertexArray(vao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
-    ++drawn;
-    statusBox.textContent = state.view + ' view, ' + state.scale.toPrecision(4) + ' texels per pixel, filter ' +
-      state.filter + (state.filter === 'none' ? '' : ', K = ' + state.aniso) +
-      (state.view === 'plane' ? ', tilt ' + state.tilt + '°' : '') + ' — frame ' + drawn;
-    statusBox.dataset.state = 'ready';
-    statusBox.dataset.frames = String(drawn);
   }
   function redraw() {
     syncControls();
@@ -241,6 +346,8 @@
     filter: document.getElementById('filter'),
     aniso: document.getElementById('aniso'),
     tilt: document.getElementById('tilt'),
+    mapping: document.getElementById('mapping'),
+    tiling: document.getElementById('tiling'),
   };
   function syncControls() {
     controls.camera.value = state.view;
@@ -248,6 +355,10 @@
     controls.aniso.value = String(state.aniso);
     controls.tilt.value = String(state.tilt);
     controls.tilt.disabled = state.view !== 'plane';
+    controls.mapping.value = state.mapping;
+    controls.mapping.disabled = !objects.includes(state.view) || data.shadesLight;
+    controls.tiling.value = String(state.tiling);
+    controls.tiling.disabled = !objects.includes(state.view);
     document.getElementById('tiltValue').textContent = String(state.tilt);
   }
   controls.camera.addEventListener('change', () => { state.view = controls.camera.value; redraw(); });
@@ -258,8 +369,16 @@
     redraw();
   });
   controls.tilt.addEventListener('input', () => { state.tilt = Number(controls.tilt.value); redraw(); });
+  controls.mapping.addEventListener('change', () => { state.mapping = controls.mapping.value; redraw(); });
+  controls.tiling.addEventListener('change', () => {
+    const t = Number(controls.tiling.value);
+    if (t > 0 && t <= 1e4) state.tiling = t;
+    redraw();
+  });
   document.getElementById('reset').addEventListener('click', () => {
-    Object.assign(state, { scale: data.start.scale, x: data.start.x, y: data.start.y, tilt: data.start.tilt });
+    Object.assign(state, { scale: data.start.scale, x: data.start.x, y: data.start.y, tilt: data.start.tilt,
+      tiling: data.sceneCamera.tiling });
+    orbitFromEye();
     redraw();
   });
   window.addEventListener('hashchange', () => { readHash(); redraw(); });
@@ -267,6 +386,11 @@
   // Zoom by `factor` keeping the texel under canvas pixel (px, py) in place
   // (the zoom view: texel = offset + p·scale); the plane keeps its centre.
   function zoomAbout(factor, px, py) {
+    if (objects.includes(state.view)) {  // the orbit's distance
+      state.distance = Math.min(Math.max(state.distance * factor, 1.2), 50);
+      redraw();
+      return;
+    }
     const scale = Math.min(Math.max(state.scale * factor, 1 / 64), 4096);
     if (state.view === 'plane') { px = state.width / 2; py = state.height / 2; }
     state.x += px * (state.scale - scale);
@@ -298,8 +422,13 @@
     pointers.set(event.pointerId, point);
     if (pointers.size === 1) {
       const [x0, y0] = before[0];
-      state.x -= (point[0] - x0) * state.scale;
-      state.y -= (point[1] - y0) * state.scale;
+      if (objects.includes(state.view)) {  // orbit about the object
+        state.yaw -= (point[0] - x0) * 0.01;
+        state.pitch = Math.min(Math.max(state.pitch + (point[1] - y0) * 0.01, -1.4), 1.4);
+      } else {
+        state.x -= (point[0] - x0) * state.scale;
+        state.y -= (point[1] - y0) * state.scale;
+      }
       redraw();
     } else if (pointers.size === 2) {
       const after = [...pointers.values()];
