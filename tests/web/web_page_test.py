@@ -114,6 +114,17 @@ class Browser:
             time.sleep(0.1)
         fail("timed out waiting for " + expression)
 
+    def open(self, folder, fragment):
+        """Opens index.html of `folder` (a new document) and waits until the
+        page is ready or says what went wrong; returns its status."""
+        self.call("Page.navigate", {"url": "file://%s/index.html#%s&size=%d,%d" % (folder, fragment, W, H)},
+                  session=True)
+        return self.wait_for("(() => { const s = document.getElementById('status');"
+                             " return s && s.dataset.state !== 'loading' && s.dataset.state; })()")
+
+    def frames(self):
+        return self.evaluate("document.getElementById('status').dataset.frames")
+
     def canvas_pixels(self):
         """The canvas's pixels as drawn (it keeps its drawing buffer), RGB."""
         url = self.evaluate("document.getElementById('view').toDataURL('image/png')")
@@ -195,10 +206,7 @@ try:
         reference = os.path.join(work, "reference.png")
         run(view[:1] + source + view[1:] + ["--size", "%d,%d" % (W, H), "-o", reference], view[0] + " " + name)
         browser.events.clear()
-        url = "file://%s/index.html#%s&size=%d,%d" % (folder, fragment, W, H)
-        browser.call("Page.navigate", {"url": url}, session=True)
-        state = browser.wait_for("(() => { const s = document.getElementById('status');"
-                                 " return s && s.dataset.state !== 'loading' && s.dataset.state; })()")
+        state = browser.open(folder, fragment)
         if state != "ready":
             fail("%s: the page says %s" % (name, browser.evaluate("document.getElementById('status').textContent")))
         got = browser.canvas_pixels()
@@ -220,11 +228,9 @@ try:
 
     # A real wheel event (one notch away from the user: zoom in) at a point
     # of the first case's canvas (a zoom view at scale 4), opened anew.
-    browser.call("Page.navigate", {"url": "file://%s/page0/index.html#%s&size=%d,%d" % (work, CASES[0][3], W, H)},
-                 session=True)
-    browser.wait_for("(() => { const s = document.getElementById('status'); return s && s.dataset.state === 'ready'; })()")
+    browser.open(os.path.join(work, "page0"), CASES[0][3])
     before = browser.evaluate("JSON.stringify(window.stochtex.state)")
-    frames = browser.evaluate("document.getElementById('status').dataset.frames")
+    frames = browser.frames()
     picture = browser.canvas_pixels()
     px, py = 64, 48
     browser.call("Input.dispatchMouseEvent", {"type": "mouseMoved", "x": px, "y": py}, session=True)
@@ -248,11 +254,9 @@ try:
     print("[ info ] wheel: scale %g → %g about (%d, %d), picture changed by %.1f/255"
           % (before["scale"], after["scale"], px, py, changed))
     # A real drag (press, move, release) on the lit sphere turns it.
-    browser.call("Page.navigate", {"url": "file://%s/page5/index.html#%s&size=%d,%d" % (work, CASES[5][3], W, H)},
-                 session=True)
-    browser.wait_for("(() => { const s = document.getElementById('status'); return s && s.dataset.state === 'ready'; })()")
+    browser.open(os.path.join(work, "page5"), CASES[5][3])
     yaw = browser.evaluate("window.stochtex.state.yaw")
-    frames = browser.evaluate("document.getElementById('status').dataset.frames")
+    frames = browser.frames()
     picture = browser.canvas_pixels()
     for kind, x in (("mousePressed", 100), ("mouseMoved", 140), ("mouseReleased", 140)):
         browser.call("Input.dispatchMouseEvent",

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -140,42 +141,22 @@ void writeStats(const StatsPyramid& p, const std::string& dir, const std::string
                      "level l of the pyramid: R = mean E_l, G = " + green + ", B = 0 (noise-domain data, linear)"});
 }
 
-// The 8-bit (paper) layout of one leaf pair: stem_l.png per level
-// (packedPairLevel); the codes go into `coding`, the names into `list`.
-void writePackedPair(const StatsPyramid& x, const StatsPyramid& y, const std::string& dir, const std::string& stem,
-                     nlohmann::json& list, std::vector<GraphEstimator::LevelCoding>& coding,
-                     std::vector<WrittenFile>& files) {
+// Writes stem_l.png for l < levels, each the 8-bit codes level(l) makes
+// (packed_stats.h; no transfer function), their names into `list`, and the
+// family's row of the README's file table saying `content`.
+void writeCodedLevels(int levels, const std::function<Image(int)>& level, const std::string& dir,
+                      const std::string& stem, nlohmann::json& list, const std::string& content,
+                      std::vector<WrittenFile>& files) {
     std::string sizes;
-    for (int l = 0; l < x.levels(); ++l) {
-        const Image packed = packedPairLevel(x, y, l, coding.emplace_back());
-        const std::string file = stem + "_" + std::to_string(l) + ".png";
-        writeImage((fs::path(dir) / file).string(), packed, kNoTransfer);
-        list.push_back(file);
-        if (l == 0)
-            sizes = "PNG, " + std::to_string(packed.width()) + " × " + std::to_string(packed.height()) + ", RGBA 8-bit";
-    }
-    files.push_back({fileFamily(list), sizes + " at level 0, halving per level down to 1 × 1",
-                     "level l of the pair's pyramid: R, G = means E_l of its leaves x, y; B, A = their variances "
-                     "V_l; 8-bit codes of noise-domain data (no transfer function), decoded as offset + scale · "
-                     "texel per level and channel (manifest.json's `coding`, constants of `stochtex.glsl`)"});
-}
-
-// A covariance pyramid in the 8-bit format: stem_l.png per level
-// (codedCovarianceLevel).
-void writeCodedCovariance(const StatsPyramid& p, const std::string& dir, const std::string& stem, nlohmann::json& list,
-                          std::vector<GraphEstimator::LevelCoding>& coding, std::vector<WrittenFile>& files) {
-    std::string sizes;
-    for (int l = 0; l < p.levels(); ++l) {
-        const Image coded = codedCovarianceLevel(p, l, coding[size_t(l)]);
+    for (int l = 0; l < levels; ++l) {
+        const Image coded = level(l);
         const std::string file = stem + "_" + std::to_string(l) + ".png";
         writeImage((fs::path(dir) / file).string(), coded, kNoTransfer);
         list.push_back(file);
         if (l == 0)
             sizes = "PNG, " + std::to_string(coded.width()) + " × " + std::to_string(coded.height()) + ", RGBA 8-bit";
     }
-    files.push_back({fileFamily(list), sizes + " at level 0, halving per level down to 1 × 1",
-                     "level l of the pair's covariance: G = C_l (R = the first leaf's E_l, B = 0, A = 1); 8-bit codes "
-                     "decoded as offset + scale · texel per level (manifest.json's `coding`)"});
+    files.push_back({fileFamily(list), sizes + " at level 0, halving per level down to 1 × 1", content});
 }
 
 // README.md; @BLOCK@, @SIZE@ and @MEMBERS@ are filled from the parameter
@@ -509,7 +490,14 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
                     ids[size_t(graph.leafLocation(k)[1])] = graph.leafIds()[size_t(k)];
             nlohmann::json list = nlohmann::json::array();
             std::vector<GraphEstimator::LevelCoding>& coding = estimator.pyramidCoding.emplace_back();
-            writePackedPair(*pyramids[0], *pyramids[1], dir, "stats_" + std::to_string(p), list, coding, files);
+            writeCodedLevels(
+                pyramids[0]->levels(),
+                [&](int l) { return packedPairLevel(*pyramids[0], *pyramids[1], l, coding.emplace_back()); }, dir,
+                "stats_" + std::to_string(p), list,
+                "level l of the pair's pyramid: R, G = means E_l of its leaves x, y; B, A = their variances V_l; 8-bit "
+                "codes of noise-domain data (no transfer function), decoded as offset + scale · texel per level and "
+                "channel (manifest.json's `coding`, constants of `stochtex.glsl`)",
+                files);
             nlohmann::json texture =
                 pyramidTexture("uGraphPairStats" + std::to_string(p), list, "RGBA8",
                                "R, G = means of leaves \"" + ids[0] + "\", \"" + (ids[1].empty() ? ids[0] : ids[1]) +
@@ -543,7 +531,13 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
         const StatsPyramid& pyramid = *f.estimator(int(p)).covariancePyramid();
         const std::string stem = "covariance_" + std::to_string(p), uniform = "uGraphCov" + std::to_string(p);
         if (format == ExportFormat::Rgba8) {
-            writeCodedCovariance(pyramid, dir, stem, list, estimator.pyramidCoding[p], files);
+            std::vector<GraphEstimator::LevelCoding>& coding = estimator.pyramidCoding[p];
+            writeCodedLevels(
+                pyramid.levels(), [&](int l) { return codedCovarianceLevel(pyramid, l, coding[size_t(l)]); }, dir, stem,
+                list,
+                "level l of the pair's covariance: G = C_l (R = the first leaf's E_l, B = 0, A = 1); 8-bit codes "
+                "decoded as offset + scale · texel per level (manifest.json's `coding`)",
+                files);
             nlohmann::json texture = pyramidTexture(uniform, list, "RGBA8",
                                                     "G = covariance; 8-bit codes, per level value = offset + scale "
                                                     "· texel, `coding` in manifest.json");
