@@ -374,9 +374,7 @@ nlohmann::json writeTable(const PrefilteredColormap& table, int rx, int ry, cons
     const int n = int(table.sigmas().size());
     const Image atlas = table.atlas(rx, ry);
     // 16-bit codes hold only [0, 1] (UNORM): a field table beyond it stays float.
-    if (storage == TableStorage::Unorm16 &&
-        !std::all_of(atlas.data().begin(), atlas.data().end(), [](float v) { return v >= 0.0f && v <= 1.0f; }))
-        storage = TableStorage::Float;
+    if (storage == TableStorage::Unorm16 && !fitsUnorm16(atlas)) storage = TableStorage::Float;
     const bool srgb = storage == TableStorage::Srgb8, unorm = storage == TableStorage::Unorm16;
     const std::string file = stem + (srgb || unorm ? ".png" : ".exr");
     WriteOptions w;  // PNG: 8-bit sRGB codes of the linear colours (the default transfer)

@@ -65,4 +65,8 @@ Image codedCovarianceLevel(const StatsPyramid& covariance, int level, GraphEstim
     return coded;
 }
 
+bool fitsUnorm16(const Image& image) {
+    return std::all_of(image.data().begin(), image.data().end(), [](float v) { return v >= 0.0f && v <= 1.0f; });
+}
+
 }  // namespace stochtex

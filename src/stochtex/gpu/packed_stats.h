@@ -26,4 +26,9 @@ Image packedPairLevel(const StatsPyramid& x, const StatsPyramid& y, int level, G
 // leaf's E_l, coded too; B = 0, A = 1); `coding.covariance` gets its code.
 Image codedCovarianceLevel(const StatsPyramid& covariance, int level, GraphEstimator::LevelCoding& coding);
 
+// Whether every value lies in [0, 1], so that 16-bit unorm codes hold it:
+// a field table's (g, g²) travels as such codes where it does (the 8-bit
+// export, the web page) and as floats otherwise.
+bool fitsUnorm16(const Image& image);
+
 }  // namespace stochtex

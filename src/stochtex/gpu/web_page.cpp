@@ -131,17 +131,20 @@ void writeWebPage(const PatternSpec& spec, const WebPageOptions& web, const std:
         const Image point = graph.tables()[t].point.table();
         textures.push_back(texture("uGraphTable" + table, "array", "RGB32F",
                                    {floatLevel(point.width(), point.height(), point.data().data(), 3)}));
-        // Each filter's prefiltered table: colours as 8-bit sRGB codes, a
-        // field's (g, g²) as 16-bit codes (page.js turns them into floats).
+        // Each filter's prefiltered table, as the 8-bit export stores it:
+        // colours as 8-bit sRGB codes, a field's (g, g²) as 16-bit codes
+        // where it lies in [0, 1] (page.js turns them into floats), else floats.
         const ColormapTable& h = graph.tables()[t].blended;
         const bool field = graph.tables()[t].field;
         for (const FilteredGraph* f : {&paperGraph, &smoothGraph}) {
             const int n = int(f->table(int(t)).sigmas().size());
             const Image atlas = f->table(int(t)).atlas(h.resolutionX(), h.resolutionY());
-            WriteOptions w;  // colours: 8-bit sRGB codes of the linear values
-            if (field) w = {.bitDepth = 16, .transfer = Transfer::Linear};
+            const nlohmann::json level =
+                !field               ? pngLevel(atlas, WriteOptions{})  // 8-bit sRGB codes of the linear values
+                : fitsUnorm16(atlas) ? pngLevel(atlas, {.bitDepth = 16, .transfer = Transfer::Linear})
+                                     : floatLevel(atlas.width(), atlas.height(), atlas.data().data(), 3);
             nlohmann::json entry =
-                texture("uGraphPrefiltered" + table, "array", field ? "RGB32F" : "SRGB8", {pngLevel(atlas, w)}, n * n);
+                texture("uGraphPrefiltered" + table, "array", field ? "RGB32F" : "SRGB8", {level}, n * n);
             entry["filter"] = f == &paperGraph ? "paper" : "smooth";
             textures.push_back(std::move(entry));
         }
