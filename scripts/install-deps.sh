@@ -10,7 +10,7 @@ packages=(
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-video-dev libopencv-videoio-dev
   libtbb-dev nlohmann-json3-dev libcli11-dev libglm-dev libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev libhwy-dev
-  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri glslang-tools spirv-tools
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri glslang-tools glslang-dev spirv-tools libspirv-cross-c-shared-dev spirv-cross
   libglfw3-dev libimgui-dev xvfb xauth libpng-dev libwebp-dev libgif-dev libtinyobjloader-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libplplot-dev plplot-driver-cairo libpango1.0-dev libcairo2-dev fonts-dejavu-core libjs-chart.js

@@ -16,6 +16,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -94,18 +95,18 @@ std::vector<std::uint8_t> parameterBlock(const std::string& readme, const nlohma
 constexpr const char* kSampleAtPixel = "stochtex_sample(gl_FragCoord.xy * uPixelScale * uPattern.invExampleSize)";
 
 // An engine's view of the export: it knows GL and the README, nothing else.
-Image renderFromExport(const fs::path& dir, int width, int height, double scale,
-                       const std::string& sample = kSampleAtPixel) {
+// `fragment`: a whole fragment shader (its #version line first) that may
+// declare uPixelScale and the PatternParameters block; the textures are
+// bound by manifest.json's names.
+Image renderFragment(const fs::path& dir, int width, int height, double scale, const std::string& fragment) {
     std::ifstream mf(dir / "manifest.json");
     const nlohmann::json m = nlohmann::json::parse(mf);
-    const std::string include = readText(dir / "stochtex.glsl");
-    const GLuint vs = compile(GL_VERTEX_SHADER,
-                              "#version 330 core\nvoid main() { vec2 p = vec2(float((gl_VertexID << 1) & 2), "
-                              "float(gl_VertexID & 2)); gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }\n");
-    const GLuint fs_ = compile(GL_FRAGMENT_SHADER, "#version 330 core\n" + include +
-                                                       "uniform float uPixelScale;\nout vec4 colour;\n"
-                                                       "void main() { colour = " +
-                                                       sample + "; }\n");
+    const bool es = fragment.rfind("#version 300 es", 0) == 0;  // a program takes one kind of stage
+    const GLuint vs =
+        compile(GL_VERTEX_SHADER, std::string(es ? "#version 300 es\n" : "#version 330 core\n") +
+                                      "void main() { vec2 p = vec2(float((gl_VertexID << 1) & 2), "
+                                      "float(gl_VertexID & 2)); gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0); }\n");
+    const GLuint fs_ = compile(GL_FRAGMENT_SHADER, fragment);
     const GLuint prog = glCreateProgram();
     glAttachShader(prog, vs);
     glAttachShader(prog, fs_);
@@ -179,18 +180,22 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale,
         glBindTexture(t["kind"] == "table" ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, textures[k]);
         glUniform1i(glGetUniformLocation(prog, t["uniform"].get<std::string>().c_str()), GLint(k));
     }
-    // The parameter block, at binding point 3 (not GpuGraph's 0, so only this buffer can be read).
+    // The parameter block, at binding point 3 (not GpuGraph's 0, so only
+    // this buffer can be read); a program without it (Godot's) has its
+    // values as constants.
     const GLuint blockIndex = glGetUniformBlockIndex(prog, "PatternParameters");
-    EXPECT_NE(blockIndex, GL_INVALID_INDEX);
-    GLint blockBytes = 0;
-    glGetActiveUniformBlockiv(prog, blockIndex, GL_UNIFORM_BLOCK_DATA_SIZE, &blockBytes);
-    const std::vector<std::uint8_t> block = parameterBlock(readText(dir / "README.md"), m, std::size_t(blockBytes));
+    EXPECT_EQ(blockIndex == GL_INVALID_INDEX, fragment.find("PatternParameters") == std::string::npos);
     GLuint parameters = 0;
-    glGenBuffers(1, &parameters);
-    glBindBuffer(GL_UNIFORM_BUFFER, parameters);
-    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(block.size()), block.data(), GL_STATIC_DRAW);
-    glUniformBlockBinding(prog, blockIndex, 3);
-    glBindBufferBase(GL_UNIFORM_BUFFER, 3, parameters);
+    if (blockIndex != GL_INVALID_INDEX) {
+        GLint blockBytes = 0;
+        glGetActiveUniformBlockiv(prog, blockIndex, GL_UNIFORM_BLOCK_DATA_SIZE, &blockBytes);
+        const std::vector<std::uint8_t> block = parameterBlock(readText(dir / "README.md"), m, std::size_t(blockBytes));
+        glGenBuffers(1, &parameters);
+        glBindBuffer(GL_UNIFORM_BUFFER, parameters);
+        glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(block.size()), block.data(), GL_STATIC_DRAW);
+        glUniformBlockBinding(prog, blockIndex, 3);
+        glBindBufferBase(GL_UNIFORM_BUFFER, 3, parameters);
+    }
     auto loc = [&](const char* n) { return glGetUniformLocation(prog, n); };
     glUniform1f(loc("uPixelScale"), float(scale));
     GLuint target = 0, fbo = 0, vao = 0;
@@ -213,12 +218,21 @@ Image renderFromExport(const fs::path& dir, int width, int height, double scale,
     textures.push_back(target);
     glDeleteTextures(GLsizei(textures.size()), textures.data());
     glDeleteFramebuffers(1, &fbo);
-    glDeleteBuffers(1, &parameters);
+    if (parameters) glDeleteBuffers(1, &parameters);
     glDeleteVertexArrays(1, &vao);
     glDeleteProgram(prog);
     glDeleteShader(vs);
     glDeleteShader(fs_);
     return out;
+}
+
+// The export's stochtex.glsl in a GL 3.30 program whose fragments are `sample`.
+Image renderFromExport(const fs::path& dir, int width, int height, double scale,
+                       const std::string& sample = kSampleAtPixel) {
+    return renderFragment(dir, width, height, scale,
+                          "#version 330 core\n" + readText(dir / "stochtex.glsl") +
+                              "uniform float uPixelScale;\nout vec4 colour;\nvoid main() { colour = " + sample +
+                              "; }\n");
 }
 
 // The largest |export − render --gpu| over a 96 × 80 view at `scale`.
@@ -265,8 +279,9 @@ TEST(Export, SeparateProgramRendersWhatRenderGpuRenders) {
             EXPECT_NE(fileTable.find("`" + f + "`"), std::string::npos) << f << " is not in the README's file table";
             ++written;
         }
-        // 9 levels per leaf's pyramid (256²), no covariance pyramid (no lean op reads one), 4 others.
-        EXPECT_EQ(written, 22u);
+        // 9 levels per leaf's pyramid (256²), no covariance pyramid (no lean op reads one), the
+        // table, manifest, README and the four shader files (GLSL, HLSL, Unity, Godot).
+        EXPECT_EQ(written, 18u + 3u + 4u);
         // smooth: 10² layers of 256 rows, half floats; paper: 6² layers, floats.
         const std::string table = half ? "256 × 25600, 3 channels (R, G, B) of 16-bit half float"
                                        : "256 × 9216, 3 channels (R, G, B) of 32-bit float";
@@ -301,7 +316,7 @@ TEST(Export, GraphRendersWhatRenderGpuRenders) {
         const fs::path dir = test::scratchPath(std::string("stochtex_export_graph_") + (half ? "half" : "float"));
         fs::remove_all(dir);
         exportGraph(g, o, dir.string(), e);
-        // 3 leaves of 9 levels (256²), 2 tables, manifest, include, README.
+        // 3 leaves of 9 levels (256²), 2 tables, manifest, README, the four shader files.
         size_t written = 0;
         const std::string readme = readText(dir / "README.md");
         for (const auto& entry : fs::directory_iterator(dir)) {
@@ -309,7 +324,7 @@ TEST(Export, GraphRendersWhatRenderGpuRenders) {
                 << entry.path().filename() << " is not in the README";
             ++written;
         }
-        EXPECT_EQ(written, 3u * 9u + 2u + 3u);
+        EXPECT_EQ(written, 3u * 9u + 2u + 2u + 4u);
         EXPECT_NE(readme.find("`uGraphPrefiltered1`"), std::string::npos);
         // The unfiltered path's samplers are named as ones that may stay unbound.
         EXPECT_NE(readme.find("also declares `uGraphExample0`"), std::string::npos) << readme;
@@ -365,10 +380,10 @@ TEST(Export, LeanGraphExportsTheSlopesCovariance) {
     const fs::path dir = test::scratchPath("stochtex_export_lean_graph");
     fs::remove_all(dir);
     exportGraph(g, o, dir.string(), ExportOptions{});
-    // 3 leaves and one covariance pyramid of 7 levels (64²), 1 table, manifest, include, README.
+    // 3 leaves and one covariance pyramid of 7 levels (64²), 1 table, manifest, README, the four shader files.
     size_t written = 0;
     for (const auto& entry : fs::directory_iterator(dir)) written += entry.is_regular_file();
-    EXPECT_EQ(written, 4u * 7u + 1u + 3u);
+    EXPECT_EQ(written, 4u * 7u + 1u + 2u + 4u);
     EXPECT_TRUE(fs::exists(dir / "covariance_1_0.exr"));
     EXPECT_NE(readText(dir / "README.md").find("`uGraphCov1`"), std::string::npos);
     GpuGraph gpu(g, *ctx, o);
@@ -495,6 +510,177 @@ TEST(Export, IncludeIsVulkanGlslWithABindingPerResource) {
         EXPECT_EQ(valid, 0) << name << ":\n" << validLog;
     }
     fs::remove_all(dir);
+}
+
+// Runs a command, its output into `log`; (exit status, output).
+std::pair<int, std::string> runLogged(const std::string& command, const fs::path& log) {
+    const int rc = std::system(("(" + command + ") > " + log.string() + " 2>&1").c_str());
+    return {rc, readText(log)};
+}
+
+// Pixel shaders calling every entry point of the HLSL flavours (a lean
+// program's light set as a host would).
+constexpr const char* kHlslProbe = R"(#include "stochtex.hlsl"
+float4 main(float2 uv : TEXCOORD0, float3 n : NORMAL) : SV_Target {
+    gLightDirection = float4(0.0, 0.6, 0.8, 1.0);
+    float3 p = float3(uv, 0.5);
+    return stochtex_sample(uv) + stochtex_sample_grad(uv, float2(0.01, 0.0), float2(0.0, 0.01)) +
+           stochtex_sample_triplanar(p, n) + stochtex_sample_triplanar_grad(p, n, ddx(p), ddy(p));
+}
+)";
+constexpr const char* kUnityProbe = R"(#include "stochtex_unity.hlsl"
+float4 main(float2 uv : TEXCOORD0, float3 n : NORMAL) : SV_Target {
+    float3 p = float3(uv, 0.5), dx = float3(0.01, 0.0, 0.0), dy = float3(0.0, 0.01, 0.0);
+    float4 a, b, c, d;
+    half4 e, f, g, h;
+    StochtexSample_float(uv, a);
+    StochtexSampleGrad_float(uv, dx.xy, dy.xy, b);
+    StochtexSampleTriplanar_float(p, n, c);
+    StochtexSampleTriplanarGrad_float(p, n, dx, dy, d);
+    StochtexSample_half(uv, e);
+    StochtexSampleGrad_half(uv, dx.xy, dy.xy, f);
+    StochtexSampleTriplanar_half(p, n, g);
+    StochtexSampleTriplanarGrad_half(p, n, dx, dy, h);
+    return a + b + c + d + float4(e + f + g + h);
+}
+)";
+
+// The Godot include as GLSL ES 3.00: its uniforms' hints removed, its
+// uniforms with defaults (this export's parameters) made constants.
+std::string godotAsEs(const std::string& godot) {
+    std::string out =
+        "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+        "precision highp sampler2DArray;\n";
+    const std::regex hinted(R"(^uniform (\w+) (\w+) : [^;]*;$)"), initialised(R"(^uniform (\w+) (\w+) = ([^;]*);$)");
+    std::istringstream lines(godot);
+    std::smatch m;
+    for (std::string line; std::getline(lines, line);) {
+        if (std::regex_match(line, m, hinted))
+            line = "uniform " + m[1].str() + " " + m[2].str() + ";";
+        else if (std::regex_match(line, m, initialised))
+            line = "const " + m[1].str() + " " + m[2].str() + " = " + m[3].str() + ";";
+        out += line + "\n";
+    }
+    return out;
+}
+
+// What Godot's shading language lacks, found in `godot`: one message per
+// offending line (uniform blocks, layout qualifiers, precision statements,
+// preprocessor version lines, stage in/out variables, mutable globals,
+// prototypes, names starting with an underscore).
+std::vector<std::string> godotViolations(const std::string& godot) {
+    std::vector<std::string> out;
+    const std::regex mutableGlobal(R"(^(\w+) (\w+)( = .*)?;$)"), prototype(R"(^\w+ \w+\(.*\);$)"),
+        underscore(R"((^|[^\w])_\w)");
+    std::istringstream lines(godot);
+    for (std::string line; std::getline(lines, line);) {
+        const std::string code = line.substr(0, line.find("//"));
+        if (std::regex_search(code, underscore)) out.push_back("name starting with _: " + line);
+        if (code.empty() || code[0] == ' ' || code[0] == '}' || code[0] == '{') continue;  // not top level
+        for (const char* lacking : {"#version", "precision", "layout", "in ", "out "})
+            if (code.rfind(lacking, 0) == 0) out.push_back(std::string(lacking) + ": " + line);
+        if (code.rfind("uniform ", 0) == 0 && code.back() != ';') out.push_back("uniform block: " + line);
+        if (std::regex_match(code, mutableGlobal)) out.push_back("mutable global: " + line);
+        if (std::regex_match(code, prototype)) out.push_back("prototype: " + line);
+    }
+    return out;
+}
+
+// The engine flavours (engine_shaders.h), compiled by real compilers here:
+// stochtex.hlsl and the Unity file by glslang's HLSL front end, each entry
+// point called, to SPIR-V spirv-val accepts; the Godot include holds none of
+// what Godot's language lacks and compiles as GLSL ES 3.00. They run the
+// same program: the HLSL compiled and translated back to GLSL 3.30 by
+// SPIRV-Cross, and the Godot include as ES 3.00, render what stochtex.glsl
+// renders (independent offsets in float, a lean program and a graph in the
+// 8-bit format; 2 texels per pixel).
+TEST(Export, EngineFlavoursCompileAndRenderWhatTheGlslRenders) {
+    auto ctx = GlContext::headless();
+    const fs::path dir = test::scratchPath("stochtex_export_engines");
+    const fs::path log = test::scratchPath("stochtex_export_engines.log");
+    struct Case {
+        const char* preset;
+        ResponseKind response;
+        ExportFormat format;
+    };
+    for (const Case& c : {Case{"camouflage", ResponseKind::PrefilteredColormap, ExportFormat::Float},
+                          Case{"lean-ridges", ResponseKind::Lean, ExportFormat::Rgba8},
+                          Case{"figure14", ResponseKind::PrefilteredColormap, ExportFormat::Rgba8}}) {
+        SCOPED_TRACE(c.preset);
+        fs::remove_all(dir);
+        FilterOptions o;
+        o.use(parseFilter("paper"));
+        o.response.kind = c.response;
+        ExportOptions e;
+        e.format = c.format;
+        exportPatternSpec(loadPreset(c.preset), o, dir.string(), e);
+        std::ofstream(dir / "probe.hlsl") << kHlslProbe;
+        std::ofstream(dir / "probe_unity.hlsl") << kUnityProbe;
+        for (const std::string probe : {"probe", "probe_unity"}) {
+            const fs::path spv = dir / (probe + ".spv");
+            const auto [compiled, compileLog] = runLogged(
+                "glslangValidator -D -V -S frag -e main " + (dir / (probe + ".hlsl")).string() + " -o " + spv.string(),
+                log);
+            EXPECT_EQ(compiled, 0) << probe << ":\n" << compileLog;
+            const auto [valid, validLog] = runLogged("spirv-val --target-env vulkan1.0 " + spv.string(), log);
+            EXPECT_EQ(valid, 0) << probe << ":\n" << validLog;
+        }
+        const std::string godot = readText(dir / "stochtex.gdshaderinc");
+        for (const std::string& v : godotViolations(godot)) ADD_FAILURE() << "Godot lacks " << v;
+        std::ofstream(dir / "godot_probe.frag")
+            << godotAsEs(godot)
+            << "in vec2 uv;\nin vec3 n;\nout vec4 colour;\nvoid main() {\n    vec3 p = vec3(uv, 0.5);\n"
+               "    colour = stochtex_sample(uv) + stochtex_sample_grad(uv, vec2(0.01, 0.0), vec2(0.0, 0.01)) +\n"
+               "        stochtex_sample_triplanar(p, n) + stochtex_sample_triplanar_grad(p, n, dFdx(p), dFdy(p));\n}\n";
+        const auto [esOk, esLog] = runLogged("glslangValidator " + (dir / "godot_probe.frag").string(), log);
+        EXPECT_EQ(esOk, 0) << esLog;
+
+        std::ifstream mf(dir / "manifest.json");
+        const float invExampleSize = 1.0f / nlohmann::json::parse(mf)["example_size"].get<float>();
+        char inv[32];
+        std::snprintf(inv, sizeof inv, "%.9g", double(invExampleSize));
+        for (const double scale : {2.0}) {
+            const int w = 64, h = 48;
+            const Image glsl = renderFromExport(dir, w, h, scale);
+            // HLSL → SPIR-V → GLSL 3.30; the combined samplers take the textures' names.
+            char constant[64];
+            std::snprintf(constant, sizeof constant, "static const float kPixelScale = %.9g;\n", scale);
+            std::ofstream(dir / "round_trip.hlsl")
+                << "#include \"stochtex.hlsl\"\n"
+                << constant
+                << "float4 main(float4 pos : SV_Position) : SV_Target {\n"
+                   "    return stochtex_sample(pos.xy * kPixelScale * uPattern.invExampleSize);\n}\n";
+            const auto [hlslOk, hlslLog] = runLogged(
+                "glslangValidator -D -V -S frag -e main " + (dir / "round_trip.hlsl").string() + " -o " +
+                    (dir / "round_trip.spv").string() + " && spirv-cross " + (dir / "round_trip.spv").string() +
+                    " --version 330 --no-es --output " + (dir / "round_trip.glsl").string(),
+                log);
+            ASSERT_EQ(hlslOk, 0) << hlslLog;
+            const std::string roundTrip = std::regex_replace(
+                readText(dir / "round_trip.glsl"),
+                std::regex(R"(SPIRV_Cross_Combined(\w+?)(SPIRV_Cross_DummySampler|sampler_\1))"), "$1");
+            const Image fromHlsl = renderFragment(dir, w, h, scale, roundTrip);
+            const Image fromGodot =
+                renderFragment(dir, w, h, scale,
+                               godotAsEs(godot) +
+                                   "uniform float uPixelScale;\nout vec4 colour;\nvoid main() { colour = "
+                                   "stochtex_sample(gl_FragCoord.xy * uPixelScale * " +
+                                   inv + "); }\n");
+            double hlslDiff = 0, godotDiff = 0, mean = 0;
+            for (size_t i = 0; i < glsl.data().size(); ++i) {
+                hlslDiff = std::max(hlslDiff, double(std::abs(glsl.data()[i] - fromHlsl.data()[i])));
+                godotDiff = std::max(godotDiff, double(std::abs(glsl.data()[i] - fromGodot.data()[i])));
+                mean += glsl.data()[i] / double(glsl.data().size());
+            }
+            std::printf("%s at %g texels per pixel: max |HLSL - GLSL| %.3g, max |Godot - GLSL| %.3g (mean %.3f)\n",
+                        c.preset, scale, hlslDiff, godotDiff, mean);
+            EXPECT_GT(mean, 0.02);  // something was drawn
+            EXPECT_LE(hlslDiff, 1e-4) << scale;
+            EXPECT_LE(godotDiff, 1e-4) << scale;
+        }
+    }
+    fs::remove_all(dir);
+    fs::remove(log);
 }
 
 // Each storage format renders within the accuracy kExportFormatAccuracy

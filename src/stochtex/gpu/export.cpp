@@ -4,16 +4,20 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "stochtex/core/error.h"
+#include "stochtex/gpu/engine_shaders.h"
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/gpu/packed_stats.h"
 #include "stochtex/gpu/programs.h"
@@ -250,6 +254,44 @@ footprint, blended by n's components to the fourth power);
 include for SPIR-V (`glslangValidator -V`, which defines `VULKAN`): every
 block and sampler then has `layout(set = 0, binding = n)`; define
 `STOCHTEX_BINDING(n)` before the include to choose another set or offset.
+
+## Engines: HLSL, Unity, Godot
+
+The same program in other languages, translated from the SPIR-V of
+`stochtex.glsl` (glslang, then SPIRV-Cross), with the same entry points,
+textures and parameters:
+
+* `stochtex.hlsl` (shader model 5.0: Direct3D 11/12). Each sampler of the
+  table above is a `Texture2D<float4>` / `Texture2DArray<float4>` of the same
+  name at register `t`n (n its Vulkan binding) with a `SamplerState
+  sampler_<name>` at `s`n (all reads are `Load`s: any sampler state does);
+  the parameters are `cbuffer @BLOCK@` at `b0`, the same @SIZE@ bytes.
+  Define `STOCHTEX_REGISTER(r)` empty before the include to let the compiler
+  assign registers. Lean programs: set the static globals `gEyeDirection`
+  and `gLightDirection` before sampling.
+* `stochtex_unity.hlsl`: for a Shader Graph Custom Function node (Type File,
+  Name `StochtexSample`, `StochtexSampleGrad`, `StochtexSampleTriplanar` or
+  `StochtexSampleTriplanarGrad`; float and half precision) or an `#include`
+  in a hand-written shader; it includes `stochtex.hlsl` with
+  registers left to Unity. Bind the textures by name (point filtering,
+  without generated mip maps: load each level from its file) and the block
+  with `Shader.SetGlobalConstantBuffer("@BLOCK@", buffer, 0, @SIZE@)`.
+* `stochtex.gdshaderinc` (Godot 4): `#include "stochtex.gdshaderinc"` in a
+  spatial shader and call `stochtex_sample(UV * 8.0).rgb` in `fragment()`
+  (linear RGB, as `ALBEDO` takes it). Godot has no uniform blocks: each
+  member is a uniform of its own, @GODOT@; the samplers are uniforms of the
+  names above, declared `filter_nearest, repeat_disable`. Lean programs'
+  `gEyeDirection` and `gLightDirection` are uniforms there (one direction
+  per material).
+
+What is checked here (`make test`): `stochtex.hlsl` and the Unity file are
+compiled by glslang's HLSL front end (as a pixel shader calling every entry
+point) to SPIR-V that `spirv-val` accepts; the Godot include is checked for
+the constructs Godot's language lacks (uniform blocks, layout qualifiers,
+mutable globals, prototypes, precision statements) and, its uniform hints
+removed, compiled as GLSL ES 3.00 by glslang. Not checked: Microsoft's
+compilers (FXC, DXC), Unity's and Godot's own compilers (none runs here),
+and any rendering in those engines.
 )";
 
 // The README's row for a sampler of manifest.json's "textures".
@@ -326,7 +368,13 @@ std::vector<std::string> unlistedSamplers(const std::string& include, const nloh
 
 // shading: the section on how the colour is lit ("" when it is not).
 std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& textures, const std::string& shading,
-                   const std::string& include, ExportFormat format) {
+                   const std::string& include, ExportFormat format, const EngineShaders& engines) {
+    std::string godotParameters;
+    for (size_t i = 0; i < engines.godotParameters.size(); ++i)
+        godotParameters += std::string(i == 0                                    ? ""
+                                       : i + 1 == engines.godotParameters.size() ? " and "
+                                                                                 : ", ") +
+                           "`" + engines.godotParameters[i] + "`";
     std::string textureRows;
     for (const nlohmann::json& t : textures) textureRows += textureRow(t);
     std::string unread;
@@ -354,7 +402,8 @@ std::string readme(const std::vector<WrittenFile>& files, const nlohmann::json& 
                                                          {"@TEXTURES@", textureRows},
                                                          {"@UNREAD@", unread},
                                                          {"@FORMATS@", formatRows(format)},
-                                                         {"@LEAN@", shading}};
+                                                         {"@LEAN@", shading},
+                                                         {"@GODOT@", godotParameters}};
     std::string text = kReadme;
     for (const auto& [key, value] : fills)
         for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
@@ -431,8 +480,32 @@ void makeFolder(const std::string& dir) {
 }
 
 // manifest.json, stochtex.glsl and README.md, after the data.
+// The parameter block's values as GLSL literals, by member name.
+std::map<std::string, std::string> parameterLiterals(const kernel::PatternParams& params) {
+    std::map<std::string, std::string> out;
+    for (const kernel::PatternParamField& f : kernel::kPatternParamFields) {
+        const char* at = reinterpret_cast<const char*>(&params) + f.offset;
+        char text[48];
+        if (std::string_view(f.type) == "float") {
+            float v;
+            std::memcpy(&v, at, sizeof v);
+            std::snprintf(text, sizeof text, "%.9g", double(v));
+            if (!std::strpbrk(text, ".eEn")) std::strcat(text, ".0");  // a float literal, never an int
+        } else if (std::string_view(f.type) == "int") {
+            int v;
+            std::memcpy(&v, at, sizeof v);
+            std::snprintf(text, sizeof text, "%d", v);
+        } else {
+            continue;  // no vector members today; Godot would take them as uniforms without defaults
+        }
+        out[f.name] = text;
+    }
+    return out;
+}
+
 void writeDescription(const std::string& dir, nlohmann::json& m, const std::string& include,
-                      std::vector<WrittenFile>& files, const std::string& shading, ExportFormat format) {
+                      std::vector<WrittenFile>& files, const std::string& shading, ExportFormat format,
+                      const kernel::PatternParams& params) {
     m["colour_space"] = "linear";  // the tables and stochtex_sample: linear light, never sRGB codes
     // Vulkan's bindings, as the include declares them (set 0 unless STOCHTEX_BINDING says otherwise).
     m["block_binding"] = 0;
@@ -447,8 +520,20 @@ void writeDescription(const std::string& dir, nlohmann::json& m, const std::stri
                      "`vec4 stochtex_sample(vec2 uv)`, `stochtex_sample_grad(uv, ddx, ddy)`, "
                      "`stochtex_sample_triplanar(p, n)`, `stochtex_sample_triplanar_grad(p, n, dpdx, dpdy)` and what "
                      "they call"});
+    // The engine flavours, translated from the include (engine_shaders.h).
+    const EngineShaders engines = engineShaders(include, parameterLiterals(params));
+    const std::pair<const char*, const std::string*> engineFiles[] = {{"stochtex.hlsl", &engines.hlsl},
+                                                                      {"stochtex_unity.hlsl", &engines.unity},
+                                                                      {"stochtex.gdshaderinc", &engines.godot}};
+    for (const auto& [name, text] : engineFiles) writeFileAtomic((fs::path(dir) / name).string(), *text);
+    files.push_back({"`stochtex.hlsl`", "HLSL source, shader model 5.0", "the program's entry points as HLSL"});
+    files.push_back({"`stochtex_unity.hlsl`", "HLSL source (Unity)",
+                     "Shader Graph Custom Function entry points over `stochtex.hlsl`"});
+    files.push_back(
+        {"`stochtex.gdshaderinc`", "Godot 4 shading language include", "the program's entry points for Godot"});
     files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
-    writeFileAtomic((fs::path(dir) / "README.md").string(), readme(files, m["textures"], shading, include, format));
+    writeFileAtomic((fs::path(dir) / "README.md").string(),
+                    readme(files, m["textures"], shading, include, format, engines));
 }
 
 }  // namespace
@@ -590,7 +675,7 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
             m["graph"][op.info->name].push_back(std::move(entry));
         }
     writeDescription(dir, m, exportedGraphInclude(graph, GraphMoments::Matched, estimator), files,
-                     graph.shadesLight() ? kProgramLightSection : "", format);
+                     graph.shadesLight() ? kProgramLightSection : "", format, patternParams(graph, options));
 }
 
 void exportPatternSpec(const PatternSpec& spec, const FilterOptions& options, const std::string& dir,
