@@ -111,6 +111,14 @@ Image renderFragment(const fs::path& dir, int width, int height, double scale, c
     glAttachShader(prog, vs);
     glAttachShader(prog, fs_);
     glLinkProgram(prog);
+    GLint linked = 0;
+    glGetProgramiv(prog, GL_LINK_STATUS, &linked);
+    if (!linked) {  // else the last program would stay in use and draw instead
+        char linkLog[4096];
+        glGetProgramInfoLog(prog, sizeof linkLog, nullptr, linkLog);
+        ADD_FAILURE() << "link: " << linkLog;
+        return Image(width, height, 3);
+    }
     glUseProgram(prog);
     // Every sampler of manifest.json's "textures", each on a unit of its own,
     // uploaded in the GL format the manifest names: float files as floats,
@@ -518,16 +526,23 @@ std::pair<int, std::string> runLogged(const std::string& command, const fs::path
     return {rc, readText(log)};
 }
 
-// Pixel shaders calling every entry point of the HLSL flavours (a lean
-// program's light set as a host would).
-constexpr const char* kHlslProbe = R"(#include "stochtex.hlsl"
-float4 main(float2 uv : TEXCOORD0, float3 n : NORMAL) : SV_Target {
-    gLightDirection = float4(0.0, 0.6, 0.8, 1.0);
-    float3 p = float3(uv, 0.5);
-    return stochtex_sample(uv) + stochtex_sample_grad(uv, float2(0.01, 0.0), float2(0.0, 0.01)) +
-           stochtex_sample_triplanar(p, n) + stochtex_sample_triplanar_grad(p, n, ddx(p), ddy(p));
+// A pixel shader calling the entry points of stochtex.hlsl (a lean
+// program's light set as a host would); with `triplanar` all four, else
+// the two planar ones (glslang's HLSL front end inlines every call: the
+// triplanar ones, three samples each, cost it seconds).
+std::string hlslProbe(bool triplanar) {
+    return std::string(
+               "#include \"stochtex.hlsl\"\n"
+               "float4 main(float2 uv : TEXCOORD0, float3 n : NORMAL) : SV_Target {\n"
+               "    gLightDirection = float4(0.0, 0.6, 0.8, 1.0);\n"
+               "    float3 p = float3(uv, 0.5);\n"
+               "    return stochtex_sample(uv) + stochtex_sample_grad(uv, float2(0.01, 0.0), float2(0.0, 0.01))") +
+           (triplanar
+                ? " +\n        stochtex_sample_triplanar(p, n) + stochtex_sample_triplanar_grad(p, n, ddx(p), ddy(p))"
+                : "") +
+           ";\n}\n";
 }
-)";
+// The Unity file's Custom Function entry points, each precision.
 constexpr const char* kUnityProbe = R"(#include "stochtex_unity.hlsl"
 float4 main(float2 uv : TEXCOORD0, float3 n : NORMAL) : SV_Target {
     float3 p = float3(uv, 0.5), dx = float3(0.01, 0.0, 0.0), dy = float3(0.0, 0.01, 0.0);
@@ -603,9 +618,10 @@ TEST(Export, EngineFlavoursCompileAndRenderWhatTheGlslRenders) {
         ResponseKind response;
         ExportFormat format;
     };
-    for (const Case& c : {Case{"camouflage", ResponseKind::PrefilteredColormap, ExportFormat::Float},
-                          Case{"lean-ridges", ResponseKind::Lean, ExportFormat::Rgba8},
-                          Case{"figure14", ResponseKind::PrefilteredColormap, ExportFormat::Rgba8}}) {
+    const Case cases[] = {{"camouflage", ResponseKind::PrefilteredColormap, ExportFormat::Float},
+                          {"lean-ridges", ResponseKind::Lean, ExportFormat::Rgba8},
+                          {"figure14", ResponseKind::PrefilteredColormap, ExportFormat::Rgba8}};
+    for (const Case& c : cases) {
         SCOPED_TRACE(c.preset);
         fs::remove_all(dir);
         FilterOptions o;
@@ -614,9 +630,13 @@ TEST(Export, EngineFlavoursCompileAndRenderWhatTheGlslRenders) {
         ExportOptions e;
         e.format = c.format;
         exportPatternSpec(loadPreset(c.preset), o, dir.string(), e);
-        std::ofstream(dir / "probe.hlsl") << kHlslProbe;
+        // The entry points are the same wrappers for every program: the
+        // triplanar ones and the Unity file's are compiled for the first.
+        const bool everyEntryPoint = &c == &cases[0];
+        std::ofstream(dir / "probe.hlsl") << hlslProbe(everyEntryPoint);
         std::ofstream(dir / "probe_unity.hlsl") << kUnityProbe;
         for (const std::string probe : {"probe", "probe_unity"}) {
+            if (probe == "probe_unity" && !everyEntryPoint) continue;
             const fs::path spv = dir / (probe + ".spv");
             const auto [compiled, compileLog] = runLogged(
                 "glslangValidator -D -V -S frag -e main " + (dir / (probe + ".hlsl")).string() + " -o " + spv.string(),
@@ -681,6 +701,156 @@ TEST(Export, EngineFlavoursCompileAndRenderWhatTheGlslRenders) {
     }
     fs::remove_all(dir);
     fs::remove(log);
+}
+
+// A unit sphere or the cube [-1, 1]³ ray-cast in a fragment shader (an
+// orthographic camera looking down at a corner), textured by the export's
+// triplanar entry point at half an example period per unit (the pattern's
+// features several pixels wide, so neighbours correlate); uMode 1: the hard
+// switch to the dominant projection (what blending avoids), 2: the blend
+// weights. A miss is -1.
+constexpr const char* kTriplanarShapes = R"(
+uniform int uShape;  // 0: sphere, 1: cube
+uniform int uMode;   // 0: stochtex_sample_triplanar, 1: dominant projection only, 2: weights
+out vec4 colour;
+bool castRay(vec2 pixel, out vec3 p, out vec3 n) {
+    vec2 s = (pixel / kViewSize * 2.0 - 1.0) * vec2(kViewSize.x / kViewSize.y, 1.0) * 1.25;
+    vec3 d = normalize(vec3(-0.9, -0.7, -1.1));
+    vec3 right = normalize(cross(d, vec3(0.0, 1.0, 0.0))), up = cross(right, d);
+    vec3 o = -4.0 * d + s.x * right + s.y * up;
+    if (uShape == 0) {
+        float b = dot(o, d), disc = b * b - (dot(o, o) - 1.0);
+        if (disc < 0.0) return false;
+        p = o + (-b - sqrt(disc)) * d;
+        n = p;
+        return true;
+    }
+    vec3 t0 = (-1.0 - o) / d, t1 = (1.0 - o) / d, tn = min(t0, t1), tf = max(t0, t1);
+    float enter = max(max(tn.x, tn.y), tn.z);
+    if (enter > min(min(tf.x, tf.y), tf.z)) return false;
+    p = o + enter * d;
+    n = enter == tn.x ? vec3(-sign(d.x), 0.0, 0.0) : enter == tn.y ? vec3(0.0, -sign(d.y), 0.0) : vec3(0.0, 0.0, -sign(d.z));
+    return true;
+}
+void main() {
+    vec3 p, n;
+    bool hit = castRay(gl_FragCoord.xy, p, n);
+    vec3 q = p * 0.5, dx = dFdx(q), dy = dFdy(q);
+    if (!hit) {
+        colour = vec4(-1.0);
+    } else if (uMode == 2) {
+        colour = vec4(triplanarWeights(n), 1.0);
+    } else if (uMode == 1) {
+        vec3 a = abs(n);
+        colour = a.x >= a.y && a.x >= a.z ? stochtex_sample_grad(q.zy, dx.zy, dy.zy)
+               : a.y >= a.z               ? stochtex_sample_grad(q.xz, dx.xz, dy.xz)
+                                          : stochtex_sample_grad(q.xy, dx.xy, dy.xy);
+    } else {
+        colour = stochtex_sample_triplanar_grad(q, n, dx, dy);
+    }
+}
+)";
+
+// The triplanar variant draws a sphere and a cube without seams. On the
+// sphere the projections blend: the mean colour difference of neighbouring
+// pixels whose dominant projection differs (the pairs across a blend's
+// middle) stays within that of neighbours inside one projection, where the
+// hard switch to the dominant projection (measured too, so the measure is
+// seen to catch a seam) jumps by the difference of unrelated pixels. On the
+// cube each face is one projection and the change of projection is the
+// crease itself: the pairs across an edge differ no more than unrelated
+// pixels do, and the pixels along the edges have the faces' mean and spread
+// (no line of pixels filtered with a wrong footprint).
+TEST(Export, TriplanarDrawsASphereAndACubeWithoutSeams) {
+    auto ctx = GlContext::headless();
+    const fs::path dir = test::scratchPath("stochtex_export_triplanar");
+    fs::remove_all(dir);
+    FilterOptions o;
+    o.use(parseFilter("paper"));
+    exportPatternSpec(loadPreset("camouflage"), o, dir.string());
+    const int w = 192, h = 160;
+    const std::string source = "#version 330 core\nconst vec2 kViewSize = vec2(" + std::to_string(w) + ".0, " +
+                               std::to_string(h) + ".0);\n" + readText(dir / "stochtex.glsl") + kTriplanarShapes;
+    for (const int shape : {0, 1}) {
+        const auto draw = [&](int mode) {
+            std::string s = source;
+            s.replace(s.find("uniform int uShape;"), 19, "const int uShape = " + std::to_string(shape) + ";");
+            s.replace(s.find("uniform int uMode;"), 18, "const int uMode = " + std::to_string(mode) + ";");
+            return renderFragment(dir, w, h, 1.0, s);
+        };
+        const Image blended = draw(0), hard = draw(1), weights = draw(2);
+        // Pixels 2 or more from a miss (the 2 × 2 derivative quads stay on the surface).
+        const auto inside = [&](int x, int y) {
+            for (int j = y - 2; j <= y + 2; ++j)
+                for (int i = x - 2; i <= x + 2; ++i)
+                    if (i < 0 || j < 0 || i >= w || j >= h || weights.at(i, j, 0) < 0.0f) return false;
+            return true;
+        };
+        const auto dominant = [&](int x, int y) {
+            const float a = weights.at(x, y, 0), b = weights.at(x, y, 1), c = weights.at(x, y, 2);
+            return a >= b && a >= c ? 0 : b >= c ? 1 : 2;
+        };
+        const auto largest = [&](int x, int y) {
+            return std::max({weights.at(x, y, 0), weights.at(x, y, 1), weights.at(x, y, 2)});
+        };
+        const auto diff = [](const Image& img, int x0, int y0, int x1, int y1) {
+            double d = 0;
+            for (int c = 0; c < 3; ++c) d += std::abs(img.at(x0, y0, c) - img.at(x1, y1, c)) / 3.0;
+            return d;
+        };
+        struct Mean {
+            double sum = 0;
+            int n = 0;
+            void add(double v) { sum += v, ++n; }
+            double value() const { return sum / std::max(n, 1); }
+        };
+        for (const Image* img : {&blended, &hard}) {
+            Mean seam, interior, unrelated, seamGreen, interiorGreen, seamGreen2, interiorGreen2;
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x) {
+                    if (!inside(x, y)) continue;
+                    const bool pure = largest(x, y) > 0.97f;
+                    for (const auto [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+                        if (!inside(x + dx, y + dy)) continue;
+                        const double d = diff(*img, x, y, x + dx, y + dy);
+                        if (dominant(x, y) != dominant(x + dx, y + dy)) {
+                            seam.add(d);
+                            const double g = img->at(x, y, 1);
+                            seamGreen.add(g), seamGreen2.add(g * g);
+                        } else if (pure && largest(x + dx, y + dy) > 0.97f) {
+                            interior.add(d);
+                            const double g = img->at(x, y, 1);
+                            interiorGreen.add(g), interiorGreen2.add(g * g);
+                        }
+                    }
+                    // An unrelated pixel: a few pattern features away.
+                    const int ux = x + 23, uy = y + 17;
+                    if (inside(ux, uy)) unrelated.add(diff(*img, x, y, ux, uy));
+                }
+            const double seamStd = std::sqrt(seamGreen2.value() - seamGreen.value() * seamGreen.value()),
+                         interiorStd =
+                             std::sqrt(interiorGreen2.value() - interiorGreen.value() * interiorGreen.value());
+            const char* what = img == &blended ? "blended" : "hard switch";
+            std::printf(
+                "[ info ] %s, %s: mean |Δ| across the seams %.4f (%d pairs), inside %.4f (%d), unrelated "
+                "%.4f; green along the seams %.3f ± %.3f, inside %.3f ± %.3f\n",
+                shape == 0 ? "sphere" : "cube", what, seam.value(), seam.n, interior.value(), interior.n,
+                unrelated.value(), seamGreen.value(), seamStd, interiorGreen.value(), interiorStd);
+            ASSERT_GT(seam.n, 100);
+            ASSERT_GT(interior.n, 1000);
+            ASSERT_GT(unrelated.n, 1000);
+            EXPECT_GT(unrelated.value(), 2.0 * interior.value());  // the measure has room to see a jump
+            if (shape == 0 && img == &blended) EXPECT_LT(seam.value(), 1.25 * interior.value());
+            if (shape == 0 && img == &hard) EXPECT_GT(seam.value(), 1.5 * interior.value());
+            if (shape == 1) {
+                EXPECT_LT(seam.value(), 1.15 * unrelated.value());
+                EXPECT_LT(std::abs(seamGreen.value() - interiorGreen.value()), 0.25 * interiorStd);
+                EXPECT_GT(seamStd, 0.75 * interiorStd);
+                EXPECT_LT(seamStd, 1.33 * interiorStd);
+            }
+        }
+    }
+    fs::remove_all(dir);
 }
 
 // Each storage format renders within the accuracy kExportFormatAccuracy
