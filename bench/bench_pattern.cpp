@@ -226,7 +226,7 @@ void BM_BuildPyramids(benchmark::State& state) {
         noises[a] =
             TilingBlendingNoise(std::make_shared<const NoiseExample>(synthesizeExample(s)), state.range(1) ? 0 : a);
     }
-    const TiledField field({noises[0], noises[1]}, kDefaultGridDensity,
+    const TiledField field({noises[0], noises[1]}, GridLayout{},
                            state.range(1) ? OffsetSharing::Shared : OffsetSharing::Independent);
     size_t bytes = 0, peakGrowth = 0;
     for (auto _ : state) {

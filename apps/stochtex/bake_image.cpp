@@ -11,6 +11,7 @@
 #include "progress.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_stream.h"
+#include "stochtex/pattern/tileable.h"
 
 namespace stochtex::cli {
 
@@ -23,6 +24,7 @@ void registerBakeImage(CLI::App& app) {
         DeviceFlags device;
         std::string output;
         int bits = 8, band = 256, threads = 0;
+        bool tileable = false;
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("bake-image",
@@ -43,6 +45,9 @@ void registerBakeImage(CLI::App& app) {
         ->check(CLI::Range(1, 4096));
     addDeviceFlags(*cmd, args->device, "Render the bands with the GLSL implementation", false);
     addThreadsFlag(*cmd, args->threads);
+    cmd->add_flag("--tileable", args->tileable,
+                  "An image that wraps without a seam: the pattern made periodic over it (its grid stretched along u "
+                  "to a whole number of cells; --scale moves to a whole number of example periods)");
     cmd->callback([args, cmd, bits] {
         applyResponseFlags(*cmd, args->response, args->options);
         refuseUnusedFilterFlags(*cmd, args->options);
@@ -52,9 +57,17 @@ void registerBakeImage(CLI::App& app) {
         checkImageStreamFormat(args->output);  // .jpg and .tif are written whole, not in bands
         if (!gpuHasSource(args->options.source))
             refuseOption(*cmd, "--filter", "bake-image renders none, paper or smooth");
-        const PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
+        PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
         Camera whole;
         whole.view = makeView(spec, args->view, ViewUse::BandedBake);  // memory is one band: 65536 a side
+        std::string tiling;
+        if (args->tileable) {
+            const TilePeriod t = makeTileable(spec, args->options.response, whole.view);
+            char text[160];
+            std::snprintf(text, sizeof text, ", tileable: %d x %d example periods of %d texels, grid x%.4f along u",
+                          t.periodsU, t.periodsV, t.exampleSize, t.stretch);
+            tiling = text;
+        }
         ThreadLimit limit(args->threads);
         const auto start = std::chrono::steady_clock::now();
         ProgressLine progress("bake-image");
@@ -67,9 +80,9 @@ void registerBakeImage(CLI::App& app) {
         out->finish();
         progress.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("wrote %s (%dx%d, %s, filter %s, %s, bands of %d rows, %.1f s)\n", args->output.c_str(), v.width,
+        std::printf("wrote %s (%dx%d, %s, filter %s, %s, bands of %d rows%s, %.1f s)\n", args->output.c_str(), v.width,
                     v.height, spec.name.c_str(), filterLabel(args->options).c_str(), args->device.gpu ? "GPU" : "CPU",
-                    bandRows(v.width, args->band), seconds);
+                    bandRows(v.width, args->band), tiling.c_str(), seconds);
     });
 }
 

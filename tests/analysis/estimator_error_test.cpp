@@ -22,7 +22,7 @@ TiledField noises(SpectrumShape shape, double f, double b, double theta) {
     return TiledField(
         {TilingBlendingNoise(std::make_shared<const NoiseExample>(test::example(shape, f, b, theta, 3, 128)), 11),
          TilingBlendingNoise(std::make_shared<const NoiseExample>(test::example(shape, f, b, theta, 4, 128)), 12)},
-        kDefaultGridDensity, OffsetSharing::Independent);
+        GridLayout{}, OffsetSharing::Independent);
 }
 
 // The row of an estimator at a footprint side.
@@ -136,7 +136,7 @@ TEST(EstimatorError, IndependentOfThreadCount) {
 
 TEST(EstimatorError, NeedsTwoChannels) {
     const TiledField pair = noises(SpectrumShape::LowPass, 6, 0, 0);
-    const TiledField one({pair.channel(0)}, kDefaultGridDensity, OffsetSharing::Independent);
+    const TiledField one({pair.channel(0)}, GridLayout{}, OffsetSharing::Independent);
     EXPECT_THROW(measureEstimatorErrors(one, EstimatorErrorOptions{}), std::invalid_argument);
 }
 

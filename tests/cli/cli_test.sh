@@ -760,6 +760,11 @@ case_bake_image() {
   expect_ok "render lean for bake-image" "$out/biglean_ref.png" -- "$bin" render --preset lean-ridges --response lean --size 96,64 --filter smooth -o "$out/biglean_ref.png"
   cmp -s "$out/biglean.png" "$out/biglean_ref.png" || fail "bake-image lean differs from render"
   expect_ok "bake-image --gpu compute" "$out/biggc.png" -- "$bin" bake-image --preset marble --size 120,90 --band 32 --filter paper --gpu --pipeline compute -o "$out/biggc.png"
+  # --tileable: whole periods (1.8 asked, 2 made), its report; the GPU's bands alike
+  expect_ok "bake-image --tileable" "$out/tile.png" -- "$bin" bake-image --preset camouflage --size 96 --scale 4.8 --band 40 --tileable -o "$out/tile.png"
+  grep -q "tileable: 2 x 2 example periods of 256 texels, grid x1.0104 along u" "$work/out.txt" || fail "bake-image --tileable: report: $(cat "$work/out.txt")"
+  expect_ok "bake-image --tileable --gpu" "$out/tileg.png" -- "$bin" bake-image --preset camouflage --size 96 --scale 4.8 --tileable --gpu -o "$out/tileg.png"
+  expect_bad "bake-image --tileable, no whole periods" "$out/tile2.png" "--size: size must cover a whole number of example periods along both axes to tile: 256 × 100 pixels" -- "$bin" bake-image --preset camouflage --size 256,100 --tileable -o "$out/tile2.png"
 }
 
 # Output formats by extension (PNG, EXR, JPEG, TIFF), bake-image to EXR, and

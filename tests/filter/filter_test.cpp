@@ -24,7 +24,7 @@ const double kDensity = kDefaultGridDensity;
 TiledField noisePair(const Image& ex, const Image& ey, uint32_t sx, uint32_t sy) {
     return TiledField({TilingBlendingNoise(std::make_shared<const NoiseExample>(ex), sx),
                        TilingBlendingNoise(std::make_shared<const NoiseExample>(ey), sy)},
-                      kDensity, sx == sy ? OffsetSharing::Shared : OffsetSharing::Independent);
+                      GridLayout::plane(kDensity), sx == sy ? OffsetSharing::Shared : OffsetSharing::Independent);
 }
 
 }  // namespace
@@ -212,15 +212,17 @@ TEST(TiledField, SharedOffsetsNeedOneSeedAndCovarianceNeedsSharedOffsets) {
         return TilingBlendingNoise(std::make_shared<const NoiseExample>(e), seed);
     };
     EXPECT_EQ(test::inputErrorOf([&] {
-                  TiledField({noise(1), noise(2)}, kDensity, OffsetSharing::Shared);
+                  TiledField({noise(1), noise(2)}, GridLayout::plane(kDensity), OffsetSharing::Shared);
               }).parameter(),
               "offsets");
-    const TiledField independent({noise(1), noise(1)}, kDensity, OffsetSharing::Independent);
+    const TiledField independent({noise(1), noise(1)}, GridLayout::plane(kDensity), OffsetSharing::Independent);
     EXPECT_FALSE(independent.shared());
     EXPECT_EQ(test::inputErrorOf([&] { FootprintEstimator(independent, true); }).parameter(), "covariance");
-    EXPECT_EQ(test::inputErrorOf([&] { TiledField({}, kDensity, OffsetSharing::Independent); }).parameter(),
+    EXPECT_EQ(test::inputErrorOf([&] {
+                  TiledField({}, GridLayout::plane(kDensity), OffsetSharing::Independent);
+              }).parameter(),
               "channels");
-    const TiledField three({noise(1), noise(1), noise(1)}, kDensity, OffsetSharing::Shared);
+    const TiledField three({noise(1), noise(1), noise(1)}, GridLayout::plane(kDensity), OffsetSharing::Shared);
     EXPECT_EQ(three.channelCount(), 3);
     EXPECT_EQ(test::inputErrorOf([&] { FootprintEstimator(three, true); }).parameter(), "field");
 }

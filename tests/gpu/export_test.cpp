@@ -65,9 +65,9 @@ std::vector<std::uint8_t> parameterBlock(const std::string& readme, const nlohma
         {"aniso", {i(m["aniso"].get<int>())}},
         {"smoothTable", {i(m["filter"] == "smooth")}},
         {"tableLevels", {i(m.contains("table") ? m["table"]["levels"].get<int>() : 0)}},  // a lean program has none
-        {"spare0", {0}},
-        {"spare1", {0}},
-        {"spare2", {0}},
+        {"gridPeriodU", {i(m["grid_period"][0].get<int>())}},
+        {"gridPeriodV", {i(m["grid_period"][1].get<int>())}},
+        {"gridDensityU", {f(m["grid_density_u"].get<float>())}},
     };
     std::vector<std::uint8_t> block(bytes, 0);
     std::istringstream lines(readme);

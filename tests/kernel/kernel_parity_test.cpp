@@ -174,7 +174,7 @@ TEST_F(KernelParity, TriangleGridStencilVerticesAndOffsetsAreBitExact) {
     for (int i = 0; i < kItems; i += 2) in[size_t(i)].z = floatBitsToUint(kernel::kDefaultGridDensity);
     const auto gpu = runOnGpu({"grid"}, R"(
         vec4 a = wordf(0);
-        Stencil s = triangleGrid(a.xy, a.z);
+        Stencil s = triangleGrid(a.xy, planeGrid(a.z));
         emit(0, uvec4(s.cell, uint(s.upper), 0u));
         emitf(1, vec4(s.w, 0.0));
         emit(2, uvec4(stencilVertex(s, 0), stencilVertex(s, 1)));
@@ -184,7 +184,7 @@ TEST_F(KernelParity, TriangleGridStencilVerticesAndOffsetsAreBitExact) {
         gpu, 4,
         [&](int i) {
             const vec4 a = floats(in[size_t(i)]);
-            const Stencil s = triangleGrid(vec2(a.x, a.y), a.z);
+            const Stencil s = triangleGrid(vec2(a.x, a.y), planeGrid(a.z));
             return std::vector<uvec4>{
                 uvec4(s.cell.x, s.cell.y, uint(s.upper), 0u), bits(vec4(s.w, 0.0f)),
                 uvec4(stencilVertex(s, 0), stencilVertex(s, 1)),
@@ -1014,7 +1014,7 @@ TEST(KernelCpuPath, ScanlineStencilMatchesTheKernelTriangleGrid) {
     for (int i = 0; i < kItems; ++i) {
         const float u = r.uniform(-64.0f, 64.0f), v = r.uniform(-64.0f, 64.0f);
         const Stencil row = TriangleGridRow(v).stencil(u);
-        const Stencil k = triangleGrid(vec2(u, v), kernel::kDefaultGridDensity);
+        const Stencil k = triangleGrid(vec2(u, v), kernel::planeGrid(kernel::kDefaultGridDensity));
         ++n;
         if (row.cell == k.cell && row.upper == k.upper) {
             ++sameCell;

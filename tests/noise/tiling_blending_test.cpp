@@ -107,7 +107,7 @@ TEST(TriangleGrid, MatchesTheDocumentedConventionAtHandComputedPoints) {
         // kernel's float version (what the shaders run) must all hold it.
         const kernel::vec2 uv(float(c.u), float(c.v));
         const BlendStencil stencils[] = {triangleGrid(c.u, c.v), TriangleGridRow(c.v).stencil(c.u),
-                                         kernel::triangleGrid(uv, kernel::kDefaultGridDensity)};
+                                         kernel::triangleGrid(uv, kernel::planeGrid(kernel::kDefaultGridDensity))};
         for (const BlendStencil& s : stencils) {
             SCOPED_TRACE(testing::Message() << "uv = (" << c.u << ", " << c.v << "), path " << (&s - stencils));
             EXPECT_EQ(s.cell.x, c.cellX);

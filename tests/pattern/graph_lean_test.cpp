@@ -48,7 +48,8 @@ TEST(GraphOps, LeanOpIsTheKernelsLobeLit) {
     using namespace kernel;
     const vec3 light = normalize(vec3(0.3f, -0.5f, 0.8f)), eye(0.0f, 0.0f, 1.0f), albedo(0.2f, 0.4f, 0.6f);
     const vec3 got = leanOp(vec2(0.1f, -0.2f), vec2(0.01f, 0.02f), 0.005f, albedo, light, eye, 0.1f, 0.3f);
-    const vec3 want = leanShade(leanLobe(vec2(0.1f, -0.2f), vec2(0.01f, 0.02f), 0.005f, 0.1f), light, eye, albedo, 0.3f);
+    const vec3 want =
+        leanShade(leanLobe(vec2(0.1f, -0.2f), vec2(0.01f, 0.02f), 0.005f, 0.1f), light, eye, albedo, 0.3f);
     EXPECT_EQ(got.x, want.x);
     EXPECT_EQ(got.y, want.y);
     EXPECT_EQ(got.z, want.z);
@@ -85,22 +86,21 @@ TEST(GraphPattern, LeanNodeShadesTheHeightsSlopesOnItsTiles) {
     EXPECT_EQ(g.leaf(2).offsetSeed(), g.leaf(0).offsetSeed());
 
     const NoiseExample height = buildGraphField(*spec.graph, "height", spec.seed, "ridges");
-    const TiledField slopes = slopeField(height.values(), 0.25, g.leaf(0).offsetSeed(), g.gridDensity());
+    const TiledField slopes = slopeField(height.values(), 0.25, g.leaf(0).offsetSeed(), g.grid());
     const double pi = 3.14159265358979;
     const kernel::vec3 light(0.0f, float(-std::cos(36.87 * pi / 180)), float(std::sin(36.87 * pi / 180)));
     double worst = 0;
     for (int i = 0; i < 200; ++i) {
         const double u = 0.37 * i + 0.11, v = 0.23 * i - 1.7;
-        const BlendStencil s = triangleGrid(u, v, g.gridDensity());
+        const BlendStencil s = triangleGrid(u, v, g.grid());
         const float fu = periodFraction(u), fv = periodFraction(v);
         const float h = g.leaf(0).blend(s, fu, fv);
         const kernel::vec2 slope(slopes.channel(0).blend(s, fu, fv), slopes.channel(1).blend(s, fu, fv));
         const Rgb a = g.evaluate(u, v, 0, GraphPattern::kFromAbove);  // the height leaf
         EXPECT_EQ(a[0], h);
         const Rgb albedo = g.evaluate(u, v, 3, GraphPattern::kFromAbove);  // the colormap's slot
-        const kernel::vec3 want = leanOp(slope, kernel::vec2(0.0f), 0.0f,
-                                                        kernel::vec3(albedo[0], albedo[1], albedo[2]), light,
-                                                        kernel::vec3(0.0f, 0.0f, 1.0f), 0.08f, 0.05f);
+        const kernel::vec3 want = leanOp(slope, kernel::vec2(0.0f), 0.0f, kernel::vec3(albedo[0], albedo[1], albedo[2]),
+                                         light, kernel::vec3(0.0f, 0.0f, 1.0f), 0.08f, 0.05f);
         const Rgb got = g.evaluate(u, v);
         for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(double(got[size_t(c)]) - want[c]));
     }
@@ -155,7 +155,8 @@ std::string buildError(const std::string& text) {
 }
 
 TEST(GraphPattern, LeanNodeRefusesHeightsWithoutAnExampleOrWithTurnedAxes) {
-    const std::string noise = R"({"type": "spectral_noise", "size": 32, "components": [{"shape": "lowpass", "cutoff": 4}]})";
+    const std::string noise =
+        R"({"type": "spectral_noise", "size": 32, "components": [{"shape": "lowpass", "cutoff": 4}]})";
     const std::string head = R"({"name": "g", "nodes": {"h": )" + noise +
                              R"(, "a": {"type": "colormap", "x": "h", "y": "h", "colormap": {"type": "gaussian"}}, )";
     std::string e = buildError(head + R"("k": {"type": "curve", "input": "h", "points": [[0, 0], [1, 1]]},

@@ -76,7 +76,7 @@ TEST(SpectralSlopes, AreTheDerivativeAndMatchCentralDifferences) {
 // lobes' angular spread (bandwidth 3 at frequency 10) lessens that.
 TiledField ridgeSlopes(int size) {
     const Image h = example(SpectrumShape::BiLobe, 10, 3, 30, 23, size);
-    return slopeField(h, 0.3, 41, kDefaultGridDensity);
+    return slopeField(h, 0.3, 41, GridLayout{});
 }
 
 TEST(SlopeField, IsASharedPairScaledToTheRmsSlope) {
@@ -95,9 +95,10 @@ TEST(SlopeField, IsASharedPairScaledToTheRmsSlope) {
     // Ridges across 30°: the slopes lie along (cos 30°, −sin 30°), so they
     // are anti-correlated (−1 for a single wave direction).
     EXPECT_LT(c / std::sqrt(v[0] * v[1]), -0.7);
-    EXPECT_EQ(
-        test::inputErrorOf([&] { slopeField(example(SpectrumShape::LowPass, 4, 0, 0, 1, 32), -1, 1, 1); }).parameter(),
-        "amplitude");
+    EXPECT_EQ(test::inputErrorOf([&] {
+                  slopeField(example(SpectrumShape::LowPass, 4, 0, 0, 1, 32), -1, 1, GridLayout::plane(1));
+              }).parameter(),
+              "amplitude");
 }
 
 // The covariance estimator (eq. 16–19) against brute-force statistics on
@@ -132,7 +133,7 @@ TEST(SlopeField, CovarianceEstimateMatchesBruteForceStatistics) {
     const uint32_t seed = f.channel(0).offsetSeed();
     const TiledField polar({TilingBlendingNoise(std::make_shared<const NoiseExample>(sum), seed),
                             TilingBlendingNoise(std::make_shared<const NoiseExample>(diff), seed)},
-                           f.gridDensity(), OffsetSharing::Shared);
+                           f.grid(), OffsetSharing::Shared);
     const FootprintEstimator polarEst(polar, false);
     struct Size {
         int texels;

@@ -36,7 +36,7 @@ View smallView() {
 
 TEST(PlainProgram, ColormapOfXOnlyIgnoresNy) {
     PatternSpec spec = loadPreset("gaussian");  // H(x, y) = x
-    spec.colormap.transfer = Transfer::Linear;    // as data: the pixel is N_x itself
+    spec.colormap.transfer = Transfer::Linear;  // as data: the pixel is N_x itself
     const Image a = GraphPattern::build(spec).render(smallView());
     // Change noise_y completely: another spectrum and another example seed.
     spec.noise[1].spectrum.components[0].shape = SpectrumShape::Ring;
@@ -62,7 +62,7 @@ TEST(PlainProgram, PixelIsColormapOfField) {
             const double u = (v.offsetU + (x + 0.5) * v.scale) / p.exampleSize();
             const double w = (v.offsetV + (y + 0.5) * v.scale) / p.exampleSize();
             // N(uv): each leaf tiled and blended on the one triangle grid, in output space.
-            const BlendStencil stencil = triangleGrid(u, w, p.gridDensity());
+            const BlendStencil stencil = triangleGrid(u, w, p.grid());
             float n[2];
             for (int k = 0; k < 2; ++k)
                 n[k] = p.leaf(k).example().toOutput(p.leaf(k).blend(stencil, periodFraction(u), periodFraction(w)));

@@ -582,7 +582,7 @@ TEST(Studies, Figures7And8ShareOnePairOfNoises) {
                 EXPECT_EQ(p.leaf(axis).offsetSeed(), a.leaf(axis).offsetSeed()) << what;
                 EXPECT_EQ(noise(p, axis), noise(a, axis)) << what << " axis " << axis;
             }
-            EXPECT_EQ(p.gridDensity(), a.gridDensity()) << what;
+            EXPECT_EQ(p.grid(), a.grid()) << what;
             const ColormapTable& h = p.tables().front().point;
             EXPECT_NE(h.table().data(), a.tables().front().point.table().data()) << what << ": its own colormap";
             EXPECT_EQ(h.table().data(), buildColormap(loadPreset(panels[i].preset).colormap).table().data())

@@ -14,7 +14,7 @@ namespace stochtex {
 static std::atomic<uint64_t> nextEstimatorId{1};
 
 FootprintEstimator::FootprintEstimator(const TiledField& field, bool covariance, bool pack8)
-    : density_(field.gridDensity()), size_(field.exampleSize()), id_(nextEstimatorId++) {
+    : grid_(field.grid()), size_(field.exampleSize()), id_(nextEstimatorId++) {
     if (field.channelCount() != 2)
         throw InputError::parameter("field",
                                     "must have 2 channels (N_x, N_y), got " + std::to_string(field.channelCount()));
@@ -67,13 +67,13 @@ kernel::ProbeTexels FootprintEstimator::probeTexels(kernel::coord2 uv, const ker
     // Probes of neighbouring pixels often share v (a zoom's scanline): the
     // grid row and v's period fraction are then reused (pure memoisation).
     struct RowMemo {
-        double v = std::numeric_limits<double>::quiet_NaN(), density = 0;
-        TriangleGridRow row{0.0};
+        double v = std::numeric_limits<double>::quiet_NaN();
+        GridLayout grid;
+        TriangleGridRow row{0.0, GridLayout{}};
         float fv = 0;
     };
     thread_local RowMemo memo;
-    if (!(memo.v == v && memo.density == density_))
-        memo = RowMemo{v, density_, TriangleGridRow(v, density_), periodFraction(v)};
+    if (!(memo.v == v && memo.grid == grid_)) memo = RowMemo{v, grid_, TriangleGridRow(v, grid_), periodFraction(v)};
     const BlendStencil s = memo.row.stencil(u);
     const float fu = periodFraction(u), fv = memo.fv;
     // Neighbouring pixels mostly see the same tiles on the same scanline:
@@ -166,14 +166,13 @@ int bruteForceSamples(const Jacobian& j, int exampleSize, int maxPerAxis, int mi
 FootprintStats bruteForceStats(const TiledField& field, double u, double v, const Jacobian& j, int maxPerAxis,
                                int minPerAxis) {
     const std::array<const TilingBlendingNoise*, 2> noises = {&field.channel(0), &field.channel(1)};
-    const double gridDensity = field.gridDensity();
     const int n = bruteForceSamples(j, field.exampleSize(), maxPerAxis, minPerAxis);
     double m[2] = {0, 0}, m2[2] = {0, 0}, mxy = 0;
     for (int b = 0; b < n; ++b)
         for (int a = 0; a < n; ++a) {
             const double s = (a + 0.5) / n - 0.5, t = (b + 0.5) / n - 0.5;
             const double su = u + s * j.dudx + t * j.dudy, sv = v + s * j.dvdx + t * j.dvdy;
-            const BlendStencil st = triangleGrid(su, sv, gridDensity);
+            const BlendStencil st = triangleGrid(su, sv, field.grid());
             const float fu = periodFraction(su), fv = periodFraction(sv);
             const double x = noises[0]->blend(st, fu, fv), y = noises[1]->blend(st, fu, fv);
             m[0] += x;

@@ -76,7 +76,7 @@ private:
     std::array<TilingBlendingNoise, 2> noises_;
     std::array<StatsPyramid, 2> pyramids_;
     std::unique_ptr<StatsPyramid> covariance_;
-    double density_;
+    GridLayout grid_;
     int size_;
     uint64_t id_;  // identifies this estimator's entries in the per-thread tile cache
 };

@@ -554,7 +554,9 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     // The block's members (kPatternParamFields; the program's seeds and means are its constants).
     m["example_size"] = graph.exampleSize();
     m["levels"] = f.estimator(0).maxLod() + 1;  // of the first leaf's pyramids
-    m["grid_density"] = graph.gridDensity();
+    m["grid_density"] = graph.grid().densityV;  // along v; along u and the period for a tileable pattern:
+    m["grid_density_u"] = graph.grid().densityU;
+    m["grid_period"] = {graph.grid().period.x, graph.grid().period.y};
     m["aniso"] = options.aniso;
     nlohmann::json& textures = m["textures"] = nlohmann::json::array();
     nlohmann::json& leaves = m["graph"]["leaves"] = nlohmann::json::array();

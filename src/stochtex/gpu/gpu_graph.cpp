@@ -173,7 +173,10 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
 
 kernel::PatternParams patternParams(const GraphPattern& graph, const FilterOptions& options) {
     kernel::PatternParams p{};
-    p.gridDensity = float(graph.gridDensity());
+    p.gridDensity = float(graph.grid().densityV);
+    p.gridDensityU = float(graph.grid().densityU);
+    p.gridPeriodU = graph.grid().period.x;
+    p.gridPeriodV = graph.grid().period.y;
     p.invExampleSize = float(1.0 / graph.exampleSize());
     p.aniso = options.aniso;
     p.smoothTable = options.response.prefilter == PrefilterMode::Smooth;
@@ -230,7 +233,7 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
     // One stencil per pair's uv (pairs under one transform share it).
     for (size_t p = 0; p < graph.leafPairs().size(); ++p)
         o << "    vec2 uv" << p << " = " << pairUv(graph.pairTransform(int(p)), "uv", true) << ";\n    Stencil s" << p
-          << " = triangleGrid(uv" << p << ", uPattern.gridDensity);\n    vec2 fu" << p << " = fract(uv" << p << ");\n";
+          << " = triangleGrid(uv" << p << ", patternGrid(uPattern));\n    vec2 fu" << p << " = fract(uv" << p << ");\n";
     for (int k = 0; k < graph.leafCount(); ++k) {
         const TilingBlendingNoise& n = graph.leaf(k);
         const int p = graph.leafLocation(k)[0];

@@ -198,7 +198,7 @@ void writeWebPage(const PatternSpec& spec, const WebPageOptions& web, const std:
     for (const GraphPattern::Operation& op : graph.operations())
         ops.push_back({{"id", op.id}, {"type", op.info->name}});
     data["pattern"] = {{"source", web.sourceText},
-                       {"gridDensity", graph.gridDensity()},
+                       {"gridDensity", graph.grid().densityV},
                        {"leaves", leaves},
                        {"operations", ops},
                        {"response", enumName(kResponseKindNames, start.response.kind)},

@@ -14,17 +14,25 @@
 // and gets a row in that table.
 
 // What the generated program does not hold as constants: the triangle
-// grid's density and the examples' size, the estimators' probe count and
+// grid's shape and the examples' size, the estimators' probe count and
 // the prefiltered tables' mode and σ levels. A
 // program's seeds, means, Gaussianization and pyramid depths are constants
 // of its generated GLSL (gpu/gpu_graph.cpp).
 struct PatternParams {
-    float gridDensity;     // triangle-grid cells per example period
+    float gridDensity;     // triangle-grid cells per example period along v (and u, unless tileable)
     float invExampleSize;  // 1 / W
     int aniso;             // K
     int smoothTable;       // 1: smooth prefiltered table, 0: paper
     int tableLevels;       // σ levels per axis
-    int spare0;            // unused: complete the row
-    int spare1;
-    int spare2;
+    int gridPeriodU;       // the grid's period in cells (GridShape), 0: none
+    int gridPeriodV;
+    float gridDensityU;    // cells per example period along u
 };
+
+// The triangle grid the parameters describe.
+inline GridShape patternGrid(PatternParams p) {
+    GridShape g;
+    g.density = vec2(p.gridDensityU, p.gridDensity);
+    g.period = ivec2(p.gridPeriodU, p.gridPeriodV);
+    return g;
+}

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "stochtex/kernel/glsl.h"
+#include "stochtex/kernel/grid.h"
 
 namespace stochtex::kernel {
 #include "stochtex/kernel/pattern_params.glsl"
@@ -27,15 +28,19 @@ struct PatternParamField {
 #member, type, count, offsetof(PatternParams, member), sizeof(PatternParams::member), meaning, manifest \
     }
 inline constexpr PatternParamField kPatternParamFields[] = {
-    STOCHTEX_PATTERN_FIELD(gridDensity, "float", 1, "triangle-grid cells per example period", "`grid_density`"),
-    STOCHTEX_PATTERN_FIELD(invExampleSize, "float", 1, "1 / W, W the first leaf's side in texels", "1 / `example_size`"),
+    STOCHTEX_PATTERN_FIELD(gridDensity, "float", 1, "triangle-grid cells per example period along v", "`grid_density`"),
+    STOCHTEX_PATTERN_FIELD(invExampleSize, "float", 1, "1 / W, W the first leaf's side in texels",
+                           "1 / `example_size`"),
     STOCHTEX_PATTERN_FIELD(aniso, "int", 1, "K, the most probes per footprint (1..16)", "`aniso`"),
     STOCHTEX_PATTERN_FIELD(smoothTable, "int", 1, "1: the smooth prefiltered table, 0: the paper's",
                            "1 if `filter` is \"smooth\""),
     STOCHTEX_PATTERN_FIELD(tableLevels, "int", 1, "σ levels of the prefiltered table per axis", "`table.levels`"),
-    STOCHTEX_PATTERN_FIELD(spare0, "int", 1, "unused", "0"),
-    STOCHTEX_PATTERN_FIELD(spare1, "int", 1, "unused", "0"),
-    STOCHTEX_PATTERN_FIELD(spare2, "int", 1, "unused", "0"),
+    STOCHTEX_PATTERN_FIELD(gridPeriodU, "int", 1, "the grid's period in cells along its first axis (0: none)",
+                           "`grid_period[0]`"),
+    STOCHTEX_PATTERN_FIELD(gridPeriodV, "int", 1, "the grid's period in cells along its skewed second axis",
+                           "`grid_period[1]`"),
+    STOCHTEX_PATTERN_FIELD(gridDensityU, "float", 1, "triangle-grid cells per example period along u",
+                           "`grid_density_u`"),
 };
 #undef STOCHTEX_PATTERN_FIELD
 

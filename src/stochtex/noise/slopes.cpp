@@ -38,7 +38,7 @@ std::array<Image, 2> spectralSlopes(const Image& height) {
     return out;
 }
 
-TiledField slopeField(const Image& height, double rmsSlope, uint32_t offsetSeed, double gridDensity) {
+TiledField slopeField(const Image& height, double rmsSlope, uint32_t offsetSeed, const GridLayout& grid) {
     if (!(std::isfinite(rmsSlope) && rmsSlope > 0))
         throw InputError::parameter("amplitude", "must be finite and positive, got " + formatValue(rmsSlope));
     std::array<Image, 2> s = spectralSlopes(height);
@@ -53,7 +53,7 @@ TiledField slopeField(const Image& height, double rmsSlope, uint32_t offsetSeed,
         for (float& v : img.data()) v *= k;
         channels.emplace_back(std::make_shared<const NoiseExample>(std::move(img)), offsetSeed);
     }
-    return TiledField(std::move(channels), gridDensity, OffsetSharing::Shared);
+    return TiledField(std::move(channels), grid, OffsetSharing::Shared);
 }
 
 }  // namespace stochtex

@@ -23,6 +23,6 @@ std::array<Image, 2> spectralSlopes(const Image& height);
 // roughness), as a Shared two-channel field with one tile-offset seed.
 // InputError naming `amplitude` if rmsSlope is not finite and positive or
 // the height example is flat.
-TiledField slopeField(const Image& height, double rmsSlope, uint32_t offsetSeed, double gridDensity);
+TiledField slopeField(const Image& height, double rmsSlope, uint32_t offsetSeed, const GridLayout& grid);
 
 }  // namespace stochtex

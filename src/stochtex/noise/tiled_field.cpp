@@ -7,15 +7,17 @@
 
 namespace stochtex {
 
-TiledField::TiledField(std::vector<TilingBlendingNoise> channels, double gridDensity, OffsetSharing sharing)
-    : channels_(std::move(channels)), density_(gridDensity), sharing_(sharing) {
+TiledField::TiledField(std::vector<TilingBlendingNoise> channels, const GridLayout& grid, OffsetSharing sharing)
+    : channels_(std::move(channels)), grid_(grid), sharing_(sharing) {
     if (channels_.empty()) throw InputError::parameter("channels", "must hold at least one noise, got none");
     for (const auto& c : channels_)
         if (c.example().size() != exampleSize())
-            throw InputError::parameter("channels", "must have examples of one size, got " + std::to_string(exampleSize()) +
-                                                        " and " + std::to_string(c.example().size()) + " texels");
-    if (!(std::isfinite(gridDensity) && gridDensity > 0))
-        throw InputError::parameter("gridDensity", "must be finite and positive, got " + formatValue(gridDensity));
+            throw InputError::parameter("channels", "must have examples of one size, got " +
+                                                        std::to_string(exampleSize()) + " and " +
+                                                        std::to_string(c.example().size()) + " texels");
+    for (const double density : {grid.densityU, grid.densityV})
+        if (!(std::isfinite(density) && density > 0))
+            throw InputError::parameter("gridDensity", "must be finite and positive, got " + formatValue(density));
     if (shared())
         for (const auto& c : channels_)
             if (c.offsetSeed() != channels_.front().offsetSeed())

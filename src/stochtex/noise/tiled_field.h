@@ -19,19 +19,19 @@ public:
     TiledField() = default;
     // InputError naming the parameter: `channels` (none, or examples of
     // different sizes), `offsets` (Shared with different seeds),
-    // `gridDensity` (not finite and positive).
-    TiledField(std::vector<TilingBlendingNoise> channels, double gridDensity, OffsetSharing sharing);
+    // `gridDensity` (a density not finite and positive).
+    TiledField(std::vector<TilingBlendingNoise> channels, const GridLayout& grid, OffsetSharing sharing);
 
     int channelCount() const { return int(channels_.size()); }
     const TilingBlendingNoise& channel(int k) const { return channels_[size_t(k)]; }
-    double gridDensity() const { return density_; }
+    const GridLayout& grid() const { return grid_; }
     OffsetSharing sharing() const { return sharing_; }
     bool shared() const { return sharing_ == OffsetSharing::Shared; }
     int exampleSize() const { return channels_.front().example().size(); }
 
 private:
     std::vector<TilingBlendingNoise> channels_;
-    double density_ = 0;
+    GridLayout grid_;
     OffsetSharing sharing_ = OffsetSharing::Independent;
 };
 

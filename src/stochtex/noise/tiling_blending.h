@@ -32,6 +32,30 @@ inline bool sameTiles(const BlendStencil& a, const BlendStencil& b) {
     return a.cell.x == b.cell.x && a.cell.y == b.cell.y && a.upper == b.upper;
 }
 
+// The grid's shape (kernel::GridShape) with its densities in double, as
+// the CPU splits uv into cells: the plane's equilateral grid, or a grid
+// stretched along u (the v density is kept) that repeats over a whole
+// number of example periods, for tileable bakes.
+struct GridLayout {
+    double densityU = kDefaultGridDensity, densityV = kDefaultGridDensity;
+    kernel::ivec2 period{0, 0};  // (n, m) cells, kernel::GridShape's; (0, 0): no period
+
+    static GridLayout plane(double density) { return {density, density, {0, 0}}; }
+    // The grid nearest the plane's of `density` that repeats every
+    // periodsU × periodsV example periods: m = round(density·periodsV/√3)
+    // skewed rows and n = round(density·periodsU) cells, each at least 1,
+    // the densities made to fit them exactly. periodsU, periodsV ≥ 1.
+    static GridLayout periodic(double density, int periodsU, int periodsV);
+    bool periodic() const { return period.x > 0; }
+    kernel::GridShape kernelShape() const {
+        kernel::GridShape g;
+        g.density = kernel::vec2(float(densityU), float(densityV));
+        g.period = period;
+        return g;
+    }
+    bool operator==(const GridLayout&) const = default;
+};
+
 // The triangle grid along one row of constant v: the skewed y coordinate
 // (kGridSkewY·v) and its floor do not change along u, so a scanline pays
 // only for x = u − kGridSkewX·v. The split into cell and fraction is done in
@@ -39,8 +63,8 @@ inline bool sameTiles(const BlendStencil& a, const BlendStencil& b) {
 // kernel's blendStencil, the same function the shaders call.
 class TriangleGridRow {
 public:
-    TriangleGridRow(double v, double density = kDefaultGridDensity) : density_(density) {
-        const double sv = v * density;
+    TriangleGridRow(double v, const GridLayout& grid = GridLayout{}) : densityU_(grid.densityU), period_(grid.period) {
+        const double sv = v * grid.densityV;
         xShift_ = double(kernel::kGridSkewX) * sv;
         const double y = double(kernel::kGridSkewY) * sv;
         const int64_t by = floorToInt(y);
@@ -49,20 +73,23 @@ public:
     }
 
     BlendStencil stencil(double u) const {
-        const double x = u * density_ - xShift_;
+        const double x = u * densityU_ - xShift_;
         const int64_t bx = floorToInt(x);
-        return kernel::blendStencil(kernel::uvec2(uint32_t(uint64_t(bx)), iy_), float(x - double(bx)), fy_);
+        BlendStencil s = kernel::blendStencil(kernel::uvec2(uint32_t(uint64_t(bx)), iy_), float(x - double(bx)), fy_);
+        s.period = period_;
+        return s;
     }
 
 private:
-    double density_, xShift_;
+    double densityU_, xShift_;
+    kernel::ivec2 period_;
     float fy_;
     uint32_t iy_;
 };
 
-// Triangle-grid stencil at uv (any real uv; the grid does not wrap).
-inline BlendStencil triangleGrid(double u, double v, double density = kDefaultGridDensity) {
-    return TriangleGridRow(v, density).stencil(u);
+// Triangle-grid stencil at uv (any real uv).
+inline BlendStencil triangleGrid(double u, double v, const GridLayout& grid = GridLayout{}) {
+    return TriangleGridRow(v, grid).stencil(u);
 }
 
 // Random tile offset of a grid vertex, in [0,1)² (one example period).
@@ -142,7 +169,7 @@ public:
     float blend(const BlendStencil& s, float fu, float fv) const { return blend(s, tileRows(s, fv), fu); }
 
     // Output value at uv (T⁻¹ applied for a Gaussianized exemplar).
-    float evaluate(double u, double v, double density = kDefaultGridDensity) const;
+    float evaluate(double u, double v, const GridLayout& grid = GridLayout{}) const;
 
 private:
     std::shared_ptr<const NoiseExample> example_;

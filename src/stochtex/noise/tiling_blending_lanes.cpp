@@ -439,20 +439,21 @@ HWY_EXPORT(TableTaps2Impl);
 HWY_EXPORT(LayerTapsImpl);
 HWY_EXPORT(TargetNameImpl);
 
-void GridRowLanes::compute(double offset, double scale, double invW, double v, int pixels, double density) {
+void GridRowLanes::compute(double offset, double scale, double invW, double v, int pixels, const GridLayout& grid) {
+    if (grid.periodic()) throw std::logic_error("GridRowLanes: a periodic grid needs the scalar kernel");
     count = pixels;
     const size_t padded = size_t(paddedLaneCount(pixels));
     cellX.resize(padded);
     fx.resize(padded);
     fu.resize(padded);
     // The row's y, as TriangleGridRow splits it.
-    const double sv = v * density;
+    const double sv = v * grid.densityV;
     const double y = double(kernel::kGridSkewY) * sv;
     const int64_t by = floorToInt(y);
     fy = float(y - double(by));
     cellY = uint32_t(uint64_t(by));
     fv = periodFraction(v);
-    HWY_DYNAMIC_DISPATCH(GridRowImpl)(*this, offset, scale, invW, density, double(kernel::kGridSkewX) * sv);
+    HWY_DYNAMIC_DISPATCH(GridRowImpl)(*this, offset, scale, invW, grid.densityU, double(kernel::kGridSkewX) * sv);
 }
 
 void blendRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out) {

@@ -30,7 +30,9 @@ inline int paddedLaneCount(int count) { return (count + kMaxFloatLanes - 1) / kM
 // row's v.
 struct GridRowLanes {
     // Fills the arrays for pixels 0..count−1 (and the padding lanes past them).
-    void compute(double offset, double scale, double invW, double v, int count, double density = kDefaultGridDensity);
+    // `grid` on the plane (a periodic grid's vertices are reduced by the
+    // scalar kernel only: std::logic_error).
+    void compute(double offset, double scale, double invW, double v, int count, const GridLayout& grid = GridLayout{});
     int count = 0;
     // Per pixel: the cell's x id (wrapped to 32 bits), the fraction of the
     // skewed x in it, and u reduced to one period (periodFraction).

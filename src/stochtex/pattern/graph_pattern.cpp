@@ -117,6 +117,13 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
     const TextureGraph plain = spec.graph ? TextureGraph{} : plainPatternGraph(spec, response);
     const TextureGraph& graph = spec.graph ? *spec.graph : plain;
     const std::string& context = spec.name;
+    if ((spec.gridPeriods[0] > 0) != (spec.gridPeriods[1] > 0) || spec.gridPeriods[0] < 0 || spec.gridPeriods[1] < 0)
+        throw InputError::parameter("gridPeriods", "must be both positive (a tileable pattern) or both 0, got " +
+                                                       std::to_string(spec.gridPeriods[0]) + ", " +
+                                                       std::to_string(spec.gridPeriods[1]));
+    const GridLayout grid = spec.gridPeriods[0] > 0
+                                ? GridLayout::periodic(spec.gridDensity, spec.gridPeriods[0], spec.gridPeriods[1])
+                                : GridLayout::plane(spec.gridDensity);
     // Which nodes are linear in the sources (fold into an example).
     std::map<std::string, bool> linear;
     for (const GraphNode& g : graph.nodes) {
@@ -231,8 +238,8 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         try {
             const double amplitude = g->numbers.at("amplitude");
             const uint32_t seed = seedOf(heightId, k);
-            const auto build = [&] { return slopeField(height.values(), amplitude, seed, spec.gridDensity); };
-            slopes = slopesPart(parts, heightExample, amplitude, seed, spec.gridDensity, build);
+            const auto build = [&] { return slopeField(height.values(), amplitude, seed, grid); };
+            slopes = slopesPart(parts, heightExample, amplitude, seed, grid, build);
         } catch (const InputError& e) {
             throw InputError(where + ": " + e.what());
         }
@@ -248,7 +255,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         const bool oneSeed = second.offsetSeed() == noises[k].offsetSeed();
         p.leafLocation_.push_back({int(p.pairs_.size()), 0});
         if (pair) p.leafLocation_.push_back({int(p.pairs_.size()), 1});
-        p.pairs_.emplace_back(std::vector<TilingBlendingNoise>{noises[k], second}, spec.gridDensity,
+        p.pairs_.emplace_back(std::vector<TilingBlendingNoise>{noises[k], second}, grid,
                               oneSeed ? OffsetSharing::Shared : OffsetSharing::Independent);
         p.pairTransforms_.push_back(transforms[k]);
         p.pairCovariance_.push_back(covariance);
@@ -314,6 +321,9 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         p.operations_.push_back(std::move(op));
     }
     settleProgramRanges(p, examples, context);
+    if (grid.periodic() && !p.untransformed_)
+        throw InputError::parameter("gridPeriods", "needs a program whose leaves read uv as it is (" + context +
+                                                       " transforms a leaf's uv, whose tiles would not repeat)");
     return p;
 }
 
@@ -431,7 +441,7 @@ Rgb GraphPattern::evaluate(double u, double v, int lastSlot, const Direction& ey
     if (lastSlot < 0) lastSlot = outputSlot();
     if (slots.size() != size_t(outputSlot() + 2)) slots = makeSlots();
     // Untransformed leaves share the stencil at uv.
-    const BlendStencil shared = untransformed_ ? triangleGrid(u, v, gridDensity()) : BlendStencil{};
+    const BlendStencil shared = untransformed_ ? triangleGrid(u, v, grid()) : BlendStencil{};
     for (int k = 0; k < leafCount(); ++k) {
         // Each leaf at its pair's uv (the pair's tiles are its own).
         const TilingBlendingNoise& n = leaf(k);
@@ -440,7 +450,7 @@ Rgb GraphPattern::evaluate(double u, double v, int lastSlot, const Direction& ey
             b = n.blend(shared, periodFraction(u), periodFraction(v));
         } else {
             const auto [pu, pv] = pairTransforms_[size_t(leafLocation(k)[0])].apply(u, v);
-            b = n.blend(triangleGrid(pu, pv, gridDensity()), periodFraction(pu), periodFraction(pv));
+            b = n.blend(triangleGrid(pu, pv, grid()), periodFraction(pu), periodFraction(pv));
         }
         slots[size_t(k)] = vec3(n.example().toOutput(b), 0.0f, 0.0f);
     }
@@ -492,7 +502,7 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
         // The program's slots over the row (runRows), the last row vec3(0).
         std::vector<vec3> rows(size_t(outputSlot() + 2) * width, vec3(0.0f));
         for (int py = y0; py < y1; ++py) {
-            grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width, gridDensity());
+            grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width, this->grid());
             for (size_t k = 0; k < leaves.size(); ++k) blendRowLanes(*leaves[k], grid, values[k].data());
             float* row = out.row(py);
             if (plain) {
@@ -514,7 +524,7 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
         BlendStencil last{};
         for (int py = y0; py < y1; ++py) {
             const double v = pixelUv(view, invW, 0, py)[1];
-            const TriangleGridRow grid(v, gridDensity());
+            const TriangleGridRow grid(v, this->grid());
             const float fv = periodFraction(v);
             float* row = out.row(py);
             bool valid = false;
@@ -544,7 +554,7 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
             }
         }
     };
-    if (kernel == CpuKernel::Simd && untransformed_)
+    if (kernel == CpuKernel::Simd && untransformed_ && !grid().periodic())  // the lanes hash the plane's vertices
         parallelRows(view.height, lanes, progress);
     else
         parallelRows(view.height, scalar, progress);
@@ -819,7 +829,8 @@ Image FilteredGraph::render(const Camera& camera, const Progress& progress) cons
                                            e.maxLod(), options_.aniso));
         }
     }
-    if (plainEstimate && oneFootprint && options_.cpuKernel == CpuKernel::Simd && zoomInLanes(shapes.front()))
+    if (plainEstimate && oneFootprint && options_.cpuKernel == CpuKernel::Simd && !graph_.grid().periodic() &&
+        zoomInLanes(shapes.front()))
         return renderZoomInLanes(camera, shapes.front(), progress);
     parallelRows(
         camera.view.height,
@@ -923,8 +934,7 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
             for (size_t k = 0; k < 2; ++k)
                 for (size_t a = 0; a < 4; ++a) rows[k][a] = buffer.data() + padded * (4 * k + a);
             for (int py = y0; py < y1; ++py) {
-                grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width,
-                             field.gridDensity());
+                grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width, field.grid());
                 for (int k = 0; k < levelCount; ++k)
                     for (int a = 0; a < 2; ++a)
                         blendRowLanes(field.channel(a), e.pyramid(a).level(level[size_t(k)]), grid,

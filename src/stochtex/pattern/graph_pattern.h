@@ -123,7 +123,7 @@ public:
     // light, so the renders pass each pixel's, and a scene draws its colour
     // as it is.
     bool shadesLight() const;
-    double gridDensity() const { return pairs_.front().gridDensity(); }
+    const GridLayout& grid() const { return pairs_.front().grid(); }
 
     // S(uv): the leaves at uv (after T⁻¹ for Gaussianized exemplars) through the program.
     Rgb evaluate(double u, double v) const;

@@ -40,8 +40,8 @@ PartCache::Field PartCache::field(const FieldKey& key, const std::function<Field
 }
 
 TiledField PartCache::slopes(const std::shared_ptr<const NoiseExample>& height, double amplitude, uint32_t seed,
-                             double gridDensity, const std::function<TiledField()>& build) {
-    return find(slopes_, SlopeKey{height, amplitude, seed, gridDensity}, builds_.slopes, build);
+                             const GridLayout& grid, const std::function<TiledField()>& build) {
+    return find(slopes_, SlopeKey{height, amplitude, seed, grid}, builds_.slopes, build);
 }
 
 std::shared_ptr<const ColormapTable> PartCache::colormap(const ColormapSpec& spec) {
@@ -49,7 +49,7 @@ std::shared_ptr<const ColormapTable> PartCache::colormap(const ColormapSpec& spe
 }
 
 std::shared_ptr<const FootprintEstimator> PartCache::estimator(const TiledField& field, bool covariance, bool pack8) {
-    EstimatorKey key{{}, {}, field.gridDensity(), field.sharing(), covariance, pack8};
+    EstimatorKey key{{}, {}, field.grid(), field.sharing(), covariance, pack8};
     for (int k = 0; k < field.channelCount(); ++k) {
         key.examples.push_back(field.channel(k).sharedExample());
         key.seeds.push_back(field.channel(k).offsetSeed());
@@ -96,8 +96,8 @@ size_t PartCache::size() const {
 }
 
 TiledField slopesPart(PartCache* parts, const std::shared_ptr<const NoiseExample>& height, double amplitude,
-                      uint32_t seed, double gridDensity, const std::function<TiledField()>& build) {
-    return parts ? parts->slopes(height, amplitude, seed, gridDensity, build) : build();
+                      uint32_t seed, const GridLayout& grid, const std::function<TiledField()>& build) {
+    return parts ? parts->slopes(height, amplitude, seed, grid, build) : build();
 }
 
 std::shared_ptr<const ColormapTable> colormapPart(PartCache* parts, const ColormapSpec& spec) {

@@ -62,7 +62,7 @@ public:
     // `build` throws passes through and nothing is kept.
     Field field(const FieldKey& key, const std::function<Field()>& build);
     TiledField slopes(const std::shared_ptr<const NoiseExample>& height, double amplitude, uint32_t seed,
-                      double gridDensity, const std::function<TiledField()>& build);
+                      const GridLayout& grid, const std::function<TiledField()>& build);
     std::shared_ptr<const ColormapTable> colormap(const ColormapSpec& spec);
     std::shared_ptr<const FootprintEstimator> estimator(const TiledField& field, bool covariance, bool pack8);
     std::shared_ptr<const PrefilteredColormap> prefiltered(const ColormapTable& blended, PrefilterMode mode,
@@ -98,7 +98,7 @@ private:
     struct EstimatorKey {
         std::vector<std::shared_ptr<const NoiseExample>> examples;
         std::vector<uint32_t> seeds;
-        double gridDensity = 0;
+        GridLayout grid;
         OffsetSharing sharing = OffsetSharing::Independent;
         bool covariance = false, pack8 = false;
         bool operator==(const EstimatorKey&) const = default;
@@ -107,7 +107,7 @@ private:
         std::shared_ptr<const NoiseExample> height;
         double amplitude = 0;
         uint32_t seed = 0;
-        double gridDensity = 0;
+        GridLayout grid;
         bool operator==(const SlopeKey&) const = default;
     };
     struct PrefilteredKey {
@@ -139,7 +139,7 @@ private:
 // nothing): callers that may run either way ask through these, so that how
 // each part is built is written once (part_cache.cpp).
 TiledField slopesPart(PartCache* parts, const std::shared_ptr<const NoiseExample>& height, double amplitude,
-                      uint32_t seed, double gridDensity, const std::function<TiledField()>& build);
+                      uint32_t seed, const GridLayout& grid, const std::function<TiledField()>& build);
 std::shared_ptr<const ColormapTable> colormapPart(PartCache* parts, const ColormapSpec& spec);
 std::shared_ptr<const FootprintEstimator> estimatorPart(PartCache* parts, const TiledField& field, bool covariance,
                                                         bool pack8);

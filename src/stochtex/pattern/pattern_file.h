@@ -103,6 +103,10 @@ struct PatternSpec {
     double scale = 1.0;  // example texels per output pixel
     OffsetMode offsets = OffsetMode::Independent;
     double gridDensity = kDefaultGridDensity;  // 2√3 triangle-grid cells per uv unit (as a float)
+    // A tileable pattern's period in example periods along u and v, both
+    // ≥ 1: its grid is stretched along u to repeat with it (GridLayout::
+    // periodic), so the whole pattern does. (0, 0): the plane.
+    std::array<int, 2> gridPeriods{0, 0};
     NoiseSpec noise[2];
     bool quadraturePair = false;  // noise_y is "quadrature": the Hilbert pair of noise_x
     ColormapSpec colormap;

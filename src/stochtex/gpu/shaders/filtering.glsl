@@ -82,7 +82,7 @@ TexelStats texelStats(sampler2D statsX, sampler2D statsY, sampler2D covariance, 
 // A probe's two levels from the pyramids of one pair, on one stencil.
 ProbeTexels pairProbeTexels(sampler2D statsX, sampler2D statsY, sampler2D covariance, TexelSource pair, vec2 uv,
                             ProbeLevels levels) {
-    Stencil s = triangleGrid(uv, uPattern.gridDensity);
+    Stencil s = triangleGrid(uv, patternGrid(uPattern));
     vec2 fu = fract(uv);
     ProbeTexels t;
     t.lo = texelStats(statsX, statsY, covariance, pair, s, fu, levels.l0);
