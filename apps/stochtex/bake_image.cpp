@@ -5,6 +5,10 @@
 // the same as one `render` of the whole (same flags).
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "common.h"
 #include "pattern_renderer.h"
@@ -15,6 +19,21 @@
 
 namespace stochtex::cli {
 
+namespace {
+
+// The PBR set's images: OUTPUT's name with _albedo, _normal, _roughness and
+// _height before its extension.
+std::vector<std::pair<ResponseKind, std::string>> pbrImages(const std::string& output) {
+    const std::filesystem::path path(output);
+    const std::string stem = (path.parent_path() / path.stem()).string(), ext = path.extension().string();
+    return {{ResponseKind::PrefilteredColormap, stem + "_albedo" + ext},
+            {ResponseKind::Normal, stem + "_normal" + ext},
+            {ResponseKind::Roughness, stem + "_roughness" + ext},
+            {ResponseKind::Height, stem + "_height" + ext}};
+}
+
+}  // namespace
+
 void registerBakeImage(CLI::App& app) {
     struct Args {
         PatternSource source;
@@ -24,7 +43,7 @@ void registerBakeImage(CLI::App& app) {
         DeviceFlags device;
         std::string output;
         int bits = 8, band = 256, threads = 0;
-        bool tileable = false;
+        bool tileable = false, pbr = false;
     };
     auto args = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("bake-image",
@@ -48,6 +67,10 @@ void registerBakeImage(CLI::App& app) {
     cmd->add_flag("--tileable", args->tileable,
                   "An image that wraps without a seam: the pattern made periodic over it (its grid stretched along u "
                   "to a whole number of cells; --scale moves to a whole number of example periods)");
+    cmd->add_flag("--pbr", args->pbr,
+                  "A PBR material's maps of a pattern with a normal_map, one image each: OUT_albedo (its colours), "
+                  "OUT_normal (tangent space, OpenGL convention), OUT_roughness (GGX, the slope lobe's spread) and "
+                  "OUT_height, the last three as data (no sRGB encoding); with --tileable, all tile");
     cmd->callback([args, cmd, bits] {
         applyResponseFlags(*cmd, args->response, args->options);
         refuseUnusedFilterFlags(*cmd, args->options);
@@ -58,6 +81,11 @@ void registerBakeImage(CLI::App& app) {
         if (!gpuHasSource(args->options.source))
             refuseOption(*cmd, "--filter", "bake-image renders none, paper or smooth");
         PatternSpec spec = loadPatternSource(*cmd, args->source, args->options);
+        if (args->pbr && cmd->count("--response"))
+            refuseOption(*cmd, "--pbr", "writes every response of the PBR set itself; drop --response");
+        if (args->pbr && !spec.normalMap)
+            refuseOption(*cmd, "--pbr", "needs a pattern with a normal_map (" + spec.name + " has none)");
+        if (args->pbr) args->options.response.kind = ResponseKind::PrefilteredColormap;  // the albedo's view rules
         Camera whole;
         whole.view = makeView(spec, args->view, ViewUse::BandedBake);  // memory is one band: 65536 a side
         std::string tiling;
@@ -72,15 +100,39 @@ void registerBakeImage(CLI::App& app) {
         const auto start = std::chrono::steady_clock::now();
         ProgressLine progress("bake-image");
         progress.update(0.0, "building the pattern and its tables");
-        const std::unique_ptr<ViewRenderer> renderer = makeRenderer(spec, args->options, args->device);
-        const View& v = whole.view;
-        const std::unique_ptr<ImageStreamWriter> out = openImageStream(args->output, v.width, v.height, 3, args->bits);
-        renderInBands(
-            *renderer, whole, args->band, [&](const Image& rows) { out->writeRows(rows); }, progress.callback());
-        out->finish();
+        // One image, or the PBR set: each its program (one response each), its
+        // view in the same uv as the first's (a program's view is in texels
+        // of its own first example, which may differ in size).
+        std::vector<std::pair<ResponseKind, std::string>> images{{args->options.response.kind, args->output}};
+        if (args->pbr) images = pbrImages(args->output);
+        int firstExampleSize = 0;
+        std::string written;
+        for (size_t i = 0; i < images.size(); ++i) {
+            FilterOptions options = args->options;
+            options.response.kind = images[i].first;
+            const std::unique_ptr<ViewRenderer> renderer = makeRenderer(spec, options, args->device);
+            if (i == 0) firstExampleSize = renderer->exampleSize();
+            Camera camera = whole;
+            const double texels = double(renderer->exampleSize()) / firstExampleSize;
+            camera.view.scale *= texels;
+            camera.view.offsetU *= texels;
+            camera.view.offsetV *= texels;
+            const View& v = camera.view;
+            const std::unique_ptr<ImageStreamWriter> out =
+                openImageStream(images[i].second, v.width, v.height, 3, args->bits,
+                                writesData(options.response.kind) ? Transfer::Linear : Transfer::Srgb);
+            renderInBands(
+                *renderer, camera, args->band, [&](const Image& rows) { out->writeRows(rows); },
+                progressPart(progress.callback(), double(i) / double(images.size()),
+                             double(i + 1) / double(images.size()),
+                             enumName(kResponseKindNames, options.response.kind)));
+            out->finish();
+            written += (i ? ", " : "") + images[i].second;
+        }
         progress.finish();
+        const View& v = whole.view;
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("wrote %s (%dx%d, %s, filter %s, %s, bands of %d rows%s, %.1f s)\n", args->output.c_str(), v.width,
+        std::printf("wrote %s (%dx%d, %s, filter %s, %s, bands of %d rows%s, %.1f s)\n", written.c_str(), v.width,
                     v.height, spec.name.c_str(), filterLabel(args->options).c_str(), args->device.gpu ? "GPU" : "CPU",
                     bandRows(v.width, args->band), tiling.c_str(), seconds);
     });

@@ -207,7 +207,8 @@ const EnumNames<NamedFilter>& gpuFilterNames() {
 void addResponseFlags(CLI::App& cmd, ResponseFlags& flags) {
     cmd.add_option("--response", flags.kind,
                    "What the statistics become: prefiltered-colormap (the pattern's colours) | lean (its "
-                   "normal_map, shaded; docs/PATTERNS.md)")
+                   "normal_map, shaded; docs/PATTERNS.md) | normal | roughness | height (its normal_map's PBR maps, "
+                   "as data)")
         ->transform(enumTransformer(kResponseKindNames, "response"))
         ->default_str(enumName(kResponseKindNames, ResponseKind::PrefilteredColormap));
     cmd.add_flag("--no-covariance", flags.noCovariance,

@@ -66,7 +66,10 @@ void registerRender(CLI::App& app) {
         const Image image = renderer->render(camera, progressPart(progress.callback(), 0.0, 1.0, "rendering"));
         progress.finish();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        writeImage(args->output, image, WriteOptions{args->bits});
+        // The PBR maps are data: their codes are the values (no sRGB encoding).
+        writeImage(args->output, image,
+                   WriteOptions{args->bits, false,
+                                writesData(args->options.response.kind) ? Transfer::Linear : Transfer::Srgb});
         std::printf("wrote %s (%dx%d, %s, %s view, filter %s, %s, %.2f s)\n", args->output.c_str(), camera.view.width,
                     camera.view.height, spec.name.c_str(), enumName(Camera::kKindNames, camera.kind).c_str(),
                     filterLabel(args->options).c_str(), renderer->device().c_str(), seconds);

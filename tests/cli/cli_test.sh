@@ -764,6 +764,12 @@ case_bake_image() {
   expect_ok "bake-image --tileable" "$out/tile.png" -- "$bin" bake-image --preset camouflage --size 96 --scale 4.8 --band 40 --tileable -o "$out/tile.png"
   grep -q "tileable: 2 x 2 example periods of 256 texels, grid x1.0104 along u" "$work/out.txt" || fail "bake-image --tileable: report: $(cat "$work/out.txt")"
   expect_ok "bake-image --tileable --gpu" "$out/tileg.png" -- "$bin" bake-image --preset camouflage --size 96 --scale 4.8 --tileable --gpu -o "$out/tileg.png"
+  # --pbr: the four maps, tileable; refused without a normal map or beside --response
+  expect_ok "bake-image --pbr" "$out/mat_normal.png" -- "$bin" bake-image --preset lean-ridges --size 64 --scale 8 --tileable --pbr -o "$out/mat.png"
+  for m in albedo normal roughness height; do [ -s "$out/mat_$m.png" ] || fail "bake-image --pbr: mat_$m.png not written"; done
+  grep -q "wrote $out/mat_albedo.png, $out/mat_normal.png, $out/mat_roughness.png, $out/mat_height.png" "$work/out.txt" || fail "bake-image --pbr: report: $(cat "$work/out.txt")"
+  expect_bad "bake-image --pbr without a normal map" "$out/mat2_albedo.png" "--pbr: needs a pattern with a normal_map (camouflage has none)" -- "$bin" bake-image --preset camouflage --size 32 --pbr -o "$out/mat2.png"
+  expect_bad "bake-image --pbr --response" "$out/mat3_albedo.png" "--pbr: writes every response of the PBR set itself; drop --response" -- "$bin" bake-image --preset lean-ridges --size 32 --pbr --response lean -o "$out/mat3.png"
   expect_bad "bake-image --tileable, no whole periods" "$out/tile2.png" "--size: size must cover a whole number of example periods along both axes to tile: 256 × 100 pixels" -- "$bin" bake-image --preset camouflage --size 256,100 --tileable -o "$out/tile2.png"
 }
 

@@ -152,5 +152,78 @@ TEST(Tileable, RefusesWhatCannotTile) {
                  std::logic_error);
 }
 
+// The PBR maps of a normal map (the surface op: bake-image --pbr): the
+// normal map leans against the height map's gradient (R − ½ with −∂h/∂x,
+// G − ½ with ∂h/∂row: OpenGL's y is up the image, rows run down it), with
+// correlations above 0.8 unfiltered; the roughness is the base lobe's
+// (√m) unfiltered and grows with the footprint (the slopes' variance joins
+// the lobe); the height map is the height example's values (mean ½); and
+// the GPU renders each map the CPU does.
+TEST(PbrMaps, NormalFollowsTheHeightAndRoughnessGrowsWithTheFootprint) {
+    const PatternSpec spec = loadPreset("lean-ridges");
+    const auto render = [&](ResponseKind kind, const char* filter, double scale) {
+        FilterOptions o;
+        o.use(parseFilter(filter));
+        o.response.kind = kind;
+        View view;
+        view.width = view.height = 128;
+        view.scale = scale;
+        return renderCpu(spec, o, view);
+    };
+    const Image normal = render(ResponseKind::Normal, "none", 1.0), height = render(ResponseKind::Height, "none", 1.0);
+    const auto correlation = [](const std::vector<double>& a, const std::vector<double>& b) {
+        double ma = 0, mb = 0, ab = 0, aa = 0, bb = 0;
+        for (size_t i = 0; i < a.size(); ++i) ma += a[i] / double(a.size()), mb += b[i] / double(b.size());
+        for (size_t i = 0; i < a.size(); ++i)
+            ab += (a[i] - ma) * (b[i] - mb), aa += (a[i] - ma) * (a[i] - ma), bb += (b[i] - mb) * (b[i] - mb);
+        return ab / std::sqrt(aa * bb);
+    };
+    std::vector<double> red, minusDx, green, dRow;
+    double heightMean = 0;
+    for (int y = 1; y + 1 < 128; ++y)
+        for (int x = 1; x + 1 < 128; ++x) {
+            red.push_back(normal.at(x, y, 0) - 0.5);
+            minusDx.push_back(-(height.at(x + 1, y, 0) - height.at(x - 1, y, 0)));
+            green.push_back(normal.at(x, y, 1) - 0.5);
+            dRow.push_back(height.at(x, y + 1, 0) - height.at(x, y - 1, 0));
+            heightMean += height.at(x, y, 0) / (126.0 * 126.0);
+        }
+    const double rx = correlation(red, minusDx), gy = correlation(green, dRow);
+    std::printf(
+        "[ info ] normal map against the height's gradient: corr(R, -dh/dx) %.3f, corr(G, dh/drow) %.3f; "
+        "height mean %.3f\n",
+        rx, gy, heightMean);
+    EXPECT_GT(rx, 0.8);
+    EXPECT_GT(gy, 0.8);
+    EXPECT_NEAR(heightMean, 0.5, 0.05);
+    // Roughness: √m unfiltered (m = 0.08, the file's), then growing with the footprint.
+    const auto meanOf = [](const Image& img) {
+        double m = 0;
+        for (const float v : img.data()) m += v / double(img.data().size());
+        return m;
+    };
+    const double r1 = meanOf(render(ResponseKind::Roughness, "none", 1.0)),
+                 r2 = meanOf(render(ResponseKind::Roughness, "smooth", 2.0)),
+                 r8 = meanOf(render(ResponseKind::Roughness, "smooth", 8.0));
+    std::printf("[ info ] roughness: %.4f unfiltered, %.4f at 2 texels per pixel, %.4f at 8\n", r1, r2, r8);
+    EXPECT_NEAR(r1, std::sqrt(0.08), 1e-4);
+    EXPECT_GT(r2, r1 + 0.01);
+    EXPECT_GT(r8, r2 + 0.01);
+    // On the GPU alike, each map, filtered.
+    for (const ResponseKind kind : {ResponseKind::Normal, ResponseKind::Roughness, ResponseKind::Height}) {
+        FilterOptions o;
+        o.use(parseFilter("smooth"));
+        o.response.kind = kind;
+        View view;
+        view.width = view.height = 96;
+        view.scale = 3.0;
+        const Image cpu = renderCpu(spec, o, view), gpu = makeGpuView(spec, test::glContext(), o)->render(view);
+        double mean = 0;
+        for (size_t i = 0; i < cpu.data().size(); ++i) mean += std::abs(cpu.data()[i] - gpu.data()[i]);
+        mean /= double(cpu.data().size());
+        EXPECT_LT(mean, 1e-4) << enumName(kResponseKindNames, kind);
+    }
+}
+
 }  // namespace
 }  // namespace stochtex

@@ -127,8 +127,8 @@ std::string encodeBlock(const float* rows, int count, int firstRow, int width, i
 
 class PngStream final : public ImageStreamWriter {
 public:
-    PngStream(const std::string& path, int width, int height, int channels, int bits)
-        : png_(path, width, height, channels, bits) {}
+    PngStream(const std::string& path, int width, int height, int channels, int bits, Transfer transfer)
+        : png_(path, width, height, channels, bits, transfer) {}
     void writeRows(const Image& band) override { png_.writeRows(band); }
     void finish() override { png_.finish(); }
 
@@ -274,9 +274,10 @@ void checkImageStreamFormat(const std::string& path) {
 }
 
 std::unique_ptr<ImageStreamWriter> openImageStream(const std::string& path, int width, int height, int channels,
-                                                   int bits) {
+                                                   int bits, Transfer transfer) {
     checkImageStreamFormat(path);
-    if (lowerExtension(path) == ".png") return std::make_unique<PngStream>(path, width, height, channels, bits);
+    if (lowerExtension(path) == ".png")
+        return std::make_unique<PngStream>(path, width, height, channels, bits, transfer);
     return std::make_unique<ExrStreamWriter>(path, width, height, channels);
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "stochtex/core/atomic_file.h"
+#include "stochtex/image/colour_space.h"
 #include "stochtex/image/image.h"
 
 namespace stochtex {
@@ -69,7 +70,9 @@ void checkImageStreamFormat(const std::string& path);
 
 // By extension: .png (bits 8 or 16) or .exr (float; bits not used);
 // checkImageStreamFormat's error for any other. channels: 1 or 3.
+// transfer: of a PNG's codes (Srgb: the bands are linear colour; Linear:
+// data written as it is); an EXR holds the values.
 std::unique_ptr<ImageStreamWriter> openImageStream(const std::string& path, int width, int height, int channels,
-                                                   int bits);
+                                                   int bits, Transfer transfer = Transfer::Srgb);
 
 }  // namespace stochtex

@@ -42,9 +42,25 @@ inline const EnumNames<StatisticsSource> kStatisticsSourceNames{{"point", Statis
 enum class ResponseKind {
     PrefilteredColormap,  // H̄(μ, σ_x, σ_y), paper eq. 5–6 (§5): the colormap op
     Lean,                 // LEAN-mapped shading of the file's normal map (§6.5): the lean op
+    // A PBR material's maps of the file's normal map (the surface op), as
+    // data (no transfer function): its tangent-space normal, its roughness,
+    // its height.
+    Normal,
+    Roughness,
+    Height,
 };
 inline const EnumNames<ResponseKind> kResponseKindNames{{"prefiltered-colormap", ResponseKind::PrefilteredColormap},
-                                                        {"lean", ResponseKind::Lean}};
+                                                        {"lean", ResponseKind::Lean},
+                                                        {"normal", ResponseKind::Normal},
+                                                        {"roughness", ResponseKind::Roughness},
+                                                        {"height", ResponseKind::Height}};
+// Whether the response reads the file's normal map (else its colours).
+inline bool readsNormalMap(ResponseKind kind) { return kind != ResponseKind::PrefilteredColormap; }
+// Whether its values are data, written without a transfer function (the
+// PBR maps), rather than colours.
+inline bool writesData(ResponseKind kind) {
+    return kind == ResponseKind::Normal || kind == ResponseKind::Roughness || kind == ResponseKind::Height;
+}
 
 // A response and its parameters, as a value (FilterOptions holds one).
 struct ResponseOptions {

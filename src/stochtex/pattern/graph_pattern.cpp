@@ -41,9 +41,13 @@ vec3 input(const Slots& slots, const GraphPattern::Operation& op, int k) {
 // A plain pattern's normal map under the lean response as the graph it is:
 // its height (as given: a Gaussianized exemplar's slopes would not be its
 // own) on the tiles the file has always given it (deriveSeed(seed, 3)), its
-// albedo as a colour node, and a lean node with the file's shading.
+// albedo as a colour node, and a lean node with the file's shading. Under
+// the normal, roughness and height responses: a surface node on the same
+// height, with the file's amplitude and roughness.
 TextureGraph plainNormalMapGraph(const PatternSpec& spec, const ResponseOptions& response) {
-    if (!spec.normalMap) throw InputError::parameter("response", "lean shades a normal map; the pattern has none");
+    if (!spec.normalMap)
+        throw InputError::parameter(
+            "response", enumName(kResponseKindNames, response.kind) + " reads a normal map; the pattern has none");
     const NormalMapSpec& nm = *spec.normalMap;
     const LeanShading shading = validatedShading(nm.shading);
     TextureGraph graph;
@@ -54,6 +58,23 @@ TextureGraph plainNormalMapGraph(const PatternSpec& spec, const ResponseOptions&
     height.info = findGraphNode(nm.height.source == NoiseSpec::Source::Spectrum ? "spectral_noise" : "exemplar");
     height.seed = nm.height.explicitSeed ? nm.height.spectrum.seed : deriveSeed(spec.seed, 102u);
     height.tileSeed = deriveSeed(spec.seed, 3);
+    if (response.kind != ResponseKind::Lean) {
+        GraphNode surface;
+        surface.id = "normal_map";
+        surface.info = findGraphNode("surface");
+        surface.inputs = {{"height", height.id}, {"value", height.id}};
+        // The surface op's maps (SurfaceParams::map), by response.
+        static const std::map<ResponseKind, double> maps{
+            {ResponseKind::Normal, 0}, {ResponseKind::Roughness, 1}, {ResponseKind::Height, 2}};
+        surface.numbers = {{"map", maps.at(response.kind)},
+                           {"amplitude", nm.amplitude},
+                           {"roughness", shading.roughness},
+                           {"covariance", 0}};
+        TextureGraph graph;
+        graph.nodes = {std::move(height), std::move(surface)};
+        graph.output = "normal_map";
+        return graph;
+    }
     GraphNode albedo;
     albedo.id = "normal_map/albedo";
     albedo.info = findGraphNode("colour");
@@ -84,7 +105,7 @@ TextureGraph plainNormalMapGraph(const PatternSpec& spec, const ResponseOptions&
 // the file's noises 1 and 2 (as every graph's leaves), so the program gives
 // the plain pattern's values. Under the lean response: its normal map's graph.
 TextureGraph plainPatternGraph(const PatternSpec& spec, const ResponseOptions& response) {
-    if (response.kind == ResponseKind::Lean) return plainNormalMapGraph(spec, response);
+    if (readsNormalMap(response.kind)) return plainNormalMapGraph(spec, response);
     TextureGraph graph;
     const char* ids[2] = {"noise_x", "noise_y"};
     for (int axis = 0; axis < 2; ++axis) {
@@ -196,7 +217,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
     const std::vector<std::shared_ptr<const NoiseExample>> fields =
         buildGraphFields(graph, fieldIds, spec.seed, context, parts);
     // A plain pattern's two noises are one vector field N on one set of tiles (paper eq. 7).
-    if (!spec.graph && response.kind != ResponseKind::Lean && fields[0]->size() != fields[1]->size())
+    if (!spec.graph && !readsNormalMap(response.kind) && fields[0]->size() != fields[1]->size())
         throw InputError(context + ": noise_x is " + std::to_string(fields[0]->size()) +
                          " texels wide but noise_y is " + std::to_string(fields[1]->size()) +
                          "; both examples must have the same size");

@@ -28,6 +28,7 @@
 #include "stochtex/pattern/ops/product_op.h"
 #include "stochtex/pattern/ops/square_op.h"
 #include "stochtex/pattern/ops/sum_op.h"
+#include "stochtex/pattern/ops/surface_op.h"
 #include "stochtex/pattern/ops/threshold_op.h"
 
 namespace stochtex {
@@ -38,9 +39,8 @@ struct OpTypes {
     using Params = std::variant<typename Ops::Params...>;
 };
 // The list, in the order `stochtex nodes` shows them after the sources and linear nodes.
-using OpList =
-    OpTypes<AffineOp, SumOp, ProductOp, SquareOp, ColormapOp, ColormapFieldOp, CurveOp, ThresholdOp, ColourOp, MixOp, ComposeOp,
-            LeanOp>;
+using OpList = OpTypes<AffineOp, SumOp, ProductOp, SquareOp, ColormapOp, ColormapFieldOp, CurveOp, ThresholdOp,
+                       ColourOp, MixOp, ComposeOp, LeanOp, SurfaceOp>;
 
 // One op's typed parameters; the alternative's index is the op (NodeInfo::op).
 using OpParams = OpList::Params;
