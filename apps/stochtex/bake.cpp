@@ -53,7 +53,7 @@ void registerBake(CLI::App& app) {
         exportPatternSpec(spec, args->options, args->dir, e);
         std::printf(
             "exported %s (filter %s, %s data) to %s: manifest.json, stochtex.glsl (and .hlsl, _unity.hlsl, "
-            ".gdshaderinc), README.md and the data\n",
+            ".gdshaderinc, .gdshader), README.md and the data\n",
             spec.name.c_str(), filterLabel(args->options).c_str(), enumName(kExportFormatNames, args->format).c_str(),
             args->dir.c_str());
     });

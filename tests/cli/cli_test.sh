@@ -852,9 +852,9 @@ case_bad_render_flags() {
   # Commands that draw with OpenGL take (and list) the three filters it renders.
   expect_bad "scene exact" "$out/bad18b.png" '--filter: filter must be none, paper or smooth, got "exact"' -- "$bin" scene --preset gaussian -o "$out/bad18b.png" --filter exact
   "$bin" scene --help | grep -q -- "--filter ENUM:{none, paper, smooth}" || fail "scene --help: --filter does not list none, paper, smooth"
-  expect_bad "lean without a normal map" "$out/bad24.png" "--response: response lean shades a normal map; the pattern has none" -- "$bin" render --preset weld --response lean -o "$out/bad24.png"
+  expect_bad "lean without a normal map" "$out/bad24.png" "--response: response lean reads a normal map; the pattern has none" -- "$bin" render --preset weld --response lean -o "$out/bad24.png"
   expect_bad "no-covariance without lean" "$out/bad25.png" "--no-covariance: has no effect without --response lean" -- "$bin" render --preset lean-ridges --no-covariance -o "$out/bad25.png"
-  expect_bad "bad response" "$out/bad26.png" '--response: response must be prefiltered-colormap or lean, got "bump"' -- "$bin" render --preset lean-ridges --response bump -o "$out/bad26.png"
+  expect_bad "bad response" "$out/bad26.png" '--response: response must be prefiltered-colormap, lean, normal, roughness or height, got "bump"' -- "$bin" render --preset lean-ridges --response bump -o "$out/bad26.png"
   expect_bad "aniso zero" "$out/bad19.png" "--aniso: aniso must be in [1, 16], got 0" -- "$bin" render --preset gaussian -o "$out/bad19.png" --filter smooth --aniso 0
   expect_bad "aniso absurd" "$out/bad20.png" "--aniso: aniso must be in [1, 16], got 1000" -- "$bin" render --preset gaussian -o "$out/bad20.png" --filter smooth --aniso 1000
   expect_bad "tilt" "$out/bad21.png" "--tilt: tiltDeg must be in [0, 89] degrees, got 95" -- "$bin" render --preset gaussian -o "$out/bad21.png" --view plane --tilt 95

@@ -288,8 +288,8 @@ TEST(Export, SeparateProgramRendersWhatRenderGpuRenders) {
             ++written;
         }
         // 9 levels per leaf's pyramid (256²), no covariance pyramid (no lean op reads one), the
-        // table, manifest, README and the four shader files (GLSL, HLSL, Unity, Godot).
-        EXPECT_EQ(written, 18u + 3u + 4u);
+        // table, manifest, README and the five shader files (GLSL, HLSL, Unity, Godot's include and shader).
+        EXPECT_EQ(written, 18u + 3u + 5u);
         // smooth: 10² layers of 256 rows, half floats; paper: 6² layers, floats.
         const std::string table = half ? "256 × 25600, 3 channels (R, G, B) of 16-bit half float"
                                        : "256 × 9216, 3 channels (R, G, B) of 32-bit float";
@@ -324,7 +324,7 @@ TEST(Export, GraphRendersWhatRenderGpuRenders) {
         const fs::path dir = test::scratchPath(std::string("stochtex_export_graph_") + (half ? "half" : "float"));
         fs::remove_all(dir);
         exportGraph(g, o, dir.string(), e);
-        // 3 leaves of 9 levels (256²), 2 tables, manifest, README, the four shader files.
+        // 3 leaves of 9 levels (256²), 2 tables, manifest, README, the five shader files.
         size_t written = 0;
         const std::string readme = readText(dir / "README.md");
         for (const auto& entry : fs::directory_iterator(dir)) {
@@ -332,7 +332,7 @@ TEST(Export, GraphRendersWhatRenderGpuRenders) {
                 << entry.path().filename() << " is not in the README";
             ++written;
         }
-        EXPECT_EQ(written, 3u * 9u + 2u + 2u + 4u);
+        EXPECT_EQ(written, 3u * 9u + 2u + 2u + 5u);
         EXPECT_NE(readme.find("`uGraphPrefiltered1`"), std::string::npos);
         // The unfiltered path's samplers are named as ones that may stay unbound.
         EXPECT_NE(readme.find("also declares `uGraphExample0`"), std::string::npos) << readme;
@@ -388,10 +388,10 @@ TEST(Export, LeanGraphExportsTheSlopesCovariance) {
     const fs::path dir = test::scratchPath("stochtex_export_lean_graph");
     fs::remove_all(dir);
     exportGraph(g, o, dir.string(), ExportOptions{});
-    // 3 leaves and one covariance pyramid of 7 levels (64²), 1 table, manifest, README, the four shader files.
+    // 3 leaves and one covariance pyramid of 7 levels (64²), 1 table, manifest, README, the five shader files.
     size_t written = 0;
     for (const auto& entry : fs::directory_iterator(dir)) written += entry.is_regular_file();
-    EXPECT_EQ(written, 4u * 7u + 1u + 2u + 4u);
+    EXPECT_EQ(written, 4u * 7u + 1u + 2u + 5u);
     EXPECT_TRUE(fs::exists(dir / "covariance_1_0.exr"));
     EXPECT_NE(readText(dir / "README.md").find("`uGraphCov1`"), std::string::npos);
     GpuGraph gpu(g, *ctx, o);
@@ -647,6 +647,12 @@ TEST(Export, EngineFlavoursCompileAndRenderWhatTheGlslRenders) {
         }
         const std::string godot = readText(dir / "stochtex.gdshaderinc");
         for (const std::string& v : godotViolations(godot)) ADD_FAILURE() << "Godot lacks " << v;
+        // The spatial shader: the include's text, after its shader_type line.
+        const std::string shader = readText(dir / "stochtex.gdshader");
+        EXPECT_NE(shader.find("\nshader_type spatial;\n"), std::string::npos);
+        EXPECT_NE(shader.find(godot), std::string::npos);
+        EXPECT_NE(shader.find("void fragment() {\n    ALBEDO = stochtex_sample(UV * stochtex_tiling).rgb;"),
+                  std::string::npos);
         std::ofstream(dir / "godot_probe.frag")
             << godotAsEs(godot)
             << "in vec2 uv;\nin vec3 n;\nout vec4 colour;\nvoid main() {\n    vec3 p = vec3(uv, 0.5);\n"

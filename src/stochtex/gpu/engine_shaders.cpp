@@ -314,6 +314,16 @@ EngineShaders engineShaders(const std::string& include, const std::map<std::stri
         throw std::logic_error(std::string("engine shaders: SPIRV-Cross: ") + e.what());
     }
     out.unity = kUnityFlavour;
+    out.godotShader = std::string(
+                          "// stochtex: a Godot 4 spatial shader (stochtex.gdshaderinc's text inlined, then a\n"
+                          "// fragment function): assign it to a ShaderMaterial and bind its samplers.\n"
+                          "shader_type spatial;\n\n") +
+                      out.godot +
+                      "\n// Example periods across the mesh's UV square.\n"
+                      "uniform float stochtex_tiling = 8.0;\n\n"
+                      "void fragment() {\n"
+                      "    ALBEDO = stochtex_sample(UV * stochtex_tiling).rgb;  // linear RGB, as ALBEDO takes it\n"
+                      "}\n";
     return out;
 }
 

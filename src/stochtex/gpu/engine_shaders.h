@@ -14,9 +14,10 @@
 namespace stochtex {
 
 struct EngineShaders {
-    std::string hlsl;   // stochtex.hlsl
-    std::string unity;  // stochtex_unity.hlsl: Custom Function entry points over stochtex.hlsl
-    std::string godot;  // stochtex.gdshaderinc
+    std::string hlsl;         // stochtex.hlsl
+    std::string unity;        // stochtex_unity.hlsl: Custom Function entry points over stochtex.hlsl
+    std::string godot;        // stochtex.gdshaderinc
+    std::string godotShader;  // stochtex.gdshader: a spatial shader with the include's text, ready to assign
     // The parameter block's members as Godot's uniforms name them (Godot has
     // no uniform blocks): "stochtex_" + the member's name, in block order,
     // those the program reads.

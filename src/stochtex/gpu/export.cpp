@@ -278,7 +278,8 @@ textures and parameters:
   with `Shader.SetGlobalConstantBuffer("@BLOCK@", buffer, 0, @SIZE@)`.
 * `stochtex.gdshaderinc` (Godot 4): `#include "stochtex.gdshaderinc"` in a
   spatial shader and call `stochtex_sample(UV * 8.0).rgb` in `fragment()`
-  (linear RGB, as `ALBEDO` takes it). Godot has no uniform blocks: each
+  (linear RGB, as `ALBEDO` takes it); `stochtex.gdshader` is such a shader,
+  the include's text inlined, ready for a ShaderMaterial. Godot has no uniform blocks: each
   member is a uniform of its own, @GODOT@; the samplers are uniforms of the
   names above, declared `filter_nearest, repeat_disable`. Lean programs'
   `gEyeDirection` and `gLightDirection` are uniforms there (one direction
@@ -524,13 +525,16 @@ void writeDescription(const std::string& dir, nlohmann::json& m, const std::stri
     const EngineShaders engines = engineShaders(include, parameterLiterals(params));
     const std::pair<const char*, const std::string*> engineFiles[] = {{"stochtex.hlsl", &engines.hlsl},
                                                                       {"stochtex_unity.hlsl", &engines.unity},
-                                                                      {"stochtex.gdshaderinc", &engines.godot}};
+                                                                      {"stochtex.gdshaderinc", &engines.godot},
+                                                                      {"stochtex.gdshader", &engines.godotShader}};
     for (const auto& [name, text] : engineFiles) writeFileAtomic((fs::path(dir) / name).string(), *text);
     files.push_back({"`stochtex.hlsl`", "HLSL source, shader model 5.0", "the program's entry points as HLSL"});
     files.push_back({"`stochtex_unity.hlsl`", "HLSL source (Unity)",
                      "Shader Graph Custom Function entry points over `stochtex.hlsl`"});
     files.push_back(
         {"`stochtex.gdshaderinc`", "Godot 4 shading language include", "the program's entry points for Godot"});
+    files.push_back({"`stochtex.gdshader`", "Godot 4 spatial shader",
+                     "the include's text and a `fragment()` that samples the pattern over the mesh's UV"});
     files.push_back({"`README.md`", "Markdown (UTF-8)", "this file"});
     writeFileAtomic((fs::path(dir) / "README.md").string(),
                     readme(files, m["textures"], shading, include, format, engines));
