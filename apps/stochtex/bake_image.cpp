@@ -21,15 +21,14 @@ namespace stochtex::cli {
 
 namespace {
 
-// The PBR set's images: OUTPUT's name with _albedo, _normal, _roughness and
-// _height before its extension.
+// The PBR set's images (kPbrMaps): OUTPUT's name with _albedo, _normal,
+// _roughness and _height before its extension.
 std::vector<std::pair<ResponseKind, std::string>> pbrImages(const std::string& output) {
     const std::filesystem::path path(output);
     const std::string stem = (path.parent_path() / path.stem()).string(), ext = path.extension().string();
-    return {{ResponseKind::PrefilteredColormap, stem + "_albedo" + ext},
-            {ResponseKind::Normal, stem + "_normal" + ext},
-            {ResponseKind::Roughness, stem + "_roughness" + ext},
-            {ResponseKind::Height, stem + "_height" + ext}};
+    std::vector<std::pair<ResponseKind, std::string>> images;
+    for (const auto& [kind, name] : kPbrMaps) images.emplace_back(kind, stem + "_" + name + ext);
+    return images;
 }
 
 }  // namespace
@@ -113,10 +112,7 @@ void registerBakeImage(CLI::App& app) {
             const std::unique_ptr<ViewRenderer> renderer = makeRenderer(spec, options, args->device);
             if (i == 0) firstExampleSize = renderer->exampleSize();
             Camera camera = whole;
-            const double texels = double(renderer->exampleSize()) / firstExampleSize;
-            camera.view.scale *= texels;
-            camera.view.offsetU *= texels;
-            camera.view.offsetV *= texels;
+            camera.view = sameUvView(whole.view, firstExampleSize, renderer->exampleSize());
             const View& v = camera.view;
             const std::unique_ptr<ImageStreamWriter> out =
                 openImageStream(images[i].second, v.width, v.height, 3, args->bits,

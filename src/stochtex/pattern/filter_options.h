@@ -17,6 +17,7 @@
 // (GraphPattern::build picks the program).
 #include <array>
 #include <string>
+#include <utility>
 
 #include "stochtex/core/enum_names.h"
 #include "stochtex/filter/footprint_stats.h"
@@ -56,11 +57,22 @@ inline const EnumNames<ResponseKind> kResponseKindNames{{"prefiltered-colormap",
                                                         {"height", ResponseKind::Height}};
 // Whether the response reads the file's normal map (else its colours).
 inline bool readsNormalMap(ResponseKind kind) { return kind != ResponseKind::PrefilteredColormap; }
+// The surface op's map (SurfaceParams::map: 0 normal, 1 roughness, 2
+// height) a PBR response ends in; −1: not a PBR map.
+inline int surfaceMap(ResponseKind kind) {
+    return kind == ResponseKind::Normal      ? 0
+           : kind == ResponseKind::Roughness ? 1
+           : kind == ResponseKind::Height    ? 2
+                                             : -1;
+}
 // Whether its values are data, written without a transfer function (the
 // PBR maps), rather than colours.
-inline bool writesData(ResponseKind kind) {
-    return kind == ResponseKind::Normal || kind == ResponseKind::Roughness || kind == ResponseKind::Height;
-}
+inline bool writesData(ResponseKind kind) { return surfaceMap(kind) >= 0; }
+// A PBR material's set (bake-image --pbr): each image's response and name.
+inline const std::pair<ResponseKind, const char*> kPbrMaps[] = {{ResponseKind::PrefilteredColormap, "albedo"},
+                                                                {ResponseKind::Normal, "normal"},
+                                                                {ResponseKind::Roughness, "roughness"},
+                                                                {ResponseKind::Height, "height"}};
 
 // A response and its parameters, as a value (FilterOptions holds one).
 struct ResponseOptions {

@@ -63,10 +63,7 @@ TextureGraph plainNormalMapGraph(const PatternSpec& spec, const ResponseOptions&
         surface.id = "normal_map";
         surface.info = findGraphNode("surface");
         surface.inputs = {{"height", height.id}, {"value", height.id}};
-        // The surface op's maps (SurfaceParams::map), by response.
-        static const std::map<ResponseKind, double> maps{
-            {ResponseKind::Normal, 0}, {ResponseKind::Roughness, 1}, {ResponseKind::Height, 2}};
-        surface.numbers = {{"map", maps.at(response.kind)},
+        surface.numbers = {{"map", surfaceMap(response.kind)},
                            {"amplitude", nm.amplitude},
                            {"roughness", shading.roughness},
                            {"covariance", 0}};

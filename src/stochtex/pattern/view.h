@@ -55,6 +55,17 @@ inline std::array<double, 2> pixelUv(const View& view, double invW, int px, int 
 enum class CpuKernel { Simd, Scalar };
 inline const EnumNames<CpuKernel> kCpuKernelNames{{"simd", CpuKernel::Simd}, {"scalar", CpuKernel::Scalar}};
 
+// The view of the same uv for a program whose first example has
+// `toExampleSize` texels, `view` being for one of `fromExampleSize` (a
+// view's scale and offset are in texels of its program's example).
+inline View sameUvView(View view, int fromExampleSize, int toExampleSize) {
+    const double texels = double(toExampleSize) / double(fromExampleSize);
+    view.scale *= texels;
+    view.offsetU *= texels;
+    view.offsetV *= texels;
+    return view;
+}
+
 // Checks a view against the output caps; InputError::parameter naming size,
 // scale or offset otherwise.
 void validateView(const View& view, ViewUse use = ViewUse::Render);
