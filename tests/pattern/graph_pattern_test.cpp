@@ -470,6 +470,101 @@ TEST(GraphPattern, MomentsThroughCurvesMatchTheExpectations) {
     EXPECT_NEAR(onceMatched.fromMoments({{0.5f, 0.0f}})[0], 0.25, 1e-3);
 }
 
+// E[S] of a program of one or two leaves under independent Gaussians of
+// their (mean, deviation): the point program on a 241² grid over ±6σ,
+// weighed by the Gaussians (one leaf: the second axis repeats it).
+Rgb expectedColour(const GraphPattern& g, std::array<double, 2> mean, std::array<double, 2> sigma) {
+    const int n = 241;
+    double sum[3] = {0, 0, 0}, total = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double a = -6.0 + 12.0 * i / (n - 1), b = -6.0 + 12.0 * j / (n - 1);
+            const double w = std::exp(-0.5 * (a * a + b * b));
+            std::vector<float> leaves{float(mean[0] + a * sigma[0]), float(mean[1] + b * sigma[1])};
+            leaves.resize(size_t(g.leafCount()));
+            const Rgb c = g.fromLeafValues(leaves);
+            for (int k = 0; k < 3; ++k) sum[k] += w * c[size_t(k)];
+            total += w;
+        }
+    return {float(sum[0] / total), float(sum[1] / total), float(sum[2] / total)};
+}
+
+double distance(const Rgb& a, const Rgb& b) {
+    return std::sqrt(double(a[0] - b[0]) * (a[0] - b[0]) + double(a[1] - b[1]) * (a[1] - b[1]) +
+                     double(a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// Two functions of one source are correlated: a sum of two curves of one
+// height, and a colormap reading the height twice (x ≡ y). Filtered, the op
+// whose value the program reads is a table of the function of its sources
+// (GraphPattern::planSourceFunctions), whose prefiltered lookup is E[S]
+// under the leaves' Gaussians, up to the tables' interpolation between σ
+// levels. Op by op — as before, through the ops' own prefiltered tables —
+// the sum's variance is the curves' as if independent (here the two
+// curves nearly cancel), and the colormap spreads over x ≠ y.
+TEST(GraphPattern, FunctionsOfOneOrTwoSourcesAreFilteredAsWholes) {
+    const std::string colormap =
+        R"({"type": "painted", "background": "#1b2a41", "shapes": [
+            {"shape": "rectangle", "min": [0, 0.5], "max": [1, 1], "colour": "#3f7f6e"},
+            {"shape": "band", "point": [0.5, 0.5], "angle": 30, "width": 0.15, "colour": "#e8c872"}]})";
+    const std::string grain =
+        R"({"type": "spectral_noise", "size": 64, "seed": 4, "components": [{"shape": "lowpass", "cutoff": 6}]})";
+    const GraphPattern balanced = GraphPattern::build(test::parsePatternText(seededGraph(R"("h": )" + kSeededNoise +
+                                                                                         R"(, "grain": )" + grain + R"(,
+        "up": {"type": "curve", "input": "h", "points": [[0, 0], [1, 1]]},
+        "down": {"type": "curve", "input": "h", "points": [[0, 1], [0.5, 0.4], [1, 0]]},
+        "mixed": {"type": "sum", "a": "up", "b": "down", "weight_a": 0.5, "weight_b": 0.5},
+        "c": {"type": "colormap", "x": "mixed", "y": "grain", "colormap": )" + colormap + "}")));
+    const GraphPattern diagonal = GraphPattern::build(test::parsePatternText(
+        seededGraph(R"("h": )" + kSeededNoise + R"(, "twice": {"type": "colormap", "x": "h", "y": "h", "colormap": )" +
+                        colormap + "}",
+                    "twice")));
+    // The ops that get a function: the one whose value is read, over its sources.
+    std::map<std::string, std::array<int, 3>> planned;
+    for (const GraphPattern* g : {&balanced, &diagonal})
+        for (const GraphPattern::Operation& op : g->operations())
+            if (op.sourceFunction) planned[op.id] = op.sourceFunction->inputs;
+    ASSERT_EQ(balanced.leafIds(), (std::vector<std::string>{"h", "grain"}));
+    ASSERT_EQ(diagonal.leafIds(), (std::vector<std::string>{"h"}));
+    EXPECT_EQ(planned, (std::map<std::string, std::array<int, 3>>{{"c", {0, 1, -1}}, {"twice", {0, 0, -1}}}));
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    PartCache parts;
+    for (const GraphPattern* g : {&balanced, &diagonal}) {
+        // The ops' own prefiltered tables are those the mean-only program reads.
+        const FilteredGraph filtered(*g, o, GraphMoments::Matched, &parts), ops(*g, o, GraphMoments::MeanOnly, &parts);
+        const auto table = [&](const std::string& id) -> const PrefilteredColormap& {
+            for (const GraphPattern::Operation& op : g->operations())
+                if (op.id == id) return ops.table(op.table);
+            throw std::logic_error("no node " + id);
+        };
+        double whole = 0, byOps = 0;
+        for (const auto& [mh, sh] : {std::pair{0.45, 0.03}, {0.5, 0.08}, {0.6, 0.15}, {0.5, 0.3}}) {
+            const float m = float(mh), s = float(sh), mg = 0.55f, sg = 0.1f;
+            const Rgb want = expectedColour(*g, {mh, mg}, {sh, sg});
+            std::vector<std::array<float, 2>> leaves{{m, s * s}, {mg, sg * sg}};
+            leaves.resize(size_t(g->leafCount()));
+            const double w = distance(filtered.fromMoments(leaves), want);
+            Rgb ops;
+            if (g == &balanced) {
+                const Rgb u = table("up").sample(m, 0.5f, s, 0.0f), d = table("down").sample(m, 0.5f, s, 0.0f);
+                const float mean = 0.5f * (u[0] + d[0]);
+                const float var = 0.25f * (std::max(u[1] - u[0] * u[0], 0.0f) + std::max(d[1] - d[0] * d[0], 0.0f));
+                ops = table("c").sample(mean, mg, std::sqrt(var), sg);
+            } else {
+                ops = table("twice").sample(m, m, s, s);
+            }
+            const double b = distance(ops, want);
+            std::printf("[ info ] %s, h ~ N(%.2f, %.2f²): |filtered - E[S]| %.2e as a whole, %.2e op by op\n",
+                        g == &balanced ? "balanced" : "diagonal", mh, sh, w, b);
+            whole = std::max(whole, w);
+            byOps = std::max(byOps, b);
+        }
+        EXPECT_LT(whole, 0.03);
+        EXPECT_LT(whole, 0.25 * byOps);
+    }
+}
+
 TEST(GraphPattern, ATableReadsAnOpsFieldWithinZeroOneAsABetaAndALeafAsAGaussian) {
     // Figure 14: "direction" reads the two derivative leaves; "colour" reads
     // direction's g ∈ [0, 1] along x and the height leaf along y.

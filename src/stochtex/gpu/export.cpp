@@ -645,10 +645,9 @@ void exportGraph(const GraphPattern& graph, const FilterOptions& options, const 
     }
     nlohmann::json& tables = m["graph"]["tables"] = nlohmann::json::array();
     for (size_t t = 0; t < graph.tables().size(); ++t) {
+        if (!graph.readsTable(int(t), true, true)) continue;  // an op's table its function of sources replaces
         const ColormapTable& h = graph.tables()[t].blended;
-        std::string node;
-        for (const GraphPattern::Operation& op : graph.operations())
-            if (op.table == int(t)) node = op.id;
+        const std::string& node = graph.tableNode(int(t));
         // A field's (g, g²) table is never half: the next table reads g, and
         // a g rounded by up to 2⁻¹¹ of it moves across that table's edges.
         // The 8-bit format stores it as 16-bit codes (steps of 2⁻¹⁶) where

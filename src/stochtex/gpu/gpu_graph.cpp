@@ -41,18 +41,21 @@ namespace {
 // The host side of the ops' interface (pattern/ops/op_host.h) for this
 // graph: OpContext, and the table lookups over the graph's samplers by the
 // op's table index (a constant in each call, so the branches fold away).
-void writeOpHost(std::ostringstream& o, const GraphPattern& graph) {
+void writeOpHost(std::ostringstream& o, const GraphPattern& graph, GraphMoments moments) {
     // Each op's kernel file (with ops/op_host.glsl, which declares OpContext
     // and these two lookups) is assembled before this chunk.
     std::vector<std::string> stems;
     for (const GraphPattern::Operation& op : graph.operations())
-        if (std::find(stems.begin(), stems.end(), opKernelStem(op.params)) == stems.end())
-            stems.emplace_back(opKernelStem(op.params));
+        for (const bool matched : {false, true})
+            if (const char* stem = opKernelStem(GraphPattern::filteredCall(op, matched).params);
+                std::find(stems.begin(), stems.end(), stem) == stems.end())
+                stems.emplace_back(stem);
     for (const std::string& stem : stems) o << "#include \"stochtex/pattern/ops/" << stem << ".glsl\"\n";
     for (const bool filtered : {false, true}) {
         o << (filtered ? "vec3 opPrefiltered(OpContext ctx, vec2 xy, vec2 sigma) {\n"
                        : "vec3 opTable(OpContext ctx, vec2 xy) {\n");
         for (size_t t = 0; t < graph.tables().size(); ++t) {
+            if (!graph.readsTable(int(t), filtered, moments == GraphMoments::Matched)) continue;
             const BetaAxes& beta = graph.tables()[t].beta;
             o << "    if (ctx.table == " << t << ") return "
               << (filtered ? "prefilteredLookup(uGraphPrefiltered" + std::to_string(t) + ", xy, sigma, ivec2(" +
@@ -153,14 +156,22 @@ void writeTexelSource(std::ostringstream& o, const GraphPattern& graph, const Gr
 // covariance of its Operation::covariancePair.
 void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filtered, GraphMoments moments) {
     int out = graph.leafCount();
+    const bool matched = moments == GraphMoments::Matched;
     for (const GraphPattern::Operation& op : graph.operations()) {
-        const auto in = [&](int k) { return op.inputs[size_t(k)] >= 0 ? slot(op.inputs[size_t(k)]) : "vec3(0.0)"; };
+        if (filtered && !GraphPattern::runsFiltered(op, matched)) {  // read by none (functions of sources read past it)
+            ++out;
+            continue;
+        }
+        // Filtered, the op or its function of sources (GraphPattern::filteredCall, as the CPU runs it).
+        const GraphPattern::OpCall call =
+            filtered ? GraphPattern::filteredCall(op, matched) : GraphPattern::OpCall{op.params, op.inputs, op.table};
+        const auto in = [&](int k) { return call.inputs[size_t(k)] >= 0 ? slot(call.inputs[size_t(k)]) : "vec3(0.0)"; };
         const std::string cov =
             filtered && op.covariancePair >= 0 ? "p" + std::to_string(op.covariancePair) + ".cov" : "0.0";
         const std::string ctx =
-            "OpContext(" + std::to_string(op.table) + ", gEyeDirection, gLightDirection, " + cov + ")";
-        o << "    vec3 " << slot(out) << " = " << opGlslCall(op.params, filtered, in(0), in(1), in(2), ctx) << ";  // "
-          << op.id << "\n";
+            "OpContext(" + std::to_string(call.table) + ", gEyeDirection, gLightDirection, " + cov + ")";
+        o << "    vec3 " << slot(out) << " = " << opGlslCall(call.params, filtered, in(0), in(1), in(2), ctx)
+          << ";  // " << op.id << (&call.params != &op.params ? " (as a function of its sources)" : "") << "\n";
         // MeanOnly: a table's output field passes on its mean alone (FilteredGraph::fromMoments).
         const bool fieldTable = op.info->output != PortType::Colour && op.table >= 0;
         if (filtered && fieldTable && moments == GraphMoments::MeanOnly) o << "    " << slot(out) << ".y = 0.0;\n";
@@ -219,14 +230,17 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
         for (size_t p = 0; p < graph.leafPairs().size(); ++p)
             sampler("sampler2D", "uGraphPairStats" + std::to_string(p),
                     "pair " + std::to_string(p) + "'s (E_x, E_y, V_x, V_y) pyramid, coded");
-    for (size_t t = 0; t < graph.tables().size(); ++t) {
-        sampler("sampler2DArray", "uGraphTable" + std::to_string(t), "");
-        sampler("sampler2DArray", "uGraphPrefiltered" + std::to_string(t), "");
+    // Each table where a program reads it: an op's own in the point program,
+    // a function of sources only filtered (GraphPattern::readsTable).
+    const bool matched = moments == GraphMoments::Matched;
+    for (int t = 0; t < int(graph.tables().size()); ++t) {
+        if (graph.readsTable(t, false, matched)) sampler("sampler2DArray", "uGraphTable" + std::to_string(t), "");
+        if (graph.readsTable(t, true, matched)) sampler("sampler2DArray", "uGraphPrefiltered" + std::to_string(t), "");
     }
     for (size_t p = 0; p < graph.leafPairs().size(); ++p)
         if (graph.pairCovariance(int(p)))
             sampler("sampler2D", "uGraphCov" + std::to_string(p), "pair " + std::to_string(p) + "'s C_l pyramid");
-    writeOpHost(o, graph);
+    writeOpHost(o, graph, moments);
     writeTexelSource(o, graph, estimator);
 
     o << "\nvec3 unfilteredColour(vec2 uv) {\n";
@@ -266,12 +280,20 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
     return o.str();
 }
 
-void checkGraphTextureUnits(const GraphPattern& graph, bool filtered) {
-    // The point set (examples, T⁻¹ LUTs, tables) always, the filtered set (pyramids, prefiltered tables) when
-    // filtering.
-    int units = (int(graph.tables().size()) + graph.leafCount()) * (filtered ? 2 : 1);
+int graphTextureUnits(const GraphPattern& graph, bool filtered, bool packedPairs, GraphMoments moments) {
+    int units = graph.leafCount();
     for (int k = 0; k < graph.leafCount(); ++k) units += graph.leaf(k).example().gaussianized();
-    for (size_t p = 0; p < graph.leafPairs().size(); ++p) units += filtered && graph.pairCovariance(int(p));
+    for (int t = 0; t < int(graph.tables().size()); ++t)
+        units += graph.readsTable(t, false, false) +
+                 (filtered && graph.readsTable(t, true, moments == GraphMoments::Matched));
+    if (!filtered) return units;
+    units += packedPairs ? int(graph.leafPairs().size()) : graph.leafCount();
+    for (size_t p = 0; p < graph.leafPairs().size(); ++p) units += graph.pairCovariance(int(p));
+    return units;
+}
+
+void checkGraphTextureUnits(const GraphPattern& graph, bool filtered, GraphMoments moments) {
+    const int units = graphTextureUnits(graph, filtered, false, moments);
     if (units > kMaxUnits)
         throw InputError("the graph's GPU program reads " + std::to_string(units) + " textures " +
                          (filtered ? "filtered" : "unfiltered") + ", more than the " + std::to_string(kMaxUnits) +
@@ -288,7 +310,7 @@ std::shared_ptr<const FilteredGraph> gpuFilteredGraph(const GraphPattern& graph,
     if (!gpuHasSource(options.source))
         throw InputError::parameter("source", "must be point or estimators on the GPU, got " +
                                                   enumName(kStatisticsSourceNames, options.source));
-    checkGraphTextureUnits(graph, options.source == StatisticsSource::Estimators);
+    checkGraphTextureUnits(graph, options.source == StatisticsSource::Estimators, moments);
     return std::make_shared<const FilteredGraph>(graph, options, moments, parts);
 }
 
@@ -360,10 +382,12 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
                                           [&] { return pyramidTexture(*f.estimator(int(p)).covariancePyramid()); }));
     for (size_t t = 0; t < graph.tables().size(); ++t) {
         const std::string table = std::to_string(t);
-        const Image point = graph.tables()[t].point.table();
-        m.arrays.emplace_back("uGraphTable" + table, std::make_shared<const gl::Texture>(tableTexture(
-                                                         point.width(), point.height(), 1, point.data().data())));
-        if (!filtered) continue;
+        if (graph.readsTable(int(t), false, false)) {
+            const Image point = graph.tables()[t].point.table();
+            m.arrays.emplace_back("uGraphTable" + table, std::make_shared<const gl::Texture>(tableTexture(
+                                                             point.width(), point.height(), 1, point.data().data())));
+        }
+        if (!filtered || !graph.readsTable(int(t), true, moments == GraphMoments::Matched)) continue;
         // The prefiltered table's layers at the table's resolution (atlas), made for the upload alone.
         const ColormapTable& h = graph.tables()[t].blended;
         const int rx = h.resolutionX(), ry = h.resolutionY();

@@ -61,10 +61,15 @@ kernel::PatternParams patternParams(const GraphPattern& graph, const FilterOptio
 // [DH19] from the filtered graph's estimators when it is Deliot–Heitz.
 GraphEstimator graphEstimator(const FilteredGraph& filtered, const FilterOptions& options);
 
+// The textures the graph's program samples (graphProgramSource declares
+// them): the point set (examples, T⁻¹ LUTs, the tables the unfiltered
+// program reads) and, with `filtered`, the statistics (a pyramid per leaf,
+// or per pair where `packedPairs`), covariance pyramids and the tables the
+// filtered program reads (GraphPattern::readsTable).
+int graphTextureUnits(const GraphPattern& graph, bool filtered, bool packedPairs, GraphMoments moments);
 // InputError when the graph's program needs more textures than a fragment
-// shader has units (16): the point set, and with `filtered` the pyramids and
-// prefiltered tables too.
-void checkGraphTextureUnits(const GraphPattern& graph, bool filtered);
+// shader has units (16) (graphTextureUnits, a pyramid per leaf).
+void checkGraphTextureUnits(const GraphPattern& graph, bool filtered, GraphMoments moments = GraphMoments::Matched);
 
 class GpuGraph final : public GpuView {
 public:

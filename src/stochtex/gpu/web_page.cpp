@@ -88,9 +88,7 @@ void writeWebPage(const PatternSpec& spec, const WebPageOptions& web, const std:
     const FilteredGraph paperGraph(graph, paper, GraphMoments::Matched, &parts);
     const FilteredGraph smoothGraph(graph, smooth, GraphMoments::Matched, &parts);
     // Both paths' samplers in one program: the point set and the filtered set (pyramids per pair).
-    int units = int(graph.tables().size()) * 2 + graph.leafCount() + int(graph.leafPairs().size());
-    for (int k = 0; k < graph.leafCount(); ++k) units += graph.leaf(k).example().gaussianized();
-    for (std::size_t p = 0; p < graph.leafPairs().size(); ++p) units += graph.pairCovariance(int(p));
+    const int units = graphTextureUnits(graph, true, true, GraphMoments::Matched);
     if (units > kWebTextureUnits)
         throw InputError("the graph's web program reads " + std::to_string(units) + " textures, more than the " +
                          std::to_string(kWebTextureUnits) + " units WebGL 2 guarantees; use fewer leaves or tables");
@@ -128,9 +126,12 @@ void writeWebPage(const PatternSpec& spec, const WebPageOptions& web, const std:
     }
     for (std::size_t t = 0; t < graph.tables().size(); ++t) {
         const std::string table = std::to_string(t);
-        const Image point = graph.tables()[t].point.table();
-        textures.push_back(texture("uGraphTable" + table, "array", "RGB32F",
-                                   {floatLevel(point.width(), point.height(), point.data().data(), 3)}));
+        if (graph.readsTable(int(t), false, false)) {
+            const Image point = graph.tables()[t].point.table();
+            textures.push_back(texture("uGraphTable" + table, "array", "RGB32F",
+                                       {floatLevel(point.width(), point.height(), point.data().data(), 3)}));
+        }
+        if (!graph.readsTable(int(t), true, true)) continue;  // an op's table its function of sources replaces
         // Each filter's prefiltered table, as the 8-bit export stores it:
         // colours as 8-bit sRGB codes, a field's (g, g²) as 16-bit codes
         // where it lies in [0, 1] (page.js turns them into floats), else floats.

@@ -417,6 +417,153 @@ void GraphPattern::settleProgramRanges(GraphPattern& p, const std::vector<NoiseE
         lo.push_back(outLo);
         hi.push_back(outHi);
     }
+    std::vector<float> fieldLo, fieldHi;
+    for (size_t k = 0; k < lo.size(); ++k) fieldLo.push_back(lo[k].x), fieldHi.push_back(hi[k].x);
+    planSourceFunctions(p, examples, fieldLo, fieldHi);
+}
+
+void GraphPattern::planSourceFunctions(GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                       const std::vector<float>& lo, const std::vector<float>& hi) {
+    const int leaves = p.leafCount();
+    const int slots = leaves + int(p.operations_.size());
+    // Each slot's sources, ascending: itself for a leaf and a root op, none
+    // for an op that reads nothing (a colour).
+    using Sources = std::vector<int>;
+    std::vector<Sources> sources(static_cast<size_t>(slots));
+    for (int k = 0; k < leaves; ++k) sources[size_t(k)] = {k};
+    const auto operation = [&](int slot) -> Operation& { return p.operations_[size_t(slot - leaves)]; };
+    const auto inputsOf = [&](int slot) {  // the inputs that are not constants
+        std::vector<int> in;
+        for (const int i : operation(slot).inputs)
+            if (i >= 0 && !sources[size_t(i)].empty()) in.push_back(i);
+        return in;
+    };
+    for (int q = leaves; q < slots; ++q) {
+        const Operation& op = operation(q);
+        std::set<int> set;
+        for (const int i : inputsOf(q)) set.insert(sources[size_t(i)].begin(), sources[size_t(i)].end());
+        const bool root = set.size() > 2 || opShadesLight(op.params) || op.covariancePair >= 0;
+        sources[size_t(q)] = root ? Sources{q} : Sources(set.begin(), set.end());
+    }
+    // From the output back: an op's function is planned where the filtered
+    // program reads its value — the output, or an input of an op that runs
+    // as itself (a root, or an op without a function).
+    std::vector<bool> read(static_cast<size_t>(slots), false);
+    read[size_t(slots - 1)] = true;
+    for (int q = slots - 1; q >= leaves; --q) {
+        const Sources& src = sources[size_t(q)];
+        const std::vector<int> in = inputsOf(q);
+        // An op that reads each of its sources once, directly, is filtered as itself.
+        Sources direct = in;
+        std::sort(direct.begin(), direct.end());
+        const bool itself = src == Sources{q} || src.empty() || direct == src;
+        if (!read[size_t(q)] || (!itself && planSourceFunction(p, examples, lo, hi, q, src))) continue;
+        for (const int i : operation(q).inputs)  // constants too
+            if (i >= 0) read[size_t(i)] = true;
+    }
+    for (int q = leaves; q < slots; ++q) operation(q).filteredRead = read[size_t(q)];
+}
+
+bool GraphPattern::planSourceFunction(GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                      const std::vector<float>& lo, const std::vector<float>& hi, int q,
+                                      const std::vector<int>& sources) {
+    const int leaves = p.leafCount();
+    const auto operation = [&](int slot) -> const Operation& { return p.operations_[size_t(slot - leaves)]; };
+    const int first = sources.front();
+    // F's ops: those between q and its sources that q reads.
+    std::vector<bool> inF(size_t(q + 1), false);
+    inF[size_t(q)] = true;
+    for (int c = q; c > first; --c)
+        if (inF[size_t(c)] && std::find(sources.begin(), sources.end(), c) == sources.end())
+            for (const int i : operation(c).inputs)
+                if (i >= 0) inF[size_t(i)] = true;
+    Slots values(size_t(p.outputSlot() + 2), vec3(0.0f));
+    kernel::OpContext ctx;
+    const auto F = [&](float x, float y) {
+        values[size_t(first)] = vec3(x, 0.0f, 0.0f);
+        values[size_t(sources.back())] = vec3(sources.size() == 1 ? x : y, 0.0f, 0.0f);
+        for (int c = leaves; c <= q; ++c) {  // a colour op F reads may precede its sources
+            if (!inF[size_t(c)] || std::find(sources.begin(), sources.end(), c) != sources.end()) continue;
+            const Operation& op = operation(c);
+            ctx.table = op.table;
+            ctx.pointTable = op.table >= 0 ? &p.tables_[size_t(op.table)].point : nullptr;
+            values[size_t(c)] =
+                opPoint(op.params, input(values, op, 0), input(values, op, 1), input(values, op, 2), ctx);
+        }
+        return values[size_t(q)];
+    };
+    // Its table spans [0, 1] along each source, as every table: where a
+    // source reaches beyond, F must hold its value at the end (33 points
+    // beyond each end, against 9 values of the other source).
+    const auto at = [&](int axis, float v, float other) { return axis == 0 ? F(v, other) : F(other, v); };
+    for (size_t axis = 0; axis < sources.size(); ++axis) {
+        const float l = lo[size_t(sources[axis])], h = hi[size_t(sources[axis])];
+        for (int o = 0; o <= 8; ++o) {
+            const float other = float(o) / 8.0f;
+            for (int k = 0; k <= 32; ++k) {
+                const float t = float(k) / 32.0f;
+                if (l < 0.0f && at(int(axis), l * (1.0f - t), other) != at(int(axis), 0.0f, other)) return false;
+                if (h > 1.0f && at(int(axis), 1.0f + (h - 1.0f) * t, other) != at(int(axis), 1.0f, other)) return false;
+            }
+        }
+    }
+    // Resolution: along a source, the largest of F's tables' (a curve's, a
+    // colormap's) within [256, 512] (a 512² table prefilters in about as
+    // long as a plain pattern's); one source: 1024 entries (cheap).
+    int resolution = 256;
+    for (int c = first + 1; c <= q; ++c)
+        if (c >= leaves && inF[size_t(c)] && operation(c).table >= 0) {
+            const ColormapTable& t = p.tables_[size_t(operation(c).table)].point;
+            resolution = std::max({resolution, t.resolutionX(), t.resolutionY()});
+        }
+    const bool one = sources.size() == 1;
+    const int rx = one ? 1024 : std::min(resolution, 512), ry = one ? 2 : rx;
+    Operation& op = p.operations_[size_t(q - leaves)];
+    const bool field = givesField(op);
+    const auto gaussianized = [&](size_t axis) -> const NoiseExample* {
+        const int s = sources[std::min(axis, sources.size() - 1)];
+        return s < leaves && examples[size_t(s)].gaussianized() ? &examples[size_t(s)] : nullptr;
+    };
+    const auto table = [&](bool blended) {
+        const NoiseExample *ex = blended ? gaussianized(0) : nullptr, *ey = blended ? gaussianized(1) : nullptr;
+        return tabulate(rx, ry, [&](int i, int j) {
+            float x = float(i) / float(rx - 1), y = one ? x : float(j) / float(ry - 1);
+            if (ex) x = ex->toOutput(x);
+            if (ey) y = ey->toOutput(y);
+            const vec3 v = F(x, y);
+            return field ? kernel::momentEntry(v.x) : v;
+        });
+    };
+    OpTable t{table(false), table(true), field};
+    // A root op's field within [0, 1] as a Beta, as for the op tables (settleProgramRanges).
+    constexpr float roundingSlack = 1e-5f;
+    for (size_t axis = 0; axis < 2; ++axis) {
+        const int s = sources[std::min(axis, sources.size() - 1)];
+        t.beta[axis] = s >= leaves && lo[size_t(s)] >= -roundingSlack && hi[size_t(s)] <= 1.0f + roundingSlack;
+    }
+    p.tables_.push_back(std::move(t));
+    Operation::SourceFunction f;
+    f.table = int(p.tables_.size()) - 1;
+    f.inputs = {first, sources.back(), -1};
+    if (field)
+        f.params = kernel::ColormapFieldParams{0.0f};
+    else
+        f.params = kernel::ColormapParams{0.0f};
+    op.sourceFunction = f;
+    return true;
+}
+
+bool GraphPattern::readsTable(int table, bool filtered, bool matched) const {
+    return std::any_of(operations_.begin(), operations_.end(), [&](const Operation& op) {
+        if (!filtered) return op.table == table;
+        return runsFiltered(op, matched) && filteredCall(op, matched).table == table;
+    });
+}
+
+const std::string& GraphPattern::tableNode(int table) const {
+    for (const Operation& op : operations_)
+        if (op.table == table || (op.sourceFunction && op.sourceFunction->table == table)) return op.id;
+    throw std::out_of_range("GraphPattern::tableNode: no table " + std::to_string(table));
 }
 
 bool GraphPattern::shadesLight() const {
@@ -664,8 +811,7 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         return convolveColormapNumerically(graph.tables().front().blended, exact[0][0], exact[1][0],
                                            std::sqrt(exact[0][1]), std::sqrt(exact[1][1]));
     };
-    const bool readsTables = std::any_of(graph.operations().begin(), graph.operations().end(),
-                                         [](const GraphPattern::Operation& op) { return op.table >= 0; });
+    const bool readsTables = !graph.tables().empty();
     if (options.source == StatisticsSource::Point) {  // nothing to prefilter
         // Without tables the filtered program costs nothing to run on the
         // whole examples' moments (a lean program: the lean response's sky);
@@ -675,15 +821,18 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         sky_ = plain_ ? plainSky() : readsTables ? graph.fromLeafValues(means) : fromMoments(whole, wholeCov);
         return;
     }
-    for (const GraphPattern::Operation& op : graph.operations()) {
-        if (op.table < 0) continue;
-        const ColormapTable& t = graph.tables()[size_t(op.table)].blended;
+    for (size_t k = 0; k < graph.tables().size(); ++k) {
+        const ColormapTable& t = graph.tables()[k].blended;
         try {
             validatePrefilteredResolution(t.resolutionX(), t.resolutionY());
         } catch (const InputError& e) {
-            throw InputError("node \"" + op.id + "\": " + e.what());
+            throw InputError("node \"" + graph.tableNode(int(k)) + "\": " + e.what());
         }
-        tables_.push_back(prefilteredPart(parts, t, options.response.prefilter, graph.tables()[size_t(op.table)].beta));
+        // Only what this program reads: matched, an op's table that its
+        // function of sources replaces is not (nor, mean-only, a function's).
+        tables_.push_back(graph.readsTable(int(k), true, moments == GraphMoments::Matched)
+                              ? prefilteredPart(parts, t, options.response.prefilter, graph.tables()[k].beta)
+                              : nullptr);
     }
     sky_ = plain_ ? plainSky() : fromMoments(whole, wholeCov);
     if (options.source == StatisticsSource::Estimators)
@@ -712,13 +861,21 @@ Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
     ctx.eye = toVec(eye);
     size_t out = size_t(graph_.leafCount());
     for (const GraphPattern::Operation& op : graph_.operations()) {
-        ctx.table = op.table;
-        ctx.pointTable = op.table >= 0 ? &graph_.tables()[size_t(op.table)].point : nullptr;
+        if (!GraphPattern::runsFiltered(op, moments_ == GraphMoments::Matched)) {  // read by none
+            ++out;
+            continue;
+        }
+        const GraphPattern::OpCall call = GraphPattern::filteredCall(op, moments_ == GraphMoments::Matched);
+        ctx.table = call.table;
+        ctx.pointTable = call.table >= 0 ? &graph_.tables()[size_t(call.table)].point : nullptr;
         ctx.prefilteredTable =
-            op.table >= 0 && size_t(op.table) < tables_.size() ? tables_[size_t(op.table)].get() : nullptr;
+            call.table >= 0 && size_t(call.table) < tables_.size() ? tables_[size_t(call.table)].get() : nullptr;
         const size_t pair = op.covariancePair >= 0 ? size_t(op.covariancePair) : pairCovariances.size();
         ctx.slopeCov = pair < pairCovariances.size() ? pairCovariances[pair] : 0.0f;
-        slots[out] = opFiltered(op.params, input(slots, op, 0), input(slots, op, 1), input(slots, op, 2), ctx);
+        const auto in = [&](int k) {
+            return call.inputs[size_t(k)] >= 0 ? slots[size_t(call.inputs[size_t(k)])] : vec3(0.0f);
+        };
+        slots[out] = opFiltered(call.params, in(0), in(1), in(2), ctx);
         // Only the tables make a field non-Gaussian; MeanOnly drops what they add.
         if (givesField(op) && op.table >= 0 && moments_ == GraphMoments::MeanOnly) slots[out].y = 0.0f;
         ++out;

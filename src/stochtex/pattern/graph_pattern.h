@@ -29,6 +29,8 @@
 // (plainColormap()).
 #include <array>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -89,8 +91,44 @@ public:
         // here once for the CPU evaluator and the GLSL emitter.
         int covariancePair = -1;
         OpParams params;  // the op and its typed parameters
+        // Filtered, this op as a function F of its sources (planSourceFunctions):
+        // a colormap op (a colour) or a colormap_field op (a field) over a
+        // table of F, read at its one or two source slots (one: twice).
+        // Absent: the op itself.
+        struct SourceFunction {
+            OpParams params;
+            std::array<int, 3> inputs{-1, -1, -1};
+            int table = -1;
+        };
+        std::optional<SourceFunction> sourceFunction;
+        // Whether the filtered program reads this op's value when it matches
+        // moments: false where only functions of sources read past it (it
+        // need not run there).
+        bool filteredRead = true;
     };
     using Table = OpTable;
+    // What a filtered program calls for an operation: the op, or the
+    // function of its sources standing in for it (moment matching only:
+    // MeanOnly passes on means through the ops themselves). The CPU
+    // evaluator and the GLSL emitter both run this.
+    struct OpCall {
+        const OpParams& params;
+        std::array<int, 3> inputs;
+        int table;
+    };
+    // Whether the filtered program runs `op` at all (Operation::filteredRead).
+    static bool runsFiltered(const Operation& op, bool matched) { return !matched || op.filteredRead; }
+    static OpCall filteredCall(const Operation& op, bool matched) {
+        if (matched && op.sourceFunction)
+            return {op.sourceFunction->params, op.sourceFunction->inputs, op.sourceFunction->table};
+        return {op.params, op.inputs, op.table};
+    }
+    // The node a table belongs to: its op's, or the op whose function of its sources it tabulates.
+    const std::string& tableNode(int table) const;
+    // Whether the unfiltered program (the ops' own tables) or the filtered
+    // one (filteredCall's, `matched` or not) reads table `table`: a GPU
+    // program binds only what it reads.
+    bool readsTable(int table, bool filtered, bool matched) const;
 
     int leafCount() const { return int(leafIds_.size()); }
     const std::vector<std::string>& leafIds() const { return leafIds_; }
@@ -150,6 +188,24 @@ private:
     // Beta axis (OpTable::beta).
     static void settleProgramRanges(GraphPattern& p, const std::vector<NoiseExample>& examples,
                                     const std::string& context);
+    // Filtered, an op whose inputs are functions of at most two slots, its
+    // sources (leaves, or root ops: those that read more sources, the eye
+    // or a pair's covariance), is itself a function F of them. Moment
+    // matching loses what is known of F where the op reads a source through
+    // other ops (their fields are taken as Gaussian or Beta) or reads one
+    // twice (two functions of one source are correlated, not independent
+    // as the ops take their inputs). There, if F holds its values at the
+    // table's ends where a source reaches beyond [0, 1] (as a table lookup
+    // does), the op gets a table of F (Operation::sourceFunction), exact
+    // under the sources' distributions (docs/MATH.md, "Functions of one or
+    // two sources"). Only ops whose values the filtered program reads.
+    static void planSourceFunctions(GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                    const std::vector<float>& lo, const std::vector<float>& hi);
+    // Op slot q's function of `sources` (ascending), its table added; false
+    // (nothing added) where F does not hold its ends beyond [0, 1].
+    static bool planSourceFunction(GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                   const std::vector<float>& lo, const std::vector<float>& hi, int q,
+                                   const std::vector<int>& sources);
     // One pixel's slots: outputSlot() + 2 values, the last vec3(0) (what an
     // op reads for an input it lacks).
     using Slots = std::vector<kernel::vec3>;
@@ -216,7 +272,13 @@ public:
         return estimators_.at(size_t(pair));
     }
     size_t estimatorCount() const { return estimators_.size(); }
-    const PrefilteredColormap& table(int k) const { return *tables_.at(size_t(k)); }
+    // (Null, and table() a logic_error, for a table this program does not
+    // read: GraphPattern::readsTable.)
+    const PrefilteredColormap& table(int k) const {
+        if (!tables_.at(size_t(k)))
+            throw std::logic_error("FilteredGraph::table: the program does not read table " + std::to_string(k));
+        return *tables_[size_t(k)];
+    }
     const std::shared_ptr<const PrefilteredColormap>& sharedTable(int k) const { return tables_.at(size_t(k)); }
 
 private:
