@@ -524,6 +524,26 @@ TEST(GraphPattern, FunctionsOfOneOrTwoSourcesAreFilteredAsWholes) {
     for (const GraphPattern* g : {&balanced, &diagonal})
         for (const GraphPattern::Operation& op : g->operations())
             if (op.sourceFunction) planned[op.id] = op.sourceFunction->inputs;
+    // A root op as the source: `r` reads three leaves (a product, then a
+    // sum); the colormap of two curves of it is one function of r, which
+    // must itself still run filtered.
+    const GraphPattern rooted = GraphPattern::build(test::parsePatternText(seededGraph(R"("h": )" + kSeededNoise +
+                                                                                       R"(, "grain": )" + grain +
+                                                                                       R"(, "third": )" + grain + R"(,
+        "hg": {"type": "product", "a": "h", "b": "grain"},
+        "r": {"type": "sum", "a": "hg", "b": "third", "weight_a": 0.5, "weight_b": 0.5},
+        "k1": {"type": "curve", "input": "r", "points": [[0, 1], [1, 0]]},
+        "k2": {"type": "curve", "input": "k1", "points": [[0, 0], [0.5, 1], [1, 0]]},
+        "c": {"type": "colormap", "x": "k1", "y": "k2", "colormap": )" + colormap + "}")));
+    std::map<std::string, std::pair<bool, std::array<int, 3>>> rootedPlan;
+    for (const GraphPattern::Operation& op : rooted.operations())
+        rootedPlan[op.id] = {op.filteredRead, op.sourceFunction ? op.sourceFunction->inputs : std::array<int, 3>{}};
+    const int r = rooted.leafCount() + 1;
+    EXPECT_EQ(rootedPlan, (std::map<std::string, std::pair<bool, std::array<int, 3>>>{{"hg", {true, {}}},
+                                                                                      {"r", {true, {}}},
+                                                                                      {"k1", {false, {}}},
+                                                                                      {"k2", {false, {}}},
+                                                                                      {"c", {true, {r, r, -1}}}}));
     ASSERT_EQ(balanced.leafIds(), (std::vector<std::string>{"h", "grain"}));
     ASSERT_EQ(diagonal.leafIds(), (std::vector<std::string>{"h"}));
     EXPECT_EQ(planned, (std::map<std::string, std::array<int, 3>>{{"c", {0, 1, -1}}, {"twice", {0, 0, -1}}}));

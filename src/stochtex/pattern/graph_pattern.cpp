@@ -457,7 +457,11 @@ void GraphPattern::planSourceFunctions(GraphPattern& p, const std::vector<NoiseE
         Sources direct = in;
         std::sort(direct.begin(), direct.end());
         const bool itself = src == Sources{q} || src.empty() || direct == src;
-        if (!read[size_t(q)] || (!itself && planSourceFunction(p, examples, lo, hi, q, src))) continue;
+        if (!read[size_t(q)]) continue;
+        if (!itself && planSourceFunction(p, examples, lo, hi, q, src)) {
+            for (const int s : src) read[size_t(s)] = true;  // a root op must run for its moments
+            continue;
+        }
         for (const int i : operation(q).inputs)  // constants too
             if (i >= 0) read[size_t(i)] = true;
     }
