@@ -655,6 +655,23 @@ TEST(Gpu, LeanAndTiledFieldNodesMatchTheCpuInAPlaneView) {
     fs::remove_all(dir);
 }
 
+// A graph whose colour is one function of two leaves (a sum of two curves
+// of one height, coloured with a second noise): its table in the generated
+// program as on the CPU.
+TEST(Gpu, AFunctionOfTwoSourcesMatchesTheCpu) {
+    const GraphPattern g =
+        GraphPattern::build(loadPatternFile(std::string(STOCHTEX_DATA_DIR) + "/graphs/curve-sum.json"));
+    ASSERT_TRUE(g.operations().back().sourceFunction);
+    Camera c;
+    c.view = {96, 64, 1.0, 123.0, -7.0};
+    for (const double scale : {1.0, 6.0, 24.0}) {
+        FilterOptions o;
+        o.use(parseFilter("smooth"));
+        c.view.scale = scale;
+        expectGraphParity(g, c, o, "curve-sum smooth scale " + std::to_string(int(scale)), 1e-4, 0.005);
+    }
+}
+
 TEST(Gpu, TextureGraphProgramMatchesTheCpu) {
     const GraphPattern g = GraphPattern::build(loadPreset("figure14"));
     Camera c;

@@ -544,6 +544,21 @@ TEST(GraphPattern, FunctionsOfOneOrTwoSourcesAreFilteredAsWholes) {
                                                                                       {"k1", {false, {}}},
                                                                                       {"k2", {false, {}}},
                                                                                       {"c", {true, {r, r, -1}}}}));
+    // Not planned: a colour root as a source (a lean node's colour is no
+    // field to average), nor two sources that read one leaf (dependent).
+    for (const std::string nodes :
+         {R"("lit": {"type": "lean", "height": "h", "albedo": "pale"},
+             "pale": {"type": "colour", "colour": [0.8, 0.8, 0.8]},
+             "k": {"type": "curve", "input": "h", "points": [[0, 0], [1, 1]]},
+             "c": {"type": "mix", "a": "lit", "b": "pale", "t": "k"})",
+          R"("r": {"type": "product", "a": "h", "b": "grain"}, "s": {"type": "product", "a": "r", "b": "third"},
+             "k": {"type": "curve", "input": "h", "points": [[0, 0], [1, 1]]},
+             "c": {"type": "colormap", "x": "s", "y": "k", "colormap": {"type": "gaussian"}})"}) {
+        const GraphPattern g = GraphPattern::build(test::parsePatternText(seededGraph(
+            R"("h": )" + kSeededNoise + R"(, "grain": )" + grain + R"(, "third": )" + grain + ", " + nodes)));
+        for (const GraphPattern::Operation& op : g.operations())
+            EXPECT_FALSE(op.sourceFunction) << op.id << " in " << nodes;
+    }
     ASSERT_EQ(balanced.leafIds(), (std::vector<std::string>{"h", "grain"}));
     ASSERT_EQ(diagonal.leafIds(), (std::vector<std::string>{"h"}));
     EXPECT_EQ(planned, (std::map<std::string, std::array<int, 3>>{{"c", {0, 1, -1}}, {"twice", {0, 0, -1}}}));
@@ -583,6 +598,55 @@ TEST(GraphPattern, FunctionsOfOneOrTwoSourcesAreFilteredAsWholes) {
         EXPECT_LT(whole, 0.03);
         EXPECT_LT(whole, 0.25 * byOps);
     }
+}
+
+// A Gaussianized exemplar as the source: its function's table is in
+// blending space (F∘T⁻¹, as the op tables are), so the lookup at the leaf's
+// blending-space moments is E[F(T⁻¹(x))] under their Gaussian. Under the
+// point source (no prefiltered tables) the sky runs the ops on the means,
+// as it did before functions of sources.
+TEST(GraphPattern, AFunctionOfAGaussianizedExemplarIsInBlendingSpace) {
+    const std::filesystem::path dir = test::scratchPath("stochtex_graph_function_exemplar"), file = dir / "e.png";
+    std::filesystem::create_directories(dir);
+    Image img(32, 32, 1);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x)
+            img.at(x, y) = float(0.5 + 0.3 * std::sin(0.7 * x + 0.4 * y) * std::sin(0.3 * y) + 0.1 * std::sin(1.3 * x));
+    writeImage(file.string(), img, WriteOptions{.transfer = Transfer::Linear});
+    const GraphPattern g = GraphPattern::build(
+        test::parsePatternText(seededGraph(R"("e": {"type": "exemplar", "path": ")" + file.string() + R"("},
+        "k": {"type": "curve", "input": "e", "points": [[0, 0], [0.5, 1], [1, 0]]},
+        "c": {"type": "colormap", "x": "k", "y": "e", "colormap": {"type": "gaussian"}})")));
+    ASSERT_TRUE(g.leaf(0).example().gaussianized());
+    const GraphPattern::Operation& c = g.operations().back();
+    ASSERT_TRUE(c.sourceFunction);
+    EXPECT_FALSE(g.tables()[size_t(c.sourceFunction->table)].blended ==
+                 g.tables()[size_t(c.sourceFunction->table)].point);
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    const FilteredGraph filtered(g, o);
+    const NoiseExample& e = g.leaf(0).example();
+    double worst = 0;
+    for (const auto& [m, sd] : {std::pair{0.5, 0.05}, {0.4, 0.12}, {0.6, 0.25}}) {
+        // E[F(T⁻¹(x))], x ~ N(m, sd²) in blending space.
+        double sum[3] = {0, 0, 0}, total = 0;
+        for (int i = 0; i <= 2000; ++i) {
+            const double a = -6.0 + 12.0 * i / 2000.0, w = std::exp(-0.5 * a * a);
+            const Rgb v = g.fromLeafValues({e.toOutput(float(m + a * sd))});
+            for (int k = 0; k < 3; ++k) sum[k] += w * v[size_t(k)];
+            total += w;
+        }
+        const Rgb want{float(sum[0] / total), float(sum[1] / total), float(sum[2] / total)};
+        worst = std::max(worst, distance(filtered.fromMoments({{float(m), float(sd * sd)}}), want));
+    }
+    std::printf("[ info ] function of a Gaussianized exemplar: largest |filtered - E[S]| %.2e\n", worst);
+    EXPECT_LT(worst, 0.03);
+    // The point source's sky: the program at the leaf's mean (the ops read tables).
+    FilterOptions none;
+    none.use(parseFilter("none"));
+    const Rgb sky = FilteredGraph(g, none).skyColour(), atMean = g.fromLeafValues({e.toOutput(e.mean())});
+    for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(sky[k], atMean[k], 1e-4);
+    std::filesystem::remove_all(dir);
 }
 
 TEST(GraphPattern, ATableReadsAnOpsFieldWithinZeroOneAsABetaAndALeafAsAGaussian) {

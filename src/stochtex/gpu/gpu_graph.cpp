@@ -171,7 +171,7 @@ void writeOperations(std::ostringstream& o, const GraphPattern& graph, bool filt
         const std::string ctx =
             "OpContext(" + std::to_string(call.table) + ", gEyeDirection, gLightDirection, " + cov + ")";
         o << "    vec3 " << slot(out) << " = " << opGlslCall(call.params, filtered, in(0), in(1), in(2), ctx)
-          << ";  // " << op.id << (&call.params != &op.params ? " (as a function of its sources)" : "") << "\n";
+          << ";  // " << op.id << (call.sourceFunction ? " (as a function of its sources)" : "") << "\n";
         // MeanOnly: a table's output field passes on its mean alone (FilteredGraph::fromMoments).
         const bool fieldTable = op.info->output != PortType::Colour && op.table >= 0;
         if (filtered && fieldTable && moments == GraphMoments::MeanOnly) o << "    " << slot(out) << ".y = 0.0;\n";
@@ -328,6 +328,7 @@ GpuView::Recipes graphRecipes(const GraphPattern& graph, const FilterOptions& op
 
 struct GpuGraph::Impl {
     bool filtered = false;
+    int tables = 0;  // the graph's, each with its uGraphPrefiltered sampler where a program reads it
     // Sampler name → texture; shared with a PartCache where the view was built with one.
     std::vector<std::pair<std::string, std::shared_ptr<const gl::Texture>>> planes, arrays;
     gl::Buffer parameters;
@@ -346,6 +347,7 @@ GpuGraph::GpuGraph(const GraphPattern& graph, GlContext& context, const FilterOp
     const FilteredGraph& f = *filteredGraph;  // the prefiltered tables, the pyramids, the sky
     Impl& m = *impl_;
     m.filtered = filtered;
+    m.tables = int(graph.tables().size());
     m.sky = f.skyColour();
     const kernel::PatternParams p = patternParams(graph, options);
     // The texture of a part of the program: with `parts`, the one uploaded
@@ -464,7 +466,10 @@ void GpuGraph::bind(unsigned program) const {
         for (const std::string& name : {"uGraphStats" + leaf, "uGraphInverse" + leaf, "uGraphCov" + leaf})
             if (std::none_of(m.planes.begin(), m.planes.end(), [&](const auto& p) { return p.first == name; }))
                 glUniform1i(glGetUniformLocation(program, name.c_str()), 0);
-        const std::string name = "uGraphPrefiltered" + leaf;
+    }
+    // Every table's (a function of sources comes after the ops' tables, past 16 in a long graph).
+    for (int t = 0; t < m.tables; ++t) {
+        const std::string name = "uGraphPrefiltered" + std::to_string(t);
         if (std::none_of(m.arrays.begin(), m.arrays.end(), [&](const auto& a) { return a.first == name; }))
             glUniform1i(glGetUniformLocation(program, name.c_str()), int(m.planes.size()));
     }

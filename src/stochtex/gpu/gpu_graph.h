@@ -29,8 +29,9 @@ namespace stochtex {
 // filteredColour(vec2 uv, vec2 jx, vec2 jy)` (the estimators and the
 // prefiltered tables), which the pattern's main files call (pattern.frag,
 // filtered.frag, the compute kernels, scene.frag), and the samplers they read
-// (uGraphExampleK, uGraphInverseK, uGraphStatsK per leaf; uGraphTableK,
-// uGraphPrefilteredK per table), with the footprint estimator `estimator`
+// (uGraphExampleK, uGraphInverseK, uGraphStatsK per leaf; uGraphTableK and
+// uGraphPrefilteredK per table the unfiltered or the filtered program reads,
+// GraphPattern::readsTable), with the footprint estimator `estimator`
 // says (the paper's by default).
 using LevelAverages = std::vector<std::vector<kernel::vec3>>;
 struct GraphEstimator {

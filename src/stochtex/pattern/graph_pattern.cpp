@@ -34,8 +34,21 @@ bool givesField(const GraphPattern::Operation& op) { return op.info->output != P
 
 // An operation's input slot k, vec3(0) where it has none.
 template <class Slots>
+vec3 input(const Slots& slots, const std::array<int, 3>& inputs, int k) {
+    return inputs[size_t(k)] >= 0 ? slots[size_t(inputs[size_t(k)])] : vec3(0.0f);
+}
+template <class Slots>
 vec3 input(const Slots& slots, const GraphPattern::Operation& op, int k) {
-    return op.inputs[size_t(k)] >= 0 ? slots[size_t(op.inputs[size_t(k)])] : vec3(0.0f);
+    return input(slots, op.inputs, k);
+}
+
+// A field that lies in [0, 1] is filtered as a Beta (kernel
+// betaLevelCoordinate) where a table reads it: an op's, never a leaf's (a
+// noise, Gaussian by construction). Its bounds may round past 0 or 1 in
+// float (½ + ½ sin, a lerp of two ends): it is still bounded.
+bool readAsBeta(int slot, int leafCount, float lo, float hi) {
+    constexpr float roundingSlack = 1e-5f;
+    return slot >= leafCount && lo >= -roundingSlack && hi <= 1.0f + roundingSlack;
 }
 
 // A plain pattern's normal map under the lean response as the graph it is:
@@ -338,7 +351,7 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
         }
         p.operations_.push_back(std::move(op));
     }
-    settleProgramRanges(p, examples, context);
+    planSourceFunctions(p, examples, settleProgramRanges(p, examples, context));
     if (grid.periodic() && !p.untransformed_)
         throw InputError::parameter("gridPeriods", "needs a program whose leaves read uv as it is (" + context +
                                                        " transforms a leaf's uv, whose tiles would not repeat)");
@@ -356,8 +369,8 @@ GraphPattern GraphPattern::build(const PatternSpec& spec, const ResponseOptions&
 // ranges; its colour feeds no field op. The same ranges tell which table
 // inputs are bounded fields, filtered as Betas (kernel betaLevelCoordinate): an
 // op's field, never a leaf (a noise, Gaussian by construction).
-void GraphPattern::settleProgramRanges(GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                       const std::string& context) {
+GraphPattern::FieldRanges GraphPattern::settleProgramRanges(GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                                            const std::string& context) {
     std::vector<vec3> lo, hi;
     for (const NoiseExample& e : examples) {
         float deviation = 0;
@@ -366,16 +379,13 @@ void GraphPattern::settleProgramRanges(GraphPattern& p, const std::vector<NoiseE
         lo.push_back(vec3(e.toOutput(e.mean() - reach), 0.0f, 0.0f));
         hi.push_back(vec3(e.toOutput(e.mean() + reach), 0.0f, 0.0f));
     }
-    // A field whose bounds round past 0 or 1 in float (½ + ½ sin, a lerp of
-    // two ends) is still bounded: the Beta's mean is clamped to the table.
-    constexpr float roundingSlack = 1e-5f;
     kernel::OpContext ctx;
     for (const Operation& op : p.operations_) {
         if (op.table >= 0)
             for (size_t axis = 0; axis < 2; ++axis)
-                if (const int s = op.inputs[axis]; s >= p.leafCount())
+                if (const int s = op.inputs[axis]; s >= 0)
                     p.tables_[size_t(op.table)].beta[axis] =
-                        lo[size_t(s)].x >= -roundingSlack && hi[size_t(s)].x <= 1.0f + roundingSlack;
+                        readAsBeta(s, p.leafCount(), lo[size_t(s)].x, hi[size_t(s)].x);
         ctx.table = op.table;
         ctx.pointTable = op.table >= 0 ? &p.tables_[size_t(op.table)].point : nullptr;
         vec3 outLo(INFINITY), outHi(-INFINITY);
@@ -417,21 +427,22 @@ void GraphPattern::settleProgramRanges(GraphPattern& p, const std::vector<NoiseE
         lo.push_back(outLo);
         hi.push_back(outHi);
     }
-    std::vector<float> fieldLo, fieldHi;
-    for (size_t k = 0; k < lo.size(); ++k) fieldLo.push_back(lo[k].x), fieldHi.push_back(hi[k].x);
-    planSourceFunctions(p, examples, fieldLo, fieldHi);
+    FieldRanges ranges;
+    for (size_t k = 0; k < lo.size(); ++k) ranges.lo.push_back(lo[k].x), ranges.hi.push_back(hi[k].x);
+    return ranges;
 }
 
 void GraphPattern::planSourceFunctions(GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                       const std::vector<float>& lo, const std::vector<float>& hi) {
+                                       const FieldRanges& ranges) {
     const int leaves = p.leafCount();
     const int slots = leaves + int(p.operations_.size());
+    const auto operation = [&](int slot) -> Operation& { return p.operations_[size_t(slot - leaves)]; };
     // Each slot's sources, ascending: itself for a leaf and a root op, none
-    // for an op that reads nothing (a colour).
+    // for an op that reads nothing (a colour); and the leaves it reads.
     using Sources = std::vector<int>;
     std::vector<Sources> sources(static_cast<size_t>(slots));
-    for (int k = 0; k < leaves; ++k) sources[size_t(k)] = {k};
-    const auto operation = [&](int slot) -> Operation& { return p.operations_[size_t(slot - leaves)]; };
+    std::vector<std::set<int>> leavesRead(static_cast<size_t>(slots));
+    for (int k = 0; k < leaves; ++k) sources[size_t(k)] = {k}, leavesRead[size_t(k)] = {k};
     const auto inputsOf = [&](int slot) {  // the inputs that are not constants
         std::vector<int> in;
         for (const int i : operation(slot).inputs)
@@ -441,8 +452,19 @@ void GraphPattern::planSourceFunctions(GraphPattern& p, const std::vector<NoiseE
     for (int q = leaves; q < slots; ++q) {
         const Operation& op = operation(q);
         std::set<int> set;
-        for (const int i : inputsOf(q)) set.insert(sources[size_t(i)].begin(), sources[size_t(i)].end());
-        const bool root = set.size() > 2 || opShadesLight(op.params) || op.covariancePair >= 0;
+        for (const int i : inputsOf(q)) {
+            set.insert(sources[size_t(i)].begin(), sources[size_t(i)].end());
+            leavesRead[size_t(q)].insert(leavesRead[size_t(i)].begin(), leavesRead[size_t(i)].end());
+        }
+        // A source is a field (a colour root, e.g. a lean op's, is read as
+        // the ops read colours, not as a distribution), and two sources are
+        // independent (no leaf read by both), as the tables' prefilter takes them.
+        bool root = set.size() > 2 || opShadesLight(op.params) || op.covariancePair >= 0;
+        for (const int s : set) root = root || (s >= leaves && !givesField(operation(s)));
+        if (set.size() == 2) {
+            const std::set<int>&a = leavesRead[size_t(*set.begin())], &b = leavesRead[size_t(*set.rbegin())];
+            root = root || std::any_of(a.begin(), a.end(), [&](int k) { return b.count(k) > 0; });
+        }
         sources[size_t(q)] = root ? Sources{q} : Sources(set.begin(), set.end());
     }
     // From the output back: an op's function is planned where the filtered
@@ -451,14 +473,13 @@ void GraphPattern::planSourceFunctions(GraphPattern& p, const std::vector<NoiseE
     std::vector<bool> read(static_cast<size_t>(slots), false);
     read[size_t(slots - 1)] = true;
     for (int q = slots - 1; q >= leaves; --q) {
-        const Sources& src = sources[size_t(q)];
-        const std::vector<int> in = inputsOf(q);
-        // An op that reads each of its sources once, directly, is filtered as itself.
-        Sources direct = in;
-        std::sort(direct.begin(), direct.end());
-        const bool itself = src == Sources{q} || src.empty() || direct == src;
         if (!read[size_t(q)]) continue;
-        if (!itself && planSourceFunction(p, examples, lo, hi, q, src)) {
+        const Sources& src = sources[size_t(q)];
+        // An op that reads each of its sources once, directly, is filtered as itself.
+        Sources directInputs = inputsOf(q);
+        std::sort(directInputs.begin(), directInputs.end());
+        const bool runsAsItself = src == Sources{q} || src.empty() || directInputs == src;
+        if (!runsAsItself && planSourceFunction(p, examples, ranges, q, src)) {
             for (const int s : src) read[size_t(s)] = true;  // a root op must run for its moments
             continue;
         }
@@ -469,25 +490,26 @@ void GraphPattern::planSourceFunctions(GraphPattern& p, const std::vector<NoiseE
 }
 
 bool GraphPattern::planSourceFunction(GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                      const std::vector<float>& lo, const std::vector<float>& hi, int q,
-                                      const std::vector<int>& sources) {
+                                      const FieldRanges& ranges, int q, const std::vector<int>& sources) {
     const int leaves = p.leafCount();
     const auto operation = [&](int slot) -> const Operation& { return p.operations_[size_t(slot - leaves)]; };
+    const auto isSource = [&](int slot) { return std::find(sources.begin(), sources.end(), slot) != sources.end(); };
     const int first = sources.front();
+    const bool oneSource = sources.size() == 1;
     // F's ops: those between q and its sources that q reads.
     std::vector<bool> inF(size_t(q + 1), false);
     inF[size_t(q)] = true;
     for (int c = q; c > first; --c)
-        if (inF[size_t(c)] && std::find(sources.begin(), sources.end(), c) == sources.end())
+        if (inF[size_t(c)] && !isSource(c))
             for (const int i : operation(c).inputs)
                 if (i >= 0) inF[size_t(i)] = true;
     Slots values(size_t(p.outputSlot() + 2), vec3(0.0f));
     kernel::OpContext ctx;
     const auto F = [&](float x, float y) {
         values[size_t(first)] = vec3(x, 0.0f, 0.0f);
-        values[size_t(sources.back())] = vec3(sources.size() == 1 ? x : y, 0.0f, 0.0f);
+        values[size_t(sources.back())] = vec3(oneSource ? x : y, 0.0f, 0.0f);
         for (int c = leaves; c <= q; ++c) {  // a colour op F reads may precede its sources
-            if (!inF[size_t(c)] || std::find(sources.begin(), sources.end(), c) != sources.end()) continue;
+            if (!inF[size_t(c)] || isSource(c)) continue;
             const Operation& op = operation(c);
             ctx.table = op.table;
             ctx.pointTable = op.table >= 0 ? &p.tables_[size_t(op.table)].point : nullptr;
@@ -497,53 +519,63 @@ bool GraphPattern::planSourceFunction(GraphPattern& p, const std::vector<NoiseEx
         return values[size_t(q)];
     };
     // Its table spans [0, 1] along each source, as every table: where a
-    // source reaches beyond, F must hold its value at the end (33 points
-    // beyond each end, against 9 values of the other source).
-    const auto at = [&](int axis, float v, float other) { return axis == 0 ? F(v, other) : F(other, v); };
+    // source reaches beyond, F must hold its value at the end, checked at 33
+    // points beyond each end against the other source at 9 values in
+    // [0, 1] and at its own ends (the corners).
+    const auto at = [&](size_t axis, float v, float other) { return axis == 0 ? F(v, other) : F(other, v); };
     for (size_t axis = 0; axis < sources.size(); ++axis) {
-        const float l = lo[size_t(sources[axis])], h = hi[size_t(sources[axis])];
-        for (int o = 0; o <= 8; ++o) {
-            const float other = float(o) / 8.0f;
+        const float l = ranges.lo[size_t(sources[axis])], h = ranges.hi[size_t(sources[axis])];
+        std::vector<float> others;
+        for (int o = 0; o <= 8; ++o) others.push_back(float(o) / 8.0f);
+        if (!oneSource) {
+            const int other = sources[1 - axis];
+            others.push_back(ranges.lo[size_t(other)]);
+            others.push_back(ranges.hi[size_t(other)]);
+        }
+        for (const float other : others)
             for (int k = 0; k <= 32; ++k) {
                 const float t = float(k) / 32.0f;
-                if (l < 0.0f && at(int(axis), l * (1.0f - t), other) != at(int(axis), 0.0f, other)) return false;
-                if (h > 1.0f && at(int(axis), 1.0f + (h - 1.0f) * t, other) != at(int(axis), 1.0f, other)) return false;
+                if (l < 0.0f && at(axis, l * (1.0f - t), other) != at(axis, 0.0f, std::clamp(other, 0.0f, 1.0f)))
+                    return false;
+                if (h > 1.0f && at(axis, 1.0f + (h - 1.0f) * t, other) != at(axis, 1.0f, std::clamp(other, 0.0f, 1.0f)))
+                    return false;
             }
-        }
     }
     // Resolution: along a source, the largest of F's tables' (a curve's, a
     // colormap's) within [256, 512] (a 512² table prefilters in about as
     // long as a plain pattern's); one source: 1024 entries (cheap).
     int resolution = 256;
+    long long entries = 0;
+    for (const OpTable& t : p.tables_) entries += (long long)t.point.resolutionX() * t.point.resolutionY();
     for (int c = first + 1; c <= q; ++c)
         if (c >= leaves && inF[size_t(c)] && operation(c).table >= 0) {
             const ColormapTable& t = p.tables_[size_t(operation(c).table)].point;
             resolution = std::max({resolution, t.resolutionX(), t.resolutionY()});
         }
-    const bool one = sources.size() == 1;
-    const int rx = one ? 1024 : std::min(resolution, 512), ry = one ? 2 : rx;
+    const int rx = oneSource ? 1024 : std::min(resolution, 512), ry = oneSource ? 2 : rx;
+    if (entries + (long long)rx * ry > kMaxGraphTableEntries) return false;  // the op runs as itself
     Operation& op = p.operations_[size_t(q - leaves)];
     const bool field = givesField(op);
     const auto gaussianized = [&](size_t axis) -> const NoiseExample* {
         const int s = sources[std::min(axis, sources.size() - 1)];
         return s < leaves && examples[size_t(s)].gaussianized() ? &examples[size_t(s)] : nullptr;
     };
-    const auto table = [&](bool blended) {
-        const NoiseExample *ex = blended ? gaussianized(0) : nullptr, *ey = blended ? gaussianized(1) : nullptr;
+    const auto table = [&](const NoiseExample* ex, const NoiseExample* ey) {
         return tabulate(rx, ry, [&](int i, int j) {
-            float x = float(i) / float(rx - 1), y = one ? x : float(j) / float(ry - 1);
+            float x = float(i) / float(rx - 1), y = oneSource ? x : float(j) / float(ry - 1);
             if (ex) x = ex->toOutput(x);
             if (ey) y = ey->toOutput(y);
             const vec3 v = F(x, y);
             return field ? kernel::momentEntry(v.x) : v;
         });
     };
-    OpTable t{table(false), table(true), field};
-    // A root op's field within [0, 1] as a Beta, as for the op tables (settleProgramRanges).
-    constexpr float roundingSlack = 1e-5f;
+    const ColormapTable point = table(nullptr, nullptr);
+    // In blending space where a source is a Gaussianized leaf (F∘T⁻¹ along it), as the op tables are.
+    const bool blends = gaussianized(0) || gaussianized(1);
+    OpTable t{point, blends ? table(gaussianized(0), gaussianized(1)) : point, field};
     for (size_t axis = 0; axis < 2; ++axis) {
         const int s = sources[std::min(axis, sources.size() - 1)];
-        t.beta[axis] = s >= leaves && lo[size_t(s)] >= -roundingSlack && hi[size_t(s)] <= 1.0f + roundingSlack;
+        t.beta[axis] = readAsBeta(s, leaves, ranges.lo[size_t(s)], ranges.hi[size_t(s)]);
     }
     p.tables_.push_back(std::move(t));
     Operation::SourceFunction f;
@@ -815,14 +847,20 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         return convolveColormapNumerically(graph.tables().front().blended, exact[0][0], exact[1][0],
                                            std::sqrt(exact[0][1]), std::sqrt(exact[1][1]));
     };
-    const bool readsTables = !graph.tables().empty();
+    // Functions of sources where their tables are prefiltered: moment
+    // matching from the estimators or exact statistics (the point source's
+    // sky runs the ops themselves, as it always has).
+    readsFunctions_ = moments == GraphMoments::Matched && options.source != StatisticsSource::Point;
+    bool opsReadTables = false;
+    for (int k = 0; k < int(graph.tables().size()); ++k)
+        opsReadTables = opsReadTables || graph.readsTable(k, true, false);
     if (options.source == StatisticsSource::Point) {  // nothing to prefilter
         // Without tables the filtered program costs nothing to run on the
         // whole examples' moments (a lean program: the lean response's sky);
         // with them, only the means are at hand.
         std::vector<float> means;
         for (const auto& m : whole) means.push_back(graph.leaf(int(means.size())).example().toOutput(m[0]));
-        sky_ = plain_ ? plainSky() : readsTables ? graph.fromLeafValues(means) : fromMoments(whole, wholeCov);
+        sky_ = plain_ ? plainSky() : opsReadTables ? graph.fromLeafValues(means) : fromMoments(whole, wholeCov);
         return;
     }
     for (size_t k = 0; k < graph.tables().size(); ++k) {
@@ -834,7 +872,7 @@ FilteredGraph::FilteredGraph(const GraphPattern& graph, const FilterOptions& opt
         }
         // Only what this program reads: matched, an op's table that its
         // function of sources replaces is not (nor, mean-only, a function's).
-        tables_.push_back(graph.readsTable(int(k), true, moments == GraphMoments::Matched)
+        tables_.push_back(graph.readsTable(int(k), true, readsFunctions_)
                               ? prefilteredPart(parts, t, options.response.prefilter, graph.tables()[k].beta)
                               : nullptr);
     }
@@ -865,21 +903,19 @@ Rgb FilteredGraph::runFiltered(Scratch& scratch, const Direction& eye) const {
     ctx.eye = toVec(eye);
     size_t out = size_t(graph_.leafCount());
     for (const GraphPattern::Operation& op : graph_.operations()) {
-        if (!GraphPattern::runsFiltered(op, moments_ == GraphMoments::Matched)) {  // read by none
+        if (!GraphPattern::runsFiltered(op, readsFunctions_)) {  // read by none
             ++out;
             continue;
         }
-        const GraphPattern::OpCall call = GraphPattern::filteredCall(op, moments_ == GraphMoments::Matched);
+        const GraphPattern::OpCall call = GraphPattern::filteredCall(op, readsFunctions_);
         ctx.table = call.table;
         ctx.pointTable = call.table >= 0 ? &graph_.tables()[size_t(call.table)].point : nullptr;
         ctx.prefilteredTable =
             call.table >= 0 && size_t(call.table) < tables_.size() ? tables_[size_t(call.table)].get() : nullptr;
         const size_t pair = op.covariancePair >= 0 ? size_t(op.covariancePair) : pairCovariances.size();
         ctx.slopeCov = pair < pairCovariances.size() ? pairCovariances[pair] : 0.0f;
-        const auto in = [&](int k) {
-            return call.inputs[size_t(k)] >= 0 ? slots[size_t(call.inputs[size_t(k)])] : vec3(0.0f);
-        };
-        slots[out] = opFiltered(call.params, in(0), in(1), in(2), ctx);
+        slots[out] = opFiltered(call.params, input(slots, call.inputs, 0), input(slots, call.inputs, 1),
+                                input(slots, call.inputs, 2), ctx);
         // Only the tables make a field non-Gaussian; MeanOnly drops what they add.
         if (givesField(op) && op.table >= 0 && moments_ == GraphMoments::MeanOnly) slots[out].y = 0.0f;
         ++out;

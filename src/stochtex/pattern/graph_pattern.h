@@ -115,12 +115,13 @@ public:
         const OpParams& params;
         std::array<int, 3> inputs;
         int table;
+        bool sourceFunction = false;  // the op's function of its sources
     };
     // Whether the filtered program runs `op` at all (Operation::filteredRead).
     static bool runsFiltered(const Operation& op, bool matched) { return !matched || op.filteredRead; }
     static OpCall filteredCall(const Operation& op, bool matched) {
         if (matched && op.sourceFunction)
-            return {op.sourceFunction->params, op.sourceFunction->inputs, op.sourceFunction->table};
+            return {op.sourceFunction->params, op.sourceFunction->inputs, op.sourceFunction->table, true};
         return {op.params, op.inputs, op.table};
     }
     // The node a table belongs to: its op's, or the op whose function of its sources it tabulates.
@@ -182,30 +183,36 @@ public:
 
 private:
     friend class FilteredGraph;
+    struct FieldRanges {
+        std::vector<float> lo, hi;  // per slot, of a field's value (a colour's red)
+    };
     // Each slot's range over the leaves' ranges: InputError naming the first
     // operation whose values can leave [−kMaxFieldValue, kMaxFieldValue];
     // a table's axis whose input is an op's field within [0, 1] becomes a
     // Beta axis (OpTable::beta).
-    static void settleProgramRanges(GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                    const std::string& context);
+    static FieldRanges settleProgramRanges(GraphPattern& p, const std::vector<NoiseExample>& examples,
+                                           const std::string& context);
     // Filtered, an op whose inputs are functions of at most two slots, its
-    // sources (leaves, or root ops: those that read more sources, the eye
-    // or a pair's covariance), is itself a function F of them. Moment
+    // sources (leaves, or root ops: fields that read more sources, or ops
+    // that read the eye, a pair's covariance or a colour root; two sources
+    // read no leaf in common), is itself a function F of them. Moment
     // matching loses what is known of F where the op reads a source through
     // other ops (their fields are taken as Gaussian or Beta) or reads one
     // twice (two functions of one source are correlated, not independent
     // as the ops take their inputs). There, if F holds its values at the
     // table's ends where a source reaches beyond [0, 1] (as a table lookup
-    // does), the op gets a table of F (Operation::sourceFunction), exact
-    // under the sources' distributions (docs/MATH.md, "Functions of one or
-    // two sources"). Only ops whose values the filtered program reads.
+    // does), the op gets a table of F (Operation::sourceFunction), whose
+    // prefiltered lookup averages F under its independent sources'
+    // distributions as their moments give them (exact for leaves' Gaussians;
+    // docs/MATH.md, "Functions of one or two sources"). Only ops whose
+    // values the filtered program reads.
     static void planSourceFunctions(GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                    const std::vector<float>& lo, const std::vector<float>& hi);
+                                    const FieldRanges& ranges);
     // Op slot q's function of `sources` (ascending), its table added; false
-    // (nothing added) where F does not hold its ends beyond [0, 1].
+    // (nothing added) where F does not hold its ends beyond [0, 1] or its
+    // table would pass kMaxGraphTableEntries.
     static bool planSourceFunction(GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                   const std::vector<float>& lo, const std::vector<float>& hi, int q,
-                                   const std::vector<int>& sources);
+                                   const FieldRanges& ranges, int q, const std::vector<int>& sources);
     // One pixel's slots: outputSlot() + 2 values, the last vec3(0) (what an
     // op reads for an input it lacks).
     using Slots = std::vector<kernel::vec3>;
@@ -315,6 +322,9 @@ private:
     std::vector<std::shared_ptr<const PrefilteredColormap>> tables_;     // per GraphPattern table
     Rgb sky_{};
     bool plain_ = false;  // the program is a plain pattern's (GraphPattern::plainColormap)
+    // Whether the ops' functions of their sources stand in for them
+    // (GraphPattern::filteredCall): moment matching with prefiltered tables.
+    bool readsFunctions_ = false;
 };
 
 }  // namespace stochtex

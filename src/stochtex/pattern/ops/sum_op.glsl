@@ -1,8 +1,10 @@
 // sum op: w_a·a + w_b·b of fields that ops give (over fields that fold, sum
 // is linear and folds into the example). The moments' variance takes the
 // two inputs as uncorrelated over the footprint, which holds for fields
-// from different sources; a sum of two functions of one source is filtered
-// as one function of it instead (GraphPattern::planSourceFunctions).
+// from different sources; where a sum of two functions of one source (or
+// a node after it) is what the filtered program reads, that node is
+// filtered as one function of its sources instead, when moment matching
+// (GraphPattern::planSourceFunctions).
 // Kernel file (ops/op_host.h).
 struct SumParams {
     float weightA;
