@@ -559,6 +559,29 @@ TEST(GraphPattern, FunctionsOfOneOrTwoSourcesAreFilteredAsWholes) {
         for (const GraphPattern::Operation& op : g.operations())
             EXPECT_FALSE(op.sourceFunction) << op.id << " in " << nodes;
     }
+    // A long chain under many functions (each two-source table tabulates
+    // the chain down to it): planned until kMaxFunctionWork, then the ops
+    // run as themselves.
+    std::string chain = R"("h": )" + kSeededNoise + R"(, "grain": )" + grain + R"(, "third": )" + grain +
+                        R"(, "t": {"type": "curve", "input": "third", "points": [[0, 0], [1, 1]]})";
+    std::string previous = "h", mixed;
+    for (int k = 0; k < 60; ++k) {
+        const std::string n = std::to_string(k);
+        chain += R"(, "k)" + n + R"(": {"type": "curve", "input": ")" + previous +
+                 R"(", "points": [[0, 0.1], [0.5, 0.9], [1, 0.2]]}, "c)" + n + R"(": {"type": "colormap", "x": "k)" +
+                 n + R"(", "y": "grain", "colormap": {"type": "gaussian"}})";
+        previous = "k" + n;
+        if (k > 0)
+            chain += R"(, "m)" + n + R"(": {"type": "mix", "a": ")" + (k == 1 ? "c0" : "m" + std::to_string(k - 1)) +
+                     R"(", "b": "c)" + n + R"(", "t": "t"})";
+    }
+    const GraphPattern long_ = GraphPattern::build(test::parsePatternText(seededGraph(chain, "m59")));
+    const long functions = std::count_if(long_.operations().begin(), long_.operations().end(),
+                                         [](const GraphPattern::Operation& op) { return bool(op.sourceFunction); });
+    // All 60 would take ~1.2·10⁸ evaluations, 7× the budget: from the
+    // output back the long chains' tables fill it, then short ones still fit.
+    EXPECT_GT(functions, 0);
+    EXPECT_LT(functions, 30);
     ASSERT_EQ(balanced.leafIds(), (std::vector<std::string>{"h", "grain"}));
     ASSERT_EQ(diagonal.leafIds(), (std::vector<std::string>{"h"}));
     EXPECT_EQ(planned, (std::map<std::string, std::array<int, 3>>{{"c", {0, 1, -1}}, {"twice", {0, 0, -1}}}));

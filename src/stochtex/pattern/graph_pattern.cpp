@@ -472,6 +472,7 @@ void GraphPattern::planSourceFunctions(GraphPattern& p, const std::vector<NoiseE
     // as itself (a root, or an op without a function).
     std::vector<bool> read(static_cast<size_t>(slots), false);
     read[size_t(slots - 1)] = true;
+    long long work = 0;  // op evaluations of the functions' tables
     for (int q = slots - 1; q >= leaves; --q) {
         if (!read[size_t(q)]) continue;
         const Sources& src = sources[size_t(q)];
@@ -479,7 +480,7 @@ void GraphPattern::planSourceFunctions(GraphPattern& p, const std::vector<NoiseE
         Sources directInputs = inputsOf(q);
         std::sort(directInputs.begin(), directInputs.end());
         const bool runsAsItself = src == Sources{q} || src.empty() || directInputs == src;
-        if (!runsAsItself && planSourceFunction(p, examples, ranges, q, src)) {
+        if (!runsAsItself && planSourceFunction(p, examples, ranges, q, src, work)) {
             for (const int s : src) read[size_t(s)] = true;  // a root op must run for its moments
             continue;
         }
@@ -490,7 +491,8 @@ void GraphPattern::planSourceFunctions(GraphPattern& p, const std::vector<NoiseE
 }
 
 bool GraphPattern::planSourceFunction(GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                      const FieldRanges& ranges, int q, const std::vector<int>& sources) {
+                                      const FieldRanges& ranges, int q, const std::vector<int>& sources,
+                                      long long& work) {
     const int leaves = p.leafCount();
     const auto operation = [&](int slot) -> const Operation& { return p.operations_[size_t(slot - leaves)]; };
     const auto isSource = [&](int slot) { return std::find(sources.begin(), sources.end(), slot) != sources.end(); };
@@ -553,13 +555,20 @@ bool GraphPattern::planSourceFunction(GraphPattern& p, const std::vector<NoiseEx
             resolution = std::max({resolution, t.resolutionX(), t.resolutionY()});
         }
     const int rx = oneSource ? 1024 : std::min(resolution, 512), ry = oneSource ? 2 : rx;
-    if (entries + (long long)rx * ry > kMaxGraphTableEntries) return false;  // the op runs as itself
     Operation& op = p.operations_[size_t(q - leaves)];
     const bool field = givesField(op);
     const auto gaussianized = [&](size_t axis) -> const NoiseExample* {
         const int s = sources[std::min(axis, sources.size() - 1)];
         return s < leaves && examples[size_t(s)].gaussianized() ? &examples[size_t(s)] : nullptr;
     };
+    // In blending space where a source is a Gaussianized leaf (F∘T⁻¹ along it), as the op tables are.
+    const bool blends = gaussianized(0) || gaussianized(1);
+    // Within the graph's table budget, and in bounded time: the op evaluations
+    // of all the functions' tables (a long chain under many functions) at
+    // most kMaxFunctionWork; past either the op runs as itself.
+    const long long cost = (long long)rx * ry * (blends ? 2 : 1) * std::count(inF.begin(), inF.end(), true);
+    if (entries + (long long)rx * ry > kMaxGraphTableEntries || work + cost > kMaxFunctionWork) return false;
+    work += cost;
     const auto table = [&](const NoiseExample* ex, const NoiseExample* ey) {
         return tabulate(rx, ry, [&](int i, int j) {
             float x = float(i) / float(rx - 1), y = oneSource ? x : float(j) / float(ry - 1);
@@ -570,8 +579,6 @@ bool GraphPattern::planSourceFunction(GraphPattern& p, const std::vector<NoiseEx
         });
     };
     const ColormapTable point = table(nullptr, nullptr);
-    // In blending space where a source is a Gaussianized leaf (F∘T⁻¹ along it), as the op tables are.
-    const bool blends = gaussianized(0) || gaussianized(1);
     OpTable t{point, blends ? table(gaussianized(0), gaussianized(1)) : point, field};
     for (size_t axis = 0; axis < 2; ++axis) {
         const int s = sources[std::min(axis, sources.size() - 1)];

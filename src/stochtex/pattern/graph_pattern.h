@@ -56,6 +56,10 @@ class PartCache;  // pattern/part_cache.h
 // bytes an entry: 512 MiB.
 constexpr long long kMaxGraphTableEntries = 1ll << 24;
 static_assert(kMaxGraphTableEntries >= (long long)kMaxColormapResolution * kMaxColormapResolution);
+// The op evaluations that tabulating a graph's functions of sources may
+// take in all (GraphPattern::planSourceFunctions): about a second at ~45 ns
+// each on the 2-core VM, e.g. 64 two-source tables of 256² over four ops.
+constexpr long long kMaxFunctionWork = 1ll << 24;
 
 class GraphPattern {
 public:
@@ -209,10 +213,11 @@ private:
     static void planSourceFunctions(GraphPattern& p, const std::vector<NoiseExample>& examples,
                                     const FieldRanges& ranges);
     // Op slot q's function of `sources` (ascending), its table added; false
-    // (nothing added) where F does not hold its ends beyond [0, 1] or its
-    // table would pass kMaxGraphTableEntries.
+    // (nothing added) where F does not hold its ends beyond [0, 1], its
+    // table would pass kMaxGraphTableEntries or the op evaluations so far
+    // (`work`, which it adds to) kMaxFunctionWork.
     static bool planSourceFunction(GraphPattern& p, const std::vector<NoiseExample>& examples,
-                                   const FieldRanges& ranges, int q, const std::vector<int>& sources);
+                                   const FieldRanges& ranges, int q, const std::vector<int>& sources, long long& work);
     // One pixel's slots: outputSlot() + 2 values, the last vec3(0) (what an
     // op reads for an input it lacks).
     using Slots = std::vector<kernel::vec3>;
