@@ -544,9 +544,11 @@ bool GraphPattern::planSourceFunction(GraphPattern& p, const std::vector<NoiseEx
             }
     }
     // Resolution: along a source, the largest of F's tables' (a curve's, a
-    // colormap's) within [256, 512] (a 512² table prefilters in about as
-    // long as a plain pattern's); one source: 1024 entries (cheap).
-    int resolution = 256;
+    // colormap's: a function is sampled as finely as what it reads), 256
+    // where F reads none, at most 512 (a 512² table prefilters in about as
+    // long as a plain pattern's); one source: 4 entries per entry of F's
+    // finest table (or 1024), within [64, 1024] (cheap).
+    int resolution = 0;
     long long entries = 0;
     for (const OpTable& t : p.tables_) entries += (long long)t.point.resolutionX() * t.point.resolutionY();
     for (int c = first + 1; c <= q; ++c)
@@ -554,7 +556,9 @@ bool GraphPattern::planSourceFunction(GraphPattern& p, const std::vector<NoiseEx
             const ColormapTable& t = p.tables_[size_t(operation(c).table)].point;
             resolution = std::max({resolution, t.resolutionX(), t.resolutionY()});
         }
-    const int rx = oneSource ? 1024 : std::min(resolution, 512), ry = oneSource ? 2 : rx;
+    const int rx = oneSource ? (resolution ? std::clamp(4 * resolution, 64, 1024) : 1024)
+                             : std::min(resolution ? std::max(resolution, 2) : 256, 512);
+    const int ry = oneSource ? 2 : rx;
     Operation& op = p.operations_[size_t(q - leaves)];
     const bool field = givesField(op);
     const auto gaussianized = [&](size_t axis) -> const NoiseExample* {
