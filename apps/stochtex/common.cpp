@@ -223,11 +223,14 @@ void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterO
 }
 
 CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options) {
-    return addEnumFlag(cmd, "--estimator", options.estimator, kVarianceEstimatorNames, "estimator",
-                       "Footprint estimator: paper | deliot-heitz (one variance per LOD) | sub-probes (the paper's, "
-                       "each probe as 2x2 one level finer: 4x the fetches, 0.24-0.43x its sigma error at 2-8 texels "
-                       "on Table 1, 1.4-2.1x its time) | sub-probes-4x4 (4x4 two levels finer: 16x the fetches, "
-                       "0.04-0.45x its sigma error at 2-16 texels, 3-5.3x its time; docs/RESULTS.md)");
+    return addEnumFlag(
+        cmd, "--estimator", options.estimator, kVarianceEstimatorNames, "estimator",
+        "Footprint estimator: paper | deliot-heitz (one variance per LOD) | sub-probes (the paper's, "
+        "each probe as 2x2 one level finer: 4x the fetches, 0.24-0.43x its sigma error at 2-8 texels "
+        "on Table 1, 1.4-2.1x its time) | sub-probes-4x4 (4x4 two levels finer: 16x the fetches, "
+        "0.04-0.45x its sigma error at 2-16 texels, 3-5.3x its time) | sub-probes-4x4-matched (the same, "
+        "each mean read log2(sqrt 3) levels finer, kernel-matched: 32x the fetches, 0.04-0.54x its "
+        "sigma error at 2-32 texels and below it at every size; docs/RESULTS.md)");
 }
 
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso) {

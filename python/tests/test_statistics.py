@@ -24,7 +24,7 @@ def test_table1_equals_the_cli_csv(tmp_path, cli, table1):
     with open(tmp_path / "table1.csv") as f:
         rows = list(csv.DictReader(f))
     data = table1["data"]
-    assert data.rows() == len(rows) == 2 * 2 * 5
+    assert data.rows() == len(rows) == 2 * 2 * 6  # noises × footprints × (five estimators, global)
     assert data["noise"] == [r["noise"] for r in rows]
     assert data["estimator"] == [r["estimator"] for r in rows]
     for key in ("footprint", "mu_abs", "mu_rel", "sigma_abs", "sigma_rel", "mean_mu", "mean_sigma", "values"):

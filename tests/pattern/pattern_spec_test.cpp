@@ -6,9 +6,9 @@
 #include "stochtex/core/error.h"
 #include "stochtex/image/image_io.h"
 #include "stochtex/pattern/graph_nodes.h"
+#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/pattern_members.h"
-#include "stochtex/pattern/graph_pattern.h"
 #include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/presets.h"
 #include "test_util.h"
@@ -53,19 +53,24 @@ TEST(PatternSpec, ValidSpecParsesWithDefaults) {
 TEST(PatternSpec, ErrorsNameSourceAndJsonPointer) {
     EXPECT_NE(errorOf("{\"noise_x\": ").find("test.json: malformed JSON"), std::string::npos);
     EXPECT_NE(errorOf("{\"noise_x\": ").find("line 1"), std::string::npos);
-    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "components": [{"shape": "ring", "frequency": -3, "bandwidth": 2}]})"))
-                  .find("test.json: /noise_x/components/0/frequency: must be in"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf(
+            withNoiseX(R"({"type": "spectrum", "components": [{"shape": "ring", "frequency": -3, "bandwidth": 2}]})"))
+            .find("test.json: /noise_x/components/0/frequency: must be in"),
+        std::string::npos);
     EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "components": [{"shape": "ringg", "frequency": 3}]})"))
                   .find("/noise_x/components/0/shape: unknown value \"ringg\""),
               std::string::npos);
-    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "componets": []})")).find("/noise_x/componets: unknown member"),
+    EXPECT_NE(
+        errorOf(withNoiseX(R"({"type": "spectrum", "componets": []})")).find("/noise_x/componets: unknown member"),
+        std::string::npos);
+    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "components": []})"))
+                  .find("/noise_x/components: needs at least one"),
               std::string::npos);
-    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "components": []})")).find("/noise_x/components: needs at least one"),
-              std::string::npos);
-    EXPECT_NE(errorOf(withNoiseX(R"({"type": "spectrum", "size": "big", "components": [{"shape": "lowpass", "cutoff": 8}]})"))
-                  .find("/noise_x/size: expected an integer"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf(withNoiseX(R"({"type": "spectrum", "size": "big", "components": [{"shape": "lowpass", "cutoff": 8}]})"))
+            .find("/noise_x/size: expected an integer"),
+        std::string::npos);
     EXPECT_NE(errorOf(R"({"noise_x": {}})").find("/noise_x: missing required member \"type\""), std::string::npos);
     EXPECT_NE(errorOf("[1, 2]").find("test.json: /: expected an object"), std::string::npos);
 }
@@ -112,7 +117,8 @@ TEST(PatternSpec, PaintedColormapValidation) {
     EXPECT_NE(errorOf(base + R"({"shape": "disc", "center": [0.5, 0.5], "radius": 0.1, "color": "#123456"}]}})")
                   .find("/colormap/shapes/0/color: unknown member"),
               std::string::npos);
-    const PatternSpec ok = parse(base + R"({"shape": "band", "point": [0.5, 0.5], "angle": 10, "width": 0.1, "colour": [1, 0.5, 0]}]}})");
+    const PatternSpec ok =
+        parse(base + R"({"shape": "band", "point": [0.5, 0.5], "angle": 10, "width": 0.1, "colour": [1, 0.5, 0]}]}})");
     ASSERT_EQ(ok.colormap.painted.shapes.size(), 1u);
     EXPECT_FLOAT_EQ(ok.colormap.painted.shapes[0].colour[1], 0.5f);
 }
@@ -130,14 +136,15 @@ TEST(PatternSpec, EnumValuedKeysUseTheNameTables) {
     const std::string phasor = R"(, "colormap": {"type": "phasor", "profile": ")";
     EXPECT_EQ(parse(base + phasor + R"(square"}})").colormap.profile, PhasorProfile::Square);
     EXPECT_EQ(parse(base + phasor + R"(sawtooth"}})").colormap.profile, PhasorProfile::Sawtooth);
-    EXPECT_EQ(errorOf(base + phasor + R"(triangle"}})"),
-              "test.json: /colormap/profile: unknown value \"triangle\" (expected one of: sine, sawtooth, square, image)");
+    EXPECT_EQ(
+        errorOf(base + phasor + R"(triangle"}})"),
+        "test.json: /colormap/profile: unknown value \"triangle\" (expected one of: sine, sawtooth, square, image)");
     // The footprint estimator a file asks for (commands' --estimator overrides it).
     EXPECT_FALSE(parse(base + gaussian).estimator.has_value());
     EXPECT_EQ(parse(base + R"(, "estimator": "sub-probes-4x4")" + gaussian).estimator, VarianceEstimator::SubProbes4x4);
     EXPECT_EQ(errorOf(base + R"(, "estimator": "dh")" + gaussian),
               "test.json: /estimator: unknown value \"dh\" (did you mean deliot-heitz?) (expected one of: paper, "
-              "deliot-heitz, sub-probes, sub-probes-4x4)");
+              "deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-matched)");
 }
 
 TEST(PatternSpec, QuadratureShorthandSharesSeedAndOffsets) {
@@ -238,7 +245,8 @@ TEST(PatternSpec, NonPowerOfTwoExemplarsAreResampledPeriodically) {
     // source's at −½ + ½·24/32 = −0.125 texel. Within 4e-3 (bicubic's own error
     // on this wave, measured 3.1e-3); corner-aligned sampling (source texel 0,
     // value 0.5) would be 9.8e-3 off.
-    EXPECT_NEAR(e.at(0, 0), 0.5 + 0.3 * std::sin(2 * M_PI * -0.125 / 24.0) * std::cos(2 * M_PI * 2 * -0.125 / 24.0), 4e-3);
+    EXPECT_NEAR(e.at(0, 0), 0.5 + 0.3 * std::sin(2 * M_PI * -0.125 / 24.0) * std::cos(2 * M_PI * 2 * -0.125 / 24.0),
+                4e-3);
     std::filesystem::remove_all(dir);
 }
 
@@ -304,7 +312,8 @@ TEST(PatternMembers, TheParserEnforcesEachTableEntrysRange) {
     // The graph's spectral noise takes the same entries as a pattern's noise.
     const NodeInfo* noise = findGraphNode("spectral_noise");
     ASSERT_NE(noise, nullptr);
-    for (const ParamInfo* p : {&patternMembers().noiseSize, &patternMembers().noiseMean, &patternMembers().noiseStddev}) {
+    for (const ParamInfo* p :
+         {&patternMembers().noiseSize, &patternMembers().noiseMean, &patternMembers().noiseStddev}) {
         const auto it = std::find_if(noise->params.begin(), noise->params.end(),
                                      [&](const ParamInfo& q) { return q.name == p->name; });
         ASSERT_NE(it, noise->params.end());

@@ -339,22 +339,25 @@ TEST(Studies, Table1ReducedRowsTablesAndPlots) {
     o.errors.count = 30;
     const Table1Result r = table1(o);
     for (const auto& rows : r.rows) {
-        ASSERT_EQ(rows.size(), 10u);  // 2 sizes × (paper, deliot-heitz, sub-probes, sub-probes-4x4, global)
+        // 2 sizes × (paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-matched, global)
+        ASSERT_EQ(rows.size(), 12u);
         // As ReducedTable1HasSaneNumbers: at 2×2 the estimators beat the global statistics.
-        EXPECT_EQ(rows[4].estimator, "global");
-        EXPECT_LT(rows[0].muAbs, 0.5 * rows[4].muAbs);
-        EXPECT_LT(rows[0].sigmaAbs, 0.5 * rows[4].sigmaAbs);
+        EXPECT_EQ(rows[5].estimator, "global");
+        EXPECT_LT(rows[0].muAbs, 0.5 * rows[5].muAbs);
+        EXPECT_LT(rows[0].sigmaAbs, 0.5 * rows[5].sigmaAbs);
         for (const auto& e : rows) EXPECT_EQ(e.values, 60);
     }
-    ASSERT_EQ(r.data.rows.size(), 20u);
-    EXPECT_EQ(r.data.rows[10][0].text, "high");
+    ASSERT_EQ(r.data.rows.size(), 24u);
+    EXPECT_EQ(r.data.rows[12][0].text, "high");
     EXPECT_EQ(r.data.rows[2][2].text, "sub-probes");
     EXPECT_EQ(r.data.rows[3][2].text, "sub-probes-4x4");
+    EXPECT_EQ(r.data.rows[4][2].text, "sub-probes-4x4-matched");
     EXPECT_EQ(*r.data.rows[0][3].number, r.rows[0][0].muAbs);
-    ASSERT_EQ(r.tables.size(), 6u);  // paper, deliot-heitz, sub-probes, sub-probes-4x4, global, published
+    // paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-matched, global, published
+    ASSERT_EQ(r.tables.size(), 7u);
     EXPECT_EQ(r.tables[0].rows.size(), 2u);
     EXPECT_EQ(r.tables[0].rows[1][0].text, "16×16");
-    EXPECT_EQ(r.tables[5].rows.size(), 7u);
+    EXPECT_EQ(r.tables[6].rows.size(), 7u);
     EXPECT_EQ(r.figures.size(), 4u);
     o.errors.count = 0;
     EXPECT_THROW(table1(o), InputError);

@@ -142,9 +142,9 @@ __attribute__((flatten)) FootprintStats FootprintEstimator::kernelEstimate(const
                                                                            VarianceEstimator mode) const {
     // The loop, the Deliot–Heitz substitution and the single-texel rule are
     // the kernel's (kernel/estimate.glsl), as in the shaders.
-    const kernel::FootprintMoments r =
-        kernel::footprintEstimate(EstimatorTexels{this}, kernel::coord2(f.u, f.v), f.layout, maxLod(),
-                                  mode == VarianceEstimator::DeliotHeitz, bool(covariance_), subProbesOf(mode));
+    const kernel::FootprintMoments r = kernel::footprintEstimate(
+        EstimatorTexels{this}, kernel::coord2(f.u, f.v), f.layout, maxLod(), mode == VarianceEstimator::DeliotHeitz,
+        bool(covariance_), subProbesOf(mode), matchedLevelsOf(mode));
     return FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov};
 }
 

@@ -45,17 +45,31 @@ inline vec2 subProbeOffset(ProbeLayout probes, int side, int i, int j) {
            (float(j) + 0.5f - 0.5f * float(side)) / float(side) * across;
 }
 
+// Matched sub-probes (docs/MATH.md): a sub-probe's mean is read this many
+// levels finer than its square, log2 √3, where the trilinear MIP kernel's
+// second moment is the square's box's, so μ̂ is not blurred beyond the
+// footprint and the spread of the sub-probes' means is that of the
+// squares' means, not of their blurred means; its variance and covariance
+// are still read at the square's level, which holds all of the variance
+// within the square.
+const float kMatchedLevelBias = 0.79248125f;
+
 // μ̂, σ̂², ĉov of the source over the footprint centred at uv with these
 // probes (kernel/footprint.glsl: probeLayout), each split into subProbes²
-// (1: the paper's estimator). One loop for every footprint, a single texel
-// included (its statistics are then taken as they are, after the loop: a
-// branch around it would make GPU lanes run both paths).
+// (1: the paper's estimator), their means at matched levels when
+// matchedLevels (a probe that is not split reads its own level). One loop
+// for every footprint, a single texel included (its statistics are then
+// taken as they are, after the loop: a branch around it would make GPU
+// lanes run both paths).
 STOCHTEX_HOST_TYPE(TexelSource)
 inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayout probes, int maxLod,
-                                          bool deliotHeitz, bool hasCovariance, int subProbes) {
+                                          bool deliotHeitz, bool hasCovariance, int subProbes, bool matchedLevels) {
     int side = subProbesPerSide(probes, subProbes, maxLod);
     float lod = side > 1 ? max(probes.lod - log2Split(float(side)), 0.0f) : probes.lod;
     ProbeLevels levels = probeLevels(lod, maxLod, probes.count * side * side);
+    bool matched = matchedLevels && side > 1;
+    ProbeLevels meanLevels = probeLevels(matched ? max(lod - kMatchedLevelBias, 0.0f) : lod, maxLod,
+                                         probes.count * side * side);
     vec3 averageLo = vec3(0.0f);
     vec3 averageHi = vec3(0.0f);
     if (deliotHeitz) {
@@ -76,12 +90,30 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
                 t.lo = deliotHeitzTexel(t.lo, averageLo, hasCovariance);
                 t.hi = deliotHeitzTexel(t.hi, averageHi, hasCovariance);
             }
-            if (k == 0 && s == 0) {
-                sums = momentsAbout(t.lo.mean);
-                first = t.lo;
+            if (matched) {
+                // The sub-probe's mean from the finer levels, its (co)variance
+                // from its square's: one sample of weight w0 + w1 = 1/count.
+                ProbeTexels fine = probeTexels(src, p, meanLevels);
+                float wMean = meanLevels.w0 + meanLevels.w1;
+                vec2 mean = meanLevels.w0 * fine.lo.mean;
+                if (meanLevels.w1 > 0.0f) mean = mean + meanLevels.w1 * fine.hi.mean;
+                mean = mean / wMean;
+                vec2 var = levels.w0 * t.lo.var;
+                float cov = levels.w0 * t.lo.cov;
+                if (levels.w1 > 0.0f) {
+                    var = var + levels.w1 * t.hi.var;
+                    cov = cov + levels.w1 * t.hi.cov;
+                }
+                if (k == 0 && s == 0) sums = momentsAbout(mean);
+                sums = momentsAdd(sums, wMean, mean, var / wMean, cov / wMean);
+            } else {
+                if (k == 0 && s == 0) {
+                    sums = momentsAbout(t.lo.mean);
+                    first = t.lo;
+                }
+                sums = momentsAdd(sums, levels.w0, t.lo.mean, t.lo.var, t.lo.cov);
+                if (levels.w1 > 0.0f) sums = momentsAdd(sums, levels.w1, t.hi.mean, t.hi.var, t.hi.cov);
             }
-            sums = momentsAdd(sums, levels.w0, t.lo.mean, t.lo.var, t.lo.cov);
-            if (levels.w1 > 0.0f) sums = momentsAdd(sums, levels.w1, t.hi.mean, t.hi.var, t.hi.cov);
         }
     }
     if (isSingleTexel(probes.count * side * side, levels.frac)) return texelMoments(first);
@@ -94,7 +126,8 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
 // filter/footprint.cpp).
 STOCHTEX_HOST_TYPE(TexelSource)
 inline FootprintMoments jacobianEstimate(TexelSource src, coord2 uv, vec2 jx, vec2 jy, float texels, int aniso,
-                                         int maxLod, bool deliotHeitz, bool hasCovariance, int subProbes) {
+                                         int maxLod, bool deliotHeitz, bool hasCovariance, int subProbes,
+                                         bool matchedLevels) {
     return footprintEstimate(src, uv, probeLayout(jx, jy, texels, aniso, maxLod), maxLod, deliotHeitz, hasCovariance,
-                             subProbes);
+                             subProbes, matchedLevels);
 }

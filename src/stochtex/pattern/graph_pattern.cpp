@@ -1178,7 +1178,7 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                     const kernel::FootprintMoments r =
                         single ? kernel::texelMoments(first)
                                : kernel::footprintEstimate(texels, kernel::coord2(0.0), shape.layout, e.maxLod(),
-                                                           deliotHeitz, false, 1);
+                                                           deliotHeitz, false, 1, false);
                     // plainColour's lookup, done for the whole row below.
                     const std::array<float, 4> at = plainTableCoordinates(r.mean.x, r.mean.y, r.var.x, r.var.y);
                     for (size_t i = 0; i < 4; ++i) coordinates[i][px] = at[i];

@@ -51,7 +51,8 @@ struct Figure14Column {
     int footprint = 0;
     double none = 0, meanOnly = 0, matchedExact = 0, matched = 0;
     // matched with each estimator of kVarianceEstimatorNames after the
-    // paper's (matched): deliot-heitz, sub-probes, sub-probes-4x4.
+    // paper's (matched): deliot-heitz, sub-probes, sub-probes-4x4,
+    // sub-probes-4x4-matched.
     std::vector<double> matchedOtherEstimators;
     // The samples per axis of the reference and the exact statistics, and how
     // much each moved on doubling them.

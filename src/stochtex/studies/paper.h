@@ -88,7 +88,8 @@ struct Figure4Column {
     double meanErrorExact = 0, meanErrorEstimated = 0;  // mean ‖Ŝ − S̄‖₂ over the pixels (RGB)
     double meanErrorNone = 0;                           // mean ‖S − S̄‖₂: the pixel centres, unfiltered
     // mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ with each estimator of kVarianceEstimatorNames
-    // after the paper's (meanErrorEstimated): deliot-heitz, sub-probes, sub-probes-4x4.
+    // after the paper's (meanErrorEstimated): deliot-heitz, sub-probes, sub-probes-4x4,
+    // sub-probes-4x4-matched.
     std::vector<double> meanErrorOtherEstimators;
     // With fadesTo: mean ‖S̄ − m‖₂ and ‖Ŝ(μ̂, Σ̂) − m‖₂ over the pixels.
     double meanFadeReference = 0, meanFadeEstimated = 0;
