@@ -67,7 +67,9 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
     int side = subProbesPerSide(probes, subProbes, maxLod);
     float lod = side > 1 ? max(probes.lod - log2Split(float(side)), 0.0f) : probes.lod;
     ProbeLevels levels = probeLevels(lod, maxLod, probes.count * side * side);
-    bool matched = matchedLevels && side > 1;
+    // At level 0 the finer level is the same one: the second read would
+    // repeat the first.
+    bool matched = matchedLevels && side > 1 && lod > 0.0f;
     ProbeLevels meanLevels = probeLevels(matched ? max(lod - kMatchedLevelBias, 0.0f) : lod, maxLod,
                                          probes.count * side * side);
     vec3 averageLo = vec3(0.0f);
