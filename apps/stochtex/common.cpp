@@ -230,7 +230,8 @@ CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options) {
         "on Table 1, 1.4-2.1x its time) | sub-probes-4x4 (4x4 two levels finer: 16x the fetches, "
         "0.04-0.45x its sigma error at 2-16 texels, 3-5.3x its time) | sub-probes-4x4-matched (the same, "
         "each mean read log2(sqrt 3) levels finer, kernel-matched: 32x the fetches, 0.04-0.54x its "
-        "sigma error at 2-32 texels and below it at every size; docs/RESULTS.md)");
+        "sigma error at 2-32 texels, renders near the exact floor at 8-32 texels a pixel, aliases at "
+        "64-128; docs/RESULTS.md)");
 }
 
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso) {
