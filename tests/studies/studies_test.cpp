@@ -476,11 +476,14 @@ TEST(Studies, Figure12OursBeatsDeliotHeitzAndNeedsTheCovariance) {
     o.height = 120;
     o.referenceSamples = 24;
     const Figure12Result r = figure12(o);
-    ASSERT_EQ(r.rows.size(), 6u);
+    ASSERT_EQ(r.rows.size(), 7u);
     const Figure12Row &ours = r.rows[0], &noCov = r.rows[1], &dh = r.rows[2], &sub = r.rows[3], &sub4 = r.rows[4],
-                      &exact = r.rows[5];
+                      &matched = r.rows[5], &exact = r.rows[6];
     ASSERT_EQ(sub4.variant, LeanVariant::SubProbes4x4);
     EXPECT_LT(sub4.meanErrorCrop, ours.meanErrorCrop);
+    ASSERT_EQ(matched.variant, LeanVariant::SubProbes4x4Matched);
+    std::printf("figure12 crop: sub-probes-4x4 %.4f matched %.4f\n", sub4.meanErrorCrop, matched.meanErrorCrop);
+    EXPECT_LT(matched.meanErrorCrop, ours.meanErrorCrop);
     ASSERT_EQ(ours.variant, LeanVariant::Ours);
     ASSERT_EQ(noCov.variant, LeanVariant::NoCovariance);
     ASSERT_EQ(dh.variant, LeanVariant::DeliotHeitz);
@@ -499,7 +502,7 @@ TEST(Studies, Figure12OursBeatsDeliotHeitzAndNeedsTheCovariance) {
     EXPECT_LT(ours.meanErrorCrop, noCov.meanErrorCrop);
     EXPECT_LT(ours.meanErrorGlobal, noCov.meanErrorGlobal);
     EXPECT_GT(ours.meanErrorCrop, 0.0);
-    EXPECT_EQ(r.table.rows.size(), 6u);
+    EXPECT_EQ(r.table.rows.size(), 7u);
     EXPECT_EQ(r.figures.front().file, "figure12.png");
     // Bad parameters are refused before any work, naming the parameter.
     o.crop = {0.5, 0.2, 0.4, 0.6};

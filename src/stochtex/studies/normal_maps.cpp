@@ -13,7 +13,7 @@
 
 namespace stochtex {
 
-const std::array<LeanVariantInfo, 7> kLeanVariants{{
+const std::array<LeanVariantInfo, 8> kLeanVariants{{
     {LeanVariant::Reference, "reference", "reference (supersampled)",
      [](FilterOptions& o) { o.source = StatisticsSource::Reference; }},
     {LeanVariant::Ours, "ours", "ours (eq. 9, 14, 18)", [](FilterOptions&) {}},
@@ -28,6 +28,8 @@ const std::array<LeanVariantInfo, 7> kLeanVariants{{
      [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes; }},
     {LeanVariant::SubProbes4x4, "sub-probes-4x4", "ours, sub-probes-4x4 estimator",
      [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes4x4; }},
+    {LeanVariant::SubProbes4x4Matched, "sub-probes-4x4-matched", "ours, sub-probes-4x4-matched estimator",
+     [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes4x4Matched; }},
     {LeanVariant::Exact, "exact-statistics", "exact footprint statistics",
      [](FilterOptions& o) { o.source = StatisticsSource::Exact; }},
 }};
