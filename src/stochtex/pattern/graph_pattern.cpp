@@ -545,8 +545,8 @@ bool GraphPattern::planSourceFunction(GraphPattern& p, const std::vector<NoiseEx
     }
     // Resolution: along a source, the largest of F's tables' (a curve's, a
     // colormap's: a function is sampled as finely as what it reads), 256
-    // where F reads none, at most 512 (a 512² table prefilters in about as
-    // long as a plain pattern's); one source: 4 entries per entry of F's
+    // where F reads none, at most 512 (a two-source table's prefiltered
+    // layers grow with its entries); one source: 4 entries per entry of F's
     // finest table (or 1024), within [64, 1024] (cheap).
     int resolution = 0;
     long long entries = 0;
