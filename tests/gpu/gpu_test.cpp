@@ -219,12 +219,12 @@ TEST(Gpu, FilteredRenderMatchesTheCpu) {
     o.aniso = 8;
     v.scale = 5.0;
     expectParity(p, v, "woven smooth K=8 sub-probes-4x4", o);
-    // Matched levels: a second read per sub-probe, at the finer levels.
-    o.estimator = VarianceEstimator::SubProbes4x4Matched;
-    expectParity(p, v, "woven smooth K=8 sub-probes-4x4-matched", o);
+    // Fine means: four more reads per sub-probe, one level finer.
+    o.estimator = VarianceEstimator::SubProbes4x4FineMeans;
+    expectParity(p, v, "woven smooth K=8 sub-probes-4x4-fine-means", o);
     o.aniso = 1;
     v.scale = 2.5;
-    expectParity(p, v, "woven smooth K=1 sub-probes-4x4-matched", o);
+    expectParity(p, v, "woven smooth K=1 sub-probes-4x4-fine-means", o);
 }
 
 // A view built with a PartCache (the workbench's) draws what one built

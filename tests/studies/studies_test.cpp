@@ -339,7 +339,7 @@ TEST(Studies, Table1ReducedRowsTablesAndPlots) {
     o.errors.count = 30;
     const Table1Result r = table1(o);
     for (const auto& rows : r.rows) {
-        // 2 sizes × (paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-matched, global)
+        // 2 sizes × (paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-fine-means, global)
         ASSERT_EQ(rows.size(), 12u);
         // As ReducedTable1HasSaneNumbers: at 2×2 the estimators beat the global statistics.
         EXPECT_EQ(rows[5].estimator, "global");
@@ -351,9 +351,9 @@ TEST(Studies, Table1ReducedRowsTablesAndPlots) {
     EXPECT_EQ(r.data.rows[12][0].text, "high");
     EXPECT_EQ(r.data.rows[2][2].text, "sub-probes");
     EXPECT_EQ(r.data.rows[3][2].text, "sub-probes-4x4");
-    EXPECT_EQ(r.data.rows[4][2].text, "sub-probes-4x4-matched");
+    EXPECT_EQ(r.data.rows[4][2].text, "sub-probes-4x4-fine-means");
     EXPECT_EQ(*r.data.rows[0][3].number, r.rows[0][0].muAbs);
-    // paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-matched, global, published
+    // paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-fine-means, global, published
     ASSERT_EQ(r.tables.size(), 7u);
     EXPECT_EQ(r.tables[0].rows.size(), 2u);
     EXPECT_EQ(r.tables[0].rows[1][0].text, "16×16");
@@ -478,12 +478,12 @@ TEST(Studies, Figure12OursBeatsDeliotHeitzAndNeedsTheCovariance) {
     const Figure12Result r = figure12(o);
     ASSERT_EQ(r.rows.size(), 7u);
     const Figure12Row &ours = r.rows[0], &noCov = r.rows[1], &dh = r.rows[2], &sub = r.rows[3], &sub4 = r.rows[4],
-                      &matched = r.rows[5], &exact = r.rows[6];
+                      &fine = r.rows[5], &exact = r.rows[6];
     ASSERT_EQ(sub4.variant, LeanVariant::SubProbes4x4);
     EXPECT_LT(sub4.meanErrorCrop, ours.meanErrorCrop);
-    ASSERT_EQ(matched.variant, LeanVariant::SubProbes4x4Matched);
-    std::printf("figure12 crop: sub-probes-4x4 %.4f matched %.4f\n", sub4.meanErrorCrop, matched.meanErrorCrop);
-    EXPECT_LT(matched.meanErrorCrop, ours.meanErrorCrop);
+    ASSERT_EQ(fine.variant, LeanVariant::SubProbes4x4FineMeans);
+    std::printf("figure12 crop: sub-probes-4x4 %.4f fine means %.4f\n", sub4.meanErrorCrop, fine.meanErrorCrop);
+    EXPECT_LT(fine.meanErrorCrop, ours.meanErrorCrop);
     ASSERT_EQ(ours.variant, LeanVariant::Ours);
     ASSERT_EQ(noCov.variant, LeanVariant::NoCovariance);
     ASSERT_EQ(dh.variant, LeanVariant::DeliotHeitz);

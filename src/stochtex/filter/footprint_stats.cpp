@@ -144,7 +144,7 @@ __attribute__((flatten)) FootprintStats FootprintEstimator::kernelEstimate(const
     // the kernel's (kernel/estimate.glsl), as in the shaders.
     const kernel::FootprintMoments r = kernel::footprintEstimate(
         EstimatorTexels{this}, kernel::coord2(f.u, f.v), f.layout, maxLod(), mode == VarianceEstimator::DeliotHeitz,
-        bool(covariance_), subProbesOf(mode), matchedLevelsOf(mode));
+        bool(covariance_), subProbesOf(mode), fineMeansOf(mode));
     return FootprintStats{{r.mean.x, r.mean.y}, r.var.x, r.var.y, r.cov};
 }
 

@@ -12,7 +12,7 @@ enum class VarianceEstimator {
     DeliotHeitz,   // one constant within-texel variance per LOD [DH19]
     SubProbes,     // the paper's, each probe as 2×2 probes one level finer (kernel/estimate.glsl; 4× the fetches)
     SubProbes4x4,  // the same as 4×4 probes two levels finer (16× the fetches)
-    SubProbes4x4Matched,  // 4×4 sub-probes whose means are read log2 √3 levels finer (kernel-matched; 32× the fetches)
+    SubProbes4x4FineMeans,  // 4×4 sub-probes, each one's mean from 2×2 reads one level finer (80× the fetches)
 };
 // The paper's first: the studies' main columns are the default estimator's
 // (FilterOptions::estimator), then a column per name after it.
@@ -21,15 +21,15 @@ inline const EnumNames<VarianceEstimator> kVarianceEstimatorNames{
     {"deliot-heitz", VarianceEstimator::DeliotHeitz},
     {"sub-probes", VarianceEstimator::SubProbes},
     {"sub-probes-4x4", VarianceEstimator::SubProbes4x4},
-    {"sub-probes-4x4-matched", VarianceEstimator::SubProbes4x4Matched}};
+    {"sub-probes-4x4-fine-means", VarianceEstimator::SubProbes4x4FineMeans}};
 // The sub-probes per side of a probe that an estimator reads (the kernel's
 // subProbes: 2 for SubProbes, 4 for the 4×4 ones, else 1).
 inline int subProbesOf(VarianceEstimator e) {
     if (e == VarianceEstimator::SubProbes) return 2;
-    return e == VarianceEstimator::SubProbes4x4 || e == VarianceEstimator::SubProbes4x4Matched ? 4 : 1;
+    return e == VarianceEstimator::SubProbes4x4 || e == VarianceEstimator::SubProbes4x4FineMeans ? 4 : 1;
 }
-// Whether its sub-probes read their means at matched levels (the kernel's
-// matchedLevels, kernel/estimate.glsl).
-inline bool matchedLevelsOf(VarianceEstimator e) { return e == VarianceEstimator::SubProbes4x4Matched; }
+// Whether its sub-probes read their means from a 2×2 grid one level finer
+// (the kernel's fineMeans, kernel/estimate.glsl).
+inline bool fineMeansOf(VarianceEstimator e) { return e == VarianceEstimator::SubProbes4x4FineMeans; }
 
 }  // namespace stochtex

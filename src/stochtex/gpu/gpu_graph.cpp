@@ -199,7 +199,7 @@ GraphEstimator graphEstimator(const FilteredGraph& filtered, const FilterOptions
     GraphEstimator out;
     if (options.source != StatisticsSource::Estimators) return out;
     out.subProbes = subProbesOf(options.estimator);
-    out.matchedLevels = matchedLevelsOf(options.estimator);
+    out.fineMeans = fineMeansOf(options.estimator);
     if (options.estimator == VarianceEstimator::DeliotHeitz)
         for (size_t p = 0; p < filtered.estimatorCount(); ++p) {
             const FootprintEstimator& e = filtered.estimator(int(p));
@@ -271,7 +271,7 @@ std::string graphProgramSource(const GraphPattern& graph, GraphMoments moments, 
           << ", " << pairUv(graph.pairTransform(int(p)), "jy", false) << ", " << glslFloat(float(pair.exampleSize()))
           << ", uPattern.aniso, " << maxLod << ", " << (estimator.levelAverages.empty() ? "false" : "true") << ", "
           << (covariance ? "true" : "false") << ", " << estimator.subProbes << ", "
-          << (estimator.matchedLevels ? "true" : "false") << ");\n";
+          << (estimator.fineMeans ? "true" : "false") << ");\n";
         for (int c = 0; c < 2; ++c)
             if (c == 0 || leaves[1] != leaves[0])
                 o << "    vec3 " << slot(leaves[c]) << " = vec3(p" << p << ".mean."

@@ -39,8 +39,8 @@ struct GraphEstimator {
     // Deliot–Heitz baseline, the averages constants of the program; empty:
     // the texels' own variances.
     LevelAverages levelAverages;
-    int subProbes = 1;           // per side of each probe (the sub-probes estimators: subProbesOf)
-    bool matchedLevels = false;  // sub-probes' means at matched levels (matchedLevelsOf)
+    int subProbes = 1;       // per side of each probe (the sub-probes estimators: subProbesOf)
+    bool fineMeans = false;  // sub-probes' means from finer reads (fineMeansOf)
     // How the pyramids' texels code the statistics (StatsCoding,
     // gpu/shaders/filtering.glsl), per leaf pair then level: empty, the
     // float data GpuGraph uploads; the export's 8-bit format fills it.

@@ -45,33 +45,46 @@ inline vec2 subProbeOffset(ProbeLayout probes, int side, int i, int j) {
            (float(j) + 0.5f - 0.5f * float(side)) / float(side) * across;
 }
 
-// Matched sub-probes (docs/MATH.md): a sub-probe's mean is read this many
-// levels finer than its square, log2 √3, where the trilinear MIP kernel's
-// second moment is the square's box's, so μ̂ is not blurred beyond the
-// footprint and the spread of the sub-probes' means is that of the
-// squares' means, not of their blurred means; its variance and covariance
-// are still read at the square's level, which holds all of the variance
-// within the square.
-const float kMatchedLevelBias = 0.79248125f;
+// Sub-probes with fine means (docs/MATH.md): a sub-probe's mean is the
+// average of a 2×2 grid of reads one level finer than its square (the
+// sub-probes' grid of twice the side), its variance and covariance its
+// square's, which hold all of the variance within the square. A bilinear
+// read is a box convolved with a tent, three times the box's second moment:
+// read at the square's level, the sub-probes' means are blurred over their
+// neighbours' squares, which lowers the spread that σ̂² adds up and
+// smooths μ̂. Reads one level finer, spaced by their own texel, halve that
+// excess, and their tents, as wide as their spacing on a whole level,
+// still tile the square (tents of half-width h spaced by h sum to 1): μ̂
+// does not alias as reads narrower than their spacing do (a log2 √3 level
+// bias, tried first: docs/RESULTS.md).
+STOCHTEX_HOST_TYPE(TexelSource)
+inline vec2 fineMean(TexelSource src, coord2 centre, ProbeLayout probes, int side, int s, ProbeLevels meanLevels) {
+    vec2 sum = vec2(0.0f);
+    for (int q = 0; q < 4; ++q) {
+        coord2 p = centre + coord2(subProbeOffset(probes, 2 * side, 2 * (s % side) + q % 2, 2 * (s / side) + q / 2));
+        ProbeTexels fine = probeTexels(src, p, meanLevels);
+        sum = sum + meanLevels.w0 * fine.lo.mean;
+        if (meanLevels.w1 > 0.0f) sum = sum + meanLevels.w1 * fine.hi.mean;
+    }
+    return sum / (4.0f * (meanLevels.w0 + meanLevels.w1));
+}
 
 // μ̂, σ̂², ĉov of the source over the footprint centred at uv with these
 // probes (kernel/footprint.glsl: probeLayout), each split into subProbes²
-// (1: the paper's estimator), their means at matched levels when
-// matchedLevels (a probe that is not split reads its own level). One loop
+// (1: the paper's estimator), their means from finer reads when
+// fineMeans (a probe that is not split reads its own level). One loop
 // for every footprint, a single texel included (its statistics are then
 // taken as they are, after the loop: a branch around it would make GPU
 // lanes run both paths).
 STOCHTEX_HOST_TYPE(TexelSource)
-inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayout probes, int maxLod,
-                                          bool deliotHeitz, bool hasCovariance, int subProbes, bool matchedLevels) {
+inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayout probes, int maxLod, bool deliotHeitz,
+                                          bool hasCovariance, int subProbes, bool fineMeans) {
     int side = subProbesPerSide(probes, subProbes, maxLod);
     float lod = side > 1 ? max(probes.lod - log2Split(float(side)), 0.0f) : probes.lod;
     ProbeLevels levels = probeLevels(lod, maxLod, probes.count * side * side);
-    // At level 0 the finer level is the same one: the second read would
-    // repeat the first.
-    bool matched = matchedLevels && side > 1 && lod > 0.0f;
-    ProbeLevels meanLevels = probeLevels(matched ? max(lod - kMatchedLevelBias, 0.0f) : lod, maxLod,
-                                         probes.count * side * side);
+    // On level 0 there is nothing finer: the square's own read is its mean.
+    bool fine = fineMeans && side > 1 && lod > 0.0f;
+    ProbeLevels meanLevels = probeLevels(fine ? max(lod - 1.0f, 0.0f) : lod, maxLod, probes.count * side * side);
     vec3 averageLo = vec3(0.0f);
     vec3 averageHi = vec3(0.0f);
     if (deliotHeitz) {
@@ -92,14 +105,11 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
                 t.lo = deliotHeitzTexel(t.lo, averageLo, hasCovariance);
                 t.hi = deliotHeitzTexel(t.hi, averageHi, hasCovariance);
             }
-            if (matched) {
-                // The sub-probe's mean from the finer levels, its (co)variance
+            if (fine) {
+                // The sub-probe's mean from the finer reads, its (co)variance
                 // from its square's: one sample of weight w0 + w1 = 1/count.
-                ProbeTexels fine = probeTexels(src, p, meanLevels);
                 float wMean = meanLevels.w0 + meanLevels.w1;
-                vec2 mean = meanLevels.w0 * fine.lo.mean;
-                if (meanLevels.w1 > 0.0f) mean = mean + meanLevels.w1 * fine.hi.mean;
-                mean = mean / wMean;
+                vec2 mean = fineMean(src, centre, probes, side, s, meanLevels);
                 vec2 var = levels.w0 * t.lo.var;
                 float cov = levels.w0 * t.lo.cov;
                 if (levels.w1 > 0.0f) {
@@ -129,7 +139,7 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
 STOCHTEX_HOST_TYPE(TexelSource)
 inline FootprintMoments jacobianEstimate(TexelSource src, coord2 uv, vec2 jx, vec2 jy, float texels, int aniso,
                                          int maxLod, bool deliotHeitz, bool hasCovariance, int subProbes,
-                                         bool matchedLevels) {
+                                         bool fineMeans) {
     return footprintEstimate(src, uv, probeLayout(jx, jy, texels, aniso, maxLod), maxLod, deliotHeitz, hasCovariance,
-                             subProbes, matchedLevels);
+                             subProbes, fineMeans);
 }
