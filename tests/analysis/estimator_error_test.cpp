@@ -7,6 +7,8 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
@@ -30,6 +32,15 @@ const EstimatorError& rowOf(const std::vector<EstimatorError>& rows, int footpri
     for (const EstimatorError& e : rows)
         if (e.footprint == footprint && e.estimator == estimator) return e;
     throw std::runtime_error("no row " + estimator + " at " + std::to_string(footprint));
+}
+
+// The errors on one of Table 1's noises (0: low-pass, 1: bi-lobe; seed 1)
+// at these footprint sides, `count` footprints each.
+std::vector<EstimatorError> table1Errors(int which, std::vector<int> footprints, int count = 300) {
+    EstimatorErrorOptions o;
+    o.footprints = std::move(footprints);
+    o.count = count;
+    return measureEstimatorErrors(GraphPattern::build(table1PatternSpec(which, 1)).leafPairs().front(), o);
 }
 
 TEST(EstimatorError, ReducedTable1HasSaneNumbers) {
@@ -77,13 +88,10 @@ TEST(EstimatorError, ReducedTable1HasSaneNumbers) {
 // low, 0.15/0.63 and 0.15/0.59 high at 2² and 4²), it at least halves the
 // paper estimator's σ̂ error at 2–8 texels, and the mean error with it.
 TEST(EstimatorError, SubProbesHalveTheSigmaErrorAtSmallFootprints) {
-    EstimatorErrorOptions o;
-    o.footprints = {2, 4, 8};
-    o.count = 300;
+    const std::vector<int> footprints{2, 4, 8};
     for (int which = 0; which < 2; ++which) {
-        const GraphPattern p = GraphPattern::build(table1PatternSpec(which, 1));
-        const std::vector<EstimatorError> rows = measureEstimatorErrors(p.leafPairs().front(), o);
-        for (const int f : o.footprints) {
+        const std::vector<EstimatorError> rows = table1Errors(which, footprints);
+        for (const int f : footprints) {
             const EstimatorError &paper = rowOf(rows, f, "paper"), &sub = rowOf(rows, f, "sub-probes");
             EXPECT_LT(sub.sigmaRel, 0.5 * paper.sigmaRel) << table1NoiseName(which) << " " << f;
             EXPECT_LT(sub.muAbs, 0.5 * paper.muAbs) << table1NoiseName(which) << " " << f;
@@ -97,13 +105,10 @@ TEST(EstimatorError, SubProbesHalveTheSigmaErrorAtSmallFootprints) {
 // here at 16 and 32 texels, 300 footprints (the 2×2 sub-probes do not halve
 // it at 32 on the low-pass noise, nor at 16 on the bi-lobe).
 TEST(EstimatorError, SubProbes4x4HalveTheSigmaErrorUpTo32Texels) {
-    EstimatorErrorOptions o;
-    o.footprints = {16, 32};
-    o.count = 300;
+    const std::vector<int> footprints{16, 32};
     for (int which = 0; which < 2; ++which) {
-        const GraphPattern p = GraphPattern::build(table1PatternSpec(which, 1));
-        const std::vector<EstimatorError> rows = measureEstimatorErrors(p.leafPairs().front(), o);
-        for (const int f : o.footprints) {
+        const std::vector<EstimatorError> rows = table1Errors(which, footprints);
+        for (const int f : footprints) {
             if (which == 1 && f == 32) continue;  // the bi-lobe at 32 texels: 0.84× (docs/RESULTS.md)
             const double paper = rowOf(rows, f, "paper").sigmaRel, sub4 = rowOf(rows, f, "sub-probes-4x4").sigmaRel;
             std::printf("%s %d: sigma rel paper %.3f sub-probes-4x4 %.3f (%.2f)\n", table1NoiseName(which), f, paper,
@@ -122,13 +127,10 @@ TEST(EstimatorError, SubProbes4x4HalveTheSigmaErrorUpTo32Texels) {
 // (a sub-probe mean read log2 √3 levels finer aliased there: 3.5× the
 // paper's on the bi-lobe at 128). Here 300 footprints at 32, 64 and 128 texels.
 TEST(EstimatorError, FineMeanSubProbesBeatThePaperFrom32To128Texels) {
-    EstimatorErrorOptions o;
-    o.footprints = {32, 64, 128};
-    o.count = 300;
+    const std::vector<int> footprints{32, 64, 128};
     for (int which = 0; which < 2; ++which) {
-        const GraphPattern p = GraphPattern::build(table1PatternSpec(which, 1));
-        const std::vector<EstimatorError> rows = measureEstimatorErrors(p.leafPairs().front(), o);
-        for (const int f : o.footprints) {
+        const std::vector<EstimatorError> rows = table1Errors(which, footprints);
+        for (const int f : footprints) {
             const EstimatorError &paper = rowOf(rows, f, "paper"), &fine = rowOf(rows, f, "sub-probes-4x4-fine-means");
             const double sub4 = rowOf(rows, f, "sub-probes-4x4").sigmaRel;
             std::printf(

@@ -45,6 +45,26 @@ inline vec2 subProbeOffset(ProbeLayout probes, int side, int i, int j) {
            (float(j) + 0.5f - 0.5f * float(side)) / float(side) * across;
 }
 
+// A probe's two levels as one texel's statistics: the trilinear blend, its
+// weights normalised (w0 + w1 is the probe's share of the footprint; the
+// upper level is read only when its weight is > 0).
+inline TexelStats blendLevels(ProbeTexels t, ProbeLevels l) {
+    TexelStats r;
+    r.mean = l.w0 * t.lo.mean;
+    r.var = l.w0 * t.lo.var;
+    r.cov = l.w0 * t.lo.cov;
+    if (l.w1 > 0.0f) {
+        r.mean = r.mean + l.w1 * t.hi.mean;
+        r.var = r.var + l.w1 * t.hi.var;
+        r.cov = r.cov + l.w1 * t.hi.cov;
+    }
+    float w = l.w0 + l.w1;
+    r.mean = r.mean / w;
+    r.var = r.var / w;
+    r.cov = r.cov / w;
+    return r;
+}
+
 // Sub-probes with fine means (docs/MATH.md): a sub-probe's mean is the
 // average of a 2×2 grid of reads one level finer than its square (the
 // sub-probes' grid of twice the side), its variance and covariance its
@@ -62,11 +82,9 @@ inline vec2 fineMean(TexelSource src, coord2 centre, ProbeLayout probes, int sid
     vec2 sum = vec2(0.0f);
     for (int q = 0; q < 4; ++q) {
         coord2 p = centre + coord2(subProbeOffset(probes, 2 * side, 2 * (s % side) + q % 2, 2 * (s / side) + q / 2));
-        ProbeTexels fine = probeTexels(src, p, meanLevels);
-        sum = sum + meanLevels.w0 * fine.lo.mean;
-        if (meanLevels.w1 > 0.0f) sum = sum + meanLevels.w1 * fine.hi.mean;
+        sum = sum + blendLevels(probeTexels(src, p, meanLevels), meanLevels).mean;
     }
-    return sum / (4.0f * (meanLevels.w0 + meanLevels.w1));
+    return 0.25f * sum;
 }
 
 // μ̂, σ̂², ĉov of the source over the footprint centred at uv with these
@@ -108,16 +126,10 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
             if (fine) {
                 // The sub-probe's mean from the finer reads, its (co)variance
                 // from its square's: one sample of weight w0 + w1 = 1/count.
-                float wMean = meanLevels.w0 + meanLevels.w1;
                 vec2 mean = fineMean(src, centre, probes, side, s, meanLevels);
-                vec2 var = levels.w0 * t.lo.var;
-                float cov = levels.w0 * t.lo.cov;
-                if (levels.w1 > 0.0f) {
-                    var = var + levels.w1 * t.hi.var;
-                    cov = cov + levels.w1 * t.hi.cov;
-                }
+                TexelStats square = blendLevels(t, levels);
                 if (k == 0 && s == 0) sums = momentsAbout(mean);
-                sums = momentsAdd(sums, wMean, mean, var / wMean, cov / wMean);
+                sums = momentsAdd(sums, levels.w0 + levels.w1, mean, square.var, square.cov);
             } else {
                 if (k == 0 && s == 0) {
                     sums = momentsAbout(t.lo.mean);
