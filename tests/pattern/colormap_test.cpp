@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -284,4 +285,41 @@ TEST(PrefilteredColormap, ARowOfLookupsIsSamples) {
                 });
             }
         }
+}
+
+// A row whose deviations are all 0 (a zoom at one texel per pixel) takes
+// the first layer's row lookup: still sample's, bit for bit, in both modes,
+// -0 and NaN means included; one nonzero σ sends the row the general way
+// (σ on a level there, where the lanes' smooth level weights are exact).
+TEST(PrefilteredColormap, ARowWithoutDeviationsIsSamples) {
+    Image table(41, 23, 3);
+    for (int y = 0; y < table.height(); ++y)
+        for (int x = 0; x < table.width(); ++x)
+            for (int c = 0; c < 3; ++c) table.at(x, y, c) = float(0.5 + 0.5 * std::cos(0.7 * x + 0.5 * y * c));
+    const ColormapTable h(table);
+    for (const PrefilterMode mode : {PrefilterMode::Paper, PrefilterMode::Smooth}) {
+        const PrefilteredColormap p(h, mode);
+        for (const size_t count : {size_t(3), size_t(600)})
+            for (const bool oneDeviation : {false, true}) {
+                std::vector<float> mx(count), my(count), sx(count, 0.0f), sy(count, 0.0f);
+                for (size_t k = 0; k < count; ++k) {
+                    mx[k] = float(k) / float(count) * 1.2f - 0.1f;
+                    my[k] = 0.5f + 0.45f * std::sin(0.3f * float(k));
+                }
+                sx[0] = -0.0f;
+                mx[1] = std::nanf("");
+                if (oneDeviation) sy[count - 1] = 4.0f / 256.0f;  // on a level: the lanes' log2 is exact there
+                test::forEachLaneTarget([&](const char*) {
+                    std::vector<float> rgb(count * 3, -1.0f);
+                    const size_t inLanes = p.sampleRow(mx.data(), my.data(), sx.data(), sy.data(), rgb.data(), count);
+                    EXPECT_GE(inLanes + size_t(kMaxFloatLanes) - 1, count);
+                    for (size_t k = 0; k < count; ++k) {
+                        const Rgb c = p.sample(mx[k], my[k], sx[k], sy[k]);
+                        for (size_t i = 0; i < 3; ++i)
+                            ASSERT_EQ(std::bit_cast<uint32_t>(rgb[k * 3 + i]), std::bit_cast<uint32_t>(c[i]))
+                                << "pixel " << k << " of " << count << ", mode " << int(mode);
+                    }
+                });
+            }
+    }
 }

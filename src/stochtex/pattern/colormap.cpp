@@ -31,15 +31,17 @@ static Image flipRows(const Image& image) {
     return out;
 }
 
-void ColormapTable::sampleRow(const float* x, const float* y, size_t stride, float* rgb, size_t count) const {
+size_t ColormapTable::sampleRow(const float* x, const float* y, size_t stride, float* rgb, size_t count) const {
     // In chunks whose taps stay in L1 beside the table's lines.
     constexpr size_t kChunk = 256;
     int32_t entry[kChunk];
     float tx[kChunk], ty[kChunk];
+    size_t inLanes = 0;
     for (size_t k0 = 0; k0 < count; k0 += kChunk) {
         const size_t n = std::min(kChunk, count - k0);
         const size_t lanes =
             tableTapsLanes(x + k0 * stride, y + k0 * stride, stride, width_, height_, n, entry, tx, ty);
+        inLanes += lanes;
         for (size_t k = 0; k < lanes; ++k) {
             const Rgb c = blend({size_t(entry[k]), tx[k], ty[k]});
             std::copy(c.begin(), c.end(), rgb + (k0 + k) * 3);
@@ -49,6 +51,7 @@ void ColormapTable::sampleRow(const float* x, const float* y, size_t stride, flo
             std::copy(c.begin(), c.end(), rgb + k * 3);
         }
     }
+    return inLanes;
 }
 
 bool ColormapTable::operator==(const ColormapTable& other) const {

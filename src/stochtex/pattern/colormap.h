@@ -74,8 +74,9 @@ public:
     // sample(x[k·stride], y[k·stride]) into rgb[3k..3k+2] for k < count
     // (stride 1, or 3: the first channel of vec3 rows): the taps of whole
     // vectors of values computed in SIMD lanes (tableTapsLanes), the same
-    // values as sample's.
-    void sampleRow(const float* x, const float* y, size_t stride, float* rgb, size_t count) const;
+    // values as sample's. Returns how many the lanes tapped (the rest: one
+    // at a time).
+    size_t sampleRow(const float* x, const float* y, size_t stride, float* rgb, size_t count) const;
 
     size_t bytes() const { return rgba_.size() * sizeof(Texel); }
     // The same resolution and entries (RGB; the unused alpha is not compared).
