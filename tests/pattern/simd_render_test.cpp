@@ -9,14 +9,19 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
 #include "lane_targets.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/pattern/graph_pattern.h"
+#include "stochtex/pattern/json_reader.h"
+#include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/presets.h"
+#include "test_util.h"
 
 namespace stochtex {
 namespace {
@@ -79,8 +84,7 @@ TEST(SimdRender, EveryGraphFileAgreesWithTheScalarKernel) {
 // lanes. Scales at a whole level (one texel footprint), between levels
 // (trilinear) and magnified; the paper's and Deliot–Heitz's variances, both
 // prefiltered tables.
-TEST(SimdRender, FilteredZoomsAgreeWithTheScalarKernel) {
-    const GraphPattern program = GraphPattern::build(loadPreset("camouflage"));
+void expectFilteredZoomsAgree(const GraphPattern& program, std::initializer_list<double> scales) {
     ASSERT_NE(program.plainColormap(), nullptr);
     for (const char* filter : {"paper", "smooth"})
         for (const VarianceEstimator estimator : {VarianceEstimator::Paper, VarianceEstimator::DeliotHeitz}) {
@@ -90,7 +94,7 @@ TEST(SimdRender, FilteredZoomsAgreeWithTheScalarKernel) {
             FilterOptions scalarOptions = options;
             scalarOptions.cpuKernel = CpuKernel::Scalar;
             const FilteredGraph lanes(program, options), scalar(program, scalarOptions);
-            for (const double scale : {0.37, 1.0, 2.0, 4.7, 16.0, 300.0, 1.0e4}) {
+            for (const double scale : scales) {
                 SCOPED_TRACE(std::string(filter) + " " + enumName(kVarianceEstimatorNames, estimator) + " at scale " +
                              std::to_string(scale));
                 Camera camera;
@@ -104,6 +108,34 @@ TEST(SimdRender, FilteredZoomsAgreeWithTheScalarKernel) {
                     [&](const char*) { EXPECT_LE(maxAbsDifference(lanes.render(camera), reference), 1e-5); });
             }
         }
+}
+
+TEST(SimdRender, FilteredZoomsAgreeWithTheScalarKernel) {
+    expectFilteredZoomsAgree(GraphPattern::build(loadPreset("camouflage")), {0.37, 1.0, 2.0, 4.7, 16.0, 300.0, 1.0e4});
+}
+
+// A Gaussianized exemplar's filtered zoom stays in the Gaussianized space
+// (the table applies T⁻¹): at one texel per pixel the lanes read the
+// example's own texels, which must not go through T⁻¹ as an unfiltered
+// blend does, nor differ from the pyramid's level 0 that the scalar kernel
+// reads.
+TEST(SimdRender, FilteredZoomsOfAGaussianizedExemplarAgreeWithTheScalarKernel) {
+    const std::filesystem::path dir = test::scratchPath("stochtex_simd_render_test");
+    std::filesystem::create_directories(dir);
+    Image ex(64, 64, 1);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            ex.at(x, y) = (std::sin(x * 0.3) * std::cos(y * 0.2) > 0 ? 0.8f : 0.2f) +
+                          0.05f * float((x * 7 + y * 13) % 10) / 10.0f;
+    writeImage((dir / "bimodal.png").string(), ex, kNoTransfer);  // noise values: data
+    const std::string text = R"({"name": "exemplar", "seed": 3,
+        "noise_x": {"type": "image", "path": "bimodal.png", "gaussianize": true},
+        "noise_y": {"type": "image", "path": "bimodal.png", "gaussianize": true},
+        "colormap": {"type": "gaussian"}})";
+    const GraphPattern program =
+        GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "test"), "test"), dir));
+    ASSERT_TRUE(program.leaf(0).example().gaussianized());
+    expectFilteredZoomsAgree(program, {1.0, 2.0});
 }
 
 TEST(SimdRender, IdenticalForAnyThreadCount) {

@@ -198,7 +198,7 @@ struct TileRow {
 // at every pixel of the row.
 template <int C>
 void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& grid, const GridRowLanes& row,
-                  float* out, float* variance) {
+                  float* out, float* variance, bool outputSpace) {
     static_assert(C == 1 || C == 2);
     const DF df;
     const DU du;
@@ -219,7 +219,8 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
     const float pointTexelV = kernel::texelOfPoint(row.fv, size);
     const auto tv = hn::Set(df, pointTexelV);
     const auto oneU = hn::Set(du, 1u);
-    const std::vector<float>* lut = C == 1 && example.transform() ? &example.transform()->inverseLut() : nullptr;
+    const std::vector<float>* lut =
+        C == 1 && outputSpace && example.transform() ? &example.transform()->inverseLut() : nullptr;
     // The tiles of the last vector whose lanes all saw one triangle.
     kernel::Stencil shared{};
     bool sharedValid = false;
@@ -315,13 +316,13 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
     }
 }
 
-void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out) {
-    BlendGridRow<1>(noise, noise.example().grid(), row, out, nullptr);
+void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out, bool outputSpace) {
+    BlendGridRow<1>(noise, noise.example().grid(), row, out, nullptr, outputSpace);
 }
 
 void BlendLevelRowImpl(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,
                        float* mean, float* variance) {
-    BlendGridRow<2>(noise, level, row, mean, variance);
+    BlendGridRow<2>(noise, level, row, mean, variance, false);
 }
 
 // The 2D taps of values x[k·stride], y[k·stride] (stride 1 or 3) in a
@@ -457,7 +458,11 @@ void GridRowLanes::compute(double offset, double scale, double invW, double v, i
 }
 
 void blendRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out) {
-    HWY_DYNAMIC_DISPATCH(BlendRowImpl)(noise, row, out);
+    HWY_DYNAMIC_DISPATCH(BlendRowImpl)(noise, row, out, true);
+}
+
+void blendExampleRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out) {
+    HWY_DYNAMIC_DISPATCH(BlendRowImpl)(noise, row, out, false);
 }
 
 void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,

@@ -46,6 +46,10 @@ struct GridRowLanes {
 // N(u) in the noise's output space (T⁻¹ applied for a Gaussianized
 // exemplar) at every pixel of the row: out[p] for p < paddedLaneCount(row.count).
 void blendRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out);
+// The same in the example's own space (no T⁻¹): the means of level 0 of
+// the noise's statistics pyramid, the example's texels (their variances
+// are 0), as the filtered zoom reads them at one texel per pixel.
+void blendExampleRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out);
 
 // Eq. 8 and 12 on a level of the noise's statistics pyramid (mean and
 // variance per texel, filter/pyramid.h) at every pixel of the row: N̂_l and

@@ -1142,6 +1142,11 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
     const kernel::ProbeLevels levels = kernel::probeLevels(shape.layout.lod, e.maxLod(), 1);
     const int levelCount = levels.w1 > 0.0f ? 2 : 1;
     const bool single = kernel::isSingleTexel(1, levels.frac);
+    // One texel of level 0 (a zoom at one texel per pixel): its mean is the
+    // example's texel and its variance 0, so the example's own grid serves,
+    // one channel instead of the pyramid's interleaved two (not with 8-bit
+    // pyramids, whose means are rounded).
+    const bool exampleTexels = single && levels.l0 == 0 && !options_.pack8;
     const kernel::vec3 averageL0 = e.levelAverages(levels.l0);
     const std::array<int, 2> level{levels.l0, levels.l1};
     const bool deliotHeitz = options_.estimator == VarianceEstimator::DeliotHeitz;
@@ -1162,10 +1167,14 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
             for (int py = y0; py < y1; ++py) {
                 grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width, field.grid());
                 for (int k = 0; k < levelCount; ++k)
-                    for (int a = 0; a < 2; ++a)
-                        blendRowLanes(field.channel(a), e.pyramid(a).level(level[size_t(k)]), grid,
-                                      buffer.data() + padded * size_t(4 * k + a),
-                                      buffer.data() + padded * size_t(4 * k + 2 + a));
+                    for (int a = 0; a < 2; ++a) {
+                        float* mean = buffer.data() + padded * size_t(4 * k + a);
+                        if (exampleTexels)  // the variance rows stay 0
+                            blendExampleRowLanes(field.channel(a), grid, mean);
+                        else
+                            blendRowLanes(field.channel(a), e.pyramid(a).level(level[size_t(k)]), grid, mean,
+                                          buffer.data() + padded * size_t(4 * k + 2 + a));
+                    }
                 for (size_t px = 0; px < size_t(view.width); ++px) {
                     // The kernel's loop (one probe, no sub-probes) on the row's
                     // statistics, or for a single texel its statistics directly,
