@@ -72,8 +72,8 @@ inline TexelStats blendLevels(ProbeTexels t, ProbeLevels l) {
 // read is a box convolved with a tent, three times the box's second moment:
 // read at the square's level, the sub-probes' means are blurred over their
 // neighbours' squares, which lowers the spread that σ̂² adds up and
-// smooths μ̂. Reads one level finer, spaced by their own texel, halve that
-// excess, and their tents, as wide as their spacing on a whole level,
+// smooths μ̂. Reads one level finer, spaced by their own texel, make it
+// 1.5× the box's, and their tents, as wide as their spacing on a whole level,
 // still tile the square (tents of half-width h spaced by h sum to 1): μ̂
 // does not alias as reads narrower than their spacing do (a log2 √3 level
 // bias, tried first: docs/RESULTS.md).
