@@ -12,6 +12,7 @@
 
 #include "stochtex/core/error.h"
 #include "stochtex/image/image.h"
+#include "stochtex/image/image_io.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/pattern/json_reader.h"
 #include "stochtex/pattern/pattern_spec.h"
@@ -74,6 +75,23 @@ inline Image example(SpectrumShape shape, double f, double b, double theta, uint
 // `name`, relative paths are against the working directory.
 inline PatternSpec parsePatternText(const std::string& text, const std::string& name = "g.json") {
     return parsePatternSpec(JsonReader(JsonReader::parse(text, name), name), ".");
+}
+
+// A pattern whose two noises are a bimodal 64² exemplar (plateaus at 0.2
+// and 0.8), Gaussianized, under the `gaussian` colormap (H = x shows
+// T⁻¹(N_x)): the exemplar is written into `dir`, which must exist.
+inline PatternSpec gaussianizedBimodalPattern(const std::filesystem::path& dir) {
+    Image ex(64, 64, 1);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            ex.at(x, y) = (std::sin(x * 0.3) * std::cos(y * 0.2) > 0 ? 0.8f : 0.2f) +
+                          0.05f * float((x * 7 + y * 13) % 10) / 10.0f;
+    writeImage((dir / "bimodal.png").string(), ex, kNoTransfer);  // noise values: data
+    const std::string text = R"({"name": "exemplar", "seed": 3,
+        "noise_x": {"type": "image", "path": "bimodal.png", "gaussianize": true},
+        "noise_y": {"type": "image", "path": "bimodal.png", "gaussianize": true},
+        "colormap": {"type": "gaussian"}})";
+    return parsePatternSpec(JsonReader(JsonReader::parse(text, "test"), "test"), dir);
 }
 
 // The InputError that `f` throws; a test failure (and a placeholder error)

@@ -367,17 +367,7 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     // A bimodal exemplar: T⁻¹ must bring its plateaus back on the GPU too.
     const fs::path dir = test::scratchPath("stochtex_gpu_test");
     fs::create_directories(dir);
-    Image ex(64, 64, 1);
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x)
-            ex.at(x, y) = (std::sin(x * 0.3) * std::cos(y * 0.2) > 0 ? 0.8f : 0.2f) +
-                          0.05f * float((x * 7 + y * 13) % 10) / 10.0f;
-    writeImage((dir / "bimodal.png").string(), ex, kNoTransfer);  // noise values: data
-    const std::string text = R"({"name": "exemplar", "seed": 3,
-        "noise_x": {"type": "image", "path": "bimodal.png", "gaussianize": true},
-        "noise_y": {"type": "image", "path": "bimodal.png", "gaussianize": true},
-        "colormap": {"type": "gaussian"}})";
-    const PatternSpec p = parsePatternSpec(JsonReader(JsonReader::parse(text, "test"), "test"), dir);
+    const PatternSpec p = test::gaussianizedBimodalPattern(dir);
     ASSERT_TRUE(GraphPattern::build(p).leaf(0).example().gaussianized());
     View v;
     v.width = v.height = 128;

@@ -234,6 +234,16 @@ TEST(Colormap, ARowOfLookupsIsSamplesBitForBit) {
     });
 }
 
+// A 41×23 table of cosines, a different wave per channel: rows of lookups
+// against single lookups.
+static ColormapTable wavyTable() {
+    Image table(41, 23, 3);
+    for (int y = 0; y < table.height(); ++y)
+        for (int x = 0; x < table.width(); ++x)
+            for (int c = 0; c < 3; ++c) table.at(x, y, c) = float(0.5 + 0.5 * std::cos(0.9 * x + 0.4 * y * c));
+    return ColormapTable(table);
+}
+
 // A row of prefiltered lookups (found ahead, prefetched, in SIMD lanes on
 // Gaussian axes) is sample's, on every lane target: bit for bit in the paper
 // mode and with Beta axes, within 1e-5 in the smooth mode on Gaussian axes
@@ -242,11 +252,7 @@ TEST(Colormap, ARowOfLookupsIsSamplesBitForBit) {
 // means outside [0, 1], NaN, rows shorter than a vector, than the
 // look-ahead, and longer than the lanes' chunk of 256.
 TEST(PrefilteredColormap, ARowOfLookupsIsSamples) {
-    Image table(41, 23, 3);
-    for (int y = 0; y < table.height(); ++y)
-        for (int x = 0; x < table.width(); ++x)
-            for (int c = 0; c < 3; ++c) table.at(x, y, c) = float(0.5 + 0.5 * std::cos(0.9 * x + 0.4 * y * c));
-    const ColormapTable h(table);
+    const ColormapTable h = wavyTable();
     for (const PrefilterMode mode : {PrefilterMode::Paper, PrefilterMode::Smooth})
         for (const BetaAxes beta : {BetaAxes{false, false}, BetaAxes{true, false}, BetaAxes{true, true}}) {
             const PrefilteredColormap p(h, mode, beta);
@@ -292,11 +298,7 @@ TEST(PrefilteredColormap, ARowOfLookupsIsSamples) {
 // -0 and NaN means included; one nonzero σ sends the row the general way
 // (σ on a level there, where the lanes' smooth level weights are exact).
 TEST(PrefilteredColormap, ARowWithoutDeviationsIsSamples) {
-    Image table(41, 23, 3);
-    for (int y = 0; y < table.height(); ++y)
-        for (int x = 0; x < table.width(); ++x)
-            for (int c = 0; c < 3; ++c) table.at(x, y, c) = float(0.5 + 0.5 * std::cos(0.7 * x + 0.5 * y * c));
-    const ColormapTable h(table);
+    const ColormapTable h = wavyTable();
     for (const PrefilterMode mode : {PrefilterMode::Paper, PrefilterMode::Smooth}) {
         const PrefilteredColormap p(h, mode);
         for (const size_t count : {size_t(3), size_t(600)})

@@ -16,10 +16,7 @@
 #include "lane_targets.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
-#include "stochtex/image/image_io.h"
 #include "stochtex/pattern/graph_pattern.h"
-#include "stochtex/pattern/json_reader.h"
-#include "stochtex/pattern/pattern_spec.h"
 #include "stochtex/pattern/presets.h"
 #include "test_util.h"
 
@@ -122,18 +119,7 @@ TEST(SimdRender, FilteredZoomsAgreeWithTheScalarKernel) {
 TEST(SimdRender, FilteredZoomsOfAGaussianizedExemplarAgreeWithTheScalarKernel) {
     const std::filesystem::path dir = test::scratchPath("stochtex_simd_render_test");
     std::filesystem::create_directories(dir);
-    Image ex(64, 64, 1);
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x)
-            ex.at(x, y) = (std::sin(x * 0.3) * std::cos(y * 0.2) > 0 ? 0.8f : 0.2f) +
-                          0.05f * float((x * 7 + y * 13) % 10) / 10.0f;
-    writeImage((dir / "bimodal.png").string(), ex, kNoTransfer);  // noise values: data
-    const std::string text = R"({"name": "exemplar", "seed": 3,
-        "noise_x": {"type": "image", "path": "bimodal.png", "gaussianize": true},
-        "noise_y": {"type": "image", "path": "bimodal.png", "gaussianize": true},
-        "colormap": {"type": "gaussian"}})";
-    const GraphPattern program =
-        GraphPattern::build(parsePatternSpec(JsonReader(JsonReader::parse(text, "test"), "test"), dir));
+    const GraphPattern program = GraphPattern::build(test::gaussianizedBimodalPattern(dir));
     ASSERT_TRUE(program.leaf(0).example().gaussianized());
     expectFilteredZoomsAgree(program, {1.0, 2.0});
 }
