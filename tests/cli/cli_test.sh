@@ -159,7 +159,7 @@ case_stability() {
   grep -q "^smooth/sub-probes-4x4," "$out/stabe/stability.csv" || fail "stability: no row for smooth/sub-probes-4x4: $(cat "$out/stabe/stability.csv")"
   [ "$(wc -l <"$out/stabe/stability.csv")" -eq 4 ] || fail "stability per estimator: expected a header and 3 rows"
   [ -s "$out/stabe/smooth-sub-probes-4x4-001.png" ] || fail "stability per estimator: frames not written: $(ls "$out/stabe")"
-  expect_bad "stability bad estimator" "$out/stabeb" '--estimators: estimator must be paper, deliot-heitz, sub-probes, sub-probes-4x4 or sub-probes-4x4-fine-means, got "nosuch"' -- "$bin" stability --preset gaussian -o "$out/stabeb" --estimators nosuch
+  expect_bad "stability bad estimator" "$out/stabeb" '--estimators: estimator must be paper, deliot-heitz, sub-probes, sub-probes-4x4 or sub-probes-8x8-fine-means, got "nosuch"' -- "$bin" stability --preset gaussian -o "$out/stabeb" --estimators nosuch
   expect_bad "stability repeated estimator" "$out/stabec" "--estimators: estimators must name each estimator once, got paper twice" -- "$bin" stability --preset gaussian -o "$out/stabec" --estimators paper,sub-probes,paper
   expect_bad "stability estimators without effect" "$out/stabed" "--estimators: has no effect without a filter over the estimators (paper, smooth)" -- "$bin" stability --preset gaussian -o "$out/stabed" --filters none,exact --estimators sub-probes
 }
@@ -871,7 +871,7 @@ case_bad_render_flags() {
   "$bin" bake "$work/est.json" --filter smooth -o "$out/estbake" >/dev/null || fail "bake with the file's estimator"
   grep -q '"filter": "smooth"' "$out/estbake/manifest.json" || fail "bake: the manifest's filter is not the table's name: $(grep filter "$out/estbake/manifest.json")"
   grep -q '"estimator": "sub-probes-4x4"' "$out/estbake/manifest.json" || fail "bake: the file's estimator not exported"
-  expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper, deliot-heitz, sub-probes, sub-probes-4x4 or sub-probes-4x4-fine-means, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh
+  expect_bad "bad estimator" "$out/bad24.png" '--estimator: estimator must be paper, deliot-heitz, sub-probes, sub-probes-4x4 or sub-probes-8x8-fine-means, got "dh"' -- "$bin" render --preset gaussian -o "$out/bad24.png" --estimator dh
   expect_bad "stability scale" "$out/sbad1" "--from: from must be in [1e-06, 1e+06], got 0" -- "$bin" stability --preset gaussian -o "$out/sbad1" --from 0
   expect_bad "stability denormal scale" "$out/sbad1b" "--from: from must be in [1e-06, 1e+06], got 4.94066e-324" -- "$bin" stability --preset gaussian -o "$out/sbad1b" --from 4.9e-324
   expect_bad "no pattern" "$out/bad17.png" "give a pattern file or --preset" -- "$bin" render -o "$out/bad17.png"

@@ -220,11 +220,11 @@ TEST(Gpu, FilteredRenderMatchesTheCpu) {
     v.scale = 5.0;
     expectParity(p, v, "woven smooth K=8 sub-probes-4x4", o);
     // Fine means: four more reads per sub-probe, one level finer.
-    o.estimator = VarianceEstimator::SubProbes4x4FineMeans;
-    expectParity(p, v, "woven smooth K=8 sub-probes-4x4-fine-means", o);
+    o.estimator = VarianceEstimator::SubProbes8x8FineMeans;
+    expectParity(p, v, "woven smooth K=8 sub-probes-8x8-fine-means", o);
     o.aniso = 1;
     v.scale = 2.5;
-    expectParity(p, v, "woven smooth K=1 sub-probes-4x4-fine-means", o);
+    expectParity(p, v, "woven smooth K=1 sub-probes-8x8-fine-means", o);
 }
 
 // A view built with a PartCache (the workbench's) draws what one built

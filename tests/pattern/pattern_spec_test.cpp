@@ -144,7 +144,7 @@ TEST(PatternSpec, EnumValuedKeysUseTheNameTables) {
     EXPECT_EQ(parse(base + R"(, "estimator": "sub-probes-4x4")" + gaussian).estimator, VarianceEstimator::SubProbes4x4);
     EXPECT_EQ(errorOf(base + R"(, "estimator": "dh")" + gaussian),
               "test.json: /estimator: unknown value \"dh\" (did you mean deliot-heitz?) (expected one of: paper, "
-              "deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-fine-means)");
+              "deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-8x8-fine-means)");
 }
 
 TEST(PatternSpec, QuadratureShorthandSharesSeedAndOffsets) {

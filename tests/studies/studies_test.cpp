@@ -339,7 +339,7 @@ TEST(Studies, Table1ReducedRowsTablesAndPlots) {
     o.errors.count = 30;
     const Table1Result r = table1(o);
     for (const auto& rows : r.rows) {
-        // 2 sizes × (paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-fine-means, global)
+        // 2 sizes × (paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-8x8-fine-means, global)
         ASSERT_EQ(rows.size(), 12u);
         // As ReducedTable1HasSaneNumbers: at 2×2 the estimators beat the global statistics.
         EXPECT_EQ(rows[5].estimator, "global");
@@ -351,9 +351,9 @@ TEST(Studies, Table1ReducedRowsTablesAndPlots) {
     EXPECT_EQ(r.data.rows[12][0].text, "high");
     EXPECT_EQ(r.data.rows[2][2].text, "sub-probes");
     EXPECT_EQ(r.data.rows[3][2].text, "sub-probes-4x4");
-    EXPECT_EQ(r.data.rows[4][2].text, "sub-probes-4x4-fine-means");
+    EXPECT_EQ(r.data.rows[4][2].text, "sub-probes-8x8-fine-means");
     EXPECT_EQ(*r.data.rows[0][3].number, r.rows[0][0].muAbs);
-    // paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-4x4-fine-means, global, published
+    // paper, deliot-heitz, sub-probes, sub-probes-4x4, sub-probes-8x8-fine-means, global, published
     ASSERT_EQ(r.tables.size(), 7u);
     EXPECT_EQ(r.tables[0].rows.size(), 2u);
     EXPECT_EQ(r.tables[0].rows[1][0].text, "16×16");
@@ -481,7 +481,7 @@ TEST(Studies, Figure12OursBeatsDeliotHeitzAndNeedsTheCovariance) {
                       &fine = r.rows[5], &exact = r.rows[6];
     ASSERT_EQ(sub4.variant, LeanVariant::SubProbes4x4);
     EXPECT_LT(sub4.meanErrorCrop, ours.meanErrorCrop);
-    ASSERT_EQ(fine.variant, LeanVariant::SubProbes4x4FineMeans);
+    ASSERT_EQ(fine.variant, LeanVariant::SubProbes8x8FineMeans);
     std::printf("figure12 crop: sub-probes-4x4 %.4f fine means %.4f\n", sub4.meanErrorCrop, fine.meanErrorCrop);
     EXPECT_LT(fine.meanErrorCrop, ours.meanErrorCrop);
     ASSERT_EQ(ours.variant, LeanVariant::Ours);

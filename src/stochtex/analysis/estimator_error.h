@@ -9,7 +9,7 @@
 //   deliot-heitz — the same mean, one constant variance per level [DH19];
 //   sub-probes   — the paper's, each probe as 2×2 probes one level finer;
 //   sub-probes-4x4 — the same as 4×4 probes two levels finer;
-//   sub-probes-4x4-fine-means — the same, each sub-probe's mean from 2×2
+//   sub-probes-8x8-fine-means — the same, each sub-probe's mean from 2×2
 //                  reads one level finer (kernel/estimate.glsl);
 //   global       — no footprint information: μ_E and σ_E of the whole
 //                  example (what a pixel falls back to without filtering
@@ -79,7 +79,7 @@ std::vector<EstimatorError> summarizeEstimatorErrors(int footprint, const std::v
 // tile offsets; covariances are not measured, so its sharing does not
 // matter). Rows ordered by footprint, then estimator (kVarianceEstimatorNames'
 // order: paper, deliot-heitz, sub-probes, sub-probes-4x4,
-// sub-probes-4x4-fine-means; then global). Multi-threaded over footprints; the
+// sub-probes-8x8-fine-means; then global). Multi-threaded over footprints; the
 // result does not depend on threads. std::invalid_argument for a field
 // without two channels.
 std::vector<EstimatorError> measureEstimatorErrors(const TiledField& field, const EstimatorErrorOptions& options,

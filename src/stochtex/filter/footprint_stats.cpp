@@ -77,9 +77,12 @@ kernel::ProbeTexels FootprintEstimator::probeTexels(kernel::coord2 uv, const ker
     const BlendStencil s = memo.row.stencil(u);
     const float fu = periodFraction(u), fv = memo.fv;
     // Neighbouring pixels mostly see the same tiles on the same scanline:
-    // each thread remembers, per trilinear slot, the last tiles' rows (their
+    // each thread remembers, per level modulo 4, the last tiles' rows (their
     // offsets hashed, their rows located) and reuses them when nothing they
-    // depend on changed. Pure memoisation: results are identical.
+    // depend on changed. Pure memoisation: results are identical. A slot per
+    // level, not per trilinear half: the sub-probes with fine means read
+    // three consecutive levels in turn (their squares' two, the finer one),
+    // which two slots would rehash at every read.
     struct Slot {
         uint64_t owner = 0;  // FootprintEstimator::id_ (addresses can be reused)
         kernel::uvec2 cell{0u, 0u};
@@ -88,13 +91,13 @@ kernel::ProbeTexels FootprintEstimator::probeTexels(kernel::coord2 uv, const ker
         float fv = -1.0f;
         std::array<TilingBlendingNoise::TileRows, 3> rows;  // noise x, noise y, covariance
     };
-    thread_local std::array<Slot, 2> cache;
+    thread_local std::array<Slot, 4> cache;
     kernel::ProbeTexels out{};
     const int count = levels.w1 > 0.0f ? 2 : 1;
     for (int k = 0; k < count; ++k) {
         const int level = k == 0 ? levels.l0 : levels.l1;
         TexelStats& t = k == 0 ? out.lo : out.hi;
-        Slot& slot = cache[size_t(k)];
+        Slot& slot = cache[size_t(level) & 3u];
         if (slot.owner != id_ || slot.level != level || slot.fv != fv || slot.cell != s.cell || slot.upper != s.upper) {
             for (size_t a = 0; a < 2; ++a)
                 slot.rows[a] = noises_[a].tileRows(noises_[a].offsets(s), fv, pyramids_[a].level(level));

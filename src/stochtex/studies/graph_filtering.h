@@ -52,7 +52,7 @@ struct Figure14Column {
     double none = 0, meanOnly = 0, matchedExact = 0, matched = 0;
     // matched with each estimator of kVarianceEstimatorNames after the
     // paper's (matched): deliot-heitz, sub-probes, sub-probes-4x4,
-    // sub-probes-4x4-fine-means.
+    // sub-probes-8x8-fine-means.
     std::vector<double> matchedOtherEstimators;
     // The samples per axis of the reference and the exact statistics, and how
     // much each moved on doubling them.

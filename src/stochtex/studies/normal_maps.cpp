@@ -28,8 +28,8 @@ const std::array<LeanVariantInfo, 8> kLeanVariants{{
      [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes; }},
     {LeanVariant::SubProbes4x4, "sub-probes-4x4", "ours, sub-probes-4x4 estimator",
      [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes4x4; }},
-    {LeanVariant::SubProbes4x4FineMeans, "sub-probes-4x4-fine-means", "ours, sub-probes-4x4-fine-means estimator",
-     [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes4x4FineMeans; }},
+    {LeanVariant::SubProbes8x8FineMeans, "sub-probes-8x8-fine-means", "ours, sub-probes-8x8-fine-means estimator",
+     [](FilterOptions& o) { o.estimator = VarianceEstimator::SubProbes8x8FineMeans; }},
     {LeanVariant::Exact, "exact-statistics", "exact footprint statistics",
      [](FilterOptions& o) { o.source = StatisticsSource::Exact; }},
 }};

@@ -26,7 +26,7 @@ enum class LeanVariant {
     DeliotHeitz,   // one constant variance per LOD and no covariance [DH19] (Fig. 12a)
     SubProbes,     // ours with the sub-probes estimator (issue 32)
     SubProbes4x4,  // ours with the sub-probes-4x4 estimator (issue 32)
-    SubProbes4x4FineMeans,  // ours with the sub-probes-4x4-fine-means estimator (issue 32)
+    SubProbes8x8FineMeans,  // ours with the sub-probes-8x8-fine-means estimator (issue 32)
     Exact,  // the exact footprint moments of the slopes in the lobe: what estimators can reach (issue 32)
 };
 // A variant's name (file names, the CSV), its caption in the figure and

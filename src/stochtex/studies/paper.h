@@ -89,7 +89,7 @@ struct Figure4Column {
     double meanErrorNone = 0;                           // mean ‖S − S̄‖₂: the pixel centres, unfiltered
     // mean ‖Ŝ(μ̂, Σ̂) − S̄‖₂ with each estimator of kVarianceEstimatorNames
     // after the paper's (meanErrorEstimated): deliot-heitz, sub-probes, sub-probes-4x4,
-    // sub-probes-4x4-fine-means.
+    // sub-probes-8x8-fine-means.
     std::vector<double> meanErrorOtherEstimators;
     // With fadesTo: mean ‖S̄ − m‖₂ and ‖Ŝ(μ̂, Σ̂) − m‖₂ over the pixels.
     double meanFadeReference = 0, meanFadeEstimated = 0;
