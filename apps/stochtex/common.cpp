@@ -223,15 +223,14 @@ void applyResponseFlags(const CLI::App& cmd, const ResponseFlags& flags, FilterO
 }
 
 CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options) {
-    return addEnumFlag(
-        cmd, "--estimator", options.estimator, kVarianceEstimatorNames, "estimator",
-        "Footprint estimator: paper | deliot-heitz (one variance per LOD) | sub-probes (the paper's, "
-        "each probe as 2x2 one level finer: 4x the fetches, 0.24-0.43x its sigma error at 2-8 texels "
-        "on Table 1, 1.4-2.1x its time) | sub-probes-4x4 (4x4 two levels finer: 16x the fetches, "
-        "0.04-0.45x its sigma error at 2-16 texels, 3-5.3x its time) | sub-probes-8x8-fine-means (the same, "
-        "each sub-probe's mean from 2x2 reads one level finer: 80x the fetches, 0.04-0.75x its sigma "
-        "error at 2-128 texels, renders within about 5% of the exact floor at 8-32 texels a pixel, 6-36x "
-        "its time; docs/RESULTS.md)");
+    return addEnumFlag(cmd, "--estimator", options.estimator, kVarianceEstimatorNames, "estimator",
+                       "Footprint estimator: paper | deliot-heitz (one variance per LOD) | sub-probes (the paper's, "
+                       "each probe as 2x2 one level finer: 4x the fetches, 0.24-0.43x its sigma error at 2-8 texels "
+                       "on Table 1, 1.4-2.1x its time) | sub-probes-4x4 (4x4 two levels finer: 16x the fetches, "
+                       "0.04-0.45x its sigma error at 2-16 texels, 3-5.3x its time) | sub-probes-8x8-fine-means "
+                       "(8x8 three levels finer, each one's mean from 2x2 reads one level finer: 64-320x the fetches, "
+                       "0.00-0.21x its sigma error at 2-32 texels and 0.52-0.68x at 64-128, renders within 2% of the "
+                       "exact floor at 2-32 texels a pixel, 20-115x its time on the CPU; docs/RESULTS.md)");
 }
 
 CLI::Option* addAnisoFlag(CLI::App& cmd, int& aniso) {
