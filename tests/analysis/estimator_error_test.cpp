@@ -59,6 +59,15 @@ TEST(EstimatorError, ReducedTable1HasSaneNumbers) {
                                        ? kVarianceEstimatorNames[i % perSize].first
                                        : std::string("global"));
             EXPECT_EQ(r.values, 300);
+            // At 2 texels the 8×8 fine-mean sub-probes read level 0 at the
+            // centres of an 8×8 grid over the footprint: the exact
+            // statistics' own samples (8 per axis at least), so only float
+            // rounding tells them apart (docs/RESULTS.md).
+            if (r.estimator == "sub-probes-8x8-fine-means" && r.footprint == 2) {
+                EXPECT_LT(r.muAbs, 1e-6);
+                EXPECT_LT(r.sigmaRel, 1e-5);
+                continue;
+            }
             // No error at all would mean an estimate compared with itself.
             for (double v : {r.muAbs, r.muRel, r.sigmaAbs, r.sigmaRel}) EXPECT_GT(v, 1e-6);
             // Relative errors are absolute errors over references of known
