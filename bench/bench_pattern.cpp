@@ -52,15 +52,20 @@ BENCHMARK(BM_RenderUnfiltered)->Arg(0)->Arg(1)->ArgName("threads")->Unit(benchma
 // The SIMD evaluator against its scalar reference (issue 33), timed
 // alternately on one thread, 1024², scale 1: arg 0 the camouflage preset
 // (a plain program: leaves in lanes, its colormap per pixel), 1 the one-noise graph of
-// BM_RenderSingleNoise (leaves in lanes, the colormap op per pixel).
+// BM_RenderSingleNoise (leaves in lanes, the colormap op per pixel), 2 the
+// figure14 graph (three leaves, a field colormap and a colormap op).
 // Counters: simd_ and scalar_Mtexel/s, speedup = scalar time / SIMD time
 // and floor_ratio = SIMD time / the same-run gather floor of its pairs.
 const GraphPattern& singleNoise();
+const GraphPattern& figure14() {
+    static const GraphPattern p = GraphPattern::build(loadPreset("figure14"));
+    return p;
+}
 void BM_SimdVsScalarUnfiltered(benchmark::State& state) {
     ThreadLimit limit(1);
     View view;
     view.width = view.height = 1024;
-    const GraphPattern& p = state.range(0) == 0 ? camouflage() : singleNoise();
+    const GraphPattern& p = state.range(0) == 0 ? camouflage() : state.range(0) == 1 ? singleNoise() : figure14();
     const auto t = bench::timeAlternately(
         state, [&] { benchmark::DoNotOptimize(p.render(view, {}, CpuKernel::Simd).data().data()); },
         [&] { benchmark::DoNotOptimize(p.render(view, {}, CpuKernel::Scalar).data().data()); });
@@ -69,7 +74,13 @@ void BM_SimdVsScalarUnfiltered(benchmark::State& state) {
     // Per pixel and leaf: three tiles, two rows, one pair each.
     reportFloorRatio(state, t.first, double(view.width) * view.height * 6 * p.leafCount());
 }
-BENCHMARK(BM_SimdVsScalarUnfiltered)->ArgName("program")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SimdVsScalarUnfiltered)
+    ->ArgName("program")
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The same for a filtered zoom of the camouflage preset (smooth table,
 // paper's variances), 1024², one thread: arg the scale (1: one texel

@@ -13,6 +13,9 @@ namespace stochtex {
 struct ColormapFieldOp {
     using Params = kernel::ColormapFieldParams;
     static constexpr const char* kKernel = "colormap_field_op";
+    // Its point value is its table at (x, y), a row of them a row of lookups
+    // (ops.h, opPointRow); filtered it matches moments, so not a plain lookup.
+    static constexpr bool kPointLookup = true;
     static NodeInfo info() {
         return {"colormap_field",
                 "transfer",

@@ -75,9 +75,9 @@ kernel::vec3 opFiltered(const OpParams& op, kernel::vec3 a, kernel::vec3 b, kern
 
 void opPointRow(const OpParams& op, const kernel::vec3* a, const kernel::vec3* b, const kernel::vec3* c,
                 kernel::vec3* out, int n, const kernel::OpContext& ctx) {
-    // A plain lookup's opPoint is its table at (a.x, b.x): a row of them is
-    // one row of table lookups, tapped in lanes.
-    if (n > 1 && ctx.pointTable && opIsPlainLookup(op)) {
+    // A lookup's opPoint is its table at (a.x, b.x): a row of them is one
+    // row of table lookups, tapped in lanes.
+    if (n > 1 && ctx.pointTable && opPointIsLookup(op)) {
         static_assert(sizeof(kernel::vec3) == 3 * sizeof(float), "rows of vec3 are rows of floats, stride 3");
         ctx.pointTable->sampleRow(&a->x, &b->x, 3, &out->x, size_t(n));
         return;
@@ -96,6 +96,7 @@ namespace {
 struct OpTraits {
     bool shadesLight = false;  // kShadesLight
     bool plainLookup = false;  // kPlainLookup
+    bool pointLookup = false;  // kPointLookup, or kPlainLookup
 };
 template <size_t I>
 constexpr OpTraits traitsOf() {
@@ -103,6 +104,8 @@ constexpr OpTraits traitsOf() {
     OpTraits t;
     if constexpr (requires { Op::kShadesLight; }) t.shadesLight = Op::kShadesLight;
     if constexpr (requires { Op::kPlainLookup; }) t.plainLookup = Op::kPlainLookup;
+    if constexpr (requires { Op::kPointLookup; }) t.pointLookup = Op::kPointLookup;
+    t.pointLookup = t.pointLookup || t.plainLookup;
     return t;
 }
 constexpr auto kOpTraits = []<size_t... I>(std::index_sequence<I...>) {
@@ -115,6 +118,8 @@ constexpr auto kOpTraits = []<size_t... I>(std::index_sequence<I...>) {
 bool opShadesLight(const OpParams& op) { return kOpTraits[op.index()].shadesLight; }
 
 bool opIsPlainLookup(const OpParams& op) { return kOpTraits[op.index()].plainLookup; }
+
+bool opPointIsLookup(const OpParams& op) { return kOpTraits[op.index()].pointLookup; }
 
 nlohmann::json opManifest(const OpParams& op) {
     return std::visit(

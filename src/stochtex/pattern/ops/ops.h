@@ -80,6 +80,11 @@ bool opShadesLight(const OpParams& op);
 // run through one lookup (GraphPattern::plainColormap; an op declares
 // `static constexpr bool kPlainLookup = true`).
 bool opIsPlainLookup(const OpParams& op);
+// Whether the op's point value is its table at its two inputs (x, y), so
+// that a row of them is one row of table lookups (opPointRow): every plain
+// lookup, and an op that declares `static constexpr bool kPointLookup =
+// true` (a colormap read as a field, whose filtered value is not a lookup).
+bool opPointIsLookup(const OpParams& op);
 // What an engine reads of the op beside the generated GLSL, for an export's
 // manifest.json (an op declares `static nlohmann::json manifest(const
 // Params&)`, e.g. a lean op's light; null otherwise).
