@@ -225,6 +225,28 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
     kernel::Stencil shared{};
     bool sharedValid = false;
     std::array<TileRow, 3> sharedRows{};
+    // The tiles of the row's lattice vertices, memoised: along a row each
+    // new triangle shares two of its three vertices with the last, so a
+    // vertex's offset is hashed and its rows located about once instead of
+    // once per triangle that has it (kernel::tileOffset, then
+    // TilingBlendingNoise::tileRows' arithmetic). Direct-mapped by (x mod 4,
+    // dy): the triangles walk the vertices in order of x.
+    struct VertexTile {
+        bool valid = false;
+        uint32_t x = 0;
+        TileRow tile{};
+    };
+    std::array<VertexTile, 8> vertexTiles{};
+    const auto vertexTile = [&](uint32_t x, uint32_t dy) -> const TileRow& {
+        VertexTile& v = vertexTiles[size_t((x & 3u) * 2u + dy)];
+        if (!v.valid || v.x != x) {
+            const TileOffset o = kernel::tileOffset(kernel::uvec2(x, row.cellY + dy), noise.offsetSeed());
+            const float ty = kernel::periodicTexel(pointTexelV, o.y * size, size);
+            const int iy = int(ty);
+            v = {true, x, {o.x * size, iy * stride, ty - float(iy)}};
+        }
+        return v.tile;
+    };
     for (size_t p = 0; p < row.cellX.size(); p += n) {
         const auto fx = hn::LoadU(df, row.fx.data() + p);
         const auto cellX = hn::LoadU(du, row.cellX.data() + p);
@@ -269,16 +291,16 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
         const bool firstUpper = hn::AllTrue(df, upper);
         if (hn::AllTrue(du, hn::Eq(cellX, hn::Set(du, firstCell))) && (firstUpper || hn::AllFalse(df, upper))) {
             // Every lane sees the same three tiles (most vectors: a tile
-            // spans tens of pixels): their offsets are hashed and their rows
-            // located once, by the scalar kernel, and reused while they last.
+            // spans tens of pixels): their vertices' offsets and rows, found
+            // by the scalar kernel (vertexTile), are reused while they last.
             if (!sharedValid || shared.cell.x != firstCell || shared.upper != firstUpper) {
                 shared.cell = kernel::uvec2(firstCell, row.cellY);
                 shared.upper = firstUpper;
-                const TilingBlendingNoise::Offsets offs = noise.offsets(shared);
-                for (size_t i = 0; i < 3; ++i) {
-                    const float ty = kernel::periodicTexel(pointTexelV, offs[i].y * size, size);
-                    const int iy = int(ty);
-                    sharedRows[i] = {offs[i].x * size, iy * stride, ty - float(iy)};
+                // kernel::stencilVertex: upper (1,1), (1,0), (0,1); lower (0,0), (0,1), (1,0).
+                for (int i = 0; i < 3; ++i) {
+                    const uint32_t dx = firstUpper ? uint32_t(i < 2) : uint32_t(i == 2);
+                    const uint32_t dy = firstUpper ? uint32_t(i != 1) : uint32_t(i == 1);
+                    sharedRows[size_t(i)] = vertexTile(firstCell + dx, dy);
                 }
                 sharedValid = true;
             }
