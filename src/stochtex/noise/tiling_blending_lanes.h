@@ -9,8 +9,9 @@
 // order of operations, written in Highway ops and dispatched at run time to
 // the widest vectors the CPU has (SSSE3, SSE4, AVX2, AVX-512; a one-lane
 // fallback elsewhere). A vector whose
-// lanes all see one triangle (most: a tile spans tens of pixels) hashes its
-// tiles once, by the scalar kernel, and keeps them while they last. The
+// lanes all see one triangle (most: a tile spans tens of pixels) takes its
+// tiles from the scalar kernel, each lattice vertex's hashed once per row,
+// and keeps them while they last. The
 // scalar kernel stays the reference: tests/noise/ holds the lanes to
 // TilingBlendingNoise::blend within 1e-5 (on AVX2 they are bit-identical).
 #include <cstdint>
