@@ -92,6 +92,15 @@ kernel::ProbeTexels FootprintEstimator::probeTexels(kernel::coord2 uv, const ker
         std::array<TilingBlendingNoise::TileRows, 3> rows;  // noise x, noise y, covariance
     };
     thread_local std::array<Slot, 4> cache;
+    // The tiles' offsets depend on the triangle alone, not on v or the
+    // level: a footprint's sub-probes, each at its own v, mostly share it.
+    struct OffsetMemo {
+        uint64_t owner = 0;
+        kernel::uvec2 cell{0u, 0u};
+        bool upper = false;
+        std::array<TilingBlendingNoise::Offsets, 2> offsets;
+    };
+    thread_local OffsetMemo offsetMemo;
     kernel::ProbeTexels out{};
     const int count = levels.w1 > 0.0f ? 2 : 1;
     for (int k = 0; k < count; ++k) {
@@ -99,9 +108,15 @@ kernel::ProbeTexels FootprintEstimator::probeTexels(kernel::coord2 uv, const ker
         TexelStats& t = k == 0 ? out.lo : out.hi;
         Slot& slot = cache[size_t(level) & 3u];
         if (slot.owner != id_ || slot.level != level || slot.fv != fv || slot.cell != s.cell || slot.upper != s.upper) {
+            if (offsetMemo.owner != id_ || offsetMemo.cell != s.cell || offsetMemo.upper != s.upper) {
+                for (size_t a = 0; a < 2; ++a) offsetMemo.offsets[a] = noises_[a].offsets(s);
+                offsetMemo.owner = id_;
+                offsetMemo.cell = s.cell;
+                offsetMemo.upper = s.upper;
+            }
             for (size_t a = 0; a < 2; ++a)
-                slot.rows[a] = noises_[a].tileRows(noises_[a].offsets(s), fv, pyramids_[a].level(level));
-            if (covariance_) slot.rows[2] = noises_[0].tileRows(noises_[0].offsets(s), fv, covariance_->level(level));
+                slot.rows[a] = noises_[a].tileRows(offsetMemo.offsets[a], fv, pyramids_[a].level(level));
+            if (covariance_) slot.rows[2] = noises_[0].tileRows(offsetMemo.offsets[0], fv, covariance_->level(level));
             slot.owner = id_;
             slot.cell = s.cell;
             slot.upper = s.upper;
