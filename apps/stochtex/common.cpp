@@ -229,7 +229,7 @@ CLI::Option* addEstimatorFlag(CLI::App& cmd, FilterOptions& options) {
                        "on Table 1, 1.4-2.1x its time) | sub-probes-4x4 (4x4 two levels finer: 16x the fetches, "
                        "0.04-0.45x its sigma error at 2-16 texels, 3-5.3x its time) | sub-probes-8x8-fine-means "
                        "(8x8 three levels finer, each one's mean from 2x2 reads one level finer: 64-320x the fetches, "
-                       "0.00-0.21x its sigma error at 2-32 texels and 0.52-0.68x at 64-128, renders within 2% of the "
+                       "0.00-0.21x its sigma error at 2-32 texels and 0.18-0.68x at 64-128, renders at 0.98-1.02x the "
                        "exact floor at 2-32 texels a pixel, 20-115x its time on the CPU; docs/RESULTS.md)");
 }
 
