@@ -296,11 +296,9 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
             if (!sharedValid || shared.cell.x != firstCell || shared.upper != firstUpper) {
                 shared.cell = kernel::uvec2(firstCell, row.cellY);
                 shared.upper = firstUpper;
-                // kernel::stencilVertex: upper (1,1), (1,0), (0,1); lower (0,0), (0,1), (1,0).
                 for (int i = 0; i < 3; ++i) {
-                    const uint32_t dx = firstUpper ? uint32_t(i < 2) : uint32_t(i == 2);
-                    const uint32_t dy = firstUpper ? uint32_t(i != 1) : uint32_t(i == 1);
-                    sharedRows[size_t(i)] = vertexTile(firstCell + dx, dy);
+                    const kernel::uvec2 v = kernel::stencilVertex(shared, i);  // the plane's: no period
+                    sharedRows[size_t(i)] = vertexTile(v.x, v.y - row.cellY);
                 }
                 sharedValid = true;
             }
