@@ -83,8 +83,9 @@ BENCHMARK(BM_SimdVsScalarUnfiltered)
     ->UseRealTime();
 
 // The same for a filtered zoom of the camouflage preset (smooth table,
-// paper's variances), 1024², one thread: arg the scale (1: one texel
-// footprint per pixel at level 0; 4.7: two levels, trilinear).
+// paper's variances), 1024², one thread: arg the scale ×10 (10: one texel
+// footprint per pixel at level 0; 40: level 2 alone; 47: two levels,
+// trilinear).
 void BM_SimdVsScalarFiltered(benchmark::State& state) {
     ThreadLimit limit(1);
     Camera camera;
@@ -100,12 +101,14 @@ void BM_SimdVsScalarFiltered(benchmark::State& state) {
     bench::reportAlternateRates(state, double(camera.view.width) * camera.view.height, bench::TexelRate::Mega,
                                 {"simd", t.first}, {"scalar", t.second}, "speedup");
     // Per pixel, level and leaf: three tiles, two rows, a pair left and right.
-    const int levels = state.range(0) == 10 ? 1 : 2;
+    const double lod = std::log2(camera.view.scale);
+    const int levels = lod == std::floor(lod) ? 1 : 2;
     reportFloorRatio(state, t.first, double(camera.view.width) * camera.view.height * 12 * 2 * levels);
 }
 BENCHMARK(BM_SimdVsScalarFiltered)
     ->ArgName("scale_x10")
     ->Arg(10)
+    ->Arg(40)
     ->Arg(47)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
