@@ -161,6 +161,17 @@ HWY_INLINE bool WindowTaps(DF df, const float* below, size_t available, int stri
     const int n = int(hn::Lanes(df));
     const int ix0 = hn::GetLane(ix);
     const auto d = hn::Sub(ix, hn::Set(di, ix0));
+    if (hn::AllTrue(di, hn::Eq(d, hn::Iota(di, 0)))) {
+        // Consecutive columns (one texel a pixel, as a zoom at scale 1
+        // reads): each tap is the window itself, no permute.
+        if (size_t(C * ix0 + stride + C * (1 + n)) > available) return false;
+        const float* left = below + C * ix0;
+        LoadChannels<C>(df, left, bl);
+        LoadChannels<C>(df, left + C, br);
+        LoadChannels<C>(df, left + stride, al);
+        LoadChannels<C>(df, left + stride + C, ar);
+        return true;
+    }
     if (!hn::AllFalse(di, hn::Lt(d, hn::Zero(di))) || !hn::AllTrue(di, hn::Lt(d, hn::Set(di, 2 * n)))) return false;
     const bool narrow = hn::AllTrue(di, hn::Lt(d, hn::Set(di, n)));
     if (size_t(C * ix0 + stride + C * (1 + (narrow ? n : 2 * n))) > available) return false;
