@@ -65,6 +65,23 @@ inline TexelStats blendLevels(ProbeTexels t, ProbeLevels l) {
     return r;
 }
 
+// A probe's reads with their levels' average within-texel statistics in
+// place of theirs (Deliot–Heitz).
+inline ProbeTexels deliotHeitzProbe(ProbeTexels t, vec3 averageLo, vec3 averageHi, bool hasCovariance) {
+    t.lo = deliotHeitzTexel(t.lo, averageLo, hasCovariance);
+    t.hi = deliotHeitzTexel(t.hi, averageHi, hasCovariance);
+    return t;
+}
+
+// A probe's two level reads as two samples of eq. 14–15, each of its
+// level's weight (the upper read only where it weighs). The CPU's zoom rows
+// (one probe a pixel) call it directly: FilteredGraph::renderZoomInLanes.
+inline Moments momentsAddProbe(Moments sums, ProbeTexels t, ProbeLevels levels) {
+    sums = momentsAdd(sums, levels.w0, t.lo.mean, t.lo.var, t.lo.cov);
+    if (levels.w1 > 0.0f) sums = momentsAdd(sums, levels.w1, t.hi.mean, t.hi.var, t.hi.cov);
+    return sums;
+}
+
 // Sub-probes with fine means (docs/MATH.md): a sub-probe's mean is the
 // average of a 2×2 grid of reads one level finer than its square (the
 // sub-probes' grid of twice the side), its variance and covariance its
@@ -119,10 +136,7 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
         for (int s = 0; s < side * side; ++s) {
             coord2 p = side > 1 ? centre + coord2(subProbeOffset(probes, side, s % side, s / side)) : centre;
             ProbeTexels t = probeTexels(src, p, levels);
-            if (deliotHeitz) {
-                t.lo = deliotHeitzTexel(t.lo, averageLo, hasCovariance);
-                t.hi = deliotHeitzTexel(t.hi, averageHi, hasCovariance);
-            }
+            if (deliotHeitz) t = deliotHeitzProbe(t, averageLo, averageHi, hasCovariance);
             if (fine) {
                 // The sub-probe's mean from the finer reads, its (co)variance
                 // from its square's: one sample of weight w0 + w1 = 1/count.
@@ -135,8 +149,7 @@ inline FootprintMoments footprintEstimate(TexelSource src, coord2 uv, ProbeLayou
                     sums = momentsAbout(t.lo.mean);
                     first = t.lo;
                 }
-                sums = momentsAdd(sums, levels.w0, t.lo.mean, t.lo.var, t.lo.cov);
-                if (levels.w1 > 0.0f) sums = momentsAdd(sums, levels.w1, t.hi.mean, t.hi.var, t.hi.cov);
+                sums = momentsAddProbe(sums, t, levels);
             }
         }
     }

@@ -1111,12 +1111,10 @@ bool FilteredGraph::zoomInLanes(const Footprint& shape) const {
 
 namespace {
 
-// The kernel's texel source (kernel/estimate.glsl) for one pixel of a row
-// whose texel statistics the lanes computed: the estimator's loop, found by
-// argument-dependent lookup, reads them instead of fetching.
+// One pixel of a row whose texel statistics the lanes computed, as the
+// kernel's texel source (kernel/estimate.glsl) gives a probe's reads.
 struct RowTexels {
     const std::array<std::array<const float*, 4>, 2>* rows;  // per level: N̂_x, N̂_y, σ̂²_x, σ̂²_y
-    const FootprintEstimator* estimator;
     size_t px;
 };
 kernel::TexelStats rowTexel(const RowTexels& s, int k) {
@@ -1127,10 +1125,7 @@ kernel::TexelStats rowTexel(const RowTexels& s, int k) {
     t.cov = 0.0f;
     return t;
 }
-kernel::ProbeTexels probeTexels(const RowTexels& s, kernel::coord2, kernel::ProbeLevels) {
-    return {rowTexel(s, 0), rowTexel(s, 1)};
-}
-kernel::vec3 levelAverages(const RowTexels& s, int level) { return s.estimator->levelAverages(level); }
+kernel::ProbeTexels probeTexels(const RowTexels& s) { return {rowTexel(s, 0), rowTexel(s, 1)}; }
 
 }  // namespace
 
@@ -1147,7 +1142,7 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
     // one channel instead of the pyramid's interleaved two (not with 8-bit
     // pyramids, whose means are rounded).
     const bool exampleTexels = single && levels.l0 == 0 && !options_.pack8;
-    const kernel::vec3 averageL0 = e.levelAverages(levels.l0);
+    const kernel::vec3 averageL0 = e.levelAverages(levels.l0), averageL1 = e.levelAverages(levels.l1);
     const std::array<int, 2> level{levels.l0, levels.l1};
     const bool deliotHeitz = options_.estimator == VarianceEstimator::DeliotHeitz;
     const double invW = 1.0 / double(graph_.exampleSize());
@@ -1176,18 +1171,19 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                                           buffer.data() + padded * size_t(4 * k + 2 + a));
                     }
                 for (size_t px = 0; px < size_t(view.width); ++px) {
-                    // The kernel's loop (one probe, no sub-probes) on the row's
-                    // statistics, or for a single texel its statistics directly,
-                    // as FootprintEstimator::estimate takes them (the loop
-                    // alone made the scale-1 zoom ~15% slower: speed-up over
-                    // scalar 1.41-1.43x -> 1.15-1.26x, 2026-12-06).
-                    const RowTexels texels{&rows, &e, px};
-                    kernel::TexelStats first = rowTexel(texels, 0);
-                    if (deliotHeitz) first = kernel::deliotHeitzTexel(first, averageL0, false);
-                    const kernel::FootprintMoments r =
-                        single ? kernel::texelMoments(first)
-                               : kernel::footprintEstimate(texels, kernel::coord2(0.0), shape.layout, e.maxLod(),
-                                                           deliotHeitz, false, 1, false);
+                    // The kernel's loop (kernel::footprintEstimate) for one
+                    // probe at the pixel, its layout the row's: the probe's
+                    // reads (Deliot–Heitz's variances in place of theirs),
+                    // eq. 14–15 over its two levels, or for a single texel
+                    // its statistics as they are. Not the loop itself, which
+                    // redoes the layout's arithmetic at every pixel (this
+                    // per-pixel work took 2.3x the instructions through it
+                    // at 4.7 texels a pixel).
+                    kernel::ProbeTexels t = probeTexels(RowTexels{&rows, px});
+                    if (deliotHeitz) t = kernel::deliotHeitzProbe(t, averageL0, averageL1, false);
+                    const kernel::FootprintMoments r = single ? kernel::texelMoments(t.lo)
+                                                              : kernel::momentsResult(kernel::momentsAddProbe(
+                                                                    kernel::momentsAbout(t.lo.mean), t, levels));
                     // plainColour's lookup, done for the whole row below.
                     const std::array<float, 4> at = plainTableCoordinates(r.mean.x, r.mean.y, r.var.x, r.var.y);
                     for (size_t i = 0; i < 4; ++i) coordinates[i][px] = at[i];
