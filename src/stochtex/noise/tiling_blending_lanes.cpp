@@ -113,6 +113,57 @@ HWY_INLINE void GatherPairs(DF df, const float* base, VI index, VF& left, VF& ri
 #endif
 }
 
+// A bilinear tap's two rows at every lane's column: the floats at
+// base + index, + 1, + second and + second + 1 (second = 2: one row of
+// interleaved pairs, a texel's mean and variance, then its right
+// neighbour's; second = the row stride: a one-channel texel and its right
+// neighbour in the row and in the row above), transposed: quad[k] holds
+// every lane's float k. Where a vector is one or two 128-bit blocks, a
+// lane's four floats are one 128-bit load (two 64-bit ones) and the blocks
+// a 4×4 transpose, cheaper here than the 64-bit gathers of GatherPairs;
+// elsewhere those gathers. (A template, so that the branch for other
+// vector sizes is not compiled.)
+template <class D, class VI4, class V>
+HWY_INLINE void GatherQuads(D df, const float* base, int second, VI4 index, V (&quad)[4]) {
+#if HWY_TARGET == HWY_SCALAR
+    constexpr size_t kLanes = 1;  // no blocks
+#else
+    constexpr size_t kLanes = hn::MaxLanes(D());
+#endif
+    if constexpr (kLanes == 4 || kLanes == 8) {
+#if HWY_TARGET != HWY_SCALAR
+        const hn::Full128<float> d4;
+        const hn::Full64<float> d2;
+        const hn::Repartition<double, D> dd;
+        alignas(32) int32_t at[kLanes];
+        hn::Store(index, hn::RebindToSigned<D>(), at);
+        const auto lane = [&](size_t j) {
+            const float* p = base + at[j];
+            return second == 2 ? hn::LoadU(d4, p) : hn::Combine(d4, hn::LoadU(d2, p + second), hn::LoadU(d2, p));
+        };
+        // c[k]: lane k's four floats in block 0, lane 4 + k's in block 1.
+        V c[4];
+        for (size_t k = 0; k < 4; ++k) {
+            if constexpr (kLanes == 4)
+                c[k] = lane(k);
+            else
+                c[k] = hn::Combine(df, lane(4 + k), lane(k));
+        }
+        const auto t0 = hn::BitCast(dd, hn::InterleaveLower(df, c[0], c[1]));
+        const auto t1 = hn::BitCast(dd, hn::InterleaveLower(df, c[2], c[3]));
+        const auto t2 = hn::BitCast(dd, hn::InterleaveUpper(df, c[0], c[1]));
+        const auto t3 = hn::BitCast(dd, hn::InterleaveUpper(df, c[2], c[3]));
+        quad[0] = hn::BitCast(df, hn::InterleaveLower(dd, t0, t1));
+        quad[1] = hn::BitCast(df, hn::InterleaveUpper(dd, t0, t1));
+        quad[2] = hn::BitCast(df, hn::InterleaveLower(dd, t2, t3));
+        quad[3] = hn::BitCast(df, hn::InterleaveUpper(dd, t2, t3));
+#endif
+    } else {
+        GatherPairs(df, base, index, quad[0], quad[1]);
+        GatherPairs(df, base + second, index, quad[2], quad[3]);
+    }
+}
+
 // kernel::tableTap in lanes on tables of n ≥ 2 entries (n per lane): index
 // i, weight t.
 HWY_INLINE void TableTap(DF df, VI n, VF x, VI& i, VF& t) {
@@ -286,13 +337,15 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
                 !WindowTaps<C>(df, sharedRow, size_t(texelsEnd - sharedRow), stride, ix, bl, br, al, ar)) {
                 const auto index = hn::Add(rowIndex, C == 1 ? ix : hn::ShiftLeft<1>(ix));
                 if constexpr (C == 1) {
-                    GatherPairs(df, texels, index, bl[0], br[0]);
-                    GatherPairs(df, texels + stride, index, al[0], ar[0]);
+                    VF quad[4];  // left and right, below then above
+                    GatherQuads(df, texels, stride, index, quad);
+                    bl[0] = quad[0], br[0] = quad[1], al[0] = quad[2], ar[0] = quad[3];
                 } else {
-                    GatherPairs(df, texels, index, bl[0], bl[1]);
-                    GatherPairs(df, texels + 2, index, br[0], br[1]);
-                    GatherPairs(df, texels + stride, index, al[0], al[1]);
-                    GatherPairs(df, texels + stride + 2, index, ar[0], ar[1]);
+                    VF below[4], above[4];  // left's mean and variance, right's
+                    GatherQuads(df, texels, 2, index, below);
+                    GatherQuads(df, texels + stride, 2, index, above);
+                    bl[0] = below[0], bl[1] = below[1], br[0] = below[2], br[1] = below[3];
+                    al[0] = above[0], al[1] = above[1], ar[0] = above[2], ar[1] = above[3];
                 }
             }
             e[i] = Lerp(Lerp(bl[0], al[0], wy), Lerp(br[0], ar[0], wy), wx);
