@@ -255,57 +255,80 @@ struct TileRow {
     float wy;
 };
 
-// Eq. 7 on the example (C = 1: N, then T⁻¹ where the example has one) or
-// eq. 8 and 12 on a level of its statistics pyramid (C = 2: N̂_l and σ̂²_l)
-// at every pixel of the row.
+// A grid a row reads and the constants of its lookups.
 template <int C>
-void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& grid, const GridRowLanes& row,
-                  float* out, float* variance, bool outputSpace) {
+struct RowGrid {
+    const float* texels;     // the padded grid: index int(ty)·stride + int(tx)·C
+    const float* texelsEnd;  // one past its last float
+    int stride;              // floats a row
+    float size;              // texels a period
+    float pointTexelV;       // the row's v in texels (no tile offset)
+
+    explicit RowGrid(const BasicPeriodicGrid<C>& grid, float fv)
+        : texels(grid.texel(-1, -1)),
+          texelsEnd(texels + grid.bytes() / sizeof(float)),
+          stride((grid.size() + 2) * C),
+          size(grid.sizeF()),
+          pointTexelV(kernel::texelOfPoint(fv, grid.sizeF())) {}
+};
+
+// Eq. 7 on the example (C = 1: N, then T⁻¹ where the example has one) or
+// eq. 8 and 12 on levels of its statistics pyramid (C = 2: N̂_l and σ̂²_l)
+// at every pixel of the row, on L grids at once (L = 2: a zoom between two
+// levels): the stencil, its weights and the tiles' hashes are the grids'
+// own, the texels and the offsets in texels each grid's.
+template <int C, int L>
+void BlendGridRow(const TilingBlendingNoise& noise, const std::array<const BasicPeriodicGrid<C>*, L>& grids,
+                  const GridRowLanes& row, const std::array<float*, L>& out, const std::array<float*, L>& variance,
+                  bool outputSpace) {
     static_assert(C == 1 || C == 2);
     const DF df;
     const DU du;
     const DI di;
     const size_t n = hn::Lanes(df);
     const NoiseExample& example = noise.example();
-    const float* texels = grid.texel(-1, -1);  // the padded grid: index int(ty)·stride + int(tx)·C
-    const int stride = (grid.size() + 2) * C;
-    const float* texelsEnd = texels + grid.bytes() / sizeof(float);
-    const float size = grid.sizeF();
-    const auto vSize = hn::Set(df, size), vSizeHalf = hn::Set(df, size + 0.5f);
-    const auto vStride = hn::Set(di, stride);
+    const std::array<RowGrid<C>, L> g = [&] {
+        if constexpr (L == 1)
+            return std::array<RowGrid<C>, 1>{RowGrid<C>(*grids[0], row.fv)};
+        else
+            return std::array<RowGrid<C>, 2>{RowGrid<C>(*grids[0], row.fv), RowGrid<C>(*grids[1], row.fv)};
+    }();
     const auto mean = hn::Set(df, example.mean());
     const auto one = hn::Set(df, 1.0f), zero = hn::Zero(df);
     const auto fy = hn::Set(df, row.fy);
     const auto cellY = hn::Set(du, row.cellY);
     const auto seed = hn::Set(du, noise.offsetSeed());
-    const float pointTexelV = kernel::texelOfPoint(row.fv, size);
-    const auto tv = hn::Set(df, pointTexelV);
     const auto oneU = hn::Set(du, 1u);
     const std::vector<float>* lut =
         C == 1 && outputSpace && example.transform() ? &example.transform()->inverseLut() : nullptr;
     // The tiles of the last vector whose lanes all saw one triangle.
     kernel::Stencil shared{};
     bool sharedValid = false;
-    std::array<TileRow, 3> sharedRows{};
+    std::array<std::array<TileRow, 3>, L> sharedRows{};
     // The tiles of the row's lattice vertices, memoised: along a row each
     // new triangle shares two of its three vertices with the last, so a
     // vertex's offset is hashed and its rows located about once instead of
     // once per triangle that has it (kernel::tileOffset, then
-    // TilingBlendingNoise::tileRows' arithmetic). Direct-mapped by (x mod 4,
-    // dy): the triangles walk the vertices in order of x.
+    // TilingBlendingNoise::tileRows' arithmetic, on each grid).
+    // Direct-mapped by (x mod 4, dy): the triangles walk the vertices in
+    // order of x.
     struct VertexTile {
         bool valid = false;
         uint32_t x = 0;
-        TileRow tile{};
+        std::array<TileRow, L> tile{};
     };
     std::array<VertexTile, 8> vertexTiles{};
-    const auto vertexTile = [&](uint32_t x, uint32_t dy) -> const TileRow& {
+    const auto vertexTile = [&](uint32_t x, uint32_t dy) -> const std::array<TileRow, L>& {
         VertexTile& v = vertexTiles[size_t((x & 3u) * 2u + dy)];
         if (!v.valid || v.x != x) {
             const TileOffset o = kernel::tileOffset(kernel::uvec2(x, row.cellY + dy), noise.offsetSeed());
-            const float ty = kernel::periodicTexel(pointTexelV, o.y * size, size);
-            const int iy = int(ty);
-            v = {true, x, {o.x * size, iy * stride, ty - float(iy)}};
+            v.valid = true;
+            v.x = x;
+            for (size_t l = 0; l < size_t(L); ++l) {
+                const float ty = kernel::periodicTexel(g[l].pointTexelV, o.y * g[l].size, g[l].size);
+                const int iy = int(ty);
+                v.tile[l] = {o.x * g[l].size, iy * g[l].stride, ty - float(iy)};
+            }
         }
         return v.tile;
     };
@@ -322,34 +345,38 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
         w0 = hn::Mul(w0, norm);
         w1 = hn::Mul(w1, norm);
         w2 = hn::Mul(w2, norm);
-        const auto tu = hn::Add(hn::Mul(hn::LoadU(df, row.fu.data() + p), vSize), hn::Set(df, 0.5f));
-        // The lookup of a tile at the lanes' u: the texels of its two rows
-        // (BasicPeriodicGrid::sampleTexels' order), each channel. A tile
-        // shared by every lane has one row pair, `sharedRow`, so its texels
-        // may come from a window (WindowTaps) instead of gathers.
-        VF e[3], var[3];
-        const auto lookup = [&](int i, VI rowIndex, VF wy, VF offsetTexels, const float* sharedRow) {
-            const auto tx = PeriodicTexel(tu, offsetTexels, vSize, vSizeHalf);
+        // The lanes' u in each grid's texels.
+        const auto fu = hn::LoadU(df, row.fu.data() + p);
+        VF tu[L];
+        for (size_t l = 0; l < size_t(L); ++l) tu[l] = hn::Add(hn::Mul(fu, hn::Set(df, g[l].size)), hn::Set(df, 0.5f));
+        // The lookup of a tile at the lanes' u on grid l: the texels of its
+        // two rows (BasicPeriodicGrid::sampleTexels' order), each channel.
+        // A tile shared by every lane has one row pair, `sharedRow`, so its
+        // texels may come from a window (WindowTaps) instead of gathers.
+        VF e[L][3], var[L][3];
+        const auto lookup = [&](size_t l, int i, VI rowIndex, VF wy, VF offsetTexels, const float* sharedRow) {
+            const RowGrid<C>& grid = g[l];
+            const auto tx = PeriodicTexel(tu[l], offsetTexels, hn::Set(df, grid.size), hn::Set(df, grid.size + 0.5f));
             const auto ix = hn::ConvertTo(di, tx);
             const auto wx = hn::Sub(tx, hn::ConvertTo(df, ix));
             VF bl[C], br[C], al[C], ar[C];  // below: left, right; above: left, right — each channel
             if (!sharedRow ||
-                !WindowTaps<C>(df, sharedRow, size_t(texelsEnd - sharedRow), stride, ix, bl, br, al, ar)) {
+                !WindowTaps<C>(df, sharedRow, size_t(grid.texelsEnd - sharedRow), grid.stride, ix, bl, br, al, ar)) {
                 const auto index = hn::Add(rowIndex, C == 1 ? ix : hn::ShiftLeft<1>(ix));
                 if constexpr (C == 1) {
                     VF quad[4];  // left and right, below then above
-                    GatherQuads(df, texels, stride, index, quad);
+                    GatherQuads(df, grid.texels, grid.stride, index, quad);
                     bl[0] = quad[0], br[0] = quad[1], al[0] = quad[2], ar[0] = quad[3];
                 } else {
                     VF below[4], above[4];  // left's mean and variance, right's
-                    GatherQuads(df, texels, 2, index, below);
-                    GatherQuads(df, texels + stride, 2, index, above);
+                    GatherQuads(df, grid.texels, 2, index, below);
+                    GatherQuads(df, grid.texels + grid.stride, 2, index, above);
                     bl[0] = below[0], bl[1] = below[1], br[0] = below[2], br[1] = below[3];
                     al[0] = above[0], al[1] = above[1], ar[0] = above[2], ar[1] = above[3];
                 }
             }
-            e[i] = Lerp(Lerp(bl[0], al[0], wy), Lerp(br[0], ar[0], wy), wx);
-            if constexpr (C == 2) var[i] = Lerp(Lerp(bl[1], al[1], wy), Lerp(br[1], ar[1], wy), wx);
+            e[l][i] = Lerp(Lerp(bl[0], al[0], wy), Lerp(br[0], ar[0], wy), wx);
+            if constexpr (C == 2) var[l][i] = Lerp(Lerp(bl[1], al[1], wy), Lerp(br[1], ar[1], wy), wx);
         };
         const uint32_t firstCell = hn::GetLane(cellX);
         const bool firstUpper = hn::AllTrue(df, upper);
@@ -362,14 +389,17 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
                 shared.upper = firstUpper;
                 for (int i = 0; i < 3; ++i) {
                     const kernel::uvec2 v = kernel::stencilVertex(shared, i);  // the plane's: no period
-                    sharedRows[size_t(i)] = vertexTile(v.x, v.y - row.cellY);
+                    const std::array<TileRow, L>& tiles = vertexTile(v.x, v.y - row.cellY);
+                    for (size_t l = 0; l < size_t(L); ++l) sharedRows[l][size_t(i)] = tiles[l];
                 }
                 sharedValid = true;
             }
-            for (int i = 0; i < 3; ++i) {
-                const TileRow& t = sharedRows[size_t(i)];
-                lookup(i, hn::Set(di, t.rowIndex), hn::Set(df, t.wy), hn::Set(df, t.offsetTexels), texels + t.rowIndex);
-            }
+            for (size_t l = 0; l < size_t(L); ++l)
+                for (int i = 0; i < 3; ++i) {
+                    const TileRow& t = sharedRows[l][size_t(i)];
+                    lookup(l, i, hn::Set(di, t.rowIndex), hn::Set(df, t.wy), hn::Set(df, t.offsetTexels),
+                           g[l].texels + t.rowIndex);
+                }
         } else {
             // kernel::stencilVertex: upper (1,1), (1,0), (0,1); lower (0,0), (0,1), (1,0).
             const auto up = hn::RebindMask(du, upper);
@@ -377,36 +407,51 @@ void BlendGridRow(const TilingBlendingNoise& noise, const BasicPeriodicGrid<C>& 
             const VU vx[3] = {hn::Add(cellX, dUpper), hn::Add(cellX, dUpper), hn::Add(cellX, dLower)};
             const VU vy[3] = {hn::Add(cellY, dUpper), hn::Add(cellY, dLower), hn::Add(cellY, dUpper)};
             for (int i = 0; i < 3; ++i) {
-                // kernel::tileOffset, then the tile's rows (TilingBlendingNoise::tileRows).
+                // kernel::tileOffset, then the tile's rows on each grid
+                // (TilingBlendingNoise::tileRows).
                 VU hx, hy;
                 Pcg3d(du, vx[i], vy[i], seed, hx, hy);
-                const auto ty = PeriodicTexel(tv, hn::Mul(UnitFloat(df, hy), vSize), vSize, vSizeHalf);
-                const auto iy = hn::ConvertTo(di, ty);
-                lookup(i, hn::Mul(iy, vStride), hn::Sub(ty, hn::ConvertTo(df, iy)), hn::Mul(UnitFloat(df, hx), vSize),
-                       nullptr);
+                const auto ox = UnitFloat(df, hx), oy = UnitFloat(df, hy);
+                for (size_t l = 0; l < size_t(L); ++l) {
+                    const auto vSize = hn::Set(df, g[l].size);
+                    const auto ty = PeriodicTexel(hn::Set(df, g[l].pointTexelV), hn::Mul(oy, vSize), vSize,
+                                                  hn::Set(df, g[l].size + 0.5f));
+                    const auto iy = hn::ConvertTo(di, ty);
+                    lookup(l, i, hn::Mul(iy, hn::Set(di, g[l].stride)), hn::Sub(ty, hn::ConvertTo(df, iy)),
+                           hn::Mul(ox, vSize), nullptr);
+                }
             }
         }
-        // kernel::blendMean: μ + Σ w_i (e_i − μ), in vertex order.
-        auto value = hn::Add(mean, hn::Mul(w0, hn::Sub(e[0], mean)));
-        value = hn::Add(value, hn::Mul(w1, hn::Sub(e[1], mean)));
-        value = hn::Add(value, hn::Mul(w2, hn::Sub(e[2], mean)));
-        if (lut) value = TableLookup(df, lut->data(), int(lut->size()), value);
-        hn::StoreU(value, df, out + p);
-        if constexpr (C == 2) {  // kernel::blendVariance: Σ w_i² V_i
-            const auto v = hn::Add(hn::Add(hn::Mul(hn::Mul(w0, w0), var[0]), hn::Mul(hn::Mul(w1, w1), var[1])),
-                                   hn::Mul(hn::Mul(w2, w2), var[2]));
-            hn::StoreU(v, df, variance + p);
+        for (size_t l = 0; l < size_t(L); ++l) {
+            // kernel::blendMean: μ + Σ w_i (e_i − μ), in vertex order.
+            auto value = hn::Add(mean, hn::Mul(w0, hn::Sub(e[l][0], mean)));
+            value = hn::Add(value, hn::Mul(w1, hn::Sub(e[l][1], mean)));
+            value = hn::Add(value, hn::Mul(w2, hn::Sub(e[l][2], mean)));
+            if (lut) value = TableLookup(df, lut->data(), int(lut->size()), value);
+            hn::StoreU(value, df, out[l] + p);
+            if constexpr (C == 2) {  // kernel::blendVariance: Σ w_i² V_i
+                const auto v =
+                    hn::Add(hn::Add(hn::Mul(hn::Mul(w0, w0), var[l][0]), hn::Mul(hn::Mul(w1, w1), var[l][1])),
+                            hn::Mul(hn::Mul(w2, w2), var[l][2]));
+                hn::StoreU(v, df, variance[l] + p);
+            }
         }
     }
 }
 
 void BlendRowImpl(const TilingBlendingNoise& noise, const GridRowLanes& row, float* out, bool outputSpace) {
-    BlendGridRow<1>(noise, noise.example().grid(), row, out, nullptr, outputSpace);
+    BlendGridRow<1, 1>(noise, {&noise.example().grid()}, row, {out}, {nullptr}, outputSpace);
 }
 
 void BlendLevelRowImpl(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,
                        float* mean, float* variance) {
-    BlendGridRow<2>(noise, level, row, mean, variance, false);
+    BlendGridRow<2, 1>(noise, {&level}, row, {mean}, {variance}, false);
+}
+
+void BlendLevelPairRowImpl(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& lower,
+                           const BasicPeriodicGrid<2>& upper, const GridRowLanes& row, float* meanLower,
+                           float* varianceLower, float* meanUpper, float* varianceUpper) {
+    BlendGridRow<2, 2>(noise, {&lower, &upper}, row, {meanLower, meanUpper}, {varianceLower, varianceUpper}, false);
 }
 
 // The 2D taps of values x[k·stride], y[k·stride] (stride 1 or 3) in a
@@ -520,6 +565,7 @@ namespace stochtex {
 HWY_EXPORT(GridRowImpl);
 HWY_EXPORT(BlendRowImpl);
 HWY_EXPORT(BlendLevelRowImpl);
+HWY_EXPORT(BlendLevelPairRowImpl);
 HWY_EXPORT(TableTaps2Impl);
 HWY_EXPORT(LayerTapsImpl);
 HWY_EXPORT(TargetNameImpl);
@@ -552,6 +598,13 @@ void blendExampleRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& 
 void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,
                    float* mean, float* variance) {
     HWY_DYNAMIC_DISPATCH(BlendLevelRowImpl)(noise, level, row, mean, variance);
+}
+
+void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& lower,
+                   const BasicPeriodicGrid<2>& upper, const GridRowLanes& row, float* meanLower, float* varianceLower,
+                   float* meanUpper, float* varianceUpper) {
+    HWY_DYNAMIC_DISPATCH(BlendLevelPairRowImpl)
+    (noise, lower, upper, row, meanLower, varianceLower, meanUpper, varianceUpper);
 }
 
 size_t tableTapsLanes(const float* x, const float* y, size_t stride, int width, int height, size_t count,

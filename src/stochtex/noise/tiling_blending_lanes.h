@@ -58,6 +58,11 @@ void blendExampleRowLanes(const TilingBlendingNoise& noise, const GridRowLanes& 
 // computes them for one texel footprint.
 void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& level, const GridRowLanes& row,
                    float* mean, float* variance);
+// The same on two levels at once (a zoom between levels): the stencil and
+// the tiles' hashes computed once for both.
+void blendRowLanes(const TilingBlendingNoise& noise, const BasicPeriodicGrid<2>& lower,
+                   const BasicPeriodicGrid<2>& upper, const GridRowLanes& row, float* meanLower, float* varianceLower,
+                   float* meanUpper, float* varianceUpper);
 
 // kernel::tableTap in lanes for a 2D table lookup at each of the values
 // x[k·stride], y[k·stride] (stride 1 or 3: the first channel of vec3 rows)

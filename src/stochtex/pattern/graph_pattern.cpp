@@ -1161,15 +1161,17 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                 for (size_t a = 0; a < 4; ++a) rows[k][a] = buffer.data() + padded * (4 * k + a);
             for (int py = y0; py < y1; ++py) {
                 grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width, field.grid());
-                for (int k = 0; k < levelCount; ++k)
-                    for (int a = 0; a < 2; ++a) {
-                        float* mean = buffer.data() + padded * size_t(4 * k + a);
-                        if (exampleTexels)  // the variance rows stay 0
-                            blendExampleRowLanes(field.channel(a), grid, mean);
-                        else
-                            blendRowLanes(field.channel(a), e.pyramid(a).level(level[size_t(k)]), grid, mean,
-                                          buffer.data() + padded * size_t(4 * k + 2 + a));
-                    }
+                for (int a = 0; a < 2; ++a) {
+                    // Level k's rows: N̂_x, N̂_y, σ̂²_x, σ̂²_y at 4k + 0..3.
+                    const auto at = [&](int k, int row) { return buffer.data() + padded * size_t(4 * k + row); };
+                    if (exampleTexels)  // the variance rows stay 0
+                        blendExampleRowLanes(field.channel(a), grid, at(0, a));
+                    else if (levelCount == 1)
+                        blendRowLanes(field.channel(a), e.pyramid(a).level(level[0]), grid, at(0, a), at(0, 2 + a));
+                    else
+                        blendRowLanes(field.channel(a), e.pyramid(a).level(level[0]), e.pyramid(a).level(level[1]),
+                                      grid, at(0, a), at(0, 2 + a), at(1, a), at(1, 2 + a));
+                }
                 for (size_t px = 0; px < size_t(view.width); ++px) {
                     // The kernel's loop (kernel::footprintEstimate) for one
                     // probe at the pixel, its layout the row's: the probe's
