@@ -3,15 +3,16 @@
 // evaluator near the gather limit). The pixels of a zoom row share v, so
 // the row is split once into the triangle grid's cells (in double lanes, as
 // TriangleGridRow does per pixel) and every leaf is then blended a vector of
-// pixels at a time: stencil, vertex hashes, tile offsets, the texel pairs
-// of each tile's bilinear lookup as 64-bit gathers, eq. 7 and T⁻¹ — each
+// pixels at a time: stencil, vertex hashes, tile offsets, the texels of
+// each tile's bilinear lookup (each lane's adjacent floats loaded and
+// transposed, or gathered), eq. 7 and T⁻¹ — each
 // the kernel's formula (kernel/grid.glsl, hash.glsl, lookup.glsl) in its
 // order of operations, written in Highway ops and dispatched at run time to
 // the widest vectors the CPU has (SSSE3, SSE4, AVX2, AVX-512; a one-lane
-// fallback elsewhere). A vector whose
-// lanes all see one triangle (most: a tile spans tens of pixels) takes its
-// tiles from the scalar kernel, each lattice vertex's hashed once per row,
-// and keeps them while they last. The
+// fallback elsewhere). A vector whose lanes all see one triangle (four in
+// five at one texel a pixel, where a tile spans tens of pixels; fewer
+// zoomed out) takes its tiles from the scalar kernel, each lattice vertex's
+// hashed once per row, and keeps them while they last. The
 // scalar kernel stays the reference: tests/noise/ holds the lanes to
 // TilingBlendingNoise::blend within 1e-5 (on AVX2 they are bit-identical).
 #include <cstdint>
