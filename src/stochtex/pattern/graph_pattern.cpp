@@ -1114,11 +1114,11 @@ namespace {
 // One pixel of a row whose texel statistics the lanes computed, as the
 // kernel's texel source (kernel/estimate.glsl) gives a probe's reads.
 struct RowTexels {
-    const std::array<std::array<const float*, 4>, 2>* rows;  // per level: N̂_x, N̂_y, σ̂²_x, σ̂²_y
+    const std::array<std::array<float*, 4>, 2>* rows;  // per level: N̂_x, N̂_y, σ̂²_x, σ̂²_y
     size_t px;
 };
 kernel::TexelStats rowTexel(const RowTexels& s, int k) {
-    const std::array<const float*, 4>& r = (*s.rows)[size_t(k)];
+    const std::array<float*, 4>& r = (*s.rows)[size_t(k)];
     kernel::TexelStats t;
     t.mean = kernel::vec2(r[0][s.px], r[1][s.px]);
     t.var = kernel::vec2(r[2][s.px], r[3][s.px]);
@@ -1156,21 +1156,22 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
             // Per pixel: the prefiltered table's coordinates (μx, μy, σx, σy).
             std::array<std::vector<float>, 4> coordinates;
             for (std::vector<float>& c : coordinates) c.resize(size_t(view.width));
-            std::array<std::array<const float*, 4>, 2> rows{};
+            // Per level k: the rows N̂_x, N̂_y, σ̂²_x, σ̂²_y.
+            std::array<std::array<float*, 4>, 2> rows{};
             for (size_t k = 0; k < 2; ++k)
                 for (size_t a = 0; a < 4; ++a) rows[k][a] = buffer.data() + padded * (4 * k + a);
             for (int py = y0; py < y1; ++py) {
                 grid.compute(view.offsetU, view.scale, invW, pixelUv(view, invW, 0, py)[1], view.width, field.grid());
-                for (int a = 0; a < 2; ++a) {
-                    // Level k's rows: N̂_x, N̂_y, σ̂²_x, σ̂²_y at 4k + 0..3.
-                    const auto at = [&](int k, int row) { return buffer.data() + padded * size_t(4 * k + row); };
+                for (size_t a = 0; a < 2; ++a) {
                     if (exampleTexels)  // the variance rows stay 0
-                        blendExampleRowLanes(field.channel(a), grid, at(0, a));
+                        blendExampleRowLanes(field.channel(int(a)), grid, rows[0][a]);
                     else if (levelCount == 1)
-                        blendRowLanes(field.channel(a), e.pyramid(a).level(level[0]), grid, at(0, a), at(0, 2 + a));
+                        blendRowLanes(field.channel(int(a)), e.pyramid(int(a)).level(level[0]), grid, rows[0][a],
+                                      rows[0][2 + a]);
                     else
-                        blendRowLanes(field.channel(a), e.pyramid(a).level(level[0]), e.pyramid(a).level(level[1]),
-                                      grid, at(0, a), at(0, 2 + a), at(1, a), at(1, 2 + a));
+                        blendRowLanes(field.channel(int(a)), e.pyramid(int(a)).level(level[0]),
+                                      e.pyramid(int(a)).level(level[1]), grid, rows[0][a], rows[0][2 + a], rows[1][a],
+                                      rows[1][2 + a]);
                 }
                 for (size_t px = 0; px < size_t(view.width); ++px) {
                     // The kernel's loop (kernel::footprintEstimate) for one
