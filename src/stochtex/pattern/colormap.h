@@ -55,21 +55,30 @@ public:
         return {size_t(ty.i) * size_t(width_) + size_t(tx.i), tx.t, ty.t};
     }
     Rgb blend(const Taps& t) const {
-        // Four RGBA texels, interpolated four channels at a time.
-        const Texel* a = rgba_.data() + t.entry;
-        const Texel* b = a + width_;
-        const Texel bottom = a[0] + t.tx * (a[1] - a[0]);
-        const Texel top = b[0] + t.tx * (b[1] - b[0]);
-        const Texel c = bottom + t.ty * (top - bottom);
+        const Texel c = blendTexels(rgba_.data() + t.entry, size_t(width_), t.tx, t.ty);
         return {c[0], c[1], c[2]};
     }
     // Asks the cache for the entries blend(t) will read.
-    void prefetch(const Taps& t) const {
-        const Texel* a = rgba_.data() + t.entry;
+    void prefetch(const Taps& t) const { prefetchTexels(rgba_.data() + t.entry, size_t(width_)); }
+
+    // Entries as RGBA texels (alpha unused) so a lookup is four 16-byte
+    // loads and vector arithmetic (a GCC/Clang vector extension).
+    typedef float Texel __attribute__((vector_size(16)));
+    // Entry j·Rx + i (the corner of Taps::entry), for a caller that blends
+    // the taps of several tables at once (PrefilteredColormap::sampleRow).
+    const Texel* texels() const { return rgba_.data(); }
+    // blend's arithmetic, at the lower corner a of a table width texels wide.
+    static Texel blendTexels(const Texel* a, size_t width, float tx, float ty) {
+        const Texel* b = a + width;
+        const Texel bottom = a[0] + tx * (a[1] - a[0]);
+        const Texel top = b[0] + tx * (b[1] - b[0]);
+        return bottom + ty * (top - bottom);
+    }
+    static void prefetchTexels(const Texel* a, size_t width) {
         __builtin_prefetch(a);
         __builtin_prefetch(a + 1);
-        __builtin_prefetch(a + width_);
-        __builtin_prefetch(a + width_ + 1);
+        __builtin_prefetch(a + width);
+        __builtin_prefetch(a + width + 1);
     }
     // sample(x[k·stride], y[k·stride]) into rgb[3k..3k+2] for k < count
     // (stride 1, or 3: the first channel of vec3 rows): the taps of whole
@@ -88,9 +97,6 @@ public:
     static ColormapTable fromImage(const Image& image);
 
 private:
-    // Entries as RGBA texels (alpha unused) so a lookup is four 16-byte
-    // loads and vector arithmetic (a GCC/Clang vector extension).
-    typedef float Texel __attribute__((vector_size(16)));
     int width_ = 0, height_ = 0;
     std::vector<Texel, BulkAllocator<Texel>> rgba_;  // filled by the constructor
 };

@@ -393,7 +393,6 @@ Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const { 
 
 size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
                                       size_t count) const {
-    constexpr size_t kAhead = 8;    // pixels between a lookup's prefetch and its blend
     constexpr size_t kChunk = 256;  // pixels whose layers and taps the lanes find at once
     const bool lanes = !beta_[0] && !beta_[1];
     // A row without deviations (a zoom at one texel per pixel: level 0
@@ -404,38 +403,79 @@ size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const fl
     const auto zero = [](float s) { return s == 0.0f; };
     if (lanes && std::all_of(sx, sx + count, zero) && std::all_of(sy, sy + count, zero))
         return layer(0, 0).sampleRow(mx, my, 1, rgb, count);
+    if (!lanes) {
+        lookupRow(mx, my, sx, sy, rgb, count);
+        return 0;
+    }
     // The lanes' output, kept per thread: sampleRow runs once per row.
     thread_local LayerTapsLanes found;
-    if (lanes && found.fx.size() < kChunk) found.resize(kChunk);
-    size_t chunkStart = 0, chunkDone = 0;  // pixels [chunkStart, chunkStart + chunkDone) are in `found`
+    if (found.fx.size() < kChunk) found.resize(kChunk);
     size_t inLanes = 0;
-    // Pixel k's lookup (k in order): from the lanes, or find where they did not reach.
-    const auto lookupAt = [&](size_t k) {
-        if (lanes && k % kChunk == 0) {
-            chunkStart = k;
-            chunkDone = layerTapsLanes(mx + k, my + k, sx + k, sy + k, std::min(kChunk, count - k),
-                                       mode_ == PrefilterMode::Paper, int(sigmas_.size()), widths_.data(),
-                                       heights_.data(), found);
-            inLanes += chunkDone;
-        }
-        if (!lanes || k - chunkStart >= chunkDone) return find(mx[k], my[k], sx[k], sy[k]);
-        const size_t j = k - chunkStart;
-        const int kx0 = found.kx0[j], ky0 = found.ky0[j], kx1 = found.kx1[j], ky1 = found.ky1[j];
-        Lookup l;
-        l.f = kernel::vec2(found.fx[j], found.fy[j]);
-        l.single = l.f.x == 0.0f && l.f.y == 0.0f;
-        l.layers = {&layer(kx0, ky0), &layer(kx1, ky0), &layer(kx0, ky1), &layer(kx1, ky1)};
-        // ColormapTable::taps' entries: row · width + column.
-        const auto entry = [&](int32_t row, int kx, int32_t column) {
-            return size_t(row) * size_t(widths_[size_t(kx)]) + size_t(column);
-        };
-        l.taps[0] = {entry(found.iy0[j], kx0, found.ix0[j]), found.tx0[j], found.ty0[j]};
-        if (l.single) return l;  // blend reads layer 0 only, as find leaves it
-        l.taps[1] = {entry(found.iy0[j], kx1, found.ix1[j]), found.tx1[j], found.ty0[j]};
-        l.taps[2] = {entry(found.iy1[j], kx0, found.ix0[j]), found.tx0[j], found.ty1[j]};
-        l.taps[3] = {entry(found.iy1[j], kx1, found.ix1[j]), found.tx1[j], found.ty1[j]};
-        return l;
+    for (size_t k = 0; k < count; k += kChunk) {
+        const size_t n = std::min(kChunk, count - k);
+        const size_t done = layerTapsLanes(mx + k, my + k, sx + k, sy + k, n, mode_ == PrefilterMode::Paper,
+                                           int(sigmas_.size()), widths_.data(), heights_.data(), found);
+        blendFound(found, done, rgb + k * 3);
+        // The last partial vector, which the lanes leave.
+        lookupRow(mx + k + done, my + k + done, sx + k + done, sy + k + done, rgb + (k + done) * 3, n - done);
+        inLanes += done;
+    }
+    return inLanes;
+}
+
+// blend of the lanes' lookups: their entries prefetched kAhead pixels
+// before they are blended (a lookup reads up to four layers of up to a
+// megabyte each, beyond a core's L2), straight from the lanes' arrays
+// without a Lookup per pixel.
+void PrefilteredColormap::blendFound(const LayerTapsLanes& found, size_t count, float* rgb) const {
+    using Texel = ColormapTable::Texel;
+    const size_t levels = sigmas_.size();
+    // The corners of pixel k's four layers, (x0,y0), (x1,y0), (x0,y1), (x1,y1).
+    std::array<std::array<const Texel*, 4>, kAhead> ring;
+    const auto corner = [&](size_t kx, size_t ky, int32_t row, int32_t column) {
+        return layers_[kx * levels + ky].texels() + size_t(row) * size_t(widths_[kx]) + size_t(column);
     };
+    const auto blendOne = [&](size_t i, const std::array<const Texel*, 4>& at) {
+        const size_t w0 = size_t(widths_[size_t(found.kx0[i])]);
+        const Texel c00 = ColormapTable::blendTexels(at[0], w0, found.tx0[i], found.ty0[i]);
+        float* out = rgb + i * 3;
+        if (found.fx[i] == 0.0f && found.fy[i] == 0.0f) {  // on a level: blend reads layer 0 only
+            out[0] = c00[0], out[1] = c00[1], out[2] = c00[2];
+            return;
+        }
+        const size_t w1 = size_t(widths_[size_t(found.kx1[i])]);
+        const Texel c10 = ColormapTable::blendTexels(at[1], w1, found.tx1[i], found.ty0[i]);
+        const Texel c01 = ColormapTable::blendTexels(at[2], w0, found.tx0[i], found.ty1[i]);
+        const Texel c11 = ColormapTable::blendTexels(at[3], w1, found.tx1[i], found.ty1[i]);
+        const kernel::vec3 c =
+            kernel::layerMix(kernel::vec3(c00[0], c00[1], c00[2]), kernel::vec3(c10[0], c10[1], c10[2]),
+                             kernel::vec3(c01[0], c01[1], c01[2]), kernel::vec3(c11[0], c11[1], c11[2]),
+                             kernel::vec2(found.fx[i], found.fy[i]));
+        out[0] = c.x, out[1] = c.y, out[2] = c.z;
+    };
+    for (size_t k = 0; k < count + kAhead; ++k) {
+        if (k >= kAhead) blendOne(k - kAhead, ring[(k - kAhead) % kAhead]);
+        if (k < count) {
+            std::array<const Texel*, 4>& at = ring[k % kAhead];
+            const size_t kx0 = size_t(found.kx0[k]), ky0 = size_t(found.ky0[k]);
+            at[0] = corner(kx0, ky0, found.iy0[k], found.ix0[k]);
+            ColormapTable::prefetchTexels(at[0], size_t(widths_[kx0]));
+            if (found.fx[k] == 0.0f && found.fy[k] == 0.0f) continue;
+            const size_t kx1 = size_t(found.kx1[k]), ky1 = size_t(found.ky1[k]);
+            at[1] = corner(kx1, ky0, found.iy0[k], found.ix1[k]);
+            at[2] = corner(kx0, ky1, found.iy1[k], found.ix0[k]);
+            at[3] = corner(kx1, ky1, found.iy1[k], found.ix1[k]);
+            ColormapTable::prefetchTexels(at[1], size_t(widths_[kx1]));
+            ColormapTable::prefetchTexels(at[2], size_t(widths_[kx0]));
+            ColormapTable::prefetchTexels(at[3], size_t(widths_[kx1]));
+        }
+    }
+}
+
+// sample one pixel at a time, each pixel's entries prefetched kAhead
+// pixels before its blend: Beta axes, and what the lanes leave.
+void PrefilteredColormap::lookupRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
+                                    size_t count) const {
     std::array<Lookup, kAhead> ring;
     for (size_t k = 0; k < count + kAhead; ++k) {
         if (k >= kAhead) {
@@ -444,11 +484,10 @@ size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const fl
         }
         if (k < count) {
             Lookup& l = ring[k % kAhead];
-            l = lookupAt(k);
+            l = find(mx[k], my[k], sx[k], sy[k]);
             for (size_t i = 0; i < (l.single ? 1 : 4); ++i) l.layers[i]->prefetch(l.taps[i]);
         }
     }
-    return inLanes;
 }
 
 Image PrefilteredColormap::atlas(int rx, int ry) const {

@@ -27,6 +27,8 @@
 
 namespace stochtex {
 
+struct LayerTapsLanes;  // noise/tiling_blending_lanes.h
+
 // The largest table the filtered modes prefilter: a layer costs ~R² per pair
 // of σ levels (100 pairs in smooth mode); R = 1024 takes ~1.4 s and 0.5 GB,
 // and each doubling four times that.
@@ -100,6 +102,11 @@ private:
     };
     Lookup find(float mx, float my, float sx, float sy) const;
     Rgb blend(const Lookup& l) const;
+    // Pixels between a lookup's prefetch and its blend.
+    static constexpr size_t kAhead = 8;
+    // sampleRow's two ways along a row: the lanes' lookups, and one pixel at a time.
+    void blendFound(const LayerTapsLanes& found, size_t count, float* rgb) const;
+    void lookupRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb, size_t count) const;
 
     PrefilterMode mode_ = PrefilterMode::Paper;
     BetaAxes beta_{false, false};
