@@ -613,14 +613,10 @@ size_t tableTapsLanes(const float* x, const float* y, size_t stride, int width, 
     return HWY_DYNAMIC_DISPATCH(TableTaps2Impl)(x, y, stride, width, height, count, entry, tx, ty);
 }
 
-void LayerTapsLanes::resize(size_t count) {
-    for (std::vector<int32_t>* v : {&kx0, &ky0, &kx1, &ky1, &ix0, &ix1, &iy0, &iy1}) v->resize(count);
-    for (std::vector<float>* v : {&fx, &fy, &tx0, &tx1, &ty0, &ty1}) v->resize(count);
-}
-
 size_t layerTapsLanes(const float* mx, const float* my, const float* sx, const float* sy, size_t count, bool paper,
                       int levels, const int32_t* widths, const int32_t* heights, LayerTapsLanes& out) {
-    if (out.fx.size() < count) throw std::invalid_argument("layerTapsLanes: the output holds fewer pixels than count");
+    if (count > LayerTapsLanes::kCapacity)
+        throw std::invalid_argument("layerTapsLanes: count exceeds the output's capacity");
     if (levels < 1) throw std::invalid_argument("layerTapsLanes: a table needs at least one level");
     return HWY_DYNAMIC_DISPATCH(LayerTapsImpl)(mx, my, sx, sy, count, paper, levels, widths, heights, out);
 }

@@ -83,13 +83,16 @@ size_t tableTapsLanes(const float* x, const float* y, size_t stride, int width, 
 // (kx1, ky1) and the weights fx, fy of kx1 and ky1 (kernel::levelBlend);
 // the x taps (entry, weight) in the columns kx0 and kx1, the y taps in the
 // rows ky0 and ky1.
+// Arrays of a fixed size in one object, so a loop over its pixels
+// addresses every field from one register (fourteen pointers of their own
+// would not stay in registers).
 struct LayerTapsLanes {
-    void resize(size_t count);
-    std::vector<int32_t> kx0, ky0, kx1, ky1, ix0, ix1, iy0, iy1;
-    std::vector<float> fx, fy, tx0, tx1, ty0, ty1;
+    static constexpr size_t kCapacity = 256;  // pixels per call
+    alignas(64) std::array<int32_t, kCapacity> kx0, ky0, kx1, ky1, ix0, ix1, iy0, iy1;
+    alignas(64) std::array<float, kCapacity> fx, fy, tx0, tx1, ty0, ty1;
 };
 // Fills whole vectors only and returns how many pixels it did (the caller
-// does the rest with the kernel); levels ≥ 1. The paper mode's level is
+// does the rest with the kernel); count ≤ kCapacity, levels ≥ 1. The paper mode's level is
 // read off the float's exponent, as the kernel does, and is the kernel's
 // exactly; the smooth mode's log2 takes the exponent from the float too
 // (exact at the levels) and the log2 of the mantissa from Highway, so a

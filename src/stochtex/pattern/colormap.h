@@ -67,12 +67,19 @@ public:
     // Entry j·Rx + i (the corner of Taps::entry), for a caller that blends
     // the taps of several tables at once (PrefilteredColormap::sampleRow).
     const Texel* texels() const { return rgba_.data(); }
-    // blend's arithmetic, at the lower corner a of a table width texels wide.
-    static Texel blendTexels(const Texel* a, size_t width, float tx, float ty) {
-        const Texel* b = a + width;
-        const Texel bottom = a[0] + tx * (a[1] - a[0]);
-        const Texel top = b[0] + tx * (b[1] - b[0]);
+    // kernel::blendRowsFirst's arithmetic (kernel::layerMix's too) on a
+    // vector type V of the GCC extension, with weights tx, ty (floats or
+    // vectors): IEEE multiplies and adds (no FMA), so each lane, at any
+    // vector width, is the kernel's value.
+    template <class V, class X, class Y>
+    static V rowsFirst(V e00, V e10, V e01, V e11, X tx, Y ty) {
+        const V bottom = e00 + tx * (e10 - e00);
+        const V top = e01 + tx * (e11 - e01);
         return bottom + ty * (top - bottom);
+    }
+    // blend at the lower corner a of a table width texels wide.
+    static Texel blendTexels(const Texel* a, size_t width, float tx, float ty) {
+        return rowsFirst(a[0], a[1], a[width], a[width + 1], tx, ty);
     }
     static void prefetchTexels(const Texel* a, size_t width) {
         __builtin_prefetch(a);

@@ -353,6 +353,7 @@ PrefilteredColormap::PrefilteredColormap(const ColormapTable& h, PrefilterMode m
             layers_.emplace_back(xThenY <= yThenX ? blurColumns(blurredX[kx], tapsY[ky])
                                                   : transposed(blurColumns(blurredYT[ky], tapsX[kx])));
         }
+    for (const ColormapTable& l : layers_) layerTexels_.push_back(l.texels());
     for (size_t k = 0; k < levels; ++k) {
         widths_.push_back(layer(int(k), 0).resolutionX());
         heights_.push_back(layer(0, int(k)).resolutionY());
@@ -393,7 +394,7 @@ Rgb PrefilteredColormap::sample(float mx, float my, float sx, float sy) const { 
 
 size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
                                       size_t count) const {
-    constexpr size_t kChunk = 256;  // pixels whose layers and taps the lanes find at once
+    constexpr size_t kChunk = LayerTapsLanes::kCapacity;  // pixels whose layers and taps the lanes find at once
     const bool lanes = !beta_[0] && !beta_[1];
     // A row without deviations (a zoom at one texel per pixel: level 0
     // holds no within-texel variance) reads layer (0, 0) alone, σ = 0's in
@@ -409,7 +410,6 @@ size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const fl
     }
     // The lanes' output, kept per thread: sampleRow runs once per row.
     thread_local LayerTapsLanes found;
-    if (found.fx.size() < kChunk) found.resize(kChunk);
     size_t inLanes = 0;
     for (size_t k = 0; k < count; k += kChunk) {
         const size_t n = std::min(kChunk, count - k);
@@ -423,53 +423,102 @@ size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const fl
     return inLanes;
 }
 
-// blend of the lanes' lookups: their entries prefetched kAhead pixels
-// before they are blended (a lookup reads up to four layers of up to a
-// megabyte each, beyond a core's L2), straight from the lanes' arrays
-// without a Lookup per pixel.
-void PrefilteredColormap::blendFound(const LayerTapsLanes& found, size_t count, float* rgb) const {
-    using Texel = ColormapTable::Texel;
-    const size_t levels = sigmas_.size();
+namespace {
+
+// Pixels between a lookup's prefetch and its blend.
+constexpr size_t kAhead = 8;
+
+using Texel = ColormapTable::Texel;
+// Two texels side by side: the same tap of two layers (AVX: one register).
+// GCC warns that these helpers would pass 32-byte vectors differently
+// without AVX; they are inlined into blendLayerTaps, never called.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+typedef float TexelPair __attribute__((vector_size(32)));
+inline TexelPair pairOf(Texel low, Texel high) { return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7); }
+inline Texel lowOf(TexelPair p) { return __builtin_shufflevector(p, p, 0, 1, 2, 3); }
+inline Texel highOf(TexelPair p) { return __builtin_shufflevector(p, p, 4, 5, 6, 7); }
+
+// ColormapTable::blendTexels of two layers at once: layer a's lower corner
+// at a (its rows wa texels apart) and x weight txa, layer b's likewise, the
+// y weight ty both share.
+inline TexelPair blendTexelPair(const Texel* a, size_t wa, float txa, const Texel* b, size_t wb, float txb, float ty) {
+    return ColormapTable::rowsFirst(pairOf(a[0], b[0]), pairOf(a[1], b[1]), pairOf(a[wa], b[wb]),
+                                    pairOf(a[wa + 1], b[wb + 1]),
+                                    pairOf(Texel{txa, txa, txa, txa}, Texel{txb, txb, txb, txb}), ty);
+}
+#pragma GCC diagnostic pop
+
+// A prefiltered table's layers, as blendLayerTaps reads them.
+struct LayerArrays {
+    const Texel* const* texels;  // layer (kx, ky)'s entries at kx·levels + ky
+    const int32_t* widths;       // its entries along x (by kx) and y (by ky)
+    const int32_t* heights;
+    size_t levels;
+};
+
+// The lanes' lookups blended, pixel by pixel: each pixel's corners found
+// and their entries prefetched kAhead pixels before its blend (a lookup
+// reads up to four layers of up to a megabyte each, beyond a core's L2),
+// then the layers blended two at a time, (x0,y0) beside (x1,y0) and (x0,y1)
+// beside (x1,y1), and mixed as PrefilteredColormap::blend mixes them. On
+// x86-64 an AVX2 clone is chosen at load time where the CPU has it (a pair
+// in one register); both clones do the same IEEE operations per lane.
+#if defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void blendLayerTaps(const LayerTapsLanes& found, size_t count, const LayerArrays& table, float* rgb) {
+    constexpr size_t kPrefetchedLayerBytes = 128 << 10;
     // The corners of pixel k's four layers, (x0,y0), (x1,y0), (x0,y1), (x1,y1).
     std::array<std::array<const Texel*, 4>, kAhead> ring;
-    const auto corner = [&](size_t kx, size_t ky, int32_t row, int32_t column) {
-        return layers_[kx * levels + ky].texels() + size_t(row) * size_t(widths_[kx]) + size_t(column);
-    };
-    const auto blendOne = [&](size_t i, const std::array<const Texel*, 4>& at) {
-        const size_t w0 = size_t(widths_[size_t(found.kx0[i])]);
-        const Texel c00 = ColormapTable::blendTexels(at[0], w0, found.tx0[i], found.ty0[i]);
-        float* out = rgb + i * 3;
-        if (found.fx[i] == 0.0f && found.fy[i] == 0.0f) {  // on a level: blend reads layer 0 only
-            out[0] = c00[0], out[1] = c00[1], out[2] = c00[2];
-            return;
-        }
-        const size_t w1 = size_t(widths_[size_t(found.kx1[i])]);
-        const Texel c10 = ColormapTable::blendTexels(at[1], w1, found.tx1[i], found.ty0[i]);
-        const Texel c01 = ColormapTable::blendTexels(at[2], w0, found.tx0[i], found.ty1[i]);
-        const Texel c11 = ColormapTable::blendTexels(at[3], w1, found.tx1[i], found.ty1[i]);
-        const kernel::vec3 c =
-            kernel::layerMix(kernel::vec3(c00[0], c00[1], c00[2]), kernel::vec3(c10[0], c10[1], c10[2]),
-                             kernel::vec3(c01[0], c01[1], c01[2]), kernel::vec3(c11[0], c11[1], c11[2]),
-                             kernel::vec2(found.fx[i], found.fy[i]));
-        out[0] = c.x, out[1] = c.y, out[2] = c.z;
-    };
     for (size_t k = 0; k < count + kAhead; ++k) {
-        if (k >= kAhead) blendOne(k - kAhead, ring[(k - kAhead) % kAhead]);
+        if (k >= kAhead) {
+            const size_t i = k - kAhead;
+            const std::array<const Texel*, 4>& at = ring[i % kAhead];
+            const size_t w0 = size_t(table.widths[found.kx0[i]]);
+            float* out = rgb + i * 3;
+            Texel c;
+            if (found.fx[i] == 0.0f && found.fy[i] == 0.0f) {  // on a level: blend reads layer (x0, y0) only
+                c = ColormapTable::blendTexels(at[0], w0, found.tx0[i], found.ty0[i]);
+            } else {
+                const size_t w1 = size_t(table.widths[found.kx1[i]]);
+                const TexelPair y0 = blendTexelPair(at[0], w0, found.tx0[i], at[1], w1, found.tx1[i], found.ty0[i]);
+                const TexelPair y1 = blendTexelPair(at[2], w0, found.tx0[i], at[3], w1, found.tx1[i], found.ty1[i]);
+                c = ColormapTable::rowsFirst(lowOf(y0), highOf(y0), lowOf(y1), highOf(y1), found.fx[i], found.fy[i]);
+            }
+            out[0] = c[0], out[1] = c[1], out[2] = c[2];
+        }
         if (k < count) {
             std::array<const Texel*, 4>& at = ring[k % kAhead];
             const size_t kx0 = size_t(found.kx0[k]), ky0 = size_t(found.ky0[k]);
-            at[0] = corner(kx0, ky0, found.iy0[k], found.ix0[k]);
-            ColormapTable::prefetchTexels(at[0], size_t(widths_[kx0]));
+            const size_t w0 = size_t(table.widths[kx0]);
+            const auto corner = [&](size_t kx, size_t ky, int32_t row, int32_t column, size_t width) {
+                return table.texels[kx * table.levels + ky] + size_t(row) * width + size_t(column);
+            };
+            at[0] = corner(kx0, ky0, found.iy0[k], found.ix0[k], w0);
+            // Layer (x0, y0) is the largest of the four; below a core's L2
+            // (a coarse level's), the cache keeps them all and the
+            // prefetches would only take issue slots.
+            const bool fetch = w0 * size_t(table.heights[ky0]) * sizeof(Texel) > kPrefetchedLayerBytes;
+            if (fetch) ColormapTable::prefetchTexels(at[0], w0);
             if (found.fx[k] == 0.0f && found.fy[k] == 0.0f) continue;
             const size_t kx1 = size_t(found.kx1[k]), ky1 = size_t(found.ky1[k]);
-            at[1] = corner(kx1, ky0, found.iy0[k], found.ix1[k]);
-            at[2] = corner(kx0, ky1, found.iy1[k], found.ix0[k]);
-            at[3] = corner(kx1, ky1, found.iy1[k], found.ix1[k]);
-            ColormapTable::prefetchTexels(at[1], size_t(widths_[kx1]));
-            ColormapTable::prefetchTexels(at[2], size_t(widths_[kx0]));
-            ColormapTable::prefetchTexels(at[3], size_t(widths_[kx1]));
+            const size_t w1 = size_t(table.widths[kx1]);
+            at[1] = corner(kx1, ky0, found.iy0[k], found.ix1[k], w1);
+            at[2] = corner(kx0, ky1, found.iy1[k], found.ix0[k], w0);
+            at[3] = corner(kx1, ky1, found.iy1[k], found.ix1[k], w1);
+            if (!fetch) continue;
+            ColormapTable::prefetchTexels(at[1], w1);
+            ColormapTable::prefetchTexels(at[2], w0);
+            ColormapTable::prefetchTexels(at[3], w1);
         }
     }
+}
+
+}  // namespace
+
+void PrefilteredColormap::blendFound(const LayerTapsLanes& found, size_t count, float* rgb) const {
+    blendLayerTaps(found, count, {layerTexels_.data(), widths_.data(), heights_.data(), sigmas_.size()}, rgb);
 }
 
 // sample one pixel at a time, each pixel's entries prefetched kAhead

@@ -50,6 +50,11 @@ using BetaAxes = std::array<bool, 2>;
 class PrefilteredColormap {
 public:
     PrefilteredColormap() = default;
+    // Moves only: layerTexels_ points into the layers' own entries.
+    PrefilteredColormap(const PrefilteredColormap&) = delete;
+    PrefilteredColormap& operator=(const PrefilteredColormap&) = delete;
+    PrefilteredColormap(PrefilteredColormap&&) = default;
+    PrefilteredColormap& operator=(PrefilteredColormap&&) = default;
     PrefilteredColormap(const ColormapTable& h, PrefilterMode mode, BetaAxes beta = {false, false});
 
     PrefilterMode mode() const { return mode_; }
@@ -102,8 +107,6 @@ private:
     };
     Lookup find(float mx, float my, float sx, float sy) const;
     Rgb blend(const Lookup& l) const;
-    // Pixels between a lookup's prefetch and its blend.
-    static constexpr size_t kAhead = 8;
     // sampleRow's two ways along a row: the lanes' lookups, and one pixel at a time.
     void blendFound(const LayerTapsLanes& found, size_t count, float* rgb) const;
     void lookupRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb, size_t count) const;
@@ -115,6 +118,9 @@ private:
     // The entries along x of the layers (kx, ·) and along y of (·, ky): a
     // layer's size along an axis depends on that axis's level only.
     std::vector<int32_t> widths_, heights_;
+    // Each layer's entries, as layer(kx, ky) at kx·n + ky: a lookup in lanes
+    // reads four layers' without going through their tables.
+    std::vector<const ColormapTable::Texel*> layerTexels_;
 };
 
 // Reference for tests: [H ∗ G_σ](μ) for the bilinear table H with clamp-to-edge
