@@ -1173,6 +1173,16 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                                       e.pyramid(int(a)).level(level[1]), grid, rows[0][a], rows[0][2 + a], rows[1][a],
                                       rows[1][2 + a]);
                 }
+                if (exampleTexels && !deliotHeitz) {
+                    // The kernel's estimate below is then each texel as it
+                    // is (texelMoments), its variance the rows' 0, so σ̂ = 0
+                    // and the lookups read the rows' means on the table's
+                    // σ = 0 layer: the same values, without the per-pixel
+                    // coordinates (a fifth of this zoom's instructions).
+                    tables_.front()->sampleRowWithoutDeviations(rows[0][0], rows[0][1], out.row(py),
+                                                                size_t(view.width));
+                    continue;
+                }
                 for (size_t px = 0; px < size_t(view.width); ++px) {
                     // The kernel's loop (kernel::footprintEstimate) for one
                     // probe at the pixel, its layout the row's: the probe's

@@ -396,14 +396,11 @@ size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const fl
                                       size_t count) const {
     constexpr size_t kChunk = LayerTapsLanes::kCapacity;  // pixels whose layers and taps the lanes find at once
     const bool lanes = !beta_[0] && !beta_[1];
-    // A row without deviations (a zoom at one texel per pixel: level 0
-    // holds no within-texel variance) reads layer (0, 0) alone, σ = 0's in
-    // both modes, with its taps in lanes for the whole row as an unfiltered
-    // lookup: the same taps and blend as below, without the per-pixel
-    // assembly and look-ahead that blends across layers need.
+    // A row without deviations: the same taps and blend as below, without
+    // the per-pixel assembly and look-ahead that blends across layers need.
     const auto zero = [](float s) { return s == 0.0f; };
     if (lanes && std::all_of(sx, sx + count, zero) && std::all_of(sy, sy + count, zero))
-        return layer(0, 0).sampleRow(mx, my, 1, rgb, count);
+        return sampleRowWithoutDeviations(mx, my, rgb, count);
     if (!lanes) {
         lookupRow(mx, my, sx, sy, rgb, count);
         return 0;

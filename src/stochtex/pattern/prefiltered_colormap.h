@@ -79,6 +79,15 @@ public:
     size_t sampleRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
                      size_t count) const;
 
+    // sampleRow where every deviation is 0 (a zoom at one texel per pixel:
+    // level 0 holds no within-texel variance): layer (0, 0) alone, the
+    // σ = 0 level of every mode and axis, its taps in lanes as an
+    // unfiltered lookup's (ColormapTable::sampleRow). Returns how many the
+    // lanes tapped.
+    size_t sampleRowWithoutDeviations(const float* mx, const float* my, float* rgb, size_t count) const {
+        return layer(0, 0).sampleRow(mx, my, 1, rgb, count);
+    }
+
     // Every layer resampled to rx × ry entries (layers stored coarser are
     // smooth, so their bilinear resampling is far below a colour step),
     // stacked: layer kx·n + ky in rows [k·ry, (k+1)·ry), row j = y of j/(ry−1).
