@@ -6,6 +6,7 @@
 #include <numbers>
 #include <set>
 #include <stdexcept>
+#include <type_traits>
 
 #include "stochtex/core/error.h"
 #include "stochtex/core/hash.h"
@@ -1183,24 +1184,36 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                                                                 size_t(view.width));
                     continue;
                 }
-                for (size_t px = 0; px < size_t(view.width); ++px) {
-                    // The kernel's loop (kernel::footprintEstimate) for one
-                    // probe at the pixel, its layout the row's: the probe's
-                    // reads (Deliot–Heitz's variances in place of theirs),
-                    // eq. 14–15 over its two levels, or for a single texel
-                    // its statistics as they are. Not the loop itself, which
-                    // redoes the layout's arithmetic at every pixel (this
-                    // per-pixel work took 2.3x the instructions through it
-                    // at 4.7 texels a pixel).
-                    kernel::ProbeTexels t = probeTexels(RowTexels{&rows, px});
-                    if (deliotHeitz) t = kernel::deliotHeitzProbe(t, averageL0, averageL1, false);
-                    const kernel::FootprintMoments r = single ? kernel::texelMoments(t.lo)
-                                                              : kernel::momentsResult(kernel::momentsAddProbe(
-                                                                    kernel::momentsAbout(t.lo.mean), t, levels));
-                    // plainColour's lookup, done for the whole row below.
-                    const std::array<float, 4> at = plainTableCoordinates(r.mean.x, r.mean.y, r.var.x, r.var.y);
-                    for (size_t i = 0; i < 4; ++i) coordinates[i][px] = at[i];
-                }
+                // The kernel's loop (kernel::footprintEstimate) for one probe
+                // at each pixel, its layout the row's: the probe's reads
+                // (Deliot–Heitz's variances in place of theirs), eq. 14–15
+                // over its two levels, or for a single texel its statistics
+                // as they are. Not the loop itself, which redoes the
+                // layout's arithmetic at every pixel (this per-pixel work
+                // took 2.3x the instructions through it at 4.7 texels a
+                // pixel). The row's two choices are template arguments, so
+                // each loop is branch-free (and the single texel's vectorises).
+                const auto estimateRow = [&](auto isSingle, auto isDeliotHeitz) {
+                    for (size_t px = 0; px < size_t(view.width); ++px) {
+                        kernel::ProbeTexels t = probeTexels(RowTexels{&rows, px});
+                        if constexpr (isDeliotHeitz) t = kernel::deliotHeitzProbe(t, averageL0, averageL1, false);
+                        kernel::FootprintMoments r;
+                        if constexpr (isSingle)
+                            r = kernel::texelMoments(t.lo);
+                        else
+                            r = kernel::momentsResult(
+                                kernel::momentsAddProbe(kernel::momentsAbout(t.lo.mean), t, levels));
+                        // plainColour's lookup, done for the whole row below.
+                        const std::array<float, 4> at = plainTableCoordinates(r.mean.x, r.mean.y, r.var.x, r.var.y);
+                        for (size_t i = 0; i < 4; ++i) coordinates[i][px] = at[i];
+                    }
+                };
+                const std::true_type yes;
+                const std::false_type no;
+                if (single)
+                    deliotHeitz ? estimateRow(yes, yes) : estimateRow(yes, no);
+                else
+                    deliotHeitz ? estimateRow(no, yes) : estimateRow(no, no);
                 tables_.front()->sampleRow(coordinates[0].data(), coordinates[1].data(), coordinates[2].data(),
                                            coordinates[3].data(), out.row(py), size_t(view.width));
             }
