@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "lane_targets.h"
@@ -242,6 +243,32 @@ static ColormapTable wavyTable() {
         for (int x = 0; x < table.width(); ++x)
             for (int c = 0; c < 3; ++c) table.at(x, y, c) = float(0.5 + 0.5 * std::cos(0.9 * x + 0.4 * y * c));
     return ColormapTable(table);
+}
+
+// The layers' blur and the row lookups' blend run an AVX2 compilation where
+// the lanes' target has 8 float lanes or more and a baseline one elsewhere
+// (prefiltered_colormap.cpp): the same IEEE operations per lane, so a table
+// built on any lane target is the same, bit for bit.
+TEST(PrefilteredColormap, EveryLaneTargetBuildsTheSameTable) {
+    const ColormapTable h = wavyTable();
+    for (const PrefilterMode mode : {PrefilterMode::Paper, PrefilterMode::Smooth}) {
+        const PrefilteredColormap reference(h, mode);
+        const size_t n = reference.sigmas().size();
+        test::forEachLaneTarget([&](const char*) {
+            const PrefilteredColormap p(h, mode);
+            for (size_t kx = 0; kx < n; ++kx)
+                for (size_t ky = 0; ky < n; ++ky) {
+                    const ColormapTable& a = reference.layer(int(kx), int(ky));
+                    const ColormapTable& b = p.layer(int(kx), int(ky));
+                    ASSERT_EQ(a.resolutionX(), b.resolutionX());
+                    ASSERT_EQ(a.resolutionY(), b.resolutionY());
+                    const size_t bytes =
+                        size_t(a.resolutionX()) * size_t(a.resolutionY()) * sizeof(ColormapTable::Texel);
+                    ASSERT_EQ(std::memcmp(a.texels(), b.texels(), bytes), 0)
+                        << "layer " << kx << "," << ky << ", mode " << int(mode);
+                }
+        });
+    }
 }
 
 // A row of prefiltered lookups (found ahead, prefetched, in SIMD lanes on

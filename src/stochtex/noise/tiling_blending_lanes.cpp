@@ -555,6 +555,7 @@ size_t LayerTapsImpl(const float* mx, const float* my, const float* sx, const fl
 }
 
 const char* TargetNameImpl() { return hwy::TargetName(HWY_TARGET); }
+size_t FloatLanesImpl() { return hn::MaxLanes(DF()); }
 
 }  // namespace stochtex::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
@@ -569,6 +570,7 @@ HWY_EXPORT(BlendLevelPairRowImpl);
 HWY_EXPORT(TableTaps2Impl);
 HWY_EXPORT(LayerTapsImpl);
 HWY_EXPORT(TargetNameImpl);
+HWY_EXPORT(FloatLanesImpl);
 
 void GridRowLanes::compute(double offset, double scale, double invW, double v, int pixels, const GridLayout& grid) {
     if (grid.periodic()) throw std::logic_error("GridRowLanes: a periodic grid needs the scalar kernel");
@@ -622,6 +624,7 @@ size_t layerTapsLanes(const float* mx, const float* my, const float* sx, const f
 }
 
 const char* laneTargetName() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)(); }
+size_t laneTargetFloatLanes() { return HWY_DYNAMIC_DISPATCH(FloatLanesImpl)(); }
 
 }  // namespace stochtex
 #endif  // HWY_ONCE

@@ -102,5 +102,7 @@ size_t layerTapsLanes(const float* mx, const float* my, const float* sx, const f
 
 // The name of the vector target the lanes run on here ("AVX2", …).
 const char* laneTargetName();
+// The floats in one of its vectors (AVX2: 8; the one-lane fallback: 1).
+size_t laneTargetFloatLanes();
 
 }  // namespace stochtex

@@ -19,6 +19,11 @@
 #include "stochtex/noise/normal.h"
 #include "stochtex/noise/tiling_blending_lanes.h"
 
+// 32-byte vectors of the GCC extension pass only between always-inlined
+// helpers here; GCC's warning that a call would pass them differently
+// without AVX (which it reports at the end of the file) concerns no call.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 namespace stochtex {
 
 namespace {
@@ -186,16 +191,28 @@ std::vector<std::vector<Tap>> betaTaps(int n, double tau, int out) {
 
 using TapTable = std::vector<std::vector<Tap>>;
 
+// The loops below on 32-byte vectors of the GCC extension are compiled
+// twice, for AVX2 (a vector in one register) and for the baseline (two
+// halves), and the AVX2 compilation runs where the lanes' dispatched target
+// has at least 8 float lanes — so the tests that force Highway's targets one
+// by one (tests/lane_targets.h) run the baseline compilation too. Both do
+// the same IEEE multiplies and adds per lane (no FMA): their results are
+// bit-identical on every machine. (GCC's target_clones would choose by the
+// CPU alone, leaving the baseline untested on an AVX2 machine.)
+#if defined(__x86_64__) && !defined(__clang__)
+#define STOCHTEX_AVX2_COMPILATION __attribute__((target("avx2")))
+constexpr bool kHasAvx2Compilation = true;
+#else
+#define STOCHTEX_AVX2_COMPILATION
+constexpr bool kHasAvx2Compilation = false;
+#endif
+bool useAvx2Compilation() { return kHasAvx2Compilation && laneTargetFloatLanes() >= 8; }
+
 // acc[i] += Σ_k weights[k]·rows[k][i] for i < n, the sum over k in float.
 // A block of 48 columns stays in registers while every row is added to it
 // (six independent sums hide the latency of the adds).
-// On x86-64 an AVX2 clone is chosen at load time where the CPU has it; both
-// clones do the same IEEE multiplies and adds per lane (no FMA), so tables
-// are bit-identical on every machine.
-#if defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-void accumulateRows(const float* const* rows, const float* weights, size_t count, size_t n, double* acc) {
+[[gnu::always_inline]] inline void accumulateRowsBody(const float* const* rows, const float* weights, size_t count,
+                                                      size_t n, double* acc) {
     typedef float Float8 __attribute__((vector_size(32)));
     typedef double Double8 __attribute__((vector_size(64)));
     constexpr size_t kSums = 6, kBlock = 8 * kSums;
@@ -223,6 +240,13 @@ void accumulateRows(const float* const* rows, const float* weights, size_t count
         acc[i] += double(p);
     }
 }
+STOCHTEX_AVX2_COMPILATION void accumulateRowsAvx2(const float* const* rows, const float* weights, size_t count,
+                                                  size_t n, double* acc) {
+    accumulateRowsBody(rows, weights, count, n, acc);
+}
+void accumulateRowsBaseline(const float* const* rows, const float* weights, size_t count, size_t n, double* acc) {
+    accumulateRowsBody(rows, weights, count, n, acc);
+}
 
 // Blurs along y (one tap list per output row): input rows are scaled and
 // added, which vectorises. Taps are summed in float in groups of 16 and the
@@ -234,6 +258,7 @@ Image blurColumns(const Image& in, const TapTable& taps) {
     constexpr size_t kStrip = 192;
     Image res(in.width(), int(taps.size()), 3, Image::Uninitialized{});
     const size_t n = size_t(in.width()) * 3;
+    const auto accumulateRows = useAvx2Compilation() ? accumulateRowsAvx2 : accumulateRowsBaseline;
     parallelRows(res.height(), [&](int y0, int y1) {
         std::array<double, kStrip> acc;
         std::array<const float*, 16> rows;
@@ -425,26 +450,38 @@ namespace {
 // Pixels between a lookup's prefetch and its blend.
 constexpr size_t kAhead = 8;
 
+// Pixel k's lookup found (its entries prefetched) at step k and blended at
+// step k + kAhead, through a ring of kAhead slots: find(k, slot) for
+// k < count, then blend(k, slot) with the same slot. Inlined with both
+// steps, so that an AVX2 compilation keeps them in its registers.
+template <class Find, class Blend>
+[[gnu::always_inline]] inline void lookAhead(size_t count, Find&& find, Blend&& blend) {
+    for (size_t k = 0; k < count + kAhead; ++k) {
+        if (k >= kAhead) blend(k - kAhead, (k - kAhead) % kAhead);
+        if (k < count) find(k, k % kAhead);
+    }
+}
+
 using Texel = ColormapTable::Texel;
 // Two texels side by side: the same tap of two layers (AVX: one register).
-// GCC warns that these helpers would pass 32-byte vectors differently
-// without AVX; they are inlined into blendLayerTaps, never called.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wpsabi"
+// (GCC's warning that these helpers would pass 32-byte vectors differently
+// without AVX is off for this file: they are always inlined, never called.)
 typedef float TexelPair __attribute__((vector_size(32)));
-inline TexelPair pairOf(Texel low, Texel high) { return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7); }
-inline Texel lowOf(TexelPair p) { return __builtin_shufflevector(p, p, 0, 1, 2, 3); }
-inline Texel highOf(TexelPair p) { return __builtin_shufflevector(p, p, 4, 5, 6, 7); }
+[[gnu::always_inline]] inline TexelPair pairOf(Texel low, Texel high) {
+    return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+[[gnu::always_inline]] inline Texel lowOf(TexelPair p) { return __builtin_shufflevector(p, p, 0, 1, 2, 3); }
+[[gnu::always_inline]] inline Texel highOf(TexelPair p) { return __builtin_shufflevector(p, p, 4, 5, 6, 7); }
 
 // ColormapTable::blendTexels of two layers at once: layer a's lower corner
 // at a (its rows wa texels apart) and x weight txa, layer b's likewise, the
 // y weight ty both share.
-inline TexelPair blendTexelPair(const Texel* a, size_t wa, float txa, const Texel* b, size_t wb, float txb, float ty) {
+[[gnu::always_inline]] inline TexelPair blendTexelPair(const Texel* a, size_t wa, float txa, const Texel* b, size_t wb,
+                                                       float txb, float ty) {
     return ColormapTable::rowsFirst(pairOf(a[0], b[0]), pairOf(a[1], b[1]), pairOf(a[wa], b[wb]),
                                     pairOf(a[wa + 1], b[wb + 1]),
                                     pairOf(Texel{txa, txa, txa, txa}, Texel{txb, txb, txb, txb}), ty);
 }
-#pragma GCC diagnostic pop
 
 // A prefiltered table's layers, as blendLayerTaps reads them.
 struct LayerArrays {
@@ -458,64 +495,67 @@ struct LayerArrays {
 // and their entries prefetched kAhead pixels before its blend (a lookup
 // reads up to four layers of up to a megabyte each, beyond a core's L2),
 // then the layers blended two at a time, (x0,y0) beside (x1,y0) and (x0,y1)
-// beside (x1,y1), and mixed as PrefilteredColormap::blend mixes them. On
-// x86-64 an AVX2 clone is chosen at load time where the CPU has it (a pair
-// in one register); both clones do the same IEEE operations per lane.
-#if defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-void blendLayerTaps(const LayerTapsLanes& found, size_t count, const LayerArrays& table, float* rgb) {
+// beside (x1,y1), and mixed as PrefilteredColormap::blend mixes them.
+[[gnu::always_inline]] inline void blendLayerTapsBody(const LayerTapsLanes& found, size_t count,
+                                                      const LayerArrays& table, float* rgb) {
     constexpr size_t kPrefetchedLayerBytes = 128 << 10;
-    // The corners of pixel k's four layers, (x0,y0), (x1,y0), (x0,y1), (x1,y1).
+    // The corners of a pixel's four layers, (x0,y0), (x1,y0), (x0,y1), (x1,y1).
     std::array<std::array<const Texel*, 4>, kAhead> ring;
-    for (size_t k = 0; k < count + kAhead; ++k) {
-        if (k >= kAhead) {
-            const size_t i = k - kAhead;
-            const std::array<const Texel*, 4>& at = ring[i % kAhead];
-            const size_t w0 = size_t(table.widths[found.kx0[i]]);
-            float* out = rgb + i * 3;
-            Texel c;
-            if (found.fx[i] == 0.0f && found.fy[i] == 0.0f) {  // on a level: blend reads layer (x0, y0) only
-                c = ColormapTable::blendTexels(at[0], w0, found.tx0[i], found.ty0[i]);
-            } else {
-                const size_t w1 = size_t(table.widths[found.kx1[i]]);
-                const TexelPair y0 = blendTexelPair(at[0], w0, found.tx0[i], at[1], w1, found.tx1[i], found.ty0[i]);
-                const TexelPair y1 = blendTexelPair(at[2], w0, found.tx0[i], at[3], w1, found.tx1[i], found.ty1[i]);
-                c = ColormapTable::rowsFirst(lowOf(y0), highOf(y0), lowOf(y1), highOf(y1), found.fx[i], found.fy[i]);
-            }
-            out[0] = c[0], out[1] = c[1], out[2] = c[2];
+    const auto find = [&](size_t k, size_t slot) __attribute__((always_inline)) {
+        std::array<const Texel*, 4>& at = ring[slot];
+        const size_t kx0 = size_t(found.kx0[k]), ky0 = size_t(found.ky0[k]);
+        const size_t w0 = size_t(table.widths[kx0]);
+        const auto corner = [&](size_t kx, size_t ky, int32_t row, int32_t column, size_t width)
+            __attribute__((always_inline)) {
+            return table.texels[kx * table.levels + ky] + size_t(row) * width + size_t(column);
+        };
+        at[0] = corner(kx0, ky0, found.iy0[k], found.ix0[k], w0);
+        // Layer (x0, y0) is the largest of the four; below a core's L2
+        // (a coarse level's), the cache keeps them all and the
+        // prefetches would only take issue slots.
+        const bool fetch = w0 * size_t(table.heights[ky0]) * sizeof(Texel) > kPrefetchedLayerBytes;
+        if (fetch) ColormapTable::prefetchTexels(at[0], w0);
+        if (found.fx[k] == 0.0f && found.fy[k] == 0.0f) return;
+        const size_t kx1 = size_t(found.kx1[k]), ky1 = size_t(found.ky1[k]);
+        const size_t w1 = size_t(table.widths[kx1]);
+        at[1] = corner(kx1, ky0, found.iy0[k], found.ix1[k], w1);
+        at[2] = corner(kx0, ky1, found.iy1[k], found.ix0[k], w0);
+        at[3] = corner(kx1, ky1, found.iy1[k], found.ix1[k], w1);
+        if (!fetch) return;
+        ColormapTable::prefetchTexels(at[1], w1);
+        ColormapTable::prefetchTexels(at[2], w0);
+        ColormapTable::prefetchTexels(at[3], w1);
+    };
+    const auto blend = [&](size_t i, size_t slot) __attribute__((always_inline)) {
+        const std::array<const Texel*, 4>& at = ring[slot];
+        const size_t w0 = size_t(table.widths[found.kx0[i]]);
+        Texel c;
+        if (found.fx[i] == 0.0f && found.fy[i] == 0.0f) {  // on a level: blend reads layer (x0, y0) only
+            c = ColormapTable::blendTexels(at[0], w0, found.tx0[i], found.ty0[i]);
+        } else {
+            const size_t w1 = size_t(table.widths[found.kx1[i]]);
+            const TexelPair y0 = blendTexelPair(at[0], w0, found.tx0[i], at[1], w1, found.tx1[i], found.ty0[i]);
+            const TexelPair y1 = blendTexelPair(at[2], w0, found.tx0[i], at[3], w1, found.tx1[i], found.ty1[i]);
+            c = ColormapTable::rowsFirst(lowOf(y0), highOf(y0), lowOf(y1), highOf(y1), found.fx[i], found.fy[i]);
         }
-        if (k < count) {
-            std::array<const Texel*, 4>& at = ring[k % kAhead];
-            const size_t kx0 = size_t(found.kx0[k]), ky0 = size_t(found.ky0[k]);
-            const size_t w0 = size_t(table.widths[kx0]);
-            const auto corner = [&](size_t kx, size_t ky, int32_t row, int32_t column, size_t width) {
-                return table.texels[kx * table.levels + ky] + size_t(row) * width + size_t(column);
-            };
-            at[0] = corner(kx0, ky0, found.iy0[k], found.ix0[k], w0);
-            // Layer (x0, y0) is the largest of the four; below a core's L2
-            // (a coarse level's), the cache keeps them all and the
-            // prefetches would only take issue slots.
-            const bool fetch = w0 * size_t(table.heights[ky0]) * sizeof(Texel) > kPrefetchedLayerBytes;
-            if (fetch) ColormapTable::prefetchTexels(at[0], w0);
-            if (found.fx[k] == 0.0f && found.fy[k] == 0.0f) continue;
-            const size_t kx1 = size_t(found.kx1[k]), ky1 = size_t(found.ky1[k]);
-            const size_t w1 = size_t(table.widths[kx1]);
-            at[1] = corner(kx1, ky0, found.iy0[k], found.ix1[k], w1);
-            at[2] = corner(kx0, ky1, found.iy1[k], found.ix0[k], w0);
-            at[3] = corner(kx1, ky1, found.iy1[k], found.ix1[k], w1);
-            if (!fetch) continue;
-            ColormapTable::prefetchTexels(at[1], w1);
-            ColormapTable::prefetchTexels(at[2], w0);
-            ColormapTable::prefetchTexels(at[3], w1);
-        }
-    }
+        float* out = rgb + i * 3;
+        out[0] = c[0], out[1] = c[1], out[2] = c[2];
+    };
+    lookAhead(count, find, blend);
+}
+STOCHTEX_AVX2_COMPILATION void blendLayerTapsAvx2(const LayerTapsLanes& found, size_t count, const LayerArrays& table,
+                                                  float* rgb) {
+    blendLayerTapsBody(found, count, table, rgb);
+}
+void blendLayerTapsBaseline(const LayerTapsLanes& found, size_t count, const LayerArrays& table, float* rgb) {
+    blendLayerTapsBody(found, count, table, rgb);
 }
 
 }  // namespace
 
 void PrefilteredColormap::blendFound(const LayerTapsLanes& found, size_t count, float* rgb) const {
-    blendLayerTaps(found, count, {layerTexels_.data(), widths_.data(), heights_.data(), sigmas_.size()}, rgb);
+    const LayerArrays table{layerTexels_.data(), widths_.data(), heights_.data(), sigmas_.size()};
+    (useAvx2Compilation() ? blendLayerTapsAvx2 : blendLayerTapsBaseline)(found, count, table, rgb);
 }
 
 // sample one pixel at a time, each pixel's entries prefetched kAhead
@@ -523,17 +563,17 @@ void PrefilteredColormap::blendFound(const LayerTapsLanes& found, size_t count, 
 void PrefilteredColormap::lookupRow(const float* mx, const float* my, const float* sx, const float* sy, float* rgb,
                                     size_t count) const {
     std::array<Lookup, kAhead> ring;
-    for (size_t k = 0; k < count + kAhead; ++k) {
-        if (k >= kAhead) {
-            const Rgb c = blend(ring[(k - kAhead) % kAhead]);
-            std::copy(c.begin(), c.end(), rgb + (k - kAhead) * 3);
-        }
-        if (k < count) {
-            Lookup& l = ring[k % kAhead];
+    lookAhead(
+        count,
+        [&](size_t k, size_t slot) {
+            Lookup& l = ring[slot];
             l = find(mx[k], my[k], sx[k], sy[k]);
             for (size_t i = 0; i < (l.single ? 1 : 4); ++i) l.layers[i]->prefetch(l.taps[i]);
-        }
-    }
+        },
+        [&](size_t k, size_t slot) {
+            const Rgb c = blend(ring[slot]);
+            std::copy(c.begin(), c.end(), rgb + k * 3);
+        });
 }
 
 Image PrefilteredColormap::atlas(int rx, int ry) const {
