@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <tuple>
+#include <utility>
 
 #include "stochtex/core/floor.h"
 #include "stochtex/kernel/grid.h"
@@ -127,13 +129,16 @@ public:
     template <class Grid>
     TileRows tileRows(const Offsets& offs, float fv, const Grid& g) const {
         TileRows t;
-        const float size = g.sizeF();
-        const float tv = kernel::texelOfPoint(fv, size);
-        for (size_t i = 0; i < 3; ++i) {
-            t.offsetTexels[i] = offs[i].x * size;
-            t.rows[i] = g.rowsAt(kernel::periodicTexel(tv, offs[i].y * size, size));
-        }
+        const float tv = kernel::texelOfPoint(fv, g.sizeF());
+        for (size_t i = 0; i < 3; ++i) std::tie(t.offsetTexels[i], t.rows[i]) = tileRow(offs[i], tv, g);
         return t;
+    }
+    // One tile's part of tileRows: its u offset in texels of g and the rows
+    // its lookup reads, for a point at texel row tv of g (no offset).
+    template <class Grid>
+    static std::pair<float, GridRows> tileRow(TileOffset o, float tv, const Grid& g) {
+        const float size = g.sizeF();
+        return {o.x * size, g.rowsAt(kernel::periodicTexel(tv, o.y * size, size))};
     }
     TileRows tileRows(const BlendStencil& s, float fv) const { return tileRows(offsets(s), fv, example_->grid()); }
 

@@ -121,9 +121,9 @@ HWY_INLINE void GatherPairs(DF df, const float* base, VI index, VF& left, VF& ri
 // every lane's float k. Where a vector is one or two 128-bit blocks, a
 // lane's four floats are one 128-bit load (two 64-bit ones) and the blocks
 // a 4×4 transpose, cheaper here than the 64-bit gathers of GatherPairs;
-// elsewhere those gathers. (A template, so that the branch for other
-// vector sizes is not compiled.)
-template <class D, class VI4, class V>
+// elsewhere those gathers. kPairs: second is 2. (A template, so that the
+// branch for other vector sizes is not compiled.)
+template <bool kPairs, class D, class VI4, class V>
 HWY_INLINE void GatherQuads(D df, const float* base, int second, VI4 index, V (&quad)[4]) {
 #if HWY_TARGET == HWY_SCALAR
     constexpr size_t kLanes = 1;  // no blocks
@@ -139,7 +139,10 @@ HWY_INLINE void GatherQuads(D df, const float* base, int second, VI4 index, V (&
         hn::Store(index, hn::RebindToSigned<D>(), at);
         const auto lane = [&](size_t j) {
             const float* p = base + at[j];
-            return second == 2 ? hn::LoadU(d4, p) : hn::Combine(d4, hn::LoadU(d2, p + second), hn::LoadU(d2, p));
+            if constexpr (kPairs)
+                return hn::LoadU(d4, p);
+            else
+                return hn::Combine(d4, hn::LoadU(d2, p + second), hn::LoadU(d2, p));
         };
         // c[k]: lane k's four floats in block 0, lane 4 + k's in block 1.
         V c[4];
@@ -309,7 +312,7 @@ void BlendGridRow(const TilingBlendingNoise& noise, const std::array<const Basic
     // new triangle shares two of its three vertices with the last, so a
     // vertex's offset is hashed and its rows located about once instead of
     // once per triangle that has it (kernel::tileOffset, then
-    // TilingBlendingNoise::tileRows' arithmetic, on each grid).
+    // TilingBlendingNoise::tileRow on each grid).
     // Direct-mapped by (x mod 4, dy): the triangles walk the vertices in
     // order of x.
     struct VertexTile {
@@ -325,9 +328,8 @@ void BlendGridRow(const TilingBlendingNoise& noise, const std::array<const Basic
             v.valid = true;
             v.x = x;
             for (size_t l = 0; l < size_t(L); ++l) {
-                const float ty = kernel::periodicTexel(g[l].pointTexelV, o.y * g[l].size, g[l].size);
-                const int iy = int(ty);
-                v.tile[l] = {o.x * g[l].size, iy * g[l].stride, ty - float(iy)};
+                const auto [offsetTexels, rows] = TilingBlendingNoise::tileRow(o, g[l].pointTexelV, *grids[l]);
+                v.tile[l] = {offsetTexels, int(rows.row0 - g[l].texels), rows.ty};
             }
         }
         return v.tile;
@@ -365,12 +367,12 @@ void BlendGridRow(const TilingBlendingNoise& noise, const std::array<const Basic
                 const auto index = hn::Add(rowIndex, C == 1 ? ix : hn::ShiftLeft<1>(ix));
                 if constexpr (C == 1) {
                     VF quad[4];  // left and right, below then above
-                    GatherQuads(df, grid.texels, grid.stride, index, quad);
+                    GatherQuads<false>(df, grid.texels, grid.stride, index, quad);
                     bl[0] = quad[0], br[0] = quad[1], al[0] = quad[2], ar[0] = quad[3];
                 } else {
                     VF below[4], above[4];  // left's mean and variance, right's
-                    GatherQuads(df, grid.texels, 2, index, below);
-                    GatherQuads(df, grid.texels + grid.stride, 2, index, above);
+                    GatherQuads<true>(df, grid.texels, 2, index, below);
+                    GatherQuads<true>(df, grid.texels + grid.stride, 2, index, above);
                     bl[0] = below[0], bl[1] = below[1], br[0] = below[2], br[1] = below[3];
                     al[0] = above[0], al[1] = above[1], ar[0] = above[2], ar[1] = above[3];
                 }
