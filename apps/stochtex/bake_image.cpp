@@ -15,6 +15,7 @@
 #include "progress.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/image_stream.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/tileable.h"
 
 namespace stochtex::cli {
@@ -87,9 +88,12 @@ void registerBakeImage(CLI::App& app) {
         if (args->pbr) args->options.response.kind = ResponseKind::PrefilteredColormap;  // the albedo's view rules
         Camera whole;
         whole.view = makeView(spec, args->view, ViewUse::BandedBake);  // memory is one band: 65536 a side
+        // The parts of every program this command builds (the period's, each
+        // PBR image's), so that each example and pyramid is built once.
+        PartCache parts;
         std::string tiling;
         if (args->tileable) {
-            const TilePeriod t = makeTileable(spec, args->options.response, whole.view);
+            const TilePeriod t = makeTileable(spec, args->options.response, whole.view, &parts);
             char text[160];
             std::snprintf(text, sizeof text, ", tileable: %d x %d example periods of %d texels, grid x%.4f along u",
                           t.periodsU, t.periodsV, t.exampleSize, t.stretch);
@@ -109,7 +113,7 @@ void registerBakeImage(CLI::App& app) {
         for (size_t i = 0; i < images.size(); ++i) {
             FilterOptions options = args->options;
             options.response.kind = images[i].first;
-            const std::unique_ptr<ViewRenderer> renderer = makeRenderer(spec, options, args->device);
+            const std::unique_ptr<ViewRenderer> renderer = makeRenderer(spec, options, args->device, &parts);
             if (i == 0) firstExampleSize = renderer->exampleSize();
             Camera camera = whole;
             camera.view = sameUvView(whole.view, firstExampleSize, renderer->exampleSize());

@@ -23,9 +23,9 @@ void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options) {
 }
 
 std::unique_ptr<ViewRenderer> makeRenderer(const PatternSpec& spec, const FilterOptions& options,
-                                           const DeviceFlags& flags) {
+                                           const DeviceFlags& flags, PartCache* parts) {
     checkDeviceFilter(flags, options);
-    if (!flags.gpu) return makeCpuRenderer(spec, options);
+    if (!flags.gpu) return makeCpuRenderer(spec, options, parts);
     return makeGpuRenderer(spec, options, flags.pipeline, flags.derivatives);
 }
 

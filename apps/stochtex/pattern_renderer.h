@@ -27,7 +27,9 @@ void checkDeviceFilter(const DeviceFlags& flags, const FilterOptions& options);
 
 // The renderer of a pattern file for these flags: the CPU evaluator, or
 // with --gpu the GPU's on a headless context (checkDeviceFilter first).
+// `parts` (PartCache) serves the CPU evaluator only: each GPU renderer has a
+// context of its own, and a cache's device attachments belong to one.
 std::unique_ptr<ViewRenderer> makeRenderer(const PatternSpec& spec, const FilterOptions& options,
-                                           const DeviceFlags& flags);
+                                           const DeviceFlags& flags, PartCache* parts = nullptr);
 
 }  // namespace stochtex::cli

@@ -9,6 +9,7 @@
 #include "stochtex/gpu/gpu_graph.h"
 #include "stochtex/noise/tiling_blending_lanes.h"
 #include "stochtex/pattern/cpu_renderer.h"
+#include "stochtex/pattern/part_cache.h"
 #include "stochtex/pattern/presets.h"
 #include "stochtex/pattern/tileable.h"
 #include "test_util.h"
@@ -109,6 +110,30 @@ TEST(Tileable, WrapsWithoutASeamAndIsPeriodic) {
             largest = std::max(largest, double(std::abs(tiled.data()[i] - again.data()[i])));
         EXPECT_LT(largest, 2e-4);
     }
+}
+
+// makeTileable builds the program to learn its period: with a PartCache,
+// the render that follows takes its examples from there (no example
+// synthesised twice) and renders what a render without the cache does, bit
+// for bit.
+TEST(Tileable, ThePeriodsProgramLendsItsPartsToTheRender) {
+    FilterOptions o;
+    o.use(parseFilter("smooth"));
+    PatternSpec spec = loadPreset("camouflage");
+    View view;
+    view.width = view.height = 64;
+    view.scale = 7.0;
+    PartCache parts;
+    makeTileable(spec, o.response, view, &parts);
+    const PartCache::Builds period = parts.builds();
+    EXPECT_EQ(period.fields, 2);  // camouflage's two noises
+    Camera camera;
+    camera.view = view;
+    const Image cached = makeCpuRenderer(spec, o, &parts)->render(camera);
+    EXPECT_EQ(parts.builds().fields, period.fields);
+    EXPECT_EQ(parts.builds().colormaps, period.colormaps);
+    EXPECT_GT(parts.builds().estimators, period.estimators);  // the filtered render's own: the period built none
+    EXPECT_EQ(cached.data(), renderCpu(spec, o, view).data());
 }
 
 // The GPU renders the periodic grid the CPU does (the kernel's

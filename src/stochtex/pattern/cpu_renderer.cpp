@@ -11,8 +11,8 @@ namespace {
 template <class Evaluator, class Filtered>
 class Owning final : public ViewRenderer {
 public:
-    Owning(Evaluator evaluator, const FilterOptions& options)
-        : evaluator_(std::move(evaluator)), filtered_(evaluator_, options) {}
+    Owning(Evaluator evaluator, const FilterOptions& options, PartCache* parts)
+        : evaluator_(std::move(evaluator)), filtered_(evaluator_, options, GraphMoments::Matched, parts) {}
     Image render(const Camera& camera, const Progress& progress) const override {
         return filtered_.render(camera, progress);
     }
@@ -25,8 +25,9 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ViewRenderer> makeCpuRenderer(const PatternSpec& spec, const FilterOptions& options) {
-    return std::make_unique<Owning<GraphPattern, FilteredGraph>>(GraphPattern::build(spec, options.response), options);
+std::unique_ptr<ViewRenderer> makeCpuRenderer(const PatternSpec& spec, const FilterOptions& options, PartCache* parts) {
+    return std::make_unique<Owning<GraphPattern, FilteredGraph>>(GraphPattern::build(spec, options.response, parts),
+                                                                 options, parts);
 }
 
 }  // namespace stochtex

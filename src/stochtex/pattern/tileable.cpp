@@ -9,11 +9,11 @@
 
 namespace stochtex {
 
-TilePeriod makeTileable(PatternSpec& spec, const ResponseOptions& response, View& view) {
+TilePeriod makeTileable(PatternSpec& spec, const ResponseOptions& response, View& view, PartCache* parts) {
     validateView(view);
     TilePeriod t;
     // W of the program the view will render (its first leaf's example).
-    t.exampleSize = GraphPattern::build(spec, response).exampleSize();
+    t.exampleSize = GraphPattern::build(spec, response, parts).exampleSize();
     const double w = t.exampleSize;
     t.periodsU = std::max(1, int(std::lround(view.width * view.scale / w)));
     view.scale = t.periodsU * w / view.width;

@@ -16,6 +16,8 @@
 
 namespace stochtex {
 
+class PartCache;  // pattern/part_cache.h
+
 struct TilePeriod {
     int periodsU = 0, periodsV = 0;  // example periods across the view
     int exampleSize = 0;             // W, texels per period
@@ -27,7 +29,9 @@ struct TilePeriod {
 // least 1) to what it covered, and spec.gridPeriods to those periods. The
 // height must then cover a whole number too (InputError naming size
 // otherwise: e.g. a square view always does). InputError naming
-// gridPeriods for a program that transforms a leaf's uv.
-TilePeriod makeTileable(PatternSpec& spec, const ResponseOptions& response, View& view);
+// gridPeriods for a program that transforms a leaf's uv. It builds the
+// program to learn its example size: with `parts` (PartCache), the render
+// that follows takes the examples built here instead of building them again.
+TilePeriod makeTileable(PatternSpec& spec, const ResponseOptions& response, View& view, PartCache* parts = nullptr);
 
 }  // namespace stochtex
