@@ -1178,7 +1178,7 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                     // The kernel's estimate below is then each texel as it
                     // is (texelMoments), its variance the rows' 0, so σ̂ = 0
                     // and the lookups read the rows' means on the table's
-                    // σ = 0 layer: the same values, without the per-pixel
+                    // layer (0, 0): the same values, without the per-pixel
                     // coordinates (a fifth of this zoom's instructions).
                     tables_.front()->sampleRowWithoutDeviations(rows[0][0], rows[0][1], out.row(py),
                                                                 size_t(view.width));

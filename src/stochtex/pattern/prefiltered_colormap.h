@@ -81,9 +81,10 @@ public:
 
     // sampleRow where every deviation is 0 (a zoom at one texel per pixel:
     // level 0 holds no within-texel variance): layer (0, 0) alone, the
-    // σ = 0 level of every mode and axis, its taps in lanes as an
-    // unfiltered lookup's (ColormapTable::sampleRow). Returns how many the
-    // lanes tapped.
+    // level a σ of 0 reads in every mode (the smooth mode's σ = 0, the
+    // paper's finest, 1/256, which smaller σ clamp to), its taps in lanes as
+    // an unfiltered lookup's (ColormapTable::sampleRow). Returns how many
+    // the lanes tapped.
     size_t sampleRowWithoutDeviations(const float* mx, const float* my, float* rgb, size_t count) const {
         return layer(0, 0).sampleRow(mx, my, 1, rgb, count);
     }
