@@ -43,6 +43,25 @@ inline std::filesystem::path scratchPath(const std::string& name) {
            (name + "_" + std::to_string(deathTestChild ? ::getppid() : ::getpid()));
 }
 
+// A fresh folder at scratchPath(name), removed with this object (also when
+// an assertion ends the test early), for a test that writes files.
+class ScratchDir {
+public:
+    explicit ScratchDir(const std::string& name) : path_(scratchPath(name)) {
+        std::filesystem::create_directories(path_);
+    }
+    ~ScratchDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path_, ec);
+    }
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
+
 // A fixture with a fresh folder of its own (named after the suite and the
 // process), removed after each test.
 class ScratchFolder : public testing::Test {

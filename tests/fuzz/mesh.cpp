@@ -13,13 +13,23 @@
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path& scratch() {
-    static const fs::path dir = [] {
+// The inputs' folder, removed when the fuzzer exits.
+struct ScratchFolder {
+    fs::path path;
+    ScratchFolder() {
         std::string d = (fs::temp_directory_path() / "stochtex-fuzz-mesh-XXXXXX").string();
         if (!mkdtemp(d.data())) std::abort();
-        return fs::path(d);
-    }();
-    return dir;
+        path = d;
+    }
+    ~ScratchFolder() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+const fs::path& scratch() {
+    static const ScratchFolder dir;
+    return dir.path;
 }
 
 }  // namespace

@@ -365,9 +365,8 @@ TEST(Gpu, ComputeKernelMatchesTheCpu) {
 
 TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     // A bimodal exemplar: T⁻¹ must bring its plateaus back on the GPU too.
-    const fs::path dir = test::scratchPath("stochtex_gpu_test");
-    fs::create_directories(dir);
-    const PatternSpec p = test::gaussianizedBimodalPattern(dir);
+    const test::ScratchDir dir("stochtex_gpu_test");
+    const PatternSpec p = test::gaussianizedBimodalPattern(dir.path());
     ASSERT_TRUE(GraphPattern::build(p).leaf(0).example().gaussianized());
     View v;
     v.width = v.height = 128;
@@ -379,7 +378,6 @@ TEST(Gpu, GaussianizedExemplarGoesThroughTheInverseTransform) {
     o.use(parseFilter("smooth"));
     v.scale = 4.0;
     expectParity(p, v, "gaussianized exemplar, smooth, scale 4", o);
-    fs::remove_all(dir);
 }
 
 // A texture graph reaches the GPU as the pattern its linear nodes fold

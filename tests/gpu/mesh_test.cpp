@@ -20,11 +20,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The folder the tests' mesh files are written to, removed when the
+// process ends (the tests read files a test before them wrote only through
+// their own writeFile calls).
+const fs::path& meshFolder() {
+    static const test::ScratchDir dir("stochtex_meshes");
+    return dir.path();
+}
+
 fs::path writeFile(const std::string& name, const std::string& text) {
-    const fs::path dir = test::scratchPath("stochtex_meshes");
-    fs::create_directories(dir);
-    std::ofstream(dir / name, std::ios::binary) << text;
-    return dir / name;
+    std::ofstream(meshFolder() / name, std::ios::binary) << text;
+    return meshFolder() / name;
 }
 
 // A cube of side 2 centred on (10, 20, 30): 8 corners, 6 quads (OBJ
@@ -155,7 +161,7 @@ TEST(MeshFile, BadFilesAreRefusedNamingThem) {
     const auto refusal = [](const fs::path& p) {
         return std::string(test::inputErrorOf([&] { loadMesh(p.string()); }).what());
     };
-    const fs::path missing = test::scratchPath("stochtex_meshes") / "nope.obj";
+    const fs::path missing = meshFolder() / "nope.obj";
     EXPECT_EQ(refusal(missing), missing.string() + ": no such mesh file");
     const fs::path ply = writeFile("a.ply", "ply\n");
     EXPECT_EQ(refusal(ply), ply.string() + ": unknown mesh format '.ply' (use .obj, .gltf or .glb)");

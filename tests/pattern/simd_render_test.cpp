@@ -117,9 +117,8 @@ TEST(SimdRender, FilteredZoomsAgreeWithTheScalarKernel) {
 // blend does, nor differ from the pyramid's level 0 that the scalar kernel
 // reads.
 TEST(SimdRender, FilteredZoomsOfAGaussianizedExemplarAgreeWithTheScalarKernel) {
-    const std::filesystem::path dir = test::scratchPath("stochtex_simd_render_test");
-    std::filesystem::create_directories(dir);
-    const GraphPattern program = GraphPattern::build(test::gaussianizedBimodalPattern(dir));
+    const test::ScratchDir dir("stochtex_simd_render_test");
+    const GraphPattern program = GraphPattern::build(test::gaussianizedBimodalPattern(dir.path()));
     ASSERT_TRUE(program.leaf(0).example().gaussianized());
     expectFilteredZoomsAgree(program, {1.0, 2.0});
 }
