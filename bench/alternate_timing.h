@@ -20,10 +20,11 @@ double seconds(F&& f) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Seconds spent by each of the two, summed over the benchmark's iterations.
+// Seconds spent by each of the two (or three), summed over the benchmark's iterations.
 struct AlternateTimes {
     double first = 0;
     double second = 0;
+    double third = 0;
 };
 
 // The seconds of one measurement: a callable returning nothing is timed on
@@ -38,13 +39,17 @@ double measure(F& f) {
     }
 }
 
-// Runs the benchmark loop, measuring `first` then `second` once per iteration.
-template <class First, class Second>
-AlternateTimes timeAlternately(benchmark::State& state, First&& first, Second&& second) {
+// Runs the benchmark loop, measuring `first` then `second` once per
+// iteration, and then `third` if given (a limit measured under the same
+// conditions: the gather floor).
+template <class First, class Second, class... Third>
+AlternateTimes timeAlternately(benchmark::State& state, First&& first, Second&& second, Third&&... third) {
+    static_assert(sizeof...(Third) <= 1, "two or three callables");
     AlternateTimes t;
     for (auto _ : state) {
         t.first += measure(first);
         t.second += measure(second);
+        ((t.third += measure(third)), ...);
     }
     return t;
 }
