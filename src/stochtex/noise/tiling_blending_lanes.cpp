@@ -11,6 +11,7 @@
 // Per target, after foreach_target.h (Log2).
 #include <hwy/contrib/math/math-inl.h>
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 
@@ -518,12 +519,40 @@ HWY_INLINE VF SigmaLevelCoordinate(DF df, VF sigma, bool paper, float top) {
     return hn::IfThenElseZero(positive, hn::Min(c, hn::Set(df, top)));
 }
 
+// sizes[level] in each lane, for levels < the table's count: lane permutes
+// of the sizes a vector at a time (a table's few levels fit one or a few
+// vectors), where a gather costs about ten cycles a vector.
+class LevelSizeLookup {
+public:
+    static constexpr size_t kMaxSizes = 64;
+    LevelSizeLookup(const int32_t* sizes, int count)
+        : chunks_((size_t(count) + hn::Lanes(DI()) - 1) / hn::Lanes(DI())) {
+        if (count < 1 || size_t(count) > kMaxSizes) throw std::invalid_argument("LevelSizeLookup: 1 to 64 levels");
+        std::copy(sizes, sizes + count, sizes_.begin());
+    }
+    VI operator()(VI level) const {
+        const DI di;
+        const size_t n = hn::Lanes(di);
+        const auto lane = hn::IndicesFromVec(di, hn::And(level, hn::Set(di, int32_t(n - 1))));
+        VI size = hn::TableLookupLanes(hn::Load(di, sizes_.data()), lane);
+        for (size_t c = 1; c < chunks_; ++c)
+            size = hn::IfThenElse(hn::Gt(level, hn::Set(di, int32_t(c * n) - 1)),
+                                  hn::TableLookupLanes(hn::Load(di, sizes_.data() + c * n), lane), size);
+        return size;
+    }
+
+private:
+    size_t chunks_;
+    alignas(64) std::array<int32_t, kMaxSizes> sizes_{};
+};
+
 size_t LayerTapsImpl(const float* mx, const float* my, const float* sx, const float* sy, size_t count, bool paper,
                      int levels, const int32_t* widths, const int32_t* heights, LayerTapsLanes& out) {
     const DF df;
     const DI di;
     const size_t n = hn::Lanes(df);
     const float top = float(levels - 1);
+    const LevelSizeLookup widthOf(widths, levels), heightOf(heights, levels);
     const auto last = hn::Set(di, levels - 1), oneI = hn::Set(di, 1);
     size_t k = 0;
     for (; k + n <= count; k += n) {
@@ -540,18 +569,18 @@ size_t LayerTapsImpl(const float* mx, const float* my, const float* sx, const fl
         hn::StoreU(ky1, di, out.ky1.data() + k);
         // The taps in the layers' sizes along each axis: a layer's entry
         // count along it is sizes[level].
-        const auto tap = [&](const int32_t* sizes, VI level, VF value, int32_t* entry, float* weight) {
+        const auto tap = [&](const LevelSizeLookup& sizeOf, VI level, VF value, int32_t* entry, float* weight) {
             VI i;
             VF t;
-            TableTap(df, hn::GatherIndex(di, sizes, level), value, i, t);
+            TableTap(df, sizeOf(level), value, i, t);
             hn::StoreU(i, di, entry + k);
             hn::StoreU(t, df, weight + k);
         };
         const auto x = hn::LoadU(df, mx + k), y = hn::LoadU(df, my + k);
-        tap(widths, kx0, x, out.ix0.data(), out.tx0.data());
-        tap(widths, kx1, x, out.ix1.data(), out.tx1.data());
-        tap(heights, ky0, y, out.iy0.data(), out.ty0.data());
-        tap(heights, ky1, y, out.iy1.data(), out.ty1.data());
+        tap(widthOf, kx0, x, out.ix0.data(), out.tx0.data());
+        tap(widthOf, kx1, x, out.ix1.data(), out.tx1.data());
+        tap(heightOf, ky0, y, out.iy0.data(), out.ty0.data());
+        tap(heightOf, ky1, y, out.iy1.data(), out.ty1.data());
     }
     return k;
 }
