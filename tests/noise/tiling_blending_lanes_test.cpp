@@ -190,6 +190,19 @@ TEST(TilingBlendingLanes, LayerTapsAreTheKernels) {
                 tap(mx[k], widths[size_t(out.kx1[k])], out.ix1[k], out.tx1[k]);
                 tap(my[k], heights[size_t(out.ky0[k])], out.iy0[k], out.ty0[k]);
                 tap(my[k], heights[size_t(out.ky1[k])], out.iy1[k], out.ty1[k]);
+                // The corners as the blend reads them.
+                const int32_t w0 = widths[size_t(out.kx0[k])], w1 = widths[size_t(out.kx1[k])];
+                ASSERT_EQ(out.width0[k], w0) << k;
+                ASSERT_EQ(out.width1[k], w1) << k;
+                ASSERT_EQ(out.entries00[k], w0 * heights[size_t(out.ky0[k])]) << k;
+                ASSERT_EQ(out.layer00[k], out.kx0[k] * levels + out.ky0[k]) << k;
+                ASSERT_EQ(out.layer10[k], out.kx1[k] * levels + out.ky0[k]) << k;
+                ASSERT_EQ(out.layer01[k], out.kx0[k] * levels + out.ky1[k]) << k;
+                ASSERT_EQ(out.layer11[k], out.kx1[k] * levels + out.ky1[k]) << k;
+                ASSERT_EQ(out.entry00[k], out.iy0[k] * w0 + out.ix0[k]) << k;
+                ASSERT_EQ(out.entry10[k], out.iy0[k] * w1 + out.ix1[k]) << k;
+                ASSERT_EQ(out.entry01[k], out.iy1[k] * w0 + out.ix0[k]) << k;
+                ASSERT_EQ(out.entry11[k], out.iy1[k] * w1 + out.ix1[k]) << k;
             }
         }
     });

@@ -569,18 +569,32 @@ size_t LayerTapsImpl(const float* mx, const float* my, const float* sx, const fl
         hn::StoreU(ky1, di, out.ky1.data() + k);
         // The taps in the layers' sizes along each axis: a layer's entry
         // count along it is sizes[level].
-        const auto tap = [&](const LevelSizeLookup& sizeOf, VI level, VF value, int32_t* entry, float* weight) {
+        const auto tap = [&](VI size, VF value, int32_t* entry, float* weight) {
             VI i;
             VF t;
-            TableTap(df, sizeOf(level), value, i, t);
+            TableTap(df, size, value, i, t);
             hn::StoreU(i, di, entry + k);
             hn::StoreU(t, df, weight + k);
+            return i;
         };
         const auto x = hn::LoadU(df, mx + k), y = hn::LoadU(df, my + k);
-        tap(widthOf, kx0, x, out.ix0.data(), out.tx0.data());
-        tap(widthOf, kx1, x, out.ix1.data(), out.tx1.data());
-        tap(heightOf, ky0, y, out.iy0.data(), out.ty0.data());
-        tap(heightOf, ky1, y, out.iy1.data(), out.ty1.data());
+        const auto w0 = widthOf(kx0), w1 = widthOf(kx1), h0 = heightOf(ky0);
+        const auto ix0 = tap(w0, x, out.ix0.data(), out.tx0.data());
+        const auto ix1 = tap(w1, x, out.ix1.data(), out.tx1.data());
+        const auto iy0 = tap(h0, y, out.iy0.data(), out.ty0.data());
+        const auto iy1 = tap(heightOf(ky1), y, out.iy1.data(), out.ty1.data());
+        const auto n0 = hn::Mul(kx0, hn::Set(di, levels)), n1 = hn::Mul(kx1, hn::Set(di, levels));
+        hn::StoreU(hn::Add(n0, ky0), di, out.layer00.data() + k);
+        hn::StoreU(hn::Add(n1, ky0), di, out.layer10.data() + k);
+        hn::StoreU(hn::Add(n0, ky1), di, out.layer01.data() + k);
+        hn::StoreU(hn::Add(n1, ky1), di, out.layer11.data() + k);
+        hn::StoreU(hn::Add(hn::Mul(iy0, w0), ix0), di, out.entry00.data() + k);
+        hn::StoreU(hn::Add(hn::Mul(iy0, w1), ix1), di, out.entry10.data() + k);
+        hn::StoreU(hn::Add(hn::Mul(iy1, w0), ix0), di, out.entry01.data() + k);
+        hn::StoreU(hn::Add(hn::Mul(iy1, w1), ix1), di, out.entry11.data() + k);
+        hn::StoreU(w0, di, out.width0.data() + k);
+        hn::StoreU(w1, di, out.width1.data() + k);
+        hn::StoreU(hn::Mul(w0, h0), di, out.entries00.data() + k);
     }
     return k;
 }

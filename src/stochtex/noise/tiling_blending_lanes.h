@@ -90,6 +90,14 @@ struct LayerTapsLanes {
     static constexpr size_t kCapacity = 256;  // pixels per call
     alignas(64) std::array<int32_t, kCapacity> kx0, ky0, kx1, ky1, ix0, ix1, iy0, iy1;
     alignas(64) std::array<float, kCapacity> fx, fy, tx0, tx1, ty0, ty1;
+    // The same taps as a blend reads them, so that it does no index
+    // arithmetic of its own: each corner's layer (kx · levels + ky) and
+    // entry in it (row · width + column), for (x0, y0), (x1, y0), (x0, y1)
+    // and (x1, y1); the widths of columns kx0 and kx1 (the rows' strides);
+    // and layer (kx0, ky0)'s entry count.
+    alignas(64) std::array<int32_t, kCapacity> layer00, layer10, layer01, layer11;
+    alignas(64) std::array<int32_t, kCapacity> entry00, entry10, entry01, entry11;
+    alignas(64) std::array<int32_t, kCapacity> width0, width1, entries00;
 };
 // Fills whole vectors only and returns how many pixels it did (the caller
 // does the rest with the kernel); count ≤ kCapacity, levels ≥ 1. The paper mode's level is

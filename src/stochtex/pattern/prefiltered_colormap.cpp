@@ -483,44 +483,31 @@ typedef float TexelPair __attribute__((vector_size(32)));
                                     pairOf(Texel{txa, txa, txa, txa}, Texel{txb, txb, txb, txb}), ty);
 }
 
-// A prefiltered table's layers, as blendLayerTaps reads them.
-struct LayerArrays {
-    const Texel* const* texels;  // layer (kx, ky)'s entries at kx·levels + ky
-    const int32_t* widths;       // its entries along x (by kx) and y (by ky)
-    const int32_t* heights;
-    size_t levels;
-};
-
 // The lanes' lookups blended, pixel by pixel: each pixel's corners found
 // and their entries prefetched kAhead pixels before its blend (a lookup
 // reads up to four layers of up to a megabyte each, beyond a core's L2),
 // then the layers blended two at a time, (x0,y0) beside (x1,y0) and (x0,y1)
 // beside (x1,y1), and mixed as PrefilteredColormap::blend mixes them.
+// layers: layer (kx, ky)'s entries at kx·levels + ky.
 [[gnu::always_inline]] inline void blendLayerTapsBody(const LayerTapsLanes& found, size_t count,
-                                                      const LayerArrays& table, float* rgb) {
+                                                      const Texel* const* layers, float* rgb) {
     constexpr size_t kPrefetchedLayerBytes = 128 << 10;
     // The corners of a pixel's four layers, (x0,y0), (x1,y0), (x0,y1), (x1,y1).
     std::array<std::array<const Texel*, 4>, kAhead> ring;
     const auto find = [&](size_t k, size_t slot) __attribute__((always_inline)) {
         std::array<const Texel*, 4>& at = ring[slot];
-        const size_t kx0 = size_t(found.kx0[k]), ky0 = size_t(found.ky0[k]);
-        const size_t w0 = size_t(table.widths[kx0]);
-        const auto corner = [&](size_t kx, size_t ky, int32_t row, int32_t column, size_t width)
-            __attribute__((always_inline)) {
-            return table.texels[kx * table.levels + ky] + size_t(row) * width + size_t(column);
-        };
-        at[0] = corner(kx0, ky0, found.iy0[k], found.ix0[k], w0);
+        at[0] = layers[found.layer00[k]] + found.entry00[k];
         // Layer (x0, y0) is the largest of the four; below a core's L2
         // (a coarse level's), the cache keeps them all and the
         // prefetches would only take issue slots.
-        const bool fetch = w0 * size_t(table.heights[ky0]) * sizeof(Texel) > kPrefetchedLayerBytes;
+        const bool fetch = size_t(found.entries00[k]) * sizeof(Texel) > kPrefetchedLayerBytes;
+        const size_t w0 = size_t(found.width0[k]);
         if (fetch) ColormapTable::prefetchTexels(at[0], w0);
         if (found.fx[k] == 0.0f && found.fy[k] == 0.0f) return;
-        const size_t kx1 = size_t(found.kx1[k]), ky1 = size_t(found.ky1[k]);
-        const size_t w1 = size_t(table.widths[kx1]);
-        at[1] = corner(kx1, ky0, found.iy0[k], found.ix1[k], w1);
-        at[2] = corner(kx0, ky1, found.iy1[k], found.ix0[k], w0);
-        at[3] = corner(kx1, ky1, found.iy1[k], found.ix1[k], w1);
+        const size_t w1 = size_t(found.width1[k]);
+        at[1] = layers[found.layer10[k]] + found.entry10[k];
+        at[2] = layers[found.layer01[k]] + found.entry01[k];
+        at[3] = layers[found.layer11[k]] + found.entry11[k];
         if (!fetch) return;
         ColormapTable::prefetchTexels(at[1], w1);
         ColormapTable::prefetchTexels(at[2], w0);
@@ -528,12 +515,12 @@ struct LayerArrays {
     };
     const auto blend = [&](size_t i, size_t slot) __attribute__((always_inline)) {
         const std::array<const Texel*, 4>& at = ring[slot];
-        const size_t w0 = size_t(table.widths[found.kx0[i]]);
+        const size_t w0 = size_t(found.width0[i]);
         Texel c;
         if (found.fx[i] == 0.0f && found.fy[i] == 0.0f) {  // on a level: blend reads layer (x0, y0) only
             c = ColormapTable::blendTexels(at[0], w0, found.tx0[i], found.ty0[i]);
         } else {
-            const size_t w1 = size_t(table.widths[found.kx1[i]]);
+            const size_t w1 = size_t(found.width1[i]);
             const TexelPair y0 = blendTexelPair(at[0], w0, found.tx0[i], at[1], w1, found.tx1[i], found.ty0[i]);
             const TexelPair y1 = blendTexelPair(at[2], w0, found.tx0[i], at[3], w1, found.tx1[i], found.ty1[i]);
             c = ColormapTable::rowsFirst(lowOf(y0), highOf(y0), lowOf(y1), highOf(y1), found.fx[i], found.fy[i]);
@@ -543,19 +530,18 @@ struct LayerArrays {
     };
     lookAhead(count, find, blend);
 }
-STOCHTEX_AVX2_COMPILATION void blendLayerTapsAvx2(const LayerTapsLanes& found, size_t count, const LayerArrays& table,
+STOCHTEX_AVX2_COMPILATION void blendLayerTapsAvx2(const LayerTapsLanes& found, size_t count, const Texel* const* layers,
                                                   float* rgb) {
-    blendLayerTapsBody(found, count, table, rgb);
+    blendLayerTapsBody(found, count, layers, rgb);
 }
-void blendLayerTapsBaseline(const LayerTapsLanes& found, size_t count, const LayerArrays& table, float* rgb) {
-    blendLayerTapsBody(found, count, table, rgb);
+void blendLayerTapsBaseline(const LayerTapsLanes& found, size_t count, const Texel* const* layers, float* rgb) {
+    blendLayerTapsBody(found, count, layers, rgb);
 }
 
 }  // namespace
 
 void PrefilteredColormap::blendFound(const LayerTapsLanes& found, size_t count, float* rgb) const {
-    const LayerArrays table{layerTexels_.data(), widths_.data(), heights_.data(), sigmas_.size()};
-    (useAvx2Compilation() ? blendLayerTapsAvx2 : blendLayerTapsBaseline)(found, count, table, rgb);
+    (useAvx2Compilation() ? blendLayerTapsAvx2 : blendLayerTapsBaseline)(found, count, layerTexels_.data(), rgb);
 }
 
 // sample one pixel at a time, each pixel's entries prefetched kAhead
