@@ -42,7 +42,10 @@ size_t ColormapTable::sampleRow(const float* x, const float* y, size_t stride, f
         const size_t lanes =
             tableTapsLanes(x + k0 * stride, y + k0 * stride, stride, width_, height_, n, entry, tx, ty);
         inLanes += lanes;
+        const bool prefetch = bytes() > kPrefetchedBytes;
         for (size_t k = 0; k < lanes; ++k) {
+            if (prefetch && k + kPrefetchAhead < lanes)
+                prefetchTexels(rgba_.data() + entry[k + kPrefetchAhead], size_t(width_));
             const Rgb c = blend({size_t(entry[k]), tx[k], ty[k]});
             std::copy(c.begin(), c.end(), rgb + (k0 + k) * 3);
         }

@@ -86,6 +86,12 @@ public:
     [[gnu::always_inline]] static Texel blendTexels(const Texel* a, size_t width, float tx, float ty) {
         return rowsFirst(a[0], a[1], a[width], a[width + 1], tx, ty);
     }
+    // A row of lookups in a table of more than kPrefetchedBytes (beyond a
+    // core's L2, where a smaller one stays in cache and its prefetches would
+    // only take issue slots) asks for each pixel's entries kPrefetchAhead
+    // pixels before its blend.
+    static constexpr size_t kPrefetchedBytes = size_t(128) << 10;
+    static constexpr size_t kPrefetchAhead = 8;
     [[gnu::always_inline]] static void prefetchTexels(const Texel* a, size_t width) {
         __builtin_prefetch(a);
         __builtin_prefetch(a + 1);

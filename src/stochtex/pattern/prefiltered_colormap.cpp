@@ -448,7 +448,7 @@ size_t PrefilteredColormap::sampleRow(const float* mx, const float* my, const fl
 namespace {
 
 // Pixels between a lookup's prefetch and its blend.
-constexpr size_t kAhead = 8;
+constexpr size_t kAhead = ColormapTable::kPrefetchAhead;
 
 // Pixel k's lookup found (its entries prefetched) at step k and blended at
 // step k + kAhead, through a ring of kAhead slots: find(k, slot) for
@@ -491,16 +491,13 @@ typedef float TexelPair __attribute__((vector_size(32)));
 // layers: layer (kx, ky)'s entries at kx·levels + ky.
 [[gnu::always_inline]] inline void blendLayerTapsBody(const LayerTapsLanes& found, size_t count,
                                                       const Texel* const* layers, float* rgb) {
-    constexpr size_t kPrefetchedLayerBytes = 128 << 10;
     // The corners of a pixel's four layers, (x0,y0), (x1,y0), (x0,y1), (x1,y1).
     std::array<std::array<const Texel*, 4>, kAhead> ring;
     const auto find = [&](size_t k, size_t slot) __attribute__((always_inline)) {
         std::array<const Texel*, 4>& at = ring[slot];
         at[0] = layers[found.layer00[k]] + found.entry00[k];
-        // Layer (x0, y0) is the largest of the four; below a core's L2
-        // (a coarse level's), the cache keeps them all and the
-        // prefetches would only take issue slots.
-        const bool fetch = size_t(found.entries00[k]) * sizeof(Texel) > kPrefetchedLayerBytes;
+        // Layer (x0, y0) is the largest of the four.
+        const bool fetch = size_t(found.entries00[k]) * sizeof(Texel) > ColormapTable::kPrefetchedBytes;
         const size_t w0 = size_t(found.width0[k]);
         if (fetch) ColormapTable::prefetchTexels(at[0], w0);
         if (found.fx[k] == 0.0f && found.fy[k] == 0.0f) return;
