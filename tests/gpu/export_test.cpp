@@ -816,7 +816,7 @@ TEST(Export, TriplanarDrawsASphereAndACubeWithoutSeams) {
                 for (int x = 0; x < w; ++x) {
                     if (!inside(x, y)) continue;
                     const bool pure = largest(x, y) > 0.97f;
-                    for (const auto [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+                    for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
                         if (!inside(x + dx, y + dy)) continue;
                         const double d = diff(*img, x, y, x + dx, y + dy);
                         if (dominant(x, y) != dominant(x + dx, y + dy)) {
@@ -846,8 +846,12 @@ TEST(Export, TriplanarDrawsASphereAndACubeWithoutSeams) {
             ASSERT_GT(interior.n, 1000);
             ASSERT_GT(unrelated.n, 1000);
             EXPECT_GT(unrelated.value(), 2.0 * interior.value());  // the measure has room to see a jump
-            if (shape == 0 && img == &blended) EXPECT_LT(seam.value(), 1.25 * interior.value());
-            if (shape == 0 && img == &hard) EXPECT_GT(seam.value(), 1.5 * interior.value());
+            if (shape == 0 && img == &blended) {
+                EXPECT_LT(seam.value(), 1.25 * interior.value());
+            }
+            if (shape == 0 && img == &hard) {
+                EXPECT_GT(seam.value(), 1.5 * interior.value());
+            }
             if (shape == 1) {
                 EXPECT_LT(seam.value(), 1.15 * unrelated.value());
                 EXPECT_LT(std::abs(seamGreen.value() - interiorGreen.value()), 0.25 * interiorStd);

@@ -100,9 +100,10 @@ void writeStatsCoding(std::ostringstream& o, const GraphEstimator& estimator) {
         const std::string n = std::to_string(levels.size());
         std::string offsets, scales, covariances;
         for (size_t l = 0; l < levels.size(); ++l) {
-            offsets += (l ? ", " : "") + vec(levels[l].offset);
-            scales += (l ? ", " : "") + vec(levels[l].scale);
-            covariances += (l ? ", " : "") + vec(levels[l].covariance);
+            const char* separator = l ? ", " : "";
+            offsets.append(separator).append(vec(levels[l].offset));
+            scales.append(separator).append(vec(levels[l].scale));
+            covariances.append(separator).append(vec(levels[l].covariance));
         }
         o << "    if (s.pair == " << p << ") {\n"
           << "        const vec4 offset" << p << "[" << n << "] = vec4[" << n << "](" << offsets << ");\n"

@@ -107,7 +107,10 @@ private:
     // The pointer of the value being read.
     std::string pointer() const {
         std::string p;
-        for (const Level& l : levels_) p += "/" + (l.array ? std::to_string(l.count) : escapePointerToken(l.key));
+        for (const Level& l : levels_) {
+            p += '/';
+            p += l.array ? std::to_string(l.count) : escapePointerToken(l.key);
+        }
         return p;
     }
     [[noreturn]] void fail(const std::string& pointer, const std::string& problem) const {

@@ -32,7 +32,8 @@ Report sectionReport(std::string title, std::vector<ReportTable> tables, std::ve
 std::string reportPage(const Report& report) {
     std::string body = "<h1>" + htmlEscape(report.title) + "</h1>" + report.html + "\n";
     for (const ReportSection& s : report.sections) {
-        const std::string h = "h" + std::to_string(std::clamp(s.level, 1, 6));
+        std::string h = "h";
+        h += std::to_string(std::clamp(s.level, 1, 6));
         if (!s.heading.empty()) body += "<" + h + ">" + htmlEscape(s.heading) + "</" + h + ">\n";
         body += s.html;
         for (const ReportTable& t : s.tables)

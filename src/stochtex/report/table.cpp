@@ -103,8 +103,11 @@ std::string Table::markdown() const {
 
 std::string Table::html() const {
     std::ostringstream o;
-    if (!title.empty())
-        o << "<p><b>" << htmlEscape(title) << "</b>" << (note.empty() ? "" : " " + htmlEscape(note)) << "</p>\n";
+    if (!title.empty()) {
+        o << "<p><b>" << htmlEscape(title) << "</b>";
+        if (!note.empty()) o << ' ' << htmlEscape(note);
+        o << "</p>\n";
+    }
     o << "<table><tr>";
     for (const auto& c : columns) o << "<th>" << htmlEscape(headerText(c)) << "</th>";
     o << "</tr>";
