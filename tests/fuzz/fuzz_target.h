@@ -5,6 +5,8 @@
 // normal build. The property checked is the CLI's contract: a bad input is
 // an InputError (exit code 2). Any other exception, a crash or a sanitizer
 // report is a finding.
+#include <stdlib.h>  // mkdtemp
+
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -44,7 +46,31 @@ int run(F&& body) {
     return 0;
 }
 
-inline std::string text(const uint8_t* data, size_t size) { return std::string(reinterpret_cast<const char*>(data), size); }
+// A fresh folder of this process's own under the temp folder (named
+// <prefix>-XXXXXX), removed with the object: a target that must write its
+// inputs to files keeps one for its life, so that nothing is left behind.
+class TempFolder {
+public:
+    explicit TempFolder(const std::string& prefix) {
+        std::string d = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
+        if (!mkdtemp(d.data())) std::abort();
+        path_ = d;
+    }
+    ~TempFolder() {
+        std::error_code ec;
+        std::filesystem::remove_all(path_, ec);
+    }
+    TempFolder(const TempFolder&) = delete;
+    TempFolder& operator=(const TempFolder&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
+
+inline std::string text(const uint8_t* data, size_t size) {
+    return std::string(reinterpret_cast<const char*>(data), size);
+}
 
 // The folder of the small images specs may name (tests/fuzz/images): the
 // base folder of every spec read, and the only place a spec may read from,

@@ -15,18 +15,11 @@ namespace {
 namespace fs = std::filesystem;
 
 struct ScratchFolder {
-    fs::path dir;
-    fs::path input;
+    stochtex::fuzz::TempFolder folder{"stochtex-fuzz-image"};
+    const fs::path& dir = folder.path();
+    const fs::path input = dir / "input";
     ScratchFolder() {
-        std::string d = (fs::temp_directory_path() / "stochtex-fuzz-image-XXXXXX").string();
-        if (!mkdtemp(d.data())) std::abort();
-        dir = d;
-        input = dir / "input";
-        setenv("OPENCV_TEMP_PATH", d.c_str(), 1);  // before OpenCV's first temporary file
-    }
-    ~ScratchFolder() {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
+        setenv("OPENCV_TEMP_PATH", dir.c_str(), 1);  // before OpenCV's first temporary file
     }
     // Files other than the input: what OpenCV left behind. Removed, so that
     // one finding is reported once.

@@ -3,7 +3,6 @@
 // rest is the file. A glTF that names other files reads them only through
 // loadMesh's bounded callbacks (regular files, no expansion), so an input
 // naming /dev/zero or a missing buffer is a refusal, not a hang.
-#include <stdlib.h>
 
 #include <fstream>
 
@@ -14,22 +13,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // The inputs' folder, removed when the fuzzer exits.
-struct ScratchFolder {
-    fs::path path;
-    ScratchFolder() {
-        std::string d = (fs::temp_directory_path() / "stochtex-fuzz-mesh-XXXXXX").string();
-        if (!mkdtemp(d.data())) std::abort();
-        path = d;
-    }
-    ~ScratchFolder() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
-
 const fs::path& scratch() {
-    static const ScratchFolder dir;
-    return dir.path;
+    static const stochtex::fuzz::TempFolder dir("stochtex-fuzz-mesh");
+    return dir.path();
 }
 
 }  // namespace
