@@ -67,6 +67,46 @@ TEST(PrefilteredColormap, EntriesEqualDirectNumericalConvolution) {
     }
 }
 
+TEST(PrefilteredColormap, BetweenKeptEntriesTheBilinearReadIsWithinItsBound) {
+    // A layer keeps fewer entries along an axis while σ spans at least 4 of
+    // their spacings h. Read bilinearly, the exact blur f = H ∗ G_σ is then
+    // off by at most h²/8 · |f''| along that axis, and |f''| ≤ J · max|G_σ'|
+    // = J · 0.242/σ² for an edge of height J in H: 0.0019 J per axis at
+    // h = σ/4, 0.0076 J at σ/2. Here at the middle of kept cells (where a
+    // linear read is worst), against the numerical convolution, for tables
+    // with sharp edges between flat regions (J ≤ 1 in linear colour).
+    for (const char* preset : {"camouflage", "marble"}) {
+        const ColormapTable h = buildColormap(loadPreset(preset).colormap);
+        for (PrefilterMode mode : {PrefilterMode::Paper, PrefilterMode::Smooth}) {
+            const PrefilteredColormap p(h, mode);
+            const auto& s = p.sigmas();
+            double worst = 0.0;
+            int reduced = 0;
+            for (size_t kx = 0; kx < s.size(); ++kx)
+                for (size_t ky = 0; ky < s.size(); ++ky) {
+                    if (s[kx] > 0.25 || s[ky] > 0.25) continue;  // keep the Riemann reference fine enough
+                    const ColormapTable& layer = p.layer(int(kx), int(ky));
+                    const int rx = layer.resolutionX(), ry = layer.resolutionY();
+                    if (rx == h.resolutionX() && ry == h.resolutionY()) continue;
+                    ++reduced;
+                    for (int k = 0; k < 4; ++k) {
+                        const double i = (k * 37 + 5) % (rx - 1) + (rx < h.resolutionX() ? 0.5 : 0.0);
+                        const double j = (k * 91 + 3) % (ry - 1) + (ry < h.resolutionY() ? 0.5 : 0.0);
+                        const double mx = i / (rx - 1), my = j / (ry - 1);
+                        const Rgb want = convolveColormapNumerically(h, mx, my, s[kx], s[ky], 600);
+                        const Rgb got = layer.sample(float(mx), float(my));
+                        for (int c = 0; c < 3; ++c)
+                            worst = std::max(worst, std::abs(double(got[size_t(c)]) - double(want[size_t(c)])));
+                    }
+                }
+            std::printf("[ info ] %s %s: %d reduced layers, largest |bilinear - exact| %.2e\n", preset,
+                        mode == PrefilterMode::Paper ? "paper" : "smooth", reduced, worst);
+            EXPECT_GT(reduced, 0);
+            EXPECT_LE(worst, 2 * 0.0019) << preset;
+        }
+    }
+}
+
 TEST(PrefilteredColormap, NonSquareTablesBlurEachAxisByItsOwnSigma) {
     // A 64×40 random table: x and y have different tap tables, and layers
     // blur x first or y first depending on which is cheaper — both orders
@@ -172,15 +212,17 @@ TEST(PrefilteredColormap, BetaAxisLookupReadsTheShapeOfTheMeanAndDeviation) {
 
 TEST(PrefilteredColormap, ATableTooLargeToPrefilterIsRefusedByItsResolution) {
     // Two Beta axes keep every entry of all 10 × 10 layers: 10240² RGBA
-    // entries at 1024², 1600 MiB; one keeps 10240 × 4095 (640 MiB), within
-    // the bound, and Gaussian axes 4095² (256 MiB).
+    // entries at 1024², 1600 MiB; one keeps 10240 × 3079 (481 MiB), within
+    // the bound, and Gaussian axes 3079² (145 MiB): along a Gaussian axis
+    // the levels 0 and 1/256 keep 1024 entries, then 2^k/256 keeps 2^(10−k) + 1
+    // (σ four of their spacings), at least 8.
     constexpr size_t MiB = size_t(1) << 20;
     EXPECT_EQ(PrefilteredColormap::layerBytes(1024, 1024, PrefilterMode::Smooth, {true, true}), 1600 * MiB);
     EXPECT_EQ(PrefilteredColormap::layerBytes(1024, 1024, PrefilterMode::Smooth, {true, false}),
-              size_t(10240) * 4095 * 16);
+              size_t(10240) * 3079 * 16);
     EXPECT_LE(PrefilteredColormap::layerBytes(1024, 1024, PrefilterMode::Smooth, {true, false}), kMaxPrefilteredBytes);
     EXPECT_EQ(PrefilteredColormap::layerBytes(1024, 1024, PrefilterMode::Smooth, {false, false}),
-              size_t(4095) * 4095 * 16);
+              size_t(3079) * 3079 * 16);
     // It is what the built layers take (a small table, both kinds of axis).
     const ColormapTable small = makeAnalyticColormap(AnalyticColormap::Gaussian, 64);
     EXPECT_EQ(PrefilteredColormap(small, PrefilterMode::Smooth, {true, false}).bytes(),

@@ -38,7 +38,7 @@ const EnumNames<ExportFormat> kExportFormatNames{
 // steepest edges, where a mean rounded by the format moves the colour most.
 const std::vector<ExportFormatAccuracy> kExportFormatAccuracy{
     {ExportFormat::Float, "pyramids RG32F (8 bytes per leaf texel), colour tables RGB16F (RGB32F: float table)", 3e-4,
-     2.5e-4, 6e-5},
+     2.5e-4, 8.5e-5},
     {ExportFormat::Half, "pyramids RG16F (4 bytes per leaf texel), colour tables RGB16F", 7e-2, 7e-3, 4e-4},
     {ExportFormat::Rgba8,
      "pyramids RGBA8 per leaf pair (2 bytes per leaf texel), colour tables SRGB8, field tables RGB16", 0.5, 7e-2, 5e-3},

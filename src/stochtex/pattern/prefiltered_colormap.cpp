@@ -293,13 +293,17 @@ Image transposed(const Image& in) {
     return out;
 }
 
-// Entries kept along an axis blurred by σ: all of them until the blur spans
-// 8 entries, then halved per doubling of σ so that σ stays ≥ 4 entries.
+// Entries kept along an axis of n blurred by σ (in table coordinates, the
+// axis spanning [0, 1]): halved while σ stays ≥ 4 of the kept entries'
+// spacings, i.e. σ·(kept − 1) ≥ 4, and never fewer than 8.
 int storedResolution(int n, double sigma) {
-    const double s = sigma * double(n - 1);
-    if (s < 8.0) return n;
-    const double f = std::exp2(std::floor(std::log2(s / 4.0)));
-    return std::clamp(int(std::ceil(double(n - 1) / f)) + 1, 8, n);
+    int kept = n;
+    for (int f = 2; f < n; f *= 2) {
+        const int halved = std::max(int(std::ceil(double(n - 1) / double(f))) + 1, 8);
+        if (halved >= kept || sigma * double(halved - 1) < 4.0) break;
+        kept = halved;
+    }
+    return kept;
 }
 
 }  // namespace

@@ -9,9 +9,12 @@
 //   smooth — σ levels 0 and 2^k/256, k = 0..8 (up to σ = 1, where the blur has
 //            flattened H), interpolated between σ levels (linearly in σ below
 //            1/256, in log2 σ above), so nothing pops when σ̂ changes.
-// Tables blurred by at least 8 entries along an axis are stored with fewer
-// entries along it (at least 4 per σ), which keeps memory and build time low
-// with no visible loss (checked against direct convolution in the tests).
+// Layers blurred widely along an axis keep fewer entries along it, halved
+// while σ spans at least 4 of their spacings: memory, build time and the
+// cache lines a lookup reads stay low, and a bilinear read between kept
+// entries is within 0.0019 of the exact blur per axis and per unit of edge
+// height in the table (h²/8 · |f''| at h = σ/4; checked against direct
+// convolution in the tests).
 //
 // An axis whose input is a field bounded in [0, 1] (another table's output,
 // in a texture graph) is prefiltered with the Beta distribution of the
