@@ -41,6 +41,10 @@ PatternSpec loadPatternSource(const PatternSource& src) {
     return spec;
 }
 
+std::string patternSourceText(const PatternSource& src) {
+    return src.file.empty() ? std::string(presetText(src.preset)) : readJsonArgument(src.file).text;
+}
+
 namespace {
 
 bool prefiltersColormap(const FilterOptions& options) {
@@ -96,10 +100,12 @@ JsonArgument readJsonArgument(const std::string& arg) {
     JsonArgument a;
     a.source = readJsonArgumentSource(arg);
     if (a.source != arg) {
-        a.json = JsonReader::parse(arg, a.source);
+        a.text = arg;
+        a.json = JsonReader::parse(a.text, a.source);
         a.baseDir = ".";
     } else {
-        a.json = readJsonFile(arg);
+        a.text = readJsonText(arg);
+        a.json = JsonReader::parse(a.text, arg);
         a.baseDir = fs::path(arg).has_parent_path() ? fs::path(arg).parent_path() : fs::path(".");
     }
     return a;

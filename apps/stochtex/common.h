@@ -34,6 +34,9 @@ struct PatternSource {
 // and --seed to override the pattern's.
 void addPatternSource(CLI::App& cmd, PatternSource& src);
 PatternSpec loadPatternSource(const PatternSource& src);
+// The pattern as the user gave it (the preset's text, the inline JSON or
+// the file's text), for pages that show their source as written.
+std::string patternSourceText(const PatternSource& src);
 // The same for a render with these filter options, refused before any work
 // when they prefilter the colormap and it is too fine for that (an analytic,
 // phasor or painted one: its resolution is known; an image's is checked when
@@ -56,6 +59,7 @@ View makeView(const PatternSpec& spec, const ViewFlags& flags, ViewUse use = Vie
 
 // A JSON argument: inline if it starts with '{' (or '"'), else a file path.
 struct JsonArgument {
+    std::string text;  // as given: the inline argument or the file's text
     nlohmann::json json;
     std::string source;
     std::filesystem::path baseDir;

@@ -1,12 +1,9 @@
 // stochtex web: a self-contained WebGL2 page of a pattern (gpu/web_page.h)
 // — open index.html from disk or serve the folder.
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "common.h"
 #include "stochtex/gpu/web_page.h"
-#include "stochtex/pattern/presets.h"
 
 namespace stochtex::cli {
 
@@ -41,14 +38,7 @@ void registerWeb(CLI::App& app) {
         web.options = args->options;
         web.camera = args->camera;
         web.camera.view = makeView(spec, args->view);
-        if (!args->source.preset.empty()) {
-            web.sourceText = presetText(args->source.preset);
-        } else {
-            std::ifstream in(args->source.file);
-            std::ostringstream text;
-            text << in.rdbuf();
-            web.sourceText = text.str();
-        }
+        web.sourceText = patternSourceText(args->source);
         writeWebPage(spec, web, args->dir);
         std::printf("wrote %s/index.html (%s, %dx%d %s view, filter %s): open it in a browser, from disk or a server\n",
                     args->dir.c_str(), spec.name.c_str(), web.camera.view.width, web.camera.view.height,

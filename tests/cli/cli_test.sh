@@ -929,6 +929,13 @@ case_web() {
   grep -q 'src="data.js"' "$out/web/index.html" || fail "web: index.html does not load data.js"
   # Nothing is fetched: a page opened from disk cannot.
   grep -qE 'fetch\(|XMLHttpRequest' "$out/web/page.js" && fail "web: page.js fetches"
+  # The page shows the pattern as given: a preset's text, or inline JSON
+  # (which it once left empty, reading the argument as a file name).
+  grep -qF '"source":"{\n  \"name\": \"weld\"' "$out/web/data.js" || fail "web: the preset's text is not the page's source"
+  local inline
+  inline=$(sed 's/"name": "weld"/"name": "inline-weld"/' "$src/data/presets/weld.json" | tr -d '\n')
+  expect_ok "web, inline JSON" "$out/webi/index.html" -- "$bin" web "$inline" --size 64 -o "$out/webi"
+  grep -qF '"source":"{  \"name\": \"inline-weld\"' "$out/webi/data.js" || fail "web: inline JSON is not the page's source"
   return 0
 }
 
