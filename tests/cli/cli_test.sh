@@ -34,8 +34,10 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 # expect_ok DESCRIPTION FILE-THAT-MUST-EXIST -- command...
 expect_ok() {
   local what=$1 file=$2; shift 3
-  if ! "$@" >"$work/out.txt" 2>"$work/err.txt"; then
-    fail "$what: exit $? ($(cat "$work/err.txt"))"; return
+  local rc=0
+  "$@" >"$work/out.txt" 2>"$work/err.txt" || rc=$?
+  if [ "$rc" -ne 0 ]; then
+    fail "$what: exit $rc ($(cat "$work/err.txt"))"; return
   fi
   [ -z "$file" ] || [ -s "$file" ] || fail "$what: $file not written"
 }
