@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 
+#include "owned_folder.h"
 #include "stochtex/core/error.h"
 #include "stochtex/image/image.h"
 #include "stochtex/image/image_io.h"
@@ -45,21 +46,9 @@ inline std::filesystem::path scratchPath(const std::string& name) {
 
 // A fresh folder at scratchPath(name), removed with this object (also when
 // an assertion ends the test early), for a test that writes files.
-class ScratchDir {
+class ScratchDir : public OwnedFolder {
 public:
-    explicit ScratchDir(const std::string& name) : path_(scratchPath(name)) {
-        std::filesystem::create_directories(path_);
-    }
-    ~ScratchDir() {
-        std::error_code ec;
-        std::filesystem::remove_all(path_, ec);
-    }
-    ScratchDir(const ScratchDir&) = delete;
-    ScratchDir& operator=(const ScratchDir&) = delete;
-    const std::filesystem::path& path() const { return path_; }
-
-private:
-    std::filesystem::path path_;
+    explicit ScratchDir(const std::string& name) : OwnedFolder(scratchPath(name)) {}
 };
 
 // A fixture with a fresh folder of its own (named after the suite and the

@@ -5,8 +5,6 @@
 // normal build. The property checked is the CLI's contract: a bad input is
 // an InputError (exit code 2). Any other exception, a crash or a sanitizer
 // report is a finding.
-#include <stdlib.h>  // mkdtemp
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -16,6 +14,7 @@
 #include <string>
 #include <typeinfo>
 
+#include "owned_folder.h"
 #include "stochtex/core/error.h"
 #include "stochtex/core/parallel.h"
 #include "stochtex/pattern/pattern_spec.h"
@@ -49,23 +48,9 @@ int run(F&& body) {
 // A fresh folder of this process's own under the temp folder (named
 // <prefix>-XXXXXX), removed with the object: a target that must write its
 // inputs to files keeps one for its life, so that nothing is left behind.
-class TempFolder {
+class TempFolder : public test::OwnedFolder {
 public:
-    explicit TempFolder(const std::string& prefix) {
-        std::string d = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
-        if (!mkdtemp(d.data())) std::abort();
-        path_ = d;
-    }
-    ~TempFolder() {
-        std::error_code ec;
-        std::filesystem::remove_all(path_, ec);
-    }
-    TempFolder(const TempFolder&) = delete;
-    TempFolder& operator=(const TempFolder&) = delete;
-    const std::filesystem::path& path() const { return path_; }
-
-private:
-    std::filesystem::path path_;
+    explicit TempFolder(const std::string& prefix) : OwnedFolder(fresh(prefix)) {}
 };
 
 inline std::string text(const uint8_t* data, size_t size) {
