@@ -37,12 +37,12 @@ size_t ColormapTable::sampleRow(const float* x, const float* y, size_t stride, f
     int32_t entry[kChunk];
     float tx[kChunk], ty[kChunk];
     size_t inLanes = 0;
+    const bool prefetch = bytes() > kPrefetchedBytes;
     for (size_t k0 = 0; k0 < count; k0 += kChunk) {
         const size_t n = std::min(kChunk, count - k0);
         const size_t lanes =
             tableTapsLanes(x + k0 * stride, y + k0 * stride, stride, width_, height_, n, entry, tx, ty);
         inLanes += lanes;
-        const bool prefetch = bytes() > kPrefetchedBytes;
         for (size_t k = 0; k < lanes; ++k) {
             if (prefetch && k + kPrefetchAhead < lanes)
                 prefetchTexels(rgba_.data() + entry[k + kPrefetchAhead], size_t(width_));
