@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <numbers>
 #include <set>
@@ -724,11 +725,20 @@ Image GraphPattern::renderPixels(const View& view, const Progress& progress, int
                 plain->sampleRow(values[0].data(), values[1].data(), 1, row, width);
                 continue;
             }
-            for (size_t k = 0; k < leaves.size(); ++k)
-                for (size_t px = 0; px < width; ++px) rows[k * width + px] = vec3(values[k][px], 0.0f, 0.0f);
+            // A leaf's slot is vec3(value, 0, 0): its zeros were set once,
+            // and no op writes a leaf's slot.
+            for (size_t k = 0; k < leaves.size(); ++k) {
+                vec3* leafRow = rows.data() + k * width;
+                const float* value = values[k].data();
+                for (size_t px = 0; px < width; ++px) leafRow[px].x = value[px];
+            }
             runRows(rows.data(), view.width, lastSlot, kFromAbove);
             const vec3* result = rows.data() + size_t(lastSlot) * width;
-            for (size_t px = 0; px < width; ++px) put(toRgb(result[px]), row + px * 3);
+            static_assert(sizeof(vec3) == 3 * sizeof(float), "a row of vec3 is a row of RGB floats");
+            if (gray)
+                for (size_t px = 0; px < width; ++px) put(toRgb(result[px]), row + px * 3);
+            else
+                std::memcpy(row, result, width * sizeof(vec3));
         }
     };
     const auto scalar = [&](int y0, int y1) {
