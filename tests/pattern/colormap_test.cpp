@@ -207,7 +207,8 @@ TEST(Colormap, PresetLayoutsHaveThreeTouchingRegions) {
 
 // A row of lookups (taps in SIMD lanes, on every target) is sample's,
 // bit for bit: contiguous values and the first channel of vec3 rows, with a
-// tail that is no whole vector, values outside [0, 1] and NaN.
+// tail that is no whole vector, values outside [0, 1] and NaN; nothing
+// past the row is written.
 TEST(Colormap, ARowOfLookupsIsSamplesBitForBit) {
     Image table(53, 29, 3);
     for (int y = 0; y < table.height(); ++y)
@@ -215,8 +216,8 @@ TEST(Colormap, ARowOfLookupsIsSamplesBitForBit) {
             for (int c = 0; c < 3; ++c) table.at(x, y, c) = float(0.5 + 0.5 * std::sin(0.7 * x - 1.3 * y + c));
     const ColormapTable h(table);
     test::forEachLaneTarget([&](const char*) {
-        for (const size_t stride : {size_t(1), size_t(3)}) {
-            const size_t count = 301;
+        // 301: the lanes leave a tail; 304 (19 vectors of 16): they end the row.
+        for (const auto& [stride, count] : {std::pair<size_t, size_t>{1, 301}, {3, 301}, {1, 304}, {3, 304}}) {
             std::vector<float> x(count * stride, 7.0f), y(count * stride, -7.0f);
             for (size_t k = 0; k < count; ++k) {
                 x[k * stride] = float(k) / 281.0f - 0.05f;
@@ -225,12 +226,15 @@ TEST(Colormap, ARowOfLookupsIsSamplesBitForBit) {
             x[2 * stride] = std::nanf("");
             y[4 * stride] = -0.3f;
             y[9 * stride] = std::nanf("");
-            std::vector<float> rgb(count * 3, -1.0f);
+            // Four floats past the row, which no store may touch (the
+            // pairs' blends store a pixel's four floats, its last three).
+            std::vector<float> rgb(count * 3 + 4, -1.0f);
             h.sampleRow(x.data(), y.data(), stride, rgb.data(), count);
             for (size_t k = 0; k < count; ++k) {
                 const Rgb c = h.sample(x[k * stride], y[k * stride]);
                 for (int i = 0; i < 3; ++i) ASSERT_EQ(rgb[k * 3 + size_t(i)], c[size_t(i)]) << k << " " << stride;
             }
+            for (size_t k = count * 3; k < rgb.size(); ++k) ASSERT_EQ(rgb[k], -1.0f) << k << " " << count;
         }
     });
 }

@@ -10,7 +10,6 @@
 #include "stochtex/core/parallel.h"
 #include "stochtex/image/colour_space.h"
 #include "stochtex/noise/example.h"
-#include "stochtex/noise/tiling_blending_lanes.h"
 
 namespace stochtex {
 
@@ -29,32 +28,6 @@ static Image flipRows(const Image& image) {
     for (int j = 0; j < image.height(); ++j)
         std::copy(image.row(j), image.row(j) + rowSize, out.row(image.height() - 1 - j));
     return out;
-}
-
-size_t ColormapTable::sampleRow(const float* x, const float* y, size_t stride, float* rgb, size_t count) const {
-    // In chunks whose taps stay in L1 beside the table's lines.
-    constexpr size_t kChunk = 256;
-    int32_t entry[kChunk];
-    float tx[kChunk], ty[kChunk];
-    size_t inLanes = 0;
-    const bool prefetch = bytes() > kPrefetchedBytes;
-    for (size_t k0 = 0; k0 < count; k0 += kChunk) {
-        const size_t n = std::min(kChunk, count - k0);
-        const size_t lanes =
-            tableTapsLanes(x + k0 * stride, y + k0 * stride, stride, width_, height_, n, entry, tx, ty);
-        inLanes += lanes;
-        for (size_t k = 0; k < lanes; ++k) {
-            if (prefetch && k + kPrefetchAhead < lanes)
-                prefetchTexels(rgba_.data() + entry[k + kPrefetchAhead], size_t(width_));
-            const Rgb c = blend({size_t(entry[k]), tx[k], ty[k]});
-            std::copy(c.begin(), c.end(), rgb + (k0 + k) * 3);
-        }
-        for (size_t k = k0 + lanes; k < k0 + n; ++k) {
-            const Rgb c = sample(x[k * stride], y[k * stride]);
-            std::copy(c.begin(), c.end(), rgb + k * 3);
-        }
-    }
-    return inLanes;
 }
 
 bool ColormapTable::operator==(const ColormapTable& other) const {

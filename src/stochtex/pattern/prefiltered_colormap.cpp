@@ -18,11 +18,7 @@
 #include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/normal.h"
 #include "stochtex/noise/tiling_blending_lanes.h"
-
-// 32-byte vectors of the GCC extension pass only between always-inlined
-// helpers here; GCC's warning that a call would pass them differently
-// without AVX (which it reports at the end of the file) concerns no call.
-#pragma GCC diagnostic ignored "-Wpsabi"
+#include "stochtex/pattern/texel_pairs.h"
 
 namespace stochtex {
 
@@ -192,21 +188,8 @@ std::vector<std::vector<Tap>> betaTaps(int n, double tau, int out) {
 using TapTable = std::vector<std::vector<Tap>>;
 
 // The loops below on 32-byte vectors of the GCC extension are compiled
-// twice, for AVX2 (a vector in one register) and for the baseline (two
-// halves), and the AVX2 compilation runs where the lanes' dispatched target
-// has at least 8 float lanes — so the tests that force Highway's targets one
-// by one (tests/lane_targets.h) run the baseline compilation too. Both do
-// the same IEEE multiplies and adds per lane (no FMA): their results are
-// bit-identical on every machine. (GCC's target_clones would choose by the
-// CPU alone, leaving the baseline untested on an AVX2 machine.)
-#if defined(__x86_64__) && !defined(__clang__)
-#define STOCHTEX_AVX2_COMPILATION __attribute__((target("avx2")))
-constexpr bool kHasAvx2Compilation = true;
-#else
-#define STOCHTEX_AVX2_COMPILATION
-constexpr bool kHasAvx2Compilation = false;
-#endif
-bool useAvx2Compilation() { return kHasAvx2Compilation && laneTargetFloatLanes() >= 8; }
+// twice, for AVX2 and for the baseline (texel_pairs.h).
+using texel_pairs::useAvx2Compilation;
 
 // acc[i] += Σ_k weights[k]·rows[k][i] for i < n, the sum over k in float.
 // A block of 48 columns stays in registers while every row is added to it
@@ -467,25 +450,8 @@ template <class Find, class Blend>
 }
 
 using Texel = ColormapTable::Texel;
-// Two texels side by side: the same tap of two layers (AVX: one register).
-// (GCC's warning that these helpers would pass 32-byte vectors differently
-// without AVX is off for this file: they are always inlined, never called.)
-typedef float TexelPair __attribute__((vector_size(32)));
-[[gnu::always_inline]] inline TexelPair pairOf(Texel low, Texel high) {
-    return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
-}
-[[gnu::always_inline]] inline Texel lowOf(TexelPair p) { return __builtin_shufflevector(p, p, 0, 1, 2, 3); }
-[[gnu::always_inline]] inline Texel highOf(TexelPair p) { return __builtin_shufflevector(p, p, 4, 5, 6, 7); }
-
-// ColormapTable::blendTexels of two layers at once: layer a's lower corner
-// at a (its rows wa texels apart) and x weight txa, layer b's likewise, the
-// y weight ty both share.
-[[gnu::always_inline]] inline TexelPair blendTexelPair(const Texel* a, size_t wa, float txa, const Texel* b, size_t wb,
-                                                       float txb, float ty) {
-    return ColormapTable::rowsFirst(pairOf(a[0], b[0]), pairOf(a[1], b[1]), pairOf(a[wa], b[wb]),
-                                    pairOf(a[wa + 1], b[wb + 1]),
-                                    pairOf(Texel{txa, txa, txa, txa}, Texel{txb, txb, txb, txb}), ty);
-}
+using texel_pairs::blendTexelPair, texel_pairs::pairOf, texel_pairs::TexelPair;
+using texel_pairs::highOf, texel_pairs::lowOf;
 
 // The lanes' lookups blended, pixel by pixel: each pixel's corners found
 // and their entries prefetched kAhead pixels before its blend (a lookup
@@ -522,8 +488,9 @@ typedef float TexelPair __attribute__((vector_size(32)));
             c = ColormapTable::blendTexels(at[0], w0, found.tx0[i], found.ty0[i]);
         } else {
             const size_t w1 = size_t(found.width1[i]);
-            const TexelPair y0 = blendTexelPair(at[0], w0, found.tx0[i], at[1], w1, found.tx1[i], found.ty0[i]);
-            const TexelPair y1 = blendTexelPair(at[2], w0, found.tx0[i], at[3], w1, found.tx1[i], found.ty1[i]);
+            const TexelPair tx = pairOf(found.tx0[i], found.tx1[i]);
+            const TexelPair y0 = blendTexelPair(at[0], w0, at[1], w1, tx, found.ty0[i]);
+            const TexelPair y1 = blendTexelPair(at[2], w0, at[3], w1, tx, found.ty1[i]);
             c = ColormapTable::rowsFirst(lowOf(y0), highOf(y0), lowOf(y1), highOf(y1), found.fx[i], found.fy[i]);
         }
         float* out = rgb + i * 3;
