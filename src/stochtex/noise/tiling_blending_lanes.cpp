@@ -79,6 +79,22 @@ HWY_INLINE void Pcg3d(DU du, VU x, VU y, VU z, VU& hx, VU& hy) {
     hy = hn::Add(y, hn::Mul(z, hx));
 }
 
+// hn::ConvertTo(DI(), v) (truncation) for lanes known to lie within
+// int32's range — texel coordinates, table taps, σ levels, all bounded by
+// the sizes they index — without the fix-up Highway adds on x86 for lanes
+// beyond it (four instructions a conversion, a few a tile lookup).
+HWY_INLINE VI TruncateInRange(VF v) {
+#if HWY_ARCH_X86 && HWY_TARGET == HWY_AVX2
+    return VI{_mm256_cvttps_epi32(v.raw)};
+#elif HWY_ARCH_X86 && (HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3)
+    return VI{_mm_cvttps_epi32(v.raw)};
+#elif HWY_ARCH_X86 && (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL)
+    return VI{_mm512_cvttps_epi32(v.raw)};
+#else
+    return hn::ConvertTo(DI(), v);
+#endif
+}
+
 // kernel::unitFloat: the top 24 bits, exactly representable.
 HWY_INLINE VF UnitFloat(DF df, VU bits) {
     const DI di;
@@ -174,7 +190,7 @@ HWY_INLINE void TableTap(DF df, VI n, VF x, VI& i, VF& t) {
     const DI di;
     const auto fx = hn::Mul(hn::IfThenElseZero(hn::Gt(x, hn::Zero(df)), hn::Min(x, hn::Set(df, 1.0f))),
                             hn::ConvertTo(df, hn::Sub(n, hn::Set(di, 1))));
-    i = hn::Min(hn::ConvertTo(di, fx), hn::Sub(n, hn::Set(di, 2)));
+    i = hn::Min(TruncateInRange(fx), hn::Sub(n, hn::Set(di, 2)));
     t = hn::Sub(fx, hn::ConvertTo(df, i));
 }
 HWY_INLINE void TableTap(DF df, int n, VF x, VI& i, VF& t) { TableTap(df, hn::Set(DI(), n), x, i, t); }
@@ -360,7 +376,7 @@ void BlendGridRow(const TilingBlendingNoise& noise, const std::array<const Basic
         const auto lookup = [&](size_t l, int i, VI rowIndex, VF wy, VF offsetTexels, const float* sharedRow) {
             const RowGrid<C>& grid = g[l];
             const auto tx = PeriodicTexel(tu[l], offsetTexels, hn::Set(df, grid.size), hn::Set(df, grid.size + 0.5f));
-            const auto ix = hn::ConvertTo(di, tx);
+            const auto ix = TruncateInRange(tx);
             const auto wx = hn::Sub(tx, hn::ConvertTo(df, ix));
             VF bl[C], br[C], al[C], ar[C];  // below: left, right; above: left, right — each channel
             if (!sharedRow ||
@@ -419,7 +435,7 @@ void BlendGridRow(const TilingBlendingNoise& noise, const std::array<const Basic
                     const auto vSize = hn::Set(df, g[l].size);
                     const auto ty = PeriodicTexel(hn::Set(df, g[l].pointTexelV), hn::Mul(oy, vSize), vSize,
                                                   hn::Set(df, g[l].size + 0.5f));
-                    const auto iy = hn::ConvertTo(di, ty);
+                    const auto iy = TruncateInRange(ty);
                     lookup(l, i, hn::Mul(iy, hn::Set(di, g[l].stride)), hn::Sub(ty, hn::ConvertTo(df, iy)),
                            hn::Mul(ox, vSize), nullptr);
                 }
@@ -559,7 +575,7 @@ size_t LayerTapsImpl(const float* mx, const float* my, const float* sx, const fl
         // kernel::levelBlend of the two axes' coordinates.
         const auto cx = SigmaLevelCoordinate(df, hn::LoadU(df, sx + k), paper, top);
         const auto cy = SigmaLevelCoordinate(df, hn::LoadU(df, sy + k), paper, top);
-        const auto kx0 = hn::Min(hn::ConvertTo(di, cx), last), ky0 = hn::Min(hn::ConvertTo(di, cy), last);
+        const auto kx0 = hn::Min(TruncateInRange(cx), last), ky0 = hn::Min(TruncateInRange(cy), last);
         const auto kx1 = hn::Min(hn::Add(kx0, oneI), last), ky1 = hn::Min(hn::Add(ky0, oneI), last);
         hn::StoreU(hn::Sub(cx, hn::ConvertTo(df, kx0)), df, out.fx.data() + k);
         hn::StoreU(hn::Sub(cy, hn::ConvertTo(df, ky0)), df, out.fy.data() + k);
