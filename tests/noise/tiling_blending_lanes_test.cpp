@@ -8,6 +8,8 @@
 
 #include "lane_targets.h"
 #include "stochtex/core/floor.h"
+#include "stochtex/kernel/estimate.h"
+#include "stochtex/kernel/graph_ops.h"
 #include "stochtex/kernel/sigma_levels.h"
 #include "stochtex/noise/spectrum.h"
 #include "stochtex/noise/tiling_blending_lanes.h"
@@ -203,6 +205,55 @@ TEST(TilingBlendingLanes, LayerTapsAreTheKernels) {
                 ASSERT_EQ(out.entry10[k], out.iy0[k] * w1 + out.ix1[k]) << k;
                 ASSERT_EQ(out.entry01[k], out.iy1[k] * w0 + out.ix0[k]) << k;
                 ASSERT_EQ(out.entry11[k], out.iy1[k] * w1 + out.ix1[k]) << k;
+            }
+        }
+    });
+}
+
+// A probe's moments over two levels in lanes are the kernel's, bit for bit
+// (NaN for NaN), on every target: means and variances of both levels with
+// negative variances, a NaN and an infinity, where l1 weighs and where it
+// does not (w1 = 0: l1's rows are not read, so theirs are NaN here).
+TEST(TilingBlendingLanes, ProbeMomentsAreTheKernels) {
+    const size_t count = 203;  // the last vector partial, which the lanes leave
+    std::vector<float> meanLo, varLo, meanHi, varHi;
+    for (size_t k = 0; k < count; ++k) {
+        meanLo.push_back(0.5f + 0.45f * std::sin(0.31f * float(k)));
+        meanHi.push_back(0.5f + 0.4f * std::cos(0.17f * float(k)));
+        varLo.push_back(k % 11 == 0 ? -1e-4f : 0.02f * float(k % 7));
+        varHi.push_back(k % 13 == 0 ? -1e-3f : 0.015f * float(k % 5));
+    }
+    meanLo[3] = std::nanf("");
+    varHi[5] = std::nanf("");
+    meanHi[8] = INFINITY;
+    varLo[9] = 1e-30f;
+    const auto same = [](float a, float b) { return (std::isnan(a) && std::isnan(b)) || a == b; };
+    test::forEachLaneTarget([&](const char*) {
+        for (const auto& [w0, w1] : {std::pair{0.7f, 0.3f}, {0.35f, 0.65f}, {1.0f, 0.0f}}) {
+            SCOPED_TRACE(w1);
+            const std::vector<float> hiMean = w1 > 0 ? meanHi : std::vector<float>(count, std::nanf(""));
+            const std::vector<float> hiVar = w1 > 0 ? varHi : std::vector<float>(count, std::nanf(""));
+            std::vector<float> mean(count, -7.0f), sigma(count, -7.0f);
+            const size_t done = probeMomentsLanes(meanLo.data(), varLo.data(), hiMean.data(), hiVar.data(), w0, w1,
+                                                  count, mean.data(), sigma.data());
+            EXPECT_GE(done, count - size_t(kMaxFloatLanes) + 1);
+            kernel::ProbeLevels levels{};
+            levels.w0 = w0;
+            levels.w1 = w1;
+            for (size_t k = 0; k < count; ++k) {
+                if (k >= done) {
+                    ASSERT_EQ(mean[k], -7.0f) << k;  // left to the caller
+                    continue;
+                }
+                kernel::ProbeTexels t{};
+                t.lo.mean = kernel::vec2(meanLo[k], 0.0f);
+                t.lo.var = kernel::vec2(varLo[k], 0.0f);
+                t.hi.mean = kernel::vec2(hiMean[k], 0.0f);
+                t.hi.var = kernel::vec2(hiVar[k], 0.0f);
+                const kernel::FootprintMoments r =
+                    kernel::momentsResult(kernel::momentsAddProbe(kernel::momentsAbout(t.lo.mean), t, levels));
+                ASSERT_PRED2(same, mean[k], r.mean.x) << k;
+                ASSERT_PRED2(same, sigma[k], kernel::momentSigma(kernel::vec2(r.mean.x, std::max(r.var.x, 0.0f)))) << k;
             }
         }
     });

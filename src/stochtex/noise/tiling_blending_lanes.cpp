@@ -615,6 +615,35 @@ size_t LayerTapsImpl(const float* mx, const float* my, const float* sx, const fl
     return k;
 }
 
+// glm's and std's max(x, y): (x < y) ? y : x (a NaN x stays).
+HWY_INLINE VF MaxAsKernel(VF x, VF y) { return hn::IfThenElse(hn::Lt(x, y), y, x); }
+
+size_t ProbeMomentsImpl(const float* meanLo, const float* varLo, const float* meanHi, const float* varHi, float w0,
+                        float w1, size_t count, float* mean, float* sigma) {
+    const DF df;
+    const size_t n = hn::Lanes(df);
+    const auto zero = hn::Zero(df), weightLo = hn::Set(df, w0), weightHi = hn::Set(df, w1);
+    const bool hi = w1 > 0.0f;  // kernel::momentsAddProbe: level l1 where it weighs
+    size_t k = 0;
+    for (; k + n <= count; k += n) {
+        // kernel::momentsAbout(lo's mean), then kernel::momentsAdd of each level.
+        const auto shift = hn::LoadU(df, meanLo + k);
+        auto d = hn::Sub(shift, shift);
+        auto m = hn::Add(zero, hn::Mul(weightLo, d));
+        auto m2 = hn::Add(zero, hn::Mul(weightLo, hn::Add(hn::Mul(d, d), hn::LoadU(df, varLo + k))));
+        if (hi) {
+            d = hn::Sub(hn::LoadU(df, meanHi + k), shift);
+            m = hn::Add(m, hn::Mul(weightHi, d));
+            m2 = hn::Add(m2, hn::Mul(weightHi, hn::Add(hn::Mul(d, d), hn::LoadU(df, varHi + k))));
+        }
+        // kernel::momentsResult, then momentSigma of the variance clamped at 0.
+        const auto var = MaxAsKernel(hn::Sub(m2, hn::Mul(m, m)), zero);
+        hn::StoreU(hn::Add(shift, m), df, mean + k);
+        hn::StoreU(hn::Sqrt(MaxAsKernel(MaxAsKernel(var, zero), zero)), df, sigma + k);
+    }
+    return k;
+}
+
 const char* TargetNameImpl() { return hwy::TargetName(HWY_TARGET); }
 size_t FloatLanesImpl() { return hn::MaxLanes(DF()); }
 
@@ -630,6 +659,7 @@ HWY_EXPORT(BlendLevelRowImpl);
 HWY_EXPORT(BlendLevelPairRowImpl);
 HWY_EXPORT(TableTaps2Impl);
 HWY_EXPORT(LayerTapsImpl);
+HWY_EXPORT(ProbeMomentsImpl);
 HWY_EXPORT(TargetNameImpl);
 HWY_EXPORT(FloatLanesImpl);
 
@@ -682,6 +712,11 @@ size_t layerTapsLanes(const float* mx, const float* my, const float* sx, const f
         throw std::invalid_argument("layerTapsLanes: count exceeds the output's capacity");
     if (levels < 1) throw std::invalid_argument("layerTapsLanes: a table needs at least one level");
     return HWY_DYNAMIC_DISPATCH(LayerTapsImpl)(mx, my, sx, sy, count, paper, levels, widths, heights, out);
+}
+
+size_t probeMomentsLanes(const float* meanLo, const float* varLo, const float* meanHi, const float* varHi, float w0,
+                         float w1, size_t count, float* mean, float* sigma) {
+    return HWY_DYNAMIC_DISPATCH(ProbeMomentsImpl)(meanLo, varLo, meanHi, varHi, w0, w1, count, mean, sigma);
 }
 
 const char* laneTargetName() { return HWY_DYNAMIC_DISPATCH(TargetNameImpl)(); }

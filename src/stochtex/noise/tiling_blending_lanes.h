@@ -108,6 +108,17 @@ struct LayerTapsLanes {
 size_t layerTapsLanes(const float* mx, const float* my, const float* sx, const float* sy, size_t count, bool paper,
                       int levels, const int32_t* widths, const int32_t* heights, LayerTapsLanes& out);
 
+// One probe's footprint moments over its two levels, along one axis, at
+// each of count pixels, and the prefiltered table's coordinates from them:
+// the kernel's momentsResult(momentsAddProbe(momentsAbout(lo's mean), …))
+// with the level weights w0, w1 (kernel::ProbeLevels; l1 is read where
+// w1 > 0), then mean[k] = μ̂ and sigma[k] = momentSigma of σ̂² clamped at
+// 0, as a plain program's lookup reads them — the kernel's operations in
+// its order, so its values bit for bit. Does whole vectors only and
+// returns how many pixels it did.
+size_t probeMomentsLanes(const float* meanLo, const float* varLo, const float* meanHi, const float* varHi, float w0,
+                         float w1, size_t count, float* mean, float* sigma);
+
 // The name of the vector target the lanes run on here ("AVX2", …).
 const char* laneTargetName();
 // The floats in one of its vectors (AVX2: 8; the one-lane fallback: 1).

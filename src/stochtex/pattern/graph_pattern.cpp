@@ -1202,9 +1202,20 @@ Image FilteredGraph::renderZoomInLanes(const Camera& camera, const Footprint& sh
                 // layout's arithmetic at every pixel (this per-pixel work
                 // took 2.3x the instructions through it at 4.7 texels a
                 // pixel). The row's two choices are template arguments, so
-                // each loop is branch-free (and the single texel's vectorises).
+                // each loop is branch-free (and the single texel's
+                // vectorises); two levels without Deliot–Heitz go through
+                // the same formulas in lanes (probeMomentsLanes, the
+                // kernel's values bit for bit), a vector of pixels at a time.
                 const auto estimateRow = [&](auto isSingle, auto isDeliotHeitz) {
-                    for (size_t px = 0; px < size_t(view.width); ++px) {
+                    size_t first = 0;  // the first pixel the loop below does
+                    if constexpr (!isSingle && !isDeliotHeitz) {
+                        const size_t width = size_t(view.width);
+                        for (size_t a = 0; a < 2; ++a)
+                            first =
+                                probeMomentsLanes(rows[0][a], rows[0][2 + a], rows[1][a], rows[1][2 + a], levels.w0,
+                                                  levels.w1, width, coordinates[a].data(), coordinates[2 + a].data());
+                    }
+                    for (size_t px = first; px < size_t(view.width); ++px) {
                         kernel::ProbeTexels t = probeTexels(RowTexels{&rows, px});
                         if constexpr (isDeliotHeitz) t = kernel::deliotHeitzProbe(t, averageL0, averageL1, false);
                         kernel::FootprintMoments r;
