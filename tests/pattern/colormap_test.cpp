@@ -251,7 +251,7 @@ static ColormapTable wavyTable() {
 
 // The layers' blur and the row lookups' blend run an AVX2 compilation where
 // the lanes' target has 8 float lanes or more and a baseline one elsewhere
-// (prefiltered_colormap.cpp): the same IEEE operations per lane, so a table
+// (pattern/texel_pairs.h): the same IEEE operations per lane, so a table
 // built on any lane target is the same, bit for bit.
 TEST(PrefilteredColormap, EveryLaneTargetBuildsTheSameTable) {
     const ColormapTable h = wavyTable();

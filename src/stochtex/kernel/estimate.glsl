@@ -75,7 +75,11 @@ inline ProbeTexels deliotHeitzProbe(ProbeTexels t, vec3 averageLo, vec3 averageH
 
 // A probe's two level reads as two samples of eq. 14–15, each of its
 // level's weight (the upper read only where it weighs). The CPU's zoom rows
-// (one probe a pixel) call it directly: FilteredGraph::renderZoomInLanes.
+// (one probe a pixel) call it directly (FilteredGraph::renderZoomInLanes),
+// and between two levels through probeMomentsLanes
+// (noise/tiling_blending_lanes.cpp), which repeats it, momentsAbout and
+// momentsResult in lanes: a change here goes there too
+// (TilingBlendingLanes.ProbeMomentsAreTheKernels fails until it does).
 inline Moments momentsAddProbe(Moments sums, ProbeTexels t, ProbeLevels levels) {
     sums = momentsAdd(sums, levels.w0, t.lo.mean, t.lo.var, t.lo.cov);
     if (levels.w1 > 0.0f) sums = momentsAdd(sums, levels.w1, t.hi.mean, t.hi.var, t.hi.cov);

@@ -82,7 +82,12 @@ HWY_INLINE void Pcg3d(DU du, VU x, VU y, VU z, VU& hx, VU& hy) {
 // hn::ConvertTo(DI(), v) (truncation) for lanes known to lie within
 // int32's range — texel coordinates, table taps, σ levels, all bounded by
 // the sizes they index — without the fix-up Highway adds on x86 for lanes
-// beyond it (four instructions a conversion, a few a tile lookup).
+// beyond it (four instructions a conversion, a few a tile lookup). The
+// callers' clamps keep them there: TableTap sends NaN and x ≤ 0 to 0 and
+// caps x at 1, PeriodicTexel wraps into one period of a finite u
+// (validateView bounds the view), SigmaLevelCoordinate masks NaN and σ ≤ 0
+// and caps at the top level. Out of range, cvttps2dq gives INT_MIN where
+// ConvertTo gave INT_MAX.
 HWY_INLINE VI TruncateInRange(VF v) {
 #if HWY_ARCH_X86 && HWY_TARGET == HWY_AVX2
     return VI{_mm256_cvttps_epi32(v.raw)};
