@@ -14,21 +14,12 @@ namespace {
 
 using Texel = ColormapTable::Texel;
 
-// A texel's RGB at rgb[0..2], touching nothing past them.
-[[gnu::always_inline]] inline void storeRgb(const Texel& c, float* rgb) {
-    typedef float Float2 __attribute__((vector_size(8)));
-    const Float2 rg = __builtin_shufflevector(c, c, 0, 1);
-    std::memcpy(rgb, &rg, sizeof rg);
-    rgb[2] = c[2];
-}
-
 // The blends of a row's taps (entry, tx, ty per pixel) in a table `width`
 // entries wide, two pixels at a time (texel_pairs.h), each pair's entries
 // prefetched kPrefetchAhead pixels before their blend when `prefetch`;
-// tx and ty have two floats past count (splatPair). A
-// pixel's result is stored as its four floats, its alpha on the next
-// pixel's red, which that pixel's store overwrites next; the last pixel's
-// three floats alone.
+// tx and ty have two floats past count (splatPair). A pixel's result is
+// stored as its four floats, its alpha on the next pixel's red, which that
+// pixel's store overwrites next; the last pixel's three floats alone.
 [[gnu::always_inline]] inline void blendTapsBody(const Texel* texels, size_t width, const int32_t* entry,
                                                  const float* tx, const float* ty, size_t count, bool prefetch,
                                                  float* rgb) {
@@ -47,9 +38,10 @@ using Texel = ColormapTable::Texel;
         if (k + 2 < count)
             std::memcpy(rgb + 3 * k + 3, &second, sizeof second);
         else
-            storeRgb(second, rgb + 3 * k + 3);
+            texel_pairs::storeRgb(second, rgb + 3 * k + 3);
     }
-    if (k < count) storeRgb(ColormapTable::blendTexels(texels + entry[k], width, tx[k], ty[k]), rgb + 3 * k);
+    if (k < count)
+        texel_pairs::storeRgb(ColormapTable::blendTexels(texels + entry[k], width, tx[k], ty[k]), rgb + 3 * k);
 }
 STOCHTEX_AVX2_COMPILATION void blendTapsAvx2(const Texel* texels, size_t width, const int32_t* entry, const float* tx,
                                              const float* ty, size_t count, bool prefetch, float* rgb) {

@@ -493,8 +493,7 @@ using texel_pairs::highOf, texel_pairs::lowOf;
             const TexelPair y1 = blendTexelPair(at[2], w0, at[3], w1, tx, found.ty1[i]);
             c = ColormapTable::rowsFirst(lowOf(y0), highOf(y0), lowOf(y1), highOf(y1), found.fx[i], found.fy[i]);
         }
-        float* out = rgb + i * 3;
-        out[0] = c[0], out[1] = c[1], out[2] = c[2];
+        texel_pairs::storeRgb(c, rgb + i * 3);
     };
     lookAhead(count, find, blend);
 }

@@ -45,6 +45,14 @@ typedef float TexelPair __attribute__((vector_size(32)));
 [[gnu::always_inline]] inline Texel lowOf(TexelPair p) { return __builtin_shufflevector(p, p, 0, 1, 2, 3); }
 [[gnu::always_inline]] inline Texel highOf(TexelPair p) { return __builtin_shufflevector(p, p, 4, 5, 6, 7); }
 
+// A texel's RGB at rgb[0..2], touching nothing past them.
+[[gnu::always_inline]] inline void storeRgb(const Texel& c, float* rgb) {
+    typedef float Float2 __attribute__((vector_size(8)));
+    const Float2 rg = __builtin_shufflevector(c, c, 0, 1);
+    std::memcpy(rgb, &rg, sizeof rg);
+    rgb[2] = c[2];
+}
+
 // {w[0] ×4, w[1] ×4}: two lookups' weights, one a texel. Reads w[0..3]
 // (one 16-byte load: GCC routes a narrower one through the stack).
 [[gnu::always_inline]] inline TexelPair splatPair(const float* w) {
